@@ -1,22 +1,30 @@
 """C++ extraction on a real workspace: how many calls are found and how many clang
 errors are left against our stand-in headers, for every package (or those named).
 
-    .venv/bin/python bench/cpp_real.py WORKSPACE [--package P ...] [--node SUBSTRING]
-        [--errors] [--calls] [--json FILE] [--jobs N] [--profile N] [--distro D]
+    PYTHONPATH=CHECKOUT .venv/bin/python bench/cpp_real.py PROJECT [--package P ...]
+        [--node SUBSTRING] [--errors] [--calls] [--json FILE] [--jobs N] [--profile N]
+        [--distro D]
 
-Runs the source stage of the pipeline (workspace scan, build files, C++ extraction; no
-cache, so every translation unit is parsed) and prints the number of C++ nodes, calls
-and CPP_PARSE_ERROR / CPP_MESSAGE_FIELD diagnostics. ``--node`` lists the calls of the
-nodes whose name contains SUBSTRING; ``--errors`` lists the clang errors grouped by their
-message; ``--calls`` writes every call as one ``node kind name type`` line (for a diff of
-two runs); ``--json FILE`` writes every C++ node's whole result (each call with all its
-fields, conditions and location, its ROS names, the diagnostics of its units) as JSON, to
-compare two checkouts exactly: run each checkout's copy of this script on the same tree
-and ``diff`` the files. ``--jobs N`` parses in N processes (default 1); ``--profile N``
-runs under cProfile (with one job) and prints the N costliest functions by own time and
-the CPU seconds in libclang's parse against the rest. ``--distro D`` parses for that
-ROS distribution's rclcpp (``extract.cpp.versions``; default: none known, as a project
-without ``distro:`` or ROS_DISTRO).
+PROJECT is what ``haros-arch extract`` takes: a project file or a workspace folder.
+Runs the source stage of the pipeline as ``extract --no-cache`` does (the workspace
+scanned in the run's environment, build files, C++ extraction with the project's
+compile_commands.json and distribution: ``pipeline.cpp_arguments``; no cache, so every
+translation unit is parsed) on the packages the project names (default: all) and
+prints the number of C++ nodes, calls and CPP_PARSE_ERROR / CPP_MESSAGE_FIELD
+diagnostics. The haros_arch measured is the one Python imports (PYTHONPATH, else the
+installed one), printed first: run each checkout with its own PYTHONPATH.
+
+``--node`` lists the calls of the nodes whose name contains SUBSTRING; ``--errors``
+lists the clang errors grouped by their message; ``--calls`` writes every call as one
+``node kind name type`` line (for a diff of two runs); ``--json FILE`` writes every C++
+node's whole result (each call with all its fields, conditions and location, its ROS
+names, the diagnostics of its units) as JSON, to compare two checkouts exactly: run
+each checkout with its own PYTHONPATH on the same tree and ``diff`` the files.
+``--jobs N`` parses in N processes (default 1); ``--profile N`` runs under cProfile
+(with one job) and prints the N costliest functions by own time and the CPU seconds in
+libclang's parse against the rest. ``--distro D`` parses for that
+ROS distribution's rclcpp (``extract.cpp.versions``), as a project file's ``distro:``
+(default: the project's, else ROS_DISTRO, as the pipeline).
 """
 
 from __future__ import annotations
@@ -31,19 +39,20 @@ import pstats
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
-
-from haros_arch import cmake  # noqa: E402
-from haros_arch.extract import extract_nodes  # noqa: E402
-from haros_arch.workspace import scan  # noqa: E402
+import haros_arch
+from haros_arch import pipeline
+from haros_arch.autoproject import open_project
+from haros_arch.extract import extract_nodes
+from haros_arch.model.source import Node
+from haros_arch.project import Project, ProjectError
+from haros_arch.workspace import Workspace, scan
 
 ERRORS = ("CPP_PARSE_ERROR", "CPP_MESSAGE_FIELD")
 
 
-def main() -> None:
+def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("workspace")
+    parser.add_argument("project", help="a project file or a workspace folder")
     parser.add_argument("--package", action="append", default=[])
     parser.add_argument("--node", default=None)
     parser.add_argument("--errors", action="store_true")
@@ -52,21 +61,24 @@ def main() -> None:
     parser.add_argument("--jobs", type=int, default=1)
     parser.add_argument("--profile", type=int, default=0)
     parser.add_argument("--distro", default=None)
-    args = parser.parse_args()
-    workspace = scan([os.path.abspath(args.workspace)], dict(os.environ))
-    nodes = []
-    for name in args.package or sorted(workspace.packages):
-        package = workspace.packages[name]
-        if package.build_type in ("catkin", "ament_cmake", "cmake"):
-            package.nodes, _ = cmake.parse_package(package, workspace)
-        nodes += [n for n in package.nodes if n.language == "cpp"]
+    args = parser.parse_args(argv)
+    print(f"haros_arch from {os.path.dirname(os.path.dirname(haros_arch.__file__))}")
+    try:
+        project = open_project(args.project)
+    except ProjectError as err:
+        sys.exit(f"cpp_real: {err}")
+    project.distro = args.distro or project.distro
+    project.packages = args.package or project.packages
+    env = pipeline.distro_environment(project, os.environ)
+    workspace, nodes = source_nodes(project, env)
     spent = _time_stages() if args.jobs == 1 or args.profile else None
     profile = cProfile.Profile(time.process_time) if args.profile else None
     start = time.process_time()
     if profile is not None:
         profile.enable()
     found = extract_nodes(nodes, workspace, cache_dir=None,
-                          jobs=1 if profile is not None else args.jobs, distro=args.distro)
+                          jobs=1 if profile is not None else args.jobs,
+                          **pipeline.cpp_arguments(project, env))
     if profile is not None:
         profile.disable()
     total = time.process_time() - start
@@ -96,6 +108,21 @@ def main() -> None:
     if args.calls:
         for name, call in sorted(calls, key=lambda nc: (nc[0], nc[1].kind, nc[1].name)):
             print(f"CALL {name} {call.kind} {call.name} {call.type}")
+
+
+def source_nodes(project: Project, env: dict[str, str]) -> tuple[Workspace, list[Node]]:
+    """The workspace as the pipeline scans it for ``project`` in the run's environment
+    ``env`` (``pipeline.distro_environment``) and the C++ nodes of the packages the
+    project names (all when none), read from their build files as the pipeline reads
+    them. The packages only a configuration's launch files name are not added."""
+    workspace = scan(project.workspace, env)
+    nodes = []
+    for name in project.packages or sorted(workspace.packages):
+        package = workspace.packages.get(name)
+        if package is not None:
+            pipeline.read_build_files(package, workspace)
+            nodes += [n for n in package.nodes if n.language == "cpp"]
+    return workspace, nodes
 
 
 def _time_stages() -> dict[str, float]:

@@ -154,6 +154,14 @@ CATALOGUE: dict[str, Entry] = {
         "comes from an installed package, its package is not among the project file's "
         "packages, or the name is wrong); the host instance is partial: the plugin's "
         "calls are unknown."),
+    "HARDWARE_UNKNOWN": Entry(
+        "info", "the hardware plugins of controller manager {host} are not known: {detail}",
+        "A ROS 2 controller manager (ros2_control_node) loads the hardware plugins that the "
+        "``<ros2_control><hardware><plugin>`` elements of its robot description name, and "
+        "the description it reads (its ``robot_description`` parameter, or the topic of "
+        "that name robot_state_publisher publishes) is not given by a xacro or cat command "
+        "whose file is known, or parts of it are not; what its hardware code does with ROS "
+        "is not known and the manager instance is partial."),
     "PLUGIN_CLASS_UNKNOWN": Entry(
         "warning", "the class of plugin {plugin} loaded by {host} is not known",
         "The parameter that gives the plugin's class (``<name>.plugin``, ``<name>.type``, "
@@ -209,8 +217,10 @@ CATALOGUE: dict[str, Entry] = {
     "GAZEBO_PLUGIN_UNKNOWN": Entry(
         "warning", "Gazebo plugin {filename} loaded by {host} is not known",
         "A <plugin> of a robot description names a library that is not in the table of "
-        "Gazebo plugins (haros_arch/robot/gazebo_plugins.py) nor a gz sim system a "
-        "workspace package builds (a library registered with GZ_ADD_PLUGIN or "
+        "Gazebo plugins (haros_arch/robot/gazebo_plugins.py), nor a Gazebo classic "
+        "plugin a workspace package builds (a library registered with "
+        "GZ_REGISTER_<KIND>_PLUGIN, whose calls are read from its C++), nor a gz sim "
+        "system one builds (a library registered with GZ_ADD_PLUGIN or "
         "IGNITION_ADD_PLUGIN); its topics and services are unknown and the Gazebo node "
         "instance is partial."),
     "GAZEBO_PLUGIN_ARGUMENT": Entry(
@@ -500,6 +510,16 @@ CATALOGUE: dict[str, Entry] = {
         "not decide on it. Not said when the call is also given a pointer to a member "
         "function of the node's class (a callback binding, ecl::Slot(&Node::cb, *this): "
         "the member's calls are read where it is defined)."),
+    "CPP_NODE_UNREAD": Entry(
+        "info", "the node is made by {name}, a library class whose own calls are read "
+        "only in part",
+        "The node is an object of a library class that our stand-ins declare (ros2_control's "
+        "controller_manager::ControllerManager, which a node of the workspace may make "
+        "itself, as ros2_control_node does): the name its constructor gives and the calls "
+        "the API tables say it makes (the manager's services) are read, the rest of what "
+        "its code makes on the node is not (its robot_description subscription, its "
+        "parameters, the topics of newer releases). The node is 'partial', so checks that "
+        "claim something is absent do not decide on it."),
     "CPP_NAMES_DECLARED": Entry(
         "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
         "clang errors in this unit: {before} before, {after} after",
@@ -673,6 +693,12 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_TYPE_UNKNOWN": Entry(
+        "warning", "node type {node} is not known statically; its interface is unknown",
+        "A launch file starts a node whose package or executable it names with a value "
+        "not known statically (a launch argument with no value): which program runs is "
+        "unknown, not missing; the instance is kept without publishers, subscribers or "
+        "other links, as one of unknown interface."),
     "NODE_NOT_READ": Entry(
         "warning", "node type {node} is {path}, a program this tool does not read (not a "
                    "built target nor a Python program); its interface is unknown",

@@ -117,8 +117,7 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
     if paths:
         with _stage(options, "C++"):
             batch = unit_digests(paths, workspace, cache_dir=options.cache_dir,
-                                 jobs=options.jobs, compile_commands=_compile_commands(project),
-                                 distro=source_distro(project, env))
+                                 jobs=options.jobs, **cpp_arguments(project, env))
     if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
@@ -133,8 +132,13 @@ def _units_tell(nodes: list[Node]) -> bool:
                                                for s in n.sources) for n in nodes)
 
 
-def _compile_commands(project: Project) -> list[str] | None:
-    return [project.compile_commands] if project.compile_commands else None
+def cpp_arguments(project: Project, env: Mapping[str, str]) -> dict[str, Any]:
+    """How a run parses its C++ translation units, beside which (``extract_nodes``'s
+    keyword arguments): the compile_commands.json the project file names (None: those
+    in the workspace) and the ROS distribution (``source_distro``). ``env``: the run's
+    environment (``distro_environment``); bench/cpp_real.py parses with these too."""
+    return {"compile_commands": [project.compile_commands] if project.compile_commands
+            else None, "distro": source_distro(project, env)}
 
 
 def _extract(nodes: list[Node], workspace: Workspace, project: Project,
@@ -143,8 +147,8 @@ def _extract(nodes: list[Node], workspace: Workspace, project: Project,
              ) -> list[diag.Diagnostic]:
     return extract_nodes(  # every C++ source once, in parallel, cached
         nodes, workspace, cache_dir=options.cache_dir, jobs=options.jobs,
-        compile_commands=_compile_commands(project), timings=options.timings,
-        cpp_batch=cpp_batch, kept=kept, keep=keep, distro=source_distro(project, env))
+        timings=options.timings, cpp_batch=cpp_batch, kept=kept, keep=keep,
+        **cpp_arguments(project, env))
 
 
 def distro_environment(project: Project, environment: Mapping[str, str]) -> dict[str, str]:

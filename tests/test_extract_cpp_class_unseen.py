@@ -639,3 +639,11 @@ def test_the_table_names_its_sources() -> None:
         repo, commit, path = source.split()
         assert repo.startswith("github:") and len(commit) == 40, name
         assert path.endswith("package.xml"), name
+
+
+def test_a_system_library_of_the_table_leaves_it_complete(write_tree: Any) -> None:
+    # agilexrobotics' ugv_sdk builds standalone asio's io_service and names the rosdep
+    # key asio (libasio-dev), a system library: no ROS calls of its own
+    node = _smoother(write_tree, "asio::io_service io;", "gtsam", "octomap", "asio")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []

@@ -134,3 +134,65 @@ def test_a_delegation_to_no_wrapper_makes_none(tmp_path) -> None:
     result = extract_cpp([str(tmp_path / "server.cpp")], scan([str(tmp_path)]),
                          cache_dir=None)
     assert [c for c in result.calls if c.kind == "action-server"] == []
+
+
+# navigation2's jazzy branch makes its servers so: ``std::make_unique<ActionServer>(...)``
+# with ``using ActionServer = nav2_util::SimpleActionServer<Action>`` in the node's class,
+# and, in a class template (nav2_behaviors' TimedBehavior<ActionT>), ``std::make_shared<
+# ActionServer>(node, name_, ...)`` with ``using ActionServer = SimpleActionServer<ActionT>``
+ALIASED = """#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <example_interfaces/action/fibonacci.hpp>
+#include "servers/simple_server.hpp"
+
+class Counter : public rclcpp::Node {
+public:
+  using CountServer = SimpleServer<example_interfaces::action::Fibonacci>;
+  Counter() : rclcpp::Node("counter") {
+    server_ = std::make_unique<CountServer>(
+      std::shared_ptr<rclcpp::Node>(this, [](rclcpp::Node *) {}), "count", [] {});
+  }
+private:
+  std::unique_ptr<CountServer> server_;
+};
+
+template<typename ActionT>
+class Behavior {
+public:
+  using ActionServer = SimpleServer<ActionT>;
+  void configure(std::shared_ptr<rclcpp::Node> node, const std::string & name) {
+    name_ = name;
+    server_ = std::make_shared<ActionServer>(node, name_, [] {});
+  }
+private:
+  std::string name_;
+  std::shared_ptr<ActionServer> server_;
+};
+
+class Repeat : public Behavior<example_interfaces::action::Fibonacci> {};
+
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<Counter>();
+  Repeat repeat;
+  repeat.configure(node, "repeat");
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_server_made_through_a_type_alias_is_named_where_it_is_made(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(MANIFEST)
+    (tmp_path / "include" / "servers").mkdir(parents=True)
+    (tmp_path / "include" / "servers" / "simple_server.hpp").write_text(HEADER)
+    (tmp_path / "server.cpp").write_text(ALIASED)
+    result = extract_cpp([str(tmp_path / "server.cpp")], scan([str(tmp_path)]),
+                         cache_dir=None)
+    found = sorted((c.kind, c.name, c.type, c.location.file, c.location.line)
+                   for c in result.calls)
+    # before: none (the alias hid the class template; the construction in the class
+    # template depends on ActionT, a call clang does not resolve)
+    assert found == [
+        ("action-server", "count", "example_interfaces/action/Fibonacci", "server.cpp", 10),
+        ("action-server", "repeat", "example_interfaces/action/Fibonacci", "server.cpp", 23)]

@@ -83,3 +83,38 @@ def test_format_pieces() -> None:
     assert boost_pieces("%1%%s") is None
     assert [p if isinstance(p, str) else p.index for p in printf_pieces("%*d|%s") or []] == [
         1, "|", 2]
+
+
+COMPILED = """
+#include <string>
+#include <fmt/compile.h>
+#include <rclcpp/rclcpp.hpp>
+class Manager : public rclcpp::Node
+{
+public:
+  Manager() : rclcpp::Node("manager")
+  {
+    std::string name = declare_parameter("name", std::string("c"));
+    const std::string param_name = fmt::format(FMT_COMPILE("{}.params_file"), name);
+    rclcpp::Parameter files;
+    if (get_parameter(param_name, files)) {
+      declare_parameter(fmt::format(FMT_STRING("{}.type"), name), std::string());
+    }
+  }
+};
+"""
+
+
+def test_a_format_string_compiled_or_checked_is_its_literal(write_tree) -> None:
+    """ros2_control's controller_manager (jazzy, controller_manager.cpp:1327) builds
+    ``fmt::format(FMT_COMPILE("{}.params_file"), controller_name)``: with FMT_COMPILE
+    unknown, clang found the call ambiguous (an error in load_controller) and its
+    parameter reads were lost, ros2_control_node partial."""
+    root = write_tree({"ex/package.xml": package_xml("ex", "ament_cmake"),
+                       "ex/src/node.cpp": COMPILED})
+    result = extract_cpp([str(root / "ex" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    names = [(c.kind, c.name) for c in result.calls]
+    assert ("read", "?.params_file") in names
+    assert ("declare", "?.type") in names
+    assert not [d for d in result.diagnostics if "ambiguous" in d.message]

@@ -198,3 +198,58 @@ def test_tf2_linear_math_makes_no_error(write_tree) -> None:
     errors = [d.message for d in result.diagnostics
               if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
     assert errors == []
+
+
+CONTROLLER = """#include <memory>
+#include <ros/ros.h>
+#include <realtime_tools/realtime_box.h>
+#include <std_msgs/Float64.h>
+
+class HeadController {
+public:
+  bool init(ros::NodeHandle& nh) {
+    std::shared_ptr<std_msgs::Float64> ratio(new std_msgs::Float64());
+    ratio->data = 0.3;
+    ratio_box_.set(ratio);
+    pub_ = nh.advertise<std_msgs::Float64>("state", 1);
+    timer_ = nh.createTimer(100, &HeadController::publish, this);
+    return true;
+  }
+  void publish(const ros::TimerEvent&) {}
+private:
+  realtime_tools::RealtimeBox<std::shared_ptr<const std_msgs::Float64>> ratio_box_;
+  ros::Publisher pub_;
+  ros::Timer timer_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "head");
+  ros::NodeHandle nh("head");
+  HeadController c;
+  c.init(nh);
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_a_box_of_a_shared_pointer_and_a_timer_at_a_rate_make_no_error(write_tree) -> None:
+    """sawyer_simulator's controllers: ``box.set(shared_ptr<T>)`` of a
+    ``RealtimeBox<shared_ptr<const T>>`` was ambiguous with the box's ``set(function)``
+    (the stand-in's std::function took a smart pointer, which has no ``operator()``),
+    and ``nh.createTimer(100, &C::f, this)`` found no overload (roscpp's
+    ``Rate(double)`` is not explicit: 100 Hz): errors in a function that calls the ROS
+    API, the node partial."""
+    root = write_tree({
+        "head/package.xml": package_xml("head", "catkin"),
+        "head/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(head)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp std_msgs realtime_tools)\n"
+            "catkin_package()\nadd_executable(head src/head.cpp)\n"),
+        "head/src/head.cpp": CONTROLLER})
+    result = extract_cpp([str(root / "head" / "src" / "head.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert ("publish", "head/state") in [(c.kind, c.name) for c in result.calls]
+    errors = [d.message for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
+    assert errors == []

@@ -731,3 +731,54 @@ def test_a_serial_port_opened_with_termios_and_fcntl(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "port_name"), ("publish", "status")]
+
+
+def test_strcasecmp_and_the_standard_file_descriptors(write_tree) -> None:
+    # unitree_legged_real's ros_udp: strcasecmp in main, beside its advertise calls,
+    # was an error and the node partial; xarm_ros2's driver: setlinebuf (survey Z19)
+    result = _extract(write_tree, _source("ros1_strcasecmp_stdin.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("publish", "low_state"), ("publish", "high_state")]
+
+
+def test_memory_locking_and_cpu_affinity(write_tree) -> None:
+    # KUKA's kuka_drivers_core control_node: munlockall in main (after the control loop)
+    # was an error in the function that makes the node's calls, and the node partial;
+    # cpu_set_t and CPU_ZERO were declared permissively (survey Z20)
+    result = _extract(write_tree, _source("ros2_realtime_memory.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert "CPP_NAMES_DECLARED" not in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "cpu_affinity"), ("publish", "locked")]
+
+
+def test_string_view_search_and_substrings(write_tree) -> None:
+    # KUKA's sunrise robot_manager_node splits an IP address held in a std::string_view
+    # (find, npos, substr): 5 errors in a method of the node (survey Z20)
+    result = _extract(write_tree, """
+#include <string>
+#include <string_view>
+#include <vector>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/bool.hpp"
+bool valid(std::string_view ip, const std::string& s) {
+  std::vector<std::string> parts;
+  size_t i = 0;
+  auto pos = ip.find('.');
+  while (pos != std::string_view::npos) {
+    parts.emplace_back(ip.substr(i, pos - i));
+    i = ++pos;
+    pos = ip.find('.', pos);
+  }
+  return parts.size() == 3 && s == "x" && ip == "y" && ip.starts_with("1");
+}
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("n");
+  auto pub = node->create_publisher<std_msgs::msg::Bool>("ok", 1);
+  return valid("1.2.3.4", "x") ? 0 : 1;
+}
+""", "ament_cmake")
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "ok")]

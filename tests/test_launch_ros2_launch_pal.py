@@ -37,3 +37,34 @@ def generate_launch_description():
              name=[LaunchConfiguration('robot'), '_spawner']),
     ])
 """
+
+
+def test_pal_argument_helpers_read_and_declare_launch_arguments(write_tree) -> None:
+    # TIAGo's launch files: read_launch_argument(name, context) in an OpaqueFunction and
+    # get_robot_name('tiago') were calls not interpreted (14 + 4 LAUNCH_PY_UNSUPPORTED in
+    # tiago_robot), every value built on them unknown
+    model, _ = run(write_tree, """
+from launch_pal.arg_utils import read_launch_argument
+from launch_pal.robot_utils import get_robot_name
+
+def setup(context, *args, **kwargs):
+    robot = read_launch_argument('robot_name', context)
+    return [Node(package='drive', executable='base', name=robot + '_base')]
+
+def generate_launch_description():
+    return LaunchDescription([get_robot_name('tiago'), OpaqueFunction(function=setup)])
+""")
+    assert [n.name for n in model.nodes] == ["/tiago_base"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in [d.code for d in model.diagnostics]
+    model, _ = run(write_tree, """
+from launch_pal.arg_utils import read_launch_argument
+from launch_pal.robot_utils import get_robot_name
+
+def setup(context, *args, **kwargs):
+    return [Node(package='drive', executable='base',
+                 name=read_launch_argument('robot_name', context) + '_base')]
+
+def generate_launch_description():
+    return LaunchDescription([get_robot_name(), OpaqueFunction(function=setup)])
+""", args={"robot_name": "ari"})
+    assert [n.name for n in model.nodes] == ["/ari_base"]

@@ -41,3 +41,26 @@ def generate_launch_description():
 """)
     assert [n.name for n in model.nodes] == ["/rviz"]
     assert "LAUNCH_PY_UNSUPPORTED" not in [d.code for d in model.diagnostics]
+
+
+def test_a_pathlib_path_of_a_share_folder_found_at_launch_time_keeps_its_parts(
+        write_tree) -> None:
+    # ardupilot_gz's bringup: ``f'{Path(get_package_share_directory("ros_gz_sim")) /
+    # "launch" / "gz_sim.launch.py"}'`` with ros_gz_sim not installed here was "arithmetic
+    # on an unknown value" and an include of ``?`` (two warnings); it is the package's
+    # file, found at launch time (an include not read, an info)
+    model, _ = run(write_tree, """
+from pathlib import Path
+
+def generate_launch_description():
+    sim = get_package_share_directory('elsewhere')
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(
+            f'{Path(sim) / "launch" / "sim.launch.py"}')),
+        Node(package='rviz2', executable='rviz2', name='rviz',
+             arguments=['-d', f"{Path(sim, 'rviz') / 'view.rviz'}"]),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/rviz"]
+    assert not [d for d in model.diagnostics if d.severity != "info"]
+    assert [n.args for n in model.nodes] == ["-d ?/rviz/view.rviz"]

@@ -729,7 +729,13 @@ def test_a_controller_whose_class_is_not_here_is_a_node_of_unknown_interface(tmp
                            "ros2_control_node", "/")),
              ros2(NodeDecl(f"/{UNKNOWN_MARK}", "controller_manager", "spawner", "/",
                            args=f"jsb --param-file {params}"))]
-    config = graph(decls, nodes=[manager], root=str(tmp_path))
+    # a description with no <ros2_control>: no hardware to load (one not known would
+    # leave the manager partial, HARDWARE_UNKNOWN)
+    urdf = tmp_path / "robot.urdf"
+    urdf.write_text("<robot name='r'><link name='base'/></robot>")
+    config = graph(decls, [ParamDecl("/controller_manager/robot_description", "?",
+                                     command=f"cat {urdf}")],
+                   nodes=[manager], root=str(tmp_path))
     added = {n.name: n for n in config.nodes if n.origin == "plugin"}
     assert list(added) == ["/jsb"] and added["/jsb"].node is None
     assert links_of(config, "/jsb") == base_declares("/jsb")
@@ -737,3 +743,50 @@ def test_a_controller_whose_class_is_not_here_is_a_node_of_unknown_interface(tmp
     assert host.node is not None and host.node.completeness == "complete"
     assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")] == [
         "PLUGIN_NOT_FOUND"]
+
+
+def test_a_workspace_node_that_makes_the_manager_hosts_the_spawners_controllers(tmp_path):
+    # KUKA's kuka_drivers_core/control_node makes controller_manager::ControllerManager
+    # itself (its model serves ~load_controller, the C++ row of the manager's
+    # constructor); the spawners' controllers are loaded into it as into
+    # ros2_control_node (before: a node of no host, the controllers nowhere)
+    params = tmp_path / "c.yaml"
+    params.write_text("/controller_manager:\n  ros__parameters:\n"
+                      "    bcast:\n      type: my/Bcast\n")
+    bcast = plugin("my", "my/Bcast", "my::Bcast", call("publish", "joint_states", "x/J"))
+    served = call("server", "~load_controller", "controller_manager_msgs/srv/LoadController")
+    control = Node("robot", "control_node", rosname="controller_manager", calls=[served])
+    decls = [ros2(NodeDecl("/controller_manager", "robot", "control_node", "/")),
+             ros2(NodeDecl("/spawner", "controller_manager", "spawner", "/",
+                           args=f"bcast --param-file {params}"))]
+    config = graph(decls, nodes=[bcast, control], root=str(tmp_path))
+    assert [n.name for n in config.nodes if n.origin == "plugin"] == ["/bcast"]
+    assert links_of(config, "/bcast") == sorted([
+        ("publish", "/joint_states"), *base_declares("/bcast")])
+    assert config.parameter("/controller_manager/bcast.type").is_read
+    # a node that serves a service of that name of another type is no manager
+    served.type = "my_msgs/srv/Load"
+    config = graph(decls, nodes=[bcast, control], root=str(tmp_path))
+    assert not [n.name for n in config.nodes if n.origin == "plugin"]
+
+
+def test_ros1_a_controller_topic_named_by_its_parameter_is_linked():
+    # sawyer_sim_controllers' head controller: getParam("topic_command", name) then
+    # NodeHandle("~").subscribe(name, ...); the controller's copy of that subscription
+    # keeps its ``?`` for the parameter's value, and was taken for the host's own
+    # unnamed copy and dropped once the controller's code parsed clean
+    head = plugin("sawyer_sim_controllers", "sawyer_sim_controllers/SawyerHeadController",
+                  "sawyer_sim_controllers::SawyerHeadController",
+                  call("read", "?/topic_command", "str", 80, handle_namespace="?"),
+                  call("subscribe", "~?", "std_msgs/Float64", 86, handle_namespace="~",
+                       name_param="?/topic_command"))
+    assert head.completeness == "complete"
+    spawner = NodeDecl("/r/spawner", "controller_manager", "spawner", "/r/", args="head")
+    params = [ParamDecl("/r/head/type", "sawyer_sim_controllers/SawyerHeadController",
+                        location=where(4)),
+              ParamDecl("/r/head/topic_command", "/r/head/command_head_pan",
+                        location=where(5))]
+    config = graph([spawner], params, [head])
+    assert links_of(config, "/r/head") == [
+        ("read", "/r/head/topic_command"), ("read", "/r/head/type"),
+        ("subscribe", "/r/head/command_head_pan")]

@@ -202,3 +202,53 @@ def test_a_base_method_the_plugin_redefines_is_not_run(write_tree) -> None:
         ("?.loose", "maps/include/maps/loose.hpp"),
         ("?.transform_tolerance", "maps/src/filter.cpp"),
     ]
+
+
+def test_a_factory_registered_plugin_is_its_registered_class_for_redefinitions(
+        write_tree) -> None:
+    """mavros (ROS 2) describes each plugin as ``PluginFactoryTemplate<X>`` and registers
+    ``X``: the base methods X redefines are those of X's bases, not the factory's."""
+    from haros_arch.model.source import Node
+    from haros_arch.plugins.inherit import overridden
+    from haros_arch.workspace import Workspace
+
+    root = write_tree({
+        "fac/package.xml": package_xml("fac", "ament_cmake"),
+        "fac/include/fac/plugin.hpp": """
+            namespace fac {
+            class Plugin {
+            public:
+              virtual void connect();
+              void spin();
+            };
+            class Factory { public: virtual ~Factory() {} };
+            template<class T> class FactoryTemplate : public Factory {};
+            }
+            """,
+        "fac/src/plugin.cpp": """
+            #include "fac/plugin.hpp"
+            namespace fac {
+            void Plugin::connect() {
+              node->create_publisher<std_msgs::msg::String>("connected", 1);
+            }
+            void Plugin::spin() {
+            }
+            }
+            """,
+        "fac/src/imu.cpp": """
+            #include "fac/plugin.hpp"
+            namespace fac {
+            class ImuPlugin : public Plugin {
+            public:
+              void connect() override;
+            };
+            void ImuPlugin::connect() {
+            }
+            }
+            REGISTER_PLUGIN(fac::ImuPlugin)
+            """,
+    })
+    node = Node("fac", "fac/imu", "plugin", sources=["fac/src/imu.cpp", "fac/src/plugin.cpp"],
+                plugin_class="fac::FactoryTemplate<fac::ImuPlugin>")
+    # before: [] (the chain was the factory's, FactoryTemplate and Factory)
+    assert overridden(node, Workspace(root=str(root))) == [("fac/src/plugin.cpp", 3, 5)]

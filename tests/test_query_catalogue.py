@@ -245,7 +245,7 @@ def test_a_long_place_keeps_its_line_in_the_message():
         {"name": "/sensing/gnss/ublox", "id": "node:/sensing/gnss/ublox#2",
          "location": {"file": path, "line": 37}}]})
     (finding,) = run_rule(RULES["duplicate-node-names"], model)
-    assert f"({path}:15 and {path}:37)" in finding.message
+    assert f"({path} lines 15 and 37)" in finding.message
 
 
 def test_a_diagnostic_s_message_is_filled_in_whole():

@@ -351,3 +351,25 @@ def test_the_shipped_metapackage_table_comes_from_the_pinned_lists():
     assert table["sources"] and all(
         (s["repository"], s["commit"], s["distro"]) in pinned for s in table["sources"])
     assert "gazebo_ros" in table["metapackages"]["noetic"]["gazebo_ros_pkgs"]
+
+
+def test_ros1_an_include_a_condition_leaves_out_uses_no_package(write_tree):
+    # roslaunch-deps skips a tag whose if/unless does not hold; a skipped <node> was
+    # never a use, a skipped <include>'s $(find pkg) was (dingo_bringup's charger)
+    root = write_tree({
+        "src/bringup/package.xml": manifest("bringup", ("exec_depend", "camera")),
+        "src/bringup/CMakeLists.txt": "project(bringup)\n",
+        "src/bringup/launch/robot.launch": (
+            '<launch>\n  <group if="$(optenv CHARGER 0)">\n'
+            '    <include file="$(find charger)/launch/charger.launch"/>\n  </group>\n'
+            '  <include unless="true" file="$(find dock)/launch/dock.launch"/>\n'
+            '  <include file="$(find camera)/launch/camera.launch"/>\n'
+            '  <include if="$(optenv LIDAR 1)" file="$(find lidar)/launch/lidar.launch"/>\n'
+            "</launch>\n"),
+        "project.yaml": "project: p\nconfigurations:\n  c: [bringup/launch/robot.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    # camera is declared; lidar's include is reached (the condition holds) and is not
+    assert findings(model) == [("bringup/launch/robot.launch", 7, "lidar")]
+    assert sorted(u.package for u in model.configurations[0].package_uses) == [
+        "camera", "lidar"]

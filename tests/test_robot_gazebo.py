@@ -358,3 +358,33 @@ def test_gazebo_from_an_unread_gazebo_ros_launch_file_takes_the_remaps_around_it
     assert [(n, kind, name) for n, kind, name, _ in made(config)] == expected
     assert ("GAZEBO_NOT_STARTED", gazebo) in {
         (d.code, d.message.rsplit(" ", 1)[-1]) for d in config.diagnostics}
+
+
+def test_ros1_video_plugin_subscribes_to_the_images_it_shows(write_tree):
+    # sawyer_description's head screen: <visual><plugin filename="libgazebo_ros_video.so">
+    # with <topicName>/robot/head_display</topicName> (gazebo_plugins' video plugin)
+    root = write_tree({
+        "bot/package.xml": '<package format="2"><name>bot</name><version>0.1.0</version>'
+                           "<description>d</description>"
+                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+                           "<buildtool_depend>catkin</buildtool_depend></package>\n",
+        "bot/CMakeLists.txt": "project(bot)\n",
+        "bot/urdf/bot.urdf": (
+            '<robot name="bot">\n  <link name="screen"/>\n  <gazebo reference="screen">\n'
+            '    <visual>\n      <plugin name="video" filename="libgazebo_ros_video.so">\n'
+            "        <topicName>/robot/head_display</topicName>\n"
+            "        <robotNamespace>/robot</robotNamespace>\n"
+            "      </plugin>\n    </visual>\n  </gazebo>\n  <gazebo reference=\"screen\">\n"
+            '    <visual>\n      <plugin name="tv" filename="libgazebo_ros_video.so"/>\n'
+            "    </visual>\n  </gazebo>\n</robot>\n"),
+        "bot/launch/sim.launch": (
+            '<launch>\n  <param name="robot_description" textfile="$(find bot)/urdf/bot.urdf"/>'
+            '\n  <node pkg="gazebo_ros" type="spawn_model" name="spawn"'
+            ' args="-param robot_description -urdf -model bot"/>\n</launch>\n'),
+    })
+    config = configuration(str(root), "bot/launch/sim.launch")
+    assert made(config) == [
+        ("/gazebo", "subscribe", "/image_raw", "sensor_msgs/Image"),  # the defaults
+        ("/gazebo", "subscribe", "/robot/head_display", "sensor_msgs/Image"),
+    ]
+    assert not [d for d in config.diagnostics if d.code == "GAZEBO_PLUGIN_UNKNOWN"]

@@ -27,6 +27,7 @@ from .nodes import (
     SourceMap,
     components,
     executables,
+    gazebo_plugins,
     scripts,
     with_elsewhere,
 )
@@ -220,6 +221,7 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
                         lambda name: package_links(name, workspace))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
+    nodes.extend(gazebo_plugins(interpreter, package, files, sources))
     libraries: dict[str, plugins.Library] = {}
     for target in interpreter.targets.values():
         if target.kind == "library":

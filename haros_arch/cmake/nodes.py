@@ -343,6 +343,53 @@ def components(it: Interpreter, package: Package, workspace: Files,
     return nodes
 
 
+# Gazebo classic's registration macros: the library is a plugin of that kind (the
+# macro defines the library's one ``RegisterPlugin``, so one class per library)
+_GAZEBO_MACRO = re.compile(
+    r"\bGZ_REGISTER_(MODEL|SENSOR|WORLD|SYSTEM|VISUAL|GUI)_PLUGIN\s*\(\s*([A-Za-z_][\w:]*)\s*\)")
+GAZEBO_BASES = {"MODEL": "Model", "SENSOR": "Sensor", "WORLD": "World", "SYSTEM": "System",
+                "VISUAL": "Visual", "GUI": "GUI"}
+
+
+def gazebo_plugins(it: Interpreter, package: Package, workspace: Files,
+                   sources: SourceMap) -> list[Node]:
+    """The Gazebo classic plugins the package's libraries are: a library whose own
+    source registers a class with ``GZ_REGISTER_<KIND>_PLUGIN`` is a ``plugin`` node
+    named by the library (the ``<plugin filename>`` a robot description loads it by),
+    with the class's sources as a component's are found; its ``plugin_base`` is
+    ``gazebo::<Kind>Plugin``. ``robot.attach`` gives its calls to the Gazebo node."""
+    nodes: list[Node] = []
+    for target in it.targets.values():
+        if target.kind != "library":
+            continue
+        for path in sources.own(target):
+            found = _gazebo_registered(os.path.join(workspace.root, path), workspace)
+            if found is None:
+                continue
+            kind, cls, line = found
+            nodes.append(Node(package.name, target.output_name or target.name, "plugin",
+                              "cpp", _component(target, cls, sources, workspace),
+                              conditions=target.conditions,
+                              location=workspace.location(
+                                  os.path.join(workspace.root, path), line, 1),
+                              plugin_class=cls,
+                              plugin_base=f"gazebo::{GAZEBO_BASES[kind]}Plugin"))
+            break
+    return nodes
+
+
+def _gazebo_registered(path: str, workspace: Files) -> tuple[str, str, int] | None:
+    text, _ = read_text(path, workspace.location(path))
+    if not text or "GZ_REGISTER_" not in text:
+        return None
+    text = code_only(text, literals=True)
+    match = _GAZEBO_MACRO.search(text)
+    if match is None:
+        return None
+    return (match.group(1), match.group(2).lstrip(":"),
+            text.count("\n", 0, match.start()) + 1)
+
+
 def _registered_in(path: str, workspace: Files) -> Iterable[tuple[str, int]]:
     text, _ = read_text(path, workspace.location(path))
     if not text or "RCLCPP_COMPONENTS_REGISTER_NODE" not in text:

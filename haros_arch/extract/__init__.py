@@ -179,7 +179,8 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # read or parsed)
 _PARTIAL_CAUSES = {
     "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
-            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_CLASS_UNSEEN", "CPP_BUILD_MACRO",
+            "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_NODE_UNREAD", "CPP_CLASS_UNSEEN",
+            "CPP_BUILD_MACRO",
             "CPP_VERSION_UNKNOWN", "CPP_LIBRARY_LOADED"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN",
                "PY_LAUNCHES"),

@@ -125,7 +125,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.diagnostics.extend(launch.diagnostics)
     config.diagnostics.extend(guessed_names(launch, nodes))
     config.diagnostics.extend(unnamed_param_files(launch, nodes))
-    for param in process_params(launch, nodes):
+    given = process_params(launch, nodes)
+    for param in given:
         parameter = resources.get(Parameter, param.name)
         assert isinstance(parameter, Parameter)
         parameter.launch_type = param.type
@@ -158,11 +159,11 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
     # serves the controller_manager services the spawners' controllers are loaded by
     # (linked before the plugins attach, which look for the instance that serves them)
-    described = attach_descriptions(config, launch, started, workspace, resources)
+    described = attach_descriptions(config, launch, started, workspace, resources, given)
     for instance, calls in described.calls:
         _link_calls(instance, calls, resources, config, transports)
     attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
-                              workspace, plugin_models)
+                              workspace, plugin_models, described.hardware)
     for instance, calls in attached:
         _link_calls(instance, calls, resources, config, transports)
     # then the classes any instance's own code loads by a parameter's value (filters'
@@ -259,14 +260,20 @@ def _drop_base_copies(config: Configuration,
     (the same kind and place) are the plugins' base-class code, which the host's
     executable links (nav2's costmap runs ``CostmapFilter::onInitialize`` for each
     filter): each plugin's copy names them, so the host's unnamed copy goes. Kept when
-    the host is not complete (a plugin not known may be what runs that code)."""
+    the host is not complete (a plugin not known may be what runs that code). A plugin's
+    own copy stays, also one whose ``?`` is the value of a parameter the graph has just
+    read under the plugin's name: a ros_control controller's topic named by its
+    ``topic_command`` parameter (sawyer_sim_controllers' head controller: its
+    subscription was dropped once the controller's code parsed clean)."""
     places: dict[int, set[tuple[str, Location]]] = {}
+    copies: set[int] = set()  # the plugins' calls themselves
     for instance, calls in attached:
         # the plugins' calls, not the instance's own (a host's child, a costmap that a
         # planner server makes, comes with its node's calls)
         own = {id(c) for c in instance.node.calls} if instance.node is not None else set()
         places.setdefault(id(instance), set()).update(
             (c.kind, c.location) for c in calls if id(c) not in own)
+        copies.update(id(c) for c in calls if id(c) not in own)
     gone = []
     for instance in config.nodes:
         node, placed = instance.node, places.get(id(instance))
@@ -274,8 +281,9 @@ def _drop_base_copies(config: Configuration,
             continue
         unnamed = {(c.kind, c.location, c.name) for c in node.calls
                    if UNKNOWN_MARK in c.name and (c.kind, c.location) in placed}
-        gone += [link for link in instance.links if link.call is not None and (
-            link.call.kind, link.call.location, link.call.name) in unnamed]
+        gone += [link for link in instance.links if link.call is not None
+                 and id(link.call) not in copies and (
+                     link.call.kind, link.call.location, link.call.name) in unnamed]
     if gone:
         drop_links(config, gone)
 
@@ -462,6 +470,10 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known
         node = container_node(decl)
+    elif node is None and plugin is None and UNKNOWN_MARK in key:
+        # ``executable=LaunchConfiguration('script')`` with no value: which program runs
+        # is not known, not missing (crazyswarm2's example launch file)
+        config.diagnostics.append(diag.make("NODE_TYPE_UNKNOWN", decl.location, node=key))
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         # the package's interface model was found without this node: said there
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location

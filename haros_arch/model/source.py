@@ -43,6 +43,10 @@ LIFECYCLE_SERVICES: tuple[tuple[str, str], ...] = tuple(
 
 # ``PrimitiveCall.name_each`` of a call named by a numbered family of parameters
 NUMBERED = "#"
+# the start of a ``PrimitiveCall.name_param`` that is no ROS parameter but a child element
+# of a Gazebo classic plugin's SDF (``sdf:topicName``), which robot.attach fills in from
+# the robot description
+SDF_ELEMENT = "sdf:"
 
 @dataclass(frozen=True)
 class Dependency:
@@ -201,6 +205,11 @@ class PrimitiveCall:
     # ``<prefix>filter1.type``, then filter2, ...); the graph gives the instance the calls
     # of the classes its parameters name (``plugins.attach.chains``)
     loads: str | None = field(default=None, metadata={"optional": True})
+    # ROS 1, a Gazebo classic plugin: the child element of its SDF (``sdf:robotNamespace``,
+    # ``SDF_ELEMENT``) whose value is the one ``?`` of the handle's namespace
+    # (``handle_namespace``), where the name's own part holds another (``name_param``);
+    # robot.attach fills both from the robot description
+    namespace_param: str | None = field(default=None, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

@@ -58,11 +58,13 @@ from ..workspace import Workspace
 from . import behavior_trees
 from .hosts import (
     CHAINS,
+    DESCRIBED,
     EXPORTED,
     EXTENDS,
     LOOKUP_PACKAGES,
     SPAWNER,
     Child,
+    Host,
     Slot,
     Sources,
     host_of,
@@ -72,6 +74,8 @@ from .hosts import (
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
 MANAGER_NAME = "controller_manager"
+MANAGER_NODE = ("controller_manager", "ros2_control_node")  # the manager's own executable
+MANAGER_SERVICE = "controller_manager_msgs/srv/LoadController"
 _ROS_ARG_FLAGS = ("-r", "--remap", "-p", "--param", "--params-file")
 MAX_PLUGINS = 200  # per slot: a hostile list stays bounded
 MAX_PARAM_VALUES = 100_000  # values in one spawner parameter file, aliases counted out
@@ -104,15 +108,20 @@ class Choice:
     # the host's namespace (relative to it) its code moves this plugin's parameters from
     # before loading it (a pre-Hydro costmap's ``observation_sources`` and sources)
     moved_from: str | None = None
+    # why the class is not known where no parameter names it (the robot description a
+    # controller manager reads: HARDWARE_UNKNOWN)
+    why: str | None = None
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
            nodes: Mapping[str, Node], params: Params, workspace: Workspace,
            models: PluginModels | None = None,
+           hardware: Mapping[int, list[Choice]] | None = None,
            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The plugin calls each host instance (or a plugin's own instance) makes; plugin
     instances are added to ``config.nodes``, problems to ``config.diagnostics``;
-    ``models`` finds the classes of packages without source."""
+    ``models`` finds the classes of packages without source; ``hardware`` the hardware
+    plugins of each controller manager, by ``id`` of its instance (``robot.attach``)."""
     index = plugin_index(nodes)
     owned: set[int] = set()  # instances that have their own copy of their node model
     made: dict[int, set[tuple[Any, ...]]] = {}  # per host instance: calls it has
@@ -120,7 +129,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     hosted: set[tuple[object, ...]] = set()  # launch nodes whose process hosts already
     for decl, started_instance in started:
-        top = host_of(decl.package, decl.executable, decl.ros_version)
+        top = host_of(decl.package, decl.executable, decl.ros_version) or _manager_host(
+            started_instance)
         if top is None:
             _unhosted(started_instance, owned)
             continue
@@ -146,6 +156,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                                             unnamed=decl.name_guessed))
                 elif slot.names == EXPORTED:
                     choices = list(_exported(instance, slot, params, nodes))
+                elif slot.names == DESCRIBED:
+                    choices = list((hardware or {}).get(id(instance), ()))
                 else:
                     choices = list(_chosen(instance, slot, params))
                     unseen = _unseen_choice(instance, slot, params)
@@ -159,6 +171,18 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                                      lambda instance, reason: own_partial(
                                          instance, reason, owned, first=True)))
     return out
+
+
+def _manager_host(instance: NodeInstance) -> Host | None:
+    """ros2_control's host row for a ROS 2 node of the workspace whose code makes the
+    controller manager itself (KUKA's control_node, as ros2_control_node does): its model
+    serves ``~load_controller`` as the manager's constructor does (the C++ API row)."""
+    node = instance.node
+    if instance.ros_version != 2 or node is None or not any(
+            call.kind == "server" and call.name == "~load_controller"
+            and call.type == MANAGER_SERVICE for call in node.calls):
+        return None
+    return host_of(*MANAGER_NODE, 2)
 
 
 def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str, Node],
@@ -182,6 +206,16 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
                 has_default=True, origin="plugin") for name in slot.declares]))
     elif node is None:
         _missing(config, instance, choice, owned)
+    elif slot.placement == "code" and node.rosname and UNKNOWN_MARK not in node.rosname:
+        # a class whose code makes a node of its own (xarm's hardware: ``rclcpp::Node::
+        # make_shared("ufactory_driver")``), in the host's process: its calls are that
+        # node's, and the process's parameter files name it
+        reader = _plugin_instance(instance, replace(
+            choice, name=node.rosname.strip("/"), remaps=()), node, config)
+        if decl is not None:
+            _process_params(decl, reader, params)
+        _unhosted(reader, owned)
+        out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
         if slot.names == EXPORTED and decl is not None:  # a node the process makes: its
@@ -402,6 +436,8 @@ def _named_class(choice: Choice) -> bool:
 
 
 def _not_found(choice: Choice, host: str) -> diag.Diagnostic:
+    if choice.why is not None:
+        return diag.make("HARDWARE_UNKNOWN", choice.location, host=host, detail=choice.why)
     if not choice.cls or UNKNOWN_MARK in choice.cls:
         return diag.make("PLUGIN_CLASS_UNKNOWN", choice.location, plugin=choice.name,
                          host=host)

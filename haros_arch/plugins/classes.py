@@ -256,6 +256,15 @@ def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
     return out
 
 
+def header_exports(source: str, workspace: Files) -> set[str]:
+    """The classes the headers of the workspace that ``source`` includes export (a
+    pluginlib macro written in a header), without template arguments."""
+    path = os.path.join(workspace.root, source)
+    return {_untemplated(name) for header in _included(path, _text(path, workspace) or "",
+                                                       workspace)
+            for name, _ in exported_classes(header, workspace)}
+
+
 def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
     """A library's sources without the files that export only other classes, nor the
     helper files (they export none) whose code the class's own files never name.
@@ -278,6 +287,10 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
         # (nav2's ``DriveOnHeading<>``, described as ``nav2_behaviors::DriveOnHeading<>``)
         exported = {_untemplated(name) for name, _ in exported_classes(
             os.path.join(workspace.root, source), workspace)}
+        if not exported:
+            # the export macro in a header of the workspace that the source includes
+            # (xarm_controller's uf_robot_system_hardware.h): the source is that class's
+            exported = header_exports(source, workspace)
         if cls in exported:
             own.append(source)
         elif not exported:
@@ -313,7 +326,12 @@ def code_words(own: list[str], workspace: Files) -> set[str]:
     words: set[str] = set()
     for source in own:
         words |= named_words(source, workspace)
-    return words - set().union(*(_local_classes(source, workspace) for source in own))
+    local = set().union(*(_local_classes(source, workspace) for source in own))
+    # but a class whose members it declares and defines nowhere in its own files is
+    # defined by a helper (a plugin's ``class Handler { Handler(); }``, its constructor
+    # in handler.cpp of its library): that helper is named
+    elsewhere = set().union(*(_declared_only(source, workspace) for source in own))
+    return words - (local - (elsewhere - defined_in(own, workspace)))
 
 
 def named_closure(words: set[str], helpers: list[str], workspace: Files,
@@ -386,6 +404,40 @@ def _local_classes(source: str, workspace: Files) -> set[str]:
                       lambda: set(_CLASS.findall(_text(path, workspace) or "")))
 
 
+# a member function declared with no body in a class's body: ``Name(args);``,
+# ``void f(int) const override;`` (not ``= default;`` / ``= delete;``)
+_DECLARED_ONLY = re.compile(r"\)\s*(?:const\s*)?(?:noexcept\s*)?(?:override\s*)?"
+                            r"(?:final\s*)?;")
+
+
+def _declared_only(source: str, workspace: Files) -> set[str]:
+    """The classes a C/C++ source file defines whose bodies declare a member function
+    they do not define (its code is out of the class: in this file, or another)."""
+    if not source.endswith(_C_SOURCES):
+        return set()
+    path = os.path.join(workspace.root, source)
+
+    def compute() -> set[str]:
+        code = code_only(_text(path, workspace) or "")
+        found: set[str] = set()
+        for match in _CLASS.finditer(code):
+            start = code.find("{", match.end() - 1)
+            body, depth, index = [], 0, start
+            while 0 <= index < len(code):  # the body's own level, nested blocks left out
+                char = code[index]
+                depth += (char == "{") - (char == "}")
+                if depth == 1 and char not in "{}":
+                    body.append(char)
+                if depth == 0:
+                    break
+                index += 1
+            if _DECLARED_ONLY.search("".join(body)):
+                found.add(match.group(1))
+        return found
+
+    return remembered("declared only", path, workspace, compute)
+
+
 def _defined(source: str, workspace: Files) -> set[str]:
     """The classes whose members a source file defines, and its free functions."""
     return remembered("defined", source, workspace, lambda: _read_defined(source, workspace))
@@ -398,10 +450,47 @@ def defined_in(sources: Iterable[str], workspace: Files) -> set[str]:
 
 def _read_defined(source: str, workspace: Files) -> set[str]:
     path = os.path.join(workspace.root, source)
-    text = _text(path, workspace) or ""
+    text = at_namespace_scope(_text(path, workspace) or "")
     functions = {name for name, rest in _FUNCTION.findall(text)
                  if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
     return {match.group(1) for match in _MEMBER.finditer(text)} | functions
+
+
+_BRACE = re.compile(r"[{};]")
+# what opens a namespace's block: ``namespace a::b {``, ``namespace {``, ``extern "C" {``
+_NAMESPACE_HEAD = re.compile(r'(?:\bnamespace(?:\s+[\w:]+)?|\bextern\s*"[^"\n]*")\s*$')
+
+
+def at_namespace_scope(text: str) -> str:
+    """``text`` with each line that starts a declaration at namespace scope (inside
+    ``namespace x {`` blocks only, not in a class's or function's body) moved to the
+    first column, where ``_MEMBER`` and ``_FUNCTION`` look for definitions: a file may
+    indent what it defines in a namespace (xarm_ros2's xarm_driver.cpp defines
+    ``XArmDriver::init`` four columns in, inside ``namespace xarm_api {``). A call in a
+    body stays indented, and so does a line that goes on with a declaration begun above
+    (a constructor's member initialisers, ``  enabled_(false),``, and parameters)."""
+    code = code_only(text)
+    out: list[str] = []
+    stack: list[bool] = []  # the blocks open: whether each is a namespace's
+    statement = 0  # where the code since the last ``;``, ``{``, ``}`` or directive starts
+    offset = 0
+    for line in text.split("\n"):
+        end = offset + len(line)
+        words = code[offset:end]
+        # the line starts code (not a comment's) where nothing is left unfinished above
+        fresh = not code[statement:offset].strip() and words.strip() != "" and (
+            len(words) - len(words.lstrip()) == len(line) - len(line.lstrip()))
+        out.append(line.lstrip(" \t") if fresh and stack and all(stack) else line)
+        if code[offset:end].lstrip().startswith("#"):
+            statement = end  # a preprocessor line ends what came before
+        for match in _BRACE.finditer(code, offset, end):
+            if match.group() == "{":
+                stack.append(bool(_NAMESPACE_HEAD.search(code, statement, match.start())))
+            elif match.group() == "}" and stack:
+                stack.pop()
+            statement = match.end()
+        offset = end + 1
+    return "\n".join(out)
 
 
 # ``class Name : public ns::Node`` / ``LifecycleNode`` (first base): a class that is a
@@ -534,20 +623,27 @@ def _exporting(type_name: str, libraries: Mapping[str, Library],
 
 def _registered(type_name: str, library: Library | None,
                 libraries: Mapping[str, Library], workspace: Files) -> str:
+    """The class a description's ``type`` is exported as, by the described library's
+    sources (every library's when the described one is not known): ``registered_class``."""
+    return registered_class(type_name, (
+        source for each in ([library] if library is not None else list(libraries.values()))
+        for source in each.sources), workspace)
+
+
+def registered_class(type_name: str, sources: Iterable[str], workspace: Files) -> str:
     """The class a description's ``type`` is exported as: a factory template stands for
     its argument (mavros' PluginFactoryTemplate<Imu> is exported by
-    MAVROS_PLUGIN_REGISTER(Imu)), unless the library (every library when the described
-    one is not known) exports the specialisation itself (grid_map_cv's
+    MAVROS_PLUGIN_REGISTER(Imu)), unless one of ``sources`` exports the specialisation
+    itself (grid_map_cv's
     ``PLUGINLIB_EXPORT_CLASS(grid_map::InpaintFilter<grid_map::GridMap>, ...)``)."""
     argument = _template_argument(type_name)
     if argument is None:
         return type_name
     own = _untemplated(type_name.lstrip(":"))
-    for each in [library] if library is not None else list(libraries.values()):
-        for source in each.sources:
-            path = os.path.join(workspace.root, source)
-            if own in (_untemplated(c) for c, _ in exported_classes(path, workspace)):
-                return type_name
+    for source in sources:
+        path = os.path.join(workspace.root, source)
+        if own in (_untemplated(c) for c, _ in exported_classes(path, workspace)):
+            return type_name
     return argument
 
 

@@ -9,7 +9,8 @@ A host is recognised by the package and executable a launch file starts. Each of
   (move_base's ``base_global_planner``), or the special ``"*spawner"`` for controllers
   that controller_manager spawners name (their args), or ``"*exported"`` for every
   class the analysed packages export with one of ``bases`` that the deny and allow
-  lists (``lists``) let through (mavros).
+  lists (``lists``) let through (mavros), or ``"*described"`` for the hardware plugins
+  of the robot description a controller manager reads (``robot.attach.hardware``).
 - ``type_of``: the parameter giving one plugin's class, with ``{name}`` for the plugin
   name (``{name}.plugin``, ``{name}/type``); None when ``names`` holds ``{name, type}``
   mappings (move_base's ``recovery_behaviors``, ROS 1 costmap ``plugins``) or the class
@@ -21,6 +22,9 @@ A host is recognised by the package and executable a launch file starts. Each of
   calls are made on the host node and its code builds its names from the plugin name the
   host passes it (``name + ".tolerance"``, ``NodeHandle("~/" + name)``): an unknown
   first part of such a name is that plugin name, prefixed with ``prefix``.
+  ``"code"``: a node of its own when the class's code names the node it makes
+  (``Node.rosname``), in the host's namespace, else its calls are the host's (a
+  ros2_control hardware plugin).
 - ``bases``: the export tags / base classes of the classes it loads (``nav_core``,
   ``nav2_core::GlobalPlanner``); these classes are extracted as plugin nodes.
 
@@ -47,7 +51,7 @@ class Slot:
     names: str | None
     type_of: str | None
     bases: tuple[str, ...]
-    placement: str = "name"  # "name" | "node"
+    placement: str = "name"  # "name" | "node" | "code"
     prefix: str = ""  # put before the plugin name given to the plugin (ROS 1 costmaps)
     defaults: tuple[tuple[str, str], ...] = ()
     # the plugin name is the last segment of the class's lookup name (move_base's
@@ -115,6 +119,15 @@ class Sources:
 
 
 SPAWNER = "*spawner"
+# the classes of the ``<ros2_control><hardware><plugin>`` elements of the robot
+# description the host reads (``robot.attach.hardware``): ros2_control's resource
+# manager loads each (humble and jazzy resource_manager.cpp, ``load_and_initialize_
+# components``) in the controller manager's process; what a class's code does with ROS
+# (a node it makes, publishers) happens there
+DESCRIBED = "*described"
+HARDWARE_BASES = ("hardware_interface", "hardware_interface::SystemInterface",
+                  "hardware_interface::ActuatorInterface",
+                  "hardware_interface::SensorInterface")
 EXPORTED = "*exported"  # every class exported with one of the slot's bases
 
 _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
@@ -141,7 +154,8 @@ HOSTS: tuple[Host, ...] = (
         Slot(SPAWNER, "{name}.type", ("controller_interface",
                                       "controller_interface::ControllerInterface",
                                       "controller_interface::ChainableControllerInterface"),
-             placement="node", declares=("update_rate", "is_async", "thread_priority")),)),
+             placement="node", declares=("update_rate", "is_async", "thread_priority")),
+        Slot(DESCRIBED, None, HARDWARE_BASES, placement="code"))),
     # nav2's servers are hosts as executables and as components (the composed bringup,
     # nav2_bringup's default, loads ``nav2_planner::PlannerServer`` into a container);
     # the planner and controller servers make their costmap nodes in their constructor
@@ -278,10 +292,15 @@ EXTENDS: dict[str, str] = {
 # ``move_group/...``, exported by moveit_ros_move_group
 # (default_capabilities_plugin_description.xml) and, MoveIt 1's pick and place, by
 # moveit_ros_manipulation (pick_place_capability_plugin_description.xml); perception_pcl's
-# nodelets are ``pcl/VoxelGrid``, ..., exported by pcl_ros (plugins/nodelet/*.xml)
+# nodelets are ``pcl/VoxelGrid``, ..., exported by pcl_ros (plugins/nodelet/*.xml);
+# ros2_control's mock hardware is ``mock_components/GenericSystem`` (humble also
+# ``fake_components/GenericSystem``), exported by hardware_interface
+# (mock_components_plugin_description.xml, fake_components_plugin_description.xml)
 LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
     "move_group": ("moveit_ros_move_group", "moveit_ros_manipulation"),
-    "pcl": ("pcl_ros",)}
+    "pcl": ("pcl_ros",),
+    "mock_components": ("hardware_interface",),
+    "fake_components": ("hardware_interface",)}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

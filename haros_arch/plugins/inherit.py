@@ -34,6 +34,7 @@ from .classes import (
     exported_classes,
     named_closure,
     node_classes,
+    registered_class,
     remembered,
     uses_ros,
     with_headers,
@@ -151,7 +152,10 @@ def overridden(node: Node, workspace: Files) -> list[tuple[str, int, int]]:
     (``ObstacleLayer::onInitialize();`` in ``VoxelLayer::onInitialize``)."""
     if not node.plugin_class:
         return []
-    bases = chain(node.plugin_class, list(node.sources), workspace)
+    # the class the description's type is exported as (mavros' PluginFactoryTemplate<X>
+    # stands for X, whose chain is X's bases, not the factory's)
+    own = registered_class(node.plugin_class, node.sources, workspace)
+    bases = chain(own, list(node.sources), workspace)
     if len(bases) < 2:
         return []
     rank = {name: i for i, name in enumerate(bases)}
@@ -208,7 +212,9 @@ def without_other_classes(node: Node, calls: list[PrimitiveCall],
     the headers they include."""
     if node.kind not in ("plugin", "nodelet") or not node.plugin_class:
         return calls
-    own = _short(node.plugin_class)
+    # the class the description's type is exported as (mavros' factory template stands
+    # for its argument), not the factory, which its sources' headers define
+    own = _short(registered_class(node.plugin_class, node.sources, workspace))
     exported = {_short(name) for source in node.sources for name, _ in exported_classes(
         os.path.join(workspace.root, source), workspace)}
     others = exported - {own}
@@ -425,7 +431,9 @@ def _built(classes: set[str], texts: list[str]) -> set[tuple[str, str | None]]:
     if not classes:
         return set()
     names = "|".join(re.escape(c) for c in sorted(classes, key=len, reverse=True))
-    qualified = rf"(?:::)?((?:\w+\s*::\s*)*)({names})\b"
+    # the class itself, not a type nested in it (``make_shared<SpinAction::Feedback>``
+    # builds a Feedback, whichever SpinAction qualifies it)
+    qualified = rf"(?:::)?((?:\w+\s*::\s*)*)({names})\b(?!\s*::)"
     pattern = re.compile(
         # ``new ns::C(...)``, ``make_shared<ns::C>(...)``
         rf"\bnew\s+{qualified}|\bmake_(?:shared|unique)\s*<\s*{qualified}"

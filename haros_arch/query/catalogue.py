@@ -88,6 +88,10 @@ class Rule:
     undecided_by: str | None = None
     # what the undecided info says of those nodes (default: they could be the missing side)
     undecided_why: str | None = None
+    # the key of a match that lists where the one problem it reports shows (places, or
+    # entities at theirs: the instances of one duplicated name): the finding is at the
+    # first, the others are its ``also``
+    places_by: str | None = None
 
 
 class CatalogueError(ValueError):
@@ -108,7 +112,8 @@ def _rule(data: Any, origin: str, default_id: str = "", scope: str = "auto") -> 
                 data.get("message") or data.get("details"),
                 str(data.get("scope", scope)), None, origin,
                 str(data["undecided_by"]) if data.get("undecided_by") else None,
-                str(data["undecided_why"]) if data.get("undecided_why") else None)
+                str(data["undecided_why"]) if data.get("undecided_why") else None,
+                str(data["places_by"]) if data.get("places_by") else None)
 
 
 def load_catalogue(folder: Path | str | None = None) -> list[Rule]:
@@ -194,6 +199,8 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
                     instances.setdefault(label(v) if entities(v) else str(plain(v)), set())
             return _items([name + (f" ({len(ids)} instances)" if len(ids) > 1 else "")
                            for name, ids in instances.items()])
+        if isinstance(value, list | tuple) and all(isinstance(v, Location) for v in value):
+            return _places_text(value)
         if isinstance(value, list | tuple):  # a value: every element, as it is
             return _items([str(plain(v)) for v in value])
         if isinstance(value, Location):  # a place is whole: its line ends it
@@ -231,6 +238,30 @@ def _items(items: list[str]) -> str:
     return ", ".join(out)
 
 
+def _places_text(places: Iterable[Location]) -> str:
+    """Places by file, each file once: ``a.launch:7``, ``b.launch lines 3, 9 and 12``,
+    files apart by ``;`` (their number counted past ``MESSAGE_ITEMS`` characters)."""
+    lines: dict[str, list[Location]] = {}
+    for where in places:
+        lines.setdefault(where.file or str(where), []).append(where)
+    parts = []
+    for file, here in lines.items():
+        numbers = list(dict.fromkeys(str(w.line) for w in here if w.file and w.line))
+        if len(numbers) < 2:
+            parts.append(_shorten(str(here[0])))
+        else:
+            parts.append(f"{_shorten(file)} lines {', '.join(numbers[:-1])} and "
+                         f"{numbers[-1]}")
+    out: list[str] = []
+    size = 0
+    for index, part in enumerate(parts):
+        if out and size + len(part) > MESSAGE_ITEMS:
+            return f"{'; '.join(out)} and {len(parts) - index} more"
+        out.append(part)
+        size += len(part) + 2
+    return "; ".join(out)
+
+
 def _finding(rule: Rule, match: Any, config: Configuration | None,
              evaluator: Evaluator) -> Finding:
     involved = entities(match)
@@ -241,8 +272,21 @@ def _finding(rule: Rule, match: Any, config: Configuration | None,
     where = best_location(involved)
     if not where.file:
         where = place_of(match)
+    places = [p for p in _places(rule, match) if p.file]
+    where = places[0] if places else where
+    also = tuple(p for p in dict.fromkeys(places) if p != where)
     return Finding(rule.id, rule.severity, rule.title, " ".join(message.split()),
-                   config.name if config else None, entity_ids(involved), where)
+                   config.name if config else None, entity_ids(involved), where, also=also)
+
+
+def _places(rule: Rule, match: Any) -> list[Location]:
+    """The places a match's ``places_by`` list gives (a place, or an entity's)."""
+    if rule.places_by is None or not isinstance(match, dict):
+        return []
+    items = match.get(rule.places_by)
+    if not isinstance(items, list | tuple):
+        return []
+    return [item if isinstance(item, Location) else location_of(item) for item in items]
 
 
 def _scopes(rule: Rule, query: Any, model: Model) -> Iterable[tuple[Configuration | None,

@@ -19,6 +19,7 @@ from ..model.runtime import Link, NodeInstance, Parameter, Resource
 from ..model.source import Package
 from ..model.values import UNKNOWN_MARK
 from .absence import distance, same_setting, similar_to, unknown_users
+from .access import readers_of
 from .errors import QueryLimitError, QueryTypeError
 
 Charge = Callable[[int], None]
@@ -223,6 +224,35 @@ FUNCTIONS: dict[str, Function] = {f.name: f for f in (
 )}
 
 
+def group_by(charge: Charge, values: Any, field: Any) -> list[list[Any]]:
+    """The values of a list in groups of equal ``field`` (a field a query may read, or
+    a dotted path of them: ``'name'``, ``'rosname.own'``): one list per value of it, in
+    the order each is first seen, the values of each in the list's order. What a rule
+    reports once per name, not once per pair, iterates over (the node instances of one
+    name)."""
+    if not isinstance(field, str) or not field:
+        raise QueryTypeError("group_by() takes a list and a field name")
+    path = field.split(".")
+    groups: dict[Any, list[Any]] = {}
+    for value in _items(values):
+        charge(len(path))
+        key = value
+        for name in path:
+            read = readers_of(type(key)).get(name)
+            if read is None:
+                raise QueryTypeError(f"group_by(): {type(key).__name__} has no field "
+                                     f"'{name}'")
+            key = read(key)
+        try:
+            groups.setdefault(key, []).append(value)
+        except TypeError:  # a list or a map: grouped as the same object only
+            groups.setdefault(("#id", id(key)), []).append(value)
+    return list(groups.values())
+
+
+FUNCTIONS["group_by"] = Function("group_by", group_by, 2, 2, charged=True)
+
+
 _PATH_PREFIXES = ("/home/", "/opt/", "/usr/", "/tmp/", "/mnt/", "/media/", "/root/",
                   "/var/", "/etc/", "/srv/")
 _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json", ".pgm",
@@ -397,23 +427,31 @@ def undecided(charge: Charge, values: Any, given: Any = ()) -> list[Any]:
     return list(found.values())
 
 
-def one_process(charge: Charge, first: Any, second: Any) -> str:
-    """For two node instances of one name that one launched process runs (the launch
-    name renames every node of it), a clause that says so and names the nodes its code
-    makes; else nothing."""
-    charge(1)
-    if not isinstance(first, NodeInstance) or not isinstance(second, NodeInstance):
-        raise QueryTypeError("one_process() takes node instances")
-    if first.code_name is None or second.code_name is None or (
-        first.location != second.location
-    ):
+def one_process(charge: Charge, first: Any, second: Any = None) -> str:
+    """For node instances of one name (two, or a list) of which one launched process
+    runs several (the launch name renames every node of it), a clause that says so and
+    names the nodes its code makes; else nothing."""
+    values = [first, second] if second is not None else first
+    if not isinstance(values, list) or not all(
+            isinstance(value, NodeInstance) for value in values):
+        raise QueryTypeError("one_process() takes two node instances or a list of them")
+    charge(1 + len(values))
+    # the instances of one launch action, each made by the code under its own name
+    processes: dict[Any, list[str]] = {}
+    for value in values:
+        if value.code_name is not None:
+            names = processes.setdefault(value.location, [])
+            if value.code_name not in names:
+                names.append(value.code_name)
+    clauses = [" and ".join(names) for names in processes.values() if len(names) > 1]
+    if not clauses:
         return ""
     return ("; one process: the launch file's name renames every node its code makes, "
-            f"{first.code_name} and {second.code_name}")
+            + "; ".join(clauses))
 
 
 # two node instances of one name: a duplicate only when both can start
-FUNCTIONS["one_process"] = Function("one_process", one_process, 2, 2, charged=True)
+FUNCTIONS["one_process"] = Function("one_process", one_process, 1, 2, charged=True)
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
 FUNCTIONS["together"] = Function("together", together, charged=True)

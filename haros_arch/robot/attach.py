@@ -26,7 +26,7 @@ import os
 import re
 import shlex
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from functools import partial
 from typing import Any, cast
 
@@ -43,9 +43,9 @@ from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
 from ..model.rosname import as_namespace, clean, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter
-from ..model.source import CallKind, Node, PrimitiveCall
+from ..model.source import SDF_ELEMENT, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
-from ..plugins.attach import Params, own_partial
+from ..plugins.attach import Choice, Params, own_partial
 from ..plugins.classes import remembered
 from ..share import share_source
 from ..workspace import Workspace
@@ -119,15 +119,21 @@ class Attached:
 
     calls: list[tuple[NodeInstance, list[PrimitiveCall]]]
     managers: list[tuple[NodeDecl, NodeInstance]]
+    # by ``id`` of a controller manager the launch files start: the hardware plugins its
+    # robot description names (``hardware``), for the plugin host table's ``DESCRIBED``
+    hardware: dict[int, list[Choice]] = field(default_factory=dict)
 
 
 def attach(config: Configuration, launch: LaunchModel,
            started: Sequence[tuple[NodeDecl, NodeInstance]], workspace: Workspace,
-           params: Params) -> Attached:
+           params: Params, given: Sequence[ParamDecl] = ()) -> Attached:
     """The calls of the Gazebo plugins of the spawned descriptions, by node instance;
     instances made here are added to ``config.nodes``, the parameters a ros2_control
-    plugin's ``<parameters>`` files set to ``params``."""
+    plugin's ``<parameters>`` files set to ``params``; and the hardware plugins of the
+    descriptions the controller managers read (``given``: the launch parameters by the
+    names of the nodes that take them, ``graph.processes.process_params``)."""
     out = Attached([], [])
+    out.hardware = hardware(config, started, given, workspace)
     owned: set[int] = set()
     for decl, _ in started:
         ros_version = SPAWNERS.get((decl.package, decl.executable))
@@ -276,6 +282,85 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
         return None
     _note(config, decl.location, "the spawner's description (-database, -stdin) is not read")
     return None
+
+
+# -- the hardware of a controller manager ---------------------------------------------
+HARDWARE_HOSTS = (("controller_manager", "ros2_control_node"),)
+DESCRIPTION_KEY = "robot_description"
+
+
+def hardware(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
+             given: Sequence[ParamDecl], workspace: Workspace) -> dict[int, list[Choice]]:
+    """The hardware plugins of each controller manager the launch files start, by ``id``
+    of its instance: the classes of the ``<hardware><plugin>`` of each ``<ros2_control>``
+    in the robot description it reads, under the element's xacro conditions. ros2_control
+    (humble, jazzy) reads its ``robot_description`` parameter (humble, deprecated) or the
+    ``robot_description`` its subscription receives (``~/robot_description`` in humble,
+    ``robot_description`` in jazzy; robot_state_publisher publishes its own parameter
+    there). A description that is not known is one choice of unknown class (the
+    manager's hardware, and what its code does with ROS, is not known)."""
+    found: dict[int, list[Choice]] = {}
+    for decl, instance in started:
+        if (decl.package, decl.executable) not in HARDWARE_HOSTS or decl.ros_version != 2:
+            continue
+        param = _description_param(instance, config, given)
+        made = _from_param(param, workspace, config) if param is not None else None
+        if param is None or made is None:
+            what = (f"its {DESCRIPTION_KEY} parameter is not given by a xacro (or cat) "
+                    "command whose file is known") if param is not None else (
+                f"no {DESCRIPTION_KEY} parameter, nor topic it reads, is given a value "
+                "known statically")
+            found[id(instance)] = [Choice("hardware", None, decl.location, why=what)]
+            continue
+        record, expanded = made
+        config.robot_descriptions.append(record)
+        choices = []
+        if expanded.root is not None:
+            for element in expanded.root.iter("ros2_control"):
+                where = _where(element, workspace)
+                cls = (element.findtext("hardware/plugin") or "").strip() or None
+                choices.append(Choice(element.get("name") or "hardware", cls, where,
+                                      _conditions(element, where)))
+        if not choices and (expanded.root is None or expanded.unknown):
+            # parts not read may hold them (a value unknown elsewhere leaves the
+            # systems read as they are: a plugin whose own text is not known is said)
+            reason = expanded.unknown[0] if expanded.unknown else "it is not read"
+            choices.append(Choice("hardware", None, param.location,
+                                  why=f"its robot description: {reason}"))
+        found[id(instance)] = choices
+    return found
+
+
+def _description_param(instance: NodeInstance, config: Configuration,
+                       given: Sequence[ParamDecl]) -> ParamDecl | None:
+    """The launch parameter a controller manager takes its description from: its own
+    ``robot_description``, else that of a node publishing a topic it subscribes to under
+    that name (remaps applied: the graph's links)."""
+    own = _last_param(given, instance.name.rstrip("/") + "/" + DESCRIPTION_KEY)
+    if own is not None:
+        return own
+    for link in config.links:
+        if link.node is not instance or link.kind != "subscribe" or (
+                (link.call.name if link.call else "").rsplit("/", 1)[-1] != DESCRIPTION_KEY):
+            continue
+        for other in config.links:
+            if other.kind == "publish" and other.resource is link.resource:
+                found = _last_param(given, other.node.name.rstrip("/") + "/" + DESCRIPTION_KEY)
+                if found is not None:
+                    return found
+    return None
+
+
+def _from_param(param: ParamDecl, workspace: Workspace, config: Configuration,
+                ) -> tuple[RobotDescription, xacro.Description] | None:
+    """The description a launch parameter's xacro (or ``cat``) command makes, if known."""
+    parsed = xacro_command(param.command) if param.command is not None else None
+    if parsed is None or UNKNOWN_MARK in parsed[0]:
+        return None
+    path, args = parsed
+    values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
+              for key, value in args.items()}
+    return _expanded(path, values, param.name, param.location, workspace, config)
 
 
 def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
@@ -439,6 +524,10 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
                                 conditions=[c.text for c in conditions])
     record.plugins.append(described)
     row = plugin_row(filename, spawn.ros_version)
+    built = workspace_plugin(filename, workspace) if row is None else None
+    if built is not None:
+        return _built(element, built, spawn, host, record, described, where, conditions,
+                      config, workspace, owned)
     if row is None:
         found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename, host=host.name)
         config.diagnostics.append(found)
@@ -474,6 +563,182 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
         instance.id += f"#{taken + 1}"
     config.nodes.append(instance)
     return [(instance, calls)]
+
+
+def workspace_plugin(filename: str, workspace: Workspace) -> Node | None:
+    """The Gazebo classic plugin a workspace package builds as the library ``filename``
+    (``cmake.nodes.gazebo_plugins``: registered with ``GZ_REGISTER_<KIND>_PLUGIN``), its
+    calls read from its C++ like any node's; None when no package read builds it."""
+    base = _base(filename)
+    for package in workspace.packages.values():
+        for node in package.nodes:
+            if node.kind == "plugin" and node.executable == base and (
+                    node.plugin_base or "").startswith("gazebo::"):
+                return node
+    return None
+
+
+def _built(element: etree._Element, built: Node, spawn: Spawn, host: NodeInstance,
+           record: RobotDescription, described: DescribedPlugin, where: Location,
+           conditions: tuple[Condition, ...],
+           config: Configuration, workspace: Workspace, owned: set[int],
+           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """A plugin the workspace builds: its code's calls, with the names it takes from
+    its SDF element's children filled from the description (``sdf_filled``). ROS 1: calls
+    of the gazebo node, as the code's handles name them relative to it; ROS 2: those of
+    the plugin's own node (``gazebo_ros::Node::Get(sdf)``), made as a table plugin's."""
+    conditions = (*spawn.decl.conditions, *conditions)
+    # ROS 1's spawner gives a plugin with no <robotNamespace> its -robot_namespace (its
+    # own namespace by default), as for the table's plugins (``_ros1_namespace``)
+    given = {"robotNamespace": spawn.robot_namespace if spawn.robot_namespace is not None
+             else spawn.decl.namespace} if spawn.ros_version == 1 else {}
+    calls = [sdf_filled(call, element, conditions, given) for call in built.calls]
+    reasons = [f"Gazebo plugin {described.name or described.filename} ({built.name}): "
+               f"{reason}" for reason in built.completeness_reasons[:3]]
+    if not built.is_complete and not reasons:
+        reasons = [f"Gazebo plugin {described.name or described.filename} ({built.name}) "
+                   f"is {built.completeness}"]
+    helper = remembered("gazebo helper", built.name, workspace,
+                        lambda: _unread_helper(built, workspace))
+    if helper is not None:
+        reasons.append(f"Gazebo plugin {described.name or described.filename} "
+                       f"({built.name}): {helper}")
+    for reason in reasons:
+        _record_partial(record, f"{reason} ({where.file}:{where.line})")
+    if spawn.ros_version == 1:
+        for reason in reasons:
+            own_partial(host, f"{reason} ({where.file}:{where.line})", owned)
+        described.node = host.name
+        return [(host, calls)]
+    if built.rosname is not None:
+        # its code makes a node of its own (``rclcpp::Node("control", ns)``), not
+        # gazebo_ros's: named as the code names it, no <ros> element applies
+        full = clean(built.rosname if built.rosname.startswith("/") else
+                     "/" + built.rosname)
+        instance = NodeInstance(full, None, namespace=namespace_of(full),
+                                conditions=(*host.conditions, *conditions), location=where,
+                                origin="description", ros_version=2)
+        instance.id = f"node:{full}"
+        unknown: list[str] = []
+    else:
+        instance, unknown = _ros2_instance(element, described.name, spawn, host, where,
+                                           conditions, workspace, config)
+    instance.node = Node(built.package, built.executable, kind="plugin", calls=calls,
+                         sources=list(built.sources), location=built.location,
+                         plugin_class=built.plugin_class, plugin_base=built.plugin_base)
+    for reason in [*reasons, *unknown]:
+        instance.node.mark_partial(reason)
+    described.node = instance.name
+    taken = sum(1 for n in config.nodes if n.name == instance.name)
+    if taken:
+        instance.id += f"#{taken + 1}"
+    config.nodes.append(instance)
+    return [(instance, calls)]
+
+
+# gazebo_ros_pkgs' plugin library (ROS 1 gazebo_plugins' GazeboRosCameraUtils, ROS 2's
+# gazebo_plugins helpers): a plugin that builds on it makes calls its own code does not
+# show (hector's thermal camera, uuv's underwater camera publish through it)
+HELPER_LIBRARY = "gazebo_plugins"
+_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
+
+
+def _unread_helper(built: Node, workspace: Workspace) -> str | None:
+    """Why the calls of a workspace plugin are not all in its code: it includes a header
+    of ``HELPER_LIBRARY`` (from its sources or the headers of its package they
+    include), which the workspace does not build. None when it does not."""
+    if HELPER_LIBRARY in workspace.packages:
+        return None
+    package = workspace.packages.get(built.package)
+    roots = [os.path.join(package.root, "include")] if package is not None else []
+    seen: set[str] = set()
+    files = [os.path.join(workspace.root, s) for s in built.sources[:MAX_SYSTEM_SOURCES]]
+    while files and len(seen) < 4 * MAX_SYSTEM_SOURCES:
+        path = files.pop(0)
+        if path in seen or not os.path.isfile(path):
+            continue
+        seen.add(path)
+        text, _ = read_text(path, workspace.location(path))
+        for header in _INCLUDE.findall(text or ""):
+            if header.startswith(HELPER_LIBRARY + "/"):
+                return (f"{workspace.relpath(path)} includes {header}, whose classes make "
+                        "calls that are not read")
+            files.extend(os.path.join(folder, header)
+                         for folder in [*roots, os.path.dirname(path)])
+    return None
+
+
+def sdf_filled(call: PrimitiveCall, element: etree._Element,
+               conditions: tuple[Condition, ...],
+               given: Mapping[str, str] | None = None) -> PrimitiveCall:
+    """``call`` of a plugin's code under the description's ``conditions``, the ``?`` its
+    name takes from a child element of the plugin's SDF (``name_param`` ``sdf:key``)
+    filled with that child's text, else with what the host ``given`` puts there, else
+    with the default the code gives; left ``?`` when none is there. The ``sdf:``
+    parameter is no ROS parameter: it goes."""
+    param = call.name_param or ""
+    if not param.startswith(SDF_ELEMENT):
+        return replace(call, conditions=(*conditions, *call.conditions), origin="description")
+    name, namespace = call.name, call.handle_namespace
+    outer = _sdf_value(element, call.namespace_param, given)
+    if outer is not None and namespace and name.startswith(namespace.rstrip("/") + "/"):
+        rest = name[len(namespace.rstrip("/")) + 1:]
+        head, _, tail = namespace.partition(UNKNOWN_MARK)
+        namespace = clean_join(head, outer, tail)
+        name = f"{namespace.rstrip('/')}/{rest}" if namespace.strip("/") else (
+            namespace + rest)
+    value = _sdf_value(element, param, given)
+    if value is None:
+        value = call.name_default
+    if value is not None and UNKNOWN_MARK not in value:
+        name = _one_filled(name, namespace, value)
+    return replace(call, name=name, name_param=None, name_default=None, default_param=None,
+                   namespace_param=None, handle_namespace=namespace,
+                   conditions=(*conditions, *call.conditions), origin="description")
+
+
+def _sdf_value(element: etree._Element, param: str | None,
+               given: Mapping[str, str] | None) -> str | None:
+    """The text of the child element ``param`` (``sdf:key``) names, else what the host
+    ``given`` puts there; None when neither (or its text has unknown parts)."""
+    if param is None or not param.startswith(SDF_ELEMENT):
+        return None
+    key = param[len(SDF_ELEMENT):]
+    value = _child(element, key)
+    if value is None:
+        value = (given or {}).get(key)
+    return value if value is None or UNKNOWN_MARK not in value else None
+
+
+def _one_filled(name: str, namespace: str | None, value: str) -> str:
+    """``name`` with the ``?`` a value stands for put in its place: the one ``?`` of the
+    call's own part (after the handle's ``namespace``; a global value there is the whole
+    name, as roscpp resolves it), else the one ``?`` of the name (the namespace's)."""
+    cut = 0
+    if namespace and name.startswith(namespace.rstrip("/") + "/"):
+        cut = len(namespace.rstrip("/")) + 1
+    rest = name[cut:]
+    if rest.count(UNKNOWN_MARK) == 1:
+        head, _, tail = rest.partition(UNKNOWN_MARK)
+        if not head and value.startswith("/"):
+            return clean_join("", value, tail)
+        return name[:cut] + clean_join(head, value, tail)
+    if name.count(UNKNOWN_MARK) == 1:
+        head, _, tail = name.partition(UNKNOWN_MARK)
+        return clean_join(head, value, tail)
+    return name
+
+
+def clean_join(head: str, value: str, tail: str) -> str:
+    """``head + value + tail`` as roscpp joins a name's parts: an empty value leaves no
+    empty segment (``?/scan`` with "" is ``scan``), a global value stays global."""
+    if value.startswith("/") and head.endswith("/"):
+        head = head[:-1]
+    text = head + value + tail
+    text = re.sub(r"/+", "/", text)
+    if not value and tail.startswith("/") and (not head or head.endswith("/")):
+        text = head + tail[1:]
+    return text
 
 
 def _manager(element: etree._Element, spawn: Spawn, where: Location,

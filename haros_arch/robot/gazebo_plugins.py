@@ -159,6 +159,11 @@ PLUGINS: tuple[Plugin, ...] = (
         Entity("publish", "joint_states", "sensor_msgs/JointState",
                when="publishWheelJointState", when_default=False)),
         defaults=_DRIVE_1_DEFAULTS),
+    # gazebo_ros_video: a visual plugin that shows the images it is sent (sawyer's head
+    # display); gazebo_ros_video.cpp's Load subscribes on NodeHandle(<robotNamespace>)
+    _ros1("gazebo_ros_video", entities=(
+        Entity("subscribe", "{topicName}", "sensor_msgs/Image"),),
+        defaults=(("topicName", "image_raw"),)),
     _ros1("gazebo_ros_bumper", entities=(
         Entity("publish", "{bumperTopicName}", "gazebo_msgs/ContactsState"),),
         defaults=(("bumperTopicName", "bumper_states"),)),

@@ -1145,7 +1145,7 @@ def error_detail(spelling: str, generated: str) -> str:
     return spelling.replace(generated.rstrip(os.sep) + os.sep, "")
 
 
-_HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN"})
+_HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_NODE_UNREAD"})
 _CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE})
 # the children of a function's cursor that belong to its declarator
 _DECLARATOR = frozenset({

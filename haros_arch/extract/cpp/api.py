@@ -38,7 +38,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, CallKind
+from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, SDF_ELEMENT, CallKind
 
 # (kind, name relative to the call's name's namespace or global, or "" for the call's
 # own name, ROS 1 type)
@@ -142,6 +142,11 @@ class RosFunction:
     # the parameter read or declared names plugin classes the call loads by pluginlib,
     # of this export tag (``PrimitiveCall.loads``)
     loads: str | None = None
+    # no ROS call: a value the code reads that the node's host gives (a Gazebo classic
+    # plugin's SDF element, ``_sdf->Get<std::string>("topicName")``); a name that holds
+    # it takes ``name_prefix`` + its key as its ``name_param``, which the host fills in
+    # (``robot.attach``)
+    value_only: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -606,6 +611,14 @@ FILTERS: dict[tuple[str, str], RosFunction] = {
         "declare", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
         name_prefix="?.", library_default=True, standin_only=True, ros2_only=True),
 }
+# SDFormat's Element: what a Gazebo classic plugin reads of its <plugin> element's
+# children (``Get<T>("key")``, ``GetElement("key")->Get<T>()``, ``->GetValue()->
+# GetAsString()``): no call, a value the description gives (``SDF_ELEMENT`` + the key)
+SDF_CLASS = "sdf::Element"
+_SDF_VALUE = RosFunction("read", on_handle=False, name_required=True, call_site=False,
+                         value_only=True, name_prefix=SDF_ELEMENT)
+SDF: dict[tuple[str, str], RosFunction] = {
+    (SDF_CLASS, method): _SDF_VALUE for method in ("Get", "GetElement", "FindElement")}
 # a node's parameters interface (node->get_node_parameters_interface()) has the same
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
@@ -656,8 +669,26 @@ _NAV2_LIFECYCLE_PARAMETERS = RosFunction(
         ("read", "autostart_node", "bool"),
         ("declare", "/bond_disable_heartbeat_timeout", "bool"),
         ("write", "/bond_disable_heartbeat_timeout", "bool")))
+# ros2_control's manager (its stand-in: a node of the workspace that makes one, as
+# ros2_control_node does) serves these under its own name, Humble and Jazzy alike; the
+# rest it makes is not described (the stand-in's class is HAROS_UNREAD: partial)
+_CONTROLLER_MANAGER_2 = RosFunction(
+    "server", fixed_name="~load_controller",
+    fixed_type="controller_manager_msgs/srv/LoadController", on_handle=False,
+    call_site=False, siblings=tuple(
+        ("server", f"~{name}", f"controller_manager_msgs/srv/{kind}") for name, kind in (
+            ("list_controllers", "ListControllers"),
+            ("list_controller_types", "ListControllerTypes"),
+            ("configure_controller", "ConfigureController"),
+            ("reload_controller_libraries", "ReloadControllerLibraries"),
+            ("switch_controller", "SwitchController"),
+            ("unload_controller", "UnloadController"),
+            ("list_hardware_components", "ListHardwareComponents"),
+            ("list_hardware_interfaces", "ListHardwareInterfaces"),
+            ("set_hardware_component_state", "SetHardwareComponentState"))))
 IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (_LIFECYCLE,),
+    ("controller_manager::ControllerManager", "ControllerManager"): (_CONTROLLER_MANAGER_2,),
     **{(f"{scope}::LifecycleNode", "LifecycleNode"): (_LIFECYCLE, _NAV2_LIFECYCLE_PARAMETERS)
        for scope in ("nav2_util", "nav2")},
 }
@@ -665,7 +696,9 @@ IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
 # ``IMPLICIT`` says they make, only where the class is the stand-in's (with navigation2's
 # sources in the workspace, its own constructor is read)
 STANDIN_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
-    (f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")}
+    **{(f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")},
+    # ros2_control's manager: ControllerManager(executor, manager_node_name, namespace)
+    ("controller_manager::ControllerManager", "ControllerManager"): (1, 2)}
 # the constructor argument that, given as false, makes none of them
 # (``LifecycleNode(name, ns, options, false)``: enable_communication_interface; the
 # controllers of ros2_control make their nodes so, controller_interface_base.cpp:77)
@@ -697,7 +730,7 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
                        "dynamic_reconfigure"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
-                                            **NAV2, **FILTERS}
+                                            **NAV2, **FILTERS, **SDF}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

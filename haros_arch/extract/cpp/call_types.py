@@ -131,6 +131,8 @@ class CallTypes:
             found: str | None = None
             if source in ("template", "template-value"):
                 ref = template_argument(call)
+                if source == "template" and ref is not None:
+                    ref = aliased_argument(call, ref) or ref
                 ctype = ref.type if ref is not None else constructed_argument(call)
                 held = ref.referenced if ref is not None else None
                 if held is not None and held.kind == CursorKind.TEMPLATE_TYPE_PARAMETER:
@@ -319,6 +321,33 @@ def constructed_argument(call: Cursor) -> Type | None:
         return None
     found = made.get_template_argument_type(0)
     return found if found.kind != TypeKind.INVALID else None
+
+
+def aliased_argument(call: Cursor, ref: Cursor) -> Cursor | None:
+    """A factory's construction of a class template through a type alias
+    (``std::make_unique<ActionServer>(...)`` with ``using ActionServer =
+    nav2_util::SimpleActionServer<Action>``, ``<ActionT>`` in a template): the type
+    reference of the class's first template argument in the alias, the type
+    ``make_unique<SimpleActionServer<Action>>`` writes first."""
+    target = call.referenced
+    alias = ref.referenced
+    if alias is None or alias.kind not in (CursorKind.TYPE_ALIAS_DECL,
+                                           CursorKind.TYPEDEF_DECL):
+        return None
+    if target is not None and (qualified_name(target.semantic_parent),
+                               target.spelling) not in api.FACTORIES:
+        return None
+    if target is None:  # a dependent call: the name written before its ``<``
+        tokens = [token.spelling for token in callee(call).get_tokens()]
+        if "<" not in tokens or tokens.index("<") < 1 or tokens[tokens.index("<") - 1] not in {
+                name for _, name in api.FACTORIES}:
+            return None
+    children = list(alias.get_children())
+    opened = next((i for i, c in enumerate(children) if c.kind == CursorKind.TEMPLATE_REF),
+                  None)
+    if opened is None:
+        return None  # an alias of a class (a message's is a specialisation too)
+    return next((c for c in children[opened + 1:] if c.kind == CursorKind.TYPE_REF), None)
 
 
 def _type_name(text: str) -> str | None:

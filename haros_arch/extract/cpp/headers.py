@@ -92,7 +92,12 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "filters/": "filters/filter_chain.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
-                          "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d")}}
+                          "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d")},
+                      # Gazebo classic's plugin bases and SDFormat's Element, for the
+                      # Gazebo plugins a workspace builds (ROS 2 gazebo_ros' node.hpp
+                      # is a file of its own there: not every gazebo_ros header, which
+                      # ROS 1's gazebo_ros has too)
+                      "gazebo/": "gazebo/haros_gazebo.h", "sdf/": "sdf/haros_sdf.h"}
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
 # a second folder of synthesised headers, for a header whose name is a folder of others

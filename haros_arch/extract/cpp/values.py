@@ -34,7 +34,7 @@ from .expressions import (
     written_arguments,
 )
 from .synthesis import ANY
-from .writes import Write, const_array, writes_of
+from .writes import Write, by_operator, const_array, writes_of
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -321,6 +321,10 @@ class Scope:
         # member (or chain of members from this object: ``_named``) -> (offset, value)
         # of each assignment in this body
         self._members: dict[Any, list[tuple[int, Cursor]]] = {}
+        # the members of this object this body changes to a value not known, by an
+        # operator or an assignment (``n_++``, ``n_ += 2``, ``n_ = f()``; not a call it
+        # is passed to): what the constructor gave them is not what they hold
+        self._changed: set[tuple[str, int]] = set()
         # (start, end) offsets of the parts of this body that may not run, or run later:
         # branches, loop bodies, cases, handlers, lambdas
         self._regions: list[tuple[int, int]] = []
@@ -404,7 +408,11 @@ class Scope:
             if value is None and (decl.type.is_const_qualified() or not _plain_value(decl)):
                 return
             self._write(decl, value)
-        elif value is not None and is_own_member(target):
+        elif is_own_member(target):
+            if value is None:
+                if write.whole or by_operator(write):
+                    self._changed.add(key_of(target.referenced))
+                return
             self._members.setdefault(key_of(target.referenced), []).append(
                 (write.at.extent.start.offset, value))
         elif value is not None and target.kind == CursorKind.MEMBER_REF_EXPR and (
@@ -432,6 +440,19 @@ class Scope:
                for start, end in self._regions):
             return None  # the assignment may not run before the read (amcl's map_topic_)
         return value
+
+    def values_written(self, decl: Cursor, at: Cursor) -> list[Cursor | None]:
+        """Every value this body writes to local ``decl``, or to member ``decl`` before
+        ``at``, in order (None for a write whose value is not an expression)."""
+        _ = self.writes  # read from the body together
+        if decl.kind == CursorKind.VAR_DECL:
+            return list(self.writes.get(key_of(decl), []))
+        chain = _named(at) if at.kind == CursorKind.MEMBER_REF_EXPR else None
+        found = self._members.get(chain if chain is not None and len(chain) > 1
+                                  else key_of(decl), [])
+        where = at.extent.start.offset
+        return [value for offset, value in sorted(found, key=lambda w: w[0])
+                if offset < where]
 
     def _write(self, decl: Cursor, value: Cursor | None) -> None:
         self.writes.setdefault(key_of(decl), []).append(value)
@@ -683,7 +704,7 @@ class Scope:
         gives it, and the scope to read that value in. ``initial``: the value it holds
         first (its default initialiser even where other functions write it later)."""
         if decl.kind != CursorKind.FIELD_DECL or self.sites is None or (
-            key_of(decl) in self.writes
+            key_of(decl) in self.writes or key_of(decl) in self._changed
         ):
             return None
         return self.sites.field(decl, self.body, initial)

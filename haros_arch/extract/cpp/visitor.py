@@ -23,7 +23,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
-from ...model.source import PrimitiveCall
+from ...model.source import SDF_ELEMENT, PrimitiveCall
 from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites, base_keys
@@ -155,7 +155,10 @@ _TAKEN_AS = {"as_int": "int", "as_double": "double", "as_string": "str", "as_boo
              "as_integer_array": "int[]", "as_double_array": "double[]",
              "as_string_array": "str[]", "as_bool_array": "bool[]"}
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
-                            "get_value", "value_to_string"})
+                            "get_value", "value_to_string",
+                            # SDFormat's ``GetElement("key")->GetValue()->GetAsString()``
+                            # (api.SDF)
+                            "GetValue", "GetAsString"})
 
 
 # the parameter a value is read from: its name, its default when known (one ``?`` where
@@ -765,7 +768,8 @@ class CallFinder:
             self._listener(call, args, declared, conditions, scope)
             return
         node_name = api.RCLCPP_NODE_NAME.get(key)
-        if node_name is None and key in api.STANDIN_NODE_NAME and from_standin(made or target):
+        if node_name is None and key in api.STANDIN_NODE_NAME and self.ros2 and from_standin(
+                made or target):
             node_name = api.STANDIN_NODE_NAME[key]  # the stand-in's class, not the real one
         if node_name is not None:
             self._node_name(node_name, args, scope)
@@ -774,6 +778,7 @@ class CallFinder:
                     and scope.boolean(args[switch]) is False):
                 for implicit in api.IMPLICIT.get(key, ()):
                     self._emit(implicit, call, args, None, conditions, scope)
+            self._unread_node(call, made or target.semantic_parent)
             return
         spec, cls = self._row(call)
         if spec is not None and len(args) == 1 and record_class(args[0]) is not None and (
@@ -787,6 +792,16 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _unread_node(self, call: Cursor, cls: Cursor | None) -> None:
+        """A node class of our stand-ins whose own calls no row says (``HAROS_UNREAD``:
+        ros2_control's ControllerManager beyond its services): the node is partial,
+        ``CPP_NODE_UNREAD`` where it is made."""
+        if cls is None or not _unread(cls) or place_of(call) in self._unknown:
+            return
+        self._unknown.add(place_of(call))
+        self.diagnostics.append(diag.make("CPP_NODE_UNREAD", self.where(call),
+                                          name=qualified_name(cls)))
 
     @functools.cached_property
     def _unresolved_names(self) -> set[str]:
@@ -1340,6 +1355,8 @@ class CallFinder:
                 cls if cls is not None and cls.kind != CursorKind.NO_DECL_FOUND
                 else (at or call).referenced):
             return  # the class of that name is not our stand-in's: its code is read
+        if spec.value_only:
+            return  # a value a name may take (``_parameter``), no call
         given = spec
         if self.ros2 and spec.ros2 is not None:
             spec = spec.ros2  # the call as ROS 2's library makes it
@@ -1521,6 +1538,11 @@ class CallFinder:
                 name.count("?") == 1
             ):
                 source = (*held, None, None)
+            # a Gazebo plugin's handle in the namespace its SDF gives, and a name its SDF
+            # gives too: both filled from the description (robot.attach)
+            namespace_param = held[0] if (
+                held is not None and source is not None and handle_namespace == namespace
+                and held[0].startswith(SDF_ELEMENT) and name.count("?") == 2) else None
             made_in = self._made_in(name, handle_namespace)
             name_member = self._name_member(name_expr) if (
                 written == "?" and source is None and spec.fixed_name is None) else None
@@ -1539,7 +1561,7 @@ class CallFinder:
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
                     name.count("?") == 1) else None, name_member=name_member,
-                loads=spec.loads))
+                loads=spec.loads, namespace_param=namespace_param))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -1979,6 +2001,9 @@ class CallFinder:
             ):
                 written = scope.assigned(decl, expr)
             if written is None:
+                held = self._host_value_or_default(decl, expr, scope, depth, value)
+                if held is not None:
+                    return held
                 found = scope.field(decl)
                 if found is None and expr.kind == CursorKind.MEMBER_REF_EXPR:
                     return self._written_once(decl, depth, value)
@@ -1988,6 +2013,18 @@ class CallFinder:
         if expr.kind != CursorKind.CALL_EXPR:
             return None
         spec, _ = self._row(expr)
+        if spec is not None and spec.value_only and spec.name_arg >= len(
+                written_arguments(expr)):
+            # ``GetElement("key")->Get<T>()``: the value of its object
+            held = _method_object(expr)
+            return self._parameter_source(held, scope, depth + 1, value) if (
+                held is not None) else None
+        if expr.spelling == "operator->":
+            # a shared pointer's object (SDFormat's ``GetElement("key")->GetValue()``)
+            held = next((c for c in expr.get_children()
+                         if strip(c).spelling != "operator->"), None)
+            return self._parameter_source(held, scope, depth + 1, value) if (
+                held is not None) else None
         if spec is not None and spec.kind in _PARAM_KINDS:
             # (for a value, not ``bool found = nh.getParam("x", v)``: whether x is there)
             return self._parameter(spec, expr, scope, depth) if not value or (
@@ -2013,6 +2050,26 @@ class CallFinder:
         ):
             return self._parameter_source(
                 inner[-1], scope, depth + 1, value) if inner else None
+        return None
+
+    def _host_value_or_default(self, decl: Cursor, expr: Cursor, scope: Scope, depth: int,
+                               value: bool) -> Source | None:
+        """A variable the body writes twice, a host's value (``api.RosFunction.
+        value_only``) and a literal: the value with the literal as its default. Gazebo
+        plugins write ``topic_ = "imu"; if (_sdf->HasElement("topicName")) topic_ =
+        _sdf->Get<std::string>("topicName");`` (or the literal in the ``else``)."""
+        written = scope.values_written(decl, expr)
+        if len(written) != 2 or None in written:
+            return None
+        for index, each in enumerate(written):
+            other = written[1 - index]
+            assert each is not None and other is not None
+            parts = scope.string(other)
+            if not _known(parts):
+                continue
+            source = self._parameter_source(each, scope, depth + 1, value)
+            if source is not None and source[0].startswith(SDF_ELEMENT):
+                return source[0], render(parts), None
         return None
 
     def _written_once(self, member: Cursor, depth: int,
@@ -2057,6 +2114,8 @@ class CallFinder:
         if spec.name_arg >= len(args):
             return None
         name = render(scope.string(args[spec.name_arg]))
+        if spec.value_only:
+            return (spec.name_prefix or "") + name, None, None
         if spec.on_handle:
             name = join_name(render(self.namespaces.of_call(call, callee_of_call(call), scope)),
                              name)

@@ -461,9 +461,9 @@ class Wrappers:
                    or _static_factory(d) for d in heads) and not (
                        target is None and head is not None and _static_factory_call(head)):
             return []
-        classes = [c.referenced for c in (head.walk_preorder() if head is not None else ())
+        classes = [d for c in (head.walk_preorder() if head is not None else ())
                    if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
-                   and c.referenced is not None]
+                   and c.referenced is not None for d in _aliased(c.referenced)]
         pattern = next((c for c in classes if c.kind == CursorKind.CLASS_TEMPLATE), None)
         if pattern is None:
             return []
@@ -1158,6 +1158,12 @@ class Wrappers:
         target = call.referenced
         if target is not None:
             return self._constructed(call, _arguments(call)) or _specialised_keys(target)
+        # a construction through a factory that depends on a template parameter
+        # (``std::make_shared<ActionServer>(node, name_, ...)`` in nav2's
+        # TimedBehavior<ActionT>, ``using ActionServer = SimpleActionServer<ActionT>``)
+        made = self._constructed(call, _arguments(call))
+        if made:
+            return made
         children = list(call.get_children())
         args = written_arguments(call)
         for decl in _fitting(children[0], args) if children else []:
@@ -1585,6 +1591,29 @@ def _member_name(member: Cursor) -> str:
             rest = [t for t in tokens[index + 1:] if t != "template"]
             name = rest[0] if rest else ""
     return name
+
+
+_ALIASES = (CursorKind.TYPE_ALIAS_DECL, CursorKind.TYPEDEF_DECL)
+MAX_ALIASES = 8  # aliases of aliases followed
+
+
+def _aliased(decl: Cursor) -> list[Cursor]:
+    """``decl``, or, for a type alias, the declarations its type names, through aliases
+    of aliases (``using Server = nav2_util::SimpleActionServer<Action>``: the class
+    template, then the template argument's class)."""
+    found: list[Cursor] = []
+    todo = [decl]
+    for _ in range(MAX_ALIASES):
+        if not todo:
+            break
+        each = todo.pop(0)
+        if each.kind not in _ALIASES:
+            found.append(each)
+            continue
+        todo += [c.referenced for c in each.get_children()
+                 if c.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
+                 and c.referenced is not None]
+    return found
 
 
 def _overloads(head: Cursor) -> list[Cursor]:

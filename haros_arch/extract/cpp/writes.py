@@ -74,6 +74,14 @@ def writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
     return []
 
 
+def by_operator(write: Write) -> bool:
+    """Whether ``write`` is an operator's change in place (``n_++``, ``n_ += 2``,
+    ``topic_ += "/x"``), not a call that may write what it is given."""
+    at = write.at
+    return at.kind in (CursorKind.COMPOUND_ASSIGNMENT_OPERATOR, CursorKind.UNARY_OPERATOR) or (
+        at.kind == CursorKind.CALL_EXPR and at.spelling in _COMPOUND)
+
+
 def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
     args = list(call.get_arguments())
     if call.spelling == "operator=" and len(args) == 2:

@@ -584,9 +584,14 @@ class Ros1Loader:
         if reached and "$(arg" not in raw:
             return
         marked = _ARG_SUBSTITUTION.sub(_ANY_MARK, raw)
-        before = len(self.model.diagnostics)
+        before, uses = len(self.model.diagnostics), len(self.model.package_uses)
         value = self.resolve(marked, scope, element)
         del self.model.diagnostics[before:]  # said once, by the include itself
+        # nor is a $(find pkg) of this look-up a use of pkg: an include the launch
+        # reaches says its own, and one a decided condition leaves out uses nothing,
+        # as roslaunch-deps skips it (dingo_bringup's wibotic_connector_can, included
+        # only if $(optenv DINGO_WIBOTIC_CHARGER 0))
+        del self.model.package_uses[uses:]
         if value.literal is None or (reached and _ANY_MARK not in value.literal):
             return
         path = os.path.abspath(value.literal)

@@ -47,7 +47,8 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
         if text is None:
             return None
         actions, problems = parse_python(text, path, workspace, runner.environment,
-                                         uses=runner.model.package_uses)
+                                         uses=runner.model.package_uses,
+                                         command_line=runner.command_line)
         runner.model.diagnostics.extend(problems)
         return actions
     front = Frontend(path, workspace)
@@ -91,6 +92,7 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
     """Interpret one ROS 2 launch file and what it includes."""
     env = workspace.environment if environment is None else environment
     runner = Runner(workspace, env, parse_file)
+    runner.command_line = dict(args or {})
     scope = Scope({k: Value.of(v) for k, v in (args or {}).items()})
     path = os.path.abspath(path)
     scope.item = LaunchItem("file", workspace.relpath(share_source(workspace, path)),

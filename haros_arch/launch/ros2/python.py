@@ -95,8 +95,9 @@ class Interpreter(Expressions):
         self.search: list[str] = []
         # modules imported from them, by source path (None: being read, or unreadable)
         self.modules: dict[str, Module | None] = {}
-        from .python_api import API, BUILTINS
-        from .python_methods import METHODS
+        # the launch's command-line arguments (``parse_python``)
+        self.command_line: Mapping[str, str] = {}
+        from .python_api import API, BUILTINS, METHODS
 
         self.api = API
         self.builtins = BUILTINS
@@ -324,19 +325,22 @@ class Interpreter(Expressions):
         parts = [p for p in name.lstrip(".").split(".") if p]
         for source in self._module_files(level, parts):
             source = os.path.realpath(source)
-            if not os.path.isfile(source) or not self.workspace.readable(
-                    source, self.environment):
-                continue
-            if source in self.modules:
-                found = self.modules[source]
-                if found is None:
-                    self.unsupported(node, f"module {name} imports itself (cycle)")
-                return found
-            self.modules[source] = None
-            module = self.load_module(name, source, node)
-            self.modules[source] = module
-            return module
+            if os.path.isfile(source) and self.workspace.readable(source, self.environment):
+                return self.module_file(name, source, node)
         return None
+
+    def module_file(self, name: str, source: str, node: ast.AST) -> Module | None:
+        """The module of the Python file ``source`` (a real path we may read),
+        interpreted once however often it is imported."""
+        if source in self.modules:
+            found = self.modules[source]
+            if found is None:
+                self.unsupported(node, f"module {name} imports itself (cycle)")
+            return found
+        self.modules[source] = None
+        module = self.load_module(name, source, node)
+        self.modules[source] = module
+        return module
 
     def _module_files(self, level: int, parts: list[str]) -> list[str]:
         """Where module ``parts`` may be, in the order Python looks (``level``: the dots
@@ -424,8 +428,28 @@ class Interpreter(Expressions):
             self.with_(stmt, env)
         elif isinstance(stmt, ast.While):
             self.unsupported(stmt, "while loops are not interpreted (never run)")
+        elif isinstance(stmt, (ast.Global, ast.Nonlocal)):
+            self.outer_names(stmt, env)
         else:
             self.unsupported(stmt, f"{type(stmt).__name__} statements are not interpreted")
+
+    def outer_names(self, stmt: ast.Global | ast.Nonlocal, env: dict[str, Any]) -> None:
+        """``global n`` / ``nonlocal n`` in a function: ``n`` is the module's (the
+        enclosing function's), not a local. The function works on its value as a local
+        would (so an ``if`` whose test is not known joins it with the value before, as
+        for any name: neo_simulation2's ``if int(N) > 5: N = '5'`` leaves N unknown),
+        and gives the scope its last value when it returns (``_write_outer``)."""
+        if "__closure__" not in env:
+            return  # at module level: the names are the module's already
+        outer: dict[str, dict[str, Any]] = env.setdefault(_OUTER, {})
+        for name in stmt.names:
+            scope = _scope_of(name, env["__closure__"], isinstance(stmt, ast.Global))
+            if scope is None:
+                self.unsupported(stmt, f"nonlocal {name}: no enclosing function binds it")
+                continue
+            outer[name] = scope
+            if name in scope:
+                env[name] = scope[name]
 
     def assign(self, target: ast.expr, value: Any, env: dict[str, Any]) -> None:
         if isinstance(target, ast.Name):
@@ -752,6 +776,7 @@ class Interpreter(Expressions):
         self.running.append(func.node)
         outer = self.path
         self.path = _file_of(func.closure, outer)  # a function of an imported module
+        env: dict[str, Any] = {}
         try:
             env = dict(func.closure) if isinstance(func.node, ast.Lambda) else {}
             env["__closure__"] = func.closure
@@ -789,6 +814,7 @@ class Interpreter(Expressions):
                 del self.guards[guards:]
             return self.either([*maybe, result]) if maybe else result
         finally:
+            _write_outer(env)
             self.depth = max(self.depth - 1, 0)
             self.running.pop()
             self.path = outer
@@ -797,15 +823,18 @@ class Interpreter(Expressions):
 def parse_python(text: str, path: str, workspace: Workspace,
                  environment: Mapping[str, str] | None = None,
                  uses: list[PackageUse] | None = None,
+                 command_line: Mapping[str, str] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
-    packages whose folders it asks for as it runs are added to ``uses``."""
+    packages whose folders it asks for as it runs are added to ``uses``.
+    ``command_line``: the ``name:=value`` arguments the launch was started with."""
     where = workspace.location(path)
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
         return None, [problem] if problem is not None else []
     interp = Interpreter(path, workspace,
                          environment if environment is not None else workspace.environment)
+    interp.command_line = command_line or {}
     try:
         actions = interp.module(tree)
     except Budget as stop:
@@ -846,6 +875,32 @@ def checked_tree(text: str, path: str, workspace: Workspace
             return None, diag.make("LAUNCH_PY_BUDGET", where, detail=what)
         stack.extend((child, depth + 1) for child in ast.iter_child_nodes(node))
     return tree, None
+
+
+_OUTER = "__outer__"  # a function's names declared ``global`` / ``nonlocal``: their scopes
+
+
+def _scope_of(name: str, closure: dict[str, Any] | None, module: bool
+              ) -> dict[str, Any] | None:
+    """The scope that binds ``name`` for ``global`` (``module``: the outermost of
+    ``closure``'s chain) or ``nonlocal`` (the nearest enclosing function's that binds
+    it); None when there is none."""
+    scope = closure
+    while scope is not None:
+        if module and "__closure__" not in scope:
+            return scope
+        if not module and name in scope and "__closure__" in scope:
+            return scope
+        scope = scope.get("__closure__")
+    return None
+
+
+def _write_outer(env: dict[str, Any]) -> None:
+    """A function returns: the names it declared ``global`` / ``nonlocal`` take the
+    values it left them in their own scopes."""
+    for name, scope in env.get(_OUTER, {}).items():
+        if name in env:
+            scope[name] = env[name]
 
 
 def _file_of(closure: dict[str, Any], default: str) -> str:

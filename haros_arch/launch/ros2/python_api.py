@@ -3,7 +3,8 @@
 ``API`` maps the last component of a qualified name (``Node``, ``IfCondition``,
 ``get_package_share_directory``, ...) to a builder that makes our action, substitution
 or condition from the evaluated arguments; only names imported from the launch
-packages, ``os``, ``ament_index_python`` and ``nav2_common`` reach it. ``METHODS`` holds
+packages, ``os``, ``ament_index_python``, ``nav2_common``, ``controller_manager``
+(its ``launch_utils``) and ``launch_pal`` reach it. ``METHODS`` holds
 the methods of known values (``str.format``, ``list.append``, ``LaunchDescription.
 add_action``, ``LaunchConfiguration.perform``...). Calls not listed are never made.
 """
@@ -24,21 +25,29 @@ from ...model.values import Unknown, Value
 from ...share import install_prefix
 from . import entities as e
 from .python import Interpreter
+from .python_controller_manager import CONTROLLER_MANAGER
+from .python_launch_pal import LAUNCH_PAL
+from .python_methods import METHODS as BASE_METHODS
 from .python_methods import (
     Args,
     Builder,
     Kwargs,
+    Method,
     arg,
     bounded_range,
     builtin,
     cond,
+    get_attribute,
+    is_instance,
+    module_of_file,
     open_file,
     safe_load,
     text_or_none,
     xacro_process,
     xacro_process_file,
 )
-from .python_nav2 import NAV2_COMMON
+from .python_nav2 import NAV2_COMMON, NAV2_METHODS
+from .python_robotnik import ROBOTNIK_COMMON, ROBOTNIK_METHODS
 from .python_values import (
     MAX_DEPTH,
     PLAIN,
@@ -184,10 +193,14 @@ def path_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 
 def pure_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``pathlib.Path(...)`` of known strings: a pure path (no file is looked at)."""
-    if k or not all(isinstance(p, (str, PurePosixPath)) for p in a):
+    """``pathlib.Path(...)`` of known strings: a pure path (no file is looked at); of
+    parts known when launch runs (the share folder of a package not installed here), a
+    path join of them, grown by ``/`` as the path would be."""
+    if k or not all(isinstance(p, (str, PurePosixPath, Lazy, e.Subst)) for p in a):
         return Unknown("a pathlib path of values not known statically")
-    return PurePosixPath(*a)
+    if all(isinstance(p, (str, PurePosixPath)) for p in a):
+        return PurePosixPath(*a)
+    return e.PathJoin(tuple(to_text(p) for p in a))
 
 
 def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -359,7 +372,11 @@ def node(container: bool) -> Builder:
             text_or_none(k.get("name", k.get("node_name"))),
             text_or_none(k.get("namespace", k.get("node_namespace"))),
             parameters(i, k.get("parameters"), n), remappings(i, k.get("remappings"), n),
-            words(k.get("arguments")), words(k.get("ros_arguments")), container=container)
+            words(k.get("arguments")), words(k.get("ros_arguments")), container=container,
+            # shell=True: launch joins the command line with spaces and the shell splits
+            # it, so an argument that is empty is no word (controller_manager's
+            # launch_utils add '--unload-on-kill' or '' so)
+            split=k.get("shell") is True)
         if container:
             action.composable = composables(i, k.get("composable_node_descriptions"), n)
         return finish(i, action, k, n)
@@ -720,6 +737,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
+    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON,
     "len": builtin(len, str, list, tuple, dict),
     "str": builtin(str, known=printable),
     "repr": builtin(repr, known=lambda v: printable(v, path=False)),
@@ -728,16 +746,20 @@ API: dict[str, Builder] = {
     "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
     "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
-    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str),
+    "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
-    "print": ignored, "isinstance": lambda i, a, k, n: Unknown("isinstance"),
+    "print": ignored, "isinstance": is_instance,
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
     "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
+    "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
+# methods of the values the interpreter knows, by name (``python_methods``), nav2's and
+# robotnik_common's
+METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open"))
+                      "isinstance", "all", "any", "open", "getattr"))
 
 

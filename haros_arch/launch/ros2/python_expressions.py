@@ -56,6 +56,17 @@ _NOT_KNOWN = {"not": "not of an unknown value", "unary": "unary operation", "sli
               "boolean": "boolean of an unknown value"}
 
 
+def _fails_for_sure(value: Any, key: Any) -> bool:
+    """Whether Python's own error on ``value[key]`` is the program's: a container
+    known, a key known, and (a dict) no key of it unknown that could be that one."""
+    def known(item: Any) -> bool:
+        return not _opaque(item) and (not isinstance(item, tuple) or all(map(known, item)))
+
+    if not isinstance(value, (dict, list, tuple, str)) or not known(_hashable(key)):
+        return False
+    return not isinstance(value, dict) or all(known(k) for k in value)
+
+
 class Expressions(Walker):
     """The expression half of ``Interpreter`` (statements and calls live there)."""
 
@@ -101,6 +112,9 @@ class Expressions(Walker):
         raise NotImplementedError
 
     def iterable(self, value: Any, node: ast.AST) -> list[Any] | None:
+        raise NotImplementedError
+
+    def either(self, values: list[Any], what: str = "one of several return values") -> Any:
         raise NotImplementedError
 
     # -- expressions ---------------------------------------------------------------------
@@ -296,11 +310,22 @@ class Expressions(Walker):
             return value.get(self, [key], node)
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
             return value.perform((e.Var(_text_of(key)),))
+        if isinstance(value, (list, tuple)) and value and _opaque(key) and all(
+                isinstance(item, e.Action) for item in value):
+            # an item not known of a list of actions (neo_simulation2's
+            # ``ld.add_action(spawn_entity[i])`` in a loop over robots whose number is
+            # not known): one of them, so each, under the test it was made under
+            return self.either(list(value), f"{_source(node)}")
         if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
             self.step(ops.walk_cost(key, LIMITS))  # a key is hashed
             try:
                 return ops.subscript(value, _hashable(key))
-            except ops.Refused:
+            except ops.Refused as err:
+                if err.kind == "error" and _fails_for_sure(value, key):
+                    # a missing key, an index out of range of a value known: Python
+                    # raises, to a ``try`` whose handler catches it (``failed``)
+                    return self.failed(node, f"{_source(node)} fails: {err.reason}",
+                                       err.reason)
                 return self.unsupported(node, f"{_source(node)} is not known statically")
         # which expression, as an attribute of an unknown value says (it was "subscript")
         return Unknown(f"{_source(node)} (a subscript of a value not known statically)")

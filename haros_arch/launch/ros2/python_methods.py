@@ -29,7 +29,9 @@ from .python_values import (
     Context,
     LaunchDescription,
     Lazy,
+    Module,
     ReadOnlyFile,
+    Ref,
     XacroDocument,
     _source,
     concat,
@@ -114,6 +116,62 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return safe_yaml.load(text)
     except yaml.YAMLError as err:
         return i.unsupported(n, f"YAML cannot be read: {err}")
+
+
+def module_of_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """launch's ``load_python_launch_file_as_module(path)``: the Python file at that
+    path (of a package's share folder: its source), read as an imported module
+    (xarm_ros2's launch files load their helper libraries so, then take a function
+    with ``getattr``)."""
+    from ...share import share_source
+
+    path = arg(a, k, 0, "python_launch_file_path")
+    if isinstance(path, PurePosixPath):
+        path = str(path)
+    if not isinstance(path, str):
+        return i.unsupported(n, "load_python_launch_file_as_module of a path not known "
+                                "statically")
+    source = os.path.realpath(share_source(i.workspace, path))
+    if not os.path.isfile(source) or not i.workspace.readable(source, i.environment):
+        return i.unsupported(n, f"{path} is not a file this tool may read; not loaded")
+    name = os.path.splitext(os.path.basename(source))[0]
+    return i.module_file(name, source, n) or Unknown(f"module {name} not read",
+                                                      "unsupported", where=i.where(n))
+
+
+def get_attribute(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``getattr(module, name[, default])`` of a module read here: its name's value,
+    as ``module.name``; of anything else, not known."""
+    if len(a) in (2, 3) and isinstance(a[0], Module) and isinstance(a[1], str):
+        if a[1] in a[0].names:
+            return a[0].names[a[1]]
+        if len(a) == 3:
+            return a[2]
+        return i.failed(n, f"{_source(n)} fails: {a[0].name} has no {a[1]}",
+                        "AttributeError")
+    if a and isinstance(a[0], Unknown) and a[0].kind == "unsupported":
+        return Unknown(f"{_source(n)} of a value not known", "unsupported",
+                       where=a[0].where)  # said where the value was made
+    return i.unsupported(n, f"{_source(n)}: getattr() of a value not known statically")
+
+
+# the builtin types ``isinstance`` decides for, by the name the interpreted code calls them
+_PLAIN_TYPES: dict[str, type] = {"str": str, "int": int, "float": float, "bool": bool,
+                                 "list": list, "tuple": tuple, "dict": dict}
+
+
+def is_instance(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``isinstance(value, list)`` (or a tuple of builtin types) of a plain Python value
+    known here: decided, so a helper that recurses on lists (``flatten``) stops at a
+    string. Any other value may stand for a ``str`` (a package path found at launch time)
+    or be of a class not read: not known."""
+    if k or len(a) != 2 or type(a[0]) not in (*_PLAIN_TYPES.values(), type(None)):
+        return Unknown("isinstance")
+    classes = a[1] if isinstance(a[1], tuple) else (a[1],)
+    if not classes or not all(isinstance(c, Ref) and c.qualified in _PLAIN_TYPES
+                              for c in classes):
+        return Unknown("isinstance")
+    return isinstance(a[0], tuple(_PLAIN_TYPES[c.qualified] for c in classes))
 
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

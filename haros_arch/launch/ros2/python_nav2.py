@@ -1,18 +1,23 @@
 """nav2_common's launch helpers, as the static Python interpreter knows them.
 
 ``RewrittenYaml`` (parameter, key and value rewrites under an optional root key),
-``ReplaceString`` (text replacements, maybe under a condition), ``LaunchConfigAsBool``
-and ``HasNodeParams``: rows of ``python_api.API``, never nav2's own code.
+``ReplaceString`` (text replacements, maybe under a condition), ``LaunchConfigAsBool``,
+``HasNodeParams`` and Humble's ``ParseMultiRobotPose``: rows of ``python_api.API`` (and
+of its methods), never nav2's own code.
 """
 
 from __future__ import annotations
 
 import ast
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+import yaml
+
+from ... import safe_yaml
 from ...model.values import Unknown
 from . import entities as e
-from .python_methods import Args, Builder, Kwargs, arg, cond, text_or_none
+from .python_methods import Args, Builder, Kwargs, Method, arg, cond, text_or_none
 from .python_values import to_text
 
 if TYPE_CHECKING:
@@ -54,7 +59,57 @@ def replace_string(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                        replacements=pairs, condition=cond(i, k.get("condition"), n))
 
 
+@dataclass(frozen=True)
+class MultiRobotPoses:
+    """Humble's ``ParseMultiRobotPose(target)``: the text of ``target:=...`` on the
+    command line ``ros2 launch`` was started with (``sys.argv``, whatever file includes
+    this one), ``''`` when it is not there."""
+
+    text: str
+
+
+# the pose fields ParseMultiRobotPose.value() sets to 0.0 when a robot's pose omits them
+_POSE_FIELDS = ("x", "y", "z", "roll", "pitch", "yaw")
+
+
+def parse_multirobot_pose(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    target = arg(a, k, 0, "target_argument")
+    if not isinstance(target, str):
+        return i.unsupported(n, "ParseMultiRobotPose of an argument name not known "
+                                "statically")
+    return MultiRobotPoses(i.command_line.get(target, ""))
+
+
+def m_value(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``ParseMultiRobotPose(...).value()``: ``{name: pose}`` of ``name={x: .., ...}``
+    entries separated by ``;`` (an entry without exactly one ``=`` skipped), each pose
+    read as YAML with the fields it omits at 0.0; ``{}`` when the argument is not given."""
+    if not isinstance(owner, MultiRobotPoses):
+        return i.unsupported(n, "method .value() is not interpreted")
+    poses: dict[str, Any] = {}
+    for entry in owner.text.split(";") if owner.text else []:
+        name_pose = entry.strip().split("=")
+        if len(name_pose) != 2:
+            continue
+        try:
+            pose = safe_yaml.load(name_pose[1].strip())
+        except yaml.YAMLError as err:
+            return i.failed(n, f"a robot's pose cannot be read: {err}", "ScannerError")
+        if not isinstance(pose, dict):
+            return i.failed(n, f"a robot's pose is not a mapping: {name_pose[1].strip()}",
+                            "TypeError")
+        pose = dict(pose)
+        for field in _POSE_FIELDS:  # after the fields given, as setdefault() adds them
+            pose.setdefault(field, 0.0)
+        poses[name_pose[0].strip()] = pose
+    return poses
+
+
+NAV2_METHODS: dict[str, Method] = {"value": m_value}
+
+
 NAV2_COMMON: dict[str, Builder] = {
     "RewrittenYaml": rewritten_yaml, "ReplaceString": replace_string,
     "LaunchConfigAsBool": launch_config_as_bool, "HasNodeParams": has_node_params,
+    "ParseMultiRobotPose": parse_multirobot_pose,
 }

@@ -92,6 +92,9 @@ class Runner:
             environment, self.model.environment_values)
         self.stack: list[str] = []
         self.performed = 0
+        # the arguments of the command line that starts the first file (``name:=value``),
+        # which a Python launch file may read from ``sys.argv`` (``load``)
+        self.command_line: Mapping[str, str] = {}
         # the action lists being run, innermost last (``run``)
         self.running: list[list[e.Action]] = []
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)

@@ -136,7 +136,8 @@ function shorten(text, most) {
 }
 
 function findingItem(finding, app) {
-  const names = (finding.entities || []).map(id => (app.index.entities.get(id) || {name: id}).name);
+  // each name once: the instances of one duplicated name are one name
+  const names = [...new Set((finding.entities || []).map(id => (app.index.entities.get(id) || {name: id}).name))];
   const item = el('div', {class: 'item finding', 'data-rule': finding.rule, onclick: () => app.showFinding(finding)},
     severityBadge(finding.severity),
     el('span', {class: 'item-title'}, names.length ? names.slice(0, 2).join(' \u00b7 ') : (finding.title || finding.rule)),

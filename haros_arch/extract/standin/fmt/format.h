@@ -5,6 +5,10 @@
 #define HAROS_STANDIN_FMT_FORMAT_H
 #include <string>
 #include <cstdio>
+// fmt/compile.h's compiled and fmt/format.h's checked format strings: the literal, as
+// the format reads it
+#define FMT_COMPILE(text) text
+#define FMT_STRING(text) text
 namespace fmt {
 template<class... Args> std::string format(const char* text, const Args&... args);
 template<class... Args> std::string format(const std::string& text, const Args&... args);

@@ -73,7 +73,7 @@ extern const Time TIME_MIN, TIME_MAX;
 extern const Duration DURATION_MIN, DURATION_MAX;
 class Rate {
 public:
-  explicit Rate(double frequency);
+  Rate(double frequency);  // not explicit: createTimer(100, &C::f, this) is 100 Hz
   explicit Rate(const Duration& d);
   bool sleep();
   void reset();

@@ -180,6 +180,7 @@ char* fgets(char* s, int size, FILE* stream);
 int fflush(FILE* stream);
 int setvbuf(FILE* stream, char* buf, int mode, size_t size);
 void setbuf(FILE* stream, char* buf);
+void setlinebuf(FILE* stream);  // glibc's (xarm_ros2's driver: setlinebuf(stdout))
 int fgetc(FILE* stream);
 int getc(FILE* stream);
 int ungetc(int c, FILE* stream);
@@ -245,6 +246,9 @@ long labs(long x);
 size_t strlen(const char* s);
 int strcmp(const char* a, const char* b);
 int strncmp(const char* a, const char* b, size_t n);
+// <strings.h>, which glibc's <string.h> includes: unitree_legged_real's ros_udp.cpp
+int strcasecmp(const char* a, const char* b);
+int strncasecmp(const char* a, const char* b, size_t n);
 char* strcpy(char* d, const char* s);
 char* strncpy(char* d, const char* s, size_t n);
 char* strcat(char* d, const char* s);
@@ -362,6 +366,10 @@ int nanosleep(const struct timespec* req, struct timespec* rem);
 int clock_nanosleep(int clock, int flags, const struct timespec* req, struct timespec* rem);
 unsigned int sleep(unsigned int seconds);
 int usleep(useconds_t usec);
+#define STDIN_FILENO 0
+#define STDOUT_FILENO 1
+#define STDERR_FILENO 2
+int isatty(int fd);
 pid_t getpid();
 pid_t getppid();
 uid_t getuid();
@@ -559,6 +567,17 @@ int pthread_attr_setschedpolicy(pthread_attr_t* attr, int policy);
 int pthread_attr_setinheritsched(pthread_attr_t* attr, int inherit);
 int pthread_setschedparam(pthread_t thread, int policy, const struct sched_param* param);
 pthread_t pthread_self(void);
+// <sched.h>'s CPU sets (glibc's macros, as functions) and the affinity calls
+typedef struct { unsigned long haros_bits[16]; } cpu_set_t;
+void CPU_ZERO(cpu_set_t* set);
+void CPU_SET(int cpu, cpu_set_t* set);
+void CPU_CLR(int cpu, cpu_set_t* set);
+int CPU_ISSET(int cpu, const cpu_set_t* set);
+int CPU_COUNT(const cpu_set_t* set);
+int sched_setaffinity(int pid, unsigned long size, const cpu_set_t* set);
+int sched_getaffinity(int pid, unsigned long size, cpu_set_t* set);
+int pthread_setaffinity_np(pthread_t thread, unsigned long size, const cpu_set_t* set);
+int pthread_getaffinity_np(pthread_t thread, unsigned long size, cpu_set_t* set);
 typedef struct { char haros_opaque[4]; } pthread_mutexattr_t;
 #define PTHREAD_PROCESS_PRIVATE 0
 #define PTHREAD_PROCESS_SHARED 1
@@ -580,6 +599,13 @@ int pthread_mutex_unlock(pthread_mutex_t* mutex);
 #define MAP_FAILED ((void*)-1)
 void* mmap(void* addr, unsigned long length, int prot, int flags, int fd, long offset);
 int munmap(void* addr, unsigned long length);
+#define MCL_CURRENT 1
+#define MCL_FUTURE 2
+#define MCL_ONFAULT 4
+int mlockall(int flags);
+int munlockall(void);
+int mlock(const void* addr, unsigned long length);
+int munlock(const void* addr, unsigned long length);
 int shm_open(const char* name, int oflag, unsigned int mode);
 int shm_unlink(const char* name);
 int ftruncate(int fd, long length);

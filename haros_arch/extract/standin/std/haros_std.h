@@ -359,8 +359,35 @@ public:
   constexpr size_t length() const { return size_; }
   constexpr const char* data() const { return data_; }
   constexpr bool empty() const { return size_ == 0; }
+  static constexpr size_t npos = size_t(-1);
+  constexpr const char& operator[](size_t pos) const { return data_[pos]; }
+  constexpr const char* begin() const { return data_; }
+  constexpr const char* end() const { return data_ + size_; }
+  constexpr char front() const { return data_[0]; }
+  constexpr char back() const { return data_[size_ - 1]; }
+  void remove_prefix(size_t n);
+  void remove_suffix(size_t n);
+  string_view substr(size_t pos = 0, size_t n = npos) const;
+  size_t find(string_view s, size_t pos = 0) const;
+  size_t find(char c, size_t pos = 0) const;
+  size_t find(const char* s, size_t pos = 0) const;
+  size_t rfind(string_view s, size_t pos = npos) const;
+  size_t rfind(char c, size_t pos = npos) const;
+  size_t find_first_of(string_view s, size_t pos = 0) const;
+  size_t find_first_of(char c, size_t pos = 0) const;
+  size_t find_last_of(string_view s, size_t pos = npos) const;
+  size_t find_last_of(char c, size_t pos = npos) const;
+  size_t find_first_not_of(string_view s, size_t pos = 0) const;
+  int compare(string_view s) const;
+  bool starts_with(string_view s) const;
+  bool starts_with(char c) const;
+  bool ends_with(string_view s) const;
+  bool ends_with(char c) const;
   operator string() const;
 };
+bool operator==(string_view a, string_view b);
+bool operator!=(string_view a, string_view b);
+bool operator<(string_view a, string_view b);
 inline namespace literals { inline namespace string_literals {
 string operator""s(const char* s, size_t n);
 } }
@@ -846,6 +873,12 @@ template<class F> struct haros_not_callable
 template<class T> struct haros_not_callable<T*> : integral_constant<bool, !__is_function(T)> {};
 template<class C, class Tr, class A> struct haros_not_callable<basic_string<C, Tr, A>>
     : true_type {};
+// and smart pointers, which have no operator(): realtime_tools' box of a
+// shared_ptr<const T>, whose set(value) and set(function) overloads both took a
+// shared_ptr<T> (sawyer_simulator's controllers)
+template<class T> struct haros_not_callable<shared_ptr<T>> : true_type {};
+template<class T> struct haros_not_callable<weak_ptr<T>> : true_type {};
+template<class T, class D> struct haros_not_callable<unique_ptr<T, D>> : true_type {};
 template<class Signature> class function;
 template<class R, class... A> class function<R(A...)> {
 public:

@@ -1,0 +1,141 @@
+"""Gazebo classic plugins a workspace package builds (a library registering a class with
+``GZ_REGISTER_<KIND>_PLUGIN``): their calls come from their C++, with the names their
+code takes from the <plugin> element's SDF children filled from the robot description.
+They were GAZEBO_PLUGIN_UNKNOWN, the Gazebo node partial (uuv_simulator, rotors_simulator,
+hector_gazebo build many). fixtures/robot/classic_ros1 and classic_ros2."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import FIXTURES, package_xml
+
+from haros_arch import pipeline
+from haros_arch.model.runtime import Configuration
+from haros_arch.project import ConfigurationSpec, Project
+from haros_arch.workspace import scan
+
+ROS1 = str(FIXTURES / "robot" / "classic_ros1")
+ROS2 = str(FIXTURES / "robot" / "classic_ros2")
+
+
+def configuration(root: str, launch: str) -> Configuration:
+    project = Project("classic", os.path.join(root, "project.yaml"), workspace=[root],
+                      configurations=[ConfigurationSpec("c", [launch], {})])
+    model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
+    return model.configurations[0]
+
+
+def made(config: Configuration) -> list[tuple[str, str, str, str | None, int]]:
+    return sorted((link.node.name, link.kind, link.resource.name, link.type,
+                   link.location.line) for link in config.links
+                  if link.origin == "description")
+
+
+def test_ros1_plugin_of_the_workspace_makes_its_code_calls_on_the_gazebo_node() -> None:
+    config = configuration(ROS1, "depth_description/launch/sim.launch")
+    assert made(config) == [
+        # gauge2: no <robotNamespace>, the spawner's -robot_namespace; no <topicName>,
+        # the code's default; a global <resetService> stays global
+        ("/gazebo", "publish", "/fleet/?", "std_msgs/Float64", 33),
+        ("/gazebo", "publish", "/fleet/depth", "std_msgs/Float64", 27),
+        # gauge: <robotNamespace> and <topicName> (a xacro argument's default) given;
+        # <statusTopic> given by neither the description nor the code: unknown
+        ("/gazebo", "publish", "/sub/?", "std_msgs/Float64", 33),
+        ("/gazebo", "publish", "/sub/pressure/depth", "std_msgs/Float64", 27),
+        ("/gazebo", "server", "/global_reset", "std_srvs/Empty", 28),
+        ("/gazebo", "server", "/sub/reset_gauge", "std_srvs/Empty", 28),
+        ("/gazebo", "subscribe", "/fleet/set_offset", "std_msgs/Float64", 31),
+        ("/gazebo", "subscribe", "/sub/set_offset", "std_msgs/Float64", 31),
+    ]
+    # each call at its line of the plugin's code
+    assert {link.location.file for link in config.links if link.origin == "description"} \
+        == {"depth_plugins/src/depth_gauge.cpp"}
+    # the thruster (Gazebo transport only) makes no ROS call and is known; the library
+    # no package builds is still unknown
+    unknown = [(d.message, d.location.line) for d in config.diagnostics
+               if d.code == "GAZEBO_PLUGIN_UNKNOWN"]
+    assert unknown == [("Gazebo plugin libnot_built_here.so loaded by /gazebo is not known",
+                        18)]
+    (description,) = config.robot_descriptions
+    assert [(p.name, p.node) for p in description.plugins] == [
+        ("gauge", "/gazebo"), ("gauge2", "/gazebo"), ("thruster", "/gazebo"),
+        ("elsewhere", None), ("sonar_camera", "/gazebo")]
+    # the camera builds on gazebo_plugins' utilities, which the workspace does not have:
+    # what they make is not read, and the description says so
+    assert description.completeness_reasons == [
+        "Gazebo plugin libnot_built_here.so loaded by /gazebo is not known "
+        "(depth_description/urdf/sub.urdf.xacro:18)",
+        "Gazebo plugin sonar_camera (depth_plugins/sonar_camera_plugin): "
+        "depth_plugins/include/depth_plugins/sonar_camera.h includes "
+        "gazebo_plugins/gazebo_ros_camera_utils.h, whose classes make calls that are not "
+        "read (depth_description/urdf/sub.urdf.xacro:22)"]
+    # no ROS parameter is read for the SDF elements
+    assert not [link for link in config.links if "sdf" in link.resource.name]
+
+
+def test_ros1_plugin_node_of_the_build_stage() -> None:
+    workspace = scan([ROS1], {})
+    package = workspace.packages["depth_plugins"]
+    pipeline.read_build_files(package, workspace)
+    plugins = sorted((n.executable, n.kind, n.plugin_class, n.plugin_base, n.sources)
+                     for n in package.nodes)
+    assert plugins == [
+        ("depth_gauge_plugin", "plugin", "DepthGauge", "gazebo::ModelPlugin",
+         ["depth_plugins/src/depth_gauge.cpp"]),
+        ("sonar_camera_plugin", "plugin", "SonarCamera", "gazebo::SensorPlugin",
+         ["depth_plugins/src/sonar_camera.cpp"]),
+        ("thruster_plugin", "plugin", "Thruster", "gazebo::ModelPlugin",
+         ["depth_plugins/src/thruster.cpp"])]
+
+
+def test_ros2_plugin_of_the_workspace_is_a_node_of_its_own() -> None:
+    config = configuration(ROS2, "arm_description/launch/sim.launch.py")
+    assert made(config) == [
+        # <joint_name> fills the code's ``joint + "_state"``; <ros><namespace> and
+        # <remapping> apply to the plugin's gazebo_ros node, named by the <plugin>
+        ("/arm/gripper", "publish", "/arm/left_finger_state", "std_msgs/msg/Float64", 24),
+        ("/arm/gripper", "server", "/arm/gripper/grasp", "std_srvs/srv/Trigger", 27),
+        ("/arm/gripper", "subscribe", "/arm/gripper/command", "std_msgs/msg/Float64", 25),
+        # a plugin that makes an rclcpp node of its own: named as its code names it (the
+        # <ros> element is gazebo_ros::Node's, not this node's)
+        ("/arm_tools/control", "subscribe", "/arm_tools/reset", "std_msgs/msg/Empty", 17),
+    ]
+    assert not [d for d in config.diagnostics if d.code == "GAZEBO_PLUGIN_UNKNOWN"]
+    (instance,) = [n for n in config.nodes if n.name == "/arm/gripper"]
+    assert instance.node is not None
+    assert (instance.node.name, instance.node.completeness) == (
+        "arm_plugins/arm_gripper_plugin", "complete")
+    (description,) = config.robot_descriptions
+    assert description.completeness == "complete"
+
+
+def test_a_plugin_whose_code_is_partial_leaves_the_gazebo_node_partial(write_tree) -> None:
+    """What the parse cannot read of the plugin is said on the Gazebo node: never an
+    empty interface taken for a known one."""
+    root = write_tree({
+        "p/package.xml": package_xml("p", "catkin"),
+        "p/CMakeLists.txt": "project(p)\nfind_package(catkin REQUIRED)\n"
+                            "add_library(broken_plugin src/broken.cpp)\n",
+        "p/src/broken.cpp": "#include <gazebo/gazebo.hh>\n#include <ros/ros.h>\n"
+                            "namespace gazebo {\nclass Broken : public ModelPlugin {\n"
+                            "public:\n  void Load(physics::ModelPtr, sdf::ElementPtr s) {\n"
+                            "    ros::NodeHandle nh;\n    nh.advertise<std_msgs::Float64>(\n"
+                            "      ((( s->Get<std::string>(\"topic\"), 1);\n  }\n};\n"
+                            "GZ_REGISTER_MODEL_PLUGIN(Broken)\n}\n",
+        "d/package.xml": package_xml("d", "catkin"),
+        "d/CMakeLists.txt": "project(d)\nfind_package(catkin REQUIRED)\n",
+        "d/urdf/r.urdf": "<robot name=\"r\"><link name=\"b\"/><gazebo>"
+                         "<plugin name=\"x\" filename=\"libbroken_plugin.so\"/>"
+                         "</gazebo></robot>\n",
+        "d/launch/sim.launch": "<launch><param name=\"robot_description\" "
+                               "command=\"cat $(find d)/urdf/r.urdf\"/>"
+                               "<node name=\"s\" pkg=\"gazebo_ros\" type=\"spawn_model\" "
+                               "args=\"-urdf -param robot_description -model r\"/></launch>\n",
+    })
+    config = configuration(str(root), "d/launch/sim.launch")
+    assert not [d for d in config.diagnostics if d.code == "GAZEBO_PLUGIN_UNKNOWN"]
+    (description,) = config.robot_descriptions
+    assert description.completeness == "partial"
+    assert any("p/broken_plugin" in reason and "d/urdf/r.urdf:1" in reason
+               for reason in description.completeness_reasons)
