@@ -42,6 +42,7 @@ import rospy
 from sensor_msgs.msg import Image
 rospy.init_node('camera')
 pub = rospy.Publisher('/cam0/image_raw', Image, queue_size=1)
+sub = rospy.Subscriber('/cam1/image_raw', Image, lambda m: None)
 rospy.spin()
 """
 
@@ -83,7 +84,7 @@ def test_a_wholly_unknown_name_on_a_private_handle_may_be_global(write_tree):
     # the whole name unknown: in no namespace; "cam/" known: the private handle's
     assert names == [("~?", "?"), ("~cam/?", "/vins/feature_tracker/cam/?")]
     unknown = next(link.resource for link in tracker.links if link.rosname.full == "?")
-    assert [c.name for c in unknown.candidates] == ["/cam0/image_raw"]
+    assert [c.name for c in unknown.candidates] == ["/cam0/image_raw", "/cam1/image_raw"]
     found: dict[str, list[str]] = {}
     for finding in run_catalogue(model, project):
         found.setdefault(finding.rule, []).append(finding.message)
@@ -91,6 +92,10 @@ def test_a_wholly_unknown_name_on_a_private_handle_may_be_global(write_tree):
     assert "publisher-without-subscriber" not in found
     assert any("/cam0/image_raw" in m
                for m in found.get("publisher-without-subscriber-undecided", []))
+    # a node that subscribes "?" may be a subscriber of any image topic, never its
+    # publisher: nothing publishes /cam1/image_raw, a finding still
+    assert found["subscriber-without-publisher"] == [
+        "/camera subscribes to /cam1/image_raw but nothing publishes it"]
     # the unknown names are still reported as unknown, neither dropped
     assert sorted(m.rsplit(" ", 1)[-1] for m in found["unresolved-names"]) == [
         "/vins/feature_tracker/cam/?", "?"]
