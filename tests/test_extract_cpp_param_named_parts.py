@@ -185,9 +185,9 @@ def test_a_call_in_a_loop_over_a_list_parameter_is_one_call_per_element(write_tr
                    for link in model.configuration("c").links
                    if link.kind in ("publish", "subscribe"))
     assert links == [
-        ("publish", "/?", ("for each (const std::string & out : outs)",
-                           "for (const std::string & side : sides_)",
-                           "if (out.find(side) != std::string::npos)")),
+        ("publish", "?", ("for each (const std::string & out : outs)",
+                          "for (const std::string & side : sides_)",
+                          "if (out.find(side) != std::string::npos)")),
         ("subscribe", "/bumper", ()), ("subscribe", "/cliff/left", ())]
 
 

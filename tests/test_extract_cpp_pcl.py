@@ -311,3 +311,44 @@ int main(int argc, char** argv) {
 """)
     assert _unclean(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("read", "~scan_period")]
+
+
+def test_a_point_type_aligned_after_its_body_parses(tmp_path) -> None:
+    """LIO-SAM writes each point type's alignment after its body, ``} EIGEN_ALIGN16;``:
+    Eigen's macro is GCC's ``__attribute__((aligned(16)))`` there, which may follow a
+    class body; the stand-in's ``alignas(16)`` may not (clang: an attribute list cannot
+    appear here), which left every such type and its uses an error. The type is 16-byte
+    aligned either way."""
+    result = _extract(tmp_path, """
+#include <ros/ros.h>
+#include <pcl/point_types.h>
+#include <pcl/point_cloud.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <sensor_msgs/PointCloud2.h>
+struct PointXYZIRPYT {
+  PCL_ADD_POINT4D
+  PCL_ADD_INTENSITY;
+  float roll;
+  double time;
+  EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+} EIGEN_ALIGN16;
+POINT_CLOUD_REGISTER_POINT_STRUCT(PointXYZIRPYT,
+    (float, x, x)(float, y, y)(float, z, z)(float, intensity, intensity)
+    (float, roll, roll)(double, time, time))
+static_assert(alignof(PointXYZIRPYT) == 16, "aligned as Eigen aligns it");
+typedef PointXYZIRPYT PointTypePose;
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "map");
+  ros::NodeHandle nh;
+  ros::Publisher poses = nh.advertise<sensor_msgs::PointCloud2>("poses", 1);
+  pcl::PointCloud<PointTypePose>::Ptr cloud(new pcl::PointCloud<PointTypePose>());
+  PointTypePose p;
+  p.roll = 1.f;
+  cloud->push_back(p);
+  sensor_msgs::PointCloud2 msg;
+  pcl::toROSMsg(*cloud, msg);
+  poses.publish(msg);
+}
+""")
+    assert _unclean(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "poses")]

@@ -72,7 +72,7 @@ def test_unknown_names_are_never_merged():
     a = node("p", "a", call("publish", "?", "x/Y"))
     b = node("p", "b", call("subscribe", "?", "x/Y"))
     config = graph([NodeDecl("/a", "p", "a"), NodeDecl("/b", "p", "b")], nodes=[a, b])
-    assert [t.name for t in config.topics] == ["/?", "/?"]
+    assert [t.name for t in config.topics] == ["?", "?"]
     assert all(t.is_disconnected and t.is_unresolved for t in config.topics)
 
 

@@ -76,7 +76,7 @@ def test_a_name_from_a_parameter_whose_value_is_empty_stays_unknown() -> None:
                       name_default="clock")])
     config = _config([NodeDecl("/bridge", "gz", "bridge", "/", ros_version=2)],
                      {"gz/bridge": bridge})
-    assert sorted(link.rosname.full for link in config.links) == ["/?", "/clock"]
+    assert sorted(link.rosname.full for link in config.links) == ["/clock", "?"]
 
 
 def test_a_node_its_host_makes_is_not_who_the_remap_was_given_to() -> None:

@@ -482,8 +482,8 @@ def test_names_from_a_numbered_family_of_parameters_come_from_launch_and_yaml(wr
     ekf = _instance(config, "/ekf")
     # imu0, imu1 and odom0 are set; imu3 is not read (imu2 is not set); twist0 is not set
     assert sorted(link.name for link in ekf.subscribers) == [
-        "/?", "/imu/data", "/imu2/data", "/wheel/odom"]
-    unknown = next(link for link in ekf.subscribers if link.name == "/?")
+        "/imu/data", "/imu2/data", "/wheel/odom", "?"]
+    unknown = next(link for link in ekf.subscribers if link.name == "?")
     assert unknown.type == "geometry_msgs/TwistStamped"
     (why,) = [d.message for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"]
     assert why == ("/ekf: the name of this subscribe is the value of the parameters "

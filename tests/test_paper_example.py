@@ -73,7 +73,7 @@ def test_parameters(config):
     assert (frequency["type"], frequency["value"], frequency["writers"]) == (
         "double", 1.0, ["<launch>"])
     assert frequency["readers"] == []
-    unknown = next(p for p in params if p["name"] == "/?")
+    unknown = next(p for p in params if p["name"] == "?")
     assert unknown["readers"] == ["/talker"]
     assert len(params) == 2
     read = next(link for link in config["links"] if link["kind"] == "read")
@@ -85,7 +85,7 @@ def test_exactly_these_links(config):
     assert kinds == [
         ("client", "/talker", "/counter"),
         ("publish", "/talker", "/chatter"),
-        ("read", "/talker", "/?"),
+        ("read", "/talker", "?"),
         ("server", "/listener", "/counter"),
         ("subscribe", "/listener", "/chatter"),
     ]

@@ -164,8 +164,9 @@ def test_tree_nodes_make_their_calls_on_the_navigator(tmp_path):
     assert _links(config) == [
         ("action-client", "/nav/go_there", "my_msgs/action/GoThere"),  # builder default
         ("action-client", "/nav/other_go", "my_msgs/action/GoThere"),  # server_name
-        ("client", "/nav/?", "my_msgs/srv/Clear"),  # from the blackboard: unknown
         ("client", "/nav/clear_all", "my_msgs/srv/Clear"),  # the base's default
+        # from the blackboard: unknown, in no namespace (it may be global)
+        ("client", "?", "my_msgs/srv/Clear"),
         ("publish", "/nav/watch_state", "std_msgs/msg/String"),
         ("subscribe", "/watched", "std_msgs/msg/Bool"),  # the port's default
     ]
@@ -229,7 +230,7 @@ def test_a_port_without_default_is_unknown_and_a_node_parameter_names_a_topic(tm
     # topic from the node's get_parameter_or is the parameter's value, else its default
     tree = TREE.replace("<Unregistered/>", '<Pause><Updater><Watch/></Updater></Pause>')
     links = _links(_config(tmp_path, tree))
-    assert ("server", "/nav/?", "std_srvs/srv/Trigger") in links
+    assert ("server", "?", "std_srvs/srv/Trigger") in links
     assert ("subscribe", "/nav/goal_update", "geometry_msgs/msg/PoseStamped") in links
     assert ("read", "/nav/bt_navigator/updater_topic", "string") in links
     tree = tree.replace("<Pause>", '<Pause pause_service_name="pause">')

@@ -187,8 +187,8 @@ def test_the_host_names_such_a_call_by_the_plugin_name(tmp_path):
     # nowhere, makes none)
     assert sorted((link.kind, link.resource.name) for link in config.links
                   if link.kind in ("publish", "subscribe") and link.origin != "action"
-                  ) == [("publish", "/?"), ("publish", "/?"), ("publish", "/?"),
-                        ("subscribe", "/?"), ("subscribe", "/?")]
+                  ) == [("publish", "?"), ("publish", "?"), ("publish", "?"),
+                        ("subscribe", "?"), ("subscribe", "?")]
 
 
 def test_an_interface_model_keeps_what_names_a_call():

@@ -78,11 +78,11 @@ def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_nam
     config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
                    [move_base, navfn, recovery, static, trajectory])
     assert links_of(config, "/move_base") == [
-        ("publish", "/?"),
         ("publish", "/move_base/NavfnROS/plan"),
         # not set: move_base's default local planner, initialised with its short name
         ("publish", "/move_base/TrajectoryPlannerROS/local_plan"),
         ("publish", "/move_base/goal"),
+        ("publish", "?"),
         ("read", "/move_base/NavfnROS/tolerance"),
         # the parameters that choose the plugins: move_base reads them to load them
         ("read", "/move_base/base_global_planner"),
@@ -710,7 +710,7 @@ def test_a_ros2_spawner_is_named_and_calls_the_manager_as_its_arguments_say():
         ("client", f"{manager}/{verb}") for verb in (
             "list_controllers", "load_controller", "set_parameters")]
     # controllers not known: the model's node, as before
-    assert links_of(config, f"/{UNKNOWN_MARK}") == [("client", f"/{UNKNOWN_MARK}")]
+    assert links_of(config, f"/{UNKNOWN_MARK}") == [("client", UNKNOWN_MARK)]
     assert "NODE_NAME_GUESSED" not in [d.code for d in config.diagnostics]
 
 

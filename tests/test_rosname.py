@@ -14,7 +14,12 @@ from haros_arch.model.values import Unknown, Value
     ("~rate", "/robot/", "/robot/talker", "/robot/talker/rate"),
     ("~/rate", "/", "/talker", "/talker/rate"),
     ("a/b", "/x/", "/x/n", "/x/a/b"),
-    ("?", "/", "/talker", "/?"),
+    # a name wholly unknown may be global: no namespace is known to hold it; one
+    # partly unknown keeps what is known (relative, private)
+    ("?", "/", "/talker", "?"),
+    ("?", "/r/", "/r/n", "?"),
+    ("a/?", "/r/", "/r/n", "/r/a/?"),
+    ("~?", "/r/", "/r/n", "/r/n/?"),
     ("scan_?", "/r/", "/r/n", "/r/scan_?"),
     ("", "/ns/", "/ns/n", "/ns"),
 ])

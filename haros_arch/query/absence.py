@@ -71,8 +71,9 @@ class Known:
                 self.reconfigured_read.setdefault(namespace, []).append(link.node)
             else:
                 self.reconfigured.setdefault(namespace, []).append(link.node)
-        # resource -> nodes that use a name with "?" that may stand for it
-        self.guessed: dict[int, list[NodeInstance]] = {}
+        # resource -> nodes that use a name with "?" that may stand for it, each with
+        # the kind of its link
+        self.guessed: dict[int, list[tuple[NodeInstance, str]]] = {}
         # parameter -> parameters with "?" that the launch sets and that may be it (a
         # parameter file not read, an entry not known statically: ``/ns/node/?``)
         self.launch_guessed: dict[int, list[Parameter]] = {}
@@ -81,7 +82,8 @@ class Known:
             for unresolved in collection:
                 if not unresolved.is_unresolved:
                     continue
-                users = list(dict.fromkeys(link.node for link in unresolved.links))
+                users = list(dict.fromkeys((link.node, link.kind)
+                                           for link in unresolved.links))
                 launched = unresolved if isinstance(unresolved, Parameter) and (
                     unresolved.set_by_launch) else None
                 for candidate in unresolved.candidates:
@@ -246,6 +248,11 @@ def _unknown_users(charge: Charge, config: Any, resource: Any
     of its .cfg: the node's own ``~``, a planner's ``~DWAPlannerROS``, a controller's
     handle on its host) also the node running that server, which reads and sets it
     unseen."""
+    # for a link, a name with "?" can be the missing side only from the other side: a
+    # node that subscribes ``?`` publishes nothing (VINS-Mono's feature_tracker
+    # subscribes a name read from a file: it may be any image topic's subscriber, never
+    # the publisher of one)
+    sides = _OTHER_SIDE.get(resource.kind) if isinstance(resource, Link) else None
     if isinstance(resource, Link):
         resource = resource.resource
     if not isinstance(config, Configuration) or not isinstance(resource, Resource):
@@ -266,9 +273,19 @@ def _unknown_users(charge: Charge, config: Any, resource: Any
         found.extend(reconfiguring(config, resource))
         if not resource.is_set:
             found.extend(known.launch_guessed.get(id(resource), ()))
-    found.extend(known.guessed.get(id(resource), ()))
+    found.extend(node for node, kind in known.guessed.get(id(resource), ())
+                 if sides is None or kind in sides)
     charge(len(found) // 64)
     return _unique(found)
+
+
+# the link kinds that are the other side of a topic, service or action link (a
+# parameter's readers and writers are left whole: a read may stand for a declaration)
+_OTHER_SIDE: dict[str, tuple[str, ...]] = {
+    "publish": ("subscribe",), "subscribe": ("publish",), "server": ("client",),
+    "client": ("server",), "action-server": ("action-client",),
+    "action-client": ("action-server",),
+}
 
 
 def _sets_later(include: LaunchItem, owner: NodeInstance) -> bool:

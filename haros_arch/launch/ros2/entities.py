@@ -101,6 +101,12 @@ class NodeParamsIn(Subst):  # nav2_common's HasNodeParams: 'True' if the file na
 @dataclass(frozen=True)
 class PathJoin(Subst):
     parts: tuple[Text, ...]
+    # the Python object a launch file's call made: PATHLIB for a ``pathlib`` path, the
+    # qualified name of launch's class, or "" (a front end's, not known)
+    python: str = field(default="", compare=False)
+
+
+PATHLIB = "pathlib"
 
 
 @dataclass(frozen=True)

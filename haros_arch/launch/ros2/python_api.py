@@ -57,6 +57,7 @@ from .python_values import (
     Lazy,
     _Flow,
     concat,
+    object_text,
     printable,
     to_text,
 )
@@ -177,19 +178,21 @@ def package_share_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     found = package_directory(True)(i, a, k, n)
     if isinstance(found, str):
         return PurePosixPath(found)
-    return e.PathJoin((to_text(found),))
+    return e.PathJoin((to_text(found),), e.PATHLIB)
 
 
 def path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     parts = arg(a, k, 0, "substitutions", default=[])
     if not isinstance(parts, (list, tuple)):
         return Unknown("PathJoinSubstitution of an unknown list")
-    return e.PathJoin(tuple(to_text(p) for p in parts))
+    return e.PathJoin(tuple(to_text(p) for p in parts),
+                      "launch.substitutions.path_join_substitution.PathJoinSubstitution")
 
 
 def path_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``PathSubstitution(path)``: a path join of one part, grown by ``/ part``."""
-    return e.PathJoin((to_text(arg(a, k, 0, "path")),))
+    return e.PathJoin((to_text(arg(a, k, 0, "path")),),
+                      "launch.substitutions.path_substitution.PathSubstitution")
 
 
 def pure_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -200,7 +203,7 @@ def pure_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return Unknown("a pathlib path of values not known statically")
     if all(isinstance(p, (str, PurePosixPath)) for p in a):
         return PurePosixPath(*a)
-    return e.PathJoin(tuple(to_text(p) for p in a))
+    return e.PathJoin(tuple(to_text(p) for p in a), e.PATHLIB)
 
 
 def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -671,6 +674,24 @@ def copy_of(deep: bool) -> Builder:
     return build
 
 
+def text_of(as_repr: bool) -> Builder:
+    """``str(value)`` / ``repr(value)``: Python's, bounded, of plain values (and of a path
+    for ``str``); of an object of launch's API, its object text (``object_text``); the
+    ``str`` of a ``pathlib`` path known when launch runs is that path."""
+    plain = builtin(repr if as_repr else str,
+                    known=lambda v: printable(v, path=not as_repr))
+
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if len(a) == 1 and not k:
+            if not as_repr and isinstance(a[0], e.PathJoin) and a[0].python == e.PATHLIB:
+                return Lazy((a[0],))
+            text = object_text(a[0])
+            if text is not None:
+                return text
+        return plain(i, a, k, n)
+    return build
+
+
 SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
 API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
@@ -739,8 +760,7 @@ API: dict[str, Builder] = {
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
     **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON,
     "len": builtin(len, str, list, tuple, dict),
-    "str": builtin(str, known=printable),
-    "repr": builtin(repr, known=lambda v: printable(v, path=False)),
+    "str": text_of(False), "repr": text_of(True),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
     "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),

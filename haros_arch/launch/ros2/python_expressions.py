@@ -250,7 +250,7 @@ class Expressions(Walker):
             # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
             if isinstance(right, Unknown):
                 return Unknown("a path part not known statically")
-            return e.PathJoin((*left.parts, to_text(right)))
+            return e.PathJoin((*left.parts, to_text(right)), left.python)
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])

@@ -35,6 +35,7 @@ from .python_values import (
     XacroDocument,
     _source,
     concat,
+    launch_object,
     to_text,
 )
 
@@ -160,18 +161,58 @@ _PLAIN_TYPES: dict[str, type] = {"str": str, "int": int, "float": float, "bool":
                                  "list": list, "tuple": tuple, "dict": dict}
 
 
+# launch's substitution classes a value made here is an instance of in Python, by the
+# class its call built, with their bases (``Substitution``); one that more than one class
+# builds here (a path join is also a ``pathlib.Path``, a package find three classes) is
+# left out
+_LAUNCH_CLASSES: dict[type, frozenset[str]] = {
+    e.Var: frozenset(("LaunchConfiguration", "Substitution")),
+    e.Env: frozenset(("EnvironmentVariable", "Substitution")),
+    e.Command: frozenset(("Command", "Substitution")),
+    e.Eval: frozenset(("PythonExpression", "Substitution")),
+}
+
+
+def _instance_of(value: Any, cls: Any) -> bool | None:
+    """Whether ``isinstance(value, cls)`` is true, or None when not known here."""
+    if not isinstance(cls, Ref):
+        return None
+    if type(value) in (*_PLAIN_TYPES.values(), type(None)):
+        return isinstance(value, _PLAIN_TYPES[cls.qualified]) \
+            if cls.qualified in _PLAIN_TYPES else None
+    if launch_object(value) or isinstance(value, (e.ParamFile, e.ParamValue)):
+        # an object of launch's API is none of Python's builtin types
+        if cls.qualified in _PLAIN_TYPES:
+            return False
+        root, _, name = cls.qualified.rpartition(".")
+        if root.split(".")[0] in ("launch", "launch_ros") \
+                and name in _LAUNCH_CLASSES.get(type(value), ()):
+            return True
+    elif isinstance(value, Lazy) and cls.qualified in _PLAIN_TYPES:
+        # a text made when launch runs: a ``str`` then (or a ``TextSubstitution`` of one),
+        # never a number, a container or None
+        return None if cls.qualified == "str" else False
+    return None
+
+
 def is_instance(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``isinstance(value, list)`` (or a tuple of builtin types) of a plain Python value
-    known here: decided, so a helper that recurses on lists (``flatten``) stops at a
-    string. Any other value may stand for a ``str`` (a package path found at launch time)
-    or be of a class not read: not known."""
-    if k or len(a) != 2 or type(a[0]) not in (*_PLAIN_TYPES.values(), type(None)):
+    """``isinstance(value, T)`` (``T`` a class or a tuple of them) where it is known: of a
+    plain Python value and a builtin type, so a helper that recurses on lists
+    (``flatten``) stops at a string; of an object of launch's API (a substitution, a
+    condition, an action) and a builtin type: false, as none of them is one; of a
+    substitution and its own launch class (or ``Substitution``): true; of a text made
+    when launch runs (a package path found then, an f-string of an unknown value) and a
+    builtin type other than ``str``: false. Any other value or class is not read here:
+    not known."""
+    if k or len(a) != 2:
         return Unknown("isinstance")
     classes = a[1] if isinstance(a[1], tuple) else (a[1],)
-    if not classes or not all(isinstance(c, Ref) and c.qualified in _PLAIN_TYPES
-                              for c in classes):
+    answers = [_instance_of(a[0], c) for c in classes]
+    if True in answers:
+        return True
+    if not answers or None in answers:
         return Unknown("isinstance")
-    return isinstance(a[0], tuple(_PLAIN_TYPES[c.qualified] for c in classes))
+    return False
 
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -195,6 +195,33 @@ def launch_object(value: Any) -> bool:
     return isinstance(value, (e.Subst, e.Cond, e.Action))
 
 
+# launch's class of a substitution only one call makes here, by its module's path
+_PYTHON_CLASS: dict[type, str] = {
+    e.Var: "launch.substitutions.launch_configuration.LaunchConfiguration",
+    e.Env: "launch.substitutions.environment_variable.EnvironmentVariable",
+    e.Command: "launch.substitutions.command.Command",
+    e.Eval: "launch.substitutions.python_expression.PythonExpression",
+}
+
+
+def object_text(value: Any) -> Lazy | None:
+    """Python's ``str()`` and ``repr()`` of an object of launch's API (a substitution, a
+    condition, an action; not a ``pathlib`` path): no class of launch or launch_ros
+    defines ``__str__`` or ``__repr__`` for them, so it is ``object``'s,
+    ``<module.Class object at 0x...>``, never the value the substitution stands for (nor
+    a path); its address is not known here. None for any other value."""
+    if not launch_object(value) or (isinstance(value, e.PathJoin)
+                                    and value.python == e.PATHLIB):
+        return None
+    name = value.python if isinstance(value, e.PathJoin) else _PYTHON_CLASS.get(type(value))
+    address = e.Opaque("str() / repr() of a launch object is Python's object text with its "
+                       "address, not the value it stands for")
+    if not name:
+        return Lazy(("<", e.Opaque("the class of a launch object (its str() or repr())"),
+                     " object at ", address, ">"))
+    return Lazy((f"<{name} object at ", address, ">"))
+
+
 def is_lazy(value: Any) -> bool:
     return isinstance(value, (Lazy, e.Subst, Unknown))
 
