@@ -524,9 +524,12 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
             functions.update(o for o in (maker, made) if o.endswith("()"))
-        # what its own source defines (a header's code is in every unit including it)
+        # a unit's code is what its own source defines (a header's is in every unit
+        # including it); the functions that may run, those and any that makes a call
         here = set(unit.defines)
         functions.update(owner for owner in here if owner.endswith("()"))
+        functions.update(owner for call in unit.calls
+                         if (owner := call.node_name) is not None and owner.endswith("()"))
         held.append((here, unit.unseen, set(unit.handed)))
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
     if not starts:
