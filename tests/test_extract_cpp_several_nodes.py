@@ -473,7 +473,8 @@ def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tr
                              "rclcpp::Node::SharedPtr make_fleet() "
                              "{ return std::make_shared<Fleet>(); }\n"
                              "rclcpp::Node::SharedPtr make_door() "
-                             "{ return std::make_shared<Door>(); }\n}\n",
+                             "{ return std::make_shared<Door>(); }\n"
+                             "void report(rclcpp::Node * node) { Reporter r(node); }\n}\n",
         "pkg/src/dispatch.cpp": '#include "pkg/fleet.hpp"\n#include <vendor/bidder.h>\n'
                                 "namespace fleet {\nint make_schema() { return 1; }\n"
                                 "static const int schema = make_schema();\n"

@@ -169,7 +169,8 @@ def test_a_config_named_in_lowercase_is_synthesised(write_tree) -> None:
               '  if (config.yaml_cfg_file.size() > 0) nh.subscribe("input", 1, &cb2);\n}\n'
               'int main(int argc, char **argv) {\n  ros::init(argc, argv, "mux");\n'
               '  ros::NodeHandle pnh("~");\n'
-              '  dynamic_reconfigure::Server<mux::reloadConfig> server(pnh);\n  return 0;\n}\n')
+              '  dynamic_reconfigure::Server<mux::reloadConfig> server(pnh);\n'
+              '  server.setCallback(&cb);\n  return 0;\n}\n')
     source = source.replace('nh.subscribe("input", 1, &cb2)',
                             'nh.advertise<std_msgs::String>("output", 1)').replace(
         "#include <ros/ros.h>\n", "#include <ros/ros.h>\n#include <std_msgs/String.h>\n")

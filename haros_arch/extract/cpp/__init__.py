@@ -453,7 +453,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding)
+    unbuilt = _unbuilt(owners, reached, result, hiding, made_by)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -471,7 +471,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
 
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
-             unseen: Collection[str]) -> set[str]:
+             unseen: Collection[str], made_by: dict[str, list[str]]) -> set[str]:
     """The node classes (a class whose constructor names a node) of the executable's
     files that its ``main()`` never builds (``_reached``), and the free functions it never
     runs: they make no node and no call in this process (plansys2's compute_bt links
@@ -490,12 +490,13 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
                and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
-    # and the code main() never reaches (a linked library's free functions and
-    # classes), but a class named where a parse error may hide its use
+    # and the free functions main() never reaches (a linked library's), and the classes
+    # only such code constructs; a class that names no node and that nothing here
+    # constructs keeps its calls: a host, a registration or a call through its base
+    # may run its methods on a node it is given
     return classes | {owner for call in result.calls if (owner := call.node_name) is not None
-                      and owner not in reached and (
-                          owner.endswith("()") or "@" in owner
-                          or owner.rsplit("::", 1)[-1] not in unseen)}
+                      and owner not in reached and (owner.endswith("()") or (
+                          made_by.get(owner) and owner.rsplit("::", 1)[-1] not in unseen))}
 
 
 def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
