@@ -329,12 +329,14 @@ class CallFinder:
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
         self.uses.extend(self._uses())
-        # the owners the unit's own source defines: a header's function is every
-        # including unit's, and runs in none of them by being reached in another
+        # the owners the unit's code defines, not a workspace header's: a header's
+        # function is every including unit's, and runs in none of them by being reached
+        # in another (a stand-in's macro, gtest's TEST, defines the unit's own)
         main = self.tu.spelling
         self.defines = list(dict.fromkeys(
             owner_of(f) for f in self.functions
-            if (where := f.location.file) is not None and where.name == main))
+            if (where := f.location.file) is None or where.name == main
+            or not self.owned(where.name)))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
