@@ -375,7 +375,8 @@ def _untemplated(name: str) -> str:
 _MEMBER = re.compile(r"^(?![ \t,]|:(?!:))[\w:<>,&* \t]*?\b([A-Za-z_]\w*)\s*"
                      r"(?:<[^;{}()\n<>]*(?:<[^;{}()\n<>]*>[^;{}()\n<>]*)*>)?\s*::"
                      r"\s*(~?\w+)\s*\(", re.MULTILINE)
-_QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
+# an ``#include`` line's header name, either spelling (``robot.attach`` reads them too)
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
 MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the names used
 
 
@@ -588,7 +589,7 @@ def _included(path: str, text: str, workspace: Files) -> list[str]:
     """The headers of the workspace ``text`` (the file at ``path``) includes by name."""
     out = []
     package = _package_root(os.path.dirname(path), workspace.root)
-    for header in _QUOTED_INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
+    for header in INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
         for folder in (os.path.dirname(path), *(
                 [os.path.join(package, "include")] if package else [])):
             candidate = os.path.normpath(os.path.join(folder, header))

@@ -46,7 +46,7 @@ from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import SDF_ELEMENT, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
 from ..plugins.attach import Choice, Params, own_partial
-from ..plugins.classes import remembered
+from ..plugins.classes import INCLUDE, remembered
 from ..share import share_source
 from ..workspace import Workspace
 from . import xacro
@@ -640,7 +640,6 @@ def _built(element: etree._Element, built: Node, spawn: Spawn, host: NodeInstanc
 # gazebo_plugins helpers): a plugin that builds on it makes calls its own code does not
 # show (hector's thermal camera, uuv's underwater camera publish through it)
 HELPER_LIBRARY = "gazebo_plugins"
-_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.MULTILINE)
 
 
 def _unread_helper(built: Node, workspace: Workspace) -> str | None:
@@ -659,7 +658,7 @@ def _unread_helper(built: Node, workspace: Workspace) -> str | None:
             continue
         seen.add(path)
         text, _ = read_text(path, workspace.location(path))
-        for header in _INCLUDE.findall(text or ""):
+        for header in INCLUDE.findall(text or ""):
             if header.startswith(HELPER_LIBRARY + "/"):
                 return (f"{workspace.relpath(path)} includes {header}, whose classes make "
                         "calls that are not read")
