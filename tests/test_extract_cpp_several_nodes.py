@@ -501,3 +501,90 @@ def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tr
     # the vendor's code, given the node, may build anything of the library: its other
     # nodes stay possible where bid() runs
     assert made["bid"][1] == ["door_states", "fleet_states", "lift_states", "reports"]
+
+
+AGV = """
+#include <memory>
+#include <string>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+
+namespace fleet {
+template <class T, class... A> T * make_impl(A &&... args) { return new T(args...); }
+class AgvNode : public rclcpp::Node {
+public:
+  static std::shared_ptr<AgvNode> make(const std::string & name);
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+private:
+  explicit AgvNode(const std::string & name) : Node(name) {}
+};
+class Dispatcher {
+public:
+  static std::shared_ptr<Dispatcher> make(rclcpp::Node * node);
+  class Implementation;
+  Implementation * pimpl_ = nullptr;
+};
+std::shared_ptr<AgvNode> make_adapter();
+class Supervisor : public rclcpp::Node {
+public:
+  Supervisor() : Node("supervisor") {
+    pub_ = create_publisher<std_msgs::msg::String>("supervisor_states", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}  // namespace fleet
+"""
+
+
+def test_a_class_only_unreached_code_makes_or_calls_makes_no_call(write_tree) -> None:
+    """A class of a linked library that the library's own code makes (its factory
+    method constructs it: open-rmf's ``agv::Node::make``) or calls (a private
+    implementation, made through a template: ``rmf_task_ros2::Dispatcher``'s) runs only
+    where that code runs: door_supervisor links rmf_fleet_adapter's library and was given
+    the fleet adapter's publishers. A class nothing constructs or calls keeps its calls
+    (a host may run it)."""
+    root = write_tree({
+        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
+                           "<version>0.1.0</version><description>d</description>"
+                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
+                           "</build_type></export></package>\n",
+        "pkg/include/pkg/agv.hpp": AGV,
+        "pkg/src/agv.cpp": '#include "pkg/agv.hpp"\nnamespace fleet {\n'
+                           "std::shared_ptr<AgvNode> AgvNode::make(const std::string & name) {\n"
+                           "  auto node = std::shared_ptr<AgvNode>(new AgvNode(name));\n"
+                           "  node->pub_ = node->create_publisher<std_msgs::msg::String>"
+                           '("door_requests", 10);\n  return node;\n}\n'
+                           'std::shared_ptr<AgvNode> make_adapter() { return AgvNode::make("agv"); }\n'
+                           "}\n",
+        "pkg/src/dispatcher.cpp": '#include "pkg/agv.hpp"\nnamespace fleet {\n'
+                                  "class Dispatcher::Implementation {\npublic:\n"
+                                  "  explicit Implementation(rclcpp::Node * node) : node_(node) {}\n"
+                                  "  void start() { pub_ = node_->create_publisher<"
+                                  'std_msgs::msg::String>("dispatch_states", 10); }\n'
+                                  "  rclcpp::Node * node_;\n"
+                                  "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n"
+                                  "std::shared_ptr<Dispatcher> Dispatcher::make(rclcpp::Node * node) {\n"
+                                  "  auto made = std::shared_ptr<Dispatcher>(new Dispatcher());\n"
+                                  "  made->pimpl_ = make_impl<Implementation>(node);\n"
+                                  "  made->pimpl_->start();\n  return made;\n}\n}\n",
+        "pkg/src/supervisor_main.cpp": '#include "pkg/agv.hpp"\n'
+                                       "int main(int argc, char ** argv) {\n"
+                                       "  rclcpp::init(argc, argv);\n"
+                                       "  rclcpp::spin(std::make_shared<fleet::Supervisor>());\n}\n",
+        "pkg/src/adapter_main.cpp": '#include "pkg/agv.hpp"\n'
+                                    "int main(int argc, char ** argv) {\n"
+                                    "  rclcpp::init(argc, argv);\n"
+                                    "  auto node = fleet::make_adapter();\n"
+                                    "  auto dispatcher = fleet::Dispatcher::make(node.get());\n"
+                                    "  rclcpp::spin(node);\n}\n",
+    })
+    workspace = scan([str(root)])
+    library = [str(root / "pkg/src/agv.cpp"), str(root / "pkg/src/dispatcher.cpp")]
+    made = {}
+    for name in ("supervisor", "adapter"):
+        found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), *library], workspace,
+                            cache_dir=None)
+        made[name] = sorted(topic for kind, topic, _ in rows(found) if kind == "publish")
+    assert made == {"supervisor": ["supervisor_states"],
+                    "adapter": ["dispatch_states", "door_requests"]}

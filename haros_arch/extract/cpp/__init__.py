@@ -430,7 +430,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
     found = _reached(units, unseen)
-    reached, hiding = found if found is not None else (None, unseen)
+    reached, hiding, entered = found if found is not None else (None, unseen, set())
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
@@ -453,7 +453,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding, made_by)
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -471,16 +471,19 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
 
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
-             unseen: Collection[str], made_by: dict[str, list[str]]) -> set[str]:
-    """The node classes (a class whose constructor names a node) of the executable's
-    files that its ``main()`` never builds (``_reached``), and the free functions it never
-    runs: they make no node and no call in this process (plansys2's compute_bt links
+             unseen: Collection[str], entered: set[str]) -> set[str]:
+    """The owners of the executable's files that its ``main()`` never runs
+    (``_reached``): they make no node and no call in this process. A node class (one
+    whose constructor names a node) it never builds (plansys2's compute_bt links
     ExecutorNode and never builds one; its ``transition_event`` publisher was given to
-    the process's node). None when the
+    the process's node), a free function it never calls, and a class whose code only
+    such code constructs or calls (open-rmf's door_supervisor links the fleet adapter's
+    library: its ``agv::Node`` is made only by the adapter's factory). A class that
+    nothing in the executable constructs or calls keeps its calls: a host, a
+    registration or a call through its base may run its methods. None when the
     executable loads plugins or nodelets by name, or components (a factory may build
-    them), nor a class
-    whose name the code around the parse's errors holds (they may hide its
-    construction)."""
+    them), nor a class whose name the code around the parse's errors holds (they may
+    hide its construction)."""
     if reached is None or "*" in unseen or any(
             d.code == "CPP_PLUGINS_LOADED" for d in result.diagnostics) or any(
             call.name.endswith("_container/load_node") for call in result.calls):
@@ -490,17 +493,13 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
                and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
-    # and the free functions main() never reaches (a linked library's), and the classes
-    # only such code constructs; a class that names no node and that nothing here
-    # constructs keeps its calls: a host, a registration or a call through its base
-    # may run its methods on a node it is given
     return classes | {owner for call in result.calls if (owner := call.node_name) is not None
                       and owner not in reached and (owner.endswith("()") or (
-                          made_by.get(owner) and owner.rsplit("::", 1)[-1] not in unseen))}
+                          owner in entered and owner.rsplit("::", 1)[-1] not in unseen))}
 
 
 def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
-             ) -> tuple[set[str], set[str]] | None:
+             ) -> tuple[set[str], set[str], set[str]] | None:
     """The owners whose code the executable runs, when its files hold a ``main()``: the
     functions ``main()`` calls or hands on and the classes it constructs or calls the
     methods of, transitively (a class's bases with it, its methods' calls and
@@ -515,7 +514,9 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     ``_unbuilt``'s to keep.
     With them, the words of ``unseen`` that are no unit's (the opaque constructions' of
     the node's facts; ``*`` where a file of the node is not read) and those of the
-    units that run: what may hide a construction in this process. None without a
+    units that run: what may hide a construction in this process; and the owners some
+    code of the executable constructs or calls (its own too: a class's factory method
+    making it). None without a
     ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
@@ -558,7 +559,7 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
                 continue
             words.update(said)
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
-    return reached, words
+    return reached, words, {made for targets in edges.values() for made in targets}
 
 
 def _simple(function: str) -> str:

@@ -948,6 +948,8 @@ class CallFinder:
                     "CPP_NODE_PASSED", here, cls=qualified_name(cls), package=there.package,
                     given="".join(t.spelling for t in given.get_tokens())[:60]))
         name = constructed_class(call, self.owned)
+        if name is not None and name == self._owner and (name, name) not in self.uses:
+            self.uses.append((name, name))  # a class's own factory makes it: it is made
         if name is not None and self._owner is not None and name != self._owner:
             self.made_under.append((name, tuple(c for c in conditions if c.kind == "source")))
             if (self._owner, name) not in self.constructions:
