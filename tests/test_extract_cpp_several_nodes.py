@@ -551,27 +551,33 @@ def test_a_class_only_unreached_code_makes_or_calls_makes_no_call(write_tree) ->
                            "</build_type></export></package>\n",
         "pkg/include/pkg/agv.hpp": AGV,
         "pkg/src/agv.cpp": '#include "pkg/agv.hpp"\nnamespace fleet {\n'
-                           "std::shared_ptr<AgvNode> AgvNode::make(const std::string & name) {\n"
+                           "std::shared_ptr<AgvNode> AgvNode::make("
+                           "const std::string & name) {\n"
                            "  auto node = std::shared_ptr<AgvNode>(new AgvNode(name));\n"
                            "  node->pub_ = node->create_publisher<std_msgs::msg::String>"
                            '("door_requests", 10);\n  return node;\n}\n'
-                           'std::shared_ptr<AgvNode> make_adapter() { return AgvNode::make("agv"); }\n'
+                           "std::shared_ptr<AgvNode> make_adapter() "
+                           '{ return AgvNode::make("agv"); }\n'
                            "}\n",
         "pkg/src/dispatcher.cpp": '#include "pkg/agv.hpp"\nnamespace fleet {\n'
                                   "class Dispatcher::Implementation {\npublic:\n"
-                                  "  explicit Implementation(rclcpp::Node * node) : node_(node) {}\n"
+                                  "  explicit Implementation(rclcpp::Node * node) "
+                                  ": node_(node) {}\n"
                                   "  void start() { pub_ = node_->create_publisher<"
                                   'std_msgs::msg::String>("dispatch_states", 10); }\n'
                                   "  rclcpp::Node * node_;\n"
-                                  "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n"
-                                  "std::shared_ptr<Dispatcher> Dispatcher::make(rclcpp::Node * node) {\n"
+                                  "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr "
+                                  "pub_;\n};\n"
+                                  "std::shared_ptr<Dispatcher> Dispatcher::make("
+                                  "rclcpp::Node * node) {\n"
                                   "  auto made = std::shared_ptr<Dispatcher>(new Dispatcher());\n"
                                   "  made->pimpl_ = make_impl<Implementation>(node);\n"
                                   "  made->pimpl_->start();\n  return made;\n}\n}\n",
         "pkg/src/supervisor_main.cpp": '#include "pkg/agv.hpp"\n'
                                        "int main(int argc, char ** argv) {\n"
                                        "  rclcpp::init(argc, argv);\n"
-                                       "  rclcpp::spin(std::make_shared<fleet::Supervisor>());\n}\n",
+                                       "  rclcpp::spin("
+                                       "std::make_shared<fleet::Supervisor>());\n}\n",
         "pkg/src/adapter_main.cpp": '#include "pkg/agv.hpp"\n'
                                     "int main(int argc, char ** argv) {\n"
                                     "  rclcpp::init(argc, argv);\n"
