@@ -141,6 +141,10 @@ class CppResult:
     # the node to code the parse does not read ("": one not known); the ``*`` holds
     # where one of them runs (``_reached``)
     handed: list[str] = field(default_factory=list)
+    # in a translation unit's result: (word, owner) for the words of ``unseen`` found
+    # only in the code of functions, each with the owner of such a function: a word
+    # counts where one of them runs (``_reached``)
+    unseen_in: list[tuple[str, str]] = field(default_factory=list)
 
 
 @dataclass
@@ -430,7 +434,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
     found = _reached(units, unseen)
-    reached, hiding, entered = found if found is not None else (None, unseen, set())
+    reached, hiding, entered, named = found if found is not None else (
+        None, unseen, set(), set())
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
@@ -453,7 +458,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered)
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered | named)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -477,7 +482,8 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     whose constructor names a node) it never builds (plansys2's compute_bt links
     ExecutorNode and never builds one; its ``transition_event`` publisher was given to
     the process's node), a free function it never calls, and a class whose code only
-    such code constructs or calls (open-rmf's door_supervisor links the fleet adapter's
+    such code constructs or calls (``entered``: qualified names, and the words code
+    around a parse error names) (open-rmf's door_supervisor links the fleet adapter's
     library: its ``agv::Node`` is made only by the adapter's factory). A class that
     nothing in the executable constructs or calls keeps its calls: a host, a
     registration or a call through its base may run its methods. None when the
@@ -495,11 +501,12 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
     return classes | {owner for call in result.calls if (owner := call.node_name) is not None
                       and owner not in reached and (owner.endswith("()") or (
-                          owner in entered and owner.rsplit("::", 1)[-1] not in unseen))}
+                          (owner in entered or owner.rsplit("::", 1)[-1] in entered)
+                          and owner.rsplit("::", 1)[-1] not in unseen))}
 
 
 def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
-             ) -> tuple[set[str], set[str], set[str]] | None:
+             ) -> tuple[set[str], set[str], set[str], set[str]] | None:
     """The owners whose code the executable runs, when its files hold a ``main()``: the
     functions ``main()`` calls or hands on and the classes it constructs or calls the
     methods of, transitively (a class's bases with it, its methods' calls and
@@ -516,12 +523,16 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     the node's facts; ``*`` where a file of the node is not read) and those of the
     units that run: what may hide a construction in this process; and the owners some
     code of the executable constructs or calls (its own too: a class's factory method
-    making it). None without a
+    making it), and the words every unit's code leaves unseen (a class named there may
+    be constructed there: open-rmf's Dispatcher makes its private implementation
+    through rmf_utils' make_impl, a template the parse may not have; a word found only
+    in functions is hiding where one of them runs). None without a
     ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
     # each unit's owners, unseen words, and the owners that hand its node on (``*``)
-    held: list[tuple[set[str], list[str], set[str]]] = []
+    held: list[tuple[set[str], list[str], set[str], dict[str, set[str]]]] = []
+    named: set[str] = set()  # every unit's unseen words
     for _, unit in units:
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
@@ -532,13 +543,18 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         functions.update(owner for owner in here if owner.endswith("()"))
         functions.update(owner for call in unit.calls
                          if (owner := call.node_name) is not None and owner.endswith("()"))
-        held.append((here, unit.unseen, set(unit.handed)))
+        within: dict[str, set[str]] = {}
+        for word, owner in unit.unseen_in:
+            within.setdefault(word, set()).add(owner)
+        held.append((here, unit.unseen, set(unit.handed), within))
+        named.update(unit.unseen)
+        named.update(within)
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
     if not starts:
         return None
     starts.add(STATIC)
     reached: set[str] = set()
-    words = outside = set(unseen) - {word for _, held_words, _ in held for word in held_words}
+    words = outside = set(unseen) - named
     while starts:
         reached |= starts
         stack = list(starts)
@@ -552,14 +568,16 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         # where the code that hands it runs (rmf_task_ros2's Dispatcher hands its own
         # node on, and only its schema's static initialiser runs in door_supervisor)
         words = set(outside)
-        for here, said, handed in held:
+        for here, said, handed, within in held:
             if here and here.isdisjoint(reached):
                 continue
             if said == ["*"] and handed and "" not in handed and handed.isdisjoint(reached):
                 continue
-            words.update(said)
+            # a word found only in functions counts where one of them runs
+            words.update(word for word in said
+                         if word not in within or not within[word].isdisjoint(reached))
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
-    return reached, words, {made for targets in edges.values() for made in targets}
+    return reached, words, {made for targets in edges.values() for made in targets}, named
 
 
 def _simple(function: str) -> str:
@@ -634,12 +652,13 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             elif kept is not None and kept[0] is not None:
                 try:
                     (calls, rosname, found, facts, named, made, unseen, under, uses,
-                     defines, handed) = cache.from_data(kept[0])
+                     defines, handed, unseen_in) = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made, unseen=unseen, made_under=under,
-                                       uses=uses, defines=defines, handed=handed)
+                                       uses=uses, defines=defines, handed=handed,
+                                       unseen_in=unseen_in)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -718,7 +737,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under,
-                         unit.uses, unit.defines, unit.handed)
+                         unit.uses, unit.defines, unit.handed, unit.unseen_in)
     return unit, headers, data, cache.digest(data)
 
 
@@ -862,8 +881,14 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.made_under = finder.made_under
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there
+    held: dict[bytes, set[str]] = {}
+    words = _unseen(errors, finder, source, held) | finder.unseen
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
-        word.decode() for word in _unseen(errors, finder, source) | finder.unseen)
+        word.decode() for word in words)
+    # also where the node is handed on (``*``): the words of the code that hands it,
+    # which may construct what it names there (``_reached``)
+    result.unseen_in = sorted((word.decode(), owner) for word, owners in held.items()
+                              if word not in finder.unseen for owner in owners)
     if result.unseen == ["*"]:
         result.handed = sorted(finder.handed) if finder.handed else [""]
     if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
@@ -1159,11 +1184,15 @@ _DECLARATOR = frozenset({
     CursorKind.TEMPLATE_NON_TYPE_PARAMETER, CursorKind.TEMPLATE_TEMPLATE_PARAMETER})
 
 
-def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> set[bytes]:
+def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache,
+            owners: dict[bytes, set[str]] | None = None) -> set[bytes]:
     """The words of the code where ``errors`` can hide a statement: the text of each
     function that holds one (a constructor's, with the types of its class's members,
-    which its initialisers construct unnamed), else the error's line."""
+    which its initialisers construct unnamed), else the error's line. With ``owners``,
+    each word found only in functions gets the owners of those functions there (what
+    ``_reached`` counts only where one of them runs)."""
     words: set[bytes] = set()
+    loose: set[bytes] = set()  # words of an error outside any function
     for error in errors:
         if error.path is None:
             continue
@@ -1174,7 +1203,7 @@ def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> se
         if function is None:
             lines = data.splitlines()
             if 0 < error.line <= len(lines):
-                words.update(WORDS.findall(lines[error.line - 1]))
+                loose.update(WORDS.findall(lines[error.line - 1]))
             continue
         # from its member initialisers and body on: not the class that qualifies a
         # method's name (every error in a method of the class would name it)
@@ -1191,7 +1220,14 @@ def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache) -> se
                     if member.kind == CursorKind.FIELD_DECL:
                         found.update(WORDS.findall(member.type.spelling.encode()))
         words |= found
-    return words
+        if owners is not None:
+            holder = owner_of(function)
+            for word in found:
+                owners.setdefault(word, set()).add(holder)
+    if owners is not None:
+        for word in loose:
+            owners.pop(word, None)
+    return words | loose
 
 
 def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,

@@ -183,7 +183,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             made_under: list[tuple[str, tuple[Condition, ...]]] | None = None,
             uses: list[tuple[str, str]] | None = None,
             defines: list[str] | None = None,
-            handed: list[str] | None = None) -> dict[str, Any]:
+            handed: list[str] | None = None,
+            unseen_in: list[tuple[str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -193,13 +194,14 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "made_under": [[made, [dataclasses.asdict(c) for c in under]]
                            for made, under in made_under or ()],
             "uses": [list(n) for n in uses or ()], "defines": list(defines or ()),
-            "handed": list(handed or ())}
+            "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()]}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
-        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str]]:
+        list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str],
+        list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -232,7 +234,7 @@ def from_data(data: dict[str, Any]) -> tuple[
             raise TypeError(key)
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
             _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
-            handed)
+            handed, _pairs(data, "unseen_in"))
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:
