@@ -331,6 +331,7 @@ _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know
 #pragma clang system_header
 #include <string>  // std::to_string of a permissive value (below)
+#include <memory>  // a cast of a permissive value to a shared_ptr (below)
 enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
@@ -387,6 +388,12 @@ string to_string(const haros_any &);
 // (ur_robot_driver's ``std::get<std::string>(response.data.at("program_name"))``)
 template <class T> T &get(const haros_any &);
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
+// a permissive value cast as a shared_ptr of a known type (mrpt_map_server's
+// ``std::dynamic_pointer_cast<mrpt::maps::CMetricMap>(obj)`` of an object read from an
+// MRPT archive): no standard overload deduces its pointee
+template <class T> shared_ptr<T> dynamic_pointer_cast(const haros_any &);
+template <class T> shared_ptr<T> static_pointer_cast(const haros_any &);
+template <class T> shared_ptr<T> const_pointer_cast(const haros_any &);
 }
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""
