@@ -231,7 +231,12 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                     link(instance, each, remaps, resources, config, info)
                     continue
             base = resolved_name(instance, each, remaps, resources)
-            if each.name_param is not None and base.is_unresolved:
+            if each.name_param is not None and base.is_unresolved and (
+                each.name.count(UNKNOWN_MARK) == 1
+                or _given_name(each, instance, resources) == each.name
+            ):
+                # (a name of several unknown runs keeps the others: unset only when the
+                # parameter gave none)
                 config.diagnostics.append(_name_param_unset(instance, each))
             if each.name_arg is not None and UNKNOWN_MARK in each.name and not (
                 program_argument(instance, each.name_arg)
@@ -709,7 +714,7 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
 
 def _filled(name: str, value: str) -> str:
     """``name`` with ``value`` in the place of its (first) ``?``."""
-    if value.startswith(("/", "~")) and (
+    if value.startswith(("/", "~")) and name.count(UNKNOWN_MARK) == 1 and (
             name in (UNKNOWN_MARK, "~" + UNKNOWN_MARK) or name.endswith("/" + UNKNOWN_MARK)):
         # a global or private name is not resolved in the handle's namespace (the private
         # handle's ``~`` takes no slash: ``~?``)

@@ -74,6 +74,8 @@ from .values import (
     initializer,
     literal,
     own_name,
+    permissive_conversion,
+    permissive_held,
     program_argument,
     program_arguments,
     render,
@@ -1655,8 +1657,10 @@ class CallFinder:
         argument = argument_of(parts)
         if argument is not None:
             return (ArgumentName(name, argument), None)
-        if None not in parts or name.count("?") != 1:
+        if None not in parts:
             return (name, None)
+        if name.count("?") != 1:
+            return (name, self._first_parameter(expr, scope, name.count("?")))
         # the one unknown part: the whole name, or a run of it that the text around keeps
         # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
         unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
@@ -1678,6 +1682,17 @@ class CallFinder:
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
             source = self._parameter_source(unknown[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
+
+    def _first_parameter(self, expr: Cursor, scope: Scope, runs: int) -> NameSource | None:
+        """A name of several unknown runs whose first is a parameter's value
+        (mrpt_map_server's ``pub_mm_topic_ + "/" + layerName + "_gridmap"``): the
+        parameter, which the graph puts in the place of the first ``?``; None when the
+        first run is anything else, or the runs are not one operand each."""
+        unknown = _unknown_operands(expr, scope)
+        if len(unknown) != runs:
+            return None
+        source = self._parameter_source(unknown[0], scope, 0)
+        return None if source is None else (*source, None, None)
 
     def _name_member(self, expr: Cursor | None) -> str | None:
         """The USR of the member ``expr`` is, when no function of this unit writes it
@@ -2597,6 +2612,11 @@ def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor
     elif expr.kind == CursorKind.CALL_EXPR and expr.referenced is not None and (
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(children) == 1):
         return _unknown_operands(children[0], scope, depth + 1)  # std::string(a + b)
+    elif permissive_conversion(expr):
+        # a concatenation with a permissive value (``prefix + "/" + layer``, the layer of
+        # a library the parse does not have), converted to the string the call takes
+        held = permissive_held(expr)
+        return [] if held is None else _unknown_operands(held, scope, depth + 1)
     else:
         return []
     found: list[Cursor] = []
