@@ -218,8 +218,10 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
-        if slot.names == EXPORTED and decl is not None:  # a node the process makes: its
-            # files apply by name
+        if slot.names in (EXPORTED, SPAWNER) and decl is not None:
+            # a node the process makes: its files apply by name (a controller's section
+            # of the file given to ros2_control_node, after its spawner's file, whose
+            # values win: rcl's global arguments reach every node of the process)
             _process_params(decl, reader, params)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
