@@ -376,7 +376,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
-    unbuilt = _unbuilt(known, unseen)
+    unbuilt = constructor_unbuilt(known, unseen)
     unrun = never_run(known, unseen)
     for call in calls:
         if call.made_in is not None:
@@ -479,7 +479,7 @@ def node_rosnames(names: Iterable[str | None], facts: NodeFacts,
     return made or [resolve_name(candidates[0][2], facts, unseen)]
 
 
-def _unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
+def constructor_unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
     """Whether a USR is a constructor no file of the node calls, whose class no error may
     hide (``_expand``)."""
     def unbuilt(usr: str) -> bool:
@@ -517,7 +517,7 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
     if PLACEHOLDER not in name:
         return name
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
-    found = _expand(name, known.passed, 0, _unbuilt(known, unseen))
+    found = _expand(name, known.passed, 0, constructor_unbuilt(known, unseen))
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))
