@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 
 import pytest
-from conftest import FIXTURES
+from conftest import FIXTURES, package_xml
 
 from haros_arch import pipeline
 from haros_arch.model.load import from_data
@@ -155,6 +155,69 @@ def test_ros2_spawner_file_is_read_as_it_is():
         "bot2_description/models/bot2.sdf", "bot2_description/models/bot2.sdf")
 
 
+@pytest.mark.parametrize("launch", ["spawn.launch.py", "cat.launch.py"])
+def test_a_description_read_as_it_is_keeps_a_prefix_no_xmlns_declares(write_tree, launch):
+    """IOES-Lab/dave's DVL models: ``<sensor type="custom" gz:type="dvl">`` with no
+    ``xmlns:gz``, spawned with ``ros_gz_sim create -file``. sdformat (tinyxml2) reads it,
+    and so does urdfdom the output of ``cat``; lxml's namespace error had made the
+    whole file unread (ROBOT_DESCRIPTION_FILE) and its plugins lost."""
+    sdf = ('<?xml version="1.0"?>\n<sdf version="1.9">\n  <model name="dvl">\n'
+           '    <link name="base">\n'
+           '      <sensor name="dvl" type="custom" gz:type="dvl">\n'
+           "        <topic>/dvl/velocity</topic>\n      </sensor>\n"
+           '      <sensor name="imu" type="imu">\n'
+           '        <plugin name="imu_driver" filename="libgazebo_ros_imu_sensor.so">\n'
+           "          <ros><remapping>~/out:=imu</remapping></ros>\n"
+           "        </plugin>\n      </sensor>\n    </link>\n  </model>\n</sdf>\n")
+    head = ("import os\nfrom ament_index_python.packages import get_package_share_directory\n"
+            "from launch import LaunchDescription\nfrom launch.substitutions import Command\n"
+            "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+            "    sdf = os.path.join(get_package_share_directory('dvl'), 'models', "
+            "'dvl.sdf')\n    return LaunchDescription([\n")
+    root = write_tree({
+        "dvl/package.xml": package_xml("dvl", "ament_cmake"),
+        "dvl/CMakeLists.txt": "project(dvl)\n",
+        "dvl/models/dvl.sdf": sdf,
+        "dvl/launch/spawn.launch.py": head + (
+            "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+            "             arguments=['-entity', 'dvl', '-file', sdf])])\n"),
+        "dvl/launch/cat.launch.py": head + (
+            "        Node(package='robot_state_publisher', executable='robot_state_publisher',"
+            "\n             parameters=[{'robot_description': Command(['cat ', sdf])}]),\n"
+            "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+            "             arguments=['-entity', 'dvl', '-topic', 'robot_description'])])\n"),
+    })
+    config = configuration(str(root), f"dvl/launch/{launch}")
+    assert made(config) == [("/imu_driver", "publish", "/imu", "sensor_msgs/msg/Imu")]
+    assert "ROBOT_DESCRIPTION_FILE" not in {d.code for d in config.diagnostics}
+
+
+def test_xacro_still_rejects_a_prefix_no_xmlns_declares(write_tree):
+    """xacro reads its files with minidom, namespace-aware: ``xacro:property`` without
+    ``xmlns:xacro`` fails there, and so it does here."""
+    root = write_tree({
+        "bot/package.xml": package_xml("bot", "ament_cmake"),
+        "bot/CMakeLists.txt": "project(bot)\n",
+        "bot/urdf/bot.urdf.xacro": (
+            '<?xml version="1.0"?>\n<robot name="bot">\n'
+            '  <xacro:property name="r" value="1"/>\n  <link name="base"/>\n</robot>\n'),
+        "bot/launch/rsp.launch.py": (
+            "import os\nfrom ament_index_python.packages import get_package_share_directory\n"
+            "from launch import LaunchDescription\nfrom launch.substitutions import Command\n"
+            "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+            "    urdf = os.path.join(get_package_share_directory('bot'), 'urdf', "
+            "'bot.urdf.xacro')\n    return LaunchDescription([\n"
+            "        Node(package='robot_state_publisher', executable='robot_state_publisher',"
+            "\n             parameters=[{'robot_description': Command(['xacro ', urdf])}]),\n"
+            "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+            "             arguments=['-entity', 'bot', '-topic', 'robot_description'])])\n"),
+    })
+    config = configuration(str(root), "bot/launch/rsp.launch.py")
+    assert [(d.code, d.location.file, d.location.line) for d in config.diagnostics
+            if d.code == "ROBOT_DESCRIPTION_FILE"] == [
+        ("ROBOT_DESCRIPTION_FILE", "bot/urdf/bot.urdf.xacro", 3)]
+
+
 def test_robot_descriptions_survive_the_json_model():
     model = analyse(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "0"})
     again = from_data(model_to_data(model))
@@ -165,9 +228,9 @@ def test_robot_descriptions_survive_the_json_model():
 
 @pytest.mark.parametrize(("command", "expected"), [
     ("/opt/ros/noetic/bin/xacro --inorder '/ws/a b.urdf.xacro' ns:=/r x:=1",
-     ("/ws/a b.urdf.xacro", {"ns": "/r", "x": "1"})),
-    ("?/xacro /ws/r.xacro", ("/ws/r.xacro", {})),
-    ("cat /ws/r.urdf", ("/ws/r.urdf", {})),
+     ("/ws/a b.urdf.xacro", {"ns": "/r", "x": "1"}, "xacro")),
+    ("?/xacro /ws/r.xacro", ("/ws/r.xacro", {}, "xacro")),
+    ("cat /ws/r.urdf", ("/ws/r.urdf", {}, "cat")),
     ("python3 make_urdf.py", None),
 ])
 def test_xacro_command_lines(command: str, expected: object):

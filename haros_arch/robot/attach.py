@@ -28,7 +28,7 @@ import shlex
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import partial
-from typing import Any, cast
+from typing import Any, NamedTuple, cast
 
 import yaml
 from lxml import etree
@@ -258,8 +258,9 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
             return None
         if not os.path.isfile(path):
             path = share_source(workspace, path)
+        # the simulator reads the file itself, not through xacro
         return _expanded(path, {}, workspace.relpath(path), decl.location, workspace,
-                         config)
+                         config, by_xacro=False)
     if spawn.param is not None:
         name = resolve(spawn.param, decl.namespace)
         param = _last_param(launch.params, name)
@@ -355,12 +356,12 @@ def _from_param(param: ParamDecl, workspace: Workspace, config: Configuration,
                 ) -> tuple[RobotDescription, xacro.Description] | None:
     """The description a launch parameter's xacro (or ``cat``) command makes, if known."""
     parsed = xacro_command(param.command) if param.command is not None else None
-    if parsed is None or UNKNOWN_MARK in parsed[0]:
+    if parsed is None or UNKNOWN_MARK in parsed.path:
         return None
-    path, args = parsed
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
-              for key, value in args.items()}
-    return _expanded(path, values, param.name, param.location, workspace, config)
+              for key, value in parsed.args.items()}
+    return _expanded(parsed.path, values, param.name, param.location, workspace, config,
+                     by_xacro=parsed.by_xacro)
 
 
 def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
@@ -371,7 +372,20 @@ def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
     return found
 
 
-def xacro_command(command: str) -> tuple[str, dict[str, str]] | None:
+class XacroCommand(NamedTuple):
+    """A ``xacro`` (or ``cat``) command line: its file, ``name:=value`` arguments and
+    tool (``cat`` gives the file as it is, to a reader that does not run xacro)."""
+
+    path: str
+    args: dict[str, str]
+    tool: str
+
+    @property
+    def by_xacro(self) -> bool:
+        return self.tool != "cat"
+
+
+def xacro_command(command: str) -> XacroCommand | None:
     """The file and ``name:=value`` arguments of a ``xacro`` (or ``cat``) command line."""
     try:
         words = shlex.split(command)
@@ -392,7 +406,7 @@ def xacro_command(command: str) -> tuple[str, dict[str, str]] | None:
                 args[key] = value
             elif not each.startswith("-") and path is None:
                 path = each
-        return (path, args) if path else None
+        return XacroCommand(path, args, tool) if path else None
     return None
 
 
@@ -404,19 +418,19 @@ def _from_command(param: ParamDecl, name: str, workspace: Workspace,
     if parsed is None:
         _note(config, param.location, f"command \"{param.command}\" is not a xacro command")
         return None
-    path, args = parsed
-    if UNKNOWN_MARK in path:
-        _note(config, param.location, f"the xacro file {path} is not known")
+    if UNKNOWN_MARK in parsed.path:
+        _note(config, param.location, f"the xacro file {parsed.path} is not known")
         return None
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
-              for key, value in args.items()}
-    return _expanded(path, values, name, param.location, workspace, config)
+              for key, value in parsed.args.items()}
+    return _expanded(parsed.path, values, name, param.location, workspace, config,
+                     by_xacro=parsed.by_xacro)
 
 
 def _expanded(path: str, args: Mapping[str, str | Value], name: str, where: Location,
-              workspace: Workspace, config: Configuration,
+              workspace: Workspace, config: Configuration, by_xacro: bool = True,
               ) -> tuple[RobotDescription, xacro.Description]:
-    expanded = xacro.expand(path, args, workspace, named_at=where)
+    expanded = xacro.expand(path, args, workspace, named_at=where, by_xacro=by_xacro)
     config.diagnostics.extend(expanded.diagnostics)
     record = RobotDescription(
         name, workspace.relpath(path) if expanded.files else None, where,
