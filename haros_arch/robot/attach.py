@@ -335,11 +335,12 @@ def hardware(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstan
 def _description_param(instance: NodeInstance, config: Configuration,
                        given: Sequence[ParamDecl]) -> ParamDecl | None:
     """The launch parameter a controller manager takes its description from: its own
-    ``robot_description``, else that of a node publishing a topic it subscribes to under
-    that name (remaps applied: the graph's links)."""
+    ``robot_description`` (the one a ``ros2 param get`` command in it reads), else that
+    of a node publishing a topic it subscribes to under that name (remaps applied: the
+    graph's links)."""
     own = _last_param(given, instance.name.rstrip("/") + "/" + DESCRIPTION_KEY)
     if own is not None:
-        return own
+        return _copied(own, given)
     for link in config.links:
         if link.node is not instance or link.kind != "subscribe" or (
                 (link.call.name if link.call else "").rsplit("/", 1)[-1] != DESCRIPTION_KEY):
@@ -349,6 +350,55 @@ def _description_param(instance: NodeInstance, config: Configuration,
                 found = _last_param(given, other.node.name.rstrip("/") + "/" + DESCRIPTION_KEY)
                 if found is not None:
                     return found
+    return None
+
+
+MAX_COPIES = 8  # ``ros2 param get`` commands followed, one to the next
+
+
+def _copied(param: ParamDecl, given: Sequence[ParamDecl]) -> ParamDecl:
+    """The launch parameter whose value ``param`` takes when its command is ``ros2 param
+    get NODE NAME`` (articubot_one's controller manager: ``Command(['ros2 param get
+    --hide-type /robot_state_publisher robot_description'])``, run as the manager
+    starts): that node's parameter as the launch files give it; else ``param``."""
+    seen = {id(param)}
+    for _ in range(MAX_COPIES):
+        named = param_get_command(param.command) if param.command is not None else None
+        other = _last_param(given, named[0].rstrip("/") + "/" + named[1]) \
+            if named is not None else None
+        if other is None or id(other) in seen:
+            break
+        seen.add(id(other))
+        param = other
+    return param
+
+
+# ``ros2 param get``'s options that take a value (the rest are flags)
+_PARAM_GET_VALUED = {"--spin-time", "--parameter-file"}
+
+
+def param_get_command(command: str) -> tuple[str, str] | None:
+    """The node (its full name, as the CLI makes a relative one absolute) and the
+    parameter a ``ros2 param get [OPTIONS] NODE NAME`` command line reads."""
+    try:
+        words = shlex.split(command)
+    except ValueError:
+        words = command.split()
+    for index in range(len(words) - 2):
+        if os.path.basename(words[index]) != "ros2" or words[index + 1:index + 3] != [
+                "param", "get"]:
+            continue
+        positional: list[str] = []
+        rest = iter(words[index + 3:])
+        for word in rest:
+            if word in _PARAM_GET_VALUED:
+                next(rest, None)
+            elif not word.startswith("-"):
+                positional.append(word)
+        if len(positional) != 2 or any(UNKNOWN_MARK in w for w in positional):
+            return None
+        node, name = positional
+        return (node if node.startswith("/") else "/" + node), name
     return None
 
 
