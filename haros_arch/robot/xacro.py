@@ -31,7 +31,7 @@ import re
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, cast
 
 import yaml
 from lxml import etree
@@ -288,16 +288,18 @@ class _Expander:
         try:
             return etree.fromstring(data, xml_parser(), base_url=path)
         except etree.XMLSyntaxError as err:
-            if self.by_xacro or not err.error_log or any(
-                    e.domain != etree.ErrorDomains.NAMESPACE for e in err.error_log):
+            errors = list(cast(Any, err.error_log))  # its entries; the stubs list none
+            if self.by_xacro or not errors or any(
+                    e.domain != etree.ErrorDomains.NAMESPACE for e in errors):
                 raise
         root = etree.fromstring(data, xml_parser(recover=True), base_url=path)
         for element in root.iter():  # lxml sets no name with an undeclared prefix
-            if isinstance(element.tag, str) and ":" in element.tag and \
-                    not element.tag.startswith("{"):
-                element.tag = _undeclared(element.tag)
-            for key in [k for k in element.attrib if ":" in k and not k.startswith("{")]:
-                element.set(_undeclared(key), element.attrib.pop(key))
+            tag = element.tag
+            if isinstance(tag, str) and ":" in tag and not tag.startswith("{"):
+                element.tag = _undeclared(tag)
+            for key in [str(k) for k in element.attrib]:
+                if ":" in key and not key.startswith("{"):
+                    element.set(_undeclared(key), element.attrib.pop(key))
         return root
 
     # -- the walk --------------------------------------------------------------------------
