@@ -6,6 +6,7 @@ import os
 
 import pytest
 from conftest import FIXTURES, package_xml
+from lxml import etree
 
 from haros_arch import pipeline
 from haros_arch.model.load import from_data
@@ -14,8 +15,10 @@ from haros_arch.model.model import Model
 from haros_arch.model.runtime import Configuration
 from haros_arch.model.serialise import model_to_data
 from haros_arch.project import ConfigurationSpec, Project
+from haros_arch.robot import xacro
 from haros_arch.robot.attach import xacro_command
 from haros_arch.robot.bridge import _from_arguments
+from haros_arch.workspace import Workspace
 
 ROS1 = str(FIXTURES / "robot" / "ros1")
 ROS2 = str(FIXTURES / "robot" / "ros2")
@@ -190,6 +193,20 @@ def test_a_description_read_as_it_is_keeps_a_prefix_no_xmlns_declares(write_tree
     config = configuration(str(root), f"dvl/launch/{launch}")
     assert made(config) == [("/imu_driver", "publish", "/imu", "sensor_msgs/msg/Imu")]
     assert "ROBOT_DESCRIPTION_FILE" not in {d.code for d in config.diagnostics}
+
+
+def test_an_earlier_parse_error_does_not_count_for_a_file_read_as_it_is(tmp_path):
+    """lxml's exception carries the errors of earlier parses in the same thread too: a
+    broken file read before made the namespace-only errors look fatal (the test above
+    failed after the ROS 1 launch tests)."""
+    with pytest.raises(etree.XMLSyntaxError):
+        etree.fromstring(b"<a><b></a>")
+    sdf = tmp_path / "dvl.sdf"
+    sdf.write_text('<sdf version="1.9"><model name="dvl"><link name="base">'
+                   '<sensor name="dvl" type="custom" gz:type="dvl"/></link></model></sdf>')
+    description = xacro.expand(str(sdf), {}, Workspace(root=str(tmp_path)), {},
+                               by_xacro=False)
+    assert description.root is not None and not description.diagnostics
 
 
 def test_xacro_still_rejects_a_prefix_no_xmlns_declares(write_tree):

@@ -285,10 +285,12 @@ class _Expander:
         """The document in ``data``; raises ``XMLSyntaxError`` where the tool reading it
         would fail. Read as it is (not ``by_xacro``), a prefix no ``xmlns`` declares is
         no error: the element or attribute keeps it in its name."""
+        parser = xml_parser()
         try:
-            return etree.fromstring(data, xml_parser(), base_url=path)
-        except etree.XMLSyntaxError as err:
-            errors = list(cast(Any, err.error_log))  # its entries; the stubs list none
+            return etree.fromstring(data, parser, base_url=path)
+        except etree.XMLSyntaxError:
+            # the parser's own log: the exception's holds earlier parses' errors too
+            errors = list(cast(Any, parser.error_log))
             if self.by_xacro or not errors or any(
                     e.domain != etree.ErrorDomains.NAMESPACE for e in errors):
                 raise
