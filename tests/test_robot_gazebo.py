@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import shutil
 
 import pytest
 from conftest import FIXTURES, package_xml
@@ -325,6 +326,56 @@ def test_ros2_python_xacro_process_file_gives_the_description():
     assert (description.name, description.links) == ("/pf/robot_description",
                                                      ["pf_base_link"])
     assert ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry") in made(config)
+
+
+PARSE_DOC = """import os
+
+import xacro
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def get_xacro_to_doc(xacro_file_path, mappings):
+    doc = xacro.parse(open(xacro_file_path))
+    xacro.process_doc(doc, mappings=mappings)
+    return doc
+
+
+def generate_launch_description():
+    path = os.path.join(get_package_share_directory("bot2_description"), "urdf",
+                        "bot2.urdf.xacro")
+    doc = get_xacro_to_doc(path, {"prefix": "pd_"})
+    raw = xacro.parse(open(path))
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             namespace="pd", parameters=[{"robot_description": doc.toxml()}]),
+        Node(package="gazebo_ros", executable="spawn_entity.py", namespace="pd",
+             arguments=["-topic", "robot_description", "-entity", "bot2"]),
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             namespace="raw", parameters=[{"robot_description": raw.toxml()}]),
+        Node(package="gazebo_ros", executable="spawn_entity.py", namespace="raw",
+             arguments=["-topic", "robot_description", "-entity", "raw"]),
+    ])
+"""
+
+
+def test_ros2_python_xacro_parse_and_process_doc_give_the_description(tmp_path):
+    """bcr_bot's rviz.launch.py: ``doc = xacro.parse(open(path))``, then
+    ``xacro.process_doc(doc, mappings=...)`` in place and ``doc.toxml()``; both calls
+    were not interpreted (LAUNCH_PY_UNSUPPORTED) and the description not known. A
+    document only parsed is the file as it is."""
+    root = tmp_path / "ws"
+    shutil.copytree(ROS2, root)
+    (root / "bot2_description" / "launch" / "parse_doc.launch.py").write_text(PARSE_DOC)
+    config = configuration(str(root), "bot2_description/launch/parse_doc.launch.py")
+    assert sorted((d.name, d.file, tuple(d.links)) for d in config.robot_descriptions
+                  if d.name.startswith("/pd/")) == [
+        ("/pd/robot_description", "bot2_description/urdf/bot2.urdf.xacro", ("pd_base_link",))]
+    # only parsed: the file as it is, a cat command's output
+    assert "command \"cat bot2_description/urdf/bot2.urdf.xacro\" is not run" in {
+        d.message.split(";")[0] for d in config.diagnostics}
+    assert not [d for d in config.diagnostics if d.code.startswith("LAUNCH_PY")]
 
 
 def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_controllers():
