@@ -43,8 +43,8 @@ from .python_methods import (
     open_file,
     safe_load,
     text_or_none,
-    xacro_process,
     xacro_parse,
+    xacro_process,
     xacro_process_doc,
     xacro_process_file,
 )
