@@ -692,10 +692,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         if given:
             call = replace(call, name=_filled(call.name, given), name_arg=None)
     if call.name_option is not None and UNKNOWN_MARK in call.name:
-        # an option's value (``"/robot/limb/" + args.limb``); not given: the ``?``
-        given = program_option(instance, call.name_option)
-        if given:
-            call = replace(call, name=_filled(call.name, given), name_option=None)
+        # an option's value (``"/robot/limb/" + args.limb``), else its default when the
+        # arguments are known and do not give it; neither: the ``?``
+        given = program_option(instance, call.name_option, call.name_option_default)
+        filled = _filled(call.name, given) if given is not None else ""
+        if filled.strip("/~"):  # an empty value is no name (a ``?`` alone given "")
+            call = replace(call, name=filled, name_option=None)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
