@@ -94,8 +94,13 @@ class CallSites:
             values = [read(arg, scope) for arg, scope in self._arguments(parm)]
         finally:
             self._active.discard(key)
-        if values and all(v == values[0] for v in values):
+        if values and all(v == values[0] for v in values) and not (
+                strings and len(values) > 1 and None in values[0]):  # type: ignore[operator]
             return values[0]
+        # several calls, not one known value: each call's own, filled where the node's
+        # calls are (``links``); two calls that pass unknown strings agree on nothing,
+        # each may pass another parameter's value (f1tenth's mux adds a channel per
+        # parameter, ``add_channel(rand_drive_topic, ...)``, a method that constructs it)
         if strings and len(values) > 1:
             marker = self.placeholder(parm)
             if marker is not None:

@@ -1,0 +1,76 @@
+"""A topic named by a parameter's value that a method passes on to a constructor, called
+with the values of several parameters: f1tenth_simulator's mux (mux.cpp:106-136, 247-251)
+reads ``rand_drive_topic``, ``brake_drive_topic`` and ``nav_drive_topic`` and calls
+``add_channel(topic, ...)`` with each, which builds ``new Channel(channel_name, ...)``,
+whose constructor subscribes to ``channel_name``. One subscription per parameter; before,
+the calls of ``add_channel`` "agreed" (each passes a string not known statically), so the
+constructor's name was one ``?`` naming no parameter (a third call passing another value
+made them disagree, and each was kept)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from haros_arch.extract.cpp import extract_cpp_nodes
+from haros_arch.workspace import scan
+
+SOURCE = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+class Mux;
+class Channel {
+public:
+  Channel(std::string channel_name, Mux* mux);
+  void cb(const std_msgs::String& msg) {}
+  ros::Subscriber sub;
+};
+class Mux {
+public:
+  ros::NodeHandle n;
+  friend class Channel;
+  Mux() : n("~") {
+    std::string rand_topic;
+    n.getParam("rand_drive_topic", rand_topic);
+    add_channel(rand_topic);
+    std::string brake_topic;
+    n.getParam("brake_drive_topic", brake_topic);
+    add_channel(brake_topic);
+  }
+  void add_channel(std::string channel_name) {
+    Channel* channel = new Channel(channel_name, this);
+  }
+};
+Channel::Channel(std::string channel_name, Mux* mux) {
+  sub = mux->n.subscribe(channel_name, 1, &Channel::cb, this);
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "mux");
+  Mux m;
+  ros::spin();
+}
+"""
+
+
+def _subscriptions(tmp_path: Path, source: str) -> list[tuple[str, str | None]]:
+    package = tmp_path / "mux"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>mux</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license><depend>roscpp</depend><depend>std_msgs</depend></package>\n')
+    (package / "src" / "mux.cpp").write_text(source)
+    batch = extract_cpp_nodes([[str(package / "src" / "mux.cpp")]], scan([str(tmp_path)]),
+                              cache_dir=None, jobs=1)
+    return sorted((c.name, c.name_param) for c in batch.results[0].calls
+                  if c.kind == "subscribe")
+
+
+def test_each_parameter_a_method_passes_on_names_a_subscription(tmp_path: Path) -> None:
+    assert _subscriptions(tmp_path, SOURCE) == [
+        ("~?", "~brake_drive_topic"), ("~?", "~rand_drive_topic")]
+
+
+def test_callers_that_agree_on_a_known_name_still_give_it(tmp_path: Path) -> None:
+    # the values the calls pass, when they are known and the same, are the one value
+    source = SOURCE.replace("add_channel(rand_topic);", 'add_channel("drive");').replace(
+        "add_channel(brake_topic);", 'add_channel("drive");')
+    assert _subscriptions(tmp_path, source) == [("~drive", None)]
