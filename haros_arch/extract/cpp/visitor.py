@@ -526,8 +526,9 @@ class CallFinder:
             node, conditions = stack.pop()
             if lost and node.kind == CursorKind.UNEXPOSED_EXPR and place_of(node) in lost:
                 self._lost_initialiser(node, *lost[place_of(node)], conditions, scope)
-            if node.kind == CursorKind.CXX_NEW_EXPR and (made := _lost_new(node)) is not None:
-                self._lost_initialiser(node, *made, conditions, scope)
+            if node.kind == CursorKind.CXX_NEW_EXPR and (
+                    unresolved := _lost_new(node)) is not None:
+                self._lost_initialiser(node, *unresolved, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and node.spelling in _TAKEN_AS:
                 self._typed_accessor(node)
             if node.kind == CursorKind.CALL_EXPR and (
