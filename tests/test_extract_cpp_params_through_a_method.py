@@ -74,3 +74,25 @@ def test_callers_that_agree_on_a_known_name_still_give_it(tmp_path: Path) -> Non
     source = SOURCE.replace("add_channel(rand_topic);", 'add_channel("drive");').replace(
         "add_channel(brake_topic);", 'add_channel("drive");')
     assert _subscriptions(tmp_path, source) == [("~drive", None)]
+
+
+# f1tenth's Channel also has ``Channel::Channel() { Channel("", "", -1, nullptr); }``
+# (mux.cpp:242-245): a default constructor nothing calls, which would pass "" to the
+# one that subscribes, a subscription to the node's own name (``~``), /mux_controller
+DEFAULT = SOURCE.replace(
+    "  Channel(std::string channel_name, Mux* mux);",
+    "  Channel();\n  Channel(std::string channel_name, Mux* mux);").replace(
+    "Channel::Channel(std::string channel_name, Mux* mux) {",
+    'Channel::Channel() {\n  Channel("", nullptr);\n}\n'
+    "Channel::Channel(std::string channel_name, Mux* mux) {")
+
+
+def test_a_constructor_nothing_calls_passes_no_name(tmp_path: Path) -> None:
+    assert _subscriptions(tmp_path, DEFAULT) == [
+        ("~?", "~brake_drive_topic"), ("~?", "~rand_drive_topic")]
+
+
+def test_a_default_constructor_the_node_calls_passes_its_name(tmp_path: Path) -> None:
+    source = DEFAULT.replace("  Mux m;\n", "  Mux m;\n  Channel unnamed;\n")
+    assert _subscriptions(tmp_path, source) == [
+        ("~", None), ("~?", "~brake_drive_topic"), ("~?", "~rand_drive_topic")]
