@@ -96,3 +96,48 @@ def test_a_default_constructor_the_node_calls_passes_its_name(tmp_path: Path) ->
     source = DEFAULT.replace("  Mux m;\n", "  Mux m;\n  Channel unnamed;\n")
     assert _subscriptions(tmp_path, source) == [
         ("~", None), ("~?", "~brake_drive_topic"), ("~?", "~rand_drive_topic")]
+
+
+# nav2's velocity smoother builds its OdomSmoother with the member ``odom_topic_`` at
+# three places (velocity_smoother.cpp:71, 602, 625): the same member each time is one
+# value, the parameter with its default (``odom``), not one value per call
+SAME_MEMBER = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+class Channel {
+public:
+  Channel(ros::NodeHandle& n, std::string name) { sub = n.subscribe(name, 1, &Channel::cb, this); }
+  void cb(const std_msgs::String& msg) {}
+  ros::Subscriber sub;
+};
+class Smoother {
+public:
+  ros::NodeHandle n;
+  std::string topic_;
+  Channel* channel;
+  Smoother() : n("~") {
+    n.param("odom_topic", topic_, std::string("odom"));
+    channel = new Channel(n, topic_);
+  }
+  void reset() { channel = new Channel(n, topic_); }
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "smoother");
+  Smoother s;
+  s.reset();
+  ros::spin();
+}
+"""
+
+
+def test_the_same_member_passed_by_each_call_is_one_value(tmp_path: Path) -> None:
+    package = tmp_path / "smoother"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>smoother</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license><depend>roscpp</depend><depend>std_msgs</depend></package>\n')
+    (package / "src" / "smoother.cpp").write_text(SAME_MEMBER)
+    batch = extract_cpp_nodes([[str(package / "src" / "smoother.cpp")]],
+                              scan([str(tmp_path)]), cache_dir=None, jobs=1)
+    assert [(c.name, c.name_param, c.name_default) for c in batch.results[0].calls
+            if c.kind == "subscribe"] == [("~?", "~odom_topic", "odom")]
