@@ -300,12 +300,20 @@ EXTENDS: dict[str, str] = {
 # nodelets are ``pcl/VoxelGrid``, ..., exported by pcl_ros (plugins/nodelet/*.xml);
 # ros2_control's mock hardware is ``mock_components/GenericSystem`` (humble also
 # ``fake_components/GenericSystem``), exported by hardware_interface
-# (mock_components_plugin_description.xml, fake_components_plugin_description.xml)
+# (mock_components_plugin_description.xml, fake_components_plugin_description.xml);
+# ROS 1 ros_controllers' trajectory controllers are ``effort_controllers/
+# JointTrajectoryController`` and the same under position_controllers,
+# velocity_controllers, pos_vel_controllers and pos_vel_acc_controllers, exported by
+# joint_trajectory_controller (ros_control_plugins.xml)
+_TRAJECTORY = ("joint_trajectory_controller",)
 LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
     "move_group": ("moveit_ros_move_group", "moveit_ros_manipulation"),
     "pcl": ("pcl_ros",),
     "mock_components": ("hardware_interface",),
-    "fake_components": ("hardware_interface",)}
+    "fake_components": ("hardware_interface",),
+    **{kind: _TRAJECTORY for kind in ("position_controllers", "velocity_controllers",
+                                      "effort_controllers", "pos_vel_controllers",
+                                      "pos_vel_acc_controllers")}}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

@@ -472,6 +472,8 @@ class CallFinder:
                 _dependent_made(node) is not None
             ):
                 return True
+            if kind == CursorKind.CXX_NEW_EXPR and _lost_new(node) is not None:
+                return True
         # a walk of a function whose only such call is another template's gives what the
         # rest of ``_function``'s loop gives: a member initialiser clang lost, a
         # construction of a class whose code the unit does not have
@@ -526,6 +528,9 @@ class CallFinder:
             node, conditions = stack.pop()
             if lost and node.kind == CursorKind.UNEXPOSED_EXPR and place_of(node) in lost:
                 self._lost_initialiser(node, *lost[place_of(node)], conditions, scope)
+            if node.kind == CursorKind.CXX_NEW_EXPR and (
+                    unresolved := _lost_new(node)) is not None:
+                self._lost_initialiser(node, *unresolved, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and node.spelling in _TAKEN_AS:
                 self._typed_accessor(node)
             if node.kind == CursorKind.CALL_EXPR and (
@@ -844,9 +849,13 @@ class CallFinder:
                           conditions: tuple[Condition, ...], scope: Scope) -> None:
         """A member of an API class (``action_server_(nh, "follow", boost::bind(...))``)
         whose initialiser clang could not resolve (it names a method an error made
-        invalid): the construction kept as the class's row reads its arguments, its type
-        from the member's, and a diagnostic that says so."""
+        invalid), or a ``new`` of one that it kept unresolved (``_lost_new``): the
+        construction kept as the class's row reads its arguments, its type from the
+        member's (the new-expression's), and a diagnostic that says so."""
         args = [c for c in init.get_children() if c.kind.is_expression()]
+        if init.kind == CursorKind.CXX_NEW_EXPR and len(args) == 1 and (
+                args[0].kind == CursorKind.UNEXPOSED_EXPR and not args[0].spelling):
+            args = [c for c in args[0].get_children() if c.kind.is_expression()]  # (a, b)
         before = len(self.calls)
         self._emit(spec, init, args, made, conditions, scope)
         if len(self.calls) > before:
@@ -2400,6 +2409,31 @@ def _lost_initialisers(constructor: Cursor
             continue
         found[place_of(init)] = (spec, base)
     return found
+
+
+def _lost_new(expr: Cursor) -> tuple[api.RosFunction, Cursor] | None:
+    """The API row and class of ``new C(args)`` (``expr``, a new-expression), ``C`` a
+    class of a row named as it, that holds no call of a constructor of ``C``: clang keeps
+    only the argument list where an argument depends on a template's parameters
+    (ros_controllers' JointTrajectoryController<...>::init: ``new ActionServer(
+    controller_nh_, "follow_joint_trajectory", std::bind(&JointTrajectoryController::
+    goalCB, this, _1), ...)``)."""
+    made = expr.type.get_canonical().get_pointee()
+    if made.kind != TypeKind.RECORD:
+        return None
+    decl = made.get_declaration()
+    if decl.kind == CursorKind.NO_DECL_FOUND:
+        return None
+    children = list(expr.get_children())
+    if any(node.kind == CursorKind.CALL_EXPR and (
+            (node.referenced is not None and node.referenced.kind == CursorKind.CONSTRUCTOR)
+            or node.spelling == decl.spelling.split("<")[0]) for node in children):
+        return None  # a call of the constructor, resolved or not: read as such
+    if not any(node.kind.is_expression() for node in children):
+        return None  # ``new C`` or ``new C()``: no arguments, no name
+    base = row_class(decl)
+    spec = api.ALL.get((qualified_name(base), base.spelling))
+    return None if spec is None else (spec, base)
 
 
 def _recovered_name(expr: Cursor) -> str:
