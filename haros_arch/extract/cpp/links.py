@@ -378,12 +378,12 @@ class NodeFacts:
         ``Channel::Channel() { Channel("", "", -1, nullptr); }``, a default constructor
         nothing calls, passed "" to the constructor that subscribes (mux.cpp:242-251): a
         subscription to the node's own name."""
+        unbuilt = constructor_unbuilt(self, unseen)
+
         def idle(site: str) -> bool:
             caller = self.within.get(site)
-            if caller is None or caller in self.called or "*" in unseen:
-                return False
-            cls = class_of(caller)
-            return cls in self.constructed and cls not in unseen and (
+            return caller is not None and unbuilt(caller) and (
+                class_of(caller) in self.constructed) and (
                 caller.rsplit("@F@", 1)[0] not in self.named_classes)
         return idle
 
