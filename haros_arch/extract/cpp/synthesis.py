@@ -507,6 +507,12 @@ def _names_a_declared_type(name: str, text: bytes, offset: int) -> bool:
     return declared is not None and declared.group(1).decode() not in _KEYWORDS
 
 
+# a call of a name with a ``_`` after a first word of letters and digits (not after a
+# word, ``::``, ``.`` or ``->``): the first word is the prefix of a C library's functions
+# where ``library_prefixes`` has it (``Names._spread_calls``)
+_LIBRARY_CALL = re.compile(rb"(?<![\w:.>])(([A-Za-z0-9]+)_\w+)\s*\(")
+
+
 def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> bool:
     """Whether the call ``found`` (a name and its ``(``) is an element of a constructor's
     initialiser list (cartographer's ``: odometry_sampler(ratio), imu_sampler(ratio) {``):
@@ -684,13 +690,22 @@ class Names:
         (motoman's ``robot_id_(robot_id)``, a member initialised, under ``robot``)."""
         if not self.libraries:
             return
-        words = b"|".join(re.escape(p.encode()) for p in sorted(self.libraries, key=len)[::-1])
-        pattern = re.compile(rb"(?<![\w:.>])((?:" + words + rb")_\w+)\s*\(")
+        # a prefix has no ``_`` (``library_prefixes``): one of letters and digits is the
+        # whole run of them a name starts with, so every call of a name with a ``_`` is
+        # found once and its first word looked up (a pattern of all the prefixes tried
+        # each one at every place of the text); other prefixes by that pattern
+        prefixes = {p.encode() for p in self.libraries}
+        plain = all(p.isascii() and p.isalnum() for p in self.libraries)
+        pattern = _LIBRARY_CALL if plain else re.compile(
+            rb"(?<![\w:.>])((" + b"|".join(re.escape(p) for p in sorted(
+                prefixes, key=len)[::-1]) + rb")_\w+)\s*\(")
         for text in self._texts:
             if (id(text), "\0calls") in self._spread_done:
                 continue
             self._spread_done.add((id(text), "\0calls"))
             for found in pattern.finditer(text):
+                if found.group(2) not in prefixes:
+                    continue
                 if self.count >= MAX_NAMES:
                     return
                 name = found.group(1).decode()
