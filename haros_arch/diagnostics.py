@@ -532,7 +532,8 @@ CATALOGUE: dict[str, Entry] = {
         "info", "this {function} call could not be resolved by the parse; it is kept by "
         "its name, with type {type}",
         "clang could not tell which function this call is (the object it is made on has a "
-        "type that is unknown or was made invalid by an error). The call is kept as the "
+        "type that is unknown or was made invalid by an error, or an argument depends on a "
+        "template's parameters). The call is kept as the "
         "ROS API function of that name, its name and values read as usual, its type as "
         "written when that names a ROS interface, else '?'."),
     "CPP_NODE_PARTIAL": Entry(

@@ -26,10 +26,13 @@ RUN_DEPEND_TAGS = frozenset({"depend", "exec_depend", "run_depend"})
 BUILD_TYPES: tuple[BuildType, ...] = ("catkin", "ament_cmake", "ament_python", "cmake")
 
 
-def xml_parser() -> etree.XMLParser:
-    """An XML parser that never expands entities, loads DTDs or touches the network."""
+def xml_parser(recover: bool = False) -> etree.XMLParser:
+    """An XML parser that never expands entities, loads DTDs or touches the network
+    (``recover``: one that goes on past errors; only for a document whose errors are
+    known to be harmless)."""
     return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                           huge_tree=False, remove_comments=True, remove_pis=True)
+                           huge_tree=False, remove_comments=True, remove_pis=True,
+                           recover=recover)
 
 
 _HIDDEN = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE[^\[>]*(\[.*?\])?\s*>",

@@ -150,6 +150,66 @@ def test_catkin_libraries_bring_the_named_files_of_another_package(write_tree) -
     assert node.completeness == "complete"
 
 
+_EXTRA = """
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+    namespace costs {
+    class Extra { public: Extra(); };
+    Extra::Extra()
+    {
+      ros::NodeHandle nh;
+      nh.advertise<std_msgs::String>("extra", 1);
+    }
+    }
+    """
+
+
+def _with_extra_library(catkin_package: str) -> dict[str, str]:
+    """ROS1 with a library ``extras`` of costs that planner's code names (costs::Extra),
+    and costs' ``catkin_package(...)`` as given."""
+    files = dict(ROS1)
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "catkin_package(LIBRARIES costs layers)", catkin_package) + (
+        "add_library(extras src/extras.cpp)\n")
+    files["costs/src/extras.cpp"] = _EXTRA
+    files["planner/src/planner.cpp"] = files["planner/src/planner.cpp"].replace(
+        "namespace planner {", "namespace costs { class Extra { public: Extra(); }; }\n"
+        "namespace planner {").replace(
+        'local_ = new costs::MapROS("local_costmap");',
+        'local_ = new costs::MapROS("local_costmap");\n  costs::Extra extra;')
+    return files
+
+
+def test_a_catkin_library_not_exported_is_not_linked(write_tree) -> None:
+    # catkin puts in ``catkin_LIBRARIES`` only what catkin_package(LIBRARIES) names:
+    # stdr_gui linked stdr_robot, which exports stdr_handle_robot, not the motion
+    # controllers' library whose base class subscribes to cmd_vel
+    files = _with_extra_library("catkin_package(LIBRARIES costs layers)")
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/extras.cpp" not in node.sources
+    assert "costs/src/map_ros.cpp" in node.sources
+    assert ("publish", "extra") not in {(c.kind, c.name) for c in node.calls}
+
+
+def test_an_exported_library_brings_the_libraries_it_links(write_tree) -> None:
+    files = _with_extra_library("catkin_package(LIBRARIES costs layers)")
+    files["costs/CMakeLists.txt"] += "target_link_libraries(costs extras)\n"
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/extras.cpp" in node.sources
+    assert ("publish", "extra") in {(c.kind, c.name) for c in node.calls}
+
+
+def test_exports_not_known_for_certain_keep_every_library(write_tree) -> None:
+    # catkin_package() under an if() not decided, or exporting a value not known:
+    # which libraries another package links is not known, none is left out
+    for call in ("if(WITH_EXTRAS)\ncatkin_package(LIBRARIES costs extras)\nelse()\n"
+                 "catkin_package(LIBRARIES costs)\nendif()",
+                 "catkin_package(LIBRARIES costs ${EXTRA_LIBRARIES})"):
+        files = _with_extra_library(call)
+        node, _ = _node(write_tree, files, "planner", "planner_node")
+        assert "costs/src/extras.cpp" in node.sources, call
+
+
 def test_a_member_initialiser_names_no_function(write_tree) -> None:
     # ``: map_(map)`` from the first column is no free function ``map_``: the planner's
     # own member of that name does not bring the checker's file

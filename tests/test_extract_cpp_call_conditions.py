@@ -172,3 +172,75 @@ def test_a_loop_around_the_call_is_not_carried(write_tree) -> None:
                        "drv/src/iface.cpp": node, "drv/src/streamer.cpp": STREAMER_CPP})
     found = _conditions(root, "streamer.cpp", "iface.cpp")
     assert found[("subscribe", "std_msgs/Int32")] == ['if getGroups("topic_list", groups)']
+
+
+MANAGER_H = """
+#include <memory>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+struct Resources { bool loaded() const; };
+class Manager : public rclcpp::Node {
+public:
+  Manager(std::shared_ptr<rclcpp::Executor> executor, const std::string & name);
+  Manager(std::unique_ptr<Resources> resources, std::shared_ptr<rclcpp::Executor> executor,
+          const std::string & name);
+private:
+  void subscribe_to_description();
+  void on_description(const std_msgs::msg::String & msg) {}
+  std::unique_ptr<Resources> resources_;
+  rclcpp::Subscription<std_msgs::msg::String>::SharedPtr sub_;
+};
+"""
+
+MANAGER_CPP = """
+#include "manager.hpp"
+Manager::Manager(std::shared_ptr<rclcpp::Executor> executor, const std::string & name)
+: rclcpp::Node(name) {
+  std::string description = "";
+  get_parameter("robot_description", description);
+  if (description.empty()) {
+    subscribe_to_description();
+  }
+}
+Manager::Manager(std::unique_ptr<Resources> resources,
+                 std::shared_ptr<rclcpp::Executor> executor, const std::string & name)
+: rclcpp::Node(name), resources_(std::move(resources)) {
+  if (!resources_->loaded()) {
+    subscribe_to_description();
+  }
+}
+void Manager::subscribe_to_description() {
+  sub_ = create_subscription<std_msgs::msg::String>(
+    "~/robot_description", rclcpp::QoS(1).transient_local(),
+    std::bind(&Manager::on_description, this, std::placeholders::_1));
+}
+"""
+
+MANAGER_MAIN = """
+#include "manager.hpp"
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto executor = std::make_shared<rclcpp::executors::MultiThreadedExecutor>();
+  auto cm = std::make_shared<Manager>(executor, "controller_manager");
+  executor->add_node(cm);
+  executor->spin();
+}
+"""
+
+
+def test_a_site_in_a_constructor_the_node_never_builds_is_none(write_tree) -> None:
+    # humble ros2_control_node builds ControllerManager(executor, name), whose
+    # constructor subscribes ~/robot_description only when no robot_description
+    # parameter is given; the other constructor, never built there, subscribes under
+    # another condition: the subscription carried none, and every humble launch that
+    # gives the manager its description had a false subscriber-without-publisher
+    # (franka_ros2; survey Z23)
+    root = write_tree({"cm/package.xml": package_xml("cm", "ament_cmake"),
+                       "cm/src/manager.hpp": MANAGER_H, "cm/src/manager.cpp": MANAGER_CPP,
+                       "cm/src/main.cpp": MANAGER_MAIN})
+    result = extract_cpp([str(root / "cm" / "src" / s) for s in ("main.cpp", "manager.cpp")],
+                         scan([str(root)]), cache_dir=None)
+    (sub,) = [c for c in result.calls if c.kind == "subscribe"]
+    assert [f"{k.statement} {k.text}" for k in sub.conditions] == [
+        "if description.empty()"]

@@ -156,3 +156,27 @@ def test_bt_navigator_makes_the_calls_of_its_navigators():
                    ParamDecl("/bt_navigator/only.plugin",
                              "nav2_bt_navigator::NavigateToPoseNavigator")]) == [
         "/navigate_to_pose"]
+
+
+def test_a_humble_bt_navigator_loads_no_navigator_plugins():
+    """navigation2 1.1.x (Humble) builds NavigateToPoseNavigator and
+    NavigateThroughPosesNavigator in bt_navigator.cpp itself (its model has their calls);
+    from Iron (1.2) on it loads them by their ``<id>.plugin``. articubot_one's Humble
+    navigation had two false PLUGIN_NOT_FOUND and its bt_navigator partial."""
+    def warned(version: str) -> list[str]:
+        own = Node("nav2_bt_navigator", "bt_navigator", model=f"x/nav2_bt_navigator {version}",
+                   calls=[PrimitiveCall("action-server", "navigate_to_pose",
+                                        "nav2_msgs/action/NavigateToPose",
+                                        location=_where(1))])
+        decl = NodeDecl("/bt_navigator", "nav2_bt_navigator", "bt_navigator")
+        decl.ros_version = 2
+        config = build(Configuration("c"), LaunchModel(nodes=[decl]),
+                       Workspace(root="/nowhere"), {own.name: own})
+        assert [link.resource.name for link in config.links
+                if link.kind == "action-server"] == ["/navigate_to_pose"]
+        return sorted(d.message.split()[2] for d in config.diagnostics
+                      if d.code == "PLUGIN_NOT_FOUND")
+
+    assert warned("1.1.20") == []
+    assert warned("1.2.10") == ["nav2_bt_navigator::NavigateThroughPosesNavigator",
+                                "nav2_bt_navigator::NavigateToPoseNavigator"]

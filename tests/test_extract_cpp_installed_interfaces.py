@@ -135,3 +135,40 @@ def test_models_interfaces_reads_a_pinned_tree(tmp_path, capsys) -> None:
     # a tree that is not there is said, not a traceback
     assert main(["models", "interfaces", str(listing), "--sources",
                  str(tmp_path / "nowhere"), "-o", str(out)]) == 2
+
+
+def test_ros2_interface_named_with_capitals_together(write_tree) -> None:
+    # franka's JointImpedanceWithIKExampleController: moveit_msgs (not in the workspace,
+    # not in the catalogue) has get_position_ik.hpp for GetPositionIK, which capitalising
+    # each word made GetPositionIk: the node's header named a type not declared, its class
+    # was invalid and every get_node() call an error (13 places; survey Z23). The type's
+    # name is the one the including files write
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "ament_cmake"),
+        "pkg/include/pkg/ik_node.hpp": """
+#include <rclcpp/rclcpp.hpp>
+#include <moveit_msgs/srv/get_position_ik.hpp>
+#include <std_msgs/msg/float64.hpp>
+class IkNode : public rclcpp::Node {
+public:
+  IkNode();
+private:
+  rclcpp::Client<moveit_msgs::srv::GetPositionIK>::SharedPtr ik_;
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr out_;
+};
+""",
+        "pkg/src/node.cpp": """
+#include "pkg/ik_node.hpp"
+IkNode::IkNode() : rclcpp::Node("ik") {
+  ik_ = create_client<moveit_msgs::srv::GetPositionIK>("compute_ik");
+  auto request = std::make_shared<moveit_msgs::srv::GetPositionIK::Request>();
+  out_ = create_publisher<std_msgs::msg::Float64>("out", 1);
+}
+"""})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("client", "compute_ik", "moveit_msgs/srv/GetPositionIK"),
+        ("publish", "out", "std_msgs/msg/Float64")]

@@ -50,19 +50,23 @@ def test_a_name_around_a_parameter_value_keeps_its_text(write_tree) -> None:
     assert calls == [
         ("client", "/?/base/clear", "~robot_name"),
         ("client", "/?/direct", "~robot_name"),
-        # two parameters: which '?' is which is not said
-        ("publish", "/?/?", None),
+        # two parameters: the first '?' is the first's value (survey Z23), the second
+        # stays unknown
+        ("publish", "/?/?", "~first"),
         ("subscribe", "?/feedback", "~robot_name"),
     ]
     node = Node("ex", "ex", calls=list(result.calls))
     config = build(Configuration("c"), LaunchModel(
         nodes=[NodeDecl("/ex", "ex", "ex")],
-        params=[ParamDecl("/ex/robot_name", "arm", "str")]), Workspace(root="/nowhere"),
-        {node.name: node})
+        params=[ParamDecl("/ex/robot_name", "arm", "str"), ParamDecl("/ex/first", "left", "str")]),
+        Workspace(root="/nowhere"), {node.name: node})
     assert sorted((link.kind, link.rosname.full) for link in config.links
-                  if link.kind in ("client", "subscribe")) == [
+                  if link.kind in ("client", "subscribe", "publish")) == [
         ("client", "/arm/base/clear"), ("client", "/arm/direct"),
-        ("subscribe", "/arm/feedback")]
+        # the value fills the first '?' only: the name keeps its second
+        ("publish", "/left/?"), ("subscribe", "/arm/feedback")]
+    # the parameter set, the second '?' is no parameter left unset
+    assert "NAME_PARAM_UNSET" not in [d.code for d in config.diagnostics]
 
 
 MEMBER_NODE = """
@@ -619,3 +623,52 @@ def test_a_member_a_method_stores_a_parameter_in_names_the_call(write_tree) -> N
             if c.kind == "publish"]
     assert made == [("?", "topic_name", "scan"), ("?", "frame_topic", "frames"),
                     ("?", None, None)]
+
+
+LAYERS_NODE = """
+#include <map>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <vendor/metric_map.h>
+class Maps : public rclcpp::Node
+{
+public:
+  Maps() : rclcpp::Node("maps")
+  {
+    declare_parameter<std::string>("pub_topic", prefix_);
+    get_parameter("pub_topic", prefix_);
+    for (const auto & [layer, data] : map_.layers) {
+      pubs_[layer] = create_publisher<std_msgs::msg::String>(prefix_ + "/" + layer, 1);
+      grids_[layer] = create_publisher<std_msgs::msg::String>(
+        prefix_ + "/" + layer + "_grid", 1);
+    }
+  }
+  std::string prefix_ = "map_server";
+  vendor::MetricMap map_;
+  std::map<std::string, rclcpp::Publisher<std_msgs::msg::String>::SharedPtr> pubs_, grids_;
+};
+"""
+
+
+def test_a_parameter_then_a_value_not_known_the_parameter_fills_its_place(write_tree) -> None:
+    """mrpt_map_server publishes each layer of its map on ``pub_mm_topic_ + "/" +
+    layerName + "_gridmap"``, the layer's name a value of MRPT's (a library the parse
+    does not have): the name was ``/?/?_gridmap`` whatever the launch file set; the
+    parameter's value fills its first '?' (survey Z23), a global value too."""
+    root = write_tree({"maps/package.xml": package_xml("maps", "ament_cmake"),
+                       "maps/src/node.cpp": LAYERS_NODE})
+    result = extract_cpp([str(root / "maps" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.name, c.name_param, c.name_default) for c in result.calls
+            if c.kind == "publish"] == [
+        ("?/?", "pub_topic", "map_server"), ("?/?_grid", "pub_topic", "map_server")]
+    node = Node("maps", "maps", calls=list(result.calls))
+    for value, names in ((None, ["/map_server/?", "/map_server/?_grid"]),
+                         ("/mrpt_map", ["/mrpt_map/?", "/mrpt_map/?_grid"])):
+        params = [] if value is None else [ParamDecl("/maps/pub_topic", value, "str")]
+        config = build(Configuration("c"), LaunchModel(
+            nodes=[NodeDecl("/maps", "maps", "maps", ros_version=2)], params=params),
+            Workspace(root="/nowhere"), {node.name: node})
+        assert [link.rosname.full for link in config.links if link.kind == "publish"] == names
+        assert "NAME_PARAM_UNSET" not in [d.code for d in config.diagnostics]

@@ -782,3 +782,38 @@ int main(int argc, char** argv) {
 """, "ament_cmake")
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "ok")]
+
+
+def test_library_fundamentals_ts_optional_and_filesystem(write_tree) -> None:
+    # f1tenth's vesc_driver keeps its command limits in std::experimental::optional
+    # (<experimental/optional>, C++14) and compares a value with one: the header was an
+    # empty stand-in, the node's class invalid, and its 15 calls in the constructor errors
+    # (survey Z23)
+    result = _extract(write_tree, """
+#include <experimental/optional>
+#include <experimental/filesystem>
+#include <string>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/float64.hpp"
+namespace fs = std::experimental::filesystem;
+class Driver : public rclcpp::Node {
+public:
+  Driver() : rclcpp::Node("driver") {
+    if (fs::exists(fs::path("/dev/ttyACM0"))) {
+      limit_ = std::experimental::make_optional(declare_parameter<double>("limit", 1.0));
+    }
+    pub_ = create_publisher<std_msgs::msg::Float64>("out", 10);
+  }
+  double clip(double value) const {
+    if (limit_ && value > limit_) { return *limit_; }
+    return limit_ != std::experimental::nullopt ? value : 0.0;
+  }
+private:
+  std::experimental::optional<double> limit_;
+  rclcpp::Publisher<std_msgs::msg::Float64>::SharedPtr pub_;
+};
+""", "ament_cmake")
+    assert _errors(result) == []
+    assert "CPP_INCLUDE_MISSING" not in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "limit"), ("publish", "out")]

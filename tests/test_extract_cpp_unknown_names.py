@@ -1297,3 +1297,28 @@ def test_an_unqualified_call_in_a_class_template_is_no_dependent_base_s_method()
     unknown = [(d.code, d.location.line) for d in result.diagnostics
                if d.code == "CPP_NODE_TO_UNKNOWN"]
     assert unknown == [("CPP_NODE_TO_UNKNOWN", 25)]  # Layer's, not FeatureOutput's
+
+
+def test_a_declared_value_cast_as_a_shared_pointer(write_tree) -> None:
+    """mrpt_map_server reads its map from an MRPT archive (a missing header): the object
+    read is a permissive value, and ``std::dynamic_pointer_cast<Map>(obj)`` had no
+    overload that deduces its pointee, an error in the function that makes the node's
+    calls (4 places, the node partial; survey Z23)."""
+    root = write_tree({
+        "maps/package.xml": package_xml("maps", "ament_cmake"),
+        "maps/src/server.cpp": (
+            "#include <memory>\n#include <rclcpp/rclcpp.hpp>\n"
+            "#include <std_msgs/msg/string.hpp>\n#include <vendor/archive.h>\n"
+            "struct Map { virtual ~Map() = default; };\n"
+            "class Server : public rclcpp::Node {\npublic:\n"
+            "  Server() : rclcpp::Node(\"maps\") {\n"
+            "    auto obj = vendor::archiveFrom(\"map.gz\").ReadObject();\n"
+            "    auto map = std::dynamic_pointer_cast<Map>(obj);\n"
+            "    std::shared_ptr<const Map> same = std::static_pointer_cast<const Map>(obj);\n"
+            "    pub_ = create_publisher<std_msgs::msg::String>(\"map\", 1);\n  }\n"
+            "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")})
+    result = extract_cpp([str(root / "maps" / "src" / "server.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "map")]
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")] == []

@@ -455,6 +455,34 @@ def test_rclpy_a_local_the_paths_of_an_if_set_differently(tmp_path) -> None:
          ("else node.get_parameter('rear').value",))]
 
 
+def test_rclpy_a_call_both_paths_of_an_if_make_alike_is_under_neither(tmp_path) -> None:
+    """gazebo_ros' spawn_entity.py: ``timeout = self.args.timeout``, ``if
+    self.args.spawn_service_timeout is not None: timeout = ...``, then
+    ``self._spawn_entity(xml, pose, timeout)``, whose ``create_client(SpawnEntity,
+    '%s/spawn_entity' % ...)`` does not use the timeout: one call per value of the local,
+    both alike, and the one kept had the ``if`` path's condition, so the spawner's only
+    client looked conditional. A call that the paths make differently keeps a call per
+    path (the test above)."""
+    from haros_arch.extract.python import extract_python
+    from haros_arch.workspace import scan
+
+    source = tmp_path / "n.py"
+    source.write_text(
+        "import rclpy\nfrom std_srvs.srv import Empty\n"
+        "def spawn(node, timeout):\n"
+        "    node.create_client(Empty, 'spawn').wait_for_service(timeout_sec=timeout)\n"
+        "def main():\n"
+        "    node = rclpy.create_node('spawner')\n"
+        "    timeout = 30.0\n"
+        "    if node.get_parameter('old_timeout').value is not None:\n"
+        "        timeout = 5.0\n"
+        "    spawn(node, timeout)\n")
+    found = extract_python([str(source)], scan([str(tmp_path)]))
+    assert [(c.kind, c.name, tuple(f"{x.statement} {x.text}" for x in c.conditions))
+            for c in found.calls if c.kind == "client"] == [
+        ("client", "spawn", ())]
+
+
 def test_rclpy_names_joined_with_os_path_join(tmp_path) -> None:
     """``os.path.join(NS, 'cmd')`` builds a name as on Linux (one ``/`` between parts,
     a part starting with ``/`` starts over); it was ``?``."""

@@ -4,7 +4,8 @@ default=valid_limbs[0])``, ``args = parser.parse_args(rospy.myargv()[1:])``, the
 ``"/robot/limb/" + limb + "/joint_command"`` in the classes it builds) carries the option's
 flags (``PrimitiveCall.name_option``), and the graph names it with the value the launch
 file's ``args`` give the instance (``--limb right``, ``-l left``, ``--limb=right``); with
-none, or arguments not known statically, the ``?`` stays."""
+none, its ``default=`` when that is a literal string; with arguments not known statically
+the ``?`` stays."""
 
 from __future__ import annotations
 
@@ -87,5 +88,59 @@ def test_names_from_argparse_options(write_tree) -> None:
         ("/b", "publish", "/robot/limb/left/joint_command"),
         ("/b", "subscribe", "/robot/position/state"),
         ("/c", "publish", "/robot/limb/?/joint_command"),
-        ("/c", "subscribe", "/robot/?/state"),
+        # no --control-mode: argparse's default, "position"
+        ("/c", "subscribe", "/robot/position/state"),
     }
+
+
+SPAWN = """import argparse
+import sys
+import rospy
+from std_msgs.msg import String
+from std_srvs.srv import Empty
+
+def main():
+    parser = argparse.ArgumentParser()
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument('-file', type=str)
+    source.add_argument('-topic', type=str)
+    parser.add_argument('-gazebo_namespace', type=str, default='')
+    args = parser.parse_args(rospy.myargv()[1:])
+    rospy.init_node('spawn')
+    if args.topic:
+        rospy.Subscriber(args.topic, String, lambda msg: None)
+    rospy.ServiceProxy('%s/spawn' % args.gazebo_namespace, Empty)
+
+if __name__ == "__main__":
+    main()
+"""
+
+
+def test_options_of_a_group_and_literal_defaults(write_tree) -> None:
+    """gazebo_ros' spawn_entity.py: ``-topic`` is an option of a mutually exclusive
+    group of the parser (it was no option at all, the subscription's name ``?``), and
+    ``-gazebo_namespace`` defaults to ``''`` (its client's name stayed ``?/spawn_entity``
+    when the launch file does not give it)."""
+    root = write_tree({
+        "src/sim/package.xml": package_xml("sim"),
+        "src/sim/CMakeLists.txt": "project(sim)\n"
+                                  "catkin_install_python(PROGRAMS scripts/spawn.py)\n",
+        "src/sim/scripts/spawn.py": SPAWN,
+        "src/sim/launch/sim.launch": (
+            '<launch>\n  <node pkg="sim" type="spawn.py" name="a" '
+            'args="-topic /robot_description"/>\n'
+            '  <node pkg="sim" type="spawn.py" name="b" '
+            'args="-file x.sdf -gazebo_namespace /sim"/>\n</launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [sim/launch/sim.launch]\n",
+    })
+    ws = scan([str(root / "src")], {})
+    result = extract_python([str(root / "src" / "sim" / "scripts" / "spawn.py")], ws,
+                            package="sim")
+    assert sorted((c.name, c.name_option, c.name_option_default) for c in result.calls) == [
+        ("?", "-topic", None), ("?/spawn", "-gazebo_namespace", "")]
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    names = {(link.node.name, link.kind, link.rosname.full)
+             for link in model.configuration("c").links}
+    assert names == {("/a", "subscribe", "/robot_description"), ("/a", "client", "/spawn"),
+                     ("/b", "subscribe", "?"), ("/b", "client", "/sim/spawn")}

@@ -735,3 +735,38 @@ def test_the_shipped_jazzy_static_transform_publisher_publishes_tf_static():
     made = {(c.kind, c.name) for c in node.calls}
     assert ("publish", "/tf_static") in made
     assert {("declare", f"translation.{axis}") for axis in "xyz"} <= made
+
+
+def test_a_ros1_trajectory_controller_takes_the_joint_trajectory_controller_model(write_tree):
+    # ros_controllers exports effort_controllers/JointTrajectoryController (and its
+    # position, velocity, pos_vel and pos_vel_acc kin) from joint_trajectory_controller,
+    # not from effort_controllers: CHAMP's gazebo.launch spawned one, PLUGIN_NOT_FOUND,
+    # and its command topic had no subscriber
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/control.launch": """
+            <launch>
+              <rosparam>
+                arm_controller: {type: effort_controllers/JointTrajectoryController,
+                                 joints: [shoulder]}
+              </rosparam>
+              <node pkg="controller_manager" type="spawner" name="spawner"
+                    args="arm_controller"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\ndistro: noetic\n"
+                        "configurations:\n  c: [robot/launch/control.launch]\n",
+    })
+    config = _configuration(root)
+    arm = _instance(config, "/arm_controller")
+    assert arm.node is not None and arm.node.model.startswith(
+        "noetic/joint_trajectory_controller ")
+    links = {(link.kind, link.name) for link in arm.links}
+    assert {("subscribe", "/arm_controller/command"),
+            ("publish", "/arm_controller/state"),
+            ("action-server", "/arm_controller/follow_joint_trajectory"),
+            ("server", "/arm_controller/query_state")} <= links
+    assert not [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]

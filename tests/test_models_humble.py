@@ -140,3 +140,38 @@ def test_the_shipped_humble_ackermann_controller_takes_an_unstamped_reference_to
     subscribed = {(c.name, c.type) for n in model.nodes for c in n.calls
                   if c.kind == "subscribe"}
     assert ("~reference_unstamped", "geometry_msgs/msg/Twist") in subscribed
+
+
+def test_the_shipped_humble_controller_manager_subscribes_its_description_only_without_one(
+        write_tree):
+    """humble's ros2_control_node subscribes ~/robot_description only when no
+    robot_description parameter is given (ros2_control humble 0941f73c
+    controller_manager/src/controller_manager.cpp:289-291; the other constructor, which
+    the node never builds, subscribes under another condition). The model carried no
+    condition: franka_ros2, which gives the manager its description, had a false
+    subscriber-without-publisher in 11 configurations (survey Z23)."""
+    model = Library().find("controller_manager", "humble")
+    assert model is not None and model.distro == "humble"
+    node = model.node("ros2_control_node")
+    assert node is not None
+    (sub,) = [c for c in node.calls if c.kind == "subscribe"
+              and c.name == "~robot_description"]
+    assert [(c.statement, c.text) for c in sub.conditions] == [
+        ("if", "robot_description.empty()")]
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot", build_type="ament_cmake"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/control.launch.xml": """
+            <launch>
+              <node pkg="controller_manager" exec="ros2_control_node">
+                <param name="robot_description" value="&lt;robot name='r'/&gt;"/>
+              </node>
+            </launch>
+            """,
+        "project.yaml": "project: p\ndistro: humble\n"
+                        "configurations:\n  c: [robot/launch/control.launch.xml]\n",
+    })
+    model_ = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model_.configurations
+    assert not [link for link in config.links if link.kind == "subscribe"
+                and link.rosname.full.endswith("/robot_description")]

@@ -7,12 +7,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
 from haros_arch.models.attach import Attacher
 from haros_arch.models.library import Library
 from haros_arch.plugins.classes import narrow
+from haros_arch.robot.attach import param_get_command
 from haros_arch.workspace import Workspace
 
 DESCRIPTION = """<?xml version="1.0"?>
@@ -132,6 +135,42 @@ def test_the_description_robot_state_publisher_publishes_is_the_managers(tmp_pat
         node="/robot_state_publisher", key="robot_description")])
     assert "/arm_driver" in {n.name for n in config.nodes}
     assert not [d for d in config.diagnostics if d.code == "HARDWARE_UNKNOWN"]
+
+
+def test_a_description_copied_with_ros2_param_get_is_the_one_it_reads(tmp_path):
+    """articubot_one (and the tutorials after it): the manager's ``robot_description`` is
+    ``Command(['ros2 param get --hide-type /robot_state_publisher robot_description'])``,
+    robot_state_publisher's parameter the xacro command gives; the hardware was not
+    known (HARDWARE_UNKNOWN) and the manager partial."""
+    urdf = tmp_path / "arm.urdf.xacro"
+    urdf.write_text(DESCRIPTION)
+    decls = [NodeDecl("/robot_state_publisher", "robot_state_publisher",
+                      "robot_state_publisher", ros_version=2), manager()]
+    config = configure(tmp_path, decls, [
+        ParamDecl("/robot_state_publisher/robot_description", "?",
+                  command=f"xacro {urdf} sim:=true", node="/robot_state_publisher",
+                  key="robot_description"),
+        ParamDecl("/controller_manager/robot_description", "?",
+                  command="ros2 param get --hide-type robot_state_publisher "
+                          "robot_description", node="/controller_manager",
+                  key="robot_description")])
+    assert links_of(config, "/arm_driver") == [("publish", "/arm/joint_states"),
+                                                ("read", "/arm_driver/hw_ns")]
+    assert ("publish", "/gripper_status") in links_of(config, "/controller_manager")
+    assert not [d for d in config.diagnostics if d.code == "HARDWARE_UNKNOWN"]
+
+
+@pytest.mark.parametrize(("command", "expected"), [
+    ("ros2 param get --hide-type /robot_state_publisher robot_description",
+     ("/robot_state_publisher", "robot_description")),
+    ("/opt/ros/humble/bin/ros2 param get --spin-time 5 rsp robot_description",
+     ("/rsp", "robot_description")),
+    ("ros2 param get ?/rsp robot_description", None),
+    ("ros2 param list /rsp", None),
+    ("xacro robot.urdf.xacro", None),
+])
+def test_ros2_param_get_command_lines(command: str, expected: object):
+    assert param_get_command(command) == expected
 
 
 def test_a_manager_whose_description_is_not_known_is_partial(tmp_path):

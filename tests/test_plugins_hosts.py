@@ -790,3 +790,35 @@ def test_ros1_a_controller_topic_named_by_its_parameter_is_linked():
     assert links_of(config, "/r/head") == [
         ("read", "/r/head/topic_command"), ("read", "/r/head/type"),
         ("subscribe", "/r/head/command_head_pan")]
+
+
+def test_a_controllers_section_of_the_managers_parameter_file_is_the_controllers(
+        tmp_path: Path):
+    # franka_ros2 (and ros2_control's demos) give ros2_control_node one file whose
+    # section for each controller is its parameters: rcl's global --params-file reaches
+    # every node of the process, the controllers too. JointImpedanceWithIKExample-
+    # Controller reads arm_id, k_gains, d_gains from it without declaring them: read but
+    # never set (survey Z23). A spawner's own file still wins
+    manager = ros2(NodeDecl("/controller_manager", "controller_manager", "ros2_control_node"))
+    manager.param_files = [({
+        "controller_manager": {"ros__parameters": {"arm": {"type": "my/Arm"},
+                                                   "hand": {"type": "my/Arm"}}},
+        "arm": {"ros__parameters": {"gain": 3.0, "arm_id": "panda"}},
+        "hand": {"ros__parameters": {"gain": 4.0}},
+        "other": {"ros__parameters": {"gain": 1.0}}}, where(3))]
+    own = tmp_path / "hand.yaml"
+    own.write_text("hand:\n  ros__parameters:\n    gain: 5.0\n")
+    arm = plugin("my", "my/Arm", "my::Arm", call("read", "gain", "double"),
+                 call("read", "arm_id", "str"))
+    decls = [manager, ros2(NodeDecl("/spawner", "controller_manager", "spawner", args="arm")),
+             ros2(NodeDecl("/spawner_hand", "controller_manager", "spawner",
+                           args=f"hand --param-file {own}"))]
+    config = graph(decls, [ParamDecl("/controller_manager/arm.type", "my/Arm"),
+                           ParamDecl("/controller_manager/hand.type", "my/Arm")],
+                   nodes=[arm], root=str(tmp_path))
+    assert sorted(n.name for n in config.nodes if n.origin == "plugin") == ["/arm", "/hand"]
+    values = {name: config.parameter(name) for name in (
+        "/arm/gain", "/arm/arm_id", "/hand/gain")}
+    assert all(p is not None and p.set_by_launch and p.is_read for p in values.values())
+    assert [values[name].value for name in values] == [3.0, "panda", 5.0]
+    assert config.parameter("/other/gain") is None  # no node of the process is named so

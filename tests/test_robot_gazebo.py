@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import os
+import shutil
 
 import pytest
-from conftest import FIXTURES
+from conftest import FIXTURES, package_xml
+from lxml import etree
 
 from haros_arch import pipeline
 from haros_arch.model.load import from_data
@@ -14,8 +16,10 @@ from haros_arch.model.model import Model
 from haros_arch.model.runtime import Configuration
 from haros_arch.model.serialise import model_to_data
 from haros_arch.project import ConfigurationSpec, Project
+from haros_arch.robot import xacro
 from haros_arch.robot.attach import xacro_command
 from haros_arch.robot.bridge import _from_arguments
+from haros_arch.workspace import Workspace
 
 ROS1 = str(FIXTURES / "robot" / "ros1")
 ROS2 = str(FIXTURES / "robot" / "ros2")
@@ -155,6 +159,83 @@ def test_ros2_spawner_file_is_read_as_it_is():
         "bot2_description/models/bot2.sdf", "bot2_description/models/bot2.sdf")
 
 
+@pytest.mark.parametrize("launch", ["spawn.launch.py", "cat.launch.py"])
+def test_a_description_read_as_it_is_keeps_a_prefix_no_xmlns_declares(write_tree, launch):
+    """IOES-Lab/dave's DVL models: ``<sensor type="custom" gz:type="dvl">`` with no
+    ``xmlns:gz``, spawned with ``ros_gz_sim create -file``. sdformat (tinyxml2) reads it,
+    and so does urdfdom the output of ``cat``; lxml's namespace error had made the
+    whole file unread (ROBOT_DESCRIPTION_FILE) and its plugins lost."""
+    sdf = ('<?xml version="1.0"?>\n<sdf version="1.9">\n  <model name="dvl">\n'
+           '    <link name="base">\n'
+           '      <sensor name="dvl" type="custom" gz:type="dvl">\n'
+           "        <topic>/dvl/velocity</topic>\n      </sensor>\n"
+           '      <sensor name="imu" type="imu">\n'
+           '        <plugin name="imu_driver" filename="libgazebo_ros_imu_sensor.so">\n'
+           "          <ros><remapping>~/out:=imu</remapping></ros>\n"
+           "        </plugin>\n      </sensor>\n    </link>\n  </model>\n</sdf>\n")
+    head = ("import os\nfrom ament_index_python.packages import get_package_share_directory\n"
+            "from launch import LaunchDescription\nfrom launch.substitutions import Command\n"
+            "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+            "    sdf = os.path.join(get_package_share_directory('dvl'), 'models', "
+            "'dvl.sdf')\n    return LaunchDescription([\n")
+    root = write_tree({
+        "dvl/package.xml": package_xml("dvl", "ament_cmake"),
+        "dvl/CMakeLists.txt": "project(dvl)\n",
+        "dvl/models/dvl.sdf": sdf,
+        "dvl/launch/spawn.launch.py": head + (
+            "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+            "             arguments=['-entity', 'dvl', '-file', sdf])])\n"),
+        "dvl/launch/cat.launch.py": head + (
+            "        Node(package='robot_state_publisher', executable='robot_state_publisher',"
+            "\n             parameters=[{'robot_description': Command(['cat ', sdf])}]),\n"
+            "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+            "             arguments=['-entity', 'dvl', '-topic', 'robot_description'])])\n"),
+    })
+    config = configuration(str(root), f"dvl/launch/{launch}")
+    assert made(config) == [("/imu_driver", "publish", "/imu", "sensor_msgs/msg/Imu")]
+    assert "ROBOT_DESCRIPTION_FILE" not in {d.code for d in config.diagnostics}
+
+
+def test_an_earlier_parse_error_does_not_count_for_a_file_read_as_it_is(tmp_path):
+    """lxml's exception carries the errors of earlier parses in the same thread too: a
+    broken file read before made the namespace-only errors look fatal (the test above
+    failed after the ROS 1 launch tests)."""
+    with pytest.raises(etree.XMLSyntaxError):
+        etree.fromstring(b"<a><b></a>")
+    sdf = tmp_path / "dvl.sdf"
+    sdf.write_text('<sdf version="1.9"><model name="dvl"><link name="base">'
+                   '<sensor name="dvl" type="custom" gz:type="dvl"/></link></model></sdf>')
+    description = xacro.expand(str(sdf), {}, Workspace(root=str(tmp_path)), {},
+                               by_xacro=False)
+    assert description.root is not None and not description.diagnostics
+
+
+def test_xacro_still_rejects_a_prefix_no_xmlns_declares(write_tree):
+    """xacro reads its files with minidom, namespace-aware: ``xacro:property`` without
+    ``xmlns:xacro`` fails there, and so it does here."""
+    root = write_tree({
+        "bot/package.xml": package_xml("bot", "ament_cmake"),
+        "bot/CMakeLists.txt": "project(bot)\n",
+        "bot/urdf/bot.urdf.xacro": (
+            '<?xml version="1.0"?>\n<robot name="bot">\n'
+            '  <xacro:property name="r" value="1"/>\n  <link name="base"/>\n</robot>\n'),
+        "bot/launch/rsp.launch.py": (
+            "import os\nfrom ament_index_python.packages import get_package_share_directory\n"
+            "from launch import LaunchDescription\nfrom launch.substitutions import Command\n"
+            "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+            "    urdf = os.path.join(get_package_share_directory('bot'), 'urdf', "
+            "'bot.urdf.xacro')\n    return LaunchDescription([\n"
+            "        Node(package='robot_state_publisher', executable='robot_state_publisher',"
+            "\n             parameters=[{'robot_description': Command(['xacro ', urdf])}]),\n"
+            "        Node(package='gazebo_ros', executable='spawn_entity.py',\n"
+            "             arguments=['-entity', 'bot', '-topic', 'robot_description'])])\n"),
+    })
+    config = configuration(str(root), "bot/launch/rsp.launch.py")
+    assert [(d.code, d.location.file, d.location.line) for d in config.diagnostics
+            if d.code == "ROBOT_DESCRIPTION_FILE"] == [
+        ("ROBOT_DESCRIPTION_FILE", "bot/urdf/bot.urdf.xacro", 3)]
+
+
 def test_robot_descriptions_survive_the_json_model():
     model = analyse(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "0"})
     again = from_data(model_to_data(model))
@@ -165,9 +246,9 @@ def test_robot_descriptions_survive_the_json_model():
 
 @pytest.mark.parametrize(("command", "expected"), [
     ("/opt/ros/noetic/bin/xacro --inorder '/ws/a b.urdf.xacro' ns:=/r x:=1",
-     ("/ws/a b.urdf.xacro", {"ns": "/r", "x": "1"})),
-    ("?/xacro /ws/r.xacro", ("/ws/r.xacro", {})),
-    ("cat /ws/r.urdf", ("/ws/r.urdf", {})),
+     ("/ws/a b.urdf.xacro", {"ns": "/r", "x": "1"}, "xacro")),
+    ("?/xacro /ws/r.xacro", ("/ws/r.xacro", {}, "xacro")),
+    ("cat /ws/r.urdf", ("/ws/r.urdf", {}, "cat")),
     ("python3 make_urdf.py", None),
 ])
 def test_xacro_command_lines(command: str, expected: object):
@@ -245,6 +326,56 @@ def test_ros2_python_xacro_process_file_gives_the_description():
     assert (description.name, description.links) == ("/pf/robot_description",
                                                      ["pf_base_link"])
     assert ("/bot2/drive", "publish", "/bot2/odom", "nav_msgs/msg/Odometry") in made(config)
+
+
+PARSE_DOC = """import os
+
+import xacro
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def get_xacro_to_doc(xacro_file_path, mappings):
+    doc = xacro.parse(open(xacro_file_path))
+    xacro.process_doc(doc, mappings=mappings)
+    return doc
+
+
+def generate_launch_description():
+    path = os.path.join(get_package_share_directory("bot2_description"), "urdf",
+                        "bot2.urdf.xacro")
+    doc = get_xacro_to_doc(path, {"prefix": "pd_"})
+    raw = xacro.parse(open(path))
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             namespace="pd", parameters=[{"robot_description": doc.toxml()}]),
+        Node(package="gazebo_ros", executable="spawn_entity.py", namespace="pd",
+             arguments=["-topic", "robot_description", "-entity", "bot2"]),
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             namespace="raw", parameters=[{"robot_description": raw.toxml()}]),
+        Node(package="gazebo_ros", executable="spawn_entity.py", namespace="raw",
+             arguments=["-topic", "robot_description", "-entity", "raw"]),
+    ])
+"""
+
+
+def test_ros2_python_xacro_parse_and_process_doc_give_the_description(tmp_path):
+    """bcr_bot's rviz.launch.py: ``doc = xacro.parse(open(path))``, then
+    ``xacro.process_doc(doc, mappings=...)`` in place and ``doc.toxml()``; both calls
+    were not interpreted (LAUNCH_PY_UNSUPPORTED) and the description not known. A
+    document only parsed is the file as it is."""
+    root = tmp_path / "ws"
+    shutil.copytree(ROS2, root)
+    (root / "bot2_description" / "launch" / "parse_doc.launch.py").write_text(PARSE_DOC)
+    config = configuration(str(root), "bot2_description/launch/parse_doc.launch.py")
+    assert sorted((d.name, d.file, tuple(d.links)) for d in config.robot_descriptions
+                  if d.name.startswith("/pd/")) == [
+        ("/pd/robot_description", "bot2_description/urdf/bot2.urdf.xacro", ("pd_base_link",))]
+    # only parsed: the file as it is, a cat command's output
+    assert "command \"cat bot2_description/urdf/bot2.urdf.xacro\" is not run" in {
+        d.message.split(";")[0] for d in config.diagnostics}
+    assert not [d for d in config.diagnostics if d.code.startswith("LAUNCH_PY")]
 
 
 def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_controllers():

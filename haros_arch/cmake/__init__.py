@@ -98,8 +98,24 @@ def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
     sources = SourceMap(interpreter, files)
-    return list(dict.fromkeys(source for target in interpreter.targets.values()
-                              if target.kind == "library" for source in sources.own(target)))
+    return list(dict.fromkeys(source for target in _exported(interpreter, sources)
+                              for source in sources.own(target)))
+
+
+def _exported(interpreter: Interpreter, sources: SourceMap) -> list[Target]:
+    """The libraries of a package that another package's targets link: a catkin
+    package's are those its ``catkin_package(LIBRARIES ...)`` names, with the package
+    libraries they link (catkin puts only those in ``catkin_LIBRARIES``: stdr_robot
+    exports stdr_handle_robot, not the motion controllers only its nodelet links); where
+    that call is not known for certain (none read, or under an ``if()`` not decided),
+    every library of the package."""
+    libraries = [t for t in interpreter.targets.values() if t.kind == "library"]
+    if interpreter.catkin_exports is None or interpreter.catkin_exports_unsure:
+        return libraries
+    named = set(interpreter.catkin_exports)
+    return list({linked.name: linked for target in libraries
+                 if target.name in named or target.output_name in named
+                 for linked in sources.closure(target) if linked.kind == "library"}.values())
 
 
 def package_links(name: str, workspace: Workspace) -> list[str]:
@@ -118,8 +134,8 @@ def _package_links(name: str, workspace: Workspace) -> list[str]:
     interpreter, _ = _interpret(package, workspace, files)
     sources = SourceMap(interpreter, files, build_depends=build_depends(package),
                         package=package.name)
-    return list(dict.fromkeys(other for target in interpreter.targets.values()
-                              if target.kind == "library" for other in sources.packages(target)))
+    return list(dict.fromkeys(other for target in _exported(interpreter, sources)
+                              for other in sources.packages(target)))
 
 
 # a macro two targets that compile one source define differently, or that a target and a

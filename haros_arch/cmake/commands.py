@@ -549,7 +549,7 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
 IGNORED = frozenset({
     "project", "cmake_minimum_required", "include_directories",
     "link_directories", "add_dependencies", "target_include_directories",
-    "target_compile_features", "catkin_package", "ament_package", "message",
+    "target_compile_features", "ament_package", "message",
     "add_custom_target", "add_custom_command", "add_test", "configure_file",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",
     "rosidl_generate_interfaces", "ament_export_dependencies", "ament_export_include_directories",
@@ -706,6 +706,30 @@ def _target_link_libraries(it: Interpreter, command: Invocation, args: list[str]
         if (package and package != project and package not in _LINK_KEYWORDS
                 and _PACKAGE_NAME.fullmatch(package) and package not in target.packages):
             target.packages.append(package)
+
+
+# catkin_package()'s keywords (catkin's own list)
+_CATKIN_PACKAGE_KEYWORDS = frozenset({"INCLUDE_DIRS", "LIBRARIES", "CATKIN_DEPENDS", "DEPENDS",
+                                      "CFG_EXTRAS", "EXPORTED_TARGETS",
+                                      "SKIP_CMAKE_CONFIG_GENERATION",
+                                      "SKIP_PKG_CONFIG_GENERATION"})
+
+
+@handles("catkin_package")
+def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``catkin_package(LIBRARIES a b ...)``: the libraries catkin puts in another
+    package's ``${catkin_LIBRARIES}`` when it finds this one (``Interpreter.catkin_exports``;
+    no LIBRARIES: none)."""
+    names: list[str] = []
+    taking = False
+    for arg in args:
+        if arg in _CATKIN_PACKAGE_KEYWORDS:
+            taking = arg == "LIBRARIES"
+        elif taking and arg:
+            names.append(arg)
+    if not it.sure():
+        it.catkin_exports_unsure = True
+    it.catkin_exports = list(dict.fromkeys([*(it.catkin_exports or []), *names]))
 
 
 @handles("set_target_properties")

@@ -154,6 +154,12 @@ class Interpreter:
         # ExternalProject_Add of the package's own folder with cache entries (a
         # superbuild): where, the external project's name, the entries
         self.superbuild: tuple[Location, str, dict[str, str]] | None = None
+        # catkin_package(LIBRARIES ...): the libraries another package's
+        # ``${catkin_LIBRARIES}`` links; None before any catkin_package() is read
+        self.catkin_exports: list[str] | None = None
+        # a catkin_package() read under an if() not decided, or with a value not known:
+        # which libraries it exports is not known
+        self.catkin_exports_unsure = False
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
         self.expanded = 0  # characters of arguments expanded, against MAX_EXPANDED
@@ -210,6 +216,11 @@ class Interpreter:
 
     def current_conditions(self) -> tuple[Condition, ...]:
         return (*self.returns, *self.conditions)
+
+    def sure(self) -> bool:
+        """Whether the command being run runs for certain, with what it reads known: under
+        no if() or return() not decided, reading no value not known."""
+        return not (self._unsure or self.conditions or self.returns)
 
     @property
     def variables(self) -> Mapping[str, str]:

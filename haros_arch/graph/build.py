@@ -231,7 +231,12 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                     link(instance, each, remaps, resources, config, info)
                     continue
             base = resolved_name(instance, each, remaps, resources)
-            if each.name_param is not None and base.is_unresolved:
+            if each.name_param is not None and base.is_unresolved and (
+                each.name.count(UNKNOWN_MARK) == 1
+                or _given_name(each, instance, resources) == each.name
+            ):
+                # (a name of several unknown runs keeps the others: unset only when the
+                # parameter gave none)
                 config.diagnostics.append(_name_param_unset(instance, each))
             if each.name_arg is not None and UNKNOWN_MARK in each.name and not (
                 program_argument(instance, each.name_arg)
@@ -687,10 +692,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         if given:
             call = replace(call, name=_filled(call.name, given), name_arg=None)
     if call.name_option is not None and UNKNOWN_MARK in call.name:
-        # an option's value (``"/robot/limb/" + args.limb``); not given: the ``?``
-        given = program_option(instance, call.name_option)
-        if given:
-            call = replace(call, name=_filled(call.name, given), name_option=None)
+        # an option's value (``"/robot/limb/" + args.limb``), else its default when the
+        # arguments are known and do not give it; neither: the ``?``
+        given = program_option(instance, call.name_option, call.name_option_default)
+        filled = _filled(call.name, given) if given is not None else ""
+        if filled.strip("/~"):  # an empty value is no name (a ``?`` alone given "")
+            call = replace(call, name=filled, name_option=None)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
@@ -709,7 +716,7 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
 
 def _filled(name: str, value: str) -> str:
     """``name`` with ``value`` in the place of its (first) ``?``."""
-    if value.startswith(("/", "~")) and (
+    if value.startswith(("/", "~")) and name.count(UNKNOWN_MARK) == 1 and (
             name in (UNKNOWN_MARK, "~" + UNKNOWN_MARK) or name.endswith("/" + UNKNOWN_MARK)):
         # a global or private name is not resolved in the handle's namespace (the private
         # handle's ``~`` takes no slash: ``~?``)

@@ -416,13 +416,15 @@ def program_argument(instance: NodeInstance, index: int) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
-def program_option(instance: NodeInstance, flags: str) -> str | None:
+def program_option(instance: NodeInstance, flags: str,
+                   default: str | None = None) -> str | None:
     """The value the instance's command line gives an option that argparse parses
     (``PrimitiveCall.name_option``: its flags, ``-l --limb``): ``--limb right``,
     ``--limb=right``, ``-l right`` or ``-lright``, the last one given, in the words the
     client library leaves (argparse reads ``rospy.myargv()`` or ``sys.argv``, whose
-    roslaunch words are no option); None when the arguments are not known or do not give
-    it (its default is not told)."""
+    roslaunch words are no option); ``default`` (argparse's, when the code's is known)
+    when the arguments are known and do not give it; None when they are not known, or
+    do not give it and no default is told."""
     views = program_views(instance)
     names = flags.split()
     found = set()
@@ -438,6 +440,8 @@ def program_option(instance: NodeInstance, flags: str) -> str | None:
                 elif not flag.startswith("--") and len(flag) == 2 and word.startswith(
                         flag) and len(word) > 2 and not word.startswith("--"):
                     value = word[2:]
+        if value is None:
+            value = default
         if value is None:
             return None
         found.add(value)

@@ -126,6 +126,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          name_arg=_program_arg(c.get("name_arg")),
                          name_option=c.get("name_option") if isinstance(
                              c.get("name_option"), str) else None,
+                         name_option_default=c.get("name_option_default") if isinstance(
+                             c.get("name_option_default"), str) else None,
                          transport=c.get("transport"),
                          variable=c.get("variable"),
                          also=c.get("also") if isinstance(c.get("also"), list) else None,

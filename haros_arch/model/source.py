@@ -135,6 +135,10 @@ class PrimitiveCall:
     # joint trajectory action server's ``--limb``, which names its topics. The graph takes
     # the value from the arguments the launch file gives the instance
     name_option: str | None = field(default=None, metadata={"optional": True})
+    # the option's ``default=`` (a literal string), what argparse gives it when the
+    # launch file's arguments, known statically, do not name it: gazebo_ros'
+    # spawn_entity.py ``-gazebo_namespace``, default ``''``, so ``/spawn_entity``
+    name_option_default: str | None = field(default=None, metadata={"optional": True})
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
     # publisher, which also publishes the topic of every transport plugin it loads; for
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when

@@ -151,6 +151,9 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 hosts.append((inner, own))
         for host, instance in hosts:
             for slot in host.slots:
+                if slot.since is not None and instance.node is not None and \
+                        _older(_version(instance.node, workspace), slot.since):
+                    continue  # a release that does not load them
                 if slot.names == SPAWNER:
                     choices = list(_spawned(instance, started, params, workspace, config,
                                             unnamed=decl.name_guessed))
@@ -218,8 +221,10 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
         reader = _plugin_instance(instance, choice, node, config)
-        if slot.names == EXPORTED and decl is not None:  # a node the process makes: its
-            # files apply by name
+        if slot.names in (EXPORTED, SPAWNER) and decl is not None:
+            # a node the process makes: its files apply by name (a controller's section
+            # of the file given to ros2_control_node, after its spawner's file, whose
+            # values win: rcl's global arguments reach every node of the process)
             _process_params(decl, reader, params)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
@@ -1029,11 +1034,22 @@ def _parent_rule(row: Sources, node: Node, workspace: Workspace) -> bool:
     """Whether the plugin's version resolves relative topics in the parent namespace."""
     if row.parent_since is None:
         return False
+    numbers = _version(node, workspace)
+    return bool(numbers) and numbers >= row.parent_since
+
+
+def _version(node: Node, workspace: Workspace) -> tuple[int, ...]:
+    """The version of the node's package: the workspace's package.xml, else its
+    interface model's; () when neither tells."""
     package = workspace.packages.get(node.package)
     version = package.version if package is not None else (
         node.model.split()[1] if node.model and len(node.model.split()) > 1 else "")
-    numbers = tuple(int(part) for part in version.split(".")[:3] if part.isdigit())
-    return bool(numbers) and numbers >= row.parent_since
+    return tuple(int(part) for part in (version or "").split(".")[:3] if part.isdigit())
+
+
+def _older(version: tuple[int, ...], since: tuple[int, ...]) -> bool:
+    """A version known and older than ``since``."""
+    return bool(version) and version < since
 
 
 # -- ROS 1 ros_control ------------------------------------------------------------------

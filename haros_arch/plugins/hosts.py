@@ -74,6 +74,9 @@ class Slot:
     # parameters the host's loading code declares on the node of each plugin
     # (``placement="node"``), whatever the plugin's own code does
     declares: tuple[str, ...] = ()
+    # the version of the host's package from which it loads these plugins; an older one
+    # loads none (its code does the work itself); not known: it is taken to load them
+    since: tuple[int, ...] | None = None
 
 
 @dataclass(frozen=True)
@@ -186,12 +189,14 @@ HOSTS: tuple[Host, ...] = (
     Host("nav2_costmap_2d", ("nav2_costmap_2d",), 2, _NAV2_COSTMAP),
     # bt_navigator loads its navigators by id (bt_navigator.cpp: ``navigators``, each
     # class from ``<id>.plugin``; the two defaults when the list is not set); a navigator
-    # names its action and parameters by its ``getName()``, not by the id
+    # names its action and parameters by its ``getName()``, not by the id. From Iron
+    # (1.2) on: Humble's (1.1.20, bt_navigator.cpp:125) builds its two navigators itself
     Host("nav2_bt_navigator", ("bt_navigator", "nav2_bt_navigator::BtNavigator"), 2, (
         Slot("navigators", "{name}.plugin", ("nav2_core", "nav2_core::NavigatorBase"),
              defaults=(("navigate_to_pose", "nav2_bt_navigator::NavigateToPoseNavigator"),
                        ("navigate_through_poses",
-                        "nav2_bt_navigator::NavigateThroughPosesNavigator"))),)),
+                        "nav2_bt_navigator::NavigateThroughPosesNavigator")),
+             since=(1, 2)),)),
     # move_base: planners named by their class (initialised with the class's short
     # name), recovery behaviours and costmap layers by {name, type} lists; a layer is
     # initialised with the name ``<costmap>/<layer>``
@@ -295,12 +300,20 @@ EXTENDS: dict[str, str] = {
 # nodelets are ``pcl/VoxelGrid``, ..., exported by pcl_ros (plugins/nodelet/*.xml);
 # ros2_control's mock hardware is ``mock_components/GenericSystem`` (humble also
 # ``fake_components/GenericSystem``), exported by hardware_interface
-# (mock_components_plugin_description.xml, fake_components_plugin_description.xml)
+# (mock_components_plugin_description.xml, fake_components_plugin_description.xml);
+# ROS 1 ros_controllers' trajectory controllers are ``effort_controllers/
+# JointTrajectoryController`` and the same under position_controllers,
+# velocity_controllers, pos_vel_controllers and pos_vel_acc_controllers, exported by
+# joint_trajectory_controller (ros_control_plugins.xml)
+_TRAJECTORY = ("joint_trajectory_controller",)
 LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
     "move_group": ("moveit_ros_move_group", "moveit_ros_manipulation"),
     "pcl": ("pcl_ros",),
     "mock_components": ("hardware_interface",),
-    "fake_components": ("hardware_interface",)}
+    "fake_components": ("hardware_interface",),
+    **{kind: _TRAJECTORY for kind in ("position_controllers", "velocity_controllers",
+                                      "effort_controllers", "pos_vel_controllers",
+                                      "pos_vel_acc_controllers")}}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

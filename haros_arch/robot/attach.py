@@ -28,7 +28,7 @@ import shlex
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import partial
-from typing import Any, cast
+from typing import Any, NamedTuple, cast
 
 import yaml
 from lxml import etree
@@ -258,8 +258,9 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
             return None
         if not os.path.isfile(path):
             path = share_source(workspace, path)
+        # the simulator reads the file itself, not through xacro
         return _expanded(path, {}, workspace.relpath(path), decl.location, workspace,
-                         config)
+                         config, by_xacro=False)
     if spawn.param is not None:
         name = resolve(spawn.param, decl.namespace)
         param = _last_param(launch.params, name)
@@ -334,11 +335,12 @@ def hardware(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstan
 def _description_param(instance: NodeInstance, config: Configuration,
                        given: Sequence[ParamDecl]) -> ParamDecl | None:
     """The launch parameter a controller manager takes its description from: its own
-    ``robot_description``, else that of a node publishing a topic it subscribes to under
-    that name (remaps applied: the graph's links)."""
+    ``robot_description`` (the one a ``ros2 param get`` command in it reads), else that
+    of a node publishing a topic it subscribes to under that name (remaps applied: the
+    graph's links)."""
     own = _last_param(given, instance.name.rstrip("/") + "/" + DESCRIPTION_KEY)
     if own is not None:
-        return own
+        return _copied(own, given)
     for link in config.links:
         if link.node is not instance or link.kind != "subscribe" or (
                 (link.call.name if link.call else "").rsplit("/", 1)[-1] != DESCRIPTION_KEY):
@@ -351,16 +353,65 @@ def _description_param(instance: NodeInstance, config: Configuration,
     return None
 
 
+MAX_COPIES = 8  # ``ros2 param get`` commands followed, one to the next
+
+
+def _copied(param: ParamDecl, given: Sequence[ParamDecl]) -> ParamDecl:
+    """The launch parameter whose value ``param`` takes when its command is ``ros2 param
+    get NODE NAME`` (articubot_one's controller manager: ``Command(['ros2 param get
+    --hide-type /robot_state_publisher robot_description'])``, run as the manager
+    starts): that node's parameter as the launch files give it; else ``param``."""
+    seen = {id(param)}
+    for _ in range(MAX_COPIES):
+        named = param_get_command(param.command) if param.command is not None else None
+        other = _last_param(given, named[0].rstrip("/") + "/" + named[1]) \
+            if named is not None else None
+        if other is None or id(other) in seen:
+            break
+        seen.add(id(other))
+        param = other
+    return param
+
+
+# ``ros2 param get``'s options that take a value (the rest are flags)
+_PARAM_GET_VALUED = {"--spin-time", "--parameter-file"}
+
+
+def param_get_command(command: str) -> tuple[str, str] | None:
+    """The node (its full name, as the CLI makes a relative one absolute) and the
+    parameter a ``ros2 param get [OPTIONS] NODE NAME`` command line reads."""
+    try:
+        words = shlex.split(command)
+    except ValueError:
+        words = command.split()
+    for index in range(len(words) - 2):
+        if os.path.basename(words[index]) != "ros2" or words[index + 1:index + 3] != [
+                "param", "get"]:
+            continue
+        positional: list[str] = []
+        rest = iter(words[index + 3:])
+        for word in rest:
+            if word in _PARAM_GET_VALUED:
+                next(rest, None)
+            elif not word.startswith("-"):
+                positional.append(word)
+        if len(positional) != 2 or any(UNKNOWN_MARK in w for w in positional):
+            return None
+        node, name = positional
+        return (node if node.startswith("/") else "/" + node), name
+    return None
+
+
 def _from_param(param: ParamDecl, workspace: Workspace, config: Configuration,
                 ) -> tuple[RobotDescription, xacro.Description] | None:
     """The description a launch parameter's xacro (or ``cat``) command makes, if known."""
     parsed = xacro_command(param.command) if param.command is not None else None
-    if parsed is None or UNKNOWN_MARK in parsed[0]:
+    if parsed is None or UNKNOWN_MARK in parsed.path:
         return None
-    path, args = parsed
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
-              for key, value in args.items()}
-    return _expanded(path, values, param.name, param.location, workspace, config)
+              for key, value in parsed.args.items()}
+    return _expanded(parsed.path, values, param.name, param.location, workspace, config,
+                     by_xacro=parsed.by_xacro)
 
 
 def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
@@ -371,7 +422,20 @@ def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
     return found
 
 
-def xacro_command(command: str) -> tuple[str, dict[str, str]] | None:
+class XacroCommand(NamedTuple):
+    """A ``xacro`` (or ``cat``) command line: its file, ``name:=value`` arguments and
+    tool (``cat`` gives the file as it is, to a reader that does not run xacro)."""
+
+    path: str
+    args: dict[str, str]
+    tool: str
+
+    @property
+    def by_xacro(self) -> bool:
+        return self.tool != "cat"
+
+
+def xacro_command(command: str) -> XacroCommand | None:
     """The file and ``name:=value`` arguments of a ``xacro`` (or ``cat``) command line."""
     try:
         words = shlex.split(command)
@@ -392,7 +456,7 @@ def xacro_command(command: str) -> tuple[str, dict[str, str]] | None:
                 args[key] = value
             elif not each.startswith("-") and path is None:
                 path = each
-        return (path, args) if path else None
+        return XacroCommand(path, args, tool) if path else None
     return None
 
 
@@ -404,19 +468,19 @@ def _from_command(param: ParamDecl, name: str, workspace: Workspace,
     if parsed is None:
         _note(config, param.location, f"command \"{param.command}\" is not a xacro command")
         return None
-    path, args = parsed
-    if UNKNOWN_MARK in path:
-        _note(config, param.location, f"the xacro file {path} is not known")
+    if UNKNOWN_MARK in parsed.path:
+        _note(config, param.location, f"the xacro file {parsed.path} is not known")
         return None
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
-              for key, value in args.items()}
-    return _expanded(path, values, name, param.location, workspace, config)
+              for key, value in parsed.args.items()}
+    return _expanded(parsed.path, values, name, param.location, workspace, config,
+                     by_xacro=parsed.by_xacro)
 
 
 def _expanded(path: str, args: Mapping[str, str | Value], name: str, where: Location,
-              workspace: Workspace, config: Configuration,
+              workspace: Workspace, config: Configuration, by_xacro: bool = True,
               ) -> tuple[RobotDescription, xacro.Description]:
-    expanded = xacro.expand(path, args, workspace, named_at=where)
+    expanded = xacro.expand(path, args, workspace, named_at=where, by_xacro=by_xacro)
     config.diagnostics.extend(expanded.diagnostics)
     record = RobotDescription(
         name, workspace.relpath(path) if expanded.files else None, where,

@@ -31,7 +31,7 @@ import re
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, cast
 
 import yaml
 from lxml import etree
@@ -66,10 +66,18 @@ MAX_FILE_BYTES = 4 * 1024 * 1024
 CONDITION = "{urn:haros-arch}condition"
 FILE = "{urn:haros-arch}file"  # the file an element comes from (on roots and MARKED)
 MARKED = ("plugin", "ros2_control")
+# the namespace of a prefix no ``xmlns`` declares, in a file read as it is
+UNDECLARED = "urn:haros-arch:undeclared:"
 _TOKENS = re.compile(r"\$\$+[{(]|\$\{[^}]*\}|\$\([^)]*\)|[^$]+|\$[^{($]+|\$$|\$")
 # the start of one parameter of a macro's ``params``, as xacro's ``re_macro_arg`` reads
 # it: its name, ``:=`` (or ``=``) and the spaces after it
 _MACRO_HEAD = re.compile(r"\s*([^\s:=]+?)\s*:?=", re.S)
+
+
+def _undeclared(name: str) -> str:
+    """``prefix:local`` of a prefix no ``xmlns`` declares, in a namespace of its own."""
+    prefix, _, local = name.partition(":")
+    return f"{{{UNDECLARED}{prefix}}}{local}"
 
 
 def partial_text(text: str, reason: str) -> str | Value:
@@ -167,7 +175,8 @@ class _Stop(Exception):
 
 def is_xacro(element: Any) -> bool:
     return isinstance(element.tag, str) and element.tag.startswith("{") and \
-        "xacro" in element.tag[1:element.tag.index("}")]
+        "xacro" in element.tag[1:element.tag.index("}")] and \
+        not element.tag.startswith("{" + UNDECLARED)  # read as it is: no xacro runs
 
 
 def line_of(element: Element | None) -> int:
@@ -182,14 +191,19 @@ def local_name(element: Element) -> str:
 
 def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
            environment: Mapping[str, str] | None = None,
-           named_at: Location | None = None) -> Description:
+           named_at: Location | None = None, by_xacro: bool = True) -> Description:
     """The robot description in ``path`` expanded with ``args`` (``name:=value`` of the
     xacro command line). Never raises for bad input. ``named_at``: where the file is
     named (a launch file's xacro command), the place of what is said of the file itself
-    before it is read (not there: its line 0 is no place to look)."""
+    before it is read (not there: its line 0 is no place to look). ``by_xacro``: the file
+    goes through xacro, whose XML reader (minidom's, namespace-aware) rejects a prefix no
+    ``xmlns`` declares; False: the tool that uses it reads it as it is (sdformat for
+    ``gz sim``'s ``create -file``, urdfdom for a ``cat`` command's output, both
+    tinyxml2), which keeps such a prefix as part of the name (gz-sim's custom sensors,
+    ``<sensor type="custom" gz:type="dvl">``)."""
     expander = _Expander(path, dict(args), workspace,
                          workspace.environment if environment is None else environment,
-                         named_at)
+                         named_at, by_xacro)
     description = expander.description
     try:
         root = expander.read(path, None)
@@ -206,8 +220,10 @@ def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
 
 class _Expander:
     def __init__(self, path: str, args: dict[str, Any], workspace: Workspace,
-                 environment: Mapping[str, str], named_at: Location | None = None) -> None:
+                 environment: Mapping[str, str], named_at: Location | None = None,
+                 by_xacro: bool = True) -> None:
         self.description = Description(path)
+        self.by_xacro = by_xacro
         self.named_at = named_at
         self.args = args
         self.workspace = workspace
@@ -253,7 +269,7 @@ class _Expander:
             self.unknown(at, f"{self.workspace.relpath(path)} is not read")
             return None
         try:
-            root = etree.fromstring(data, xml_parser(), base_url=path)
+            root = self.parse(data, path)
         except etree.XMLSyntaxError as err:
             line = err.lineno or 0
             self.description.diagnostics.append(diag.make(
@@ -263,6 +279,29 @@ class _Expander:
             return None
         self.description.files.append(path)
         root.set(FILE, path)
+        return root
+
+    def parse(self, data: bytes, path: str) -> Element:
+        """The document in ``data``; raises ``XMLSyntaxError`` where the tool reading it
+        would fail. Read as it is (not ``by_xacro``), a prefix no ``xmlns`` declares is
+        no error: the element or attribute keeps it in its name."""
+        parser = xml_parser()
+        try:
+            return etree.fromstring(data, parser, base_url=path)
+        except etree.XMLSyntaxError:
+            # the parser's own log: the exception's holds earlier parses' errors too
+            errors = list(cast(Any, parser.error_log))
+            if self.by_xacro or not errors or any(
+                    e.domain != etree.ErrorDomains.NAMESPACE for e in errors):
+                raise
+        root = etree.fromstring(data, xml_parser(recover=True), base_url=path)
+        for element in root.iter():  # lxml sets no name with an undeclared prefix
+            tag = element.tag
+            if isinstance(tag, str) and ":" in tag and not tag.startswith("{"):
+                element.tag = _undeclared(tag)
+            for key in [str(k) for k in element.attrib]:
+                if ":" in key and not key.startswith("{"):
+                    element.set(_undeclared(key), element.attrib.pop(key))
         return root
 
     # -- the walk --------------------------------------------------------------------------

@@ -13,6 +13,7 @@ import dataclasses
 import functools
 import os
 import re
+import weakref
 from collections.abc import Callable, Collection, Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
@@ -62,6 +63,49 @@ def _fieldless_packages(found: Sequence[Diagnostic]) -> set[str]:
     return packages
 
 
+class _HeaderFacts:
+    """What the diagnostics of a run's headers (``IncludeSetup.diagnostics``) say: the
+    packages whose messages are known only by name (``_fieldless_packages``) and the
+    prefixes of the C libraries whose headers are missing (``synthesis.
+    library_prefixes``). Both are unions over the diagnostics, which a run only adds
+    to between two questions, so each question reads those added since the last one
+    (every unit asked them again of the whole run's list)."""
+
+    def __init__(self) -> None:
+        self._read = 0
+        self._fieldless: set[str] = set()
+        self._libraries: set[str] = set()
+
+    def _update(self, found: Sequence[Diagnostic]) -> None:
+        if len(found) < self._read:  # not a list that grew: read anew
+            self._read, self._fieldless, self._libraries = 0, set(), set()
+        added = found[self._read:]
+        self._read = len(found)
+        self._fieldless |= _fieldless_packages(added)
+        self._libraries |= synthesis.library_prefixes(
+            d.message for d in added if d.code == "CPP_INCLUDE_MISSING")
+
+    def fieldless(self, setup: IncludeSetup) -> set[str]:
+        self._update(setup.diagnostics)
+        return set(self._fieldless)
+
+    def libraries(self, setup: IncludeSetup) -> set[str]:
+        self._update(setup.diagnostics)
+        return set(self._libraries)
+
+
+_HEADER_FACTS: weakref.WeakKeyDictionary[IncludeSetup, _HeaderFacts] = (
+    weakref.WeakKeyDictionary())
+
+
+def _header_facts(setup: IncludeSetup) -> _HeaderFacts:
+    """The ``_HeaderFacts`` of ``setup``'s diagnostics, one per setup."""
+    facts = _HEADER_FACTS.get(setup)
+    if facts is None:
+        facts = _HEADER_FACTS[setup] = _HeaderFacts()
+    return facts
+
+
 _NO_MATCHING = "no matching "  # function / member function / constructor for call
 _NO_CONVERSION = "no known conversion from '"
 
@@ -88,16 +132,19 @@ def _errors(tu: TranslationUnit) -> list[_Error]:
     found: list[_Error] | None = getattr(tu, "_haros_errors", None)
     if found is None:
         found = []
+        full: dict[str, str] = {}  # a parse's errors are in a few files
         for d in tu.diagnostics:
             if d.severity < ClangDiagnostic.Error:
                 continue
             loc = d.location
             file = loc.file
             name = file.name if file is not None else None
+            if name is not None and name not in full:
+                full[name] = os.path.abspath(name)
+            spelling = d.spelling
             notes = tuple(n.spelling for n in d.children if _NO_CONVERSION in n.spelling) \
-                if d.spelling.startswith(_NO_MATCHING) else ()
-            found.append(_Error(d.spelling, name,
-                                os.path.abspath(name) if name is not None else None,
+                if spelling.startswith(_NO_MATCHING) else ()
+            found.append(_Error(spelling, name, full[name] if name is not None else None,
                                 loc.line, loc.column, loc.offset, notes))
         tu._haros_errors = found
     return found
@@ -304,8 +351,8 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     unseen = {word for unit in units for word in unit.unseen} | links.opaque_unseen(
         facts) if complete else {"*"}
     built = _built_under(facts, unseen)
-    called = call_conditions.shared(facts, unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
+    called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen))
     given = links.node_rosnames([unit.rosname for unit in units], known, unseen)
     # the one name the units agree on; else unknown (``links.node_rosnames``), or a
     # process of several nodes named as before from its first file (``_name_nodes``)
@@ -837,7 +884,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
             result.unseen = ["*"]
             return result, []
         errors = [e for e in _errors(tu) if e.name is not None and owned(e.name)]
-        fieldless = _fieldless_packages(setup.diagnostics)
+        fieldless = _header_facts(setup).fieldless(setup)
         for error in errors[:MAX_ERRORS_PER_FILE]:
             assert error.path is not None
             code = ("CPP_MESSAGE_FIELD" if _names_fieldless_type(error.spelling, fieldless)
@@ -853,7 +900,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
                             clients=None if ros2 else ros1_clients(
                                 path, workspace, setup.generated, read))
         finder.run()
-        hidden = _hidden(path, errors, finder, source, fieldless, workspace)
+        places = _Places(finder, source)
+        hidden = _hidden(path, errors, places, fieldless, workspace)
         if wrappers is None:
             wrappers = _again_for(tu, errors, finder, hidden, source, fieldless)
             if wrappers is not None:
@@ -882,7 +930,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there
     held: dict[bytes, set[str]] = {}
-    words = _unseen(errors, finder, source, held) | finder.unseen
+    words = _unseen(errors, places, held) | finder.unseen
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in words)
     # also where the node is handed on (``*``): the words of the code that hands it,
@@ -893,7 +941,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
         result.handed = sorted(finder.handed) if finder.handed else [""]
     if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
         result.facts = [*result.facts, *call_conditions.hidden_facts(
-            finder.unit_cursor(), owned, _error_words(errors, finder, source))]
+            finder.unit_cursor(), owned, _error_words(errors, places))]
     finder.release()
     headers = [path, *read]
     for include in tu.get_includes():
@@ -946,14 +994,14 @@ def _version_unknown(tu: TranslationUnit, source: SourceCache,
     return found
 
 
-def _hidden(path: str, errors: list[_Error], finder: CallFinder,
-            source: SourceCache, fieldless: set[str], workspace: Workspace
-            ) -> list[Diagnostic]:
+def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str],
+            workspace: Workspace) -> list[Diagnostic]:
     """Where the errors left can hide a ROS call (``recall``): the API call sites of the
     unit's source and of the workspace headers with errors that have no call extracted
     near them (nor a call of the same name the parse resolved to another function), and
     the errors inside a function that holds such a site. None in a unit without
     errors: there the parse read every call, and the walk judged each."""
+    finder, source = places.finder, places.source
     near: dict[str, list[recall.Site]] = {}
     std = _declared_in(finder.tu)
     errors = [e for e in errors if not (_names_fieldless_type(e.spelling, fieldless)
@@ -1002,7 +1050,7 @@ def _hidden(path: str, errors: list[_Error], finder: CallFinder,
                     "CPP_ERROR_NEAR_CALL", workspace.location(name, error.line, error.column),
                     function=around[2], start=around[0], end=around[1],
                     detail=error.spelling))
-    found.extend(_node_given(errors, finder, source, workspace))
+    found.extend(_node_given(errors, places, workspace))
     return found[:recall.MAX_REASONS]
 
 
@@ -1184,41 +1232,88 @@ _DECLARATOR = frozenset({
     CursorKind.TEMPLATE_NON_TYPE_PARAMETER, CursorKind.TEMPLATE_TEMPLATE_PARAMETER})
 
 
-def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache,
+class _Places:
+    """What a unit's errors are inside, each worked out once per unit: ``_unseen``,
+    ``_node_given`` and ``_error_words`` ask it of the same errors, and many errors of a
+    unit are in one function (the innermost function holding a line, the words of the
+    code an error can hide a statement in, the words that name the node there)."""
+
+    def __init__(self, finder: CallFinder, source: SourceCache) -> None:
+        self.finder = finder
+        self.source = source
+        self._innermost: dict[tuple[str, int], Cursor | None] = {}
+        self._words: dict[tuple[str, int], frozenset[bytes] | None] = {}
+        self._names: dict[int, tuple[Cursor, frozenset[str]]] = {}
+
+    def innermost(self, path: str, line: int) -> Cursor | None:
+        """``_innermost`` of the finder's functions."""
+        key = (path, line)
+        if key not in self._innermost:
+            self._innermost[key] = _innermost(self.finder.functions, path, line)
+        return self._innermost[key]
+
+    def node_names(self, function: Cursor) -> frozenset[str]:
+        """``owners.node_names`` of ``function`` (kept with it: its id stays its own)."""
+        found = self._names.get(id(function))
+        if found is None:
+            found = self._names[id(function)] = (function, node_names(function))
+        return found[1]
+
+    def words(self, error: _Error) -> frozenset[bytes] | None:
+        """The words of the code where ``error`` can hide a statement: the text of the
+        function that holds it (a constructor's, with the types of its class's
+        members, which its initialisers construct unnamed), else the error's line;
+        None when its file cannot be read."""
+        assert error.path is not None
+        key = (error.path, error.line)
+        if key in self._words:
+            return self._words[key]
+        data = self.source.get(error.path)
+        found: set[bytes] | None = None
+        if data is not None:
+            found = set()
+            function = self.innermost(error.path, error.line)
+            if function is None:
+                lines = data.splitlines()
+                if 0 < error.line <= len(lines):
+                    found.update(WORDS.findall(lines[error.line - 1]))
+            else:
+                # from its member initialisers and body on: not the class that qualifies
+                # a method's name (every error in a method of the class would name it)
+                start = next((child.extent.start.offset for child in function.get_children()
+                              if child.kind not in _DECLARATOR), function.extent.start.offset)
+                found.update(WORDS.findall(data[start:function.extent.end.offset]))
+                owner = function.semantic_parent
+                if owner is not None and owner.kind in _CLASSES:
+                    # a method names its own class (``&Costmap2DROS::reconfigureCB``),
+                    # which it does not construct
+                    found.discard(owner.spelling.encode())
+                    if function.kind == CursorKind.CONSTRUCTOR:
+                        for member in owner.get_children():
+                            if member.kind == CursorKind.FIELD_DECL:
+                                found.update(WORDS.findall(member.type.spelling.encode()))
+        self._words[key] = words = frozenset(found) if found is not None else None
+        return words
+
+
+def _unseen(errors: list[_Error], places: _Places,
             owners: dict[bytes, set[str]] | None = None) -> set[bytes]:
-    """The words of the code where ``errors`` can hide a statement: the text of each
-    function that holds one (a constructor's, with the types of its class's members,
-    which its initialisers construct unnamed), else the error's line. With ``owners``,
-    each word found only in functions gets the owners of those functions there (what
-    ``_reached`` counts only where one of them runs)."""
+    """The words of the code where ``errors`` can hide a statement (``_Places.words``);
+    ``*`` when the file of one cannot be read. With ``owners``, each word found only in
+    functions gets the owners of those functions there (what ``_reached`` counts only
+    where one of them runs)."""
     words: set[bytes] = set()
     loose: set[bytes] = set()  # words of an error outside any function
     for error in errors:
         if error.path is None:
             continue
-        data = source.get(error.path)
-        if data is None:
+        found = places.words(error)
+        if found is None:
             return {b"*"}
-        function = _innermost(finder.functions, error.path, error.line)
+        function = places.innermost(error.path, error.line)
         if function is None:
-            lines = data.splitlines()
-            if 0 < error.line <= len(lines):
-                loose.update(WORDS.findall(lines[error.line - 1]))
+            loose |= found
             continue
-        # from its member initialisers and body on: not the class that qualifies a
-        # method's name (every error in a method of the class would name it)
-        start = next((child.extent.start.offset for child in function.get_children()
-                      if child.kind not in _DECLARATOR), function.extent.start.offset)
-        found = set(WORDS.findall(data[start:function.extent.end.offset]))
-        owner = function.semantic_parent
-        if owner is not None and owner.kind in _CLASSES:
-            # a method names its own class (``&Costmap2DROS::reconfigureCB``), which
-            # it does not construct
-            found.discard(owner.spelling.encode())
-            if function.kind == CursorKind.CONSTRUCTOR:
-                for member in owner.get_children():
-                    if member.kind == CursorKind.FIELD_DECL:
-                        found.update(WORDS.findall(member.type.spelling.encode()))
         words |= found
         if owners is not None:
             holder = owner_of(function)
@@ -1230,8 +1325,8 @@ def _unseen(errors: list[_Error], finder: CallFinder, source: SourceCache,
     return words | loose
 
 
-def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
-                workspace: Workspace) -> list[Diagnostic]:
+def _node_given(errors: list[_Error], places: _Places, workspace: Workspace
+                ) -> list[Diagnostic]:
     """The errors on a name the parse does not know in a statement that passes the node
     to it (``recall.node_given``): ``CPP_NODE_TO_UNKNOWN``, once per line."""
     found: list[Diagnostic] = []
@@ -1240,14 +1335,14 @@ def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
         match = recall.UNKNOWN_NAME.search(error.spelling)
         if match is None or error.path is None or (error.path, error.line) in said:
             continue
-        function = _innermost(finder.functions, error.path, error.line)
-        lines = source.lines(error.path) if function is not None else None
+        function = places.innermost(error.path, error.line)
+        lines = places.source.lines(error.path) if function is not None else None
         if function is None or lines is None:
             continue
-        given = recall.node_given(lines, error.line, node_names(function))
+        given = recall.node_given(lines, error.line, places.node_names(function))
         if given is not None:
             said.add((error.path, error.line))
-            finder.handed.add(owner_of(function))
+            places.finder.handed.add(owner_of(function))
             name = match.group("name") or match.group("scope")
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
@@ -1255,7 +1350,7 @@ def _node_given(errors: list[_Error], finder: CallFinder, source: SourceCache,
     return found
 
 
-def _error_words(errors: list[_Error], finder: CallFinder, source: SourceCache
+def _error_words(errors: list[_Error], places: _Places
                  ) -> list[tuple[set[str], tuple[str, int] | None]]:
     """The words of the code each error can hide a statement in (``_unseen``), with
     the error's place when it is outside the functions (its line's words: the
@@ -1264,8 +1359,8 @@ def _error_words(errors: list[_Error], finder: CallFinder, source: SourceCache
     for error in errors:
         if error.path is None:
             continue
-        words = {w.decode() for w in _unseen([error], finder, source)}
-        inside = _innermost(finder.functions, error.path, error.line) is not None
+        words = {w.decode() for w in _unseen([error], places)}
+        inside = places.innermost(error.path, error.line) is not None
         found.append((words, None if inside or "*" in words else (error.path, error.line)))
     return found
 
@@ -1354,13 +1449,14 @@ def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
             files.add(error.name or "")
     if not spaces:
         return []
+    wanted = {space.encode() for space in spaces}  # most names are in no such space
     headers: list[str] = []
     for name in sorted(files):
         text = source.get(name)
         for match in _QUALIFIED.finditer(text or b""):
-            space = match.group(1).decode()
-            if space not in spaces:
+            if match.group(1) not in wanted:
                 continue
+            space = match.group(1).decode()
             written = match.group(2).decode()
             base = next((written[: -len(s)] for s in _POINTER_SUFFIXES
                          if written.endswith(s) and len(written) > len(s)), written)
@@ -1372,9 +1468,9 @@ def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
         # with no include of its own; the member's type was an error and the node class
         # invalid (``no member named 'srv' in namespace 'rcl_interfaces'``)
         for match in _QUALIFIED_ROS2.finditer(text or b""):
-            space = match.group(1).decode()
-            if space not in spaces:
+            if match.group(1) not in wanted:
                 continue
+            space = match.group(1).decode()
             header = ros2_interfaces.header(space, match.group(2).decode(),
                                             match.group(3).decode())
             if header not in headers and setup.message_header(header):
@@ -1409,9 +1505,9 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
 
     first = mine(tu)
     before = len(first)
-    fieldless = _fieldless_packages(setup.diagnostics)
-    names = synthesis.Names(fieldless, _declared_in(tu), synthesis.library_prefixes(
-        d.message for d in setup.diagnostics if d.code == "CPP_INCLUDE_MISSING"))
+    facts = _header_facts(setup)
+    fieldless = facts.fieldless(setup)
+    names = synthesis.Names(fieldless, _declared_in(tu), facts.libraries(setup))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     # the functions of each file, by line, and its API call sites (the same text in
     # every parse of the unit: each file is read once, not once per parse)
@@ -1464,19 +1560,24 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
 
 def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
     """The names ``tu`` declares directly in a top-level namespace, by its name (every
-    block that opens it), each namespace read once."""
-    found: dict[str, frozenset[str]] = {}
+    block that opens it), each namespace read once per parse: the names are kept with
+    ``tu`` (the synthesis and ``_hidden`` ask the same parse when declaring names made
+    it no better), not its cursors, which refer to it."""
+    kept: dict[str, frozenset[str]] | None = getattr(tu, "_haros_declared", None)
+    found: dict[str, frozenset[str]] = {} if kept is None else kept
+    tu._haros_declared = found
     blocks: dict[str, list[Cursor]] = {}
 
     def declared(scope: str) -> frozenset[str]:
+        if scope in found:
+            return found[scope]
         if not blocks:  # the unit's top-level namespaces, one visit
             blocks[""] = []
             for block in tu.cursor.get_children():
                 if block.kind == CursorKind.NAMESPACE:
                     blocks.setdefault(block.spelling, []).append(block)
-        if scope not in found:
-            found[scope] = frozenset(child.spelling for block in blocks.get(scope, ())
-                                     for child in block.get_children())
+        found[scope] = frozenset(child.spelling for block in blocks.get(scope, ())
+                                 for child in block.get_children())
         return found[scope]
 
     return declared

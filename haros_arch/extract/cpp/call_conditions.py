@@ -157,7 +157,10 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 by_caller.setdefault(_place(function), (function, {}))[1][place] = (
                     usr + (VIRTUAL if virtual else ""))
     for function, wanted in by_caller.values():
-        caller = function.canonical.get_usr() if eligible(function) else ""
+        # the function holding the calls; a constructor too, whose sites are none where
+        # no file of the node builds it (``shared``)
+        caller = function.canonical.get_usr() if eligible(function) or (
+            function.kind == CursorKind.CONSTRUCTOR) else ""
         for place, (usr, under) in _conditions(function, wanted, reader, enter).items():
             text = conditions_text(under) if under is not None else ""
             called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
@@ -349,13 +352,19 @@ def _overridden_in(cls: Cursor, name: str, types: list[str], owned: Callable[[st
     return found
 
 
-def shared(facts: Iterable[Fact], unseen: Collection[str]) -> dict[str, tuple[Condition, ...]]:
+def shared(facts: Iterable[Fact], unseen: Collection[str],
+           unbuilt: Callable[[str], bool] = lambda usr: False,
+           ) -> dict[str, tuple[Condition, ...]]:
     """Function USR -> the source conditions every call of it in the node's files is
     made under, with those its calling function is called under in turn (a base
     method's calls count too, as they may run an override). None for a function with
     no call seen, used otherwise, one a unit declares and names where the parse left an
     error (``HIDDEN``: a call of it may be hidden; any, ``*`` in ``unseen``, when a
-    unit was not read), or with one site unconditional."""
+    unit was not read), or with one site unconditional. A site in a constructor no file
+    of the node calls (``unbuilt``, ``links.constructor_unbuilt``) is none: humble
+    controller_manager's ``subscribe_to_robot_description_topic()``, under ``if
+    (robot_description.empty())`` in the constructor ros2_control_node builds and under
+    another condition in one it never builds."""
     sites: dict[str, dict[str, tuple[tuple[Condition, ...] | None, str, bool]]] = {}
     referenced: set[str] = set()
     bases: dict[str, list[str]] = {}
@@ -388,7 +397,7 @@ def shared(facts: Iterable[Fact], unseen: Collection[str]) -> dict[str, tuple[Co
         # its own calls, and those of the methods it overrides that may dispatch to it
         found_sites = [(under, caller) for u in every
                        for under, caller, virtual in sites.get(u, {}).values()
-                       if u == usr or virtual]
+                       if (u == usr or virtual) and not (caller and unbuilt(caller))]
         if not found_sites:
             return ()
         result: tuple[Condition, ...] | None = None

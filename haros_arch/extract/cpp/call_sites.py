@@ -13,13 +13,13 @@ files pass: one ROS call per value.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import msg_types
-from .expressions import is_default_argument
+from .expressions import is_default_argument, strip
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
@@ -90,12 +90,21 @@ class CallSites:
             if marker is not None:
                 return (marker,)  # type: ignore[return-value]
         self._active.add(key)
+        arguments = self._arguments(parm)
         try:
-            values = [read(arg, scope) for arg, scope in self._arguments(parm)]
+            values = [read(arg, scope) for arg, scope in arguments]
         finally:
             self._active.discard(key)
-        if values and all(v == values[0] for v in values):
+        if values and all(v == values[0] for v in values) and not (
+                strings and len(values) > 1 and None in values[0]  # type: ignore[operator]
+                and not _one_variable(arg for arg, _ in arguments)):
             return values[0]
+        # several calls, not one known value: each call's own, filled where the node's
+        # calls are (``links``); calls that pass unknown strings from different variables
+        # agree on nothing, each may pass another parameter's value (f1tenth's mux adds a
+        # channel per parameter, ``add_channel(rand_drive_topic, ...)``, a method that
+        # constructs it); the same member or variable passed by each is one value (nav2's
+        # velocity smoother builds its OdomSmoother with ``odom_topic_`` at three places)
         if strings and len(values) > 1:
             marker = self.placeholder(parm)
             if marker is not None:
@@ -853,6 +862,27 @@ def _may_name(function: Cursor, spelling: bytes, source: dict[str, bytes]) -> bo
 def _defined_in(function: Cursor) -> str | None:
     where = function.location.file
     return where.name if where is not None else None
+
+
+def _one_variable(args: Iterable[Cursor]) -> bool:
+    """Whether each argument is the same variable, member or parameter, as written (or a
+    copy of it: a string passed by value)."""
+    found: set[tuple[str, int]] = set()
+    for arg in args:
+        node = strip(arg)
+        while node.kind == CursorKind.CALL_EXPR and node.referenced is not None and (
+                node.referenced.kind == CursorKind.CONSTRUCTOR) and (
+                node.referenced.semantic_parent is not None) and _copies(
+                node.referenced, node.referenced.semantic_parent):
+            inner = [c for c in node.get_children() if c.kind.is_expression()]
+            if len(inner) != 1:
+                break
+            node = strip(inner[0])
+        if node.kind not in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) or (
+                node.referenced is None):
+            return False
+        found.add(key_of(node.referenced.canonical))
+    return len(found) == 1
 
 
 def _index_of(function: Cursor, parm: Cursor) -> int | None:

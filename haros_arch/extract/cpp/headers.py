@@ -337,6 +337,9 @@ class IncludeSetup:
         self.diagnostics: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
+        # the texts of the files being scanned, the unit's source first, each including the
+        # next: where a ROS 2 interface header is included, they write its type's name
+        self._including: list[str] = []
         self._fallbacks: dict[str, bool] = {}  # header read from FALLBACK -> ROS 2 code
         # (header, folder of a quoted include) -> what ``_prepare`` found, when it
         # changed nothing
@@ -463,9 +466,17 @@ class IncludeSetup:
         if path in self._scanned:
             return self._scanned[path]
         self._scanned[path] = False  # a header that includes itself back
+        self._including.append(text)
+        try:
+            ros2 = self._scan_includes(text, self.workspace.location(path),
+                                       os.path.dirname(path))
+        finally:
+            self._including.pop()
+        self._scanned[path] = ros2
+        return ros2
+
+    def _scan_includes(self, text: str, file: Location, folder: str) -> bool:
         ros2 = False
-        file = self.workspace.location(path)
-        folder = os.path.dirname(path)
         line, counted = 1, 0  # the line of the include, counted on from the last one
         for match in _INCLUDE.finditer(text):
             header = match.group(2).strip()
@@ -483,7 +494,6 @@ class IncludeSetup:
                 more, _ = read_text(found, self.workspace.location(found))
                 if more is not None:
                     ros2 = self.scan(found, more) or ros2
-        self._scanned[path] = ros2
         return ros2
 
     def _prepare(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
@@ -804,6 +814,7 @@ class IncludeSetup:
         names += interfaces.catalogue_names(True).get(package, [])
         names += [key.split("/")[1] for key in interfaces.WELL_KNOWN
                   if key.startswith(package + "/")]
+        names += self._written_names(package, kind)
         name = ros2_interfaces.camel_case(snake, names)
         definition: interfaces.Interface | None = None
         path = files.get(name + extension, "")
@@ -821,6 +832,14 @@ class IncludeSetup:
         for dep in ros2_interfaces.dependencies(definition, kind):
             if dep not in self._handled:
                 self._prepare(dep, "", False, where)
+
+    def _written_names(self, package: str, kind: str) -> list[str]:
+        """The names ``package::kind::Name`` that the files including the header being
+        synthesised write: a name with capitals together (``GetPositionIK``) has a file
+        name (``get_position_ik.hpp``) that capitalising each word would not give back."""
+        pattern = re.compile(rf"\b{re.escape(package)}\s*::\s*{kind}\s*::\s*([A-Za-z_]\w*)")
+        return [m.group(1) for text in reversed(self._including)
+                for m in pattern.finditer(text)]
 
     def _resolve(self, header: str) -> str | None:
         system = toolchain.system_include_dirs() if self.system_headers else (STD_STANDIN,)

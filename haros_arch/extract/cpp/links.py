@@ -95,9 +95,13 @@ DEFINED = -16
 # constructor of the member's class: another unit that reads the member and has none of
 # those constructors holds it as a placeholder (``CallSites.member_placeholder``)
 MEMBER = -17
+# the index of a fact that says the call site (the fact's site) is in the constructor whose
+# USR is the fact's value, which its unit never calls: where no file of the node calls it
+# either, the site passes nothing (``NodeFacts.idle``)
+WITHIN = -18
 # facts that say no call of their function
 NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
-                       OPAQUE, DEFINED, MEMBER})
+                       OPAQUE, DEFINED, MEMBER, WITHIN})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
@@ -142,6 +146,10 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                         facts.append((usr, LITERAL, str(index), site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
+            within = caller.canonical.get_usr() if (
+                caller.kind == CursorKind.CONSTRUCTOR and not sites.callers(caller)) else ""
+            if within:
+                facts.append((usr, WITHIN, within, site))
             if conditioned is not None and callee.kind == CursorKind.CONSTRUCTOR:
                 under = conditioned(caller, call)
                 if under:
@@ -358,6 +366,28 @@ class NodeFacts:
         return {fact[0] for fact in self.facts if fact[1] == RUNS_WHEN_CALLED}
 
     @functools.cached_property
+    def within(self) -> dict[str, str]:
+        """Call site -> the constructor it is in, which its unit never calls (``WITHIN``)."""
+        return {site: caller for _usr, index, caller, site in self.facts if index == WITHIN}
+
+    def idle(self, unseen: Collection[str]) -> Callable[[str], bool]:
+        """Whether a call site is in code the node never runs: a constructor no file of
+        the node calls, of a class its files construct by another one (no loader builds
+        it by that one then), where no parse error may hide a call of it and no variable
+        outside functions names its class (a plugin's export). f1tenth_simulator's mux:
+        ``Channel::Channel() { Channel("", "", -1, nullptr); }``, a default constructor
+        nothing calls, passed "" to the constructor that subscribes (mux.cpp:242-251): a
+        subscription to the node's own name."""
+        unbuilt = constructor_unbuilt(self, unseen)
+
+        def idle(site: str) -> bool:
+            caller = self.within.get(site)
+            return caller is not None and unbuilt(caller) and (
+                class_of(caller) in self.constructed) and (
+                caller.rsplit("@F@", 1)[0] not in self.named_classes)
+        return idle
+
+    @functools.cached_property
     def hosted(self) -> dict[tuple[str, int], str]:
         calling = self.called | {fact[0] for fact in self.facts if fact[1] == CALLED_VIRTUAL}
         return {(usr, int(site)): " ".join(dict.fromkeys(
@@ -376,8 +406,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
-    unbuilt = _unbuilt(known, unseen)
+    unbuilt = constructor_unbuilt(known, unseen)
     unrun = never_run(known, unseen)
+    idle = known.idle(unseen)
     for call in calls:
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
@@ -399,7 +430,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
-        for filled in _expand(text, known.passed, 0, unbuilt, unrun):
+        for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
@@ -479,7 +510,7 @@ def node_rosnames(names: Iterable[str | None], facts: NodeFacts,
     return made or [resolve_name(candidates[0][2], facts, unseen)]
 
 
-def _unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
+def constructor_unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
     """Whether a USR is a constructor no file of the node calls, whose class no error may
     hide (``_expand``)."""
     def unbuilt(usr: str) -> bool:
@@ -517,7 +548,7 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
     if PLACEHOLDER not in name:
         return name
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
-    found = _expand(name, known.passed, 0, _unbuilt(known, unseen))
+    found = _expand(name, known.passed, 0, constructor_unbuilt(known, unseen))
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))
@@ -583,7 +614,8 @@ def _marked_usrs(text: str) -> set[str]:
 
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             depth: int, unbuilt: Callable[[str], bool] | None = None,
-            unrun: Callable[[str], bool] | None = None) -> list[str]:
+            unrun: Callable[[str], bool] | None = None,
+            idle: Callable[[str], bool] | None = None) -> list[str]:
     """``text`` with its placeholders filled: the placeholders of one function take the
     values of the same call site together (``attach(n, "left")``, ``attach(base,
     "right")`` never give ``base/left``). A value that a caller takes from a parameter of
@@ -591,12 +623,16 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     never runs either (vesc_ackermann's ``getRequiredParam(nh, ...)`` in the constructor
     of a class the nodelet does not build); nor does one of a function ``unrun`` says
     nothing in the node calls or uses (``never_run``), at any depth: the call itself, or
-    the value a caller passes on, is never made."""
+    the value a caller passes on, is never made; nor does a call site ``idle`` says is
+    in code the node never runs (``NodeFacts.idle``), unless every site is."""
     match = _MARK.search(text)
     if match is None:
         return [choose(text)]
     usr = match.group(1)
     sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
+    if idle is not None and len(sites) > 1:
+        running = [values for site, values in passed[usr].items() if not idle(site)]
+        sites = running or sites
     if depth and not sites and unbuilt is not None and unbuilt(usr):
         return []
     if not sites and depth < MAX_DEPTH and unrun is not None and unrun(usr):
@@ -611,7 +647,8 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in _marked_usrs(value) else value
-        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt, unrun):
+        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt, unrun,
+                              idle):
             if filled not in out:
                 out.append(filled)
     if len(out) > MAX_VALUES:

@@ -331,6 +331,7 @@ _PRELUDE = """\
 // haros_arch: permissive declarations of names the parse did not know
 #pragma clang system_header
 #include <string>  // std::to_string of a permissive value (below)
+#include <memory>  // a cast of a permissive value to a shared_ptr (below)
 enum haros_integral : long long {};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
@@ -387,6 +388,12 @@ string to_string(const haros_any &);
 // (ur_robot_driver's ``std::get<std::string>(response.data.at("program_name"))``)
 template <class T> T &get(const haros_any &);
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
+// a permissive value cast as a shared_ptr of a known type (mrpt_map_server's
+// ``std::dynamic_pointer_cast<mrpt::maps::CMetricMap>(obj)`` of an object read from an
+// MRPT archive): no standard overload deduces its pointee
+template <class T> shared_ptr<T> dynamic_pointer_cast(const haros_any &);
+template <class T> shared_ptr<T> static_pointer_cast(const haros_any &);
+template <class T> shared_ptr<T> const_pointer_cast(const haros_any &);
 }
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""
@@ -498,6 +505,12 @@ def _names_a_declared_type(name: str, text: bytes, offset: int) -> bool:
         return False
     declared = _MEMBER_DECLARING.match(text, found.end())
     return declared is not None and declared.group(1).decode() not in _KEYWORDS
+
+
+# a call of a name with a ``_`` after a first word of letters and digits (not after a
+# word, ``::``, ``.`` or ``->``): the first word is the prefix of a C library's functions
+# where ``library_prefixes`` has it (``Names._spread_calls``)
+_LIBRARY_CALL = re.compile(rb"(?<![\w:.>])(([A-Za-z0-9]+)_\w+)\s*\(")
 
 
 def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> bool:
@@ -677,13 +690,22 @@ class Names:
         (motoman's ``robot_id_(robot_id)``, a member initialised, under ``robot``)."""
         if not self.libraries:
             return
-        words = b"|".join(re.escape(p.encode()) for p in sorted(self.libraries, key=len)[::-1])
-        pattern = re.compile(rb"(?<![\w:.>])((?:" + words + rb")_\w+)\s*\(")
+        # a prefix has no ``_`` (``library_prefixes``): one of letters and digits is the
+        # whole run of them a name starts with, so every call of a name with a ``_`` is
+        # found once and its first word looked up (a pattern of all the prefixes tried
+        # each one at every place of the text); other prefixes by that pattern
+        prefixes = {p.encode() for p in self.libraries}
+        plain = all(p.isascii() and p.isalnum() for p in self.libraries)
+        pattern = _LIBRARY_CALL if plain else re.compile(
+            rb"(?<![\w:.>])((" + b"|".join(re.escape(p) for p in sorted(
+                prefixes, key=len)[::-1]) + rb")_\w+)\s*\(")
         for text in self._texts:
             if (id(text), "\0calls") in self._spread_done:
                 continue
             self._spread_done.add((id(text), "\0calls"))
             for found in pattern.finditer(text):
+                if found.group(2) not in prefixes:
+                    continue
                 if self.count >= MAX_NAMES:
                     return
                 name = found.group(1).decode()

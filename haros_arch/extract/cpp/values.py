@@ -277,6 +277,22 @@ def _method_object(call: Cursor) -> Cursor | None:
     return None
 
 
+def permissive_conversion(call: Cursor) -> bool:
+    """Whether ``call`` converts a permissive value (``synthesis.ANY``, of a library the
+    parse does not have) to another type (``held.operator std::string &()``)."""
+    target = call.referenced
+    return call.kind == CursorKind.CALL_EXPR and target is not None and (
+        target.kind == CursorKind.CONVERSION_FUNCTION and not written_arguments(call)
+        and target.semantic_parent is not None and target.semantic_parent.spelling == ANY)
+
+
+def permissive_held(call: Cursor) -> Cursor | None:
+    """The permissive value a ``permissive_conversion`` converts."""
+    callee = first_operand(call)
+    return first_operand(callee) if callee is not None and (
+        callee.kind == CursorKind.MEMBER_REF_EXPR) else None
+
+
 def _size_of(cursor: Cursor) -> Cursor | None:
     """The string of ``s.length()`` / ``s.size()``."""
     call = strip(cursor)
@@ -733,15 +749,11 @@ class Scope:
                 return self.string(left, depth + 1) + self.string(right, depth + 1)
             inner = operand(call)
             return self.string(inner, depth + 1) if inner is not None else UNKNOWN
-        if target.kind == CursorKind.CONVERSION_FUNCTION and not args and (
-            target.semantic_parent is not None and target.semantic_parent.spelling == ANY
-        ):
+        if permissive_conversion(call):
             # a permissive value (of a library the parse does not have) given where a
             # string is taken: the value it holds (``name + "/pose"``, the permissive
             # ``operator+`` of the library's value and the text: ``?/pose``)
-            callee = first_operand(call)  # ``held.operator std::string &``
-            held = first_operand(callee) if callee is not None and (
-                callee.kind == CursorKind.MEMBER_REF_EXPR) else None
+            held = permissive_held(call)
             return self.string(held, depth + 1) if held is not None else UNKNOWN
         if not args and target.spelling == "getName" and target.semantic_parent is not None \
                 and target.semantic_parent.spelling == "this_node":

@@ -74,6 +74,8 @@ from .values import (
     initializer,
     literal,
     own_name,
+    permissive_conversion,
+    permissive_held,
     program_argument,
     program_arguments,
     render,
@@ -531,6 +533,8 @@ class CallFinder:
                 _dependent_made(node) is not None
             ):
                 return True
+            if kind == CursorKind.CXX_NEW_EXPR and _lost_new(node) is not None:
+                return True
         # a walk of a function whose only such call is another template's gives what the
         # rest of ``_function``'s loop gives: a member initialiser clang lost, a
         # construction of a class whose code the unit does not have
@@ -585,6 +589,9 @@ class CallFinder:
             node, conditions = stack.pop()
             if lost and node.kind == CursorKind.UNEXPOSED_EXPR and place_of(node) in lost:
                 self._lost_initialiser(node, *lost[place_of(node)], conditions, scope)
+            if node.kind == CursorKind.CXX_NEW_EXPR and (
+                    unresolved := _lost_new(node)) is not None:
+                self._lost_initialiser(node, *unresolved, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and node.spelling in _TAKEN_AS:
                 self._typed_accessor(node)
             if node.kind == CursorKind.CALL_EXPR and (
@@ -903,9 +910,13 @@ class CallFinder:
                           conditions: tuple[Condition, ...], scope: Scope) -> None:
         """A member of an API class (``action_server_(nh, "follow", boost::bind(...))``)
         whose initialiser clang could not resolve (it names a method an error made
-        invalid): the construction kept as the class's row reads its arguments, its type
-        from the member's, and a diagnostic that says so."""
+        invalid), or a ``new`` of one that it kept unresolved (``_lost_new``): the
+        construction kept as the class's row reads its arguments, its type from the
+        member's (the new-expression's), and a diagnostic that says so."""
         args = [c for c in init.get_children() if c.kind.is_expression()]
+        if init.kind == CursorKind.CXX_NEW_EXPR and len(args) == 1 and (
+                args[0].kind == CursorKind.UNEXPOSED_EXPR and not args[0].spelling):
+            args = [c for c in args[0].get_children() if c.kind.is_expression()]  # (a, b)
         before = len(self.calls)
         self._emit(spec, init, args, made, conditions, scope)
         if len(self.calls) > before:
@@ -1723,8 +1734,10 @@ class CallFinder:
         argument = argument_of(parts)
         if argument is not None:
             return (ArgumentName(name, argument), None)
-        if None not in parts or name.count("?") != 1:
+        if None not in parts:
             return (name, None)
+        if name.count("?") != 1:
+            return (name, self._first_parameter(expr, scope, name.count("?")))
         # the one unknown part: the whole name, or a run of it that the text around keeps
         # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
         unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
@@ -1746,6 +1759,17 @@ class CallFinder:
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
             source = self._parameter_source(unknown[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
+
+    def _first_parameter(self, expr: Cursor, scope: Scope, runs: int) -> NameSource | None:
+        """A name of several unknown runs whose first is a parameter's value
+        (mrpt_map_server's ``pub_mm_topic_ + "/" + layerName + "_gridmap"``): the
+        parameter, which the graph puts in the place of the first ``?``; None when the
+        first run is anything else, or the runs are not one operand each."""
+        unknown = _unknown_operands(expr, scope)
+        if len(unknown) != runs:
+            return None
+        source = self._parameter_source(unknown[0], scope, 0)
+        return None if source is None else (*source, None, None)
 
     def _name_member(self, expr: Cursor | None) -> str | None:
         """The USR of the member ``expr`` is, when no function of this unit writes it
@@ -2455,6 +2479,31 @@ def _lost_initialisers(constructor: Cursor
     return found
 
 
+def _lost_new(expr: Cursor) -> tuple[api.RosFunction, Cursor] | None:
+    """The API row and class of ``new C(args)`` (``expr``, a new-expression), ``C`` a
+    class of a row named as it, that holds no call of a constructor of ``C``: clang keeps
+    only the argument list where an argument depends on a template's parameters
+    (ros_controllers' JointTrajectoryController<...>::init: ``new ActionServer(
+    controller_nh_, "follow_joint_trajectory", std::bind(&JointTrajectoryController::
+    goalCB, this, _1), ...)``)."""
+    made = expr.type.get_canonical().get_pointee()
+    if made.kind != TypeKind.RECORD:
+        return None
+    decl = made.get_declaration()
+    if decl.kind == CursorKind.NO_DECL_FOUND:
+        return None
+    children = list(expr.get_children())
+    if any(node.kind == CursorKind.CALL_EXPR and (
+            (node.referenced is not None and node.referenced.kind == CursorKind.CONSTRUCTOR)
+            or node.spelling == decl.spelling.split("<")[0]) for node in children):
+        return None  # a call of the constructor, resolved or not: read as such
+    if not any(node.kind.is_expression() for node in children):
+        return None  # ``new C`` or ``new C()``: no arguments, no name
+    base = row_class(decl)
+    spec = api.ALL.get((qualified_name(base), base.spelling))
+    return None if spec is None else (spec, base)
+
+
 def _recovered_name(expr: Cursor) -> str:
     """The function a call clang kept only as a recovery expression names
     (``this->declare_parameter(...)`` on an invalid class), or ""."""
@@ -2665,6 +2714,11 @@ def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor
     elif expr.kind == CursorKind.CALL_EXPR and expr.referenced is not None and (
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(children) == 1):
         return _unknown_operands(children[0], scope, depth + 1)  # std::string(a + b)
+    elif permissive_conversion(expr):
+        # a concatenation with a permissive value (``prefix + "/" + layer``, the layer of
+        # a library the parse does not have), converted to the string the call takes
+        held = permissive_held(expr)
+        return [] if held is None else _unknown_operands(held, scope, depth + 1)
     else:
         return []
     found: list[Cursor] = []

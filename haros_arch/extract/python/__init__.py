@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...manifest import ros_version
+from ...model.conditions import Condition
 from ...model.source import PrimitiveCall
 from ...workspace import Workspace
 from .modules import Loader, Module
@@ -71,7 +72,7 @@ def extract_python(sources: list[str], workspace: Workspace, *,
         result.diagnostics.append(diag.make(
             "PY_SEVERAL_NODES", walker.names_at[1], names=", ".join(walker.names),
             outcome=outcome))
-    seen: set[tuple[object, ...]] = set()
+    seen: dict[tuple[object, ...], PrimitiveCall] = {}
     calls = sorted(walker.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     for call in calls:
@@ -92,17 +93,41 @@ def extract_python(sources: list[str], workspace: Workspace, *,
         # (one named by an option of the command line is not one named otherwise)
         key = (call.kind, call.name, call.location, call.node_name, call.type,
                call.name_option)
-        if key in seen or ("?" in call.name and _fitted(call.name, known.get(
+        if key in seen:
+            # the same call on both paths of an if (a function given a local the paths
+            # left different, gazebo_ros' spawn_entity.py's timeout): under neither
+            kept = seen[key]
+            kept.conditions = _either(kept.conditions, call.conditions)
+            continue
+        if ("?" in call.name and _fitted(call.name, known.get(
                 (call.kind, call.location, call.node_name), []))) or (
                 call.type == "?" and key[:4] in typed):
             continue
-        seen.add(key)
+        seen[key] = call
         result.calls.append(call)
         if "?" in call.name:
             result.diagnostics.append(diag.make(
                 "PY_DYNAMIC_NAME", call.location, kind=call.kind, name=call.name))
     result.diagnostics[:0] = loader.diagnostics + walker.diagnostics
     return result
+
+
+def _either(kept: tuple[Condition, ...], other: tuple[Condition, ...],
+            ) -> tuple[Condition, ...]:
+    """The conditions of a call made under ``kept`` or under ``other``: without the one
+    condition they differ in when that is one test's ``if`` and ``else`` (its two paths);
+    else ``kept``, as the call first found has them."""
+    if len(kept) != len(other):
+        return kept
+    differ = [at for at, (one, two) in enumerate(zip(kept, other, strict=True))
+              if one != two]
+    if len(differ) != 1:
+        return kept
+    one, two = kept[differ[0]], other[differ[0]]
+    if {one.statement, two.statement} == {"if", "else"} and (one.text, one.location) == (
+            two.text, two.location) and one.kind == two.kind:
+        return kept[:differ[0]] + kept[differ[0] + 1:]
+    return kept
 
 
 def _fitted(unknown: str, names: list[str]) -> bool:

@@ -34,6 +34,9 @@ class EvaluatorBase:
         self.declared: dict[str, object] = {}
         # defaults of the parameters read so far, for names built from their values
         self.param_defaults: dict[str, object] = {}
+        # the defaults argparse gives the options parsed so far, by their flags
+        # (``PrimitiveCall.name_option``): literal strings only
+        self.option_defaults: dict[str, str] = {}
         self._computing: set[tuple[str, str]] = set()
 
     def eval(self, expr: ast.expr, frame: Frame) -> object:

@@ -312,7 +312,10 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return self.returned(func, expr, frame)
         if isinstance(base, ArgParser) and isinstance(expr.func, ast.Attribute) and (
                 expr.func.attr in ("parse_args", "parse_known_args")):
-            parsed = ProgramOptions(_parser_options(expr.func.value, frame.module.tree))
+            options = _parser_options(expr.func.value, frame.module.tree)
+            self.option_defaults.update(
+                (flags, default) for _, flags, default in options if default is not None)
+            parsed = ProgramOptions(tuple((dest, flags) for dest, flags, _ in options))
             # parse_known_args: the options and the words left
             return parsed if expr.func.attr == "parse_args" else Seq((parsed, Unknown("args")))
         if isinstance(expr.func, ast.Attribute) and expr.func.attr == "get" and isinstance(
@@ -474,18 +477,43 @@ def _length(value: object) -> int:
     return len(value) if isinstance(value, str) else 1
 
 
-def _parser_options(receiver: ast.expr, tree: ast.Module) -> tuple[tuple[str, str], ...]:
+_GROUPS = ("add_mutually_exclusive_group", "add_argument_group")
+
+
+def _parser_receivers(receiver: ast.expr, tree: ast.Module) -> set[str]:
+    """``receiver`` as written, and the groups made of it (``source =
+    parser.add_mutually_exclusive_group()``, gazebo_ros' spawn_entity.py, whose
+    ``-topic`` is one; groups of groups too): their options are the parser's."""
+    found = {ast.unparse(receiver)}
+    groups = [(ast.unparse(n.targets[0]), ast.unparse(n.value.func.value))
+              for n in ast.walk(tree)
+              if isinstance(n, ast.Assign) and len(n.targets) == 1
+              and isinstance(n.value, ast.Call) and isinstance(n.value.func, ast.Attribute)
+              and n.value.func.attr in _GROUPS]
+    grown = True
+    while grown:
+        grown = False
+        for target, made_of in groups:
+            if made_of in found and target not in found:
+                found.add(target)
+                grown = True
+    return found
+
+
+def _parser_options(receiver: ast.expr, tree: ast.Module,
+                    ) -> tuple[tuple[str, str, str | None], ...]:
     """The options ``add_argument`` gives a parser: every such call in the module on a
     receiver written as ``receiver`` is (``parser.add_argument("-l", "--limb",
-    dest="limb")``), each as (``dest``, its flags) as argparse names it: ``dest=``, else
+    dest="limb")``), or on a group made of it, each as (``dest``, its flags, its
+    ``default=`` when that is a literal string) as argparse names it: ``dest=``, else
     the first long flag, else the first short one, without dashes, ``-`` as ``_``.
     Positional arguments are not options."""
-    written = ast.unparse(receiver)
-    found: dict[str, str] = {}
+    written = _parser_receivers(receiver, tree)
+    found: dict[str, tuple[str, str | None]] = {}
     for node in ast.walk(tree):
         if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
                 and node.func.attr == "add_argument"
-                and ast.unparse(node.func.value) == written):
+                and ast.unparse(node.func.value) in written):
             continue
         flags = [a.value for a in node.args
                  if isinstance(a, ast.Constant) and isinstance(a.value, str)]
@@ -498,5 +526,8 @@ def _parser_options(receiver: ast.expr, tree: ast.Module) -> tuple[tuple[str, st
         if dest is None:
             long = [f for f in flags if f.startswith("--")]
             dest = (long or flags)[0].lstrip("-").replace("-", "_")
-        found.setdefault(dest, " ".join(flags))
-    return tuple(found.items())
+        default = next((k.value.value for k in node.keywords if k.arg == "default"
+                        and isinstance(k.value, ast.Constant)
+                        and isinstance(k.value.value, str)), None)
+        found.setdefault(dest, (" ".join(flags), default))
+    return tuple((dest, flags, default) for dest, (flags, default) in found.items())

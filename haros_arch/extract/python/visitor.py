@@ -851,6 +851,7 @@ class Walker:
                 # an option argparse parses (``"/robot/limb/" + args.limb``): the value the
                 # instance's arguments give it
                 call.name_option = params[0].removeprefix(PROGRAM_OPTION)
+                call.name_option_default = ev.option_defaults.get(call.name_option)
             elif len(params) == 1 and params[0].startswith("parameter "):
                 name = params[0].removeprefix("parameter ")
                 call.name_param = param_name(Value.of(name)) if version == 2 else name

@@ -729,7 +729,7 @@ class Interpreter(Expressions):
                             for a in args):  # math.sin(x) of numbers known statically
                 return self.operation(
                     lambda: ops.call_builtin(ops.MATH[short], args, None, LIMITS), node)
-            handler = self.api.get(short)
+            handler = self.api.get(name) or self.api.get(short)  # xacro.parse: by module
             if handler is not None and (_known_module(name) or short in self.builtins):
                 self.charge_arguments([*args, *kwargs.values()])
                 return handler(self, args, kwargs, node)

@@ -43,7 +43,9 @@ from .python_methods import (
     open_file,
     safe_load,
     text_or_none,
+    xacro_parse,
     xacro_process,
+    xacro_process_doc,
     xacro_process_file,
 )
 from .python_nav2 import NAV2_COMMON, NAV2_METHODS
@@ -773,6 +775,7 @@ API: dict[str, Builder] = {
     "open": open_file, "safe_load": safe_load,
     "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
+    "xacro.parse": xacro_parse, "xacro.process_doc": xacro_process_doc,
     "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
 # methods of the values the interpreter knows, by name (``python_methods``), nav2's and

@@ -440,6 +440,27 @@ def xacro_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                            XACRO_NOT_RUN),))
 
 
+def xacro_parse(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``xacro.parse(open(path))`` (or ``parse(None, filename=path)``): the file's
+    document, not processed yet (bcr_bot's ``get_xacro_to_doc``)."""
+    source = arg(a, k, 0, "inp")
+    path = source.path if isinstance(source, ReadOnlyFile) else (
+        k.get("filename", a[1] if len(a) > 1 else None) if source is None else None)
+    if not isinstance(path, str):
+        return Unknown("xacro.parse() of a document not read from a known file")
+    return XacroDocument(to_text(["cat ", path]), path)
+
+
+def xacro_process_doc(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``xacro.process_doc(doc, mappings=...)``: ``doc`` (from ``xacro.parse``) becomes
+    what the ``xacro`` command line on its file with those arguments makes."""
+    doc = arg(a, k, 0, "doc")
+    if isinstance(doc, XacroDocument) and doc.path is not None:
+        doc.command = xacro_command(doc.path, k.get("mappings", a[1] if len(a) > 1 else None))
+        doc.path = None  # processed: what is left has no xacro to expand again
+    return None
+
+
 def m_xml(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``toxml()`` / ``toprettyxml()`` of a xacro document: its command's output."""
     if isinstance(owner, XacroDocument):

@@ -69,12 +69,15 @@ class Lazy:
     text: e.Text
 
 
-@dataclass(frozen=True)
+@dataclass(eq=False)
 class XacroDocument:
     """What ``xacro.process_file(path, mappings=...)`` returns: never processed here; its
-    ``toxml()`` is the output of the ``xacro`` command line it stands for."""
+    ``toxml()`` is the output of the ``xacro`` command line it stands for. Or what
+    ``xacro.parse(open(path))`` returns (``path``): the file as it is, a ``cat`` command,
+    until ``xacro.process_doc(doc, mappings=...)`` processes it in place."""
 
     command: e.Text
+    path: Any = None
 
 
 @dataclass(frozen=True)

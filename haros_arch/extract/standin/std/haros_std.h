@@ -956,6 +956,18 @@ template<class T> bool operator!=(const optional<T>& o, nullopt_t) noexcept;
 template<class T> bool operator!=(nullopt_t, const optional<T>& o) noexcept;
 template<class T, class U> bool operator==(const optional<T>& a, const optional<U>& b);
 template<class T, class U> bool operator!=(const optional<T>& a, const optional<U>& b);
+// an optional compared with a value, either side (vesc_driver's ``value < lower`` of a
+// std::experimental::optional<double> limit), and two optionals ordered
+#define HAROS_OPTIONAL_COMPARE(op) \
+  template<class T, class U> bool operator op(const optional<T>& o, const U& v); \
+  template<class T, class U> bool operator op(const U& v, const optional<T>& o);
+HAROS_OPTIONAL_COMPARE(==) HAROS_OPTIONAL_COMPARE(!=) HAROS_OPTIONAL_COMPARE(<)
+HAROS_OPTIONAL_COMPARE(>) HAROS_OPTIONAL_COMPARE(<=) HAROS_OPTIONAL_COMPARE(>=)
+#undef HAROS_OPTIONAL_COMPARE
+template<class T, class U> bool operator<(const optional<T>& a, const optional<U>& b);
+template<class T, class U> bool operator>(const optional<T>& a, const optional<U>& b);
+template<class T, class U> bool operator<=(const optional<T>& a, const optional<U>& b);
+template<class T, class U> bool operator>=(const optional<T>& a, const optional<U>& b);
 template<class T> optional<typename decay<T>::type> make_optional(T&& v);
 template<class T, class... A> optional<T> make_optional(A&&... args);
 
