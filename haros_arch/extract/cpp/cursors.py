@@ -40,7 +40,10 @@ from clang.cindex import (
     conf,
 )
 
-__all__ = ["Node", "by_file", "children_in", "line_of", "overloads", "release", "root"]
+from ...processes import held_signals
+
+__all__ = ["Node", "by_file", "children_in", "line_of", "overloads", "release", "root",
+           "visit_children"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -309,6 +312,26 @@ def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:
     return of
 
 
+def visit_children(parent: Cursor, visit: Callable[[Cursor, Cursor, object], int]) -> None:
+    """``clang_visitChildren`` of ``parent`` with ``visit``. An exception raised in it
+    ends the visit and is raised here (ctypes would print it and go on: Ctrl-C's
+    KeyboardInterrupt did not stop the run); the signals of a run that handles them
+    (``processes.stop_signals``) wait for the visit's end."""
+    raised: list[BaseException] = []
+
+    def guarded(child: Cursor, above: Cursor, data: object) -> int:
+        try:
+            return visit(child, above, data)
+        except BaseException as error:
+            raised.append(error)
+            return 0  # CXChildVisit_Break
+
+    with held_signals:
+        conf.lib.clang_visitChildren(parent, _VISIT(guarded), None)
+    if raised:
+        raise raised[0]
+
+
 def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
     """The children of ``parent`` (the unit, a namespace, a class) whose location is in
     a file whose name is ``wanted``, in order: what a loop over its children that asks
@@ -324,7 +347,7 @@ def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
             found.append(bytes(child))
         return 1  # CXChildVisit_Continue
 
-    lib.clang_visitChildren(parent, _VISIT(visit), None)
+    visit_children(parent, visit)
     made = parent._unit.made
     return [made(raw) for raw in found]
 
@@ -541,7 +564,7 @@ class Node(Cursor):
             lists[key].append(made(raw))
             return 2  # CXChildVisit_Recurse
 
-        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        visit_children(self, visit)
         if own in twice:
             return self._visit_children()
         for raw, children in lists.items():
@@ -556,7 +579,7 @@ class Node(Cursor):
             found.append(bytes(child))
             return 1  # CXChildVisit_Continue
 
-        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        visit_children(self, visit)
         made = self._unit.made
         return [made(raw) for raw in found]
 
