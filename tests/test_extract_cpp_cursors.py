@@ -136,25 +136,3 @@ def test_children_of_a_subtree_visit_equal_a_visit_of_each_node():
         for node in top.walk_preorder():
             alone = node._visit_children()  # one visit of this node alone
             assert [bytes(c) for c in node.get_children()] == [bytes(c) for c in alone]
-
-
-def test_an_interrupt_in_a_visit_stops_the_walk(monkeypatch):
-    """Ctrl-C (or SIGTERM's exit) lands mostly in a visit's callback, where ctypes printed
-    the exception and went on: the run did not stop. It ends the visit and is raised."""
-    import pytest
-
-    def interrupted(_judge):
-        def of(_location):
-            raise KeyboardInterrupt
-        return of
-
-    monkeypatch.setattr(cursors, "by_file", interrupted)
-    with pytest.raises(KeyboardInterrupt):
-        cursors.children_in(cursors.root(_unit()), lambda _name: True)
-    # the visit of a whole subtree (a function's body) too
-    namespace = next(iter(cursors.root(_unit()).get_children()))  # one level: ``ns``
-    node = next(c for c in namespace.get_children() if c.spelling == "walk")
-    monkeypatch.setattr(cursors, "_alone", lambda *_args: (_ for _ in ()).throw(
-        KeyboardInterrupt()))
-    with pytest.raises(KeyboardInterrupt):
-        node.get_children()

@@ -313,23 +313,13 @@ def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:
 
 
 def visit_children(parent: Cursor, visit: Callable[[Cursor, Cursor, object], int]) -> None:
-    """``clang_visitChildren`` of ``parent`` with ``visit``. An exception raised in it
-    ends the visit and is raised here (ctypes would print it and go on: Ctrl-C's
-    KeyboardInterrupt did not stop the run); the signals of a run that handles them
-    (``processes.stop_signals``) wait for the visit's end."""
-    raised: list[BaseException] = []
-
-    def guarded(child: Cursor, above: Cursor, data: object) -> int:
-        try:
-            return visit(child, above, data)
-        except BaseException as error:
-            raised.append(error)
-            return 0  # CXChildVisit_Break
-
+    """``clang_visitChildren`` of ``parent`` with ``visit``. A Ctrl-C or SIGTERM that
+    comes meanwhile (in a run that handles them: ``processes.stop_signals``) is raised
+    when the visit ends: its handler runs where the interpreter is, mostly at the start
+    of a callback, where ctypes would print the exception and go on, and the run would
+    not stop."""
     with held_signals:
-        conf.lib.clang_visitChildren(parent, _VISIT(guarded), None)
-    if raised:
-        raise raised[0]
+        conf.lib.clang_visitChildren(parent, _VISIT(visit), None)
 
 
 def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
