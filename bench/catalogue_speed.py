@@ -25,7 +25,7 @@ import zlib
 from pathlib import Path
 from typing import Any
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+import checkout  # bench/checkout.py: says which haros_arch is measured
 
 from haros_arch.graph.candidates import find_candidates
 from haros_arch.model.load import from_data
@@ -116,4 +116,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

@@ -28,11 +28,11 @@ import argparse
 import collections
 import os
 import re
-import sys
 import time
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
 
 from haros_arch import cmake  # noqa: E402
 from haros_arch.extract import completeness  # noqa: E402
@@ -258,4 +258,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

@@ -16,8 +16,9 @@ import sys
 import tempfile
 import time
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
 
 from haros_arch.extract.cpp import extract_cpp  # noqa: E402
 from haros_arch.workspace import scan  # noqa: E402
@@ -75,4 +76,5 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     sys.exit(main(sys.argv[1:]))

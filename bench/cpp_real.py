@@ -39,7 +39,8 @@ import pstats
 import sys
 import time
 
-import haros_arch
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 from haros_arch import pipeline
 from haros_arch.autoproject import open_project
 from haros_arch.extract import extract_nodes
@@ -62,7 +63,7 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--profile", type=int, default=0)
     parser.add_argument("--distro", default=None)
     args = parser.parse_args(argv)
-    print(f"haros_arch from {os.path.dirname(os.path.dirname(haros_arch.__file__))}")
+    checkout.announce(sys.stdout)
     try:
         project = open_project(args.project)
     except ProjectError as err:

@@ -22,9 +22,10 @@ import time
 from collections.abc import Callable
 from typing import Any
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-sys.path.insert(0, ROOT)
 
 from haros_arch import pipeline  # noqa: E402
 from haros_arch.pipeline import Options, analyse  # noqa: E402
@@ -270,4 +271,5 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     sys.exit(main(sys.argv[1:]))

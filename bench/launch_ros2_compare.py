@@ -57,6 +57,8 @@ import textwrap
 from collections import Counter
 from typing import Any
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 COMMAND_OUTPUT = '<robot name="standin"/>'  # what the stand-in xacro prints
 STANDIN_FILES = {
     "standin_finder.py": '''
@@ -583,7 +585,6 @@ def main() -> int:
                         "install-like tree; our path values are compared as installed")
     parser.add_argument("-v", "--verbose", action="store_true")
     options = parser.parse_args()
-    sys.path.insert(0, os.path.join(os.path.dirname(__file__), ".."))
     from haros_arch.workspace import scan
 
     roots = [os.path.join(options.src, t) for t in options.targets]
@@ -666,4 +667,5 @@ def main() -> int:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     sys.exit(main())

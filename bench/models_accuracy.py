@@ -18,10 +18,9 @@ import argparse
 import ast
 import os
 import re
-import sys
 from collections.abc import Callable
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import checkout  # bench/checkout.py: says which haros_arch is measured
 
 from haros_arch.models.library import Library
 
@@ -144,4 +143,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

@@ -33,11 +33,10 @@ from __future__ import annotations
 
 import argparse
 import os
-import sys
 import time
 from dataclasses import dataclass, field
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import checkout  # bench/checkout.py: says which haros_arch is measured
 
 from haros_arch.model.model import Model
 from haros_arch.pipeline import Options, analyse
@@ -169,4 +168,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

@@ -20,7 +20,7 @@ from __future__ import annotations
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import checkout  # bench/checkout.py: says which haros_arch is measured
 
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import ConfigurationSpec, Project
@@ -49,4 +49,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

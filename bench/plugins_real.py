@@ -26,11 +26,11 @@ from __future__ import annotations
 import argparse
 import importlib
 import os
-import sys
 from typing import Any
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
 
 from haros_arch import pipeline  # noqa: E402
 from haros_arch.model.model import Model  # noqa: E402
@@ -175,4 +175,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

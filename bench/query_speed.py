@@ -16,9 +16,8 @@ import collections
 import collections.abc
 import sys
 import time
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+import checkout  # bench/checkout.py: says which haros_arch is measured
 
 from haros_arch import query
 from haros_arch.model.load import from_data
@@ -93,4 +92,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

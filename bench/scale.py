@@ -37,8 +37,9 @@ import tempfile
 import time
 from typing import Any
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
 STAGES = ("cache", "scan", "launch", "build files", "C++", "C++ parse", "Python", "models",
           "graph", "queries", "report")
 
@@ -46,7 +47,6 @@ STAGES = ("cache", "scan", "launch", "build files", "C++", "C++ parse", "Python"
 def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str, Any]:
     """One run in this process: seconds per stage, counts, and the model's digest."""
     start = time.perf_counter()
-    sys.path.insert(0, ROOT)
     from haros_arch.pipeline import Options, analyse
     from haros_arch.project import load
     imported = time.perf_counter() - start
@@ -146,7 +146,6 @@ def touched_file(project: str, result: dict[str, Any], given: str | None) -> str
     first = result.get("first_cpp")
     if not first:
         return None
-    sys.path.insert(0, ROOT)
     from haros_arch.project import load
     for root in load(project).workspace:
         path = os.path.join(root, first)  # relative to the workspace, or absolute
@@ -212,4 +211,5 @@ def main() -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

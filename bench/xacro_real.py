@@ -19,12 +19,12 @@ import argparse
 import collections
 import os
 import re
-import sys
 import time
 from typing import Any
 
+import checkout  # bench/checkout.py: says which haros_arch is measured
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
 
 from lxml import etree  # noqa: E402
 
@@ -99,4 +99,5 @@ def dump(files: list[str], workspace: Any, out: str) -> None:
 
 
 if __name__ == "__main__":
+    checkout.announce()
     main()

@@ -1,7 +1,8 @@
 """The ``haros-arch`` command line: parse arguments, call the library, pick a reporter.
 
 Exit codes: 0 clean, 1 diagnostics or findings at or above ``--fail-on``, 2 unusable
-invocation (bad project file, missing workspace), 3 an internal error (a bug of ours).
+invocation (bad project file, missing workspace), 3 an internal error (a bug of ours),
+130 stopped by Ctrl-C, 143 by SIGTERM (``processes.stop_signals``).
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from rich.markup import escape
 
 from . import __version__
 from .model.diagnostic import SEVERITY_RANK
+from .processes import stop_signals
 
 # the rest is imported where a command needs it: ``--help`` and ``explain`` start fast
 if TYPE_CHECKING:
@@ -698,7 +700,8 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "launch": cmd_launch, "query": cmd_query, "init": cmd_init,
                 "models": cmd_models, "diff": cmd_diff}
     try:
-        return handlers[args.command](args, out, err)
+        with stop_signals():  # stopped, the run still removes its temporary folders
+            return handlers[args.command](args, out, err)
     except KeyboardInterrupt:
         return 130
     except Exception as error:  # a bug of ours: one clear line, no traceback

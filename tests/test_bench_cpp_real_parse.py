@@ -66,10 +66,12 @@ def _tree(write_tree, project: bool):
     return root
 
 
-def _bench_script():
-    """bench/cpp_real.py of the checkout whose haros_arch is imported."""
+def _bench_script(monkeypatch):
+    """bench/cpp_real.py of the checkout whose haros_arch is imported (its folder on
+    sys.path, as when it runs: it imports bench/checkout.py)."""
     path = os.path.join(os.path.dirname(os.path.dirname(haros_arch.__file__)),
                         "bench", "cpp_real.py")
+    monkeypatch.syspath_prepend(os.path.dirname(path))
     spec = importlib.util.spec_from_file_location("cpp_real_under_test", path)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
@@ -104,7 +106,7 @@ def test_the_bench_parses_each_unit_as_the_pipeline_does(write_tree, monkeypatch
     given = str(root / "project.yaml") if project else str(root / "src")
     # a folder is read for the distribution of the environment, as the pipeline does
     monkeypatch.setenv("ROS_DISTRO", "melodic" if project else "noetic")
-    script = _bench_script()
+    script = _bench_script(monkeypatch)
     parses = _recorded(monkeypatch)
     analyse(open_project(given), dict(os.environ), Options(cache_dir=None, jobs=1))
     # the workspace's units (the stand-ins' precompiled prelude is made once a process)

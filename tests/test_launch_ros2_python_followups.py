@@ -87,3 +87,40 @@ def generate_launch_description():
         for d in unknown)
     # str() of the pathlib path is the path: nothing said of it but its unknown folder
     assert files[1].location.line not in {d.location.line for d in unknown}
+
+
+def test_an_f_string_of_a_substitution_is_the_object_text(write_tree):
+    """``f"{LaunchConfiguration('ns')}"`` formats the object as Python does, with
+    ``object.__format__``: its object text, as ``str()`` gives it (launch's classes define
+    no ``__format__``, ``__str__`` nor ``__repr__``), never the configuration's value; we
+    gave the value. A format spec on one is a TypeError; a ``pathlib`` path and plain
+    values are formatted as before."""
+    model, _ = run(write_tree, """
+from launch.substitutions import LaunchConfiguration
+from launch.conditions import IfCondition
+from ament_index_python.packages import get_package_share_path
+
+def generate_launch_description():
+    ns = LaunchConfiguration('ns', default='r')
+    share = get_package_share_path('not_installed_anywhere')
+    return LaunchDescription([
+        Node(package='p', executable='e', name='a', namespace=f"{ns}"),
+        Node(package='p', executable='e', name='b', namespace=f"x_{ns!r}"),
+        Node(package='p', executable='e', name='c', namespace=f"{IfCondition('true')}"),
+        Node(package='p', executable='e', name='d', namespace=f"{ns:>4}"),
+        Node(package='p', executable='e', name='e', namespace=f"{'r':>2}_{3}",
+             parameters=[f"{share / 'e.yaml'}"]),
+    ])
+""")
+    a, b, c, d, e = model.nodes
+    assert a.name.startswith(
+        "/<launch.substitutions.launch_configuration.LaunchConfiguration object at ?>")
+    assert b.name.startswith(
+        "/x_<launch.substitutions.launch_configuration.LaunchConfiguration object at ?>")
+    assert c.name.startswith("/<?")
+    assert e.name == "/r_3/e"  # plain values formatted as before
+    files = [d.message for d in model.diagnostics if d.code == "LAUNCH_PARAM_FILE"]
+    assert files == ["parameter file ?/e.yaml is not known statically"]
+    unsupported = [x.message for x in model.diagnostics if x.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert any("takes no format spec" in m for m in unsupported)
+    assert d.name == "/?/d"

@@ -24,12 +24,13 @@ def _may_be(unknown: str, other: str) -> bool:
 
 def _rank(unknown: Resource, candidate: Resource) -> tuple[int, int, int, str]:
     """Shared types first, then as many segments (a ``?`` is most often one), then the
-    longest common namespace, then the name. A name wholly unknown (``?``, which may be
-    global) is ranked as if relative, in the namespace of the node that uses it: a
-    guess of the likeliest, as the name itself claims no namespace."""
+    longest common namespace, then the name. A name that begins with an unknown part
+    (``?``, ``?/cmd_vel``, which may be global) is ranked as if relative, in the
+    namespace of the node that uses it: a guess of the likeliest, as the name itself
+    claims no namespace."""
     shared_types = len(set(unknown.types) & set(candidate.types))
     name = unknown.name
-    if name == UNKNOWN_MARK and unknown.links:
+    if name.startswith(UNKNOWN_MARK) and unknown.links:
         name = unknown.links[0].node.namespace.rstrip("/") + "/" + UNKNOWN_MARK
     depth = abs(name.count("/") - candidate.name.count("/"))
     shared_segments = 0

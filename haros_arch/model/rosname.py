@@ -61,12 +61,15 @@ def as_namespace(ns: str) -> str:
 def resolve(name: str, namespace: str = SEP, node: str | None = None) -> str:
     """Resolve ``name`` as ROS 1 does for a node named ``node`` in ``namespace``.
 
-    A name wholly unknown (``?``: a runtime string, VINS-Mono's image topic read from
-    its own YAML file) stays ``?``: its value may be global (``/cam0/image_raw``),
-    which roscpp, rospy and rcl take as it is on any handle, relative or private, so
-    no namespace is known to hold it. A name only partly unknown keeps what is known
+    A name that begins with an unknown part stays as written: wholly unknown (``?``: a
+    runtime string, VINS-Mono's image topic read from its own YAML file) or a text
+    before a known rest (``?/cmd_vel``: C++ ``prefix + "/cmd_vel"``, the prefix not
+    known), its value may be global (``/cam0/image_raw``, ``/robot1/cmd_vel``), which
+    roscpp, rospy and rcl take as it is on any handle, relative or private, so no
+    namespace is known to hold it (its pattern, ``.*/cmd_vel``, matches the names in
+    every namespace). A name whose unknown parts come later keeps what is known
     (``scan_?``, ``a/?``: relative, in ``namespace``)."""
-    if name == UNKNOWN_MARK:
+    if name.startswith(UNKNOWN_MARK):
         return name
     namespace = as_namespace(namespace)
     if not name:

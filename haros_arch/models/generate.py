@@ -28,7 +28,6 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -45,6 +44,7 @@ from ..model.location import Location
 from ..model.source import NUMBERED, Node, PrimitiveCall, declared_defaults
 from ..model.values import UNKNOWN_MARK
 from ..pipeline import read_build_files
+from ..processes import worker_pool
 from ..workspace import scan
 from .format import InterfaceModel, dumps
 
@@ -384,7 +384,7 @@ def run(work: Sequence[Task], jobs: int | None = None, scheduler: str | None = N
         return _on_dask(work, scheduler)
     if jobs == 1 or len(work) <= 1:
         return [build_package(task) for task in work]
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
+    with worker_pool(jobs) as pool:
         return list(pool.map(build_package, work))
 
 

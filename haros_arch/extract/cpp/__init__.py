@@ -15,7 +15,6 @@ import os
 import re
 import weakref
 from collections.abc import Callable, Collection, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -31,6 +30,7 @@ from ...manifest import parse_manifest, ros_version
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
+from ...processes import raise_if_stopped, worker_pool
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD
 from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
@@ -723,13 +723,13 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         # a unit's cache entry is written as its result comes back, while the workers
         # parse the next ones
         by_task = {}
-        with ProcessPoolExecutor(max_workers=workers, initializer=_start_worker,
-                                 initargs=(setup,)) as pool:
+        with worker_pool(workers, initializer=_start_worker, initargs=(setup,)) as pool:
             results = pool.map(_worker_unit, [tasks[i] for i in order])
             if meanwhile is not None:  # every task is submitted: the workers are busy
                 meanwhile()
                 meanwhile = None
             for index, outcome in zip(order, results, strict=True):
+                raise_if_stopped()  # a stop dropped in a hook of a worker's fork
                 by_task[index] = outcome
                 _store(store, keys[todo[index]], outcome)
         parsed = [by_task[index] for index in range(len(tasks))]

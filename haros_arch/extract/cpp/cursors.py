@@ -40,7 +40,10 @@ from clang.cindex import (
     conf,
 )
 
-__all__ = ["Node", "by_file", "children_in", "line_of", "overloads", "release", "root"]
+from ...processes import held_signals
+
+__all__ = ["Node", "by_file", "children_in", "line_of", "overloads", "release", "root",
+           "visit_children"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -309,6 +312,16 @@ def by_file(judge: Callable[[str], Value]) -> Callable[[Any], Value | None]:
     return of
 
 
+def visit_children(parent: Cursor, visit: Callable[[Cursor, Cursor, object], int]) -> None:
+    """``clang_visitChildren`` of ``parent`` with ``visit``. A Ctrl-C or SIGTERM that
+    comes meanwhile (in a run that handles them: ``processes.stop_signals``) is raised
+    when the visit ends: its handler runs where the interpreter is, mostly at the start
+    of a callback, where ctypes would print the exception and go on, and the run would
+    not stop."""
+    with held_signals:
+        conf.lib.clang_visitChildren(parent, _VISIT(visit), None)
+
+
 def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
     """The children of ``parent`` (the unit, a namespace, a class) whose location is in
     a file whose name is ``wanted``, in order: what a loop over its children that asks
@@ -324,7 +337,7 @@ def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
             found.append(bytes(child))
         return 1  # CXChildVisit_Continue
 
-    lib.clang_visitChildren(parent, _VISIT(visit), None)
+    visit_children(parent, visit)
     made = parent._unit.made
     return [made(raw) for raw in found]
 
@@ -541,7 +554,7 @@ class Node(Cursor):
             lists[key].append(made(raw))
             return 2  # CXChildVisit_Recurse
 
-        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        visit_children(self, visit)
         if own in twice:
             return self._visit_children()
         for raw, children in lists.items():
@@ -556,7 +569,7 @@ class Node(Cursor):
             found.append(bytes(child))
             return 1  # CXChildVisit_Continue
 
-        conf.lib.clang_visitChildren(self, _VISIT(visit), None)
+        visit_children(self, visit)
         made = self._unit.made
         return [made(raw) for raw in found]
 

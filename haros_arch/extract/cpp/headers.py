@@ -43,10 +43,10 @@ lacks are synthesised, so the real ROS headers are used.
 
 from __future__ import annotations
 
-import atexit
 import contextlib
 import fcntl
 import hashlib
+import multiprocessing.util
 import os
 import re
 import shutil
@@ -994,7 +994,11 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
         if key in _PCH:
             return _PCH[key]
         folder = tempfile.mkdtemp(prefix="haros-arch-pch-")
-        atexit.register(shutil.rmtree, folder, True)
+        # removed when this process ends, a pool's worker too (``atexit`` handlers do
+        # not run there: ``models build --jobs`` left one folder per worker); never by
+        # a process forked from this one, which may have inherited the path
+        multiprocessing.util.Finalize(None, shutil.rmtree, args=(folder, True),
+                                      exitpriority=0)
         path: str | None = os.path.join(folder, "prelude.pch")
         args = ["-I", STANDIN, "-isystem", STD_STANDIN, *flags, "-x", "c++-header"]
         try:

@@ -38,12 +38,11 @@ from clang.cindex import (
     LibclangError,
     SourceRange,
     TranslationUnit,
-    callbacks,
     conf,
 )
 
 from . import api
-from .cursors import by_file, line_of
+from .cursors import by_file, line_of, visit_children
 
 __all__ = ["NEAR", "Function", "Site", "call_sites", "holding", "missed", "site_pattern"]
 
@@ -384,7 +383,7 @@ def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function
             return 1
         return 2 if kind in containers else 1  # CXChildVisit_Recurse into a container
 
-    lib.clang_visitChildren(tu.cursor, callbacks["cursor_visit"](visit), None)
+    visit_children(tu.cursor, visit)
     for listed in found.values():
         listed.reverse()
     return found

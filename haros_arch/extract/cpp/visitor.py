@@ -1544,6 +1544,9 @@ class CallFinder:
             handle_namespace = None
             if prefix is not None and (written == prefix or written.startswith(prefix + "/")):
                 handle_namespace = prefix
+            elif namespace is not None and self.ros2 and name.startswith(UNKNOWN_MARK):
+                pass  # on a sub-node: rclcpp extends a relative name only, and a name
+                # that begins unknown may be global (``rosname.resolve``): as it is
             elif namespace is not None:
                 name = join_name(namespace, name)
                 if namespace and not self.ros2 and not _private(written).startswith(

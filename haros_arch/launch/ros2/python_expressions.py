@@ -41,6 +41,7 @@ from .python_values import (
     is_lazy,
     is_stringy,
     launch_object,
+    object_text,
     printable,
     to_text,
 )
@@ -225,8 +226,21 @@ class Expressions(Walker):
 
     def formatted(self, node: ast.FormattedValue, env: dict[str, Any]) -> Any:
         """``{value!r:spec}`` of an f-string: formatted by the one evaluator when the value
-        and the spec are known; a substitution keeps its place otherwise."""
+        and the spec are known; a text made when launch runs keeps its place otherwise.
+        An object of launch's API (a substitution, a condition, an action) is formatted
+        as Python formats it, with ``object``'s ``__format__``: its object text
+        (``object_text``, as ``str()``), never the value it stands for; with a format
+        spec, a TypeError."""
         value = self.eval(node.value, env)
+        text = object_text(value)
+        if text is not None:
+            spec = self.eval(node.format_spec, env) if node.format_spec is not None else ""
+            if not isinstance(spec, str):
+                return Unknown("the format spec of a launch object")
+            if spec:
+                return self.failed(node, f"{{{ast.unparse(node.value)}:...}}: a launch "
+                                   "object takes no format spec", "TypeError")
+            return text
         # a list, tuple or dict of plain values prints as str() prints it
         container = isinstance(value, (list, tuple, dict)) and printable(value, path=False)
         if node.format_spec is None and node.conversion == -1 and not container:

@@ -1,0 +1,97 @@
+"""How a run's processes stop: the run itself on Ctrl-C or SIGTERM, and a pool of workers.
+
+A run stopped by Ctrl-C or SIGTERM (``timeout``, a CI job cancelled) ends like one that
+failed: its ``finally`` blocks and exit handlers remove its temporary folders, and a
+pool's workers end instead of being left behind waiting for tasks.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from collections.abc import Iterator
+from concurrent.futures import ProcessPoolExecutor
+from types import TracebackType
+from typing import Any
+
+
+class _Held:
+    """``held_signals``: a stop (Ctrl-C, SIGTERM) that comes while a call into C runs
+    Python callbacks (libclang's visit of a tree) waits for the call's end. Raised in
+    a callback, where the interpreter mostly is during such a call, or in a hook run at
+    a fork, its exception is printed and dropped, and the run would go on: the stop is
+    also kept (``requested``) and raised again at the end of the next visit or at
+    ``raise_if_stopped``."""
+
+    def __init__(self) -> None:
+        self.depth = 0
+        self.requested: BaseException | None = None
+
+    def __enter__(self) -> None:
+        self.depth += 1
+
+    def __exit__(self, kind: type[BaseException] | None, _error: BaseException | None,
+                 _trace: TracebackType | None) -> None:
+        self.depth -= 1
+        if self.depth == 0 and kind is None:  # else that exception unwinds the run
+            raise_if_stopped()
+
+
+held_signals = _Held()
+
+
+def raise_if_stopped() -> None:
+    """Raise the stop the run was asked for, if any (see ``_Held``)."""
+    if held_signals.requested is not None:
+        raise held_signals.requested
+
+
+def _stopped(signum: int, _frame: Any) -> None:
+    error: BaseException = (KeyboardInterrupt() if signum == signal.SIGINT
+                            else SystemExit(128 + signum))
+    if signum == signal.SIGTERM:
+        # once: a second SIGTERM (``timeout`` signals the whole process group, a worker
+        # may pass one on) must not interrupt the unwinding the first one started
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    held_signals.requested = held_signals.requested or error
+    if not held_signals.depth:
+        raise error
+
+
+@contextlib.contextmanager
+def stop_signals() -> Iterator[None]:
+    """Within the block Ctrl-C raises KeyboardInterrupt and the first SIGTERM
+    ``SystemExit(143)`` (later ones are ignored), held while ``held_signals`` is and
+    raised again where one was dropped (``_Held``): the run unwinds. By default Python
+    ends at once on SIGTERM and leaves its temporary folders (and, with a pool, the
+    workers). Nothing is changed off the main thread, nor a handler of the program's
+    own."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    defaults = {signal.SIGINT: signal.default_int_handler, signal.SIGTERM: signal.SIG_DFL}
+    previous = {signum: signal.getsignal(signum) for signum in defaults}
+    ours = [signum for signum, handler in defaults.items() if previous[signum] is handler]
+    for signum in ours:
+        signal.signal(signum, _stopped)
+    try:
+        yield
+    finally:  # not SIGTERM's once it came: it stays ignored while the process ends
+        held_signals.requested = None
+        for signum in ours:
+            if signal.getsignal(signum) is _stopped:
+                signal.signal(signum, previous[signum])
+
+
+@contextlib.contextmanager
+def worker_pool(workers: int | None, **options: Any) -> Iterator[ProcessPoolExecutor]:
+    """A ``ProcessPoolExecutor`` that, when the block is left by an exception (Ctrl-C,
+    SIGTERM), drops the tasks no worker has begun: a plain one runs every task
+    submitted before it lets go."""
+    with ProcessPoolExecutor(max_workers=workers, **options) as pool:
+        try:
+            yield pool
+        except BaseException:
+            pool.shutdown(cancel_futures=True)
+            raise

@@ -1,0 +1,63 @@
+"""A run that handles Ctrl-C and SIGTERM (``processes.stop_signals``, as the CLI does)
+stops on them, also when they come while libclang visits a tree and runs our callbacks
+(where ctypes printed the exception and went on)."""
+
+from __future__ import annotations
+
+import os
+import signal
+
+import pytest
+from test_extract_cpp_cursors import _unit
+
+from haros_arch import processes
+from haros_arch.extract.cpp import cursors
+
+
+def _signalled(signum: int, monkeypatch) -> list[str]:
+    """Visit a unit's children with ``signum`` sent to this process at the first one;
+    the names of the files asked about (the visit goes on to its end)."""
+    asked: list[str] = []
+
+    def judged(judge):
+        def of(location):
+            if not asked:
+                os.kill(os.getpid(), signum)
+            asked.append("x")
+            return True
+        return of
+
+    monkeypatch.setattr(cursors, "by_file", judged)
+    cursors.children_in(cursors.root(_unit()), lambda _name: True)
+    return asked
+
+
+def test_ctrl_c_in_a_visit_stops_the_run_after_it(monkeypatch):
+    with processes.stop_signals(), pytest.raises(KeyboardInterrupt):
+        _signalled(signal.SIGINT, monkeypatch)
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_sigterm_exits_143_once(monkeypatch):
+    with processes.stop_signals():
+        with pytest.raises(SystemExit) as stopped:
+            _signalled(signal.SIGTERM, monkeypatch)
+        assert stopped.value.code == 143
+        # a second one does not interrupt the unwinding
+        os.kill(os.getpid(), signal.SIGTERM)
+        assert signal.getsignal(signal.SIGTERM) is signal.SIG_IGN
+    assert signal.getsignal(signal.SIGTERM) is signal.SIG_IGN
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def test_nothing_changes_where_the_program_has_its_own_handler():
+    def own(_signum, _frame):
+        pass
+
+    previous = signal.signal(signal.SIGTERM, own)
+    try:
+        with processes.stop_signals():
+            assert signal.getsignal(signal.SIGTERM) is own
+            assert signal.getsignal(signal.SIGINT) is processes._stopped
+    finally:
+        signal.signal(signal.SIGTERM, previous)
