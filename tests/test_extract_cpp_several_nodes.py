@@ -218,6 +218,14 @@ int main(int argc, char ** argv)
 
 
 
+# the ament_cmake package ``pkg`` of the tests below that write their own sources
+PACKAGE = ('<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
+           "<version>0.1.0</version><description>d</description>"
+           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+           "<depend>rclcpp</depend><export><build_type>ament_cmake"
+           "</build_type></export></package>\n")
+
+
 LIBRARY = """
 #include <memory>
 #include "rclcpp/rclcpp.hpp"
@@ -265,11 +273,7 @@ def test_only_the_nodes_the_executable_makes_name_its_process(write_tree) -> Non
     the classes main() constructs, transitively, and their bases (an implicit base
     constructor names the node too)."""
     root = write_tree({
-        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
-                           "<version>0.1.0</version><description>d</description>"
-                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
-                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
-                           "</build_type></export></package>\n",
+        "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/lib.hpp": LIBRARY,
         "pkg/src/lib.cpp": '#include "pkg/lib.hpp"\n',
         "pkg/src/executor_main.cpp": '#include "pkg/lib.hpp"\nint main(int argc, char ** argv)'
@@ -334,11 +338,7 @@ def test_the_calls_of_a_node_class_main_never_builds_are_not_the_process_s(
     node. A node class the executable's main() never builds makes no call there; with
     a main() that loads plugins by name (a factory may build it), its calls stay."""
     root = write_tree({
-        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
-                           "<version>0.1.0</version><description>d</description>"
-                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
-                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
-                           "</build_type></export></package>\n",
+        "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/lib.hpp": UNBUILT,
         "pkg/src/lib.cpp": '#include "pkg/lib.hpp"\n',
         "pkg/src/main.cpp": '#include "pkg/lib.hpp"\nint main(int argc, char ** argv)'
@@ -413,11 +413,7 @@ def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
     hands it on, a class when main() constructs it, calls its methods or hands it to a
     template, transitively; code main() never reaches makes no call of the process."""
     root = write_tree({
-        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
-                           "<version>0.1.0</version><description>d</description>"
-                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
-                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
-                           "</build_type></export></package>\n",
+        "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/fleet.hpp": FLEET,
         "pkg/src/fleet.cpp": '#include "pkg/fleet.hpp"\nnamespace fleet {\n'
                              "rclcpp::Node::SharedPtr make_fleet() "
@@ -467,11 +463,7 @@ def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tr
     yet every free function of the library was taken as run (door_supervisor got the
     fleet adapter's nodes and their publishers)."""
     root = write_tree({
-        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
-                           "<version>0.1.0</version><description>d</description>"
-                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
-                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
-                           "</build_type></export></package>\n",
+        "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/fleet.hpp": FLEET,
         "pkg/src/fleet.cpp": '#include "pkg/fleet.hpp"\nnamespace fleet {\n'
                              "rclcpp::Node::SharedPtr make_fleet() "
@@ -557,11 +549,7 @@ def test_a_class_only_unreached_code_makes_or_calls_makes_no_call(write_tree,
     the fleet adapter's publishers. A class nothing constructs or calls keeps its calls
     (a host may run it)."""
     root = write_tree({
-        "pkg/package.xml": '<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'
-                           "<version>0.1.0</version><description>d</description>"
-                           '<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
-                           "<depend>rclcpp</depend><export><build_type>ament_cmake"
-                           "</build_type></export></package>\n",
+        "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/agv.hpp": AGV,
         "pkg/src/agv.cpp": '#include "pkg/agv.hpp"\nnamespace fleet {\n'
                            "std::shared_ptr<AgvNode> AgvNode::make("
