@@ -505,7 +505,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered | named)
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -523,14 +523,14 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
 
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
-             unseen: Collection[str], entered: set[str]) -> set[str]:
+             unseen: Collection[str], entered: set[str], named: set[str]) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
     ExecutorNode and never builds one; its ``transition_event`` publisher was given to
     the process's node), a free function it never calls, and a class whose code only
-    such code constructs or calls (``entered``: qualified names, and the words code
-    around a parse error names) (open-rmf's door_supervisor links the fleet adapter's
+    such code constructs or calls (``entered``) or names where the parse left an error
+    (``named``, the words there) (open-rmf's door_supervisor links the fleet adapter's
     library: its ``agv::Node`` is made only by the adapter's factory). A class that
     nothing in the executable constructs or calls keeps its calls: a host, a
     registration or a call through its base may run its methods. None when the
@@ -548,7 +548,7 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
     return classes | {owner for call in result.calls if (owner := call.node_name) is not None
                       and owner not in reached and (owner.endswith("()") or (
-                          (owner in entered or owner.rsplit("::", 1)[-1] in entered)
+                          (owner in entered or owner.rsplit("::", 1)[-1] in named)
                           and owner.rsplit("::", 1)[-1] not in unseen))}
 
 
