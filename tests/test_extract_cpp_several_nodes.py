@@ -33,6 +33,19 @@ def rows(result: CppResult) -> set[tuple[str, str, str | None]]:
     return {(c.kind, c.name, c.node_name) for c in result.calls}
 
 
+def published(result: CppResult) -> list[str]:
+    """The topics ``result``'s calls publish, sorted."""
+    return sorted(topic for kind, topic, _ in rows(result) if kind == "publish")
+
+
+def each_main(root, mains: tuple[str, ...], library: list[str]) -> dict[str, CppResult]:
+    """Each executable ``pkg/src/<main>_main.cpp`` of the package at ``root`` extracted
+    with the ``library`` sources it links."""
+    workspace = scan([str(root)])
+    return {name: extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), *library],
+                              workspace, cache_dir=None) for name in mains}
+
+
 @pytest.fixture(scope="module")
 def base() -> CppResult:
     return extract(BASE / "main.cpp", BASE / "base_driver.cpp", BASE / "odometry.cpp",
@@ -440,14 +453,9 @@ def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
                                 " {\n  rclcpp::init(argc, argv);\n"
                                 "  return fleet::run<fleet::Fleet>();\n}\n",
     })
-    workspace = scan([str(root)])
-    library = str(root / "pkg/src/fleet.cpp")
-    made = {}
-    for name in ("fleet", "door", "lift", "run"):
-        found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), library], workspace,
-                            cache_dir=None)
-        made[name] = (found.rosname, found.rosnames,
-                      sorted(topic for kind, topic, _ in rows(found) if kind == "publish"))
+    made = {name: (found.rosname, found.rosnames, published(found))
+            for name, found in each_main(root, ("fleet", "door", "lift", "run"),
+                                         [str(root / "pkg/src/fleet.cpp")]).items()}
     assert made == {"fleet": ("fleet", [], ["fleet_states"]),
                     "door": ("door", [], ["announce", "door_states"]),
                     "lift": ("lift", [], ["lift_states", "reports"]),
@@ -485,14 +493,9 @@ def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tr
                                 "  rclcpp::init(argc, argv);\n  auto door = fleet::make_door();\n"
                                 "  fleet::bid(door);\n  rclcpp::spin(door);\n}\n",
     })
-    workspace = scan([str(root)])
     library = [str(root / "pkg/src/fleet.cpp"), str(root / "pkg/src/dispatch.cpp")]
-    made = {}
-    for name in ("door", "bid"):
-        found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), *library], workspace,
-                            cache_dir=None)
-        made[name] = (found.rosname, sorted(
-            topic for kind, topic, _ in rows(found) if kind == "publish"))
+    made = {name: (found.rosname, published(found))
+            for name, found in each_main(root, ("door", "bid"), library).items()}
     assert made["door"] == ("door", ["door_states"])
     # the vendor's code, given the node, may build anything of the library: its other
     # nodes stay possible where bid() runs
@@ -586,13 +589,9 @@ def test_a_class_only_unreached_code_makes_or_calls_makes_no_call(write_tree,
                                     "  auto dispatcher = fleet::Dispatcher::make(node.get());\n"
                                     "  rclcpp::spin(node);\n}\n",
     })
-    workspace = scan([str(root)])
     library = [str(root / "pkg/src/agv.cpp"), str(root / "pkg/src/dispatcher.cpp")]
-    made = {}
-    for name in ("supervisor", "adapter"):
-        found = extract_cpp([str(root / f"pkg/src/{name}_main.cpp"), *library], workspace,
-                            cache_dir=None)
-        made[name] = sorted(topic for kind, topic, _ in rows(found) if kind == "publish")
+    made = {name: published(found)
+            for name, found in each_main(root, ("supervisor", "adapter"), library).items()}
     assert made["supervisor"] == ["supervisor_states"]
     # (given to code the parse does not have, the node may make anything there)
     assert made["adapter"] == ["dispatch_states", "door_requests", *(
