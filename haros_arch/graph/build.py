@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import bisect
 import os
-import shlex
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -12,7 +11,7 @@ from weakref import WeakKeyDictionary
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
-from ..launch.model import LaunchModel, NodeDecl
+from ..launch.model import LaunchModel, NodeDecl, shell_words
 from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
@@ -101,10 +100,7 @@ class Resources:
 
 def remaps_in_args(args: str) -> list[tuple[str, str]]:
     """``from:=to`` pairs among a node's command-line arguments (not ``__name:=``)."""
-    try:
-        words = shlex.split(args)
-    except ValueError:
-        words = args.split()
+    words = shell_words(args)
     pairs = []
     for word in words:
         if ":=" in word and not word.startswith("_"):

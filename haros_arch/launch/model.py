@@ -7,6 +7,7 @@ remappings are kept as written, because a node resolves them in its own namespac
 from __future__ import annotations
 
 import dataclasses
+import shlex
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -18,6 +19,14 @@ from ..model.launch_tree import LaunchItem, PackageUse
 from ..model.location import NOWHERE, Location
 from ..model.values import Unknown, Value
 
+
+def shell_words(line: str) -> list[str]:
+    """A command line's words as a shell splits them (on blanks when its quotes do not
+    close): a node's ``args``, a substitution's command."""
+    try:
+        return shlex.split(line)
+    except ValueError:
+        return line.split()
 
 @dataclass
 class NodeDecl:

@@ -59,10 +59,9 @@ read any parameter: the arguments decide over it too.
 
 from __future__ import annotations
 
-import shlex
 from typing import Any
 
-from ..launch.model import NodeDecl
+from ..launch.model import NodeDecl, shell_words
 from ..launch.ros2.naming import split_arguments
 from ..model.source import CallKind, Node, PrimitiveCall
 
@@ -134,7 +133,7 @@ _SETS_PARAMETERS = ("-t", "--controller-type", "-p", "--param-file",
 
 def _ros2_spawner(decl: NodeDecl, words: list[str]) -> Node | None:
     """A ROS 2 controller spawner from its arguments (see the module's docstring)."""
-    positional, values, flags = _positional(words, ROS2_SPAWNER_VALUES)
+    positional, values, flags = split_options(words, ROS2_SPAWNER_VALUES)
     controllers = [w for w in positional if w != "--controller"]
     if not controllers or any("?" in w for w in controllers):
         return None  # argparse refuses it, or the controllers are not known
@@ -173,12 +172,12 @@ _SPAWNER_TYPES = {verb: "controller_manager_msgs/srv/" + "".join(
 def program_words(args: str) -> list[str]:
     """The words a ROS 2 program's own parser sees: those outside ``--ros-args ...
     [--]``, which rclpy's ``remove_ros_args`` takes away."""
-    return split_arguments(_split(args))[0]
+    return split_arguments(shell_words(args))[0]
 
 
 def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
     """A ROS 1 controller spawner from its arguments (see the module's docstring)."""
-    positional, values, _flags = _positional(
+    positional, values, _flags = split_options(
         words, {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"})
     if not positional:  # argparse refuses it: no controller named
         return None
@@ -218,7 +217,7 @@ def _gazebo_spawner(decl: NodeDecl, words: list[str]) -> Node | None:
             continue
         rest.append(words[index])
         index += 1
-    positional, values, flags = _positional(rest, GAZEBO_SPAWNER_VALUES)
+    positional, values, flags = split_options(rest, GAZEBO_SPAWNER_VALUES)
     if positional or any("?" in word for word in words) or not flags & {"-urdf", "-sdf"}:
         return None
     gazebo = values.get("-gazebo_namespace", "/gazebo").rstrip("/")
@@ -284,21 +283,12 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     return node
 
 
-def _split(args: str) -> list[str]:
-    """A command line's words as a shell splits them (on blanks when its quotes do not
-    close)."""
-    try:
-        return shlex.split(args)
-    except ValueError:
-        return args.split()
-
-
 def _words(args: str) -> list[str]:
-    return [w for w in _split(args) if ":=" not in w and w != "--ros-args"]
+    return [w for w in shell_words(args) if ":=" not in w and w != "--ros-args"]
 
 
-def _positional(words: list[str], value_options: set[str]) -> tuple[list[str], dict[str, str],
-                                                                      set[str]]:
+def split_options(words: list[str], value_options: set[str]
+                  ) -> tuple[list[str], dict[str, str], set[str]]:
     """Positional words, options with values and flags, as optparse / argparse split them."""
     positional: list[str] = []
     values: dict[str, str] = {}
@@ -323,7 +313,7 @@ def _positional(words: list[str], value_options: set[str]) -> tuple[list[str], d
 def _rostopic(decl: NodeDecl, words: list[str]) -> Node | None:
     if not words or words[0] != "pub":
         return None
-    positional, values, flags = _positional(words[1:], ROS1_VALUE_OPTIONS)
+    positional, values, flags = split_options(words[1:], ROS1_VALUE_OPTIONS)
     if not positional:
         return None
     rate = values.get("-r", values.get("--rate"))
@@ -335,7 +325,7 @@ def _rostopic(decl: NodeDecl, words: list[str]) -> Node | None:
 
 
 def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:
-    positional, values, _flags = _positional(words[1:], ROS2_VALUE_OPTIONS)
+    positional, values, _flags = split_options(words[1:], ROS2_VALUE_OPTIONS)
     if not positional:
         return None
     qos: dict[str, Any] = {}

@@ -29,7 +29,6 @@ import copy
 import fnmatch
 import os
 import re
-import shlex
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol
@@ -39,7 +38,7 @@ import yaml
 from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
-from ..launch.model import NodeDecl
+from ..launch.model import NodeDecl, shell_words
 from ..launch.ros2.naming import (
     flatten,
     node_patterns,
@@ -755,10 +754,7 @@ class Spawn:
 
 def spawn_args(decl: NodeDecl) -> Spawn:
     """The spawner's command line, as its argparse reads it."""
-    try:
-        words = shlex.split(decl.args)
-    except ValueError:
-        words = decl.args.split()
+    words = shell_words(decl.args)
     spawn = Spawn([], MANAGER_NAME, [], None, [])
     takes_value = {"-c", "--controller-manager", "-p", "--param-file", "-n", "--namespace",
                    "-t", "--controller-type", "--controller-manager-timeout",
@@ -1058,10 +1054,7 @@ def _older(version: tuple[int, ...], since: tuple[int, ...]) -> bool:
 def ros1_spawn_args(decl: NodeDecl) -> tuple[list[str], str]:
     """The controllers a ROS 1 ``spawner`` (or ``controller_manager spawn|load``) names,
     and its ``--namespace`` (the controller manager's, "" when not given)."""
-    try:
-        words = shlex.split(decl.args)
-    except ValueError:
-        words = decl.args.split()
+    words = shell_words(decl.args)
     if decl.executable == "controller_manager":
         if not words or words[0] not in ("spawn", "load"):
             return [], ""

@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import os
 import re
-import shlex
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import partial
@@ -36,7 +35,7 @@ from lxml import etree
 from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
-from ..launch.model import LaunchModel, NodeDecl, ParamDecl
+from ..launch.model import LaunchModel, NodeDecl, ParamDecl, shell_words
 from ..launch.ros2.naming import params_for_node, split_rule
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
@@ -45,6 +44,7 @@ from ..model.rosname import as_namespace, clean, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import SDF_ELEMENT, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
+from ..models.commands import split_options
 from ..plugins.attach import Choice, Params, own_partial
 from ..plugins.classes import INCLUDE, remembered
 from ..share import share_source
@@ -82,10 +82,7 @@ class Spawn:
 
 def spawn_args(decl: NodeDecl, ros_version: int) -> Spawn:
     """What a spawner's command line asks for."""
-    try:
-        words = shlex.split(decl.args)
-    except ValueError:
-        words = decl.args.split()
+    words = shell_words(decl.args)
     spawn = Spawn(decl, ros_version)
     index = 0
     while index < len(words):
@@ -380,21 +377,12 @@ _PARAM_GET_VALUED = {"--spin-time", "--parameter-file"}
 def param_get_command(command: str) -> tuple[str, str] | None:
     """The node (its full name, as the CLI makes a relative one absolute) and the
     parameter a ``ros2 param get [OPTIONS] NODE NAME`` command line reads."""
-    try:
-        words = shlex.split(command)
-    except ValueError:
-        words = command.split()
+    words = shell_words(command)
     for index in range(len(words) - 2):
         if os.path.basename(words[index]) != "ros2" or words[index + 1:index + 3] != [
                 "param", "get"]:
             continue
-        positional: list[str] = []
-        rest = iter(words[index + 3:])
-        for word in rest:
-            if word in _PARAM_GET_VALUED:
-                next(rest, None)
-            elif not word.startswith("-"):
-                positional.append(word)
+        positional, _values, _flags = split_options(words[index + 3:], _PARAM_GET_VALUED)
         if len(positional) != 2 or any(UNKNOWN_MARK in w for w in positional):
             return None
         node, name = positional
@@ -437,10 +425,7 @@ class XacroCommand(NamedTuple):
 
 def xacro_command(command: str) -> XacroCommand | None:
     """The file and ``name:=value`` arguments of a ``xacro`` (or ``cat``) command line."""
-    try:
-        words = shlex.split(command)
-    except ValueError:
-        words = command.split()
+    words = shell_words(command)
     for index, word in enumerate(words):
         tool = os.path.basename(word)
         if tool not in ("xacro", "xacro.py", "cat"):

@@ -22,7 +22,6 @@ made partial when its config file cannot be read.
 from __future__ import annotations
 
 import os
-import shlex
 from collections.abc import Iterator, Sequence
 from typing import Any, cast
 
@@ -31,7 +30,7 @@ import yaml
 from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
-from ..launch.model import LaunchModel, NodeDecl
+from ..launch.model import LaunchModel, NodeDecl, shell_words
 from ..model.location import Location
 from ..model.runtime import Configuration, NodeInstance
 from ..model.source import CallKind, Node, PrimitiveCall
@@ -89,10 +88,7 @@ def bridges(config: Configuration, launch: LaunchModel,
 
 def _arguments(args: str) -> tuple[list[str], dict[str, str]]:
     """Positional arguments before ``--ros-args``, and the ``-p name:=value`` after it."""
-    try:
-        words = shlex.split(args)
-    except ValueError:
-        words = args.split()
+    words = shell_words(args)
     positional: list[str] = []
     params: dict[str, str] = {}
     ros = False
