@@ -37,12 +37,25 @@ def session_folder(parent: Path) -> Path:
     return own
 
 
-# everything the suite puts in the temporary folder (pytest's tmp_path, the parse cache,
-# the fuzzing workspace, the C++ stand-ins' folders, those of the processes it starts)
-# is in one folder of this run: a run killed leaves nothing the next does not remove.
-# The parse cache is the suite's own, never the user's ~/.cache (set before any test
-# imports haros_arch, so every cache path is computed under it).
-SESSION = session_folder(Path(tempfile.gettempdir()) / f"haros-arch-tests-{os.getuid()}")
+def _session() -> Path:
+    """This run's folder: made at the first import of this module (it is imported as
+    ``conftest`` and as ``tests.conftest``), the same one after."""
+    said = os.environ.get("HAROS_ARCH_TEST_SESSION", "")
+    if said and os.path.basename(said) == str(os.getpid()) and os.path.isdir(said):
+        return Path(said)
+    # pytest's own tmp_path stays where pytest keeps it (its last runs', for a look)
+    os.environ.setdefault("PYTEST_DEBUG_TEMPROOT", tempfile.gettempdir())
+    found = session_folder(Path(tempfile.gettempdir()) / f"haros-arch-tests-{os.getuid()}")
+    os.environ["HAROS_ARCH_TEST_SESSION"] = str(found)
+    return found
+
+
+# everything else the suite puts in the temporary folder (the parse cache, the fuzzing
+# workspace, the C++ stand-ins' folders, those of the processes it starts) is in one
+# folder of this run: a run killed leaves nothing the next does not remove. The parse
+# cache is the suite's own, never the user's ~/.cache (set before any test imports
+# haros_arch, so every cache path is computed under it).
+SESSION = _session()
 tempfile.tempdir = os.environ["TMPDIR"] = str(SESSION)
 os.environ["XDG_CACHE_HOME"] = str(SESSION / "cache")
 
