@@ -2,6 +2,10 @@
 
     PYTHONPATH=. .venv/bin/python scripts/screenshots.py   # writes docs/report-*.png
 
+The first two are of the example workspace (examples/project.yaml); the third, of a name
+not known statically, of fixtures/report_unresolved (the example's robot started with the
+monitor's robot named only at start: /?/status).
+
 The last two are from bench/report_scale.py's fleets: the first view of 300 nodes, and
 six robots of the nested shape (/robot1/sensors/, base/, arm/) with /robot1/base/ opened.
 With ``--husky DIR`` (a checkout of husky/husky, ROS 1 noetic branch, under DIR/src) it
@@ -31,11 +35,15 @@ from haros_arch.viz.browser import CHROMIUM_ARGS, chromium_path
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"
 
-# (file, configuration, finding rule to pick or None, vertex id to click or None)
+# (file, project, configuration, finding rule to pick or None, vertex id to click or
+# None); the example decides every name, so the unresolved one is from a fixture that
+# starts the example's robot with the monitor's robot named only when it starts
+EXAMPLE = ROOT / "examples/project.yaml"
+UNRESOLVED = ROOT / "fixtures/report_unresolved/project.yaml"
 SHOTS = [
-    ("report-finding.png", "robot", "topic-type-mismatch", None),
-    ("report-qos.png", "rover", "qos-incompatible", None),
-    ("report-unresolved.png", "robot", None, "topic:/?/status"),
+    ("report-finding.png", EXAMPLE, "robot", "topic-type-mismatch", None),
+    ("report-qos.png", EXAMPLE, "rover", "qos-incompatible", None),
+    ("report-unresolved.png", UNRESOLVED, "robot_named_at_start", None, "topic:/?/status"),
 ]
 
 
@@ -89,15 +97,17 @@ def option(name: str) -> str | None:
 def main() -> int:
     husky, nav2 = option("--husky"), option("--nav2")
     with tempfile.TemporaryDirectory() as tmp:
-        report = Path(tmp) / "report.html"
-        subprocess.run([sys.executable, "-m", "haros_arch.cli", "report",
-                        str(ROOT / "examples/project.yaml"), "-o", str(report)], check=True)
+        reports: dict[Path, Path] = {}
+        for project in dict.fromkeys(shot[1] for shot in SHOTS):
+            reports[project] = Path(tmp) / f"report-{len(reports)}.html"
+            subprocess.run([sys.executable, "-m", "haros_arch.cli", "report", str(project),
+                            "-o", str(reports[project])], check=True)
         with sync_playwright() as driver:
             browser = driver.chromium.launch(executable_path=chromium_path(),
                                              args=CHROMIUM_ARGS)
-            for name, config, rule, vertex in SHOTS:
+            for name, project, config, rule, vertex in SHOTS:
                 page = browser.new_page(viewport={"width": 1500, "height": 820})
-                page.goto(report.as_uri())
+                page.goto(reports[project].as_uri())
                 page.wait_for_function("window.harosReport && window.harosReport.ready")
                 page.select_option("#config", label=config)
                 if rule:

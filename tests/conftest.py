@@ -11,10 +11,53 @@ from pathlib import Path
 
 import pytest
 
-# the suite's parse cache is its own, never the user's ~/.cache (set before any test imports
-# haros_arch, so every cache path is computed under it)
-os.environ["XDG_CACHE_HOME"] = tempfile.mkdtemp(prefix="haros-arch-test-cache-")
-atexit.register(shutil.rmtree, os.environ["XDG_CACHE_HOME"], True)
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's
+        return True
+    return True
+
+
+def session_folder(parent: Path) -> Path:
+    """This run's temporary folder, ``parent/<pid>``, removed when the run exits; the
+    folders of runs no longer alive (killed before their exit handlers ran) are removed
+    first, those of runs still going are kept."""
+    parent.mkdir(parents=True, exist_ok=True)
+    for child in parent.iterdir():
+        if child.name.isdigit() and int(child.name) != os.getpid() and not _alive(
+                int(child.name)):
+            shutil.rmtree(child, ignore_errors=True)
+    own = parent / str(os.getpid())
+    own.mkdir(exist_ok=True)
+    atexit.register(shutil.rmtree, own, True)
+    return own
+
+
+def _session() -> Path:
+    """This run's folder: made at the first import of this module (it is imported as
+    ``conftest`` and as ``tests.conftest``), the same one after."""
+    said = os.environ.get("HAROS_ARCH_TEST_SESSION", "")
+    if said and os.path.basename(said) == str(os.getpid()) and os.path.isdir(said):
+        return Path(said)
+    # pytest's own tmp_path stays where pytest keeps it (its last runs', for a look)
+    os.environ.setdefault("PYTEST_DEBUG_TEMPROOT", tempfile.gettempdir())
+    found = session_folder(Path(tempfile.gettempdir()) / f"haros-arch-tests-{os.getuid()}")
+    os.environ["HAROS_ARCH_TEST_SESSION"] = str(found)
+    return found
+
+
+# everything else the suite puts in the temporary folder (the parse cache, the fuzzing
+# workspace, the C++ stand-ins' folders, those of the processes it starts) is in one
+# folder of this run: a run killed leaves nothing the next does not remove. The parse
+# cache is the suite's own, never the user's ~/.cache (set before any test imports
+# haros_arch, so every cache path is computed under it).
+SESSION = _session()
+tempfile.tempdir = os.environ["TMPDIR"] = str(SESSION)
+os.environ["XDG_CACHE_HOME"] = str(SESSION / "cache")
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "fixtures"

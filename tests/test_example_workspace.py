@@ -95,3 +95,21 @@ def test_the_ros2_rover_component_and_python_node(model):
     assert rover.parameter("/rover/safety_stop/stop_distance").value == 0.5
     assert rover.topic("/rover/lidar/scan") is not None  # the launch file's remap
     assert rover.diagnostics == []
+
+
+def test_a_parameter_set_to_an_unknown_value_leaves_the_name_unknown():
+    """fixtures/report_unresolved starts the example robot with /robot_name set from a
+    launch argument nobody gives: the monitor reads that value, not the default its code
+    names ("robot1"), so its topic is /?/status, with /robot1/status its candidate (it
+    was /robot1/status, as if the launch file set nothing). The screenshot of an
+    unresolved name (scripts/screenshots.py) is taken from it."""
+    fixture = ROOT / "fixtures" / "report_unresolved" / "project.yaml"
+    (config,) = analyse(load(str(fixture)), {"PATH": os.environ["PATH"]}).configurations
+    name = config.parameter("/robot_name")
+    assert name is not None and name.set_by_launch and name.value is None
+    monitor = config.node("/monitor")
+    assert monitor is not None
+    assert [link.name for link in monitor.links if link.kind == "subscribe"] == ["/?/status"]
+    status = config.topic("/?/status")
+    assert status is not None
+    assert [c.name for c in status.candidates] == ["/robot1/status"]

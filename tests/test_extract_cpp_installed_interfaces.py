@@ -24,13 +24,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 FIXTURES = os.path.join(os.path.dirname(HERE), "fixtures", "cpp", "installed_interfaces")
 
 
-def _extract(write_tree, name: str, build_type: str) -> CppResult:
+def _extract(write_tree, name: str, build_type: str, distro: str | None = None) -> CppResult:
     with open(os.path.join(FIXTURES, name), encoding="utf-8") as handle:
         source = handle.read()
     root = write_tree({"pkg/package.xml": package_xml("pkg", build_type),
                        "pkg/src/node.cpp": source})
     return extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
-                       cache_dir=None)
+                       cache_dir=None, distro=distro)
 
 
 def _errors(result: CppResult) -> list[str]:
@@ -59,6 +59,43 @@ def test_ros1_point_cloud_iterators_and_an_installed_action(write_tree) -> None:
         ("subscribe", "points", "sensor_msgs/PointCloud2"),
         ("action-client", "arm_controller/follow_joint_trajectory",
          "control_msgs/FollowJointTrajectory")]
+
+
+def test_a_humble_parse_reads_humbles_definitions(write_tree) -> None:
+    """humble's control_msgs JointTrajectoryControllerState has ``desired`` / ``actual``
+    (jazzy's renamed them): a parse for humble reads humble's catalogue, so the fields
+    parse and the publisher whose name reads one is resolved; the same source parsed
+    for jazzy does not know them (franka_ros2's humble fork of the trajectory
+    controller was partial by this)."""
+    calls = [("publish", "controller_state", "control_msgs/msg/JointTrajectoryControllerState"),
+             ("subscribe", "raw_state", "control_msgs/msg/JointTrajectoryControllerState"),
+             ("publish", "first_error?", "std_msgs/msg/Float64")]
+    humble = _extract(write_tree, "ros2_humble_controller_state.cpp", "ament_cmake", "humble")
+    assert _errors(humble) == []
+    assert "CPP_CALL_UNRESOLVED" not in [d.code for d in humble.diagnostics]
+    assert [(c.kind, c.name, c.type) for c in humble.calls] == calls
+    jazzy = _extract(write_tree, "ros2_humble_controller_state.cpp", "ament_cmake", "jazzy")
+    assert any("no member named 'desired'" in m for m in _errors(jazzy))
+    assert "CPP_CALL_UNRESOLVED" in [d.code for d in jazzy.diagnostics]
+
+
+def test_each_distribution_reads_the_nearest_catalogue() -> None:
+    """A shipped distribution's own; one in between, the newest shipped before it; one
+    older than all, the oldest; none, another ROS's or an unknown one, the default."""
+    assert interfaces.catalogue_distro(True, "humble") == "humble"
+    assert interfaces.catalogue_distro(True, " Jazzy") == "jazzy"
+    assert interfaces.catalogue_distro(True, "iron") == "humble"
+    assert interfaces.catalogue_distro(True, "foxy") == "humble"
+    assert interfaces.catalogue_distro(True, "rolling") == "jazzy"
+    for other in (None, "noetic", "no_such_distro"):
+        assert interfaces.catalogue_distro(True, other) == "jazzy"
+    assert interfaces.catalogue_distro(False, "humble") == "noetic"
+    assert interfaces.catalogue_distro(False, "melodic") == "noetic"
+    humble = interfaces.known("control_msgs", "JointTrajectoryControllerState", True,
+                              distro="humble")
+    jazzy = interfaces.known("control_msgs", "JointTrajectoryControllerState", True)
+    assert humble is not None and "trajectory_msgs/JointTrajectoryPoint desired" in humble
+    assert jazzy is not None and " desired" not in jazzy
 
 
 def test_sockets_and_nullptr_comparisons(write_tree) -> None:

@@ -124,3 +124,51 @@ def generate_launch_description():
     unsupported = [x.message for x in model.diagnostics if x.code == "LAUNCH_PY_UNSUPPORTED"]
     assert any("takes no format spec" in m for m in unsupported)
     assert d.name == "/?/d"
+
+
+def test_a_text_substitution_is_a_substitution_object(write_tree):
+    """launch's ``TextSubstitution(text=...)`` is a ``Substitution``, not a ``str``: no
+    ``isinstance(_, str)``, ``==`` by identity, true even when its text is empty; its
+    ``text`` is the string; given to an action it is its text, and as a parameter value
+    it is performed and read as YAML, as any substitution (an int here), where a plain
+    ``'10'`` stays a string; a list of them is one string (launch_ros'
+    normalize_parameters joins a list holding a substitution)."""
+    model, _ = run(write_tree, """
+from launch.substitutions import Substitution, TextSubstitution
+
+def generate_launch_description():
+    word = TextSubstitution(text='relay')
+    nodes = [Node(package='p', executable='e', name=word, namespace=word.text + '_ns',
+                  parameters=[{'rate': TextSubstitution(text='10'), 'plain': '10',
+                               'joined': [TextSubstitution(text='a'), 'b']}])]
+    if isinstance(word, str):
+        nodes.append(Node(package='p', executable='e', name='plain'))
+    if isinstance(word, TextSubstitution) and isinstance(word, Substitution):
+        nodes.append(Node(package='p', executable='e', name='own'))
+    if TextSubstitution(text=''):
+        nodes.append(Node(package='p', executable='e', name='empty'))
+    if word == 'relay':
+        nodes.append(Node(package='p', executable='e', name='equal'))
+    return LaunchDescription(nodes)
+""")
+    assert sorted(n.name for n in model.nodes) == ["/empty", "/own", "/relay_ns/relay"]
+    params = {p.name: p.value for p in model.params}
+    assert params["/relay_ns/relay/rate"] == 10
+    assert params["/relay_ns/relay/plain"] == "10"
+    assert params["/relay_ns/relay/joined"] == "ab"
+
+
+def test_a_text_substitution_takes_a_str_by_keyword(write_tree):
+    """launch raises a TypeError for ``TextSubstitution('a')`` and for a substitution as
+    its text: said, and the value is not known (not taken as the text)."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='p', executable='e', name=TextSubstitution('positional')),
+        Node(package='p', executable='e',
+             name=TextSubstitution(text=LaunchConfiguration('who', default='w'))),
+    ])
+""")
+    assert codes(model) == ["LAUNCH_PY_UNSUPPORTED"]
+    assert [n.name for n in model.nodes] == ["/?", "/?"]
+    assert sum("TextSubstitution" in d.message for d in model.diagnostics) == 2

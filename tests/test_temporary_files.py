@@ -83,3 +83,42 @@ def test_a_run_stopped_by_sigterm_removes_its_temporary_folders(tmp_path):
 
 def test_a_run_with_workers_stopped_by_sigterm_removes_its_temporary_folders(tmp_path):
     _stopped_run(tmp_path, "2")
+
+
+# a test run's start (tests/conftest.py) then, in the first run, what a killed run leaves:
+# folders and a file in its temporary folder, and no exit handler run
+KILLED_RUN = """
+import os, signal, sys, tempfile
+sys.path.insert(0, sys.argv[1])
+import conftest
+tempfile.mkdtemp(prefix="haros-arch-pch-")
+os.makedirs(os.path.join(os.environ["XDG_CACHE_HOME"], "haros-arch"))
+with open(os.path.join(tempfile.mkdtemp(prefix="haros-arch-fuzz-"), "a.launch"), "w") as f:
+    f.write("<launch/>")
+if sys.argv[2] == "kill":
+    os.kill(os.getpid(), signal.SIGKILL)
+"""
+
+
+def test_a_killed_test_run_leaves_nothing_after_the_next(tmp_path):
+    """The suite's temporary folders (the parse cache, the fuzzing workspace, what the
+    code under test makes) are in one folder of the run under the temporary folder; a
+    run killed leaves it, and the next run's start removes it, not those of runs still
+    going; a run that ends removes its own."""
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    env = {k: v for k, v in os.environ.items() if k != "XDG_CACHE_HOME"}
+    env["TMPDIR"] = str(temporary)
+    tests = os.path.dirname(os.path.abspath(__file__))
+    killed = subprocess.run([sys.executable, "-c", KILLED_RUN, tests, "kill"], env=env,
+                            capture_output=True, text=True, timeout=120)
+    assert killed.returncode == -signal.SIGKILL, killed.stderr
+    left = [p for p in temporary.rglob("*") if p.is_file()]
+    assert [p.name for p in left] == ["a.launch"]  # what a kill leaves
+    parent = temporary / f"haros-arch-tests-{os.getuid()}"
+    live = parent / str(os.getpid())  # a run still going: this one's pid
+    live.mkdir(parents=True)
+    ended = subprocess.run([sys.executable, "-c", KILLED_RUN, tests, "end"], env=env,
+                           capture_output=True, text=True, timeout=120)
+    assert ended.returncode == 0, ended.stderr
+    assert sorted(temporary.rglob("*")) == [parent, live]

@@ -723,12 +723,17 @@ def _filled(name: str, value: str) -> str:
 def _parameter_value(written: str, default: str | None, instance: NodeInstance,
                      resources: Resources) -> str | None:
     """The text value of the instance's parameter ``written`` (as the code names it):
-    the launch value, else the one the node sets from its arguments, else ``default``."""
+    the launch value, else the one the node sets from its arguments, else ``default``.
+    None when a launch file sets it to a value not known (an argument nobody gave): the
+    node reads that value, not its default."""
     source = _node_scoped(written) if instance.ros_version == 2 else written
     param_name = RosName.make(source, instance.namespace, instance.name).full
     param = resources.by_name.get((Parameter, param_name))
-    if isinstance(param, Parameter) and param.set_by_launch and isinstance(param.value, str):
-        return param.value
+    if isinstance(param, Parameter) and param.set_by_launch:
+        if isinstance(param.value, str):
+            return param.value
+        if param.value is None:
+            return None
     # the node sets it itself from its command-line arguments
     return _argument_values(instance).get(param_name, default)
 

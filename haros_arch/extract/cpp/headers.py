@@ -698,7 +698,7 @@ class IncludeSetup:
         ):
             return True
         if definition is None and real is not None and (
-            not interfaces.interface_package(package) or self.system_headers
+            not interfaces.interface_package(package, distro=self.distro) or self.system_headers
         ):
             return False  # an ordinary header of a package, or the real generated one
         if self.system_headers and real is not None:
@@ -736,7 +736,7 @@ class IncludeSetup:
                         if ext == ".srv" and len(parsed.sections) == 1:
                             parsed.sections.append([])
                         return parsed
-        text = interfaces.known(package, name)
+        text = interfaces.known(package, name, distro=self.distro)
         if text is None:
             return None
         return interfaces.parse_definition(package, name, text)
@@ -782,9 +782,10 @@ class IncludeSetup:
                 text, found = read_text(path, self.workspace.location(path))
                 self.diagnostics.extend(found)
             elif folder is None:  # an installed package's: the shipped catalogue's
-                text = interfaces.known(package, base, kinds=("action",))
+                text = interfaces.known(package, base, kinds=("action",),
+                                        distro=self.distro)
                 if text is None and part == "Action" and (
-                        interfaces.known(package, name) is None):
+                        interfaces.known(package, name, distro=self.distro) is None):
                     text = ""
                     self.diagnostics.append(diag.make(
                         "CPP_MESSAGE_UNKNOWN", where, header=f"{package}/{name}.h"))
@@ -811,7 +812,7 @@ class IncludeSetup:
         # ``srvs/Pause.srv`` is still ``pkg/srv/Pause``
         files = {} if folder is None else self._definitions(folder, kind)
         names = [f[: -len(extension)] for f in sorted(files)]
-        names += interfaces.catalogue_names(True).get(package, [])
+        names += interfaces.catalogue_names(True, self.distro).get(package, [])
         names += [key.split("/")[1] for key in interfaces.WELL_KNOWN
                   if key.startswith(package + "/")]
         names += self._written_names(package, kind)
@@ -822,9 +823,9 @@ class IncludeSetup:
             text, found = read_text(path, self.workspace.location(path))
             self.diagnostics.extend(found)
             definition = interfaces.parse_definition(package, name, text or "")
-        elif (text := interfaces.known(package, name, True, (kind,))) is not None:
+        elif (text := interfaces.known(package, name, True, (kind,), self.distro)) is not None:
             definition = interfaces.parse_definition(package, name, text)
-        elif not interfaces.interface_package(package, True):
+        elif not interfaces.interface_package(package, True, self.distro):
             self.diagnostics.append(diag.make("CPP_MESSAGE_UNKNOWN", where, header=header))
         if definition is None:
             definition = interfaces.Interface(package, name, [[]], known=False)
@@ -950,7 +951,7 @@ class IncludeSetup:
             if header not in self._handled:
                 if self._resolve(header) is not None or not (
                         self.workspace.find(ros2.group(1)) is not None
-                        or interfaces.interface_package(ros2.group(1), True)):
+                        or interfaces.interface_package(ros2.group(1), True, self.distro)):
                     return False
                 self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3),
                                      Location())

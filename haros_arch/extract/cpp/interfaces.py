@@ -14,6 +14,8 @@ import os
 import re
 from dataclasses import dataclass, field
 
+from . import versions
+
 # Packages whose headers are messages or services even when we cannot see their files.
 MESSAGE_PACKAGES = frozenset({
     "std_msgs", "std_srvs", "geometry_msgs", "sensor_msgs", "nav_msgs", "actionlib_msgs",
@@ -155,18 +157,41 @@ WELL_KNOWN: dict[str, str] = {
                                       "StatisticDataPoint[] statistics",
 }
 
-# the catalogue of the standard interface packages' definitions, per ROS generation
-# (``haros-arch models interfaces`` writes it from pinned public sources)
+# the catalogue of the standard interface packages' definitions, per ROS distribution
+# (``haros-arch models interfaces`` writes it from pinned public sources); the default
+# of each ROS generation is read when the run names no distribution of that ROS
 CATALOGUE = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__)))), "models", "interfaces")
 CATALOGUE_DISTROS = {False: "noetic", True: "jazzy"}
 
 
-@functools.lru_cache(maxsize=2)
-def catalogue(ros2: bool) -> dict[str, str]:
-    """The shipped definitions of one ROS generation by ``package/kind/Name`` (empty
-    when the file is missing or does not read)."""
-    path = os.path.join(CATALOGUE, CATALOGUE_DISTROS[ros2] + ".json")
+@functools.lru_cache(maxsize=16)
+def catalogue_distro(ros2: bool, distro: str | None = None) -> str:
+    """The distribution whose catalogue a parse for ``distro`` reads: its own when one
+    is shipped; else, for a distribution of that ROS, the newest shipped one released
+    before it (the oldest shipped for one older than all: interface packages drop and
+    rename fields over time, so an older release fits older code better); else the
+    generation's default (no distribution, or one of the other ROS)."""
+    library = versions.RCLCPP if ros2 else versions.ROSCPP
+    order = list(library.table)  # the releases in order
+    name = (distro or "").strip().lower()
+    shipped = [d for d in order
+               if os.path.isfile(os.path.join(CATALOGUE, d + ".json"))]
+    if name not in order or not shipped:
+        return CATALOGUE_DISTROS[ros2]
+    earlier = [d for d in shipped if order.index(d) <= order.index(name)]
+    return earlier[-1] if earlier else shipped[0]
+
+
+def catalogue(ros2: bool, distro: str | None = None) -> dict[str, str]:
+    """The shipped definitions for ``distro`` (``catalogue_distro``) by
+    ``package/kind/Name`` (empty when the file is missing or does not read)."""
+    return _catalogue_file(catalogue_distro(ros2, distro))
+
+
+@functools.lru_cache(maxsize=4)
+def _catalogue_file(name: str) -> dict[str, str]:
+    path = os.path.join(CATALOGUE, name + ".json")
     try:
         with open(path, encoding="utf-8") as handle:
             found = json.load(handle).get("definitions")
@@ -177,21 +202,26 @@ def catalogue(ros2: bool) -> dict[str, str]:
     return {k: v for k, v in found.items() if isinstance(k, str) and isinstance(v, str)}
 
 
-@functools.lru_cache(maxsize=2)
-def catalogue_names(ros2: bool) -> dict[str, list[str]]:
+def catalogue_names(ros2: bool, distro: str | None = None) -> dict[str, list[str]]:
     """The type names of the catalogue by package."""
+    return _catalogue_names(catalogue_distro(ros2, distro))
+
+
+@functools.lru_cache(maxsize=4)
+def _catalogue_names(name: str) -> dict[str, list[str]]:
     names: dict[str, list[str]] = {}
-    for key in catalogue(ros2):
-        package, _kind, name = key.split("/", 2)
-        names.setdefault(package, []).append(name)
+    for key in _catalogue_file(name):
+        package, _kind, type_name = key.split("/", 2)
+        names.setdefault(package, []).append(type_name)
     return names
 
 
 def known(package: str, name: str, ros2: bool = False,
-          kinds: tuple[str, ...] = ("msg", "srv")) -> str | None:
+          kinds: tuple[str, ...] = ("msg", "srv"), distro: str | None = None) -> str | None:
     """The definition of ``package/Name`` that does not come from the workspace: the
-    shipped catalogue's (as the installed package has it), else one of ``WELL_KNOWN``."""
-    table = catalogue(ros2)
+    shipped catalogue's for ``distro`` (as the installed package has it), else one of
+    ``WELL_KNOWN``."""
+    table = catalogue(ros2, distro)
     for kind in kinds:
         text = table.get(f"{package}/{kind}/{name}")
         if text is not None:
@@ -199,9 +229,9 @@ def known(package: str, name: str, ros2: bool = False,
     return WELL_KNOWN.get(f"{package}/{name}")
 
 
-def interface_package(package: str, ros2: bool = False) -> bool:
+def interface_package(package: str, ros2: bool = False, distro: str | None = None) -> bool:
     """Whether ``package`` is one whose headers are interfaces even unseen."""
-    return package in MESSAGE_PACKAGES or package in catalogue_names(ros2)
+    return package in MESSAGE_PACKAGES or package in catalogue_names(ros2, distro)
 
 
 PRIMITIVES = {

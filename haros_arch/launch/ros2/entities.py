@@ -115,6 +115,15 @@ class FileContent(Subst):
 
 
 @dataclass(frozen=True)
+class Literal(Subst):
+    """launch's ``TextSubstitution(text=...)``: in Python a substitution object, not a
+    ``str``, whose value is its text. A launch text holds the text, not the object
+    (``python_values.to_text``)."""
+
+    text: Text
+
+
+@dataclass(frozen=True)
 class Opaque(Subst):
     """A value we do not compute (``$(command)``, an unknown call): always unknown."""
 

@@ -58,7 +58,6 @@ from .python_values import (
     LaunchDescription,
     Lazy,
     _Flow,
-    concat,
     object_text,
     printable,
     to_text,
@@ -262,7 +261,18 @@ def opaque(what: str) -> Builder:
 
 
 def text_substitution(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    return concat([arg(a, k, 0, "text", default="")])
+    """``TextSubstitution(text=...)``: a substitution object whose value is its text, not
+    a ``str`` (``isinstance(_, str)`` is false, ``==`` compares identity, ``str()`` is
+    its object text, an empty one is still true), as launch's class is. launch takes the
+    text by keyword only, and only a ``str`` (else a TypeError)."""
+    if a or set(k) != {"text"}:
+        return i.failed(n, "TextSubstitution takes one keyword argument, text=",
+                        "TypeError")
+    text = k["text"]
+    if not isinstance(text, (str, Lazy, Unknown)):  # a str when launch runs, maybe
+        return i.failed(n, "TextSubstitution(text=...) takes a str, not "
+                        f"{type(text).__name__}", "TypeError")
+    return e.Literal(to_text(text))
 
 
 # -- conditions ---------------------------------------------------------------------------

@@ -384,6 +384,8 @@ class Expressions(Walker):
             owner = owner.built
         if isinstance(owner, e.DeclareArg) and node.attr == "name":
             return owner.name  # DeclareLaunchArgument.name, a property
+        if isinstance(owner, e.Literal) and node.attr == "text":
+            return concat(list(owner.text))  # TextSubstitution.text, a property
         return _Bound(owner, node.attr)
 
     def eval_Call(self, node: ast.Call, env: dict[str, Any]) -> Any:

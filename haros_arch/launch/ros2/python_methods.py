@@ -170,6 +170,7 @@ _LAUNCH_CLASSES: dict[type, frozenset[str]] = {
     e.Env: frozenset(("EnvironmentVariable", "Substitution")),
     e.Command: frozenset(("Command", "Substitution")),
     e.Eval: frozenset(("PythonExpression", "Substitution")),
+    e.Literal: frozenset(("TextSubstitution", "Substitution")),
 }
 
 

@@ -204,6 +204,7 @@ _PYTHON_CLASS: dict[type, str] = {
     e.Env: "launch.substitutions.environment_variable.EnvironmentVariable",
     e.Command: "launch.substitutions.command.Command",
     e.Eval: "launch.substitutions.python_expression.PythonExpression",
+    e.Literal: "launch.substitutions.text_substitution.TextSubstitution",
 }
 
 
@@ -244,6 +245,8 @@ def to_text(value: Any) -> e.Text:
     if isinstance(value, PurePosixPath):  # pathlib.Path(...) of known parts
         return (str(value),)
     if isinstance(value, Lazy):
+        return value.text
+    if isinstance(value, e.Literal):  # its text, the value launch performs it to
         return value.text
     if isinstance(value, e.Subst):
         return (value,)

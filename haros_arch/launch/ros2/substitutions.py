@@ -481,6 +481,9 @@ class Evaluator:
         self.runner.command_outputs.append((output.parts[0], line))  # type: ignore[arg-type]
         return output
 
+    def s_Literal(self, s: e.Literal) -> Value:
+        return self.value(s.text)
+
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:
             self.report("LAUNCH_UNSUPPORTED", detail=s.origin)
