@@ -29,7 +29,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...evaluate import budget, syntax
 from ...evaluate import operations as ops
-from ...extract.python.modules import module_file, workspace_module
+from ...extract.python.modules import module_file, submodule, workspace_module
 from ...model.launch_tree import PackageUse
 from ...model.location import Location
 from ...model.values import Unknown
@@ -264,7 +264,10 @@ class Interpreter(Expressions):
         if isinstance(stmt, ast.Import):
             for alias in stmt.names:
                 found = self.find_module(alias.name, stmt)
-                if found is not None:
+                if found is not None and not alias.asname and "." in alias.name:
+                    env[alias.name.split(".")[0]] = self.dotted_import(alias.name, found,
+                                                                       stmt)
+                elif found is not None:
                     env[alias.asname or alias.name] = found
                 elif alias.asname:
                     env[alias.asname] = Ref(alias.name)
@@ -291,9 +294,33 @@ class Interpreter(Expressions):
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
             elif alias.name in found.names:
                 env[alias.asname or alias.name] = found.names[alias.name]
+            elif (inner := submodule(found.path, alias.name)) is not None \
+                    and self.workspace.readable(os.path.realpath(inner), self.environment):
+                # ``from vrx_gz import bridges``: a submodule the package's __init__ does
+                # not bind, which the import loads, as Python does
+                loaded = self.module_file(f"{found.name}.{alias.name}",
+                                          os.path.realpath(inner), stmt)
+                env[alias.asname or alias.name] = loaded if loaded is not None else \
+                    self.unsupported(stmt, f"module {found.name}.{alias.name} could not "
+                                           "be read")
+                if loaded is not None:
+                    found.names[alias.name] = loaded
             else:
                 env[alias.asname or alias.name] = self.unsupported(
                     stmt, f"{alias.name} is not defined in {found.name} as read here")
+
+    def dotted_import(self, name: str, found: Module, node: ast.AST) -> Module:
+        """``import vrx_gz.launch``: Python binds the top package, each module of the path
+        an attribute of the one above it (``vrx_gz.launch.spawn(...)`` then reads). A
+        package folder without ``__init__.py`` (a namespace package) is a module of no
+        names of its own."""
+        parts = name.split(".")
+        chain = [self.find_module(".".join(parts[:i]), node) for i in range(1, len(parts))]
+        modules = [m if m is not None else Module(".".join(parts[:i + 1]), "", {})
+                   for i, m in enumerate(chain)] + [found]
+        for outer, inner, attr in zip(modules, modules[1:], parts[1:], strict=False):
+            outer.names[attr] = inner
+        return modules[0]
 
     # -- modules of the workspace imported from sys.path ---------------------------------
     def add_search(self, func: Ref, args: list[Any], node: ast.AST) -> Any:
