@@ -119,3 +119,31 @@ def generate_launch_description():
     assert any("Box.label is not set" in m for m in said), said
     assert any("call to the enum Kind is not interpreted" in m for m in said), said
     assert all("?" in n.name for n in model.nodes), [n.name for n in model.nodes]
+
+
+def test_dataclass_fields_of_field_defaults(write_tree):
+    # moveit_configs_utils' MoveItConfigs: ``field(default_factory=dict)``, each
+    # instance its own dict; a lambda factory; ``field(default=...)``
+    model = _load(write_tree, """
+from dataclasses import dataclass, field
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+@dataclass(slots=True)
+class Configs:
+    name: str = field(default='move_group')
+    params: dict = field(default_factory=dict)
+    caps: dict = field(default_factory=lambda: {'capabilities': ''})
+
+def generate_launch_description():
+    a, b = Configs(), Configs(name='servo')
+    a.params['planning'] = 'ompl'
+    return LaunchDescription([
+        Node(package='moveit_ros_move_group', executable='move_group', name=c.name,
+             parameters=[c.params, c.caps]) for c in (a, b)])
+""")
+    values = {p.name: p.value for p in model.params}
+    assert values == {"/move_group/planning": "ompl", "/move_group/capabilities": "",
+                      "/servo/capabilities": ""}
+    assert not [d for d in model.diagnostics if d.code.startswith("LAUNCH_")], \
+        [d.message for d in model.diagnostics]

@@ -50,6 +50,7 @@ from .python_values import (
     Budget,
     Constructing,
     EnumMember,
+    FieldFactory,
     Func,
     Instance,
     LaunchDescription,
@@ -260,14 +261,32 @@ class Interpreter(Expressions):
                         cls.name, target.id, value) if cls.enum else value
             elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name):
                 name = item.target.id
-                value = self.eval(item.value, scope) if item.value is not None else UNSET
+                value = self._field_default(item.value, scope) if dataclass_ else (
+                    self.eval(item.value, scope) if item.value is not None else UNSET)
                 if cls.fields is not None and dataclass_:
                     cls.fields = [f for f in cls.fields if f[0] != name] + [(name, value)]
-                if value is not UNSET:
+                if value is not UNSET and not isinstance(value, FieldFactory):
                     scope[name] = cls.attributes[name] = value
             elif not _no_op(item):
                 return None
         return cls
+
+    def _field_default(self, node: ast.expr | None, scope: dict[str, Any]) -> Any:
+        """A dataclass field's default: ``UNSET`` for none, ``field(default=v)`` v,
+        ``field(default_factory=f)`` a ``FieldFactory`` (moveit_configs_utils'
+        ``MoveItConfigs``: ``field(default_factory=dict)``), else the value."""
+        if node is None:
+            return UNSET
+        if isinstance(node, ast.Call) and not node.args and (
+                (ref := self._quiet(node.func, scope)) is not None) and isinstance(
+                ref, Ref) and ref.qualified == "dataclasses.field":
+            keywords = {k.arg: k.value for k in node.keywords}
+            if "default_factory" in keywords:
+                return FieldFactory(self.eval(keywords["default_factory"], scope))
+            if "default" in keywords:
+                return self.eval(keywords["default"], scope)
+            return UNSET
+        return self.eval(node, scope)
 
     def _method_kind(self, func: ast.FunctionDef, env: dict[str, Any]) -> str | None:
         """How a class's function binds: a plain method, or what its one decorator
@@ -305,6 +324,8 @@ class Interpreter(Expressions):
                 instance.attributes[name] = args[index]
             elif name in kwargs:
                 instance.attributes[name] = kwargs[name]
+            elif isinstance(default, FieldFactory):
+                instance.attributes[name] = self.call(default.func, [], {}, node)
             elif default is not UNSET:
                 instance.attributes[name] = default
             else:

@@ -162,6 +162,13 @@ UNSET = object()  # a dataclass field with no default
 
 
 @dataclass(eq=False)
+class FieldFactory:
+    """A dataclass field's ``field(default_factory=...)``: called for each instance."""
+
+    func: Any
+
+
+@dataclass(eq=False)
 class Constructing:
     """``self`` in an ``ActionClass``'s constructor: the attributes it sets, and the
     action its base built once ``super().__init__`` ran."""
