@@ -56,3 +56,49 @@ def test_helpers_of_a_workspace_python_package_are_read(write_tree):
     assert sorted(n.name for n in model.nodes) == ["/arm1/driver", "/spare/driver"]
     codes = {d.code for d in model.diagnostics}
     assert not codes & {"LAUNCH_PY_UNSUPPORTED", "LAUNCH_UNKNOWN_VALUE", "LAUNCH_ARG_UNSET"}
+
+
+# vrx's competition.launch.py: ``import vrx_gz.launch`` then ``vrx_gz.launch.spawn(...)``;
+# its launch.py does ``import vrx_gz.bridges`` the same way. Python binds the top
+# package, each module of the path an attribute of the one above it.
+DOTTED = """
+from launch import LaunchDescription
+import sim_helpers.spawning
+import sim_helpers.deep.names
+from sim_helpers import topics
+
+def generate_launch_description():
+    return LaunchDescription(sim_helpers.spawning.nodes(sim_helpers.deep.names.NAME)
+                             + [topics.relay()])
+"""
+
+DOTTED_FILES = {
+    "src/sim_helpers/package.xml": package_xml("sim_helpers", "ament_cmake"),
+    "src/sim_helpers/src/sim_helpers/__init__.py": "",
+    "src/sim_helpers/src/sim_helpers/deep/__init__.py": "",
+    "src/sim_helpers/src/sim_helpers/deep/names.py": "NAME = 'boat'\n",
+    "src/sim_helpers/src/sim_helpers/topics.py": """
+from launch_ros.actions import Node
+
+def relay():
+    return Node(package='topic_tools', executable='relay', name='relay')
+""",
+    "src/sim_helpers/src/sim_helpers/spawning.py": """
+from launch_ros.actions import Node
+import sim_helpers.topics
+
+def nodes(name):
+    return [Node(package='bridge', executable='bridge', name='bridge', namespace=name),
+            sim_helpers.topics.relay()]
+""",
+    "src/sim_helpers/launch/sim.launch.py": DOTTED,
+}
+
+
+def test_a_dotted_import_binds_its_top_package(write_tree):
+    root = write_tree(DOTTED_FILES)
+    model = load(str(root / "src/sim_helpers/launch/sim.launch.py"),
+                 scan([str(root / "src")], {}), {}, {})
+    assert sorted(n.name for n in model.nodes) == ["/boat/bridge", "/relay", "/relay"]
+    assert not [d for d in model.diagnostics if d.code in (
+        "LAUNCH_PY_UNSUPPORTED", "LAUNCH_UNKNOWN_VALUE")]

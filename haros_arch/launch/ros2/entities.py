@@ -369,6 +369,9 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
         return word[0] if len(word) == 1 and isinstance(word[0], str) else None
 
     head = [plain(w) for w in words[:3]]
+    installed = installed_executable(head[0]) if head else None
+    if installed is not None:  # what ``ros2 run PKG EXE`` would run, named by its path
+        return NodeAction((installed[0],), (installed[1],), arguments=list(words[1:]))
     if len(head) < 3 or head[0] is None or head[0].rsplit("/", 1)[-1] != "ros2":
         return None
     if head[1] == "run" and len(words) >= 4:
@@ -379,6 +382,25 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
             if plain(word) in ("-n", "--node-name"):
                 name = words[index + 1]
         return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
+    return None
+
+
+def installed_executable(program: str | None) -> tuple[str, str] | None:
+    """(package, executable) of a program path where ament installs a package's
+    executables, ``<prefix>/lib/<package>/<executable>``, the file ``ros2 run`` runs:
+    the distribution's prefix ``/opt/ros/<distro>`` (orca4's bringup.py runs
+    ``/opt/ros/humble/lib/tf2_ros/static_transform_publisher``) or a colcon install's
+    per-package prefix ``.../<package>/lib/<package>/<executable>``. Any other path
+    (``/usr/lib/...``) is no node we can name."""
+    if not program or not program.startswith("/"):
+        return None
+    parts = program.split("/")
+    if len(parts) < 5 or parts[-3] != "lib" or not all(parts[-2:]):
+        return None
+    package, executable = parts[-2], parts[-1]
+    distro_prefix = len(parts) == 7 and parts[1:3] == ["opt", "ros"] and parts[3]
+    if distro_prefix or parts[-4] == package:
+        return package, executable
     return None
 
 

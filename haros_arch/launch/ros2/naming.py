@@ -280,6 +280,27 @@ def values_outside(document: Any, depth: int = 0, path: tuple[str, ...] = ()) ->
     return found
 
 
+def as_component_file(document: Any) -> Any:
+    """A parameter file as launch_ros gives it to a composable node: one with no
+    ``ros__parameters`` anywhere is the node's parameters whole, its mappings joined by
+    dots (``serial: {baudrate: 1}`` is ``serial.baudrate``), where rcl, for a node of its
+    own process, refuses it (septentrio_gnss_driver's rover.yaml, loaded into a
+    container). Written as the ``/**`` section it stands for; any other file as it is."""
+    if isinstance(document, dict) and document and next(
+            node_patterns(document), None) is None and not _holds_params_key(document):
+        return {"/**": {PARAMS_KEY: document}}
+    return document
+
+
+def _holds_params_key(document: Any, depth: int = 0) -> bool:
+    """Whether ``ros__parameters`` is a key at any level (with a value that is no
+    mapping, which ``node_patterns`` skips, launch_ros still takes the file as sections)."""
+    if not isinstance(document, dict) or depth > MAX_PARAM_DEPTH:
+        return False
+    return any(key == PARAMS_KEY or _holds_params_key(value, depth + 1)
+               for key, value in document.items())
+
+
 def pattern_matches(pattern: str, node: str) -> bool:
     """rcl's node name matching: ``*`` one token, ``**`` zero or more tokens."""
     if UNKNOWN_MARK in node:

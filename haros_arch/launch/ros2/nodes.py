@@ -123,6 +123,8 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         if document is None:
             unseen.append(location)
             return
+        if runner.model.nodes[-1].composable:
+            document = naming.as_component_file(document)
         runner.model.nodes[-1].param_files.append((document, location))
         outside = naming.values_outside(document)
         path = runner.value(entry.path, scope, location) if not (

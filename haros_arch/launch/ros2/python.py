@@ -29,7 +29,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...evaluate import budget, syntax
 from ...evaluate import operations as ops
-from ...extract.python.modules import module_file, workspace_module
+from ...extract.python.modules import module_file, submodule, workspace_module
 from ...model.launch_tree import PackageUse
 from ...model.location import Location
 from ...model.values import Unknown
@@ -45,13 +45,19 @@ from .python_values import (
     MAX_READ,
     MAX_SIZE,
     MAX_SOURCE,
+    UNSET,
     ActionClass,
     Budget,
     Constructing,
+    EnumMember,
+    FieldFactory,
     Func,
+    Instance,
     LaunchDescription,
     Lazy,
+    Method,
     Module,
+    PlainClass,
     Raised,
     ReadOnlyFile,
     Ref,
@@ -197,21 +203,138 @@ class Interpreter(Expressions):
         than the constructor may be one launch calls (``execute``, ``visit``), so the
         action would not be the base's."""
         unknown = Unknown(f"class {stmt.name} (not interpreted)")
-        if len(stmt.bases) != 1 or stmt.keywords or not all(
-                self._naming_decorator(d, env) for d in stmt.decorator_list):
+        if len(stmt.bases) > 1 or stmt.keywords:
             return unknown
-        init: Func | None = None
-        for item in stmt.body:
-            if isinstance(item, ast.FunctionDef) and item.name == "__init__" \
-                    and not item.decorator_list and item.args.args:
-                init = Func(item, env)
-            elif not (isinstance(item, ast.Pass) or (
-                    isinstance(item, ast.Expr) and isinstance(item.value, ast.Constant))):
-                return unknown
-        base = self._quiet(stmt.bases[0], env)
+        base = self._quiet(stmt.bases[0], env) if stmt.bases else None
+        if stmt.bases and base is None:  # a base not known here (``TypedDict``, ``list``)
+            return unknown
         if isinstance(base, ActionClass) or (isinstance(base, Ref) and self._builds(base)):
+            if not all(self._naming_decorator(d, env) for d in stmt.decorator_list):
+                return unknown
+            init: Func | None = None
+            for item in stmt.body:
+                if isinstance(item, ast.FunctionDef) and item.name == "__init__" \
+                        and not item.decorator_list and item.args.args:
+                    init = Func(item, env)
+                elif not _no_op(item):
+                    return unknown
             return ActionClass(stmt.name, base, init)
-        return unknown
+        plain = self.plain_class(stmt, base, env)
+        return plain if plain is not None else unknown
+
+    def plain_class(self, stmt: ast.ClassDef, base: Any, env: dict[str, Any]
+                    ) -> PlainClass | None:
+        """A class of no launch action whose body only defines functions (plain, static,
+        class methods, properties) and names, of no base, ``object``, an ``Enum`` or
+        another such class, plain or ``@dataclass``; None for any other (not run)."""
+        dataclass_ = False
+        for decorator in stmt.decorator_list:
+            ref = self._quiet(decorator.func if isinstance(decorator, ast.Call)
+                              else decorator, env)
+            if not (isinstance(ref, Ref) and ref.qualified == "dataclasses.dataclass"):
+                return None
+            dataclass_ = True
+        enum = isinstance(base, Ref) and base.qualified in _ENUM_BASES
+        if base is not None and not enum and not isinstance(base, PlainClass) and not (
+                isinstance(base, Ref) and base.qualified == "object"):
+            return None
+        cls = PlainClass(stmt.name, enum=enum or (isinstance(base, PlainClass) and base.enum))
+        if isinstance(base, PlainClass):
+            cls.methods.update(base.methods)
+            cls.attributes.update(base.attributes)
+            cls.fields = list(base.fields) if base.fields is not None else None
+        if dataclass_ and cls.fields is None:
+            cls.fields = []
+        scope: dict[str, Any] = {"__closure__": env}  # the class body's own names
+        for item in stmt.body:
+            if isinstance(item, ast.FunctionDef):
+                kind = self._method_kind(item, env)
+                if kind is None:
+                    return None
+                cls.methods[item.name] = (kind, Func(item, env))
+            elif isinstance(item, ast.Assign) and all(isinstance(t, ast.Name)
+                                                      for t in item.targets):
+                value = self.eval(item.value, scope)
+                for target in item.targets:
+                    assert isinstance(target, ast.Name)
+                    scope[target.id] = cls.attributes[target.id] = EnumMember(
+                        cls.name, target.id, value) if cls.enum else value
+            elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name):
+                name = item.target.id
+                value = self._field_default(item.value, scope) if dataclass_ else (
+                    self.eval(item.value, scope) if item.value is not None else UNSET)
+                if cls.fields is not None and dataclass_:
+                    cls.fields = [f for f in cls.fields if f[0] != name] + [(name, value)]
+                if value is not UNSET and not isinstance(value, FieldFactory):
+                    scope[name] = cls.attributes[name] = value
+            elif not _no_op(item):
+                return None
+        return cls
+
+    def _field_default(self, node: ast.expr | None, scope: dict[str, Any]) -> Any:
+        """A dataclass field's default: ``UNSET`` for none, ``field(default=v)`` v,
+        ``field(default_factory=f)`` a ``FieldFactory`` (moveit_configs_utils'
+        ``MoveItConfigs``: ``field(default_factory=dict)``), else the value."""
+        if node is None:
+            return UNSET
+        if isinstance(node, ast.Call) and not node.args and (
+                (ref := self._quiet(node.func, scope)) is not None) and isinstance(
+                ref, Ref) and ref.qualified == "dataclasses.field":
+            keywords = {k.arg: k.value for k in node.keywords}
+            if "default_factory" in keywords:
+                return FieldFactory(self.eval(keywords["default_factory"], scope))
+            if "default" in keywords:
+                return self.eval(keywords["default"], scope)
+            return UNSET
+        return self.eval(node, scope)
+
+    def _method_kind(self, func: ast.FunctionDef, env: dict[str, Any]) -> str | None:
+        """How a class's function binds: a plain method, or what its one decorator
+        (staticmethod, classmethod, property) makes it; None for another decorator."""
+        if not func.decorator_list:
+            return "method"
+        if len(func.decorator_list) == 1 and isinstance(func.decorator_list[0], ast.Name):
+            return {"staticmethod": "static", "classmethod": "class",
+                    "property": "property"}.get(func.decorator_list[0].id)
+        return None
+
+    def instantiate(self, cls: PlainClass, args: list[Any], kwargs: dict[str, Any],
+                    node: ast.AST) -> Any:
+        """``Cls(...)``: an instance, its ``__init__`` run on it, or a dataclass's fields
+        set from the arguments and defaults (then its ``__post_init__``)."""
+        if cls.enum:
+            return self.unsupported(node, f"call to the enum {cls.name} is not interpreted")
+        instance = Instance(cls)
+        init = cls.methods.get("__init__")
+        if init is not None:
+            if init[0] != "method":
+                return self.unsupported(node, f"{cls.name}.__init__ is not a plain method")
+            self.call_function(init[1], [instance, *args], kwargs, node)
+            return instance
+        if cls.fields is None:
+            if args or kwargs:
+                return self.unsupported(node, f"{cls.name}() takes no arguments")
+            return instance
+        names = [name for name, _ in cls.fields]
+        if len(args) > len(names) or set(kwargs) - set(names):
+            return self.unsupported(node, f"arguments of {cls.name}() that are not its "
+                                          "fields")
+        for index, (name, default) in enumerate(cls.fields):
+            if index < len(args):
+                instance.attributes[name] = args[index]
+            elif name in kwargs:
+                instance.attributes[name] = kwargs[name]
+            elif isinstance(default, FieldFactory):
+                instance.attributes[name] = self.call(default.func, [], {}, node)
+            elif default is not UNSET:
+                instance.attributes[name] = default
+            else:
+                instance.attributes[name] = self.unsupported(
+                    node, f"field {name} of {cls.name}() is not given")
+        post = cls.methods.get("__post_init__")
+        if post is not None and post[0] == "method":
+            self.call_function(post[1], [instance], {}, node)
+        return instance
 
     def _quiet(self, node: ast.expr, env: dict[str, Any]) -> Any:
         """A name or dotted name's value, saying nothing when it is not defined."""
@@ -264,7 +387,10 @@ class Interpreter(Expressions):
         if isinstance(stmt, ast.Import):
             for alias in stmt.names:
                 found = self.find_module(alias.name, stmt)
-                if found is not None:
+                if found is not None and not alias.asname and "." in alias.name:
+                    env[alias.name.split(".")[0]] = self.dotted_import(alias.name, found,
+                                                                       stmt)
+                elif found is not None:
                     env[alias.asname or alias.name] = found
                 elif alias.asname:
                     env[alias.asname] = Ref(alias.name)
@@ -291,9 +417,33 @@ class Interpreter(Expressions):
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
             elif alias.name in found.names:
                 env[alias.asname or alias.name] = found.names[alias.name]
+            elif (inner := submodule(found.path, alias.name)) is not None \
+                    and self.workspace.readable(os.path.realpath(inner), self.environment):
+                # ``from vrx_gz import bridges``: a submodule the package's __init__ does
+                # not bind, which the import loads, as Python does
+                loaded = self.module_file(f"{found.name}.{alias.name}",
+                                          os.path.realpath(inner), stmt)
+                env[alias.asname or alias.name] = loaded if loaded is not None else \
+                    self.unsupported(stmt, f"module {found.name}.{alias.name} could not "
+                                           "be read")
+                if loaded is not None:
+                    found.names[alias.name] = loaded
             else:
                 env[alias.asname or alias.name] = self.unsupported(
                     stmt, f"{alias.name} is not defined in {found.name} as read here")
+
+    def dotted_import(self, name: str, found: Module, node: ast.AST) -> Module:
+        """``import vrx_gz.launch``: Python binds the top package, each module of the path
+        an attribute of the one above it (``vrx_gz.launch.spawn(...)`` then reads). A
+        package folder without ``__init__.py`` (a namespace package) is a module of no
+        names of its own."""
+        parts = name.split(".")
+        chain = [self.find_module(".".join(parts[:i]), node) for i in range(1, len(parts))]
+        modules = [m if m is not None else Module(".".join(parts[:i + 1]), "", {})
+                   for i, m in enumerate(chain)] + [found]
+        for outer, inner, attr in zip(modules, modules[1:], parts[1:], strict=False):
+            outer.names[attr] = inner
+        return modules[0]
 
     # -- modules of the workspace imported from sys.path ---------------------------------
     def add_search(self, func: Ref, args: list[Any], node: ast.AST) -> Any:
@@ -470,8 +620,10 @@ class Interpreter(Expressions):
                     -len(container) <= key < len(container)):
                 container[key] = value
         elif isinstance(target, ast.Attribute) and isinstance(
-                owner := self.eval(target.value, env), Constructing):
+                owner := self.eval(target.value, env), (Constructing, Instance)):
             owner.attributes[target.attr] = value  # self.name = ... in a constructor
+        elif isinstance(target, ast.Attribute) and isinstance(owner, PlainClass):
+            owner.attributes[target.attr] = value  # Cls.count = ... (a class's name)
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
 
@@ -656,6 +808,14 @@ class Interpreter(Expressions):
         if not self.workspace.readable(full, self.environment):
             self.unsupported(node, f"{path} is outside the workspace; not read")
             return None
+        if not os.path.lexists(full):
+            # said where it is read, not at a file that is not there: a build step or
+            # the launch code itself may make it (vrx_gz's spawn reads the model.urdf its
+            # Model.generate wrote), so its content is unknown, as a parameter file's
+            self.unsupported(node, f"{self.workspace.relpath(full)} does not exist in the "
+                                   "workspace (a build or launch step may make it); its "
+                                   "content is not known")
+            return None
         text, found = read_text(full, self.workspace.location(full), MAX_READ)
         self.diagnostics.extend(found)
         return text
@@ -704,6 +864,10 @@ class Interpreter(Expressions):
             return self.call_function(func, args, kwargs, node)
         if isinstance(func, ActionClass):
             return self.construct(func, args, kwargs, node)
+        if isinstance(func, PlainClass):
+            return self.instantiate(func, args, kwargs, node)
+        if isinstance(func, Method):
+            return self.call_function(func.func, [func.owner, *args], kwargs, node)
         if isinstance(func, SuperOf):  # super(), or super(Class, self)
             return func
         if isinstance(func, _Bound) and isinstance(func.owner, SuperOf) \
@@ -1001,3 +1165,12 @@ def _common_text(values: list[Any], reason: str) -> Lazy | None:
             parts.append(token)
     return Lazy(tuple(parts))
 
+
+
+_ENUM_BASES = ("enum.Enum", "enum.IntEnum", "enum.StrEnum", "enum.Flag", "enum.IntFlag")
+
+
+def _no_op(item: ast.stmt) -> bool:
+    """A class body's ``pass`` or docstring."""
+    return isinstance(item, ast.Pass) or (
+        isinstance(item, ast.Expr) and isinstance(item.value, ast.Constant))

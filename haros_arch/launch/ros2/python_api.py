@@ -43,6 +43,7 @@ from .python_methods import (
     open_file,
     safe_load,
     text_or_none,
+    type_of,
     xacro_parse,
     xacro_process,
     xacro_process_doc,
@@ -780,7 +781,7 @@ API: dict[str, Builder] = {
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
-    "print": ignored, "isinstance": is_instance,
+    "print": ignored, "isinstance": is_instance, "type": type_of,
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
     "open": open_file, "safe_load": safe_load,
     "copy": copy_of(False), "deepcopy": copy_of(True),
@@ -793,6 +794,6 @@ API: dict[str, Builder] = {
 METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open", "getattr"))
+                      "isinstance", "all", "any", "open", "getattr", "type"))
 
 

@@ -29,9 +29,13 @@ from .python_values import (
     Budget,
     Constructing,
     Context,
+    EnumMember,
     Func,
+    Instance,
     Lazy,
+    Method,
     Module,
+    PlainClass,
     Ref,
     _hashable,
     _opaque,
@@ -367,6 +371,16 @@ class Expressions(Walker):
                 return owner.names[node.attr]
             return self.unsupported(node, f"{owner.name}.{node.attr} is not defined in "
                                           f"{owner.name} as read here")
+        if isinstance(owner, (Instance, PlainClass)):
+            found = member(owner, node.attr)
+            if found is UNBOUND:
+                name = owner.cls.name if isinstance(owner, Instance) else owner.name
+                return self.unsupported(node, f"{name}.{node.attr} is not set as read here")
+            if isinstance(found, _Property):  # run on each read, as Python does
+                return self.call(Method(found.func, owner), [], {}, node)
+            return found
+        if isinstance(owner, EnumMember) and node.attr in ("name", "value"):
+            return owner.name if node.attr == "name" else owner.value
         if isinstance(owner, Context) and node.attr == "launch_configurations":
             return owner
         if isinstance(owner, Context) and node.attr == "environment":
@@ -531,6 +545,33 @@ def math_constant(name: str) -> bool:
 
 def _unknown_part(value: Any) -> Unknown:
     return value if isinstance(value, Unknown) else Unknown("a list not known statically")
+
+
+@dataclass(eq=False)
+class _Property:
+    """A property of a ``PlainClass`` read on an instance: its function, run then."""
+
+    func: Func
+
+
+def member(owner: Instance | PlainClass, attr: str) -> Any:
+    """``owner.attr`` of an instance (its own attributes first) or of a class: a value, a
+    ``Method`` bound to the instance (the class, for a classmethod), a function (a
+    staticmethod; a plain method read on the class), a ``_Property``; ``UNBOUND`` when
+    neither the instance nor its class has that name."""
+    cls = owner.cls if isinstance(owner, Instance) else owner
+    if isinstance(owner, Instance) and attr in owner.attributes:
+        return owner.attributes[attr]
+    if attr in cls.methods:
+        kind, func = cls.methods[attr]
+        if kind == "static":
+            return func
+        if kind == "class":
+            return Method(func, cls)
+        if not isinstance(owner, Instance):
+            return func if kind == "method" else UNBOUND
+        return _Property(func) if kind == "property" else Method(func, owner)
+    return cls.attributes.get(attr, UNBOUND)
 
 
 @dataclass

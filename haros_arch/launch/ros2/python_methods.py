@@ -27,6 +27,7 @@ from .python_values import (
     LIMITS,
     Budget,
     Context,
+    Instance,
     LaunchDescription,
     Lazy,
     Module,
@@ -214,6 +215,18 @@ def is_instance(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not answers or None in answers:
         return Unknown("isinstance")
     return False
+
+
+def type_of(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``type(value)`` where it is known: the builtin type of a plain value (vrx_gz's
+    ``if type(models) != list: models = [models]``), the class of an instance of a class
+    the launch code defines; not known for any other value."""
+    if k or len(a) != 1:
+        return Unknown("type")
+    if isinstance(a[0], Instance):
+        return a[0].cls
+    name = next((name for name, cls in _PLAIN_TYPES.items() if type(a[0]) is cls), None)
+    return Ref(name) if name is not None else Unknown("type of a value not known statically")
 
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

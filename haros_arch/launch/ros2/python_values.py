@@ -116,6 +116,59 @@ class ActionClass:
 
 
 @dataclass(eq=False)
+class PlainClass:
+    """A class of the interpreted code that is no launch action (vrx_gz's ``Model``,
+    whose methods build its bridges and nodes; a ``@dataclass`` ``Bridge``; an ``Enum``):
+    calling it makes an ``Instance``, its methods run when called. ``methods``: name ->
+    (kind: method, static, class or property; function); ``attributes``: the names its
+    body sets (an Enum's members); ``fields``: a dataclass's fields in order with their
+    defaults (``UNSET`` for none), None for a class that is no dataclass."""
+
+    name: str
+    methods: dict[str, tuple[str, Func]] = field(default_factory=dict)
+    attributes: dict[str, Any] = field(default_factory=dict)
+    fields: list[tuple[str, Any]] | None = None
+    enum: bool = False
+
+
+@dataclass(eq=False)
+class Instance:
+    """An object of a ``PlainClass``: the attributes its constructor and methods set."""
+
+    cls: PlainClass
+    attributes: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class EnumMember:
+    """A member of an ``Enum`` class of the interpreted code (``BridgeDirection.GZ_TO_ROS``):
+    itself, equal to no other value, with its ``name`` and ``value``."""
+
+    cls: str
+    name: str
+    value: Any
+
+
+@dataclass(eq=False)
+class Method:
+    """A function of a ``PlainClass`` bound to what it gets first: the instance, or the
+    class for a classmethod."""
+
+    func: Func
+    owner: Any
+
+
+UNSET = object()  # a dataclass field with no default
+
+
+@dataclass(eq=False)
+class FieldFactory:
+    """A dataclass field's ``field(default_factory=...)``: called for each instance."""
+
+    func: Any
+
+
+@dataclass(eq=False)
 class Constructing:
     """``self`` in an ``ActionClass``'s constructor: the attributes it sets, and the
     action its base built once ``super().__init__`` ran."""
