@@ -144,7 +144,8 @@ def _git(*args: str, data: bytes | None = None) -> bytes:
 
 
 def _copy_tree(gitdir: str, rev: str, dest: str) -> None:
-    """The files of ``rev`` the mirror has (under 2 MB), written under ``dest``."""
+    """The files of ``rev`` the mirror has (under 2 MB), written under ``dest`` (executable
+    where git says so)."""
     listing = _git(f"--git-dir={gitdir}", "ls-tree", "-r", "-l", "-z", rev).split(b"\0")
     for entry in filter(None, listing):
         meta, name = entry.split(b"\t", 1)
@@ -161,6 +162,8 @@ def _copy_tree(gitdir: str, rev: str, dest: str) -> None:
             continue  # links are left out (the scratch copy needs none)
         with open(target, "wb") as handle:
             handle.write(data)
+        if mode == b"100755":  # a script roslaunch runs from the package's folder
+            os.chmod(target, 0o755)
 
 
 def _scratch_repository(gitdir: str, commit: str, scratch: str) -> str:

@@ -817,3 +817,13 @@ private:
     assert "CPP_INCLUDE_MISSING" not in [d.code for d in result.diagnostics]
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "limit"), ("publish", "out")]
+
+
+def test_the_parameter_callback_type_alias_and_glibc_short_names(write_tree) -> None:
+    # realsense-ros' ParametersBackend (NodeParametersInterface::OnParametersSetCallbackType:
+    # 86 errors, the camera node partial) and ros2_control_demos' ``for (uint i = 0; ...)``
+    # in its hardware (51 errors), found by the bugs of bench/real_bugs.yaml
+    result = _extract(write_tree, _source("ros2_param_callback_uint.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "align_depth.enable"), ("publish", "status")]

@@ -213,3 +213,55 @@ def test_an_export_macro_in_an_included_header_makes_the_source_the_classs(tmp_p
     # before: none (the library exports another class and not this one)
     assert narrow(sources, "arm_hw::ArmSystem", workspace) == ["arm_hw/src/arm.cpp"]
     assert narrow(sources, "arm_hw::FakeSystem", workspace) == ["arm_hw/src/fake.cpp"]
+
+
+MOCK = """<?xml version="1.0"?>
+<robot name="rrbot"><link name="base"/>
+  <ros2_control name="Rrbot" type="system">
+    <hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+    <joint name="joint1"/>
+  </ros2_control>
+</robot>
+"""
+
+
+def test_a_remap_given_to_a_manager_whose_plugins_are_all_known_is_judged(tmp_path):
+    """ros2_control_demos' example_15 (ec1ae61^) gives ros2_control_node in /rrbot the
+    remap /forward_position_controller/commands:=/position_commands; its controller
+    subscribes /rrbot/forward_position_controller/commands, so the remap changes nothing.
+    The manager's model loads plugins, but the host row loaded each of them (hardware of
+    its description, controllers its spawners name: nodes that take its remaps), so
+    nothing unseen may use the name: remap-unused reports it. Before, a model of code
+    that loads plugins always left it undecided."""
+    urdf = tmp_path / "rrbot.urdf"
+    urdf.write_text(MOCK)
+    controllers = tmp_path / "controllers.yaml"
+    controllers.write_text("/rrbot/forward_position_controller:\n  ros__parameters:\n"
+                           "    type: forward_command_controller/ForwardCommandController\n"
+                           "    joints: [joint1]\n    interface_name: position\n")
+
+    def remap_of(source: str, kind: str = "forward_command_controller/"
+                 "ForwardCommandController") -> tuple[list[str], list[str]]:
+        controllers.write_text(controllers.read_text().replace(
+            "forward_command_controller/ForwardCommandController", kind))
+        decls = [manager("/rrbot/controller_manager", namespace="/rrbot/",
+                         remaps=[(source, "/position_commands")]),
+                 NodeDecl("/rrbot/spawner", "controller_manager", "spawner", "/rrbot/",
+                          args=f"forward_position_controller --param-file {controllers}",
+                          ros_version=2)]
+        config = configure(tmp_path, decls, [ParamDecl(
+            "/rrbot/controller_manager/robot_description", "?", command=f"xacro {urdf}")])
+        (remap,) = config.remaps
+        near.extend(remap.near)
+        return [n.name for n in remap.users], [n.name for n in remap.unseen]
+
+    near: list[str] = []
+    assert remap_of("/forward_position_controller/commands") == ([], [])
+    # the message names the controller's own topic, which the remap may have meant
+    assert near == ["/rrbot/forward_position_controller/commands"]
+    assert remap_of("forward_position_controller/commands") == (
+        ["/rrbot/forward_position_controller"], [])
+    # a controller whose class is found nowhere (a node of unknown interface in the
+    # manager's process) may use the name unseen
+    assert remap_of("/forward_position_controller/commands", kind="nowhere/Controller")[1] \
+        == ["/rrbot/forward_position_controller"]

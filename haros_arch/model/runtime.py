@@ -57,6 +57,9 @@ class NodeInstance:
     # renames every node of a process that runs several (ublox_gps_node's own node and
     # its raw_data_pa, both /sensing/gnss/ublox under name="ublox")
     code_name: str | None = field(default=None, metadata={"optional": True})
+    # a host row loaded its plugins (``plugins.attach``): what its code loads by name is
+    # in its links or in the instances it made, and a plugin not found made it partial
+    hosted: bool = field(default=False, metadata={"optional": True})
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
@@ -528,14 +531,17 @@ def _could_use(instance: NodeInstance, name: str) -> bool:
     an interface partly or wholly unknown; one read from an interface model of code that
     loads plugins (a remap is often given for a name a plugin adds: move_base's ``odom``
     is its local planner's; a complete model of code that loads none lists every name,
-    its options' under their conditions, as the workspace's own code would); a
+    its options' under their conditions, as the workspace's own code would), unless a
+    host row loaded them (``NodeInstance.hosted``: ros2_control_node's controllers are
+    nodes of the configuration, which take its remaps, and a plugin not found would
+    have made it partial); a
     container, whose components take the process's remaps; a name with ``?`` that may
     be it; in ROS 1, a name on a handle whose namespace is not known (``?/camera_info``):
     roscpp resolves and remaps a NodeHandle's namespace, so that namespace may be it
     (depth_image_proc's ``NodeHandle(nh, "right")`` with ``right:=projector``)."""
     node = instance.node
     if node is None or not instance.is_complete or (
-        node.model is not None and node.plugin_loads
+        node.model is not None and node.plugin_loads and not instance.hosted
     ):
         return True
     for link in instance.links:
@@ -634,15 +640,22 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
                 # a node a host makes in its process (nav2's costmaps) takes the
                 # process's remaps, given for the host: a use counts, a non-use does not
                 # (resolved in its own namespace, the name is not its host's: the remap
-                # is the one given to a launch node whose namespace holds it)
-                if used:
-                    inside = instance.namespace.rstrip("/") + "/"
-                    for key, remap in found.items():
-                        if key[:2] == (source, target) and any(
-                            inside.startswith(n.namespace.rstrip("/") + "/")
-                            for n in remap.nodes
-                        ):
-                            remap.users.append(instance)
+                # is the one given to a launch node whose namespace holds it); one that
+                # may use it unseen (a controller of a class found nowhere) may be its use
+                unseen = not used and (_could_use(instance, name)
+                                       or _may_be_used(instance, source, name))
+                inside = instance.namespace.rstrip("/") + "/"
+                for key, remap in found.items():
+                    if key[:2] == (source, target) and any(
+                        inside.startswith(n.namespace.rstrip("/") + "/")
+                        for n in remap.nodes
+                    ):
+                        if used or unseen:
+                            (remap.unseen if unseen else remap.users).append(instance)
+                        # its names are among those the remap may have meant (the
+                        # controller's own commands topic beside its manager's)
+                        remap.near.extend(n for n in _near(instance, name)
+                                          if n not in remap.near)
                 continue
             remap = found.setdefault((source, target, name), Remap(source, target))
             remap.nodes.append(instance)

@@ -149,6 +149,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
             if inner is not None:
                 hosts.append((inner, own))
         for host, instance in hosts:
+            instance.hosted = True
             for slot in host.slots:
                 if slot.since is not None and instance.node is not None and \
                         _older(_version(instance.node, workspace), slot.since):

@@ -77,7 +77,7 @@ FIELDS: dict[type, tuple[str, ...]] = {
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",
                    "location", "rosname", "links", "publishers", "subscribers", "servers",
                    "clients", "action_servers", "action_clients", "reads", "writes",
-                   "origin", "ros_version", "test", "remaps_applied", "completeness",
+                   "origin", "ros_version", "test", "hosted", "remaps_applied", "completeness",
                    "completeness_reasons", "is_complete"),
     Resource: _RESOURCE,
     Topic: ("publishers", "subscribers", "is_disconnected"),

@@ -622,6 +622,9 @@ class NodeTopicsInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTopicsInter
 // rclcpp's parameter API on the node's parameters interface (api.RCLCPP_INTERFACES)
 struct OnSetParametersCallbackHandle;
 class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParametersInterface)
+  // the callback type of the parameter-set callbacks (foxy's name, kept as an alias)
+  using OnParametersSetCallbackType = std::function<rcl_interfaces::msg::SetParametersResult(
+      const std::vector<rclcpp::Parameter>&)>;
   template<class C> std::shared_ptr<OnSetParametersCallbackHandle>
       add_on_set_parameters_callback(C callback);
   void remove_on_set_parameters_callback(const OnSetParametersCallbackHandle* handler);
@@ -667,7 +670,9 @@ class NodeTimersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimersInter
   void add_timer(rclcpp::TimerBase::SharedPtr timer,
                  rclcpp::CallbackGroup::SharedPtr callback_group); };
 class NodeWaitablesInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeWaitablesInterface) };
-struct OnSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(OnSetParametersCallbackHandle) };
+struct OnSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(OnSetParametersCallbackHandle)
+  using OnSetParametersCallbackType = NodeParametersInterface::OnParametersSetCallbackType;
+  using OnParametersSetCallbackType = OnSetParametersCallbackType; };
 struct PreSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PreSetParametersCallbackHandle) };
 struct PostSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PostSetParametersCallbackHandle) };
 }
@@ -785,6 +790,10 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   void wait_for_graph_change(std::shared_ptr<rclcpp::Event> event, \
                              std::chrono::nanoseconds timeout); \
   using OnSetParametersCallbackHandle = rclcpp::node_interfaces::OnSetParametersCallbackHandle; \
+  using OnParametersSetCallbackType = \
+      rclcpp::node_interfaces::NodeParametersInterface::OnParametersSetCallbackType; \
+  OnParametersSetCallbackType set_on_parameters_set_callback( \
+      OnParametersSetCallbackType callback); \
   using PreSetParametersCallbackHandle = \
       rclcpp::node_interfaces::PreSetParametersCallbackHandle; \
   using PostSetParametersCallbackHandle = \

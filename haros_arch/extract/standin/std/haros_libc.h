@@ -19,6 +19,11 @@ typedef long ssize_t;
 typedef long time_t;
 typedef int pid_t;
 typedef unsigned int uid_t;
+// glibc's <sys/types.h> short names (g++ defines _GNU_SOURCE, and the C++ headers bring
+// them in: ros2_control_demos' hardware counts with ``uint``)
+typedef unsigned long int ulong;
+typedef unsigned short int ushort;
+typedef unsigned int uint;
 #define PRId8 "d"
 #define PRId16 "d"
 #define PRId32 "d"
