@@ -6,10 +6,10 @@ arguments some of which are not known. These functions cut the result into its p
 the template's literal text, and each argument where it lands, given to the caller's
 ``text(value)``; a field that cannot be filled statically (a format spec other than
 ``s`` or a conversion applied to a value, an index or attribute in a field name, a
-missing argument) is the caller's ``unknown(reason)``. The caller joins the parts into its own partial value. The
-result's size is estimated before any part is made (``budget``); a field never reaches an
-attribute. When every value is known the caller uses ``operations`` instead, which makes
-the exact string.
+missing argument) is the caller's ``unknown(reason)``. The caller joins the parts into
+its own partial value. The result's size is estimated before any part is made
+(``budget``); a field never reaches an attribute. When every value is known the caller
+uses ``operations`` instead, which makes the exact string.
 """
 
 from __future__ import annotations
