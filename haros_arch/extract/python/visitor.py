@@ -375,7 +375,8 @@ class Walker:
             return
         text = self._text(frame, statement.test)
         where = self._where(frame, statement)
-        yes, no = condition("if", text, where), condition("else", text, where)
+        held = self._held(statement.test, frame)
+        yes, no = condition("if", text, where, held), condition("else", text, where, held)
         before = dict(frame.locals)
         self._block(statement.body, frame, (*conds, yes))
         taken = dict(frame.locals)
@@ -386,6 +387,34 @@ class Walker:
         other = dict(frame.locals)
         frame.locals.clear()
         frame.locals.update(_joined(before, taken, other, yes, no))
+
+    def _held(self, test: ast.expr, frame: Frame) -> tuple[tuple[str, str], ...] | None:
+        """What ``test`` reads that holds a parameter's value, as the graph decides a
+        condition by (``Condition.parameters``): each local whose value here is a
+        parameter read's (``num_agents = self.get_parameter('num_agent').value``, then
+        ``if num_agents == 2``), and each read written in the test itself
+        (``if self.get_parameter('kb_teleop').value``, ``if rospy.get_param('~x', 1)``),
+        by its source text; with the parameter named as its read call is. A member of
+        ``self`` is not one (its read names it: ``PrimitiveCall.variable``)."""
+        found: dict[str, str] = {}
+        stack: list[ast.AST] = [test]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, ast.Name) and node.id in frame.locals:
+                value = frame.locals[node.id]
+                key = node.id
+            elif isinstance(node, ast.Call | ast.Attribute) and _self_member(node) is None:
+                value = self.evaluator.eval(node, frame)
+                key = self._text(frame, node)
+            else:
+                stack.extend(ast.iter_child_nodes(node))
+                continue
+            if isinstance(value, ParamValue) and "?" not in value.name:
+                version = frame.module.version
+                found[key] = param_name(Value.of(value.name)) if version == 2 else value.name
+            elif not isinstance(node, ast.Name):
+                stack.extend(ast.iter_child_nodes(node))
+        return tuple(sorted(found.items())) or None
 
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
