@@ -881,12 +881,18 @@ class Walker:
                 # instance's arguments give it
                 call.name_option = params[0].removeprefix(PROGRAM_OPTION)
                 call.name_option_default = ev.option_defaults.get(call.name_option)
-            elif len(params) == 1 and params[0].startswith("parameter "):
-                name = params[0].removeprefix("parameter ")
-                call.name_param = param_name(Value.of(name)) if version == 2 else name
-                default = ev.param_defaults.get(name)
-                if isinstance(default, Value) and default.is_known:
-                    call.name_default = default.text
+            elif params and all(p.startswith("parameter ") for p in params):
+                # one parameter's value with text around it (``"/" + ns + "/cmd"``), or
+                # several, each in the place of its ``?`` (``ns + "/" + topic``)
+                filled = []
+                for origin in params:
+                    name = origin.removeprefix("parameter ")
+                    default = ev.param_defaults.get(name)
+                    filled.append([param_name(Value.of(name)) if version == 2 else name,
+                                   default.text if isinstance(default, Value)
+                                   and default.is_known else None])
+                call.name_param, call.name_default = filled[0]
+                call.name_more = filled[1:] or None
         found = searched_name(text)
         if found is not None:  # get_param(search_param('x')): the parameter found
             call.name, call.searched = found, True
@@ -898,6 +904,8 @@ class Walker:
             call.name = "~" + text.text[2:]
         else:  # get_name() is "~": only as the start of a name is it the node's name
             call.name = (text.text[:1] + text.text[1:].replace("~", "?")) or "?"
+        if call.name_more and call.name.count("?") != 1 + len(call.name_more):
+            call.name_param = call.name_default = call.name_more = None  # not one each
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,
               action: bool) -> str | None:
