@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import ast
 import configparser
+import functools
 import glob
 import os
 import posixpath
@@ -192,7 +193,7 @@ def _from_setup_call(module: Module, tree: ast.Module, path: str, workspace: Wor
                 and len(s.targets) == 1 and isinstance(s.targets[0], ast.Name)}
     entries: list[EntryPoint] = []
     package_dir: dict[str, str] = {}
-    for keyword in call.keywords:
+    for keyword in _keywords(call, module, assigned):
         if keyword.arg == "package_dir":
             value = module.value(keyword.value)
             if isinstance(value, dict):
@@ -205,6 +206,62 @@ def _from_setup_call(module: Module, tree: ast.Module, path: str, workspace: Wor
             node = assigned[node.id]  # entry_points=ENTRY_POINTS defined above
         entries.extend(_console_scripts(node, module, path, workspace, found))
     return entries, package_dir
+
+
+# catkin_pkg's helper whose result ROS 1 packages pass to setup(): its keyword arguments,
+# with what package.xml says added (``setup(**generate_distutils_setup(packages=[..],
+# package_dir={'': 'src'}))``)
+CATKIN_SETUP = "catkin_pkg.python_setup.generate_distutils_setup"
+
+
+def _keywords(call: ast.Call, module: Module, assigned: dict[str, ast.expr]
+              ) -> list[ast.keyword]:
+    """The keyword arguments of a setup() call, with those of a ``**`` argument that is
+    catkin's ``generate_distutils_setup(...)`` (or a name assigned one) in its place."""
+    found: list[ast.keyword] = []
+    for keyword in call.keywords:
+        node = keyword.value
+        if keyword.arg is not None:
+            found.append(keyword)
+            continue
+        if isinstance(node, ast.Name) and node.id in assigned:
+            node = assigned[node.id]
+        if isinstance(node, ast.Call) and module.qualified(node.func) == CATKIN_SETUP:
+            found.extend(k for k in node.keywords if k.arg is not None)
+    return found
+
+
+def python_folders(root: str) -> tuple[str, ...]:
+    """The folders (absolute) in which the package at ``root`` keeps the Python packages
+    its setup.py installs, as ``package_dir`` places them: its ``''`` entry (duckietown's
+    ``package_dir={'': 'include'}``), and the parent of a named package's folder that
+    has the package's name (``{'pkg': 'lib/pkg'}``). Nothing for a package without a
+    setup.py or one that gives no ``package_dir`` (the caller looks in ``src/`` and the
+    package folder, the common layouts); setup.py's problems are said where it is
+    read as a build file (``parse_package``), not here."""
+    path = os.path.join(root, "setup.py")
+    try:
+        stat = os.stat(path)
+    except OSError:
+        return ()
+    return _python_folders(path, stat.st_mtime_ns, stat.st_size)
+
+
+@functools.lru_cache(maxsize=256)
+def _python_folders(path: str, _mtime: int, _size: int) -> tuple[str, ...]:
+    workspace = Workspace(os.path.dirname(path))
+    _, package_dir = _from_setup_py(path, workspace, [])
+    root = os.path.dirname(path)
+    folders = []
+    for name, folder in package_dir.items():
+        if os.path.isabs(folder) or ".." in folder.replace("\\", "/").split("/"):
+            continue  # only folders inside the package
+        place = os.path.normpath(os.path.join(root, folder))
+        if name == "":
+            folders.append(place)
+        elif "." not in name and os.path.basename(place) == name:
+            folders.append(os.path.dirname(place))
+    return tuple(dict.fromkeys(f for f in folders if os.path.isdir(f)))
 
 
 def _console_scripts(node: ast.expr, module: Module, path: str,

@@ -29,6 +29,8 @@ def _unknown(reason: str) -> str:
     ("{0:>10}/{0!r}/{0!s}", ["a"], {}, "?/?/<a>"),  # a spec or repr of a partial value
     ("{0.real}/{0[1]}/{5}", ["a"], {}, "?/?/?"),  # no attribute, no index, no argument
     ("{", ["a"], {}, "?"),  # str.format raises: nothing known
+    # ``:s`` formats a string as it is (duckietown's ``'{:s}/{:s}'.format(ns, name)``)
+    ("{:s}/{0:s}/{0!s:s}/{0:10s}", ["a"], {}, "<a>/<a>/<a>/?"),
 ])
 def test_format_parts(template, args, kwargs, expected) -> None:
     assert "".join(partial.format_parts(template, args, kwargs, _text, _unknown)) == expected

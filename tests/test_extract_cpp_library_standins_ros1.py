@@ -253,3 +253,43 @@ def test_a_box_of_a_shared_pointer_and_a_timer_at_a_rate_make_no_error(write_tre
     errors = [d.message for d in result.diagnostics
               if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
     assert errors == []
+
+
+WAIT = """#include <ros/ros.h>
+#include <ros/topic.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <std_msgs/String.h>
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "look");
+  ros::NodeHandle n;
+  if (!ros::Time::waitForValid(ros::WallDuration(10.0)))
+    return 1;
+  sensor_msgs::CameraInfoConstPtr msg = ros::topic::waitForMessage
+      <sensor_msgs::CameraInfo>("/camera/info", ros::Duration(10.0));
+  if (msg.use_count() > 0 && !msg.unique())
+    n.advertise<std_msgs::String>("ready", 1);
+  return 0;
+}
+"""
+
+
+def test_time_wait_for_valid_with_a_timeout_and_shared_pointer_counts(write_tree) -> None:
+    """PAL's tiago_tutorials wait for a valid time with a timeout
+    (``ros::Time::waitForValid(ros::WallDuration(10.0))``) in ``main`` of four nodes, and
+    look_to_point tests ``msg.use_count()`` of what ``waitForMessage`` gives: each an
+    error in ``main``, which makes the node's calls (CPP_NODE_PARTIAL)."""
+    root = write_tree({
+        "look/package.xml": package_xml("look", "catkin"),
+        "look/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(look)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp sensor_msgs std_msgs)\n"
+            "catkin_package()\nadd_executable(look src/look.cpp)\n"),
+        "look/src/look.cpp": WAIT})
+    result = extract_cpp([str(root / "look" / "src" / "look.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    calls = [(c.kind, c.name) for c in result.calls]
+    assert ("subscribe", "/camera/info") in calls and ("publish", "ready") in calls
+    errors = [d.message for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
+    assert errors == []

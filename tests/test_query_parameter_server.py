@@ -30,7 +30,7 @@ def main():
     if rospy.has_param("~optional"):           # checks another name: this read fails
         other = rospy.get_param("~optional_b")
     pub = rospy.Publisher("chatter", String, queue_size=10)
-    if rate > 5:
+    if rospy.get_time() > rate:               # not decided statically
         fast = rospy.Publisher("fast", String, queue_size=10)
 
 try:

@@ -35,6 +35,11 @@ class Module:
             return Unknown("no module", "undefined")
         return self.interpreter.run(node)
 
+    def qualified(self, node: ast.expr) -> str | None:
+        """The dotted name a callee of this module stands for, its imports applied
+        (``generate_distutils_setup`` of ``from catkin_pkg.python_setup import ...``)."""
+        return _qualified(node, self.aliases)
+
     @property
     def limited(self) -> tuple[Unknown, ast.AST] | None:
         """The first work bound reached, and where: the values after it are unknown."""

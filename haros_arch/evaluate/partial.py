@@ -4,12 +4,12 @@ The readers that keep partial values (the Python launch-file reader's substituti
 Python node reader's names with ``?`` parts) build a string from a known template and
 arguments some of which are not known. These functions cut the result into its parts:
 the template's literal text, and each argument where it lands, given to the caller's
-``text(value)``; a field that cannot be filled statically (a format spec or a conversion
-applied to a value, an index or attribute in a field name, a missing argument) is the
-caller's ``unknown(reason)``. The caller joins the parts into its own partial value. The
-result's size is estimated before any part is made (``budget``); a field never reaches an
-attribute. When every value is known the caller uses ``operations`` instead, which makes
-the exact string.
+``text(value)``; a field that cannot be filled statically (a format spec other than
+``s`` or a conversion applied to a value, an index or attribute in a field name, a
+missing argument) is the caller's ``unknown(reason)``. The caller joins the parts into
+its own partial value. The result's size is estimated before any part is made
+(``budget``); a field never reaches an attribute. When every value is known the caller
+uses ``operations`` instead, which makes the exact string.
 """
 
 from __future__ import annotations
@@ -57,7 +57,8 @@ def format_parts(template: str, args: Sequence[Any], kwargs: Mapping[str, Any],
             present = 0 <= first < len(args)
         else:
             found, present = kwargs.get(first), first in kwargs
-        if not present or list(rest) or spec or conversion not in (None, "s"):
+        # ``{:s}`` formats a string as it is (``{}``); any other spec pads or converts
+        if not present or list(rest) or spec not in ("", "s") or conversion not in (None, "s"):
             parts.append(unknown("format"))
             continue
         total += _size(found)

@@ -705,6 +705,15 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         # one the code sets from a value it knows, not read recursively any further
         other = _parameter_value(call.default_param, None, instance, resources)
         value = value.replace(UNKNOWN_MARK, other, 1) if other else None
+    if call.name_more:  # several parameters, one per ``?`` in order; unknown: ``?``
+        values = [value, *(_parameter_value(p or "", d, instance, resources)
+                           for p, d in call.name_more)]
+        pieces = call.name.split(UNKNOWN_MARK)
+        if len(pieces) != len(values) + 1:
+            return call.name
+        return pieces[0] + "".join(
+            (UNKNOWN_MARK if v is None else v) + piece for v, piece in zip(
+                values, pieces[1:], strict=True))
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     return _filled(call.name, value)

@@ -462,8 +462,12 @@ _TYPES: dict[str, tuple[type, ...]] = {"bool": (bool,), "int": (int,),
                                        "str": (str,)}
 
 
-def _typed(value: Any, ctype: str | None) -> object:
-    """``value`` when it is of the read's type (an int is not a bool here)."""
+def _typed(value: Any, ctype: str | None, untyped: bool = False) -> object:
+    """``value`` when it is of the read's type (an int is not a bool here); ``untyped``:
+    a read with no type (None) takes any value of a YAML scalar's type, as rospy's
+    ``get_param('~x')`` and rclpy's ``declare_parameter('x')`` with no default do."""
+    if untyped and ctype is None and isinstance(value, (bool, int, float, str)):
+        return value
     allowed = _TYPES.get(ctype or "")
     if allowed is None or not isinstance(value, allowed) or (
         bool not in allowed and isinstance(value, bool)
@@ -472,8 +476,9 @@ def _typed(value: Any, ctype: str | None) -> object:
     return value
 
 
-def _read_value(link: Link) -> object:
-    """The value a parameter read gets in this configuration."""
+def _read_value(link: Link, untyped: bool = False) -> object:
+    """The value a parameter read gets in this configuration (``untyped``: a read with
+    no type takes the value as it is, ``_typed``)."""
     call, param = link.call, link.resource
     if call is None or not isinstance(param, Parameter):
         return Unknown("not a parameter read")
@@ -483,7 +488,7 @@ def _read_value(link: Link) -> object:
     if param.set_by_launch:
         if param.launch_conditions or param.setters:
             return Unknown(f"{param.name} is set under a condition or by a node")
-        return _typed(param.value, call.type)
+        return _typed(param.value, call.type, untyped)
     if param.setters:
         return Unknown(f"{param.name} is set by a node")
     if call.has_default and call.default is not None:
@@ -580,6 +585,10 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
         if link.call is not None and link.call.kind == "declare":
             declared.setdefault(id(link.resource), []).append(link)
 
+    # Python reads: a parameter read with no type takes any value (C++: the type of the
+    # variable it writes, which the parse may not know)
+    dynamic = instance.node is not None and instance.node.language == "python"
+
     def value(name: str, *, file: str | None,
               held: dict[str, str] | None = None) -> object:
         # a read in the condition's own file, else in another file of the node: a base
@@ -613,7 +622,7 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
         found = [each for link in found for each in (
             declared.get(id(link.resource), [link]) if link.call is not None and (
                 link.call.kind == "read" and not link.call.has_default) else [link])]
-        values = [_read_value(link) for link in found]
+        values = [_read_value(link, dynamic) for link in found]
         # constants the code also assigns the member: one that differs leaves it unknown
         values += [_typed(value, link.call.type) for link in found
                    if link.call is not None for value in link.call.also or ()]

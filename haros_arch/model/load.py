@@ -105,6 +105,16 @@ def _program_arg(value: Any) -> int | None:
         0 < abs(value) < 1000) else None
 
 
+def _name_more(value: Any) -> list[list[str | None]] | None:
+    """``PrimitiveCall.name_more``: [parameter, default or None] pairs, else None."""
+    if not isinstance(value, list) or not value or not all(
+        isinstance(v, list) and len(v) == 2 and isinstance(v[0], str)
+        and (v[1] is None or isinstance(v[1], str)) for v in value
+    ):
+        return None
+    return [[v[0], v[1]] for v in value]
+
+
 def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
     """A call (a node's ``calls`` entry, or a link's own ``call``) from its data."""
     return PrimitiveCall(c.get("kind", "publish"), str(c.get("name", "")), c.get("type"),
@@ -128,6 +138,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                              c.get("name_option"), str) else None,
                          name_option_default=c.get("name_option_default") if isinstance(
                              c.get("name_option_default"), str) else None,
+                         name_more=_name_more(c.get("name_more")),
                          transport=c.get("transport"),
                          variable=c.get("variable"),
                          also=c.get("also") if isinstance(c.get("also"), list) else None,

@@ -139,6 +139,12 @@ class PrimitiveCall:
     # launch file's arguments, known statically, do not name it: gazebo_ros'
     # spawn_entity.py ``-gazebo_namespace``, default ``''``, so ``/spawn_entity``
     name_option_default: str | None = field(default=None, metadata={"optional": True})
+    # a name with several ``?``, each a parameter's value, in order: ``name_param`` (and
+    # ``name_default``) fills the first, each [parameter, its default or None] here one
+    # more (f1tenth_gym_ros' ``ego_namespace + '/' + get_parameter('ego_odom_topic')``:
+    # name ``?/?``, name_param ``ego_namespace``, name_more ``[["ego_odom_topic", None]]``)
+    name_more: list[list[str | None]] | None = field(
+        default=None, metadata={"optional": True})
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
     # publisher, which also publishes the topic of every transport plugin it loads; for
     # a subscriber the transport its code names (``raw``, ``compressed``), or ``?`` when

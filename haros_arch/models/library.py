@@ -8,6 +8,7 @@ read is a ``MODEL_INVALID`` diagnostic and is not used.
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 from collections.abc import Iterable
@@ -53,6 +54,24 @@ class Library:
         if not os.path.isfile(path):
             return None
         return read_model(path, self.diagnostics)
+
+
+@functools.lru_cache(maxsize=1)
+def shipped_packages() -> frozenset[str]:
+    """The packages a shipped interface model exists for, in any distribution: ROS
+    packages the tool knows by name (sound_play, mavros, rosserial_python, ...)."""
+    found: set[str] = set()
+    try:
+        distros = os.listdir(DATA)
+    except OSError:
+        return frozenset()
+    for distro in distros:
+        try:
+            files = os.listdir(os.path.join(DATA, distro))
+        except OSError:
+            continue
+        found.update(f.removesuffix(".json") for f in files if f.endswith(".json"))
+    return frozenset(found)
 
 
 def _model_files(path: str, found: list[Diagnostic]) -> list[str]:

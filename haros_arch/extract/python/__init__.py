@@ -19,6 +19,7 @@ from ...diagnostics import Diagnostic
 from ...manifest import ros_version
 from ...model.conditions import Condition
 from ...model.source import PrimitiveCall
+from ...models.library import shipped_packages
 from ...workspace import Workspace
 from .modules import Loader, Module
 from .visitor import Walker
@@ -153,13 +154,17 @@ NOT_CLIENTS = frozenset({
 
 
 def _unseen_packages(workspace: Workspace, package: str | None) -> frozenset[str]:
-    """The packages the node's package depends on that the workspace does not hold and
-    that may make ROS calls (``NOT_CLIENTS`` do not)."""
+    """The ROS packages the workspace does not hold whose code may make ROS calls
+    (``NOT_CLIENTS`` do not): those the node's package depends on, and those the tool
+    knows by a shipped interface model, which a package may use without declaring it
+    (tiago_tutorials' tts builds sound_play's SoundClient, a publisher of
+    ``robotsound``, and lists only roscpp and rospy)."""
     found = workspace.packages.get(package) if package is not None else None
     if found is None:
         return frozenset()
-    return frozenset(d.name for d in found.dependencies
-                     if d.name not in workspace.packages and d.name not in NOT_CLIENTS)
+    names = {d.name for d in found.dependencies} | shipped_packages()
+    return frozenset(name for name in names
+                     if name not in workspace.packages and name not in NOT_CLIENTS)
 
 
 def _node_version(modules: list[Module], workspace: Workspace, package: str | None) -> int:

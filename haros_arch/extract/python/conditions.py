@@ -43,8 +43,11 @@ def is_main_guard(test: ast.expr) -> bool:
     return bool(names and mains)
 
 
-def condition(statement: str, text: str, location: Location) -> Condition:
-    return Condition(text, "source", statement, location)
+def condition(statement: str, text: str, location: Location,
+              parameters: tuple[tuple[str, str], ...] | None = None) -> Condition:
+    """A source condition; ``parameters``: what its text reads that holds a parameter's
+    value (``Condition.parameters``)."""
+    return Condition(text, "source", statement, location, parameters=parameters)
 
 
 def _segment(lines: list[str], node: ast.AST) -> str | None:

@@ -5,7 +5,8 @@
 statements and ``PY_PYTHON2``) and indexes it as a ``Module``: its imports, module
 constants, functions and classes. ``Loader.resolve_import`` finds modules of the same
 package (relative imports, and ``from pkg.sub import X`` inside the package's folder),
-and Python packages other packages of the workspace hold (``src/<name>/__init__.py``).
+and Python packages other packages of the workspace hold (``src/<name>/__init__.py``,
+or in the folder their setup.py's ``package_dir`` names: ``pysetup.python_folders``).
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from ...diagnostics import Diagnostic
 from ...evaluate import syntax
 from ...files import read_text
 from ...model.location import Location
+from ...pysetup import python_folders
 from ...workspace import Workspace
 
 MAX_PY_BYTES = 512 * 1024
@@ -197,7 +199,8 @@ class Loader:
     def _search_roots(self, module_path: str) -> list[str]:
         assert self.package_root is not None
         roots = [self.package_root, os.path.join(self.package_root, "src"),
-                 os.path.join(self.package_root, "scripts")]
+                 os.path.join(self.package_root, "scripts"),
+                 *python_folders(self.package_root)]
         folder = os.path.dirname(os.path.abspath(module_path))
         while folder.startswith(self.package_root + os.sep) and folder not in roots:
             roots.append(folder)
@@ -229,7 +232,7 @@ def _python_packages(roots: tuple[str, ...]) -> dict[str, tuple[tuple[str, str],
     root, the folder that holds it), in the order of ``roots``."""
     found: dict[str, list[tuple[str, str]]] = {}
     for root in roots:
-        for base in (os.path.join(root, "src"), root):
+        for base in dict.fromkeys((*python_folders(root), os.path.join(root, "src"), root)):
             try:
                 names = sorted(os.listdir(base))
             except OSError:

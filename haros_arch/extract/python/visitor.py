@@ -375,7 +375,8 @@ class Walker:
             return
         text = self._text(frame, statement.test)
         where = self._where(frame, statement)
-        yes, no = condition("if", text, where), condition("else", text, where)
+        held = self._held(statement.test, frame)
+        yes, no = condition("if", text, where, held), condition("else", text, where, held)
         before = dict(frame.locals)
         self._block(statement.body, frame, (*conds, yes))
         taken = dict(frame.locals)
@@ -386,6 +387,34 @@ class Walker:
         other = dict(frame.locals)
         frame.locals.clear()
         frame.locals.update(_joined(before, taken, other, yes, no))
+
+    def _held(self, test: ast.expr, frame: Frame) -> tuple[tuple[str, str], ...] | None:
+        """What ``test`` reads that holds a parameter's value, as the graph decides a
+        condition by (``Condition.parameters``): each local whose value here is a
+        parameter read's (``num_agents = self.get_parameter('num_agent').value``, then
+        ``if num_agents == 2``), and each read written in the test itself
+        (``if self.get_parameter('kb_teleop').value``, ``if rospy.get_param('~x', 1)``),
+        by its source text; with the parameter named as its read call is. A member of
+        ``self`` is not one (its read names it: ``PrimitiveCall.variable``)."""
+        found: dict[str, str] = {}
+        stack: list[ast.AST] = [test]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, ast.Name) and node.id in frame.locals:
+                value = frame.locals[node.id]
+                key = node.id
+            elif isinstance(node, ast.Call | ast.Attribute) and _self_member(node) is None:
+                value = self.evaluator.eval(node, frame)
+                key = self._text(frame, node)
+            else:
+                stack.extend(ast.iter_child_nodes(node))
+                continue
+            if isinstance(value, ParamValue) and "?" not in value.name:
+                version = frame.module.version
+                found[key] = param_name(Value.of(value.name)) if version == 2 else value.name
+            elif not isinstance(node, ast.Name):
+                stack.extend(ast.iter_child_nodes(node))
+        return tuple(sorted(found.items())) or None
 
     def _For(self, statement: ast.For | ast.AsyncFor, frame: Frame, conds: Conditions) -> None:
         self._expr(statement.iter, frame, conds)
@@ -852,12 +881,18 @@ class Walker:
                 # instance's arguments give it
                 call.name_option = params[0].removeprefix(PROGRAM_OPTION)
                 call.name_option_default = ev.option_defaults.get(call.name_option)
-            elif len(params) == 1 and params[0].startswith("parameter "):
-                name = params[0].removeprefix("parameter ")
-                call.name_param = param_name(Value.of(name)) if version == 2 else name
-                default = ev.param_defaults.get(name)
-                if isinstance(default, Value) and default.is_known:
-                    call.name_default = default.text
+            elif params and all(p.startswith("parameter ") for p in params):
+                # one parameter's value with text around it (``"/" + ns + "/cmd"``), or
+                # several, each in the place of its ``?`` (``ns + "/" + topic``)
+                filled = []
+                for origin in params:
+                    name = origin.removeprefix("parameter ")
+                    default = ev.param_defaults.get(name)
+                    filled.append([param_name(Value.of(name)) if version == 2 else name,
+                                   default.text if isinstance(default, Value)
+                                   and default.is_known else None])
+                call.name_param, call.name_default = filled[0]
+                call.name_more = filled[1:] or None
         found = searched_name(text)
         if found is not None:  # get_param(search_param('x')): the parameter found
             call.name, call.searched = found, True
@@ -869,6 +904,8 @@ class Walker:
             call.name = "~" + text.text[2:]
         else:  # get_name() is "~": only as the start of a name is it the node's name
             call.name = (text.text[:1] + text.text[1:].replace("~", "?")) or "?"
+        if call.name_more and call.name.count("?") != 1 + len(call.name_more):
+            call.name_param = call.name_default = call.name_more = None  # not one each
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,
               action: bool) -> str | None:

@@ -15,6 +15,9 @@ public:
   void reset();
   template<class Y> void reset(Y* p);
   explicit operator bool() const;
+  long use_count() const;  // ``if (msg.use_count() > 0)`` of a waitForMessage result
+  bool unique() const;
+  void swap(shared_ptr& other);
 };
 // comparisons: with another pointer, nullptr and NULL (``p != NULL``)
 template<class T, class U> bool operator==(const shared_ptr<T>& a, const shared_ptr<U>& b);

@@ -44,6 +44,7 @@ public:
   static void init();
   static bool isValid();
   static bool waitForValid();
+  static bool waitForValid(const WallDuration& timeout);  // false when it timed out
   static bool isSimTime();
   static bool isSystemTime();
   static bool sleepUntil(const Time& end);
