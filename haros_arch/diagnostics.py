@@ -204,7 +204,9 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "robot description file {path} cannot be read: {detail}",
         "A file of a robot description (the top file or a xacro:include) does not exist "
         "or is not well-formed XML; what it holds is unknown and the description is "
-        "partial."),
+        "partial. A file the package's CMake writes into its folder with configure_file "
+        "is read as written, from its template; the message names the command when a "
+        "value it writes is not known here."),
     "ROBOT_DESCRIPTION_LIMIT": Entry(
         "warning", "robot description is too big to read: {detail}",
         "Reading a robot description stopped at a bound (files read, include and macro "
