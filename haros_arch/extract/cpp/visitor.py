@@ -174,7 +174,7 @@ class CallFinder:
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
                  ros2: bool = False, declared: str | None = None,
-                 clients: Callable[[str, str], bool] | None = None) -> None:
+                 clients: Callable[[str, str], str | None] | None = None) -> None:
         self.tu = tu
         # ROS 1: whether a class of a package (both by name) may make ROS calls in code
         # of its own, not handed the node (``_unseen_class``); None in ROS 2
@@ -1065,7 +1065,8 @@ class CallFinder:
             return None
         if name in _API_CLASSES or qualified_name(row_class(cls)) in _API_CLASSES:
             return None
-        return (name, package) if self.clients(package, name) else None
+        found = self.clients(package, name)
+        return (name, found) if found else None
 
     def _to_unknown(self, call: Cursor, function: Cursor | None = None) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
