@@ -1258,7 +1258,8 @@ class CallFinder:
             if function is None:
                 continue
             for node in function.walk_preorder():
-                if node.kind != CursorKind.CALL_EXPR or node.spelling not in ("init", "create"):
+                if node.kind != CursorKind.CALL_EXPR or node.spelling not in (
+                        "init", "create", "initByFullCallbackType"):
                     continue
                 target = node.referenced
                 row = api.OPTIONS.get((qualified_name(target.semantic_parent), node.spelling)
