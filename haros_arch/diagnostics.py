@@ -204,7 +204,9 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "robot description file {path} cannot be read: {detail}",
         "A file of a robot description (the top file or a xacro:include) does not exist "
         "or is not well-formed XML; what it holds is unknown and the description is "
-        "partial."),
+        "partial. A file the package's CMake writes into its folder with configure_file "
+        "is read as written, from its template; the message names the command when a "
+        "value it writes is not known here."),
     "ROBOT_DESCRIPTION_LIMIT": Entry(
         "warning", "robot description is too big to read: {detail}",
         "Reading a robot description stopped at a bound (files read, include and macro "
@@ -701,6 +703,13 @@ CATALOGUE: dict[str, Entry] = {
         "not known statically (a launch argument with no value): which program runs is "
         "unknown, not missing; the instance is kept without publishers, subscribers or "
         "other links, as one of unknown interface."),
+    "NODE_EXITS": Entry(
+        "warning", "{node} exits before it starts a ROS node: {why}",
+        "The arguments the launch file gives a program whose command line the tool reads "
+        "(ROS 1 controller_manager's spawner) are refused by its own parser, which exits "
+        "with an error before the program starts its node: roslaunch starts the process, "
+        "nothing of what it would do happens (a spawner with no controller named loads "
+        "none). The instance is kept, with no ROS call."),
     "NODE_NOT_READ": Entry(
         "warning", "node type {node} is {path}, a program this tool does not read (not a "
                    "built target nor a Python program); its interface is unknown",

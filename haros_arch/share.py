@@ -23,6 +23,8 @@ The install prefix of a workspace package (``$(find-pkg-prefix)``, ``FindPackage
 (``install_prefix``); ``share_source`` reads ``<install>/<pkg>/share/<pkg>/...`` through
 the share map too. ``lib_executables`` names what colcon installs in ``lib/<pkg>``: the
 executables and scripts of the package's CMakeLists.txt or setup.py entry points.
+``configured`` gives the ``configure_file`` that writes a file into a package's own
+folder (a file the build makes there, which a checkout does not hold).
 """
 
 from __future__ import annotations
@@ -37,7 +39,7 @@ from . import pysetup
 from .cmake import interpret
 from .cmake import parse_package as cmake_nodes
 from .cmake.interpreter import BINARY_ROOT
-from .cmake.targets import Install
+from .cmake.targets import Configured, Install
 from .evaluate import syntax
 from .files import read_text
 from .model.source import Package
@@ -107,6 +109,19 @@ def lib_executables(package: Package, workspace: Workspace) -> frozenset[str]:
     found = frozenset(n.executable for n in nodes if n.kind in ("executable", "script"))
     workspace.lib_executables[package.name] = found
     return found
+
+
+def configured(workspace: Workspace, path: str) -> Configured | None:
+    """The last ``configure_file`` of the CMake package holding ``path`` that writes it
+    (into the package's folder; CMake's last write is the file), or None."""
+    path = os.path.normpath(os.path.abspath(path))
+    package = workspace.package_of(path)
+    if package is None or not os.path.isfile(os.path.join(package.root, "CMakeLists.txt")):
+        return None
+    interpreter, _ = interpret(package, workspace)  # the build stage reports problems
+    real = os.path.realpath(path)
+    return next((made for made in reversed(interpreter.configured)
+                 if os.path.realpath(made.output) == real), None)
 
 
 def generated_at(workspace: Workspace, path: str) -> tuple[str, int] | None:

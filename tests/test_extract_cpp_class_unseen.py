@@ -647,3 +647,46 @@ def test_a_system_library_of_the_table_leaves_it_complete(write_tree: Any) -> No
     node = _smoother(write_tree, "asio::io_service io;", "gtsam", "octomap", "asio")
     assert node.completeness == "complete", node.completeness_reasons
     assert node.said == []
+
+
+GUI = """
+    #include <string>
+    #include <ros/ros.h>
+    #include <moveit/move_group_interface/move_group_interface.h>
+
+    class QNode {
+     public:
+      void init() {
+        std::string group = "arm";
+        move_group_ = new moveit::planning_interface::MoveGroupInterface(group);
+        ros::NodeHandle("~").param("rate", rate_, 10.0);
+      }
+     private:
+      moveit::planning_interface::MoveGroupInterface* move_group_;
+      double rate_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "gui");
+      QNode node;
+      node.init();
+      ros::spin();
+    }
+    """
+
+
+def test_a_class_of_a_namespace_that_begins_its_packages_names(write_tree: Any) -> None:
+    # turtlebot3_manipulation_gui: MoveIt's classes are in namespace ``moveit``, its
+    # packages moveit_core, moveit_ros_planning_interface, ...: the one that holds the
+    # namespace's next part builds it (its MoveGroupInterface makes the move_group
+    # action's client and more)
+    node, _ = _teleop(write_tree, GUI, "moveit_core", "moveit_ros_planning",
+                      "moveit_ros_planning_interface", "moveit_msgs")
+    assert node.completeness == "partial"
+    assert any(r.startswith("teleop/src/teleop.cpp:9:")
+               and "moveit::planning_interface::MoveGroupInterface of ROS package "
+               "moveit_ros_planning_interface is built here" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+    # no dependency holds the next part: as before, a vendor's namespace
+    node, _ = _teleop(write_tree, GUI, "moveit_core", "moveit_msgs")
+    assert node.completeness == "complete", node.completeness_reasons

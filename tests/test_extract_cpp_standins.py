@@ -724,6 +724,34 @@ def test_a_callback_held_in_a_function_object_gives_the_message_type(tmp_path) -
         ("subscribe", "other", "geometry_msgs/PoseStamped")]
 
 
+def test_a_subscription_by_full_callback_type_and_tf_extrapolation_limit(tmp_path) -> None:
+    """hector_quadrotor's aerodynamics plugin subscribes its wind topic with
+    ``ops.initByFullCallbackType<const geometry_msgs::Vector3&>(topic, 1, f)`` and
+    ``nh.subscribe(ops)``; hector_gazebo's servo plugin calls the listener's
+    ``setExtrapolationLimit``. Neither was in the stand-ins: errors in functions that
+    call the ROS API (both nodes partial) and the subscription lost."""
+    result = _extract(tmp_path, package_xml("quad", "catkin"), (
+        "#include <ros/ros.h>\n#include <geometry_msgs/Vector3.h>\n"
+        "#include <tf/transform_listener.h>\n#include <boost/bind.hpp>\n"
+        "struct Model { void setWind(const geometry_msgs::Vector3& wind); };\n"
+        "struct Plugin {\n"
+        "  void load(ros::NodeHandle& nh) {\n"
+        "    ros::SubscribeOptions ops;\n"
+        "    ops.initByFullCallbackType<const geometry_msgs::Vector3&>(\n"
+        "        \"/wind\", 1, boost::bind(&Model::setWind, &model_, _1));\n"
+        "    sub_ = nh.subscribe(ops);\n"
+        "    listener_.setExtrapolationLimit(ros::Duration(1.0));\n"
+        "  }\n"
+        "  Model model_;\n  tf::TransformListener listener_;\n  ros::Subscriber sub_;\n};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"quad\");\n  ros::NodeHandle nh;\n  Plugin p;\n"
+        "  p.load(nh);\n}\n"))
+    assert ("subscribe", "/wind", "geometry_msgs/Vector3") in [
+        (c.kind, c.name, c.type) for c in result.calls]
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+
+
 ROS1_MANIFEST = package_xml("hil").replace(
     "</package>", "<depend>roscpp</depend><depend>urdf</depend></package>")
 

@@ -564,6 +564,35 @@ def test_a_ros1_spawner_calls_the_controller_manager_of_its_namespace_argument(w
     assert sim_time.call.has_default and sim_time.call.default is False
 
 
+def test_a_ros1_spawner_that_names_no_controller_exits(write_tree):
+    # turtlebot3_manipulation's ros_controllers.launch (noetic): ``args=""``. The
+    # spawner's argparse wants one controller at least (nargs='+') and exits before
+    # init_node: no node, no controller loaded. Its interface model (a ``?`` wait-for
+    # subscription, ...) stood for it; now it makes no call, and a warning says why.
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot"),
+        "src/robot/CMakeLists.txt": "project(robot)\n",
+        "src/robot/launch/control.launch": """
+            <launch>
+              <node pkg="controller_manager" type="spawner" name="spawner" args=""/>
+              <node pkg="controller_manager" type="spawner" name="named"
+                    args="--namespace arm"/>
+              <node pkg="controller_manager" type="spawner" name="fine" args="arm"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\ndistro: noetic\n"
+                        "configurations:\n  c: [robot/launch/control.launch]\n",
+    })
+    config = _configuration(root)
+    for name in ("/spawner", "/named"):
+        assert _instance(config, name).links == []
+    assert _instance(config, "/fine").links
+    exits = sorted(d.location.line for d in config.diagnostics if d.code == "NODE_EXITS")
+    assert exits == [2, 3]
+    assert not [d for d in config.diagnostics if d.code == "MODEL_USED"
+                and "spawner" in d.message]
+
+
 def test_a_ros1_gazebo_spawner_reads_the_parameter_its_arguments_name(write_tree):
     # gazebo_ros' spawn_model: its interface model reads '?' (rospy.get_param(args.param)),
     # so any parameter of its namespace could have been read; its -param names it

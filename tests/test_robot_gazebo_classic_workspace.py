@@ -7,6 +7,7 @@ hector_gazebo build many). fixtures/robot/classic_ros1 and classic_ros2."""
 from __future__ import annotations
 
 import os
+import shutil
 
 from conftest import FIXTURES, package_xml
 
@@ -140,3 +141,30 @@ def test_a_plugin_whose_code_is_partial_leaves_the_gazebo_node_partial(write_tre
     assert description.completeness == "partial"
     assert any("p/broken_plugin" in reason and "d/urdf/r.urdf:1" in reason
                for reason in description.completeness_reasons)
+
+
+def test_ros1_plugin_namespace_member_cleared_when_the_sdf_gives_none(tmp_path) -> None:
+    # hector_gazebo_plugins' magnetic, sonar and baro plugins: ``if (HasElement(
+    # "robotNamespace")) namespace_ = ...; else namespace_.clear();``, a member written
+    # twice, the SDF's value or "" (a string's clear() was a change in place, not known:
+    # ``/?/magnetic``)
+    root = tmp_path / "ws"
+    shutil.copytree(ROS1, root)
+    source = root / "depth_plugins" / "src" / "depth_gauge.cpp"
+    code = source.read_text()
+    for old, new in (
+            ('    std::string ns;\n    if (sdf->HasElement("robotNamespace"))\n'
+             '      ns = sdf->GetElement("robotNamespace")->Get<std::string>();\n',
+             '    if (sdf->HasElement("robotNamespace"))\n'
+             '      namespace_ = sdf->GetElement("robotNamespace")->Get<std::string>();\n'
+             '    else\n      namespace_.clear();\n'),
+            ("new ros::NodeHandle(ns)", "new ros::NodeHandle(namespace_)"),
+            ("  std::string topic_;\n", "  std::string topic_;\n  std::string namespace_;\n")):
+        assert old in code
+        code = code.replace(old, new)
+    source.write_text(code)
+    published = [(kind, name) for _, kind, name, _, _ in made(
+        configuration(str(root), "depth_description/launch/sim.launch"))]
+    assert ("publish", "/sub/pressure/depth") in published
+    assert ("publish", "/fleet/depth") in published
+    assert not [name for _, name in published if name.startswith("/?")]

@@ -14,11 +14,14 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
+from ..files import read_text
 from ..model.conditions import Condition
+from ..model.location import NOWHERE
 from . import listops
+from .conditions import FALSE_WORDS
 from .lexer import Argument, Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
-from .targets import CompileDefinition, Install, Program, Registration, Target
+from .targets import CompileDefinition, Configured, Install, Program, Registration, Target
 
 if TYPE_CHECKING:
     from .interpreter import Interpreter
@@ -55,7 +58,7 @@ def _set(it: Interpreter, command: Invocation, args: list[str]) -> None:
     elif values:
         it.set(name, ";".join(values))
     else:
-        it.unset(name)
+        it.clear(name)
 
 
 @handles("unset")
@@ -67,7 +70,7 @@ def _unset(it: Interpreter, command: Invocation, args: list[str]) -> None:
     elif "PARENT_SCOPE" in args[1:]:
         it.set_parent(args[0], None)
     else:
-        it.unset(args[0])
+        it.clear(args[0])
 
 
 @handles("option")
@@ -550,7 +553,7 @@ IGNORED = frozenset({
     "project", "cmake_minimum_required", "include_directories",
     "link_directories", "add_dependencies", "target_include_directories",
     "target_compile_features", "ament_package", "message",
-    "add_custom_target", "add_custom_command", "add_test", "configure_file",
+    "add_custom_target", "add_custom_command", "add_test",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",
     "rosidl_generate_interfaces", "ament_export_dependencies", "ament_export_include_directories",
     "ament_export_libraries", "ament_export_targets", "ament_lint_auto_find_test_dependencies",
@@ -770,6 +773,94 @@ def _ament_python_install_package(it: Interpreter, command: Invocation,
                                   args: list[str]) -> None:
     if "SCRIPTS_DESTINATION" in args[1:-1]:
         it.python_scripts = True
+
+
+# configure_file: the options that take no value, and the references it replaces
+_CONFIGURE_FLAGS = frozenset({"COPYONLY", "ESCAPE_QUOTES", "@ONLY", "NO_SOURCE_PERMISSIONS",
+                              "USE_SOURCE_PERMISSIONS"})
+_AT_REFERENCE = r"@([A-Za-z_0-9/.+-]+)@"
+_BRACE_REFERENCE = r"\$(ENV|CACHE)?\{([A-Za-z_0-9/.+-]+)\}"
+_CMAKEDEFINE = re.compile(r"^([ \t]*#[ \t]*)cmakedefine(01)?[ \t]+([A-Za-z_0-9]+)(.*)$",
+                          re.MULTILINE)
+MAX_CONFIGURED = 1_000_000  # bytes of a configure_file input read
+
+
+@handles("configure_file")
+def _configure_file(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """The file the build writes from a template. Its text is made here only where the
+    package writes it into its own folder (hector_quadrotor_gazebo's
+    ``quadrotor_plugins.gazebo.xacro``, which a description includes from there):
+    ``${VAR}`` and ``@VAR@`` (``@VAR@`` alone with ``@ONLY``) replaced by the values
+    the reading holds at the command, ``#cmakedefine`` lines made, as CMake does; a
+    reference to a value not known, or the command under an if() not decided, leaves
+    the text not known."""
+    positional = [a for a in args if a not in _CONFIGURE_FLAGS]
+    if len(positional) < 2:
+        return
+    source = it.path(positional[0])
+    output = positional[1]
+    if not output.startswith("$<"):
+        output = os.path.normpath(os.path.join(
+            it.get("CMAKE_CURRENT_BINARY_DIR") or it.source_dir, output))
+        if os.path.isdir(output):  # an existing folder: the input's name in it
+            output = os.path.join(output, os.path.basename(source))
+    text: str | None = None
+    unknown = ""
+    if not it.inside_package(output) or not it.inside_package(source):
+        unknown = "it is not written into the package's folder, or not from it"
+    elif not it.sure():
+        unknown = ("it is made under an if() not decided, or from a value not known "
+                   "here")
+    else:
+        where = it.location(command.file, command.line, command.column) if it.location \
+            else NOWHERE
+        template, found = read_text(source, where, MAX_CONFIGURED)
+        it.diagnostics.extend(found)
+        if template is None:
+            unknown = f"its template {os.path.basename(source)} is not read"
+        else:
+            text, unknown = configured_text(it, template, "@ONLY" in args,
+                                            "COPYONLY" in args, "ESCAPE_QUOTES" in args)
+    it.configured.append(Configured(source, output, text, unknown, command.line,
+                                    command.column, command.file))
+
+
+def configured_text(it: Interpreter, template: str, at_only: bool, copy_only: bool,
+                    escape_quotes: bool) -> tuple[str | None, str]:
+    """``template`` as configure_file writes it with the values ``it`` holds, and ""; or
+    None and which reference is not known."""
+    if copy_only:
+        return template, ""
+    missing: list[str] = []
+
+    def value(reference: str) -> str:
+        if it.unknown_reference(reference):
+            missing.append(reference)
+            return ""
+        found = it.expand(reference)
+        return found.replace('"', '\\"') if escape_quotes else found
+
+    def define(match: re.Match[str]) -> str:
+        head, zero_one, name, rest = match.groups()
+        reference = "${" + name + "}"
+        if it.unknown_reference(reference):
+            missing.append(reference)
+            return ""
+        found = it.expand(reference)
+        off = found.upper() in FALSE_WORDS or found.upper().endswith("-NOTFOUND")
+        if zero_one:
+            return f"{head}define {name} {0 if off else 1}"
+        return f"/* #undef {name} */" if off else f"{head}define {name}{rest}"
+
+    text = _CMAKEDEFINE.sub(define, template)
+    pattern = _AT_REFERENCE if at_only else f"{_AT_REFERENCE}|{_BRACE_REFERENCE}"
+    text = re.sub(pattern, lambda m: value(
+        "${" + m.group(1) + "}" if m.group(1) else "$" + (m.group(2) or "") + "{"
+        + m.group(3) + "}"), text)
+    if missing:
+        return None, "it reads " + ", ".join(dict.fromkeys(missing[:5])) + \
+            ", not known here"
+    return text, ""
 
 
 @handles("install")

@@ -31,7 +31,7 @@ from .commands import HANDLERS, IGNORED, defined_names, unknown_command
 from .conditions import BINARY, FALSE_WORDS, TRUE_WORDS, UNARY, Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
-from .targets import CompileDefinition, Install, Program, Registration, Target
+from .targets import CompileDefinition, Configured, Install, Program, Registration, Target
 
 _VARIABLE_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 # the words of an if() test that are no variable: operators and constants
@@ -113,6 +113,7 @@ class Interpreter:
         # known here (a program installed from the source folder may be one)
         self.custom_builds: list[Invocation] = []
         self.installs: list[Install] = []  # for haros_arch.share
+        self.configured: list[Configured] = []  # configure_file, for haros_arch.share
         # ament_python_install_package(... SCRIPTS_DESTINATION ...): setup.cfg's entry
         # points are installed as executables
         self.python_scripts = False
@@ -201,8 +202,19 @@ class Interpreter:
             raise _Stop
 
     def unset(self, name: str) -> None:
+        """V's value is not known here (a result this reading does not compute)."""
         self.scopes[-1].pop(name, None)
         self.either.pop(name, None)
+
+    def clear(self, name: str) -> None:
+        """``set(V)`` / ``unset(V)``: V is not set here, for certain (read, it is empty;
+        ``if(DEFINED V)`` is false), as a variable set in another scope only is."""
+        self.unset(name)
+        self.assigned.add(name)
+        if self._unsure:
+            self.uncertain.add(name)
+        else:
+            self.uncertain.discard(name)
 
     def set_parent(self, name: str, value: str | None) -> None:
         if len(self.scopes) < 2:
@@ -290,8 +302,11 @@ class Interpreter:
                 read.append(name)
             value = (self.environment.get(name) if kind == "ENV" else
                      self.cache.get(name) if kind == "CACHE" else self.get(name))
-            if stop_at_unknown and (value is None or (not kind and (
-                    name in self.uncertain or (either and name in self.either)))):
+            # not set: not known, unless this reading set or unset it (in a scope
+            # left, or here: then it is empty, as ``if()`` takes it, ``Evaluator``)
+            if stop_at_unknown and ((value is None and (kind or name not in self.assigned))
+                                    or (not kind and (name in self.uncertain or (
+                                        either and name in self.either)))):
                 return text, True
             text = text[:match.start()] + (value or "") + text[match.end():]
             if len(text) > 1_000_000:

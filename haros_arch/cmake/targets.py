@@ -63,6 +63,23 @@ class Program:
 
 
 @dataclass
+class Configured:
+    """``configure_file(<input> <output> ...)``: the file the build writes at ``output``
+    (absolute; under ``interpreter.BINARY_ROOT`` when it is in the build folder) from
+    ``input``, and its text as the reading gives it there, only for a file written into
+    the package's own folder (where the other readers look for it): None when not known,
+    ``unknown`` saying why."""
+
+    input: str
+    output: str
+    text: str | None
+    unknown: str
+    line: int
+    column: int
+    file: str
+
+
+@dataclass
 class Registration:
     """``rclcpp_components_register_node(s)``: a component class in a library target."""
 

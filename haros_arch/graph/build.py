@@ -31,6 +31,7 @@ from ..model.runtime import (
 from ..model.source import NUMBERED, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
+from ..models.commands import refused
 from ..plugins.attach import PluginModels, chains, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
@@ -465,6 +466,9 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     # rostopic pub, a ROS 2 spawner: its arguments say (a spawner's first: its code or
     # interface model builds its names from sys.argv)
     node = code_node(decl, nodes, key)
+    why = refused(decl)
+    if why is not None:
+        config.diagnostics.append(diag.make("NODE_EXITS", decl.location, node=key, why=why))
     # rviz: the displays and tools of the configuration it is started with
     node = rviz.with_displays(decl, node, workspace, config.diagnostics) or node
     if node is None and plugin is None and is_container(decl):

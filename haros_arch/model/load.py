@@ -130,6 +130,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          tested=bool(c.get("tested", False)),
                          under=c.get("under") is True,
                          handle_namespace=c.get("handle_namespace"),
+                         root_handle=c.get("root_handle") is True,
                          deletes=bool(c.get("deletes", False)),
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
                          program_arg=_program_arg(c.get("program_arg")),

@@ -106,6 +106,10 @@ class PrimitiveCall:
     # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
     # before it resolves the name in it, so the graph resolves it first
     handle_namespace: str | None = None
+    # ROS 1 ros_control: made on the root handle a controller manager gives a controller's
+    # ``init(hw, root_nh, controller_nh)``, its own namespace: a relative name is the
+    # manager's (``plugins.attach.ros1_controllers``), not the controller's
+    root_handle: bool = field(default=False, metadata={"optional": True})
     # parameter writes that delete the parameter (rospy.delete_param, ros::param::del,
     # NodeHandle::deleteParam)
     deletes: bool = False

@@ -64,6 +64,7 @@ from typing import Any
 from ..launch.model import NodeDecl, shell_words
 from ..launch.ros2.naming import split_arguments
 from ..model.source import CallKind, Node, PrimitiveCall
+from ..model.values import UNKNOWN_MARK
 
 ROS1_VALUE_OPTIONS = {"-r", "--rate", "-f", "--file"}
 ROS2_VALUE_OPTIONS = {"-r", "--rate", "-p", "--print", "-t", "--times", "-w",
@@ -175,12 +176,35 @@ def program_words(args: str) -> list[str]:
     return split_arguments(shell_words(args))[0]
 
 
+_SPAWNER_VALUES = {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"}
+
+
+def refused(decl: NodeDecl) -> str | None:
+    """Why a program whose command line is read here refuses the one it is given and
+    exits before it starts a node, when its arguments, all known, say so: a ROS 1
+    spawner names no controller (``parse_args`` runs before ``init_node``, and its
+    ``controllers`` argument is ``nargs='+'``); else None."""
+    if (decl.package, decl.executable) != ("controller_manager", "spawner") or (
+            decl.ros_version != 1 or UNKNOWN_MARK in decl.args):
+        return None
+    positional, _values, _flags = split_options(_words(decl.args), _SPAWNER_VALUES)
+    if positional:
+        return None
+    return "its arguments name no controller, which argparse requires"
+
+
 def _spawner(decl: NodeDecl, words: list[str]) -> Node | None:
     """A ROS 1 controller spawner from its arguments (see the module's docstring)."""
-    positional, values, _flags = split_options(
-        words, {"--wait-for", "--namespace", "--timeout", "--shutdown-timeout"})
+    positional, values, _flags = split_options(words, _SPAWNER_VALUES)
     if not positional:  # argparse refuses it: no controller named
-        return None
+        why = refused(decl)
+        if why is None:
+            return None  # arguments not known: its interface model
+        node = Node("controller_manager", decl.executable, "executable", "python",
+                    location=decl.location)
+        node.model = f"the arguments of controller_manager spawner: {why}; it exits"
+        node.completeness = "model"
+        return node
     namespace = values.get("--namespace", "")
     if namespace and not namespace.endswith("/"):
         namespace += "/"

@@ -1117,8 +1117,10 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
                 if typed is not None:
                     reader = _controller_instance(config, full, None, manager, choice)
             elif host is not None:
-                out.append((host, [_under(c, controller, choice.conditions)
-                                   for c in node.calls]))
+                # its handle is ``<manager>/<name>``, whatever the host's own namespace
+                # (Gazebo's plugin managers live in /gazebo, in the robot's namespace)
+                out.append((host, [_under(_on_root(c, manager, host), _relative(
+                    full, host.namespace), choice.conditions) for c in node.calls]))
                 if typed is not None:  # the manager reads the class, below its namespace
                     out.append((host, [PrimitiveCall(
                         "read", _relative(typed.name, host.namespace),
@@ -1144,6 +1146,18 @@ def _controller_instance(config: Configuration, full: str, node: Node | None, ma
     instance.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
     return instance
+
+
+def _on_root(call: PrimitiveCall, manager: str, host: NodeInstance) -> PrimitiveCall:
+    """A controller's call on its root handle (``PrimitiveCall.root_handle``) as its
+    host makes it: a relative name is in the manager's namespace, which need not be the
+    host's (Gazebo's ``/gazebo`` hosts ``/uav1``'s manager)."""
+    manager = manager.rstrip("/")
+    if not call.root_handle or call.name.startswith(("/", "~")) or (
+            manager == host.namespace.rstrip("/")):
+        return call
+    prefix = _relative(manager or "/", host.namespace)
+    return replace(call, name=prefix.rstrip("/") + "/" + call.name)
 
 
 def _relative(full: str, namespace: str) -> str:

@@ -45,7 +45,7 @@ from ..manifest import xml_parser
 from ..model.diagnostic import Diagnostic
 from ..model.location import Location
 from ..model.values import UNKNOWN_MARK, Unknown, UnknownKind, Value
-from ..share import share_source
+from ..share import configured, share_source
 from ..workspace import Workspace
 
 Element = etree._Element
@@ -258,13 +258,25 @@ class _Expander:
         if not self.workspace.readable(path, self.environment):
             self.unknown(at, f"{self.workspace.relpath(path)} is outside the workspace")
             return None
-        if not os.path.isfile(path):
-            self.report(at, "ROBOT_DESCRIPTION_FILE", path=self.workspace.relpath(path),
-                        detail="no such file")
-            self.unknown(at, f"{self.workspace.relpath(path)} does not exist")
-            return None
-        data, found = read_bytes(path, self.where(at), MAX_FILE_BYTES)
-        self.description.diagnostics.extend(found)
+        if os.path.isfile(path):
+            data, found = read_bytes(path, self.where(at), MAX_FILE_BYTES)
+            self.description.diagnostics.extend(found)
+        else:
+            made = configured(self.workspace, path)
+            if made is None or made.text is None:
+                detail = "no such file" if made is None else (
+                    f"made by configure_file at {self.workspace.relpath(made.file)}:"
+                    f"{made.line} from {self.workspace.relpath(made.input)}, but "
+                    + made.unknown)
+                self.report(at, "ROBOT_DESCRIPTION_FILE", path=self.workspace.relpath(path),
+                            detail=detail)
+                self.unknown(at, f"{self.workspace.relpath(path)} does not exist"
+                             if made is None else f"{self.workspace.relpath(path)}, "
+                             f"{detail}")
+                return None
+            # the build writes it from its template: read as made, its lines the
+            # template's (where what it says is written)
+            data, path = made.text.encode(), made.input
         if data is None:
             self.unknown(at, f"{self.workspace.relpath(path)} is not read")
             return None

@@ -1062,9 +1062,13 @@ MAX_CLIENT_FILES = 400  # files of a package read to find where a class is defin
 
 
 def ros1_clients(path: str, workspace: Workspace, generated: str,
-                 read: list[str]) -> Callable[[str, str], bool]:
-    """Whether a class (qualified) of a package (both by name) may make ROS calls of its
-    own in code a ROS 1 unit builds without reading it (``CallFinder._unseen_class``).
+                 read: list[str]) -> Callable[[str, str], str | None]:
+    """The package, if any, whose class (qualified) may make ROS calls of its own in
+    code a ROS 1 unit builds without reading it (``CallFinder._unseen_class``), for a
+    class and the package named by its namespace's first part; when that part is no
+    dependency, a dependency whose name begins with it and holds the namespace's next
+    part (MoveIt's ``moveit::planning_interface::MoveGroupInterface``, of
+    moveit_ros_planning_interface).
     Not a class of a package the stand-in headers provide, nor a message or service
     (of the catalogue, or named as a header the unit includes: ``<pkg/Name.h>`` is how
     ROS 1 generates them). A workspace package's when it depends on roscpp and the
@@ -1083,12 +1087,21 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     declared = _visible(package, workspace, read) if package is not None else set()
     known: dict[tuple[str, str], bool] = {}
 
-    def client(name: str, cls: str) -> bool:
+    def one(name: str, cls: str) -> bool:
         found = known.get((name, cls))
         if found is None:
             found = known[(name, cls)] = _client(name, cls, declared, workspace, generated,
                                                  read)
         return found
+
+    def client(name: str, cls: str) -> str | None:
+        if name in declared or name in workspace.packages:
+            return name if one(name, cls) else None
+        parts = cls.split("::")
+        if len(parts) < 3:
+            return None
+        named = sorted(d for d in declared if d.startswith(name + "_") and parts[1] in d)
+        return next((d for d in named if one(d, cls)), None)
 
     return client
 

@@ -742,6 +742,7 @@ _SERVICE_OPTIONS = RosFunction(
     "server", type_from=("service-callback", "template"), callback_arg=1)
 OPTIONS: dict[tuple[str, str], RosFunction] = {
     ("ros::SubscribeOptions", "init"): _SUBSCRIBE_OPTIONS,
+    ("ros::SubscribeOptions", "initByFullCallbackType"): _SUBSCRIBE_OPTIONS,
     ("ros::SubscribeOptions", "create"): _SUBSCRIBE_OPTIONS,
     ("ros::AdvertiseOptions", "init"): _ADVERTISE_OPTIONS,
     ("ros::AdvertiseOptions", "create"): _ADVERTISE_OPTIONS,

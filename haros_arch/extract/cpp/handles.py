@@ -129,6 +129,9 @@ class Namespaces:
         # None when no string or several gave one
         self.unknown_from: tuple[Cursor, Scope] | None = None
         self._unknown_count = 0
+        # the last namespace asked for is a ROS 1 controller's root handle
+        # (``controller_root``): the manager's namespace, not known here
+        self.root = False
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -147,7 +150,7 @@ class Namespaces:
     def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
         """The namespace of the handle ``expr`` stands for."""
         if depth == 0:
-            self.unknown_from, self._unknown_count = None, 0
+            self.unknown_from, self._unknown_count, self.root = None, 0, False
         found = self._namespace(expr, scope, depth)
         if depth == 0 and self._unknown_count != 1:
             self.unknown_from = None
@@ -166,6 +169,9 @@ class Namespaces:
             return ("",) if is_ros2_node(record_class(expr)) else UNKNOWN
         if kind == CursorKind.DECL_REF_EXPR:
             decl = expr.referenced
+            if decl is not None and controller_root(decl):
+                self.root = True
+                return ("",)
             if decl is not None and scope.is_parameter(decl) and scope.sites is not None:
                 return scope.sites.agreed(decl, lambda a, s: self.of(a, s, depth + 1), UNKNOWN)
             if decl is None or decl.kind != CursorKind.VAR_DECL:
@@ -356,6 +362,41 @@ class Namespaces:
             return parent
         child = render(scope.string(args[index]))
         return (normalise(join_name(render(parent), child)),)
+
+
+def controller_root(decl: Cursor) -> bool:
+    """Whether ``decl`` is the root handle of a ROS 1 controller: the second of the three
+    parameters of an ``init`` that overrides ros_control's ``init(hw, root_nh,
+    controller_nh)``, which the controller manager calls with its own handle and
+    ``<manager>/<controller>`` (hector_quadrotor's controllers subscribe to
+    ``command/pose`` on the first)."""
+    function = decl.semantic_parent
+    if decl.kind != CursorKind.PARM_DECL or function is None or (
+            function.kind != CursorKind.CXX_METHOD or function.spelling != "init"):
+        return False
+    params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+    if len(params) != 3 or params[1] != decl:
+        return False
+    return _controller(function.semantic_parent)
+
+
+def _controller(cls: Cursor | None, depth: int = 0) -> bool:
+    """Whether ``cls`` derives from a class of ros_control's controller_interface (a
+    base that is a template's specialisation, ``Controller<EffortJointInterface>``, as
+    its template: clang lists no members of it)."""
+    if cls is None or depth > 8:
+        return False
+    for each in (cls, conf.lib.clang_getSpecializedCursorTemplate(cls)):
+        if each is None or each.kind == CursorKind.NO_DECL_FOUND:
+            continue
+        if qualified_name(each).startswith("controller_interface::"):
+            return True
+        definition = each.get_definition() or each
+        if any(_controller(child.type.get_canonical().get_declaration(), depth + 1)
+               for child in definition.get_children()
+               if child.kind == CursorKind.CXX_BASE_SPECIFIER):
+            return True
+    return False
 
 
 def pointee(expr: Cursor) -> Cursor:

@@ -34,7 +34,7 @@ from .expressions import (
     written_arguments,
 )
 from .synthesis import ANY
-from .writes import Write, by_operator, const_array, writes_of
+from .writes import Write, by_operator, const_array, emptied, writes_of
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -733,6 +733,8 @@ class Scope:
     def _string_call(self, call: Cursor, depth: int) -> Parts:
         args = written_arguments(call)
         target = call.referenced
+        if emptied(call):
+            return ("",)  # what ``s.clear()`` leaves in ``s`` (a write of it: ``writes``)
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)

@@ -174,7 +174,7 @@ class CallFinder:
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
                  ros2: bool = False, declared: str | None = None,
-                 clients: Callable[[str, str], bool] | None = None) -> None:
+                 clients: Callable[[str, str], str | None] | None = None) -> None:
         self.tu = tu
         # ROS 1: whether a class of a package (both by name) may make ROS calls in code
         # of its own, not handed the node (``_unseen_class``); None in ROS 2
@@ -1065,7 +1065,8 @@ class CallFinder:
             return None
         if name in _API_CLASSES or qualified_name(row_class(cls)) in _API_CLASSES:
             return None
-        return (name, package) if self.clients(package, name) else None
+        found = self.clients(package, name)
+        return (name, found) if found else None
 
     def _to_unknown(self, call: Cursor, function: Cursor | None = None) -> None:
         """Say when ``call`` gives the node to a function or class the parse knows only
@@ -1257,7 +1258,8 @@ class CallFinder:
             if function is None:
                 continue
             for node in function.walk_preorder():
-                if node.kind != CursorKind.CALL_EXPR or node.spelling not in ("init", "create"):
+                if node.kind != CursorKind.CALL_EXPR or node.spelling not in (
+                        "init", "create", "initByFullCallbackType"):
                     continue
                 target = node.referenced
                 row = api.OPTIONS.get((qualified_name(target.semantic_parent), node.spelling)
@@ -1406,13 +1408,14 @@ class CallFinder:
         name_expr: Cursor | None = None
         # the string whose value is the namespace's one unknown run (ROS 1)
         unknown_from: tuple[Cursor, Scope] | None = None
+        root = False  # made on a ROS 1 controller's root handle (``handles.controller_root``)
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
                 namespace = spec.handle_default if handle is None else normalise(render(
                     self.namespaces.of(handle, scope)))
                 if handle is not None:
-                    unknown_from = self.namespaces.unknown_from
+                    unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
             # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
             key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
@@ -1462,10 +1465,10 @@ class CallFinder:
         if spec.fixed_name is None:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
-                unknown_from = self.namespaces.unknown_from
+                unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
             elif handle_arg is not None and handle_arg < len(args):
                 namespace = render(self.namespaces.of(args[handle_arg], scope))
-                unknown_from = self.namespaces.unknown_from
+                unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
@@ -1575,6 +1578,8 @@ class CallFinder:
                 has_default=has_default or isinstance(written, PrefixName),
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
                 searched=spec.searched, handle_namespace=handle_namespace,
+                root_handle=root and not self.ros2 and not _private(written).startswith(
+                    ("/", "~")),
                 deletes=spec.deletes, node_name=owner, transport=transport,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
@@ -1607,9 +1612,9 @@ class CallFinder:
                 # same handle's namespace, filled from the call sites as the server is
                 # and a camera's camera_info, in the image topic's namespace, on its handle
                 camera = stype == CAMERA_INFO and bool(spec.transport)
-                sibling_namespace = handle_namespace if (
-                    (spec.handle_default is not None or camera or not sibling)
-                    and not sibling.startswith("/")) else None
+                on_handle = (spec.handle_default is not None or camera or not sibling) and (
+                    not sibling.startswith("/"))
+                sibling_namespace = handle_namespace if on_handle else None
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
                     latch=latch, conditions=conditions, location=location,
@@ -1617,6 +1622,7 @@ class CallFinder:
                     # default there
                     has_default=kind in ("declare", "read"),
                     handle_namespace=sibling_namespace, node_name=owner,
+                    root_handle=root and on_handle and not full.startswith(("/", "~")),
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
                 if held is not None and namespace and sibling_namespace == namespace and (

@@ -10,7 +10,8 @@ pointer's ``reset(p)`` (``right_nh_.reset(new ros::NodeHandle(nh, "right"))``). 
 that changes it in place, to a value not known: a compound assignment (``+=``), ``++`` /
 ``--``, its address taken (``&x``), passing it as a non-const reference or, for an
 array, as a pointer to its data (``snprintf(topic, ...)``), a non-const method called
-on it (``p->m()`` changes ``*p``, not ``p``). Each analysis keeps the writes it follows:
+on it (``p->m()`` changes ``*p``, not ``p``), except a string's ``clear()``, which
+replaces its value with "". Each analysis keeps the writes it follows:
 ``values.Scope`` the local variables of a function, ``members.MemberWrites`` the members
 of a file, ``handles.Namespaces`` the node handles a unit's functions set.
 """
@@ -120,6 +121,10 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
             given = written_arguments(call) if call.spelling == "reset" else []
             if len(given) == 1 and _smart_pointer(obj):
                 found.append(Write(obj, given[0], call, True))
+            elif emptied(call):
+                # ``namespace_.clear()``: the string holds "" after it, the call as its
+                # value (``values.Scope.string`` reads it so)
+                found.append(Write(obj, call, call, True))
             else:
                 found.append(Write(obj, None, call, False))
     return found
@@ -150,6 +155,15 @@ def _inserting(left: Cursor) -> bool:
             break
     spelling = left.type.get_canonical().spelling.split("<")[0].rstrip(" &")
     return spelling.rpartition("::")[2] in _STREAMS
+
+
+def emptied(call: Cursor) -> bool:
+    """Whether ``call`` is ``s.clear()`` of a ``std::string``, which leaves it empty."""
+    if call.spelling != "clear" or written_arguments(call):
+        return False
+    method = call.referenced
+    parent = method.semantic_parent if method is not None else None
+    return parent is not None and parent.spelling.split("<")[0] in ("basic_string", "string")
 
 
 def _smart_pointer(expr: Cursor) -> bool:

@@ -13,6 +13,10 @@ struct SubscribeOptions {
   template<class M>
   void init(const std::string& topic, uint32_t queue_size,
             const boost::function<void(const boost::shared_ptr<M const>&)>& callback);
+  // the callback's own parameter type: ``const M&``, ``const M::ConstPtr&``, an event
+  template<class P>
+  void initByFullCallbackType(const std::string& topic, uint32_t queue_size,
+                              const boost::function<void(P)>& callback);
   template<class M>
   static SubscribeOptions create(const std::string& topic, uint32_t queue_size,
                                  const boost::function<void(const boost::shared_ptr<M const>&)>& callback,

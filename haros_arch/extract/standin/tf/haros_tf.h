@@ -206,6 +206,7 @@ public:
   int getLatestCommonTime(const std::string& source_frame, const std::string& target_frame,
                           ros::Time& time, std::string* error_string) const;
   std::string getTFPrefix() const;
+  void setExtrapolationLimit(const ros::Duration& distance);
   void clear();
 };
 class TransformListener : public Transformer {
