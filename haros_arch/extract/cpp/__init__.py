@@ -192,6 +192,17 @@ class CppResult:
     # only in the code of functions, each with the owner of such a function: a word
     # counts where one of them runs (``_reached``)
     unseen_in: list[tuple[str, str]] = field(default_factory=list)
+    # in a translation unit's result with ``*`` in ``unseen``: (owner, class) where the
+    # owner builds a class of another package with the node (``CPP_NODE_PASSED``), whose
+    # code another unit of the executable may hold (a library it links); the other
+    # owners of ``handed`` give the node to code the parse does not know
+    # (``CPP_NODE_TO_UNKNOWN``)
+    passed: list[tuple[str, str]] = field(default_factory=list)
+    # in a translation unit's result with ``*`` in ``unseen``: the words its errors leave
+    # unseen (``unseen`` had the node not been handed on), what the ``*`` comes down to
+    # where no code the node is handed to can be the executable's (``_reached``); ``*``
+    # where something else makes it (a place not read, a library class's node)
+    hidden: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -577,9 +588,14 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
-    # each unit's owners, unseen words, and the owners that hand its node on (``*``)
-    held: list[tuple[set[str], list[str], set[str], dict[str, set[str]]]] = []
+    # each unit's owners, unseen words, the owners that hand its node on (``*``), the
+    # words of its errors, what ``*`` comes down to (``CppResult.hidden``), and the
+    # owners that build with the node a class whose code no unit holds
+    held: list[tuple[set[str], list[str], set[str], dict[str, set[str]], list[str],
+                     set[str]]] = []
     named: set[str] = set()  # every unit's unseen words
+    # the classes whose code some unit of the executable holds
+    read = {owner for _, unit in units for owner in unit.defines}
     for _, unit in units:
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
@@ -593,7 +609,8 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         within: dict[str, set[str]] = {}
         for word, owner in unit.unseen_in:
             within.setdefault(word, set()).add(owner)
-        held.append((here, unit.unseen, set(unit.handed), within))
+        unread = {owner for owner, cls in unit.passed if cls not in read}
+        held.append((here, unit.unseen, set(unit.handed), within, unit.hidden, unread))
         named.update(unit.unseen)
         named.update(within)
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
@@ -615,11 +632,20 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         # where the code that hands it runs (rmf_task_ros2's Dispatcher hands its own
         # node on, and only its schema's static initialiser runs in door_supervisor)
         words = set(outside)
-        for here, said, handed, within in held:
+        for here, said, handed, within, hidden, unread in held:
             if here and here.isdisjoint(reached):
                 continue
             if said == ["*"] and handed and "" not in handed and handed.isdisjoint(reached):
                 continue
+            if said == ["*"] and handed and "" not in handed and hidden != ["*"] and (
+                    unread.isdisjoint(reached)):
+                # the node handed, where this code runs, only to code no unit of the
+                # executable holds (a vendor's template: rmf_traffic_ros2's Negotiation
+                # gives it to rmf_utils' make_unique_impl<Implementation>) or to a class
+                # whose code one holds (read where it runs): such code builds nothing
+                # of the executable's but what the statement hands it, which the unit
+                # reads as its own references; what is hidden is what its errors hide
+                said = hidden
             # a word found only in functions counts where one of them runs
             words.update(word for word in said
                          if word not in within or not within[word].isdisjoint(reached))
@@ -699,13 +725,13 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             elif kept is not None and kept[0] is not None:
                 try:
                     (calls, rosname, found, facts, named, made, unseen, under, uses,
-                     defines, handed, unseen_in) = cache.from_data(kept[0])
+                     defines, handed, unseen_in, passed, hidden) = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made, unseen=unseen, made_under=under,
                                        uses=uses, defines=defines, handed=handed,
-                                       unseen_in=unseen_in)
+                                       unseen_in=unseen_in, passed=passed, hidden=hidden)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -784,7 +810,8 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under,
-                         unit.uses, unit.defines, unit.handed, unit.unseen_in)
+                         unit.uses, unit.defines, unit.handed, unit.unseen_in,
+                         unit.passed, unit.hidden)
     return unit, headers, data, cache.digest(data)
 
 
@@ -939,6 +966,16 @@ def _translation_unit(path: str, text: str, ros2: bool,
                               if word not in finder.unseen for owner in owners)
     if result.unseen == ["*"]:
         result.handed = sorted(finder.handed) if finder.handed else [""]
+        result.passed = sorted(finder.passed)
+        # what the ``*`` comes down to: those words, and the names the node is handed to
+        # (the workspace's own code whose declaration the parse lost may be one), each
+        # where the code that hands it on runs
+        told = {word.decode() for word in words}
+        result.hidden = ["*"] if "*" in told or any(
+            d.code == "CPP_NODE_UNREAD" for d in result.diagnostics) else sorted(
+            told | {name for _, name in finder.handed_to})
+        result.unseen_in = sorted({*result.unseen_in, *(
+            (name, owner) for owner, name in finder.handed_to if name not in told)})
     if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
         result.facts = [*result.facts, *call_conditions.hidden_facts(
             finder.unit_cursor(), owned, _error_words(errors, places))]
