@@ -635,8 +635,13 @@ IMPLEMENTED = """
 namespace {space} {{
 class {cls}::Implementation {{
 public:
+  // an error the names declared do not mend: it may hide what this method builds
+  struct Responder {{
+    void respond() {{ auto kind = Implementation::missing_kind; (void)kind; }}
+  }};
   explicit Implementation({node} node) {{
     pub_ = node{arrow}create_publisher<std_msgs::msg::String>("{topic}", 10);
+    Responder().respond();
   }}
   rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
 }};
@@ -668,9 +673,12 @@ def test_a_node_handed_to_a_vendor_template_may_build_only_what_it_is_given(
     rmf_task_ros2's Dispatcher's /dispatch_states, a class only the dispatcher node
     builds. Code the parse does not have is another package's, which can build nothing
     of the packages that depend on it but what the statement hands it (its template
-    argument): the Negotiation's implementation runs, the Dispatcher's does not. Where
-    the Negotiation's own code is not among the executable's sources, what it does with
-    the node stays unknown, and so anything it may build."""
+    argument): the Negotiation's implementation runs, the Dispatcher's does not. Nor
+    does the parse error in the Negotiation's implementation, which writes
+    ``Implementation`` for its own class, hide a construction of the Dispatcher's (C++
+    looks the name up from the class and namespaces around it). Where the Negotiation's
+    own code is not among the executable's sources, what it does with the node stays
+    unknown, and so anything it may build."""
     made = ("Negotiation::Negotiation(rclcpp::Node & node)\n"
             ": pimpl_(rmf_utils::make_impl<Implementation>(node)) {\n"
             '  node.declare_parameter("negotiation_timeout", 1.0);\n}')

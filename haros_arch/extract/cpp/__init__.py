@@ -492,8 +492,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
     found = _reached(units, unseen)
-    reached, hiding, entered, named = found if found is not None else (
-        None, unseen, set(), set())
+    reached, hiding, entered, named, scoped = found if found is not None else (
+        None, unseen, set(), set(), {})
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
@@ -516,7 +516,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named)
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -534,7 +534,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
 
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
-             unseen: Collection[str], entered: set[str], named: set[str]) -> set[str]:
+             unseen: Collection[str], entered: set[str], named: set[str],
+             scoped: dict[str, set[str]] | None = None) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
@@ -547,24 +548,49 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     registration or a call through its base may run its methods. None when the
     executable loads plugins or nodelets by name, or components (a factory may build
     them), nor a class whose name the code around the parse's errors holds (they may
-    hide its construction)."""
+    hide its construction; a word found only in the code of functions names a class
+    there as C++ looks it up from them, ``scoped``: open-rmf's EasyTrafficLight writes
+    ``Implementation`` for its own, never rmf_task_ros2's ``Dispatcher::Implementation``)."""
     if reached is None or "*" in unseen or any(
             d.code == "CPP_PLUGINS_LOADED" for d in result.diagnostics) or any(
             call.name.endswith("_container/load_node") for call in result.calls):
         return set()  # a component container (ros2_canopen's) loads node classes too
+    scoped = scoped or {}
     classes = {owner for owner, names in owners.items()
                if names and owner not in reached and not owner.endswith("()")
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
-               and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
+               and ("@" in owner or not _named_in(owner, unseen, scoped))}
     return classes | {owner for call in result.calls if (owner := call.node_name) is not None
                       and owner not in reached and (owner.endswith("()") or (
                           (owner in entered or owner.rsplit("::", 1)[-1] in named)
-                          and owner.rsplit("::", 1)[-1] not in unseen))}
+                          and not _named_in(owner, unseen, scoped)))}
+
+
+def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> bool:
+    """Whether the code that may hide a construction (``words``) can name the class
+    ``cls``: its own name is one of them, anywhere, or written in a function (``scoped``:
+    the owners that run whose functions hold it) whose scopes C++ looks it up in (its
+    class, the namespaces around it) hold the class, or where a class or namespace
+    around it is named too (``Dispatcher::Implementation``, a ``using namespace``)."""
+    scope, _, own = cls.rpartition("::")
+    if own not in words:
+        return False
+    holders = scoped.get(own)
+    if holders is None:
+        return True
+    if any(part in words for part in scope.split("::") if part):
+        return True  # named with its class or namespace, or after a using-directive
+    for holder in holders:
+        parts = holder.removesuffix("()").split("::")
+        around = parts[:-1] if holder.endswith("()") else parts
+        if any("::".join(around[:depth]) == scope for depth in range(len(around) + 1)):
+            return True
+    return False
 
 
 def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
-             ) -> tuple[set[str], set[str], set[str], set[str]] | None:
+             ) -> tuple[set[str], set[str], set[str], set[str], dict[str, set[str]]] | None:
     """The owners whose code the executable runs, when its files hold a ``main()``: the
     functions ``main()`` calls or hands on and the classes it constructs or calls the
     methods of, transitively (a class's bases with it, its methods' calls and
@@ -619,6 +645,8 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     starts.add(STATIC)
     reached: set[str] = set()
     words = outside = set(unseen) - named
+    anywhere = set(outside)  # the words not held by functions alone
+    scoped: dict[str, set[str]] = {}  # the others: the owners that run holding each
     while starts:
         reached |= starts
         stack = list(starts)
@@ -631,7 +659,7 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         # holds no definition: it may); its node handed to unknown code (``*``) only
         # where the code that hands it runs (rmf_task_ros2's Dispatcher hands its own
         # node on, and only its schema's static initialiser runs in door_supervisor)
-        words = set(outside)
+        anywhere, scoped = set(outside), {}
         for here, said, handed, within, hidden, unread in held:
             if here and here.isdisjoint(reached):
                 continue
@@ -647,10 +675,16 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
                 # reads as its own references; what is hidden is what its errors hide
                 said = hidden
             # a word found only in functions counts where one of them runs
-            words.update(word for word in said
-                         if word not in within or not within[word].isdisjoint(reached))
+            for word in said:
+                if word not in within:
+                    anywhere.add(word)
+                elif not within[word].isdisjoint(reached):
+                    scoped.setdefault(word, set()).update(within[word] & reached)
+        words = anywhere | set(scoped)
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
-    return reached, words, {made for targets in edges.values() for made in targets}, named
+    scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
+    return (reached, words, {made for targets in edges.values() for made in targets}, named,
+            scoped)
 
 
 def _simple(function: str) -> str:
