@@ -116,15 +116,21 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
                    [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
                    [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
                    ["main()", "rover::spin_all()"], ["rover::spin_all()"],
-                   [("vendor", "rover::spin_all()")])
+                   [("vendor", "rover::spin_all()")],
+                   [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
         [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
         ["main()", "rover::spin_all()"], ["rover::spin_all()"],
-        [("vendor", "rover::spin_all()")])
+        [("vendor", "rover::spin_all()")],
+        [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"])
     with pytest.raises(TypeError):
         from_data({**data, "unseen_in": [["vendor", None]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "passed": [["rover::spin_all()", 3]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "hidden": [None]})
     with pytest.raises(TypeError):
         from_data({**data, "handed": [3]})
     with pytest.raises(TypeError):
@@ -463,13 +469,17 @@ def test_a_linked_library_runs_only_what_main_reaches(write_tree) -> None:
                     "run": ("fleet", [], ["fleet_states"])}
 
 
-def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tree) -> None:
+@pytest.mark.parametrize("handed", ['"fleet"', "&make_fleet"])
+def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tree,
+                                                                         handed: str) -> None:
     """A unit of a linked library that hands a node to code the parse does not read (a
-    vendor's class: anything may be built there) hides constructions only when the
-    function that hands it on runs: rmf_task_ros2's Dispatcher.cpp hands its node to
-    its bidding code, and door_supervisor runs only the static initialiser of its schema,
-    yet every free function of the library was taken as run (door_supervisor got the
-    fleet adapter's nodes and their publishers)."""
+    vendor's class) hides constructions only when the function that hands it on runs:
+    rmf_task_ros2's Dispatcher.cpp hands its node to its bidding code, and
+    door_supervisor runs only the static initialiser of its schema, yet every free
+    function of the library was taken as run (door_supervisor got the fleet adapter's
+    nodes and their publishers). Where it runs, the vendor's code builds of the library
+    what the statement hands it (a function to call back), no more: a package cannot
+    name the code of one that depends on it."""
     root = write_tree({
         "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/fleet.hpp": FLEET,
@@ -483,7 +493,7 @@ def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tr
                                 "namespace fleet {\nint make_schema() { return 1; }\n"
                                 "static const int schema = make_schema();\n"
                                 "void bid(rclcpp::Node::SharedPtr node) {\n"
-                                '  vendor::Bidder bidder(node, "fleet");\n}\n}\n',
+                                f"  vendor::Bidder bidder(node, {handed});\n}}\n}}\n",
         "pkg/src/door_main.cpp": '#include "pkg/fleet.hpp"\nint main(int argc, char ** argv)'
                                  " {\n  rclcpp::init(argc, argv);\n"
                                  "  rclcpp::spin(fleet::make_door());\n}\n",
@@ -497,9 +507,8 @@ def test_a_node_handed_on_counts_only_where_the_code_that_hands_it_runs(write_tr
     made = {name: (found.rosname, published(found))
             for name, found in each_main(root, ("door", "bid"), library).items()}
     assert made["door"] == ("door", ["door_states"])
-    # the vendor's code, given the node, may build anything of the library: its other
-    # nodes stay possible where bid() runs
-    assert made["bid"][1] == ["door_states", "fleet_states", "lift_states", "reports"]
+    # the vendor's code, given the node and a factory of the library, may call it
+    assert made["bid"][1] == ["door_states", *(["fleet_states"] if "&" in handed else [])]
 
 
 AGV = """
@@ -593,6 +602,115 @@ def test_a_class_only_unreached_code_makes_or_calls_makes_no_call(write_tree,
     made = {name: published(found)
             for name, found in each_main(root, ("supervisor", "adapter"), library).items()}
     assert made["supervisor"] == ["supervisor_states"]
-    # (given to code the parse does not have, the node may make anything there)
-    assert made["adapter"] == ["dispatch_states", "door_requests", *(
-        ["supervisor_states"] if "rmf_utils" in made_line else [])]
+    # (the node given to code the parse does not have, with the class to make: that
+    # code builds no node of the library's that the statement does not name)
+    assert made["adapter"] == ["dispatch_states", "door_requests"]
+
+
+def _manifest(name: str, depends: str = "") -> str:
+    """PACKAGE named ``name``, depending on ``depends`` too."""
+    also = f"<depend>{depends}</depend>" if depends else ""
+    return PACKAGE.replace("<name>pkg</name>", f"<name>{name}</name>").replace(
+        "<depend>rclcpp</depend>", f"<depend>rclcpp</depend>{also}")
+
+
+NEGOTIATION_HPP = """
+#include "rclcpp/rclcpp.hpp"
+namespace traffic {
+class Negotiation {
+public:
+  explicit Negotiation(rclcpp::Node & node);
+  class Implementation;
+  Implementation * pimpl_ = nullptr;
+};
+}  // namespace traffic
+"""
+
+# a private implementation made through a template of a package the parse does not have
+# (rmf_utils' impl_ptr.hpp), in a constructor that calls the API (so its unit is parsed
+# again with the names it lacks declared: the call is then no error)
+IMPLEMENTED = """
+#include "std_msgs/msg/string.hpp"
+#include <rmf_utils/impl_ptr.hpp>
+namespace {space} {{
+class {cls}::Implementation {{
+public:
+  // an error the names declared do not mend: it may hide what this method builds
+  struct Responder {{
+    void respond() {{ auto kind = Implementation::missing_kind; (void)kind; }}
+  }};
+  explicit Implementation({node} node) {{
+    pub_ = node{arrow}create_publisher<std_msgs::msg::String>("{topic}", 10);
+    Responder().respond();
+  }}
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+}};
+{made}
+}}
+"""
+
+DISPATCHER_HPP = """
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+namespace fleet {
+class Dispatcher {
+public:
+  static std::shared_ptr<Dispatcher> make(rclcpp::Node::SharedPtr node);
+  class Implementation;
+  Implementation * pimpl_ = nullptr;
+};
+}  // namespace fleet
+"""
+
+
+@pytest.mark.parametrize("negotiation_read", [True, False])
+def test_a_node_handed_to_a_vendor_template_may_build_only_what_it_is_given(
+        write_tree, negotiation_read: bool) -> None:
+    """Open-RMF's read_only fleet adapter builds rmf_traffic_ros2's Negotiation with its
+    node, whose constructor gives it to rmf_utils' make_unique_impl<Implementation> (a
+    header the parse does not have): the node handed to code not read made every class
+    of every library the adapter links possible, so it was also credited with
+    rmf_task_ros2's Dispatcher's /dispatch_states, a class only the dispatcher node
+    builds. Code the parse does not have is another package's, which can build nothing
+    of the packages that depend on it but what the statement hands it (its template
+    argument): the Negotiation's implementation runs, the Dispatcher's does not. Nor
+    does the parse error in the Negotiation's implementation, which writes
+    ``Implementation`` for its own class, hide a construction of the Dispatcher's (C++
+    looks the name up from the class and namespaces around it). Where the Negotiation's
+    own code is not among the executable's sources, what it does with the node stays
+    unknown, and so anything it may build."""
+    made = ("Negotiation::Negotiation(rclcpp::Node & node)\n"
+            ": pimpl_(rmf_utils::make_impl<Implementation>(node)) {\n"
+            '  node.declare_parameter("negotiation_timeout", 1.0);\n}')
+    factory = ("std::shared_ptr<Dispatcher> Dispatcher::make(rclcpp::Node::SharedPtr node) {\n"
+               "  auto made = std::make_shared<Dispatcher>();\n"
+               "  made->pimpl_ = rmf_utils::make_impl<Implementation>(node);\n"
+               '  node->declare_parameter("bidding_time", 2.0);\n  return made;\n}')
+    root = write_tree({
+        "traffic/package.xml": _manifest("traffic"),
+        "traffic/include/traffic/negotiation.hpp": NEGOTIATION_HPP,
+        "traffic/src/negotiation.cpp": '#include "traffic/negotiation.hpp"\n'
+        + IMPLEMENTED.format(space="traffic", cls="Negotiation", node="rclcpp::Node &",
+                             arrow=".", topic="negotiation_notice", made=made),
+        "pkg/package.xml": _manifest("pkg", "traffic"),
+        "pkg/include/pkg/dispatcher.hpp": DISPATCHER_HPP,
+        "pkg/src/dispatcher.cpp": '#include "pkg/dispatcher.hpp"\n'
+        + IMPLEMENTED.format(space="fleet", cls="Dispatcher", node="rclcpp::Node::SharedPtr",
+                             arrow="->", topic="dispatch_states", made=factory),
+        "pkg/src/adapter_main.cpp": '#include "pkg/dispatcher.hpp"\n'
+                                    '#include "traffic/negotiation.hpp"\n'
+                                    '#include "std_msgs/msg/string.hpp"\n'
+                                    "int main(int argc, char ** argv) {\n"
+                                    "  rclcpp::init(argc, argv);\n"
+                                    '  auto node = rclcpp::Node::make_shared("adapter");\n'
+                                    "  auto pub = node->create_publisher<"
+                                    'std_msgs::msg::String>("fleet_states", 10);\n'
+                                    "  traffic::Negotiation negotiation(*node);\n"
+                                    "  rclcpp::spin(node);\n}\n",
+    })
+    sources = [root / "pkg/src/adapter_main.cpp", root / "pkg/src/dispatcher.cpp",
+               *([root / "traffic/src/negotiation.cpp"] if negotiation_read else [])]
+    found = extract_cpp([str(p) for p in sources], scan([str(root)]), cache_dir=None)
+    assert {d.code for d in found.diagnostics} >= {"CPP_NODE_TO_UNKNOWN", "CPP_NODE_PASSED"}
+    assert published(found) == (["fleet_states", "negotiation_notice"] if negotiation_read
+                                else ["dispatch_states", "fleet_states"])

@@ -192,6 +192,17 @@ class CppResult:
     # only in the code of functions, each with the owner of such a function: a word
     # counts where one of them runs (``_reached``)
     unseen_in: list[tuple[str, str]] = field(default_factory=list)
+    # in a translation unit's result with ``*`` in ``unseen``: (owner, class) where the
+    # owner builds a class of another package with the node (``CPP_NODE_PASSED``), whose
+    # code another unit of the executable may hold (a library it links); the other
+    # owners of ``handed`` give the node to code the parse does not know
+    # (``CPP_NODE_TO_UNKNOWN``)
+    passed: list[tuple[str, str]] = field(default_factory=list)
+    # in a translation unit's result with ``*`` in ``unseen``: the words its errors leave
+    # unseen (``unseen`` had the node not been handed on), what the ``*`` comes down to
+    # where no code the node is handed to can be the executable's (``_reached``); ``*``
+    # where something else makes it (a place not read, a library class's node)
+    hidden: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -481,8 +492,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
     found = _reached(units, unseen)
-    reached, hiding, entered, named = found if found is not None else (
-        None, unseen, set(), set())
+    reached, hiding, entered, named, scoped = found if found is not None else (
+        None, unseen, set(), set(), {})
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
@@ -505,7 +516,7 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named)
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped)
     calls = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
@@ -523,7 +534,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
 
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
-             unseen: Collection[str], entered: set[str], named: set[str]) -> set[str]:
+             unseen: Collection[str], entered: set[str], named: set[str],
+             scoped: dict[str, set[str]] | None = None) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
@@ -536,24 +548,49 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     registration or a call through its base may run its methods. None when the
     executable loads plugins or nodelets by name, or components (a factory may build
     them), nor a class whose name the code around the parse's errors holds (they may
-    hide its construction)."""
+    hide its construction; a word found only in the code of functions names a class
+    there as C++ looks it up from them, ``scoped``: open-rmf's EasyTrafficLight writes
+    ``Implementation`` for its own, never rmf_task_ros2's ``Dispatcher::Implementation``)."""
     if reached is None or "*" in unseen or any(
             d.code == "CPP_PLUGINS_LOADED" for d in result.diagnostics) or any(
             call.name.endswith("_container/load_node") for call in result.calls):
         return set()  # a component container (ros2_canopen's) loads node classes too
+    scoped = scoped or {}
     classes = {owner for owner, names in owners.items()
                if names and owner not in reached and not owner.endswith("()")
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
-               and ("@" in owner or owner.rsplit("::", 1)[-1] not in unseen)}
+               and ("@" in owner or not _named_in(owner, unseen, scoped))}
     return classes | {owner for call in result.calls if (owner := call.node_name) is not None
                       and owner not in reached and (owner.endswith("()") or (
                           (owner in entered or owner.rsplit("::", 1)[-1] in named)
-                          and owner.rsplit("::", 1)[-1] not in unseen))}
+                          and not _named_in(owner, unseen, scoped)))}
+
+
+def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> bool:
+    """Whether the code that may hide a construction (``words``) can name the class
+    ``cls``: its own name is one of them, anywhere, or written in a function (``scoped``:
+    the owners that run whose functions hold it) whose scopes C++ looks it up in (its
+    class, the namespaces around it) hold the class, or where a class or namespace
+    around it is named too (``Dispatcher::Implementation``, a ``using namespace``)."""
+    scope, _, own = cls.rpartition("::")
+    if own not in words:
+        return False
+    holders = scoped.get(own)
+    if holders is None:
+        return True
+    if any(part in words for part in scope.split("::") if part):
+        return True  # named with its class or namespace, or after a using-directive
+    for holder in holders:
+        parts = holder.removesuffix("()").split("::")
+        around = parts[:-1] if holder.endswith("()") else parts
+        if any("::".join(around[:depth]) == scope for depth in range(len(around) + 1)):
+            return True
+    return False
 
 
 def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
-             ) -> tuple[set[str], set[str], set[str], set[str]] | None:
+             ) -> tuple[set[str], set[str], set[str], set[str], dict[str, set[str]]] | None:
     """The owners whose code the executable runs, when its files hold a ``main()``: the
     functions ``main()`` calls or hands on and the classes it constructs or calls the
     methods of, transitively (a class's bases with it, its methods' calls and
@@ -577,9 +614,14 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     ``main()`` (a component: its container constructs it)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
-    # each unit's owners, unseen words, and the owners that hand its node on (``*``)
-    held: list[tuple[set[str], list[str], set[str], dict[str, set[str]]]] = []
+    # each unit's owners, unseen words, the owners that hand its node on (``*``), the
+    # words of its errors, what ``*`` comes down to (``CppResult.hidden``), and the
+    # owners that build with the node a class whose code no unit holds
+    held: list[tuple[set[str], list[str], set[str], dict[str, set[str]], list[str],
+                     set[str]]] = []
     named: set[str] = set()  # every unit's unseen words
+    # the classes whose code some unit of the executable holds
+    read = {owner for _, unit in units for owner in unit.defines}
     for _, unit in units:
         for maker, made in (*unit.constructions, *unit.uses):
             edges.setdefault(maker, []).append(made)
@@ -593,7 +635,8 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         within: dict[str, set[str]] = {}
         for word, owner in unit.unseen_in:
             within.setdefault(word, set()).add(owner)
-        held.append((here, unit.unseen, set(unit.handed), within))
+        unread = {owner for owner, cls in unit.passed if cls not in read}
+        held.append((here, unit.unseen, set(unit.handed), within, unit.hidden, unread))
         named.update(unit.unseen)
         named.update(within)
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
@@ -602,6 +645,8 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     starts.add(STATIC)
     reached: set[str] = set()
     words = outside = set(unseen) - named
+    anywhere = set(outside)  # the words not held by functions alone
+    scoped: dict[str, set[str]] = {}  # the others: the owners that run holding each
     while starts:
         reached |= starts
         stack = list(starts)
@@ -614,17 +659,32 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         # holds no definition: it may); its node handed to unknown code (``*``) only
         # where the code that hands it runs (rmf_task_ros2's Dispatcher hands its own
         # node on, and only its schema's static initialiser runs in door_supervisor)
-        words = set(outside)
-        for here, said, handed, within in held:
+        anywhere, scoped = set(outside), {}
+        for here, said, handed, within, hidden, unread in held:
             if here and here.isdisjoint(reached):
                 continue
             if said == ["*"] and handed and "" not in handed and handed.isdisjoint(reached):
                 continue
+            if said == ["*"] and handed and "" not in handed and hidden != ["*"] and (
+                    unread.isdisjoint(reached)):
+                # the node handed, where this code runs, only to code no unit of the
+                # executable holds (a vendor's template: rmf_traffic_ros2's Negotiation
+                # gives it to rmf_utils' make_unique_impl<Implementation>) or to a class
+                # whose code one holds (read where it runs): such code builds nothing
+                # of the executable's but what the statement hands it, which the unit
+                # reads as its own references; what is hidden is what its errors hide
+                said = hidden
             # a word found only in functions counts where one of them runs
-            words.update(word for word in said
-                         if word not in within or not within[word].isdisjoint(reached))
+            for word in said:
+                if word not in within:
+                    anywhere.add(word)
+                elif not within[word].isdisjoint(reached):
+                    scoped.setdefault(word, set()).update(within[word] & reached)
+        words = anywhere | set(scoped)
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
-    return reached, words, {made for targets in edges.values() for made in targets}, named
+    scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
+    return (reached, words, {made for targets in edges.values() for made in targets}, named,
+            scoped)
 
 
 def _simple(function: str) -> str:
@@ -699,13 +759,13 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             elif kept is not None and kept[0] is not None:
                 try:
                     (calls, rosname, found, facts, named, made, unseen, under, uses,
-                     defines, handed, unseen_in) = cache.from_data(kept[0])
+                     defines, handed, unseen_in, passed, hidden) = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made, unseen=unseen, made_under=under,
                                        uses=uses, defines=defines, handed=handed,
-                                       unseen_in=unseen_in)
+                                       unseen_in=unseen_in, passed=passed, hidden=hidden)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -784,7 +844,8 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under,
-                         unit.uses, unit.defines, unit.handed, unit.unseen_in)
+                         unit.uses, unit.defines, unit.handed, unit.unseen_in,
+                         unit.passed, unit.hidden)
     return unit, headers, data, cache.digest(data)
 
 
@@ -939,6 +1000,16 @@ def _translation_unit(path: str, text: str, ros2: bool,
                               if word not in finder.unseen for owner in owners)
     if result.unseen == ["*"]:
         result.handed = sorted(finder.handed) if finder.handed else [""]
+        result.passed = sorted(finder.passed)
+        # what the ``*`` comes down to: those words, and the names the node is handed to
+        # (the workspace's own code whose declaration the parse lost may be one), each
+        # where the code that hands it on runs
+        told = {word.decode() for word in words}
+        result.hidden = ["*"] if "*" in told or any(
+            d.code == "CPP_NODE_UNREAD" for d in result.diagnostics) else sorted(
+            told | {name for _, name in finder.handed_to})
+        result.unseen_in = sorted({*result.unseen_in, *(
+            (name, owner) for owner, name in finder.handed_to if name not in told)})
     if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
         result.facts = [*result.facts, *call_conditions.hidden_facts(
             finder.unit_cursor(), owned, _error_words(errors, places))]

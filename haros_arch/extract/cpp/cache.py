@@ -184,7 +184,9 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             uses: list[tuple[str, str]] | None = None,
             defines: list[str] | None = None,
             handed: list[str] | None = None,
-            unseen_in: list[tuple[str, str]] | None = None) -> dict[str, Any]:
+            unseen_in: list[tuple[str, str]] | None = None,
+            passed: list[tuple[str, str]] | None = None,
+            hidden: list[str] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -194,14 +196,15 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "made_under": [[made, [dataclasses.asdict(c) for c in under]]
                            for made, under in made_under or ()],
             "uses": [list(n) for n in uses or ()], "defines": list(defines or ()),
-            "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()]}
+            "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()],
+            "passed": [list(n) for n in passed or ()], "hidden": list(hidden or ())}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
         list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str],
-        list[tuple[str, str]]]:
+        list[tuple[str, str]], list[tuple[str, str]], list[str]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -228,13 +231,14 @@ def from_data(data: dict[str, Any]) -> tuple[
             raise TypeError("facts")
         facts.append((usr, index, value, site))
     unseen, defines = data.get("unseen", []), data.get("defines", [])
-    handed = data.get("handed", [])
-    for key, words in (("unseen", unseen), ("defines", defines), ("handed", handed)):
+    handed, hidden = data.get("handed", []), data.get("hidden", [])
+    for key, words in (("unseen", unseen), ("defines", defines), ("handed", handed),
+                       ("hidden", hidden)):
         if not (isinstance(words, list) and all(isinstance(word, str) for word in words)):
             raise TypeError(key)
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
             _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
-            handed, _pairs(data, "unseen_in"))
+            handed, _pairs(data, "unseen_in"), _pairs(data, "passed"), hidden)
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

@@ -512,8 +512,11 @@ class IncludeSetup:
         return found
 
     def _look_up(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
-        if quoted and os.path.isfile(os.path.join(folder, header)):
-            return os.path.join(folder, header)
+        # a file once, whatever path reaches it: RxCpp's schedulers/rx-currentthread.hpp
+        # includes "../rx-includes.hpp", which includes it back, so its path would grow
+        # ("schedulers/../schedulers/../...") and the scan recurse until Python stopped it
+        if quoted and os.path.isfile(nearby := os.path.normpath(os.path.join(folder, header))):
+            return nearby
         ros2 = _ROS2_HEADER.fullmatch(header)
         if ros2 is not None and (not self.system_headers or self._resolve(header) is None):
             self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3), where)
@@ -862,7 +865,7 @@ class IncludeSetup:
             near = [folder for folder in near if parts[1] in self._entries(folder, top)]
         folders = [*near, *system]
         for folder in folders:
-            candidate = os.path.join(folder, header)
+            candidate = os.path.normpath(os.path.join(folder, header))
             if os.path.isfile(candidate):
                 return candidate
         return None

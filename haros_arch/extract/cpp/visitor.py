@@ -88,6 +88,7 @@ from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
 from .writes import default_constructed, may_write
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
+_QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
 CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.CLASS_TEMPLATE, CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
@@ -248,6 +249,13 @@ class CallFinder:
         # the owners whose code hands the node to code the parse does not read
         # (CPP_NODE_PASSED, CPP_NODE_TO_UNKNOWN); "" where no owner is known
         self.handed: set[str] = set()
+        # (owner, class) of those that build a class of another package with the node
+        # (CPP_NODE_PASSED): a library the executable links may hold its code
+        self.passed: set[tuple[str, str]] = set()
+        # (owner, name) of the functions and classes the parse does not know that the
+        # owner hands the node to (CPP_NODE_TO_UNKNOWN): the name may be the workspace's
+        # own code that the parse lost, which runs where the owner does
+        self.handed_to: set[tuple[str, str]] = set()
         # each construction of a class of the workspace and its source conditions
         self.made_under: list[tuple[str, tuple[Condition, ...]]] = []
         self.diagnostics: list[Diagnostic] = []
@@ -802,6 +810,32 @@ class CallFinder:
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
 
+    def _handed_to(self, owner: str, name: str, call: Cursor) -> None:
+        """``owner`` hands the node to ``call`` of a function or class the parse does not
+        know: keep the owner (``handed``), the callee's own name (``handed_to``:
+        ``rmf_utils::make_impl<Implementation>``'s ``make_impl``), and the classes of the
+        workspace the call names (its template arguments: ``Implementation``) as used by
+        the owner, what the code it is handed to may build of the executable's."""
+        self.handed.add(owner)
+        own = WORDS.findall(name.split("<", 1)[0].encode())
+        if own:
+            self.handed_to.add((owner, own[-1].decode()))
+        where = call.extent.start.file
+        data = self.source.get(where.name) if where is not None and owner else None
+        if data is None:
+            return
+        # the parse keeps no reference of a permissive call's template arguments: each
+        # name the call writes, as C++ looks it up from the owner's scopes (a method's
+        # class, then the namespaces around it); a name that is no class is no owner
+        scopes = owner.removesuffix("()").split("::")[:-1 if owner.endswith("()") else None]
+        for written in _QUALIFIED.findall(
+                data[call.extent.start.offset:call.extent.end.offset]):
+            path = re.sub(rb"\s+", b"", written).decode()
+            for depth in range(len(scopes), -1, -1):
+                made = "::".join([*scopes[:depth], path])
+                if made != owner and (owner, made) not in self.uses:
+                    self.uses.append((owner, made))
+
     def _unread_node(self, call: Cursor, cls: Cursor | None) -> None:
         """A node class of our stand-ins whose own calls no row says (``HAROS_UNREAD``:
         ros2_control's ControllerManager beyond its services): the node is partial,
@@ -955,6 +989,7 @@ class CallFinder:
             here, there = self.where(call), self.where(cls)
             if there.package and there.package != here.package:
                 self.handed.add(self._owner or "")
+                self.passed.add((self._owner or "", qualified_name(cls)))
                 self.diagnostics.append(diag.make(
                     "CPP_NODE_PASSED", here, cls=qualified_name(cls), package=there.package,
                     given="".join(t.spelling for t in given.get_tokens())[:60]))
@@ -1089,9 +1124,11 @@ class CallFinder:
             return  # a callback binding: the member's calls are read where it is defined
         if given and self._listener_registration(call, given, function):
             return  # the vendor sees the object as its own base: it calls the overrides
+        # the function's own owner: ``_gives`` asks before any walk of it sets ``_owner``
+        owner = (owner_of(function) if function is not None else self._owner) or ""
         if not given and self._of_unknown_base(unknown, function):
             self._unknown.add(key)
-            self.handed.add(self._owner or "")
+            self._handed_to(owner, call.spelling, call)
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call), given="this", name=call.spelling))
             return
@@ -1106,7 +1143,7 @@ class CallFinder:
                     name = "".join(itertools.takewhile(
                         lambda word: word not in ("(", "{"),
                         (t.spelling for t in itertools.islice(call.get_tokens(), 24))))
-            self.handed.add(self._owner or "")
+            self._handed_to(owner, name, call)
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
