@@ -363,6 +363,36 @@ def test_a_read_of_a_name_known_only_at_run_time_could_be_the_missing_reader():
     assert [f.rule for f in found] == ["parameter-set-not-read"]
 
 
+def test_a_write_of_a_name_known_only_at_run_time_is_no_missing_reader():
+    # duckietown's DTROS writes <node>/? (its DTParam values back to the server): that
+    # node reads nothing through it, so a launch setting no node reads is still found;
+    # a read of such a name keeps it undecided, and the missing setter of a parameter
+    # read and never set may be a write of it
+    from haros_arch.graph.candidates import find_candidates
+
+    doc = {"nodes": [{"name": "/lane", "node": "dt/lane"}],
+           "parameters": [{"name": "/lane/verbos", "type": "bool", "value": True,
+                           "writers": ["<launch>"]},
+                          {"name": "/lane/gain", "type": "double"}],
+           "links": [{"kind": "write", "node": "/lane", "name": "/lane/?", "given": "~?"},
+                     {"kind": "read", "node": "/lane", "name": "/lane/gain",
+                      "given": "~gain", "type": "double"}]}
+    model = configuration(doc)
+    find_candidates(model.configurations[0])
+    found = run_rule(RULES["parameter-set-not-read"], model)
+    assert [(f.rule, f.entities) for f in found] == [
+        ("parameter-set-not-read", ("parameter:/lane/verbos",))]
+    found = run_rule(RULES["parameter-read-not-set"], model)
+    assert [(f.rule, f.entities) for f in found] == [
+        ("parameter-read-not-set" + UNDECIDED, ("node:/lane",))]
+    doc["links"][0]["kind"] = "read"
+    model = configuration(doc)
+    find_candidates(model.configurations[0])
+    found = run_rule(RULES["parameter-set-not-read"], model)
+    assert [(f.rule, f.entities) for f in found] == [
+        ("parameter-set-not-read" + UNDECIDED, ("node:/lane",))]
+
+
 def test_a_read_with_a_whole_unknown_segment_could_read_the_name_without_it():
     # autorally's serial ports read nodeName + (handle.empty() ? "" : "/" + handle) +
     # "/serialBaud": ~?/serialBaud, resolved /port/?/serialBaud; with the handle empty

@@ -218,19 +218,24 @@ def _settings(config: Configuration) -> _Settings:
                               _Settings)
 
 
-def unknown_users(charge: Charge, config: Any, resource: Any
+def unknown_users(charge: Charge, config: Any, resource: Any, side: Any = None
                   ) -> list[NodeInstance | Parameter | LaunchItem]:
     """``_unknown_users`` of a resource or link, or of each of a list of them (what
-    could use any of them unseen)."""
+    could use any of them unseen). ``side``, for parameters: ``'readers'`` when the
+    missing side is a reader (a node that only writes a name with ``?`` reads nothing:
+    duckietown's DTROS writes ``<node>/?``), ``'setters'`` when it is a setter (a read
+    with ``?`` may stand for a declaration, which sets); None: either."""
+    if side not in (None, "readers", "setters"):
+        raise QueryTypeError("unknown_users()'s third argument is 'readers' or 'setters'")
     if isinstance(resource, list):
         found: list[NodeInstance | Parameter | LaunchItem] = []
         for each in resource:
-            found.extend(_unknown_users(charge, config, each))
+            found.extend(_unknown_users(charge, config, each, side))
         return _unique(found)
-    return _unknown_users(charge, config, resource)
+    return _unknown_users(charge, config, resource, side)
 
 
-def _unknown_users(charge: Charge, config: Any, resource: Any
+def _unknown_users(charge: Charge, config: Any, resource: Any, side: str | None = None
                    ) -> list[NodeInstance | Parameter | LaunchItem]:
     """The node instances that could use ``resource`` through a call the model does not
     show: those of partial or unknown interface, and those that use a name with ``?``
@@ -253,6 +258,8 @@ def _unknown_users(charge: Charge, config: Any, resource: Any
     # subscribes a name read from a file: it may be any image topic's subscriber, never
     # the publisher of one)
     sides = _OTHER_SIDE.get(resource.kind) if isinstance(resource, Link) else None
+    if side == "readers":
+        sides = ("read",)
     if isinstance(resource, Link):
         resource = resource.resource
     if not isinstance(config, Configuration) or not isinstance(resource, Resource):

@@ -309,7 +309,7 @@ FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure
 
 
 # checks that claim an absence, and similar-name pairing through an index (absence.py)
-FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 2, charged=True)
+FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 3, charged=True)
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
 FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged=True)
 
