@@ -393,6 +393,26 @@ def test_a_write_of_a_name_known_only_at_run_time_is_no_missing_reader():
         ("parameter-set-not-read" + UNDECIDED, ("node:/lane",))]
 
 
+def test_compressed_image_topics_are_alike_by_the_name_before_the_transport():
+    # duckietown's line_detector publishes ~debug/segments/compressed and
+    # anti_instagram subscribes camera_node/image/compressed (both CompressedImage,
+    # neither with a partner): alike only by image_transport's suffix, no pair; a
+    # subscriber of .../image/compressed beside a publisher of .../imag/compressed is
+    def doc(published: str) -> dict:
+        return {"links": [{"kind": "publish", "node": "/det", "name": published,
+                           "given": published, "type": "sensor_msgs/CompressedImage"},
+                          {"kind": "subscribe", "node": "/ai",
+                           "name": "/cam/image/compressed", "given": "image/compressed",
+                           "type": "sensor_msgs/CompressedImage"}]}
+
+    rule = RULES["similar-disconnected-topics"]
+    assert run_rule(rule, configuration(doc("/det/debug/segments/compressed"))) == []
+    assert [f.rule for f in run_rule(rule, configuration(doc("/det/imag/compressed")))] == [
+        "similar-disconnected-topics"]
+    assert [f.rule for f in run_rule(rule, configuration(doc("/det/image/compressed")))] == [
+        "similar-disconnected-topics"]
+
+
 def test_a_read_with_a_whole_unknown_segment_could_read_the_name_without_it():
     # autorally's serial ports read nodeName + (handle.empty() ? "" : "/" + handle) +
     # "/serialBaud": ~?/serialBaud, resolved /port/?/serialBaud; with the handle empty

@@ -18,6 +18,7 @@ from ..model.conditions import undecided as undecided_of
 from ..model.runtime import Link, NodeInstance, Parameter, Resource
 from ..model.source import Package
 from ..model.values import UNKNOWN_MARK
+from ..plugins.hosts import TRANSPORTS
 from .absence import distance, same_setting, similar_to, unknown_users
 from .access import readers_of
 from .errors import QueryLimitError, QueryTypeError
@@ -91,6 +92,24 @@ def edit_distance(charge: Charge, a: Any, b: Any) -> int:
         raise QueryLimitError(f"edit_distance() on strings longer than {MAX_DISTANCE_INPUT}")
     charge(1 + len(a) * len(b) // 64)
     return distance(a, b)
+
+
+# the last segments image_transport adds to a base topic (``image/compressed``): the name
+# a topic is about is the segment before them
+_TRANSPORT_SUFFIXES = frozenset(t.name for t in TRANSPORTS if t.name != "raw")
+
+
+def topic_stem(charge: Charge, name: Any) -> str:
+    """The last segment of a ROS name, or the one before it when the last is an
+    image_transport transport's suffix: ``/cam/image/compressed`` is about ``image``
+    (every compressed image topic ends in ``compressed``)."""
+    if not isinstance(name, str):
+        raise QueryTypeError("topic_stem() takes a name")
+    charge(1)
+    parts = [p for p in name.split("/") if p]
+    if len(parts) > 1 and parts[-1] in _TRANSPORT_SUFFIXES:
+        return parts[-2]
+    return parts[-1] if parts else ""
 
 
 def name_similarity(charge: Charge, a: Any, b: Any) -> float:
@@ -218,6 +237,7 @@ FUNCTIONS: dict[str, Function] = {f.name: f for f in (
     Function("is_rosglobal", is_rosglobal, charged=True),
     Function("is_legal_name", is_legal_name, charged=True),
     Function("edit_distance", edit_distance, 2, 2, charged=True),
+    Function("topic_stem", topic_stem, charged=True),
     Function("name_similarity", name_similarity, 2, 2, charged=True),
     Function("reachable", reachable, 2, 2, charged=True),
     Function("qos_incompatible", qos_incompatible, 2, 2, charged=True),
