@@ -84,6 +84,28 @@ def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.
     return node
 
 
+def key_lines(text: str) -> Any:
+    """The document's mappings with each value replaced by the 1-based line of its key
+    (a mapping below a key keeps its own keys): where each key of a parameter file is
+    written, read with the same bounds as ``compose``; None when it does not read."""
+    try:
+        node = compose(text)
+    except (yaml.YAMLError, YAMLLimit):
+        return None
+
+    def lines(value: yaml.Node, depth: int) -> Any:
+        if not isinstance(value, yaml.MappingNode) or depth > MAX_DEPTH:
+            return None
+        out: dict[str, Any] = {}
+        for key, item in value.value:
+            if isinstance(key, yaml.ScalarNode):
+                inner = lines(item, depth + 1)
+                out[key.value] = key.start_mark.line + 1 if inner is None else inner
+        return out
+
+    return lines(node, 0) if node is not None else None
+
+
 # a lone plain scalar (a launch parameter's text: ``1``, ``true``, ``/map``, ``0.5``, ``~``):
 # resolved and constructed as the full reader would, without its scanner and parser (a
 # file with tens of thousands of parameter values read each through those took minutes)

@@ -116,3 +116,12 @@ def test_python_node_reader_is_linear_in_a_chain_of_calls(write_tree) -> None:
                             package="pkg")
     assert time.process_time() - started < 5
     assert [str(c.name) for c in result.calls if c.kind == "publish"] == ["t"]
+
+
+def test_key_lines_say_where_each_key_is_written() -> None:
+    text = ("# a controller\n/arm:\n  ros__parameters:\n    gain: 2.0\n"
+            "    pid: {p: 1, i: 2}\n    'quoted': x\n    list: [1, 2]\n")
+    assert safe_yaml.key_lines(text) == {"/arm": {"ros__parameters": {
+        "gain": 4, "pid": {"p": 5, "i": 5}, "quoted": 6, "list": 7}}}
+    assert safe_yaml.key_lines("a: [") is None  # does not read: no lines
+    assert safe_yaml.key_lines("- 1\n- 2\n") is None  # no mapping

@@ -271,6 +271,11 @@ def test_spawned_ros2_controllers_are_nodes_in_the_managers_namespace(tmp_path: 
         ("publish", "/robot/joint_states"), *base_declares("/robot/broadcaster")])
     gain = config.parameter("/robot/follower/gain")
     assert gain.set_by_launch and gain.value == 2.0 and gain.is_read
+    # each said where its key is written (a finding about one points at its line)
+    assert gain.launch_location.file.endswith("controllers.yaml")
+    assert gain.launch_location.line == 4
+    assert config.parameter("/robot/controller_manager/broadcaster.type"
+                            ).launch_location.line == 9
     # the controller's own code does not read it: the manager's init of it does
     assert config.parameter("/robot/follower/update_rate").is_read
     codes = [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")]

@@ -817,6 +817,7 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
             continue
         documents = [doc for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]
+
         namespace = host.namespace.rstrip("/")
         manager = host.name if UNKNOWN_MARK not in host.name and not unnamed else \
             _manager_name(decl, spawn.manager)
@@ -824,14 +825,22 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
             node_name = f"{namespace}/{controller}"
             own: dict[str, Any] = {}
             managed: dict[str, Any] = {}  # the spawner sets <name>.type on the manager
-            for document, _ in documents:
+            placed: dict[str, Location] = {}
+            for document, at, keys in documents:
                 own.update(params_for_node(document, node_name))
                 managed.update((key, value) for key, value in params_for_node(
                     document, manager) if key == f"{controller}.type")
+                for owner in (node_name, manager):
+                    placed.update((f"{owner}/{key}", replace(at, line=line))
+                                  for key, line in params_for_node(keys, owner)
+                                  if isinstance(line, int))
             where = documents[0][1] if documents else decl.location
-            _set_params(params, node_name, own, where, instance.conditions)
+            _set_params(params, node_name, own, where, instance.conditions, placed)
             if manager == host.name:  # else no instance has the manager's real name
-                _set_params(params, manager, managed, where, instance.conditions)
+                _set_params(params, manager, managed, where, instance.conditions, placed)
+            # the controller's class is said where its type is written
+            where = placed.get(f"{node_name}/type") or placed.get(
+                f"{manager}/{controller}.type") or where
             typed = _parameter(params, f"{manager}/{controller}.type")
             cls = spawn.controller_type or _text(own.get("type")) or _text(
                 managed.get(f"{controller}.type")) or (_text(typed.value) if typed else None)
@@ -844,8 +853,10 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
 
 
 def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
-                config: Configuration) -> tuple[Any, Location] | None:
-    """A spawner's parameter file, read with the safe loader from the workspace only."""
+                config: Configuration) -> tuple[Any, Location, Any] | None:
+    """A spawner's parameter file, read with the safe loader from the workspace only,
+    with where it is and the line of each of its keys (``safe_yaml.key_lines``: a
+    finding about a controller's parameter points at its key)."""
     if UNKNOWN_MARK in path or not os.path.isabs(path):
         return None
     if not os.path.isfile(path):  # a path in a package's share folder, as installed
@@ -865,7 +876,7 @@ def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
     if document is None or not _bounded(document):
         config.diagnostics.append(diag.make("PLUGIN_PARAM_FILE", decl.location, path=path))
         return None
-    return document, where
+    return document, where, safe_yaml.key_lines(text)
 
 
 def _bounded(document: Any, limit: int = MAX_PARAM_VALUES) -> bool:
@@ -885,8 +896,10 @@ def _bounded(document: Any, limit: int = MAX_PARAM_VALUES) -> bool:
 
 
 def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
-                where: Location, conditions: tuple[Condition, ...]) -> None:
-    """The controller's parameters from the spawner's file, set as launch sets them."""
+                where: Location, conditions: tuple[Condition, ...],
+                placed: Mapping[str, Location] | None = None) -> None:
+    """The controller's parameters from the spawner's file, set as launch sets them;
+    ``placed``: where each is written, by full name (else ``where``)."""
     for key, value in values.items():
         parameter = params.get(Parameter, f"{node_name}/{key}")
         assert isinstance(parameter, Parameter)
@@ -894,7 +907,7 @@ def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
             continue
         parameter.value = value
         parameter.set_by_launch = True
-        parameter.launch_location = where
+        parameter.launch_location = (placed or {}).get(parameter.name, where)
         parameter.launch_conditions = conditions
 
 
