@@ -90,7 +90,7 @@ def key_lines(text: str) -> Any:
     written, read with the same bounds as ``compose``; None when it does not read."""
     try:
         node = compose(text)
-    except (yaml.YAMLError, YAMLLimit):
+    except yaml.YAMLError:  # YAMLLimit too
         return None
 
     def lines(value: yaml.Node, depth: int) -> Any:

@@ -817,7 +817,6 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
             continue
         documents = [doc for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]
-
         namespace = host.namespace.rstrip("/")
         manager = host.name if UNKNOWN_MARK not in host.name and not unnamed else \
             _manager_name(decl, spawn.manager)

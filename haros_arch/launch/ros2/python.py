@@ -1166,7 +1166,6 @@ def _common_text(values: list[Any], reason: str) -> Lazy | None:
     return Lazy(tuple(parts))
 
 
-
 _ENUM_BASES = ("enum.Enum", "enum.IntEnum", "enum.StrEnum", "enum.Flag", "enum.IntFlag")
 
 
