@@ -362,3 +362,23 @@ def test_product_and_zip_of_lists(tmp_path) -> None:
         ("u", ()), ("v", ())]
     assert [c.queue_size for c in result.calls if c.kind == "publish"] == [1, 2]
     assert [d.code for d in result.diagnostics] == []
+
+
+def test_dict_literal_keys_values_and_items(tmp_path) -> None:
+    """A loop over a dict literal takes its keys (the dict, ``keys()``), its values or
+    its ``(key, value)`` pairs (``items()``, Python 2's ``iteritems()``), also when the
+    dict is passed to a helper: axis_camera's ``read_args_with_defaults`` looks each key
+    of its defaults up with ``rospy.search_param`` (all were '?')."""
+    result = run(tmp_path,
+                 "        topics = {'left': 'cam_l', 'right': 'cam_r'}\n"
+                 "        for side in topics:\n"
+                 "            self.create_publisher(Image, side + '/raw', 10)\n"
+                 "        for name in topics.values():\n"
+                 "            self.create_publisher(Image, name + '/rect', 10)\n"
+                 "        self.make(topics)\n"
+                 "    def make(self, given):\n"
+                 "        for side, name in given.iteritems():\n"
+                 "            self.create_subscription(Image, f'{side}/{name}', None, 1)\n")
+    assert names(result) == [("left/raw", ()), ("right/raw", ()), ("cam_l/rect", ()),
+                             ("cam_r/rect", ()), ("left/cam_l", ()), ("right/cam_r", ())]
+    assert [d.code for d in result.diagnostics] == []

@@ -44,3 +44,54 @@ def test_float_exponents_keep_their_value() -> None:
     from haros_arch.extract.python.modules import _repair_python2
     assert _repair_python2("x = [2e-06, 1.E+07, 5e07, 0e0, 07]") == \
         "x = [2e-06, 1.E+07, 5e07, 0e0, 0o7]"
+
+
+TUPLE_PARAMS = (
+    "#!/usr/bin/env python\n"
+    "import rospy\n"
+    "from std_msgs.msg import Float32\n"
+    "\n"
+    "class Control(object):\n"
+    "    def __init__(self, api):\n"
+    "        self.api = api\n"
+    "        rospy.Subscriber('zoom', Float32, Control._with_data(api.zoom))\n"
+    "\n"
+    "    @staticmethod\n"
+    "    def _with_data(func):\n"
+    "        return lambda (msg): func(msg.data)\n"
+    "\n"
+    "    def best(self, scores):\n"
+    "        return max(scores.items(), key=lambda (k, v): v)\n"
+    "\n"
+    "    def moved(self, (x, y), z=(0, 0)):\n"
+    "        return x + y\n"
+    "\n"
+    "rospy.init_node('ptz')\n"
+    "Control(None)\n"
+)
+
+
+def test_python2_tuple_parameters_are_repaired(write_tree) -> None:
+    """axis_camera's camera_control.py (``lambda (msg): func(msg.data)``, PEP 3113's
+    tuple parameters) was a PY_PARSE_ERROR, so axis_ptz was partial with no call of its
+    ``Subscriber``s and every parameter set on it undecided."""
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"),
+                         "pkg/node.py": TUPLE_PARAMS})
+    result = extract_python([str(folder / "pkg" / "node.py")],
+                            scan([str(folder)]), package="pkg")
+    assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
+    assert [(c.kind, c.name, c.location.line, c.location.column) for c in result.calls] == [
+        ("subscribe", "zoom", 8, 9)]
+
+
+def test_tuple_parameters_keep_columns_and_leave_other_brackets() -> None:
+    from haros_arch.extract.python.modules import _repair_python2
+    cases = {
+        "f = lambda (msg): g(msg.data)": "f = lambda  msg : g(msg.data)",
+        "k = lambda (a, b): b": "k = lambda  a, b : b",
+        "def f(self, (x, y), z=(1, 2)):": "def f(self,  x, y , z=(1, 2)):",
+        "h = lambda: (1, 2)": "h = lambda: (1, 2)",
+        "print_it((1, 2))": "print_it((1, 2))",
+    }
+    for before, after in cases.items():
+        assert _repair_python2(before) == after

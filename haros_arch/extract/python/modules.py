@@ -365,6 +365,11 @@ _OCTAL = re.compile(r"(?<![\w.])(?<![\d.][eE][-+])0([0-7]+)(?![\w.])")
 _LONG = re.compile(r"(?<![\w.])(\d+)[lL](?!\w)")
 _BACKTICK = re.compile(r"`([^`\n]*)`")
 _RAISE = re.compile(r"^(\s*raise\s+[\w.]+)\s*,\s*(.+)$")
+# tuple parameters (gone with PEP 3113): ``lambda (msg): ...``, ``lambda (k, v): v``, and
+# a flat tuple in a ``def``'s parameter list on its line, ``def f(self, (x, y)):``
+_LAMBDA_TUPLE = re.compile(r"\blambda\s*\(([\w\s,]*)\)(?=\s*:)")
+_DEF_HEAD = re.compile(r"^\s*def\s+\w+\s*\(")
+_PARAM_TUPLE = re.compile(r"(?<=[(,])(\s*)\(([\w\s,]*)\)(?=\s*[,)])")
 
 
 def _repair_python2(text: str) -> str:
@@ -394,8 +399,26 @@ def _repair_python2(text: str) -> str:
             fixed = _OCTAL.sub(lambda m: f"0o{m.group(1)}", fixed)
         fixed = _LONG.sub(lambda m: m.group(1), fixed)
         fixed = fixed.replace("ur\"", "\"").replace("ur'", "'")
+        if "(" in fixed:
+            fixed = _untuple_parameters(fixed)
         lines[i] = fixed
     return "\n".join(lines)
+
+
+def _untuple_parameters(line: str) -> str:
+    """Python 2's tuple parameters on ``line`` made plain names, the brackets turned into
+    spaces so the columns stay (``lambda (msg): f(msg)`` -> ``lambda  msg : f(msg)``;
+    the names of ``(x, y)`` become parameters of their own, which is all a reading of
+    ROS calls needs: the result is never run). Nested tuples are left alone."""
+    def spaced(found: re.Match[str]) -> str:
+        return found.group(0).replace("(", " ").replace(")", " ")
+
+    line = _LAMBDA_TUPLE.sub(spaced, line)
+    head = _DEF_HEAD.match(line)
+    if head is not None:
+        start = head.end() - 1
+        line = line[:start] + _PARAM_TUPLE.sub(spaced, line[start:])
+    return line
 
 
 def _expand_python2_tabs(text: str) -> tuple[str, dict[int, int]]:

@@ -12,10 +12,10 @@ from __future__ import annotations
 import ast
 import itertools
 
-from ...model.values import Unknown
+from ...model.values import Unknown, Value
 from . import msg_types
 from .modules import Loader, Module, submodule
-from .objects import Frame, ModuleRef, Ref, Seq
+from .objects import Frame, ModuleRef, Record, Ref, Seq
 
 MAX_UNROLL = 32  # a for loop over a known sequence is walked once per item, up to this
 # ... and a loop inside no other unrolled loop, up to this: its cost grows with its items
@@ -115,7 +115,15 @@ class Scopes(EvaluatorBase):
                   limit: int = MAX_UNROLL) -> tuple[object, ...] | None:
         """The items a ``for`` loop over ``expr`` takes, when known and at most
         ``limit``: a list or tuple, ``range(...)`` of integers, ``enumerate(...)``,
-        ``zip(...)`` and ``itertools.product(...)`` of lists or tuples."""
+        ``zip(...)`` and ``itertools.product(...)`` of lists or tuples; a dict literal's
+        keys (the dict itself, ``keys()``), values or ``(key, value)`` pairs (``items()``),
+        Python 2's ``iter*`` spellings too (axis_camera's ``for name, val in
+        arg_defaults.iteritems(): rospy.search_param(name)``)."""
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Attribute) \
+                and not expr.args and not expr.keywords and expr.func.attr in _DICT_VIEWS:
+            owner = self.eval(expr.func.value, frame)
+            if isinstance(owner, Record):
+                return _view(owner, _DICT_VIEWS[expr.func.attr], limit)
         callee = self.eval(expr.func, frame) if isinstance(expr, ast.Call) else None
         if isinstance(expr, ast.Call) and not expr.keywords and isinstance(callee, Ref) \
                 and callee.qualname == "itertools.product":
@@ -154,4 +162,21 @@ class Scopes(EvaluatorBase):
         value = self.eval(expr, frame)
         if isinstance(value, Seq) and len(value.items) <= limit:
             return value.items
+        if isinstance(value, Record):
+            return _view(value, "keys", limit)
         return None
+
+
+# a dict's methods that iterate over it, and what each gives
+_DICT_VIEWS = {"keys": "keys", "iterkeys": "keys", "values": "values",
+               "itervalues": "values", "items": "items", "iteritems": "items"}
+
+
+def _view(record: Record, view: str, limit: int) -> tuple[object, ...] | None:
+    if len(record.entries) > limit:
+        return None
+    if view == "keys":
+        return tuple(Value.of(key) for key, _ in record.entries)
+    if view == "values":
+        return tuple(value for _, value in record.entries)
+    return tuple(Seq((Value.of(key), value)) for key, value in record.entries)
