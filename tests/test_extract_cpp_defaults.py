@@ -34,6 +34,43 @@ def test_defaults_and_searches(tmp_path):
                    ("~plain", False, None, False), ("~robot_model", False, None, True)]
 
 
+SEARCHED = """
+#include <ros/ros.h>
+#include <string>
+std::string prefix(ros::NodeHandle& n_tilde) {
+  std::string tf_prefix, tf_prefix_key;
+  n_tilde.searchParam("tf_prefix", tf_prefix_key);
+  n_tilde.param(tf_prefix_key, tf_prefix, std::string(""));
+  return tf_prefix;
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh, pnh("~");
+  std::string found, robot, other;
+  if (ros::param::search("robot_name", found))
+    ros::param::get(found, robot);
+  nh.getParam(other, other);
+  prefix(pnh);
+  return 0;
+}
+"""
+
+
+def test_a_name_searchParam_found_is_the_parameter_searched_for(tmp_path):
+    """robot_state_publisher reads tf_prefix as ``searchParam("tf_prefix", key)`` then
+    ``param(key, ...)``: the second read was of ``~?``, a read of any private parameter,
+    so every parameter a launch file set on a robot_state_publisher was undecided. The
+    name found is the key searched for (the read is searched too); a key with no known
+    value stays '?'."""
+    source = tmp_path / "n.cpp"
+    source.write_text(SEARCHED)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = sorted((c.location.line, c.name, c.searched, c.type) for c in result.calls)
+    assert got == [(6, "~tf_prefix", True, None), (7, "~tf_prefix", True, "str"),
+                   (14, "robot_name", True, None), (15, "robot_name", True, "str"),
+                   (16, "?", False, "str")]
+
+
 def test_errors_on_fields_of_messages_known_only_by_name_are_not_code_errors(tmp_path):
     source = tmp_path / "n.cpp"
     source.write_text(

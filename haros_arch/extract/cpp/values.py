@@ -34,7 +34,7 @@ from .expressions import (
     written_arguments,
 )
 from .synthesis import ANY
-from .writes import Write, by_operator, const_array, emptied, writes_of
+from .writes import Write, by_operator, const_array, emptied, searched_key, writes_of
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -70,6 +70,12 @@ class NodeName(str):
 
 
 NODE_NAME = NodeName("~")
+
+
+class SearchedName(str):
+    """The name roscpp's ``searchParam(key, result)`` wrote to ``result``: ``key`` as
+    found in the nearest namespace that has it (a part ``render`` writes as ``key``; a
+    call whose whole name it is reads the parameter searched for, ``searched``)."""
 
 
 class ProgramArgument(str):
@@ -735,6 +741,11 @@ class Scope:
         target = call.referenced
         if emptied(call):
             return ("",)  # what ``s.clear()`` leaves in ``s`` (a write of it: ``writes``)
+        key = searched_key(call)
+        if key is not None:  # the name it found (a write of its result: ``writes``)
+            text = self.string(key, depth + 1)
+            return (SearchedName(text[0]),) if len(text) == 1 and (
+                type(text[0]) is str and text[0]) else UNKNOWN
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)

@@ -69,6 +69,7 @@ from .values import (
     SEPARATOR,
     NodeName,
     Scope,
+    SearchedName,
     _method_object,
     argument_of,
     initializer,
@@ -1614,7 +1615,8 @@ class CallFinder:
                 name_each=source[3] if source else None,
                 has_default=has_default or isinstance(written, PrefixName),
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
-                searched=spec.searched, handle_namespace=handle_namespace,
+                searched=spec.searched or isinstance(written, SearchedName),
+                handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
                 deletes=spec.deletes, node_name=owner, transport=transport,
@@ -1780,6 +1782,8 @@ class CallFinder:
         argument = argument_of(parts)
         if argument is not None:
             return (ArgumentName(name, argument), None)
+        if len(parts) == 1 and isinstance(parts[0], SearchedName):
+            return (SearchedName(name), None)  # the key ``searchParam`` found
         if None not in parts:
             return (name, None)
         if name.count("?") != 1:

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
-from .expressions import initializer, strip, written_arguments
+from .expressions import initializer, qualified_name, strip, written_arguments
 
 _NAMES = (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
 _MAKERS = ("make_shared", "make_unique", "allocate_shared")
@@ -98,9 +98,14 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
     if operator == "<<" or (operator == "" and len(args) == 2 and _inserting(args[0])):
         args = args[:1]  # ``out << "x is " << x_`` in a template inserts x_: reads it
     found: list[Write] = []
+    searched = searched_key(call)
     for index, arg in enumerate(args):  # an lvalue passed as it is: a reference
         if arg.kind in _NAMES and arg.referenced is not None:
-            if may_write(call, index):
+            if searched is not None and index == len(args) - 1:
+                # ``nh.searchParam("tf_prefix", key)`` writes the name it found to
+                # ``key``: the call is its value (``values.Scope.string`` reads it so)
+                found.append(Write(arg, call, call, True))
+            elif may_write(call, index):
                 found.append(Write(arg, None, call, False))
             continue
         bare = strip(arg)
@@ -164,6 +169,25 @@ def emptied(call: Cursor) -> bool:
     method = call.referenced
     parent = method.semantic_parent if method is not None else None
     return parent is not None and parent.spelling.split("<")[0] in ("basic_string", "string")
+
+
+# roscpp's searches for a parameter up the namespaces: the key searched for, and the
+# result (the name found) written to the last argument
+_SEARCHES = {("ros::NodeHandle", "searchParam"): 2, ("ros::param", "search"): 2}
+
+
+def searched_key(call: Cursor) -> Cursor | None:
+    """The key argument of roscpp's ``NodeHandle::searchParam(key, result)`` or
+    ``ros::param::search(key, result)``, whose result is the full name of the parameter
+    ``key`` names in the nearest namespace that has it; None for any other call."""
+    if call.spelling not in ("searchParam", "search"):
+        return None
+    method = call.referenced
+    parent = method.semantic_parent if method is not None else None
+    args = written_arguments(call)
+    if parent is None or _SEARCHES.get((qualified_name(parent), call.spelling)) != len(args):
+        return None
+    return args[0]
 
 
 def _smart_pointer(expr: Cursor) -> bool:
