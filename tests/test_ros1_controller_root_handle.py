@@ -47,8 +47,26 @@ CONTROLLER = """
       std::string frame_;
       double gain_;
     };
+    // sawyer_sim_controllers' JointArrayController: an overload of three parameters
+    // whose last is no handle; ``nh`` is the controller's own
+    class ArrayController
+        : public controller_interface::Controller<hardware_interface::EffortJointInterface> {
+     public:
+      virtual bool init(hardware_interface::EffortJointInterface* hw, ros::NodeHandle& nh) {
+        return init(hw, nh, std::string(""));
+      }
+      bool init(hardware_interface::EffortJointInterface* hw, ros::NodeHandle& nh,
+                const std::string& mode) {
+        nh.param("joints", gain_, 1.0);
+        return true;
+      }
+      void update(const ros::Time&, const ros::Duration&) {}
+     private:
+      double gain_;
+    };
     }  // namespace quad
     PLUGINLIB_EXPORT_CLASS(quad::PoseController, controller_interface::ControllerBase)
+    PLUGINLIB_EXPORT_CLASS(quad::ArrayController, controller_interface::ControllerBase)
     """
 
 HARDWARE = """
@@ -79,7 +97,8 @@ LAUNCH = """<launch>
   </group>
   <group ns="uav2">
     <param name="pose/type" value="quad/PoseController"/>
-    <node name="spawner" pkg="controller_manager" type="spawner" args="pose"/>
+    <param name="array/type" value="quad/ArrayController"/>
+    <node name="spawner" pkg="controller_manager" type="spawner" args="pose array"/>
   </group>
 </launch>
 """
@@ -99,6 +118,8 @@ def _config(write_tree: Any) -> Any:
         "src/quad/plugins.xml": (
             '<library path="lib/libquad_controllers">'
             '<class name="quad/PoseController" type="quad::PoseController" '
+            'base_class_type="controller_interface::ControllerBase"/>'
+            '<class name="quad/ArrayController" type="quad::ArrayController" '
             'base_class_type="controller_interface::ControllerBase"/></library>'),
         "src/quad/src/controller.cpp": CONTROLLER,
         "src/quad/src/base.cpp": HARDWARE,
@@ -127,6 +148,17 @@ def test_a_controllers_root_handle_is_its_managers_namespace(write_tree: Any) ->
     assert ("/uav2/pose", "read", "/uav2/world_frame") in made
     assert ("/uav2/pose", "read", "/uav2/pose/gain") in made
     assert not [name for _, _, name in made if "pose/command" in name]
+
+
+def test_an_init_whose_third_parameter_is_no_handle_has_no_root_handle(
+        write_tree: Any) -> None:
+    """sawyer_simulator's controllers read ``joints`` in ``init(hw, nh, ctrl_type)``: the
+    read was taken for the root handle's, ``/robot/joints``, and the controller's own
+    ``joints`` left unread (a false parameter-set-not-read per joint)."""
+    config = _config(write_tree)
+    reads = {link.resource.name for link in config.links
+             if link.kind == "read" and link.node.name == "/uav2/array"}
+    assert "/uav2/array/joints" in reads and "/uav2/joints" not in reads
 
 
 def test_the_root_handle_mark_is_kept_in_saved_models() -> None:

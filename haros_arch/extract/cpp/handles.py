@@ -375,9 +375,20 @@ def controller_root(decl: Cursor) -> bool:
             function.kind != CursorKind.CXX_METHOD or function.spelling != "init"):
         return False
     params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
-    if len(params) != 3 or params[1] != decl:
-        return False
+    if len(params) != 3 or params[1] != decl or not all(
+            _node_handle(p) for p in params[1:]):
+        return False  # sawyer's ``init(hw, nh, ctrl_type)``: one handle, the controller's
     return _controller(function.semantic_parent)
+
+
+def _node_handle(param: Cursor) -> bool:
+    """Whether ``param`` is a ``ros::NodeHandle`` (by reference, const or not)."""
+    ctype = param.type.get_canonical()
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee()
+    declaration = ctype.get_declaration()
+    return declaration.kind != CursorKind.NO_DECL_FOUND and (
+        qualified_name(declaration) == "ros::NodeHandle")
 
 
 def _controller(cls: Cursor | None, depth: int = 0) -> bool:
