@@ -141,3 +141,52 @@ def test_a_node_that_could_read_it_unseen_leaves_the_setting_undecided(write_tre
     assert ("parameter:/planner/unused",) in unread
     # said once, naming the node whose reads are not all known
     assert found["parameter-set-not-read" + UNDECIDED] == [("node:/lost",)]
+
+
+ROS1_NODE = """
+    #!/usr/bin/env python
+    import rospy
+    rospy.init_node("%s")
+    %s
+    """
+ROS1_LAUNCH = """
+    <launch>
+      <node pkg="sim" type="simulator.py" name="simulator">
+        <rosparam command="load" file="$(find sim)/params.yaml"/>
+      </node>
+      <node pkg="sim" type="mux.py" name="mux">
+        <rosparam command="load" file="$(find sim)/params.yaml"/>
+        <rosparam>{own_unused: 1}</rosparam>
+      </node>
+      <node pkg="sim" type="mux.py" name="alone">
+        <rosparam command="load" file="$(find sim)/alone.yaml"/>
+      </node>
+    </launch>
+    """
+
+
+def test_a_ros1_parameter_file_loaded_into_several_nodes_is_one_setting(write_tree):
+    """f1tenth_simulator loads one params.yaml into each of its five nodes, each reading
+    what it needs: every key was reported for each node that does not read it (234
+    warnings). Now a key no node reads is reported once, on the first node; one any
+    of them reads is not; a file given to one node, and text, stay the node's own."""
+    root = write_tree({
+        "src/sim/package.xml": package_xml("sim"),
+        "src/sim/CMakeLists.txt": ("project(sim)\nfind_package(catkin REQUIRED)\n"
+                                   "catkin_package()\ncatkin_install_python(PROGRAMS "
+                                   "scripts/simulator.py scripts/mux.py DESTINATION x)\n"),
+        "src/sim/scripts/simulator.py": textwrap.dedent(ROS1_NODE % (
+            "simulator", "rospy.get_param('~wheelbase')")),
+        "src/sim/scripts/mux.py": textwrap.dedent(ROS1_NODE % (
+            "mux", "rospy.get_param('~mux_size')")),
+        "src/sim/params.yaml": "wheelbase: 0.3\nmux_size: 4\nnobody: 1\n",
+        "src/sim/alone.yaml": "wheelbase: 0.3\n",
+        "src/sim/launch/sim.launch": textwrap.dedent(ROS1_LAUNCH),
+        "project.yaml": "project: p\ndistro: noetic\nconfigurations:\n"
+                        "  c: [sim/launch/sim.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {})
+    found = sorted(tuple(f.entities) for f in run_catalogue(model)
+                   if f.rule == "parameter-set-not-read")
+    assert found == [("parameter:/alone/wheelbase",), ("parameter:/mux/own_unused",),
+                     ("parameter:/simulator/nobody",)]

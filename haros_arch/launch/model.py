@@ -107,11 +107,12 @@ class ParamDecl:
     # a private parameter of a ``<test>`` that a roslaunch run leaves out
     # (``without_tests``): its name; roslaunch sets the parameter, its reader is not run
     test: str | None = None
-    # ROS 2: the setting for several nodes that gave it, not one for this node alone:
+    # the setting for several nodes that gave it, not one for this node alone: ROS 2's
     # ``SetParameter`` (its place, ``file:line:column``: every node of its scope) or
     # the ``/**`` entries of a parameter file (its path: every node it is given to, by
-    # ``SetParametersFromFile`` or a node's own parameters). Each node there gets the
-    # value, and takes it only if it declares it
+    # ``SetParametersFromFile`` or a node's own parameters), where each node gets the
+    # value and takes it only if it declares it; ROS 1's ``<rosparam file>`` inside a
+    # ``<node>`` (its path: every node it is loaded into, each reading what it needs)
     setting: str | None = None
     # ROS 1 ``command=`` / ``textfile=`` (``cat FILE``), ROS 2 ``Command()`` /
     # ``$(command)``: the command line the value comes from, ``?`` for unknown parts

@@ -270,10 +270,11 @@ class Parameter(Resource):
     read_as_part_of: Parameter | None = field(default=None, metadata=INDEX)
     # given to a ``<test>`` that this (roslaunch) configuration leaves out: its name
     for_test: str | None = field(default=None, metadata=INDEX)
-    # ROS 2: the launch setting for several nodes that set it, not one for its node
-    # alone (``launch.model.ParamDecl.setting``: a ``SetParameter``'s place, a parameter
-    # file whose ``/**`` entries each node it is given to gets); the same setting's
-    # parameters on the other nodes: ``query.absence.same_setting``
+    # the launch setting for several nodes that set it, not one for its node alone
+    # (``launch.model.ParamDecl.setting``: a ``SetParameter``'s place, a parameter file
+    # whose ``/**`` entries each node it is given to gets, a ROS 1 parameter file loaded
+    # into several nodes); the same setting's parameters on the other nodes:
+    # ``query.absence.same_setting``
     setting: str | None = field(default=None, metadata={"optional": True})
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {

@@ -292,8 +292,8 @@ class Ros1Loader:
     def tag_param(self, element: Element, scope: Scope, local: bool = False) -> None:
         tags_params.tag_param(self, element, scope, local)
 
-    def tag_rosparam(self, element: Element, scope: Scope) -> None:
-        tags_params.tag_rosparam(self, element, scope)
+    def tag_rosparam(self, element: Element, scope: Scope, in_node: bool = False) -> None:
+        tags_params.tag_rosparam(self, element, scope, in_node)
 
     def tag_arg(self, element: Element, scope: Scope) -> None:
         name = self.text(element, "name", scope) or ""
@@ -478,7 +478,7 @@ class Ros1Loader:
             elif tag == "param":
                 self.tag_param(child, inner_child, local=True)
             elif tag == "rosparam":
-                self.tag_rosparam(child, inner_child)
+                self.tag_rosparam(child, inner_child, in_node=True)
             else:
                 self.tag_env(child, env)
         for param in (*scope.private, *private.private):

@@ -102,11 +102,13 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
 
 def add_param(loader: Ros1Loader, name: str, value: Any, kind: str | None,
               conditions: tuple[Condition, ...], location: Location,
-              source: str = "value", command: str | None = None) -> None:
+              source: str = "value", command: str | None = None,
+              setting: str | None = None) -> None:
     """A parameter the launch file sets (``source``: value, textfile, binfile, command,
-    rosparam; ``command``: the command line of ``command=``)."""
+    rosparam; ``command``: the command line of ``command=``; ``setting``: the parameter
+    file loaded into several nodes that gave it, ``ParamDecl.setting``)."""
     loader.model.params.append(ParamDecl(server_name(name), value, kind, conditions,
-                                         location, command=command))
+                                         location, command=command, setting=setting))
 
 
 def server_name(name: str) -> str:
@@ -115,7 +117,13 @@ def server_name(name: str) -> str:
     stores it as ``/roslaunch/name``."""
     return canonical("/roslaunch/" + name[1:] if name.startswith("~") else name)
 
-def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
+def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
+                 in_node: bool = False) -> None:
+    """``<rosparam>``; ``in_node``: a child of a ``<node>``, in its private namespace.
+    A file loaded there is a setting for every node it is loaded into (``setting``:
+    its path): a launch file that loads one parameter file into several nodes gives
+    each all of it, for each to read what it needs (f1tenth_simulator's params.yaml in
+    its five nodes), so a key is unread only when none of them reads it."""
     command = loader.text(element, "command", scope) or "load"
     ns = loader.text(element, "ns", scope)
     named = loader.text(element, "param", scope)
@@ -176,11 +184,12 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope) -> None:
         loader.report("LAUNCH_YAML", scope, element, detail=(
             "cannot load non-dictionary values into the global namespace '/'"))
         return
+    setting = file.literal if in_node and file is not None else None
     for name, leaf in flatten(full, data_value):
         leaf = unknown_parts(leaf)
         add_param(loader, name.replace(MARK, "?"), leaf,
-                       type_name(leaf) if leaf is not None else None,
-                       scope.conditions, where, "rosparam")
+                  type_name(leaf) if leaf is not None else None,
+                  scope.conditions, where, "rosparam", setting=setting)
 
 
 def unseen(loader: Ros1Loader, namespace: str, scope: Scope, where: Location) -> None:
