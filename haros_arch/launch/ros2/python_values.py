@@ -62,6 +62,21 @@ class Raised(Exception):
         self.name = name
 
 
+class Guard(str):
+    """The text of a Python test not known statically that the code at hand runs under,
+    and which run of a test of the file this is (``run``, counted by ``Expressions.guard``):
+    the same test run again (a loop's next item, another call of its function) may come
+    out otherwise, so what two runs make is not under one condition, though its text is
+    the same."""
+
+    run: int
+
+    def __new__(cls, text: str, run: int) -> Guard:
+        made = super().__new__(cls, text)
+        made.run = run
+        return made
+
+
 @dataclass(frozen=True)
 class Lazy:
     """A string with substitutions or unknown parts, computed when the action runs."""
@@ -238,6 +253,20 @@ def _hashable(value: Any) -> Any:
     except TypeError:  # a value of the interpreter's own (a method not called, ...)
         return Unknown("dict key not known statically")
     return value
+
+
+def open_keys(value: dict[Any, Any]) -> bool:
+    """Whether a dict has a key not known statically, wholly or in part (an item set under
+    ``payload[sensor.name()]`` or ``payload['thrust_' + name]``): a key not among its
+    known ones may be that one, so a lookup of it is not known."""
+    stack = list(value)
+    while stack:
+        key = stack.pop()
+        if isinstance(key, tuple):
+            stack.extend(key)
+        elif _opaque(key):
+            return True
+    return False
 
 
 def _opaque(value: Any) -> bool:

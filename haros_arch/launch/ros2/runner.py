@@ -144,7 +144,7 @@ class Runner:
         if truth is None:
             statement = "unless" if cond.negate else "if"
             made = Condition(cond.source or "?", "launch", statement, location,
-                             compares=self.compared(cond, scope, location))
+                             compares=self.compared(cond, scope, location), runs=cond.runs)
             return replace(scope, conditions=(*scope.conditions, made))
         return scope if truth else None
 
