@@ -66,7 +66,7 @@ _NOT_KNOWN = {"not": "not of an unknown value", "unary": "unary operation", "sli
 def _fails_for_sure(value: Any, key: Any) -> bool:
     """Whether Python's own error on ``value[key]`` is the program's: a container
     known, a key known, and (a dict) no key of it unknown that could be that one."""
-    if not isinstance(value, (dict, list, tuple, str)) or open_keys({_hashable(key): None}):
+    if not isinstance(value, (dict, list, tuple, str)) or open_keys([_hashable(key)]):
         return False
     return not isinstance(value, dict) or not open_keys(value)
 

@@ -8,7 +8,7 @@
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from typing import Any
@@ -255,11 +255,11 @@ def _hashable(value: Any) -> Any:
     return value
 
 
-def open_keys(value: dict[Any, Any]) -> bool:
-    """Whether a dict has a key not known statically, wholly or in part (an item set under
-    ``payload[sensor.name()]`` or ``payload['thrust_' + name]``): a key not among its
-    known ones may be that one, so a lookup of it is not known."""
-    stack = list(value)
+def open_keys(keys: Iterable[Any]) -> bool:
+    """Whether one of ``keys`` (a dict's) is not known statically, wholly or in part (an
+    item set under ``payload[sensor.name()]`` or ``payload['thrust_' + name]``): a key
+    not among a dict's known ones may be that one, so a lookup of it is not known."""
+    stack = list(keys)
     while stack:
         key = stack.pop()
         if isinstance(key, tuple):
