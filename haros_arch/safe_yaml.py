@@ -84,26 +84,40 @@ def compose(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> yaml.
     return node
 
 
-def key_lines(text: str) -> Any:
-    """The document's mappings with each value replaced by the 1-based line of its key
-    (a mapping below a key keeps its own keys): where each key of a parameter file is
-    written, read with the same bounds as ``compose``; None when it does not read."""
-    try:
-        node = compose(text)
-    except yaml.YAMLError:  # YAMLLimit too
+def load_with_lines(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader
+                    ) -> tuple[Any, Any]:
+    """``load`` of ``text``, and from the same read where each of its keys is written:
+    the document's mappings with each value replaced by the 1-based line of its key (a
+    mapping below a key keeps its own keys), None for a document that is no mapping.
+    Findings about a parameter of a file point at its key."""
+    return _document(text, loader, lines=True)
+
+
+def _key_lines(node: yaml.Node, depth: int = 0) -> Any:
+    """The key lines of a composed node (``load_with_lines``); a key given twice in one
+    mapping keeps the keys of both mappings (as rcl merges them:
+    ``naming.ParamFileLoader``), the later's lines first."""
+    if not isinstance(node, yaml.MappingNode) or depth > MAX_DEPTH:
         return None
+    out: dict[str, Any] = {}
+    for key, item in node.value:
+        if isinstance(key, yaml.ScalarNode):
+            inner = _key_lines(item, depth + 1)
+            before = out.get(key.value)
+            if isinstance(before, dict) and isinstance(inner, dict):
+                inner = _merged(before, inner)
+            out[key.value] = key.start_mark.line + 1 if inner is None else inner
+    return out
 
-    def lines(value: yaml.Node, depth: int) -> Any:
-        if not isinstance(value, yaml.MappingNode) or depth > MAX_DEPTH:
-            return None
-        out: dict[str, Any] = {}
-        for key, item in value.value:
-            if isinstance(key, yaml.ScalarNode):
-                inner = lines(item, depth + 1)
-                out[key.value] = key.start_mark.line + 1 if inner is None else inner
-        return out
 
-    return lines(node, 0) if node is not None else None
+def _merged(first: dict[str, Any], second: dict[str, Any]) -> dict[str, Any]:
+    """Two mappings of key lines, key by key, the second's over the first's."""
+    out = dict(first)
+    for key, value in second.items():
+        before = out.get(key)
+        out[key] = _merged(before, value) if isinstance(before, dict) and isinstance(
+            value, dict) else value
+    return out
 
 
 # a lone plain scalar (a launch parameter's text: ``1``, ``true``, ``/map``, ``0.5``, ``~``):
@@ -132,14 +146,19 @@ def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
         done, value = _plain_scalar(text)
         if done:
             return value
+    return _document(text, loader, lines=False)[0]
+
+
+def _document(text: str, loader: type[yaml.SafeLoader], lines: bool) -> tuple[Any, Any]:
+    """The document of ``text`` read with the bounds, and its key lines if asked."""
     _check_flow_depth(text)
     reader = _reader(loader, text)
     try:
         node = reader.get_single_node()
         if node is None:
-            return None
+            return None, None
         check(node)
-        return reader.construct_document(node)
+        return reader.construct_document(node), _key_lines(node) if lines else None
     except RecursionError:
         raise YAMLLimit(f"YAML nested more than {MAX_DEPTH} levels deep") from None
     except ValueError as err:  # an integer of more than 4300 digits, a %YAML directive

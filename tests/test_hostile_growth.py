@@ -121,7 +121,13 @@ def test_python_node_reader_is_linear_in_a_chain_of_calls(write_tree) -> None:
 def test_key_lines_say_where_each_key_is_written() -> None:
     text = ("# a controller\n/arm:\n  ros__parameters:\n    gain: 2.0\n"
             "    pid: {p: 1, i: 2}\n    'quoted': x\n    list: [1, 2]\n")
-    assert safe_yaml.key_lines(text) == {"/arm": {"ros__parameters": {
+    document, lines = safe_yaml.load_with_lines(text)  # one read gives both
+    assert lines == {"/arm": {"ros__parameters": {
         "gain": 4, "pid": {"p": 5, "i": 5}, "quoted": 6, "list": 7}}}
-    assert safe_yaml.key_lines("a: [") is None  # does not read: no lines
-    assert safe_yaml.key_lines("- 1\n- 2\n") is None  # no mapping
+    assert document["/arm"]["ros__parameters"]["pid"] == {"p": 1, "i": 2}
+    with pytest.raises(yaml.YAMLError):  # does not read: said as load says it
+        safe_yaml.load_with_lines("a: [")
+    assert safe_yaml.load_with_lines("- 1\n- 2\n") == ([1, 2], None)  # no mapping
+    # a key given twice: the keys of both mappings, as rcl merges them
+    assert safe_yaml.load_with_lines("/**:\n  a: 1\n/**:\n  b: 2\n")[1] == {
+        "/**": {"a": 2, "b": 4}}

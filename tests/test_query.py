@@ -192,3 +192,15 @@ def test_similar_to_finds_what_comparing_every_pair_finds():
         found = similar_to(lambda _n: None, word, words)
         expected = [w for w in words if edit_distance(lambda _n: None, word, w) <= 2]
         assert found == expected, word
+
+
+def test_unknown_users_takes_readers_alone_as_its_side(model):
+    # 'setters' was taken and meant no side at all (a read with '?' may stand for a
+    # declaration, which sets): no rule used it, and it is refused as any other word
+    scope = query.model_scope(model)
+    text = "for c in configs, t in c.topics return len(unknown_users(c, t{side}))"
+    assert query.search(text.format(side=", 'readers'"), scope) == query.search(
+        text.format(side=""), scope) == [2, 2, 2]
+    for side in ("'setters'", "'writers'"):
+        with pytest.raises(query.QueryTypeError, match="can only be 'readers'"):
+            query.search(text.format(side=", " + side), scope)

@@ -57,6 +57,10 @@ class Condition:
     # the argument is one of them), which ``contradict`` reads like an ``$(eval)``'s
     compares: tuple[str, tuple[str, ...], bool] | None = field(
         default=None, metadata={"optional": True})
+    # a ROS 2 Python launch file's test not known statically: which runs of the file's
+    # tests it joins (counted per file: one ``if`` in a loop runs once per item, and its
+    # two runs may come out otherwise though written alike); not compared
+    runs: tuple[int, ...] = field(default=(), compare=False, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"
@@ -166,12 +170,13 @@ def after_exit(conditions: tuple[Condition, ...], target: Location) -> bool:
 
 
 def same_conditions(first: tuple[Condition, ...], second: tuple[Condition, ...]) -> bool:
-    """Whether two conjunctions are the same conditions (written alike): the one holds
-    exactly when the other does (a text not known is no condition's but its own)."""
+    """Whether two conjunctions are the same conditions (written alike, and a Python
+    launch test's made by one run of it): the one holds exactly when the other does (a
+    text not known is no condition's but its own)."""
     if any(c.text.strip() == UNKNOWN_MARK for c in (*first, *second)):
         return False
-    return {(c.text.strip(), c.statement) for c in first} == {
-        (c.text.strip(), c.statement) for c in second}
+    return {(c.text.strip(), c.statement, c.runs) for c in first} == {
+        (c.text.strip(), c.statement, c.runs) for c in second}
 
 
 def undecided(conditions: tuple[Condition, ...]) -> tuple[Condition, ...]:

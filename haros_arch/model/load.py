@@ -71,7 +71,9 @@ def conditions(data: Any) -> tuple[Condition, ...]:
                                    bool(item.get("program_args", False)),
                                    left if isinstance(left := item.get("args_left"), str)
                                    else None, _held(item.get("parameters")),
-                                   _compares(item.get("compares"))))
+                                   _compares(item.get("compares")),
+                                   tuple(n for n in item.get("runs") or ()
+                                         if isinstance(n, int))))
     return tuple(found)
 
 

@@ -854,7 +854,7 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
 def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
                 config: Configuration) -> tuple[Any, Location, Any] | None:
     """A spawner's parameter file, read with the safe loader from the workspace only,
-    with where it is and the line of each of its keys (``safe_yaml.key_lines``: a
+    with where it is and the line of each of its keys (``safe_yaml.load_with_lines``: a
     finding about a controller's parameter points at its key)."""
     if UNKNOWN_MARK in path or not os.path.isabs(path):
         return None
@@ -868,14 +868,14 @@ def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
     config.diagnostics.extend(problems)
     if text is None:
         return None
-    try:
-        document = safe_yaml.load(text)  # bounded: aliases, nesting, flow brackets
+    try:  # bounded: aliases, nesting, flow brackets; one read gives both
+        document, lines = safe_yaml.load_with_lines(text)
     except yaml.YAMLError:
-        document = None
+        document = lines = None
     if document is None or not _bounded(document):
         config.diagnostics.append(diag.make("PLUGIN_PARAM_FILE", decl.location, path=path))
         return None
-    return document, where, safe_yaml.key_lines(text)
+    return document, where, lines
 
 
 def _bounded(document: Any, limit: int = MAX_PARAM_VALUES) -> bool:

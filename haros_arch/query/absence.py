@@ -223,10 +223,10 @@ def unknown_users(charge: Charge, config: Any, resource: Any, side: Any = None
     """``_unknown_users`` of a resource or link, or of each of a list of them (what
     could use any of them unseen). ``side``, for parameters: ``'readers'`` when the
     missing side is a reader (a node that only writes a name with ``?`` reads nothing:
-    duckietown's DTROS writes ``<node>/?``), ``'setters'`` when it is a setter (a read
-    with ``?`` may stand for a declaration, which sets); None: either."""
-    if side not in (None, "readers", "setters"):
-        raise QueryTypeError("unknown_users()'s third argument is 'readers' or 'setters'")
+    duckietown's DTROS writes ``<node>/?``); None: either, as for a missing setter (a
+    read with ``?`` may stand for a declaration, which sets)."""
+    if side not in (None, "readers"):
+        raise QueryTypeError("unknown_users()'s third argument can only be 'readers'")
     if isinstance(resource, list):
         found: list[NodeInstance | Parameter | LaunchItem] = []
         for each in resource:

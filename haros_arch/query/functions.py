@@ -416,10 +416,11 @@ def _existing(value: Any) -> list[Any]:
 
 def _same_condition(item: Any, condition: Condition) -> tuple[Any, ...]:
     """What makes two conditions one: a launch condition's text (it reads launch
-    arguments, taken as one scope's, as ``same_conditions`` does); a source condition's
+    arguments, taken as one scope's, as ``same_conditions`` does, and a Python launch
+    test's run of it); a source condition's
     place in the code and its node instance (the values it reads are that instance's)."""
     if condition.kind == "launch":
-        return ("launch", condition.text.strip(), condition.statement)
+        return ("launch", condition.text.strip(), condition.statement, condition.runs)
     instance = item.node if isinstance(item, Link) else item
     return (condition.kind, id(instance), condition.text.strip(), condition.statement,
             condition.location)

@@ -255,9 +255,11 @@ def conditions_of_text(text: str) -> tuple[Condition, ...]:
 
 
 def _conditions(data: Any) -> tuple[Condition, ...]:
+    """JSON's lists back as the tuples ``Condition`` holds (a list of runs would differ
+    from the default ``()`` and be written in the model)."""
     return tuple(Condition(**{**c, "location": Location(**c["location"]), "parameters": tuple(
         (str(local), str(param)) for local, param in c["parameters"]) if c.get(
-        "parameters") else None}) for c in data)
+        "parameters") else None, "runs": tuple(c.get("runs") or ())}) for c in data)
 
 
 def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:

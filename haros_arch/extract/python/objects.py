@@ -198,6 +198,31 @@ class Alternatives:
     options: tuple[tuple[object, tuple[Condition, ...]], ...]
 
 
+MAX_ALTERNATIVES = 4  # values a local (or a helper's return) may hold per path
+
+
+def options_under(value: object, under: Condition
+                  ) -> tuple[tuple[object, tuple[Condition, ...]], ...]:
+    """``value`` on a path under ``under``: each of its own options when it has several."""
+    if isinstance(value, Alternatives):
+        return tuple((each, (under, *conditions)) for each, conditions in value.options)
+    return ((value, (under,)),)
+
+
+def same_value(first: object, second: object) -> bool:
+    """Whether two values of two paths are alike (a comparison that fails: not)."""
+    try:
+        return bool(first == second)
+    except Exception:
+        return False
+
+
+def alternative(value: object) -> bool:
+    """A value a call's argument can take per path: a message type or other imported
+    name, a string, a number."""
+    return isinstance(value, Ref | Value | int | float)
+
+
 @dataclass(frozen=True)
 class ModuleRef:
     module: Module

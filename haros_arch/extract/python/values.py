@@ -22,13 +22,17 @@ from typing import Any, NoReturn
 from ...evaluate import budget
 from ...evaluate import operations as ops
 from ...evaluate.python import BUILTINS, Walker, evaluate_counted
+from ...model.conditions import Condition
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
+from .conditions import condition, source_text
 from .instances import Instances
 from .modules import ClassInfo, FunctionInfo, Loader, submodule
 from .objects import (
+    MAX_ALTERNATIVES,
+    Alternatives,
     ArgParser,
     BoundMethod,
     Frame,
@@ -47,6 +51,8 @@ from .objects import (
     Ref,
     Seq,
     SuperInit,
+    alternative,
+    same_value,
     text_of,
 )
 from .qos import QoSProfiles
@@ -118,10 +124,15 @@ class Evaluator(Instances, QoSProfiles, Walker):
         super().__init__(loader)
         self.steps = 0
         self.limited: str | None = None
+        # a helper call's value on the path at hand, by the call's node: one of the
+        # values it returns on several paths (``PyVisitor._call``: one call per value)
+        self.fixed: dict[int, object] = {}
 
     def eval(self, expr: ast.AST, frame: Frame | None = None) -> object:
         if self.limited is not None:
             return Unknown(self.limited, "limit")
+        if self.fixed and id(expr) in self.fixed:
+            return self.fixed[id(expr)]
         if self.depth > MAX_EVAL_DEPTH:
             return Unknown("too deep")
         self.depth += 1
@@ -428,19 +439,69 @@ class Evaluator(Instances, QoSProfiles, Walker):
         return Unknown(name)
 
     def returned(self, func: FunctionInfo | BoundMethod, expr: ast.Call, frame: Frame) -> object:
-        """What a helper returns, when its body is straight-line code ending in return."""
+        """What a helper returns, read from its body without running it (``paths``): the
+        value when every path gives one alike; names, strings or numbers that differ as
+        ``Alternatives``, each under its path's conditions (a call given them is one call
+        per value, as for a local an ``if`` sets); unknown when a path does more than
+        assignments and ``if`` (a loop, a ``try``) or the paths are too many."""
         if frame.depth >= MAX_CALL_DEPTH:
             return Unknown("call depth")
         inner = self.call_frame(func, expr, frame)
         info = func.function if isinstance(func, BoundMethod) else func
-        for statement in info.node.body:
+        found: list[tuple[object, tuple[Condition, ...]]] = []
+        if not self.paths(list(info.node.body), inner, (), found):
+            return Unknown(f"{info.qualname}()")
+        if all(same_value(value, found[0][0]) for value, _ in found):
+            return found[0][0]
+        options = tuple((each, (*under, *more)) for value, under in found
+                        for each, more in (value.options if isinstance(value, Alternatives)
+                                           else ((value, ()),)))
+        if len(options) <= MAX_ALTERNATIVES and all(alternative(v) for v, _ in options):
+            return Alternatives(options)
+        return Unknown(f"{info.qualname}() (one of several values)")
+
+    def paths(self, statements: list[ast.stmt], frame: Frame,
+              under: tuple[Condition, ...],
+              found: list[tuple[object, tuple[Condition, ...]]]) -> bool:
+        """Each path through ``statements`` to its ``return`` (or its end: None), with
+        the conditions it runs under, added to ``found``: assignments and bare
+        expressions in order; an ``if`` whose test the evaluator decides by its path,
+        one it cannot by both, each from the locals before it, under its condition as
+        the reader's own ``if`` puts it. False when a path does what is not followed or
+        the paths are more than ``MAX_ALTERNATIVES``."""
+        for index, statement in enumerate(statements):
             if isinstance(statement, ast.Return):
-                return self.eval(statement.value, inner) if statement.value else None
+                found.append((self.eval(statement.value, frame) if statement.value
+                              else None, under))
+                return len(found) <= MAX_ALTERNATIVES
             if isinstance(statement, ast.Assign | ast.AnnAssign):
-                self.assign(statement, inner)
+                self.assign(statement, frame)
+            elif isinstance(statement, ast.If):
+                rest = statements[index + 1:]
+                taken = _truth(self.eval(statement.test, frame))
+                if taken is not None:
+                    return self.paths([*(statement.body if taken else statement.orelse),
+                                       *rest], frame, under, found)
+                text = source_text(frame.module.lines, statement.test)
+                where = self.loader.location(frame.module.path, statement.lineno,
+                                             statement.col_offset + 1)
+                return all(self.paths([*branch, *rest], replace(
+                    frame, locals=dict(frame.locals)), (*under, made), found)
+                    for branch, made in ((statement.body, condition("if", text, where)),
+                                         (statement.orelse, condition("else", text, where))))
             elif not isinstance(statement, ast.Expr | ast.Pass):
-                break
-        return Unknown(f"{info.qualname}()")
+                return False
+        found.append((None, under))
+        return len(found) <= MAX_ALTERNATIVES
+
+
+def _truth(value: object) -> bool | None:
+    """A test's truth where the evaluator knows its value, else None."""
+    if value is None or isinstance(value, bool | int | float):
+        return bool(value)
+    if isinstance(value, Value) and value.literal is not None:
+        return bool(value.literal)
+    return None
 
 
 def _path_join(parts: list[Value]) -> Value:

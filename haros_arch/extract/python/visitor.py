@@ -32,6 +32,7 @@ from .msg_types import ros_type
 from .objects import (
     ELEMENT_OF,
     FIELD_OF,
+    MAX_ALTERNATIVES,
     PROGRAM_ARGUMENT,
     PROGRAM_OPTION,
     Alternatives,
@@ -47,8 +48,11 @@ from .objects import (
     Ref,
     Seq,
     SuperInit,
+    alternative,
+    options_under,
     param_type,
     plain_value,
+    same_value,
     text_of,
 )
 from .qos import as_profile, with_policy
@@ -299,9 +303,9 @@ class Walker:
             return  # the evaluator decided the test
         text = self._text(frame, choice.test)
         where = self._where(frame, choice)
-        options = (*_options(ev.eval(choice.body, frame), condition("if", text, where)),
-                   *_options(ev.eval(choice.orelse, frame), condition("else", text, where)))
-        if len(options) <= MAX_ALTERNATIVES and all(_alternative(v) for v, _ in options):
+        options = (*options_under(ev.eval(choice.body, frame), condition("if", text, where)),
+                   *options_under(ev.eval(choice.orelse, frame), condition("else", text, where)))
+        if len(options) <= MAX_ALTERNATIVES and all(alternative(v) for v, _ in options):
             frame.locals[name] = Alternatives(options)
 
     def _qos_assigned(self, target: ast.expr, frame: Frame, conds: Conditions) -> None:
@@ -641,6 +645,20 @@ class Walker:
                     finally:
                         frame.locals[part.id] = held
                     return
+                if isinstance(part, ast.Call) and id(part) not in self.evaluator.fixed \
+                        and isinstance(self.evaluator.callee(part.func, frame),
+                                       FunctionInfo | BoundMethod):
+                    # a helper that returns a value per path (``Evaluator.returned``),
+                    # called in the argument: one call per value, as for a local
+                    given = self.evaluator.eval(part, frame)
+                    if isinstance(given, Alternatives):
+                        try:
+                            for value, under in given.options:
+                                self.evaluator.fixed[id(part)] = value
+                                self._call(call, frame, (*conds, *under))
+                        finally:
+                            self.evaluator.fixed.pop(id(part), None)
+                        return
         ev = self.evaluator
         target = ev.callee(call.func, frame)
         version = frame.module.version
@@ -1125,7 +1143,6 @@ def _outside_comprehensions(expr: ast.AST, calls: list[ast.Call],
         _outside_comprehensions(child, calls, comprehensions)
 
 
-MAX_ALTERNATIVES = 4  # values a local may hold after the ifs that set it
 _UNSET = object()
 
 
@@ -1172,12 +1189,12 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
     joined: dict[str, object] = {}
     for name in dict.fromkeys([*taken, *other]):
         first, second = taken.get(name, _UNSET), other.get(name, _UNSET)
-        if first is second or _same(first, second):
+        if first is second or same_value(first, second):
             joined[name] = first
             continue
-        options = (*_options(first, yes), *_options(second, no))
+        options = (*options_under(first, yes), *options_under(second, no))
         if len(options) <= MAX_ALTERNATIVES and all(
-                _alternative(value) for value, _ in options):
+                alternative(value) for value, _ in options):
             joined[name] = Alternatives(options)
             continue
         if isinstance(first, QoS) and isinstance(second, QoS):
@@ -1190,25 +1207,6 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
         if kept is not _UNSET:
             joined[name] = kept
     return joined
-
-
-def _same(first: object, second: object) -> bool:
-    try:
-        return bool(first == second)
-    except Exception:
-        return False
-
-
-def _options(value: object, under: Condition) -> tuple[tuple[object, tuple[Condition, ...]], ...]:
-    if isinstance(value, Alternatives):
-        return tuple((each, (under, *conditions)) for each, conditions in value.options)
-    return ((value, (under,)),)
-
-
-def _alternative(value: object) -> bool:
-    """A value a call's argument can take per path: a message type or other imported
-    name, a string, a number."""
-    return isinstance(value, Ref | Value | int | float)
 
 
 # the packages whose classes the API tables model (by their first module name)

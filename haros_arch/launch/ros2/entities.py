@@ -152,6 +152,8 @@ class Cond:
     negate: bool = False
     source: str = ""  # as written, for the condition's text
     equals: Text | None = None  # LaunchConfiguration(Not)Equals: compare with this
+    # a Python test of the launch code: which runs of its tests (``python_values.Guard``)
+    runs: tuple[int, ...] = field(default=(), compare=False)
 
 
 # -- actions -------------------------------------------------------------------------

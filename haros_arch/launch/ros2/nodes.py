@@ -9,6 +9,7 @@ parameter whose value cannot be known is still declared, with value ``None``.
 from __future__ import annotations
 
 import shlex
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from ...model.location import Location
@@ -119,12 +120,15 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
     unseen: list[Location] = []
 
     def read_file(entry: e.ParamFile, location: Location) -> None:
-        document = runner.param_file(entry, scope, location)
+        placed: list[tuple[str, Any]] = []
+        document = runner.param_file(entry, scope, location, placed=placed)
         if document is None:
             unseen.append(location)
             return
-        if runner.model.nodes[-1].composable:
+        composable = runner.model.nodes[-1].composable
+        if composable:
             document = naming.as_component_file(document)
+        keys = _key_places(runner, placed, composable, node)
         runner.model.nodes[-1].param_files.append((document, location))
         outside = naming.values_outside(document)
         path = runner.value(entry.path, scope, location) if not (
@@ -146,7 +150,8 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         if UNKNOWN_MARK not in node:
             every = _for_every_node(document, node) if shared else set()
             for name, leaf in naming.params_for_node(document, node):
-                put(name, leaf, location, shared if name in every else None)
+                put(name, leaf, keys.get(("", name), location),
+                    shared if name in every else None)
             return
         if naming.names_a_node(document):
             kept = _as_given(runner, entry, scope, location)
@@ -156,10 +161,11 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                 decl.params_files_given.append(kept)
         for pattern, params in naming.node_patterns(document):
             for name, leaf in naming.flatten(params):
+                at = keys.get((pattern, name), location)
                 if pattern == "/**":
-                    put(name, leaf, location, shared)
+                    put(name, leaf, at, shared)
                 else:
-                    pending.append((pattern, name, leaf, location))
+                    pending.append((pattern, name, leaf, at))
 
     before = runner.param_entries
     runner.param_entries += len(scope.params) + len(entries)
@@ -201,6 +207,28 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         runner.model.params.append(param)
     if unseen:
         _unseen(runner, node, scope, unseen[0])
+
+
+def _key_places(runner: Runner, placed: list[tuple[str, Any]], composable: bool,
+                node: str) -> dict[tuple[str, str], Location]:
+    """Where each parameter of a file read for ``node`` is written, at its key's line
+    (``Runner.param_file``'s ``placed``): by (section pattern, name), and by ("", name)
+    for what the file gives the node itself (its last section that matches, as
+    ``naming.params_for_node`` takes the values)."""
+    if not placed or not isinstance(placed[-1][1], dict):
+        return {}
+    file, lines = placed[-1]
+    if composable:
+        lines = naming.as_component_file(lines)
+    at = runner.workspace.location(file, 1, 0)
+    found = {(pattern, name): replace(at, line=line)
+             for pattern, params in naming.node_patterns(lines)
+             for name, line in naming.flatten(params) if isinstance(line, int)}
+    if UNKNOWN_MARK not in node:
+        found.update((("", name), replace(at, line=line))
+                     for name, line in naming.params_for_node(lines, node)
+                     if isinstance(line, int))
+    return found
 
 
 def sections_for_no_node(runner: Runner) -> None:

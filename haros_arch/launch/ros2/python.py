@@ -52,6 +52,7 @@ from .python_values import (
     EnumMember,
     FieldFactory,
     Func,
+    Guard,
     Instance,
     LaunchDescription,
     Lazy,
@@ -90,7 +91,8 @@ class Interpreter(Expressions):
         self.limits = LIMITS
         self.depth = 0
         self.running: list[ast.AST] = []  # the functions being run, outermost first
-        self.guards: list[str] = []  # texts of unknown Python `if` tests we are under
+        self.guards: list[Guard] = []  # the unknown Python `if` tests we are under
+        self.guard_runs = 0
         self.decided: dict[int, ast.AST] = {}
         # the enclosing ``try`` statements: the exception classes their handlers name
         # (None: one not known) and how many guards there were when each began
@@ -613,7 +615,15 @@ class Interpreter(Expressions):
         elif isinstance(target, ast.Subscript):
             container = self.eval(target.value, env)
             key = self.eval(target.slice, env)
-            if isinstance(container, dict) and not isinstance(key, (Unknown, list, dict)):
+            if isinstance(container, dict) and not isinstance(key, (list, dict)):
+                if isinstance(key, Unknown):
+                    # kept under its unknown key (unknown is not empty): a loop over the
+                    # dict runs for it, a lookup of a key not among the known ones is not
+                    # known (``open_keys``); vrx_gz's ``payload[sensor.name()] = ...``
+                    self.unsupported(target, f"{_source(target)} = ...: an item under a "
+                                             f"key not known statically; "
+                                             f"{_source(target.value)} holds more than "
+                                             "its known items")
                 container[key] = value
                 self.sized(container)
             elif isinstance(container, list) and isinstance(key, int) and (
@@ -701,7 +711,7 @@ class Interpreter(Expressions):
                 if not self.returns:
                     raise returned
                 self.returns[-1].append(returned.value)
-                self.guards.append(text if taken is None else f"not ({text})")
+                self.guards.append(self.guard(text if taken is None else f"not ({text})"))
 
     def join(self, env: dict[str, Any], other: dict[str, Any]) -> None:
         """The names after an ``if`` whose test is not known, both branches having run
@@ -724,7 +734,7 @@ class Interpreter(Expressions):
                ) -> _Return | None:
         """One branch of an ``if`` whose test is not known, under that test; its
         ``return``, if it returns."""
-        self.guards.append(guard)
+        self.guards.append(self.guard(guard))
         try:
             self.block(body, env)
         except _Return as ret:

@@ -31,6 +31,7 @@ from .python_values import (
     Context,
     EnumMember,
     Func,
+    Guard,
     Instance,
     Lazy,
     Method,
@@ -46,6 +47,7 @@ from .python_values import (
     is_stringy,
     launch_object,
     object_text,
+    open_keys,
     printable,
     to_text,
 )
@@ -64,12 +66,9 @@ _NOT_KNOWN = {"not": "not of an unknown value", "unary": "unary operation", "sli
 def _fails_for_sure(value: Any, key: Any) -> bool:
     """Whether Python's own error on ``value[key]`` is the program's: a container
     known, a key known, and (a dict) no key of it unknown that could be that one."""
-    def known(item: Any) -> bool:
-        return not _opaque(item) and (not isinstance(item, tuple) or all(map(known, item)))
-
-    if not isinstance(value, (dict, list, tuple, str)) or not known(_hashable(key)):
+    if not isinstance(value, (dict, list, tuple, str)) or open_keys([_hashable(key)]):
         return False
-    return not isinstance(value, dict) or all(known(k) for k in value)
+    return not isinstance(value, dict) or not open_keys(value)
 
 
 class Expressions(Walker):
@@ -79,14 +78,21 @@ class Expressions(Walker):
     builtins: frozenset[str]
     methods: dict[str, Any]
     environment: Mapping[str, str]
-    guards: list[str]
+    guards: list[Guard]
     # the expressions whose value Python's handling of a launch object decided: ``not``
     # of one, one compared with ``==`` (``compare_values``); by id, the node kept alive
     # so that no later node takes its id
     decided: dict[int, ast.AST]
 
+    guard_runs: int  # the runs of Python tests not known statically so far (``guard``)
+
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
+
+    def guard(self, text: str) -> Guard:
+        """A run of a test not known statically, to push on ``guards``."""
+        self.guard_runs += 1
+        return Guard(text, self.guard_runs)
 
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         raise NotImplementedError
@@ -304,6 +310,10 @@ class Expressions(Walker):
             if found is None:
                 return Unknown(f"comparison {_source(node)}")
             return found == isinstance(op, ast.In)
+        if isinstance(op, (ast.In, ast.NotIn)) and isinstance(right, dict) and (
+                _hashable(left) not in right and open_keys(right)):
+            # a key it does not hold among the known ones may be the unknown one
+            return Unknown(f"comparison {_source(node)}")
         if isinstance(op, (ast.Eq, ast.NotEq, ast.Is, ast.IsNot)) and (
                 launch_object(left) or launch_object(right)):
             if isinstance(op, (ast.Eq, ast.NotEq)) and _taken_as_value(left, right):
@@ -434,7 +444,8 @@ class Expressions(Walker):
         own keeps it alone (no group to put it in: it may then be taken when the test
         would not hold, never left out)."""
         text = " and ".join(self.guards)
-        cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text)
+        cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text,
+                      runs=tuple(guard.run for guard in self.guards))
         if action.condition is None:
             action.condition = cond
             return action
@@ -486,7 +497,7 @@ class Expressions(Walker):
             if items is None:
                 guard = f"for {_source(gen.target)} in {_source(gen.iter)}"
                 items = [Unknown(f"an item of {_source(gen.iter)}")]
-                self.guards.append(guard)
+                self.guards.append(self.guard(guard))
             try:
                 for item in items:
                     self.step()
@@ -498,7 +509,7 @@ class Expressions(Walker):
                     if unknown:  # kept, and said: a list of plain values may be too long
                         self.unsupported(unknown[0], "comprehension filter not known "
                                                      "statically; the item is kept")
-                    self.guards.extend(_source(c) for c in unknown)
+                    self.guards.extend(self.guard(_source(c)) for c in unknown)
                     try:
                         loop(index + 1, scope)
                     finally:

@@ -34,9 +34,11 @@ from .python_values import (
     ReadOnlyFile,
     Ref,
     XacroDocument,
+    _hashable,
     _source,
     concat,
     launch_object,
+    open_keys,
     to_text,
 )
 
@@ -82,8 +84,8 @@ def builtin(function: Callable[..., Any], *types: type,
 
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if k or not all(accepts(v) for v in a) or any(
-                isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple))
-                for x in v):
+                isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple, dict))
+                for x in v):  # an unknown item (a dict's: under an unknown key)
             return Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
@@ -398,6 +400,8 @@ def m_dict(name: str) -> Method:
         if name == "values":
             return list(owner.values())
         if name == "get" and a:
+            if _hashable(a[0]) not in owner and open_keys(owner):
+                return Unknown(f".get({a[0]!r}) of a dict with a key not known statically")
             return owner.get(a[0], a[1] if len(a) > 1 else None)
         if name == "update" and a and isinstance(a[0], dict):
             owner.update(a[0])

@@ -8,7 +8,7 @@
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from typing import Any
@@ -60,6 +60,21 @@ class Raised(Exception):
 
     def __init__(self, name: str) -> None:
         self.name = name
+
+
+class Guard(str):
+    """The text of a Python test not known statically that the code at hand runs under,
+    and which run of a test of the file this is (``run``, counted by ``Expressions.guard``):
+    the same test run again (a loop's next item, another call of its function) may come
+    out otherwise, so what two runs make is not under one condition, though its text is
+    the same."""
+
+    run: int
+
+    def __new__(cls, text: str, run: int) -> Guard:
+        made = super().__new__(cls, text)
+        made.run = run
+        return made
 
 
 @dataclass(frozen=True)
@@ -238,6 +253,20 @@ def _hashable(value: Any) -> Any:
     except TypeError:  # a value of the interpreter's own (a method not called, ...)
         return Unknown("dict key not known statically")
     return value
+
+
+def open_keys(keys: Iterable[Any]) -> bool:
+    """Whether one of ``keys`` (a dict's) is not known statically, wholly or in part (an
+    item set under ``payload[sensor.name()]`` or ``payload['thrust_' + name]``): a key
+    not among a dict's known ones may be that one, so a lookup of it is not known."""
+    stack = list(keys)
+    while stack:
+        key = stack.pop()
+        if isinstance(key, tuple):
+            stack.extend(key)
+        elif _opaque(key):
+            return True
+    return False
 
 
 def _opaque(value: Any) -> bool:

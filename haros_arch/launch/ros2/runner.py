@@ -144,7 +144,7 @@ class Runner:
         if truth is None:
             statement = "unless" if cond.negate else "if"
             made = Condition(cond.source or "?", "launch", statement, location,
-                             compares=self.compared(cond, scope, location))
+                             compares=self.compared(cond, scope, location), runs=cond.runs)
             return replace(scope, conditions=(*scope.conditions, made))
         return scope if truth else None
 
@@ -611,12 +611,18 @@ class Runner:
 
     # -- parameter files -------------------------------------------------------------
     def param_file(self, entry: e.ParamFile, scope: Scope, where: Location,
-                   depth: int = 0) -> Any:
-        """The parsed document of a parameter file, rewritten as asked; None if unknown."""
+                   depth: int = 0, placed: list[tuple[str, Any]] | None = None) -> Any:
+        """The parsed document of a parameter file, rewritten as asked; None if unknown.
+        ``placed``, if given, gets the file read and where each key of the document is
+        written (``safe_yaml.load_with_lines``, its keys renamed and put under a root
+        key as the document's are)."""
         if len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef) and depth < 8:
-            document = self.param_file(entry.path[0].file, scope, where, depth + 1)
+            document = self.param_file(entry.path[0].file, scope, where, depth + 1, placed)
             if document is None:
                 return None
+            if placed:
+                placed[-1] = (placed[-1][0], self.rewrite(placed[-1][1], entry, scope,
+                                                          where, keys_only=True))
             return self.substituted(self.rewrite(document, entry, scope, where), entry,
                                     scope, where)
         path = self.value(entry.path, scope, where)
@@ -629,7 +635,7 @@ class Runner:
             inner = e.ParamFile((e.FileRef(path.file),), entry.root_key, entry.rewrites,
                                 entry.location, entry.replacements, entry.condition,
                                 entry.allow_substs, entry.key_rewrites, entry.value_rewrites)
-            return self.param_file(inner, scope, where, depth + 1)
+            return self.param_file(inner, scope, where, depth + 1, placed)
         if path is None or path.literal is None:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"parameter file {path} is not known statically")
@@ -665,7 +671,11 @@ class Runner:
         if text is None:
             return None
         try:
-            document = unknown_parts(naming.load_param_file(text))
+            if placed is None:
+                document = unknown_parts(naming.load_param_file(text))
+            else:
+                loaded, lines = safe_yaml.load_with_lines(text, naming.ParamFileLoader)
+                document = unknown_parts(loaded)
         except yaml.YAMLError as err:
             mark = getattr(err, "problem_mark", None)
             self.report("LAUNCH_YAML_SYNTAX", self.workspace.location(
@@ -675,6 +685,9 @@ class Runner:
         rel = self.workspace.relpath(file)
         if rel not in self.model.files:
             self.model.files.append(rel)
+        if placed is not None:
+            placed.append((file, self.rewrite(lines, entry, scope, where, keys_only=True)
+                           if rewritten else lines))
         if not rewritten:
             return document
         return self.substituted(self.rewrite(document, entry, scope, where), entry, scope,
@@ -749,9 +762,10 @@ class Runner:
         return out
 
     def rewrite(self, document: Any, entry: e.ParamFile, scope: Scope,
-                where: Location) -> Any:
-        """nav2_common's ``RewrittenYaml``: replace keys' values, wrap in ``root_key``."""
-        if entry.rewrites and isinstance(document, dict):
+                where: Location, keys_only: bool = False) -> Any:
+        """nav2_common's ``RewrittenYaml``: replace keys' values, wrap in ``root_key``;
+        ``keys_only``: rename keys and wrap alone (a document of key lines)."""
+        if entry.rewrites and isinstance(document, dict) and not keys_only:
             rewrites: dict[str, Any] = {}
             for key, val in entry.rewrites:
                 name = self.value(key, scope, where)
@@ -769,7 +783,7 @@ class Runner:
         if keys:
             document = _rename_keys(document, {old: new for old, new in keys.items()
                                                if new is not None}, 0)
-        values = self.known_pairs(entry.value_rewrites, scope, where)
+        values = {} if keys_only else self.known_pairs(entry.value_rewrites, scope, where)
         if values:
             document = _rewrite_values(document, {
                 old: None if new is None else naming.yaml_value(new)
