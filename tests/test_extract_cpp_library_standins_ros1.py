@@ -293,3 +293,99 @@ def test_time_wait_for_valid_with_a_timeout_and_shared_pointer_counts(write_tree
     errors = [d.message for d in result.diagnostics
               if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING")]
     assert errors == []
+
+
+TOPICS = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+class Manager {
+public:
+  Manager() {
+    ros::NodeHandle nh("msf_core");
+    pub_ = nh.advertise<std_msgs::String>("state_out", 10);
+    ros::V_string topics;
+    ros::this_node::getSubscribedTopics(topics);
+    std::string text = ros::this_node::getName() + ":\\n";
+    for (unsigned int i = 0; i < topics.size(); i++) text += topics.at(i);
+    ros::this_node::getAdvertisedTopics(topics);
+    ROS_INFO_STREAM(text);
+  }
+  ros::Publisher pub_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "manager");
+  Manager manager;
+  ros::spin();
+}
+"""
+
+
+def test_the_node_s_own_topic_lists_make_no_error(write_tree) -> None:
+    """ethzasl_msf's sensor manager prints ``ros::this_node::getSubscribedTopics`` and
+    ``getAdvertisedTopics`` (roscpp's this_node.h) in the constructor that advertises its
+    state: unknown to the stand-ins, each was read as a declaration of ``topics`` again,
+    an error there, and every msf node was partial."""
+    root = write_tree({
+        "manager/package.xml": package_xml("manager", "catkin"),
+        "manager/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(manager)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)\n"
+            "catkin_package()\nadd_executable(manager src/manager.cpp)\n"),
+        "manager/src/manager.cpp": TOPICS})
+    result = extract_cpp([str(root / "manager" / "src" / "manager.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "msf_core/state_out")]
+    errors = [d.message for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert errors == []
+
+
+QT_NODE = """#include <QThread>
+#include <QStringListModel>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+
+class QNode : public QThread {
+public:
+  bool init() {
+    ros::NodeHandle nh;
+    runstop_ = nh.advertise<std_msgs::String>("runstop", 1);
+    QStringList header;
+    header << "Sender" << "Motion Enabled" << "Time since last message";
+    sub_ = nh.subscribe("chassisState", 1, &QNode::cb, this);
+    return true;
+  }
+  void cb(const std_msgs::String::ConstPtr& msg) {}
+  ros::Publisher runstop_;
+  ros::Subscriber sub_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ocs");
+  QNode node;
+  node.init();
+  ros::spin();
+}
+"""
+
+
+def test_a_qt_string_list_built_with_the_stream_operator_makes_no_error(write_tree) -> None:
+    """AutoRally's operator control station fills a table's header with ``QStringList
+    header; header << "Sender" << ...`` in the ``init`` that subscribes to the chassis
+    (qnode.cpp:164): without ``QList::operator<<`` in the Qt stand-in, an error in a
+    function that calls the ROS API, and the node was partial."""
+    root = write_tree({
+        "ocs/package.xml": package_xml("ocs", "catkin"),
+        "ocs/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(ocs)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)\n"
+            "catkin_package()\nadd_executable(ocs src/qnode.cpp)\n"),
+        "ocs/src/qnode.cpp": QT_NODE})
+    result = extract_cpp([str(root / "ocs" / "src" / "qnode.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert {(c.kind, c.name) for c in result.calls} == {("publish", "runstop"),
+                                                        ("subscribe", "chassisState")}
+    errors = [d.message for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert errors == []

@@ -53,6 +53,29 @@ def test_a_read_the_code_converts_has_no_type_of_its_own(tmp_path):
                    ("~rate", None, False, None)]
 
 
+def test_a_read_the_code_uses_as_a_dict_is_read_as_a_dict(tmp_path):
+    """AutoRally's autorally_controller.py: ``self.commandPriorities =
+    rospy.get_param("~chassisCommandProirities", [])``, then ``sorted(
+    self.commandPriorities.items(), ...)``: the launch file loads a dict there, and the
+    list default made parameter-type-mismatch say the node reads a list (survey Z30). A
+    member used as no dict keeps its default's type."""
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import operator\nimport rospy\n"
+        "class Controller(object):\n"
+        "    def __init__(self):\n"
+        "        self.priorities = rospy.get_param('~priorities', [])\n"
+        "        self.priorities = sorted(self.priorities.items(),"
+        " key=operator.itemgetter(1))\n"
+        "        self.joints = rospy.get_param('~joints', [])\n"
+        "        self.count = len(self.joints)\n"
+        "rospy.init_node('controller')\n"
+        "Controller()\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.name, c.type, c.has_default, c.default) for c in result.calls]
+    assert got == [("~priorities", "dict", True, []), ("~joints", "list", True, [])]
+
+
 def test_an_rclpy_managed_node_serves_its_state_machine(tmp_path):
     """ros2/demos' lifecycle_py talker: a subclass of ``rclpy.lifecycle.Node`` publishes
     its transitions and serves its state machine, as rclcpp_lifecycle's node does; a

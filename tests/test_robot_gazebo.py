@@ -426,6 +426,35 @@ def test_ros1_spawned_controllers_are_loaded_by_the_gazebo_ros_control_of_the_de
     assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
 
 
+def test_a_ros1_spawner_given_a_yaml_file_loads_it_and_spawns_its_controllers(tmp_path):
+    # controller_manager's ROS 1 spawner takes a file's path among its controllers: it
+    # loads the file into its namespace and spawns each of its top-level keys (AutoRally's
+    # simulation). The path was taken for a controller's name: PLUGIN_CLASS_UNKNOWN, and
+    # joint_state_controller, its publisher and its parameters were not in the graph
+    root = tmp_path / "ros1"
+    shutil.copytree(ROS1, root)
+    (root / "bot_control" / "launch" / "control_file.launch").write_text(
+        '<launch>\n'
+        '  <param name="robot_description"'
+        ' command="xacro \'$(find bot_control)/urdf/arm.urdf.xacro\'"/>\n'
+        '  <node name="spawn_arm" pkg="gazebo_ros" type="spawn_model"\n'
+        '        args="-urdf -param robot_description -model arm"/>\n'
+        '  <node name="controller_spawner" pkg="controller_manager" type="spawner"\n'
+        '        args="--shutdown-timeout 3 $(find bot_control)/config/controllers.yaml"/>\n'
+        '</launch>\n')
+    config = configuration(str(root), "bot_control/launch/control_file.launch")
+    gazebo = {(link.kind, link.resource.name) for link in config.links
+              if link.node.name == "/gazebo"}
+    assert {("publish", "/joint_states"),
+            ("read", "/joint_state_controller/publish_rate"),
+            ("read", "/joint_state_controller/type")} <= gazebo
+    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    rate = config.parameter("/joint_state_controller/publish_rate")
+    assert rate is not None and rate.value == 50 and rate.set_by_launch
+    assert rate.launch_location.file.endswith("config/controllers.yaml")
+    assert rate.launch_location.line == 3
+
+
 def test_a_gazebo_camera_publishes_the_topics_of_the_image_transport_plugins():
     config = configuration(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "1"})
     transports = sorted((link.node.name, link.resource.name, link.type,

@@ -39,6 +39,7 @@ from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
 from ..launch.model import NodeDecl, shell_words
+from ..launch.ros1.params import flatten as ros1_flatten
 from ..launch.ros2.naming import (
     flatten,
     node_patterns,
@@ -1106,7 +1107,8 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
     for decl, spawner in started:
         if decl.ros_version != 1 or (decl.package, decl.executable) not in ROS1_SPAWNERS:
             continue
-        controllers, given = ros1_spawn_args(decl)
+        words, given = ros1_spawn_args(decl)
+        controllers = _ros1_spawn_files(words, decl, spawner, params, workspace, config)
         manager = resolve(given, spawner.namespace, spawner.name)
         host = _serving(config, manager.rstrip("/") + "/controller_manager/load_controller")
         for controller in controllers[:MAX_PLUGINS]:
@@ -1144,6 +1146,38 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
                 out.append((reader, [_under(c, controller, ()) for c in node.calls]))
             if reader is not None:
                 out.extend(_loading_reads(choice, reader, reader))
+    return out
+
+
+def _ros1_spawn_files(words: list[str], decl: NodeDecl, spawner: NodeInstance,
+                      params: Params, workspace: Workspace,
+                      config: Configuration) -> list[str]:
+    """The controllers a ROS 1 spawner's words name. A word that is a file (the spawner
+    tests ``os.path.exists``; here an absolute path to a YAML file) is loaded into the
+    spawner's namespace (``rosparam.set_param("", file)``) and each of its top-level keys
+    is a controller to load (controller_manager/scripts/spawner, noetic): AutoRally's
+    simulation spawns ``$(find autorally_gazebo)/config/...JointCtrlrParams.yaml``. Its
+    parameters are set as a launch file sets them, each at its key's line."""
+    out: list[str] = []
+    for word in words:
+        if UNKNOWN_MARK in word or not os.path.isabs(word) or not word.endswith(
+                (".yaml", ".yml")):
+            out.append(word)
+            continue
+        loaded = _param_file(word, decl, workspace, config)
+        if loaded is None:
+            continue  # said (PLUGIN_PARAM_FILE)
+        document, where, keys = loaded
+        if not isinstance(document, dict):
+            config.diagnostics.append(diag.make("PLUGIN_PARAM_FILE", decl.location,
+                                                path=word))
+            continue
+        prefix = spawner.namespace.rstrip("/")
+        placed = {f"{prefix}/{key}": replace(where, line=line)
+                  for key, line in ros1_flatten("", keys or {}) if isinstance(line, int)}
+        _set_params(params, prefix, dict(ros1_flatten("", document)), where,
+                    spawner.conditions, placed)
+        out.extend(str(key) for key in document)
     return out
 
 

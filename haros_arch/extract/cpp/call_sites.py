@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import msg_types
-from .expressions import is_default_argument, strip
+from .expressions import construction_lost, is_default_argument, strip
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
@@ -61,6 +61,9 @@ class CallSites:
         self._index: dict[tuple[str, int], list[tuple[Cursor, Cursor]]] | None = None
         # the base constructor each argument list of ``base_initialisers`` calls
         self._base_calls: dict[tuple[str, int], Cursor] = {}
+        # (site, callee) -> callee for the sites that are no call: a variable whose
+        # construction the parse dropped, a constructor that leaves a base to C++
+        self._implicit: dict[tuple[tuple[str, int], tuple[str, int]], Cursor] = {}
         self._scopes: dict[tuple[str, int], Scope] = {}
         self._active: set[tuple[str, int]] = set()  # parameters being read (recursion)
         # members whose constructors disagree, met while a call is emitted (None: not
@@ -184,7 +187,9 @@ class CallSites:
             if key in done or (key in defined and key not in self.marked):
                 continue
             for call, caller in sites:
-                callee = callee_of(call) or self._base_calls.get(key_of(call))
+                callee = self._implicit.get((key_of(call), key)) if call.kind in (
+                    CursorKind.VAR_DECL, *_CONSTRUCTORS) else (
+                    callee_of(call) or self._base_calls.get(key_of(call)))
                 if callee is not None:
                     yield callee, call, caller
 
@@ -412,9 +417,16 @@ class CallSites:
         if self._index is None:
             self._index = {}
             bases: list[tuple[Cursor, Cursor, Cursor]] = []
+            implicit: list[tuple[Cursor, Cursor]] = []
             for function in self.functions:
                 for node in function.walk_preorder():
                     callee = callee_of(node) if node.kind == CursorKind.CALL_EXPR else None
+                    if node.kind == CursorKind.VAR_DECL:
+                        # a variable whose default construction the parse dropped: a
+                        # call of the default constructor that passes nothing
+                        callee = dropped_constructor(node)
+                        if callee is not None:
+                            self._implicit[(key_of(node), key_of(callee.canonical))] = callee
                     if callee is not None:
                         self._index.setdefault(key_of(callee.canonical), []).append(
                             (node, function))
@@ -433,6 +445,7 @@ class CallSites:
                     # list clang keeps there instead of a call
                     bases.extend((arguments, target, function)
                                  for arguments, target in base_initialisers(function))
+                    implicit.extend((function, target) for target in implicit_bases(function))
             # (only where this file instantiates that constructor: one no call here
             # makes passes nothing here, a base's ``Node(name)`` of a template beside
             # the subclass that names the node)
@@ -442,6 +455,20 @@ class CallSites:
                     self._index.setdefault(key_of(target.canonical), []).append(
                         (arguments, function))
                     self._base_calls[key_of(arguments)] = target
+            # a constructor that leaves a base to C++ calls the base's default
+            # constructor, with nothing passed, where this file calls it (a chain of
+            # such bases: as far as it goes)
+            for _round in range(8):
+                todo = [(function, target) for function, target in implicit
+                        if (key_of(function), key_of(target.canonical)) not in self._implicit
+                        and (key_of(function.canonical) in self._index
+                             or key_of(function) in self._index)]
+                for function, target in todo:
+                    self._index.setdefault(key_of(target.canonical), []).append(
+                        (function, function))
+                    self._implicit[(key_of(function), key_of(target.canonical))] = target
+                if not todo:
+                    break
         return self._index
 
 
@@ -503,7 +530,10 @@ def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:
     """What ``call`` passes for parameter ``parm`` (at ``index``): the written argument,
     or the parameter's default when the call leaves it out. A constructor's delegation
     (``delegation``) is its argument list."""
+    # (a variable whose construction the parse dropped, a constructor that leaves a
+    # base to C++: nothing passed)
     args = list(call.get_arguments()) if call.kind == CursorKind.CALL_EXPR \
+        else [] if call.kind in (CursorKind.VAR_DECL, *_CONSTRUCTORS) \
         else list(call.get_children())
     if index < len(args) and not is_default_argument(args[index]):
         return args[index]
@@ -534,6 +564,58 @@ def is_constructor(function: Cursor) -> bool:
     parent = function.semantic_parent
     return function.kind == CursorKind.CONSTRUCTOR or (
         parent is not None and function.spelling.split("<")[0] == parent.spelling)
+
+
+def implicit_bases(function: Cursor) -> list[Cursor]:
+    """The constructor of each base of its class that constructor ``function`` leaves
+    to C++, no initialiser of its own naming the base: the base's one constructor that
+    takes no argument (ethzasl_msf's ``PoseSensorManager(pnh)`` over
+    ``MSF_SensorManagerROS<EKFState>(ros::NodeHandle pnh = ros::NodeHandle("~core"))``).
+    None for a constructor that delegates to another of its class."""
+    parent = function.semantic_parent
+    if parent is None or not is_constructor(function) or not function.is_definition() or (
+            delegation(function) is not None):
+        return []
+    written = {key_of(c.referenced.canonical) for c in function.get_children()
+               if c.kind in (CursorKind.TYPE_REF, CursorKind.TEMPLATE_REF)
+               and c.referenced is not None}
+    found: list[Cursor] = []
+    for base in parent.get_children():
+        ctype = base.type.get_canonical() if base.kind == CursorKind.CXX_BASE_SPECIFIER \
+            else None
+        if ctype is None or ctype.kind != TypeKind.RECORD:
+            continue  # a base that depends on a template parameter
+        decl = ctype.get_declaration()
+        template = conf.lib.clang_getSpecializedCursorTemplate(decl)
+        classes = [each for each in (decl, template)
+                   if each is not None and each.kind != CursorKind.NO_DECL_FOUND]
+        if any(key_of(each.canonical) in written for each in classes):
+            continue
+        for each in classes:
+            cls = each.get_definition() or each
+            chosen = [c for c in cls.get_children() if c.kind in _CONSTRUCTORS
+                      and is_constructor(c) and _takes(c, 0)]
+            if chosen:
+                if len(chosen) == 1:
+                    found.append(chosen[0])
+                break
+    return found
+
+
+def dropped_constructor(variable: Cursor) -> Cursor | None:
+    """The constructor that a variable declared without an initialiser runs when the
+    parse kept no construction of it (``owners.construction_dropped``): the one of its
+    class that takes no argument (with its defaults)."""
+    if not construction_lost(variable):
+        return None
+    ctype = variable.type.get_canonical()
+    if ctype.kind != TypeKind.RECORD:
+        return None
+    decl = ctype.get_declaration()
+    cls = decl.get_definition() or decl
+    found = [c for c in cls.get_children() if c.kind in _CONSTRUCTORS and is_constructor(c)
+             and _takes(c, 0)]
+    return found[0] if len(found) == 1 else None
 
 
 def delegation(function: Cursor) -> Cursor | None:

@@ -4,7 +4,7 @@ declaration initialises its variable with, which arguments a call writes."""
 
 from __future__ import annotations
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, conf
 
 # expression kinds that only wrap their operand (implicit conversions, casts, parens, ...)
 WRAPPERS = frozenset({
@@ -123,3 +123,12 @@ def binary_operator(cursor: Cursor, children: list[Cursor]) -> str | None:
     end = children[0].extent.end.offset
     return next((t.spelling for t in cursor.get_tokens() if t.extent.start.offset >= end),
                 None)
+
+
+def construction_lost(variable: Cursor) -> bool:
+    """Whether ``variable`` is declared without an initialiser and clang marked it
+    invalid: the parse kept no construction of it (a variable of a class abstract to
+    the parse, whose overriders' types are in error)."""
+    return variable.kind == CursorKind.VAR_DECL and bool(
+        conf.lib.clang_isInvalidDeclaration(variable)) and not any(
+        c.kind.is_expression() for c in variable.get_children())

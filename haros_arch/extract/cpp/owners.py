@@ -16,6 +16,7 @@ from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 from . import api
 from .call_types import factory_made, template_argument
 from .cursors import from_standin
+from .expressions import construction_lost
 from .handles import qualified_name
 from .values import initializer, strip
 
@@ -51,8 +52,13 @@ def constructed_bases(call: Cursor, owned: Callable[[str], bool]) -> list[tuple[
     constructs: constructing a class runs its bases' constructors, implicit ones too
     (a base whose constructor names the node: ``class D : public B {}``)."""
     made = _construction(call, owned)
+    return class_bases(made[0], owned) if made is not None else []
+
+
+def class_bases(cls: Cursor, owned: Callable[[str], bool]) -> list[tuple[str, str]]:
+    """(class, base) for each base of the workspace of class ``cls``, transitively."""
     out: list[tuple[str, str]] = []
-    stack = [(made[0], 0)] if made is not None else []
+    stack = [(cls, 0)]
     while stack:
         cls, depth = stack.pop()
         definition = cls.get_definition() or cls
@@ -74,6 +80,30 @@ def constructed_bases(call: Cursor, owned: Callable[[str], bool]) -> list[tuple[
                 out.append(pair)
                 stack.append((base, depth + 1))
     return out
+
+
+def construction_dropped(variable: Cursor, owned: Callable[[str], bool]) -> Cursor | None:
+    """The class of the workspace that a variable declared without an initialiser
+    (``msf_pose_sensor::PoseSensorManager manager;``) is of, when the parse kept no
+    construction of it: C++ default-constructs it all the same, and clang leaves the
+    construction out when the class's code holds errors (ethzasl_msf's sensor managers,
+    whose state types need boost::fusion: abstract to the parse). None for a variable
+    the parse kept (``construction_lost``), or of a class with no constructor of its
+    own, or of a class that is not the workspace's."""
+    if not construction_lost(variable):
+        return None
+    ctype = variable.type.get_canonical()
+    if ctype.kind != TypeKind.RECORD:
+        return None
+    decl = ctype.get_declaration()
+    cls = decl.get_definition() or decl
+    where = cls.location.file
+    if cls.kind not in _CLASSES or where is None or not owned(where.name):
+        return None
+    template = conf.lib.clang_getSpecializedCursorTemplate(cls)
+    own = [c for each in (cls, template) if each is not None
+           for c in each.get_children() if c.kind == CursorKind.CONSTRUCTOR]
+    return cls if own else None
 
 
 def _construction(call: Cursor, owned: Callable[[str], bool]

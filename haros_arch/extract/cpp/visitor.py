@@ -50,8 +50,10 @@ from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_ma
 from .members import MemberWrites, member_of
 from .owners import (
     binds_own_member,
+    class_bases,
     constructed_bases,
     constructed_class,
+    construction_dropped,
     constructors_here,
     handle_node,
     node_arguments,
@@ -620,6 +622,8 @@ class CallFinder:
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
+            elif node.kind == CursorKind.VAR_DECL:
+                self._default_construction(node, conditions)
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
@@ -664,7 +668,8 @@ class CallFinder:
             return ()
         shared: tuple[Condition, ...] | None = None
         for call, caller in sites:
-            found = self._conditions_at(caller, call)
+            # (a constructor that leaves its base to C++ is the base's site itself)
+            found = () if call == caller else self._conditions_at(caller, call)
             if found is None:
                 return ()
             if caller.kind != CursorKind.FIELD_DECL and is_constructor(caller):
@@ -1004,6 +1009,20 @@ class CallFinder:
             for pair in constructed_bases(call, self.owned):
                 if pair not in self.constructions:
                     self.constructions.append(pair)
+
+    def _default_construction(self, variable: Cursor,
+                              conditions: tuple[Condition, ...]) -> None:
+        """Record the construction of a class of the workspace by a variable declared
+        without an initialiser whose construction the parse did not keep
+        (``construction_dropped``), as ``_construction`` records one it kept."""
+        cls = construction_dropped(variable, self.owned)
+        name = qualified_name(cls) if cls is not None else ""
+        if not name or self._owner is None or name == self._owner:
+            return
+        self.made_under.append((name, tuple(c for c in conditions if c.kind == "source")))
+        for pair in ((self._owner, name), *class_bases(cls, self.owned)):
+            if pair not in self.constructions:
+                self.constructions.append(pair)
 
     def _unseen_class(self, node: Cursor) -> None:
         """ROS 1: say where ``node`` builds an object of a class of another ROS package

@@ -78,6 +78,8 @@ class Module:
     _lines: list[str] | None = None
     # how many statements assign each ``self.<member>`` (visitor._member_writes)
     member_writes: dict[str, int] | None = None
+    # the ``self.<member>`` some code uses as a dict (visitor._mapping_members)
+    mapping_members: set[str] | None = None
     # the ROS version of the node these modules make, for a module that imports neither
     # rospy nor rclpy (``extract_python`` sets it)
     node_version: int = 1

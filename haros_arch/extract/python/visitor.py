@@ -359,6 +359,11 @@ class Walker:
         at = (reads[0].location.line, reads[0].location.column - 1)
         if not _read_as_is(statement.value, at):
             return
+        if reads[0].kind == "read" and member in _mapping_members(frame.module):
+            # the value is used as a dict (``self.x.items()``): whatever type its default
+            # has, the node reads a dict (AutoRally's autorally_controller.py reads
+            # ``get_param("~chassisCommandProirities", [])``, then sorts its ``items()``)
+            reads[0].type = "dict"
         if _member_writes(frame.module).get(member) == 1:
             # rclpy's ``declare_parameter`` / ``get_parameter`` give the Parameter, whose
             # ``.value`` a condition reads (``self.origin_param.value == 'auto'``)
@@ -1065,6 +1070,22 @@ def _member_writes(module: Module) -> dict[str, int]:
                     found[member] = found.get(member, 0) + 1
         module.member_writes = found
     return module.member_writes
+
+
+_MAPPING_METHODS = frozenset({"items", "keys", "values", "iteritems", "iterkeys",
+                              "itervalues"})
+
+
+def _mapping_members(module: Module) -> set[str]:
+    """The ``self.<member>`` of the module that some code uses as a dict: a call of a
+    dict's own method on it (``self.x.items()``)."""
+    if module.mapping_members is None:
+        module.mapping_members = {
+            member for node in ast.walk(module.tree)
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and node.func.attr in _MAPPING_METHODS
+            and (member := _self_member(node.func.value)) is not None}
+    return module.mapping_members
 
 
 def _in_namespace(text: Value) -> Value:

@@ -71,6 +71,8 @@ public:
   T& last();
   void push_back(const T& value);
   void resize(int size);
+  QList<T>& operator<<(const T& value);
+  QList<T>& operator<<(const QList<T>& other);
 };
 template<class T> class QVector : public QList<T> {};
 class QStringList : public QList<QString> {};

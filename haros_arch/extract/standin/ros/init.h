@@ -24,6 +24,8 @@ CallbackQueue* getGlobalCallbackQueue();
 namespace this_node {
 const std::string& getName();
 const std::string& getNamespace();
+void getAdvertisedTopics(V_string& topics);
+void getSubscribedTopics(V_string& topics);
 }
 namespace names {
 std::string resolve(const std::string& name, bool remap = true);
