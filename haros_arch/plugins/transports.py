@@ -76,7 +76,7 @@ class Transports:
         key, listed = self._list(base, instance)
         out = [call, PrimitiveCall(
             "read", key, location=call.location, conditions=call.conditions,
-            has_default=True, default=[], origin=_origin(call))]
+            has_default=True, default=[], origin="plugin")]
         for transport in TRANSPORTS:
             msg_type = transport.types[version - 1]
             installed = self.installed(transport)
@@ -96,7 +96,7 @@ class Transports:
             topic = f"{base.rstrip('/')}/{transport.name}"
             made = replace(call, name=topic, type=msg_type, conditions=tuple(conditions),
                            name_param=None, name_default=None, handle_namespace=None,
-                           transport=None, origin=_origin(call))
+                           transport=None, origin="plugin")
             out.append(made)
             if transport.reconfigure and version == 1:
                 out.extend(replace(made, kind=kind, name=f"{topic}/{name}", type=type_,
@@ -159,7 +159,7 @@ class Transports:
             key = ("~" if version == 1 else "") + TRANSPORT_PARAM
             out.append(PrimitiveCall("read", key, location=call.location,
                                      conditions=call.conditions, has_default=True,
-                                     default=RAW, origin=_origin(call)))
+                                     default=RAW, origin="plugin"))
             found = self.params.by_name.get(
                 (Parameter, f"{instance.name.rstrip('/')}/{TRANSPORT_PARAM}"))
             name = RAW
@@ -174,13 +174,7 @@ class Transports:
         topic = f"{base.rstrip('/')}/{name if name else UNKNOWN_MARK}"
         return [replace(call, name=topic, type=msg_type, name_param=None,
                         name_default=None, handle_namespace=None, transport=None,
-                        origin=_origin(call)), *out]
-
-
-def _origin(call: PrimitiveCall) -> str:
-    """A transport's calls are the library's, known from an interface model where the
-    image_transport call they stand for is."""
-    return "model" if call.origin == "model" else "plugin"
+                        origin="plugin"), *out]
 
 
 def _declares(instance: NodeInstance, parameter: str) -> bool:

@@ -138,12 +138,12 @@ def _modelled(instance: NodeInstance) -> bool:
 
 VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
     # what a ROS 1 connection compares (the md5sum of the definition) where we know it;
-    # ``is_modelled``: made by code known only from an interface model (a modelled node's
-    # own calls, a modelled plugin's), not by a robot description's Gazebo plugins nor by
-    # the workspace's plugin classes that a modelled host (a gazebo instance) loads
+    # ``is_modelled``: made by code known only from an interface model (a modelled plugin's
+    # anywhere; on a modelled node, all but the calls of the robot description's Gazebo
+    # plugins a modelled gazebo instance loads, ``description``)
     Link: {"is_latched": _is_latched, "wire_type": _wire_type, "known_type": _known_type,
            "is_modelled": lambda link: link.origin == "model" or (
-               link.origin not in ("description", "plugin") and _modelled(link.node))},
+               link.origin != "description" and _modelled(link.node))},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
     NodeInstance: {"is_modelled": _modelled},
     Node: {"advertise": _calls("publish"), "subscribe": _calls("subscribe"),
