@@ -250,7 +250,9 @@ CATALOGUE: dict[str, Entry] = {
         "A spawner hands a robot description to Gazebo, but Gazebo is started from a "
         "launch file outside the analysed packages; a node instance of that name stands "
         "for it, with the calls of the description's plugins and an unknown interface "
-        "otherwise."),
+        "otherwise; when that launch file is gazebo_ros' own (one include of "
+        "$(find gazebo_ros)/... not read), the interface of its gazebo node, gazebo_ros' "
+        "gzserver, from the distribution's interface model."),
     # launch files
     "LAUNCH_FILE_MISSING": Entry(
         "error", "launch file {path} does not exist",

@@ -27,6 +27,7 @@ from .nodes import (
     SourceMap,
     components,
     executables,
+    gazebo_launchers,
     gazebo_plugins,
     scripts,
     with_elsewhere,
@@ -238,6 +239,7 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     nodes.extend(gazebo_plugins(interpreter, package, files, sources))
+    nodes.extend(gazebo_launchers(interpreter, package, files, nodes))
     libraries: dict[str, plugins.Library] = {}
     for target in interpreter.targets.values():
         if target.kind == "library":

@@ -378,6 +378,43 @@ def gazebo_plugins(it: Interpreter, package: Package, workspace: Files,
     return nodes
 
 
+# a shell script that runs Gazebo's server (``gzserver`` as a word of its code) with
+# system plugins ``-s .../lib<name>.so`` (gazebo_ros' gzserver, gazebo, debug, perf)
+_GZSERVER = re.compile(r"(?<![\w.-])gzserver(?![\w.-])")
+_SYSTEM_PLUGIN = re.compile(r"(?<![\w-])-s\s[^\n]*?\blib([A-Za-z0-9_]+)\.")
+
+
+def gazebo_launchers(it: Interpreter, package: Package, workspace: Files,
+                     plugins: Sequence[Node]) -> list[Node]:
+    """The installed shell scripts that run Gazebo's server with system plugins of
+    this package's libraries (gazebo_ros' ``gzserver`` adds ``-s
+    libgazebo_ros_api_plugin.so``): each is a node whose sources are those plugins', so
+    its interface is theirs (the ROS node the API plugin's ``ros::init`` makes). Scripts
+    are read as text for these words, never run."""
+    system = {n.executable: n for n in plugins
+              if n.kind == "plugin" and n.plugin_base == "gazebo::SystemPlugin"}
+    nodes: list[Node] = []
+    if not system:
+        return nodes
+    for program in it.programs:
+        if not os.path.isfile(program.path) or is_python(program.path):
+            continue
+        text, _ = read_text(program.path, workspace.location(program.path))
+        code = "\n".join(line.partition("#")[0] for line in (text or "").splitlines())
+        if not _GZSERVER.search(code):
+            continue
+        loaded = [system[name] for name in dict.fromkeys(_SYSTEM_PLUGIN.findall(code))
+                  if name in system]
+        if not loaded:
+            continue
+        sources = list(dict.fromkeys(s for n in loaded for s in n.sources))
+        nodes.append(Node(package.name, program.name, "executable", "cpp", sources,
+                          conditions=program.conditions,
+                          location=workspace.location(program.file, program.line,
+                                                      program.column)))
+    return nodes
+
+
 def _gazebo_registered(path: str, workspace: Files) -> tuple[str, str, int] | None:
     text, _ = read_text(path, workspace.location(path))
     if not text or "GZ_REGISTER_" not in text:

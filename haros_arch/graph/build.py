@@ -28,13 +28,14 @@ from ..model.runtime import (
     Service,
     Topic,
 )
-from ..model.source import NUMBERED, Node, PrimitiveCall
+from ..model.source import NUMBERED, ROS_ARGUMENT, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
 from ..plugins.attach import PluginModels, chains, class_packages
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
+from ..robot.attach import GZSERVER
 from ..robot.attach import attach as attach_descriptions
 from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
@@ -110,6 +111,14 @@ def remaps_in_args(args: str) -> list[tuple[str, str]]:
     return pairs
 
 
+def ros_argument(instance: NodeInstance, key: str) -> str | None:
+    """The value of the ``key:=value`` word roslaunch gives a ROS 1 instance (of its
+    ``args`` or a ``<remap>``: both are such words of its command line), the first as
+    roscpp's ``getROSArg`` finds it; None when none gives it or its value is unknown."""
+    value = next((target for source, target in instance.remaps if source == key), None)
+    return None if value is None or UNKNOWN_MARK in value else value
+
+
 CHAIN_DEPTH = 4  # filter chains configured by the filters of a chain, and so on
 
 
@@ -156,7 +165,12 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
     # serves the controller_manager services the spawners' controllers are loaded by
     # (linked before the plugins attach, which look for the instance that serves them)
-    described = attach_descriptions(config, launch, started, workspace, resources, given)
+    # the ROS 1 gazebo node an unread include of gazebo_ros' launch files starts: its
+    # gzserver, of the distribution's model (looked up, so listed, only when needed)
+    models = plugin_models
+    described = attach_descriptions(
+        config, launch, started, workspace, resources, given,
+        None if models is None else lambda: models(GZSERVER))
     for instance, calls in described.calls:
         _link_calls(instance, calls, resources, config, transports)
     attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
@@ -220,6 +234,8 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
         if each.transport is not None:
             images.setdefault(each.location, []).append(each)
     for call in calls:
+        if call.argument:  # a command-line word the code reads, no ROS resource
+            continue
         for each in element_calls(call, instance, resources):  # list parameters
             if each.camera_of is not None:
                 info = _camera_info(instance, each, images.get(each.location, []), remaps,
@@ -739,6 +755,8 @@ def _parameter_value(written: str, default: str | None, instance: NodeInstance,
     the launch value, else the one the node sets from its arguments, else ``default``.
     None when a launch file sets it to a value not known (an argument nobody gave): the
     node reads that value, not its default."""
+    if written.startswith(ROS_ARGUMENT):  # ros::getROSArg's ``key:=value`` word
+        return ros_argument(instance, written[len(ROS_ARGUMENT):])
     source = _node_scoped(written) if instance.ros_version == 2 else written
     param_name = RosName.make(source, instance.namespace, instance.name).full
     param = resources.by_name.get((Parameter, param_name))

@@ -149,7 +149,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          camera_of=c.get("camera_of"),
                          host_named=c.get("host_named") if isinstance(
                              c.get("host_named"), str) else None,
-                         loads=c.get("loads") if isinstance(c.get("loads"), str) else None)
+                         loads=c.get("loads") if isinstance(c.get("loads"), str) else None,
+                         argument=c.get("argument") is True)
 
 
 def node_from_data(data: dict[str, Any], package: str) -> Node:

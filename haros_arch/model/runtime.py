@@ -623,7 +623,9 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     ``cmd_vel:=/cmd_vel`` in the root namespace) is kept: it changes nothing here, but it
     says the author took the name to be one the node uses, and when no node it is given
     to uses it, that is wrong in every namespace (robot_localization's navsat_transform
-    subscribes ``imu``; interactive_marker_twist_server publishes ``~cmd_vel``)."""
+    subscribes ``imu``; interactive_marker_twist_server publishes ``~cmd_vel``). A
+    ``key:=value`` word that the node's code reads as an argument (roscpp's
+    ``getROSArg``: tiago_tutorials' run_loop_node given ``robot:=steel``) is used."""
     found: dict[tuple[str, str, str], Remap] = {}
     # the launch's nodes first: the remaps are theirs; the nodes hosts make can only use
     for instance in sorted(nodes, key=lambda n: n.origin != "launch"):
@@ -632,11 +634,15 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
         # connection the instance does not have (turtlebot's ``camera/image`` beside
         # ``image``, a workaround for a nodelet bug)
         reached = {link.rosname.full for link in instance.links}
+        # the ``key:=value`` words its code reads as arguments (``PrimitiveCall.argument``)
+        read = {c.name for c in instance.node.calls if c.argument} if (
+            instance.node is not None) else set()
         for source, target in dict.fromkeys(instance.remaps):
             if not source or source.startswith("__"):
                 continue
             name = resolve(source, instance.namespace, instance.name)
-            used = name in instance.remaps_applied or rules.get(name) in reached
+            used = name in instance.remaps_applied or rules.get(name) in reached or (
+                source in read)
             if instance.origin != "launch":
                 # a node a host makes in its process (nav2's costmaps) takes the
                 # process's remaps, given for the host: a use counts, a non-use does not

@@ -47,6 +47,11 @@ NUMBERED = "#"
 # of a Gazebo classic plugin's SDF (``sdf:topicName``), which robot.attach fills in from
 # the robot description
 SDF_ELEMENT = "sdf:"
+# the start of a ``PrimitiveCall.name_param`` that is no ROS parameter but the value of
+# the process's ``key:=value`` command-line word that roscpp's ``ros::getROSArg(argc,
+# argv, "key")`` returns (``ros_arg:robot``); the graph takes it from the words
+# roslaunch gives the instance (its ``args`` and remaps)
+ROS_ARGUMENT = "ros_arg:"
 
 @dataclass(frozen=True)
 class Dependency:
@@ -224,6 +229,11 @@ class PrimitiveCall:
     # (``handle_namespace``), where the name's own part holds another (``name_param``);
     # robot.attach fills both from the robot description
     namespace_param: str | None = field(default=None, metadata={"optional": True})
+    # a ``read`` of no parameter but of the process's ``name:=value`` command-line word
+    # (roscpp's ``ros::getROSArg(argc, argv, "name")``; ``name`` as written, matched
+    # literally): it makes no link; a launch file's ``name:=value`` (which roscpp also
+    # takes for a remap) is given to the node for it, so it is a remap the node uses
+    argument: bool = field(default=False, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

@@ -131,12 +131,21 @@ def _known_type(link: Any) -> str | None:
     return found if isinstance(found, str) and found and UNKNOWN_MARK not in found else None
 
 
+def _modelled(instance: NodeInstance) -> bool:
+    """What it runs is known from an interface model (its code is not in the workspace)."""
+    return instance.node is not None and instance.node.model is not None
+
+
 VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
-    # what a ROS 1 connection compares (the md5sum of the definition) where we know it
-    Link: {"is_latched": _is_latched, "wire_type": _wire_type, "known_type": _known_type},
+    # what a ROS 1 connection compares (the md5sum of the definition) where we know it;
+    # ``is_modelled``: made by code known only from an interface model (a modelled plugin's
+    # anywhere; on a modelled node, all but the calls of the robot description's Gazebo
+    # plugins a modelled gazebo instance loads, ``description``)
+    Link: {"is_latched": _is_latched, "wire_type": _wire_type, "known_type": _known_type,
+           "is_modelled": lambda link: link.origin == "model" or (
+               link.origin != "description" and _modelled(link.node))},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
-    # what it runs is known from an interface model (its code is not in the workspace)
-    NodeInstance: {"is_modelled": lambda n: n.node is not None and n.node.model is not None},
+    NodeInstance: {"is_modelled": _modelled},
     Node: {"advertise": _calls("publish"), "subscribe": _calls("subscribe"),
            "service": _calls("server"), "client": _calls("client"),
            "read_param": _calls("read"), "write_param": _calls("write")},

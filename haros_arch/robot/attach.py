@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import partial
 from typing import Any, NamedTuple, cast
@@ -59,6 +59,7 @@ SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"):
 GZ_SPAWNERS = (("ros_gz_sim", "create"), ("ros_ign_gazebo", "create"))
 GAZEBO_EXECUTABLES = ("gzserver", "gazebo", "debug", "gzserver_with_gdb", "perf")
 GAZEBO_NAME = "/gazebo"
+GZSERVER = "gazebo_ros/gzserver"  # what gazebo_ros' launch files start as ``gazebo``
 MANAGER = "controller_manager"  # the node ros2_control's Gazebo plugins start
 GZ_MANAGERS = ("gz_ros2_control-system", "ign_ros2_control-system")
 MAX_PLUGINS = 500  # per description
@@ -123,15 +124,19 @@ class Attached:
 
 def attach(config: Configuration, launch: LaunchModel,
            started: Sequence[tuple[NodeDecl, NodeInstance]], workspace: Workspace,
-           params: Params, given: Sequence[ParamDecl] = ()) -> Attached:
+           params: Params, given: Sequence[ParamDecl] = (),
+           gzserver: Callable[[], Node | None] | None = None) -> Attached:
     """The calls of the Gazebo plugins of the spawned descriptions, by node instance;
     instances made here are added to ``config.nodes``, the parameters a ros2_control
     plugin's ``<parameters>`` files set to ``params``; and the hardware plugins of the
     descriptions the controller managers read (``given``: the launch parameters by the
-    names of the nodes that take them, ``graph.processes.process_params``)."""
+    names of the nodes that take them, ``graph.processes.process_params``). ``gzserver``
+    finds the node (model) of gazebo_ros' gzserver, the interface of a ``/gazebo`` made
+    here for an unread include of gazebo_ros' launch files (ROS 1): its calls come first."""
     out = Attached([], [])
     out.hardware = hardware(config, started, given, workspace)
     owned: set[int] = set()
+    made: list[NodeInstance] = []
     for decl, _ in started:
         ros_version = SPAWNERS.get((decl.package, decl.executable))
         if ros_version is None:
@@ -140,7 +145,9 @@ def attach(config: Configuration, launch: LaunchModel,
         out.calls.extend(diag.per_file(  # a bug of ours in one description: the run goes on
             decl.location, decl.location.file or "", config.diagnostics,
             partial(_spawned, spawn, started, launch, workspace, config, owned, params,
-                    out.managers), []))
+                    out.managers, (gzserver, made)), []))
+    out.calls[:0] = [(instance, list(instance.node.calls)) for instance in made
+                     if instance.node is not None]
     out.calls.extend(bridges(config, launch, started, workspace))
     return out
 
@@ -148,12 +155,13 @@ def attach(config: Configuration, launch: LaunchModel,
 def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
              launch: LaunchModel, workspace: Workspace, config: Configuration,
              owned: set[int], params: Params, managers: list[tuple[NodeDecl, NodeInstance]],
+             gazebo: tuple[Callable[[], Node | None] | None, list[NodeInstance]],
              ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     decl = spawn.decl
     if (decl.package, decl.executable) in GZ_SPAWNERS:
         _gz(spawn, launch, workspace, config, params, managers)
         return []
-    host = _host(config, started, decl, spawn.ros_version, launch)
+    host = _host(config, started, decl, spawn.ros_version, launch, gazebo)
     made = _description(spawn, launch, workspace, config)
     if made is None:
         own_partial(host, f"the robot description spawned at {decl.location.file}:"
@@ -520,7 +528,13 @@ def _note(config: Configuration, where: Location, detail: str) -> None:
 
 # -- the gazebo node --------------------------------------------------------------------
 def _host(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
-          spawner: NodeDecl, ros_version: int, launch: LaunchModel) -> NodeInstance:
+          spawner: NodeDecl, ros_version: int, launch: LaunchModel,
+          gazebo: tuple[Callable[[], Node | None] | None, list[NodeInstance]] = (None, []),
+          ) -> NodeInstance:
+    """The gazebo instance a spawner's description goes to: the one the launch files
+    start, else one made here, named ``/gazebo`` in the namespace of an unread include
+    of gazebo_ros' launch files, whose gzserver (``gazebo``: the node and the list of
+    the instances made with it) it runs; else of unknown interface."""
     for decl, instance in started:
         if decl.package == "gazebo_ros" and decl.executable in GAZEBO_EXECUTABLES:
             return instance
@@ -530,9 +544,13 @@ def _host(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]
     for instance in config.nodes:
         if instance.name == name and instance.origin == "description":
             return instance
-    instance = NodeInstance(name, None, namespace=namespace, remaps=list(remaps),
+    find, made = gazebo
+    instance = NodeInstance(name, find() if unread is not None and find else None,
+                            namespace=namespace, remaps=list(remaps),
                             conditions=conditions, location=spawner.location,
                             origin="description", ros_version=ros_version)
+    if instance.node is not None:
+        made.append(instance)
     instance.id = f"node:{name}"
     if any(n.name == name for n in config.nodes):
         instance.id += f"#{sum(1 for n in config.nodes if n.name == name) + 1}"

@@ -147,6 +147,10 @@ class RosFunction:
     # it takes ``name_prefix`` + its key as its ``name_param``, which the host fills in
     # (``robot.attach``)
     value_only: bool = False
+    # a read of the process's ``name:=value`` command-line word, not of a parameter
+    # (``PrimitiveCall.argument``); a name that holds it takes ``ROS_ARGUMENT`` + the
+    # word's name as its ``name_param``
+    argument: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -172,6 +176,9 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
         "client", type_from=("template",), on_handle=False),
     ("ros::service", "call"): RosFunction(
         "client", type_from=("arg",), type_arg=1, on_handle=False),
+    # getROSArg(argc, argv, "robot"): the value of the program's ``robot:=...`` word
+    ("ros", "getROSArg"): RosFunction("read", name_arg=2, on_handle=False,
+                                      fixed_type="str", name_required=True, argument=True),
     # parameters through a NodeHandle
     (NODE_HANDLE, "getParam"): _PARAM_READ,
     (NODE_HANDLE, "getParamCached"): _PARAM_READ,

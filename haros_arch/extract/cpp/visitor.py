@@ -23,7 +23,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
-from ...model.source import SDF_ELEMENT, PrimitiveCall
+from ...model.source import ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites, base_keys
@@ -1642,7 +1642,8 @@ class CallFinder:
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
                     name.count("?") == 1) else None, name_member=name_member,
-                loads=spec.loads, namespace_param=namespace_param))
+                loads=spec.loads, namespace_param=namespace_param,
+                argument=spec.argument))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             member = self._member(spec, call, shift) if len(names) == 1 else None
@@ -2213,6 +2214,8 @@ class CallFinder:
         name = render(scope.string(args[spec.name_arg]))
         if spec.value_only:
             return (spec.name_prefix or "") + name, None, None
+        if spec.argument:
+            return ROS_ARGUMENT + name, None, None
         if spec.on_handle:
             name = join_name(render(self.namespaces.of_call(call, callee_of_call(call), scope)),
                              name)

@@ -9,6 +9,8 @@ enum InitOption { NoSigintHandler = 1, AnonymousName = 2, NoRosout = 4 };
 typedef init_options::InitOption InitOption;
 void init(int& argc, char** argv, const std::string& name, uint32_t options = 0);
 void init(const M_string& remappings, const std::string& name, uint32_t options = 0);
+std::string getROSArg(int argc, const char* const* argv, const std::string& arg);
+void removeROSArgs(int argc, const char* const* argv, V_string& args_out);
 bool ok();
 void shutdown();
 void requestShutdown();
