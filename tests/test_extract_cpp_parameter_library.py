@@ -138,3 +138,33 @@ def test_a_node_gives_its_parameters_interface(tmp_path) -> None:
         "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n};\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert _declares(result, 7) == DECLARED
+
+
+def test_a_class_template_builds_its_listener_on_the_implicit_this(tmp_path) -> None:
+    """ros2_controllers' gripper_controllers (Kinova's gen3_lite loads it):
+    ``GripperActionController<HardwareInterface>::on_init`` builds
+    ``std::make_shared<ParamListener>(get_node())``; in a class template the implicit
+    ``this`` depends on the template's parameters, so the call stays unresolved. Its
+    parameters were not declared at all, and the controller was said complete."""
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    source = tmp_path / "joint_gain_controller" / "src" / "templated.cpp"
+    source.write_text(
+        "#include <memory>\n"
+        '#include "controller_interface/controller_interface.hpp"\n'
+        '#include "joint_gain_controller/joint_gain_controller_parameters.hpp"\n'
+        "namespace joint_gain_controller {\n"
+        "template <const char * Interface>\n"
+        "class Templated : public controller_interface::ControllerInterface {\n"
+        " public:\n"
+        "  controller_interface::CallbackReturn on_init() override;\n"
+        " private:\n"
+        "  std::shared_ptr<ParamListener> listener_;\n};\n"
+        "template <const char * Interface>\n"
+        "controller_interface::CallbackReturn Templated<Interface>::on_init() {\n"
+        "  listener_ = std::make_shared<ParamListener>(get_node());\n"
+        "  return controller_interface::CallbackReturn::SUCCESS;\n}\n"
+        'extern const char position[] = "position";\n'
+        "template class Templated<position>;\n"
+        "}  // namespace joint_gain_controller\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert _declares(result, 14) == DECLARED

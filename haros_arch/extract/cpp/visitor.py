@@ -538,7 +538,7 @@ class CallFinder:
             ):
                 return True
             if kind == CursorKind.CALL_EXPR and not node.spelling and (
-                _dependent_made(node) is not None
+                _dependent_made(node) is not None or _dependent_listener(node) is not None
             ):
                 return True
             if kind == CursorKind.CXX_NEW_EXPR and _lost_new(node) is not None:
@@ -864,11 +864,16 @@ class CallFinder:
         """Emit a dependent ``make_shared`` of an API class (``_dependent_made``); made,
         in a header's function template, only where a file of the node calls it."""
         made = _dependent_made(call)
-        if made is None:
+        declared = _dependent_listener(call) if made is None else None
+        if made is None and declared is None:
             return False
         self._made_by = self._template
         try:
-            self._emit(made[0], call, written_arguments(call), made[1], conditions, scope)
+            if made is not None:
+                self._emit(made[0], call, written_arguments(call), made[1], conditions,
+                           scope)
+            elif declared is not None:
+                self._listener(call, written_arguments(call), declared, conditions, scope)
         finally:
             self._made_by = None
         return True
@@ -2466,12 +2471,10 @@ def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
     return key_of(site)
 
 
-def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
-    """The API row and class of ``std::make_shared<C>(args)`` (a factory of
-    ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
-    its parameters, when ``C`` is a class, not a template, whose construction has a row
-    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
-    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+def _dependent_class(call: Cursor) -> Cursor | None:
+    """The class ``C`` of ``std::make_shared<C>(args)`` (a factory of ``FACTORY_NAMES``,
+    of std or boost) that a template leaves unresolved because an argument depends on
+    its parameters, when ``C`` is a class, not a template."""
     children = list(call.get_children())
     head = children[0] if children else None
     if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
@@ -2487,7 +2490,28 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     if len(classes) != 1 or classes[0].kind not in (CursorKind.CLASS_DECL,
                                                     CursorKind.STRUCT_DECL):
         return None
-    made = row_class(classes[0])
+    return classes[0]
+
+
+def _dependent_listener(call: Cursor) -> list[tuple[str, str | None, bool, Any]] | None:
+    """The parameters of a generate_parameter_library ``ParamListener`` that a
+    dependent ``std::make_shared<ParamListener>(...)`` builds: in a member of a class
+    template, ``get_node()`` is called on the implicit ``this``, which depends on the
+    template's parameters (ros2_controllers' gripper_controllers); None for another
+    call."""
+    return parameter_library.listener_parameters(_dependent_class(call))
+
+
+def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
+    """The API row and class of ``std::make_shared<C>(args)`` (a factory of
+    ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
+    its parameters, when ``C`` is a class, not a template, whose construction has a row
+    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
+    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+    cls = _dependent_class(call)
+    if cls is None:
+        return None
+    made = row_class(cls)
     spec = api.ALL.get((qualified_name(made), made.spelling))
     if spec is None or spec.fixed_name is None:
         return None
