@@ -168,3 +168,35 @@ def test_a_class_template_builds_its_listener_on_the_implicit_this(tmp_path) -> 
         "}  // namespace joint_gain_controller\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert _declares(result, 14) == DECLARED
+
+
+def test_a_test_of_a_params_field_is_decided_by_its_parameter(tmp_path) -> None:
+    """joint_state_broadcaster's ``params_.use_local_topics ? "~/" : ""``: a field of
+    the listener's ``Params`` struct holds the parameter of its name (nested structs
+    too), which the graph decides the test by, as a local that holds a parameter."""
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    source = tmp_path / "joint_gain_controller" / "src" / "fields.cpp"
+    source.write_text(
+        "#include <memory>\n#include <string>\n#include <rclcpp/rclcpp.hpp>\n"
+        "#include <std_msgs/msg/string.hpp>\n"
+        '#include "joint_gain_controller/joint_gain_controller_parameters.hpp"\n'
+        "class Fields : public rclcpp::Node {\n public:\n"
+        '  Fields() : rclcpp::Node("fields") {\n'
+        "    listener_ = std::make_shared<::joint_gain_controller::ParamListener>(\n"
+        "      this->get_node_parameters_interface());\n"
+        "    params_ = listener_->get_params();\n"
+        '    const std::string prefix = params_.open_loop ? "~/" : "";\n'
+        "    if (params_.limits.max_velocity > 1.0) {\n"
+        "      pub_ = create_publisher<std_msgs::msg::String>(prefix + \"fast\", 10);\n"
+        "    }\n  }\n private:\n"
+        "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n"
+        "  ::joint_gain_controller::Params params_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    found = sorted((c.name, tuple((k.statement, k.parameters) for k in c.conditions))
+                   for c in result.calls if c.kind == "publish")
+    fast = ("if", (("params_.limits.max_velocity", "limits.max_velocity"),))
+    assert found == [
+        ("fast", (fast, ("else", (("params_.open_loop", "open_loop"),)))),
+        ("~fast", (fast, ("if", (("params_.open_loop", "open_loop"),)))),
+    ]

@@ -1405,6 +1405,55 @@ class CallFinder:
         return [(yes, self.reader.choice(node, "if", test)),
                 (no, self.reader.choice(node, "else", test))]
 
+    def _inner_choice(self, expr: Cursor | None, scope: Scope
+                      ) -> tuple[tuple[str, int], list[tuple[bool, Condition]]] | None:
+        """A name made of a value chosen by a test this scope does not decide, with
+        other text: ``prefix + "joint_states"`` where ``prefix`` is a local written once
+        with ``use_local_topics ? "~/" : ""`` (ros2_controllers' joint_state_broadcaster,
+        whose ``/joint_states`` was ``?joint_states``). The one ``?:`` the name's value
+        holds (through locals written once, ``MAX_CHOICE_DEPTH`` deep), with each side
+        (true: its first) under its condition, when the name is known in full with
+        either side; else None."""
+        if expr is None or _known(scope.string(expr)):
+            return None
+        found: list[Cursor] = []
+        stack = [(expr, 0)]
+        seen = 0
+        while stack and seen < MAX_CHOICE_NODES:
+            node, depth = stack.pop()
+            seen += 1
+            node = strip(node)
+            if node.kind == CursorKind.CONDITIONAL_OPERATOR:
+                if place_of(node) not in scope.chosen:
+                    found.append(node)
+                continue
+            if node.kind == CursorKind.DECL_REF_EXPR:
+                decl = node.referenced
+                value = scope.variable(decl) if decl is not None and (
+                    decl.kind == CursorKind.VAR_DECL) else None
+                if value is not None and depth < MAX_CHOICE_DEPTH:
+                    stack.append((value, depth + 1))
+                continue
+            stack.extend((child, depth) for child in node.get_children()
+                         if child.kind.is_expression())
+        if len(found) != 1:
+            return None
+        node = found[0]
+        children = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(children) != 3:
+            return None
+        place = place_of(node)
+        for truth in (True, False):
+            scope.chosen[place] = truth
+            try:
+                known = _known(scope.string(expr))
+            finally:
+                del scope.chosen[place]
+            if not known:
+                return None
+        return place, [(True, self.reader.choice(node, "if", children[0])),
+                       (False, self.reader.choice(node, "else", children[0]))]
+
     def _emit_one(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
                   cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
@@ -1437,6 +1486,18 @@ class CallFinder:
             for side, condition in choice:
                 self._emit_one(given, call, [*args[:index], side, *args[index + 1:]], cls,
                                (*conditions, condition), scope, at, at_scope)
+            return
+        inner = self._inner_choice(arg(spec.name_arg), scope) if (
+            spec.fixed_name is None) else None
+        if inner is not None:  # the same, the test's value read once per side
+            place, sides = inner
+            for truth, condition in sides:
+                scope.chosen[place] = truth
+                try:
+                    self._emit_one(given, call, args, cls, (*conditions, condition), scope,
+                                   at, at_scope)
+                finally:
+                    del scope.chosen[place]
             return
 
         site = at or call
@@ -1854,6 +1915,15 @@ class CallFinder:
                 if parameter is not None and text != "?":
                     found[text] = parameter
                     continue  # what it reads is not read again
+            if node.kind == CursorKind.MEMBER_REF_EXPR:
+                # a field of a generate_parameter_library ``Params`` struct (``params_.
+                # use_local_topics``): the parameter of that name, which the listener
+                # declares on the node
+                field = parameter_library.field_parameter(node)
+                text = self.reader.text(node) if field is not None else "?"
+                if field is not None and text != "?":
+                    found[text] = field
+                    continue
             stack.extend(reversed(list(node.get_children())))
             decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
             if decl is None or decl.kind != CursorKind.VAR_DECL or decl.spelling in found or (
@@ -2410,6 +2480,7 @@ def _literal(expr: Cursor, scope: Scope) -> object:
 
 MAX_LIST_DEPTH = 12  # the wrappers between an argument and its braced list
 MAX_CHOICE_DEPTH = 4  # the locals between a name argument and its ``?:``
+MAX_CHOICE_NODES = 200  # the expression nodes read for the ``?:`` a name holds
 
 
 def _scalar(ctype: Type) -> bool:
