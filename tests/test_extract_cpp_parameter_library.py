@@ -186,7 +186,7 @@ def test_a_test_of_a_params_field_is_decided_by_its_parameter(tmp_path) -> None:
         "      this->get_node_parameters_interface());\n"
         "    params_ = listener_->get_params();\n"
         '    const std::string prefix = params_.open_loop ? "~/" : "";\n'
-        "    if (params_.limits.max_velocity > 1.0) {\n"
+        "    if (params_.limits.max_velocity > 1.0 && !params_.interface_name.empty()) {\n"
         "      pub_ = create_publisher<std_msgs::msg::String>(prefix + \"fast\", 10);\n"
         "    }\n  }\n private:\n"
         "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n"
@@ -195,7 +195,9 @@ def test_a_test_of_a_params_field_is_decided_by_its_parameter(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     found = sorted((c.name, tuple((k.statement, k.parameters) for k in c.conditions))
                    for c in result.calls if c.kind == "publish")
-    fast = ("if", (("params_.limits.max_velocity", "limits.max_velocity"),))
+    # ``interface_name.empty()`` is a call on the field's value, no parameter of its own
+    fast = ("if", (("params_.interface_name", "interface_name"),
+                   ("params_.limits.max_velocity", "limits.max_velocity")))
     assert found == [
         ("fast", (fast, ("else", (("params_.open_loop", "open_loop"),)))),
         ("~fast", (fast, ("if", (("params_.open_loop", "open_loop"),)))),

@@ -298,8 +298,9 @@ def field_parameter(expr: Cursor) -> str | None:
     names: list[str] = []
     node = expr
     for _depth in range(MAX_FIELD_DEPTH):
-        if node.kind != CursorKind.MEMBER_REF_EXPR or not node.spelling:
-            return None
+        target = node.referenced if node.kind == CursorKind.MEMBER_REF_EXPR else None
+        if target is None or target.kind != CursorKind.FIELD_DECL:
+            return None  # not a field: ``params_.topic.empty()``'s ``empty``
         names.insert(0, node.spelling)
         below = [c for c in node.get_children() if c.kind.is_expression()]
         if len(below) != 1:
