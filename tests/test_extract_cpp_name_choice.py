@@ -96,3 +96,42 @@ def test_the_graph_decides_the_side_per_instance(write_tree):
     assert not published("/plain") & {"/right/image_rect", "/left/mono"}
     assert published("/rectified") >= {"/right/image_rect", "/left/mono"}
     assert not published("/rectified") & {"/right/image_raw", "/left/color"}
+
+
+PREFIXED = """
+    #include <string>
+    #include <rclcpp/rclcpp.hpp>
+    #include <std_msgs/msg/string.hpp>
+
+    class Broadcaster : public rclcpp::Node {
+     public:
+      Broadcaster() : Node("broadcaster") {
+        bool local = declare_parameter("use_local_topics", false);
+        const std::string prefix = local ? "~/" : "";
+        states_ = create_publisher<std_msgs::msg::String>(prefix + "joint_states", 10);
+        std::string unknown = get_name();
+        other_ = create_publisher<std_msgs::msg::String>(unknown + prefix + "x", 10);
+      }
+     private:
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr states_, other_;
+    };
+    """
+
+
+def test_a_name_made_of_a_chosen_value_and_text_is_a_call_per_side(write_tree):
+    """ros2_controllers' joint_state_broadcaster: ``topic_name_prefix + "joint_states"``,
+    the prefix a local written once with ``params_.use_local_topics ? "~/" : ""``. Its
+    ``/joint_states`` was ``?joint_states``; a name with another unknown part stays one
+    call."""
+    root = write_tree({"src/b/package.xml": package_xml("b", "ament_cmake"),
+                       "src/b/src/b.cpp": PREFIXED})
+    result = extract_cpp([str(root / "src/b/src/b.cpp")], scan([str(root)]), cache_dir=None)
+    found = sorted((c.name, tuple((k.statement, k.text) for k in c.conditions))
+                   for c in result.calls if c.kind == "publish")
+    assert found == [
+        ("?x", ()),  # ``unknown`` is not known: one call, as before
+        ("joint_states", (("else", "local"),)),
+        ("~joint_states", (("if", "local"),)),
+    ]
+    local = next(c for c in result.calls if c.name == "~joint_states")
+    assert local.conditions[0].parameters == (("local", "use_local_topics"),)

@@ -138,3 +138,67 @@ def test_a_node_gives_its_parameters_interface(tmp_path) -> None:
         "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n};\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert _declares(result, 7) == DECLARED
+
+
+def test_a_class_template_builds_its_listener_on_the_implicit_this(tmp_path) -> None:
+    """ros2_controllers' gripper_controllers (Kinova's gen3_lite loads it):
+    ``GripperActionController<HardwareInterface>::on_init`` builds
+    ``std::make_shared<ParamListener>(get_node())``; in a class template the implicit
+    ``this`` depends on the template's parameters, so the call stays unresolved. Its
+    parameters were not declared at all, and the controller was said complete."""
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    source = tmp_path / "joint_gain_controller" / "src" / "templated.cpp"
+    source.write_text(
+        "#include <memory>\n"
+        '#include "controller_interface/controller_interface.hpp"\n'
+        '#include "joint_gain_controller/joint_gain_controller_parameters.hpp"\n'
+        "namespace joint_gain_controller {\n"
+        "template <const char * Interface>\n"
+        "class Templated : public controller_interface::ControllerInterface {\n"
+        " public:\n"
+        "  controller_interface::CallbackReturn on_init() override;\n"
+        " private:\n"
+        "  std::shared_ptr<ParamListener> listener_;\n};\n"
+        "template <const char * Interface>\n"
+        "controller_interface::CallbackReturn Templated<Interface>::on_init() {\n"
+        "  listener_ = std::make_shared<ParamListener>(get_node());\n"
+        "  return controller_interface::CallbackReturn::SUCCESS;\n}\n"
+        'extern const char position[] = "position";\n'
+        "template class Templated<position>;\n"
+        "}  // namespace joint_gain_controller\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert _declares(result, 14) == DECLARED
+
+
+def test_a_test_of_a_params_field_is_decided_by_its_parameter(tmp_path) -> None:
+    """joint_state_broadcaster's ``params_.use_local_topics ? "~/" : ""``: a field of
+    the listener's ``Params`` struct holds the parameter of its name (nested structs
+    too), which the graph decides the test by, as a local that holds a parameter."""
+    shutil.copytree(PACKAGE, tmp_path / "joint_gain_controller")
+    source = tmp_path / "joint_gain_controller" / "src" / "fields.cpp"
+    source.write_text(
+        "#include <memory>\n#include <string>\n#include <rclcpp/rclcpp.hpp>\n"
+        "#include <std_msgs/msg/string.hpp>\n"
+        '#include "joint_gain_controller/joint_gain_controller_parameters.hpp"\n'
+        "class Fields : public rclcpp::Node {\n public:\n"
+        '  Fields() : rclcpp::Node("fields") {\n'
+        "    listener_ = std::make_shared<::joint_gain_controller::ParamListener>(\n"
+        "      this->get_node_parameters_interface());\n"
+        "    params_ = listener_->get_params();\n"
+        '    const std::string prefix = params_.open_loop ? "~/" : "";\n'
+        "    if (params_.limits.max_velocity > 1.0 && !params_.interface_name.empty()) {\n"
+        "      pub_ = create_publisher<std_msgs::msg::String>(prefix + \"fast\", 10);\n"
+        "    }\n  }\n private:\n"
+        "  std::shared_ptr<::joint_gain_controller::ParamListener> listener_;\n"
+        "  ::joint_gain_controller::Params params_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    found = sorted((c.name, tuple((k.statement, k.parameters) for k in c.conditions))
+                   for c in result.calls if c.kind == "publish")
+    # ``interface_name.empty()`` is a call on the field's value, no parameter of its own
+    fast = ("if", (("params_.interface_name", "interface_name"),
+                   ("params_.limits.max_velocity", "limits.max_velocity")))
+    assert found == [
+        ("fast", (fast, ("else", (("params_.open_loop", "open_loop"),)))),
+        ("~fast", (fast, ("if", (("params_.open_loop", "open_loop"),)))),
+    ]

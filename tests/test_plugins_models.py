@@ -209,3 +209,22 @@ def test_ros1_move_group_hosts_its_capabilities_from_two_packages(tmp_path):
                if d.code == "PLUGIN_NOT_FOUND"}
     assert "move_group/MoveGroupPickPlaceAction" not in missing
     assert "move_group/MoveGroupKinematicsService" in missing
+
+
+def test_gripper_action_controllers_come_from_the_packages_that_export_them(tmp_path):
+    """``position_controllers/GripperActionController`` (and the effort one) is
+    gripper_controllers', ``parallel_gripper_action_controller/GripperActionController``
+    parallel_gripper_controller's: their prefixes name no package, so the shipped models
+    are found through the packages that export them (Kinova's gen3_lite loads the first
+    and was left unknown)."""
+    attacher = Attacher(Library(), "jazzy", [])
+    find = attacher.plugin_models(LaunchModel(), {})
+    for cls, package in (
+            ("position_controllers/GripperActionController", "gripper_controllers"),
+            ("effort_controllers/GripperActionController", "gripper_controllers"),
+            ("parallel_gripper_action_controller/GripperActionController",
+             "parallel_gripper_controller")):
+        node = find(cls)
+        assert node is not None, cls
+        assert (node.package, node.executable) == (package, cls)
+        assert ("action-server", "~gripper_cmd") in {(c.kind, c.name) for c in node.calls}

@@ -304,16 +304,25 @@ EXTENDS: dict[str, str] = {
 # ROS 1 ros_controllers' trajectory controllers are ``effort_controllers/
 # JointTrajectoryController`` and the same under position_controllers,
 # velocity_controllers, pos_vel_controllers and pos_vel_acc_controllers, exported by
-# joint_trajectory_controller (ros_control_plugins.xml)
+# joint_trajectory_controller (ros_control_plugins.xml); the gripper action controllers
+# are ``position_controllers/GripperActionController`` and the same under
+# effort_controllers, exported by ros2_controllers' gripper_controllers
+# (ros_control_plugins.xml) and ROS 1's gripper_action_controller
+# (ros_control_plugins.xml), and ros2_controllers' parallel gripper is
+# ``parallel_gripper_action_controller/GripperActionController``, exported by
+# parallel_gripper_controller (ros_control_plugins.xml)
 _TRAJECTORY = ("joint_trajectory_controller",)
+_GRIPPER = ("gripper_controllers", "gripper_action_controller")
 LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
     "move_group": ("moveit_ros_move_group", "moveit_ros_manipulation"),
     "pcl": ("pcl_ros",),
     "mock_components": ("hardware_interface",),
     "fake_components": ("hardware_interface",),
-    **{kind: _TRAJECTORY for kind in ("position_controllers", "velocity_controllers",
-                                      "effort_controllers", "pos_vel_controllers",
-                                      "pos_vel_acc_controllers")}}
+    "parallel_gripper_action_controller": ("parallel_gripper_controller",),
+    **{kind: _TRAJECTORY for kind in ("velocity_controllers", "pos_vel_controllers",
+                                      "pos_vel_acc_controllers")},
+    **{kind: _TRAJECTORY + _GRIPPER for kind in ("position_controllers",
+                                                 "effort_controllers")}}
 
 
 def sources_of(cls: str, ros_version: int) -> Sources | None:

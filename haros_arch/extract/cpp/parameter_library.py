@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import yaml
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, TypeKind
 
 from ... import diagnostics as diag
 from ... import safe_yaml
@@ -37,6 +37,8 @@ from ...workspace import Workspace
 LISTENER = "ParamListener"
 MAP = "__map_"
 _LISTENER_MARK = "haros_arch.parameter_listener"  # the annotation of a synthesised listener
+_PARAMS_MARK = "haros_arch.parameter_struct"  # the annotation of its ``Params`` struct
+MAX_FIELD_DEPTH = 20  # the members of a chain read for the parameter it holds
 _MARK = "haros_arch.parameter "  # the annotation of one parameter the listener declares
 _NAME = re.compile(r"[A-Za-z_]\w*")
 # the library's YAML types: C++ field type, ROS parameter type (as the extractor writes
@@ -262,7 +264,8 @@ def render(target: Target, namespace: str, tree: dict[str, Any], source: str) ->
              "#pragma once", "#include <cstdint>", "#include <functional>",
              "#include <map>", "#include <memory>", "#include <string>", "#include <vector>",
              "#include <rclcpp/rclcpp.hpp>", "#include <rclcpp_lifecycle/lifecycle_node.hpp>",
-             f"namespace {namespace} {{", "struct Params {", *_struct(tree, "  "),
+             f"namespace {namespace} {{", f"struct {annotation(_PARAMS_MARK)} Params {{",
+             *_struct(tree, "  "),
              "  rclcpp::Time __stamp;", "};",
              f"class {' '.join(notes)} {LISTENER} {{", " public:",
              "  template <typename NodeT>",
@@ -285,6 +288,35 @@ def render(target: Target, namespace: str, tree: dict[str, Any], source: str) ->
              "  void clearUserCallback();",
              "};", f"}}  // namespace {namespace}", ""]
     return "\n".join(lines)
+
+
+def field_parameter(expr: Cursor) -> str | None:
+    """The parameter a member chain of a synthesised ``Params`` struct holds:
+    ``params_.use_local_topics`` is ``use_local_topics``, ``params_.limits.max_velocity``
+    ``limits.max_velocity`` (the listener's own names, before any prefix); None for any
+    other expression (a ``__map_`` struct's entry is read through ``at()``)."""
+    names: list[str] = []
+    node = expr
+    for _depth in range(MAX_FIELD_DEPTH):
+        target = node.referenced if node.kind == CursorKind.MEMBER_REF_EXPR else None
+        if target is None or target.kind != CursorKind.FIELD_DECL:
+            return None  # not a field: ``params_.topic.empty()``'s ``empty``
+        names.insert(0, node.spelling)
+        below = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(below) != 1:
+            return None
+        node = below[0]
+        while node.kind == CursorKind.UNEXPOSED_EXPR and len(list(node.get_children())) == 1:
+            node = next(iter(node.get_children()))
+        kind = node.type.get_canonical()
+        if kind.kind == TypeKind.POINTER:
+            kind = kind.get_pointee().get_canonical()
+        decl = kind.get_declaration()
+        if decl is not None and decl.kind == CursorKind.STRUCT_DECL and any(
+                c.kind == CursorKind.ANNOTATE_ATTR and c.spelling == _PARAMS_MARK
+                for c in decl.get_children()):
+            return ".".join(names)
+    return None
 
 
 def listener_parameters(cls: Cursor | None

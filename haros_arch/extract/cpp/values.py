@@ -356,6 +356,9 @@ class Scope:
         # local variable -> (start, end, value or None) of each write of it in this body,
         # those of an unknown value too (passed to a reference, ``+=``)
         self._placed: dict[tuple[str, int], list[tuple[int, int, Cursor | None]]] = {}
+        # ``test ? a : b`` (by its place) -> the side taken, while a name made of its
+        # value is read once per side (``CallFinder._name_choice``)
+        self.chosen: dict[tuple[str, int], bool] = {}
 
     # -- writes -----------------------------------------------------------------------
 
@@ -684,6 +687,9 @@ class Scope:
         if len(children) != 3:
             return UNKNOWN
         test, yes, no = children
+        side = self.chosen.get(key_of(cursor)) if self.chosen else None
+        if side is not None:
+            return self.string(yes if side else no, depth + 1)
         found = self._emptiness(test, depth)
         if found is None:
             truth = self.boolean(test)

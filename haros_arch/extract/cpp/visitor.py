@@ -541,7 +541,7 @@ class CallFinder:
             ):
                 return True
             if kind == CursorKind.CALL_EXPR and not node.spelling and (
-                _dependent_made(node) is not None
+                _dependent_made(node) is not None or _dependent_listener(node) is not None
             ):
                 return True
             if kind == CursorKind.CXX_NEW_EXPR and _lost_new(node) is not None:
@@ -870,11 +870,16 @@ class CallFinder:
         """Emit a dependent ``make_shared`` of an API class (``_dependent_made``); made,
         in a header's function template, only where a file of the node calls it."""
         made = _dependent_made(call)
-        if made is None:
+        declared = _dependent_listener(call) if made is None else None
+        if made is None and declared is None:
             return False
         self._made_by = self._template
         try:
-            self._emit(made[0], call, written_arguments(call), made[1], conditions, scope)
+            if made is not None:
+                self._emit(made[0], call, written_arguments(call), made[1], conditions,
+                           scope)
+            elif declared is not None:
+                self._listener(call, written_arguments(call), declared, conditions, scope)
         finally:
             self._made_by = None
         return True
@@ -1420,6 +1425,55 @@ class CallFinder:
         return [(yes, self.reader.choice(node, "if", test)),
                 (no, self.reader.choice(node, "else", test))]
 
+    def _inner_choice(self, expr: Cursor | None, scope: Scope
+                      ) -> tuple[tuple[str, int], list[tuple[bool, Condition]]] | None:
+        """A name made of a value chosen by a test this scope does not decide, with
+        other text: ``prefix + "joint_states"`` where ``prefix`` is a local written once
+        with ``use_local_topics ? "~/" : ""`` (ros2_controllers' joint_state_broadcaster,
+        whose ``/joint_states`` was ``?joint_states``). The one ``?:`` the name's value
+        holds (through locals written once, ``MAX_CHOICE_DEPTH`` deep), with each side
+        (true: its first) under its condition, when the name is known in full with
+        either side; else None."""
+        if expr is None or _known(scope.string(expr)):
+            return None
+        found: list[Cursor] = []
+        stack = [(expr, 0)]
+        seen = 0
+        while stack and seen < MAX_CHOICE_NODES:
+            node, depth = stack.pop()
+            seen += 1
+            node = strip(node)
+            if node.kind == CursorKind.CONDITIONAL_OPERATOR:
+                if place_of(node) not in scope.chosen:
+                    found.append(node)
+                continue
+            if node.kind == CursorKind.DECL_REF_EXPR:
+                decl = node.referenced
+                value = scope.variable(decl) if decl is not None and (
+                    decl.kind == CursorKind.VAR_DECL) else None
+                if value is not None and depth < MAX_CHOICE_DEPTH:
+                    stack.append((value, depth + 1))
+                continue
+            stack.extend((child, depth) for child in node.get_children()
+                         if child.kind.is_expression())
+        if len(found) != 1:
+            return None
+        node = found[0]
+        children = [c for c in node.get_children() if c.kind.is_expression()]
+        if len(children) != 3:
+            return None
+        place = place_of(node)
+        for truth in (True, False):
+            scope.chosen[place] = truth
+            try:
+                known = _known(scope.string(expr))
+            finally:
+                del scope.chosen[place]
+            if not known:
+                return None
+        return place, [(True, self.reader.choice(node, "if", children[0])),
+                       (False, self.reader.choice(node, "else", children[0]))]
+
     def _emit_one(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
                   cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
@@ -1452,6 +1506,18 @@ class CallFinder:
             for side, condition in choice:
                 self._emit_one(given, call, [*args[:index], side, *args[index + 1:]], cls,
                                (*conditions, condition), scope, at, at_scope)
+            return
+        inner = self._inner_choice(arg(spec.name_arg), scope) if (
+            spec.fixed_name is None) else None
+        if inner is not None:  # the same, the test's value read once per side
+            place, sides = inner
+            for truth, condition in sides:
+                scope.chosen[place] = truth
+                try:
+                    self._emit_one(given, call, args, cls, (*conditions, condition), scope,
+                                   at, at_scope)
+                finally:
+                    del scope.chosen[place]
             return
 
         site = at or call
@@ -1873,6 +1939,15 @@ class CallFinder:
                 if parameter is not None and text != "?":
                     found[text] = parameter
                     continue  # what it reads is not read again
+            if node.kind == CursorKind.MEMBER_REF_EXPR:
+                # a field of a generate_parameter_library ``Params`` struct (``params_.
+                # use_local_topics``): the parameter of that name, which the listener
+                # declares on the node
+                field = parameter_library.field_parameter(node)
+                text = self.reader.text(node) if field is not None else "?"
+                if field is not None and text != "?":
+                    found[text] = field
+                    continue
             stack.extend(reversed(list(node.get_children())))
             decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
             if decl is None or decl.kind != CursorKind.VAR_DECL or decl.spelling in found or (
@@ -2431,6 +2506,7 @@ def _literal(expr: Cursor, scope: Scope) -> object:
 
 MAX_LIST_DEPTH = 12  # the wrappers between an argument and its braced list
 MAX_CHOICE_DEPTH = 4  # the locals between a name argument and its ``?:``
+MAX_CHOICE_NODES = 200  # the expression nodes read for the ``?:`` a name holds
 
 
 def _scalar(ctype: Type) -> bool:
@@ -2492,12 +2568,10 @@ def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
     return key_of(site)
 
 
-def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
-    """The API row and class of ``std::make_shared<C>(args)`` (a factory of
-    ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
-    its parameters, when ``C`` is a class, not a template, whose construction has a row
-    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
-    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+def _dependent_class(call: Cursor) -> Cursor | None:
+    """The class ``C`` of ``std::make_shared<C>(args)`` (a factory of ``FACTORY_NAMES``,
+    of std or boost) that a template leaves unresolved because an argument depends on
+    its parameters, when ``C`` is a class, not a template."""
     children = list(call.get_children())
     head = children[0] if children else None
     if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
@@ -2513,7 +2587,28 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     if len(classes) != 1 or classes[0].kind not in (CursorKind.CLASS_DECL,
                                                     CursorKind.STRUCT_DECL):
         return None
-    made = row_class(classes[0])
+    return classes[0]
+
+
+def _dependent_listener(call: Cursor) -> list[tuple[str, str | None, bool, Any]] | None:
+    """The parameters of a generate_parameter_library ``ParamListener`` that a
+    dependent ``std::make_shared<ParamListener>(...)`` builds: in a member of a class
+    template, ``get_node()`` is called on the implicit ``this``, which depends on the
+    template's parameters (ros2_controllers' gripper_controllers); None for another
+    call."""
+    return parameter_library.listener_parameters(_dependent_class(call))
+
+
+def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
+    """The API row and class of ``std::make_shared<C>(args)`` (a factory of
+    ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
+    its parameters, when ``C`` is a class, not a template, whose construction has a row
+    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
+    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+    cls = _dependent_class(call)
+    if cls is None:
+        return None
+    made = row_class(cls)
     spec = api.ALL.get((qualified_name(made), made.spelling))
     if spec is None or spec.fixed_name is None:
         return None

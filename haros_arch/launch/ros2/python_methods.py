@@ -356,6 +356,14 @@ def m_str(name: str) -> Method:
             if name == "join" and isinstance(owner, str) and a and isinstance(a[0], list):
                 return i.operation(lambda: concat(partial.join_parts(
                     owner, a[0], _same, LIMITS.length)), n)
+            if isinstance(owner, Lazy) and name in _TEXT_OF_TEXT and any(
+                    isinstance(p, (e.Command, e.Opaque)) for p in owner.text):
+                # text made of a command's output (xacro's document, andino's
+                # ``toprettyxml().replace(...)``): unknown as that output is, said where
+                # the command is performed (LAUNCH_UNKNOWN_VALUE), not once more here
+                return Lazy((*owner.text, e.Opaque(
+                    f"str.{name}() of a value known only when the launch runs",
+                    report=False)))
             return Unknown(f"str.{name}() of a value not known statically")
         try:  # the size of what it would make, before making it
             return ops.call_method(owner, name, a, k, LIMITS)
@@ -369,6 +377,9 @@ def m_str(name: str) -> Method:
 
 
 _PLAIN = (str, int, float, bool, type(None))
+# the str methods whose result is text again
+_TEXT_OF_TEXT = frozenset(("replace", "strip", "lstrip", "rstrip", "lower", "upper",
+                           "capitalize", "title", "removeprefix", "removesuffix"))
 
 
 def _same(value: Any) -> Any:
