@@ -60,6 +60,7 @@ from .hosts import (
     DESCRIBED,
     EXPORTED,
     EXTENDS,
+    KEYED,
     LOOKUP_PACKAGES,
     SPAWNER,
     Child,
@@ -161,6 +162,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     choices = list(_exported(instance, slot, params, nodes))
                 elif slot.names == DESCRIBED:
                     choices = list((hardware or {}).get(id(instance), ()))
+                elif slot.names == KEYED:
+                    choices = list(_keyed(instance, slot, params))
                 else:
                     choices = list(_chosen(instance, slot, params))
                     unseen = _unseen_choice(instance, slot, params)
@@ -386,6 +389,10 @@ def _loading_reads(choice: Choice, host: NodeInstance, own: NodeInstance,
                     location=choice.location, conditions=choice.conditions,
                     origin="plugin")]
                 break
+        else:
+            if host.ros_version == 1:  # found outside its namespace (``searchParam``)
+                yield host, [PrimitiveCall("read", full, location=choice.location,
+                                           conditions=choice.conditions, origin="plugin")]
 
 
 def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
@@ -536,13 +543,16 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
         base = instance.name.rstrip("/") + "/"
     if slot.names is None:
         assert slot.type_of is not None
+        if slot.unless is not None and _keys(instance, slot.unless, params):
+            return
         given = _parameter(params, base + slot.type_of)
         if given is not None:
-            yield Choice("", _text(given.value), given.launch_location,
-                         given.launch_conditions, (given.name,))
+            yield from _typed(Choice(slot.given or "", None, given.launch_location,
+                                     given.launch_conditions, (given.name,)),
+                              given, slot)
         else:
             for default, default_cls in slot.defaults:
-                yield Choice(default, default_cls, instance.location)
+                yield Choice(slot.given or default, default_cls, instance.location)
         return
     listed = _parameter(params, base + slot.names)
     where: Location
@@ -563,8 +573,8 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
     listing = (listed.name,) if listed is not None else ()
     for entry in entries[:MAX_PLUGINS]:
         if isinstance(entry, dict):  # ROS 1: {name: ..., type: ...}
-            yield Choice(_text(entry.get("name")) or UNKNOWN_MARK, _text(entry.get("type")),
-                         where, conditions, listing)
+            yield Choice(_text(entry.get("name")) or UNKNOWN_MARK,
+                         _text(entry.get(slot.type_key)), where, conditions, listing)
             continue
         name = _text(entry) or UNKNOWN_MARK
         cls = dict(slot.defaults).get(name)
@@ -575,6 +585,57 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
                          (*conditions, *typed.launch_conditions), (*listing, parameter))
         else:
             yield Choice(name, cls, where, conditions, listing)
+
+
+def _keyed(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choice]:
+    """The plugins of a KEYED slot: for each name its ``keys`` finds, the classes of
+    ``type_of`` for that name, in the namespace where the name was found."""
+    assert slot.keys is not None and slot.type_of is not None
+    for name, scope in _keys(instance, slot.keys, params, slot.search)[:MAX_PLUGINS]:
+        typed = _parameter(params, scope + slot.type_of.format(name=name))
+        if typed is None:
+            continue
+        given = (slot.given or "{name}").format(name=name)
+        yield from _typed(Choice(given, None, typed.launch_location,
+                                 typed.launch_conditions, (typed.name,)), typed, slot)
+
+
+def _keys(instance: NodeInstance, pattern: str, params: Params,
+          search: bool = False) -> list[tuple[str, str]]:
+    """The names ``{name}`` stands for in the launch parameters ``pattern`` matches,
+    with the namespace each was found in: the host's private one, or with ``search``
+    the nearest of it and its parents that has the parameter (``searchParam``)."""
+    scopes = [instance.name.rstrip("/") + "/"]
+    if search:
+        parts = scopes[0].strip("/").split("/")
+        scopes += ["/" + "/".join(parts[:n]) + "/" if n else "/"
+                   for n in range(len(parts) - 1, -1, -1)]
+    head, _, tail = pattern.partition("{name}")
+    found: dict[str, str] = {}
+    for scope in scopes:
+        start, end = scope + head, tail
+        for (kind, full), each in params.by_name.items():
+            if kind is not Parameter or not isinstance(each, Parameter) or not (
+                    each.set_by_launch and full.startswith(start) and full.endswith(end)):
+                continue
+            name = full[len(start):len(full) - len(end)]
+            if name and "/" not in name and UNKNOWN_MARK not in name:
+                found.setdefault(name, scope)
+    return sorted(found.items())
+
+
+def _typed(choice: Choice, typed: Parameter, slot: Slot) -> Iterator[Choice]:
+    """The choices of one class parameter: its class, or with ``slot.words`` each of
+    the white-space separated classes of its string (one unknown class when the value
+    is not known)."""
+    if not slot.words:
+        yield replace(choice, cls=_text(typed.value))
+        return
+    words = _words(typed.value)
+    if words is None:
+        yield replace(choice, cls=UNKNOWN_MARK)
+    for word in (words or [])[:MAX_PLUGINS]:
+        yield replace(choice, cls=word)
 
 
 def _added(instance: NodeInstance, slot: Slot, params: Params,
