@@ -4,13 +4,21 @@ controller manager and octomap updaters by the parameters that name them."""
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
+from typing import Any
+
+from conftest import package_xml
 
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location
 from haros_arch.models.attach import Attacher
 from haros_arch.models.library import Library
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+from haros_arch.query.catalogue import UNDECIDED
 from haros_arch.workspace import Workspace
 
 GROUP = "moveit_ros_move_group"
@@ -33,7 +41,8 @@ def _models(tmp_path: Path) -> list[str]:
                  "calls": [_read("~capabilities", 1)]}],
         "moveit_planners_ompl": [_plugin(
             "moveit_planners_ompl", "ompl_interface/OMPLPlanner",
-            "ompl_interface::OMPLPlannerManager", [_read("?/planner_configs", 2)])],
+            "ompl_interface::OMPLPlannerManager",
+            [_read("~planner_configs/?", 2), _read("~?/default_planner_config", 6)])],
         "moveit_ros_planning": [_plugin(
             "moveit_ros_planning", "default_planner_request_adapters/FixStartStateBounds",
             "default_planner_request_adapters::FixStartStateBounds",
@@ -106,7 +115,9 @@ def test_move_group_pipeline_of_its_own_namespace_kinematics_and_controller_mana
     instance = config.node("/move_group")
     assert instance.completeness == "model", instance.completeness_reasons
     assert _readers(config, "/move_group/start_state_max_bounds_error") == ["/move_group"]
-    assert _readers(config, "/move_group/planner_configs") == ["/move_group"]
+    assert _readers(config, "/move_group/planner_configs/?") == ["/move_group"]
+    # the planner's unknown parts are groups, not a plugin name
+    assert _readers(config, "/move_group/?/default_planner_config") == ["/move_group"]
     assert _readers(config, "/move_group/manipulator/epsilon") == ["/move_group"]
     assert _readers(config, "/move_group/controller_list") == ["/move_group"]
     assert _readers(config, "/robot_description_kinematics/manipulator/"
@@ -124,11 +135,13 @@ def test_move_group_pipelines_by_name(tmp_path):
                   "default_planner_request_adapters/FixStartStateBounds", location=WHERE),
         ParamDecl("/move_group/planning_plugin", "nobody/Planner", location=WHERE)])
     assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
-    assert _readers(config, "/move_group/planning_pipelines/ompl/planner_configs") == [
+    assert _readers(config, "/move_group/planning_pipelines/ompl/planner_configs/?") == [
         "/move_group"]
     assert _readers(config, "/move_group/planning_pipelines/ompl/"
                             "start_state_max_bounds_error") == ["/move_group"]
-    assert _readers(config, "/move_group/planner_configs") == []
+    assert _readers(config, "/move_group/planning_pipelines/ompl/?/"
+                            "default_planner_config") == ["/move_group"]
+    assert _readers(config, "/move_group/planner_configs/?") == []
 
 
 def test_move_group_planner_nobody_models_leaves_it_partial(tmp_path):
@@ -151,3 +164,64 @@ def test_move_group_without_a_planner_parameter_takes_an_installed_one(tmp_path)
     assert config.node("/move_group").completeness == "partial"
     assert [d.code for d in config.diagnostics if d.code.startswith("PLUGIN")] == [
         "PLUGIN_CLASS_UNKNOWN"]
+
+
+# -- with the shipped models of MoveIt noetic ---------------------------------------------
+
+MOVE_GROUP_LAUNCH = """
+<launch>
+  <param name="robot_description_kinematics/manipulator/kinematics_solver"
+         value="kdl_kinematics_plugin/KDLKinematicsPlugin"/>
+  <group ns="move_group">
+    <param name="planning_plugin" value="PLANNER"/>
+    <param name="request_adapters" value="default_planner_request_adapters/AddTimeParameterization
+        default_planner_request_adapters/FixStartStateBounds"/>
+    <param name="start_state_max_bounds_error" value="0.1"/>
+    <param name="moveit_controller_manager"
+           value="moveit_simple_controller_manager/MoveItSimpleControllerManager"/>
+    <param name="trajectory_execution/allowed_goal_duration_margin" value="0.5"/>
+    <param name="allowed_execution_duration_scaling" value="1.2"/>
+  </group>
+  <node name="move_group" pkg="moveit_ros_move_group" type="move_group"/>
+</launch>
+"""
+
+
+def _check(write_tree: Any, planner: str) -> tuple[Any, dict[str, list[tuple[str, ...]]]]:
+    root = write_tree({
+        "src/arm_moveit_config/package.xml": package_xml("arm_moveit_config"),
+        "src/arm_moveit_config/launch/move_group.launch":
+            MOVE_GROUP_LAUNCH.replace("PLANNER", planner),
+        "project.yaml": "project: p\ndistro: noetic\nworkspace: src\nconfigurations:\n"
+                        "  c: [arm_moveit_config/launch/move_group.launch]\n",
+    })
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    found: dict[str, list[tuple[str, ...]]] = {}
+    for finding in run_catalogue(model, project):
+        found.setdefault(finding.rule, []).append(finding.entities)
+    instance = next(n for n in model.configurations[0].nodes if n.name == "/move_group")
+    return instance, found
+
+
+SCALING = ("parameter:/move_group/allowed_execution_duration_scaling",)
+
+
+def test_shipped_models_find_a_trajectory_execution_parameter_set_at_the_top(write_tree):
+    """ROBUST universal_robot 778c1ac's mistake: the trajectory execution manager reads
+    ``~trajectory_execution/allowed_execution_duration_scaling``; with OMPL, the default
+    adapters, KDL and the simple controller manager all modelled, the one set at the top
+    of move_group's namespace is decidedly never read."""
+    instance, found = _check(write_tree, "ompl_interface/OMPLPlanner")
+    assert instance.completeness == "model", instance.completeness_reasons
+    assert SCALING in found.get("parameter-set-not-read", [])
+    unread = {e for e in found.get("parameter-set-not-read", []) if e[0].startswith(
+        "parameter:/move_group/")}
+    assert unread == {SCALING}  # the pipeline's, the adapters' and the manager's are read
+
+
+def test_shipped_models_leave_move_group_undecided_with_an_unmodelled_planner(write_tree):
+    instance, found = _check(write_tree, "chomp_interface/CHOMPPlanner")
+    assert instance.completeness == "partial"
+    assert SCALING not in found.get("parameter-set-not-read", [])
+    assert ("node:/move_group",) in found.get("parameter-set-not-read" + UNDECIDED, [])

@@ -111,6 +111,9 @@ class Choice:
     # why the class is not known where no parameter names it (the robot description a
     # controller manager reads: HARDWARE_UNKNOWN)
     why: str | None = None
+    # the host's namespace (relative to its private one) the plugin's private names
+    # move to (``Slot.rebase``)
+    moved_to: str | None = None
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
@@ -171,7 +174,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                         own_partial(instance, unseen, owned)
                 for choice in choices:
                     out.extend(_load(choice, slot, instance, index, workspace, models,
-                                     params, config, owned, made, loaded, decl))
+                                     params, config, owned, made, loaded, decl,
+                                     frozenset(s.site for s in host.slots if s.site)))
     out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
     out.extend(behavior_trees.attach(config, started, params, workspace,
                                      lambda instance, reason: own_partial(
@@ -195,8 +199,10 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
           workspace: Workspace, models: PluginModels | None, params: Params,
           config: Configuration, owned: set[int], made: dict[int, set[tuple[Any, ...]]],
           loaded: set[tuple[int, str]], decl: NodeDecl | None,
+          sites: frozenset[str] = frozenset(),
           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
-    """The calls one chosen plugin adds: to the host, or to a node of its own."""
+    """The calls one chosen plugin adds: to the host, or to a node of its own; ``sites``:
+    the places loading plugins whose classes the host's slots attach (``Slot.site``)."""
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     node = _lookup(choice, index, workspace, models)
     reader = instance
@@ -240,10 +246,13 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
             reasons = node.completeness_reasons[:1] or [node.completeness]
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
-        elif node.plugin_loads:  # a plugin that loads plugins (nav2 MPPI's critics)
+        elif set(node.plugin_loads) - sites:  # a plugin that loads plugins (MPPI's critics)
             own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
         calls = [_under(call, plugin, choice.conditions, slot.bases)
                  for call in _with_base(node, index, workspace, models)]
+        if choice.moved_to:
+            calls = [replace(call, name=_moved(call.name, choice.moved_to))
+                     for call in calls]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
             node.plugin_class or "", instance.ros_version)
         if row is not None:
@@ -595,9 +604,11 @@ def _keyed(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choic
         typed = _parameter(params, scope + slot.type_of.format(name=name))
         if typed is None:
             continue
-        given = (slot.given or "{name}").format(name=name)
+        given = ("{name}" if slot.given is None else slot.given).format(name=name)
+        moved = slot.rebase.format(name=name) if slot.rebase else None
         yield from _typed(Choice(given, None, typed.launch_location,
-                                 typed.launch_conditions, (typed.name,)), typed, slot)
+                                 typed.launch_conditions, (typed.name,), moved_to=moved),
+                          typed, slot)
 
 
 def _keys(instance: NodeInstance, pattern: str, params: Params,
@@ -1017,7 +1028,18 @@ def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
                    conditions=(*conditions, *call.conditions))
 
 
+def _moved(name: str, namespace: str) -> str:
+    """A private name (``~x``, ``~/x``) moved into ``namespace`` of the host's private
+    one; other names as they are."""
+    if not name.startswith("~"):
+        return name
+    return "~" + namespace.strip("/") + "/" + name[1:].lstrip("/")
+
+
 def _named(name: str | None, plugin: str) -> Any:
+    """``name`` with its unknown first part the plugin name; a plugin name in the host's
+    private namespace (``~ns``, ``~``: a MoveIt pipeline's) is that whether the call's
+    handle was private or not (the namespace the host passes is absolute)."""
     if name is None or not plugin:
         return name
     for lead in ("~/", "~", ""):
@@ -1025,6 +1047,9 @@ def _named(name: str | None, plugin: str) -> Any:
             rest = name[len(lead) + 1:]
             # a prefix only: a name that is wholly unknown is not the plugin name
             if rest[:1] in ("/", ".") and len(rest) > 1:
+                if plugin.startswith("~"):
+                    inner = plugin.lstrip("~/")
+                    return "~" + (inner + rest if inner else rest[1:])
                 return lead + plugin + rest
     return name
 

@@ -95,6 +95,16 @@ class Slot:
     # plugin name (a MoveIt pipeline's planner gets the pipeline's namespace,
     # ``~planning_pipelines/{name}``); None: the plugin name itself
     given: str | None = None
+    # the host's namespace (relative to its private one, ``{name}`` the plugin name) that
+    # the plugin's private names move to: its code makes them on a handle the host gives
+    # it, which the extraction took for ``~`` (a MoveIt pipeline's planner, given the
+    # pipeline's namespace; OMPL's ``nh_("~")`` replaced by ``NodeHandle(ns)``)
+    rebase: str | None = None
+    # the place (``file:line``, as ``Node.plugin_loads`` says) where a plugin's code loads
+    # the classes this slot attaches, from the host's parameters (the constraint samplers
+    # MoveIt's OMPL planner loads with move_group's ``~constraint_samplers``): a plugin
+    # loading there is not partial for it
+    site: str | None = None
     # the key of a ``{name, type}`` mapping of ``names`` that gives the class
     # (move_group's ``sensors``: ``sensor_plugin``)
     type_key: str = "type"
@@ -176,7 +186,9 @@ def _ros1_costmap(prefix: str) -> Slot:
 #   none: one pipeline on ``~`` itself (:263-269, "deprecated Melodic behavior"). A
 #   pipeline loads the planner of ``planning_plugin`` and the request adapters of the
 #   string ``request_adapters`` (planning_pipeline.cpp:55-67), gives the planner the
-#   pipeline's namespace (:121) and each adapter its handle (:156); without
+#   pipeline's namespace (:121; OMPL makes its handle of it, ompl_planner_manager.cpp:110,
+#   its names' unknown parts being groups, not the pipeline) and each adapter its handle
+#   (:156); without
 #   ``planning_plugin`` it takes the first class declared (:101-112), which depends on
 #   what is installed: not modelled (the pipeline then loads nothing here);
 # - a kinematics solver per group of the semantic description, the white-space separated
@@ -187,16 +199,19 @@ def _ros1_costmap(prefix: str) -> Slot:
 #   147-172; not set, the only class declared, which depends on what is installed);
 # - the sensor manager ``~moveit_sensor_manager`` (plan_with_sensing.cpp:87-104);
 # - an octomap updater per entry of ``~sensors``, its class ``sensor_plugin``
-#   (occupancy_map_monitor.cpp:106-148).
+#   (occupancy_map_monitor.cpp:106-148);
+# - the constraint samplers of the string ``~constraint_samplers`` (none when not set),
+#   which ConstraintSamplerManagerLoader loads for the OMPL planner and pick and place
+#   (constraint_sampler_manager_loader.cpp:49-71, a handle on "~").
 _MOVEIT_CORE = "moveit_core"
 UNKNOWN_CLASS = "?"  # a default class that depends on what is installed
 _MOVEIT1 = (
     Slot(KEYED, "planning_pipelines/{name}/planning_plugin",
          (_MOVEIT_CORE, "planning_interface::PlannerManager"),
-         keys="planning_pipelines/{name}/planning_plugin",
-         given="~planning_pipelines/{name}"),
+         keys="planning_pipelines/{name}/planning_plugin", given="",
+         rebase="planning_pipelines/{name}"),
     Slot(None, "planning_plugin", (_MOVEIT_CORE, "planning_interface::PlannerManager"),
-         unless="planning_pipelines/{name}/planning_plugin", given="~",
+         unless="planning_pipelines/{name}/planning_plugin",
          defaults=(("", UNKNOWN_CLASS),)),
     Slot(KEYED, "planning_pipelines/{name}/request_adapters",
          (_MOVEIT_CORE, "planning_request_adapter::PlanningRequestAdapter"),
@@ -216,6 +231,10 @@ _MOVEIT1 = (
     Slot("sensors", None, ("moveit_ros_perception",
                            "occupancy_map_monitor::OccupancyMapUpdater"),
          type_key="sensor_plugin"),
+    Slot(None, "constraint_samplers",
+         (_MOVEIT_CORE, "constraint_samplers::ConstraintSamplerAllocator"), words=True,
+         site="moveit_ros/planning/constraint_sampler_manager_loader/src/"
+              "constraint_sampler_manager_loader.cpp:71"),
 )
 
 
