@@ -144,6 +144,23 @@ def test_move_group_pipelines_by_name(tmp_path):
     assert _readers(config, "/move_group/planner_configs/?") == []
 
 
+def test_move_group_octomap_updaters_are_the_sensors_entries_with_a_class(tmp_path):
+    """``~sensors`` entries without ``sensor_plugin``, or with an empty one or one
+    starting with ``~``, load nothing (occupancy_map_monitor.cpp:113-130: the Setup
+    Assistant writes ``sensors: [{}]``); another class is loaded, here not found."""
+    config = _configure(tmp_path, [*_OWN_PIPELINE, ParamDecl(
+        "/move_group/sensors", [{}, {"sensor_plugin": ""}, {"sensor_plugin": "~x/Y"}, 3],
+        location=WHERE)])
+    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert config.node("/move_group").completeness == "model"
+    other = tmp_path / "other"
+    other.mkdir()
+    config = _configure(other, [*_OWN_PIPELINE, ParamDecl(
+        "/move_group/sensors", [{}, {"sensor_plugin": "vendor/Updater"}], location=WHERE)])
+    assert [d.message.split()[2] for d in config.diagnostics
+            if d.code == "PLUGIN_NOT_FOUND"] == ["vendor/Updater"]
+
+
 def test_move_group_planner_nobody_models_leaves_it_partial(tmp_path):
     """An unmodelled planner class (CHOMP here) is not found: move_group stays partial
     with that reason, so its unread parameters stay undecided."""

@@ -580,6 +580,8 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
         entries = list(value) if isinstance(value, list) else [value]
         where, conditions = listed.launch_location, listed.launch_conditions
     listing = (listed.name,) if listed is not None else ()
+    if slot.typed_only and listed is not None and isinstance(listed.value, list):
+        entries = [entry for entry in entries if _typed_entry(entry, slot.type_key)]
     for entry in entries[:MAX_PLUGINS]:
         if isinstance(entry, dict):  # ROS 1: {name: ..., type: ...}
             yield Choice(_text(entry.get("name")) or UNKNOWN_MARK,
@@ -594,6 +596,16 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
                          (*conditions, *typed.launch_conditions), (*listing, parameter))
         else:
             yield Choice(name, cls, where, conditions, listing)
+
+
+def _typed_entry(entry: Any, key: str) -> bool:
+    """Whether a list element names a class to load (``Slot.typed_only``): a mapping
+    with a class under ``key`` that is not empty and does not start with ``~``; one whose
+    class is not known statically may be."""
+    if not isinstance(entry, dict) or key not in entry:
+        return False
+    cls = entry[key]
+    return not (isinstance(cls, str) and (not cls or cls.startswith("~")))
 
 
 def _keyed(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choice]:

@@ -108,6 +108,10 @@ class Slot:
     # the key of a ``{name, type}`` mapping of ``names`` that gives the class
     # (move_group's ``sensors``: ``sensor_plugin``)
     type_key: str = "type"
+    # an element of ``names`` that is no mapping, or has no class, an empty one or one
+    # starting with ``~``, loads nothing (MoveIt's octomap updaters,
+    # occupancy_map_monitor.cpp:113-130)
+    typed_only: bool = False
 
 
 @dataclass(frozen=True)
@@ -230,7 +234,7 @@ _MOVEIT1 = (
          (_MOVEIT_CORE, "moveit_sensor_manager::MoveItSensorManager")),
     Slot("sensors", None, ("moveit_ros_perception",
                            "occupancy_map_monitor::OccupancyMapUpdater"),
-         type_key="sensor_plugin"),
+         type_key="sensor_plugin", typed_only=True),
     Slot(None, "constraint_samplers",
          (_MOVEIT_CORE, "constraint_samplers::ConstraintSamplerAllocator"), words=True,
          site="moveit_ros/planning/constraint_sampler_manager_loader/src/"
