@@ -276,3 +276,14 @@ def test_an_override_call_the_extraction_finds_is_kept_once_as_extracted(tmp_pat
                    if c.kind == "read")
     assert reads == [("~extra", "override", 0), ("~rate", "source", 8),
                      ("~topic", "source", 6)]
+
+
+def test_an_override_gives_reads_at_a_line_the_default_a_helper_takes(tmp_path):
+    """MoveIt's kinematics solvers read through ``lookupParam(name, value, default)``,
+    whose default the extraction does not see: ``defaults: [file:line]``."""
+    outcome = _with_override(tmp_path, (
+        "nodes:\n  tiny_driver/relay:\n    defaults: [tiny_driver/scripts/relay:6]\n"))
+    node = from_document(json.loads(outcome.text)).node("relay")
+    read = next(c for c in node.calls if c.kind == "read")
+    assert (read.name, read.has_default) == ("~topics", True)
+    assert outcome.override_problems == []

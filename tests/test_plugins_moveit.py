@@ -198,6 +198,10 @@ MOVE_GROUP_LAUNCH = """
            value="moveit_simple_controller_manager/MoveItSimpleControllerManager"/>
     <param name="trajectory_execution/allowed_goal_duration_margin" value="0.5"/>
     <param name="allowed_execution_duration_scaling" value="1.2"/>
+    <param name="octomap_resolution" value="0.025"/>
+    <rosparam param="sensors">[{}]</rosparam>
+    <rosparam param="controller_list">[]</rosparam>
+    <param name="max_safe_path_cost" value="1"/>
   </group>
   <node name="move_group" pkg="moveit_ros_move_group" type="move_group"/>
 </launch>
@@ -234,7 +238,11 @@ def test_shipped_models_find_a_trajectory_execution_parameter_set_at_the_top(wri
     assert SCALING in found.get("parameter-set-not-read", [])
     unread = {e for e in found.get("parameter-set-not-read", []) if e[0].startswith(
         "parameter:/move_group/")}
-    assert unread == {SCALING}  # the pipeline's, the adapters' and the manager's are read
+    # the pipeline's, the adapters', the manager's and the octomap monitor's are read;
+    # max_safe_path_cost too is read under sense_for_plan/ (plan_with_sensing.cpp:53-62)
+    assert unread == {SCALING, ("parameter:/move_group/max_safe_path_cost",)}
+    # KDL's reads have lookupParam's default: none is read but never set
+    assert not found.get("parameter-read-not-set")
 
 
 def test_shipped_models_leave_move_group_undecided_with_an_unmodelled_planner(write_tree):

@@ -55,7 +55,8 @@ REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
 # extractor took as unconditional under the condition that guards them, name calls by
 # the elements of a list parameter or a numbered family of parameters, and drop the
 # calls of source files the node links but never runs (a library's other classes)
-OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles", "aliases")
+OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles", "aliases",
+                 "defaults")
 
 
 class ListError(ValueError):
@@ -267,6 +268,7 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
             _override_handles(node, block.get("handles"), relative, found)
             _override_drop(node, block.get("drop"), relative, found)
             _override_conditions(node, block.get("conditions"), relative, found)
+            _override_defaults(node, block.get("defaults"), relative, found)
             _override_names(node, later.get(name, block.get("names")), relative, found)
             node.calls = declared_defaults(node.calls)
         if isinstance(block, dict) and isinstance(block.get("aliases"), list):
@@ -347,6 +349,17 @@ def _override_drop(node: Node, files: Any, relative: str, found: list[Diagnostic
             f"{node.name}: 'drop' names files with no call of the node: "
             f"{', '.join(unknown)}")))
     node.calls = [c for c in node.calls if not any(dropped(c, f) for f in files)]
+
+
+def _override_defaults(node: Node, places: Any, relative: str,
+                       found: list[Diagnostic]) -> None:
+    """``defaults: [file:line, ...]``: the reads made at these places have a default in
+    code that the extraction did not see (one a helper takes as an argument: MoveIt's
+    ``KinematicsBase::lookupParam(name, value, default)``)."""
+    for place in places if isinstance(places, list) else []:
+        for call in _calls_at(node, {"calls": place}, relative, found, True):
+            if call.kind == "read":
+                call.has_default = True
 
 
 def _override_names(node: Node, entries: Any, relative: str,
