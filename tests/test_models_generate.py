@@ -170,8 +170,8 @@ def test_an_override_entry_that_mixes_each_and_numbered_is_refused(tmp_path):
         "nodes:\n  tiny_driver/relay:\n    names:\n"
         "      - {calls: tiny_driver/scripts/relay:8, param: ~input, each: ., numbered: true}\n"
         "    drop: [tiny_driver/scripts/nowhere]\n")).override_problems
-    assert len(problems) == 2 and "tiny_driver/scripts/nowhere" in problems[0]
-    assert "names no call" in problems[1]
+    assert len(problems) == 2  # names entries are tried before the rest of the block
+    assert "names no call" in problems[0] and "tiny_driver/scripts/nowhere" in problems[1]
 
 
 def test_an_override_names_a_call_by_the_value_of_a_parameter_with_a_default(tmp_path):
@@ -208,6 +208,62 @@ def test_an_override_puts_the_calls_of_an_unknown_handle_in_a_namespace():
     assert [d.code for d in found] == ["HINT_INVALID"]
 
 
+def test_an_override_puts_the_calls_of_an_unknown_private_namespace_in_one():
+    """MoveIt's OMPL planner serves its reconfigure server on ``NodeHandle(nh_,
+    ompl_ns)`` (ompl_planner_manager.cpp:112-114), extracted ``~?/set_parameters``."""
+    from haros_arch.model.location import Location
+    from haros_arch.model.source import Node, PrimitiveCall
+    from haros_arch.models.generate import _override_handles
+
+    node = Node("p", "planner", calls=[
+        PrimitiveCall("server", "~?/set_parameters", location=Location("p", "f.cpp", 4),
+                      handle_namespace="~?"),
+        PrimitiveCall("publish", "~?x/y", location=Location("p", "f.cpp", 4))])
+    found: list = []
+    _override_handles(node, [{"file": "f.cpp", "kinds": ["server", "publish"],
+                              "namespace": "~ompl"}], "noetic/p.yaml", found)
+    assert [c.name for c in node.calls] == ["~ompl/set_parameters", "~?x/y"]
+    assert found == []
+
+
+def test_an_override_drops_the_calls_of_one_line_and_names_those_of_another():
+    """move_group's dynamic_reconfigure members, also taken for default-constructed
+    servers at their declarations (trajectory_execution_manager.cpp:82), are dropped by
+    line; the planning scene monitor's, in a namespace of its own, is put there by line."""
+    from haros_arch.model.location import Location
+    from haros_arch.model.source import Node, PrimitiveCall
+    from haros_arch.models.generate import _override_drop, _override_handles
+
+    def call(name, line):
+        return PrimitiveCall("server", name, location=Location("p", "m.cpp", line))
+
+    node = Node("p", "host", calls=[call("~set_parameters", 64), call("~set_parameters", 82),
+                                    call("?/set_parameters", 65), call("?/other", 90)])
+    found: list = []
+    _override_drop(node, ["m.cpp:82"], "noetic/p.yaml", found)
+    _override_handles(node, [{"file": "m.cpp", "line": 65, "kinds": ["server"],
+                              "namespace": "~monitor"}], "noetic/p.yaml", found)
+    assert [(c.name, c.location.line) for c in node.calls] == [
+        ("~set_parameters", 64), ("~monitor/set_parameters", 65), ("?/other", 90)]
+    assert found == []
+    _override_drop(node, ["m.cpp:7"], "noetic/p.yaml", found)
+    assert [d.code for d in found] == ["HINT_INVALID"]
+
+
+def test_override_names_apply_before_hints_complete_unknown_calls(tmp_path):
+    """A hint completes a call whose name has ``?``; a names entry for that call's line
+    is applied first, so the hint is a call of its own (MoveIt's OMPL planner: its
+    loop's reads named per line, the samplers' seeds added as getters)."""
+    outcome = _with_override(tmp_path, (
+        "nodes:\n  tiny_driver/relay:\n    names:\n"
+        "      - {calls: tiny_driver/scripts/relay:8, name: chatter}\n"
+        "    subscribers:\n      - {topic: other, msg_type: std_msgs/String}\n"))
+    node = from_document(json.loads(outcome.text)).node("relay")
+    assert sorted(c.name for c in node.calls if c.kind == "subscribe") == [
+        "chatter", "other"]
+    assert outcome.override_problems == []
+
+
 def test_an_override_call_the_extraction_finds_is_kept_once_as_extracted(tmp_path):
     """cartographer_ros' override lists the publishers the extractor missed; once the
     extractor reads them, the model keeps each once, at its place in the code."""
@@ -220,3 +276,14 @@ def test_an_override_call_the_extraction_finds_is_kept_once_as_extracted(tmp_pat
                    if c.kind == "read")
     assert reads == [("~extra", "override", 0), ("~rate", "source", 8),
                      ("~topic", "source", 6)]
+
+
+def test_an_override_gives_reads_at_a_line_the_default_a_helper_takes(tmp_path):
+    """MoveIt's kinematics solvers read through ``lookupParam(name, value, default)``,
+    whose default the extraction does not see: ``defaults: [file:line]``."""
+    outcome = _with_override(tmp_path, (
+        "nodes:\n  tiny_driver/relay:\n    defaults: [tiny_driver/scripts/relay:6]\n"))
+    node = from_document(json.loads(outcome.text)).node("relay")
+    read = next(c for c in node.calls if c.kind == "read")
+    assert (read.name, read.has_default) == ("~topics", True)
+    assert outcome.override_problems == []

@@ -55,7 +55,8 @@ REPOSITORY = re.compile(r"^github:[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+$")
 # extractor took as unconditional under the condition that guards them, name calls by
 # the elements of a list parameter or a numbered family of parameters, and drop the
 # calls of source files the node links but never runs (a library's other classes)
-OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles", "aliases")
+OVERRIDE_KEYS = ("complete", "partial", "conditions", "names", "drop", "handles", "aliases",
+                 "defaults")
 
 
 class ListError(ValueError):
@@ -237,6 +238,15 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
     where = Location(file=relative)
     plain = {name: {k: v for k, v in block.items() if k not in OVERRIDE_KEYS}
              for name, block in blocks.items() if isinstance(block, dict)}
+    # names first, where their calls are extracted: a hint completes what is left (a
+    # getter of a name with ``?`` would otherwise take a call a names entry renames);
+    # then the entries of calls the hints add
+    later: dict[str, list[Any]] = {}
+    for name, node in by_name.items():
+        block = blocks.get(name)
+        if isinstance(block, dict):
+            later[name] = []
+            _override_names(node, block.get("names"), relative, found, later[name])
     apply_node_hints(by_name, plain, where)
     for name, node in by_name.items():
         for call in node.calls:
@@ -258,7 +268,8 @@ def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> s
             _override_handles(node, block.get("handles"), relative, found)
             _override_drop(node, block.get("drop"), relative, found)
             _override_conditions(node, block.get("conditions"), relative, found)
-            _override_names(node, block.get("names"), relative, found)
+            _override_defaults(node, block.get("defaults"), relative, found)
+            _override_names(node, later.get(name, block.get("names")), relative, found)
             node.calls = declared_defaults(node.calls)
         if isinstance(block, dict) and isinstance(block.get("aliases"), list):
             node.aliases = [str(a) for a in block["aliases"] if isinstance(a, str)]
@@ -291,20 +302,24 @@ def _override_conditions(node: Node, entries: Any, relative: str,
 def _override_handles(node: Node, entries: Any, relative: str,
                       found: list[Diagnostic]) -> None:
     """``handles: [{file: F, kinds: [read], namespace: "~"}]``: the calls of those kinds
-    made in F whose handle the extractor could not tell (names ``?/x``, a NodeHandle a
-    constructor takes) are made on a handle of that namespace (``~x``; ``ns/x``)."""
+    made in F (at ``line`` only, when given) whose handle the extractor could not tell
+    (names ``?/x``, a NodeHandle a constructor takes; ``~?/x`` and ``/?/x``, a handle in
+    an unknown namespace) are made on a handle of that namespace (``~x``; ``ns/x``)."""
     for entry in entries if isinstance(entries, list) else []:
         fields = entry if isinstance(entry, dict) else {}
         file, kinds, namespace = fields.get("file"), fields.get("kinds"), fields.get(
             "namespace")
+        line = fields.get("line")
         hit = [c for c in node.calls if c.location.file == file and c.kind in kinds
-               and c.name.startswith(UNKNOWN_MARK + "/")] if isinstance(kinds, list) else []
+               and c.name.startswith(tuple(lead + UNKNOWN_MARK + "/" for lead in (
+                   "", "~", "/"))) and line in (None, c.location.line)
+               ] if isinstance(kinds, list) else []
         if not hit or not isinstance(namespace, str):
             found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
                 f"{node.name}: handles entry {entry!r} names no call of the node")))
             continue
         for call in hit:
-            rest = call.name[len(UNKNOWN_MARK) + 1:]
+            rest = call.name.split(UNKNOWN_MARK + "/", 1)[1]
             call.name = namespace + rest if namespace.endswith(("~", "/")) else (
                 f"{namespace}/{rest}" if namespace else rest)
             call.handle_namespace, call.origin = None, "override"
@@ -312,30 +327,51 @@ def _override_handles(node: Node, entries: Any, relative: str,
 
 def _override_drop(node: Node, files: Any, relative: str, found: list[Diagnostic]) -> None:
     """``drop: [file, ...]``: the node's calls made in these files are not its own (a
-    library the executable links, whose other classes its ``main`` never makes)."""
+    library the executable links, whose other classes its ``main`` never makes);
+    ``file:line``: those made at that line (a member the extraction also took for
+    default-constructed, which every constructor initialises otherwise)."""
     if files is None:
         return
     if not isinstance(files, list) or not all(isinstance(f, str) for f in files):
         found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
             f"{node.name}: 'drop' must be a list of source files")))
         return
-    unknown = [f for f in files if not any(c.location.file == f for c in node.calls)]
+
+    def dropped(call: PrimitiveCall, entry: str) -> bool:
+        place = _place(entry)
+        if place is not None:
+            return (call.location.file, call.location.line) == place
+        return call.location.file == entry
+
+    unknown = [f for f in files if not any(dropped(c, f) for c in node.calls)]
     if unknown:
         found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
             f"{node.name}: 'drop' names files with no call of the node: "
             f"{', '.join(unknown)}")))
-    node.calls = [c for c in node.calls if c.location.file not in files]
+    node.calls = [c for c in node.calls if not any(dropped(c, f) for f in files)]
+
+
+def _override_defaults(node: Node, places: Any, relative: str,
+                       found: list[Diagnostic]) -> None:
+    """``defaults: [file:line, ...]``: the reads made at these places have a default in
+    code that the extraction did not see (one a helper takes as an argument: MoveIt's
+    ``KinematicsBase::lookupParam(name, value, default)``)."""
+    for place in places if isinstance(places, list) else []:
+        for call in _calls_at(node, {"calls": place}, relative, found, True):
+            if call.kind == "read":
+                call.has_default = True
 
 
 def _override_names(node: Node, entries: Any, relative: str,
-                    found: list[Diagnostic]) -> None:
+                    found: list[Diagnostic], missed: list[Any] | None = None) -> None:
     """``names: [{calls: file:line, param: ~topics, each: topic}]``: the calls made at
     ``calls`` are named by the field ``each`` of every element of the list parameter
     ``param`` (a name the code reads through a helper the extractor cannot follow);
     without ``each``, by the value of ``param`` (``default:`` the code's default);
     ``numbered: true`` instead of ``each``: by each parameter ``param0``, ``param1``, ...
     (robot_localization's ``imu0``); ``name``: the name as the code writes it, where the
-    extractor could not tell (``?`` for the parameter's value alone)."""
+    extractor could not tell (``?`` for the parameter's value alone). ``missed``: where
+    the entries that name no call go, instead of a diagnostic (tried again later)."""
     for entry in entries if isinstance(entries, list) else []:
         if not isinstance(entry, dict):
             entry = {}
@@ -347,6 +383,10 @@ def _override_names(node: Node, entries: Any, relative: str,
         else:  # only the name as the code writes it
             usable = each is None and not numbered and isinstance(name, str)
         usable = usable and all(v is None or isinstance(v, str) for v in (name, default))
+        if missed is not None and usable and not _calls_at(node, entry, relative, [],
+                                                            usable, mark=False):
+            missed.append(entry)
+            continue
         for call in _calls_at(node, entry, relative, found, usable):
             if isinstance(name, str):
                 call.name, call.handle_namespace = name, None
@@ -356,7 +396,7 @@ def _override_names(node: Node, entries: Any, relative: str,
 
 
 def _calls_at(node: Node, entry: Any, relative: str, found: list[Diagnostic],
-              usable: bool) -> list[PrimitiveCall]:
+              usable: bool, mark: bool = True) -> list[PrimitiveCall]:
     """The node's calls at an override entry's ``calls: file:line`` (marked as changed by
     the override); none, and a diagnostic, when the entry is malformed or names none."""
     place = _place(entry.get("calls")) if isinstance(entry, dict) else None
@@ -365,7 +405,7 @@ def _calls_at(node: Node, entry: Any, relative: str, found: list[Diagnostic],
         found.append(diag.make("HINT_INVALID", Location(file=relative), detail=(
             f"{node.name}: override entry {entry!r} names no call of the node")))
         return []
-    for call in hit:
+    for call in hit if mark else ():
         call.origin = "override"
     return hit
 

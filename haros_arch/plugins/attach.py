@@ -61,6 +61,7 @@ from .hosts import (
     DESCRIBED,
     EXPORTED,
     EXTENDS,
+    KEYED,
     LOOKUP_PACKAGES,
     SPAWNER,
     Child,
@@ -111,6 +112,9 @@ class Choice:
     # why the class is not known where no parameter names it (the robot description a
     # controller manager reads: HARDWARE_UNKNOWN)
     why: str | None = None
+    # the host's namespace (relative to its private one) the plugin's private names
+    # move to (``Slot.rebase``)
+    moved_to: str | None = None
 
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
@@ -162,6 +166,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     choices = list(_exported(instance, slot, params, nodes))
                 elif slot.names == DESCRIBED:
                     choices = list((hardware or {}).get(id(instance), ()))
+                elif slot.names == KEYED:
+                    choices = list(_keyed(instance, slot, params))
                 else:
                     choices = list(_chosen(instance, slot, params))
                     unseen = _unseen_choice(instance, slot, params)
@@ -169,7 +175,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                         own_partial(instance, unseen, owned)
                 for choice in choices:
                     out.extend(_load(choice, slot, instance, index, workspace, models,
-                                     params, config, owned, made, loaded, decl))
+                                     params, config, owned, made, loaded, decl,
+                                     frozenset(s.site for s in host.slots if s.site)))
     out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
     out.extend(behavior_trees.attach(config, started, params, workspace,
                                      lambda instance, reason: own_partial(
@@ -193,8 +200,10 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
           workspace: Workspace, models: PluginModels | None, params: Params,
           config: Configuration, owned: set[int], made: dict[int, set[tuple[Any, ...]]],
           loaded: set[tuple[int, str]], decl: NodeDecl | None,
+          sites: frozenset[str] = frozenset(),
           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
-    """The calls one chosen plugin adds: to the host, or to a node of its own."""
+    """The calls one chosen plugin adds: to the host, or to a node of its own; ``sites``:
+    the places loading plugins whose classes the host's slots attach (``Slot.site``)."""
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     node = _lookup(choice, index, workspace, models)
     reader = instance
@@ -238,10 +247,13 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
             reasons = node.completeness_reasons[:1] or [node.completeness]
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
-        elif node.plugin_loads:  # a plugin that loads plugins (nav2 MPPI's critics)
+        elif set(node.plugin_loads) - sites:  # a plugin that loads plugins (MPPI's critics)
             own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
         calls = [_under(call, plugin, choice.conditions, slot.bases)
                  for call in _with_base(node, index, workspace, models)]
+        if choice.moved_to:
+            calls = [replace(call, name=_moved(call.name, choice.moved_to))
+                     for call in calls]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
             node.plugin_class or "", instance.ros_version)
         if row is not None:
@@ -387,6 +399,10 @@ def _loading_reads(choice: Choice, host: NodeInstance, own: NodeInstance,
                     location=choice.location, conditions=choice.conditions,
                     origin="plugin")]
                 break
+        else:
+            if host.ros_version == 1:  # found outside its namespace (``searchParam``)
+                yield host, [PrimitiveCall("read", full, location=choice.location,
+                                           conditions=choice.conditions, origin="plugin")]
 
 
 def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
@@ -537,13 +553,16 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
         base = instance.name.rstrip("/") + "/"
     if slot.names is None:
         assert slot.type_of is not None
+        if slot.unless is not None and _keys(instance, slot.unless, params):
+            return
         given = _parameter(params, base + slot.type_of)
         if given is not None:
-            yield Choice("", _text(given.value), given.launch_location,
-                         given.launch_conditions, (given.name,))
+            yield from _typed(Choice(slot.given or "", None, given.launch_location,
+                                     given.launch_conditions, (given.name,)),
+                              given, slot)
         else:
             for default, default_cls in slot.defaults:
-                yield Choice(default, default_cls, instance.location)
+                yield Choice(slot.given or default, default_cls, instance.location)
         return
     listed = _parameter(params, base + slot.names)
     where: Location
@@ -562,10 +581,12 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
         entries = list(value) if isinstance(value, list) else [value]
         where, conditions = listed.launch_location, listed.launch_conditions
     listing = (listed.name,) if listed is not None else ()
+    if slot.typed_only and listed is not None and isinstance(listed.value, list):
+        entries = [entry for entry in entries if _typed_entry(entry, slot.type_key)]
     for entry in entries[:MAX_PLUGINS]:
         if isinstance(entry, dict):  # ROS 1: {name: ..., type: ...}
-            yield Choice(_text(entry.get("name")) or UNKNOWN_MARK, _text(entry.get("type")),
-                         where, conditions, listing)
+            yield Choice(_text(entry.get("name")) or UNKNOWN_MARK,
+                         _text(entry.get(slot.type_key)), where, conditions, listing)
             continue
         name = _text(entry) or UNKNOWN_MARK
         cls = dict(slot.defaults).get(name)
@@ -576,6 +597,69 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
                          (*conditions, *typed.launch_conditions), (*listing, parameter))
         else:
             yield Choice(name, cls, where, conditions, listing)
+
+
+def _typed_entry(entry: Any, key: str) -> bool:
+    """Whether a list element names a class to load (``Slot.typed_only``): a mapping
+    with a class under ``key`` that is not empty and does not start with ``~``; one whose
+    class is not known statically may be."""
+    if not isinstance(entry, dict) or key not in entry:
+        return False
+    cls = entry[key]
+    return not (isinstance(cls, str) and (not cls or cls.startswith("~")))
+
+
+def _keyed(instance: NodeInstance, slot: Slot, params: Params) -> Iterator[Choice]:
+    """The plugins of a KEYED slot: for each name its ``keys`` finds, the classes of
+    ``type_of`` for that name, in the namespace where the name was found."""
+    assert slot.keys is not None and slot.type_of is not None
+    for name, scope in _keys(instance, slot.keys, params, slot.search)[:MAX_PLUGINS]:
+        typed = _parameter(params, scope + slot.type_of.format(name=name))
+        if typed is None:
+            continue
+        given = ("{name}" if slot.given is None else slot.given).format(name=name)
+        moved = slot.rebase.format(name=name) if slot.rebase else None
+        yield from _typed(Choice(given, None, typed.launch_location,
+                                 typed.launch_conditions, (typed.name,), moved_to=moved),
+                          typed, slot)
+
+
+def _keys(instance: NodeInstance, pattern: str, params: Params,
+          search: bool = False) -> list[tuple[str, str]]:
+    """The names ``{name}`` stands for in the launch parameters ``pattern`` matches,
+    with the namespace each was found in: the host's private one, or with ``search``
+    the nearest of it and its parents that has the parameter (``searchParam``)."""
+    scopes = [instance.name.rstrip("/") + "/"]
+    if search:
+        parts = scopes[0].strip("/").split("/")
+        scopes += ["/" + "/".join(parts[:n]) + "/" if n else "/"
+                   for n in range(len(parts) - 1, -1, -1)]
+    head, _, tail = pattern.partition("{name}")
+    found: dict[str, str] = {}
+    for scope in scopes:
+        start, end = scope + head, tail
+        for (kind, full), each in params.by_name.items():
+            if kind is not Parameter or not isinstance(each, Parameter) or not (
+                    each.set_by_launch and full.startswith(start) and full.endswith(end)):
+                continue
+            name = full[len(start):len(full) - len(end)]
+            if name and "/" not in name and UNKNOWN_MARK not in name:
+                found.setdefault(name, scope)
+    return sorted(found.items())
+
+
+def _typed(choice: Choice, typed: Parameter, slot: Slot) -> Iterator[Choice]:
+    """The choices of one class parameter: its class, or with ``slot.words`` each of
+    the white-space separated classes of its string (one unknown class when the value
+    is not known)."""
+    if not slot.words:
+        yield replace(choice, cls=_text(typed.value))
+        return
+    words = _words(typed.value)
+    if words is None:
+        yield replace(choice, cls=UNKNOWN_MARK)
+    for word in (words or [])[:MAX_PLUGINS]:
+        yield replace(choice, cls=word)
 
 
 def _added(instance: NodeInstance, slot: Slot, params: Params,
@@ -957,7 +1041,18 @@ def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
                    conditions=(*conditions, *call.conditions))
 
 
+def _moved(name: str, namespace: str) -> str:
+    """A private name (``~x``, ``~/x``) moved into ``namespace`` of the host's private
+    one; other names as they are."""
+    if not name.startswith("~"):
+        return name
+    return "~" + namespace.strip("/") + "/" + name[1:].lstrip("/")
+
+
 def _named(name: str | None, plugin: str) -> Any:
+    """``name`` with its unknown first part the plugin name; a plugin name in the host's
+    private namespace (``~ns``, ``~``: a MoveIt pipeline's) is that whether the call's
+    handle was private or not (the namespace the host passes is absolute)."""
     if name is None or not plugin:
         return name
     for lead in ("~/", "~", ""):
@@ -965,6 +1060,9 @@ def _named(name: str | None, plugin: str) -> Any:
             rest = name[len(lead) + 1:]
             # a prefix only: a name that is wholly unknown is not the plugin name
             if rest[:1] in ("/", ".") and len(rest) > 1:
+                if plugin.startswith("~"):
+                    inner = plugin.lstrip("~/")
+                    return "~" + (inner + rest if inner else rest[1:])
                 return lead + plugin + rest
     return name
 

@@ -143,12 +143,14 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                     sources += inherited_sources(registered, sources, library.sources,
                                                  workspace, library.elsewhere)
                     if kind == "plugin":
-                        # and the code of the classes it builds of other packages'
-                        # libraries it links (dwa_local_planner's members of
-                        # base_local_planner's classes), not of those it is given
-                        sources += [s for s in built_sources(sources, workspace,
-                                                             library.elsewhere)
-                                    if s not in sources]
+                        # and the code of the classes it builds of the libraries it
+                        # links, of its package (MoveIt's OMPL planner builds
+                        # moveit_ompl_interface's OMPLInterface) or of others
+                        # (dwa_local_planner's members of base_local_planner's
+                        # classes), not of those it is given
+                        sources += [s for s in built_sources(
+                            sources, workspace, _with_linked(library))
+                            if s not in sources]
                     if kind == "nodelet" and library.with_elsewhere is not None:
                         # and what it names of other packages' libraries it links:
                         # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose
@@ -163,6 +165,16 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                                   location=where, plugin_class=type_name or None,
                                   plugin_base=base or None))
     return nodes, found
+
+
+def _with_linked(library: Library) -> Callable[[], list[list[str]]]:
+    """The groups of sources a plugin's code may build classes of: those of the
+    package's libraries its library links (beyond its own), then other packages'."""
+    def groups() -> list[list[str]]:
+        own = set(library.own or ())
+        linked = [s for s in library.sources if s not in own] if library.own else []
+        return [linked, *library.elsewhere()] if linked else library.elsewhere()
+    return groups
 
 
 _PROLOGUE = re.compile(rb"^(\xef\xbb\xbf)?\s*(<\?xml[^>]*\?>)?")

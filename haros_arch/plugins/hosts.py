@@ -77,6 +77,41 @@ class Slot:
     # the version of the host's package from which it loads these plugins; an older one
     # loads none (its code does the work itself); not known: it is taken to load them
     since: tuple[int, ...] | None = None
+    # ``names`` is KEYED: the plugin names are the ``{name}`` parts of the parameters
+    # set that ``keys`` matches (move_group's ``planning_pipelines/{name}/planning_plugin``);
+    # each plugin's classes are those of ``type_of`` for that name
+    keys: str | None = None
+    # KEYED: ``keys`` is looked up in the host's private namespace and then in each of
+    # its parents, the first found winning (roscpp's ``searchParam``)
+    search: bool = False
+    # the slot loads nothing when a parameter matching this ``keys``-like pattern is set
+    # (move_group's pipeline of its own namespace, used only without
+    # ``planning_pipelines/<name>/planning_plugin``)
+    unless: str | None = None
+    # the value of ``type_of`` is one string of classes separated by white space, each
+    # loaded under the same plugin name (a pipeline's ``request_adapters``)
+    words: bool = False
+    # what the host passes the plugin where its code takes names from it, ``{name}`` the
+    # plugin name (a MoveIt pipeline's planner gets the pipeline's namespace,
+    # ``~planning_pipelines/{name}``); None: the plugin name itself
+    given: str | None = None
+    # the host's namespace (relative to its private one, ``{name}`` the plugin name) that
+    # the plugin's private names move to: its code makes them on a handle the host gives
+    # it, which the extraction took for ``~`` (a MoveIt pipeline's planner, given the
+    # pipeline's namespace; OMPL's ``nh_("~")`` replaced by ``NodeHandle(ns)``)
+    rebase: str | None = None
+    # the place (``file:line``, as ``Node.plugin_loads`` says) where a plugin's code loads
+    # the classes this slot attaches, from the host's parameters (the constraint samplers
+    # MoveIt's OMPL planner loads with move_group's ``~constraint_samplers``): a plugin
+    # loading there is not partial for it
+    site: str | None = None
+    # the key of a ``{name, type}`` mapping of ``names`` that gives the class
+    # (move_group's ``sensors``: ``sensor_plugin``)
+    type_key: str = "type"
+    # an element of ``names`` that is no mapping, or has no class, an empty one or one
+    # starting with ``~``, loads nothing (MoveIt's octomap updaters,
+    # occupancy_map_monitor.cpp:113-130)
+    typed_only: bool = False
 
 
 @dataclass(frozen=True)
@@ -132,6 +167,7 @@ HARDWARE_BASES = ("hardware_interface", "hardware_interface::SystemInterface",
                   "hardware_interface::ActuatorInterface",
                   "hardware_interface::SensorInterface")
 EXPORTED = "*exported"  # every class exported with one of the slot's bases
+KEYED = "*keyed"  # the plugin names are parts of parameter names (``Slot.keys``)
 
 _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
                                                     "nav2_costmap_2d::Layer"),
@@ -145,6 +181,65 @@ _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
 def _ros1_costmap(prefix: str) -> Slot:
     return Slot(f"{prefix}plugins", None, ("costmap_2d", "costmap_2d::Layer"),
                 prefix=prefix, pre_hydro=True)
+
+
+# MoveIt 1's move_group loads, besides its capabilities (moveit noetic-devel 7c0343f0, read
+# in the source):
+# - a planning pipeline per ``~planning_pipelines/<name>`` that sets ``planning_plugin``
+#   (move_group.cpp:214-236), with the handle of that namespace (moveit_cpp.cpp:141-146);
+#   none: one pipeline on ``~`` itself (:263-269, "deprecated Melodic behavior"). A
+#   pipeline loads the planner of ``planning_plugin`` and the request adapters of the
+#   string ``request_adapters`` (planning_pipeline.cpp:55-67), gives the planner the
+#   pipeline's namespace (:121; OMPL makes its handle of it, ompl_planner_manager.cpp:110,
+#   its names' unknown parts being groups, not the pipeline) and each adapter its handle
+#   (:156); without
+#   ``planning_plugin`` it takes the first class declared (:101-112), which depends on
+#   what is installed: not modelled (the pipeline then loads nothing here);
+# - a kinematics solver per group of the semantic description, the white-space separated
+#   classes of ``robot_description_kinematics/<group>/kinematics_solver`` found by
+#   ``searchParam`` from ``~`` (kinematics_plugin_loader.cpp:295-328), each initialised
+#   with the group's name (:179);
+# - the controller manager ``~moveit_controller_manager`` (trajectory_execution_manager.cpp:
+#   147-172; not set, the only class declared, which depends on what is installed);
+# - the sensor manager ``~moveit_sensor_manager`` (plan_with_sensing.cpp:87-104);
+# - an octomap updater per entry of ``~sensors``, its class ``sensor_plugin``
+#   (occupancy_map_monitor.cpp:106-148);
+# - the constraint samplers of the string ``~constraint_samplers`` (none when not set),
+#   which ConstraintSamplerManagerLoader loads for the OMPL planner and pick and place
+#   (constraint_sampler_manager_loader.cpp:49-71, a handle on "~").
+_MOVEIT_CORE = "moveit_core"
+UNKNOWN_CLASS = "?"  # a default class that depends on what is installed
+_MOVEIT1 = (
+    Slot(KEYED, "planning_pipelines/{name}/planning_plugin",
+         (_MOVEIT_CORE, "planning_interface::PlannerManager"),
+         keys="planning_pipelines/{name}/planning_plugin", given="",
+         rebase="planning_pipelines/{name}"),
+    Slot(None, "planning_plugin", (_MOVEIT_CORE, "planning_interface::PlannerManager"),
+         unless="planning_pipelines/{name}/planning_plugin",
+         defaults=(("", UNKNOWN_CLASS),)),
+    Slot(KEYED, "planning_pipelines/{name}/request_adapters",
+         (_MOVEIT_CORE, "planning_request_adapter::PlanningRequestAdapter"),
+         keys="planning_pipelines/{name}/planning_plugin", words=True,
+         given="~planning_pipelines/{name}"),
+    Slot(None, "request_adapters",
+         (_MOVEIT_CORE, "planning_request_adapter::PlanningRequestAdapter"),
+         unless="planning_pipelines/{name}/planning_plugin", words=True, given="~"),
+    Slot(KEYED, "robot_description_kinematics/{name}/kinematics_solver",
+         (_MOVEIT_CORE, "kinematics::KinematicsBase"),
+         keys="robot_description_kinematics/{name}/kinematics_solver", search=True,
+         words=True),
+    Slot(None, "moveit_controller_manager",
+         (_MOVEIT_CORE, "moveit_controller_manager::MoveItControllerManager")),
+    Slot(None, "moveit_sensor_manager",
+         (_MOVEIT_CORE, "moveit_sensor_manager::MoveItSensorManager")),
+    Slot("sensors", None, ("moveit_ros_perception",
+                           "occupancy_map_monitor::OccupancyMapUpdater"),
+         type_key="sensor_plugin", typed_only=True),
+    Slot(None, "constraint_samplers",
+         (_MOVEIT_CORE, "constraint_samplers::ConstraintSamplerAllocator"), words=True,
+         site="moveit_ros/planning/constraint_sampler_manager_loader/src/"
+              "constraint_sampler_manager_loader.cpp:71"),
+)
 
 
 HOSTS: tuple[Host, ...] = (
@@ -248,7 +343,8 @@ HOSTS: tuple[Host, ...] = (
                  "move_group/MoveGroupStateValidationService",
                  "move_group/MoveGroupGetPlanningSceneService",
                  "move_group/ApplyPlanningSceneService", "move_group/ClearOctomapService")),
-             disable="disable_capabilities"),)),
+             disable="disable_capabilities"),
+        *_MOVEIT1)),
     # mavros (mavros/src/lib/mavros.cpp, mavros_uas.cpp) loads every class its plugin
     # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
     # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
@@ -310,12 +406,23 @@ EXTENDS: dict[str, str] = {
 # (ros_control_plugins.xml) and ROS 1's gripper_action_controller
 # (ros_control_plugins.xml), and ros2_controllers' parallel gripper is
 # ``parallel_gripper_action_controller/GripperActionController``, exported by
-# parallel_gripper_controller (ros_control_plugins.xml)
+# parallel_gripper_controller (ros_control_plugins.xml);
+# MoveIt 1's plugins are named by
+# their namespaces: ``ompl_interface/OMPLPlanner`` (moveit_planners_ompl),
+# ``default_planner_request_adapters/...`` (moveit_ros_planning), the kinematics solvers
+# ``kdl_kinematics_plugin/...`` and the like (moveit_kinematics), the octomap updaters
+# ``occupancy_map_monitor/...`` (moveit_ros_perception)
 _TRAJECTORY = ("joint_trajectory_controller",)
 _GRIPPER = ("gripper_controllers", "gripper_action_controller")
 LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
     "move_group": ("moveit_ros_move_group", "moveit_ros_manipulation"),
     "pcl": ("pcl_ros",),
+    "ompl_interface": ("moveit_planners_ompl",),
+    "default_planner_request_adapters": ("moveit_ros_planning",),
+    **{kind: ("moveit_kinematics",) for kind in (
+        "kdl_kinematics_plugin", "lma_kinematics_plugin", "srv_kinematics_plugin",
+        "cached_ik_kinematics_plugin")},
+    "occupancy_map_monitor": ("moveit_ros_perception",),
     "mock_components": ("hardware_interface",),
     "fake_components": ("hardware_interface",),
     "parallel_gripper_action_controller": ("parallel_gripper_controller",),

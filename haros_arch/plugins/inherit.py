@@ -456,9 +456,12 @@ def _built(classes: set[str], texts: list[str]) -> set[tuple[str, str | None]]:
 # the start of a line after its indentation and return type: a member of ``C`` defined,
 # indented or not (navigation's files define their classes' members inside an indented
 # ``namespace`` block); a call ``C::f(x);`` ends without a body, and one inside an
-# expression (``v = c ? Eigen::Vector3d::Zero() : w; if (x) {``) starts no line
+# expression (``v = c ? Eigen::Vector3d::Zero() : w; if (x) {``) starts no line; the
+# class may be written with its namespaces (MoveIt's ``ompl_interface::OMPLInterface::
+# OMPLInterface(...)``, outside any ``namespace`` block)
 _DEFINITION = re.compile(r"^[ \t]*(?:(?!return\b)[\w:<>,*&]+[ \t]+[*&]*)*?[*&]*"
-                         r"\b([A-Za-z_]\w*)\s*(?:<[^;{}()<>]*>)?\s*::\s*(~?\w+)\s*"
+                         r"\b(?:\w+\s*::\s*)*"
+                         r"([A-Za-z_]\w*)\s*(?:<[^;{}()<>]*>)?\s*::\s*(~?\w+)\s*"
                          r"\([^;{}]*\)\s*(?:const\b\s*)?(?:noexcept\b\s*)?"
                          r"(:(?!:)[^;{]*)?\{", re.MULTILINE)
 
