@@ -466,8 +466,9 @@ def _namespace_values(config: Configuration) -> None:
             for key in path:
                 branch = branch.setdefault(key, {})
             branch[leaf] = child.value
-        for child in below:
-            child.read_as_part_of = param
+        if not all(link.call is not None and link.call.keys_only for link in param.readers):
+            for child in below:  # unless every reader takes its keys alone
+                child.read_as_part_of = param
         param.value = None if any(c.is_unresolved for c in below) else tree
         param.launch_type = "dict"
         param.set_by_launch = True

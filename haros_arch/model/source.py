@@ -107,6 +107,12 @@ class PrimitiveCall:
     # whole (``graph.build._namespace_values``): what the configuration sets under the
     # prefix is read as part of it
     under: bool = field(default=False, metadata={"optional": True})
+    # ROS 1: a namespace read whole (``getParam("", dict)``) whose value the code uses for
+    # its keys alone (``for (auto& pair : dict)`` naming only ``pair.first``, and
+    # ``getType()`` / ``size()`` / ``valid()``): mavros' distance_sensor iterates the
+    # sensors' names and reads each one's parameters by name. What is set under it is
+    # not read as part of it (``graph.build._namespace_values``)
+    keys_only: bool = field(default=False, metadata={"optional": True})
     # ROS 1: the namespace of the NodeHandle the call is made on, as written (``input``,
     # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
     # before it resolves the name in it, so the graph resolves it first

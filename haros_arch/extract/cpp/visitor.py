@@ -1701,6 +1701,8 @@ class CallFinder:
                 has_default=has_default or isinstance(written, PrefixName),
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
                 searched=spec.searched or isinstance(written, SearchedName),
+                keys_only=not self.ros2 and spec.kind == "read" and keys_only(
+                    arg(spec.out_arg), scope),
                 handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
@@ -2769,6 +2771,58 @@ def _prefixed(name: str, spec: api.RosFunction) -> str:
 def _private(name: str) -> str:
     """ROS 2's ``~/name`` written the ROS 1 way, ``~name``."""
     return "~" + name[2:] if name.startswith("~/") else name
+
+
+# what may be asked of a namespace read whole without reading its values
+_KEYS_ONLY_METHODS = frozenset({"getType", "size", "valid", "hasMember"})
+
+
+def keys_only(expr: Cursor | None, scope: Scope) -> bool:
+    """Whether ``expr``, the ``XmlRpcValue`` a ROS 1 read fills, is a local variable its
+    function uses for the keys alone: besides the read, only ``getType()``, ``size()``,
+    ``valid()``, ``hasMember(k)`` and range-based ``for`` loops over it whose variable is
+    named only as ``.first`` (mavros' distance_sensor: ``for (auto &pair : map_dict)``
+    then ``create_item(this, pair.first)``). Any other use (passed on, indexed, its
+    entries' values) reads the values."""
+    inner = strip(expr) if expr is not None else None
+    decl = inner.referenced if inner is not None and (
+        inner.kind == CursorKind.DECL_REF_EXPR) else None
+    if decl is None or decl.kind != CursorKind.VAR_DECL or scope.body is None or (
+            "XmlRpcValue" not in decl.type.get_canonical().spelling):
+        return False
+    loops: list[Cursor] = []
+    for node, parent in _with_parents(scope.body):
+        if node.kind != CursorKind.DECL_REF_EXPR or node.referenced != decl or (
+                node == inner):
+            continue
+        if parent is not None and parent.kind == CursorKind.MEMBER_REF_EXPR and (
+                parent.spelling in _KEYS_ONLY_METHODS):
+            continue
+        if parent is not None and parent.kind == CursorKind.CXX_FOR_RANGE_STMT:
+            variable = next((c for c in parent.get_children()
+                             if c.kind == CursorKind.VAR_DECL), None)
+            if variable is not None:
+                loops.append(variable)
+                continue
+        return False
+    for variable in loops:
+        for node, parent in _with_parents(scope.body):
+            if node.kind == CursorKind.DECL_REF_EXPR and node.referenced == variable and not (
+                    parent is not None and parent.kind == CursorKind.MEMBER_REF_EXPR
+                    and parent.spelling == "first"):
+                return False
+    return True
+
+
+def _with_parents(root: Cursor) -> Iterator[tuple[Cursor, Cursor | None]]:
+    """Every cursor under ``root`` with the one it is a child of (through the implicit
+    casts clang puts between them)."""
+    stack: list[tuple[Cursor, Cursor | None]] = [(root, None)]
+    while stack:
+        node, parent = stack.pop()
+        yield node, parent
+        through = parent if node.kind == CursorKind.UNEXPOSED_EXPR else node
+        stack.extend((child, through) for child in node.get_children())
 
 
 def _map_keys(expr: Cursor, scope: Scope) -> list[str] | None:
