@@ -117,14 +117,18 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
                    [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
                    ["main()", "rover::spin_all()"], ["rover::spin_all()"],
                    [("vendor", "rover::spin_all()")],
-                   [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"])
+                   [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"],
+                   [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
         [("rover::Odometry", (under,))], [("main()", "rover::spin_all()")],
         ["main()", "rover::spin_all()"], ["rover::spin_all()"],
         [("vendor", "rover::spin_all()")],
-        [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"])
+        [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"],
+        [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")])
+    with pytest.raises(TypeError):
+        from_data({**data, "registered": [["rover::Odometry", None]]})
     with pytest.raises(TypeError):
         from_data({**data, "unseen_in": [["vendor", None]]})
     with pytest.raises(TypeError):

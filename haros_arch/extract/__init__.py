@@ -83,7 +83,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         batch = extract_cpp_nodes([_paths(node, workspace) for node in cpp], workspace,
                                   cache_dir=cache_dir, jobs=jobs,
                                   compile_commands=compile_commands, meanwhile=other_nodes,
-                                  distro=distro)
+                                  distro=distro, entries=_entries(cpp))
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls = without_other_classes(
                 node, without_overridden(node, result.calls, workspace), workspace)
@@ -162,6 +162,20 @@ def _build_macros(nodes: Sequence[Node], workspace: Workspace,
             macros[root] = build_macros.cmake_macros(root, workspace)
         found.append(build_macros.build_macro_calls(paths, macros.get(root, {}), workspace))
     return found
+
+
+def _entries(nodes: Sequence[Node]) -> list[str | None]:
+    """The class each node is, where a container, nodelet manager or host constructs it
+    (``cpp.extract_cpp``'s ``entry``): a component's, a nodelet's or a plugin's, and
+    that of the executable a component's registration makes
+    (``rclcpp_components_register_node(... EXECUTABLE x)``: the component's node at the
+    same place, with the same sources; ``cmake.nodes.components``)."""
+    made = {(node.package, node.location, tuple(node.sources)): node.executable
+            for node in nodes if node.kind == "component"}
+    return [node.executable if node.kind == "component" else node.plugin_class
+            if node.kind in ("nodelet", "plugin") else made.get(
+                (node.package, node.location, tuple(node.sources)))
+            for node in nodes]
 
 
 def _cpp_nodes(nodes: Sequence[Node]) -> list[Node]:
@@ -305,7 +319,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
     if node.language == "cpp" and sources:
         from .cpp import extract_cpp  # libclang loads only when there is C++ to parse
 
-        result = extract_cpp(sources, workspace)
+        result = extract_cpp(sources, workspace, entry=_entries([node])[0])
         node.calls = without_other_classes(
                 node, without_overridden(node, result.calls, workspace), workspace)
         node.rosname = _rosname(node, result.rosname)

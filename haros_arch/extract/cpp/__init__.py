@@ -203,6 +203,11 @@ class CppResult:
     # where no code the node is handed to can be the executable's (``_reached``); ``*``
     # where something else makes it (a place not read, a library class's node)
     hidden: list[str] = field(default_factory=list)
+    # in a translation unit's result: the classes it registers for a container, nodelet
+    # manager or host to construct, each (class, class), then (class, base) for its bases
+    # (``CallFinder.registered``): where a node is such a class, what runs starts there
+    # (``_reached``)
+    registered: list[tuple[str, str]] = field(default_factory=list)
 
 
 @dataclass
@@ -227,7 +232,7 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
                 include_dirs: Sequence[str] = (), system_headers: bool = False,
                 cache_dir: str | None = cache.AUTO, jobs: int | None = None,
                 compile_commands: Sequence[str] | None = None,
-                distro: str | None = None) -> CppResult:
+                distro: str | None = None, entry: str | None = None) -> CppResult:
     """The ROS calls in the translation units ``sources`` (absolute paths) of a node.
 
     With ``system_headers`` the installed ROS headers are used instead of the stand-ins.
@@ -237,11 +242,15 @@ def extract_cpp(sources: list[str], workspace: Workspace, *,
     ``compile_commands`` are the compile_commands.json files whose include folders,
     macros and standard each source is parsed with (None: those found in the workspace,
     see ``compile_commands.find``). ``distro`` is the ROS distribution whose rclcpp
-    version the stand-ins announce (``versions``; None: not known).
+    version the stand-ins announce (``versions``; None: not known). ``entry`` is the
+    class the node is when a container, nodelet manager or host constructs it (a
+    component's, nodelet's or plugin's; None: an executable): its code runs, not every
+    class of the libraries it links (``_reached``).
     """
     batch = extract_cpp_nodes([sources], workspace, include_dirs=include_dirs,
                               system_headers=system_headers, cache_dir=cache_dir, jobs=jobs,
-                              compile_commands=compile_commands, distro=distro)
+                              compile_commands=compile_commands, distro=distro,
+                              entries=[entry])
     result = batch.results[0]
     result.diagnostics[:0] = batch.diagnostics
     return result
@@ -252,21 +261,24 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
                       cache_dir: str | None = cache.AUTO, jobs: int | None = None,
                       compile_commands: Sequence[str] | None = None,
                       meanwhile: Callable[[], None] | None = None,
-                      distro: str | None = None) -> CppBatch:
+                      distro: str | None = None,
+                      entries: Sequence[str | None] | None = None) -> CppBatch:
     """The ROS calls of several nodes, each given by its translation units' paths.
 
     Every translation unit is read and parsed once however many nodes build it, all of
-    them in one pool of worker processes; options as for ``extract_cpp``.
+    them in one pool of worker processes; options as for ``extract_cpp``, ``entries``
+    each node's ``entry`` (None: none has one).
     ``meanwhile``, when given, is called once, while the workers parse (after the
     batch when there are none): work of the calling process that needs no result of
     the batch runs beside it rather than after it.
     """
     batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
                             compile_commands, True, meanwhile, distro)
-    for sources in nodes:
+    for index, sources in enumerate(nodes):
         paths = list(dict.fromkeys(map(os.path.abspath, sources)))
         batch.results.append(_node_result([(p, results[p]) for p in paths if p in results],
-                                          all(p in results for p in paths)))
+                                          all(p in results for p in paths),
+                                          entries[index] if entries is not None else None))
     return batch
 
 
@@ -350,7 +362,8 @@ def _made_under_fewest(calls: list[PrimitiveCall],
 _OF_A_CALL = frozenset({"CPP_CALL_UNRESOLVED"})
 
 
-def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True) -> CppResult:
+def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True,
+                 entry: str | None = None) -> CppResult:
     result = CppResult()
     units = [unit for _, unit in paths_units]
     # each call by kind, name and place: one of them, and the conditions the others
@@ -404,7 +417,8 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                     or (c.kind, c.name, c.location) not in named]
     result.calls = _members_named(result.calls)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen, given)
+    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen, given,
+                entry)
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -480,18 +494,18 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                 facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"}),
-                given: Sequence[str] = ()) -> None:
+                given: Sequence[str] = (), entry: str | None = None) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
     no one node can be told (the graph gives those calls to the first node). The calls
-    of a node class the executable's ``main()`` never builds are left out
-    (``_unbuilt``)."""
+    of a node class the executable's ``main()`` (or the registered class ``entry``)
+    never builds are left out (``_unbuilt``)."""
     owners: dict[str, list[str]] = {}
     made_by: dict[str, list[str]] = {}
     for _, unit in units:
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
-    found = _reached(units, unseen)
+    found = _reached(units, unseen, entry)
     reached, hiding, entered, named, scoped = found if found is not None else (
         None, unseen, set(), set(), {})
     for _, unit in units:
@@ -589,9 +603,13 @@ def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> 
     return False
 
 
-def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
+def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
+             entry: str | None = None
              ) -> tuple[set[str], set[str], set[str], set[str], dict[str, set[str]]] | None:
-    """The owners whose code the executable runs, when its files hold a ``main()``: the
+    """The owners whose code the executable runs, when its files hold a ``main()`` or
+    register the class ``entry`` (a component's, nodelet's or plugin's, which its
+    container or host constructs and calls the methods of: that class and its bases
+    start as ``main()`` does, ``_registered``): the
     functions ``main()`` calls or hands on and the classes it constructs or calls the
     methods of, transitively (a class's bases with it, its methods' calls and
     constructions with it). A library the executable links is not run as a whole: its
@@ -607,11 +625,13 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
     the node's facts; ``*`` where a file of the node is not read) and those of the
     units that run: what may hide a construction in this process; and the owners some
     code of the executable constructs or calls (its own too: a class's factory method
-    making it), and the words every unit's code leaves unseen (a class named there may
+    making it; with ``entry``, the other classes its files register, which their own
+    containers construct), and the words every unit's code leaves unseen (a class named there may
     be constructed there: open-rmf's Dispatcher makes its private implementation
     through rmf_utils' make_impl, a template the parse may not have; a word found only
     in functions is hiding where one of them runs). None without a
-    ``main()`` (a component: its container constructs it)."""
+    ``main()`` or a registration of ``entry`` (a class no registration the parse read
+    names: what its container runs is not known)."""
     edges: dict[str, list[str]] = {}
     functions: set[str] = set()
     # each unit's owners, unseen words, the owners that hand its node on (``*``), the
@@ -640,6 +660,16 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         named.update(unit.unseen)
         named.update(within)
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
+    registered = _registered(units, entry)
+    for cls, base in registered:
+        if base == cls:
+            starts.add(cls)
+        else:
+            edges.setdefault(cls, []).append(base)
+    # the other classes registered beside it: their containers construct them, not this
+    # node's (two nodelets of one file)
+    hosted = {cls for _, unit in units for cls, base in unit.registered
+              if cls == base} if registered else set()
     if not starts:
         return None
     starts.add(STATIC)
@@ -683,8 +713,30 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = ()
         words = anywhere | set(scoped)
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
     scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
-    return (reached, words, {made for targets in edges.values() for made in targets}, named,
-            scoped)
+    return (reached, words, {made for targets in edges.values() for made in targets} | hosted,
+            named, scoped)
+
+
+def _registered(units: list[tuple[str, CppResult]], entry: str | None
+                ) -> list[tuple[str, str]]:
+    """The class ``entry`` as ``units`` register it (``CppResult.registered``), by its
+    qualified name or, written shorter (a plugin description's ``type`` after a
+    using-directive), the end of one: (class, class) for each such class, then every
+    (class, base) of the registrations (its bases, transitively). None for a class no
+    registration names, nor for a class template's specialisation with arguments
+    (mavros' ``PluginFactoryTemplate<X>`` builds ``X``, which the parse does not follow):
+    what runs is not known."""
+    if entry is None:
+        return []
+    name = entry.replace(" ", "").lstrip(":")
+    if "<" in name:
+        if not name.endswith("<>"):
+            return []
+        name = name.removesuffix("<>")  # nav2's DriveOnHeading<>: its default arguments
+    pairs = list(dict.fromkeys(pair for _, unit in units for pair in unit.registered))
+    classes = [(cls, base) for cls, base in pairs if cls == base and (
+        cls == name or cls.endswith("::" + name) or name.endswith("::" + cls))]
+    return [*classes, *(pair for pair in pairs if pair[0] != pair[1])] if classes else []
 
 
 def _simple(function: str) -> str:
@@ -759,13 +811,15 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             elif kept is not None and kept[0] is not None:
                 try:
                     (calls, rosname, found, facts, named, made, unseen, under, uses,
-                     defines, handed, unseen_in, passed, hidden) = cache.from_data(kept[0])
+                     defines, handed, unseen_in, passed, hidden,
+                     registered) = cache.from_data(kept[0])
                 except (ValueError, TypeError, KeyError):
                     continue
                 done[path] = CppResult(calls, rosname, found, facts, node_names=named,
                                        constructions=made, unseen=unseen, made_under=under,
                                        uses=uses, defines=defines, handed=handed,
-                                       unseen_in=unseen_in, passed=passed, hidden=hidden)
+                                       unseen_in=unseen_in, passed=passed, hidden=hidden,
+                                       registered=registered)
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -845,7 +899,7 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
                          unit.node_names, unit.constructions, unit.unseen, unit.made_under,
                          unit.uses, unit.defines, unit.handed, unit.unseen_in,
-                         unit.passed, unit.hidden)
+                         unit.passed, unit.hidden, unit.registered)
     return unit, headers, data, cache.digest(data)
 
 
@@ -987,6 +1041,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.constructions = finder.constructions
     result.uses = finder.uses
     result.defines = finder.defines
+    result.registered = finder.registered
     result.made_under = finder.made_under
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there

@@ -186,7 +186,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             handed: list[str] | None = None,
             unseen_in: list[tuple[str, str]] | None = None,
             passed: list[tuple[str, str]] | None = None,
-            hidden: list[str] | None = None) -> dict[str, Any]:
+            hidden: list[str] | None = None,
+            registered: list[tuple[str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
             "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -197,14 +198,15 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
                            for made, under in made_under or ()],
             "uses": [list(n) for n in uses or ()], "defines": list(defines or ()),
             "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()],
-            "passed": [list(n) for n in passed or ()], "hidden": list(hidden or ())}
+            "passed": [list(n) for n in passed or ()], "hidden": list(hidden or ()),
+            "registered": [list(n) for n in registered or ()]}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
         list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str],
-        list[tuple[str, str]], list[tuple[str, str]], list[str]]:
+        list[tuple[str, str]], list[tuple[str, str]], list[str], list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -238,7 +240,8 @@ def from_data(data: dict[str, Any]) -> tuple[
             raise TypeError(key)
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
             _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
-            handed, _pairs(data, "unseen_in"), _pairs(data, "passed"), hidden)
+            handed, _pairs(data, "unseen_in"), _pairs(data, "passed"), hidden,
+            _pairs(data, "registered"))
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

@@ -106,6 +106,31 @@ def construction_dropped(variable: Cursor, owned: Callable[[str], bool]) -> Curs
     return cls if own else None
 
 
+# the types of the variables our stand-ins' registration macros declare
+# (``RCLCPP_COMPONENTS_REGISTER_NODE(C)``, ``PLUGINLIB_EXPORT_CLASS(C, Base)``): their
+# first template argument is the class a container, nodelet manager or host constructs
+REGISTRATIONS = frozenset({"haros_standin::component_registration",
+                           "haros_standin::plugin_export"})
+
+
+def registered_class(variable: Cursor, owned: Callable[[str], bool]) -> Cursor | None:
+    """The class of the workspace a variable of a registration macro registers
+    (``REGISTRATIONS``), else None."""
+    kind = variable.type.get_canonical()
+    declaration = kind.get_declaration()
+    if declaration is None or qualified_name(declaration) not in REGISTRATIONS:
+        return None
+    argument = kind.get_template_argument_type(0)
+    if argument is None or argument.kind == TypeKind.INVALID:
+        return None
+    cls = argument.get_canonical().get_declaration()
+    cls = cls.get_definition() or cls
+    where = cls.location.file if cls is not None else None
+    if cls is None or cls.kind not in _CLASSES or where is None or not owned(where.name):
+        return None
+    return cls
+
+
 def _construction(call: Cursor, owned: Callable[[str], bool]
                   ) -> tuple[Cursor, Cursor | None] | None:
     """The class of the workspace a call constructs and the constructor it calls (None

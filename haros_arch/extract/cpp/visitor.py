@@ -60,6 +60,7 @@ from .owners import (
     opaque_constructor,
     options_arguments,
     owner_of,
+    registered_class,
     unseen_construction,
 )
 from .qos import qos as qos_of
@@ -249,6 +250,10 @@ class CallFinder:
         # constructions (``extract.cpp._reached``)
         self.uses: list[tuple[str, str]] = []
         self.defines: list[str] = []  # the owners of the unit's definitions
+        # the classes the unit registers for a container, nodelet manager or host to
+        # construct (``owners.registered_class``): (class, class) for each, then
+        # (class, base) for its bases of the workspace, transitively
+        self.registered: list[tuple[str, str]] = []
         # the owners whose code hands the node to code the parse does not read
         # (CPP_NODE_PASSED, CPP_NODE_TO_UNKNOWN); "" where no owner is known
         self.handed: set[str] = set()
@@ -342,6 +347,7 @@ class CallFinder:
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
         self.uses.extend(self._uses())
+        self.registered = self._registered()
         # the owners the unit's code defines, not a workspace header's: a header's
         # function is every including unit's, and runs in none of them by being reached
         # in another (a stand-in's macro, gtest's TEST, defines the unit's own)
@@ -379,6 +385,17 @@ class CallFinder:
             for reference in references:
                 found.update(dict.fromkeys(self._used(owner, reference)))
         return [use for use in found if use not in self.uses]
+
+    def _registered(self) -> list[tuple[str, str]]:
+        """``registered``: what the unit's registration macros register."""
+        found: dict[tuple[str, str], None] = {}
+        for variable in self.globals:
+            cls = registered_class(variable, self.owned)
+            name = qualified_name(cls) if cls is not None else ""
+            if cls is not None and name:
+                found[(name, name)] = None
+                found.update(dict.fromkeys(class_bases(cls, self.owned)))
+        return list(found)
 
     def _used(self, owner: str, reference: Cursor) -> Iterator[tuple[str, str]]:
         """(owner, owner of each workspace function ``reference`` may name), and of the
