@@ -105,17 +105,19 @@ def _key_lines(node: yaml.Node, depth: int = 0) -> Any:
             inner = _key_lines(item, depth + 1)
             before = out.get(key.value)
             if isinstance(before, dict) and isinstance(inner, dict):
-                inner = _merged(before, inner)
+                inner = merged(before, inner)
             out[key.value] = key.start_mark.line + 1 if inner is None else inner
     return out
 
 
-def _merged(first: dict[str, Any], second: dict[str, Any]) -> dict[str, Any]:
-    """Two mappings of key lines, key by key, the second's over the first's."""
+def merged(first: dict[Any, Any], second: dict[Any, Any]) -> dict[Any, Any]:
+    """Two mappings key by key, the second's over the first's, mappings under one key
+    merged in turn (rcl's reading of a parameter file that writes a key twice; the key
+    lines of such a file)."""
     out = dict(first)
     for key, value in second.items():
         before = out.get(key)
-        out[key] = _merged(before, value) if isinstance(before, dict) and isinstance(
+        out[key] = merged(before, value) if isinstance(before, dict) and isinstance(
             value, dict) else value
     return out
 

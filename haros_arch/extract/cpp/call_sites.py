@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import msg_types
-from .expressions import construction_lost, is_default_argument, strip
+from .expressions import is_default_argument, lost_class, strip
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
@@ -606,13 +606,9 @@ def dropped_constructor(variable: Cursor) -> Cursor | None:
     """The constructor that a variable declared without an initialiser runs when the
     parse kept no construction of it (``owners.construction_dropped``): the one of its
     class that takes no argument (with its defaults)."""
-    if not construction_lost(variable):
+    cls = lost_class(variable)
+    if cls is None:
         return None
-    ctype = variable.type.get_canonical()
-    if ctype.kind != TypeKind.RECORD:
-        return None
-    decl = ctype.get_declaration()
-    cls = decl.get_definition() or decl
     found = [c for c in cls.get_children() if c.kind in _CONSTRUCTORS and is_constructor(c)
              and _takes(c, 0)]
     return found[0] if len(found) == 1 else None

@@ -4,7 +4,7 @@ declaration initialises its variable with, which arguments a call writes."""
 
 from __future__ import annotations
 
-from clang.cindex import Cursor, CursorKind, conf
+from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
 # expression kinds that only wrap their operand (implicit conversions, casts, parens, ...)
 WRAPPERS = frozenset({
@@ -132,3 +132,16 @@ def construction_lost(variable: Cursor) -> bool:
     return variable.kind == CursorKind.VAR_DECL and bool(
         conf.lib.clang_isInvalidDeclaration(variable)) and not any(
         c.kind.is_expression() for c in variable.get_children())
+
+
+def lost_class(variable: Cursor) -> Cursor | None:
+    """The class (its definition) of a variable whose construction the parse lost
+    (``construction_lost``), which C++ default-constructs all the same; None for any
+    other variable, or one not of a class."""
+    if not construction_lost(variable):
+        return None
+    ctype = variable.type.get_canonical()
+    if ctype.kind != TypeKind.RECORD:
+        return None
+    decl = ctype.get_declaration()
+    return decl.get_definition() or decl

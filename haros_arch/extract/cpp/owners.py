@@ -16,7 +16,7 @@ from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 from . import api
 from .call_types import factory_made, template_argument
 from .cursors import from_standin
-from .expressions import construction_lost
+from .expressions import lost_class
 from .handles import qualified_name
 from .values import initializer, strip
 
@@ -90,13 +90,9 @@ def construction_dropped(variable: Cursor, owned: Callable[[str], bool]) -> Curs
     whose state types need boost::fusion: abstract to the parse). None for a variable
     the parse kept (``construction_lost``), or of a class with no constructor of its
     own, or of a class that is not the workspace's."""
-    if not construction_lost(variable):
+    cls = lost_class(variable)
+    if cls is None:
         return None
-    ctype = variable.type.get_canonical()
-    if ctype.kind != TypeKind.RECORD:
-        return None
-    decl = ctype.get_declaration()
-    cls = decl.get_definition() or decl
     where = cls.location.file
     if cls.kind not in _CLASSES or where is None or not owned(where.name):
         return None

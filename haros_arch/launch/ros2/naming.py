@@ -211,18 +211,9 @@ class ParamFileLoader(yaml.SafeLoader):
                     "found an unhashable key", key_node.start_mark)
             value = self.construct_object(value_node, deep=True)
             before = mapping.get(key)
-            mapping[key] = _merged(before, value) if isinstance(before, dict) and isinstance(
-                value, dict) else value
+            mapping[key] = safe_yaml.merged(before, value) if isinstance(
+                before, dict) and isinstance(value, dict) else value
         return mapping
-
-
-def _merged(first: dict[Any, Any], second: dict[Any, Any]) -> dict[Any, Any]:
-    merged = dict(first)
-    for key, value in second.items():
-        before = merged.get(key)
-        merged[key] = _merged(before, value) if isinstance(before, dict) and isinstance(
-            value, dict) else value
-    return merged
 
 
 def load_param_file(text: str) -> Any:
