@@ -122,3 +122,23 @@ def test_parallel_parse_gives_the_same_calls(workspace_copy: Path) -> None:
 def test_default_folder_follows_xdg(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     assert cache.default_folder("/ws") == str(tmp_path / "haros-arch")
+
+
+def test_the_key_covers_every_module_the_extractor_runs(workspace_copy: Path,
+                                                        tmp_path: Path) -> None:
+    # an entry must not outlive a change to any code that made it: the extractor reads the
+    # model, the expression evaluator and the build readers from outside its own folder
+    import sys
+
+    source = str(workspace_copy / "src" / "demo2" / "src" / "talker.cpp")
+    extract_cpp([source], scan([str(workspace_copy)]), cache_dir=str(tmp_path / "cache"))
+    import haros_arch
+
+    package = os.path.dirname(os.path.abspath(haros_arch.__file__))
+    covered = {os.path.abspath(path) for path in cache.tool_files()}
+    used = {os.path.abspath(module.__file__) for name, module in list(sys.modules.items())
+            if name.startswith("haros_arch.") and getattr(module, "__file__", None)}
+    outside = {path for path in used
+               if not path.startswith(os.path.join(package, "extract", "cpp") + os.sep)}
+    assert outside, "the extractor should import modules outside its folder"
+    assert used - covered == set()

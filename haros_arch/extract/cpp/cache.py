@@ -43,11 +43,37 @@ def default_folder(workspace_root: str) -> str:
     return os.path.join(xdg, "haros-arch")
 
 
+PACKAGE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def tool_files() -> list[str]:
+    """The files whose content keys the entries: every module and data file of this
+    package's code (the extractor imports the model, the expression evaluator, the build
+    readers and more from outside its folder: a change to any of them may change what a
+    unit gives), the stand-in headers and the catalogue of interface definitions (which
+    makes the headers of installed messages). The shipped interface models and the
+    report's assets are not read by the extractor."""
+    found: list[str] = []
+    for folder, dirs, files in os.walk(PACKAGE):
+        dirs[:] = sorted(d for d in dirs if d != "__pycache__")
+        if folder == PACKAGE:  # the models' and the report's data: not the extractor's
+            dirs[:] = [d for d in dirs if d not in _NOT_READ]
+        found += [os.path.join(folder, name) for name in sorted(files)
+                  if name.endswith((".py", ".yaml", ".lark"))]
+    found += [os.path.join(folder, name)
+              for folder, _dirs, files in sorted(os.walk(STANDIN)) for name in sorted(files)]
+    found += [os.path.join(folder, name) for folder, _dirs, files
+              in sorted(os.walk(interfaces.CATALOGUE)) for name in sorted(files)]
+    return list(dict.fromkeys(found))
+
+
+_NOT_READ = frozenset({"report"})
+
+
 @functools.lru_cache(maxsize=1)
 def tool_version() -> str:
-    """Our version, libclang's, and a hash of the stand-in headers and of this
-    extractor's own code and data (so a changed extractor never reads an older one's
-    entries)."""
+    """Our version, libclang's, and a hash of ``tool_files`` (so a changed tool never reads
+    an older one's entries)."""
     from . import toolchain
 
     digest = hashlib.sha256(f"{__version__}/{FORMAT}".encode())
@@ -58,17 +84,10 @@ def tool_version() -> str:
         digest.update(ci._CXString.from_result(version).encode())
     except Exception:  # an old binding: the rest still keys the cache
         digest.update(b"libclang")
-    here = os.path.dirname(os.path.abspath(__file__))
-    code: list[tuple[str, list[str], list[str]]] = [
-        (here, [], sorted(f for f in os.listdir(here) if f.endswith((".py", ".yaml"))))]
-    # the catalogue of interface definitions makes the headers of installed messages
-    catalogue = sorted(os.walk(interfaces.CATALOGUE))
-    for folder, _dirs, files in [*code, *sorted(os.walk(STANDIN)), *catalogue]:
-        for name in sorted(files):
-            path = os.path.join(folder, name)
-            digest.update(name.encode())
-            with open(path, "rb") as handle:
-                digest.update(handle.read())
+    for path in tool_files():
+        digest.update(os.path.relpath(path, PACKAGE).encode() + b"\0")
+        with open(path, "rb") as handle:
+            digest.update(handle.read())
     digest.update(repr(toolchain.base_arguments(False)).encode())
     return digest.hexdigest()
 
