@@ -641,6 +641,15 @@ def test_the_table_names_its_sources() -> None:
         assert path.endswith("package.xml"), name
 
 
+def test_the_mavlink_message_library_leaves_it_complete(write_tree: Any) -> None:
+    # mavros' plugins build MAVLink's messages (``mavlink::common::msg::COMMAND_LONG``);
+    # the mavlink package is a plain CMake library with no ROS client of its own
+    node = _smoother(write_tree, "mavlink::common::msg::COMMAND_LONG cmd{};", "gtsam",
+                     "octomap", "mavlink")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+
+
 def test_a_system_library_of_the_table_leaves_it_complete(write_tree: Any) -> None:
     # agilexrobotics' ugv_sdk builds standalone asio's io_service and names the rosdep
     # key asio (libasio-dev), a system library: no ROS calls of its own

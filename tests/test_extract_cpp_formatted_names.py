@@ -118,3 +118,46 @@ def test_a_format_string_compiled_or_checked_is_its_literal(write_tree) -> None:
     assert ("read", "?.params_file") in names
     assert ("declare", "?.type") in names
     assert not [d for d in result.diagnostics if "ambiguous" in d.message]
+
+
+# image_view's extract_images and image_saver keep a ``boost::format`` member and give it
+# the format a parameter holds with ``parse``: no parse error beside the subscription
+SAVER = """
+#include <string>
+#include <boost/format.hpp>
+#include <ros/ros.h>
+#include <sensor_msgs/Image.h>
+class Saver
+{
+public:
+  Saver()
+  {
+    ros::NodeHandle local_nh("~");
+    std::string format_string;
+    local_nh.param("filename_format", format_string, std::string("frame%04i.jpg"));
+    filename_format_.parse(format_string);
+    sub_ = nh_.subscribe("image", 1, &Saver::cb, this);
+  }
+  void cb(const sensor_msgs::ImageConstPtr& msg) {
+    std::string name = (filename_format_ % 3).str();
+    filename_format_.clear();
+  }
+private:
+  ros::NodeHandle nh_;
+  ros::Subscriber sub_;
+  boost::format filename_format_;
+};
+int main(int argc, char** argv) { ros::init(argc, argv, "saver"); Saver s; ros::spin(); }
+"""
+
+
+def test_a_format_member_given_its_format_by_parse(write_tree) -> None:
+    root = write_tree({"ex/package.xml": package_xml("ex", "catkin"),
+                       "ex/src/saver.cpp": SAVER})
+    result = extract_cpp([str(root / "ex" / "src" / "saver.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    errors = [d for d in result.diagnostics if d.code.startswith("CPP_") and (
+        "parse" in d.message or "clear" in d.message)]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~filename_format"), ("subscribe", "image")]

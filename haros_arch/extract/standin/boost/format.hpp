@@ -7,11 +7,14 @@
 namespace boost {
 class format {
 public:
+  format();
   explicit format(const char* text);
   explicit format(const std::string& text);
   template<class T> format& operator%(const T& value);
   std::string str() const;
   std::size_t size() const;
+  format& parse(const std::string& text);  // image_view's filename_format_.parse(fmt)
+  format& clear();
 };
 std::string str(const format& f);
 std::ostream& operator<<(std::ostream& out, const format& f);
