@@ -699,3 +699,43 @@ def test_a_class_of_a_namespace_that_begins_its_packages_names(write_tree: Any) 
     # no dependency holds the next part: as before, a vendor's namespace
     node, _ = _teleop(write_tree, GUI, "moveit_core", "moveit_msgs")
     assert node.completeness == "complete", node.completeness_reasons
+
+
+# urg_node keeps a laser_proc::LaserPublisher member and makes it with
+# LaserTransport::advertiseLaser(nh_, 20): laser_proc, installed, advertises the multi-echo
+# scan and its first, last and most intense echoes on that handle
+LASER_PROC = """
+    #include <ros/ros.h>
+    #include <laser_proc/LaserTransport.h>
+
+    class Driver {
+     public:
+      Driver() : nh_("hokuyo") {
+        echoes_pub_ = laser_proc::LaserTransport::advertiseLaser(nh_, 20);
+      }
+     private:
+      ros::NodeHandle nh_;
+      laser_proc::LaserPublisher echoes_pub_;
+    };
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "driver");
+      Driver driver;
+      ros::spin();
+    }
+    """
+
+
+def test_laser_proc_s_publisher_is_known(write_tree: Any) -> None:
+    model = _model(write_tree, {
+        "src/urg/package.xml": _depends("urg", "roscpp", "laser_proc", "sensor_msgs"),
+        "src/urg/CMakeLists.txt": "project(urg)\nadd_executable(driver src/driver.cpp)\n",
+        "src/urg/src/driver.cpp": LASER_PROC,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "urg/driver")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert sorted((c.kind, c.name, c.type, c.queue_size) for c in node.calls) == [
+        ("publish", "hokuyo/echoes", "sensor_msgs/MultiEchoLaserScan", 20),
+        ("publish", "hokuyo/first", "sensor_msgs/LaserScan", 20),
+        ("publish", "hokuyo/last", "sensor_msgs/LaserScan", 20),
+        ("publish", "hokuyo/most_intense", "sensor_msgs/LaserScan", 20)]

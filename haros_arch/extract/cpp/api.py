@@ -227,6 +227,15 @@ _REALTIME_PUBLISHER = RosFunction(
 
 # Libraries on top of roscpp / rclcpp: actionlib, image_transport, message_filters, tf2_ros
 LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    # laser_proc (ROS 1): LaserTransport::advertiseLaser(nh, queue, ...) makes a
+    # LaserPublisher that advertises, on that handle, the multi-echo scan ``echoes`` and
+    # the single-echo ``first``, ``last`` and ``most_intense`` (LaserPublisher.cpp; echoes
+    # only when its publish_echoes argument is true, its default): urg_node's echoes_pub_
+    ("laser_proc::LaserTransport", "advertiseLaser"): RosFunction(
+        "publish", fixed_name="echoes", fixed_type="sensor_msgs/MultiEchoLaserScan",
+        on_handle=False, handle_default="", queue_arg=1, siblings=tuple(
+            ("publish", name, "sensor_msgs/LaserScan")
+            for name in ("first", "last", "most_intense"))),
     ("actionlib::SimpleActionServer", "SimpleActionServer"): RosFunction(
         "action-server", type_from=("class",), action_type=True, on_handle=False,
         optional_handle=True),

@@ -90,6 +90,8 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "pcl_ros/": "pcl_ros/haros_pcl_ros.h",
                       # the ROS package filters (its chains and filter bases)
                       "filters/": "filters/filter_chain.h",
+                      # ROS 1 laser_proc (its publisher of multi-echo scans)
+                      "laser_proc/": "laser_proc/LaserTransport.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
                           "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d")},
@@ -716,6 +718,9 @@ class IncludeSetup:
             self._write(header, f"// {header}, created by haros_arch\n#include <{whole}>\n")
             self._prepare(whole, "", False, where)
             return True
+        if definition is None and real is None and _fallback_file(header) is not None:
+            return False  # a library's capitalised header we stand in for, not a message
+            # (laser_proc's <laser_proc/LaserTransport.h>)
         if definition is None:
             definition = interfaces.Interface(package, name, [[], []], known=False)
             self.diagnostics.append(diag.make(
