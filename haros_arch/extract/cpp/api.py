@@ -227,6 +227,22 @@ _REALTIME_PUBLISHER = RosFunction(
 
 # Libraries on top of roscpp / rclcpp: actionlib, image_transport, message_filters, tf2_ros
 LIBRARIES: dict[tuple[str, str], RosFunction] = {
+    # interactive_markers: a server made for the namespace given (argument 0) publishes
+    # its updates on ``<ns>/update`` and takes feedback on ``<ns>/feedback``; ROS 1 on a
+    # NodeHandle of its own (the node's namespace) with the latched ``<ns>/update_full``
+    # (interactive_marker_server.cpp, noetic-devel), ROS 2 on the node given, serving
+    # ``<ns>/get_interactive_markers`` (humble on)
+    ("interactive_markers::InteractiveMarkerServer", "InteractiveMarkerServer"): RosFunction(
+        "publish", on_handle=False, name_suffix="/update", suffix_appended=True,
+        fixed_type="visualization_msgs/InteractiveMarkerUpdate", siblings=(
+            ("publish", "/update_full", "visualization_msgs/InteractiveMarkerInit"),
+            ("subscribe", "/feedback", "visualization_msgs/InteractiveMarkerFeedback")),
+        ros2=RosFunction(
+            "publish", on_handle=False, name_suffix="/update", suffix_appended=True,
+            fixed_type="visualization_msgs/msg/InteractiveMarkerUpdate", siblings=(
+                ("subscribe", "/feedback", "visualization_msgs/msg/InteractiveMarkerFeedback"),
+                ("server", "/get_interactive_markers",
+                 "visualization_msgs/srv/GetInteractiveMarkers")))),
     # laser_proc (ROS 1): LaserTransport::advertiseLaser(nh, queue, ...) makes a
     # LaserPublisher that advertises, on that handle, the multi-echo scan ``echoes`` and
     # the single-echo ``first``, ``last`` and ``most_intense`` (LaserPublisher.cpp; echoes
