@@ -98,6 +98,10 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     ("dynamic_reconfigure", "Client"): PyFunction(
         "client", fixed_type="dynamic_reconfigure/Reconfigure",
         special="reconfigure-client"),
+    # bondpy.Bond(topic, id, ...): the bond's heartbeat on the topic given, of bond's
+    # Status, both ways (bondpy.py; as bondcpp's)
+    ("bondpy", "Bond"): PyFunction(
+        "publish", name=Arg(0, "topic"), fixed_type="bond/Status", special="bond"),
     # diagnostic_updater.Updater() publishes its status on /diagnostics (as roscpp's)
     ("diagnostic_updater", "Updater"): PyFunction(
         "publish", name=None, fixed_name="/diagnostics",

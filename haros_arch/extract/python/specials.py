@@ -46,6 +46,10 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
                 *(replace(base, kind="publish", name=f"{server}smach/container_{topic}",
                           type=f"smach_msgs/SmachContainer{kind}", queue_size=1)
                   for topic, kind in (("structure", "Structure"), ("status", "Status")))]
+    if spec.special == "bond":  # the heartbeat's topic both ways
+        topic = own_name(text_of(evaluate(ev, argument(call, Arg(0, "topic")), frame))).text
+        named = replace(base, name=topic or "?")
+        return [named, replace(named, kind="subscribe")]
     if spec.special == "reconfigure-server":
         return _reconfigure_server(ev, call, frame, base)
     if spec.special == "reconfigure-client":
