@@ -827,3 +827,49 @@ def test_the_parameter_callback_type_alias_and_glibc_short_names(write_tree) -> 
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "align_depth.enable"), ("publish", "status")]
+
+
+# Boost.Asio's handlers take ``const boost::system::error_code&``; with no stand-in,
+# ``boost::system`` named the C library's ``system`` function: an error in every handler
+# (rosserial_server's sessions, whose timers read ``~require``), and rosserial's
+# ``std::make_signed<size_t>`` and ``boost::function::clear()`` were errors too
+ASIO = """#include <type_traits>
+#include <boost/asio.hpp>
+#include <boost/bind.hpp>
+#include <boost/function.hpp>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+typedef std::make_signed<size_t>::type signed_size_t;
+class Session {
+ public:
+  Session(boost::asio::io_service& io) : timer_(io) {
+    threshold_ = ros::param::param("~threshold", 0);
+    timer_.async_wait(boost::bind(&Session::check, this, boost::asio::placeholders::error));
+  }
+  void check(const boost::system::error_code& error) {
+    if (error != boost::asio::error::operation_aborted && ros::param::has("~require")) {
+      pub_ = nh_.advertise<std_msgs::String>("out", 1);
+      callback_.clear();
+    }
+  }
+ private:
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+  boost::asio::deadline_timer timer_;
+  boost::function<void(int)> callback_;
+  signed_size_t threshold_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "session");
+  boost::asio::io_service io;
+  Session session(io);
+  io.run();
+}
+"""
+
+
+def test_asio_handlers_with_boost_system_error_codes(write_tree) -> None:
+    result = _extract(write_tree, ASIO, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~threshold"), ("read", "~require"), ("publish", "out")]

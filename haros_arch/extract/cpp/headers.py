@@ -139,6 +139,9 @@ UMBRELLAS = {
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",
     "yaml-cpp/": "yaml-cpp/yaml.h", "gflags/": "gflags/gflags.h", "glog/": "glog/logging.h",
     "fmt/": "fmt/format.h",  # {fmt}: names formatted from a literal (``values.Scope``)
+    # Boost.Asio's and Boost.System's headers: boost::system's error codes, which asio's
+    # handlers take (the asio classes are declared permissively)
+    "boost/asio/": "boost/asio.hpp", "boost/system/": "boost/system/error_code.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)

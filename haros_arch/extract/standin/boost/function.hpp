@@ -8,6 +8,9 @@ public:
   function();
   template<class F> function(F f);
   R operator()(A... args) const;
+  void clear();
+  bool empty() const;
+  explicit operator bool() const;
 };
 }  // namespace boost
 #endif

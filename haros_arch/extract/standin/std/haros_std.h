@@ -91,6 +91,22 @@ template<class T> struct is_arithmetic : integral_constant<bool, __is_arithmetic
 template<class T> struct is_integral : integral_constant<bool, __is_integral(T)> {};
 template<class T> struct is_floating_point : integral_constant<bool, __is_floating_point(T)> {};
 template<class B, class D> struct is_base_of : integral_constant<bool, __is_base_of(B, D)> {};
+// make_signed / make_unsigned of the integer types (rosserial's signed_size_t)
+template<class T> struct make_signed { typedef T type; };
+template<> struct make_signed<unsigned char> { typedef signed char type; };
+template<> struct make_signed<unsigned short> { typedef short type; };
+template<> struct make_signed<unsigned int> { typedef int type; };
+template<> struct make_signed<unsigned long> { typedef long type; };
+template<> struct make_signed<unsigned long long> { typedef long long type; };
+template<class T> using make_signed_t = typename make_signed<T>::type;
+template<class T> struct make_unsigned { typedef T type; };
+template<> struct make_unsigned<signed char> { typedef unsigned char type; };
+template<> struct make_unsigned<char> { typedef unsigned char type; };
+template<> struct make_unsigned<short> { typedef unsigned short type; };
+template<> struct make_unsigned<int> { typedef unsigned int type; };
+template<> struct make_unsigned<long> { typedef unsigned long type; };
+template<> struct make_unsigned<long long> { typedef unsigned long long type; };
+template<class T> using make_unsigned_t = typename make_unsigned<T>::type;
 template<class...> using void_t = void;
 template<class T> struct is_pointer : false_type {};
 template<class T> struct is_pointer<T*> : true_type {};
