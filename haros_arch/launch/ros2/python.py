@@ -61,6 +61,7 @@ from .python_values import (
     PlainClass,
     Raised,
     ReadOnlyFile,
+    Record,
     Ref,
     SuperOf,
     _Break,
@@ -634,6 +635,10 @@ class Interpreter(Expressions):
             owner.attributes[target.attr] = value  # self.name = ... in a constructor
         elif isinstance(target, ast.Attribute) and isinstance(owner, PlainClass):
             owner.attributes[target.attr] = value  # Cls.count = ... (a class's name)
+        elif isinstance(target, ast.Attribute) and isinstance(owner, Record) and (
+                target.attr in owner.attributes):
+            # moveit_config.robot_description = {...}: a field of its (slotted) dataclass
+            owner.attributes[target.attr] = value
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
 
