@@ -229,3 +229,23 @@ def generate_launch_description():
     assert params_of(model, "robot_state_publisher") == {
         "robot_description": "<robot/>", "publish_frequency": 15.0}
     assert "LAUNCH_PY_UNSUPPORTED" not in [d.code for d in model.diagnostics]
+
+
+def test_moveit_configs_utils_default_pipelines_when_it_is_in_the_workspace(write_tree) -> None:
+    utils = "src/moveit2/moveit_configs_utils"
+    model, _ = run(write_tree, MOVE_GROUP, {
+        f"{utils}/package.xml": package_xml("moveit_configs_utils", "ament_python"),
+        f"{utils}/default_configs/ompl_planning.yaml": "planning_plugins: [default_ompl]\n",
+        f"{utils}/default_configs/chomp_planning.yaml": "planning_plugins: [chomp]\n",
+        f"{utils}/default_configs/ompl_defaults.yaml": "planner_configs: {PRM: {}}\n",
+    })
+    params = params_of(model, "move_group")
+    # the config package's pipelines first, then the defaults it does not have
+    assert params["planning_pipelines"] == ["ompl", "pilz_industrial_motion_planner", "chomp"]
+    assert params["ompl.planning_plugins"] == ["ompl_interface/OMPLPlanner"]  # the package's
+    assert params["chomp.planning_plugins"] == ["chomp"]
+    assert "ompl.planner_configs.PRM" not in params  # the package's ompl has its own
+    assert "?" not in params
+    # its own share folder is its code's look-up, not one of the launch file's package
+    assert "moveit_configs_utils" not in [use.package for use in model.package_uses]
+    assert "arm_description" in [use.package for use in model.package_uses]

@@ -308,8 +308,10 @@ def m_sensors_3d(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs, n: ast.A
 
 
 def _defaults_folder(i: Interpreter, n: ast.AST) -> str | None:
-    found = _package(i, "moveit_configs_utils", n)
-    return posixpath.join(found, "default_configs") if isinstance(found, str) else None
+    """moveit_configs_utils' own ``default_configs`` (its code finds its share folder: not
+    a use of the package by the launch file's, which imports it)."""
+    found = i.workspace.find("moveit_configs_utils")
+    return posixpath.join(found, "default_configs") if found is not None else None
 
 
 def m_planning_pipelines(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
