@@ -104,6 +104,9 @@ class Interpreter(Expressions):
         self.search: list[str] = []
         # modules imported from them, by source path (None: being read, or unreadable)
         self.modules: dict[str, Module | None] = {}
+        # what a known library keeps in its module or classes while the file runs
+        # (launch_param_builder's ParameterBuilder._parameters, one dict for every builder)
+        self.library_state: dict[str, Any] = {}
         # the launch's command-line arguments (``parse_python``)
         self.command_line: Mapping[str, str] = {}
         from .python_api import API, BUILTINS, METHODS

@@ -22,6 +22,11 @@ Pilz pipeline) into a ``MoveItConfigs``, whose attributes are those dicts and wh
 a path not known statically) is said where the launch file asks for it and stays
 unknown: a parameter ``<section>.?`` (or ``?``) rather than none.
 
+launch_param_builder's ``ParameterBuilder(package)`` (``yaml``, ``parameter``,
+``file_parameter``, ``xacro_parameter``, ``to_dict``), ``load_yaml`` and ``load_xacro``
+read the same way; ``load_yaml`` renders a file as a Jinja2 template before reading it as
+YAML, so a file with Jinja2 marks is not known (said).
+
 ``moveit_configs_utils.launches.generate_*_launch(moveit_config)`` make the launch
 descriptions launches.py makes (the nodes, arguments, conditions and parameters it
 gives), with the interpreter's own rows; ``DeclareBooleanLaunchArg`` and
@@ -69,6 +74,9 @@ _PSM_FLAGS = ("publish_planning_scene", "publish_geometry_updates", "publish_sta
 _PSM_DEFAULTS = (True, True, True, True, False, False)
 
 
+_JINJA = ("{{", "{%", "{#")
+
+
 def unknown_tree(reason: Unknown) -> dict[Any, Any]:
     """Parameters whose names and values are not known: one entry whose key is unknown
     (the node gets the parameter ``...?``, which any name there may be)."""
@@ -76,19 +84,35 @@ def unknown_tree(reason: Unknown) -> dict[Any, Any]:
 
 
 @dataclass(eq=False)
-class ConfigsBuilder:
+class ParamsBuilder:
+    """launch_param_builder's ``ParameterBuilder(package_name)``: the package's share
+    folder (None when not known here, ``package`` saying why) and the parameters its
+    ``yaml`` / ``parameter`` / ``file_parameter`` / ``xacro_parameter`` gave:
+    ``_parameters``, a class attribute, so one dict that every builder of the process
+    fills and ``to_dict()`` returns (``shared``; here, of the launch file being read)."""
+
+    share: str | None
+    package: Unknown | None
+    extra: dict[Any, Any] = field(default_factory=dict)
+
+
+@dataclass(eq=False)
+class ConfigsBuilder(ParamsBuilder):
     """A ``MoveItConfigsBuilder``: where its files are and the sections loaded so far."""
 
-    robot: str
-    share: str | None  # the config package's share folder, None when not known here
-    package: Unknown | None  # why the package cannot be read (None: it can)
-    prefix: str
-    urdf: Any  # the URDF's path (text or str), its xacro arguments
-    xacro_args: dict[str, str] | None
-    srdf: str
+    robot: str = ""
+    prefix: str = "robot_description"
+    urdf: Any = None  # the URDF's path (text or str), its xacro arguments
+    xacro_args: dict[str, str] | None = None
+    srdf: str = ""
     sections: dict[str, Any] = field(default_factory=dict)
     srdf_file: str | None = None  # the SRDF loaded, when read with no xacro arguments
-    extra: dict[Any, Any] = field(default_factory=dict)  # ParameterBuilder.parameter()
+
+
+def shared(i: Interpreter) -> dict[Any, Any]:
+    """``ParameterBuilder._parameters``: the class's one dict."""
+    found: dict[Any, Any] = i.library_state.setdefault("ParameterBuilder._parameters", {})
+    return found
 
 
 def _exists(i: Interpreter, path: str) -> bool:
@@ -106,6 +130,13 @@ def _load_yaml(i: Interpreter, path: Any, n: ast.AST) -> Any:
     text = i.read(path, n)
     if text is None:  # said by read()
         return unknown_tree(Unknown(f"{path} not read", "unsupported", where=i.where(n)))
+    if any(mark in text for mark in _JINJA):
+        # load_yaml renders the file as a Jinja2 template first: never run here
+        file = i.workspace.relpath(share_source(i.workspace, path))
+        return unknown_tree(i.unsupported(n, f"{file} is a Jinja2 template, which "
+                                             "launch_param_builder renders before reading "
+                                             "it (never run here); its parameters are not "
+                                             "known"))
     try:
         return safe_yaml.load(text)
     except yaml.YAMLError as err:
@@ -153,7 +184,7 @@ def configs_builder(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not isinstance(share, str):
         missing = i.unsupported(n, f"MoveIt configuration package {package} is not in the "
                                    "workspace; the parameters it gives are not known")
-        return ConfigsBuilder(robot, None, missing, prefix, None, None, "")
+        return ConfigsBuilder(None, missing, shared(i), robot=robot, prefix=prefix)
     urdf: Any = None
     xacro_args: dict[str, str] | None = None
     srdf: str | None = None
@@ -182,8 +213,9 @@ def configs_builder(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             srdf = semantic["relative_path"]
     if urdf is None:
         urdf = posixpath.join(share, CONFIG, f"{robot}.urdf")
-    return ConfigsBuilder(robot, share, None, prefix, urdf, xacro_args,
-                          srdf or posixpath.join(CONFIG, f"{robot}.srdf"))
+    return ConfigsBuilder(share, None, shared(i), robot=robot, prefix=prefix, urdf=urdf,
+                          xacro_args=xacro_args,
+                          srdf=srdf or posixpath.join(CONFIG, f"{robot}.srdf"))
 
 
 def _unreadable(b: ConfigsBuilder, n: ast.AST) -> Unknown:
@@ -191,8 +223,7 @@ def _unreadable(b: ConfigsBuilder, n: ast.AST) -> Unknown:
     return b.package
 
 
-def _xacro(i: Interpreter, b: ConfigsBuilder, path: Any, mappings: Any,
-           n: ast.AST) -> Any:
+def _xacro(i: Interpreter, path: Any, mappings: Any, n: ast.AST) -> Any:
     """``load_xacro(path, mappings)`` (or ``Xacro(path, mappings)`` for mappings with
     substitutions): the document a ``xacro`` command makes, kept as text; unknown when
     the file is not in the workspace."""
@@ -215,7 +246,7 @@ def m_robot_description(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
     if path is None:
         value: Any = i.unsupported(n, "robot description file path not known statically")
     else:
-        value = _xacro(i, b, path, mappings if mappings is not None else b.xacro_args, n)
+        value = _xacro(i, path, mappings if mappings is not None else b.xacro_args, n)
     b.sections["robot_description"] = {b.prefix: value}
     return b
 
@@ -227,7 +258,7 @@ def m_semantic(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs, n: ast.AST
         return b
     path = _join(b.share, arg(a, k, 0, "file_path") or b.srdf)
     mappings = arg(a, k, 1, "mappings")
-    value = _xacro(i, b, path, mappings, n) if path is not None else \
+    value = _xacro(i, path, mappings, n) if path is not None else \
         i.unsupported(n, "semantic description file path not known statically")
     b.srdf_file = path if isinstance(path, str) and not mappings else None
     b.sections["robot_description_semantic"] = {key: value}
@@ -421,22 +452,80 @@ def m_to_dict(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any
     if isinstance(owner, Record) and owner.cls == "MoveItConfigs":
         return configs_dict(owner)
     if isinstance(owner, ConfigsBuilder):
-        parameters = dict(owner.extra)
+        # the class's dict itself, updated with the configs (every builder's from then on)
         if arg(a, k, 0, "include_moveit_configs", default=True) is not False:
-            parameters.update(configs_dict(m_to_moveit_configs(i, owner, [], {}, n)))
-        return parameters
+            owner.extra.update(configs_dict(m_to_moveit_configs(i, owner, [], {}, n)))
+        return owner.extra
+    if isinstance(owner, ParamsBuilder):
+        return owner.extra
     return _other(i, owner, "to_dict", n)
 
 
-def m_parameter(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """launch_param_builder's ``ParameterBuilder.parameter(name, value)``."""
+def params_builder(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``ParameterBuilder(package_name)``."""
+    package = arg(a, k, 0, "package_name")
+    if not isinstance(package, str):
+        return i.unsupported(n, "ParameterBuilder of a package not known statically")
+    share = _package(i, package, n)
+    if not isinstance(share, str):
+        return ParamsBuilder(None, i.unsupported(
+            n, f"package {package} is not in the workspace; the parameters read from its "
+               "files are not known"), shared(i))
+    return ParamsBuilder(share, None, shared(i))
+
+
+def m_parameter(i: Interpreter, b: ParamsBuilder, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``parameter(name, value)``."""
     b.extra[arg(a, k, 0, "parameter_name")] = arg(a, k, 1, "parameter_value")
     return b
 
 
-def _of_builder(name: str, method: Any) -> Method:
+def _file_of(i: Interpreter, b: ParamsBuilder, given: Any, n: ast.AST) -> Any:
+    """``package path / file_path``, or why it is not known."""
+    if b.package is not None:
+        return b.package
+    assert b.share is not None
+    path = _join(b.share, given)
+    return path if path is not None else i.unsupported(
+        n, "a parameter file path not known statically")
+
+
+def m_yaml(i: Interpreter, b: ParamsBuilder, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``yaml(file_path, parameter_namespace=None)``: the file's content, under that name
+    (merged into what it holds) or at the top."""
+    path = _file_of(i, b, arg(a, k, 0, "file_path"), n)
+    content = _load_yaml(i, path, n) if isinstance(path, str) else unknown_tree(path)
+    under = arg(a, k, 1, "parameter_namespace")
+    target = b.extra.setdefault(under, {}) if under else b.extra
+    if isinstance(target, dict) and isinstance(content, dict):
+        target.update(content)
+    else:
+        b.extra[under] = content
+    return b
+
+
+def m_file_parameter(i: Interpreter, b: ParamsBuilder, a: Args, k: Kwargs,
+                     n: ast.AST) -> Any:
+    """``file_parameter(name, file_path)``: the file's text."""
+    path = _file_of(i, b, arg(a, k, 1, "file_path"), n)
+    text = i.read(path, n) if isinstance(path, str) else None
+    b.extra[arg(a, k, 0, "parameter_name")] = text if text is not None else Unknown(
+        "a parameter file's text", "unsupported", where=i.where(n))
+    return b
+
+
+def m_xacro_parameter(i: Interpreter, b: ParamsBuilder, a: Args, k: Kwargs,
+                      n: ast.AST) -> Any:
+    """``xacro_parameter(name, file_path, mappings=None)``: the document it makes."""
+    path = _file_of(i, b, arg(a, k, 1, "file_path"), n)
+    b.extra[arg(a, k, 0, "parameter_name")] = _xacro(
+        i, path, arg(a, k, 2, "mappings"), n) if isinstance(path, str) else path
+    return b
+
+
+def _of_builder(name: str, method: Any, cls: type = ConfigsBuilder) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        if not isinstance(owner, ConfigsBuilder):
+        if not isinstance(owner, cls):
             return _other(i, owner, name, n)
         return method(i, owner, a, k, n)
     return call
@@ -456,8 +545,10 @@ METHODS: dict[str, Method] = {
         ("planning_scene_monitor", m_planning_scene_monitor),
         ("sensors_3d", m_sensors_3d),
         ("planning_pipelines", m_planning_pipelines),
-        ("to_moveit_configs", m_to_moveit_configs),
-        ("parameter", m_parameter))},
+        ("to_moveit_configs", m_to_moveit_configs))},
+    **{name: _of_builder(name, method, ParamsBuilder) for name, method in (
+        ("parameter", m_parameter), ("yaml", m_yaml), ("file_parameter", m_file_parameter),
+        ("xacro_parameter", m_xacro_parameter))},
     "to_dict": m_to_dict,
 }
 
@@ -686,8 +777,21 @@ def _demo(i: Interpreter, c: Record, ld: LaunchDescription, a: Args, k: Kwargs,
     include("launch/spawn_controllers.launch.py")
 
 
+def load_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """launch_param_builder's ``load_yaml(file_path)``."""
+    return _load_yaml(i, arg(a, k, 0, "file_path"), n)
+
+
+def load_xacro(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """launch_param_builder's ``load_xacro(file_path, mappings=None)``."""
+    path = arg(a, k, 0, "file_path")
+    return _xacro(i, str(path) if isinstance(path, PurePosixPath) else path,
+                  arg(a, k, 1, "mappings"), n)
+
+
 MOVEIT_CONFIGS_UTILS: dict[str, Builder] = {
-    "MoveItConfigsBuilder": configs_builder,
+    "load_yaml": load_yaml, "load_xacro": load_xacro,
+    "MoveItConfigsBuilder": configs_builder, "ParameterBuilder": params_builder,
     "DeclareBooleanLaunchArg": declare_boolean,
     "add_debuggable_node": add_debuggable_node,
     "generate_rsp_launch": _launch("generate_rsp_launch", _rsp),

@@ -232,7 +232,8 @@ class Context:
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy", "launch_pal",
-                "controller_manager", "robotnik_common", "moveit_configs_utils")
+                "controller_manager", "robotnik_common", "moveit_configs_utils",
+                "launch_param_builder")
 
 
 def _known_module(qualified: str) -> bool:
