@@ -70,11 +70,12 @@ def generate_launch_description():
 """
 
 
-def run(write_tree, launch: str, files: dict[str, str] | None = None):
+def run(write_tree, launch: str, files: dict[str, str] | None = None,
+        env: dict[str, str] | None = None):
     tree = {**FILES, f"{CONFIG}/launch/main.launch.py": launch, **(files or {})}
     root = write_tree(tree)
-    ws = scan([str(root / "src")], {})
-    return load(str(root / CONFIG / "launch/main.launch.py"), ws, {}, {}), root
+    ws = scan([str(root / "src")], env or {})
+    return load(str(root / CONFIG / "launch/main.launch.py"), ws, {}, env or {}), root
 
 
 def params_of(model, executable: str) -> dict:
@@ -192,13 +193,14 @@ def generate_launch_description():
     return generate_{name}_launch(MoveItConfigsBuilder("arm").to_moveit_configs())
 """ for name in ("rsp", "move_group", "moveit_rviz", "spawn_controllers",
                  "static_virtual_joint_tfs", "warehouse_db")}
-    model, _ = run(write_tree, """
+    demo = """
 from moveit_configs_utils import MoveItConfigsBuilder
 from moveit_configs_utils.launches import generate_demo_launch
 
 def generate_launch_description():
     return generate_demo_launch(MoveItConfigsBuilder("arm").to_moveit_configs())
-""", helpers)
+"""
+    model, _ = run(write_tree, demo, helpers)
     # use_rviz true, db false by default: no warehouse
     assert sorted(n.executable for n in model.nodes) == [
         "move_group", "robot_state_publisher", "ros2_control_node", "rviz2", "spawner",
@@ -209,6 +211,21 @@ def generate_launch_description():
     assert (tf.name, tf.args) == ("/static_transform_publisher0",
                                   "--frame-id world --child-frame-id base")
     assert "LAUNCH_PY_UNSUPPORTED" not in [d.code for d in model.diagnostics]
+    # ros2_control_node: from moveit_configs_utils 2.9.0 on (jazzy) it reads the
+    # description rsp publishes; before (humble) it is given it
+    [control] = [n for n in model.nodes if n.executable == "ros2_control_node"]
+    assert control.remaps == [("/controller_manager/robot_description", "/robot_description")]
+    assert "robot_description" not in params_of(model, "ros2_control_node")
+    assert any("version is not known" in d.message for d in model.diagnostics)
+    model, _ = run(write_tree, demo, helpers, {"ROS_DISTRO": "humble"})
+    [control] = [n for n in model.nodes if n.executable == "ros2_control_node"]
+    assert control.remaps == []
+    assert "robot_description" in params_of(model, "ros2_control_node")
+    model, _ = run(write_tree, demo, {**helpers, "src/moveit_configs_utils/package.xml":
+                                      package_xml("moveit_configs_utils").replace(
+                                          "0.1.0", "2.12.4")}, {"ROS_DISTRO": "humble"})
+    [control] = [n for n in model.nodes if n.executable == "ros2_control_node"]
+    assert control.remaps  # the workspace's moveit_configs_utils decides
 
 
 def test_a_field_of_the_configs_set_by_the_launch_file(write_tree) -> None:

@@ -770,11 +770,36 @@ def _demo(i: Interpreter, c: Record, ld: LaunchDescription, a: Args, k: Kwargs,
     include("launch/move_group.launch.py")
     include("launch/moveit_rviz.launch.py", "use_rviz")
     include("launch/warehouse_db.launch.py", "db")
+    controllers = _in_package(c, "config/ros2_controllers.yaml")
+    if _remaps_description(i, n):  # 2.9 on: the description from rsp's topic
+        control = {"parameters": [controllers], "remappings": [
+            ("/controller_manager/robot_description", "/robot_description")]}
+    else:
+        control = {"parameters": [c.attributes["robot_description"], controllers]}
     ld.actions.append(i.api["Node"](i, [], {
-        "package": "controller_manager", "executable": "ros2_control_node",
-        "parameters": [c.attributes["robot_description"],
-                       _in_package(c, "config/ros2_controllers.yaml")]}, n))
+        "package": "controller_manager", "executable": "ros2_control_node", **control}, n))
     include("launch/spawn_controllers.launch.py")
+
+
+# the distributions whose moveit_configs_utils is older than 2.9.0 (humble 2.5, iron 2.7)
+_BEFORE_2_9 = ("foxy", "galactic", "humble", "iron")
+
+
+def _remaps_description(i: Interpreter, n: ast.AST) -> bool:
+    """Whether the demo's ros2_control_node reads the description from the topic (2.9.0
+    on) rather than being given it: by moveit_configs_utils' version when the workspace
+    has it, else by the configuration's ROS_DISTRO; not known, said, the newer way."""
+    package = i.workspace.packages.get("moveit_configs_utils")
+    numbers = [int(p) for p in package.version.split(".")[:2] if p.isdigit()] if (
+        package is not None) else []
+    if len(numbers) == 2:
+        return tuple(numbers) >= (2, 9)
+    distro = i.environment.get("ROS_DISTRO", "").strip().lower()
+    if distro:
+        return distro not in _BEFORE_2_9
+    i.unknown_value(n, "moveit_configs_utils' version is not known (no ROS_DISTRO): the "
+                       "demo's ros2_control_node is taken as 2.9.0 and later start it")
+    return True
 
 
 def load_yaml(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
