@@ -294,3 +294,29 @@ def generate_launch_description():
         "moveit_servo.publish_period": 0.034, "moveit_servo.move_group_name": "arm",
         "moveit_servo.use_gazebo": False, "?": None}
     assert any("templated.yaml is a Jinja2 template" in d.message for d in model.diagnostics)
+
+
+def test_the_default_pipeline_of_files_listed_in_no_known_order(write_tree) -> None:
+    second = "src/second_moveit_config"
+    model, _ = run(write_tree, """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from moveit_configs_utils import MoveItConfigsBuilder
+
+def generate_launch_description():
+    listed = (MoveItConfigsBuilder("arm", package_name="second_moveit_config")
+              .planning_pipelines(load_all=False).to_moveit_configs())
+    given = (MoveItConfigsBuilder("arm", package_name="second_moveit_config")
+             .planning_pipelines(pipelines=["stomp", "chomp"]).to_moveit_configs())
+    return LaunchDescription([
+        Node(package="a", executable="listed", parameters=[listed.planning_pipelines]),
+        Node(package="a", executable="given", parameters=[given.planning_pipelines])])
+""", {f"{second}/package.xml": package_xml("second_moveit_config", "ament_cmake"),
+      f"{second}/config/chomp_planning.yaml": "planning_plugins: [chomp]\n",
+      f"{second}/config/stomp_planning.yaml": "planning_plugins: [stomp]\n"})
+    # the first file Path.iterdir gives: not known
+    listed = params_of(model, "listed")
+    assert listed["default_planning_pipeline"] is None
+    assert sorted(listed["planning_pipelines"]) == ["chomp", "stomp"]
+    assert any("first *_planning.yaml" in d.message for d in model.diagnostics)
+    assert params_of(model, "given")["default_planning_pipeline"] == "stomp"

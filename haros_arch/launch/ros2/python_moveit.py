@@ -373,9 +373,16 @@ def m_planning_pipelines(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
         b.sections["planning_pipelines"] = unknown_tree(i.unsupported(
             n, "planning pipelines not known statically"))
         return b
-    if not default:
-        default = "ompl" if "ompl" in names else (
-            names[0] if names and others is None else Unknown("the default planning pipeline"))
+    if not default and "ompl" in names:
+        default = "ompl"
+    elif not default and names and others is None and (pipelines is not None
+                                                         or len(names) == 1):
+        default = names[0]
+    elif not default:
+        # the first of the files found: their order is the file system's
+        i.unknown_value(n, "the default planning pipeline is the first *_planning.yaml the "
+                           "file system lists, not known here")
+        default = Unknown("the default planning pipeline", "unsupported", where=i.where(n))
     if isinstance(default, str) and default not in names and others is None:
         b.sections["planning_pipelines"] = unknown_tree(i.failed(
             n, f"default_planning_pipeline {default} is none of the pipelines "
