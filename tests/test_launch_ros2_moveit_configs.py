@@ -320,3 +320,17 @@ def generate_launch_description():
     assert sorted(listed["planning_pipelines"]) == ["chomp", "stomp"]
     assert any("first *_planning.yaml" in d.message for d in model.diagnostics)
     assert params_of(model, "given")["default_planning_pipeline"] == "stomp"
+
+
+def test_bad_config_files_are_said_not_raised(write_tree) -> None:
+    model, _ = run(write_tree, MOVE_GROUP, {
+        f"{CONFIG}/.setup_assistant": "moveit_setup_assistant_config: {urdf: {package: 5, "
+                                      "relative_path: [1]}, srdf: 7}\n",
+        f"{CONFIG}/config/kinematics.yaml": "manipulator: [unclosed\n",
+        f"{CONFIG}/config/joint_limits.yaml": "",
+    })
+    params = params_of(model, "move_group")
+    assert "robot_description_kinematics.?" in params
+    said = [d for d in model.diagnostics if "kinematics.yaml cannot be read as YAML" in d.message]
+    assert said and said[0].location.file.endswith("main.launch.py")
+    assert params["robot_description_planning"] is None  # an empty file: None, as yaml's
