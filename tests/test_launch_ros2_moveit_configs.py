@@ -334,3 +334,19 @@ def test_bad_config_files_are_said_not_raised(write_tree) -> None:
     said = [d for d in model.diagnostics if "kinematics.yaml cannot be read as YAML" in d.message]
     assert said and said[0].location.file.endswith("main.launch.py")
     assert params["robot_description_planning"] is None  # an empty file: None, as yaml's
+
+
+def test_the_default_pipelines_of_the_distribution_when_not_in_the_workspace(
+        write_tree) -> None:
+    # moveit_configs_utils adds its default_configs' pipelines: by ROS_DISTRO, their names
+    # are known (jazzy's: chomp, ompl, pilz, stomp), their files not
+    model, _ = run(write_tree, MOVE_GROUP, env={"ROS_DISTRO": "jazzy"})
+    params = params_of(model, "move_group")
+    assert params["planning_pipelines"] == [
+        "ompl", "pilz_industrial_motion_planner", "chomp", "stomp"]
+    assert params["default_planning_pipeline"] == "ompl"
+    assert "chomp.?" in params and "stomp.?" in params and "?" not in params
+    assert params["ompl.planning_plugins"] == ["ompl_interface/OMPLPlanner"]  # the package's
+    model, _ = run(write_tree, MOVE_GROUP, env={"ROS_DISTRO": "humble"})
+    params = params_of(model, "move_group")
+    assert params["planning_pipelines"] == ["ompl", "pilz_industrial_motion_planner", "chomp"]

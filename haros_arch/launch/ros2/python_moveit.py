@@ -14,8 +14,10 @@ description and its semantic (a ``xacro`` command line, never run here), kinemat
 (``moveit``, ``moveit2`` or the robot's name among several) with
 ``moveit_manage_controllers``, the planning scene monitor's flags, sensors_3d.yaml when it
 lists a sensor, and the planning pipelines (``config/<name>_planning.yaml`` and, unless
-``load_all=False``, moveit_configs_utils' ``default_configs``; ``ompl`` the default when
-it is one, its ``planner_configs`` from ``ompl_defaults.yaml`` when it has none).
+``load_all=False``, moveit_configs_utils' ``default_configs``, or when it is not in the
+workspace the names its release for the configuration's ROS_DISTRO has there; ``ompl``
+the default when it is one, its ``planner_configs`` from ``ompl_defaults.yaml`` when it
+has none).
 ``to_moveit_configs()`` loads each section not loaded yet (the Pilz limits only with the
 Pilz pipeline) into a ``MoveItConfigs``, whose attributes are those dicts and whose
 ``to_dict()`` merges them. What cannot be read (a package or file not in the workspace,
@@ -345,6 +347,21 @@ def _defaults_folder(i: Interpreter, n: ast.AST) -> str | None:
     return posixpath.join(found, "default_configs") if found is not None else None
 
 
+# moveit_configs_utils' default_configs/*_planning.yaml by distribution (moveit2 humble
+# 2b2030dd; iron, jazzy 4d841063, kilted and main 8fcb5d23 add stomp): the names it adds
+# when it is not in the workspace, their files not known
+_DEFAULT_PIPELINES = {"humble": ("chomp", "ompl", "pilz_industrial_motion_planner")}
+_STOMP_ON = ("iron", "jazzy", "kilted", "rolling")
+
+
+def _shipped_by_distro(i: Interpreter) -> list[str] | None:
+    distro = i.environment.get("ROS_DISTRO", "").strip().lower()
+    if distro in _STOMP_ON:
+        return [*_DEFAULT_PIPELINES["humble"], "stomp"]
+    found = _DEFAULT_PIPELINES.get(distro)
+    return list(found) if found is not None else None
+
+
 def m_planning_pipelines(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
                          n: ast.AST) -> Any:
     default = arg(a, k, 0, "default_planning_pipeline")
@@ -360,6 +377,8 @@ def m_planning_pipelines(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
         names = list(_matches(i, folder, "_planning.yaml") or [])
         if load_all is not False:
             shipped = _matches(i, defaults, "_planning.yaml")
+            if shipped is None and isinstance(load_all, bool):
+                shipped = _shipped_by_distro(i)
             if shipped is None or not isinstance(load_all, bool):
                 # said here once; the values made of it say no more
                 i.unknown_value(n, "moveit_configs_utils is not in the workspace: the "
@@ -391,11 +410,22 @@ def m_planning_pipelines(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
     section: dict[Any, Any] = {
         "planning_pipelines": names if others is None else others,
         "default_planning_pipeline": default}
+    unread: list[str] = []
     for name in names:
         path = posixpath.join(folder, f"{name}_planning.yaml")
+        if not _exists(i, path) and defaults is None:
+            unread.append(name)  # moveit_configs_utils' own file, if it has one
+            continue
         if not _exists(i, path) and defaults is not None:
             path = posixpath.join(defaults, f"{name}_planning.yaml")
         section[name] = _load_yaml(i, path, n)
+    if unread:
+        files = ", ".join(f"{name}_planning.yaml" for name in unread)
+        i.unknown_value(n, f"moveit_configs_utils is not in the workspace: the pipelines' "
+                           f"files it would give ({files}) are not known")
+        made = Unknown("moveit_configs_utils' default pipeline", "unsupported",
+                       where=i.where(n))
+        section.update((name, unknown_tree(made)) for name in unread)
     if others is not None:
         section.update(unknown_tree(others))
     ompl = section.get("ompl")
