@@ -61,6 +61,7 @@ from .python_values import (
     PlainClass,
     Raised,
     ReadOnlyFile,
+    Record,
     Ref,
     SuperOf,
     _Break,
@@ -103,6 +104,9 @@ class Interpreter(Expressions):
         self.search: list[str] = []
         # modules imported from them, by source path (None: being read, or unreadable)
         self.modules: dict[str, Module | None] = {}
+        # what a known library keeps in its module or classes while the file runs
+        # (launch_param_builder's ParameterBuilder._parameters, one dict for every builder)
+        self.library_state: dict[str, Any] = {}
         # the launch's command-line arguments (``parse_python``)
         self.command_line: Mapping[str, str] = {}
         from .python_api import API, BUILTINS, METHODS
@@ -634,6 +638,10 @@ class Interpreter(Expressions):
             owner.attributes[target.attr] = value  # self.name = ... in a constructor
         elif isinstance(target, ast.Attribute) and isinstance(owner, PlainClass):
             owner.attributes[target.attr] = value  # Cls.count = ... (a class's name)
+        elif isinstance(target, ast.Attribute) and isinstance(owner, Record) and (
+                target.attr in owner.attributes):
+            # moveit_config.robot_description = {...}: a field of its (slotted) dataclass
+            owner.attributes[target.attr] = value
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
 

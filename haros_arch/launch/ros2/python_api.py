@@ -4,7 +4,8 @@
 ``get_package_share_directory``, ...) to a builder that makes our action, substitution
 or condition from the evaluated arguments; only names imported from the launch
 packages, ``os``, ``ament_index_python``, ``nav2_common``, ``controller_manager``
-(its ``launch_utils``) and ``launch_pal`` reach it. ``METHODS`` holds
+(its ``launch_utils``), ``launch_pal``, ``robotnik_common`` and ``moveit_configs_utils``
+reach it. ``METHODS`` holds
 the methods of known values (``str.format``, ``list.append``, ``LaunchDescription.
 add_action``, ``LaunchConfiguration.perform``...). Calls not listed are never made.
 """
@@ -49,6 +50,8 @@ from .python_methods import (
     xacro_process_doc,
     xacro_process_file,
 )
+from .python_moveit import METHODS as MOVEIT_METHODS
+from .python_moveit import MOVEIT_CONFIGS_UTILS
 from .python_nav2 import NAV2_COMMON, NAV2_METHODS
 from .python_robotnik import ROBOTNIK_COMMON, ROBOTNIK_METHODS
 from .python_values import (
@@ -771,7 +774,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
-    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON,
+    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON, **MOVEIT_CONFIGS_UTILS,
     "len": builtin(len, str, list, tuple, dict),
     "str": text_of(False), "repr": text_of(True),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
@@ -789,9 +792,10 @@ API: dict[str, Builder] = {
     "xacro.parse": xacro_parse, "xacro.process_doc": xacro_process_doc,
     "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
 }
-# methods of the values the interpreter knows, by name (``python_methods``), nav2's and
-# robotnik_common's
-METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS}
+# methods of the values the interpreter knows, by name (``python_methods``), nav2's,
+# robotnik_common's and moveit_configs_utils'
+METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS,
+                              **MOVEIT_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open", "getattr", "type"))

@@ -37,6 +37,7 @@ from .python_values import (
     Method,
     Module,
     PlainClass,
+    Record,
     Ref,
     _hashable,
     _opaque,
@@ -389,6 +390,8 @@ class Expressions(Walker):
             if isinstance(found, _Property):  # run on each read, as Python does
                 return self.call(Method(found.func, owner), [], {}, node)
             return found
+        if isinstance(owner, Record) and node.attr in owner.attributes:
+            return owner.attributes[node.attr]  # MoveItConfigs.robot_description
         if isinstance(owner, EnumMember) and node.attr in ("name", "value"):
             return owner.name if node.attr == "name" else owner.value
         if isinstance(owner, Context) and node.attr == "launch_configurations":

@@ -207,6 +207,17 @@ class ReadOnlyFile:
     path: str
 
 
+@dataclass(eq=False)
+class Record:
+    """An object of a known helper library whose attributes are data the launch file
+    reads and changes in place (moveit_configs_utils' ``MoveItConfigs``: a dataclass of
+    dicts); ``facts`` are what its rows know of it that the file cannot read."""
+
+    cls: str
+    attributes: dict[str, Any]
+    facts: dict[str, Any] = field(default_factory=dict)
+
+
 @dataclass
 class LaunchDescription:
     actions: list[Any] = field(default_factory=list)
@@ -221,7 +232,8 @@ class Context:
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy", "launch_pal",
-                "controller_manager", "robotnik_common")
+                "controller_manager", "robotnik_common", "moveit_configs_utils",
+                "launch_param_builder")
 
 
 def _known_module(qualified: str) -> bool:
