@@ -2170,7 +2170,7 @@ class CallFinder:
             decl = expr.referenced
             if decl is None:
                 return None
-            passed = scope.passed_to(decl)
+            passed = scope.passed_to(decl, expr)
             if passed is not None:
                 call, index = passed
                 spec, _ = self._row(call)
