@@ -60,6 +60,7 @@ from .owners import (
     opaque_constructor,
     options_arguments,
     owner_of,
+    registered_alias,
     registered_class,
     unseen_construction,
 )
@@ -394,6 +395,10 @@ class CallFinder:
             name = qualified_name(cls) if cls is not None else ""
             if cls is not None and name:
                 found[(name, name)] = None
+                alias = registered_alias(variable)
+                if alias is not None and alias != name:
+                    # the alias a plugin description names, its class reached from it
+                    found[(alias, alias)] = found[(alias, name)] = None
                 found.update(dict.fromkeys(class_bases(cls, self.owned)))
         return list(found)
 
