@@ -14,6 +14,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from haros_arch.extract import extract_nodes
 from haros_arch.model.source import Node
 from haros_arch.pipeline import read_build_files
@@ -370,3 +372,101 @@ def test_a_plugin_registered_by_an_alias_runs_what_its_class_reaches(write_tree)
     extract_nodes(list(nodes.values()), workspace, cache_dir=None, jobs=1)
     assert _rows(nodes["smac::PlannerHybrid"]) == [("publish", "plan")]
 
+
+SCHEDULE_LIB_HPP = """
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+namespace lib {
+class Registry {
+public:
+  explicit Registry(rclcpp::Node & node);
+  class Implementation;
+private:
+  std::unique_ptr<Implementation> _pimpl;
+};
+class Negotiation {
+public:
+  explicit Negotiation(rclcpp::Node & node);
+  class Implementation;
+private:
+  std::unique_ptr<Implementation> _pimpl;
+};
+}  // namespace lib
+"""
+
+SCHEDULE_LIB_CPP = """
+#include "lib/schedule.hpp"
+namespace lib {
+class Registry::Implementation {
+public:
+  Implementation() {}
+};
+Registry::Registry(rclcpp::Node &) : _pimpl(std::make_unique<Implementation>()) {}
+class Negotiation::Implementation {
+public:
+  explicit Implementation(rclcpp::Node & node) {
+    pub_ = node.create_publisher<std_msgs::msg::String>("negotiation_proposal", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+Negotiation::Negotiation(rclcpp::Node & node)
+: _pimpl(std::make_unique<Implementation>(node)) {}
+}  // namespace lib
+"""
+
+SCHEDULE_MAIN = """
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+#include "lib/schedule.hpp"
+class ScheduleNode : public rclcpp::Node {
+public:
+  ScheduleNode() : Node("schedule") {
+    registry_ = std::make_shared<lib::Registry>(*this);
+    {ERROR}
+    pub_ = create_publisher<std_msgs::msg::String>("negotiation_notice", 10);
+  }
+  std::shared_ptr<lib::Registry> registry_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<ScheduleNode>());
+  return 0;
+}
+"""
+
+
+# a statement the parse cannot read, which names the library's namespace
+UNREAD = "auto version = lib::current_version(*this, missing_argument);"
+
+
+@pytest.mark.parametrize("error", ["", UNREAD])
+def test_a_pimpl_declaration_names_its_own_implementation(write_tree, error) -> None:
+    """open-rmf's rmf_traffic_schedule: its node builds a library class whose
+    constructor's code is not in the unit (ParticipantRegistry, ``make_shared``), so the
+    words of that class's declaration may name what the constructor builds; one is
+    ``Implementation``, its own private class. That word kept the calls of every other
+    ``X::Implementation`` of the library the executable links (rmf_traffic_ros2's
+    Negotiation::Implementation: seven negotiation publishers the schedule node never
+    makes). It names the class's own: the Negotiation's publisher goes, also where code
+    the parse could not read names the namespace (``lib``), not ``Negotiation``."""
+    root = write_tree({
+        "lib/package.xml": PACKAGE.format(name="lib", depends=""),
+        "lib/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.16)\nproject(lib)\n"
+            "find_package(ament_cmake REQUIRED)\nfind_package(rclcpp REQUIRED)\n"
+            "add_library(lib_schedule SHARED src/schedule.cpp)\n"
+            "target_include_directories(lib_schedule PUBLIC include)\n"
+            "ament_target_dependencies(lib_schedule rclcpp)\n"
+            "add_executable(schedule src/main.cpp)\n"
+            "target_link_libraries(schedule lib_schedule)\nament_package()\n"),
+        "lib/include/lib/schedule.hpp": SCHEDULE_LIB_HPP,
+        "lib/src/schedule.cpp": SCHEDULE_LIB_CPP,
+        "lib/src/main.cpp": SCHEDULE_MAIN.replace("{ERROR}", error),
+    })
+    workspace = scan([str(root)])
+    read_build_files(workspace.packages["lib"], workspace)
+    nodes = {n.executable: n for n in workspace.packages["lib"].nodes}
+    extract_nodes(list(nodes.values()), workspace, cache_dir=None, jobs=1)
+    assert _rows(nodes["schedule"]) == [("publish", "negotiation_notice")]

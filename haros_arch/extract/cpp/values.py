@@ -561,12 +561,13 @@ class Scope:
         if not always:
             return None
         reaching = [value for _start, _end, value in ordered[always[-1]:]]
-        if any(value is None for value in reaching):
+        known = [value for value in reaching if value is not None]
+        if len(known) < len(reaching):
             return None
-        texts = [self.string(value, depth + 1) for value in reaching]  # type: ignore[arg-type]
+        texts = [self.string(value, depth + 1) for value in known]
         if any(part is None for part in texts[0]) or any(t != texts[0] for t in texts[1:]):
             return None
-        return reaching[0]
+        return known[0]
 
     def _in_lambda(self, first: int, last: int) -> bool:
         return (first, last) in self._lambdas

@@ -271,6 +271,9 @@ class CallFinder:
         # the words of the declarations of the classes the unit constructs without the
         # code of their constructor: what those build is not seen (``links.resolve``)
         self.unseen: set[bytes] = set()
+        # each of those words -> the classes whose declaration holds it: a name there is
+        # looked up from that class (``_reached`` counts it where the class is built)
+        self.unseen_in: dict[bytes, set[str]] = {}
         # the same words of a construction whose constructor is known, by its USR: unseen
         # unless a unit of the node defines that constructor (``links.OPAQUE``)
         self.opaque_words: dict[str, set[bytes]] = {}
@@ -1016,6 +1019,8 @@ class CallFinder:
                     self.opaque_words.setdefault(usr, set()).update(words)
                 else:
                     self.unseen.update(words)
+                    for word in words:
+                        self.unseen_in.setdefault(word, set()).add(qualified_name(opaque))
         unseen = unseen_construction(call, self.owned) if opaque is not None else None
         if unseen is not None:
             cls, given = unseen
