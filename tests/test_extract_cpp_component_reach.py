@@ -14,6 +14,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from haros_arch.extract import extract_nodes
 from haros_arch.model.source import Node
 from haros_arch.pipeline import read_build_files
@@ -201,15 +203,27 @@ def test_a_class_named_beside_a_parse_error_keeps_its_calls(write_tree) -> None:
 
 
 def test_a_class_no_registration_names_keeps_the_whole(write_tree) -> None:
-    """A registration the parse does not read (class_loader's own macro, which the
-    component macro expands to): what its container runs of the file is not known, and
-    every class of it keeps its calls, as before."""
+    """A registration the parse does not read (under a build option the parse does not
+    define): what its container runs of the file is not known, and every class of it
+    keeps its calls, as before."""
+    nodes = _nodes(_write(write_tree, register=(
+        "#ifdef WITH_SCHEDULE\nRCLCPP_COMPONENTS_REGISTER_NODE(viz::Schedule)\n#endif")))
+    for name in ("viz::Schedule", "schedule"):
+        assert set(SCHEDULE) | {("publish", "navgraph_markers")} <= set(_rows(nodes[name]))
+    # the other registration is read: that component runs what its class reaches
+    assert _rows(nodes["viz::NavGraph"]) == NAVGRAPH
+
+
+def test_class_loaders_own_registration_is_read(write_tree) -> None:
+    """class_loader's macro, which rclcpp_components' expands to and some packages
+    write themselves (``CLASS_LOADER_REGISTER_CLASS(C, rclcpp_components::
+    NodeFactory)``), registers the class as the component macro does: it runs what its
+    class reaches, where it kept the whole file (the navgraph markers)."""
     nodes = _nodes(_write(write_tree, register=(
         "#include <class_loader/class_loader.hpp>\n"
         "CLASS_LOADER_REGISTER_CLASS(viz::Schedule, rclcpp_components::NodeFactory)")))
     for name in ("viz::Schedule", "schedule"):
-        assert set(SCHEDULE) | {("publish", "navgraph_markers")} <= set(_rows(nodes[name]))
-    # the other registration is read: that component runs what its class reaches
+        assert _rows(nodes[name]) == SCHEDULE, name
     assert _rows(nodes["viz::NavGraph"]) == NAVGRAPH
 
 
@@ -255,3 +269,204 @@ def test_a_nodelet_runs_what_its_class_reaches(write_tree) -> None:
     extract_nodes(list(nodes.values()), workspace, cache_dir=None, jobs=1)
     assert _rows(nodes["lidar/Driver"]) == [("publish", "packets"), ("publish", "status")]
     assert _rows(nodes["lidar/Cloud"]) == [("publish", "points")]
+
+
+def test_a_gazebo_plugin_runs_what_its_class_reaches(write_tree) -> None:
+    """Gazebo classic's ``GZ_REGISTER_MODEL_PLUGIN(C)`` registers the class Gazebo
+    constructs, as pluginlib's export does: the plugin runs what that class reaches
+    (its ``Load`` and the function it calls), not a class of its file that only a
+    function nothing of it calls constructs (the plugin kept its files whole: the
+    debugger's publisher too)."""
+    root = write_tree({
+        "mover/package.xml": (
+            "<package format='2'><name>mover</name><version>1.0.0</version>"
+            "<description>d</description><maintainer email='a@b.c'>m</maintainer>"
+            "<license>BSD</license><buildtool_depend>catkin</buildtool_depend>"
+            "<depend>gazebo_ros</depend><depend>roscpp</depend><depend>std_msgs</depend>"
+            "</package>"),
+        "mover/CMakeLists.txt": (
+            "project(mover)\nfind_package(gazebo REQUIRED)\n"
+            "add_library(mover_plugin src/mover.cpp)\n"),
+        "mover/src/mover.cpp": (
+            "#include <gazebo/gazebo.hh>\n#include <gazebo/physics/physics.hh>\n"
+            "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+            "namespace mover {\n"
+            "class Debugger {\n public:\n  Debugger() {\n    ros::NodeHandle nh;\n"
+            "    pub_ = nh.advertise<std_msgs::String>(\"debug\", 1); }\n"
+            "  ros::Publisher pub_; };\n"
+            "void start_debugger() { static Debugger debugger; }\n"
+            "ros::Publisher advertise_status(ros::NodeHandle & nh) {\n"
+            "  return nh.advertise<std_msgs::String>(\"status\", 1); }\n"
+            "}\nnamespace gazebo {\n"
+            "class Mover : public ModelPlugin {\n"
+            "public:\n"
+            "  void Load(physics::ModelPtr model, sdf::ElementPtr sdf) {\n"
+            "    nh_.reset(new ros::NodeHandle(\"mover\"));\n"
+            "    pub_ = nh_->advertise<std_msgs::String>(\"odom\", 1);\n"
+            "    status_ = mover::advertise_status(*nh_); }\n"
+            "  boost::shared_ptr<ros::NodeHandle> nh_;\n"
+            "  ros::Publisher pub_, status_; };\n"
+            "GZ_REGISTER_MODEL_PLUGIN(Mover)\n}\n"),
+    })
+    workspace = scan([str(root)])
+    read_build_files(workspace.packages["mover"], workspace)
+    nodes = {n.executable: n for n in workspace.packages["mover"].nodes}
+    assert nodes["mover_plugin"].plugin_class == "Mover"
+    extract_nodes(list(nodes.values()), workspace, cache_dir=None, jobs=1)
+    assert _rows(nodes["mover_plugin"]) == [("publish", "mover/odom"),
+                                            ("publish", "mover/status")]
+
+
+PLANNER = """
+#include <pluginlib/class_list_macros.hpp>
+#include <nav2_core/global_planner.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+namespace smac {
+class Debugger {
+public:
+  Debugger() : node_(std::make_shared<rclcpp::Node>("debugger")) {
+    pub_ = node_->create_publisher<std_msgs::msg::String>("debug", 1);
+  }
+  rclcpp::Node::SharedPtr node_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+void start_debugger() { static Debugger debugger; }
+struct NodeHybrid {};
+template<typename NodeT = NodeHybrid>
+class PlannerT : public nav2_core::GlobalPlanner {
+public:
+  void setup(rclcpp::Node::SharedPtr node) {
+    pub_ = node->create_publisher<std_msgs::msg::String>("plan", 1);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+using PlannerHybrid = PlannerT<NodeHybrid>;
+}
+PLUGINLIB_EXPORT_CLASS(smac::PlannerHybrid, nav2_core::GlobalPlanner)
+"""
+
+
+def test_a_plugin_registered_by_an_alias_runs_what_its_class_reaches(write_tree) -> None:
+    """navigation2's smac planners: ``using SmacPlannerHybrid = SmacPlannerHybridT<
+    NodeHybrid>;`` and the export (and the plugin description) name the alias. The
+    registration names the alias's class: the plugin runs what that class reaches, not
+    a class only a function nothing of it calls constructs (it kept its file whole)."""
+    root = write_tree({
+        "smac/package.xml": PACKAGE.format(name="smac", depends="<depend>pluginlib</depend>"
+                                           "<depend>nav2_core</depend>").replace(
+            "</export>", '<nav2_core plugin="${prefix}/plugins.xml"/></export>'),
+        "smac/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.16)\nproject(smac)\n"
+            "find_package(ament_cmake REQUIRED)\nfind_package(pluginlib REQUIRED)\n"
+            "add_library(smac_planner SHARED src/planner.cpp)\n"
+            "pluginlib_export_plugin_description_file(nav2_core plugins.xml)\n"
+            "ament_package()\n"),
+        "smac/plugins.xml": ('<library path="smac_planner"><class type="smac::PlannerHybrid"'
+                             ' base_class_type="nav2_core::GlobalPlanner"/></library>\n'),
+        "smac/src/planner.cpp": PLANNER,
+    })
+    workspace = scan([str(root)])
+    read_build_files(workspace.packages["smac"], workspace)
+    nodes = {n.executable: n for n in workspace.packages["smac"].nodes}
+    extract_nodes(list(nodes.values()), workspace, cache_dir=None, jobs=1)
+    assert _rows(nodes["smac::PlannerHybrid"]) == [("publish", "plan")]
+
+
+SCHEDULE_LIB_HPP = """
+#include <memory>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+namespace lib {
+class Registry {
+public:
+  explicit Registry(rclcpp::Node & node);
+  class Implementation;
+private:
+  std::unique_ptr<Implementation> _pimpl;
+};
+class Negotiation {
+public:
+  explicit Negotiation(rclcpp::Node & node);
+  class Implementation;
+private:
+  std::unique_ptr<Implementation> _pimpl;
+};
+}  // namespace lib
+"""
+
+SCHEDULE_LIB_CPP = """
+#include "lib/schedule.hpp"
+namespace lib {
+class Registry::Implementation {
+public:
+  Implementation() {}
+};
+Registry::Registry(rclcpp::Node &) : _pimpl(std::make_unique<Implementation>()) {}
+class Negotiation::Implementation {
+public:
+  explicit Implementation(rclcpp::Node & node) {
+    pub_ = node.create_publisher<std_msgs::msg::String>("negotiation_proposal", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+Negotiation::Negotiation(rclcpp::Node & node)
+: _pimpl(std::make_unique<Implementation>(node)) {}
+}  // namespace lib
+"""
+
+SCHEDULE_MAIN = """
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+#include "lib/schedule.hpp"
+class ScheduleNode : public rclcpp::Node {
+public:
+  ScheduleNode() : Node("schedule") {
+    registry_ = std::make_shared<lib::Registry>(*this);
+    {ERROR}
+    pub_ = create_publisher<std_msgs::msg::String>("negotiation_notice", 10);
+  }
+  std::shared_ptr<lib::Registry> registry_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<ScheduleNode>());
+  return 0;
+}
+"""
+
+
+# a statement the parse cannot read, which names the library's namespace
+UNREAD = "auto version = lib::current_version(*this, missing_argument);"
+
+
+@pytest.mark.parametrize("error", ["", UNREAD])
+def test_a_pimpl_declaration_names_its_own_implementation(write_tree, error) -> None:
+    """open-rmf's rmf_traffic_schedule: its node builds a library class whose
+    constructor's code is not in the unit (ParticipantRegistry, ``make_shared``), so the
+    words of that class's declaration may name what the constructor builds; one is
+    ``Implementation``, its own private class. That word kept the calls of every other
+    ``X::Implementation`` of the library the executable links (rmf_traffic_ros2's
+    Negotiation::Implementation: seven negotiation publishers the schedule node never
+    makes). It names the class's own: the Negotiation's publisher goes, also where code
+    the parse could not read names the namespace (``lib``), not ``Negotiation``."""
+    root = write_tree({
+        "lib/package.xml": PACKAGE.format(name="lib", depends=""),
+        "lib/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.16)\nproject(lib)\n"
+            "find_package(ament_cmake REQUIRED)\nfind_package(rclcpp REQUIRED)\n"
+            "add_library(lib_schedule SHARED src/schedule.cpp)\n"
+            "target_include_directories(lib_schedule PUBLIC include)\n"
+            "ament_target_dependencies(lib_schedule rclcpp)\n"
+            "add_executable(schedule src/main.cpp)\n"
+            "target_link_libraries(schedule lib_schedule)\nament_package()\n"),
+        "lib/include/lib/schedule.hpp": SCHEDULE_LIB_HPP,
+        "lib/src/schedule.cpp": SCHEDULE_LIB_CPP,
+        "lib/src/main.cpp": SCHEDULE_MAIN.replace("{ERROR}", error),
+    })
+    workspace = scan([str(root)])
+    read_build_files(workspace.packages["lib"], workspace)
+    nodes = {n.executable: n for n in workspace.packages["lib"].nodes}
+    extract_nodes(list(nodes.values()), workspace, cache_dir=None, jobs=1)
+    assert _rows(nodes["schedule"]) == [("publish", "negotiation_notice")]

@@ -251,3 +251,50 @@ def test_a_template_argument_written_is_the_type_read(tmp_path):
     assert got == [("~tool", "bool", True), ("~rate", "double", 10.0), ("~count", "int", None),
                    ("~frame", "str", "map"), ("~gain", "double", None), ("/on", "bool", False)]
     assert [type(c.default) for c in result.calls[:2]] == [bool, float]
+
+
+BRANCHED_SEARCH = """
+#include <ros/ros.h>
+#include <string>
+#include <std_msgs/String.h>
+void cb(const std_msgs::String::ConstPtr&) {}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle private_nh("~");
+  std::string topic_param, topic;
+  if (!private_nh.searchParam("footprint_topic", topic_param))
+  {
+    topic_param = "footprint_topic";
+  }
+  private_nh.param(topic_param, topic, std::string("footprint"));
+  ros::Subscriber s = private_nh.subscribe(topic, 1, cb);
+  if (!private_nh.searchParam("published_footprint_topic", topic_param))
+  {
+    topic_param = "published_footprint";
+  }
+  private_nh.param(topic_param, topic, std::string("footprint"));
+  ros::Publisher p = private_nh.advertise<std_msgs::String>(topic, 1);
+  return 0;
+}
+"""
+
+
+def test_a_key_both_sides_of_a_searchParam_branch_name_is_read(tmp_path):
+    """costmap_2d's Costmap2DROS: ``if (!nh.searchParam("footprint_topic", key)) key =
+    "footprint_topic";`` then ``nh.param(key, topic, ...)``: the key is the one searched
+    for whichever side runs, so the read is of ``footprint_topic`` (searched), where it
+    was ``~?``; and the subscriber's topic is that parameter's value. Where the sides
+    differ (``published_footprint_topic`` searched, else ``published_footprint``) the
+    read stays ``?``, and the advertise's topic is the value of that read, not of the
+    first one (``topic`` is read into twice)."""
+    source = tmp_path / "n.cpp"
+    source.write_text(BRANCHED_SEARCH)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = sorted((c.location.line, c.kind, c.name, c.searched, c.name_param)
+                 for c in result.calls)
+    assert got == [(10, "read", "~footprint_topic", True, None),
+                   (14, "read", "~footprint_topic", True, None),
+                   (15, "subscribe", "~?", False, "~footprint_topic"),
+                   (16, "read", "~published_footprint_topic", True, None),
+                   (20, "read", "~?", False, None),
+                   (21, "publish", "~?", False, "~?")]

@@ -583,17 +583,23 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
 
 def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> bool:
     """Whether the code that may hide a construction (``words``) can name the class
-    ``cls``: its own name is one of them, anywhere, or written in a function (``scoped``:
-    the owners that run whose functions hold it) whose scopes C++ looks it up in (its
-    class, the namespaces around it) hold the class, or where a class or namespace
-    around it is named too (``Dispatcher::Implementation``, a ``using namespace``)."""
+    ``cls``: its own name is one of them, anywhere, or written in a function or a class
+    declaration (``scoped``: the owners that run holding it) whose scopes C++ looks it
+    up in (its class, the namespaces around it) hold the class, or where the class or
+    namespace just around it is named too, in the same code or anywhere
+    (``Dispatcher::Implementation``, a ``using namespace``). Not where only an outer
+    namespace is: open-rmf's schedule node names ``rmf_traffic_ros2`` and builds
+    ParticipantRegistry, whose declaration names its own ``Implementation``, never
+    ``rmf_traffic_ros2::schedule::Negotiation::Implementation``."""
     scope, _, own = cls.rpartition("::")
     if own not in words:
         return False
     holders = scoped.get(own)
     if holders is None:
         return True
-    if any(part in words for part in scope.split("::") if part):
+    around_it = scope.rpartition("::")[2]
+    if around_it in words and (scoped.get(around_it) is None
+                               or not scoped[around_it].isdisjoint(holders)):
         return True  # named with its class or namespace, or after a using-directive
     for holder in holders:
         parts = holder.removesuffix("()").split("::")
@@ -1046,13 +1052,21 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # the node handed to code the parse does not read (another package's class, a
     # function it does not know) may construct anything there
     held: dict[bytes, set[str]] = {}
-    words = _unseen(errors, places, held) | finder.unseen
+    around = _unseen(errors, places, held)
+    # a word of a declaration of a class built here without its constructor's code
+    # names what C++ finds from that class (``Implementation``, a pimpl class's own:
+    # not open-rmf's Negotiation::Implementation), unless code outside any function
+    # around an error holds it too
+    for word, classes in finder.unseen_in.items():
+        if word not in around or word in held:
+            held.setdefault(word, set()).update(classes)
+    words = around | finder.unseen
     result.unseen = ["*"] if any(d.code in _HANDED for d in result.diagnostics) else sorted(
         word.decode() for word in words)
     # also where the node is handed on (``*``): the words of the code that hands it,
     # which may construct what it names there (``_reached``)
     result.unseen_in = sorted((word.decode(), owner) for word, owners in held.items()
-                              if word not in finder.unseen for owner in owners)
+                              for owner in owners)
     if result.unseen == ["*"]:
         result.handed = sorted(finder.handed) if finder.handed else [""]
         result.passed = sorted(finder.passed)

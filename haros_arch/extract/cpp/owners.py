@@ -127,6 +127,21 @@ def registered_class(variable: Cursor, owned: Callable[[str], bool]) -> Cursor |
     return cls
 
 
+def registered_alias(variable: Cursor) -> str | None:
+    """The qualified name a registration macro's variable (``REGISTRATIONS``) writes
+    for its class when that is an alias (``using SmacPlannerHybrid =
+    SmacPlannerHybridT<NodeHybrid>; PLUGINLIB_EXPORT_CLASS(nav2_smac_planner::
+    SmacPlannerHybrid, ...)``, a ``typedef``): the name a plugin description gives the
+    class, which is not the class's own; else None."""
+    written = variable.type.get_template_argument_type(0)
+    declaration = written.get_declaration() if written.kind != TypeKind.INVALID else None
+    if declaration is None or declaration.kind not in (CursorKind.TYPE_ALIAS_DECL,
+                                                       CursorKind.TYPEDEF_DECL):
+        return None
+    scope = qualified_name(declaration.semantic_parent)
+    return f"{scope}::{declaration.spelling}" if scope else declaration.spelling
+
+
 def _construction(call: Cursor, owned: Callable[[str], bool]
                   ) -> tuple[Cursor, Cursor | None] | None:
     """The class of the workspace a call constructs and the constructor it calls (None

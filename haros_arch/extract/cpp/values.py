@@ -339,6 +339,8 @@ class Scope:
         # call, and nothing asks their values)
         self._writes: dict[tuple[str, int], list[Cursor | None]] | None = None
         self._passed: dict[tuple[str, int], tuple[Cursor, int]] = {}
+        # variable -> every (call, argument index) it is passed to by reference
+        self._passings: dict[tuple[str, int], list[tuple[Cursor, int]]] = {}
         # member -> (offset, expression) of each ``member_ = value`` of this body
         # member (or chain of members from this object: ``_named``) -> (offset, value)
         # of each assignment in this body
@@ -410,6 +412,8 @@ class Scope:
                     if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) \
                             and arg.referenced is not None:
                         self._passed[key_of(arg.referenced)] = (node, index)
+                        self._passings.setdefault(key_of(arg.referenced), []).append(
+                            (node, index))
             for write in writes_of(node, self.source):
                 self._keep(write)
 
@@ -497,15 +501,17 @@ class Scope:
         key = key_of(decl)
         return key in self.writes or key in self._placed or key in self._passed
 
-    def written_before(self, decl: Cursor, at: Cursor) -> Cursor | None:
+    def written_before(self, decl: Cursor, at: Cursor, depth: int = 0) -> Cursor | None:
         """What local variable ``decl``, written several times in this body, holds where
         ``at`` reads it: the value of the write that ends last before the read (``name
         = prefix + "reset"; create_service(name, ...); name = prefix + "pose"; ...``:
         zed_wrapper's), when that write runs before the read whenever the read runs (not
         in a branch, loop or lambda the read is outside of) and no write may run between
         it and the read: none later in a loop or lambda the read is in (the next turn,
-        a later call), none later at all for a read in a lambda. None otherwise, or
-        when that write's value is not known."""
+        a later call), none later at all for a read in a lambda. When the writes after
+        the last one that always runs may not run (in a branch), the value they all
+        agree on (``_agreed``). None otherwise, or when that write's value is not
+        known."""
         _ = self.writes  # read from the body together
         placed = self._placed.get(key_of(decl))
         if not placed or len(placed) < 2 or self.body is None:
@@ -521,9 +527,10 @@ class Scope:
         start, _end, value = max(before, key=lambda w: w[1])
         if value is None:
             return None
-        if any(first <= start <= last and not first <= where <= last
-               for first, last in self._regions):
-            return None  # it may not run before the read
+        if self._may_skip(start, where):  # it may not run before the read
+            value = self._agreed(before, where, depth)
+            if value is None:
+                return None
         later = [w[0] for w in placed if w[1] > where]
         for first, last in self._repeated:
             if first <= where <= last and any(
@@ -531,6 +538,36 @@ class Scope:
                     for other in later):
                 return None
         return value
+
+    def _may_skip(self, offset: int, where: int) -> bool:
+        """Whether what starts at ``offset`` may not run before a read at ``where``: it
+        is in a branch, loop or lambda that the read is outside of."""
+        return any(first <= offset <= last and not first <= where <= last
+                   for first, last in self._regions)
+
+    def _agreed(self, before: list[tuple[int, int, Cursor | None]], where: int,
+                depth: int) -> Cursor | None:
+        """The value a read at ``where`` sees whichever of the writes ``before`` it
+        reach it: the last write that always runs before the read, and every later one
+        (each in a branch, loop or lambda the read is outside of) when their values
+        are all known in full and the same text (costmap_2d's ``if
+        (!nh.searchParam("footprint_topic", key)) key = "footprint_topic";``: the key is
+        the one searched for either way). The first of them (the name a search found
+        covers the one it started from); None when any differs, is not known, or no
+        write always runs (a variable declared without a value: what it held first)."""
+        ordered = sorted(before, key=lambda w: w[1])
+        always = [i for i, (start, _end, _v) in enumerate(ordered)
+                  if not self._may_skip(start, where)]
+        if not always:
+            return None
+        reaching = [value for _start, _end, value in ordered[always[-1]:]]
+        known = [value for value in reaching if value is not None]
+        if len(known) < len(reaching):
+            return None
+        texts = [self.string(value, depth + 1) for value in known]
+        if any(part is None for part in texts[0]) or any(t != texts[0] for t in texts[1:]):
+            return None
+        return known[0]
 
     def _in_lambda(self, first: int, last: int) -> bool:
         return (first, last) in self._lambdas
@@ -620,9 +657,23 @@ class Scope:
 
     # -- values -----------------------------------------------------------------------
 
-    def passed_to(self, decl: Cursor) -> tuple[Cursor, int] | None:
-        """The last call ``decl`` was passed to by reference, and at which index."""
-        return self.passed.get(key_of(decl))
+    def passed_to(self, decl: Cursor, at: Cursor | None = None) -> tuple[Cursor, int] | None:
+        """The last call ``decl`` was passed to by reference, and at which index; for a
+        read ``at`` in this body, the last such call that ends before it (costmap_2d's
+        ``nh.param(key, topic, ...)`` twice, each read before its own ``subscribe`` /
+        ``advertise(topic, ...)``), when there is one."""
+        key = key_of(decl)
+        found = self.passed.get(key)
+        calls = self._passings.get(key, [])
+        if at is None or len(calls) < 2 or self.body is None:
+            return found
+        body, read = self.body.extent, at.extent
+        if not (body.start.file and read.start.file
+                and body.start.file.name == read.start.file.name
+                and body.start.offset <= read.start.offset <= body.end.offset):
+            return found
+        before = [c for c in calls if c[0].extent.end.offset <= read.start.offset]
+        return max(before, key=lambda c: c[0].extent.end.offset) if before else found
 
     def variable(self, decl: Cursor) -> Cursor | None:
         """The one expression variable ``decl`` holds, when there is exactly one."""
@@ -657,7 +708,7 @@ class Scope:
             ):
                 value = self.assigned(decl, cursor)
             elif value is None and decl.kind == CursorKind.VAR_DECL:
-                value = self.written_before(decl, cursor)
+                value = self.written_before(decl, cursor, depth)
             if value is None:
                 found = self.field(decl)
                 if found is None and self.sites is not None:

@@ -60,6 +60,7 @@ from .owners import (
     opaque_constructor,
     options_arguments,
     owner_of,
+    registered_alias,
     registered_class,
     unseen_construction,
 )
@@ -270,6 +271,9 @@ class CallFinder:
         # the words of the declarations of the classes the unit constructs without the
         # code of their constructor: what those build is not seen (``links.resolve``)
         self.unseen: set[bytes] = set()
+        # each of those words -> the classes whose declaration holds it: a name there is
+        # looked up from that class (``_reached`` counts it where the class is built)
+        self.unseen_in: dict[bytes, set[str]] = {}
         # the same words of a construction whose constructor is known, by its USR: unseen
         # unless a unit of the node defines that constructor (``links.OPAQUE``)
         self.opaque_words: dict[str, set[bytes]] = {}
@@ -394,6 +398,10 @@ class CallFinder:
             name = qualified_name(cls) if cls is not None else ""
             if cls is not None and name:
                 found[(name, name)] = None
+                alias = registered_alias(variable)
+                if alias is not None and alias != name:
+                    # the alias a plugin description names, its class reached from it
+                    found[(alias, alias)] = found[(alias, name)] = None
                 found.update(dict.fromkeys(class_bases(cls, self.owned)))
         return list(found)
 
@@ -1011,6 +1019,8 @@ class CallFinder:
                     self.opaque_words.setdefault(usr, set()).update(words)
                 else:
                     self.unseen.update(words)
+                    for word in words:
+                        self.unseen_in.setdefault(word, set()).add(qualified_name(opaque))
         unseen = unseen_construction(call, self.owned) if opaque is not None else None
         if unseen is not None:
             cls, given = unseen
@@ -2170,7 +2180,7 @@ class CallFinder:
             decl = expr.referenced
             if decl is None:
                 return None
-            passed = scope.passed_to(decl)
+            passed = scope.passed_to(decl, expr)
             if passed is not None:
                 call, index = passed
                 spec, _ = self._row(call)

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include <haros_registration.h>
 namespace class_loader {
 class ClassLoader {
 public:
@@ -26,5 +27,9 @@ public:
   void loadLibrary(const std::string& library_path);
 };
 }
-#define CLASS_LOADER_REGISTER_CLASS(Derived, Base)
+// the registration pluginlib's export expands to, written by some libraries themselves
+// (a component's factory: rclcpp_components' macro is this one in ROS 2)
+#define CLASS_LOADER_REGISTER_CLASS(Derived, Base) HAROS_PLUGIN_EXPORT(Derived, Base)
+#define CLASS_LOADER_REGISTER_CLASS_WITH_MESSAGE(Derived, Base, Message) \
+  HAROS_PLUGIN_EXPORT(Derived, Base)
 #endif

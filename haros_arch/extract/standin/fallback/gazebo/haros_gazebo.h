@@ -17,6 +17,7 @@
 #include <vector>
 #include <boost/shared_ptr.hpp>
 #include <sdf/sdf.hh>
+#include <haros_registration.h>
 
 #define override
 
@@ -133,15 +134,21 @@ public:
 }  // namespace gazebo
 
 #define GZ_REGISTER_WORLD_PLUGIN(classname) \
+  HAROS_PLUGIN_EXPORT(classname, gazebo::WorldPlugin) \
   extern "C" void *RegisterPlugin() { return new classname(); }
 #define GZ_REGISTER_MODEL_PLUGIN(classname) \
+  HAROS_PLUGIN_EXPORT(classname, gazebo::ModelPlugin) \
   extern "C" void *RegisterPlugin() { return new classname(); }
 #define GZ_REGISTER_SENSOR_PLUGIN(classname) \
+  HAROS_PLUGIN_EXPORT(classname, gazebo::SensorPlugin) \
   extern "C" void *RegisterPlugin() { return new classname(); }
 #define GZ_REGISTER_SYSTEM_PLUGIN(classname) \
+  HAROS_PLUGIN_EXPORT(classname, gazebo::SystemPlugin) \
   extern "C" void *RegisterPlugin() { return new classname(); }
 #define GZ_REGISTER_VISUAL_PLUGIN(classname) \
+  HAROS_PLUGIN_EXPORT(classname, gazebo::VisualPlugin) \
   extern "C" void *RegisterPlugin() { return new classname(); }
 #define GZ_REGISTER_GUI_PLUGIN(classname) \
+  HAROS_PLUGIN_EXPORT(classname, gazebo::GUIPlugin) \
   extern "C" void *RegisterPlugin() { return new classname(); }
 #endif
