@@ -287,3 +287,37 @@ def test_an_override_gives_reads_at_a_line_the_default_a_helper_takes(tmp_path):
     read = next(c for c in node.calls if c.kind == "read")
     assert (read.name, read.has_default) == ("~topics", True)
     assert outcome.override_problems == []
+
+
+def test_paths_into_the_trees_of_a_build_are_relative_to_their_tree():
+    from haros_arch.models.generate import _tree_relative
+
+    tree, other = "/b/sources/o+p@0123456789ab", "/b/sources/o+q@89abcdef0123"
+    text = json.dumps({"sources": ["p/src/a.cpp", f"{other}/q/src/lib.cpp"],
+                       "file": f"{other}/q/src/lib.cpp",
+                       "reasons": [f"{tree}/p/src/a.cpp:3: C++ error"],
+                       "default": "/b/elsewhere/x"})
+    assert json.loads(_tree_relative(text, [tree, other + "/"])) == {
+        "sources": ["p/src/a.cpp", "q/src/lib.cpp"], "file": "q/src/lib.cpp",
+        "reasons": ["p/src/a.cpp:3: C++ error"], "default": "/b/elsewhere/x"}
+
+
+def test_no_shipped_model_names_a_path_of_the_machine_that_built_it():
+    # a controller's test executable runs controller_manager's code, in ros_control's
+    # tree: its sources and locations are relative to that tree
+    import glob
+
+    from haros_arch.models import library
+
+    found = []
+    for path in sorted(glob.glob(os.path.join(library.DATA, "*", "*.json"))):
+        with open(path, encoding="utf-8") as handle:
+            data = json.load(handle)
+        for node in data.get("nodes", []):
+            files = [*node.get("sources", []),
+                     *(c["location"]["file"] for c in node.get("calls", [])
+                       if c.get("location") and c["location"].get("file"))]
+            found += [(os.path.basename(path), f) for f in files if os.path.isabs(f)]
+            found += [(os.path.basename(path), r) for r in node.get(
+                "completeness_reasons", []) if "/tmp/" in r]
+    assert found == []

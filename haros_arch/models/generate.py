@@ -25,6 +25,7 @@ may complete a model; what it adds has origin ``override``.
 
 from __future__ import annotations
 
+import json
 import os
 import re
 from collections.abc import Callable, Iterable, Sequence
@@ -209,7 +210,7 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
          **({"with": ", ".join(f"{r}@{c}" for r, c in task.entry.context)}
             if task.entry.context else {})},
         {"name": "haros-arch", "version": __version__}, override)
-    outcome.text = dumps(model)
+    outcome.text = _tree_relative(dumps(model), (task.tree, *task.context))
     outcome.nodes = [n.executable for n in package.nodes]
     outcome.calls = sum(len(n.calls) for n in package.nodes)
     outcome.unresolved = sum(1 for n in package.nodes for c in n.calls
@@ -217,6 +218,17 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     outcome.partial = {n.executable: list(n.completeness_reasons) for n in package.nodes
                        if n.completeness in ("partial", "unknown")}
     return outcome
+
+
+def _tree_relative(text: str, folders: Iterable[str]) -> str:
+    """The model's text with each path into a source tree of the build (the package's, or
+    one scanned alongside: a controller's test executable runs controller_manager's
+    code, in ros_control's tree) relative to that tree, as the package's own paths are:
+    no path of the machine that built it."""
+    for folder in folders:
+        prefix = json.dumps(os.path.abspath(folder).rstrip(os.sep) + os.sep)[1:-1]
+        text = text.replace(f'"{prefix}', '"').replace(f" {prefix}", " ")
+    return text
 
 
 def _apply_override(task: Task, nodes: list[Node], found: list[Diagnostic]) -> str | None:
