@@ -157,3 +157,54 @@ def test_a_shared_library_opened_by_name_makes_the_node_partial(tmp_path: Any) -
     assert node.completeness_reasons[0].endswith(
         "void * handle = dlopen(path.c_str(), RTLD_LAZY);: loads a shared library chosen "
         "at run time")
+
+
+VENDOR_NODE = """
+    #include <dlfcn.h>
+    #include <string>
+    #include <ros/ros.h>
+    #include "arm/api.h"
+
+    int main(int argc, char ** argv) {
+      ros::init(argc, argv, "arm");
+      ros::NodeHandle nh("~");
+      void * usb = dlopen(ARM_USB_LIBRARY, RTLD_NOW | RTLD_GLOBAL);
+      void * comm = dlopen("libArm.API.Comm.so", RTLD_NOW);
+      OTHER
+      ros::Publisher angles = nh.advertise<std_msgs::String>("out/joint_angles", 2);
+      ros::spin();
+    }
+    """
+
+
+def _vendor_run(write_tree: Any, other: str, cmake: str = "") -> Any:
+    root = write_tree({
+        "src/arm/package.xml": package_xml("arm", build_type="catkin"),
+        "src/arm/CMakeLists.txt":
+            "project(arm)\nadd_executable(arm_driver src/arm_driver.cpp)\n" + cmake,
+        "src/arm/include/arm/api.h": '#define ARM_USB_LIBRARY "Arm.API.USBCommandLayer.so"\n',
+        "src/arm/src/arm_driver.cpp": VENDOR_NODE.replace("OTHER", other),
+        "src/arm/launch/arm.launch": '<launch><node pkg="arm" type="arm_driver" name="arm"/>'
+                                     '</launch>\n',
+        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    return next(n for n in model.configurations[0].nodes if n.name == "/arm")
+
+
+def test_a_vendor_library_the_code_names_is_no_plugin(write_tree: Any) -> None:
+    """kinova_arm_driver dlopen()s Kinova's USB API by a macro of a file name
+    (``#define KINOVA_USB_LIBRARY "Kinova.API.USBCommandLayerUbuntu.so"``): a vendor's
+    library, as any it links, not modules chosen at run time. It made the driver partial,
+    and the tf updater's subscription to a topic the driver does not publish (a wrong
+    remap) undecided. A library named so that the workspace builds, or one named by a
+    value, still makes the node partial."""
+    instance = _vendor_run(write_tree, "")
+    assert instance.completeness == "complete", instance.completeness_reasons
+    instance = _vendor_run(write_tree, "", "add_library(Arm.API.Comm src/comm.cpp)\n")
+    assert instance.completeness == "partial"
+    assert [r for r in instance.completeness_reasons if "dlopen(\"libArm" in r]
+    instance = _vendor_run(write_tree, "void * more = dlopen(argv[1], RTLD_NOW);")
+    assert instance.completeness == "partial"
+    assert [r for r in instance.completeness_reasons if "dlopen(argv[1]" in r]

@@ -113,6 +113,13 @@ links:
   - {{kind: publish, node: /b, name: /cmd, type: geometry_msgs/Twist,
      conditions: [{NAV350}]}}
 """, "compare(NAV_350) == 0)"),
+    # two servers of one service, one of them only under a condition of its code
+    "multiple-service-servers": (f"""
+links:
+  - {{kind: server, node: /map_a, name: /static_map, type: nav_msgs/GetMap}}
+  - {{kind: server, node: /map_b, name: /static_map, type: nav_msgs/GetMap,
+     conditions: [{NAV350}]}}
+""", "compare(NAV_350) == 0)"),
     "parameter-type-mismatch": (f"""
 parameters:
   - {{name: /base/rate, type: str, value: fast, writers: ["<launch>"], conditions: [{JOY}]}}
@@ -257,3 +264,34 @@ links:
     assert list(findings("subscriber-without-publisher", model)) == [
         "subscriber-without-publisher"]
     assert findings("conditional-communication", model) == {}
+
+
+def test_a_call_in_a_loop_over_the_node_running_is_not_conditional() -> None:
+    """kinova_arm_driver builds its arm (which advertises out/joint_angles and the rest)
+    in the body of ``while (ros::ok())``, to build it again after a failure: its first
+    turn runs whenever the node does. Its publishers were "conditional", and every
+    absence they could fill undecided. A loop over anything else stays a condition."""
+    def loop(text: str) -> str:
+        return f"{{text: '{text}', kind: source, statement: while}}"
+
+    running = ["ros::ok()", "!ros::isShuttingDown()", "rclcpp::ok()",
+               "not rospy.is_shutdown()", "rclpy.ok() and not rospy.is_shutdown()"]
+    for text in running:
+        model = f"""
+links:
+  - {{kind: publish, node: /driver, name: /driver/out/joint_angles, type: a/JointAngles,
+     conditions: [{loop(text)}, {TRY}]}}
+  - {{kind: subscribe, node: /tf_updater, name: /arm_driver/out/joint_angles,
+     type: a/JointAngles}}
+"""
+        assert findings("conditional-communication", model) == {}, text
+        found = findings("subscriber-without-publisher", model)
+        assert list(found) == ["subscriber-without-publisher"], (text, found)
+    for text in ("running_", "ros::ok() && running_", "nh.ok()"):
+        model = f"""
+links:
+  - {{kind: publish, node: /driver, name: /joint_angles, type: a/JointAngles,
+     conditions: [{loop(text)}]}}
+"""
+        assert list(findings("conditional-communication", model)) == [
+            "conditional-communication"], text

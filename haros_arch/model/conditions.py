@@ -24,6 +24,19 @@ EACH_STATEMENT = "for each"
 # ``imuN`` in a ``do`` loop, under an ``if`` that is its condition) and a ROS 2 launch
 # ``TimerAction`` (what it holds starts once its period has passed)
 RUN_ONCE_STATEMENTS = frozenset({"try", "do", "timer"})
+# a loop test that holds from the node's start until it shuts down: roscpp's
+# ``ros::ok()`` / ``!ros::isShuttingDown()``, rclcpp's ``rclcpp::ok()``, rospy's
+# ``not rospy.is_shutdown()``, rclpy's ``rclpy.ok()`` (one of them, or several joined by
+# ``&&`` / ``and``). The first turn of ``while`` over it runs whenever the node does, so
+# it is no condition of existing either (kinova_arm_driver builds its arm, which
+# advertises every topic, in the body of ``while (ros::ok())``, to rebuild it after a
+# failure)
+_RUNNING = re.compile(
+    r"(?:(?:::\s*)?(?:ros|rclcpp)\s*::\s*ok\s*\(\s*\)"
+    r"|!\s*(?:::\s*)?ros\s*::\s*isShuttingDown\s*\(\s*\)"
+    r"|not\s+rospy\s*\.\s*(?:core\s*\.\s*)?is_shutdown\s*\(\s*\)"
+    r"|rclpy\s*\.\s*ok\s*\(\s*\))")
+_AND = re.compile(r"&&|\band\b")
 # the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
 # rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
 # ``self.origin_param.value``
@@ -183,5 +196,24 @@ def undecided(conditions: tuple[Condition, ...]) -> tuple[Condition, ...]:
     """The conditions of a conjunction under which its entity may not exist. What an
     entity keeps is what the configuration could not decide (the graph takes off the
     conditions it decides true and drops the entity under one decided false); of these,
-    a block that runs at least once is no condition of existing (``RUN_ONCE_STATEMENTS``)."""
-    return tuple(c for c in conditions if c.statement not in RUN_ONCE_STATEMENTS)
+    a block that runs at least once is no condition of existing (``RUN_ONCE_STATEMENTS``,
+    a ``while`` loop over the node's running: ``runs_while_node_runs``)."""
+    return tuple(c for c in conditions
+                 if c.statement not in RUN_ONCE_STATEMENTS and not runs_while_node_runs(c))
+
+
+def runs_while_node_runs(condition: Condition) -> bool:
+    """Whether ``condition`` is a ``while`` loop of the code whose test holds as long as
+    the node runs (``_RUNNING``): its first turn runs whenever the node does."""
+    if condition.kind != "source" or condition.statement != "while":
+        return False
+    return all(_RUNNING.fullmatch(_unwrapped(part)) is not None
+               for part in _AND.split(_unwrapped(condition.text)))
+
+
+def _unwrapped(text: str) -> str:
+    """``text`` without surrounding blanks and one pair of parentheses around it all."""
+    text = text.strip()
+    if text.startswith("(") and text.endswith(")") and text.count("(") == text.count(")"):
+        text = text[1:-1].strip()
+    return text

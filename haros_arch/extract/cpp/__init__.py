@@ -961,12 +961,68 @@ _LIBRARY_LOAD = re.compile(
     r"(?<![\w.>:])(?:::\s*)?(dlopen|LoadLibrary[AW]?|LoadLibraryEx[AW]?)\s*\(")
 
 
-def library_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]:
+def library_loads(path: str, text: str, workspace: Workspace,
+                  tu: TranslationUnit | None = None) -> list[Diagnostic]:
     """The lines of ``text`` (the unit's own source) that open a shared library by name
     (``CPP_LIBRARY_LOADED``, a cause of partial): MOLA's launcher dlopen()s the modules
-    its configuration lists; what they do on the node is not in its code."""
-    return _load_lines("CPP_LIBRARY_LOADED", path, text, workspace,
-                       _LIBRARY_LOAD.finditer(text), ("//", "*", "/*", "#"))
+    its configuration lists; what they do on the node is not in its code. With the
+    unit's parse ``tu``, not a load of a library the code names by a string literal
+    (itself or through a macro) that no package of the workspace builds
+    (``_vendor_library``): a vendor's library, like any the node links."""
+    sites = _LIBRARY_LOAD.finditer(text)
+    if tu is not None:
+        sites = (m for m in sites if not _vendor_library(path, text, m, tu, workspace))
+    return _load_lines("CPP_LIBRARY_LOADED", path, text, workspace, sites,
+                       ("//", "*", "/*", "#"))
+
+
+# a load's first argument: a string literal with no escape, a macro's name
+_LITERAL_ARGUMENT = re.compile(r'\s*"([^"\\\n]+)"\s*,')
+_MACRO_ARGUMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*,")
+_LIBRARY_FILE = re.compile(r"^(?:.*/)?(?:lib)?([\w.+-]+?)(?:\.so(?:\.[\d.]*)?|\.dll|\.dylib)?$")
+
+
+def _vendor_library(path: str, text: str, site: re.Match[str], tu: TranslationUnit,
+                    workspace: Workspace) -> bool:
+    """Whether the load at ``site`` opens a library the code names by a string literal
+    (kinova_driver's ``dlopen(KINOVA_USB_LIBRARY, ...)``, a macro of
+    ``"Kinova.API.USBCommandLayerUbuntu.so"``) whose name no ``add_library`` of the
+    workspace's CMake files makes (a vendor's library, not ROS code of the workspace).
+    Read off the text and the parse's macro definitions: the call itself may not be
+    in the parse (``dlfcn.h`` is no stand-in)."""
+    literal = _LITERAL_ARGUMENT.match(text, site.end())
+    if literal is not None:
+        written = literal.group(1)
+    else:
+        macro = _MACRO_ARGUMENT.match(text, site.end())
+        if macro is None:
+            return False
+        start = macro.start(1)
+        line = text.count("\n", 0, start) + 1
+        column = len(text[text.rfind("\n", 0, start) + 1:start].encode("utf-8")) + 1
+        try:
+            cursor = Cursor.from_location(tu, tu.get_location(path, (line, column)))
+            defined = cursor.referenced if cursor is not None and (
+                cursor.kind == CursorKind.MACRO_INSTANTIATION) else None
+            tokens = [t.spelling for t in defined.get_tokens()] if defined is not None else []
+        except (ValueError, TypeError, AttributeError):
+            return False
+        if len(tokens) != 2 or tokens[0] != macro.group(1):
+            return False
+        quoted = _LITERAL_ARGUMENT.fullmatch(tokens[1] + ",")
+        if quoted is None:
+            return False
+        written = quoted.group(1)
+    named = _LIBRARY_FILE.match(written)
+    if named is None:
+        return False
+    made = re.compile(r"\badd_library\s*\(\s*(?:lib)?" + re.escape(named.group(1)) + r"\b")
+    for package in workspace.packages.values():
+        cmake = os.path.join(package.root, "CMakeLists.txt")
+        if os.path.isfile(cmake) and made.search(
+                read_text(cmake, workspace.location(cmake))[0] or ""):
+            return False
+    return True
 
 
 def _translation_unit(path: str, text: str, ros2: bool,
@@ -1030,7 +1086,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 continue
         break
     result.diagnostics.extend(plugin_loads(path, text, workspace))
-    result.diagnostics.extend(library_loads(path, text, workspace))
+    result.diagnostics.extend(library_loads(path, text, workspace, tu))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))
     result.diagnostics.extend(finder.diagnostics)
