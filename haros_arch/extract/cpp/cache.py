@@ -51,13 +51,11 @@ def tool_files() -> list[str]:
     package's code (the extractor imports the model, the expression evaluator, the build
     readers and more from outside its folder: a change to any of them may change what a
     unit gives), the stand-in headers and the catalogue of interface definitions (which
-    makes the headers of installed messages). The shipped interface models and the
-    report's assets are not read by the extractor."""
+    makes the headers of installed messages). The shipped interface models (JSON) and
+    the report's assets are not read by the extractor."""
     found: list[str] = []
     for folder, dirs, files in os.walk(PACKAGE):
         dirs[:] = sorted(d for d in dirs if d != "__pycache__")
-        if folder == PACKAGE:  # the models' and the report's data: not the extractor's
-            dirs[:] = [d for d in dirs if d not in _NOT_READ]
         found += [os.path.join(folder, name) for name in sorted(files)
                   if name.endswith((".py", ".yaml", ".lark"))]
     found += [os.path.join(folder, name)
@@ -65,9 +63,6 @@ def tool_files() -> list[str]:
     found += [os.path.join(folder, name) for folder, _dirs, files
               in sorted(os.walk(interfaces.CATALOGUE)) for name in sorted(files)]
     return list(dict.fromkeys(found))
-
-
-_NOT_READ = frozenset({"report"})
 
 
 @functools.lru_cache(maxsize=1)
