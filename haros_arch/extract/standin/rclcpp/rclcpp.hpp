@@ -870,6 +870,10 @@ std::ostream& operator<<(std::ostream& os, const FutureReturnCode& code);
 std::string to_string(const FutureReturnCode& code);
 namespace executor { using FutureReturnCode = rclcpp::FutureReturnCode; }
 template<class N> void spin(std::shared_ptr<N> node);
+// rclcpp/copy_all_parameter_values.hpp: declares on ``destination`` the parameters
+// ``source`` has, with their values (names known only at run time: no API row)
+template<class S, class D> void copy_all_parameter_values(
+    const S& source, const D& destination, const bool override_existing_params = false);
 template<class N> void spin_some(std::shared_ptr<N> node);
 // rclcpp's spin takes a Node::SharedPtr, which a std::unique_ptr converts to
 template<class N, class D> void spin(std::unique_ptr<N, D>&& node);
