@@ -2,7 +2,7 @@
 a second parse with the unknown names declared permissively (bench/README "Stand-in
 gaps"): message_filters' SubscriberBase (a class in ROS 1 and from Rolling's release on,
 a template on the node type in ROS 2 before) and Connection, tf2_ros' MessageFilterBase,
-ROS 2 laser_geometry, std algorithms and type traits, libuuid, nanoflann and
+ROS 2 laser_geometry, rclcpp's ParameterCallbackHandle, std algorithms and type traits, libuuid, nanoflann and
 BehaviorTree.CPP. Each unit here parses once, without errors, and its calls are found."""
 
 from __future__ import annotations
@@ -152,6 +152,9 @@ class Ring : public rclcpp::Node {
     if (std::string(text).ends_with("0")) {buffer_.resize(count(std::make_index_sequence<3>{}));}
     buffer_.push_back(keep(UINT64_C(0xe17a1465)));
     pub_ = create_publisher<std_msgs::msg::Float32>("ring", 10);
+    events_ = std::make_shared<rclcpp::ParameterEventHandler>(this);
+    handle_ = events_->add_parameter_callback(
+      "resolution", [](const rclcpp::Parameter &) {}, "map_server");
   }
   void push(float v) {
     std::rotate(buffer_.begin(), buffer_.begin() + 1, buffer_.end());
@@ -165,6 +168,8 @@ class Ring : public rclcpp::Node {
   tree_t * tree_;
   std::vector<float> buffer_;
   rclcpp::Publisher<std_msgs::msg::Float32>::SharedPtr pub_;
+  std::shared_ptr<rclcpp::ParameterEventHandler> events_;
+  std::shared_ptr<rclcpp::ParameterCallbackHandle> handle_;
 };
 int main(int argc, char ** argv) {
   rclcpp::init(argc, argv);
@@ -285,7 +290,8 @@ def test_std_algorithms_traits_uuid_and_nanoflann(tmp_path) -> None:
     result = _extract(tmp_path, LIBRARIES, "jazzy")
     assert _unparsed(result) == []
     assert [(c.kind, c.name, c.type) for c in result.calls] == [
-        ("publish", "ring", "std_msgs/msg/Float32")]
+        ("publish", "ring", "std_msgs/msg/Float32"),
+        ("subscribe", "/parameter_events", "rcl_interfaces/msg/ParameterEvent")]
 
 
 def test_behavior_tree_nodes_factory_and_blackboard(tmp_path) -> None:
