@@ -2,7 +2,8 @@
 a second parse with the unknown names declared permissively (bench/README "Stand-in
 gaps"): message_filters' SubscriberBase (a class in ROS 1 and from Rolling's release on,
 a template on the node type in ROS 2 before) and Connection, tf2_ros' MessageFilterBase,
-ROS 2 laser_geometry, rclcpp's ParameterCallbackHandle, std algorithms and type traits, libuuid, nanoflann and
+ROS 2 laser_geometry, dynamic_reconfigure's service and messages, rclcpp's
+ParameterCallbackHandle, std algorithms and type traits, libuuid, nanoflann and
 BehaviorTree.CPP. Each unit here parses once, without errors, and its calls are found."""
 
 from __future__ import annotations
@@ -300,3 +301,30 @@ def test_behavior_tree_nodes_factory_and_blackboard(tmp_path) -> None:
     assert sorted((c.kind, c.name, c.type) for c in result.calls) == [
         ("publish", "said", "std_msgs/msg/String"),
         ("publish", "status", "std_msgs/msg/String")]
+
+
+RECONFIGURE_CLIENT = """\
+#include <ros/ros.h>
+#include <dynamic_reconfigure/Reconfigure.h>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "slow");
+  ros::NodeHandle planner("move_base/planner");
+  ros::ServiceClient client =
+      planner.serviceClient<dynamic_reconfigure::Reconfigure>("set_parameters", true);
+  dynamic_reconfigure::Reconfigure request;
+  dynamic_reconfigure::DoubleParameter speed;
+  speed.name = "max_vel_x";
+  speed.value = 0.25;
+  request.request.config.doubles.push_back(speed);
+  client.call(request);
+}
+"""
+
+
+def test_dynamic_reconfigure_service_of_another_node(tmp_path) -> None:
+    """move_slow_and_clear sets the planner's parameters through its set_parameters
+    service: dynamic_reconfigure's Reconfigure and Config's parameter messages."""
+    result = _extract(tmp_path, RECONFIGURE_CLIENT, "noetic")
+    assert _unparsed(result) == []
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("client", "move_base/planner/set_parameters", "dynamic_reconfigure/Reconfigure")]
