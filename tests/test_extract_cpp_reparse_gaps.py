@@ -115,6 +115,7 @@ int main(int argc, char ** argv) {
 
 LIBRARIES = """\
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -163,6 +164,8 @@ class Ring : public rclcpp::Node {
     unsigned int index;
     double distance;
     tree_->knnSearch(&cloud_.xs[0], 1, &index, &distance);
+    int dx = static_cast<int>(index) - 3, dy = 4;
+    buffer_.push_back(std::sqrt(dx * dx + dy * dy));
   }
  private:
   Cloud cloud_;

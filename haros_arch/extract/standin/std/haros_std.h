@@ -120,6 +120,22 @@ template<class B> constexpr bool negation_v = !bool(B::value);
 template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
 template<class T> struct underlying_type { typedef __underlying_type(T) type; };
 template<class T> using underlying_type_t = typename underlying_type<T>::type;
+// <cmath> of an integer: computed in double, as the library's overloads for integral
+// types (std::sqrt(dx * dx + dy * dy) of ints is not ambiguous between float and double)
+#define HAROS_INTEGRAL_MATH(NAME) \
+  template<class T, class = typename enable_if<__is_integral(T)>::type> double NAME(T x);
+HAROS_INTEGRAL_MATH(sqrt) HAROS_INTEGRAL_MATH(cbrt) HAROS_INTEGRAL_MATH(exp)
+HAROS_INTEGRAL_MATH(log) HAROS_INTEGRAL_MATH(log2) HAROS_INTEGRAL_MATH(log10)
+HAROS_INTEGRAL_MATH(floor) HAROS_INTEGRAL_MATH(ceil) HAROS_INTEGRAL_MATH(round)
+HAROS_INTEGRAL_MATH(sin) HAROS_INTEGRAL_MATH(cos) HAROS_INTEGRAL_MATH(tan)
+HAROS_INTEGRAL_MATH(atan) HAROS_INTEGRAL_MATH(fabs)
+#undef HAROS_INTEGRAL_MATH
+template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+double pow(A x, B y);
+template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+double hypot(A x, B y);
+template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+double atan2(A y, B x);
 // more of <type_traits>, on clang's builtins (robin_hood's hash map asks them of its
 // keys and values)
 template<class T> struct remove_volatile { typedef T type; };
