@@ -2,8 +2,10 @@
 // workspace that has the package installed, not as sources. It projects a LaserScan into
 // a PointCloud2, transformed through the tf2 buffer it is handed: it makes no ROS call of
 // its own. ROS 2's has no PointCloud (the first) and takes a tf2::BufferCore.
-#ifndef HAROS_STANDIN_LASER_GEOMETRY_HPP
-#define HAROS_STANDIN_LASER_GEOMETRY_HPP
+// The include guard is ROS 1's laser_geometry.h's: a unit has one LaserProjection, of the
+// header it includes first.
+#ifndef HAROS_STANDIN_LASER_GEOMETRY_H
+#define HAROS_STANDIN_LASER_GEOMETRY_H
 #include <string>
 #include <sensor_msgs/msg/laser_scan.hpp>
 #include <sensor_msgs/msg/point_cloud2.hpp>
