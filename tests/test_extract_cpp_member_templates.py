@@ -1,6 +1,7 @@
 """A member named with C++'s ``template`` keyword on an object of a class known only by
 name (``blackboard_->template set<T>("node", node_)``, navigation2's BtActionServer on
-BehaviorTree.CPP's Blackboard) is declared a member template: before, it was a static
+BehaviorTree.CPP's Blackboard before the library had a stand-in; here a library with
+none) is declared a member template: before, it was a static
 member, the statement an error, and the function that holds it, which calls the ROS API,
 made its node partial (bt_navigator)."""
 
@@ -14,20 +15,20 @@ from haros_arch.workspace import scan
 SOURCE = """\
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/string.hpp>
-#include <behaviortree_cpp/bt_factory.h>
+#include <treelib/factory.h>
 using S = std_msgs::msg::String;
 template <class NodeT>
 class Server {
 public:
   explicit Server(std::shared_ptr<NodeT> node) : node_(node) {}
   void configure() {
-    blackboard_ = BT::Blackboard::create();
+    blackboard_ = treelib::Blackboard::create();
     blackboard_->template set<std::shared_ptr<NodeT>>("node", node_);
     blackboard_->template set<int>(key_, 3);
     pub_ = node_->template create_publisher<S>("status", 1);
   }
   std::shared_ptr<NodeT> node_;
-  BT::Blackboard::Ptr blackboard_;
+  treelib::Blackboard::Ptr blackboard_;
   std::string key_ = "depth";
   typename rclcpp::Publisher<S>::SharedPtr pub_;
 };
@@ -44,7 +45,7 @@ public:
 
 def test_a_member_named_after_the_template_keyword_is_a_member_template(tmp_path) -> None:
     (tmp_path / "package.xml").write_text(package_xml("nav", "ament_cmake").replace(
-        "</package>", "<depend>rclcpp</depend><depend>behaviortree_cpp</depend></package>"))
+        "</package>", "<depend>rclcpp</depend><depend>treelib</depend></package>"))
     source = tmp_path / "nav.cpp"
     source.write_text(SOURCE)
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)

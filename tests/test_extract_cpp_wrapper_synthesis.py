@@ -1,8 +1,9 @@
 """Names declared for errors in functions that call only the unit's own wrappers of the
 API (``_translation_unit``'s second synthesis): the synthesis looks for the API's call
 sites before the walk knows the wrappers, so an error beside a wrapper call (navigation2's
-vector object server: ``uuid_parse`` of the missing <uuid/uuid.h> next to nav2_ros_common's
-``declare_or_get_parameter``) left its names undeclared and the node partial."""
+vector object server: ``uuid_parse`` of <uuid/uuid.h>, missing then, next to
+nav2_ros_common's ``declare_or_get_parameter``; here a library with no stand-in) left its
+names undeclared and the node partial."""
 
 from __future__ import annotations
 
@@ -30,7 +31,7 @@ T declare_or_get(rclcpp::Node * node, const std::string & name, const T & value)
 
 NODE = """\
 #include <string>
-#include <uuid/uuid.h>
+#include <idgen/idgen.h>
 #include <std_msgs/msg/string.hpp>
 #include "utils.hpp"
 
@@ -42,8 +43,8 @@ public:
     unsigned char out[16];
     std::string id = util::declare_or_get(this, "uuid", std::string(""));
     if (id.empty()) {
-      uuid_generate(out);
-    } else if (uuid_parse(id.c_str(), out)) {
+      idgen_generate(out);
+    } else if (idgen_parse(id.c_str(), out)) {
       pub_ = create_publisher<std_msgs::msg::String>("bad_uuid", 1);
     }
   }

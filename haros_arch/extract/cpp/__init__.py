@@ -47,7 +47,9 @@ __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 # CXTranslationUnit_DetailedPreprocessingRecord (for #define constants) | KeepGoing
 PARSE_OPTIONS = 0x01 | 0x200
 SKIP_FUNCTION_BODIES = 0x40  # CXTranslationUnit_SkipFunctionBodies
-ROS1_PLACEHOLDERS = os.path.join(STANDIN, "boost", "bind.hpp")
+# given to each unit after the precompiled stand-ins: the unit's ROS for the stand-ins
+# (HAROS_UNIT_ROS) and, in ROS 1, boost::bind's placeholders in the global namespace
+UNIT_ROS = {1: os.path.join(STANDIN, "haros_ros1.h"), 2: os.path.join(STANDIN, "haros_ros2.h")}
 MAX_ERRORS_PER_FILE = 50
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
@@ -1600,10 +1602,8 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
     leaves fewer errors."""
     unsaved = [(path, text)]
     args = setup.arguments(source=path)
-    if not ros2 and not setup.system_headers:
-        # ROS 1 (Boost before 1.73): roscpp's headers bring boost::bind's _1, _2 into the
-        # global namespace; ROS 2 code has std::placeholders there instead
-        args = [*args, "-include", ROS1_PLACEHOLDERS]
+    if not setup.system_headers:
+        args = [*args, "-include", UNIT_ROS[2 if ros2 else 1]]
     tu: TranslationUnit | None = None
     for _attempt in range(2):
         tu = _parse_once(path, args, unsaved, workspace, result)

@@ -99,7 +99,10 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       # Gazebo plugins a workspace builds (ROS 2 gazebo_ros' node.hpp
                       # is a file of its own there: not every gazebo_ros header, which
                       # ROS 1's gazebo_ros has too)
-                      "gazebo/": "gazebo/haros_gazebo.h", "sdf/": "sdf/haros_sdf.h"}
+                      "gazebo/": "gazebo/haros_gazebo.h", "sdf/": "sdf/haros_sdf.h",
+                      # BehaviorTree.CPP, versions 4 and 3 (navigation2's behaviour trees)
+                      "behaviortree_cpp/": "behaviortree_cpp/haros_behaviortree_cpp.h",
+                      "behaviortree_cpp_v3/": "behaviortree_cpp/haros_behaviortree_cpp.h"}
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
 # a second folder of synthesised headers, for a header whose name is a folder of others

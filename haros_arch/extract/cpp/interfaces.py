@@ -51,6 +51,17 @@ WELL_KNOWN: dict[str, str] = {
     "sensor_msgs/CameraInfo": "Header header\nuint32 height\nuint32 width\n"
                               "string distortion_model\nfloat64[] D\nfloat64[9] K\n"
                               "float64[9] R\nfloat64[12] P",
+    # dynamic_reconfigure's service and the messages of its Config (a node that sets
+    # another's parameters through its set_parameters service: move_slow_and_clear)
+    "dynamic_reconfigure/Reconfigure": "Config config\n---\nConfig config",
+    "dynamic_reconfigure/Config": "BoolParameter[] bools\nIntParameter[] ints\n"
+                                  "StrParameter[] strs\nDoubleParameter[] doubles\n"
+                                  "GroupState[] groups",
+    "dynamic_reconfigure/BoolParameter": "string name\nbool value",
+    "dynamic_reconfigure/IntParameter": "string name\nint32 value",
+    "dynamic_reconfigure/StrParameter": "string name\nstring value",
+    "dynamic_reconfigure/DoubleParameter": "string name\nfloat64 value",
+    "dynamic_reconfigure/GroupState": "string name\nbool state\nint32 id\nint32 parent",
     # bondcpp's constants: nav2's lifecycle nodes declare the parameter it names
     "bond/Constants": "float32 DEAD_PUBLISH_PERIOD = 0.05\nfloat32 DEFAULT_CONNECT_TIMEOUT = 10.0\n"
                       "float32 DEFAULT_HEARTBEAT_TIMEOUT = 4.0\n"

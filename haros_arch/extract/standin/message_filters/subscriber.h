@@ -20,7 +20,32 @@ struct haros_filter_subscription {
   const char* get_topic_name() const;
   size_t get_publisher_count() const;
 };
-template<class M, class NodeType = void> class Subscriber {
+// a filter's callbacks (registerCallback) are held by a Connection until it disconnects
+class Connection {
+public:
+  Connection();
+  template<class F> explicit Connection(const F& disconnect);
+  void disconnect();
+};
+// what every filter with one output gives: callbacks on what it lets through
+template<class M> class SimpleFilter {
+public:
+  template<class C> Connection registerCallback(const C& callback);
+  template<class C, class T> Connection registerCallback(const C& callback, T* object);
+  const std::string& getName() const;
+  void setName(const std::string& name);
+};
+// the base of every Subscriber: ROS 1's SubscriberBase, ROS 2's SubscriberBase<NodeType>
+// (a class from Rolling's message_filters on), named below for the unit's ROS
+class haros_subscriber_base {
+public:
+  virtual ~haros_subscriber_base();
+  template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
+  void subscribe();
+  void unsubscribe();
+};
+template<class M, class NodeType = void> class Subscriber
+    : public haros_subscriber_base, public SimpleFilter<M> {
 public:
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
@@ -28,8 +53,8 @@ public:
   void unsubscribe();
   std::string getTopic() const;
   const haros_filter_subscription& getSubscriber() const;
-  template<class C> void registerCallback(const C& callback);
-  template<class C, class T> void registerCallback(const C& callback, T* object);
+  template<class C> Connection registerCallback(const C& callback);
+  template<class C, class T> Connection registerCallback(const C& callback, T* object);
 };
 struct NullType {};
 namespace sync_policies {
@@ -40,8 +65,8 @@ template<class P> class Synchronizer {
 public:
   template<class... F> Synchronizer(const P& policy, F&... filters);
   template<class... F> void connectInput(F&... filters);
-  template<class C> void registerCallback(const C& callback);
-  template<class C, class T> void registerCallback(const C& callback, T* object);
+  template<class C> Connection registerCallback(const C& callback);
+  template<class C, class T> Connection registerCallback(const C& callback, T* object);
   template<class D> void setInterMessageLowerBound(int index, const D& bound);
   template<class D> void setInterMessageLowerBound(const D& bound);
   void setAgePenalty(double penalty);
@@ -51,8 +76,8 @@ template<class... M> class TimeSynchronizer {
 public:
   template<class... F> TimeSynchronizer(F&&... args);
   template<class... F> void connectInput(F&... filters);  // built with a queue size only
-  template<class C> void registerCallback(const C& callback);
-  template<class C, class T> void registerCallback(const C& callback, T* object);
+  template<class C> Connection registerCallback(const C& callback);
+  template<class C, class T> Connection registerCallback(const C& callback, T* object);
 };
 // what a Cache gives: a message pointer of either ROS (ROS 1 boost, ROS 2 std), a time
 // of either (``toSec()`` / ``seconds()``)
@@ -81,7 +106,22 @@ public:
   template<class T> haros_cached_message<M> getElemAfterTime(const T& time) const;
   haros_cached_time getLatestTime() const;
   haros_cached_time getOldestTime() const;
-  template<class C> void registerCallback(const C& callback);
+  template<class C> Connection registerCallback(const C& callback);
 };
+}
+#endif
+// SubscriberBase is a class in ROS 1 and a template on the node type in ROS 2 until
+// Rolling's message_filters (navigation2 tells them apart by rclcpp 29.6): declared
+// here, outside the include guard, once the unit's ROS is known (HAROS_UNIT_ROS, from
+// haros_ros1.h / haros_ros2.h, given to each unit after the precompiled stand-ins)
+#if defined(HAROS_UNIT_ROS) && !defined(HAROS_STANDIN_MESSAGE_FILTERS_BASE)
+#define HAROS_STANDIN_MESSAGE_FILTERS_BASE
+namespace message_filters {
+#if HAROS_UNIT_ROS == 2 && !(defined(RCLCPP_VERSION_MAJOR) && (RCLCPP_VERSION_MAJOR > 29 || \
+    (RCLCPP_VERSION_MAJOR == 29 && RCLCPP_VERSION_MINOR >= 6)))
+template<class NodeType = void> using SubscriberBase = haros_subscriber_base;
+#else
+using SubscriberBase = haros_subscriber_base;
+#endif
 }
 #endif

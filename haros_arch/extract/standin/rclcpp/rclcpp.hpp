@@ -870,6 +870,10 @@ std::ostream& operator<<(std::ostream& os, const FutureReturnCode& code);
 std::string to_string(const FutureReturnCode& code);
 namespace executor { using FutureReturnCode = rclcpp::FutureReturnCode; }
 template<class N> void spin(std::shared_ptr<N> node);
+// rclcpp/copy_all_parameter_values.hpp: declares on ``destination`` the parameters
+// ``source`` has, with their values (names known only at run time: no API row)
+template<class S, class D> void copy_all_parameter_values(
+    const S& source, const D& destination, const bool override_existing_params = false);
 template<class N> void spin_some(std::shared_ptr<N> node);
 // rclcpp's spin takes a Node::SharedPtr, which a std::unique_ptr converts to
 template<class N, class D> void spin(std::unique_ptr<N, D>&& node);
@@ -935,14 +939,28 @@ public:
   template<class N, class C> static std::shared_ptr<void> on_parameter_event(N node,
                                                                              C&& callback);
 };
+// what ParameterEventHandler's add_*_callback give, kept to remove the callback later
+struct ParameterCallbackHandle {
+  RCLCPP_SMART_PTR_DEFINITIONS(ParameterCallbackHandle)
+  using ParameterCallbackType = std::function<void(const Parameter&)>;
+  std::string parameter_name;
+  std::string node_name;
+  ParameterCallbackType callback;
+};
+struct ParameterEventCallbackHandle {
+  RCLCPP_SMART_PTR_DEFINITIONS(ParameterEventCallbackHandle)
+  using ParameterEventCallbackType =
+      std::function<void(const rcl_interfaces::msg::ParameterEvent&)>;
+  ParameterEventCallbackType callback;
+};
 class ParameterEventHandler {
 public:
   template<class N> explicit ParameterEventHandler(N node);
-  template<class C> std::shared_ptr<void> add_parameter_callback(const std::string& name, C cb,
-      const std::string& node_name = "");
-  template<class C> std::shared_ptr<void> add_parameter_event_callback(C cb);
-  void remove_parameter_callback(std::shared_ptr<void> handle);
-  void remove_parameter_event_callback(std::shared_ptr<void> handle);
+  template<class C> ParameterCallbackHandle::SharedPtr add_parameter_callback(
+      const std::string& name, C cb, const std::string& node_name = "");
+  template<class C> ParameterEventCallbackHandle::SharedPtr add_parameter_event_callback(C cb);
+  void remove_parameter_callback(ParameterCallbackHandle::SharedPtr handle);
+  void remove_parameter_event_callback(ParameterEventCallbackHandle::SharedPtr handle);
   static bool get_parameter_from_event(const rcl_interfaces::msg::ParameterEvent& event,
       Parameter& parameter, const std::string& parameter_name, const std::string& node_name = "");
   static Parameter get_parameter_from_event(const rcl_interfaces::msg::ParameterEvent& event,

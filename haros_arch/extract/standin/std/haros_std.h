@@ -91,22 +91,6 @@ template<class T> struct is_arithmetic : integral_constant<bool, __is_arithmetic
 template<class T> struct is_integral : integral_constant<bool, __is_integral(T)> {};
 template<class T> struct is_floating_point : integral_constant<bool, __is_floating_point(T)> {};
 template<class B, class D> struct is_base_of : integral_constant<bool, __is_base_of(B, D)> {};
-// make_signed / make_unsigned of the integer types (rosserial's signed_size_t)
-template<class T> struct make_signed { typedef T type; };
-template<> struct make_signed<unsigned char> { typedef signed char type; };
-template<> struct make_signed<unsigned short> { typedef short type; };
-template<> struct make_signed<unsigned int> { typedef int type; };
-template<> struct make_signed<unsigned long> { typedef long type; };
-template<> struct make_signed<unsigned long long> { typedef long long type; };
-template<class T> using make_signed_t = typename make_signed<T>::type;
-template<class T> struct make_unsigned { typedef T type; };
-template<> struct make_unsigned<signed char> { typedef unsigned char type; };
-template<> struct make_unsigned<char> { typedef unsigned char type; };
-template<> struct make_unsigned<short> { typedef unsigned short type; };
-template<> struct make_unsigned<int> { typedef unsigned int type; };
-template<> struct make_unsigned<long> { typedef unsigned long type; };
-template<> struct make_unsigned<long long> { typedef unsigned long long type; };
-template<class T> using make_unsigned_t = typename make_unsigned<T>::type;
 template<class...> using void_t = void;
 template<class T> struct is_pointer : false_type {};
 template<class T> struct is_pointer<T*> : true_type {};
@@ -136,11 +120,112 @@ template<class B> constexpr bool negation_v = !bool(B::value);
 template<class T> struct is_enum : integral_constant<bool, __is_enum(T)> {};
 template<class T> struct underlying_type { typedef __underlying_type(T) type; };
 template<class T> using underlying_type_t = typename underlying_type<T>::type;
+// <cmath> of an integer: computed in double, as the library's overloads for integral
+// types (std::sqrt(dx * dx + dy * dy) of ints is not ambiguous between float and double)
+#define HAROS_INTEGRAL_MATH(NAME) \
+  template<class T, class = typename enable_if<__is_integral(T)>::type> double NAME(T x);
+HAROS_INTEGRAL_MATH(sqrt) HAROS_INTEGRAL_MATH(cbrt) HAROS_INTEGRAL_MATH(exp)
+HAROS_INTEGRAL_MATH(log) HAROS_INTEGRAL_MATH(log2) HAROS_INTEGRAL_MATH(log10)
+HAROS_INTEGRAL_MATH(floor) HAROS_INTEGRAL_MATH(ceil) HAROS_INTEGRAL_MATH(round)
+HAROS_INTEGRAL_MATH(sin) HAROS_INTEGRAL_MATH(cos) HAROS_INTEGRAL_MATH(tan)
+HAROS_INTEGRAL_MATH(atan) HAROS_INTEGRAL_MATH(fabs)
+#undef HAROS_INTEGRAL_MATH
+template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+double pow(A x, B y);
+template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+double hypot(A x, B y);
+template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+double atan2(A y, B x);
+// more of <type_traits>, on clang's builtins (robin_hood's hash map asks them of its
+// keys and values)
+template<class T> struct remove_volatile { typedef T type; };
+template<class T> struct remove_volatile<volatile T> { typedef T type; };
+template<class T> struct remove_cv { typedef typename remove_volatile<typename remove_const<T>::type>::type type; };
+template<class T> using remove_cv_t = typename remove_cv<T>::type;
+template<class T> struct remove_cvref { typedef typename remove_cv<typename remove_reference<T>::type>::type type; };
+template<class T> using remove_cvref_t = typename remove_cvref<T>::type;
+template<class T> using remove_const_t = typename remove_const<T>::type;
+template<class T> struct add_const { typedef const T type; };
+template<class T> struct add_pointer { typedef typename remove_reference<T>::type* type; };
+template<class T> using add_pointer_t = typename add_pointer<T>::type;
+template<class T> struct add_lvalue_reference { typedef T& type; };
+template<> struct add_lvalue_reference<void> { typedef void type; };
+template<class T> using add_lvalue_reference_t = typename add_lvalue_reference<T>::type;
+template<class T> struct is_const : false_type {};
+template<class T> struct is_const<const T> : true_type {};
+template<class T> struct is_void : is_same<void, typename remove_cv<T>::type> {};
+template<class T> constexpr bool is_void_v = is_void<T>::value;
+template<class T> struct is_reference : false_type {};
+template<class T> struct is_reference<T&> : true_type {};
+template<class T> struct is_reference<T&&> : true_type {};
+template<class T> constexpr bool is_reference_v = is_reference<T>::value;
+template<class T> struct is_lvalue_reference : false_type {};
+template<class T> struct is_lvalue_reference<T&> : true_type {};
+template<class T> struct is_array : false_type {};
+template<class T> struct is_array<T[]> : true_type {};
+template<class T, size_t N> struct is_array<T[N]> : true_type {};
+template<class T> struct is_function : integral_constant<bool, __is_function(T)> {};
+template<class T> struct is_object : integral_constant<bool, __is_object(T)> {};
+template<class T> struct is_scalar : integral_constant<bool, __is_scalar(T)> {};
+template<class T> struct is_fundamental : integral_constant<bool, __is_fundamental(T)> {};
+template<class T> struct is_signed : integral_constant<bool, __is_signed(T)> {};
+template<class T> struct is_unsigned : integral_constant<bool, __is_unsigned(T)> {};
+template<class T> constexpr bool is_signed_v = __is_signed(T);
+template<class T> constexpr bool is_unsigned_v = __is_unsigned(T);
+template<class T> struct make_signed { typedef __make_signed(T) type; };
+template<class T> struct make_unsigned { typedef __make_unsigned(T) type; };
+template<class T> using make_signed_t = typename make_signed<T>::type;
+template<class T> using make_unsigned_t = typename make_unsigned<T>::type;
+template<class T> struct is_empty : integral_constant<bool, __is_empty(T)> {};
+template<class T> struct is_polymorphic : integral_constant<bool, __is_polymorphic(T)> {};
+template<class T> struct is_abstract : integral_constant<bool, __is_abstract(T)> {};
+template<class T> struct is_final : integral_constant<bool, __is_final(T)> {};
+template<class T> struct is_trivial : integral_constant<bool, __is_trivial(T)> {};
+template<class T> struct is_standard_layout : integral_constant<bool, __is_standard_layout(T)> {};
+template<class T> struct is_trivially_copyable : integral_constant<bool, __is_trivially_copyable(T)> {};
+template<class T> constexpr bool is_trivially_copyable_v = __is_trivially_copyable(T);
+template<class T> struct is_trivially_destructible : integral_constant<bool, __is_trivially_destructible(T)> {};
+template<class T> constexpr bool is_trivially_destructible_v = __is_trivially_destructible(T);
+template<class T, class... A> struct is_constructible : integral_constant<bool, __is_constructible(T, A...)> {};
+template<class T, class... A> constexpr bool is_constructible_v = __is_constructible(T, A...);
+template<class T> struct is_default_constructible : is_constructible<T> {};
+template<class T> struct is_copy_constructible : is_constructible<T, const T&> {};
+template<class T> struct is_move_constructible : is_constructible<T, T&&> {};
+template<class T, class U> struct is_assignable : integral_constant<bool, __is_assignable(T, U)> {};
+template<class T, class... A> struct is_nothrow_constructible : integral_constant<bool, __is_nothrow_constructible(T, A...)> {};
+template<class T> struct is_nothrow_move_constructible : is_nothrow_constructible<T, T&&> {};
+template<class T> struct is_nothrow_move_assignable : integral_constant<bool, __is_nothrow_assignable(T&, T&&)> {};
+template<class T> struct alignment_of : integral_constant<size_t, alignof(T)> {};
+template<size_t N, size_t A = alignof(long double)> struct aligned_storage {
+  struct type { alignas(A) unsigned char data[N]; };
+};
 template<class T> constexpr typename remove_reference<T>::type&& move(T&& t) noexcept;
 template<class T> constexpr T&& forward(typename remove_reference<T>::type& t) noexcept;
 template<class T> constexpr T&& forward(typename remove_reference<T>::type&& t) noexcept;
 template<class T> void swap(T& a, T& b);
 template<class T> T&& declval() noexcept;
+template<class T> struct is_swappable : integral_constant<bool, true> {};
+// std::swap's own condition (a type with a swap of its own aside)
+template<class T> struct is_nothrow_swappable : integral_constant<bool,
+  __is_nothrow_constructible(T, T&&) && __is_nothrow_assignable(T&, T&&)> {};
+template<class T> constexpr bool is_nothrow_swappable_v = is_nothrow_swappable<T>::value;
+// <utility>'s compile-time integer sequences and piecewise construction
+template<class T, T... I> struct integer_sequence {
+  typedef T value_type;
+  static constexpr size_t size() noexcept { return sizeof...(I); }
+};
+template<size_t... I> using index_sequence = integer_sequence<size_t, I...>;
+template<class T, T N> using make_integer_sequence = __make_integer_seq<integer_sequence, T, N>;
+template<size_t N> using make_index_sequence = make_integer_sequence<size_t, N>;
+template<class... T> using index_sequence_for = make_index_sequence<sizeof...(T)>;
+struct piecewise_construct_t { explicit piecewise_construct_t() = default; };
+constexpr piecewise_construct_t piecewise_construct{};
+template<class... T> class tuple;
+template<class... T> struct common_type {};
+template<class T> struct common_type<T> { typedef typename decay<T>::type type; };
+template<class A, class B, class... R> struct common_type<A, B, R...>
+  : common_type<typename decay<decltype(true ? declval<A>() : declval<B>())>::type, R...> {};
+template<class... T> using common_type_t = typename common_type<T...>::type;
 template<class A, class B> struct pair {
   typedef A first_type;
   typedef B second_type;
@@ -150,6 +235,8 @@ template<class A, class B> struct pair {
   pair(const A& a, const B& b);
   template<class U, class V> pair(U&& a, V&& b);
   template<class U, class V> pair(const pair<U, V>& p);
+  template<class... U, class... V>
+  pair(piecewise_construct_t, tuple<U...> first_args, tuple<V...> second_args);
 };
 template<class A, class B> pair<typename decay<A>::type, typename decay<B>::type> make_pair(A&& a, B&& b);
 template<class A, class B> bool operator==(const pair<A, B>& x, const pair<A, B>& y);
@@ -283,6 +370,13 @@ public:
   size_t length() const;
   size_t capacity() const;
   bool empty() const;
+  // C++20
+  bool starts_with(const C* s) const;
+  bool starts_with(C c) const;
+  bool ends_with(const C* s) const;
+  bool ends_with(C c) const;
+  template<class S> bool starts_with(const S& s) const;
+  template<class S> bool ends_with(const S& s) const;
   void clear();
   void reserve(size_t n);
   void resize(size_t n);
@@ -721,6 +815,51 @@ template<class It, class T, class R, class U>
 T transform_reduce(It first, It last, T init, R reduce, U transform);
 template<class It, class T> void iota(It first, It last, T value);
 template<class It> It adjacent_find(It first, It last);
+template<class It> It rotate(It first, It middle, It last);
+template<class It, class O> O rotate_copy(It first, It middle, It last, O out);
+template<class It, class O> O reverse_copy(It first, It last, O out);
+template<class It, class O, class P> O copy_if(It first, It last, O out, P pred);
+template<class It, class O> O copy_backward(It first, It last, O out);
+template<class It, class O> O move_backward(It first, It last, O out);
+template<class It, class O, class P> O remove_copy_if(It first, It last, O out, P pred);
+template<class It, class O> O unique_copy(It first, It last, O out);
+template<class It, class G> void generate(It first, It last, G g);
+template<class It, class N, class G> It generate_n(It first, N count, G g);
+template<class It> bool is_sorted(It first, It last);
+template<class It, class C> bool is_sorted(It first, It last, C compare);
+template<class It> pair<It, It> minmax_element(It first, It last);
+template<class It, class C> pair<It, It> minmax_element(It first, It last, C compare);
+template<class T> pair<const T&, const T&> minmax(const T& a, const T& b);
+template<class It, class T> pair<It, It> equal_range(It first, It last, const T& v);
+template<class A, class B> bool equal(A first1, A last1, B first2);
+template<class A, class B> bool equal(A first1, A last1, B first2, B last2);
+template<class A, class B> pair<A, B> mismatch(A first1, A last1, B first2);
+template<class A, class B> A search(A first, A last, B s_first, B s_last);
+template<class A, class B> A find_end(A first, A last, B s_first, B s_last);
+template<class A, class B> bool includes(A first1, A last1, B first2, B last2);
+template<class A, class B> bool lexicographical_compare(A first1, A last1, B first2, B last2);
+template<class A, class B, class O> O merge(A first1, A last1, B first2, B last2, O out);
+template<class A, class B, class O> O set_union(A first1, A last1, B first2, B last2, O out);
+template<class A, class B, class O> O set_intersection(A first1, A last1, B first2, B last2, O out);
+template<class A, class B, class O> O set_difference(A first1, A last1, B first2, B last2, O out);
+template<class It, class P> It partition(It first, It last, P pred);
+template<class It, class P> It stable_partition(It first, It last, P pred);
+template<class It, class P> It partition_point(It first, It last, P pred);
+template<class It> bool next_permutation(It first, It last);
+template<class It> bool prev_permutation(It first, It last);
+template<class A, class B> B swap_ranges(A first1, A last1, B first2);
+template<class A, class B> void iter_swap(A a, B b);
+template<class It> void make_heap(It first, It last);
+template<class It> void push_heap(It first, It last);
+template<class It> void pop_heap(It first, It last);
+template<class It> void sort_heap(It first, It last);
+template<class It, class C> void make_heap(It first, It last, C compare);
+template<class It, class C> void push_heap(It first, It last, C compare);
+template<class It, class C> void pop_heap(It first, It last, C compare);
+template<class A, class B, class T> T inner_product(A first1, A last1, B first2, T init);
+template<class M, class N> constexpr auto gcd(M m, N n) -> decltype(m + n);
+template<class M, class N> constexpr auto lcm(M m, N n) -> decltype(m + n);
+template<class It> It prev(It it, ptrdiff_t n = 1);
 template<class C> auto begin(C& c) -> decltype(c.begin());
 template<class C> auto end(C& c) -> decltype(c.end());
 template<class T, size_t N> T* begin(T (&a)[N]);

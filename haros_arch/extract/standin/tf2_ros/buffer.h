@@ -218,6 +218,15 @@ public:
   bool _frameExists(const std::string& frame_id_str) const;
 };
 }
+// ROS 2's tf2_ros: a tf2 time or duration as a builtin_interfaces message and back
+namespace builtin_interfaces { namespace msg { struct Time; struct Duration; } }
+namespace tf2_ros {
+builtin_interfaces::msg::Time toMsg(const tf2::TimePoint& t);
+builtin_interfaces::msg::Duration toMsg(const tf2::Duration& d);
+tf2::TimePoint fromMsg(const builtin_interfaces::msg::Time& time_msg);
+tf2::Duration fromMsg(const builtin_interfaces::msg::Duration& duration_msg);
+double timeToSec(const builtin_interfaces::msg::Time& time_msg);
+}  // namespace tf2_ros
 namespace tf2_ros {
 class Buffer : public tf2::BufferCore {
 public:
