@@ -3,8 +3,10 @@
 include rclcpp in every unit, which made every stamp ROS 2's ``TimePoint``), ``ros::Timer::
 isValid()``, a ``boost::function`` tested as a bool, and xmlrpcpp's own headers
 (``<xmlrpcpp/XmlRpcValue.h>`` was synthesised as a message without fields, and
-``XmlRpc::XmlRpcException`` was not declared). Each left a C++ error in a function that
-calls the ROS API."""
+``XmlRpc::XmlRpcException`` was not declared); and boost's ``lexical_cast``, which
+gazebo_plugins' ``getParameter`` (gazebo_ros_utils.h) uses beside a ROS call: every plugin
+of gazebo_plugins was partial for it. Each left a C++ error in a function that calls the
+ROS API."""
 
 from __future__ import annotations
 
@@ -92,3 +94,26 @@ def test_a_ros2_workspace_keeps_tf2_s_own_time_point(tmp_path) -> None:
         result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
                              distro=distro)
         assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_boost_lexical_cast_beside_a_ros_call(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("plugin"))
+    source = tmp_path / "plugin.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        # as gazebo_ros_utils.h: lexical_cast comes with gazebo's headers, not found here
+        "#include <boost/algorithm/string.hpp>\n#include <gazebo/common/common.hh>\n"
+        "template <class T> void getParameter(ros::NodeHandle& nh, const T& fallback) {\n"
+        "  ROS_WARN(\"default is %s\", boost::lexical_cast<std::string>(fallback).c_str());\n"
+        "  static ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n"
+        "}\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"plugin\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  getParameter(nh, 2.5);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
