@@ -828,8 +828,9 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     """A call named by each element of a list parameter (``name_each``): one call per
     element of the value the launch file gives the parameter, named by the element's
     field (``.``: the element itself; in ROS 2 the elements may be the parameters
-    ``name.<key>.<field>``); without such a value, the call as it is (its name keeps
-    its ``?``)."""
+    ``name.<key>.<field>``), none for an empty list (unless the launch file sets it
+    under a condition); without such a value, the call as it is (its name keeps its
+    ``?``)."""
     if call.name_each is None or call.name_param is None:
         return [call]
     source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
@@ -845,6 +846,10 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     elements = list(value.values()) if isinstance(value, dict) else value
     if not isinstance(elements, list):
         return [call]
+    if not elements and not (isinstance(param, Parameter) and param.launch_conditions):
+        # an empty list, given unconditionally or the code's default: the loop over it
+        # makes nothing (warthog's twist_mux ``<rosparam param="locks">[]</rosparam>``)
+        return []
     names = [name for name in (_element_name(item, call.name_each) for item in elements)
              if name is not None]
     if not names:

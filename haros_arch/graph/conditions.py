@@ -12,6 +12,8 @@ this instance gives it:
   the read's default (a ROS 2 read without one: the node's declarations of the
   parameter); a value whose type is not the read's is not used (roscpp would keep the
   default, rclcpp would refuse it);
+- a constant of the code (``Condition.constants``: a ``const`` integer or bool
+  initialised by a literal) is its value;
 - ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
   ROS 1 instance whose ``args`` are known: roslaunch starts it with its ``args`` words,
   its remappings, ``__name:=`` and ``__log:=``, and ``ros::init`` removes the ``:=``
@@ -347,6 +349,7 @@ def decide(condition: Condition, values: Callable[[str], object],
     uses_left = left is not None and left in names
     if (uses_argv or uses_left) and (not condition.program_args or not views):
         return None
+    constants = dict(condition.constants or ())
     answers = set()
     for argv, kept in (views if views and (uses_argv or uses_left) else [(None, [])]):
         if uses_argv and argv is None:
@@ -360,6 +363,8 @@ def decide(condition: Condition, values: Callable[[str], object],
                 return argv
             if uses_argv and argv is not None and name == "argc":
                 return len(argv)
+            if name in constants:
+                return constants[name]
             return values(name)
         result = evaluate(expression, value, {"len": len})
         if is_unknown(result) or not isinstance(result, (bool, int, float, str)):

@@ -74,6 +74,12 @@ class Condition:
     # tests it joins (counted per file: one ``if`` in a loop runs once per item, and its
     # two runs may come out otherwise though written alike); not compared
     runs: tuple[int, ...] = field(default=(), compare=False, metadata={"optional": True})
+    # the names its text uses that are constants of the code, each with its value: a
+    # ``const`` integer or bool initialised by a literal (neonavigation_common's ``const
+    # int current_level = 1;`` in ``if (getCompat() != current_level)``), which the graph
+    # decides it with
+    constants: tuple[tuple[str, int | bool], ...] | None = field(
+        default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
         return f"{self.statement} ({self.text})"

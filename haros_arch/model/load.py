@@ -73,7 +73,8 @@ def conditions(data: Any) -> tuple[Condition, ...]:
                                    else None, _held(item.get("parameters")),
                                    _compares(item.get("compares")),
                                    tuple(n for n in item.get("runs") or ()
-                                         if isinstance(n, int))))
+                                         if isinstance(n, int)),
+                                   _constants(item.get("constants"))))
     return tuple(found)
 
 
@@ -93,6 +94,17 @@ def _held(data: Any) -> tuple[tuple[str, str], ...] | None:
         return None
     found = tuple((str(pair[0]), str(pair[1])) for pair in data
                   if isinstance(pair, list | tuple) and len(pair) == 2)
+    return found or None
+
+
+def _constants(data: Any) -> tuple[tuple[str, int | bool], ...] | None:
+    """A condition's (constant, value) pairs as the JSON model lists them: integers and
+    bools only."""
+    if not isinstance(data, list):
+        return None
+    found = tuple((str(pair[0]), pair[1]) for pair in data
+                  if isinstance(pair, list | tuple) and len(pair) == 2
+                  and isinstance(pair[1], int))
     return found or None
 
 

@@ -276,7 +276,9 @@ def _conditions(data: Any) -> tuple[Condition, ...]:
     from the default ``()`` and be written in the model)."""
     return tuple(Condition(**{**c, "location": Location(**c["location"]), "parameters": tuple(
         (str(local), str(param)) for local, param in c["parameters"]) if c.get(
-        "parameters") else None, "runs": tuple(c.get("runs") or ())}) for c in data)
+        "parameters") else None, "runs": tuple(c.get("runs") or ()), "constants": tuple(
+        (str(name), value) for name, value in c["constants"]) if c.get(
+        "constants") else None}) for c in data)
 
 
 def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:

@@ -65,6 +65,9 @@ class ConditionReader:
         # the locals a tested expression names that hold a parameter's value, in the
         # function read (``Condition.parameters``)
         self.held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None
+        # the constants a tested expression names, with their values (``Condition.
+        # constants``)
+        self.constants: Callable[[Cursor], tuple[tuple[str, int | bool], ...]] | None = None
         # the ``try`` conditions whose handlers catch a parameter's failure: a read in the
         # block is prepared for the parameter not being set (``PrimitiveCall.tested``)
         self.handled: set[Condition] = set()
@@ -197,8 +200,11 @@ class ConditionReader:
     def _condition(self, node: Cursor, statement: str, text: str,
                    tested: Cursor | None = None) -> Condition:
         held = self.held(tested) if tested is not None and self.held is not None else ()
+        constants = self.constants(tested) if tested is not None and (
+            self.constants is not None) else ()
         return Condition(text, "source", statement, self.where(node), self.in_main,
-                         self.args_left if self.in_main else None, held or None)
+                         self.args_left if self.in_main else None, held or None,
+                         constants=constants or None)
 
     def choice(self, node: Cursor, statement: str, test: Cursor) -> Condition:
         """The condition of a side of the ``?:`` ``node`` whose test is ``test``: ``if``
@@ -206,12 +212,16 @@ class ConditionReader:
         return self._condition(node, statement, self._text(test), test)
 
     def enter(self, function: Cursor, arguments_left: frozenset[str],
-              held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None) -> None:
+              held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None,
+              constants: Callable[[Cursor], tuple[tuple[str, int | bool], ...]] | None = None
+              ) -> None:
         """Read the conditions of ``function`` next: whether it is ``main(argc, argv)``,
         and its local initialised by a call of ``arguments_left`` (rclcpp's
         ``init_and_remove_ros_arguments``), when it has one such local; ``held`` tells
-        the locals of a tested expression that hold a parameter's value."""
+        the locals of a tested expression that hold a parameter's value, ``constants``
+        the constants it names with their values."""
         self.held = held
+        self.constants = constants
         params = [c.spelling for c in function.get_children()
                   if c.kind == CursorKind.PARM_DECL]
         self.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]

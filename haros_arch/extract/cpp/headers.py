@@ -130,6 +130,7 @@ UMBRELLAS = {
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "camera_info_manager/": "camera_info_manager/camera_info_manager.h",
     "bondcpp/": "bondcpp/bond.hpp",
+    "xmlrpcpp/": "xmlrpcpp/XmlRpc.h",  # roscpp's XmlRpcValue, XmlRpcException
     "realtime_tools/": "realtime_tools/realtime_publisher.h",
     "pal_statistics/": "pal_statistics/pal_statistics_macros.hpp",
     # test nodes (rostest, launch_testing): without it a TEST's body, and every ROS call

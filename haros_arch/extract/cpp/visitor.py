@@ -68,6 +68,7 @@ from .qos import qos as qos_of
 from .tested import Key, TestedCalls, unit_tested
 from .tested import key as key_of
 from .values import (
+    _INTEGRAL,
     ARGUMENTS_LEFT,
     PLACEHOLDER,
     SEPARATOR,
@@ -456,7 +457,9 @@ class CallFinder:
         """Ready the condition reader for ``function``'s body (``_conditions_at``)."""
         held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
             self.sites is not None) else None
-        self.reader.enter(function, ARGUMENTS_LEFT, held)
+        constants = functools.partial(self._held_constants, scope=self.sites.scope(function)) \
+            if self.sites is not None else None
+        self.reader.enter(function, ARGUMENTS_LEFT, held, constants)
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -616,7 +619,8 @@ class CallFinder:
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
         self.reader.enter(function, ARGUMENTS_LEFT,
-                          functools.partial(self._held_parameters, scope=scope))
+                          functools.partial(self._held_parameters, scope=scope),
+                          functools.partial(self._held_constants, scope=scope))
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -722,7 +726,9 @@ class CallFinder:
         wanted = {place_of(call): call.kind for call in calls}
         held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
             self.sites is not None) else None
-        self.reader.enter(function, ARGUMENTS_LEFT, held)
+        constants = functools.partial(self._held_constants, scope=self.sites.scope(function)) \
+            if self.sites is not None else None
+        self.reader.enter(function, ARGUMENTS_LEFT, held, constants)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -1995,6 +2001,28 @@ class CallFinder:
                 found[decl.spelling] = parameter
         return tuple(sorted(found.items()))
 
+    def _held_constants(self, tested: Cursor, scope: Scope
+                        ) -> tuple[tuple[str, int | bool], ...]:
+        """The constants ``tested`` names, each with its value: a ``const`` variable of
+        integer or bool type whose one value is a literal (neonavigation_common's
+        ``const int current_level = 1;`` at namespace scope)."""
+        found: dict[str, int | bool] = {}
+        for node in tested.walk_preorder():
+            decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+            if decl is None or decl.kind != CursorKind.VAR_DECL or (
+                not decl.type.is_const_qualified()
+            ):
+                continue
+            kind = decl.type.get_canonical().kind
+            value: int | bool | None = None
+            if kind == TypeKind.BOOL:
+                value = scope.boolean(node)
+            elif kind in _INTEGRAL:
+                value = scope.integer(node)
+            if value is not None:
+                found[decl.spelling] = value
+        return tuple(sorted(found.items()))
+
     def _typed_accessor(self, call: Cursor) -> None:
         """``get_parameter("x").as_int()``: the read (visited after this call, its
         object) asks for an int; rclcpp throws when the parameter holds another type."""
@@ -2031,7 +2059,9 @@ class CallFinder:
                 return None
             source = self._parameter(spec, call, scope)
             return source[0] if source is not None and known_name(source[0]) else None
-        if call.spelling not in self.wrappers.names or not self._gives_value(call):
+        if call.spelling not in self.wrappers.names:
+            return self._returned_parameter(call)
+        if not self._gives_value(call):
             return None
         names = set()
         for row, named in self.wrappers.parameter_calls(call, scope):
@@ -2041,6 +2071,33 @@ class CallFinder:
             names.add(source[0])
         one = names.pop() if len(names) == 1 else None
         return one if one is not None and known_name(one) else None
+
+    def _returned_parameter(self, call: Cursor) -> str | None:
+        """The parameter whose value ``call`` of a function of the workspace that is no
+        wrapper returns: every ``return`` of its body returns one local of it that
+        holds the value of a read of a parameter of known name (neonavigation_common's
+        ``int getCompat() { int compat(default_level); ros::NodeHandle("/").param(
+        "neonavigation_compatible", compat, compat); return compat; }``); else None."""
+        callee = call.referenced
+        function = callee.get_definition() if callee is not None else None
+        if function is None or function.kind not in FUNCTIONS or from_standin(function):
+            return None
+        returned: set[tuple[str, int]] = set()
+        first: Cursor | None = None
+        for statement in _returns(function):
+            values = [strip(c) for c in statement.get_children() if c.kind.is_expression()]
+            decl = values[0].referenced if len(values) == 1 and (
+                values[0].kind == CursorKind.DECL_REF_EXPR) else None
+            if decl is None or decl.kind != CursorKind.VAR_DECL or (
+                decl.semantic_parent != function
+            ):
+                return None
+            returned.add(place_of(decl))
+            first = first or values[0]
+        if first is None or len(returned) != 1:
+            return None
+        source = self._parameter_source(first, self._scope_of(function), 0, value=True)
+        return source[0] if source is not None and known_name(source[0]) else None
 
     def _returns_read(self, spec: api.RosFunction, call: Cursor) -> bool:
         """Whether ``call`` of the API row ``spec`` is a read or declaration that returns

@@ -4,6 +4,9 @@
 #include "std/haros_std.h"
 #include <boost/shared_ptr.hpp>
 #include <boost/function.hpp>
+// code that names boost::lexical_cast through a header we stand in for empty (gazebo's:
+// gazebo_plugins' gazebo_ros_utils.h includes no boost header of its own for it)
+#include <boost/lexical_cast.hpp>
 #include <ros/ros.h>
 #include <rclcpp/rclcpp.hpp>
 #include <rclcpp_lifecycle/lifecycle_node.hpp>

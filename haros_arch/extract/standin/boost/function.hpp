@@ -8,9 +8,10 @@ public:
   function();
   template<class F> function(F f);
   R operator()(A... args) const;
-  void clear();
-  bool empty() const;
+  // boost's safe-bool: ``if (cb_ && output)``, ``if (!cb_)``
   explicit operator bool() const;
+  bool empty() const;
+  void clear();
 };
 }  // namespace boost
 #endif

@@ -29,6 +29,9 @@
 #define RCLCPP_LOCAL
 // rclcpp/version.h: the version of the analysed distribution, given as -D flags
 // (extract/cpp/versions.py); without them Jazzy's, whose API the stand-ins follow
+#ifdef RCLCPP_VERSION_MAJOR
+#define HAROS_RCLCPP_VERSION_GIVEN  // the analysed distribution's rclcpp
+#endif
 #ifndef RCLCPP_VERSION_MAJOR
 #define RCLCPP_VERSION_MAJOR (28)
 #define RCLCPP_VERSION_MINOR (1)

@@ -3,6 +3,10 @@
 // Noetic's, whose API the stand-ins follow
 #ifndef HAROS_STANDIN_ROS_COMMON_H
 #define HAROS_STANDIN_ROS_COMMON_H
+#ifdef ROS_VERSION_MAJOR
+// the analysed distribution's roscpp (tf2_ros/buffer.h: a ROS 1 unit's tf2::Stamped)
+#define HAROS_ROSCPP_VERSION_GIVEN
+#endif
 #ifndef ROS_VERSION_MAJOR
 #define ROS_VERSION_MAJOR 1
 #define ROS_VERSION_MINOR 16

@@ -115,5 +115,13 @@ protected:
     ValueStruct* asStruct;
   } _value;
 };
+// as xmlrpcpp/XmlRpcException.h declares it (what converting a value of another type
+// throws: neonavigation's ``catch (XmlRpc::XmlRpcException& e)``)
+class XmlRpcException {
+public:
+  XmlRpcException(const std::string& message, int code = -1);
+  const std::string& getMessage() const;
+  int getCode() const;
+};
 }  // namespace XmlRpc
 #endif

@@ -17,6 +17,8 @@ public:
   void stop();
   void setPeriod(const Duration& period, bool reset = true);
   bool hasPending();
+  bool hasStarted() const;
+  bool isValid();
   // as roscpp declares it: valid handles convert to a non-null void* (so
   // `if (pub)`, `nullptr == pub` and `bool ok = pub;` all compile)
   operator void*() const;

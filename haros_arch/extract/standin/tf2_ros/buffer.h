@@ -149,8 +149,12 @@ public:
 };
 // a stamped datum: ROS 2's tf2 stamps it with its own TimePoint, ROS 1's with ros::Time
 // (a unit that has included rclcpp is ROS 2's: robot_localization's
-// ``pose.stamp_ = tf2::timeFromSec(...)``)
-#ifdef HAROS_STANDIN_RCLCPP_HPP
+// ``pose.stamp_ = tf2::timeFromSec(...)``; but the precompiled stand-ins include rclcpp
+// in every unit, so a unit of a ROS 1 distribution, whose roscpp version the flags give
+// and not rclcpp's, is ROS 1's: neonavigation's ``tf2::Stamped<tf2::Transform>(t,
+// odom->header.stamp, frame)``)
+#if defined(HAROS_STANDIN_RCLCPP_HPP) && !(defined(HAROS_ROSCPP_VERSION_GIVEN) && \
+                                           !defined(HAROS_RCLCPP_VERSION_GIVEN))
 typedef TimePoint haros_stamp_type;
 #else
 typedef ros::Time haros_stamp_type;

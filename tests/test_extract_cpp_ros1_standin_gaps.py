@@ -1,0 +1,119 @@
+"""ROS 1 forms of neonavigation (noetic) that the stand-in headers did not parse:
+``tf2::Stamped<tf2::Transform>`` stamped with a ``ros::Time`` (the precompiled stand-ins
+include rclcpp in every unit, which made every stamp ROS 2's ``TimePoint``), ``ros::Timer::
+isValid()``, a ``boost::function`` tested as a bool, and xmlrpcpp's own headers
+(``<xmlrpcpp/XmlRpcValue.h>`` was synthesised as a message without fields, and
+``XmlRpc::XmlRpcException`` was not declared); and boost's ``lexical_cast``, which
+gazebo_plugins' ``getParameter`` (gazebo_ros_utils.h) uses beside a ROS call: every plugin
+of gazebo_plugins was partial for it. Each left a C++ error in a function that calls the
+ROS API."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+NODE = r"""
+#include <ros/ros.h>
+#include <boost/function.hpp>
+#include <nav_msgs/Odometry.h>
+#include <std_msgs/Float32.h>
+#include <tf2/utils.h>
+#include <tf2_ros/transform_listener.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+#include <xmlrpcpp/XmlRpcException.h>
+#include <string>
+
+class Tracker
+{
+public:
+  Tracker() : pnh_("~")
+  {
+    sub_ = nh_.subscribe("odom", 10, &Tracker::cbOdometry, this);
+    XmlRpc::XmlRpcValue footprint;
+    pnh_.getParam("footprint", footprint);
+    try
+    {
+      radius_ = static_cast<double>(footprint[0][0]);
+    }
+    catch (XmlRpc::XmlRpcException& e)
+    {
+      ROS_ERROR("%s", e.getMessage().c_str());
+    }
+  }
+  void cbOdometry(const nav_msgs::Odometry::ConstPtr& odom)
+  {
+    if (timer_.isValid())
+      timer_.setPeriod(ros::Duration(0.1), true);
+    tf2::Transform robot;
+    const tf2::Stamped<tf2::Transform> stamped(robot, odom->header.stamp,
+                                               odom->header.frame_id);
+    const double age = (ros::Time::now() - stamped.stamp_).toSec();
+    if (check_ && age > 0.1)
+      pub_ = nh_.advertise<std_msgs::Float32>("delay", 1);
+  }
+
+  ros::NodeHandle nh_, pnh_;
+  ros::Subscriber sub_;
+  ros::Publisher pub_;
+  ros::Timer timer_;
+  boost::function<bool(double)> check_;
+  double radius_;
+};
+"""
+
+
+def test_ros1_forms_parse_clean_for_a_noetic_workspace(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("tracker"))
+    source = tmp_path / "tracker.cpp"
+    source.write_text(NODE)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    errors = [(d.location.line, d.message) for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_MESSAGE_UNKNOWN", "CPP_ERROR_NEAR_CALL")]
+    assert errors == []
+    assert [(c.kind, c.name) for c in result.calls if c.kind != "read"] == [
+        ("subscribe", "odom"), ("publish", "delay")]
+
+
+def test_a_ros2_workspace_keeps_tf2_s_own_time_point(tmp_path) -> None:
+    """ROS 2's tf2::Stamped is stamped with tf2::TimePoint, which rclcpp code gives it
+    (robot_localization's ``tf2::timeFromSec``)."""
+    (tmp_path / "package.xml").write_text(package_xml("loc", "ament_cmake"))
+    source = tmp_path / "loc.cpp"
+    source.write_text(
+        "#include <rclcpp/rclcpp.hpp>\n#include <tf2/utils.h>\n"
+        "#include <tf2_ros/buffer.h>\n"
+        "void f(double t) {\n"
+        "  tf2::Stamped<tf2::Transform> pose;\n"
+        "  pose.stamp_ = tf2::timeFromSec(t);\n"
+        "}\n")
+    for distro in ("jazzy", None):
+        result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                             distro=distro)
+        assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_boost_lexical_cast_beside_a_ros_call(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("plugin"))
+    source = tmp_path / "plugin.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        # as gazebo_ros_utils.h: lexical_cast comes with gazebo's headers, not found here
+        "#include <boost/algorithm/string.hpp>\n#include <gazebo/common/common.hh>\n"
+        "template <class T> void getParameter(ros::NodeHandle& nh, const T& fallback) {\n"
+        "  ROS_WARN(\"default is %s\", boost::lexical_cast<std::string>(fallback).c_str());\n"
+        "  static ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n"
+        "}\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"plugin\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  getParameter(nh, 2.5);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
