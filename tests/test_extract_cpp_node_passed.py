@@ -231,26 +231,26 @@ def test_an_undeclared_name_without_the_node_leaves_it_complete(write_tree: Any)
     assert node.completeness == "complete", node.completeness_reasons
 
 
-# interactive_marker_twist_server builds its marker server with
-# ``std::make_unique<interactive_markers::InteractiveMarkerServer>("twist_server",
+# a node builds a vendor's marker server (as interactive_marker_twist_server built
+# interactive_markers' before its stand-in) with ``std::make_unique<...>("twist_server",
 # get_node_base_interface(), ..., get_node_topics_interface(), ...)``: the class, declared
-# permissively (interactive_markers is not in the workspace), publishes and subscribes on
-# the node through the interfaces the factory hands its constructor
+# permissively (its library is not in the workspace), publishes and subscribes on the node
+# through the interfaces the factory hands its constructor
 FACTORY_MADE = """
     #include <rclcpp/rclcpp.hpp>
-    #include <interactive_markers/interactive_marker_server.hpp>
+    #include <vendor_markers/marker_server.hpp>
 
     class Checker : public rclcpp::Node {
      public:
       Checker()
       : Node("checker"),
-        server_(std::make_unique<interactive_markers::InteractiveMarkerServer>(
+        server_(std::make_unique<vendor_markers::MarkerServer>(
           "twist_server", get_node_base_interface(), get_node_topics_interface()))
       {
         rate_ = declare_parameter<double>("rate", 10.0);
       }
      private:
-      std::unique_ptr<interactive_markers::InteractiveMarkerServer> server_;
+      std::unique_ptr<vendor_markers::MarkerServer> server_;
       double rate_{0.0};
     };
 
@@ -265,11 +265,11 @@ def test_the_node_given_to_a_factory_of_a_class_declared_permissively(
         write_tree: Any) -> None:
     node = _checker(write_tree, FACTORY_MADE)
     assert node.completeness == "partial"
-    assert any("is given to interactive_markers::InteractiveMarkerServer" in r
+    assert any("is given to vendor_markers::MarkerServer" in r
                for r in node.completeness_reasons), node.completeness_reasons
     # a factory of a class the parse knows is read as before
     known = _checker(write_tree, FACTORY_MADE.replace(
-        "#include <interactive_markers/interactive_marker_server.hpp>",
-        "namespace interactive_markers { struct InteractiveMarkerServer {\n"
-        "  template <class... A> InteractiveMarkerServer(A &&...) {} }; }"))
+        "#include <vendor_markers/marker_server.hpp>",
+        "namespace vendor_markers { struct MarkerServer {\n"
+        "  template <class... A> MarkerServer(A &&...) {} }; }"))
     assert known.completeness == "complete", known.completeness_reasons

@@ -576,7 +576,7 @@ def test_an_api_name_called_on_a_system_librarys_object_is_no_missed_call(write_
           ros::NodeHandle nh;
           ros::Publisher pub = nh.advertise<std_msgs::String>("state", 10);
         }
-        void handle(const boost::system::error_code& ec) {}  // an error left in the unit
+        void handle() { int wrong = "text"; }  // an error left in the unit
         """
     root = write_tree({
         "pkg/package.xml": package_xml("pkg", "catkin").replace(

@@ -1,8 +1,9 @@
 // haros_arch stand-in: ROS 2 interactive_markers' InteractiveMarkerServer (declarations
 // only), for a workspace that has interactive_markers installed, not as sources. What it
-// publishes, subscribes and serves is said by its API row (extract/cpp/api.py).
-#ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_SERVER_HPP
-#define HAROS_STANDIN_INTERACTIVE_MARKERS_SERVER_HPP
+// publishes, subscribes and serves is said by its API row (extract/cpp/api.py). The ROS 2
+// headers share the ROS 1 ones' include guards: a unit includes one ROS's.
+#ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_SERVER_H
+#define HAROS_STANDIN_INTERACTIVE_MARKERS_SERVER_H
 #include <functional>
 #include <string>
 #include <vector>

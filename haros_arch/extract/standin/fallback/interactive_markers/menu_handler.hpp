@@ -1,6 +1,6 @@
 // haros_arch stand-in: ROS 2 interactive_markers' MenuHandler (declarations only)
-#ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_MENU_HANDLER_HPP
-#define HAROS_STANDIN_INTERACTIVE_MARKERS_MENU_HANDLER_HPP
+#ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_MENU_HANDLER_H
+#define HAROS_STANDIN_INTERACTIVE_MARKERS_MENU_HANDLER_H
 #include <string>
 #include <interactive_markers/interactive_marker_server.hpp>
 

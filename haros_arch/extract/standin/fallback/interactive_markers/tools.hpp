@@ -1,6 +1,6 @@
 // haros_arch stand-in: ROS 2 interactive_markers' tools (declarations only; no ROS call)
-#ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_TOOLS_HPP
-#define HAROS_STANDIN_INTERACTIVE_MARKERS_TOOLS_HPP
+#ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_TOOLS_H
+#define HAROS_STANDIN_INTERACTIVE_MARKERS_TOOLS_H
 #include <string>
 #include <geometry_msgs/msg/quaternion.hpp>
 #include <visualization_msgs/msg/interactive_marker.hpp>
