@@ -60,5 +60,15 @@ def test_twenty_callers_name_twenty_parameters(tmp_path) -> None:
     assert declared(tmp_path, names) == sorted(names)
 
 
+def test_two_hundred_callers_name_two_hundred_parameters(tmp_path) -> None:
+    # OrbbecSDK_ROS2's OBCameraNode::getParameters calls its setAndGetNodeParameter with
+    # ~180 names, which Parameters::setParam in another file declares: over the bound
+    # of 32, all were one '?', which every parameter the launch file sets could be
+    names = [f"gain_{i}" for i in range(200)]
+    assert declared(tmp_path, names) == sorted(names)
+
+
 def test_more_names_than_the_bound_are_one_unknown(tmp_path) -> None:
-    assert declared(tmp_path, [f"gain_{i}" for i in range(40)]) == ["?"]
+    from haros_arch.extract.cpp.links import MAX_VALUES
+
+    assert declared(tmp_path, [f"gain_{i}" for i in range(MAX_VALUES + 8)]) == ["?"]

@@ -104,7 +104,9 @@ NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, 
                        OPAQUE, DEFINED, MEMBER, WITHIN})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
-MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
+# realsense2_camera's setParam is called with ~30 names in its files, OrbbecSDK_ROS2's
+# OBCameraNode::setAndGetNodeParameter with ~180
+MAX_VALUES = 256
 MAX_DEPTH = 8
 _MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
 _SPLIT = "\x02"
@@ -651,6 +653,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
                               idle):
             if filled not in out:
                 out.append(filled)
-    if len(out) > MAX_VALUES:
-        return [choose(_MARK.sub("?", text))]
+            if len(out) > MAX_VALUES:  # no more work: the values of placeholders
+                # multiplied (``a + b`` of two functions of many callers each) end here
+                return [choose(_MARK.sub("?", text))]
     return out
