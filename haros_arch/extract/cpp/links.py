@@ -521,6 +521,14 @@ def constructor_unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[
     return unbuilt
 
 
+def construction_unseen(unseen: Collection[str]) -> Callable[[str], bool]:
+    """Whether a USR is a constructor whose class the errors the parse left may construct
+    unseen (its name among their words ``unseen``; any, ``*``)."""
+    def hidden(usr: str) -> bool:
+        return _constructor(usr) and ("*" in unseen or class_of(usr) in unseen)
+    return hidden
+
+
 def never_run(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
     """Whether a USR is a function whose code runs only when called or used
     (``call_conditions.RUNS_WHEN_CALLED``: a free function, a non-virtual method) that no
