@@ -108,11 +108,18 @@ class CallSites:
         # channel per parameter, ``add_channel(rand_drive_topic, ...)``, a method that
         # constructs it); the same member or variable passed by each is one value (nav2's
         # velocity smoother builds its OdomSmoother with ``odom_topic_`` at three places)
-        if strings and len(values) > 1:
+        # (and calls too many to read here: OrbbecSDK_ROS2's setAndGetNodeParameter,
+        # called with ~180 names in its own file)
+        if strings and (len(values) > 1 or (not arguments and self._many(parm))):
             marker = self.placeholder(parm)
             if marker is not None:
                 return (marker,)  # type: ignore[return-value]
         return unknown
+
+    def _many(self, parm: Cursor) -> bool:
+        """Whether the function of ``parm`` has more calls in this file than
+        ``_arguments`` reads."""
+        return len(self._sites().get(self._function_key(parm), [])) > self.MAX_SITES
 
     def _shared(self, function: Cursor | None) -> bool:
         """Whether the node's other files may call the function ``function`` too, and
