@@ -173,3 +173,50 @@ def test_a_construction_in_another_file_without_condition(write_tree) -> None:
     found = _node(write_tree, SCANNER_MAIN.replace(
         "  Scanner * s = nullptr;\n", "  Scanner * s = new Mockup();\n"))
     assert found["datagram"] == []
+
+
+SETUP_H = MOCKUP_H.replace("  Mockup();\n", "  Mockup();\n  void setup();\n")
+SETUP_CPP = """
+#include "mockup.h"
+Mockup::Mockup()
+{
+  setup();
+}
+void Mockup::setup()
+{
+  sub_ = nh_.subscribe("datagram", 1, &Mockup::datagramCB, this);
+}
+"""
+
+
+def _setup_node(write_tree, main: str, one_file: bool = False) -> dict[str, list[str]]:
+    files = {"scanner/package.xml": package_xml("scanner"),
+             "scanner/src/mockup.h": SETUP_H,
+             "scanner/src/main.cpp": main + (SETUP_CPP.replace('#include "mockup.h"', "")
+                                             if one_file else "")}
+    if not one_file:
+        files["scanner/src/mockup.cpp"] = SETUP_CPP
+    root = write_tree(files)
+    sources = [str(root / "scanner" / "src" / name)
+               for name in ("main.cpp", *(() if one_file else ("mockup.cpp",)))]
+    result = extract_cpp(sources, scan([str(root)]), cache_dir=None)
+    return {c.name: [f"{k.statement} {k.text}" for k in c.conditions]
+            for c in result.calls if c.kind == "subscribe"}
+
+
+def test_the_calls_of_a_method_the_constructor_calls_carry_the_construction_s_condition(
+        write_tree) -> None:
+    """OrbbecSDK_ROS2's driver builds its OBLidarNode only ``if (device_type_ ==
+    "lidar")``; the lidar's constructor calls ``setupTopics()``, which makes its
+    publishers: they were said to exist in a camera's configuration too. (The loop
+    around the construction is no condition of them, as of any function's calls.)"""
+    assert _setup_node(write_tree, SCANNER_MAIN)["datagram"] == ["if subscribe_datagram"]
+    assert _setup_node(write_tree, SCANNER_MAIN, one_file=True)["datagram"] == [
+        "if subscribe_datagram"]
+
+
+def test_a_method_the_constructor_calls_of_a_class_also_built_unconditionally(
+        write_tree) -> None:
+    main = SCANNER_MAIN.replace("  Scanner * s = nullptr;\n", "  Scanner * s = new Mockup();\n")
+    assert _setup_node(write_tree, main)["datagram"] == []
+    assert _setup_node(write_tree, main, one_file=True)["datagram"] == []

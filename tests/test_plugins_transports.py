@@ -341,3 +341,21 @@ def test_camera_info_on_a_handle_given_to_a_class_stays_relative(tmp_path):
     # global /camera_info once the handle's namespace ("") was filled in
     assert extracted(tmp_path, SCAN_CLASS) == [
         ("subscribe", "camera_info", "image"), ("subscribe", "image", None)]
+
+
+def test_ros2_parameters_of_a_base_not_known_are_not_known():
+    # OrbbecSDK_ROS2 publishes its images on stream_name_[i] + "/image_raw", a map filled
+    # at run time: the base '?' cut by the namespace's length left nothing of it, and the
+    # node was said to read '/camera/camera/.enable_pub_plugins' and
+    # '.compressed.format', names no launch file sets
+    driver = Node("cam", "driver", calls=[call("publish", "?", "sensor_msgs/msg/Image", "*"),
+                                          call("publish", "?/image_raw",
+                                               "sensor_msgs/msg/Image", "*", line=2)])
+    config = graph([NodeDecl("/camera/camera", "cam", "driver", "/camera/", ros_version=2)],
+                   nodes=[driver], packages=["compressed_image_transport"])
+    read = {link.resource.name for link in config.links
+            if link.node.name == "/camera/camera" and link.kind == "read"}
+    assert not [name for name in read if name.startswith("/camera/camera/.")], read
+    assert {"/camera/camera/?.enable_pub_plugins", "/camera/camera/?.compressed.format",
+            "/camera/camera/?.image_raw.enable_pub_plugins",
+            "/camera/camera/?.image_raw.compressed.format"} <= read

@@ -590,3 +590,32 @@ def test_similar_disconnected_topics_leaves_names_not_known_out():
     assert len(run_rule(rule, pair("/cam/image", "/bench/image"))) == 1
     assert run_rule(rule, pair("/cam/?", "/bench/?")) == []
     assert run_rule(rule, pair("/?/depth/image_raw", "/?/color/image_raw")) == []
+
+
+def test_similar_disconnected_topics_a_name_not_known_may_be_the_subscribers_partner():
+    """OrbbecSDK_ROS2's multi_camera: each camera publishes its images on names made
+    from a map filled at run time (``stream_name_[i] + "/image_raw"``: ``/camera_02/?``)
+    and its D2C viewer subscribes ``color/image_raw``: camera_01's
+    ``depth_to_color/image_raw`` with camera_02's ``color/image_raw`` were said to have
+    no partner, while camera_02's own ``?`` publisher may well be the subscriber's (as
+    subscriber-without-publisher says: not decided). A subscriber of ``?`` beside the
+    publisher's topic makes the pair undecided already; the publisher's side now too."""
+    from haros_arch.graph.candidates import find_candidates
+
+    def run(unknown_kind: str | None) -> list[str]:
+        links = [{"kind": "publish", "node": "/cam1", "name": "/cam1/depth_to_color/image",
+                  "given": "depth_to_color/image", "type": "sensor_msgs/msg/Image"},
+                 {"kind": "subscribe", "node": "/cam2", "name": "/cam2/color/image",
+                  "given": "color/image", "type": "sensor_msgs/msg/Image"}]
+        if unknown_kind is not None:
+            links.append({"kind": unknown_kind, "node": "/cam2", "name": "/cam2/?",
+                          "given": "?", "type": "sensor_msgs/msg/Image"})
+        model = configuration({"links": links})
+        find_candidates(model.configurations[0])
+        return [f.rule for f in run_rule(RULES["similar-disconnected-topics"], model)]
+
+    assert run(None) == ["similar-disconnected-topics"]
+    # a publisher of a name not known may publish /cam2/color/image
+    assert run("publish") == ["similar-disconnected-topics" + UNDECIDED]
+    # a subscriber of one is no publisher: the pair stands
+    assert run("subscribe") == ["similar-disconnected-topics"]

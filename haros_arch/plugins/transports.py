@@ -116,8 +116,7 @@ class Transports:
 
         if instance.ros_version == 1:
             return [param("read", f"{topic}/{name}") for name in transport.parameters[0]]
-        namespace = instance.namespace.rstrip("/") or "/"
-        key = base[len(namespace):].replace("/", ".")
+        key = _base_key(base, instance)
         out = [param("declare", f"{key}.{transport.name}.{name}")
                for name in transport.parameters[1]]
         if transport.unscoped:
@@ -131,8 +130,7 @@ class Transports:
             key = f"{base.rstrip('/')}/{DISABLE_PUB_PLUGINS}"
             full = key
         else:
-            namespace = instance.namespace.rstrip("/") or "/"
-            relative = base[len(namespace):].replace("/", ".").lstrip(".")
+            relative = _base_key(base, instance).lstrip(".")
             key = f"{relative}.{ENABLE_PUB_PLUGINS}"
             full = f"{instance.name.rstrip('/')}/{key}"
         found = self.params.by_name.get((Parameter, full))
@@ -175,6 +173,19 @@ class Transports:
         return [replace(call, name=topic, type=msg_type, name_param=None,
                         name_default=None, handle_namespace=None, transport=None,
                         origin="plugin"), *out]
+
+
+def _base_key(base: str, instance: NodeInstance) -> str:
+    """The base topic as a ROS 2 publisher names its parameters after it: cut by the
+    length of the node's namespace, ``/`` as ``.`` (image_transport's and its plugins'
+    ``substr``). A base whose start is not known statically (``?``, ``?/image_raw``:
+    OrbbecSDK_ROS2's image topics, named from a map filled at run time) does not show
+    where the namespace ends: its key is not known up to the text after its last unknown
+    part, never the empty name the cut would leave of ``?``."""
+    namespace = instance.namespace.rstrip("/") or "/"
+    if base.startswith(namespace) or UNKNOWN_MARK not in base:
+        return base[len(namespace):].replace("/", ".")
+    return UNKNOWN_MARK + base[base.rindex(UNKNOWN_MARK) + 1:].replace("/", ".")
 
 
 def _declares(instance: NodeInstance, parameter: str) -> bool:

@@ -119,6 +119,23 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     refs: dict[str, int] = {}
     overloaded: set[str] = set()
     by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
+    def built(cursor: Cursor) -> bool:
+        """Whether a callee is the constructor of a class of the workspace's files (not
+        a class template's): its class is built there, and the calls its constructor
+        makes through the methods it calls exist under the conditions of the
+        constructions (``shared``)."""
+        if cursor.kind != CursorKind.CONSTRUCTOR:
+            return False
+        found = known.get(id(cursor))
+        if found is None:
+            where = cursor.location.file
+            parent = cursor.semantic_parent
+            found = known[id(cursor)] = (cursor, where is not None and owned(where.name) and (
+                parent is None or parent.kind not in (
+                    CursorKind.CLASS_TEMPLATE,
+                    CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)))
+        return found[1]
+
     for function in functions:
         kept = walked(function)
         if kept is None:
@@ -144,7 +161,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
         for node in nodes:
             if node.kind == CursorKind.CALL_EXPR:
                 callee = callee_of(node)
-                if callee is None or not ours(callee):
+                if callee is None or not (ours(callee) or built(callee)):
                     continue
                 usr = callee.canonical.get_usr()
                 if not usr:
@@ -354,6 +371,7 @@ def _overridden_in(cls: Cursor, name: str, types: list[str], owned: Callable[[st
 
 def shared(facts: Iterable[Fact], unseen: Collection[str],
            unbuilt: Callable[[str], bool] = lambda usr: False,
+           unseen_construction: Callable[[str], bool] = lambda usr: False,
            ) -> dict[str, tuple[Condition, ...]]:
     """Function USR -> the source conditions every call of it in the node's files is
     made under, with those its calling function is called under in turn (a base
@@ -364,7 +382,12 @@ def shared(facts: Iterable[Fact], unseen: Collection[str],
     of the node calls (``unbuilt``, ``links.constructor_unbuilt``) is none: humble
     controller_manager's ``subscribe_to_robot_description_topic()``, under ``if
     (robot_description.empty())`` in the constructor ros2_control_node builds and under
-    another condition in one it never builds."""
+    another condition in one it never builds. A site in a constructor is under the
+    conditions the constructions of its class share in turn (its sites are constructions,
+    ``SITE_UNDER`` facts too; none when ``unseen_construction`` says the parse may hide
+    one): OrbbecSDK_ROS2's driver builds its ``OBLidarNode`` only ``if (device_type_ ==
+    "lidar")``, and the lidar's publishers are made by ``setupTopics()``, which its
+    constructor calls."""
     sites: dict[str, dict[str, tuple[tuple[Condition, ...] | None, str, bool]]] = {}
     referenced: set[str] = set()
     bases: dict[str, list[str]] = {}
@@ -390,14 +413,17 @@ def shared(facts: Iterable[Fact], unseen: Collection[str],
         if usr in memo:
             return memo[usr]
         every = [usr, *bases.get(usr, [])]
-        if "*" in unseen or len(active) > MAX_DEPTH or (
+        if "*" in unseen or len(active) > MAX_DEPTH or unseen_construction(usr) or (
             any(u in referenced or u in hidden for u in every)
         ):
             return ()
         # its own calls, and those of the methods it overrides that may dispatch to it
+        # (a constructor whose class a file of the node builds, its own file too, is
+        # built: those constructions are its sites)
         found_sites = [(under, caller) for u in every
                        for under, caller, virtual in sites.get(u, {}).values()
-                       if (u == usr or virtual) and not (caller and unbuilt(caller))]
+                       if (u == usr or virtual) and not (
+                           caller and unbuilt(caller) and not sites.get(caller))]
         if not found_sites:
             return ()
         result: tuple[Condition, ...] | None = None

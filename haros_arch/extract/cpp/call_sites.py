@@ -108,11 +108,18 @@ class CallSites:
         # channel per parameter, ``add_channel(rand_drive_topic, ...)``, a method that
         # constructs it); the same member or variable passed by each is one value (nav2's
         # velocity smoother builds its OdomSmoother with ``odom_topic_`` at three places)
-        if strings and len(values) > 1:
+        # (and calls too many to read here: OrbbecSDK_ROS2's setAndGetNodeParameter,
+        # called with ~180 names in its own file)
+        if strings and (len(values) > 1 or (not arguments and self._many(parm))):
             marker = self.placeholder(parm)
             if marker is not None:
                 return (marker,)  # type: ignore[return-value]
         return unknown
+
+    def _many(self, parm: Cursor) -> bool:
+        """Whether the function of ``parm`` has more calls in this file than
+        ``_arguments`` reads."""
+        return len(self._sites().get(self._function_key(parm), [])) > self.MAX_SITES
 
     def _shared(self, function: Cursor | None) -> bool:
         """Whether the node's other files may call the function ``function`` too, and
@@ -428,8 +435,8 @@ class CallSites:
                         if callee is not None:
                             self._implicit[(key_of(node), key_of(callee.canonical))] = callee
                     if callee is not None:
-                        self._index.setdefault(key_of(callee.canonical), []).append(
-                            (node, function))
+                        for key in specialised_keys(callee):
+                            self._index.setdefault(key, []).append((node, function))
                 # a constructor that delegates to another calls it with that argument
                 # list (``Filter(nh, priv) : Filter(nh, priv, getName()) {}``)
                 if function.kind in _CONSTRUCTORS:
@@ -683,6 +690,29 @@ def delegated_to(function: Cursor, arguments: Cursor) -> Cursor | None:
              and key_of(c.canonical) != own and _takes(c, len(args))]
     found = closest(found, args)
     return found[0] if len(found) == 1 else None
+
+
+# what a specialisation of a template is called as (``specialised_keys``)
+_SPECIALISABLE = frozenset({CursorKind.CONSTRUCTOR, CursorKind.CXX_METHOD,
+                            CursorKind.FUNCTION_DECL})
+
+
+def specialised_keys(function: Cursor) -> list[tuple[str, int]]:
+    """The keys a call of ``function`` is a call of: its first declaration's place, and
+    for a specialisation the first declaration's of what it is specialised from (a
+    function template, a class template's member). One declared in its class and
+    defined outside it (OrbbecSDK_ROS2's ``FrameLatencyNode::createListener<MsgType>``,
+    ``template <class M> Bridge<M>::Bridge(...)``) is specialised from the definition,
+    whose place is the specialisation's own, while the template's functions (its
+    summary as a wrapper, its parameters) are known by the declaration in the class."""
+    found = [key_of(function.canonical)]
+    if function.kind in _SPECIALISABLE:
+        template = conf.lib.clang_getSpecializedCursorTemplate(function)
+        if template is not None and template.kind != CursorKind.NO_DECL_FOUND and (
+            key_of(template.canonical) not in found
+        ):
+            found.append(key_of(template.canonical))
+    return found
 
 
 def callee_of(call: Cursor) -> Cursor | None:

@@ -104,7 +104,9 @@ NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, 
                        OPAQUE, DEFINED, MEMBER, WITHIN})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
-MAX_VALUES = 32  # realsense2_camera's setParam is called with ~30 names in its files
+# realsense2_camera's setParam is called with ~30 names in its files, OrbbecSDK_ROS2's
+# OBCameraNode::setAndGetNodeParameter with ~180
+MAX_VALUES = 256
 MAX_DEPTH = 8
 _MARK = re.compile(f"{PLACEHOLDER}([^{PLACEHOLDER}{SEPARATOR}]*){SEPARATOR}(\\d+){PLACEHOLDER}")
 _SPLIT = "\x02"
@@ -519,6 +521,14 @@ def constructor_unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[
     return unbuilt
 
 
+def construction_unseen(unseen: Collection[str]) -> Callable[[str], bool]:
+    """Whether a USR is a constructor whose class the errors the parse left may construct
+    unseen (its name among their words ``unseen``; any, ``*``)."""
+    def hidden(usr: str) -> bool:
+        return _constructor(usr) and ("*" in unseen or class_of(usr) in unseen)
+    return hidden
+
+
 def never_run(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:
     """Whether a USR is a function whose code runs only when called or used
     (``call_conditions.RUNS_WHEN_CALLED``: a free function, a non-virtual method) that no
@@ -651,6 +661,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
                               idle):
             if filled not in out:
                 out.append(filled)
-    if len(out) > MAX_VALUES:
-        return [choose(_MARK.sub("?", text))]
+            if len(out) > MAX_VALUES:  # no more work: the values of placeholders
+                # multiplied (``a + b`` of two functions of many callers each) end here
+                return [choose(_MARK.sub("?", text))]
     return out

@@ -38,7 +38,13 @@ from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 from ...model.conditions import Condition
 from ...model.values import Unknown
 from . import api, msg_types
-from .call_sites import closest, default_argument, delegation, is_constructor
+from .call_sites import (
+    closest,
+    default_argument,
+    delegation,
+    is_constructor,
+    specialised_keys,
+)
 from .call_types import template_argument
 from .cursors import Node, from_standin, overloads
 from .expressions import constructed_name
@@ -1157,7 +1163,7 @@ class Wrappers:
         """The keys of the wrapper functions ``call`` calls (``_called``)."""
         target = call.referenced
         if target is not None:
-            return self._constructed(call, _arguments(call)) or _specialised_keys(target)
+            return self._constructed(call, _arguments(call)) or specialised_keys(target)
         # a construction through a factory that depends on a template parameter
         # (``std::make_shared<ActionServer>(node, name_, ...)`` in nav2's
         # TimedBehavior<ActionT>, ``using ActionServer = SimpleActionServer<ActionT>``)
@@ -1727,7 +1733,7 @@ def _may_call(call: Cursor, method: Cursor) -> bool:
     may be one of the overloads of its name."""
     target = call.referenced
     if target is not None:
-        return _key(method.canonical) in _specialised_keys(target) or (
+        return _key(method.canonical) in specialised_keys(target) or (
             _key(target.canonical) == _key(method.canonical))
     head = next(iter(call.get_children()), None)
     if head is None:
@@ -1754,21 +1760,6 @@ def _called_names(calls: Iterator[list[Cursor]] | Any) -> set[str]:
             if head.kind == CursorKind.MEMBER_REF_EXPR:
                 found.add(_member_name(head))
             found.update(d.spelling for d in _overloads(head))
-    return found
-
-
-def _specialised_keys(target: Cursor) -> list[Key]:
-    """The place of the function ``target``, and of its class template's member when it
-    is a specialisation's constructor: one defined out of the class (``template <class
-    M> Bridge<M>::Bridge(...)``) is, in a construction ``Bridge<Msg> b(...)``, known by
-    its definition, while the summary is the class's declaration's."""
-    found = [_key(target.canonical)]
-    if target.kind == CursorKind.CONSTRUCTOR:
-        template = conf.lib.clang_getSpecializedCursorTemplate(target)
-        if template is not None and template.kind != CursorKind.NO_DECL_FOUND and (
-            _key(template.canonical) not in found
-        ):
-            found.append(_key(template.canonical))
     return found
 
 

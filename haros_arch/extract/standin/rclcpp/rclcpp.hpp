@@ -522,6 +522,25 @@ public:
   template<class I> MessageInfo(const I& rmw_message_info);
   const struct rmw_message_info_s& get_rmw_message_info() const;
 };
+// rclcpp/message_memory_strategy.hpp, strategies/message_pool_memory_strategy.hpp: how a
+// subscription allocates its messages, create_subscription's fifth argument
+// (aws-deepracer's servo_node hands it a MessagePoolMemoryStrategy)
+namespace message_memory_strategy {
+template<class M, class A = std::allocator<void>> class MessageMemoryStrategy {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(MessageMemoryStrategy)
+  virtual ~MessageMemoryStrategy();
+  static SharedPtr create_default();
+};
+}
+namespace strategies { namespace message_pool_memory_strategy {
+template<class M, size_t Size, class E = void> class MessagePoolMemoryStrategy
+    : public message_memory_strategy::MessageMemoryStrategy<M> {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(MessagePoolMemoryStrategy)
+  MessagePoolMemoryStrategy();
+};
+} }
 template<class M, class A = void> class Subscription : public SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
@@ -699,7 +718,9 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const rclcpp::PublisherOptions& options = rclcpp::PublisherOptions()); \
   template<class M, class C> std::shared_ptr<rclcpp::Subscription<M>> create_subscription( \
       const std::string& topic, const rclcpp::QoS& qos, C&& callback, \
-      const rclcpp::SubscriptionOptions& options = rclcpp::SubscriptionOptions()); \
+      const rclcpp::SubscriptionOptions& options = rclcpp::SubscriptionOptions(), \
+      std::shared_ptr<rclcpp::message_memory_strategy::MessageMemoryStrategy<M>> \
+          msg_mem_strat = nullptr); \
   std::shared_ptr<rclcpp::GenericPublisher> create_generic_publisher(const std::string& topic, \
       const std::string& type, const rclcpp::QoS& qos); \
   template<class C> std::shared_ptr<rclcpp::GenericSubscription> create_generic_subscription( \
