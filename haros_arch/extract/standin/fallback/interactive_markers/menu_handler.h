@@ -1,5 +1,6 @@
-// haros_arch stand-in: ROS 1 interactive_markers' MenuHandler (declarations only; no ROS
-// call of its own: it puts menu entries on a server's markers)
+// haros_arch stand-in: interactive_markers' MenuHandler (declarations only; no ROS call of
+// its own: it puts menu entries on a server's markers). ROS 2's menu_handler.hpp includes
+// its server and then this: the callback type is the server's.
 #ifndef HAROS_STANDIN_INTERACTIVE_MARKERS_MENU_HANDLER_H
 #define HAROS_STANDIN_INTERACTIVE_MARKERS_MENU_HANDLER_H
 #include <string>
@@ -9,8 +10,7 @@ namespace interactive_markers {
 class MenuHandler {
  public:
   typedef uint32_t EntryHandle;
-  typedef visualization_msgs::InteractiveMarkerFeedbackConstPtr FeedbackConstPtr;
-  typedef boost::function<void(const FeedbackConstPtr&)> FeedbackCallback;
+  typedef InteractiveMarkerServer::FeedbackCallback FeedbackCallback;
   enum CheckState { NO_CHECKBOX, CHECKED, UNCHECKED };
   MenuHandler();
   EntryHandle insert(const std::string& title, const FeedbackCallback& feedback_cb);
