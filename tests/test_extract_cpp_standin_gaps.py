@@ -873,3 +873,37 @@ def test_asio_handlers_with_boost_system_error_codes(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "~threshold"), ("read", "~require"), ("publish", "out")]
+
+
+# ROS 1 sensor_msgs' point_cloud_conversion.h (costmap_2d's obstacle layer converts a
+# PointCloud to a PointCloud2 in its callback): it was an empty stand-in and an error
+CONVERSION = """#include <ros/ros.h>
+#include <sensor_msgs/PointCloud.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/point_cloud_conversion.h>
+class Layer {
+ public:
+  Layer() {
+    sub_ = nh_.subscribe("cloud", 1, &Layer::convert, this);
+    pub_ = nh_.advertise<sensor_msgs::PointCloud2>("cloud2", 1);
+  }
+  void convert(const sensor_msgs::PointCloudConstPtr& message) {
+    sensor_msgs::PointCloud2 cloud2;
+    if (!sensor_msgs::convertPointCloudToPointCloud2(*message, cloud2)) return;
+    int x = sensor_msgs::getPointCloud2FieldIndex(cloud2, "x");
+    pub_.publish(cloud2);
+  }
+  ros::NodeHandle nh_;
+  ros::Subscriber sub_;
+  ros::Publisher pub_;
+};
+int main(int argc, char** argv) { ros::init(argc, argv, "layer"); Layer l; ros::spin(); }
+"""
+
+
+def test_ros1_point_cloud_conversions(write_tree) -> None:
+    result = _extract(write_tree, CONVERSION, "catkin")
+    assert _errors(result) == []
+    assert "CPP_INCLUDE_MISSING" not in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "cloud"), ("publish", "cloud2")]
