@@ -453,13 +453,18 @@ class CallFinder:
         references = self.wrappers.references.get(id(function))
         return None if nodes is None or references is None else (nodes, references)
 
-    def _enter(self, function: Cursor) -> None:
-        """Ready the condition reader for ``function``'s body (``_conditions_at``)."""
-        held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
-            self.sites is not None) else None
-        constants = functools.partial(self._held_constants, scope=self.sites.scope(function)) \
-            if self.sites is not None else None
-        self.reader.enter(function, ARGUMENTS_LEFT, held, constants)
+    def _enter(self, function: Cursor, scope: Scope | None = None) -> None:
+        """Ready the condition reader for ``function``'s body (``_conditions_at``): the
+        locals its tests read that hold a parameter's value or a constant, read in
+        ``scope`` (the function's own, from the call sites, by default)."""
+        if scope is None and self.sites is not None:
+            scope = self.sites.scope(function)
+        if scope is None:
+            self.reader.enter(function, ARGUMENTS_LEFT, None, None)
+            return
+        self.reader.enter(function, ARGUMENTS_LEFT,
+                          functools.partial(self._held_parameters, scope=scope),
+                          functools.partial(self._held_constants, scope=scope))
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -618,9 +623,7 @@ class CallFinder:
             self.sites is not None and not self.sites.callers(function)) else None
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
-        self.reader.enter(function, ARGUMENTS_LEFT,
-                          functools.partial(self._held_parameters, scope=scope),
-                          functools.partial(self._held_constants, scope=scope))
+        self._enter(function, scope)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, made_under) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
@@ -724,11 +727,7 @@ class CallFinder:
         """``_conditions_at`` of each of ``calls`` in one walk of ``function``, by the
         call's place (a call not found there is left out)."""
         wanted = {place_of(call): call.kind for call in calls}
-        held = functools.partial(self._held_parameters, scope=self.sites.scope(function)) if (
-            self.sites is not None) else None
-        constants = functools.partial(self._held_constants, scope=self.sites.scope(function)) \
-            if self.sites is not None else None
-        self.reader.enter(function, ARGUMENTS_LEFT, held, constants)
+        self._enter(function)
         stack: list[tuple[Cursor, tuple[Condition, ...]]] = [
             (child, ()) for child in reversed(list(function.get_children()))
             if child.kind != CursorKind.PARM_DECL]
