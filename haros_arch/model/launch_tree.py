@@ -20,6 +20,9 @@ from .location import NOWHERE, Location
 # declared, the file that included this one, the command line (or project file), or none
 ArgOrigin = Literal["default", "value", "include", "command line", "unset"]
 ItemKind = Literal["file", "group", "node", "include"]
+# how an included file uses an argument its include passes (ROS 2): it declares it, reads
+# it without declaring it, neither, or what was not seen of it may (``LaunchArg.use``)
+ArgUse = Literal["", "declared", "read", "unused", "unknown"]
 OPTIONAL: dict[str, Any] = {"optional": True}
 
 
@@ -29,6 +32,10 @@ class LaunchArg:
     value: str | None  # final text, ``?`` for unknown parts; None when nothing set it
     origin: ArgOrigin = "default"
     location: Location = NOWHERE  # where that value was written
+    # an argument a ROS 2 include passes: how the included file (and what it includes in
+    # turn) uses it; "" for any other argument
+    use: ArgUse = field(default="", metadata=OPTIONAL)
+    unseen: str = field(default="", metadata=OPTIONAL)  # "unknown": the part not seen
 
 
 @dataclass
@@ -74,6 +81,54 @@ class LaunchItem:
             out.append(item)
             stack.extend(reversed(item.children))
         return out
+
+
+NEAR_NAMES = 6  # declared arguments a finding names beside the one passed
+
+
+@dataclass(frozen=True)
+class IncludeArg:
+    """An argument a ROS 2 include passes (``launch_arguments``, ``<arg>`` of an
+    ``<include>``), with how the included file, and the files it includes in turn, use
+    it (``use``: "declared", "read", "unused", or "unknown" with the part not seen in
+    ``unseen``) and the arguments the included file declares itself."""
+
+    name: str
+    value: str | None
+    use: str
+    unseen: str
+    file: str  # the included file, as the launch tree names it
+    declared: tuple[str, ...]
+    location: Location  # the include
+
+    @property
+    def hint(self) -> str:
+        """What the included file declares instead, the names near this one first."""
+        from ..query.absence import distance
+
+        near = [d for d in self.declared if d != self.name and (
+            self.name in d or d in self.name or distance(self.name, d) <= 2)]
+        if near:
+            return f" (it declares {', '.join(near[:NEAR_NAMES])})"
+        if not self.declared:
+            return " (it declares no argument)"
+        more = (f" and {len(self.declared) - NEAR_NAMES} more"
+                if len(self.declared) > NEAR_NAMES else "")
+        return f" (it declares {', '.join(self.declared[:NEAR_NAMES])}{more})"
+
+
+def include_args(tree: Iterable[LaunchItem]) -> list[IncludeArg]:
+    """The arguments the includes of ``tree`` pass, as ``LaunchArg.use`` recorded them."""
+    found: list[IncludeArg] = []
+    for root in tree:
+        for item in root.walk():
+            if item.kind != "file":
+                continue
+            declared = tuple(dict.fromkeys(a.name for a in item.args
+                                           if a.use in ("", "declared")))
+            found.extend(IncludeArg(a.name, a.value, a.use, a.unseen, item.name, declared,
+                                    a.location) for a in item.args if a.use)
+    return found
 
 
 @dataclass(frozen=True)
@@ -159,6 +214,10 @@ def _location(data: Any) -> Location:
                     int(data.get("column") or 0))
 
 
+def _use(data: Any) -> ArgUse:
+    return data if data in ("declared", "read", "unused", "unknown") else ""
+
+
 def item_from_data(data: Any, depth: int = 0) -> LaunchItem | None:
     """The inverse of ``serialise.to_data`` for one item; None if it is not one."""
     if not isinstance(data, dict) or depth > MAX_DEPTH:
@@ -172,7 +231,8 @@ def item_from_data(data: Any, depth: int = 0) -> LaunchItem | None:
         str(data.get("namespace", "")), str(data.get("detail", "")), condition,
         bool(data.get("skipped", False)),
         [LaunchArg(str(a.get("name", "")), a.get("value"), a.get("origin", "default"),
-                   _location(a.get("location"))) for a in data.get("args") or ()
+                   _location(a.get("location")), _use(a.get("use")),
+                   str(a.get("unseen") or "")) for a in data.get("args") or ()
          if isinstance(a, dict)],
         [str(p) for p in data.get("pushed") or ()],
         [(str(r[0]), str(r[1])) for r in data.get("remaps") or () if len(r) == 2],

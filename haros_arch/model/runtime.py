@@ -15,7 +15,7 @@ from typing import Any, ClassVar
 
 from .conditions import Condition, undecided
 from .diagnostic import Diagnostic
-from .launch_tree import LaunchItem, PackageUse
+from .launch_tree import IncludeArg, LaunchItem, PackageUse, include_args
 from .location import NOWHERE, Location
 from .robot import RobotDescription
 from .rosname import RosName, namespace_of, pattern_for, resolve, resolve_remaps
@@ -717,6 +717,12 @@ class Configuration:
     def remaps(self) -> list[Remap]:
         """The remaps the launch files give its node instances (``remaps_of``)."""
         return remaps_of(self.nodes)
+
+    @property
+    def include_args(self) -> list[IncludeArg]:
+        """The arguments the ROS 2 includes of its launch files pass, with how the
+        included files use them (launch-include-argument-unused)."""
+        return include_args(self.launch_tree)
 
     @property
     def incomplete_nodes(self) -> list[NodeInstance]:

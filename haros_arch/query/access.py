@@ -14,7 +14,7 @@ from typing import Any
 
 from ..model.conditions import Condition
 from ..model.diagnostic import Diagnostic
-from ..model.launch_tree import PackageUse
+from ..model.launch_tree import IncludeArg, PackageUse
 from ..model.location import Location
 from ..model.model import Model
 from ..model.rosname import RosName
@@ -70,8 +70,9 @@ FIELDS: dict[type, tuple[str, ...]] = {
                     "deletes", "queue_size_missing"),
     Configuration: ("name", "launch", "args", "nodes", "topics", "services", "actions",
                     "parameters", "links", "direct_links", "diagnostics", "package_paths",
-                    "incomplete_nodes", "remaps", "package_uses"),
+                    "incomplete_nodes", "remaps", "package_uses", "include_args"),
     PackageUse: ("package", "user", "kind", "test", "guard", "optional", "location"),
+    IncludeArg: ("name", "value", "use", "unseen", "file", "declared", "hint", "location"),
     Remap: ("source", "target", "text", "nodes", "node", "users", "unseen", "conditional",
             "near", "hint", "node_names", "location"),
     NodeInstance: ("name", "id", "node", "namespace", "remaps", "args", "conditions",

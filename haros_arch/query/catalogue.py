@@ -30,7 +30,16 @@ from ..model.runtime import REPEAT, Configuration, Link
 from . import compile, config_scope, model_scope
 from .errors import QueryError, QueryLimitError
 from .interpreter import DEFAULT_STEPS, Evaluator
-from .results import best_location, entities, entity_ids, label, location_of, place_of, plain
+from .results import (
+    best_location,
+    entities,
+    entity_ids,
+    label,
+    location_of,
+    place_of,
+    placed,
+    plain,
+)
 from .suppress import Suppressions
 from .syntax import Literal
 
@@ -386,8 +395,9 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
     ranked, counts = _ranked(undecided)
     nodes = [item for item in ranked if not isinstance(item, Condition)]
     conditions = [item for item in ranked if isinstance(item, Condition)]
-    first = "; ".join(label(e) for e in entities(undecided[0][0])[:1]) or label(
-        undecided[0][1][0])
+    first = ("; ".join(label(e) for e in entities(undecided[0][0])[:1])
+             or "; ".join(str(plain(p)) for p in placed(undecided[0][0])[:1])
+             or label(undecided[0][1][0]))
     why = rule.undecided_why or (
         "these could be the missing side unseen (nodes of partial or unknown interface, "
         "names with '?', dynamic_reconfigure servers, launch parameters not known "

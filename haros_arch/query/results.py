@@ -6,7 +6,7 @@ from typing import Any
 
 from ..model.conditions import Condition
 from ..model.diagnostic import Diagnostic
-from ..model.launch_tree import LaunchItem, PackageUse
+from ..model.launch_tree import IncludeArg, LaunchItem, PackageUse
 from ..model.location import NOWHERE, Location
 from ..model.model import Model
 from ..model.rosname import RosName
@@ -44,6 +44,8 @@ def plain(value: Any) -> Any:
         return [plain(value.key), plain(value.value)]
     if isinstance(value, PackageUse):
         return f"package {value.package} at {value.location}"
+    if isinstance(value, IncludeArg):
+        return f"argument {value.name} of the include of {value.file} at {value.location}"
     if isinstance(value, Function | Method):
         return repr(value)
     if isinstance(value, dict):
@@ -82,7 +84,7 @@ def entity_ids(items: list[Any]) -> tuple[str, ...]:
 
 
 def location_of(item: Any) -> Location:
-    if isinstance(item, Parameter | PackageUse | Diagnostic):
+    if isinstance(item, Parameter | PackageUse | IncludeArg | Diagnostic):
         return item.location
     if isinstance(item, Link | NodeInstance | Node | PrimitiveCall):
         return item.location
@@ -107,10 +109,15 @@ def best_location(items: list[Any]) -> Location:
 
 
 def place_of(match: Any) -> Location:
-    """Where a match without runtime entities points: a diagnostic's or a package use's
-    place, itself or among a returned mapping's values."""
+    """Where a match without runtime entities points: a diagnostic's, a package use's or
+    an include argument's place, itself or among a returned mapping's values."""
+    return best_location(placed(match))
+
+
+def placed(match: Any) -> list[Any]:
+    """The package uses, include arguments and diagnostics a match is about."""
     values = list(match.values()) if isinstance(match, dict) else [match]
-    return best_location([v for v in values if isinstance(v, PackageUse | Diagnostic)])
+    return [v for v in values if isinstance(v, PackageUse | IncludeArg | Diagnostic)]
 
 
 def label(item: Any) -> str:

@@ -24,6 +24,7 @@ from ...files import read_text
 from ...model.conditions import Condition
 from ...model.launch_tree import (
     ArgOrigin,
+    ArgUse,
     LaunchArg,
     LaunchCondition,
     LaunchItem,
@@ -45,6 +46,13 @@ MAX_INCLUDE_DEPTH = 24
 MAX_ACTIONS = 20_000
 MAX_PARAM_FILE = 1024 * 1024
 MAX_WALKED = 50_000  # files and folders of a package looked through for ros2 launch's file
+
+# diagnostics that say part of a launch file was not read as launch would run it: what
+# that part would have declared or read of the launch configurations is not seen
+HIDING_CODES = frozenset({
+    "LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED", "LAUNCH_PY_BUDGET", "LAUNCH_PY_SYNTAX",
+    "LAUNCH_XML_SYNTAX", "LAUNCH_YAML_SYNTAX", "LAUNCH_UNKNOWN_TAG", "LAUNCH_FILE_MISSING",
+})
 
 # path -> actions (or None when the file could not be read); set by ros2.__init__
 Parser = Callable[[str, "Runner", Location], "list[e.Action] | None"]
@@ -80,6 +88,29 @@ class Scope:
                        params=list(self.params), environment=dict(self.environment))
 
 
+@dataclass
+class IncludeFrame:
+    """An include being performed: what its file and the files it includes in turn
+    declare and read of the launch configurations, and the first part of them that was
+    not seen (``IncludeFrame.hidden``), to tell which of the arguments the include
+    passes are used (``LaunchArg.use``)."""
+
+    declared: set[str] = field(default_factory=set)
+    read: set[str] = field(default_factory=set)
+    hidden: str = ""
+
+    def use(self, name: str) -> tuple[ArgUse, str]:
+        """How the include's file uses an argument it is passed, and what was not seen
+        when that is not known."""
+        if name in self.declared:
+            return "declared", ""
+        if name in self.read:
+            return "read", ""
+        if self.hidden:
+            return "unknown", self.hidden
+        return "unused", ""
+
+
 class Runner:
     def __init__(self, workspace: Workspace, environment: Mapping[str, str],
                  parse: Parser) -> None:
@@ -111,12 +142,38 @@ class Runner:
         # value="$(command 'xacro ...')"/>`` then ``value="$(var d)"``), is that command's
         # output, which robot descriptions read (``nodes.command_line``)
         self.command_outputs: list[tuple[Unknown, str]] = []
+        self.includes: list[IncludeFrame] = []  # the includes being performed, innermost last
 
     # -- diagnostics and values --------------------------------------------------
     def report(self, code: str, location: Location, **params: object) -> None:
         found = diag.make(code, location, **params)
+        if code in HIDING_CODES:
+            self.hidden(found)
         if found not in self.model.diagnostics:
             self.model.diagnostics.append(found)
+
+    # -- what the includes being performed declare and read -------------------------
+    def config_read(self, name: str) -> None:
+        """A launch configuration read by name (``LaunchConfiguration``, ``$(var)``,
+        ``context.launch_configurations``): the includes being performed use it."""
+        for frame in self.includes:
+            frame.read.add(name)
+
+    def config_declared(self, name: str) -> None:
+        for frame in self.includes:
+            frame.declared.add(name)
+
+    def hidden(self, what: diag.Diagnostic | str, where: Location | None = None) -> None:
+        """Part of the includes being performed is not seen (``what``: the diagnostic that
+        says so, or what it was and ``where``): any launch configuration may be read
+        there."""
+        if isinstance(what, str):
+            text = f"{what} ({where.file}:{where.line})" if where is not None else what
+        else:
+            text = f"{what.code} at {what.location.file}:{what.location.line}"
+        for frame in self.includes:
+            if not frame.hidden:
+                frame.hidden = text
 
     def uses(self, package: str, location: Location,
              conditions: tuple[Condition, ...] = ()) -> None:
@@ -218,7 +275,11 @@ class Runner:
                 return
             self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
             return
+        before = len(self.model.diagnostics)
         actions = self.parse(path, self, where)
+        for said in self.model.diagnostics[before:]:
+            if said.code in HIDING_CODES:
+                self.hidden(said)
         if actions is None:
             return
         self.model.files.append(self.workspace.relpath(path))
@@ -279,6 +340,7 @@ class Runner:
         return guard
 
     def do_DeclareArg(self, action: e.DeclareArg, scope: Scope) -> None:
+        self.config_declared(action.name)
         self.record_arg(action, scope)
         if action.name in scope.configs:
             return
@@ -398,19 +460,26 @@ class Runner:
         item = LaunchItem("file", self.workspace.relpath(share_source(
             self.workspace, os.path.abspath(path.literal))), action.location,
             namespace=scope.namespace or "/", condition=self.take_guard())
+        passed: list[LaunchArg] = []
         for key, val in action.args:
             name = self.value(key, scope, action.location)
             if name is not None and name.literal is not None:
                 value = self.value(val, scope, action.location)
                 scope.configs[name.literal] = value
-                item.args.append(LaunchArg(name.literal, value.text if value is not None
-                                           else None, "include", action.location))
+                passed.append(LaunchArg(name.literal, value.text if value is not None
+                                        else None, "include", action.location))
+        item.args.extend(passed)
         outer = scope.item
         scope.item = outer.add(item)
+        frame = IncludeFrame()
+        self.includes.append(frame)
         try:
             self.run_file(path.literal, scope, action.location)
         finally:
             scope.item = outer
+            self.includes.pop()
+        for arg in passed:  # the frames around it saw its reads and declarations too
+            arg.use, arg.unseen = frame.use(arg.name)
 
     def do_Delayed(self, action: e.Delayed, scope: Scope) -> None:
         inner = scope.copy()
@@ -423,6 +492,8 @@ class Runner:
         ev = self.evaluator(scope, action.location)
         made, found = action.run(ev.value)
         for item in found:
+            if item.code in HIDING_CODES:
+                self.hidden(item)
             if item not in self.model.diagnostics:
                 self.model.diagnostics.append(item)
         # what it added to the launch description that holds it runs after the rest of
@@ -531,11 +602,11 @@ class Runner:
         scope.item.add(LaunchItem("include", name, where, namespace=scope.namespace or "/",
                                   detail=detail, condition=self.take_guard()))
 
-    @staticmethod
-    def not_seen(scope: Scope, where: Location, what: str) -> None:
+    def not_seen(self, scope: Scope, where: Location, what: str) -> None:
         """Actions performed in ``scope`` at ``where`` that the reader cannot see: they
         may declare or set launch configurations (an included file shares its
-        includer's, as launch runs it)."""
+        includer's, as launch runs it), and read any."""
+        self.hidden(what, where)
         if all(place != where for place, _ in scope.unseen):
             scope.unseen = (*scope.unseen, (where, what))
 

@@ -237,7 +237,10 @@ class Evaluator:
     def s_Var(self, s: e.Var) -> Value:
         name = self.known(s.name)
         if name is None:
+            self.runner.hidden("a launch configuration whose name is not known statically",
+                               self.location)
             return Value.unknown("launch configuration with an unknown name")
+        self.runner.config_read(name)
         if name in self.scope.configs:
             found = self.scope.configs[name]
             if found is None:
