@@ -285,8 +285,11 @@ def test_a_key_both_sides_of_a_searchParam_branch_name_is_read(tmp_path):
     for whichever side runs, so the read is of ``footprint_topic`` (searched), where it
     was ``~?``; and the subscriber's topic is that parameter's value. Where the sides
     differ (``published_footprint_topic`` searched, else ``published_footprint``) the
-    read stays ``?``, and the advertise's topic is the value of that read, not of the
-    first one (``topic`` is read into twice)."""
+    key is one or the other: a read of each under its side of the ``if``, where it was
+    one read of ``~?`` (any
+    parameter of the node: move_base's every setting undecided); the advertise's topic
+    is the value of one of them, not of the first read (``topic`` is read into
+    twice)."""
     source = tmp_path / "n.cpp"
     source.write_text(BRANCHED_SEARCH)
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
@@ -296,5 +299,44 @@ def test_a_key_both_sides_of_a_searchParam_branch_name_is_read(tmp_path):
                    (14, "read", "~footprint_topic", True, None),
                    (15, "subscribe", "~?", False, "~footprint_topic"),
                    (16, "read", "~published_footprint_topic", True, None),
-                   (20, "read", "~?", False, None),
+                   (20, "read", "~published_footprint", False, None),
+                   (20, "read", "~published_footprint_topic", True, None),
                    (21, "publish", "~?", False, "~?")]
+    # each under its side of the if that decides the key
+    test = '!private_nh.searchParam("published_footprint_topic", topic_param)'
+    assert sorted((c.name, [(x.statement, x.text, x.location.line) for x in c.conditions])
+                  for c in result.calls if c.location.line == 20) == [
+        ("~published_footprint", [("if", test, 16)]),
+        ("~published_footprint_topic", [("else", test, 16)])]
+
+
+PREFIXED_WRAPPER = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+ros::Publisher advertise_prefixed(ros::NodeHandle& nh, const std::string& name)
+{
+  return nh.advertise<std_msgs::String>("robot/" + name, 1);
+}
+
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh;
+  std::string topic = "status";
+  topic = "state";
+  ros::Publisher p = advertise_prefixed(nh, topic);
+  return 0;
+}
+"""
+
+
+def test_a_variable_written_twice_given_to_a_wrapper_that_adds_text(tmp_path):
+    """A wrapper that writes text around its name argument reads it in a scope of its
+    own (``wrappers._NamedScope``, which keeps that text in attributes of its own); the
+    argument, a local written twice, is the last value written: ``robot/state``."""
+    source = tmp_path / "n.cpp"
+    source.write_text(PREFIXED_WRAPPER)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert [(c.location.line, c.kind, c.name) for c in result.calls] == [
+        (16, "publish", "robot/state")]

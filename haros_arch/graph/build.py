@@ -28,7 +28,7 @@ from ..model.runtime import (
     Service,
     Topic,
 )
-from ..model.source import NUMBERED, ROS_ARGUMENT, Node, PrimitiveCall
+from ..model.source import NUMBERED, ROS_ARGUMENT, WORDS, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
@@ -839,6 +839,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return _numbered_calls(call, full, resources)
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if call.name_each == WORDS:
+        return _word_calls(call, instance, param, value)
     if value is None:
         value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
     if value is None:
@@ -862,6 +864,32 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                     name_default=None, name_each=None, conditions=kept) for name in names]
 
 
+def _word_calls(call: PrimitiveCall, instance: NodeInstance, param: Any, value: Any
+                ) -> list[PrimitiveCall]:
+    """A call named by each word of a string parameter (``WORDS``): one per word of the
+    value the launch file gives it, else, when nothing sets it, of the one string default
+    the node's code reads it with (none for an empty one: the loop over its words runs
+    no turn); without either, the call as it is."""
+    if value is None and isinstance(param, Parameter) and param.is_set:
+        return [call]  # set to a value not known here, or under a condition
+    if value is None and instance.node is not None:
+        found = {c.default for c in instance.node.calls
+                 if c.kind in ("declare", "read") and c.name == call.name_param
+                 and c.has_default and isinstance(c.default, str)
+                 and c.node_name == call.node_name}
+        value = found.pop() if len(found) == 1 else None
+        param = None  # a default: no launch conditions
+    if not isinstance(value, str):
+        return [call]
+    words = value.split()[:_NUMBERED_LIMIT]
+    if not words and isinstance(param, Parameter) and param.launch_conditions:
+        return [call]  # empty only where the launch file's condition holds
+    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
+    written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
+    return [replace(call, name=written.replace(UNKNOWN_MARK, word, 1), name_param=None,
+                    name_default=None, name_each=None, conditions=kept) for word in words]
+
+
 def _list_default(call: PrimitiveCall, instance: NodeInstance) -> list[Any] | None:
     """The list a node's code gives a list parameter when nothing sets it: the one
     default of its declarations and reads with a known list default (``declare_parameter(
@@ -878,7 +906,8 @@ def _list_default(call: PrimitiveCall, instance: NodeInstance) -> list[Any] | No
 def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
     """Why a name taken from a parameter stays unknown: the configuration sets none."""
     param = call.name_param
-    what = {None: f"parameter {param}", NUMBERED: f"parameters {param}0, {param}1, ..."
+    what = {None: f"parameter {param}", NUMBERED: f"parameters {param}0, {param}1, ...",
+            WORDS: f"words of the parameter {param}"
             }.get(call.name_each, f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
                      kind=call.kind, what=what)
@@ -936,7 +965,7 @@ def _dotted_groups(full: str, resources: Resources, separator: str = "."
 
 
 def _element_name(item: Any, field: str) -> str | None:
-    if field == ".":
+    if field in (".", WORDS):
         return item if isinstance(item, str) else None
     value = item.get(field) if isinstance(item, dict) else None
     return value if isinstance(value, str) else None

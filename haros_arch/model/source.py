@@ -43,6 +43,9 @@ LIFECYCLE_SERVICES: tuple[tuple[str, str], ...] = tuple(
 
 # ``PrimitiveCall.name_each`` of a call named by a numbered family of parameters
 NUMBERED = "#"
+# ``PrimitiveCall.name_each`` of a call named by each word of a string parameter (costmap_2d's
+# ``observation_sources``, read word by word with ``while (stream >> source)``)
+WORDS = " "
 # the start of a ``PrimitiveCall.name_param`` that is no ROS parameter but a child element
 # of a Gazebo classic plugin's SDF (``sdf:topicName``), which robot.attach fills in from
 # the robot description
@@ -132,7 +135,8 @@ class PrimitiveCall:
     # the element's field (``.``: the element itself); the graph makes one call per
     # element the launch file gives. ``#``: a numbered family of parameters instead
     # (robot_localization's ``imu0``, ``imu1``, ...: ``name_param`` "imu"), one call per
-    # parameter set, from 0 up to the first one not set, as the code reads them
+    # parameter set, from 0 up to the first one not set, as the code reads them. ``WORDS``
+    # (a space): each whitespace-separated word of a string parameter
     name_each: str | None = field(default=None, metadata={"optional": True})
     # a parameter write whose value is the process's K-th command-line argument, counted
     # as rclcpp counts what ``init_and_remove_ros_arguments`` leaves (0: the program; 1:

@@ -416,8 +416,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             if not _made(call.made_in, known.called, known.constructed, unseen):
                 continue  # no file of the node constructs the class so: not made
             call = dataclasses.replace(call, made_in=None)
-        if call.name_param is not None and PLACEHOLDER in call.name_param:
-            call = dataclasses.replace(call, name_param=_parameter_filled(call.name_param,
+        # a parameter named on a handle a caller passes: filled with the values that
+        # fill the name, site by site, where the name has placeholders too (move_base's
+        # two costmaps each read their own ``observation_sources``)
+        raw_param = call.name_param if call.name_param is not None and (
+            PLACEHOLDER in call.name_param) else None
+        if raw_param is not None:
+            call = dataclasses.replace(call, name_param=_parameter_filled(raw_param,
                                                                           known.passed))
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
             out.append(call)
@@ -429,10 +434,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 namespace + "/")
             written = call.name[len(prefix):] if call.name.startswith(prefix) else call.name
         text = f"{namespace or ''}{_SPLIT}{written}"
+        if raw_param is not None:
+            text += _PARAM_SPLIT + _param_text(raw_param)
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
+            filled, _, param_text = filled.partition(_PARAM_SPLIT)
             ns, _, name = filled.partition(_SPLIT)
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
@@ -444,6 +452,10 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                     PLACEHOLDER not in call.camera_of) else (
                     join_name(ns, _unmarked(camera)) if camera and PLACEHOLDER not in camera
                     else None))
+            if param_text:
+                filled_param = _param_joined(param_text)
+                if filled_param and PLACEHOLDER not in filled_param:
+                    made = dataclasses.replace(made, name_param=filled_param)
             made = _named_by(made)
             whole = _MARK.fullmatch(written) if not namespace else None
             classes = known.hosted.get((whole.group(1), int(whole.group(2)))) if (
@@ -457,19 +469,30 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     return out, found
 
 
+_PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
+
+
+def _param_text(param: str) -> str:
+    """A ``name_param`` whose namespace is a placeholder, split after it for
+    ``_param_joined``."""
+    mark = _MARK.match(param)
+    return f"{param[:mark.end()]}{_SPLIT}{param[mark.end():].lstrip('/')}" if mark else param
+
+
+def _param_joined(filled: str) -> str:
+    """A ``_param_text`` with its placeholders filled: the namespace joined to the name."""
+    ns, _, name = filled.partition(_SPLIT)
+    ns = normalise(_unmarked(ns)) if ns else ""
+    return join_name(ns, name) if ns and name else ns or name
+
+
 def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) -> str:
     """The parameter that names a call (``name_param``) read on a handle a caller in
     another file passes (its namespace a placeholder, then ``/name``): that handle's
     namespace joined to the name, as the read's own name is (``~costmap_topic``); ``?``
     in its place when the callers pass several handles or none (``~?/plan_topic`` of a
     plugin's ``initialize(name)``, which its host names)."""
-    mark = _MARK.match(param)
-    text = f"{param[:mark.end()]}{_SPLIT}{param[mark.end():].lstrip('/')}" if mark else param
-    found = set()
-    for filled in _expand(text, passed, 0):
-        ns, _, name = filled.partition(_SPLIT)
-        ns = normalise(_unmarked(ns)) if ns else ""
-        found.add(join_name(ns, name) if ns and name else ns or name)
+    found = {_param_joined(filled) for filled in _expand(_param_text(param), passed, 0)}
     value = found.pop() if len(found) == 1 else ""
     if value and PLACEHOLDER not in value:
         return value

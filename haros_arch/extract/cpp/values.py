@@ -512,6 +512,23 @@ class Scope:
         the last one that always runs may not run (in a branch), the value they all
         agree on (``_agreed``). None otherwise, or when that write's value is not
         known."""
+        found = self._reaching(decl, at)
+        if found is None:
+            return None
+        before, where = found
+        start, _end, value = max(before, key=lambda w: w[1])
+        if value is None:
+            return None
+        if self._may_skip(start, where):  # it may not run before the read
+            value = self._agreed(before, where, depth)
+        return value
+
+    def _reaching(self, decl: Cursor, at: Cursor
+                ) -> tuple[list[tuple[int, int, Cursor | None]], int] | None:
+        """The writes of local ``decl`` that end before ``at`` reads it, and where it
+        reads it; None when there are fewer than two writes, the read is not in this
+        body, or a write may run between them (a later one in a loop or lambda the read
+        is in)."""
         _ = self.writes  # read from the body together
         placed = self._placed.get(key_of(decl))
         if not placed or len(placed) < 2 or self.body is None:
@@ -524,20 +541,62 @@ class Scope:
         before = [w for w in placed if w[1] <= where]
         if not before:
             return None
-        start, _end, value = max(before, key=lambda w: w[1])
-        if value is None:
-            return None
-        if self._may_skip(start, where):  # it may not run before the read
-            value = self._agreed(before, where, depth)
-            if value is None:
-                return None
         later = [w[0] for w in placed if w[1] > where]
         for first, last in self._repeated:
             if first <= where <= last and any(
                     first <= other <= last or self._in_lambda(first, last)
                     for other in later):
                 return None
-        return value
+        return before, where
+
+    def written_choices(self, cursor: Cursor, depth: int = 0
+                        ) -> tuple[Parts, Parts, Cursor, bool] | None:
+        """The two values a local variable may hold where ``cursor`` reads it when the
+        last write that always runs before the read and one later write in a side of an
+        ``if`` disagree, each known in full (costmap_2d's ``if (!nh.searchParam(
+        "published_footprint_topic", key)) key = "published_footprint";`` then
+        ``nh.param(key, ...)``: the key the search found, or the fallback): (the first
+        value, the value of the side, that ``if``, whether the side is its ``then``);
+        None otherwise."""
+        cursor = strip(cursor)
+        decl = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.VAR_DECL or self.is_parameter(decl):
+            return None
+        found = self._reaching(decl, cursor)
+        if found is None or self.body is None:
+            return None
+        before, where = found
+        ordered = sorted(before, key=lambda w: w[1])
+        always = [i for i, (start, _end, _v) in enumerate(ordered)
+                  if not self._may_skip(start, where)]
+        if not always or len(ordered) - always[-1] != 2:
+            return None
+        (_s, _e, first), (start, _end, side) = ordered[always[-1]:]
+        if first is None or side is None:
+            return None
+        values = [self.string(first, depth + 1), self.string(side, depth + 1)]
+        if any(None in parts for parts in values) or values[0] == values[1]:
+            return None
+        # the innermost ``if`` the side's write is in and the read is not
+        around = [node for node in _walk(self.body) if node.kind == CursorKind.IF_STMT
+                  and node.extent.start.offset <= start <= node.extent.end.offset
+                  and not node.extent.start.offset <= where <= node.extent.end.offset]
+        if not around:
+            return None
+        branch = max(around, key=lambda node: node.extent.start.offset)
+        children = list(branch.get_children())
+        if len(children) < 2:
+            return None
+        then = children[1].extent
+        side_of = children[1] if then.start.offset <= start <= then.end.offset else (
+            children[2] if len(children) > 2 else None)
+        if side_of is None:
+            return None
+        low, high = side_of.extent.start.offset, side_of.extent.end.offset
+        if any(low <= first_ <= start <= last <= high and (first_, last) != (low, high)
+               for first_, last in self._regions):
+            return None  # a loop or a branch inside the side: not its one value
+        return values[0], values[1], branch, side_of == children[1]
 
     def _may_skip(self, offset: int, where: int) -> bool:
         """Whether what starts at ``offset`` may not run before a read at ``where``: it
@@ -586,6 +645,39 @@ class Scope:
                 key_of(children[0]) == key
             ):
                 return node
+        return None
+
+    def words_loop(self, decl: Cursor) -> tuple[Cursor, Cursor] | None:
+        """The ``while (stream >> decl)`` of this body that reads local ``decl`` word by
+        word from a string stream made of a string, and that string's expression
+        (costmap_2d's ``std::stringstream ss(sources); while (ss >> source)`` over its
+        ``observation_sources``): ``decl`` is each word of it in turn."""
+        if self.body is None or decl.kind != CursorKind.VAR_DECL:
+            return None
+        key = key_of(decl)
+        for node in _walk(self.body):
+            if node.kind != CursorKind.WHILE_STMT:
+                continue
+            test = next(iter(node.get_children()), None)
+            shift = next((c for c in _walk(test) if c.kind == CursorKind.CALL_EXPR
+                          and c.spelling == "operator>>"), None) if test is not None else None
+            if shift is None:
+                continue
+            operands = [strip(c) for c in shift.get_children() if c.kind.is_expression()]
+            named = [c.referenced for c in operands if c.kind == CursorKind.DECL_REF_EXPR
+                     and c.referenced is not None
+                     and c.referenced.kind == CursorKind.VAR_DECL]
+            if len(named) != 2 or key_of(named[1]) != key:
+                continue
+            stream = named[0]
+            if "stringstream" not in stream.type.spelling:
+                continue
+            made = initializer(stream)
+            made = strip(made) if made is not None else None
+            given = written_arguments(made) if (
+                made is not None and made.kind == CursorKind.CALL_EXPR) else []
+            if len(given) == 1:
+                return node, given[0]
         return None
 
     def counted_loop(self, index: Cursor, container: Cursor) -> Cursor | None:

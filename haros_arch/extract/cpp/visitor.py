@@ -24,6 +24,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
 from ...model.source import ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
+from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites, base_keys
@@ -122,6 +123,20 @@ _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[
 OTHER_WRITES = "!"
 NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
 EACH = "."
+
+
+class ChoiceName(str):
+    """One of the values a call's name may hold (``Scope.written_choices``): the call
+    with it is made under ``condition`` (a side of the ``if`` that decides it), and it is
+    a key ``searchParam`` found when ``searched``."""
+
+    condition: Condition
+    searched: bool
+
+    def __new__(cls, name: str, condition: Condition, searched: bool) -> ChoiceName:
+        made = super().__new__(cls, name)
+        made.condition, made.searched = condition, searched
+        return made
 
 
 class ArgumentName(str):
@@ -1695,7 +1710,8 @@ class CallFinder:
                 # the loop over the list: one call per element, each made by that
                 # element's turn (the graph drops it where it knows the elements)
                 conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
-                    c.statement == "for" and (c.location.line, c.location.column) == source[4]
+                    c.statement in ("for", "while")
+                    and (c.location.line, c.location.column) == source[4]
                 ) else c for c in conditions)
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
@@ -1724,7 +1740,9 @@ class CallFinder:
                 written == "?" and source is None and spec.fixed_name is None) else None
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
-                latch=latch, callback=callback_name(function), conditions=conditions,
+                latch=latch, callback=callback_name(function),
+                conditions=(*conditions, written.condition) if isinstance(
+                    written, ChoiceName) else conditions,
                 location=location,
                 name_param=source[0] if source else None,
                 name_default=source[1] if source else holds[0],
@@ -1732,7 +1750,8 @@ class CallFinder:
                 name_each=source[3] if source else None,
                 has_default=has_default or isinstance(written, PrefixName),
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
-                searched=spec.searched or isinstance(written, SearchedName),
+                searched=spec.searched or isinstance(written, SearchedName) or (
+                    isinstance(written, ChoiceName) and written.searched),
                 keys_only=not self.ros2 and spec.kind == "read" and keys_only(
                     arg(spec.out_arg), scope),
                 handle_namespace=handle_namespace,
@@ -1889,7 +1908,25 @@ class CallFinder:
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
             return [self._name(e, scope) for e in _elements(expr)]
-        return [self._name(expr, scope)]
+        named = self._name(expr, scope)
+        if "?" not in named[0] or named[1] is not None:
+            return [named]
+        # a key the writes that may reach the call disagree on, each known: one call
+        # per value it may hold, each under its side of the ``if`` that decides it
+        # (costmap_2d's searched key, or the fallback if the search finds nothing)
+        choices = scope.written_choices(expr)
+        if choices is None:
+            return [named]
+        first, side, branch, in_then = choices
+        tested = next(iter(branch.get_children()))
+        out: list[tuple[str, NameSource | None]] = []
+        for parts, statement in ((first, "else" if in_then else "if"),
+                                 (side, "if" if in_then else "else")):
+            parts = own_name(parts)
+            out.append((ChoiceName(render(parts), self.reader.choice(
+                branch, statement, tested), len(parts) == 1 and isinstance(
+                    parts[0], SearchedName)), None))
+        return out
 
     def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
@@ -1910,20 +1947,25 @@ class CallFinder:
             return (name, self._first_parameter(expr, scope, name.count("?")))
         # the one unknown part: the whole name, or a run of it that the text around keeps
         # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
+        copied = _copied(inner)  # a string passed by value: a copy of the variable
+        if copied is not None and copied.kind == CursorKind.DECL_REF_EXPR:
+            inner = copied
         unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
             inner) is not None else _unknown_operands(expr, scope)
         one = strip(unknown[0]) if len(unknown) == 1 else None
-        walk, over = _element_loop(one, scope) if one is not None else (None, None)
+        walk, over, mark = _element_loop(one, scope) if one is not None else (
+            None, None, EACH)
         if walk is not None and over is not None:
             # ``for (std::string topic : topics_) create_subscription(topic, ..)`` over a
             # list parameter (create3_sim's hazards_vector_publisher), or a name made of
             # the element (``polygon_name + ".type"``, navigation2's collision monitor;
             # ``ids[i] + ".plugin"`` in a loop counting ``i`` up to ``ids.size()``, its
             # controller server): one call per element of the value the configuration
-            # gives it, in the place of the ``?`` (graph.element_calls)
+            # gives it, in the place of the ``?`` (graph.element_calls); or each word of
+            # a string parameter (``while (ss >> source)``, ``EACH_WORD``)
             listed = self._parameter_source(over, scope, 0)
             at = (walk.location.line, walk.location.column)
-            return (name, (listed[0], None, None, EACH, at) if listed is not None else None)
+            return (name, (listed[0], None, None, mark, at) if listed is not None else None)
         # a parameter's value: the graph puts it in the place of the ``?``
         source = self._parameter_source(expr, scope, 0)
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
@@ -2986,21 +3028,38 @@ def _subscript(expr: Cursor) -> tuple[Cursor, Cursor] | None:
     return (args[0], args[1]) if len(args) == 2 else None
 
 
-def _element_loop(expr: Cursor, scope: Scope) -> tuple[Cursor | None, Cursor | None]:
-    """The loop that makes ``expr`` each element of a list in turn, and that list's
-    expression: a range-based ``for``'s variable, or ``list[i]`` in a ``for`` counting
-    ``i`` from 0 up to ``list.size()``."""
+def _copied(expr: Cursor) -> Cursor | None:
+    """What a construction of one argument copies (``std::string name`` given ``source``
+    by value), stripped; None for anything else."""
+    if expr.kind != CursorKind.CALL_EXPR or expr.referenced is None or (
+            expr.referenced.kind != CursorKind.CONSTRUCTOR):
+        return None
+    children = [c for c in expr.get_children() if c.kind.is_expression()]
+    return strip(children[0]) if len(children) == 1 else None
+
+
+def _element_loop(expr: Cursor, scope: Scope
+                  ) -> tuple[Cursor | None, Cursor | None, str]:
+    """The loop that makes ``expr`` each element of a list in turn, that list's
+    expression, and how the list gives its elements (``PrimitiveCall.name_each``): a
+    range-based ``for``'s variable, or ``list[i]`` in a ``for`` counting ``i`` from 0 up
+    to ``list.size()`` (``EACH``); a ``while (stream >> word)`` over a string stream made
+    of a string (``EACH_WORD``)."""
     if expr.kind == CursorKind.DECL_REF_EXPR and expr.referenced is not None:
         walk = scope.range_of(expr.referenced)
-        return (walk, list(walk.get_children())[1]) if walk is not None else (None, None)
+        if walk is not None:
+            return walk, list(walk.get_children())[1], EACH
+        words = scope.words_loop(expr.referenced)
+        return (words[0], words[1], EACH_WORD) if words is not None else (
+            None, None, EACH)
     found = _subscript(expr)
     if found is None:
-        return None, None
+        return None, None, EACH
     container, index = found[0], strip(found[1])
     if index.kind != CursorKind.DECL_REF_EXPR or index.referenced is None:
-        return None, None
+        return None, None, EACH
     walk = scope.counted_loop(index.referenced, container)
-    return (walk, container) if walk is not None else (None, None)
+    return (walk, container, EACH) if walk is not None else (None, None, EACH)
 
 
 def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor]:
