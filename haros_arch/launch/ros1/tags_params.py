@@ -11,8 +11,10 @@ import os
 import shlex
 from typing import TYPE_CHECKING, Any
 
+import yaml
 from lxml import etree
 
+from ... import safe_yaml
 from ...files import read_bytes
 from ...model.conditions import Condition
 from ...model.location import Location
@@ -155,8 +157,10 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
             unseen(loader, full, scope, where)
             return
         text = data.decode("utf-8", errors="replace")
+        lines = _key_lines(text)
     else:
         text = (element.text or "") + "".join(c.tail or "" for c in element)
+        lines = None
     if subst is None:
         subst = True  # unknown: substitute, as values do not change otherwise
     if subst:
@@ -185,11 +189,28 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
             "cannot load non-dictionary values into the global namespace '/'"))
         return
     setting = file.literal if in_node and file is not None else None
+    # a parameter of a file is where its key is written (a finding about it points
+    # there: the file is what a fix changes), the others where the element is
+    keys = dict(flatten(full, lines)) if isinstance(lines, dict) and file is not None \
+        and file.literal is not None else {}
     for name, leaf in flatten(full, data_value):
         leaf = unknown_parts(leaf)
+        line = keys.get(name)
         add_param(loader, name.replace(MARK, "?"), leaf,
                   type_name(leaf) if leaf is not None else None,
-                  scope.conditions, where, "rosparam", setting=setting)
+                  scope.conditions, loader.workspace.location(file.literal, line) if (
+                      isinstance(line, int) and file is not None
+                      and file.literal is not None) else where,
+                  "rosparam", setting=setting)
+
+
+def _key_lines(text: str) -> Any:
+    """Where each key of a parameter file is written (``safe_yaml.load_with_lines``);
+    None when the file cannot be read so (its diagnostic is the load's)."""
+    try:
+        return safe_yaml.load_with_lines(text)[1]
+    except (yaml.YAMLError, ValueError, RecursionError):
+        return None
 
 
 def unseen(loader: Ros1Loader, namespace: str, scope: Scope, where: Location) -> None:
