@@ -437,13 +437,16 @@ CATALOGUE: dict[str, Entry] = {
         "could not find through its arguments' types (make_pair(x->name(), x) with x of "
         "a header the parse lacks) outside the statement of a ROS call."),
     "CPP_PLUGINS_LOADED": Entry(
-        "info", "{text}: loads plugin classes through pluginlib",
+        "info", "{text}: loads plugin classes through {loader}",
         "The code creates instances of plugin classes by name (pluginlib's "
         "createSharedInstance / createUniqueInstance / createUnmanagedInstance / "
         "createInstance), or loads nodelets by name in its own process (nodelet::Loader's "
         "load(name, type, ...), as image_view's wrapper executable does; not when a "
         "source of the node exports a plugin class: it links the nodelet's library, "
-        "whose code is read with it). "
+        "whose code is read with it), or registers the behavior tree node classes of a "
+        "library it opens by name (BehaviorTree.CPP's registerFromPlugin: the trees it "
+        "builds make their calls; a tree host of the table, nav2's bt_navigator or "
+        "PlanSys2's bt_action_node, has its trees read instead). "
         "Their calls are made on this node but are not in its code: "
         "unless the node is a plugin host whose plugins are attached ([Plugins] in the "
         "README: nav2 servers, costmaps, move_base, controller managers, ...), each "

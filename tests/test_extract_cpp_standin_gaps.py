@@ -10,7 +10,8 @@ humble image_view's HighGUI windows and message_filters subscription, turtlebot3
 parameter events, ros2_controllers' Duration == and std::optional{value}; wiimote's
 ROS 1 publisher compared with nullptr, ros::master's topic list; MoveIt 1's
 kinematics plugin loader's std::stringstream state and std::ws; mqtt_client's
-std::optional compared with std::nullopt).
+std::optional compared with std::nullopt; book_ros2's lifecycle trigger_transition and a
+constant divided into a permissive value).
 Each parses with no error and keeps its calls. The sources are
 fixtures/cpp/standin_gaps."""
 
@@ -907,3 +908,14 @@ def test_ros1_point_cloud_conversions(write_tree) -> None:
     assert "CPP_INCLUDE_MISSING" not in [d.code for d in result.diagnostics]
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "cloud"), ("publish", "cloud2")]
+
+
+def test_a_lifecycle_transition_and_a_constant_beside_a_permissive_value(write_tree) -> None:
+    # book_ros2's object_tracker: ``trigger_transition`` was no member of the stand-in
+    # LifecycleNode, and ``msg->bbox.center.position.x / IMG_WIDTH`` (``bbox`` declared
+    # permissively) bound a reference to the constant, which the callback then had to
+    # capture: three errors in main, the node partial
+    result = _extract(write_tree, _source("ros2_lifecycle_trigger.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls if not c.name.startswith("~")) == [
+        ("publish", "/command"), ("subscribe", "/detection")]

@@ -201,7 +201,7 @@ def test_a_node_that_loads_plugins_and_is_no_host_is_partial():
     instance = config.nodes[0]
     assert instance.completeness == "partial"
     assert instance.completeness_reasons == [
-        "planner/src/manager.cpp:41: loads plugin classes through pluginlib whose calls "
+        "planner/src/manager.cpp:41: loads plugin classes by name whose calls "
         "are not known here"]
     assert loader.completeness == "complete"  # the node model others share is untouched
 
@@ -224,7 +224,7 @@ def test_a_plugin_that_loads_plugins_makes_its_host_partial():
     assert not server.is_complete
     assert server.completeness_reasons[0] == (
         "plugin mppi/mppi::MPPIController: mppi/src/critic_manager.cpp:62: loads plugin "
-        "classes through pluginlib whose calls are not known here")
+        "classes by name whose calls are not known here")
 
 
 def test_a_conditional_choice_makes_the_plugin_calls_conditional():

@@ -116,7 +116,7 @@ def _run(write_tree: Any, load_code: str) -> tuple[Any, dict[str, list[tuple[str
 def test_a_node_that_loads_plugins_no_host_attaches_is_partial(write_tree: Any) -> None:
     instance, found = _run(write_tree, LOAD)
     assert instance.completeness == "partial"
-    assert any("loads plugin classes through pluginlib" in r
+    assert any("loads plugin classes by name" in r
                for r in instance.completeness_reasons)
     assert instance.node.plugin_loads == ["planner/src/planner_node.cpp:21"]
     # stop.margin is the module's: not called unread, counted as undecided

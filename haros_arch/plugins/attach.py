@@ -70,6 +70,7 @@ from .hosts import (
     Sources,
     host_of,
     sources_of,
+    tree_host_of,
 )
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
@@ -136,7 +137,10 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
         top = host_of(decl.package, decl.executable, decl.ros_version) or _manager_host(
             started_instance)
         if top is None:
-            _unhosted(started_instance, owned)
+            if tree_host_of(decl.package, decl.executable, decl.ros_version) is None:
+                # (a tree host registers its tree nodes' libraries by name: the trees
+                # read make their calls, ``behavior_trees.attach`` says what is not read)
+                _unhosted(started_instance, owned)
             continue
         process = (decl.package, decl.executable, decl.namespace, decl.location)
         if process in hosted:
@@ -485,7 +489,7 @@ def _unhosted(instance: NodeInstance, owned: set[int]) -> None:
 def _loads(node: Node) -> str:
     """Why a node that loads plugins by name is partial, with its first site."""
     more = f" and {len(node.plugin_loads) - 1} more" if len(node.plugin_loads) > 1 else ""
-    return (f"{node.plugin_loads[0]}{more}: loads plugin classes through pluginlib whose "
+    return (f"{node.plugin_loads[0]}{more}: loads plugin classes by name whose "
             "calls are not known here")
 
 

@@ -917,6 +917,10 @@ _PLUGIN_LOAD = re.compile(
     r"(?:\.|->)\s*(?:template\s+)?(createSharedInstance|createUniqueInstance|"
     r"createUnmanagedInstance|createInstance)\s*(?:<[^;(]*>)?\s*\(")
 _PLUGIN_LOADER = re.compile(r"pluginlib|class_loader|ClassLoader")
+# BehaviorTree.CPP's factory registering the node classes of a library it opens by name
+# (``factory.registerFromPlugin(loader.getOSName("br2_move_bt_node"))``, book_ros2's
+# patrolling_main): the trees it then builds make those classes' calls on the node
+_TREE_NODES_LOAD = re.compile(r"(?:\.|->)\s*(registerFromPlugin)\s*\(")
 _NODELET_LOADER = re.compile(r"nodelet\s*::\s*Loader\b|nodelet/loader\.h")
 MAX_PLUGIN_LOADS = 5  # sites said per file
 
@@ -933,16 +937,19 @@ def plugin_loads(path: str, text: str, workspace: Workspace) -> list[Diagnostic]
     sites = list(_PLUGIN_LOAD.finditer(text))
     if _NODELET_LOADER.search(text) is not None:
         sites = sorted([*sites, *NODELET_LOAD.finditer(text)], key=lambda m: m.start())
+    sites = sorted([*sites, *_TREE_NODES_LOAD.finditer(text)], key=lambda m: m.start())
     return _load_lines("CPP_PLUGINS_LOADED", path, text, workspace,
                        (m for m in sites if m.group(1) != "createInstance" or loader),
-                       ("//", "*", "/*"))
+                       ("//", "*", "/*"), lambda m: "BehaviorTree.CPP" if (
+                           m.group(1) == "registerFromPlugin") else "pluginlib")
 
 
 def _load_lines(code: str, path: str, text: str, workspace: Workspace,
-                sites: Iterable[re.Match[str]], comments: tuple[str, ...]) -> list[Diagnostic]:
+                sites: Iterable[re.Match[str]], comments: tuple[str, ...],
+                loader: Callable[[re.Match[str]], str] | None = None) -> list[Diagnostic]:
     """A ``code`` diagnostic at each of ``sites`` (group 1: the loader's name) whose line
-    of ``text`` is no comment (``comments``: how one starts), with the line's text; at
-    most ``MAX_PLUGIN_LOADS``."""
+    of ``text`` is no comment (``comments``: how one starts), with the line's text (and
+    the library that loads there, ``loader``); at most ``MAX_PLUGIN_LOADS``."""
     found: list[Diagnostic] = []
     for match in sites:
         start = text.rfind("\n", 0, match.start()) + 1
@@ -951,9 +958,10 @@ def _load_lines(code: str, path: str, text: str, workspace: Workspace,
         if line.lstrip().startswith(comments):
             continue
         number = text.count("\n", 0, match.start()) + 1
+        fields = {"loader": loader(match)} if loader is not None else {}
         found.append(diag.make(code, workspace.location(path, number,
                                                         match.start(1) - start + 1),
-                               text=line.strip()[:120]))
+                               text=line.strip()[:120], **fields))
         if len(found) == MAX_PLUGIN_LOADS:
             break
     return found

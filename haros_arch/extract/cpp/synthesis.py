@@ -298,13 +298,22 @@ _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 _USING_ONE = re.compile(
     rb"\busing\s+(?!namespace\b)(?:typename\s+)?(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)+)\s*;")
 
-# binary operators for any operand of a synthesised class (and nothing else)
+# binary operators for any operand of a synthesised class (and nothing else); a number
+# on the other side is taken by value: binding a reference to a constant would use it
+# (odr-use), and a lambda that names a local constant so must capture it (book_ros2's
+# object_tracker: ``msg->bbox.center.position.x / IMG_WIDTH`` in a subscription's
+# callback, ``bbox`` of a message known only by name, was an error there)
+_BINARY = (("haros_any", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
 _OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
     "template <class R> struct haros_if<true, R> { typedef R type; };\n" + "".join(
-        f"template <class A, class B> typename haros_if<__is_base_of(haros_any, A) || "
-        f"__is_base_of(haros_any, B), {r}>::type operator{o}(const A &, const B &);\n"
-        for r, ops in (("haros_any", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
-        for o in ops.split())
+        f"template <class A, class B> typename haros_if<(__is_base_of(haros_any, A) || "
+        f"__is_base_of(haros_any, B)) && !__is_arithmetic(A) && !__is_arithmetic(B), "
+        f"{r}>::type operator{o}(const A &, const B &);\n"
+        f"template <class A, class B> typename haros_if<__is_base_of(haros_any, A) && "
+        f"__is_arithmetic(B), {r}>::type operator{o}(const A &, B);\n"
+        f"template <class A, class B> typename haros_if<__is_arithmetic(A) && "
+        f"__is_base_of(haros_any, B), {r}>::type operator{o}(A, const B &);\n"
+        for r, ops in _BINARY for o in ops.split())
 # compound assignments: members of the permissive class, and for an object of another
 # type given a synthesised one (``flags |= vendor::BIT``); without them the integral
 # conversion a switch needs (``operator haros_integral``) makes every built-in candidate

@@ -361,6 +361,9 @@ class Scope:
         # ``test ? a : b`` (by its place) -> the side taken, while a name made of its
         # value is read once per side (``CallFinder._name_choice``)
         self.chosen: dict[tuple[str, int], bool] = {}
+        # a lambda's parameter -> the standard algorithm and range it is each element of
+        # (``algorithm_range``)
+        self._ranges: dict[tuple[str, int], tuple[Cursor, Cursor] | None] = {}
 
     # -- writes -----------------------------------------------------------------------
 
@@ -680,6 +683,39 @@ class Scope:
                 return node, given[0]
         return None
 
+    def algorithm_range(self, decl: Cursor) -> tuple[Cursor, Cursor] | None:
+        """(call, range) of the standard algorithm of this body that calls the lambda
+        whose first parameter ``decl`` is with each element of a range, ``list.begin()``
+        to ``list.end()`` (``std::all_of(names.begin(), names.end(), [&](std::string s)
+        {...})``, raspimouse's lifecycle_node_manager): the range's object."""
+        if self.body is None or decl.kind != CursorKind.PARM_DECL:
+            return None
+        key = key_of(decl)
+        if key not in self._ranges:
+            self._ranges[key] = self._algorithm_range(key)
+        return self._ranges[key]
+
+    def _algorithm_range(self, key: tuple[str, int]) -> tuple[Cursor, Cursor] | None:
+        assert self.body is not None
+        for node in _walk(self.body):
+            if node.kind != CursorKind.CALL_EXPR or node.spelling not in _ELEMENT_ALGORITHMS:
+                continue
+            args = written_arguments(node)
+            if len(args) != 3:
+                continue
+            function = strip(args[2])
+            params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL] \
+                if function.kind == CursorKind.LAMBDA_EXPR else []
+            if not params or key_of(params[0]) != key:
+                continue
+            ends = [_range_end(a) for a in args[:2]]
+            if ends[0] is None or ends[1] is None or (ends[0][0], ends[1][0]) not in (
+                    ("begin", "end"), ("cbegin", "cend")) or _named(ends[0][1]) is None or (
+                    _named(ends[0][1]) != _named(ends[1][1])):
+                return None
+            return node, ends[0][1]
+        return None
+
     def counted_loop(self, index: Cursor, container: Cursor) -> Cursor | None:
         """The ``for`` of this body that counts ``index`` (a variable it declares) from
         its start up to ``container.size()`` (``for (size_t i = 0; i != ids.size(); i++)``),
@@ -881,9 +917,12 @@ class Scope:
         return self.sites.field(decl, self.body, initial)
 
     def is_parameter(self, decl: Cursor) -> bool:
-        """A parameter this function never assigns, whose callers may tell its value."""
+        """A parameter this function never assigns, whose callers may tell its value
+        (not a lambda's that a standard algorithm calls with each element of a range:
+        ``algorithm_range``, no call of the file passes it)."""
         return self.sites is not None and decl.kind == CursorKind.PARM_DECL and all(
-            w is None for w in self.writes.get(key_of(decl), []))
+            w is None for w in self.writes.get(key_of(decl), [])) and (
+            self.algorithm_range(decl) is None)
 
     def _string_call(self, call: Cursor, depth: int) -> Parts:
         args = written_arguments(call)
@@ -1281,6 +1320,30 @@ def key_of(decl: Cursor) -> tuple[str, int]:
     if type(where) is _Place:
         return where.key
     return (where.file.name if where.file else "", where.offset)
+
+
+# the standard algorithms that call their last argument with each element of a range in
+# turn (all of them, or up to the first that decides)
+_ELEMENT_ALGORITHMS = frozenset(("all_of", "any_of", "none_of", "for_each", "find_if",
+                                 "find_if_not", "count_if"))
+
+
+def _range_end(expr: Cursor) -> tuple[str, Cursor] | None:
+    """(``begin`` or ``end``, the object) of ``list.begin()`` / ``std::end(list)``."""
+    expr = strip(expr)
+    if expr.kind != CursorKind.CALL_EXPR:
+        return None
+    args = written_arguments(expr)
+    if len(args) == 1 and not any(c.kind == CursorKind.MEMBER_REF_EXPR
+                                  for c in expr.get_children()):
+        return expr.spelling, args[0]  # std::begin(list)
+    if args:
+        return None
+    member = next((c for c in expr.get_children() if c.kind == CursorKind.MEMBER_REF_EXPR),
+                  None)
+    objects = [c for c in member.get_children() if c.kind.is_expression()] if (
+        member is not None) else []
+    return (expr.spelling, objects[0]) if objects else None
 
 
 def _named(expr: Cursor) -> tuple[tuple[str, int], ...] | None:

@@ -1947,15 +1947,11 @@ class CallFinder:
             return (name, self._first_parameter(expr, scope, name.count("?")))
         # the one unknown part: the whole name, or a run of it that the text around keeps
         # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
-        copied = _copied(inner)  # a string passed by value: a copy of the variable
-        if copied is not None and copied.kind == CursorKind.DECL_REF_EXPR:
-            inner = copied
         unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
             inner) is not None else _unknown_operands(expr, scope)
-        one = strip(unknown[0]) if len(unknown) == 1 else None
-        walk, over, mark = _element_loop(one, scope) if one is not None else (
-            None, None, EACH)
-        if walk is not None and over is not None:
+        one = strip(unknown[0]) if len(unknown) == 1 else _string_of_variable(inner)
+        each = self._each_element(one, scope) if one is not None else None
+        if each is not None:
             # ``for (std::string topic : topics_) create_subscription(topic, ..)`` over a
             # list parameter (create3_sim's hazards_vector_publisher), or a name made of
             # the element (``polygon_name + ".type"``, navigation2's collision monitor;
@@ -1963,14 +1959,60 @@ class CallFinder:
             # controller server): one call per element of the value the configuration
             # gives it, in the place of the ``?`` (graph.element_calls); or each word of
             # a string parameter (``while (ss >> source)``, ``EACH_WORD``)
-            listed = self._parameter_source(over, scope, 0)
-            at = (walk.location.line, walk.location.column)
-            return (name, (listed[0], None, None, mark, at) if listed is not None else None)
+            listed, at, mark = each
+            return (name, (listed, None, None, mark, at) if listed is not None else None)
         # a parameter's value: the graph puts it in the place of the ``?``
         source = self._parameter_source(expr, scope, 0)
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
             source = self._parameter_source(unknown[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
+
+    def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
+                      ) -> tuple[str | None, tuple[int, int] | None, str] | None:
+        """(the list parameter, the place of the loop that walks it, how it gives its
+        elements: ``PrimitiveCall.name_each``) when ``expr`` is each element of a list
+        (or word of a string) in turn; the parameter None when the list is no
+        parameter's, the place None when no loop of this body walks it. The element
+        may be a variable holding it (``auto service_name = target + "/get_state"``),
+        a function's parameter every call of this file passes it to, or the parameter
+        of a lambda a standard algorithm calls with each element of a range
+        (raspimouse's lifecycle_node_manager: ``std::all_of(names.begin(),
+        names.end(), [&](std::string s) { return change_state(s, ...); })``, ``names``
+        the list its main reads from ``components``)."""
+        if depth > MAX_DEPTH:
+            return None
+        expr = strip(expr)
+        walk, over, mark = _element_loop(expr, scope)
+        if walk is not None and over is not None:
+            listed = self._parameter_source(over, scope, 0)
+            return (listed[0] if listed is not None else None,
+                    (walk.location.line, walk.location.column), mark)
+        decl = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None:
+            return None
+        if decl.kind == CursorKind.PARM_DECL:
+            ranged = scope.algorithm_range(decl)
+            if ranged is not None:
+                listed = self._parameter_source(ranged[1], scope, 0)
+                return (listed[0], None, EACH) if listed is not None else None
+            if scope.sites is not None and scope.is_parameter(decl):
+                passed = scope.sites.agreed(decl, lambda arg, site: self._each_element(
+                    arg, site, depth + 1), None)
+                return (passed[0], None, passed[2]) if passed is not None and (
+                    passed[0] is not None) else None
+            return None
+        held = scope.variable(decl)
+        if held is None:
+            return None
+        operands = _unknown_operands(held, scope)
+        inner = strip(held)
+        if not operands and inner.kind == CursorKind.DECL_REF_EXPR:
+            operands = [inner]
+        if len(operands) != 1 or None not in scope.string(held) or (
+                scope.string(held).count(None) != 1):
+            return None
+        found = self._each_element(operands[0], scope, depth + 1)
+        return found if found is not None and found[0] is not None else None
 
     def _first_parameter(self, expr: Cursor, scope: Scope, runs: int) -> NameSource | None:
         """A name of several unknown runs whose first is a parameter's value
@@ -3028,14 +3070,15 @@ def _subscript(expr: Cursor) -> tuple[Cursor, Cursor] | None:
     return (args[0], args[1]) if len(args) == 2 else None
 
 
-def _copied(expr: Cursor) -> Cursor | None:
-    """What a construction of one argument copies (``std::string name`` given ``source``
-    by value), stripped; None for anything else."""
+def _string_of_variable(expr: Cursor) -> Cursor | None:
+    """The variable a string is constructed from (``std::string(s)``, the argument a
+    function that wraps a ROS call is given for the name it completes), else None."""
     if expr.kind != CursorKind.CALL_EXPR or expr.referenced is None or (
             expr.referenced.kind != CursorKind.CONSTRUCTOR):
         return None
     children = [c for c in expr.get_children() if c.kind.is_expression()]
-    return strip(children[0]) if len(children) == 1 else None
+    held = strip(children[0]) if len(children) == 1 else None
+    return held if held is not None and held.kind == CursorKind.DECL_REF_EXPR else None
 
 
 def _element_loop(expr: Cursor, scope: Scope

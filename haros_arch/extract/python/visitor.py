@@ -386,16 +386,24 @@ class Walker:
         where = self._where(frame, statement)
         held = self._held(statement.test, frame)
         yes, no = condition("if", text, where, held), condition("else", text, where, held)
-        before = dict(frame.locals)
+        # the locals, and the attributes of ``self`` (interbotix_xs_modules' core: ``if
+        # self.robot_name is None: self.robot_name = robot_model``, with ``robot_name`` an
+        # option argparse parses), each path sets: both, joined after
+        attrs = frame.instance.attrs if frame.instance is not None else {}
+        before, attrs_before = dict(frame.locals), dict(attrs)
         self._block(statement.body, frame, (*conds, yes))
-        taken = dict(frame.locals)
+        taken, attrs_taken = dict(frame.locals), dict(attrs)
         frame.locals.clear()  # the other path starts from what was before the if
         frame.locals.update(before)
+        attrs.clear()
+        attrs.update(attrs_before)
         if statement.orelse:
             self._block(statement.orelse, frame, (*conds, no))
-        other = dict(frame.locals)
+        other, attrs_other = dict(frame.locals), dict(attrs)
         frame.locals.clear()
         frame.locals.update(_joined(before, taken, other, yes, no))
+        attrs.clear()
+        attrs.update(_joined(attrs_before, attrs_taken, attrs_other, yes, no))
 
     def _held(self, test: ast.expr, frame: Frame) -> tuple[tuple[str, str], ...] | None:
         """What ``test`` reads that holds a parameter's value, as the graph decides a
@@ -649,6 +657,20 @@ class Walker:
                             self._call(call, frame, (*conds, *under))
                     finally:
                         frame.locals[part.id] = held
+                    return
+                member = _self_member(part) if isinstance(part, ast.expr) and (
+                    frame.instance is not None) else None
+                attrs = frame.instance.attrs if frame.instance is not None else {}
+                kept = attrs.get(member) if member is not None else None
+                if member is not None and isinstance(kept, Alternatives):
+                    # an attribute of ``self`` the paths of an if left different, as a
+                    # local (``_If``)
+                    try:
+                        for value, under in kept.options:
+                            attrs[member] = value
+                            self._call(call, frame, (*conds, *under))
+                    finally:
+                        attrs[member] = kept
                     return
                 if isinstance(part, ast.Call) and id(part) not in self.evaluator.fixed \
                         and isinstance(self.evaluator.callee(part.func, frame),

@@ -228,6 +228,28 @@ def os_path(function: Callable[[str], Any]) -> Builder:
     return build
 
 
+def path_exists(test: Callable[[str], bool]) -> Builder:
+    """``os.path.exists`` / ``isfile`` / ``isdir`` of a path in a package folder of the
+    workspace (``os.path.join(get_package_share_directory(pkg), 'config', name)``: the
+    package's folder stands for its share folder, as everywhere here): true when the
+    package holds it (raspimouse_ros2_examples' teleop_joy.launch.py loads its
+    joystick's parameter file only if it exists). Any other path (outside the
+    workspace's packages, or one the package does not hold: it may be installed from
+    elsewhere, or made when building) is not known: an ``if`` on it takes both branches,
+    each under its test."""
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        path = arg(a, k, 0, "path")
+        if isinstance(path, (str, PurePosixPath)):
+            text = os.path.normpath(str(path))
+            if any(text.startswith(package.root.rstrip(os.sep) + os.sep)
+                   for package in i.workspace.packages.values()) and test(text):
+                return True
+        i.unknown_value(n, "whether the path exists where the launch file runs is not "
+                           "known here")
+        return Unknown(f"{test.__name__} of a path not known statically")
+    return build
+
+
 def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     name = arg(a, k, 0, "key")
     if isinstance(name, str) and name in i.environment:
@@ -725,6 +747,8 @@ API: dict[str, Builder] = {
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "split": os_path(os.path.split),
     "splitext": os_path(os.path.splitext),
+    "exists": path_exists(os.path.exists), "isfile": path_exists(os.path.isfile),
+    "isdir": path_exists(os.path.isdir),
     "getenv": getenv,
     "PathJoinSubstitution": path_join, "PathSubstitution": path_substitution,
     "Path": pure_path, "PurePath": pure_path, "PurePosixPath": pure_path,

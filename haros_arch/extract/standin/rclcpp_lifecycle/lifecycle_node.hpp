@@ -10,6 +10,12 @@ public:
   uint8_t id() const;
   const std::string& label() const;
 };
+class Transition {
+public:
+  Transition(uint8_t id, const std::string& label = "");
+  uint8_t id() const;
+  const std::string& label() const;
+};
 class ManagedEntityInterface {
 public:
   virtual ~ManagedEntityInterface();
@@ -62,6 +68,19 @@ public:
   bool register_on_activate(std::function<CallbackReturn(const State&)> fcn);
   bool register_on_deactivate(std::function<CallbackReturn(const State&)> fcn);
   bool register_on_error(std::function<CallbackReturn(const State&)> fcn);
+  // a transition the node's own code triggers (book_ros2's object_tracker configures its
+  // HeadController so), by id or as a Transition, with the callback's result or not
+  const State& trigger_transition(const Transition& transition);
+  const State& trigger_transition(const Transition& transition, CallbackReturn& cb_return_code);
+  const State& trigger_transition(uint8_t transition_id);
+  const State& trigger_transition(uint8_t transition_id, CallbackReturn& cb_return_code);
+  std::vector<Transition> get_available_transitions() const;
+  std::vector<Transition> get_transition_graph() const;
+  const State& configure(CallbackReturn& cb_return_code);
+  const State& activate(CallbackReturn& cb_return_code);
+  const State& deactivate(CallbackReturn& cb_return_code);
+  const State& cleanup(CallbackReturn& cb_return_code);
+  const State& shutdown(CallbackReturn& cb_return_code);
   const State& configure();
   const State& activate();
   const State& deactivate();
