@@ -58,3 +58,27 @@ def test_a_plugins_list_is_used_as_it_is(write_tree):
                                          "'costmap_2d::InflationLayer'}]")
     assert "/map" not in subscribed and "/base_scan" not in subscribed
     assert "/points" in subscribed
+
+
+def test_a_source_s_settings_are_read_in_its_turn_of_the_loop(write_tree):
+    """The obstacle layer reads each source's settings in its loop over the sources
+    (``while (ss >> source)``, obstacle_layer.cpp:85); the copy of those reads made for a
+    listed source is that source's turn, made, not under the loop (they were: every
+    source setting of a ROS 1 navigation configuration was undecided)."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/nav.launch": LAUNCH.format(extra=""),
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/nav.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    reads = [link for link in config.links if link.node.name == "/move_base"
+             and link.kind == "read" and "/obstacle_layer/laser/" in link.name]
+    assert {link.name.rsplit("/", 1)[1] for link in reads} >= {"topic", "data_type",
+                                                                "marking", "clearing"}
+    assert all(c.statement not in ("while", "for", "for each")
+               for link in reads for c in link.conditions)
+    # the one search in the loop keeps its own if
+    assert any(c.text.startswith("source_node.searchParam") for link in reads
+               for c in link.conditions)

@@ -47,7 +47,7 @@ from ..launch.ros2.naming import (
     parse_ros_args,
     pattern_matches,
 )
-from ..model.conditions import Condition
+from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.location import Location
 from ..model.rosname import namespace_of, pattern_for, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
@@ -1103,11 +1103,15 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
         if mark is None:
             out.append(call)
             continue
+        # each copy is one turn of the loop over the sources: made, not under the loop
+        # (obstacle_layer.cpp's ``while (ss >> source)``)
+        turn = tuple(c for c in call.conditions if c.statement not in _LOOPS)
         for source in sources:  # an empty list: the code reads none of them
             out.append(replace(call, name=_source_named(call.name, mark, source),
                                handle_namespace=_source_named(call.handle_namespace, mark,
                                                               source),
-                               name_param=_source_named(call.name_param, mark, source)))
+                               name_param=_source_named(call.name_param, mark, source),
+                               conditions=turn))
     parent = _parent_rule(row, node, workspace)
     for source in sources:
         topic_key = base + row.topic.format(plugin=keys, source=source)
@@ -1131,6 +1135,9 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
                 out.append(PrimitiveCall("read", name, location=given.launch_location,
                                          conditions=conditions, origin="plugin"))
     return out
+
+
+_LOOPS = frozenset({"while", "for", EACH_STATEMENT})
 
 
 def _source_named(name: str | None, mark: str, source: str) -> Any:
