@@ -82,3 +82,27 @@ def test_a_source_s_settings_are_read_in_its_turn_of_the_loop(write_tree):
     # the one search in the loop keeps its own if
     assert any(c.text.startswith("source_node.searchParam") for link in reads
                for c in link.conditions)
+
+
+def test_the_old_parameters_are_moved_only_when_no_plugins_are_given(write_tree):
+    """Costmap2DROS moves pre-hydro parameters ``if (!private_nh.hasParam("plugins"))``
+    and sets ``plugins`` itself in that branch (loadOldParameters): a write after the
+    test, which the test cannot see. With no ``plugins`` given the branch runs (the
+    move of each observation source, ``~global_costmap/laser``, is made); with them it
+    does not (the condition was left undecided by that write, and every parameter the
+    move may read was undecided with it)."""
+    def moves(extra: str) -> dict[str, tuple[str, ...]]:
+        root = write_tree({
+            "src/nav/package.xml": package_xml("nav"),
+            "src/nav/CMakeLists.txt": "project(nav)\n",
+            "src/nav/launch/nav.launch": LAUNCH.format(extra=extra),
+            "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/nav.launch]\n",
+        })
+        model = analyse(load(str(root / "project.yaml")), {},
+                        Options(cache_dir=None, jobs=1))
+        (config,) = model.configurations
+        return {link.name: tuple(c.text for c in link.conditions)
+                for link in config.links if link.node.name == "/move_base"
+                and link.kind == "read" and link.name.endswith("/global_costmap/laser")}
+    assert moves("") == {"/move_base/global_costmap/laser": ()}
+    assert moves("plugins: [{name: obstacles, type: 'costmap_2d::ObstacleLayer'}]") == {}

@@ -44,6 +44,7 @@ from .. import diagnostics as diag
 from ..evaluate.python import KeyAttributes, evaluate, is_unknown
 from ..launch.ros2.naming import split_arguments
 from ..model.conditions import PARAMETER_VALUE, Condition
+from ..model.location import Location
 from ..model.rosname import pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
 from ..model.values import UNKNOWN_MARK, Unknown
@@ -502,13 +503,20 @@ def _read_value(link: Link, untyped: bool = False) -> object:
 
 
 def _presence_value(config: Configuration, instance: NodeInstance, file: str | None,
-                    kind: str, written: str, made: dict[str, Any]) -> object:
+                    kind: str, written: str, made: dict[str, Any],
+                    at: Location | None = None, near: str | None = None) -> object:
     """Whether a ROS 1 ``getParam("x", v)`` / ``hasParam("x")`` in a condition finds the
     parameter, from the instance's tested read of it in that file (the call the
     condition makes, resolved like any read): True for hasParam of a parameter the
     launch sets with no condition (or sets under, a namespace), and for getParam when
     the value is of the read's type; False for one that nothing sets and nothing unseen
-    could set; else unknown."""
+    could set; else unknown. A write of it under the condition itself (``at``: where the
+    condition is) is made after the test, in its branch (costmap_2d's ``if
+    (!nh.hasParam("plugins")) loadOldParameters(nh);``, which sets ``plugins``): no
+    setting the test can see. Tests of the parameter in one file that disagree (the
+    code of a class built twice, move_base's two costmaps) are those of the same object
+    as the call the condition guards, ``near`` (its resource's name): the tested
+    parameters that share the most of its namespace."""
     if instance.ros_version != 1:
         return Unknown("not a ROS 1 node")
     found = {id(link.resource): link for link in instance.links
@@ -518,21 +526,40 @@ def _presence_value(config: Configuration, instance: NodeInstance, file: str | N
              and link.call.name.lstrip("~").endswith(written.lstrip("~"))}
     if not found:
         return Unknown(f"no read of {written} in {file}")
-    answers = {_present(config, link, kind, made) for link in found.values()}
+    answers = {_present(config, link, kind, made, at) for link in found.values()}
+    if len(answers) > 1 and near is not None:
+        shared = {key: _shared_namespace(link.resource.name, near)
+                  for key, link in found.items()}
+        best = max(shared.values())
+        answers = {_present(config, link, kind, made, at) for key, link in found.items()
+                   if shared[key] == best}
     if len(answers) != 1:
         return Unknown(f"the reads of {written} differ")
     return answers.pop()
+
+
+def _shared_namespace(name: str, other: str) -> int:
+    """How many leading namespace segments two names share."""
+    count = 0
+    for first, second in zip(name.split("/")[:-1], other.split("/"), strict=False):
+        if first != second:
+            break
+        count += 1
+    return count
 
 
 def _own(name: str) -> str:
     return name.lstrip("~").rpartition("/")[2]
 
 
-def _present(config: Configuration, link: Link, kind: str, made: dict[str, Any]) -> object:
+def _present(config: Configuration, link: Link, kind: str, made: dict[str, Any],
+             at: Location | None = None) -> object:
     param = link.resource
     assert isinstance(param, Parameter) and link.call is not None
     unknown = Unknown(f"whether {param.name} is set")
-    if param.is_unresolved or param.setters:
+    before = [w for w in param.setters
+              if at is None or not any(c.location == at for c in w.conditions)]
+    if param.is_unresolved or before:
         return unknown
     prefix = param.name.rstrip("/") + "/"
     set_here = [p for p in config.parameters if p.set_by_launch and (
@@ -595,7 +622,8 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
     dynamic = instance.node is not None and instance.node.language == "python"
 
     def value(name: str, *, file: str | None,
-              held: dict[str, str] | None = None) -> object:
+              held: dict[str, str] | None = None, at: Location | None = None,
+              near: str | None = None) -> object:
         # a read in the condition's own file, else in another file of the node: a base
         # class's header that reads what its subclasses test (pcl_ros' PCLNodelet::onInit
         # reads ~use_indices into use_indices_, filter.cpp tests it); reads that disagree
@@ -605,7 +633,7 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
         presence = presence_name(name)
         if presence is not None:
             return (_presence_value(config, instance, file, *presence,
-                                    {} if made is None else made)
+                                    {} if made is None else made, at, near)
                     if config is not None else Unknown("no configuration"))
         parameter = held.get(name) if held else None
         parameter = parameter if parameter is not None else parameter_name(name)
@@ -652,8 +680,8 @@ def decide_links(config: Configuration) -> None:
             false: Condition | None = None
             for condition in link.conditions:
                 answer = decide(condition, functools.partial(
-                    members, file=condition.location.file, held=readable(condition)[1]),
-                    views)
+                    members, file=condition.location.file, held=readable(condition)[1],
+                    at=condition.location, near=link.rosname.full), views)
                 if answer is False:
                     false = condition
                     break
