@@ -303,9 +303,9 @@ class CallFinder:
         self.functions = list(self._definitions(self._root, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True, main=self.tu.spelling)
-        self.wrappers.build()
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
+        self.wrappers.build()
         self.wrappers.read_inside(self._conditions_of)
         walked: set[int] = set()
         for function in self.functions:
