@@ -919,3 +919,15 @@ def test_a_lifecycle_transition_and_a_constant_beside_a_permissive_value(write_t
     assert _errors(result) == []
     assert sorted((c.kind, c.name) for c in result.calls if not c.name.startswith("~")) == [
         ("publish", "/command"), ("subscribe", "/detection")]
+
+
+def test_eigen_matrix_base_decompositions_and_boost_microseconds(write_tree) -> None:
+    """image_undistort's ``xmlRpcToMatrix(value, Eigen::MatrixBase<Derived>* out)`` beside
+    its camera parameter reads, and open_vins' ``A.colPivHouseholderQr().solve(I)``,
+    ``S.llt().solve(r)`` and ``(t2 - t1).total_microseconds()``: the stand-ins had no
+    MatrixBase, no decompositions and only total_milliseconds, an error in each function
+    that reads parameters or advertises, so the nodes were partial (CPP_NODE_PARTIAL on
+    image_undistort's three nodelets and six of open_vins' nodes)."""
+    result = _extract(write_tree, _source("ros1_eigen_decompositions.cpp"), "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("read", "~K"), ("publish", "~chi2")]

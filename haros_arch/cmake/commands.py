@@ -712,7 +712,7 @@ def _target_link_libraries(it: Interpreter, command: Invocation, args: list[str]
 
 
 # catkin_package()'s keywords (catkin's own list)
-_CATKIN_PACKAGE_KEYWORDS = frozenset({"INCLUDE_DIRS", "LIBRARIES", "CATKIN_DEPENDS", "DEPENDS",
+CATKIN_PACKAGE_KEYWORDS = frozenset({"INCLUDE_DIRS", "LIBRARIES", "CATKIN_DEPENDS", "DEPENDS",
                                       "CFG_EXTRAS", "EXPORTED_TARGETS",
                                       "SKIP_CMAKE_CONFIG_GENERATION",
                                       "SKIP_PKG_CONFIG_GENERATION"})
@@ -726,7 +726,7 @@ def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> No
     names: list[str] = []
     taking = False
     for arg in args:
-        if arg in _CATKIN_PACKAGE_KEYWORDS:
+        if arg in CATKIN_PACKAGE_KEYWORDS:
             taking = arg == "LIBRARIES"
         elif taking and arg:
             names.append(arg)

@@ -25,16 +25,20 @@ import os
 import re
 from collections.abc import Iterable
 
+from ...cmake.commands import CATKIN_PACKAGE_KEYWORDS
 from ...files import read_text
 from ...workspace import Workspace
 from .build_macros import cmake_files
 
 _COMMAND = re.compile(r"^[ \t]*(include_directories|target_include_directories)\s*\(([^)]*)\)",
                       re.IGNORECASE | re.MULTILINE)
+_CATKIN_PACKAGE = re.compile(r"^[ \t]*catkin_package\s*\(([^)]*)\)",
+                            re.IGNORECASE | re.MULTILINE)
 _COMMENT = re.compile(r"#[^\n]*")
 _KEYWORDS = frozenset({"SYSTEM", "BEFORE", "AFTER", "PUBLIC", "PRIVATE", "INTERFACE"})
 _BUILD_INTERFACE = re.compile(r"\$<BUILD_INTERFACE:([^>]*)>")
-_FILE_DIRS = ("${CMAKE_CURRENT_SOURCE_DIR}", "${CMAKE_CURRENT_LIST_DIR}")
+_SOURCE_DIR = "${CMAKE_CURRENT_SOURCE_DIR}"
+_LIST_DIR = "${CMAKE_CURRENT_LIST_DIR}"
 _ROOT_DIRS = ("${PROJECT_SOURCE_DIR}", "${CMAKE_SOURCE_DIR}")
 _PROJECT = re.compile(r"^[ \t]*project\s*\(", re.IGNORECASE | re.MULTILINE)
 _SET = re.compile(r"^[ \t]*set\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)([^)]*)\)",
@@ -62,7 +66,7 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
         texts.append((path, _COMMENT.sub("", text or "")))
     variables = _variables(text for _, text in texts)
     for path, text in texts:
-        here = os.path.dirname(path)
+        here = _source_dir(path, root)
         for match in _COMMAND.finditer(text):
             words = match.group(2).split()
             if match.group(1).lower() == "target_include_directories":
@@ -72,8 +76,37 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
                     if project is not None:
                         word = word.replace("${PROJECT_NAME}", project)
                     word, owner = _exported(word, workspace, root)
-                    named = _folder(word, here, owner)
+                    named = _folder(word, here, owner, os.path.dirname(path))
                     if named is not None and named not in found and _owned(named, owner):
+                        found.append(named)
+    return found
+
+
+def exported_include_dirs(root: str, workspace: Workspace) -> list[str]:
+    """The folders of package ``root`` that its ``catkin_package(INCLUDE_DIRS ...)``
+    exports: what catkin puts in ``${catkin_INCLUDE_DIRS}`` of a package that finds it,
+    whatever the folder is called (open_vins' ov_core exports ``src/``, where
+    ``utils/opencv_yaml_parse.h`` is that ov_init and ov_msckf include)."""
+    root = os.path.abspath(root)
+    found: list[str] = []
+    texts: list[tuple[str, str]] = []
+    for path in cmake_files(root):
+        text, _ = read_text(path, workspace.location(path))
+        texts.append((path, _COMMENT.sub("", text or "")))
+    variables = _variables(text for _, text in texts)
+    for path, text in texts:
+        here = _source_dir(path, root)
+        for match in _CATKIN_PACKAGE.finditer(text):
+            taking = False
+            for written in match.group(1).split():
+                if written in CATKIN_PACKAGE_KEYWORDS:
+                    taking = written == "INCLUDE_DIRS"
+                    continue
+                if not taking:
+                    continue
+                for word in _expanded(written.strip("\"'"), variables):
+                    named = _folder(word, here, root, os.path.dirname(path))
+                    if named is not None and named not in found and _owned(named, root):
                         found.append(named)
     return found
 
@@ -132,17 +165,37 @@ def _expanded(word: str, variables: dict[str, list[str]], depth: int = 0) -> lis
     return [word] if replaced == word else _expanded(replaced, variables, depth + 1)
 
 
-def _folder(word: str, here: str, root: str) -> str | None:
-    """The folder ``word`` names, written in the CMake file in ``here``, or None (a
+def _source_dir(path: str, root: str) -> str:
+    """The folder relative paths of CMake file ``path`` start from: its own for a
+    CMakeLists.txt; for another file (``cmake/ROS1.cmake``, which a CMakeLists.txt
+    includes) the nearest folder above it, up to ``root``, with a CMakeLists.txt, as
+    CMake's current source folder stays the including file's (open_vins' ov_core
+    gives ``include_directories(src)`` and ``catkin_package(INCLUDE_DIRS src/)`` in
+    cmake/ROS1.cmake: ov_core/src)."""
+    here = os.path.dirname(path)
+    if os.path.basename(path) == "CMakeLists.txt":
+        return here
+    current = here
+    while current == root or current.startswith(root + os.sep):
+        if os.path.isfile(os.path.join(current, "CMakeLists.txt")):
+            return current
+        current = os.path.dirname(current)
+    return here
+
+
+def _folder(word: str, here: str, root: str, listed: str | None = None) -> str | None:
+    """The folder ``word`` names, written in a CMake file whose current source folder is
+    ``here`` (and its own folder ``listed``, ``${CMAKE_CURRENT_LIST_DIR}``), or None (a
     keyword, another variable, a folder outside the package or not there)."""
     inner = _BUILD_INTERFACE.fullmatch(word)
     if inner is not None:
         word = inner.group(1)
     if not word or word.upper() in _KEYWORDS:
         return None
-    for variable in _FILE_DIRS:
-        if word.startswith(variable):
-            word = here + word[len(variable):]
+    if word.startswith(_SOURCE_DIR):
+        word = here + word[len(_SOURCE_DIR):]
+    if word.startswith(_LIST_DIR):
+        word = (listed or here) + word[len(_LIST_DIR):]
     for variable in _ROOT_DIRS:
         if word.startswith(variable):
             word = root + word[len(variable):]

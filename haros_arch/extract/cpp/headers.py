@@ -52,10 +52,11 @@ import re
 import shutil
 import tempfile
 import threading
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
+from ... import cmake
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import read_text
@@ -247,6 +248,27 @@ def _library_include_dirs(workspace: Workspace) -> list[str]:
     return found
 
 
+MAX_DEPENDED = 64  # packages whose exported include folders one extraction reads
+
+
+def _depended_roots(roots: Iterable[str], workspace: Workspace) -> list[str]:
+    """The roots of the workspace packages that the packages at ``roots`` build on
+    (package.xml's ``depend`` / ``build_depend``), and those they build on in turn, in
+    the order met; not ``roots`` themselves, at most ``MAX_DEPENDED``."""
+    seen = set(roots)
+    todo = [p for p in (workspace.package_of(root) for root in roots) if p is not None]
+    found: list[str] = []
+    while todo and len(found) < MAX_DEPENDED:
+        for name in cmake.build_depends(todo.pop(0)):
+            package = workspace.packages.get(name)
+            if package is None or not package.root or package.root in seen:
+                continue
+            seen.add(package.root)
+            found.append(package.root)
+            todo.append(package)
+    return found[:MAX_DEPENDED]
+
+
 def _headers_beside_sources(workspace: Workspace) -> list[str]:
     """The roots of the packages that keep their headers beside their sources in a folder
     named as the package, included from the package root (cartographer_ros:
@@ -323,6 +345,11 @@ class IncludeSetup:
         for root in roots:
             self.user_dirs += [inc for inc in cmake_includes.cmake_include_dirs(root, workspace)
                                if inc not in self.user_dirs]
+        # then what the workspace packages they build on export to catkin
+        # (``${catkin_INCLUDE_DIRS}``), after their own folders as CMake orders them
+        for root in _depended_roots(roots, workspace):
+            self.user_dirs += [inc for inc in cmake_includes.exported_include_dirs(
+                root, workspace) if inc not in self.user_dirs]
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         # the packages being extracted that our stand-ins also provide, with their

@@ -605,6 +605,16 @@ def class_of(usr: str) -> str | None:
     return found[-1] if found else None
 
 
+def constructor_marked(text: str) -> str | None:
+    """The first constructor (of a class, not a class template: a template's
+    constructions name its specialisations) a placeholder in ``text`` names."""
+    for found in _MARK.finditer(text):
+        usr = found.group(1)
+        if _constructor(usr) and "@ST>" not in usr and "@SP>" not in usr:
+            return usr
+    return None
+
+
 def _constructor(usr: str) -> bool:
     """Whether a USR is a constructor's (its function named as its class)."""
     cls, function = class_of(usr), _FUNCTION.findall(usr)

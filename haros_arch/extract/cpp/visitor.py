@@ -246,6 +246,9 @@ class CallFinder:
         # the placeholder that starts a parameter of the constructor being walked, whose
         # calls named after it are made only where the class is constructed (``_emit``)
         self._constructor: tuple[str, str] | None = None
+        # whether the function being walked is a free function (no member can hold a
+        # constructor's parameter there: only its own parameters, ``_made_in``)
+        self._free = False
         # the USR of the header function template whose dependent construction is
         # being emitted (``_made_in``)
         self._made_by: str | None = None
@@ -315,9 +318,9 @@ class CallFinder:
         self.functions = list(self._definitions(self._root, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True, main=self.tu.spelling)
-        self.wrappers.build()
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
+        self.wrappers.build()
         self.wrappers.read_inside(self._conditions_of)
         walked: set[int] = set()
         for function in self.functions:
@@ -614,6 +617,7 @@ class CallFinder:
         scope = self._scope = self._scope_of(function)
         self._owner = owner_of(function)
         self._constructor = None
+        self._free = function.kind == CursorKind.FUNCTION_DECL
         # of a class, not a class template: a template's constructions name its
         # specialisations, which a unit that derives from it may not show
         if function.kind != CursorKind.FIELD_DECL and is_constructor(function) and (
@@ -1848,7 +1852,13 @@ class CallFinder:
         if self._made_by is not None:
             return self._made_by
         if self._constructor is None:
-            return None
+            # a free function whose calls in this unit all pass it a parameter of one
+            # constructor: its calls named after it are made only where that
+            # constructor runs (voxblox's ``TsdfServer(nh, nh_private)`` alone calls
+            # ``getMeshIntegratorConfigFromRosParam(nh_private)`` in tsdf_server.cc;
+            # esdf_server builds its TsdfServer by another constructor)
+            return links.constructor_marked(f"{name}{namespace or ''}") if (
+                self._free) else None
         usr, mark = self._constructor
         return usr if mark in name or mark in (namespace or "") else None
 

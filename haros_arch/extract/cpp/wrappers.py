@@ -72,6 +72,7 @@ from .values import (
     Scope,
     emptiness_test,
     initializer,
+    render,
     strip,
     written_arguments,
 )
@@ -917,6 +918,12 @@ class Wrappers:
             parts = self.finder.namespaces.of(handle, scope)
             if None not in parts:
                 return {**none, "namespace": "".join(p for p in parts if p is not None)}
+            if not self.finder.ros2:
+                # a ROS 1 handle whose namespace is not known here (a pointer member a
+                # setter of another file sets: open_vins' YamlParser::nh, given by
+                # ``set_node_handler`` in main): its names are in that unknown
+                # namespace, not the node's own
+                return {**none, "namespace": render(parts)}
         return none
 
     def _type(self, function: Cursor, spec: api.RosFunction, call: Cursor,

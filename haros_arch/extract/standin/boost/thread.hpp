@@ -5,7 +5,12 @@
 #include <boost/function.hpp>
 namespace boost {
 namespace posix_time {
-struct time_duration { long total_milliseconds() const; };
+struct time_duration {
+  long total_seconds() const;
+  long total_milliseconds() const;
+  long total_microseconds() const;
+  long total_nanoseconds() const;
+};
 time_duration milliseconds(long n);
 time_duration seconds(long n);
 time_duration microseconds(long n);
