@@ -399,6 +399,16 @@ CATALOGUE: dict[str, Entry] = {
         "(\"Cannot have a value before ros__parameters\"), so a node given it on its "
         "command line does not start. Fix: put the values under the node's "
         "ros__parameters."),
+    "LAUNCH_PARAM_SET_TWICE": Entry(
+        "warning", "parameter {name} is set again here (first at line {line}): roslaunch "
+        "keeps the last value, the first is never used",
+        "Two <param> tags of one element (a node, group or launch file) set the same "
+        "name under the same conditions. roslaunch does not complain: it keeps the value "
+        "of the later tag, so the earlier one is dead, which usually means that one of "
+        "the two names is a typo of a parameter never set (diffbot's amcl.launch sets "
+        "kld_err twice, kld_z never). Not said for tags with an if / unless of their "
+        "own, nor across files (an including file overriding an included one's value). "
+        "Fix: correct the name of one of them, or delete the one that is not meant."),
     "LAUNCH_PARAMS_NO_NODE": Entry(
         "warning", "parameter file {file} is given to {nodes}, but its sections are for "
         "{patterns}: rcl gives their parameters to none of them",

@@ -161,6 +161,11 @@ EXPECTED = {
         f"- link client /robot1/battery /robot1/driver/reset  ({BATTERY}:18:22)",
         "+ link client /robot1/power/battery /robot1/power/driver/reset  "
         f"({BATTERY}:18:22)",
+        # the dock action and the driver's reset service are still served in /robot1
+        "+ new warning [client-without-server] /robot1/power/battery's action-client of "
+        f"/robot1/power/dock has no server in this configuration  ({BATTERY}:19:21)",
+        "+ new warning [client-without-server] /robot1/power/battery's client of "
+        f"/robot1/power/driver/reset has no server in this configuration  ({BATTERY}:18:22)",
         "+ new info [publisher-without-subscriber] /robot1/power/battery publishes "
         f"/robot1/power/battery/low but nothing subscribes to it  ({BATTERY}:16:24)",
         "+ new warning [subscriber-without-publisher] /robot1/power/battery subscribes to "

@@ -120,6 +120,24 @@ links:
   - {{kind: server, node: /map_b, name: /static_map, type: nav_msgs/GetMap,
      conditions: [{NAV350}]}}
 """, "compare(NAV_350) == 0)"),
+    # the call itself is conditional, then its only server is
+    "client-without-server": (f"""
+links:
+  - {{kind: client, node: /ui, name: /arm/home, type: std_srvs/Trigger,
+     conditions: [{NAV350}]}}
+""", "compare(NAV_350) == 0)"),
+    "client-without-server#action#partner": (f"""
+links:
+  - {{kind: action-client, node: /ui, name: /arm/move, type: arm_msgs/Move}}
+  - {{kind: action-server, node: /arm, name: /arm/move, type: arm_msgs/Move,
+     conditions: [{NAV350}]}}
+""", "compare(NAV_350) == 0)"),
+    "client-without-server#partner": (f"""
+links:
+  - {{kind: client, node: /ui, name: /arm/home, type: std_srvs/Trigger}}
+  - {{kind: server, node: /arm, name: /arm/home, type: std_srvs/Trigger,
+     conditions: [{JOY}]}}
+""", "if ($(arg joy)) at launch/a.launch:3"),
     "parameter-type-mismatch": (f"""
 parameters:
   - {{name: /base/rate, type: str, value: fast, writers: ["<launch>"], conditions: [{JOY}]}}

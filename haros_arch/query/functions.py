@@ -328,6 +328,29 @@ FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure
                                           charged=True)
 
 
+# services a node offers by itself, under names its author does not choose, so that a
+# client of one has its server wherever the node runs: ROS 2's parameter services and
+# type description service of every node, a lifecycle node's state services, ROS 1's
+# logger services of every roscpp node, dynamic_reconfigure's ``<server>/set_parameters``
+_OWN_SERVICES = frozenset({
+    "get_parameters", "get_parameter_types", "set_parameters", "set_parameters_atomically",
+    "describe_parameters", "list_parameters", "get_type_description",
+    "change_state", "get_state", "get_available_states", "get_available_transitions",
+    "get_transition_graph", "get_loggers", "set_logger_level"})
+
+
+def is_own_service(charge: Charge, name: Any) -> bool:
+    """True for a service name that every node (or every lifecycle node, or
+    dynamic_reconfigure server) offers by itself: its last segment is one of them."""
+    if not isinstance(name, str):
+        return False
+    charge(1)
+    return name.rsplit("/", 1)[-1] in _OWN_SERVICES
+
+
+FUNCTIONS["is_own_service"] = Function("is_own_service", is_own_service, charged=True)
+
+
 # checks that claim an absence, and similar-name pairing through an index (absence.py)
 FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 3, charged=True)
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)

@@ -79,6 +79,8 @@ class Ros1Loader:
         self.default_machine: str | None = None
         self.node_names: dict[str, list[tuple[Location, tuple[Condition, ...]]]] = {}
         self.includes = 0
+        # the first <param> tag of each name per parent element (LAUNCH_PARAM_SET_TWICE)
+        self.param_tags: dict[tuple[int, str, str, tuple[str, ...]], Element] = {}
         # the if/unless of the element being handled, for the launch tree
         self.guard: LaunchCondition | None = None
         self.tags: dict[str, Callable[[Element, Scope], None]] = {

@@ -60,6 +60,7 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
         loader.fail(scope, element, f"invalid <param> {name}: unknown type '{kind}'")
         return
     where = loader.where(scope, element)
+    set_twice(loader, element, scope, name)
     # the command line the value comes from (textfile: the file's content, as cat gives it)
     command = raw.text if source == "command" else (
         f"cat {shlex.quote(raw.text)}" if source == "textfile" else None)
@@ -72,6 +73,20 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
     else:
         add_param(loader, join(scope.ns, name), value, declared, scope.conditions, where,
                   source, command)
+
+def set_twice(loader: Ros1Loader, element: Element, scope: Scope, name: str) -> None:
+    """``LAUNCH_PARAM_SET_TWICE`` when an earlier ``<param>`` child of the same element
+    set ``name`` in the same namespace under the same conditions (neither tag with an
+    ``if`` / ``unless`` of its own): roslaunch silently keeps the later value."""
+    parent = element.getparent()
+    if parent is None or element.get("if") is not None or element.get("unless") is not None:
+        return
+    key = (id(parent), scope.ns, name, tuple(c.text for c in scope.conditions))
+    first = loader.param_tags.setdefault(key, element)
+    if first is not element and first.getparent() is parent:
+        loader.report("LAUNCH_PARAM_SET_TWICE", scope, element, name=name,
+                      line=first.sourceline)
+
 
 def param_value(loader: Ros1Loader, source: str, text: str, kind: str, scope: Scope,
                 element: Element) -> Any:
