@@ -844,7 +844,7 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     if value is None:
         value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
     if value is None:
-        value = _list_default(call, instance)
+        value = _code_default(call, instance, list)
     elements = list(value.values()) if isinstance(value, dict) else value
     if not isinstance(elements, list):
         return [call]
@@ -872,12 +872,8 @@ def _word_calls(call: PrimitiveCall, instance: NodeInstance, param: Any, value: 
     no turn); without either, the call as it is."""
     if value is None and isinstance(param, Parameter) and param.is_set:
         return [call]  # set to a value not known here, or under a condition
-    if value is None and instance.node is not None:
-        found = {c.default for c in instance.node.calls
-                 if c.kind in ("declare", "read") and c.name == call.name_param
-                 and c.has_default and isinstance(c.default, str)
-                 and c.node_name == call.node_name}
-        value = found.pop() if len(found) == 1 else None
+    if value is None:
+        value = _code_default(call, instance, str)
         param = None  # a default: no launch conditions
     if not isinstance(value, str):
         return [call]
@@ -890,16 +886,18 @@ def _word_calls(call: PrimitiveCall, instance: NodeInstance, param: Any, value: 
                     name_default=None, name_each=None, conditions=kept) for word in words]
 
 
-def _list_default(call: PrimitiveCall, instance: NodeInstance) -> list[Any] | None:
-    """The list a node's code gives a list parameter when nothing sets it: the one
-    default of its declarations and reads with a known list default (``declare_parameter(
-    "wheels", std::vector<std::string>{"left", "right"})``, ``declare_parameter('robots',
-    ['r1'])``); None when there is none or they disagree."""
+def _code_default(call: PrimitiveCall, instance: NodeInstance, kind: type) -> Any:
+    """The value of ``kind`` a node's code gives the parameter that names ``call`` when
+    nothing sets it: the one default of its declarations and reads with a known default
+    of that kind (a list: ``declare_parameter("wheels", std::vector<std::string>{"left",
+    "right"})``, ``declare_parameter('robots', ['r1'])``; a string whose words name the
+    calls: costmap_2d's ``observation_sources``, ``""``); None when there is none or they
+    disagree."""
     if instance.node is None:
         return None
     found = [c.default for c in instance.node.calls
              if c.kind in ("declare", "read") and c.name == call.name_param and c.has_default
-             and isinstance(c.default, list) and c.node_name == call.node_name]
+             and isinstance(c.default, kind) and c.node_name == call.node_name]
     return found[0] if found and all(d == found[0] for d in found) else None
 
 

@@ -526,13 +526,13 @@ def _presence_value(config: Configuration, instance: NodeInstance, file: str | N
              and link.call.name.lstrip("~").endswith(written.lstrip("~"))}
     if not found:
         return Unknown(f"no read of {written} in {file}")
-    answers = {_present(config, link, kind, made, at) for link in found.values()}
+    present = {key: _present(config, link, kind, made, at) for key, link in found.items()}
+    answers = set(present.values())
     if len(answers) > 1 and near is not None:
         shared = {key: _shared_namespace(link.resource.name, near)
                   for key, link in found.items()}
         best = max(shared.values())
-        answers = {_present(config, link, kind, made, at) for key, link in found.items()
-                   if shared[key] == best}
+        answers = {present[key] for key in found if shared[key] == best}
     if len(answers) != 1:
         return Unknown(f"the reads of {written} differ")
     return answers.pop()

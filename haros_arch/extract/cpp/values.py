@@ -569,12 +569,10 @@ class Scope:
         if found is None or self.body is None:
             return None
         before, where = found
-        ordered = sorted(before, key=lambda w: w[1])
-        always = [i for i, (start, _end, _v) in enumerate(ordered)
-                  if not self._may_skip(start, where)]
-        if not always or len(ordered) - always[-1] != 2:
+        reaching = self._from_last_always(before, where)
+        if reaching is None or len(reaching) != 2:
             return None
-        (_s, _e, first), (start, _end, side) = ordered[always[-1]:]
+        (_s, _e, first), (start, _end, side) = reaching
         if first is None or side is None:
             return None
         values = [self.string(first, depth + 1), self.string(side, depth + 1)]
@@ -617,12 +615,10 @@ class Scope:
         the one searched for either way). The first of them (the name a search found
         covers the one it started from); None when any differs, is not known, or no
         write always runs (a variable declared without a value: what it held first)."""
-        ordered = sorted(before, key=lambda w: w[1])
-        always = [i for i, (start, _end, _v) in enumerate(ordered)
-                  if not self._may_skip(start, where)]
-        if not always:
+        writes = self._from_last_always(before, where)
+        if writes is None:
             return None
-        reaching = [value for _start, _end, value in ordered[always[-1]:]]
+        reaching = [value for _start, _end, value in writes]
         known = [value for value in reaching if value is not None]
         if len(known) < len(reaching):
             return None
@@ -630,6 +626,16 @@ class Scope:
         if any(part is None for part in texts[0]) or any(t != texts[0] for t in texts[1:]):
             return None
         return known[0]
+
+    def _from_last_always(self, before: list[tuple[int, int, Cursor | None]], where: int
+                          ) -> list[tuple[int, int, Cursor | None]] | None:
+        """The writes that may reach a read at ``where``, in order: the last of
+        ``before`` that always runs before it and every later one (each in a branch,
+        loop or lambda the read is outside of); None when none always runs."""
+        ordered = sorted(before, key=lambda w: w[1])
+        always = [i for i, (start, _end, _v) in enumerate(ordered)
+                  if not self._may_skip(start, where)]
+        return ordered[always[-1]:] if always else None
 
     def _in_lambda(self, first: int, last: int) -> bool:
         return (first, last) in self._lambdas
