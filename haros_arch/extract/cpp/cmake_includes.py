@@ -60,11 +60,7 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
     package = workspace.package_of(root)
     project = package.name if package is not None and package.root == root and (
         package.build_type in ("ament_cmake", "catkin")) else None
-    texts: list[tuple[str, str]] = []
-    for path in cmake_files(root):
-        text, _ = read_text(path, workspace.location(path))
-        texts.append((path, _COMMENT.sub("", text or "")))
-    variables = _variables(text for _, text in texts)
+    texts, variables = _cmake_texts(root, workspace)
     for path, text in texts:
         here = _source_dir(path, root)
         for match in _COMMAND.finditer(text):
@@ -82,6 +78,17 @@ def cmake_include_dirs(root: str, workspace: Workspace) -> list[str]:
     return found
 
 
+def _cmake_texts(root: str, workspace: Workspace
+                 ) -> tuple[list[tuple[str, str]], dict[str, list[str]]]:
+    """The CMake files of package ``root``, each with its text without comments, and
+    the variables they set (``_variables``)."""
+    texts: list[tuple[str, str]] = []
+    for path in cmake_files(root):
+        text, _ = read_text(path, workspace.location(path))
+        texts.append((path, _COMMENT.sub("", text or "")))
+    return texts, _variables(text for _, text in texts)
+
+
 def exported_include_dirs(root: str, workspace: Workspace) -> list[str]:
     """The folders of package ``root`` that its ``catkin_package(INCLUDE_DIRS ...)``
     exports: what catkin puts in ``${catkin_INCLUDE_DIRS}`` of a package that finds it,
@@ -89,11 +96,7 @@ def exported_include_dirs(root: str, workspace: Workspace) -> list[str]:
     ``utils/opencv_yaml_parse.h`` is that ov_init and ov_msckf include)."""
     root = os.path.abspath(root)
     found: list[str] = []
-    texts: list[tuple[str, str]] = []
-    for path in cmake_files(root):
-        text, _ = read_text(path, workspace.location(path))
-        texts.append((path, _COMMENT.sub("", text or "")))
-    variables = _variables(text for _, text in texts)
+    texts, variables = _cmake_texts(root, workspace)
     for path, text in texts:
         here = _source_dir(path, root)
         for match in _CATKIN_PACKAGE.finditer(text):
