@@ -832,36 +832,103 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     under a condition); without such a value, the call as it is (its name keeps its
     ``?``)."""
     if call.name_each is None or call.name_param is None:
-        return [call]
-    source = _node_scoped(call.name_param) if instance.ros_version == 2 else call.name_param
-    full = RosName.make(source, instance.namespace, instance.name).full
+        return _element_turns(call, instance, resources)
+    full = _list_name(call.name_param, instance)
     if call.name_each == NUMBERED:
         return _numbered_calls(call, full, resources)
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
     if call.name_each == WORDS:
         return _word_calls(call, instance, param, value)
-    if value is None:
-        value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
-    if value is None:
-        value = _code_default(call, instance, list)
-    elements = list(value.values()) if isinstance(value, dict) else value
-    if not isinstance(elements, list):
+    elements = _list_elements(call, instance, resources, full)
+    if elements is None:
         return [call]
     if not elements and not (isinstance(param, Parameter) and param.launch_conditions):
         # an empty list, given unconditionally or the code's default: the loop over it
         # makes nothing (warthog's twist_mux ``<rosparam param="locks">[]</rosparam>``)
         return []
-    names = [name for name in (_element_name(item, call.name_each) for item in elements)
-             if name is not None]
-    if not names:
+    named = [(name, item) for name, item in (
+        (_element_name(item, call.name_each), item) for item in elements) if name is not None]
+    if not named:
         return [call]
     # the loop over the list that the extractor saw is what these calls stand for
     kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     # the element is the whole name, or its one unknown run (``polygon_name + ".type"``)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
     return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
-                    name_default=None, name_each=None, conditions=kept) for name in names]
+                    name_default=None, name_each=None,
+                    conditions=_element_conditions(kept, call.name_param, item))
+            for name, item in named]
+
+
+def _list_name(param: str, instance: NodeInstance) -> str:
+    """The full name of the list parameter a call's code names ``param``."""
+    source = _node_scoped(param) if instance.ros_version == 2 else param
+    return RosName.make(source, instance.namespace, instance.name).full
+
+
+def _list_elements(call: PrimitiveCall, instance: NodeInstance, resources: Resources,
+                   full: str) -> list[Any] | None:
+    """The elements of the list parameter ``full`` in this configuration: the launch
+    files' value, the ROS 2 parameters under its prefix (ROS 1: a dictionary's leaves),
+    else the node's code default; None when none is known."""
+    param = resources.by_name.get((Parameter, full))
+    value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if value is None:
+        value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
+    if value is None and call.name_param is not None and _list_name(
+            call.name_param, instance) == full:
+        value = _code_default(call, instance, list)
+    elements = list(value.values()) if isinstance(value, dict) else value
+    return elements if isinstance(elements, list) else None
+
+
+def _element_conditions(conditions: tuple[Condition, ...], listed: str | None, item: Any
+                        ) -> tuple[Condition, ...]:
+    """``conditions`` for the turn of the loop over the list parameter ``listed`` that
+    handles ``item``: a name a condition uses for that element, or a field of it
+    (``Condition.elements``), is given its value, as a constant the graph decides it
+    with (``graph.conditions.decide``)."""
+    out = []
+    for condition in conditions:
+        values = [(name, value) for name, lst, field in condition.elements or ()
+                  if lst == listed and (value := _element_value(item, field)) is not None]
+        out.append(condition if not values else replace(
+            condition, constants=(*(condition.constants or ()), *values),
+            elements=tuple(e for e in condition.elements or () if e[1] != listed) or None))
+    return tuple(out)
+
+
+def _element_turns(call: PrimitiveCall, instance: NodeInstance, resources: Resources
+                   ) -> list[PrimitiveCall]:
+    """A call whose name is known, under a condition over each element of a list
+    parameter in turn (costmap_2d copies ``~map_topic`` for each plugin ``if
+    (plugin_type == "costmap_2d::StaticLayer")``): one call per element the list is
+    known to hold, each under its turn's conditions (the same ones once); as it is when
+    the conditions name several lists or the list's value is not known."""
+    lists = {lst for c in call.conditions for _, lst, _ in c.elements or ()}
+    if len(lists) != 1:
+        return [call]
+    listed = lists.pop()
+    full = _list_name(listed, instance)
+    elements = _list_elements(call, instance, resources, full)
+    if elements is None:
+        return [call]
+    param = resources.by_name.get((Parameter, full))
+    if not elements and isinstance(param, Parameter) and param.launch_conditions:
+        return [call]  # empty only where the launch file's condition holds
+    turns: dict[tuple[Condition, ...], PrimitiveCall] = {}
+    for item in elements[:_NUMBERED_LIMIT]:
+        conditions = _element_conditions(call.conditions, listed, item)
+        turns.setdefault(conditions, replace(call, conditions=conditions))
+    return list(turns.values())
+
+
+def _element_value(item: Any, field: str) -> str | int | float | bool | None:
+    """The value of ``item``'s ``field`` (``.``: the item itself), when it is a plain
+    value."""
+    value = item if field == "." else item.get(field) if isinstance(item, dict) else None
+    return value if isinstance(value, str | int | float | bool) else None
 
 
 def _word_calls(call: PrimitiveCall, instance: NodeInstance, param: Any, value: Any

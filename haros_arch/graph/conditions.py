@@ -559,11 +559,18 @@ def _present(config: Configuration, link: Link, kind: str, made: dict[str, Any],
     unknown = Unknown(f"whether {param.name} is set")
     before = [w for w in param.setters
               if at is None or not any(c.location == at for c in w.conditions)]
-    if param.is_unresolved or before:
-        return unknown
     prefix = param.name.rstrip("/") + "/"
     set_here = [p for p in config.parameters if p.set_by_launch and (
         p is param or p.name.startswith(prefix))]
+    if kind == "has" and before and param.set_by_launch and not param.is_unresolved and not (
+        param.launch_conditions or len(param.writers) != len(param.setters)
+    ):
+        # set by the launch file, and never deleted: the node's own writes of it only
+        # give it another value (costmap_2d tests ``plugins`` again after its old
+        # parameters' migration may have set it)
+        return True
+    if param.is_unresolved or before:
+        return unknown
     if set_here:
         if any(p.launch_conditions or p.is_unresolved for p in set_here):
             return unknown
@@ -671,6 +678,7 @@ def decide_links(config: Configuration) -> None:
     """Take off each link the source conditions this configuration decides: a link
     under a false one is dropped (CONDITION_FALSE says so), a true one is removed."""
     dropped: list[Link] = []
+    falses: list[tuple[Link, Condition]] = []
     made: dict[str, Any] = {}
     for instance in config.nodes:
         members = _member_values(instance, config, made)
@@ -689,12 +697,23 @@ def decide_links(config: Configuration) -> None:
                     kept.append(condition)
             if false is not None:
                 dropped.append(link)
-                where = f"{false.location.file}:{false.location.line}"
-                config.diagnostics.append(diag.make(
-                    "CONDITION_FALSE", link.location, node=instance.name, kind=link.kind,
-                    name=link.rosname.full, condition=str(false), where=where))
+                falses.append((link, false))
             elif len(kept) != len(link.conditions):
                 link.conditions = tuple(kept)
+        # a call made in one turn of a loop over a list and not in another (graph.build.
+        # element_calls) is there: no word of the turns that do not make it
+        gone = set(map(id, dropped))
+        made_here = {(k.location, k.kind, k.rosname.full) for k in instance.links
+                     if id(k) not in gone}
+        for link, false in falses:
+            if (link.location, link.kind, link.rosname.full) in made_here:
+                continue
+            made_here.add((link.location, link.kind, link.rosname.full))  # said once
+            where = f"{false.location.file}:{false.location.line}"
+            config.diagnostics.append(diag.make(
+                "CONDITION_FALSE", link.location, node=instance.name, kind=link.kind,
+                name=link.rosname.full, condition=str(false), where=where))
+        falses.clear()
     if dropped:
         drop_links(config, dropped)
 

@@ -77,8 +77,17 @@ class Condition:
     # the names its text uses that are constants of the code, each with its value: a
     # ``const`` integer or bool initialised by a literal (neonavigation_common's ``const
     # int current_level = 1;`` in ``if (getCompat() != current_level)``), which the graph
-    # decides it with
-    constants: tuple[tuple[str, int | bool], ...] | None = field(
+    # decides it with; in a configuration's graph also the value a name of ``elements``
+    # has in one turn of the loop over its list (``graph.build.element_calls``)
+    constants: tuple[tuple[str, int | bool | float | str], ...] | None = field(
+        default=None, metadata={"optional": True})
+    # the names its text uses that hold each element of a list parameter in turn, or a
+    # field of it: (name, the list parameter, the field as ``PrimitiveCall.name_each``
+    # writes it). costmap_2d's ``copyParentParameters(pname, type, nh)`` copies the
+    # parameters of each ``plugins[i]`` under ``if (plugin_type ==
+    # "costmap_2d::StaticLayer")``, its ``type``: the graph, making one call per element
+    # of that list (``graph.build.element_calls``), decides it with that element's value
+    elements: tuple[tuple[str, str, str], ...] | None = field(
         default=None, metadata={"optional": True})
 
     def __str__(self) -> str:

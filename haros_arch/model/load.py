@@ -74,7 +74,8 @@ def conditions(data: Any) -> tuple[Condition, ...]:
                                    _compares(item.get("compares")),
                                    tuple(n for n in item.get("runs") or ()
                                          if isinstance(n, int)),
-                                   _constants(item.get("constants"))))
+                                   _constants(item.get("constants")),
+                                   _elements(item.get("elements"))))
     return tuple(found)
 
 
@@ -97,14 +98,25 @@ def _held(data: Any) -> tuple[tuple[str, str], ...] | None:
     return found or None
 
 
-def _constants(data: Any) -> tuple[tuple[str, int | bool], ...] | None:
-    """A condition's (constant, value) pairs as the JSON model lists them: integers and
-    bools only."""
+def _constants(data: Any) -> tuple[tuple[str, int | bool | float | str], ...] | None:
+    """A condition's (constant, value) pairs as the JSON model lists them: plain
+    values only (integers and bools of the code; an element's value in a graph)."""
     if not isinstance(data, list):
         return None
     found = tuple((str(pair[0]), pair[1]) for pair in data
                   if isinstance(pair, list | tuple) and len(pair) == 2
-                  and isinstance(pair[1], int))
+                  and isinstance(pair[1], int | float | str))
+    return found or None
+
+
+def _elements(data: Any) -> tuple[tuple[str, str, str], ...] | None:
+    """A condition's (name, list parameter, field) triples as the JSON model lists
+    them."""
+    if not isinstance(data, list):
+        return None
+    found = tuple((item[0], item[1], item[2]) for item in data
+                  if isinstance(item, list | tuple) and len(item) == 3
+                  and all(isinstance(part, str) for part in item))
     return found or None
 
 

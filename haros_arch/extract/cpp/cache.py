@@ -278,7 +278,9 @@ def _conditions(data: Any) -> tuple[Condition, ...]:
         (str(local), str(param)) for local, param in c["parameters"]) if c.get(
         "parameters") else None, "runs": tuple(c.get("runs") or ()), "constants": tuple(
         (str(name), value) for name, value in c["constants"]) if c.get(
-        "constants") else None}) for c in data)
+        "constants") else None, "elements": tuple(
+        (str(name), str(listed), str(field)) for name, listed, field in c["elements"]) if c.get(
+        "elements") else None}) for c in data)
 
 
 def _pairs(data: dict[str, Any], key: str) -> list[tuple[str, str]]:

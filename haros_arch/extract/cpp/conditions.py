@@ -68,6 +68,9 @@ class ConditionReader:
         # the constants a tested expression names, with their values (``Condition.
         # constants``)
         self.constants: Callable[[Cursor], tuple[tuple[str, int | bool], ...]] | None = None
+        # the names a tested expression uses that hold each element of a list parameter
+        # (``Condition.elements``)
+        self.elements: Callable[[Cursor], tuple[tuple[str, str, str], ...]] | None = None
         # the ``try`` conditions whose handlers catch a parameter's failure: a read in the
         # block is prepared for the parameter not being set (``PrimitiveCall.tested``)
         self.handled: set[Condition] = set()
@@ -190,7 +193,8 @@ class ConditionReader:
                 else:
                     text = " || ".join(f"{value} == {t}" for t in texts)
                 condition = dataclasses.replace(self._condition(start, "switch", text),
-                                                parameters=switch.parameters)
+                                                parameters=switch.parameters,
+                                                elements=switch.elements)
             if statement.kind not in _LABELS:
                 out.append((statement, (condition,)))
         return out
@@ -202,9 +206,11 @@ class ConditionReader:
         held = self.held(tested) if tested is not None and self.held is not None else ()
         constants = self.constants(tested) if tested is not None and (
             self.constants is not None) else ()
+        elements = self.elements(tested) if tested is not None and (
+            self.elements is not None) else ()
         return Condition(text, "source", statement, self.where(node), self.in_main,
                          self.args_left if self.in_main else None, held or None,
-                         constants=constants or None)
+                         constants=constants or None, elements=elements or None)
 
     def choice(self, node: Cursor, statement: str, test: Cursor) -> Condition:
         """The condition of a side of the ``?:`` ``node`` whose test is ``test``: ``if``
@@ -213,15 +219,18 @@ class ConditionReader:
 
     def enter(self, function: Cursor, arguments_left: frozenset[str],
               held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None,
-              constants: Callable[[Cursor], tuple[tuple[str, int | bool], ...]] | None = None
+              constants: Callable[[Cursor], tuple[tuple[str, int | bool], ...]] | None = None,
+              elements: Callable[[Cursor], tuple[tuple[str, str, str], ...]] | None = None
               ) -> None:
         """Read the conditions of ``function`` next: whether it is ``main(argc, argv)``,
         and its local initialised by a call of ``arguments_left`` (rclcpp's
         ``init_and_remove_ros_arguments``), when it has one such local; ``held`` tells
         the locals of a tested expression that hold a parameter's value, ``constants``
-        the constants it names with their values."""
+        the constants it names with their values, ``elements`` the names that hold each
+        element of a list parameter in turn."""
         self.held = held
         self.constants = constants
+        self.elements = elements
         params = [c.spelling for c in function.get_children()
                   if c.kind == CursorKind.PARM_DECL]
         self.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]

@@ -288,7 +288,11 @@ def _named_by(call: PrimitiveCall) -> PrimitiveCall:
     if len(marks) != 1 or name.count("?") != 1 or call.name_param is not None:
         return dataclasses.replace(call, name=name)
     param, each = marks[0]
-    return dataclasses.replace(call, name=name, name_param=param, name_each=each or None)
+    if PLACEHOLDER in param or "?" in param:  # named after what no file passes, or
+        # after what several pass
+        return dataclasses.replace(call, name=name)
+    return dataclasses.replace(call, name=name, name_param=normalise(param),
+                               name_each=each or None)
 
 
 # ``made_in`` of one alternative of a call whose member the class's constructors give
@@ -424,8 +428,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         if raw_param is not None:
             call = dataclasses.replace(call, name_param=_parameter_filled(raw_param,
                                                                           known.passed))
+        # the lists a condition's names hold elements of (``Condition.elements``) read on
+        # such a handle: filled as the name is
+        lists = sorted({listed for c in call.conditions for _, listed, _ in c.elements or ()
+                        if PLACEHOLDER in listed})
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
-            out.append(call)
+            out.append(_lists_filled(call, {listed: _parameter_filled(listed, known.passed)
+                                            for listed in lists}))
             continue
         namespace = call.handle_namespace
         written = call.name
@@ -436,17 +445,23 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         text = f"{namespace or ''}{_SPLIT}{written}"
         if raw_param is not None:
             text += _PARAM_SPLIT + _param_text(raw_param)
+        if lists:
+            text += "".join(_LIST_SPLIT + _param_text(listed) for listed in lists)
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
+            filled, *lists_text = filled.split(_LIST_SPLIT)
             filled, _, param_text = filled.partition(_PARAM_SPLIT)
             ns, _, name = filled.partition(_SPLIT)
+            # (a parameter's mark in the namespace names the call, as one in the name
+            # does: costmap_2d's ``ros::NodeHandle target_layer(nh, plugin_name)``)
+            marked = normalise(ns) if ns else ""
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
                 name = "~" + name[2:]
             made = dataclasses.replace(
-                call, name=join_name(ns, name) if ns else name,
+                call, name=join_name(marked, name) if ns else name,
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
                 camera_of=call.camera_of if call.camera_of is None or (
                     PLACEHOLDER not in call.camera_of) else (
@@ -456,7 +471,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 filled_param = _param_joined(param_text)
                 if filled_param and PLACEHOLDER not in filled_param:
                     made = dataclasses.replace(made, name_param=filled_param)
-            made = _named_by(made)
+            made = _named_by(_lists_filled(made, dict(zip(lists, map(
+                _param_joined, lists_text), strict=False))))
             whole = _MARK.fullmatch(written) if not namespace else None
             classes = known.hosted.get((whole.group(1), int(whole.group(2)))) if (
                 whole) else None
@@ -470,6 +486,23 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
+_LIST_SPLIT = "\x0f"  # before each list of its conditions' elements expanded with it
+
+
+def _lists_filled(call: PrimitiveCall, filled: dict[str, str]) -> PrimitiveCall:
+    """``call`` with the lists of its conditions' elements (``Condition.elements``)
+    named as ``filled`` gives them; an element of a list still not known is dropped
+    (its condition stays undecided)."""
+    if not filled:
+        return call
+    conditions = []
+    for condition in call.conditions:
+        elements = tuple((name, filled.get(listed, listed), field)
+                         for name, listed, field in condition.elements or ())
+        kept = tuple(e for e in elements if PLACEHOLDER not in e[1] and "?" not in e[1])
+        conditions.append(condition if elements == condition.elements else (
+            dataclasses.replace(condition, elements=kept or None)))
+    return dataclasses.replace(call, conditions=tuple(conditions))
 
 
 def _param_text(param: str) -> str:

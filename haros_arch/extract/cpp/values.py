@@ -411,6 +411,10 @@ class Scope:
                 args = list(node.get_arguments())
                 if node.spelling == "operator=" and len(args) == 2:
                     args = []  # a write, not a call the variable is passed to
+                elif node.spelling == "operator[]" and len(args) == 2:
+                    # an element of it (``list[i]["name"]``), not the variable given
+                    # away: what filled it (``getParam("plugins", list)``) still holds
+                    args = args[1:]
                 for index, arg in enumerate(args):
                     if arg.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) \
                             and arg.referenced is not None:

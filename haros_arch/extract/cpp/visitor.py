@@ -301,6 +301,8 @@ class CallFinder:
         self.members: MemberWrites | None = None
         # a local's place -> the parameter it holds the value of, if any (_held_parameters)
         self._held: dict[tuple[str, int], str | None] = {}
+        # the list and field each local or parameter of a condition holds an element of
+        self._held_each: dict[tuple[str, int], tuple[str, str] | None] = {}
         # a call's place -> the parameter whose value it returns, if any (_held_call)
         self._held_calls: dict[tuple[str, int], str | None] = {}
         # a wrapper call's place -> whether it returns the parameter's value (_gives_value)
@@ -482,7 +484,8 @@ class CallFinder:
             return
         self.reader.enter(function, ARGUMENTS_LEFT,
                           functools.partial(self._held_parameters, scope=scope),
-                          functools.partial(self._held_constants, scope=scope))
+                          functools.partial(self._held_constants, scope=scope),
+                          functools.partial(self._held_elements, scope=scope))
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
@@ -1709,14 +1712,15 @@ class CallFinder:
         held = self._parameter_source(unknown_from[0], unknown_from[1], 0) if (
             unknown_from is not None and not self.ros2 and namespace is not None
             and namespace.count("?") == 1) else None
+        # ... or each element of a list parameter in turn (costmap_2d's ``ros::NodeHandle
+        # target_layer(nh, plugin_name)``, ``plugin_name`` each ``plugins[i]["name"]``)
+        each = self._each_element(unknown_from[0], unknown_from[1]) if (
+            held is None and unknown_from is not None and not self.ros2
+            and namespace is not None and namespace.count("?") == 1) else None
+        held_source = (*held, None, None) if held is not None else (
+            (each[0], None, None, each[2], each[1]) if each is not None
+            and each[0] is not None else None)
         for written, source in names:
-            if source is not None and source[4] is not None:
-                # the loop over the list: one call per element, each made by that
-                # element's turn (the graph drops it where it knows the elements)
-                conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
-                    c.statement in ("for", "while")
-                    and (c.location.line, c.location.column) == source[4]
-                ) else c for c in conditions)
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
             handle_namespace = None
@@ -1730,10 +1734,17 @@ class CallFinder:
                 if namespace and not self.ros2 and not _private(written).startswith(
                         ("/", "~")):
                     handle_namespace = namespace
-            if source is None and held is not None and handle_namespace == namespace and (
-                name.count("?") == 1
+            if source is None and held_source is not None and (
+                handle_namespace == namespace and name.count("?") == 1
             ):
-                source = (*held, None, None)
+                source = held_source
+            if source is not None and source[4] is not None:
+                # the loop over the list: one call per element, each made by that
+                # element's turn (the graph drops it where it knows the elements)
+                conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
+                    c.statement in ("for", "while")
+                    and (c.location.line, c.location.column) == source[4]
+                ) else c for c in conditions)
             # a Gazebo plugin's handle in the namespace its SDF gives, and a name its SDF
             # gives too: both filled from the description (robot.attach)
             namespace_param = held[0] if (
@@ -1958,7 +1969,8 @@ class CallFinder:
         # the one unknown part: the whole name, or a run of it that the text around keeps
         # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
         unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
-            inner) is not None else _unknown_operands(expr, scope)
+            inner) is not None or _element_field(inner) is not None else _unknown_operands(
+            expr, scope)
         one = strip(unknown[0]) if len(unknown) == 1 else _string_of_variable(inner)
         each = self._each_element(one, scope) if one is not None else None
         if each is not None:
@@ -1992,8 +2004,11 @@ class CallFinder:
         if depth > MAX_DEPTH:
             return None
         expr = strip(expr)
-        walk, over, mark = _element_loop(expr, scope)
-        if walk is not None and over is not None:
+        field = _element_field(expr)
+        walk, over, mark = _element_loop(field[0] if field else expr, scope)
+        if field is not None:
+            mark = field[1] if mark == EACH else ""  # a field of each element in turn
+        if walk is not None and over is not None and mark:
             listed = self._parameter_source(over, scope, 0)
             return (listed[0] if listed is not None else None,
                     (walk.location.line, walk.location.column), mark)
@@ -2016,7 +2031,8 @@ class CallFinder:
             return None
         operands = _unknown_operands(held, scope)
         inner = strip(held)
-        if not operands and inner.kind == CursorKind.DECL_REF_EXPR:
+        if not operands and (inner.kind == CursorKind.DECL_REF_EXPR or _element_field(
+                inner) is not None):
             operands = [inner]
         if len(operands) != 1 or None not in scope.string(held) or (
                 scope.string(held).count(None) != 1):
@@ -2115,6 +2131,33 @@ class CallFinder:
             if value is not None:
                 found[decl.spelling] = value
         return tuple(sorted(found.items()))
+
+    def _held_elements(self, tested: Cursor, scope: Scope
+                       ) -> tuple[tuple[str, str, str], ...]:
+        """The names ``tested`` uses that hold each element of a list parameter in turn,
+        or a field of it (``plugin_type`` of costmap_2d's ``copyParentParameters``, each
+        caller passing ``static_cast<std::string>(plugins[i]["type"])``): (name, the
+        list parameter, the field)."""
+        found: dict[str, tuple[str, str]] = {}
+        for node in tested.walk_preorder():
+            decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+            if decl is None or decl.kind not in (CursorKind.VAR_DECL, CursorKind.PARM_DECL) or (
+                decl.spelling in found or msg_types.param_type(node.type) != "str"
+            ):
+                continue  # (a list's elements that name calls are strings)
+            # a local's or parameter's elements are its function's: asked once per unit
+            key = place_of(decl)
+            if key not in self._held_each:
+                each = self._each_element(node, scope)
+                # (a list read on a handle another file's caller names: links.resolve
+                # fills its placeholders, site by site)
+                self._held_each[key] = (each[0], each[2]) if each is not None and (
+                    each[0] is not None and (known_name(each[0]) or _on_passed_handle(
+                        each[0])) and each[2] != EACH_WORD) else None
+            held = self._held_each[key]
+            if held is not None:
+                found[decl.spelling] = held
+        return tuple(sorted((name, listed, field) for name, (listed, field) in found.items()))
 
     def _typed_accessor(self, call: Cursor) -> None:
         """``get_parameter("x").as_int()``: the read (visited after this call, its
@@ -2311,8 +2354,11 @@ class CallFinder:
         parameter's value, with that parameter marked (``links.parameter_mark``)."""
         name, source = self._name(expr, scope)
         # (a parameter named after what other files pass is not known until they are
-        # read: its name stays unknown)
-        if source is None or PLACEHOLDER in name or not known_name(source[0]):
+        # read: its name stays unknown; but for one read on a handle whose namespace
+        # they pass, filled site by site as the name is: costmap_2d's ``plugins`` on
+        # the handle of the costmap's name)
+        if source is None or PLACEHOLDER in name or not (
+                known_name(source[0]) or _on_passed_handle(source[0])):
             return None
         return parameter_mark(name, source[0], source[3])
 
@@ -3062,6 +3108,15 @@ def _renames_itself(arg: Cursor) -> bool:
     return False
 
 
+def _on_passed_handle(name: str) -> bool:
+    """Whether a parameter's name is a ROS 1 handle's namespace that another file
+    passes (one placeholder, first) and a known name in it: ``~<name>/plugins``."""
+    head, slash, rest = name.partition(f"{PLACEHOLDER}/")
+    start, mark, _ = head.partition(PLACEHOLDER)
+    return bool(slash) and mark == PLACEHOLDER and start in ("", "~", "/", "~/") and (
+        known_name(rest)) and head.count(PLACEHOLDER) == 1
+
+
 def known_name(name: str) -> bool:
     """A parameter's name known in this file: no unknown run, no placeholder of what
     another file passes, no parameter mark."""
@@ -3078,6 +3133,35 @@ def _subscript(expr: Cursor) -> tuple[Cursor, Cursor] | None:
     else:
         return None
     return (args[0], args[1]) if len(args) == 2 else None
+
+
+def _element_field(expr: Cursor) -> tuple[Cursor, str] | None:
+    """(the element, the field) of a string taken from a field of a list's element
+    (``static_cast<std::string>(plugins[i]["name"])``: ROS 1's XmlRpcValue, an array of
+    structs that ``getParam`` fills; costmap_2d's ``plugins``, move_base's
+    ``recovery_behaviors``), through the string's copy and the value's conversion to a
+    string, else None."""
+    for _ in range(MAX_DEPTH):
+        expr = strip(expr)
+        target = expr.referenced if expr.kind == CursorKind.CALL_EXPR else None
+        children = [c for c in expr.get_children() if c.kind.is_expression()]
+        if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
+                len(children) == 1):
+            expr = children[0]  # std::string(..), a copy of the converted value
+        elif target is not None and target.kind == CursorKind.CONVERSION_FUNCTION and (
+                children and children[0].kind == CursorKind.MEMBER_REF_EXPR):
+            held = [c for c in children[0].get_children() if c.kind.is_expression()]
+            if not held:
+                return None
+            expr = held[0]  # value.operator std::string &()
+        else:
+            break
+    found = _subscript(expr)
+    if found is None:
+        return None
+    key = strip(found[1])
+    field = literal(key.spelling) if key.kind == CursorKind.STRING_LITERAL else None
+    return (found[0], field) if field and field not in (".", EACH_WORD) else None
 
 
 def _string_of_variable(expr: Cursor) -> Cursor | None:
