@@ -74,6 +74,16 @@ def git(gitdir: Path, *args: str) -> str | None:
     return done.stdout.strip() if done.returncode == 0 else None
 
 
+def _inside(member: tarfile.TarInfo, dest: str) -> tarfile.TarInfo | None:
+    """tarfile's ``data`` filter, leaving out (not failing on) what it refuses: a link
+    to an absolute path or out of the tree (ros_kortex's CMakeLists.txt, catkin's
+    workspace link to /opt/ros/.../toplevel.cmake), as a blob the mirror lacks is."""
+    try:
+        return tarfile.data_filter(member, dest)
+    except tarfile.FilterError:
+        return None
+
+
 def materialize(gitdir: Path, rev: str, dest: Path) -> None:
     """``rev``'s tree under ``dest``; blobs a mirror lacks are left out."""
     dest.mkdir(parents=True, exist_ok=True)
@@ -82,7 +92,7 @@ def materialize(gitdir: Path, rev: str, dest: Path) -> None:
     if done.returncode == 0:
         with tarfile.open(fileobj=BytesIO(done.stdout)) as archive:
             if hasattr(tarfile, "data_filter"):  # Python 3.10.12+, 3.11.4+
-                archive.extractall(dest, filter="data")
+                archive.extractall(dest, filter=_inside)
             else:
                 archive.extractall(dest)  # a tree of our own mirror
         return
