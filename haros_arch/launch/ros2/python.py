@@ -304,12 +304,30 @@ class Interpreter(Expressions):
                     "property": "property"}.get(func.decorator_list[0].id)
         return None
 
+    def enum_member(self, cls: PlainClass, args: list[Any], kwargs: dict[str, Any],
+                    node: ast.AST) -> Any:
+        """``Mode(value)`` of an ``Enum``: its member of that value (a member of its own,
+        itself), as Python looks it up; a value known that none has fails with Python's
+        ``ValueError`` (spot_ros2's ``DepthRegisteredMode(text.lower())``)."""
+        value = args[0] if len(args) == 1 and not kwargs else None
+        members = [m for m in cls.attributes.values()
+                   if isinstance(m, EnumMember) and m.cls == cls.name]
+        if isinstance(value, EnumMember) and value in members:
+            return value
+        if not isinstance(value, (str, int, float)):
+            return self.unsupported(node, f"call to the enum {cls.name} is not interpreted")
+        found = next((m for m in members if m.value == value), None)
+        if found is None:
+            return self.failed(node, f"{cls.name}({value!r}) fails",
+                               f"ValueError: {value!r} is not a valid {cls.name}")
+        return found
+
     def instantiate(self, cls: PlainClass, args: list[Any], kwargs: dict[str, Any],
                     node: ast.AST) -> Any:
         """``Cls(...)``: an instance, its ``__init__`` run on it, or a dataclass's fields
         set from the arguments and defaults (then its ``__post_init__``)."""
         if cls.enum:
-            return self.unsupported(node, f"call to the enum {cls.name} is not interpreted")
+            return self.enum_member(cls, args, kwargs, node)
         instance = Instance(cls)
         init = cls.methods.get("__init__")
         if init is not None:
@@ -697,11 +715,16 @@ class Interpreter(Expressions):
             self.block(stmt.orelse, env)
         else:
             text = _source(stmt.test)
-            # each branch from the names as they are before the ``if``; after it, a name
-            # is what the branch that goes on set (the other returns), else either's
+            # each branch from the names as they are before the ``if``, and the items of
+            # the dicts they hold; after it, a name (an item) is what the branch that
+            # goes on set (the other returns), else either's
             before = dict(env)
+            held = [(d, dict(d)) for d in self.dicts_held(env)]
             taken = self.branch(stmt.body, env, text)
             after_body = dict(env)
+            body_items = [dict(d) for d, _ in held]
+            for d, items in held:
+                _refill(d, items)
             env.clear()
             env.update(before)
             left = self.branch(stmt.orelse, env, f"not ({text})")
@@ -710,8 +733,12 @@ class Interpreter(Expressions):
             if left is not None:
                 env.clear()
                 env.update(after_body)
+                for (d, _), items in zip(held, body_items, strict=True):
+                    _refill(d, items)
             elif taken is None:
                 self.join(env, after_body)
+                for (d, _), items in zip(held, body_items, strict=True):
+                    self.join_items(d, items, text)
             returned = taken or left
             if returned is not None:
                 # one branch returns: that value is one the function may give, and
@@ -737,6 +764,52 @@ class Interpreter(Expressions):
                                     "statically")
             else:
                 env[name] = self.either([value, env[name]], f"{name}, set in both branches")
+
+    def dicts_held(self, env: dict[str, Any]) -> list[dict[Any, Any]]:
+        """The dicts the names of ``env`` and of the module hold, and those inside them
+        (lists, tuples, objects' attributes, and the attributes themselves), each once:
+        what a branch of an ``if`` may change in place (``d[key] = ...``,
+        ``d.update(...)``, ``obj.name = ...``), bounded."""
+        found: dict[int, dict[Any, Any]] = {}
+        stack = [v for scope in (env, self.globals) for name, v in scope.items()
+                 if not name.startswith("__")]
+        seen: set[int] = set()
+        while stack and len(seen) < _MAX_HELD:
+            value = stack.pop()
+            if id(value) in seen:
+                continue
+            seen.add(id(value))
+            if isinstance(value, dict):
+                found[id(value)] = value
+                stack.extend(value.values())
+            elif isinstance(value, (list, tuple)):
+                stack.extend(value)
+            elif isinstance(value, (Instance, Constructing, Record)):
+                stack.append(value.attributes)  # ``obj.name = ...`` changes it in place
+        return list(found.values())
+
+    def join_items(self, held: dict[Any, Any], body: dict[Any, Any], test: str) -> None:
+        """The items of a dict after an ``if`` whose test is not known, both branches
+        ``test`` having run on: ``held`` as the else branch left it, ``body`` as the body
+        left it.
+        An item both hold is ``either`` of the two values (``join``); one that a branch
+        alone set may be missing: its value is not known, unless it is an action (or a
+        composable node's description), which carries that branch's test already
+        (spot_ros2's ``if controllable: params.update({'leasing_mode': 'proxied'})``
+        set the parameter whatever ``controllable`` was)."""
+        items: dict[Any, Any] = {}
+        for key in [*body, *(k for k in held if k not in body)]:
+            if key in body and key in held:
+                value = body[key] if body[key] is held[key] else self.either(
+                    [body[key], held[key]], f"the item {key!r}, set in both branches of "
+                                            f"`if {test}`")
+            else:
+                value = body[key] if key in body else held[key]
+                if not isinstance(value, (e.Action, e.ComposableNode)):
+                    value = Unknown(f"the item {key!r}, set in one branch of `if {test}`"
+                                    " (a test not known statically)")
+            items[key] = value
+        _refill(held, items)
 
     def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
                ) -> _Return | None:
@@ -1059,6 +1132,13 @@ def checked_tree(text: str, path: str, workspace: Workspace
     return tree, None
 
 
+def _refill(held: dict[Any, Any], items: dict[Any, Any]) -> None:
+    """``held``, the same dict, holding ``items`` now."""
+    held.clear()
+    held.update(items)
+
+
+_MAX_HELD = 5000  # the values ``Interpreter.dicts_held`` looks through, at most
 _OUTER = "__outer__"  # a function's names declared ``global`` / ``nonlocal``: their scopes
 
 
