@@ -141,18 +141,21 @@ def generate_launch_description():
 def test_an_enum_called_with_a_value_is_its_member(write_tree):
     """spot_ros2's spot_image_publishers.launch.py: ``DepthRegisteredMode(text)`` of an
     Enum of the workspace gives the member of that value, so ``if mode is not
-    DepthRegisteredMode.FROM_SPOT:`` is decided; a value no member has fails as in
-    Python (said, unknown)."""
+    DepthRegisteredMode.FROM_SPOT:`` is decided; a loop over the Enum gives its members
+    (the argument's ``choices``); a value no member has fails as in Python (said,
+    unknown)."""
     model, _ = run(write_tree, """
 from enum import Enum
 
 class Mode(Enum):
     DISABLE = 'disable'
     FROM_SPOT = 'from_spot'
+    OFF = 'disable'  # an alias of DISABLE
 
 def setup(context):
     mode = Mode(LaunchConfiguration('mode').perform(context).lower())
-    params = {'registered': True, 'same': Mode(Mode.DISABLE) is Mode.DISABLE}
+    params = {'registered': True, 'same': Mode(Mode.DISABLE) is Mode.DISABLE,
+              'choices': [m.value for m in Mode]}
     if mode is not Mode.FROM_SPOT:
         params.update({'registered': False})
     return [Node(package='p', executable='e', name='n', parameters=[params])]
@@ -161,8 +164,8 @@ def generate_launch_description():
     return LaunchDescription([DeclareLaunchArgument('mode', default_value='From_Spot'),
                               OpaqueFunction(function=setup)])
 """)
-    assert {p.name: p.value for p in model.params} == {"/n/registered": True,
-                                                       "/n/same": True}
+    assert {p.name: p.value for p in model.params} == {
+        "/n/registered": True, "/n/same": True, "/n/choices": ["disable", "from_spot"]}
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
     model, _ = run(write_tree, """
 from enum import Enum
@@ -176,3 +179,29 @@ def generate_launch_description():
 """)
     assert any(d.code == "LAUNCH_PY_UNSUPPORTED" and "Mode('other') fails" in d.message
                for d in model.diagnostics)
+
+
+def test_an_and_with_an_unknown_operand_and_a_false_one_is_false(write_tree):
+    """spot_ros2's get_login_parameters: ``if not username and 'username' in params:``
+    with ``username`` an environment variable not known and ``params`` empty: false
+    whatever the variable is, so the body (a lookup that would fail) does not run; an
+    ``or`` with a true operand after an unknown one is true. An operand after the
+    unknown one runs under it: a node it makes is conditional."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    username = os.getenv('ROBOT_USER')
+    params = {}
+    nodes = []
+    if not username and 'username' in params:
+        username = params['username']
+        nodes.append(Node(package='p', executable='e', name='never'))
+    if username or 'x' not in params:
+        nodes.append(Node(package='p', executable='e', name='always'))
+    if username and nodes.append(Node(package='p', executable='e', name='maybe')):
+        pass
+    return LaunchDescription(nodes)
+""")
+    conditions = {n.name: [c.text for c in n.conditions] for n in model.nodes}
+    assert list(conditions) == ["/always", "/maybe"]
+    assert conditions["/always"] == [] and conditions["/maybe"] != []
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)

@@ -310,8 +310,7 @@ class Interpreter(Expressions):
         itself), as Python looks it up; a value known that none has fails with Python's
         ``ValueError`` (spot_ros2's ``DepthRegisteredMode(text.lower())``)."""
         value = args[0] if len(args) == 1 and not kwargs else None
-        members = [m for m in cls.attributes.values()
-                   if isinstance(m, EnumMember) and m.cls == cls.name]
+        members = _enum_members(cls)
         if isinstance(value, EnumMember) and value in members:
             return value
         if not isinstance(value, (str, int, float)):
@@ -701,8 +700,7 @@ class Interpreter(Expressions):
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
-        value = self.eval(stmt.test, env)
-        test = self.truth(value)
+        value, test = self.test_of(stmt.test, env)
         if launch_object(value) or id(stmt.test) in self.decided:
             # ``if LaunchConfigurationEquals(...):`` never tests it, nor does
             # ``if LaunchConfiguration('sim') == 'true':`` (always false) or ``not`` of one
@@ -747,6 +745,35 @@ class Interpreter(Expressions):
                     raise returned
                 self.returns[-1].append(returned.value)
                 self.guards.append(self.guard(text if taken is None else f"not ({text})"))
+
+    def test_of(self, node: ast.expr, env: dict[str, Any]) -> tuple[Any, bool | None]:
+        """The value of an ``if``'s test and its truth (None: not known). An ``and``
+        (``or``) with an operand not known still goes on to the operands after it, each
+        under that operand's test, as Python runs them only when it holds: one of them
+        false (true) makes the whole false (true) whatever the unknown was (spot_ros2's
+        ``if not username and _USERNAME in ros_params:`` with ``ros_params`` empty and
+        the environment variable not known ran its body, a lookup that fails)."""
+        if not isinstance(node, ast.BoolOp):
+            value = self.eval(node, env)
+            return value, self.truth(value)
+        is_and = isinstance(node.op, ast.And)
+        unknown: Any = None
+        depth = len(self.guards)
+        try:
+            for operand in node.values:
+                value, truth = self.test_of(operand, env)
+                if truth is None:
+                    unknown = value if unknown is None else unknown
+                    text = _source(operand)
+                    self.guards.append(self.guard(text if is_and else f"not ({text})"))
+                elif truth != is_and:  # short-circuits: decided whatever came before
+                    return value, truth
+        finally:
+            del self.guards[depth:]
+        if unknown is None:
+            return value, truth
+        return (unknown if isinstance(unknown, Unknown)
+                else Unknown(f"boolean {_source(node)}")), None
 
     def join(self, env: dict[str, Any], other: dict[str, Any]) -> None:
         """The names after an ``if`` whose test is not known, both branches having run
@@ -944,6 +971,8 @@ class Interpreter(Expressions):
             return list(value)
         if isinstance(value, (list, tuple, str)):
             return list(value)
+        if isinstance(value, PlainClass) and value.enum:
+            return _enum_members(value)  # for mode in Mode: (spot_ros2's choices)
         if not (isinstance(value, Unknown) and value.kind == "unsupported"):
             # one that a construct not interpreted made was said where it was made
             self.unsupported(node, "loop over a value that is not known statically")
@@ -1130,6 +1159,17 @@ def checked_tree(text: str, path: str, workspace: Workspace
             return None, diag.make("LAUNCH_PY_BUDGET", where, detail=what)
         stack.extend((child, depth + 1) for child in ast.iter_child_nodes(node))
     return tree, None
+
+
+def _enum_members(cls: PlainClass) -> list[EnumMember]:
+    """An ``Enum``'s members in the order its body names them, as iterating it gives
+    them: a name whose value an earlier member has is an alias of it, not one more."""
+    members: list[EnumMember] = []
+    for value in cls.attributes.values():
+        if isinstance(value, EnumMember) and value.cls == cls.name and not any(
+                m.value == value.value for m in members):
+            members.append(value)
+    return members
 
 
 def _refill(held: dict[Any, Any], items: dict[Any, Any]) -> None:
