@@ -205,3 +205,35 @@ def generate_launch_description():
     assert list(conditions) == ["/always", "/maybe"]
     assert conditions["/always"] == [] and conditions["/maybe"] != []
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
+def test_a_with_statement_not_run_that_returns_gives_an_unknown(write_tree):
+    """spot_ros2's create_rviz_config: ``with NamedTemporaryFile(...) as out: ...;
+    return out.name``. The body is not run, so the function ran past the ``return``
+    and gave ``None`` (a "NoneType value" warning, ``-d`` of nothing): its value is
+    not known, said once where the ``with`` is; one that may return (under a test) is
+    one of the function's values."""
+    model, _ = run(write_tree, """
+from tempfile import NamedTemporaryFile
+
+def config(name):
+    with NamedTemporaryFile(suffix='.rviz', mode='w', delete=False) as out:
+        out.write(name)
+        return out.name
+
+def maybe(name):
+    with NamedTemporaryFile(mode='w') as out:
+        if name:
+            return out.name
+    return 'plain'
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='rviz2', executable='rviz2', name='a', arguments=['-d', config('x')]),
+        Node(package='p', executable='e', name='b', parameters=[{'f': maybe('x')}])])
+""")
+    messages = [d.message for d in model.diagnostics]
+    assert not any("NoneType" in m for m in messages), messages
+    [a] = [n for n in model.nodes if n.name == "/a"]
+    assert "?" in " ".join(a.args)
+    assert {p.name: p.value for p in model.params} == {"/b/f": None}

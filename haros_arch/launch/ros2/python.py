@@ -909,10 +909,23 @@ class Interpreter(Expressions):
                 for name in _assigned(stmt.body):
                     env[name] = Unknown(f"{name} set in a with statement not interpreted",
                                         "unsupported", where=made.where)
+                self.with_returns(stmt.body, made)
                 return
             if item.optional_vars is not None:
                 self.assign(item.optional_vars, value, env)
         self.block(stmt.body, env)
+
+    def with_returns(self, body: list[ast.stmt], made: Unknown) -> None:
+        """A ``with`` body not run that returns: the function returns a value not known
+        there (a ``return`` of the body itself), or may (one under a test or a loop of
+        it), not ``None`` by running past it (spot_ros2's ``with NamedTemporaryFile(...)
+        as out: ...; return out.name``: the rviz config file was ``None``)."""
+        unknown = Unknown("the value a with statement not interpreted returns",
+                          "unsupported", where=made.where)
+        if any(isinstance(stmt, ast.Return) for stmt in body):
+            raise _Return(unknown)
+        if self.returns and _returns(body):
+            self.returns[-1].append(unknown)
 
     def read(self, path: Any, node: ast.AST) -> str | None:
         """The text of a file of the workspace or an installed package (bounded)."""
@@ -1236,6 +1249,19 @@ def _assigned(body: list[ast.stmt]) -> set[str]:
             names.add(node.id)
         stack.extend(ast.iter_child_nodes(node))
     return names
+
+
+def _returns(body: list[ast.stmt]) -> bool:
+    """Whether a block has a ``return`` (its nested functions' and classes' excluded)."""
+    stack: list[ast.AST] = list(body)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.Return):
+            return True
+        if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda,
+                                 ast.ClassDef, ast.expr)):
+            stack.extend(ast.iter_child_nodes(node))
+    return False
 
 
 # how deep a function may call itself with some argument not known before the call's
