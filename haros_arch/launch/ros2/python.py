@@ -816,9 +816,8 @@ class Interpreter(Expressions):
         return list(found.values())
 
     def join_items(self, held: dict[Any, Any], body: dict[Any, Any], test: str) -> None:
-        """The items of a dict after an ``if`` whose test is not known, both branches
-        ``test`` having run on: ``held`` as the else branch left it, ``body`` as the body
-        left it.
+        """The items of a dict after ``if test:`` whose test is not known, both branches
+        having run on: ``held`` as the else branch left it, ``body`` as the body left it.
         An item both hold is ``either`` of the two values (``join``); one that a branch
         alone set may be missing: its value is not known, unless it is an action (or a
         composable node's description), which carries that branch's test already

@@ -459,8 +459,8 @@ def then_on_exit(i: Interpreter, process: e.Action, k: Kwargs, n: ast.AST) -> e.
     registers those actions as an ``OnProcessExit`` handler of that process when the
     process runs, so they are what ``RegisterEventHandler(OnProcessExit(target_action=
     process, on_exit=...))`` gives (``event_handler``), under the process's own
-    condition; Universal Robots' and spot_ros2's ``hardware_spawner`` start the
-    controllers' ``spawner`` so."""
+    condition (spot_ros2's ``hardware_spawner`` starts the controllers' ``spawner``
+    so)."""
     later = k.get("on_exit")
     if later is None:
         return process
