@@ -112,7 +112,7 @@ class Kind(Enum):
 def generate_launch_description():
     b = Box()
     return LaunchDescription([Node(package='p', executable='e', name=b.label),
-                              Node(package='p', executable='e', name=Kind('a').value),
+                              Node(package='p', executable='e', name=Kind(b.label).value),
                               Node(package='p', executable='e', name=str(b))])
 """)
     said = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]

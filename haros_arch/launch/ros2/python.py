@@ -304,12 +304,29 @@ class Interpreter(Expressions):
                     "property": "property"}.get(func.decorator_list[0].id)
         return None
 
+    def enum_member(self, cls: PlainClass, args: list[Any], kwargs: dict[str, Any],
+                    node: ast.AST) -> Any:
+        """``Mode(value)`` of an ``Enum``: its member of that value (a member of its own,
+        itself), as Python looks it up; a value known that none has fails with Python's
+        ``ValueError`` (spot_ros2's ``DepthRegisteredMode(text.lower())``)."""
+        value = args[0] if len(args) == 1 and not kwargs else None
+        members = _enum_members(cls)
+        if isinstance(value, EnumMember) and value in members:
+            return value
+        if not isinstance(value, (str, int, float)):
+            return self.unsupported(node, f"call to the enum {cls.name} is not interpreted")
+        found = next((m for m in members if m.value == value), None)
+        if found is None:
+            return self.failed(node, f"{cls.name}({value!r}) fails",
+                               f"ValueError: {value!r} is not a valid {cls.name}")
+        return found
+
     def instantiate(self, cls: PlainClass, args: list[Any], kwargs: dict[str, Any],
                     node: ast.AST) -> Any:
         """``Cls(...)``: an instance, its ``__init__`` run on it, or a dataclass's fields
         set from the arguments and defaults (then its ``__post_init__``)."""
         if cls.enum:
-            return self.unsupported(node, f"call to the enum {cls.name} is not interpreted")
+            return self.enum_member(cls, args, kwargs, node)
         instance = Instance(cls)
         init = cls.methods.get("__init__")
         if init is not None:
@@ -683,8 +700,7 @@ class Interpreter(Expressions):
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
-        value = self.eval(stmt.test, env)
-        test = self.truth(value)
+        value, test = self.test_of(stmt.test, env)
         if launch_object(value) or id(stmt.test) in self.decided:
             # ``if LaunchConfigurationEquals(...):`` never tests it, nor does
             # ``if LaunchConfiguration('sim') == 'true':`` (always false) or ``not`` of one
@@ -697,11 +713,16 @@ class Interpreter(Expressions):
             self.block(stmt.orelse, env)
         else:
             text = _source(stmt.test)
-            # each branch from the names as they are before the ``if``; after it, a name
-            # is what the branch that goes on set (the other returns), else either's
+            # each branch from the names as they are before the ``if``, and the items of
+            # the dicts they hold; after it, a name (an item) is what the branch that
+            # goes on set (the other returns), else either's
             before = dict(env)
+            held = [(d, dict(d)) for d in self.dicts_held(env)]
             taken = self.branch(stmt.body, env, text)
             after_body = dict(env)
+            body_items = [dict(d) for d, _ in held]
+            for d, items in held:
+                _refill(d, items)
             env.clear()
             env.update(before)
             left = self.branch(stmt.orelse, env, f"not ({text})")
@@ -710,8 +731,12 @@ class Interpreter(Expressions):
             if left is not None:
                 env.clear()
                 env.update(after_body)
+                for (d, _), items in zip(held, body_items, strict=True):
+                    _refill(d, items)
             elif taken is None:
                 self.join(env, after_body)
+                for (d, _), items in zip(held, body_items, strict=True):
+                    self.join_items(d, items, text)
             returned = taken or left
             if returned is not None:
                 # one branch returns: that value is one the function may give, and
@@ -720,6 +745,35 @@ class Interpreter(Expressions):
                     raise returned
                 self.returns[-1].append(returned.value)
                 self.guards.append(self.guard(text if taken is None else f"not ({text})"))
+
+    def test_of(self, node: ast.expr, env: dict[str, Any]) -> tuple[Any, bool | None]:
+        """The value of an ``if``'s test and its truth (None: not known). An ``and``
+        (``or``) with an operand not known still goes on to the operands after it, each
+        under that operand's test, as Python runs them only when it holds: one of them
+        false (true) makes the whole false (true) whatever the unknown was (spot_ros2's
+        ``if not username and _USERNAME in ros_params:`` with ``ros_params`` empty and
+        the environment variable not known ran its body, a lookup that fails)."""
+        if not isinstance(node, ast.BoolOp):
+            value = self.eval(node, env)
+            return value, self.truth(value)
+        is_and = isinstance(node.op, ast.And)
+        unknown: Any = None
+        depth = len(self.guards)
+        try:
+            for operand in node.values:
+                value, truth = self.test_of(operand, env)
+                if truth is None:
+                    unknown = value if unknown is None else unknown
+                    text = _source(operand)
+                    self.guards.append(self.guard(text if is_and else f"not ({text})"))
+                elif truth != is_and:  # short-circuits: decided whatever came before
+                    return value, truth
+        finally:
+            del self.guards[depth:]
+        if unknown is None:
+            return value, truth
+        return (unknown if isinstance(unknown, Unknown)
+                else Unknown(f"boolean {_source(node)}")), None
 
     def join(self, env: dict[str, Any], other: dict[str, Any]) -> None:
         """The names after an ``if`` whose test is not known, both branches having run
@@ -737,6 +791,51 @@ class Interpreter(Expressions):
                                     "statically")
             else:
                 env[name] = self.either([value, env[name]], f"{name}, set in both branches")
+
+    def dicts_held(self, env: dict[str, Any]) -> list[dict[Any, Any]]:
+        """The dicts the names of ``env`` and of the module hold, and those inside them
+        (lists, tuples, objects' attributes, and the attributes themselves), each once:
+        what a branch of an ``if`` may change in place (``d[key] = ...``,
+        ``d.update(...)``, ``obj.name = ...``), bounded."""
+        found: dict[int, dict[Any, Any]] = {}
+        stack = [v for scope in (env, self.globals) for name, v in scope.items()
+                 if not name.startswith("__")]
+        seen: set[int] = set()
+        while stack and len(seen) < _MAX_HELD:
+            value = stack.pop()
+            if id(value) in seen:
+                continue
+            seen.add(id(value))
+            if isinstance(value, dict):
+                found[id(value)] = value
+                stack.extend(value.values())
+            elif isinstance(value, (list, tuple)):
+                stack.extend(value)
+            elif isinstance(value, (Instance, Constructing, Record)):
+                stack.append(value.attributes)  # ``obj.name = ...`` changes it in place
+        return list(found.values())
+
+    def join_items(self, held: dict[Any, Any], body: dict[Any, Any], test: str) -> None:
+        """The items of a dict after ``if test:`` whose test is not known, both branches
+        having run on: ``held`` as the else branch left it, ``body`` as the body left it.
+        An item both hold is ``either`` of the two values (``join``); one that a branch
+        alone set may be missing: its value is not known, unless it is an action (or a
+        composable node's description), which carries that branch's test already
+        (spot_ros2's ``if controllable: params.update({'leasing_mode': 'proxied'})``
+        set the parameter whatever ``controllable`` was)."""
+        items: dict[Any, Any] = {}
+        for key in [*body, *(k for k in held if k not in body)]:
+            if key in body and key in held:
+                value = body[key] if body[key] is held[key] else self.either(
+                    [body[key], held[key]], f"the item {key!r}, set in both branches of "
+                                            f"`if {test}`")
+            else:
+                value = body[key] if key in body else held[key]
+                if not isinstance(value, (e.Action, e.ComposableNode)):
+                    value = Unknown(f"the item {key!r}, set in one branch of `if {test}`"
+                                    " (a test not known statically)")
+            items[key] = value
+        _refill(held, items)
 
     def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
                ) -> _Return | None:
@@ -809,10 +908,23 @@ class Interpreter(Expressions):
                 for name in _assigned(stmt.body):
                     env[name] = Unknown(f"{name} set in a with statement not interpreted",
                                         "unsupported", where=made.where)
+                self.with_returns(stmt.body, made)
                 return
             if item.optional_vars is not None:
                 self.assign(item.optional_vars, value, env)
         self.block(stmt.body, env)
+
+    def with_returns(self, body: list[ast.stmt], made: Unknown) -> None:
+        """A ``with`` body not run that returns: the function returns a value not known
+        there (a ``return`` of the body itself), or may (one under a test or a loop of
+        it), not ``None`` by running past it (spot_ros2's ``with NamedTemporaryFile(...)
+        as out: ...; return out.name``: the rviz config file was ``None``)."""
+        unknown = Unknown("the value a with statement not interpreted returns",
+                          "unsupported", where=made.where)
+        if any(isinstance(stmt, ast.Return) for stmt in body):
+            raise _Return(unknown)
+        if self.returns and _returns(body):
+            self.returns[-1].append(unknown)
 
     def read(self, path: Any, node: ast.AST) -> str | None:
         """The text of a file of the workspace or an installed package (bounded)."""
@@ -871,6 +983,8 @@ class Interpreter(Expressions):
             return list(value)
         if isinstance(value, (list, tuple, str)):
             return list(value)
+        if isinstance(value, PlainClass) and value.enum:
+            return _enum_members(value)  # for mode in Mode: (spot_ros2's choices)
         if not (isinstance(value, Unknown) and value.kind == "unsupported"):
             # one that a construct not interpreted made was said where it was made
             self.unsupported(node, "loop over a value that is not known statically")
@@ -1059,6 +1173,24 @@ def checked_tree(text: str, path: str, workspace: Workspace
     return tree, None
 
 
+def _enum_members(cls: PlainClass) -> list[EnumMember]:
+    """An ``Enum``'s members in the order its body names them, as iterating it gives
+    them: a name whose value an earlier member has is an alias of it, not one more."""
+    members: list[EnumMember] = []
+    for value in cls.attributes.values():
+        if isinstance(value, EnumMember) and value.cls == cls.name and not any(
+                m.value == value.value for m in members):
+            members.append(value)
+    return members
+
+
+def _refill(held: dict[Any, Any], items: dict[Any, Any]) -> None:
+    """``held``, the same dict, holding ``items`` now."""
+    held.clear()
+    held.update(items)
+
+
+_MAX_HELD = 5000  # the values ``Interpreter.dicts_held`` looks through, at most
 _OUTER = "__outer__"  # a function's names declared ``global`` / ``nonlocal``: their scopes
 
 
@@ -1116,6 +1248,19 @@ def _assigned(body: list[ast.stmt]) -> set[str]:
             names.add(node.id)
         stack.extend(ast.iter_child_nodes(node))
     return names
+
+
+def _returns(body: list[ast.stmt]) -> bool:
+    """Whether a block has a ``return`` (its nested functions' and classes' excluded)."""
+    stack: list[ast.AST] = list(body)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.Return):
+            return True
+        if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda,
+                                 ast.ClassDef, ast.expr)):
+            stack.extend(ast.iter_child_nodes(node))
+    return False
 
 
 # how deep a function may call itself with some argument not known before the call's

@@ -25,6 +25,7 @@ from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown, Value
 from ...share import install_prefix
 from . import entities as e
+from .naming import yaml_value
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
 from .python_launch_pal import LAUNCH_PAL
@@ -61,6 +62,7 @@ from .python_values import (
     Context,
     LaunchDescription,
     Lazy,
+    Ref,
     _Flow,
     object_text,
     printable,
@@ -103,6 +105,34 @@ def perform_substitutions(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any
     if isinstance(context, Context) and subs is not None:
         return context.perform(to_text(subs))
     return i.unsupported(n, "perform_substitutions() outside an OpaqueFunction")
+
+
+def coerce_to_type(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``launch.utilities.type_utils.coerce_to_type(value, data_type)`` of a text known
+    statically: ``str`` as it is, ``int`` / ``float`` by Python's, ``bool`` as YAML reads
+    it (``'1'`` and ``'0'`` too), no type as YAML reads it (``naming.yaml_value``); what
+    launch would refuse fails with its ``ValueError``. synchros2's ``convert_to_bool``
+    (spot_ros2's ``controllable``) reads a launch argument so."""
+    value, kind = arg(a, k, 0, "value"), arg(a, k, 1, "data_type")
+    kind = kind.qualified if isinstance(kind, Ref) else kind
+    if not isinstance(value, str) or k.get("can_be_str") or kind not in (
+            None, "str", "int", "float", "bool"):
+        return Unknown("coerce_to_type() of a value or type not known statically")
+    if kind in ("int", "float"):
+        try:
+            return int(value) if kind == "int" else float(value)
+        except ValueError:
+            return i.failed(n, f"coerce_to_type({value!r}, {kind}) fails",
+                            f"ValueError: {value!r} is no {kind}")
+    if kind == "str" or not value:
+        return value
+    if kind == "bool":
+        value = {"1": "true", "0": "false"}.get(value, value)
+    out = yaml_value(value)
+    if (kind == "bool" and not isinstance(out, bool)) or not isinstance(out, SCALARS):
+        return i.failed(n, f"coerce_to_type({value!r}, {kind}) fails",
+                        f"ValueError: {value!r} is no {kind or 'YAML value'}")
+    return out
 
 
 def environment_variable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -420,8 +450,28 @@ def node(container: bool) -> Builder:
             split=k.get("shell") is True)
         if container:
             action.composable = composables(i, k.get("composable_node_descriptions"), n)
-        return finish(i, action, k, n)
+        return then_on_exit(i, finish(i, action, k, n), k, n)
     return build
+
+
+def then_on_exit(i: Interpreter, process: e.Action, k: Kwargs, n: ast.AST) -> e.Action:
+    """A process (``Node``, ``ExecuteProcess``) and what its ``on_exit`` starts: launch
+    registers those actions as an ``OnProcessExit`` handler of that process when the
+    process runs, so they are what ``RegisterEventHandler(OnProcessExit(target_action=
+    process, on_exit=...))`` gives (``event_handler``), under the process's own
+    condition (spot_ros2's ``hardware_spawner`` starts the controllers' ``spawner``
+    so)."""
+    later = k.get("on_exit")
+    if later is None:
+        return process
+    if not isinstance(later, (e.Action, list, tuple, LaunchDescription)):
+        i.unsupported(n, "on_exit with a callable is not interpreted")
+        return process
+    handler = e.Delayed(actions(i, later, n), exit_event(process.location), "event",
+                        location=process.location)
+    condition, process.condition = process.condition, None
+    return e.Group([process, handler], scoped=False, condition=condition,
+                   location=process.location)
 
 
 def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -437,17 +487,18 @@ def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         line: list[e.Text] = []
         for index, word in enumerate(cmd):
             line += [(" ",), to_text(word)] if index else [to_text(word)]
-        return finish(i, e.Process(e.text(*line)), k, n)
+        return then_on_exit(i, finish(i, e.Process(e.text(*line)), k, n), k, n)
     if isinstance(cmd, (list, tuple)) and None not in cmd:
         launched = e.ros2_launch_words([to_text(w) for w in cmd])
         if launched is not None:  # ros2 launch PKG FILE ...: that launch file's nodes
-            return finish(i, e.LaunchCommand(launched), k, n)
+            return then_on_exit(i, finish(i, e.LaunchCommand(launched), k, n), k, n)
     action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
         cmd, (list, tuple)) else None
     if action is None:  # said when performed: a ROS node it may start is not in the graph
         words = list(cmd) if isinstance(cmd, (list, tuple)) else [cmd]
-        return finish(i, e.Process((), [to_text(w) for w in words if w is not None]), k, n)
-    return finish(i, action, k, n)
+        process = e.Process((), [to_text(w) for w in words if w is not None])
+        return then_on_exit(i, finish(i, process, k, n), k, n)
+    return then_on_exit(i, finish(i, action, k, n), k, n)
 
 
 def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -735,6 +786,7 @@ API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
     "LaunchConfiguration": launch_configuration,
     "perform_substitutions": perform_substitutions,
+    "coerce_to_type": coerce_to_type,
     "EnvironmentVariable": environment_variable,
     "LaunchContext": launch_context,
     "FindPackageShare": find_package(True), "FindPackagePrefix": find_package(False),

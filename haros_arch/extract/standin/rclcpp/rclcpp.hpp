@@ -175,6 +175,12 @@ template<> struct haros_parameter_value<PARAMETER_DOUBLE_ARRAY> {
   using type = std::vector<double>; };
 template<> struct haros_parameter_value<PARAMETER_STRING_ARRAY> {
   using type = std::vector<std::string>; };
+// the type declare_parameter(name, default) gives for a default of type T: get<T>() of
+// its ParameterValue, which for a vector of int or float is the vector of the parameter's
+// own type (a member std::vector<int64_t> set from std::vector<int>{16, 18}: spot_ros2)
+template<class T> struct haros_declared { using type = T; };
+template<> struct haros_declared<std::vector<int>> { using type = std::vector<int64_t>; };
+template<> struct haros_declared<std::vector<float>> { using type = std::vector<double>; };
 class ParameterValue {
 public:
   ParameterValue();
@@ -750,7 +756,8 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   template<class T> auto declare_parameter(const std::string& name, const T& default_value, \
       const rcl_interfaces::msg::ParameterDescriptor& descriptor = \
           rcl_interfaces::msg::ParameterDescriptor(), bool ignore_override = false) \
-      -> typename std::enable_if<!__is_array(T), T>::type; \
+      -> typename std::enable_if<!__is_array(T), \
+                                 typename rclcpp::haros_declared<T>::type>::type; \
   /* a character array (a wrapper's declare_parameter<T> of a string literal): its value \
      is a string, as ParameterValue(const char*) and get<T>() make it */ \
   template<class T> auto declare_parameter(const std::string& name, const T& default_value, \
