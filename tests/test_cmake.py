@@ -651,3 +651,22 @@ def test_a_component_registered_in_a_branch_and_in_its_else_is_made_for_certain(
     nodes, _ = parse_package(pkg, ws)
     assert {n.executable: [str(c) for c in n.conditions] for n in nodes} == {
         "classifier_node": [], "pkg::Classifier": []}
+
+
+def test_a_quoted_list_of_sources_is_each_of_its_files(write_tree):
+    # PX4-Avoidance: add_library(avoidance "${AVOIDANCE_CPP_FILES}"), a list variable in
+    # quotes, one argument that CMake's SOURCES property reads as its items
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        set(LIB_FILES "src/b.cpp" "src/c.cpp")
+        add_library(lib "${LIB_FILES}")
+        add_executable(node src/a.cpp)
+        target_sources(node PRIVATE "src/d.cpp;src/e.cpp")
+        """, sources=("src/a.cpp", "src/b.cpp", "src/c.cpp", "src/d.cpp", "src/e.cpp"))
+    targets, _ = targets_of(pkg, ws)
+    assert {t.name: [os.path.basename(s) for s in t.sources] for t in targets} == {
+        "lib": ["b.cpp", "c.cpp"], "node": ["a.cpp", "d.cpp", "e.cpp"]}
+    nodes, found = parse_package(pkg, ws)
+    assert [(n.executable, n.sources) for n in nodes] == [
+        ("node", ["pkg/src/a.cpp", "pkg/src/d.cpp", "pkg/src/e.cpp"])]
+    assert found == []
