@@ -870,9 +870,12 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     # the loop over the list that the extractor saw is what these calls stand for
     kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
-    # the element is the whole name, or its one unknown run (``polygon_name + ".type"``)
+    # the element is the whole name, or its one unknown run (``polygon_name + ".type"``);
+    # a global element is not resolved in the handle's namespace (PX4-Avoidance's global
+    # planner subscribes each of ``~pointcloud_topics``, ``[/camera/depth/points]``, on
+    # its private handle: ``/camera/depth/points``)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
-    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+    return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None, conditions=kept) for name in names]
 
 
@@ -894,7 +897,7 @@ def _word_calls(call: PrimitiveCall, instance: NodeInstance, param: Any, value: 
         return [call]  # empty only where the launch file's condition holds
     kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
-    return [replace(call, name=written.replace(UNKNOWN_MARK, word, 1), name_param=None,
+    return [replace(call, name=_filled(written, word), name_param=None,
                     name_default=None, name_each=None, conditions=kept) for word in words]
 
 
@@ -953,7 +956,7 @@ def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources
     if not names:
         return [call]
     written = call.name if UNKNOWN_MARK in call.name else UNKNOWN_MARK
-    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+    return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None) for name in names]
 
 
