@@ -36,6 +36,8 @@ std::string append(const std::string& left, const std::string& right);
 class AsyncSpinner {
 public:
   explicit AsyncSpinner(uint32_t thread_count);
+  AsyncSpinner(uint32_t thread_count, CallbackQueue* queue);  // a queue of its own
+  bool canStart();
   void start();
   void stop();
 };
