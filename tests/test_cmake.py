@@ -651,3 +651,55 @@ def test_a_component_registered_in_a_branch_and_in_its_else_is_made_for_certain(
     nodes, _ = parse_package(pkg, ws)
     assert {n.executable: [str(c) for c in n.conditions] for n in nodes} == {
         "classifier_node": [], "pkg::Classifier": []}
+
+
+def test_a_quoted_list_of_sources_is_each_of_its_files(write_tree):
+    # PX4-Avoidance: add_library(avoidance "${AVOIDANCE_CPP_FILES}"), a list variable in
+    # quotes, one argument that CMake's SOURCES property reads as its items
+    ws, pkg = workspace_with(write_tree, """
+        project(pkg)
+        set(LIB_FILES "src/b.cpp" "src/c.cpp")
+        add_library(lib "${LIB_FILES}")
+        add_executable(node src/a.cpp)
+        target_sources(node PRIVATE "src/d.cpp;src/e.cpp")
+        """, sources=("src/a.cpp", "src/b.cpp", "src/c.cpp", "src/d.cpp", "src/e.cpp"))
+    targets, _ = targets_of(pkg, ws)
+    assert {t.name: [os.path.basename(s) for s in t.sources] for t in targets} == {
+        "lib": ["b.cpp", "c.cpp"], "node": ["a.cpp", "d.cpp", "e.cpp"]}
+    nodes, found = parse_package(pkg, ws)
+    assert [(n.executable, n.sources) for n in nodes] == [
+        ("node", ["pkg/src/a.cpp", "pkg/src/d.cpp", "pkg/src/e.cpp"])]
+    assert found == []
+
+
+def test_a_library_file_with_another_program_s_main_is_not_run_by_its_main(write_tree):
+    """PX4-Avoidance's safe_landing_planner library holds waypoint_generator_node.cpp,
+    the waypoint generator's class and its program's ``main``; safe_landing_planner_node
+    links the library and runs only its own class. The word ``main`` of its own file
+    named that file: the node had the waypoint generator's 9 topics and parameters."""
+    root = write_tree({
+        "src/slp/package.xml": package_xml("slp"),
+        "src/slp/CMakeLists.txt": """
+            project(slp)
+            add_library(slp src/planner.cpp src/generator_node.cpp)
+            add_executable(planner_node src/planner_main.cpp)
+            target_link_libraries(planner_node slp)
+            add_executable(generator_node src/generator_node.cpp)
+            target_link_libraries(generator_node slp)
+            """,
+        "src/slp/src/planner.cpp": "#include \"planner.h\"\nPlanner::Planner() {}\n",
+        "src/slp/src/generator_node.cpp": """
+            #include "generator.h"
+            Generator::Generator() {}
+            int main(int argc, char ** argv) { Generator g; }
+            """,
+        "src/slp/src/planner_main.cpp": """
+            #include "planner.h"
+            int main(int argc, char ** argv) { Planner p; }
+            """,
+    })
+    ws = scan([str(root / "src")], {})
+    nodes, _found = parse_package(ws.packages["slp"], ws)
+    assert sorted((n.executable, sorted(n.sources)) for n in nodes) == [
+        ("generator_node", ["slp/src/generator_node.cpp"]),
+        ("planner_node", ["slp/src/planner.cpp", "slp/src/planner_main.cpp"])]

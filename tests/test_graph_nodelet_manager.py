@@ -44,3 +44,26 @@ def test_a_nodelet_named_by_its_cxx_type_gets_its_interface():
     assert config.node("/alone").node is plugin
     assert sorted(t.name for t in config.topics) == ["/ackermann_cmd"]
     assert config.diagnostics == []
+
+
+def test_a_nodelet_named_by_one_word_gets_its_interface():
+    # PX4-Avoidance's local_planner exports <class name="LocalPlannerNodelet"
+    # type="avoidance::LocalPlannerNodelet">, loaded as `load LocalPlannerNodelet mgr`:
+    # a lookup name that names no package; the one package exporting it is the one.
+    # A word no package exports is a node type not found, said
+    plugin = Node("local_planner", "LocalPlannerNodelet", calls=[
+        PrimitiveCall("subscribe", "mavros/state", "mavros_msgs/State", 1,
+                      location=Location("local_planner", "l/src/n.cpp", 3, 1))])
+    plugin.kind = "nodelet"
+    where = Location("local_planner", "l/launch/a.launch", 9, 0)
+    config = graph([
+        NodeDecl("/mgr", "nodelet", "nodelet", args="manager"),
+        NodeDecl("/planner", "nodelet", "nodelet", args="load LocalPlannerNodelet mgr"),
+        NodeDecl("/other", "nodelet", "nodelet", args="load OtherNodelet mgr",
+                 location=where),
+    ], nodes=[plugin])
+    assert config.node("/planner").node is plugin
+    assert sorted(t.name for t in config.topics) == ["/mavros/state"]
+    assert config.node("/other").node is None
+    assert [(d.code, d.location.line) for d in config.diagnostics] == [("NODE_NOT_FOUND", 9)]
+    assert "node type OtherNodelet is not in the workspace" in config.diagnostics[0].message

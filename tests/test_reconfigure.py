@@ -268,3 +268,37 @@ def test_a_cfg_in_a_folder_below_cfg_makes_its_config(write_tree) -> None:
                      ("~use_filter", True), ("~offset_x", 0.0)]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_PARSE_ERROR" not in codes and "CPP_RECONFIGURE_PARTIAL" not in codes
+
+
+def test_a_config_in_the_namespace_its_cfg_names(write_tree) -> None:
+    """PX4-Avoidance's local_planner/cfg/LocalPlannerNode.cfg sets ``PACKAGE = "avoidance"``
+    and ends with gen.generate(PACKAGE, "avoidance", "LocalPlannerNode"): dynamic_reconfigure
+    writes <local_planner/LocalPlannerNodeConfig.h> with ``avoidance::LocalPlannerNodeConfig``
+    (the namespace is generate's first argument). The class was synthesised in namespace
+    local_planner: the nodelet's ``avoidance::LocalPlannerNodeConfig`` was a class not read
+    (CPP_CLASS_UNSEEN), the node partial and its server's parameters unread."""
+    cfg = ('PACKAGE = "avoidance"\nfrom dynamic_reconfigure.parameter_generator_catkin import *\n'
+           "gen = ParameterGenerator()\n"
+           "gen.add('max_speed', double_t, 0, 'speed', 3.0)\n"
+           'exit(gen.generate(PACKAGE, "avoidance", "LocalPlannerNode"))\n')
+    source = ('#include <ros/ros.h>\n#include <dynamic_reconfigure/server.h>\n'
+              '#include <local_planner/LocalPlannerNodeConfig.h>\n'
+              'void cb(avoidance::LocalPlannerNodeConfig &config, uint32_t) {}\n'
+              'int main(int argc, char **argv) {\n  ros::init(argc, argv, "planner");\n'
+              '  ros::NodeHandle pnh("~");\n'
+              '  dynamic_reconfigure::Server<avoidance::LocalPlannerNodeConfig> server(pnh);\n'
+              '  server.setCallback(&cb);\n  return 0;\n}\n')
+    root = write_tree({
+        "local_planner/package.xml": package_xml("local_planner", "catkin"),
+        "local_planner/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(local_planner)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp dynamic_reconfigure)\n"
+            "generate_dynamic_reconfigure_options(cfg/LocalPlannerNode.cfg)\n"
+            "catkin_package()\nadd_executable(planner src/planner.cpp)\n"),
+        "local_planner/src/planner.cpp": source,
+        "local_planner/cfg/LocalPlannerNode.cfg": cfg})
+    result = extract_cpp([str(root / "local_planner" / "src" / "planner.cpp")],
+                         scan([str(root)]), cache_dir=None)
+    assert ("read", "~max_speed") in [(c.kind, c.name) for c in result.calls]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_CLASS_UNSEEN" not in codes and "CPP_PARSE_ERROR" not in codes

@@ -393,7 +393,9 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
     if every[:1] == args[:1]:
         args = every
     sources: list[str] = []
-    rest = args[1:]
+    # a quoted list is one argument and still a list of sources: PX4-Avoidance's
+    # add_library(avoidance "${AVOIDANCE_CPP_FILES}") builds each of its files
+    rest = _listed(args[1:])
     if "DIRECTORY" in rest:  # ament_auto_add_*: sources found in a folder
         at = rest.index("DIRECTORY")
         folder = rest[at + 1] if at + 1 < len(rest) else "."
@@ -626,8 +628,15 @@ def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> No
         keywords = ("PRIVATE", "PUBLIC", "INTERFACE", "FILE_SET", "TYPE", "BASE_DIRS",
                     "FILES", "HEADERS", "CXX_MODULES")
         every = it.every_way(command.args)
-        target.sources.extend(it.path(a) for a in (every if every[:1] == args[:1] else args)[1:]
+        target.sources.extend(it.path(a) for a in _listed((every if every[:1] == args[:1]
+                                                           else args)[1:])
                               if a not in keywords)
+
+
+def _listed(args: list[str]) -> list[str]:
+    """The items of arguments a command takes as lists (a target's sources): a quoted
+    argument ``"a.cpp;b.cpp"`` is the two files, as CMake's SOURCES property reads it."""
+    return [item for arg in args for item in (split_list(arg) if ";" in arg else [arg])]
 
 
 # what ``find_package(pkg)`` leaves in ``pkg_LIBRARIES`` (and catkin in

@@ -496,6 +496,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # ``executable=LaunchConfiguration('script')`` with no value: which program runs
         # is not known, not missing (crazyswarm2's example launch file)
         config.diagnostics.append(diag.make("NODE_TYPE_UNKNOWN", decl.location, node=key))
+    elif node is None and plugin is not None and key == plugin and _bare(plugin):
+        config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location, node=plugin))
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         # the package's interface model was found without this node: said there
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
@@ -621,6 +623,8 @@ def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
         exporting = [key for key, node in nodes.items() if node.kind == "nodelet"
                      and key.endswith("/" + plugin) and "/" not in key[:-len(plugin) - 1]]
         found = exporting[0] if len(exporting) == 1 else None
+    if found is None and _bare(plugin):
+        return plugin  # no package of the workspace exports it: NODE_NOT_FOUND
     return found or (keys[0] if keys else f"{plugin.partition('/')[0]}/{plugin}")
 
 
@@ -631,11 +635,19 @@ def nodelet_plugin(decl: NodeDecl) -> str | None:
         return None
     words = decl.args.split()
     # the lookup name: ``pkg/Name``, or the C++ type of a class its description gives no
-    # name (pluginlib then looks it up by its type: ``vesc_ackermann::VescToOdomNodelet``)
+    # name (pluginlib then looks it up by its type: ``vesc_ackermann::VescToOdomNodelet``),
+    # or any other name a description gives its class: PX4-Avoidance's local_planner
+    # exports ``<class name="LocalPlannerNodelet" ...>``, loaded by that one word
     if len(words) >= 2 and words[0] in ("load", "standalone") and (
-            "/" in words[1] or "::" in words[1].strip(":")):
+            "/" in words[1] or "::" in words[1].strip(":") or words[1].isidentifier()):
         return words[1]
     return None
+
+
+def _bare(plugin: str) -> bool:
+    """A lookup name that names no package (``LocalPlannerNodelet``): only a package that
+    exports it tells which it is."""
+    return not class_packages(plugin)
 
 
 def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
@@ -853,9 +865,12 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return [call]
     # the loop over the list that the extractor saw is what these calls stand for
     kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
-    # the element is the whole name, or its one unknown run (``polygon_name + ".type"``)
+    # the element is the whole name, or its one unknown run (``polygon_name + ".type"``);
+    # a global element is not resolved in the handle's namespace (PX4-Avoidance's global
+    # planner subscribes each of ``~pointcloud_topics``, ``[/camera/depth/points]``, on
+    # its private handle: ``/camera/depth/points``)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
-    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+    return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
@@ -949,7 +964,7 @@ def _word_calls(call: PrimitiveCall, instance: NodeInstance, param: Any, value: 
         return [call]  # empty only where the launch file's condition holds
     kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
-    return [replace(call, name=written.replace(UNKNOWN_MARK, word, 1), name_param=None,
+    return [replace(call, name=_filled(written, word), name_param=None,
                     name_default=None, name_each=None, conditions=kept) for word in words]
 
 
@@ -1008,7 +1023,7 @@ def _numbered_calls(call: PrimitiveCall, full: str, resources: Resources
     if not names:
         return [call]
     written = call.name if UNKNOWN_MARK in call.name else UNKNOWN_MARK
-    return [replace(call, name=written.replace(UNKNOWN_MARK, name, 1), name_param=None,
+    return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None) for name in names]
 
 

@@ -73,6 +73,7 @@ class Attacher:
             key = node_key(decl, result)
             package = key.partition("/")[0]
             if (key in result or package in workspace.packages or command_node(decl)
+                    or "/" not in key  # a nodelet by a name no package is known to export
                     or (nodelet_plugin(decl) is None and is_container(decl))):
                 continue
             if chosen is None:

@@ -348,8 +348,11 @@ def code_words(own: list[str], workspace: Files) -> set[str]:
 
 def named_closure(words: set[str], helpers: list[str], workspace: Files,
                   anonymous: bool = True) -> list[str]:
-    """The ``helpers`` that define what ``words`` name, and what those name in turn."""
-    words = set(words)
+    """The ``helpers`` that define what ``words`` name, and what those name in turn. A
+    program's ``main`` names no helper: each program runs its own (PX4-Avoidance's
+    safe_landing_planner library holds waypoint_generator_node.cpp with that node's
+    ``main``, which safe_landing_planner_node links and never runs)."""
+    words = set(words) - {"main"}
     waiting = {source: _defined(source, workspace) for source in helpers}
     used = {source for source, defined in waiting.items() if anonymous and not defined}
     changed = True
@@ -358,7 +361,7 @@ def named_closure(words: set[str], helpers: list[str], workspace: Files,
         for source, defined in waiting.items():
             if source not in used and defined & words:
                 used.add(source)
-                words |= named_words(source, workspace)
+                words |= named_words(source, workspace) - {"main"}
                 changed = True
     return [s for s in helpers if s in used]
 

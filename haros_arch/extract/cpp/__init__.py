@@ -129,6 +129,10 @@ class _Error:
     notes: tuple[str, ...] = ()
 
 
+# clang's error for a function template used with a type of no linkage and not defined
+_UNDEFINED_HERE = "is used but not defined in this translation unit, and cannot be defined"
+
+
 def _errors(tu: TranslationUnit) -> list[_Error]:
     """The errors of a parse (severity error or fatal), read once per unit."""
     found: list[_Error] | None = getattr(tu, "_haros_errors", None)
@@ -141,6 +145,14 @@ def _errors(tu: TranslationUnit) -> list[_Error]:
             loc = d.location
             file = loc.file
             name = file.name if file is not None else None
+            if name is not None and _UNDEFINED_HERE in d.spelling and os.path.abspath(
+                    name).startswith(STANDIN + os.sep):
+                # a stand-in's template declared without a body, instantiated with a
+                # lambda (``std::transform(..., [](int i) {...})``): the real library
+                # defines it. Said only by a parse with no other error, it made a parse
+                # with the unknown names declared no better than one without (bwi's
+                # logical translator kept ``boost::algorithm`` unknown)
+                continue
             if name is not None and name not in full:
                 full[name] = os.path.abspath(name)
             spelling = d.spelling

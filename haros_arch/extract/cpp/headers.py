@@ -147,6 +147,7 @@ UMBRELLAS = {
     # Boost.Asio's and Boost.System's headers: boost::system's error codes, which asio's
     # handlers take (the asio classes are declared permissively)
     "boost/asio/": "boost/asio.hpp", "boost/system/": "boost/system/error_code.hpp",
+    "boost/filesystem/": "boost/filesystem.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)

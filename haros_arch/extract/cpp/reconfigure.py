@@ -62,6 +62,10 @@ class Config:
     parameters: list[tuple[str, str, Any]] = field(default_factory=list)  # name, type, default
     constants: list[tuple[str, str, Any]] = field(default_factory=list)  # name, type, value
     partial: bool = False
+    # the C++ namespace of the class: ``generate``'s first argument, the package the .cfg
+    # names (PX4-Avoidance's local_planner generates ``avoidance::LocalPlannerNodeConfig``
+    # with ``PACKAGE = "avoidance"``); its own package when that is not a literal
+    namespace: str = ""
 
 
 def _literal(node: ast.AST | None) -> Any:
@@ -124,6 +128,10 @@ def read_cfg(path: str, text: str, package: str, modules: Modules | None = None
                   and isinstance(node.value, ast.Call) and _makes_generator(node.value)
                   for target in node.targets if isinstance(target, ast.Name)}
     functions = _functions(tree, modules)
+    # the texts the module's top level names (``PACKAGE = "dynamic_tutorials"``)
+    texts = {target.id: node.value.value for node in tree.body if isinstance(node, ast.Assign)
+             and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str)
+             for target in node.targets if isinstance(target, ast.Name)}
     for node in ast.walk(tree):
         if isinstance(node, ast.Call):
             handed = _handed(node, generators)
@@ -138,6 +146,10 @@ def read_cfg(path: str, text: str, package: str, modules: Modules | None = None
             found = _literal(_argument(node, 2, "name"))
             if isinstance(found, str) and _NAME.fullmatch(found):
                 name = found
+            given = _argument(node, 0, "pkgname")
+            space = _literal(given) if not isinstance(given, ast.Name) else texts.get(given.id)
+            if isinstance(space, str) and _NAME.fullmatch(space):
+                config.namespace = space
         else:
             _take(node, config)
     if name is None:
@@ -377,7 +389,7 @@ def render(config: Config, source: str) -> str:
              "synthesised by haros_arch, declarations only",
              "#pragma once", "#include <string>", "#include <vector>", "#include <ros/ros.h>",
              *(f"#include <{header}>" for header in MESSAGES),
-             f"namespace {config.package} {{",
+             f"namespace {config.namespace or config.package} {{",
              f"class {notes} {cls} {{", " public:", *fields, *constants,
              "  struct GroupDescription { std::string name; int id; int parent; };",
              "  struct AbstractParamDescription { std::string name; std::string type; };",
@@ -393,7 +405,7 @@ def render(config: Config, source: str) -> str:
              "  void __toServer__(const ros::NodeHandle& nh) const;",
              "  void __clamp__();",
              f"  uint32_t __level__(const {cls}& config) const;",
-             "};", f"}}  // namespace {config.package}", ""]
+             "};", f"}}  // namespace {config.namespace or config.package}", ""]
     return "\n".join(lines)
 
 

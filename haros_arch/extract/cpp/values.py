@@ -967,8 +967,11 @@ class Scope:
             held = permissive_held(call)
             return self.string(held, depth + 1) if held is not None else UNKNOWN
         if not args and target.spelling == "getName" and target.semantic_parent is not None \
-                and target.semantic_parent.spelling == "this_node":
-            return ("~",)  # ros::this_node::getName(): the node's own (private) name
+                and qualified_name(target.semantic_parent) in _ROS1_NAME_OWNERS:
+            # ros::this_node::getName(): the node's own (private) name; a nodelet's
+            # getName() is its own, which its private handle's namespace is too
+            # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics")
+            return ("~",)
         if not args and _names_node(target):
             # an rclcpp node's get_name() (or its base interface's): the node's own name
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
@@ -1480,6 +1483,7 @@ def _constructed(expr: Cursor) -> Cursor | None:
 
 # rclcpp's functions that give the node's own name (``get_name`` without its namespace,
 # ``get_fully_qualified_name`` with), declared by a node class or its base interface
+_ROS1_NAME_OWNERS = frozenset({"ros::this_node", "nodelet::Nodelet"})
 _NODE_NAME_FUNCTIONS = frozenset({"get_name", "get_fully_qualified_name"})
 _NODE_NAME_OWNERS = frozenset({*api.RCLCPP_NODES, "rclcpp::node_interfaces::NodeBaseInterface"})
 

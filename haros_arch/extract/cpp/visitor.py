@@ -2879,9 +2879,13 @@ def _lost_new(expr: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     controller_nh_, "follow_joint_trajectory", std::bind(&JointTrajectoryController::
     goalCB, this, _1), ...)``)."""
     made = expr.type.get_canonical().get_pointee()
-    if made.kind != TypeKind.RECORD:
-        return None
     decl = made.get_declaration()
+    # ``C`` a class, or a class template given the template's own parameter (bwi_common's
+    # InterruptableActionServer<ActionSpec>: ``new actionlib::ActionServer<ActionSpec>(
+    # n_, name, ...)``, a type clang leaves dependent)
+    if made.kind != TypeKind.RECORD and not (
+            made.kind == TypeKind.UNEXPOSED and decl.kind == CursorKind.CLASS_TEMPLATE):
+        return None
     if decl.kind == CursorKind.NO_DECL_FOUND:
         return None
     children = list(expr.get_children())

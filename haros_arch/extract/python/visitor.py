@@ -25,7 +25,7 @@ from ...model.location import Location
 from ...model.source import PrimitiveCall
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
-from .api import PyFunction
+from .api import Arg, PyFunction
 from .conditions import condition, is_main_guard, source_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
 from .msg_types import ros_type
@@ -75,6 +75,8 @@ _CONVERSIONS = frozenset({"int", "float", "str", "bool"})
 # a handler's exception type that catches a parameter read's failure (rospy's KeyError,
 # rclpy's ParameterNotDeclaredException / ParameterUninitializedException, Exception)
 _EXITS = frozenset({"exit", "_exit", "abort", "signal_shutdown", "shutdown"})
+# the program of qt_gui that runs one plugin alone (``main(argv, standalone=...)``)
+_QT_GUI_MAINS = frozenset({"rqt_gui.main.Main", "qt_gui.main.Main"})
 
 
 def _goes_on(handler: ast.ExceptHandler) -> bool:
@@ -120,6 +122,7 @@ class Walker:
         self.unseen_packages: frozenset[str] = frozenset()
         self._classes_said: dict[str, Location] = {}
         self._ros_init = False  # rclpy.init() is called
+        self._gui_plugin = False  # rqt_gui runs a plugin alone (``_standalone_plugin``)
         self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
         # the classes the walk constructs, and those they derive from (ids)
         self._constructed: set[int] = set()
@@ -689,6 +692,12 @@ class Walker:
         ev = self.evaluator
         target = ev.callee(call.func, frame)
         version = frame.module.version
+        plugin = self._standalone_plugin(call, frame)
+        if plugin is not None:
+            # rqt_gui's ``Main().main(standalone='pkg.module.Class')``: the program
+            # builds that plugin class (with a context the walk does not know)
+            target, self._gui_plugin = plugin, True
+            call = ast.copy_location(ast.Call(func=call.func, args=[], keywords=[]), call)
         if isinstance(target, SuperInit):
             if frame.instance is not None and ev.is_node_class(frame.instance.cls):
                 node_spec = rclpy.NODE_NAMES[("rclpy", "Node")]
@@ -752,6 +761,26 @@ class Walker:
                     self._used_classes.append(used)
             if init is not None:
                 self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
+
+    def _standalone_plugin(self, call: ast.Call, frame: Frame) -> ClassInfo | Ref | None:
+        """The plugin class ``Main.main(argv, standalone='pkg.module.Class')`` of
+        qt_gui (rqt_gui's ``Main``) runs alone: an rqt plugin's own program (bwi's
+        level_selector script). Its class in a module of the workspace, else the class
+        by name (a package not read: ``_unseen_class`` says so)."""
+        if not (isinstance(call.func, ast.Attribute) and call.func.attr == "main"):
+            return None
+        owner = self.evaluator.eval(call.func.value, frame)
+        if not (isinstance(owner, Unknown) and owner.origin in _QT_GUI_MAINS):
+            return None
+        given = argument(call, Arg(1, "standalone"))
+        text = text_of(evaluate(self.evaluator, given, frame)) if given is not None else None
+        if text is None or not text.is_known or "." not in (text.text or ""):
+            return None
+        module_name, _, name = str(text.text).rpartition(".")
+        path = self.loader.resolve_import(frame.module.path, 0, module_name)
+        module = self.loader.load(path) if path is not None else None
+        found = module.classes.get(name) if module is not None else None
+        return found if found is not None else Ref(str(text.text))
 
     def _changed_in_place(self, call: ast.Call, frame: Frame) -> None:
         """A list or dict a local or an attribute of ``self`` holds, changed by one of its
@@ -997,6 +1026,7 @@ class Walker:
         ``self.core.get_node()``): a script that does none of these (a generator of
         launch files, an installer) runs no such class as part of a ROS program."""
         if self.rosname is None and not self.names and not self._ros_init \
+                and not self._gui_plugin \
                 and not self.calls:
             return
         for cls, where in self._classes_said.items():

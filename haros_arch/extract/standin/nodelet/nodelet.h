@@ -82,5 +82,18 @@ public:
   Nodelet();
   virtual ~Nodelet();
 };
+// nodelet/loader.h: a process that loads nodelets by name (its loads are
+// CPP_PLUGINS_LOADED, found in the source's text)
+class Loader {
+public:
+  explicit Loader(bool provide_ros_api = true);
+  explicit Loader(const ros::NodeHandle& server_nh);
+  ~Loader();
+  bool load(const std::string& name, const std::string& type, const M_string& remappings,
+            const V_string& my_argv);
+  bool unload(const std::string& name);
+  bool clear();
+  std::vector<std::string> listLoadedNodelets();
+};
 }
 #endif

@@ -32,10 +32,14 @@ void getSubscribedTopics(V_string& topics);
 namespace names {
 std::string resolve(const std::string& name, bool remap = true);
 std::string append(const std::string& left, const std::string& right);
+const M_string& getRemappings();
+const M_string& getUnresolvedRemappings();
 }
 class AsyncSpinner {
 public:
   explicit AsyncSpinner(uint32_t thread_count);
+  AsyncSpinner(uint32_t thread_count, CallbackQueue* queue);  // a queue of its own
+  bool canStart();
   void start();
   void stop();
 };

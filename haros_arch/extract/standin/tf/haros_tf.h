@@ -188,6 +188,9 @@ class ConnectivityException : public TransformException { public: using Transfor
 class ExtrapolationException : public TransformException { public: using TransformException::TransformException; };
 class Transformer {
 public:
+  static const unsigned int MAX_GRAPH_DEPTH = 100UL;
+  static constexpr double DEFAULT_CACHE_TIME = 10.0;  // seconds
+  static const int64_t DEFAULT_MAX_EXTRAPOLATION_DISTANCE = 0ULL;
   template<class... A> void lookupTransform(A&&... args) const;
   template<class... A> bool waitForTransform(A&&... args) const;
   template<class... A> bool canTransform(A&&... args) const;

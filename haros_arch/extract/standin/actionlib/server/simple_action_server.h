@@ -39,6 +39,9 @@ namespace terminal_state { enum StateEnum { RECALLED, REJECTED, PREEMPTED, ABORT
   typedef boost::shared_ptr<Result> ResultPtr; \
   typedef boost::shared_ptr<const Feedback> FeedbackConstPtr; \
   typedef boost::shared_ptr<Feedback> FeedbackPtr;
+// actionlib/action_definition.h (which the servers' headers include): the same types in a
+// class templated on its action (bwi_common's InterruptableActionServer<ActionSpec>)
+#define ACTION_DEFINITION(A) HAROS_ACTIONLIB_TYPES(A)
 // the goal handle an ActionServer gives its callbacks (no ROS call of its own: what it
 // sends goes out on the server's topics)
 template<class A> class ServerGoalHandle {
@@ -135,6 +138,10 @@ public:
   typedef typename A::Feedback Feedback;
   typedef boost::shared_ptr<const Result> ResultConstPtr;
   typedef boost::shared_ptr<const Feedback> FeedbackConstPtr;
+  typedef boost::function<void(const SimpleClientGoalState&, const ResultConstPtr&)>
+      SimpleDoneCallback;
+  typedef boost::function<void()> SimpleActiveCallback;
+  typedef boost::function<void(const FeedbackConstPtr&)> SimpleFeedbackCallback;
   SimpleActionClient(const std::string& name, bool spin_thread = true);
   SimpleActionClient(ros::NodeHandle& n, const std::string& name, bool spin_thread = true);
   bool waitForServer(const ros::Duration& timeout = ros::Duration(0, 0)) const;
