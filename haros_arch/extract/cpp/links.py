@@ -433,7 +433,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             prefix = namespace if namespace == "~" or namespace.endswith("/") else (
                 namespace + "/")
             written = call.name[len(prefix):] if call.name.startswith(prefix) else call.name
-        text = f"{namespace or ''}{_SPLIT}{written}"
+        text = f"{_JOINED.sub(_join_mark, namespace or '')}{_SPLIT}{written}"
         if raw_param is not None:
             text += _PARAM_SPLIT + _param_text(raw_param)
         # a camera's camera_info names its image topic as written on the same handle
@@ -442,7 +442,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
             filled, _, param_text = filled.partition(_PARAM_SPLIT)
             ns, _, name = filled.partition(_SPLIT)
-            ns = normalise(_unmarked(ns)) if ns else ""
+            ns = normalise(_unmarked(_rejoined(ns))) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
                 name = "~" + name[2:]
             made = dataclasses.replace(
@@ -470,6 +470,25 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
+# a handle's namespace joined to the namespace a placeholder stands for (``NodeHandle
+# nh1(nh, "stereo")`` with ``nh`` a parameter another file passes): the placeholder, the
+# ``/`` of the join (``handles.join_name``), and ``_JOIN`` in its place until it is filled,
+# then joined as ``join_name`` does: the public handle's ``""`` gives ``stereo``, not
+# the global ``/stereo``
+_JOINED = re.compile(f"({_MARK.pattern})/")
+_JOIN = "\x0f"
+
+
+def _join_mark(found: re.Match[str]) -> str:
+    return found.group(1) + _JOIN
+
+
+def _rejoined(namespace: str) -> str:
+    """``namespace`` with each ``_JOIN`` a join of what precedes it and what follows."""
+    first, *rest = namespace.split(_JOIN)
+    for part in rest:
+        first = join_name(first, part) if first else part
+    return first
 
 
 def _param_text(param: str) -> str:
