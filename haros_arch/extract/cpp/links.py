@@ -158,7 +158,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                     facts.append((usr, CONDITIONS, conditions_text(under), site))
             template = conf.lib.clang_getSpecializedCursorTemplate(callee)
             if template is not None and callee.kind in _SPECIALISED and (
-                template.kind == CursorKind.FUNCTION_TEMPLATE
+                template.kind == CursorKind.FUNCTION_TEMPLATE or _of_class_template(template)
             ):
                 # a function template's specialisation: what is passed to it is passed
                 # to the template, whose code holds the calls (and their placeholders:
@@ -717,3 +717,10 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
                 # multiplied (``a + b`` of two functions of many callers each) end here
                 return [choose(_MARK.sub("?", text))]
     return out
+
+
+def _of_class_template(function: Cursor) -> bool:
+    """Whether ``function`` is a constructor or method of a class template."""
+    parent = function.semantic_parent
+    return function.kind in (CursorKind.CONSTRUCTOR, CursorKind.CXX_METHOD) and (
+        parent is not None and parent.kind == CursorKind.CLASS_TEMPLATE)

@@ -1,0 +1,84 @@
+"""A class template's constructor that another file of the node calls with its handles
+(robot_localization's ``RosFilter<T>``: ukf_localization_node.cpp builds ``RosUkf ukf(nh,
+nhLocal, args)``, ``RosUkf`` a ``RosFilter<Ukf>``, and ros_filter.cpp defines the
+template, whose three-argument constructor delegates to the four-argument one that sets
+``nhLocal_(nh_priv)``). What the other file passes to the specialisation is passed to
+the template's constructor, and the delegation in the template passes it on: the reads
+on ``nhLocal_`` are ``~print_diagnostics``, not ``?/print_diagnostics`` (any parameter
+of any namespace, which kept every private parameter of the configuration's other nodes
+undecided)."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+HEADER = """\
+#include <ros/ros.h>
+#include <string>
+#include <vector>
+template<class T> class Filter {
+ public:
+  Filter(ros::NodeHandle nh, ros::NodeHandle nh_priv, std::string name,
+         std::vector<double> args);
+  Filter(ros::NodeHandle nh, ros::NodeHandle nh_priv, std::vector<double> args);
+  void loadParams();
+ private:
+  ros::NodeHandle nh_;
+  ros::NodeHandle nhLocal_;
+  T filter_;
+};
+struct Ukf { int x; };
+typedef Filter<Ukf> RosUkf;
+"""
+FILTER = """\
+#include "cam/filter.h"
+template<typename T>
+Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle nh_priv, std::string name,
+                  std::vector<double> args) : nh_(nh), nhLocal_(nh_priv) {}
+template<typename T>
+Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle nh_priv, std::vector<double> args)
+    : Filter<T>::Filter(nh, nh_priv, ros::this_node::getName(), args) {}
+template<typename T>
+void Filter<T>::loadParams() {
+  bool diagnostics;
+  nhLocal_.param("print_diagnostics", diagnostics, true);
+}
+template class Filter<Ukf>;
+"""
+MAIN = """\
+#include "cam/filter.h"
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "ukf");
+  ros::NodeHandle nh, nhLocal("~");
+  std::vector<double> args(3, 0);
+  RosUkf ukf(CALL);
+  ukf.loadParams();
+  ros::spin();
+}
+"""
+CMAKE = """\
+cmake_minimum_required(VERSION 3.0)
+project(cam)
+find_package(catkin REQUIRED roscpp)
+include_directories(include)
+add_executable(ukf src/main.cpp src/filter.cpp)
+"""
+
+
+@pytest.mark.parametrize("call", ["nh, nhLocal, args", 'nh, nhLocal, "ukf", args'])
+def test_a_class_template_built_in_another_file_has_its_handles(write_tree,
+                                                                call: str) -> None:
+    root = write_tree({"cam/package.xml": package_xml("cam", "catkin").replace(
+                           "</package>", "<depend>roscpp</depend></package>"),
+                       "cam/CMakeLists.txt": CMAKE,
+                       "cam/include/cam/filter.h": HEADER,
+                       "cam/src/filter.cpp": FILTER,
+                       "cam/src/main.cpp": MAIN.replace("CALL", call)})
+    files = [str(root / "cam" / "src" / name) for name in ("filter.cpp", "main.cpp")]
+    result = extract_cpp(files, scan([str(root)]), cache_dir=None)
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("read", "~print_diagnostics")]
