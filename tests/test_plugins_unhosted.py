@@ -226,9 +226,11 @@ def test_a_vendor_library_named_by_the_callers_of_the_loading_function(
     vendor's, as a load that names them itself. It kept the driver partial (kinova-ros
     f014f5e undecided). A call that passes a value, or a library the workspace builds,
     keeps it so."""
-    def run(calls: str, cmake: str = "", header: str = "#include <dlfcn.h>") -> Any:
+    def run(calls: str, cmake: str = "", header: str = "#include <dlfcn.h>",
+            other: str = "") -> Any:
         node = VENDOR_NODE.replace("int main(", LOADER).replace("#include <dlfcn.h>", header)
         root = write_tree({
+            "src/arm/src/other.cpp": other,
             "src/arm/package.xml": package_xml("arm", build_type="catkin"),
             "src/arm/CMakeLists.txt":
                 "project(arm)\nadd_executable(arm_driver src/arm_driver.cpp)\n" + cmake,
@@ -256,4 +258,8 @@ def test_a_vendor_library_named_by_the_callers_of_the_loading_function(
     instance = run(both, "add_library(Arm.API.Comm src/comm.cpp)\n")
     assert instance.completeness == "partial"
     instance = run("")  # no call in the file: another may pass anything
+    assert instance.completeness == "partial"
+    # another source of the package calls it: with what, this unit does not see
+    instance = run(both, other="void * load(const char *, int);\n"
+                               "void * again(const char * name) { return load(name, 0); }\n")
     assert instance.completeness == "partial"

@@ -1006,13 +1006,35 @@ def _vendor_library(path: str, text: str, site: re.Match[str], tu: TranslationUn
     function the load is in is each literal the unit's calls of that function pass
     (kinova_driver's later ``loadLibraries(const char *command_lib, ...)``, called with
     ``KINOVA_USB_LIBRARY`` or ``KINOVA_ETH_LIBRARY``), when there are calls and every
-    one passes a literal."""
-    names = _loaded_names(path, text, site.end(), tu)
+    one passes a literal, and no other source of the package names the function
+    followed by ``(`` (a call the unit does not see may pass any name)."""
+    names = _loaded_names(path, text, site.end(), tu, _called_elsewhere(path, workspace))
     return bool(names) and all(_not_built(name, workspace) for name in names)
 
 
+def _called_elsewhere(path: str, workspace: Workspace) -> Callable[[str], bool]:
+    """Whether a C or C++ source of the package ``path`` is in, other than ``path``, names
+    a function followed by ``(``."""
+    roots = [p.root for p in workspace.packages.values()
+             if path.startswith(os.path.join(p.root, ""))]
+    texts: list[str] = []
+
+    def named(name: str) -> bool:
+        if not texts and roots:
+            root = max(roots, key=len)
+            for folder, _dirs, files in os.walk(root):
+                for file in files:
+                    full = os.path.join(folder, file)
+                    if full != path and file.endswith((".c", ".cc", ".cpp", ".cxx")):
+                        texts.append(read_text(full, workspace.location(full))[0] or "")
+        called = re.compile(r"\b" + re.escape(name) + r"\s*\(")
+        return any(called.search(text) for text in texts)
+    return named
+
+
 def _loaded_names(path: str, text: str, offset: int, tu: TranslationUnit,
-                  ends: str = ",", depth: int = 0) -> list[str]:
+                  elsewhere: Callable[[str], bool], ends: str = ",",
+                  depth: int = 0) -> list[str]:
     """The literal names the argument written at ``offset`` of ``text`` stands for (see
     ``_vendor_library``), followed by one of ``ends``; none when one of them is not a
     literal."""
@@ -1035,7 +1057,7 @@ def _loaded_names(path: str, text: str, offset: int, tu: TranslationUnit,
     if parm is None or parm.kind != CursorKind.PARM_DECL or (
             parm.spelling != macro.group(1) or depth >= MAX_PASSED_DEPTH):
         return []
-    return _passed_literals(path, text, parm, tu, depth + 1)
+    return _passed_literals(path, text, parm, tu, elsewhere, depth + 1)
 
 
 def _parameter_named(tu: TranslationUnit, path: str, line: int, name: str) -> Cursor | None:
@@ -1082,11 +1104,12 @@ def _macro_literal(cursor: Cursor, name: str) -> str | None:
 
 
 def _passed_literals(path: str, text: str, parm: Cursor, tu: TranslationUnit,
-                     depth: int) -> list[str]:
+                     elsewhere: Callable[[str], bool], depth: int) -> list[str]:
     """The literals (written, or macros of one) the calls in the unit's own source pass
-    for ``parm``; none when there is no call or one passes anything else."""
+    for ``parm``; none when there is no call, one passes anything else, or another
+    source may call the function (``elsewhere``)."""
     function = parm.semantic_parent
-    if function is None:
+    if function is None or elsewhere(function.spelling):
         return []
     params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
     index = next((i for i, p in enumerate(params) if p == parm), None)
@@ -1108,8 +1131,8 @@ def _passed_literals(path: str, text: str, parm: Cursor, tu: TranslationUnit,
             at = args[index].extent.start
             if at.file is None or os.path.abspath(at.file.name) != path:
                 return []
-            names = _loaded_names(path, text, _offset(text, at.line, at.column), tu, ",)",
-                                  depth)
+            names = _loaded_names(path, text, _offset(text, at.line, at.column), tu,
+                                  elsewhere, ",)", depth)
             if not names:
                 return []
             found.extend(names)

@@ -363,7 +363,7 @@ struct haros_any {
   template <class T> operator T &() const;
   haros_any *operator->() const;
   haros_any &operator*() const;
-  haros_address operator&() const;  // (below)
+  haros_address operator&() const;  // (above)
   template <class... A> haros_any &operator()(A &&...) const;
   // a braced list given to a permissive call, which no template parameter deduces (the
   // asio idiom ``*resolver.resolve({udp::v4(), host, port})`` of kuka_eki_hw_interface,
