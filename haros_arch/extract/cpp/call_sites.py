@@ -448,10 +448,6 @@ class CallSites:
                     ):
                         self._index.setdefault(key_of(target.canonical), []).append(
                             (arguments, function))
-                        # what it passes, for the node's other files (``passing_sites``):
-                        # robot_localization's ``RosFilter<T>(nh, nh_priv, args)``, which
-                        # ukf_localization_node.cpp calls, delegates in ros_filter.cpp
-                        self._base_calls[key_of(arguments)] = target
                     # and a class template's constructor its base's, with the argument
                     # list clang keeps there instead of a call
                     bases.extend((arguments, target, function)
