@@ -126,8 +126,9 @@ def test_an_out_of_class_method_named_after_a_member_in_a_header(tmp_path) -> No
 
 def test_a_method_also_called_outside_a_constructor_keeps_its_call(tmp_path) -> None:
     # ``reset()`` calls it again: that call is not a construction's, so the method's
-    # own call stays where it is written (its name unknown there), beside each
-    # construction's
+    # own call stays where it is written, beside each construction's, its member filled
+    # with what each construction gives it, as for a class that is no template (it was
+    # ``?``: the constructions' arguments were known by the specialisation only)
     code = IN_CLASS.replace("  typename rclcpp::Publisher<M>::SharedPtr advertise(",
                             "  void reset() { pub_ = advertise(1); }\n"
                             "  typename rclcpp::Publisher<M>::SharedPtr advertise(")
@@ -138,7 +139,8 @@ def test_a_method_also_called_outside_a_constructor_keeps_its_call(tmp_path) -> 
     source.write_text(code)
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     names = sorted(c.name for c in result.calls)
-    assert names == ["?", "color/detections", "color/image"], names
+    assert names == ["color/detections", "color/detections", "color/image", "color/image"], (
+        names)
 
 
 def test_a_method_nothing_calls_makes_no_call(tmp_path) -> None:
@@ -178,7 +180,9 @@ def test_a_method_bound_as_a_callback_keeps_its_call(tmp_path) -> None:
     source.write_text(code)
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     names = sorted(c.name for c in result.calls if c.kind == "publish")
-    assert names == ["?/later", "color/detections", "color/image"], names
+    # each object's ``later()`` publishes under its own topic (was ``?/later``)
+    assert names == ["color/detections", "color/detections/later", "color/image",
+                     "color/image/later"], names
 
 
 TAG_DISPATCHED = """\

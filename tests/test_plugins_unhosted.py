@@ -208,3 +208,58 @@ def test_a_vendor_library_the_code_names_is_no_plugin(write_tree: Any) -> None:
     instance = _vendor_run(write_tree, "void * more = dlopen(argv[1], RTLD_NOW);")
     assert instance.completeness == "partial"
     assert [r for r in instance.completeness_reasons if "dlopen(argv[1]" in r]
+
+
+LOADER = """
+    void * load(const char * library, int flags) {
+      return dlopen(library, RTLD_NOW | flags);
+    }
+
+    int main("""
+
+
+def test_a_vendor_library_named_by_the_callers_of_the_loading_function(
+        write_tree: Any) -> None:
+    """A later kinova_arm_driver dlopen()s ``command_lib``, a parameter of its
+    ``loadLibraries(const char *command_lib, const char *comm_lib)``, which its file calls
+    with the macros of Kinova's USB or Ethernet API: the libraries the calls name, a
+    vendor's, as a load that names them itself. It kept the driver partial (kinova-ros
+    f014f5e undecided). A call that passes a value, or a library the workspace builds,
+    keeps it so."""
+    def run(calls: str, cmake: str = "", header: str = "#include <dlfcn.h>",
+            other: str = "") -> Any:
+        node = VENDOR_NODE.replace("int main(", LOADER).replace("#include <dlfcn.h>", header)
+        root = write_tree({
+            "src/arm/src/other.cpp": other,
+            "src/arm/package.xml": package_xml("arm", build_type="catkin"),
+            "src/arm/CMakeLists.txt":
+                "project(arm)\nadd_executable(arm_driver src/arm_driver.cpp)\n" + cmake,
+            "src/arm/include/arm/api.h":
+                '#define ARM_USB_LIBRARY "Arm.API.USBCommandLayer.so"\n',
+            "src/arm/src/arm_driver.cpp": node.replace("OTHER", calls),
+            "src/arm/launch/arm.launch":
+                '<launch><node pkg="arm" type="arm_driver" name="arm"/></launch>\n',
+            "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch]\n",
+        })
+        model = analyse(load(str(root / "project.yaml")),
+                        {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+        return next(n for n in model.configurations[0].nodes if n.name == "/arm")
+
+    both = 'load(ARM_USB_LIBRARY, RTLD_NOW); load("libArm.API.Comm.so", RTLD_NOW);'
+    instance = run(both)
+    assert instance.completeness == "complete", instance.completeness_reasons
+    # without <dlfcn.h> (kinova's parse dropped its loads' statements, read then off the
+    # function's parameters; here the names the synthesis declares keep it)
+    instance = run(both.replace("RTLD_NOW", "2"), header="")
+    assert instance.completeness == "complete", instance.completeness_reasons
+    instance = run(both + " load(argv[1], RTLD_NOW);")
+    assert instance.completeness == "partial"
+    assert [r for r in instance.completeness_reasons if "dlopen(library" in r]
+    instance = run(both, "add_library(Arm.API.Comm src/comm.cpp)\n")
+    assert instance.completeness == "partial"
+    instance = run("")  # no call in the file: another may pass anything
+    assert instance.completeness == "partial"
+    # another source of the package calls it: with what, this unit does not see
+    instance = run(both, other="void * load(const char *, int);\n"
+                               "void * again(const char * name) { return load(name, 0); }\n")
+    assert instance.completeness == "partial"

@@ -999,9 +999,11 @@ def library_loads(path: str, text: str, workspace: Workspace,
                        ("//", "*", "/*", "#"))
 
 
-# a load's first argument: a string literal with no escape, a macro's name
-_LITERAL_ARGUMENT = re.compile(r'\s*"([^"\\\n]+)"\s*,')
-_MACRO_ARGUMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*,")
+# a load's first argument (or one a call passes for its name): a string literal with no
+# escape, a macro's name; then the argument's end
+_LITERAL_ARGUMENT = re.compile(r'\s*"([^"\\\n]+)"\s*([,)])')
+_MACRO_ARGUMENT = re.compile(r"\s*([A-Za-z_]\w*)\s*([,)])")
+MAX_PASSED_DEPTH = 4  # functions that pass a library's name on, read back
 _LIBRARY_FILE = re.compile(r"^(?:.*/)?(?:lib)?([\w.+-]+?)(?:\.so(?:\.[\d.]*)?|\.dll|\.dylib)?$")
 
 
@@ -1012,30 +1014,154 @@ def _vendor_library(path: str, text: str, site: re.Match[str], tu: TranslationUn
     ``"Kinova.API.USBCommandLayerUbuntu.so"``) whose name no ``add_library`` of the
     workspace's CMake files makes (a vendor's library, not ROS code of the workspace).
     Read off the text and the parse's macro definitions: the call itself may not be
-    in the parse (``dlfcn.h`` is no stand-in)."""
-    literal = _LITERAL_ARGUMENT.match(text, site.end())
-    if literal is not None:
-        written = literal.group(1)
-    else:
-        macro = _MACRO_ARGUMENT.match(text, site.end())
-        if macro is None:
-            return False
-        start = macro.start(1)
-        line = text.count("\n", 0, start) + 1
-        column = len(text[text.rfind("\n", 0, start) + 1:start].encode("utf-8")) + 1
-        try:
-            cursor = Cursor.from_location(tu, tu.get_location(path, (line, column)))
-            defined = cursor.referenced if cursor is not None and (
-                cursor.kind == CursorKind.MACRO_INSTANTIATION) else None
-            tokens = [t.spelling for t in defined.get_tokens()] if defined is not None else []
-        except (ValueError, TypeError, AttributeError):
-            return False
-        if len(tokens) != 2 or tokens[0] != macro.group(1):
-            return False
-        quoted = _LITERAL_ARGUMENT.fullmatch(tokens[1] + ",")
-        if quoted is None:
-            return False
-        written = quoted.group(1)
+    in the parse (``dlfcn.h`` is no stand-in). A name that is a parameter of the
+    function the load is in is each literal the unit's calls of that function pass
+    (kinova_driver's later ``loadLibraries(const char *command_lib, ...)``, called with
+    ``KINOVA_USB_LIBRARY`` or ``KINOVA_ETH_LIBRARY``), when there are calls and every
+    one passes a literal, and no other source of the package names the function
+    followed by ``(`` (a call the unit does not see may pass any name)."""
+    names = _loaded_names(path, text, site.end(), tu, _called_elsewhere(path, workspace))
+    return bool(names) and all(_not_built(name, workspace) for name in names)
+
+
+def _called_elsewhere(path: str, workspace: Workspace) -> Callable[[str], bool]:
+    """Whether a C or C++ source of the package ``path`` is in, other than ``path``, names
+    a function followed by ``(``."""
+    roots = [p.root for p in workspace.packages.values()
+             if path.startswith(os.path.join(p.root, ""))]
+    texts: list[str] = []
+
+    def named(name: str) -> bool:
+        if not texts and roots:
+            root = max(roots, key=len)
+            for folder, _dirs, files in os.walk(root):
+                for file in files:
+                    full = os.path.join(folder, file)
+                    if full != path and file.endswith((".c", ".cc", ".cpp", ".cxx")):
+                        texts.append(read_text(full, workspace.location(full))[0] or "")
+        called = re.compile(r"\b" + re.escape(name) + r"\s*\(")
+        return any(called.search(text) for text in texts)
+    return named
+
+
+def _loaded_names(path: str, text: str, offset: int, tu: TranslationUnit,
+                  elsewhere: Callable[[str], bool], ends: str = ",",
+                  depth: int = 0) -> list[str]:
+    """The literal names the argument written at ``offset`` of ``text`` stands for (see
+    ``_vendor_library``), followed by one of ``ends``; none when one of them is not a
+    literal."""
+    literal = _LITERAL_ARGUMENT.match(text, offset)
+    if literal is not None and literal.group(2) in ends:
+        return [literal.group(1)]
+    macro = _MACRO_ARGUMENT.match(text, offset)
+    if macro is None or macro.group(2) not in ends:
+        return []
+    cursor = _cursor_at(tu, path, text, macro.start(1))
+    if cursor is None:
+        return []
+    if cursor.kind == CursorKind.MACRO_INSTANTIATION:
+        written = _macro_literal(cursor, macro.group(1))
+        return [written] if written is not None else []
+    # a parameter of the function the load is in: read off the function, as the parse
+    # may have dropped the statement (no declaration of ``dlopen``: kinova_api.cpp)
+    parm = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else (
+        _parameter_named(tu, path, text.count("\n", 0, offset) + 1, macro.group(1)))
+    if parm is None or parm.kind != CursorKind.PARM_DECL or (
+            parm.spelling != macro.group(1) or depth >= MAX_PASSED_DEPTH):
+        return []
+    return _passed_literals(path, text, parm, tu, elsewhere, depth + 1)
+
+
+def _parameter_named(tu: TranslationUnit, path: str, line: int, name: str) -> Cursor | None:
+    """The parameter ``name`` of the function defined in the unit's source ``path`` whose
+    body holds ``line``."""
+    stack = list(tu.cursor.get_children())
+    while stack:
+        node = stack.pop()
+        extent = node.extent
+        where = extent.start.file
+        if where is None or os.path.abspath(where.name) != path or not (
+                extent.start.line <= line <= extent.end.line):
+            continue
+        if node.kind in (CursorKind.NAMESPACE, CursorKind.CLASS_DECL,
+                         CursorKind.STRUCT_DECL):
+            stack.extend(node.get_children())
+        elif node.is_definition():
+            return next((c for c in node.get_children()
+                         if c.kind == CursorKind.PARM_DECL and c.spelling == name), None)
+    return None
+
+
+def _cursor_at(tu: TranslationUnit, path: str, text: str, start: int) -> Cursor | None:
+    """The parse's cursor at offset ``start`` of ``text`` (the unit's source ``path``)."""
+    line = text.count("\n", 0, start) + 1
+    column = len(text[text.rfind("\n", 0, start) + 1:start].encode("utf-8")) + 1
+    try:
+        return Cursor.from_location(tu, tu.get_location(path, (line, column)))
+    except (ValueError, TypeError, AttributeError):
+        return None
+
+
+def _macro_literal(cursor: Cursor, name: str) -> str | None:
+    """The string literal the macro ``name`` instantiated at ``cursor`` is defined as."""
+    try:
+        defined = cursor.referenced
+        tokens = [t.spelling for t in defined.get_tokens()] if defined is not None else []
+    except (ValueError, TypeError, AttributeError):
+        return None
+    if len(tokens) != 2 or tokens[0] != name:
+        return None
+    quoted = _LITERAL_ARGUMENT.fullmatch(tokens[1] + ",")
+    return quoted.group(1) if quoted is not None else None
+
+
+def _passed_literals(path: str, text: str, parm: Cursor, tu: TranslationUnit,
+                     elsewhere: Callable[[str], bool], depth: int) -> list[str]:
+    """The literals (written, or macros of one) the calls in the unit's own source pass
+    for ``parm``; none when there is no call, one passes anything else, or another
+    source may call the function (``elsewhere``)."""
+    function = parm.semantic_parent
+    if function is None or elsewhere(function.spelling):
+        return []
+    params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+    index = next((i for i, p in enumerate(params) if p == parm), None)
+    target = function.canonical
+    if index is None or target is None:
+        return []
+    found: list[str] = []
+    for top in tu.cursor.get_children():
+        where = top.location.file
+        if where is None or os.path.abspath(where.name) != path:
+            continue
+        for node in top.walk_preorder():
+            called = node.referenced if node.kind == CursorKind.CALL_EXPR else None
+            if called is None or called.canonical != target:
+                continue
+            args = list(node.get_arguments())
+            if index >= len(args):
+                return []
+            at = args[index].extent.start
+            if at.file is None or os.path.abspath(at.file.name) != path:
+                return []
+            names = _loaded_names(path, text, _offset(text, at.line, at.column), tu,
+                                  elsewhere, ",)", depth)
+            if not names:
+                return []
+            found.extend(names)
+    return found
+
+
+def _offset(text: str, line: int, column: int) -> int:
+    """The offset in ``text`` of a 1-based line and byte column."""
+    start = 0
+    for _ in range(line - 1):
+        start = text.index("\n", start) + 1
+    return start + len(text[start:].encode("utf-8")[:column - 1].decode("utf-8", "replace"))
+
+
+def _not_built(written: str, workspace: Workspace) -> bool:
+    """Whether no ``add_library`` of the workspace's CMake files makes the library whose
+    file name is ``written``."""
     named = _LIBRARY_FILE.match(written)
     if named is None:
         return False

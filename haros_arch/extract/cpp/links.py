@@ -158,7 +158,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                     facts.append((usr, CONDITIONS, conditions_text(under), site))
             template = conf.lib.clang_getSpecializedCursorTemplate(callee)
             if template is not None and callee.kind in _SPECIALISED and (
-                template.kind == CursorKind.FUNCTION_TEMPLATE
+                template.kind == CursorKind.FUNCTION_TEMPLATE or _of_class_template(template)
             ):
                 # a function template's specialisation: what is passed to it is passed
                 # to the template, whose code holds the calls (and their placeholders:
@@ -442,7 +442,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             prefix = namespace if namespace == "~" or namespace.endswith("/") else (
                 namespace + "/")
             written = call.name[len(prefix):] if call.name.startswith(prefix) else call.name
-        text = f"{namespace or ''}{_SPLIT}{written}"
+        text = f"{_JOINED.sub(_join_mark, namespace or '')}{_SPLIT}{written}"
         if raw_param is not None:
             text += _PARAM_SPLIT + _param_text(raw_param)
         if lists:
@@ -456,6 +456,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             ns, _, name = filled.partition(_SPLIT)
             # (a parameter's mark in the namespace names the call, as one in the name
             # does: costmap_2d's ``ros::NodeHandle target_layer(nh, plugin_name)``)
+            ns = _rejoined(ns) if ns else ""
             marked = normalise(ns) if ns else ""
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
@@ -486,7 +487,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
-_LIST_SPLIT = "\x0f"  # before each list of its conditions' elements expanded with it
+_LIST_SPLIT = "\x10"  # before each list of its conditions' elements expanded with it
 
 
 def _lists_filled(call: PrimitiveCall, filled: dict[str, str]) -> PrimitiveCall:
@@ -503,6 +504,27 @@ def _lists_filled(call: PrimitiveCall, filled: dict[str, str]) -> PrimitiveCall:
         conditions.append(condition if elements == condition.elements else (
             dataclasses.replace(condition, elements=kept or None)))
     return dataclasses.replace(call, conditions=tuple(conditions))
+
+
+# a handle's namespace joined to the namespace a placeholder stands for (``NodeHandle
+# nh1(nh, "stereo")`` with ``nh`` a parameter another file passes): the placeholder, the
+# ``/`` of the join (``handles.join_name``), and ``_JOIN`` in its place until it is filled,
+# then joined as ``join_name`` does: the public handle's ``""`` gives ``stereo``, not
+# the global ``/stereo``
+_JOINED = re.compile(f"({_MARK.pattern})/")
+_JOIN = "\x0f"
+
+
+def _join_mark(found: re.Match[str]) -> str:
+    return found.group(1) + _JOIN
+
+
+def _rejoined(namespace: str) -> str:
+    """``namespace`` with each ``_JOIN`` a join of what precedes it and what follows."""
+    first, *rest = namespace.split(_JOIN)
+    for part in rest:
+        first = join_name(first, part) if first else part
+    return first
 
 
 def _param_text(param: str) -> str:
@@ -731,3 +753,10 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
                 # multiplied (``a + b`` of two functions of many callers each) end here
                 return [choose(_MARK.sub("?", text))]
     return out
+
+
+def _of_class_template(function: Cursor) -> bool:
+    """Whether ``function`` is a constructor or method of a class template."""
+    parent = function.semantic_parent
+    return function.kind in (CursorKind.CONSTRUCTOR, CursorKind.CXX_METHOD) and (
+        parent is not None and parent.kind == CursorKind.CLASS_TEMPLATE)

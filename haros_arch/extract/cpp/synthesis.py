@@ -342,6 +342,18 @@ _PRELUDE = """\
 #include <string>  // std::to_string of a permissive value (below)
 #include <memory>  // a cast of a permissive value to a shared_ptr (below)
 enum haros_integral : long long {};
+struct haros_any;
+// the address of a permissive value converts to any pointer, as the value does to any
+// type: realsense's ``readAndSetDynamicParam(nh1, ..., &(roi.min_x))`` takes an ``int *``,
+// ``roi`` of librealsense's missing ``rs2::region_of_interest``, and clang kept the call,
+// whose ``haros_any *`` converts to no ``int *``, as a recovery expression: no call of
+// the function. Built from 0 or nullptr (``flag ? &value : 0``), from nothing else
+struct haros_address {
+  haros_address(decltype(nullptr)); haros_address(int);
+  template <class T> operator T *() const;
+  haros_any *operator->() const;
+  haros_any &operator*() const;
+};
 struct haros_any {
   template <class... A> haros_any(A &&...) {}
   // braces of braces (naoqi's ``boost::array<double, 9>{{556.8, 0, 309.4, ...}}``); not
@@ -351,6 +363,7 @@ struct haros_any {
   template <class T> operator T &() const;
   haros_any *operator->() const;
   haros_any &operator*() const;
+  haros_address operator&() const;  // (above)
   template <class... A> haros_any &operator()(A &&...) const;
   // a braced list given to a permissive call, which no template parameter deduces (the
   // asio idiom ``*resolver.resolve({udp::v4(), host, port})`` of kuka_eki_hw_interface,

@@ -549,7 +549,16 @@ class Scope:
         if not before:
             return None
         later = [w[0] for w in placed if w[1] > where]
+        # a variable declared in a loop's body (a lambda's) is a new one each turn (call):
+        # the writes after the read in it reach no later read (realsense's ``std::string
+        # param_name(_stream_name[s] + "_width"); _pnh.param(param_name, ...); param_name =
+        # _stream_name[s] + "_height";`` in a loop over its streams)
+        declared = decl.extent.start
+        born = declared.offset if declared.file is not None and (
+            declared.file.name == body.start.file.name) else -1
         for first, last in self._repeated:
+            if first <= born <= last:
+                continue
             if first <= where <= last and any(
                     first <= other <= last or self._in_lambda(first, last)
                     for other in later):
