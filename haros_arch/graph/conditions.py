@@ -702,9 +702,9 @@ def decide_links(config: Configuration) -> None:
                 link.conditions = tuple(kept)
         # a call made in one turn of a loop over a list and not in another (graph.build.
         # element_calls) is there: no word of the turns that do not make it
-        gone = set(map(id, dropped))
+        gone = {id(link) for link, _ in falses}
         made_here = {(k.location, k.kind, k.rosname.full) for k in instance.links
-                     if id(k) not in gone}
+                     if id(k) not in gone} if falses else set()
         for link, false in falses:
             if (link.location, link.kind, link.rosname.full) in made_here:
                 continue

@@ -1709,14 +1709,14 @@ class CallFinder:
         # ``ros::NodeHandle lnh(nh, firstcam)``, ``firstcam`` read from
         # ``first_namespace``, default "left"): the graph puts it in the place of the
         # ``?`` of each name given on that handle, as for a name that holds one
+        one_unknown = unknown_from is not None and not self.ros2 and (
+            namespace is not None and namespace.count("?") == 1)
         held = self._parameter_source(unknown_from[0], unknown_from[1], 0) if (
-            unknown_from is not None and not self.ros2 and namespace is not None
-            and namespace.count("?") == 1) else None
+            one_unknown and unknown_from is not None) else None
         # ... or each element of a list parameter in turn (costmap_2d's ``ros::NodeHandle
         # target_layer(nh, plugin_name)``, ``plugin_name`` each ``plugins[i]["name"]``)
         each = self._each_element(unknown_from[0], unknown_from[1]) if (
-            held is None and unknown_from is not None and not self.ros2
-            and namespace is not None and namespace.count("?") == 1) else None
+            one_unknown and unknown_from is not None and held is None) else None
         held_source = (*held, None, None) if held is not None else (
             (each[0], None, None, each[2], each[1]) if each is not None
             and each[0] is not None else None)
@@ -3152,12 +3152,11 @@ def _element_field(expr: Cursor) -> tuple[Cursor, str] | None:
         if target is not None and target.kind == CursorKind.CONSTRUCTOR and (
                 len(children) == 1):
             expr = children[0]  # std::string(..), a copy of the converted value
-        elif target is not None and target.kind == CursorKind.CONVERSION_FUNCTION and (
-                children and children[0].kind == CursorKind.MEMBER_REF_EXPR):
-            held = [c for c in children[0].get_children() if c.kind.is_expression()]
-            if not held:
+        elif target is not None and target.kind == CursorKind.CONVERSION_FUNCTION:
+            held = _method_object(expr)  # value.operator std::string &()
+            if held is None:
                 return None
-            expr = held[0]  # value.operator std::string &()
+            expr = held
         else:
             break
     found = _subscript(expr)
