@@ -204,11 +204,15 @@ def test_list_read_on_a_handle_another_file_names(write_tree) -> None:
     tested = [k for c in result.calls for k in c.conditions if "plugin_type" in k.text]
     assert tested and all(k.elements == (("plugin_type", "~global_costmap/plugins", "type"),)
                           for k in tested)
-    config = _graph(result.calls, [("/mb/global_costmap/plugins", PLUGINS)])
+    config = _graph(result.calls, [("/mb/global_costmap/plugins", PLUGINS),
+                                   ("/mb/global_costmap/map_topic", "map")])
     copies = {(k.kind, k.rosname.full) for k in config.links if k.kind in ("read", "write")
               and k.rosname.full.endswith(("map_topic", "inflation_radius"))}
     assert copies == {("read", "/mb/global_costmap/map_topic"),
                       ("write", "/mb/global_costmap/static/map_topic")}
+    # move_parameter copies only what is set (``if (!old_h.hasParam(name)) return;``)
+    config = _graph(result.calls, [("/mb/global_costmap/plugins", PLUGINS)])
+    assert not [k for k in config.links if k.kind == "write"]
 
 
 def test_element_conditions_kept_by_the_unit_cache() -> None:

@@ -73,7 +73,8 @@ def test_what_a_lazy_initialisation_makes_is_made(write_tree):
     assert calls == [
         ("again", (("else", "!isInitialized()"),)),
         ("early", (("if", "!initialized_"),)),
-        ("off", (("if", "!enabled_"),)),
+        # after ``if (!initialized_) {..; return;}``: under its else
+        ("off", (("else", "!initialized_"), ("if", "!enabled_"))),
         ("ready", ()),
         ("~dwa/global_plan", ()),
     ]

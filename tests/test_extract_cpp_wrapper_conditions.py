@@ -218,4 +218,7 @@ def test_a_condition_on_the_wrappers_parameter_is_decided_at_each_call_site(writ
                          cache_dir=None)
     deleted = {c.name: tuple(k.text for k in c.conditions) for c in result.calls
                if c.kind == "write" and c.deletes}
-    assert deleted == {"moved": (), "deep": (), "layer/deep_old": (), "reset": ("!keep",)}
+    # (after ``if (!old_h.hasParam(name)) return;``: under its else)
+    moved = ("!old_h.hasParam(name)",)
+    assert deleted == {"moved": moved, "deep": moved, "layer/deep_old": moved,
+                       "reset": ("!keep",)}

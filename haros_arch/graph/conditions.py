@@ -213,7 +213,11 @@ class _Grammar:
         self._take("(")
         literal, text = self._peek()
         self.at += 1
-        if literal != "string":
+        if literal == "name" and self._peek() in (("op", ","), ("op", ")")):
+            # a variable's name (``old_h.hasParam(name)``): the test the code makes
+            # where it makes the call the condition guards (``presence_value``)
+            text = f'"{VARIABLE_MARK}{text}"'
+        elif literal != "string":
             raise ValueError("parameter name")
         depth = 0
         while depth or self._peek() != ("op", ")"):
@@ -259,6 +263,8 @@ _PRESENCE_METHODS = {"getParam": "get", "hasParam": "has", "getParamCached": "ge
 _PRESENCE_FUNCTIONS = {"ros::param::get": "get", "ros::param::has": "has",
                        "ros::param::getCached": "get"}
 PRESENCE_PREFIX = "haros_presence_"
+# the start of a presence test's parameter written as a variable, not a literal
+VARIABLE_MARK = "\x00"
 
 
 def presence_name(name: str) -> tuple[str, str] | None:
@@ -538,6 +544,28 @@ def _presence_value(config: Configuration, instance: NodeInstance, file: str | N
     return answers.pop()
 
 
+def _presence_at(config: Configuration, instance: NodeInstance, kind: str,
+                 variable: str, made: dict[str, Any], at: Location | None,
+                 site: Location | None) -> object:
+    """Whether ``hasParam(variable)`` / ``getParam(variable, v)`` finds its parameter,
+    for a call that the test guards made at ``site``: the test is one of the node's
+    tested reads made at that site and not under the test itself (costmap_2d's
+    ``move_parameter(old_h, new_h, name)``, called once per name: ``if
+    (!old_h.hasParam(name)) return;`` before the copy). Reads there that disagree
+    leave it unknown."""
+    unknown = Unknown(f"which parameter {variable} names")
+    if instance.ros_version != 1 or site is None or at is None:
+        return unknown
+    found = [link for link in instance.links
+             if link.kind == "read" and link.call is not None and link.call.tested
+             and link.call.location == site and isinstance(link.resource, Parameter)
+             and not any(c.location == at for c in link.conditions)]
+    answers = {_present(config, link, kind, made, at) for link in found}
+    if len(answers) != 1:
+        return unknown
+    return answers.pop()
+
+
 def _shared_namespace(name: str, other: str) -> int:
     """How many leading namespace segments two names share."""
     count = 0
@@ -630,7 +658,7 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
 
     def value(name: str, *, file: str | None,
               held: dict[str, str] | None = None, at: Location | None = None,
-              near: str | None = None) -> object:
+              near: str | None = None, site: Location | None = None) -> object:
         # a read in the condition's own file, else in another file of the node: a base
         # class's header that reads what its subclasses test (pcl_ros' PCLNodelet::onInit
         # reads ~use_indices into use_indices_, filter.cpp tests it); reads that disagree
@@ -639,9 +667,13 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
         # reads of x.
         presence = presence_name(name)
         if presence is not None:
-            return (_presence_value(config, instance, file, *presence,
-                                    {} if made is None else made, at, near)
-                    if config is not None else Unknown("no configuration"))
+            if config is None:
+                return Unknown("no configuration")
+            if presence[1].startswith(VARIABLE_MARK):
+                return _presence_at(config, instance, presence[0], presence[1][1:],
+                                    {} if made is None else made, at, site)
+            return _presence_value(config, instance, file, *presence,
+                                   {} if made is None else made, at, near)
         parameter = held.get(name) if held else None
         parameter = parameter if parameter is not None else parameter_name(name)
         if parameter is None and not (reads.get((file, name)) or anywhere.get(name)) and (
@@ -689,7 +721,8 @@ def decide_links(config: Configuration) -> None:
             for condition in link.conditions:
                 answer = decide(condition, functools.partial(
                     members, file=condition.location.file, held=readable(condition)[1],
-                    at=condition.location, near=link.rosname.full), views)
+                    at=condition.location, near=link.rosname.full,
+                    site=link.call.location if link.call is not None else None), views)
                 if answer is False:
                     false = condition
                     break

@@ -39,7 +39,23 @@ _LABELS = (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT)
 _CONTROL = frozenset({
     CursorKind.IF_STMT, *_LOOPS, CursorKind.DO_STMT, CursorKind.SWITCH_STMT,
     CursorKind.CXX_TRY_STMT, CursorKind.CONDITIONAL_OPERATOR, CursorKind.BINARY_OPERATOR,
-    CursorKind.CXX_CATCH_STMT})
+    CursorKind.CXX_CATCH_STMT, CursorKind.COMPOUND_STMT})
+# what a block's statements after ``if (TEST) return;`` run under starts again at a label
+# (a ``goto``, or a ``case`` reached by the switch, jumps there)
+_JUMPED_TO = frozenset({*_LABELS, CursorKind.LABEL_STMT})
+# a test of whether a parameter is set (``nh.hasParam("x")``, ``!nh.getParam("x", v)``,
+# ``node->get_parameter("x", v)``): when its failing side aborts, the parameter is required
+_PRESENCE = re.compile(
+    r"\b(?:hasParam|getParam|getParamCached|has_parameter|get_parameter|has_param|get_param"
+    r"|param::get|param::has)\s*[<(]")
+# a returned value that says the function failed (``return false;``, ``return -1;``,
+# ``return CallbackReturn::ERROR;``, ``return EXIT_FAILURE;``, ``return nullptr;``);
+# any other value, or none, is a function done early on purpose
+# an error logged by the client library's macros
+_ERROR_LOG = re.compile(r"\b(?:ROS|RCLCPP)_(?:ERROR|FATAL)\w*\s*\(")
+_FAILED = re.compile(
+    r"^(?:false|-\s*\d+|nullptr|NULL|\w*(?:::)?\w*EXIT_FAILURE)$|\b(?:ERROR|FAILURE|Error"
+    r"|Failure|FAILED|Failed)\b")
 _SPACE = re.compile(r"\s+")
 # ``!node->has_parameter(name)``, ``!this->has_parameter("x")``, ``!has_parameter(x)``
 _NOT_DECLARED = re.compile(
@@ -120,21 +136,145 @@ class ConditionReader:
         if kind == CursorKind.CXX_CATCH_STMT and children:
             catch = self._condition(node, "catch", self._parens(node.extent.start))
             return [(c, (catch,)) for c in children]
+        if kind == CursorKind.COMPOUND_STMT:
+            return self._block(children)
         return [(c, ()) for c in children]
 
-    def _if(self, node: Cursor, children: list[Cursor]) -> list[Branch]:
+    def _block(self, children: list[Cursor]) -> list[Branch]:
+        """The statements of a block, each under what the ones before it decided: after
+        ``if (TEST) return;`` (or ``continue``, ``break``) the rest of the block runs only
+        when TEST is false, ``else`` TEST; after ``if (TEST) {...} else return;`` only when
+        it is true. A side that fails (``return false``, an error value, ``throw``, an
+        exit) adds nothing: what follows is the function's work when it succeeds, as
+        ``if (!init()) { ROS_ERROR(..); return false; }`` means."""
+        out: list[Branch] = []
+        extra: tuple[Condition, ...] = ()
+        for i, child in enumerate(children):
+            if child.kind in _JUMPED_TO:
+                extra = ()
+            out.append((child, extra))
+            if child.kind == CursorKind.IF_STMT:
+                extra += self._after_if(child, children[i + 1:])
+        return out
+
+    def _sides(self, node: Cursor, children: list[Cursor]
+               ) -> tuple[int, bool, str, Cursor] | None:
+        """Of an ``if`` statement with its children: the index of its ``then`` branch,
+        whether it has an ``else``, the text it tests and the tested expression."""
         if len(children) < 2:
-            return [(c, ()) for c in children]
-        text = self._parens(node.extent.start)
+            return None
         has_else = len(children) >= 3 and self._between(children[-2], children[-1], _ELSE) == "else"
         then = len(children) - (2 if has_else else 1)
+        return then, has_else, self._parens(node.extent.start), children[then - 1]
+
+    def has_else(self, node: Cursor, children: list[Cursor]) -> bool:
+        """Whether the ``if`` statement ``node`` (with its children) has an ``else``."""
+        sides = self._sides(node, children)
+        return sides is not None and sides[1]
+
+    def _after_if(self, node: Cursor, rest: list[Cursor]) -> tuple[Condition, ...]:
+        """The condition the statements after the ``if`` ``node`` in its block run
+        under: its ``else`` when its ``then`` side leaves the block without failing and its
+        ``else`` side (if any) does not leave; its ``if`` the other way round; none
+        otherwise, or when the test is a lazy initialisation's (``if (initialized_) {
+        ROS_WARN(..); return; }`` before ``initialized_ = true``)."""
+        children = list(node.get_children())
+        sides = self._sides(node, children)
+        if sides is None:
+            return ()
+        then, has_else, text, tested = sides
+        first = self._leaves(children[then])
+        second = self._leaves(children[-1]) if has_else else None
+        if first == "done" and second is None:
+            if not has_else and self._guards_first_time(tested, rest):
+                return ()
+            return (self._condition(node, "else", text, tested),)
+        if second == "done" and first is None:
+            return (self._condition(node, "if", text, tested),)
+        return ()
+
+    def _leaves(self, statement: Cursor) -> str | None:
+        """Whether ``statement`` always leaves its block, and how: ``"failed"`` by
+        ``throw``, an exit, or with an error logged (``ROS_ERROR(..); return;``);
+        ``"false"`` by a return from ``main`` or of a failure value (``return false;``,
+        which may also mean "not done here": move_base's ``loadRecoveryBehaviors``,
+        whose caller then loads the defaults); ``"done"`` by another ``return``,
+        ``continue`` or ``break``; None when it may go on."""
+        kind = statement.kind
+        if kind == CursorKind.COMPOUND_STMT:
+            inner = list(statement.get_children())
+            if not inner:
+                return None
+            last = self._leaves(inner[-1])
+            if last in ("done", "false") and (any(_exits(s) for s in inner[:-1])
+                                              or _ERROR_LOG.search(self._text(statement))):
+                return "failed"  # ``ros::shutdown(); return;``, ``ROS_ERROR(..); return;``
+            return last
+        if kind == CursorKind.RETURN_STMT:
+            if self.in_main:
+                return "false"
+            value = list(statement.get_children())
+            return "false" if value and _FAILED.search(self._text(value[0])) else "done"
+        if kind in (CursorKind.CONTINUE_STMT, CursorKind.BREAK_STMT):
+            return "done"
+        if kind == CursorKind.IF_STMT:
+            children = list(statement.get_children())
+            sides = self._sides(statement, children)
+            if sides is None or not sides[1]:
+                return None
+            both = (self._leaves(children[sides[0]]), self._leaves(children[-1]))
+            if None in both:
+                return None
+            return "failed" if "failed" in both else "false" if "false" in both else "done"
+        if _exits(statement):
+            return "failed"
+        return None
+
+    def _guards_first_time(self, tested: Cursor, rest: list[Cursor]) -> bool:
+        """Whether ``if (flag) return;`` guards a lazy initialisation: ``flag`` a bool
+        member the rest of the block sets to true."""
+        from .members import member_of
+        from .writes import writes_of
+
+        flag = _flag(strip(tested))
+        if flag is None:
+            return False
+        return any(write.whole and write.value is not None and _true(write.value)
+                   and member_of(write.target) == flag
+                   for statement in rest for found in statement.walk_preorder()
+                   for write in writes_of(found, self.source))
+
+    def required(self, node: Cursor) -> str | None:
+        """Which side of the ``if`` ``node`` a parameter's presence test makes
+        required: ``"if"`` when the ``else`` side fails (``if (nh.hasParam("x")) {..}
+        else { ROS_ERROR(..); return false; }``), ``"else"`` when the ``then`` side does;
+        None otherwise. Code on that side runs whenever the function goes on, so it is
+        under no condition of the test. Failing is throwing, exiting or logging an error:
+        a bare ``return false;`` may be a fallback the caller takes."""
+        children = list(node.get_children())
+        sides = self._sides(node, children)
+        if sides is None or not _PRESENCE.search(sides[2]):
+            return None
+        then, has_else, _, _ = sides
+        if has_else and self._leaves(children[-1]) == "failed":
+            return "if"
+        if self._leaves(children[then]) == "failed":
+            return "else"
+        return None
+
+    def _if(self, node: Cursor, children: list[Cursor]) -> list[Branch]:
+        sides = self._sides(node, children)
+        if sides is None:
+            return [(c, ()) for c in children]
+        then, has_else, text, tested = sides
+        required = self.required(node)
         out: list[Branch] = [(c, ()) for c in children[:then]]
-        tested = children[then - 1]
-        first = self._first_time(tested, children[then])
+        first = required == "if" or self._first_time(tested, children[then])
         out.append((children[then], () if first else (self._condition(node, "if", text,
                                                                       tested),)))
         if has_else:
-            out.append((children[-1], (self._condition(node, "else", text, tested),)))
+            out.append((children[-1], () if required == "else" else (
+                self._condition(node, "else", text, tested),)))
         return out
 
     def _first_time(self, tested: Cursor, then: Cursor) -> bool:
@@ -357,6 +497,18 @@ def _clean(raw: bytes) -> str:
 # what ends a handler other than by going on after the ``try``
 _LEAVES = frozenset({CursorKind.CXX_THROW_EXPR, CursorKind.RETURN_STMT})
 _EXITS = frozenset({"exit", "abort", "_exit", "quick_exit", "terminate", "shutdown"})
+
+
+def _exits(statement: Cursor) -> bool:
+    """Whether ``statement`` is a ``throw`` or a call that ends the program or its ROS
+    node (``exit(1)``, ``abort()``, ``ros::shutdown()``)."""
+    while statement.kind == CursorKind.UNEXPOSED_EXPR:
+        inner = list(statement.get_children())
+        if len(inner) != 1:
+            return False
+        statement = inner[0]
+    return statement.kind == CursorKind.CXX_THROW_EXPR or (
+        statement.kind == CursorKind.CALL_EXPR and statement.spelling in _EXITS)
 
 
 def _goes_on(handler: Cursor) -> bool:

@@ -25,6 +25,7 @@ Key = tuple[str, int, int]
 _WRAPPERS = (CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR)
 _SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
 _ASSIGN = re.compile(r"^\s*=\s*$")
+_EQUALS = re.compile(r"^\s*(==|!=)\s*$")
 _NOT = re.compile(r"^\s*(!|\bnot\b)")
 
 
@@ -49,6 +50,10 @@ class TestedCalls:
         # function of the unit handles the read's absence too (``unit_tested``)
         self.lasting_passed: dict[Key, list[Key]] = {}
         self.lasting_tested: set[Key] = set()
+        # the calls tested whose absence takes the side that fails (``if
+        # (!nh.getParam("x", x)) { ROS_ERROR(..); return false; }``): the parameter is
+        # required, its absence not handled
+        self.required: set[Key] = set()
 
     def visit(self, node: Cursor) -> None:
         kind = node.kind
@@ -58,6 +63,12 @@ class TestedCalls:
             children = list(node.get_children())
             if children:
                 self._condition(children[0])
+            side = self.reader.required(node) if kind == CursorKind.IF_STMT else None
+            if side is not None:
+                tested = children[-3] if self.reader.has_else(node, children) else children[-2]
+                fails = side != "if"  # the test's value that takes the failing side
+                self.required.update(k for k, v in self._when_absent(tested).items()
+                                     if v == fails)
         elif kind == CursorKind.DO_STMT:
             children = list(node.get_children())
             if len(children) == 2:
@@ -82,6 +93,43 @@ class TestedCalls:
             children = [c for c in node.get_children() if c.kind.is_expression()]
             if children:
                 self._hold(node, children[-1])
+
+    def _when_absent(self, expr: Cursor) -> dict[Key, bool]:
+        """The calls of a tested expression whose absence (the call false) decides its
+        value, each with that value: ``!a || !b`` is true when ``a`` is false, ``a &&
+        b`` false; ``a || b`` depends on ``b`` then."""
+        expr = _strip(expr)
+        kind = expr.kind
+        if kind == CursorKind.UNARY_OPERATOR and self._is_not(expr):
+            inner = list(expr.get_children())
+            return {k: not v for k, v in self._when_absent(inner[0]).items()} if len(
+                inner) == 1 else {}
+        if kind == CursorKind.BINARY_OPERATOR:
+            sides = list(expr.get_children())
+            if len(sides) != 2:
+                return {}
+            operator = self.reader._between(sides[0], sides[1], _SHORT_CIRCUIT)
+            if operator:
+                decided = operator in ("||", "or")  # the value an operand decides
+                return {k: v for side in sides for k, v in self._when_absent(side).items()
+                        if v == decided}
+            literals = [s for s in sides if _strip(s).kind == CursorKind.CXX_BOOL_LITERAL_EXPR]
+            between = self.reader._between(sides[0], sides[1], _EQUALS)
+            if len(literals) != 1 or not between:
+                return {}
+            other = sides[1] if literals[0] == sides[0] else sides[0]
+            true = any(t.spelling == "true" for t in _strip(literals[0]).get_tokens())
+            keep = true == (between == "==")  # ``x == true``, ``x != false``
+            return {k: v if keep else not v for k, v in self._when_absent(other).items()}
+        if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            variable = expr.referenced
+            held = key(variable) if variable is not None else None
+            made = self._results.get(held) if held is not None else None
+            return {made: False} if made is not None else {}
+        if kind == CursorKind.CALL_EXPR:
+            made = key(expr)
+            return {made: False} if made is not None else {}
+        return {}
 
     def _is_not(self, node: Cursor) -> bool:
         text = self.reader._bytes(node.extent.start.file)

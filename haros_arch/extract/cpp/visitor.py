@@ -683,7 +683,7 @@ class CallFinder:
             tested.visit(node)
             stack.extend(self.reader.below(node, conditions))
         for site, read in self._status_reads:
-            read.tested = read.tested or site in tested.keys
+            read.tested = read.tested or (site in tested.keys and site not in tested.required)
         self._unit_status_reads.extend(self._status_reads)
         for held, made in tested.lasting_passed.items():
             self._lasting_passed.setdefault(held, []).extend(made)
