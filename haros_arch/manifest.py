@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any, cast
 
 from lxml import etree
@@ -184,7 +184,7 @@ def parse_manifest(
             text = (element.text or "").strip()
             if text:
                 package.dependencies.append(
-                    Dependency(text, tag, element.get("condition")))
+                    Dependency(text, tag, element.get("condition"), active(element)))
     build_type: BuildType = "catkin"
     export = root.find("export")
     if export is not None:
@@ -195,7 +195,7 @@ def parse_manifest(
                 text = (element.text or "").strip()
                 if active(element) and text in BUILD_TYPES:
                     build_type = cast(BuildType, text)
-    package.plugins.extend(_plugins(root, rel_folder))
+    package.plugins.extend(_plugins(root, rel_folder, active))
     package.build_type = build_type
     return package, found
 
@@ -216,8 +216,11 @@ def ros_version(package: Package) -> int | None:
     """Whether a package is ROS 1 or ROS 2 code, from its package.xml: its build tool
     (catkin, ament_*), else the build type (ament_cmake / ament_python), else the ROS
     client libraries and build tools it depends on, else format 1 (ROS 1 only); None when
-    nothing says (a plain CMake package)."""
-    for dep in package.dependencies:  # the build tool says it first
+    nothing says (a plain CMake package). A dependency whose condition does not hold is
+    not read (foxglove_bridge: ``<buildtool_depend condition="$ROS_VERSION == 1">catkin``
+    first, then ament_cmake for ROS 2)."""
+    dependencies = [dep for dep in package.dependencies if dep.active]
+    for dep in dependencies:  # the build tool says it first
         if dep.kind in ("buildtool_depend", "buildtool_export_depend"):
             if dep.name == "catkin":
                 return 1
@@ -225,7 +228,7 @@ def ros_version(package: Package) -> int | None:
                 return 2
     if package.build_type in ("ament_cmake", "ament_python"):
         return 2
-    names = {dep.name for dep in package.dependencies}
+    names = {dep.name for dep in dependencies}
     if names & _ROS2_DEPENDENCIES:
         return 2
     if names & _ROS1_DEPENDENCIES or package.format == 1:  # rosbuild ones read as format 1
@@ -233,15 +236,19 @@ def ros_version(package: Package) -> int | None:
     return None
 
 
-def _plugins(root: etree._Element, rel_folder: str) -> list[Plugin]:
-    """``<export><host plugin="${prefix}/plugins.xml"/></export>``, in both manifests."""
+def _plugins(root: etree._Element, rel_folder: str,
+             active: Callable[[etree._Element], bool] = lambda _: True) -> list[Plugin]:
+    """``<export><host plugin="${prefix}/plugins.xml"/></export>``, in both manifests;
+    not one whose REP 149 ``condition`` is false in the environment (``active``):
+    foxglove_bridge exports its nodelets with ``condition="$ROS_VERSION == 1"``, and a
+    ROS 2 build installs no nodelet library."""
     export = root.find("export")
     if export is None:
         return []
     return [Plugin(element.tag, element.get("plugin", "").replace("${prefix}", rel_folder))
             for element in export
             if isinstance(element.tag, str) and element.tag != "build_type"
-            and element.get("plugin")]
+            and element.get("plugin") and active(element)]
 
 
 def _parse_rosbuild(path: str, location: Location,

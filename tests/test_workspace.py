@@ -216,3 +216,53 @@ def test_relpath_is_relative_inside_the_root_only(tmp_path, monkeypatch) -> None
     assert ws.relpath("z.h") == str(tmp_path / "z.h")  # relative names follow the cwd
     assert pickle.loads(pickle.dumps(ws)).relpath(str(root / "q")) == "q"
     assert Workspace(root="/").relpath("/etc/hosts") == "etc/hosts"
+
+
+def test_plugin_exports_follow_their_conditions(write_tree):
+    # foxglove_bridge's package.xml: one tree for ROS 1 and ROS 2, its nodelets exported
+    # for ROS 1 only; a ROS 2 build has no nodelet library, so no nodelet node
+    root = write_tree({"src/bridge/package.xml": """<?xml version="1.0"?>
+        <package format="3">
+          <name>bridge</name><version>0.1.0</version>
+          <description>d</description><maintainer email="a@b.c">m</maintainer>
+          <license>MIT</license>
+          <export>
+            <build_type condition="$ROS_VERSION == 1">catkin</build_type>
+            <build_type condition="$ROS_VERSION == 2">ament_cmake</build_type>
+            <nodelet condition="$ROS_VERSION == 1" plugin="${prefix}/nodelets.xml"/>
+            <rviz plugin="${prefix}/rviz.xml"/>
+          </export>
+        </package>"""})
+    ros2 = scan([str(root / "src")], {"ROS_VERSION": "2"}).packages["bridge"]
+    ros1 = scan([str(root / "src")], {"ROS_VERSION": "1"}).packages["bridge"]
+    assert [(p.kind, p.file) for p in ros2.plugins] == [("rviz", "bridge/rviz.xml")]
+    assert [(p.kind, p.file) for p in ros1.plugins] == [
+        ("nodelet", "bridge/nodelets.xml"), ("rviz", "bridge/rviz.xml")]
+
+
+def test_ros_version_reads_the_dependencies_whose_conditions_hold(write_tree):
+    # foxglove_bridge: catkin for ROS 1 listed before ament_cmake for ROS 2; its ROS 2
+    # sources were parsed as ROS 1 code (roscpp's prelude, boost's placeholders beside
+    # std's: every ``std::bind(..., _1)`` of the node ambiguous)
+    from haros_arch.manifest import ros_version
+    from haros_arch.model.load import _package
+    from haros_arch.model.serialise import to_data
+
+    root = write_tree({"src/bridge/package.xml": """<?xml version="1.0"?>
+        <package format="3">
+          <name>bridge</name><version>0.1.0</version>
+          <description>d</description><maintainer email="a@b.c">m</maintainer>
+          <license>MIT</license>
+          <buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>
+          <buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>
+          <depend condition="$ROS_VERSION == 1">roscpp</depend>
+          <depend condition="$ROS_VERSION == 2">rclcpp</depend>
+        </package>"""})
+    ros2 = scan([str(root / "src")], {"ROS_VERSION": "2"}).packages["bridge"]
+    ros1 = scan([str(root / "src")], {"ROS_VERSION": "1"}).packages["bridge"]
+    assert (ros_version(ros2), ros_version(ros1)) == (2, 1)
+    assert sorted(d.name for d in ros2.dependencies if not d.active) == ["catkin", "roscpp"]
+    # kept through the JSON model, and left out of it where it holds
+    data = to_data(ros2)
+    assert [d.get("active", True) for d in data["dependencies"]] == [False, True, False, True]
+    assert ros_version(_package(data)) == 2

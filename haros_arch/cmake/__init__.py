@@ -35,7 +35,7 @@ from .nodes import (
 from .targets import CompileDefinition, Target
 
 __all__ = ["CMAKE_BUILD_TYPES", "Target", "interpret", "package_libraries", "parse_package",
-           "read_commands", "source_definitions", "targets_of"]
+           "read_commands", "source_definitions", "source_include_dirs", "targets_of"]
 
 
 def read_commands(path: str, workspace: Workspace | PackageFiles,
@@ -186,6 +186,42 @@ def _source_definitions(package: Package, workspace: Workspace
             defined[each.name] = each if known is None or _same(known, each) else CONFLICT
         for source in sources.own(target):
             found.setdefault(source, []).append(defined)
+    return found
+
+
+def source_include_dirs(package: Package, workspace: Workspace) -> dict[str, list[str]]:
+    """Each C/C++ source of the package's targets (workspace-relative) -> the include
+    folders the compile lines of the targets that compile it give, in order: each
+    target's directory's (``include_directories``), its own PRIVATE and PUBLIC ones
+    (``target_include_directories``), then the PUBLIC and INTERFACE ones of the
+    package's libraries it links; as written (not checked on disk). Only those given
+    wherever the target (or the library) is made: a folder under an ``if()`` the
+    reading did not decide that the target is not under too may not be the build's
+    (foxglove_bridge's ROS 2 folders under ``if(DEFINED ENV{AMENT_PREFIX_PATH})``, with
+    the targets, are; a folder of one branch of ``if(USE_SDK)`` not decided, beside
+    another holding the same headers, is not). Empty for a package CMake does not build."""
+    return remembered("include folders", package.root, workspace,
+                      lambda: _source_include_dirs(package, workspace))
+
+
+def _source_include_dirs(package: Package, workspace: Workspace) -> dict[str, list[str]]:
+    if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return {}
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    sources = SourceMap(interpreter, files)
+    found: dict[str, list[str]] = {}
+    for target in interpreter.targets.values():
+        made = set(target.conditions)
+        given = [*(folder for folder, under in target.directory_includes
+                   if set(under) <= made),
+                 *(folder for keyword, folder, under in target.includes
+                   if keyword != "INTERFACE" and set(under) <= made),
+                 *(folder for linked in sources.closure(target)[1:]
+                   for keyword, folder, under in linked.includes
+                   if keyword != "PRIVATE" and set(under) <= set(linked.conditions))]
+        for source in sources.own(target):
+            found[source] = list(dict.fromkeys([*found.get(source, []), *given]))
     return found
 
 

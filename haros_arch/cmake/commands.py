@@ -411,7 +411,8 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         args[0], kind, sources, conditions=conditions, line=command.line,
         column=command.column, file=command.file,
         directory_definitions=it.compile_definitions[-1],
-        definitions=[("PRIVATE", each) for each in it.compile_options[-1]])
+        definitions=[("PRIVATE", each) for each in it.compile_options[-1]],
+        directory_includes=it.include_directories[-1])
     if command.name.lower().startswith("ament_auto_add_"):
         target.auto = True
         # ament_cmake_auto links the package's earlier ament_auto libraries unless told
@@ -490,6 +491,50 @@ def _target_compile_definitions(it: Interpreter, command: Invocation,
     target.definitions.extend(_definitions(it, command, command.args[1:], ""))
 
 
+@handles("include_directories")
+def _include_directories(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """For every target of the directory, as its definitions (``add_definitions``)."""
+    it.include_directories[-1].extend(
+        (folder, conditions) for _, folder, conditions in include_folders(it, command.args))
+
+
+@handles("target_include_directories")
+def _target_include_directories(it: Interpreter, command: Invocation,
+                                args: list[str]) -> None:
+    target = it.targets.get(it.aliases.get(args[0], args[0])) if args else None
+    if target is None or not command.args:
+        return  # an imported target, or one this reading did not make
+    target.includes.extend(include_folders(it, command.args[1:]))
+
+
+_INCLUDE_KEYWORDS = frozenset({"SYSTEM", "BEFORE", "AFTER"})
+_BUILD_INTERFACE = re.compile(r"\$<BUILD_INTERFACE:(.*)>", re.S)
+
+
+def include_folders(it: Interpreter, raw: tuple[Argument, ...]
+                    ) -> list[tuple[str, str, tuple[Condition, ...]]]:
+    """The folders an include command's arguments ``raw`` (not expanded) give, absolute,
+    each with the keyword before it (PRIVATE when none) and the ``if()``s around the
+    command that are not decided: a ``$<BUILD_INTERFACE:...>`` its folder, no other
+    generator expression (``$<INSTALL_INTERFACE:include>``), no argument that reads what
+    this reading does not know (``${rclcpp_INCLUDE_DIRS}``)."""
+    conditions = (*it.current_conditions(), *it.unsure_tests)
+    found: list[tuple[str, str, tuple[Condition, ...]]] = []
+    keyword = "PRIVATE"
+    for arg in raw:
+        if arg.kind != "bracket" and it.unknown_reference(arg.text):
+            continue
+        for item in it.arguments((arg,)):
+            if item in _DEFINITION_KEYWORDS:
+                keyword = item
+                continue
+            inner = _BUILD_INTERFACE.fullmatch(item)
+            folder = inner.group(1) if inner is not None else item
+            if folder and folder not in _INCLUDE_KEYWORDS and "$<" not in folder:
+                found.append((keyword, it.path(folder), conditions))
+    return found
+
+
 # the commands that define macros, and whether only their ``-D`` words do
 _DEFINING = {"add_definitions": True, "add_compile_options": True,
              "target_compile_options": True, "add_compile_definitions": False,
@@ -552,8 +597,8 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
 # commands of CMake itself and of the ROS build tools that make no runnable program
 # (tests, messages): an unknown command is looked at only when it is none of these
 IGNORED = frozenset({
-    "project", "cmake_minimum_required", "include_directories",
-    "link_directories", "add_dependencies", "target_include_directories",
+    "project", "cmake_minimum_required",
+    "link_directories", "add_dependencies",
     "target_compile_features", "ament_package", "message",
     "add_custom_target", "add_custom_command", "add_test",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",

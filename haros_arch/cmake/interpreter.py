@@ -130,6 +130,9 @@ class Interpreter:
         # last: a target takes those made before it (the directory's COMPILE_OPTIONS
         # start its own), a subdirectory starts with a copy of its parent's
         self.compile_options: list[list[CompileDefinition]] = [[]]
+        # the ``include_directories`` folders of each directory being read, innermost
+        # last, as its compile definitions (``Target.directory_includes``)
+        self.include_directories: list[list[tuple[str, tuple[Condition, ...]]]] = [[]]
         # the macros a branch this reading decided not taken, on what it knows for
         # certain, would define (sick_scan_xd's ``if(ROS_VERSION EQUAL 0)
         # add_compile_options(-DROSSIMU)`` in a ROS 2 build): known absent there
@@ -830,6 +833,7 @@ class Interpreter:
         self.scopes.append(dict(self.scopes[-1]))
         self.compile_definitions.append(list(self.compile_definitions[-1]))
         self.compile_options.append(list(self.compile_options[-1]))
+        self.include_directories.append(list(self.include_directories[-1]))
         self._enter_directory(folder)
         self.depth += 1
         frame = len(self.returns)
@@ -843,6 +847,7 @@ class Interpreter:
             self.scopes.pop()
             self.compile_definitions.pop()
             self.compile_options.pop()
+            self.include_directories.pop()
 
 
 def _put(table: dict[str, str], name: str, value: str | None) -> None:

@@ -48,6 +48,11 @@ class Target:
     # INTERFACE ones those of the targets that link it
     directory_definitions: list[CompileDefinition] = field(default_factory=list)
     definitions: list[tuple[str, CompileDefinition]] = field(default_factory=list)
+    # the include folders of its directory (``include_directories``, as its definitions)
+    # and its own (``target_include_directories``) with its keyword, each absolute, with
+    # the if()s around it the reading did not decide (``commands.include_folders``)
+    directory_includes: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
+    includes: list[tuple[str, str, tuple[Condition, ...]]] = field(default_factory=list)
 
 
 @dataclass

@@ -209,7 +209,8 @@ def _completeness(value: Any) -> Completeness:
 
 def _package(data: dict[str, Any]) -> Package:
     name = str(data.get("name", ""))
-    deps = [Dependency(d.get("name", ""), d.get("kind", "depend"), d.get("condition"))
+    deps = [Dependency(d.get("name", ""), d.get("kind", "depend"), d.get("condition"),
+                       d.get("active", True) is not False)
             for d in data.get("dependencies", ()) if isinstance(d, dict)]
     plugins = [Plugin(str(p.get("kind", "")), str(p.get("file", "")))
                for p in data.get("plugins", ()) if isinstance(p, dict)]

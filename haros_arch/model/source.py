@@ -58,11 +58,14 @@ ROS_ARGUMENT = "ros_arg:"
 
 @dataclass(frozen=True)
 class Dependency:
-    """A dependency declared in package.xml; ``condition`` as written, if any."""
+    """A dependency declared in package.xml; ``condition`` as written, if any, and
+    whether it holds in the environment the workspace was read with (``active``; True
+    when there is none or it cannot be decided)."""
 
     name: str
     kind: str = "depend"
     condition: str | None = None
+    active: bool = field(default=True, metadata={"optional": True})
 
 
 @dataclass(frozen=True)

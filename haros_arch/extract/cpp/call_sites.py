@@ -647,6 +647,9 @@ def delegation(function: Cursor) -> Cursor | None:
     return None
 
 
+_NAMING = (CursorKind.TYPE_REF, CursorKind.TEMPLATE_REF)
+
+
 def base_initialisers(function: Cursor) -> list[tuple[Cursor, Cursor]]:
     """(argument list, base constructor) for each base a class template's constructor
     initialises where clang keeps no call, only the list of arguments (an unexposed
@@ -660,17 +663,28 @@ def base_initialisers(function: Cursor) -> list[tuple[Cursor, Cursor]]:
     bases = {key_of(b.referenced) for b in parent.get_children()
              if b.kind == CursorKind.CXX_BASE_SPECIFIER and b.referenced is not None}
     found = []
-    for first, second in itertools.pairwise(function.get_children()):
-        base = first.referenced if first.kind == CursorKind.TYPE_REF else None
-        if base is None or second.kind != CursorKind.UNEXPOSED_EXPR or (
-                key_of(base) not in bases):
+    # the base an initialiser names: a class (``as2::Node``), or a class template then
+    # the references of its arguments (turtlebot4's ``Turtlebot4Service<ServiceT>(...)
+    # : Turtlebot4BaseService<ServiceT>(nh, service, timeout)``: the template, then
+    # ``ServiceT``), then its argument list
+    base: Cursor | None = None
+    for child in function.get_children():
+        named = child.referenced if child.kind in _NAMING else None
+        if named is not None and key_of(named) in bases:
+            base = named
             continue
-        base = base.get_definition() or base
-        args = list(second.get_children())
-        chosen = closest([c for c in base.get_children() if c.kind in _CONSTRUCTORS
+        if base is not None and base.kind == CursorKind.CLASS_TEMPLATE and (
+                child.kind in _NAMING or child.kind == CursorKind.NAMESPACE_REF):
+            continue  # an argument of the base template
+        named, base = base, None
+        if named is None or child.kind != CursorKind.UNEXPOSED_EXPR:
+            continue
+        named = named.get_definition() or named
+        args = list(child.get_children())
+        chosen = closest([c for c in named.get_children() if c.kind in _CONSTRUCTORS
                           and is_constructor(c) and _takes(c, len(args))], args)
         if len(chosen) == 1:
-            found.append((second, chosen[0]))
+            found.append((child, chosen[0]))
     return found
 
 

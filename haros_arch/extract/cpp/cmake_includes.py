@@ -211,6 +211,17 @@ def _folder(word: str, here: str, root: str, listed: str | None = None) -> str |
     return folder
 
 
+def own_folder(folder: str, workspace: Workspace) -> bool:
+    """Whether ``folder`` is a folder (not a link) of a workspace package's own CMake
+    project (``_owned``)."""
+    package = workspace.package_of(folder)
+    if package is None or not package.root or os.path.islink(folder) \
+            or not os.path.isdir(folder):
+        return False
+    root = os.path.abspath(package.root)
+    return folder != root and _owned(folder, root)
+
+
 def _owned(folder: str, root: str) -> bool:
     """Whether ``folder`` belongs to the package's own CMake project: no folder between
     the package root and it (itself included) is another project, one whose

@@ -249,6 +249,21 @@ def _library_include_dirs(workspace: Workspace) -> list[str]:
     return found
 
 
+def _built_include_dirs(sources: Sequence[str], workspace: Workspace) -> list[str]:
+    """The include folders the compile lines of ``sources`` get from their packages'
+    CMake files as the interpreter reads them (``cmake.source_include_dirs``), in order:
+    folders of a workspace package's own project (``cmake_includes.own_folder``)."""
+    found: list[str] = []
+    for source in dict.fromkeys(map(os.path.abspath, sources)):
+        package = workspace.package_of(source)
+        if package is None or not package.root:
+            continue
+        given = cmake.source_include_dirs(package, workspace).get(workspace.relpath(source), ())
+        found += [folder for folder in given if folder not in found
+                  and cmake_includes.own_folder(folder, workspace)]
+    return found
+
+
 MAX_DEPENDED = 64  # packages whose exported include folders one extraction reads
 
 
@@ -327,6 +342,12 @@ class IncludeSetup:
         kept = self._kept(workspace.root, kept_in) if kept_in else None
         self.generated = kept or tempfile.mkdtemp(prefix="haros-arch-cpp-")
         self.user_dirs = [os.path.abspath(d) for d in include_dirs]
+        # first the folders the interpreted CMake files give the targets that compile
+        # the sources: where a package keeps variants of the same headers (foxglove_bridge:
+        # ros1_foxglove_bridge/include, ros2_foxglove_bridge/include and the SDK's,
+        # each with ``foxglove_bridge/param_utils.hpp``), the build's are the ones read
+        self.user_dirs += [inc for inc in _built_include_dirs(sources, workspace)
+                           if inc not in self.user_dirs]
         self.user_dirs += [inc for inc in (os.path.join(p.root, "include")
                                            for p in workspace.packages.values() if p.root)
                            if os.path.isdir(inc) and inc not in self.user_dirs]

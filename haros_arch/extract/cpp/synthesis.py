@@ -195,6 +195,12 @@ def _api_methods() -> frozenset[str]:
                      if len(name) > 4 and row.call_site)
 
 
+# an alias declaration before the name: what it names is a type, whatever its case
+# (foxglove_bridge's ``using ConnectionHandle = websocketpp::connection_hdl;``)
+_ALIAS_DECLARED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef)\s*(?:typename\s+)?"
+                             rb"(?:::\s*)?(?:[A-Za-z_]\w*\s*::\s*)*$")
+
+
 def _aliased(window: bytes) -> bool:
     """Whether ``window`` ends where an alias, typedef or using-declaration names what
     follows (``_ALIASED``; a window without either word cannot match)."""
@@ -909,10 +915,13 @@ class Names:
         if any(p in _KEYWORDS for p in written) or any(p in _KEYWORDS for p in scope):
             return
         rest = text[found.end():found.end() + 2]
-        if use == "any" and written[-1][:1].isupper() and _aliased(
-                text[max(0, offset - 200):offset]):
+        window = text[max(0, offset - 200):offset]
+        if use == "any" and ((written[-1][:1].isupper() and _aliased(window)) or (
+                (b"using" in window or b"typedef" in window)
+                and _ALIAS_DECLARED.search(window) is not None)):
             # ``using Mode = vendor::Mode;``, ``using vendor::msg::Limit;``: a type (a
-            # lowercase name a using-declaration brings is more often a function)
+            # lowercase name a using-declaration brings is more often a function; one
+            # an alias declaration names is a type)
             use = "type"
         last = self._last_use(use, rest)
         if last == "type" and use == "any" and rest.lstrip()[:1] in (b")", b",", b"}") and (

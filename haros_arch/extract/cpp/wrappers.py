@@ -39,6 +39,7 @@ from ...model.conditions import Condition
 from ...model.values import Unknown
 from . import api, msg_types
 from .call_sites import (
+    base_initialisers,
     closest,
     default_argument,
     delegation,
@@ -187,6 +188,9 @@ class Wrappers:
         self._opaque: dict[str, list[int]] = {}  # file -> offsets of macro expansions
         # constructor -> the argument list of the constructor it delegates to (``build``)
         self._delegations: dict[Key, Cursor] = {}
+        # constructor -> (argument list, base constructor, whether the base is named with
+        # the class's own template parameters) of each base it initialises (``build``)
+        self._base_inits: dict[Key, list[tuple[Cursor, Key, bool]]] = {}
         # id of each function of the unit -> its calls and unexposed expressions in
         # preorder (``_scan``), for ``CallFinder._gives``
         self.preorder: dict[int, list[Cursor]] = {}
@@ -247,6 +251,14 @@ class Wrappers:
         # clang keeps no call of the constructor, only the argument list
         self._delegations = {_key(f.canonical): d for f in finder.functions
                              if (d := _delegation(f)) is not None}
+        # and one that initialises a base with such arguments (turtlebot4's
+        # Turtlebot4Service<ServiceT>(nh, service, timeout) : Turtlebot4BaseService<
+        # ServiceT>(nh, service, timeout), whose constructor makes the client)
+        self._base_inits = {_key(f.canonical): inits for f in finder.functions
+                            if is_constructor(f) and of_class_template(f) and (
+                                inits := [(arguments, _key(base.canonical),
+                                           _same_parameters(f, base))
+                                          for arguments, base in base_initialisers(f)])}
         todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
         top = {id(f) for f in todo}
         while todo:
@@ -290,6 +302,9 @@ class Wrappers:
                 delegation = self._delegations.get(key)
                 if delegation is not None and self._delegate(function, key, delegation):
                     changed.add(key)
+                for arguments, base, typed in self._base_inits.get(key, ()):
+                    if self._delegate(function, key, arguments, [base], typed):
+                        changed.add(key)
             if not changed:
                 break
             # the functions that call one that changed are read again
@@ -297,7 +312,9 @@ class Wrappers:
                 self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])
                 or (_key(f.canonical) in self._delegations and any(
                     k in changed for k in self._delegated(f, self._delegations[
-                        _key(f.canonical)])))]
+                        _key(f.canonical)])))
+                or any(base in changed for _, base, _ in self._base_inits.get(
+                    _key(f.canonical), ()))]
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
         # other calls stay in it, named by what its callers pass: call_sites, links), or
@@ -626,17 +643,23 @@ class Wrappers:
                 and _key(c.canonical) != _key(function.canonical)
                 and _key(c.canonical) in self.summaries and _fits(c, args)]
 
-    def _delegate(self, function: Cursor, key: Key, delegation: Cursor) -> bool:
-        """``_summarise`` for the constructor ``function`` delegates to: its wrappers,
-        in terms of ``function``'s parameters. The type of a row typed by the
-        construction's template argument stays so: the class is the same."""
+    def _delegate(self, function: Cursor, key: Key, delegation: Cursor,
+                  callees: list[Key] | None = None, typed: bool = True) -> bool:
+        """``_summarise`` for the constructor ``function`` delegates to (or ``callees``,
+        the base constructor it initialises with the argument list ``delegation``): its
+        wrappers, in terms of ``function``'s parameters. The type of a row typed by the
+        construction's template argument stays so: the class is the same, or (``typed``)
+        a base named with the class's own template parameters, in order; with other
+        arguments (``Derived<A, B> : Base<B>``) such a row is not lifted."""
         args = [c for c in delegation.get_children() if c.kind.is_expression()]
         added = False
-        for callee in self._delegated(function, delegation):
+        for callee in (self._delegated(function, delegation) if callees is None else callees):
             for wrapper in self.summaries.get(callee, ()):
                 if key in wrapper.through:
                     self._recursive.add(key)
                     return False
+                if not typed and {"template", "template-value"} & set(wrapper.row.type_from):
+                    continue
                 lifted = self._lift(function, wrapper, delegation, args, None)
                 if lifted is None:
                     continue
@@ -1895,6 +1918,24 @@ def _scan(function: Cursor, every: list[Cursor] | None = None,
             stack.append(_LAMBDA_END)
         stack.extend(reversed(list(node.get_children())))
     return calls, lambdas
+
+
+def _same_parameters(function: Cursor, base: Cursor) -> bool:
+    """Whether the class of constructor ``function`` names the class of constructor
+    ``base`` as its base with its own template parameters, in order
+    (``Service<ServiceT> : BaseService<ServiceT>``)."""
+    cls, owner = function.semantic_parent, base.semantic_parent
+    if cls is None or owner is None:
+        return False
+    params = [c.spelling for c in cls.get_children()
+              if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+    for spec in cls.get_children():
+        if spec.kind == CursorKind.CXX_BASE_SPECIFIER and spec.referenced is not None and (
+                _key(spec.referenced.canonical) == _key(owner.canonical)):
+            text = spec.type.spelling
+            given = text[text.find("<") + 1:text.rfind(">")] if "<" in text else ""
+            return bool(params) and [a.strip() for a in given.split(",")] == params
+    return False
 
 
 def _delegation(function: Cursor) -> Cursor | None:

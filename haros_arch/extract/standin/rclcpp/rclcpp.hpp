@@ -296,10 +296,12 @@ public:
 Logger get_logger(const std::string& name);
 namespace haros { void log(const Logger& logger, const char* format, ...); }
 // QoS
-enum class ReliabilityPolicy { BestEffort, Reliable, SystemDefault };
-enum class DurabilityPolicy { Volatile, TransientLocal, SystemDefault };
-enum class HistoryPolicy { KeepLast, KeepAll, SystemDefault };
-enum class LivelinessPolicy { Automatic, ManualByTopic, SystemDefault, BestAvailable };
+// (``Unknown``: what a QoS copied from another endpoint may hold; foxglove_bridge tests
+// ``qos.history() == rclcpp::HistoryPolicy::Unknown``)
+enum class ReliabilityPolicy { BestEffort, Reliable, SystemDefault, BestAvailable, Unknown };
+enum class DurabilityPolicy { Volatile, TransientLocal, SystemDefault, BestAvailable, Unknown };
+enum class HistoryPolicy { KeepLast, KeepAll, SystemDefault, Unknown };
+enum class LivelinessPolicy { Automatic, ManualByTopic, SystemDefault, BestAvailable, Unknown };
 enum class QosPolicyKind { AvoidRosNamespaceConventions, Deadline, Depth, Durability, History,
   Lifespan, Liveliness, LivelinessLeaseDuration, Reliability, Invalid };
 struct QoSInitialization {
@@ -728,9 +730,11 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       std::shared_ptr<rclcpp::message_memory_strategy::MessageMemoryStrategy<M>> \
           msg_mem_strat = nullptr); \
   std::shared_ptr<rclcpp::GenericPublisher> create_generic_publisher(const std::string& topic, \
-      const std::string& type, const rclcpp::QoS& qos); \
+      const std::string& type, const rclcpp::QoS& qos, \
+      const rclcpp::PublisherOptions& options = rclcpp::PublisherOptions()); \
   template<class C> std::shared_ptr<rclcpp::GenericSubscription> create_generic_subscription( \
-      const std::string& topic, const std::string& type, const rclcpp::QoS& qos, C&& callback); \
+      const std::string& topic, const std::string& type, const rclcpp::QoS& qos, C&& callback, \
+      const rclcpp::SubscriptionOptions& options = rclcpp::SubscriptionOptions()); \
   template<class S, class C> std::shared_ptr<rclcpp::Service<S>> create_service( \
       const std::string& name, C&& callback, \
       const rmw_qos_profile_t& qos = rmw_qos_profile_services_default, \
@@ -961,6 +965,8 @@ public:
   template<class C = std::nullptr_t>
   std::shared_future<rcl_interfaces::msg::SetParametersResult> set_parameters_atomically(
       const std::vector<Parameter>& parameters, C callback = nullptr);
+  std::shared_future<std::vector<rcl_interfaces::msg::SetParametersResult>> delete_parameters(
+      const std::vector<std::string>& parameters_names);
   template<class C = std::nullptr_t>
   std::shared_future<SyncParametersClient::ListParametersResult> list_parameters(
       const std::vector<std::string>& prefixes, uint64_t depth, C callback = nullptr);

@@ -948,6 +948,24 @@ public:
   shared_ptr<T> lock() const noexcept;
   bool expired() const noexcept;
   void reset() noexcept;
+  template<class Y> bool owner_before(const shared_ptr<Y>& other) const noexcept;
+  template<class Y> bool owner_before(const weak_ptr<Y>& other) const noexcept;
+};
+// ordering by owner: the comparator of maps keyed by weak pointers (foxglove_bridge's
+// ``std::map<ConnectionHandle, Subscription, std::owner_less<>>``)
+template<class T = void> struct owner_less;
+template<class T> struct owner_less<shared_ptr<T>> {
+  bool operator()(const shared_ptr<T>& a, const shared_ptr<T>& b) const noexcept;
+  bool operator()(const shared_ptr<T>& a, const weak_ptr<T>& b) const noexcept;
+  bool operator()(const weak_ptr<T>& a, const shared_ptr<T>& b) const noexcept;
+};
+template<class T> struct owner_less<weak_ptr<T>> {
+  bool operator()(const weak_ptr<T>& a, const weak_ptr<T>& b) const noexcept;
+  bool operator()(const shared_ptr<T>& a, const weak_ptr<T>& b) const noexcept;
+  bool operator()(const weak_ptr<T>& a, const shared_ptr<T>& b) const noexcept;
+};
+template<> struct owner_less<void> {
+  template<class T, class U> bool operator()(const T& a, const U& b) const noexcept;
 };
 // C++98's auto_ptr (removed in C++17; ROS 1 code still builds it as C++11 / 14)
 template<class T> class auto_ptr {
