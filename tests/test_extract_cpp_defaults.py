@@ -71,6 +71,48 @@ def test_a_name_searchParam_found_is_the_parameter_searched_for(tmp_path):
                    (16, "?", False, "str")]
 
 
+SEARCHED_PARAMETER = """
+#include <ros/ros.h>
+#include <string>
+class Kinematics {
+ public:
+  bool init();
+ private:
+  ros::NodeHandle nh;
+};
+bool Kinematics::init() {
+  std::string urdf_xml, full_urdf_xml;
+  nh.param("urdf_xml", urdf_xml, std::string("robot_description"));
+  nh.searchParam(urdf_xml, full_urdf_xml);
+  std::string result;
+  if (!nh.getParam(full_urdf_xml, result))
+    return false;
+  return true;
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  Kinematics k;
+  return k.init() ? 0 : 1;
+}
+"""
+
+
+def test_the_name_searchParam_found_for_a_key_a_parameter_holds(tmp_path):
+    """baxter_sim_kinematics' arm_kinematics (the pattern of ROS's arm_kinematics):
+    the key searched for is the value of the parameter urdf_xml (its default
+    robot_description), and getParam reads what the search found. That read was of
+    ``?`` named by a parameter ``?``: the searchParam's result taken for the value of a
+    read; it is the searched read of the parameter urdf_xml names, as the search is."""
+    source = tmp_path / "n.cpp"
+    source.write_text(SEARCHED_PARAMETER)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = sorted((c.location.line, c.name, c.searched, c.name_param, c.name_default)
+                 for c in result.calls)
+    assert got == [(12, "urdf_xml", False, None, None),
+                   (13, "?", True, "urdf_xml", "robot_description"),
+                   (15, "?", True, "urdf_xml", "robot_description")]
+
+
 def test_errors_on_fields_of_messages_known_only_by_name_are_not_code_errors(tmp_path):
     source = tmp_path / "n.cpp"
     source.write_text(

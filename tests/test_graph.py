@@ -179,6 +179,22 @@ def test_namespace_reads_and_searched_names_follow_the_parameter_server():
     assert not config.parameter("/foo/missing").has_default
 
 
+def test_a_key_searched_on_a_namespaced_handle_is_searched_from_that_namespace():
+    # roscpp's NodeHandle("arm").searchParam("robot_description", key) asks the master
+    # from /foo/arm up: /foo/arm/robot_description, /foo/robot_description, ...; it was
+    # searched as the key "arm/robot_description" from the node's namespace, never found
+    # where the launch file sets it
+    reader = node("p", "r", call("read", "arm/robot_description"),
+                  call("read", "arm/missing"))
+    for read in reader.calls:
+        read.searched, read.handle_namespace = True, "arm"
+    config = graph([NodeDecl("/foo/r", "p", "r", "/foo/")], params=[
+        ParamDecl("/robot_description", "<robot/>", "str")], nodes=[reader])
+    # found at the root; the missing one stays in the handle's namespace
+    assert sorted(link.name for link in config.links) == [
+        "/foo/arm/missing", "/robot_description"]
+
+
 def test_actions_are_also_their_topics_and_services():
     server = node("p", "server", call("action-server", "fib", "tut/Fibonacci"))
     client = node("p", "client", call("action-client", "/fib", "tut/Fibonacci"))

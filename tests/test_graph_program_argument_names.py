@@ -214,3 +214,54 @@ def test_rospy_names_from_sys_argv_and_myargv(write_tree) -> None:
         ("/bare", "publish", "/?/out"), ("/bare", "subscribe", "?/in"),
         ("/bare", "publish", "?/raw"),
     }
+
+
+# baxter_sim_kinematics' position_kinematics: the side is ``argc > 1 ? argv[1] : ""``,
+# passed on to the function that names the topic
+SIDE = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+
+ros::Publisher start(const std::string& side) {
+  ros::NodeHandle n;
+  return n.advertise<std_msgs::String>("/robot/limb/" + side + "/endpoint_state", 1);
+}
+
+int main(int argc, char** argv) {
+  std::string side = argc > 1 ? argv[1] : "";
+  std::string third = 2 < argc ? argv[3] : "none";  // argv[3] may not be there
+  std::string second = 2 < argc ? argv[2] : "none";
+  ros::init(argc, argv, "kinematics_" + side);
+  ros::Publisher p = start(side);
+  ros::NodeHandle n;
+  ros::Publisher q = n.advertise<std_msgs::String>("/" + third + "/third", 1);
+  ros::Publisher r = n.advertise<std_msgs::String>("/" + second + "/second", 1);
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_an_argument_chosen_when_argc_has_it_is_that_argument(write_tree) -> None:
+    root = write_tree({
+        "src/kin/package.xml": package_xml("kin"),
+        "src/kin/CMakeLists.txt": "project(kin)\nadd_executable(side src/side.cpp)\n",
+        "src/kin/src/side.cpp": SIDE,
+        "src/kin/launch/kin.launch": '<launch>\n'
+                                     '  <node pkg="kin" type="side" name="left" args="left"/>\n'
+                                     '  <node pkg="kin" type="side" name="bare"/>\n'
+                                     '</launch>\n',
+        "project.yaml": "project: p\nconfigurations:\n  c: [kin/launch/kin.launch]\n",
+    })
+    side = extract_cpp([str(root / "src/kin/src/side.cpp")], scan([str(root)]),
+                       cache_dir=None)
+    # ``2 < argc`` says argv[2] is there, not argv[3]
+    assert {(c.name, c.name_arg) for c in side.calls} == {
+        ("/robot/limb/?/endpoint_state", 1), ("/?/third", None), ("/?/second", 2)}
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    names = {(link.node.name, link.rosname.full) for link in
+             model.configuration("c").links if link.name.endswith("endpoint_state")}
+    # no argument: unknown, as for argv[1] itself
+    assert names == {("/left", "/robot/limb/left/endpoint_state"),
+                     ("/bare", "/robot/limb/?/endpoint_state")}

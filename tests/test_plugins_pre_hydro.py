@@ -79,9 +79,44 @@ def test_a_source_s_settings_are_read_in_its_turn_of_the_loop(write_tree):
                                                                 "marking", "clearing"}
     assert all(c.statement not in ("while", "for", "for each")
                for link in reads for c in link.conditions)
-    # the one search in the loop keeps its own if
-    assert any(c.text.startswith("source_node.searchParam") for link in reads
+    # the one search in the loop keeps its own if; it starts at the source's handle
+    # (obstacle_layer/laser) and finds the obstacle_range loadOldParameters moved to
+    # the layer
+    searched = [link for link in config.links if link.node.name == "/move_base"
+                and link.kind == "read" and "/obstacle_layer/" in link.name]
+    assert any(c.text.startswith("source_node.searchParam") for link in searched
                for c in link.conditions)
+
+
+def test_a_source_searches_its_layer_for_a_setting_it_does_not_have(write_tree):
+    """ObstacleLayer's ``source_node.searchParam("obstacle_range", ...)`` on the handle
+    ``NodeHandle(nh, source)``: roscpp searches from that handle's namespace up, so a
+    layer's own obstacle_range serves every source without one. It was searched for as
+    the key ``laser/obstacle_range`` from the node's namespace: the layer's value was
+    set but never read, and the source's read of a parameter nobody sets."""
+    launch = """<launch>
+      <node pkg="move_base" type="move_base" name="move_base">
+        <rosparam ns="local_costmap">
+          plugins: [{name: obstacle_layer, type: 'costmap_2d::ObstacleLayer'}]
+          obstacle_layer:
+            obstacle_range: 2.5
+            observation_sources: laser
+            laser: {data_type: LaserScan, topic: base_scan}
+        </rosparam>
+      </node>
+    </launch>"""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/nav.launch": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/nav.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    layer = config.parameter("/move_base/local_costmap/obstacle_layer/obstacle_range")
+    assert layer is not None and layer.is_read
+    assert config.parameter(
+        "/move_base/local_costmap/obstacle_layer/laser/obstacle_range") is None
 
 
 def test_the_old_parameters_are_moved_only_when_no_plugins_are_given(write_tree):

@@ -168,3 +168,91 @@ def test_ros1_plugin_namespace_member_cleared_when_the_sdf_gives_none(tmp_path) 
     assert ("publish", "/sub/pressure/depth") in published
     assert ("publish", "/fleet/depth") in published
     assert not [name for _, name in published if name.startswith("/?")]
+
+
+ARM_PLUGIN = """\
+// a robot's own ros_control plugin: it derives from gazebo_ros_control's, whose Load
+// starts the controller manager in <robotNamespace>, and subscribes on its handle
+#include <gazebo_ros_control/gazebo_ros_control_plugin.h>
+#include <std_msgs/Bool.h>
+
+namespace arm_gazebo
+{
+class ArmControlPlugin : public gazebo_ros_control::GazeboRosControlPlugin
+{
+public:
+  void Load(gazebo::physics::ModelPtr parent, sdf::ElementPtr sdf)
+  {
+    GazeboRosControlPlugin::Load(parent, sdf);
+    enable_sub_ = model_nh_.subscribe("/arm/enable", 1, &ArmControlPlugin::onEnable, this);
+  }
+  void onEnable(const std_msgs::Bool::ConstPtr& msg)
+  {
+    controller_manager_->switchController(std::vector<std::string>(),
+                                          std::vector<std::string>(), 1);
+  }
+
+private:
+  ros::Subscriber enable_sub_;
+};
+}  // namespace arm_gazebo
+GZ_REGISTER_MODEL_PLUGIN(arm_gazebo::ArmControlPlugin)
+"""
+
+
+def test_ros1_plugin_deriving_from_gazebo_ros_control_makes_its_calls_and_the_managers(
+        tmp_path) -> None:
+    # baxter_gazebo's BaxterGazeboRosControlPlugin: gazebo_ros_control is installed, not
+    # in the workspace. Its header was an empty stand-in, model_nh_ undeclared: the
+    # plugin's subscriptions were lost (CPP_CALL_MISSED, the gazebo node partial), no
+    # controller manager served its services, so the spawned controllers were nodes of
+    # their own instead of calls of the gazebo node
+    root = tmp_path / "ws"
+    shutil.copytree(ROS1, root)
+    plugins = root / "arm_gazebo"
+    (plugins / "src").mkdir(parents=True)
+    (plugins / "src" / "arm_control.cpp").write_text(ARM_PLUGIN)
+    (plugins / "package.xml").write_text(package_xml("arm_gazebo"))
+    (plugins / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.0.2)\nproject(arm_gazebo)\n"
+        "find_package(catkin REQUIRED COMPONENTS gazebo_ros_control roscpp std_msgs)\n"
+        "find_package(gazebo REQUIRED)\ncatkin_package()\n"
+        "include_directories(${catkin_INCLUDE_DIRS} ${GAZEBO_INCLUDE_DIRS})\n"
+        "add_library(arm_gazebo_ros_control src/arm_control.cpp)\n")
+    (plugins / "launch").mkdir()
+    (plugins / "launch" / "sim.launch").write_text(
+        '<launch>\n'
+        '  <param name="robot_description" textfile="$(find arm_gazebo)/arm.urdf"/>\n'
+        '  <node name="spawn_arm" pkg="gazebo_ros" type="spawn_model"\n'
+        '        args="-urdf -param robot_description -model arm"/>\n'
+        '  <rosparam ns="/robot/joint_state_controller">\n'
+        '    type: joint_state_controller/JointStateController\n'
+        '    publish_rate: 50\n'
+        '  </rosparam>\n'
+        '  <node name="spawner" pkg="controller_manager" type="spawner" ns="/robot"\n'
+        '        args="joint_state_controller"/>\n'
+        '</launch>\n')
+    (plugins / "arm.urdf").write_text(
+        '<robot name="arm">\n  <link name="base"/>\n  <gazebo>\n'
+        '    <plugin name="arm_control" filename="libarm_gazebo_ros_control.so">\n'
+        '      <robotNamespace>/robot</robotNamespace>\n'
+        '    </plugin>\n  </gazebo>\n</robot>\n')
+    config = configuration(str(root), "arm_gazebo/launch/sim.launch")
+    gazebo = {(link.kind, link.resource.name) for link in config.links
+              if link.node.name == "/gazebo"}
+    assert {("subscribe", "/arm/enable"),  # the plugin's own code, on model_nh_
+            # gazebo_ros_control's Load: its manager in <robotNamespace>, and the
+            # description it searches for from there
+            ("server", "/robot/controller_manager/load_controller"),
+            ("server", "/robot/controller_manager/switch_controller"),
+            ("read", "/robot_description"),
+            # the spawned controller, loaded into that manager
+            ("publish", "/robot/joint_states"),
+            ("read", "/robot/joint_state_controller/publish_rate")} <= gazebo
+    assert config.node("/robot/joint_state_controller") is None
+    assert ("read", "/robot/robot_description") not in gazebo
+    assert not [d for d in config.diagnostics if d.code in (
+        "CPP_CALL_MISSED", "CPP_NODE_PARTIAL", "CPP_INCLUDE_MISSING")
+        and "arm_gazebo" in d.location.file]
+    assert config.node("/gazebo").completeness == "unknown" or not [
+        r for r in config.node("/gazebo").completeness_reasons if "arm_control" in r]

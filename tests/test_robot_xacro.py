@@ -311,3 +311,30 @@ def test_expensive_expressions_stop_at_the_step_bound_and_the_deadline(
     stopped = tmp_expand(tmp_path, heavy * 3)
     assert stopped.root is None
     assert [code for code, _ in codes(stopped)] == ["ROBOT_DESCRIPTION_LIMIT"]
+
+
+def test_the_xacro_prefix_makes_xacro_elements_whatever_its_namespace(tmp_path: Path):
+    # robotnik_sensors' orbbec_astra.urdf.xacro declares xmlns:xacro with the URI of a
+    # wiki page; xacro matches the qualified tag (xacro:macro), so its macro is defined.
+    # It was read as plain XML: its body evaluated where written (${prefix} not defined)
+    # and the robot's call of the macro unknown
+    write(tmp_path, "camera.urdf.xacro",
+          '<robot xmlns:xacro="http://wiki.ros.org/Sensors/OrbbecAstra">'
+          '<xacro:macro name="camera" params="prefix"><link name="${prefix}_link"/>'
+          '</xacro:macro></robot>')
+    description = tmp_expand(tmp_path, '<xacro:include filename="camera.urdf.xacro"/>'
+                                       '<xacro:camera prefix="front"/>')
+    assert codes(description) == []
+    assert [link.get("name") for link in description.root.iter("link")] == ["front_link"]
+
+
+def test_a_description_library_of_seventy_files_is_read(tmp_path: Path):
+    # robotnik_sensors' all_sensors.urdf.xacro includes its 70 sensor files: past the
+    # bound of 64 files, no sensor of summit_xl's description was read
+    for i in range(70):
+        write(tmp_path, f"s{i}.urdf.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">'
+              f'<xacro:macro name="s{i}" params=""><link name="l{i}"/></xacro:macro></robot>')
+    includes = "".join(f'<xacro:include filename="s{i}.urdf.xacro"/>' for i in range(70))
+    description = tmp_expand(tmp_path, includes + "<xacro:s69/>")
+    assert codes(description) == []
+    assert [link.get("name") for link in description.root.iter("link")] == ["l69"]

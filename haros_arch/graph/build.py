@@ -684,7 +684,7 @@ def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[s
     rosname = _handle_name(given, call, instance, remaps) or RosName.make(
         given, instance.namespace, instance.name, remaps)
     if call.searched:
-        rosname = _search(rosname, instance, resources)
+        rosname = _search(rosname, instance, resources, call.handle_namespace)
     return rosname
 
 
@@ -1051,15 +1051,28 @@ def _element_name(item: Any, field: str) -> str | None:
     return value if isinstance(value, str) else None
 
 
-def _search(name: RosName, instance: NodeInstance, resources: Resources) -> RosName:
+def _search(name: RosName, instance: NodeInstance, resources: Resources,
+            handle: str | None = None) -> RosName:
     """searchParam: the closest set parameter from the node's namespace up to the root,
-    else the name in the node's own namespace."""
-    if name.is_global or name.is_unresolved:
+    else the name in the node's own namespace. A ROS 1 key given on a handle with a
+    namespace (``handle``) is searched for from that handle's namespace, as roscpp's
+    ``NodeHandle::searchParam`` does (gazebo_ros_control's ``model_nh_`` in
+    ``<robotNamespace>``)."""
+    if name.is_unresolved:
         return name
+    key = name.given.lstrip("~/")
     namespace = instance.namespace.rstrip("/")
+    prefix = (handle or "").rstrip("/") + "/"
+    if (handle and handle != "~" and instance.ros_version == 1
+            and name.given.startswith(prefix) and not name.given[len(prefix):].startswith(
+                ("/", "~")) and name.full.endswith("/" + name.given[len(prefix):])):
+        key = name.given[len(prefix):]
+        namespace = name.full[:-len(key) - 1]
+    elif name.is_global:
+        return name
     levels = []
     while True:
-        levels.append(f"{namespace}/{name.given.lstrip('~/')}")
+        levels.append(f"{namespace}/{key}")
         if not namespace:
             break
         namespace = namespace.rsplit("/", 1)[0]

@@ -675,6 +675,13 @@ def _built(element: etree._Element, built: Node, spawn: Spawn, host: NodeInstanc
     if spawn.ros_version == 1:
         for reason in reasons:
             own_partial(host, f"{reason} ({where.file}:{where.line})", owned)
+        for base in remembered("gazebo base", built.name, workspace,
+                               lambda: _base_rows(built, workspace)):
+            row = plugin_row(base, 1)
+            if row is not None:
+                calls.extend(_calls(element, row, where, conditions,
+                                    _ros1_namespace(element, row, spawn, host),
+                                    as_namespace(host.namespace)))
         described.node = host.name
         return [(host, calls)]
     if built.rosname is not None:
@@ -715,6 +722,33 @@ def _unread_helper(built: Node, workspace: Workspace) -> str | None:
     include), which the workspace does not build. None when it does not."""
     if HELPER_LIBRARY in workspace.packages:
         return None
+    for path, header in _included(built, workspace):
+        if header.startswith(HELPER_LIBRARY + "/"):
+            return (f"{workspace.relpath(path)} includes {header}, whose classes make "
+                    "calls that are not read")
+    return None
+
+
+# the header that declares the plugin class of a table row: a workspace plugin that
+# includes it derives from that class, whose Load its own Load runs first (baxter_gazebo's
+# BaxterGazeboRosControlPlugin calls GazeboRosControlPlugin::Load), so it makes the
+# row's calls beside those of its code
+ROW_BASES = {"gazebo_ros_control/gazebo_ros_control_plugin.h": "gazebo_ros_control"}
+
+
+def _base_rows(built: Node, workspace: Workspace) -> list[str]:
+    """The rows of ``ROW_BASES`` whose header a workspace plugin includes."""
+    rows: list[str] = []
+    for _, header in _included(built, workspace):
+        row = ROW_BASES.get(header)
+        if row is not None and row not in rows:
+            rows.append(row)
+    return rows
+
+
+def _included(built: Node, workspace: Workspace) -> Iterator[tuple[str, str]]:
+    """Each ``#include`` of a workspace plugin's sources and of the headers of its
+    package they include (bounded), as (the file that includes it, the header)."""
     package = workspace.packages.get(built.package)
     roots = [os.path.join(package.root, "include")] if package is not None else []
     seen: set[str] = set()
@@ -726,12 +760,9 @@ def _unread_helper(built: Node, workspace: Workspace) -> str | None:
         seen.add(path)
         text, _ = read_text(path, workspace.location(path))
         for header in INCLUDE.findall(text or ""):
-            if header.startswith(HELPER_LIBRARY + "/"):
-                return (f"{workspace.relpath(path)} includes {header}, whose classes make "
-                        "calls that are not read")
+            yield path, header
             files.extend(os.path.join(folder, header)
                          for folder in [*roots, os.path.dirname(path)])
-    return None
 
 
 def sdf_filled(call: PrimitiveCall, element: etree._Element,
@@ -1001,14 +1032,20 @@ def _calls(element: etree._Element, row: Plugin, where: Location,
         if row.ros_version == 2 and kind.count("/") == 1:
             package, _, message = kind.partition("/")
             kind = f"{package}/msg/{message}"
+        own = name
         if namespace is not None and not name.startswith("/"):
             name = clean(namespace + name)
             if name.startswith(home) and len(name) > len(home):
                 name = name[len(home):]
+        # a searched read starts from its handle's namespace: the name's part before
+        # the key (``PrimitiveCall.handle_namespace``)
+        handle = name[:-len(own) - 1] if entity.searched and name.endswith("/" + own) \
+            else None
         yield PrimitiveCall(cast(CallKind, entity.kind), name,
                             kind if entity.kind != "read" else None,
                             conditions=(*conditions, *extra), location=where,
-                            origin="description",
+                            origin="description", searched=entity.searched,
+                            handle_namespace=handle or None,
                             transport="*" if entity.transport else None)
 
 

@@ -46,6 +46,9 @@ class Entity:
     # plugins' topics beside it (gazebo_ros_camera_utils.cpp's itnode_->advertise; ROS 2
     # gazebo_ros_camera.cpp's image_transport::create_publisher, the depth image too)
     transport: bool = False
+    # a read of the parameter found by searching up from the handle's namespace
+    # (``searchParam``, ``PrimitiveCall.searched``): gazebo_ros_control's getURDF
+    searched: bool = False
 
 
 @dataclass(frozen=True)
@@ -171,7 +174,7 @@ PLUGINS: tuple[Plugin, ...] = (
     # controllers the configuration's spawners load into it are attached to the gazebo
     # instance that serves its load_controller (plugins.attach.ros1_controllers)
     _ros1("gazebo_ros_control", namespace="model", entities=(
-        Entity("read", "{robotParam}", "string"),
+        Entity("read", "{robotParam}", "string", searched=True),
         Entity("subscribe", "{eStopTopic}", "std_msgs/Bool", when="eStopTopic",
                when_default=False),
         Entity("server", "controller_manager/list_controllers",

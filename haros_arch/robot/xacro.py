@@ -50,7 +50,9 @@ from ..workspace import Workspace
 
 Element = etree._Element
 
-MAX_FILES = 64
+# files of one description: robot description libraries include every file they have
+# (robotnik_sensors' all_sensors.urdf.xacro includes 70)
+MAX_FILES = 256
 MAX_DEPTH = 32  # includes and macro calls nested
 MAX_ELEMENTS = 50_000
 MAX_TEXT = 100_000  # characters of one evaluated value
@@ -174,9 +176,15 @@ class _Stop(Exception):
 
 
 def is_xacro(element: Any) -> bool:
-    return isinstance(element.tag, str) and element.tag.startswith("{") and \
-        "xacro" in element.tag[1:element.tag.index("}")] and \
-        not element.tag.startswith("{" + UNDECLARED)  # read as it is: no xacro runs
+    """A xacro element: one written with the declared prefix ``xacro``, whatever URI its
+    ``xmlns:xacro`` gives (xacro matches the qualified tag, ``xacro:macro``:
+    robotnik_sensors' orbbec_astra.urdf.xacro declares
+    ``xmlns:xacro="http://wiki.ros.org/Sensors/OrbbecAstra"``), or one in a namespace
+    whose URI names xacro."""
+    if not isinstance(element.tag, str) or not element.tag.startswith("{") or \
+            element.tag.startswith("{" + UNDECLARED):  # read as it is: no xacro runs
+        return False
+    return element.prefix == "xacro" or "xacro" in element.tag[1:element.tag.index("}")]
 
 
 def line_of(element: Element | None) -> int:

@@ -888,6 +888,13 @@ class Scope:
         side = self.chosen.get(key_of(cursor)) if self.chosen else None
         if side is not None:
             return self.string(yes if side else no, depth + 1)
+        if _ARGUMENTS[0]:
+            index = program_argument(yes, self)
+            if index is not None and index > 0 and _has_argument(test, yes, index, self):
+                # ``argc > 1 ? argv[1] : ""`` (baxter's position_kinematics): the
+                # argument where the program has it; where the instance has none, the
+                # graph leaves the name unknown, not the other side
+                return (ProgramArgument(index),)
         found = self._emptiness(test, depth)
         if found is None:
             truth = self.boolean(test)
@@ -1250,6 +1257,37 @@ def program_argument(expr: Cursor | None, scope: Scope) -> int | None:
         c for c in made.walk_preorder() if c.kind == CursorKind.CALL_EXPR
         and c.spelling in ARGUMENTS_LEFT]
     return index if calls else None
+
+
+def _has_argument(test: Cursor, element: Cursor, index: int, scope: Scope) -> bool:
+    """Whether ``test`` holds only when ``main``'s ``argv`` has the element ``index``
+    that ``element`` reads: ``argc > N`` or ``argc >= N + 1`` (``N < argc``, ``N + 1 <=
+    argc``) with N at least ``index``, ``argc`` the first parameter of the ``main`` whose
+    ``argv`` that is."""
+    test = strip(test)
+    sides = [c for c in test.get_children() if c.kind.is_expression()]
+    if test.kind != CursorKind.BINARY_OPERATOR or len(sides) != 2:
+        return False
+    operator = binary_operator(test, sides)
+    left, right = strip(sides[0]), strip(sides[1])
+    flipped = {"<": ">", "<=": ">="}
+    if operator in flipped:
+        operator, left, right = flipped[operator], right, left
+    if operator not in (">", ">=") or left.kind != CursorKind.DECL_REF_EXPR:
+        return False
+    bound = scope.integer(right)
+    if not isinstance(bound, int) or isinstance(bound, bool):
+        return False
+    argc = left.referenced
+    function = argc.semantic_parent if argc is not None else None
+    if function is None or function.spelling != "main" or argc.kind != CursorKind.PARM_DECL:
+        return False
+    params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+    if len(params) < 2 or params[0] != argc or not any(
+            c.kind == CursorKind.DECL_REF_EXPR and c.referenced == params[1]
+            for c in element.walk_preorder()):
+        return False
+    return bound >= index if operator == ">" else bound >= index + 1
 
 
 def _from_end(index: Cursor, argc: Cursor, main: Cursor, read: Cursor,

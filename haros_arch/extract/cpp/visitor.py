@@ -92,7 +92,7 @@ from .values import (
 from .values import _walk as walk_cursors
 from .values import key_of as place_of
 from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
-from .writes import default_constructed, may_write
+from .writes import default_constructed, may_write, searched_key
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
@@ -1983,6 +1983,13 @@ class CallFinder:
             # a string parameter (``while (ss >> source)``, ``EACH_WORD``)
             listed, at, mark = each
             return (name, (listed, None, None, mark, at) if listed is not None else None)
+        searched = self._searched_key_source(inner, scope)
+        if searched is not None:
+            # the name ``searchParam(key, name)`` found for a key a parameter holds
+            # (arm_kinematics' ``nh.param("urdf_xml", urdf_xml, ...)`` then
+            # ``searchParam(urdf_xml, full)`` and ``getParam(full, ...)``): the read of
+            # the parameter searched for, named as that parameter's value is
+            return (SearchedName(name), (*searched, None, None))
         # a parameter's value: the graph puts it in the place of the ``?``
         source = self._parameter_source(expr, scope, 0)
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
@@ -2362,6 +2369,20 @@ class CallFinder:
             return None
         return parameter_mark(name, source[0], source[3])
 
+    def _searched_key_source(self, expr: Cursor, scope: Scope) -> Source | None:
+        """The parameter whose value is the key of the ``searchParam(key, result)`` that
+        last wrote the variable ``expr`` (its result), if it is one."""
+        if expr.kind != CursorKind.DECL_REF_EXPR or expr.referenced is None:
+            return None
+        passed = scope.passed_to(expr.referenced, expr)
+        if passed is None:
+            return None
+        call, index = passed
+        key = searched_key(call)
+        if key is None or index != len(written_arguments(call)) - 1:
+            return None
+        return self._parameter_source(key, scope, 1)
+
     def _parameter_source(self, expr: Cursor, scope: Scope,
                           depth: int, value: bool = False) -> Source | None:
         """The parameter (name, default) whose value ``expr`` holds, if it is one.
@@ -2379,6 +2400,8 @@ class CallFinder:
             passed = scope.passed_to(decl, expr)
             if passed is not None:
                 call, index = passed
+                if searched_key(call) is not None:
+                    return None  # searchParam's result: the name it found, no value
                 spec, _ = self._row(call)
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
                     return self._parameter(spec, call, scope, depth)
