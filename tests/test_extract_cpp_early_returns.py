@@ -216,3 +216,93 @@ def test_a_required_parameter_not_set_is_reported(write_tree):
     model = _model(write_tree)
     findings = [f for f in run_catalogue(model) if f.rule == "parameter-read-not-set"]
     assert [f.message.split(" is read")[0] for f in findings] == ["/copier/target_frame"]
+
+
+DECLARE_OR_GET = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <string>
+template<typename NodeT, typename T>
+T declare_or_get_parameter(NodeT node, const std::string & parameter_name, const T & value)
+{
+  auto param_interface = node->get_node_parameters_interface();
+  if (param_interface->has_parameter(parameter_name)) {
+    rclcpp::Parameter param(parameter_name, value);
+    param_interface->get_parameter(parameter_name, param);
+    return param.get_value<T>();
+  }
+  return param_interface->declare_parameter(
+    parameter_name, rclcpp::ParameterValue{value}).template get<T>();
+}
+class Server : public rclcpp::Node {
+ public:
+  Server() : Node("server") {
+    double rate = declare_or_get_parameter(this, "rate", 1.0);
+    if (has_parameter("other")) {
+      return;
+    }
+    declare_parameter("late", 2.0);
+    (void)rate;
+  }
+};
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Server>());
+}
+"""
+
+
+def test_a_declaration_after_returning_what_is_declared_is_no_condition(tmp_path):
+    """navigation2's ``declare_or_get_parameter``: ``if (has_parameter(n)) return
+    get_parameter(n);`` then ``declare_parameter(n, ..)``: after it the parameter is
+    declared either way; a test of another parameter stays a condition."""
+    source = tmp_path / "s.cpp"
+    source.write_text(DECLARE_OR_GET)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    declared = {c.name: _conditions(c) for c in result.calls if c.kind == "declare"}
+    assert declared == {"rate": [], "late": [("else", 'has_parameter("other")')]}
+
+
+NOT_AGAIN = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+class Loader {
+ public:
+  bool load(const std::string& file) {
+    if (!always_reload_ && current_ == file) {
+      return true;
+    }
+    pub_ = nh_.advertise<std_msgs::String>("log", 1);
+    current_ = file;
+    return true;
+  }
+  void step() {
+    if (count_ > 10) return;
+    other_ = nh_.advertise<std_msgs::String>("other", 1);
+  }
+ private:
+  ros::NodeHandle nh_;
+  ros::Publisher pub_, other_;
+  std::string current_;
+  bool always_reload_ = false;
+  int count_ = 0;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "loader");
+  Loader l;
+  l.load("a");
+  l.step();
+  ros::spin();
+}
+"""
+
+
+def test_a_guard_over_state_the_block_updates_lets_the_first_run_through(tmp_path):
+    """navigation2's BT server loads a tree (and makes its logger's publisher) unless
+    the same file is loaded already, and then records the file: the first load goes
+    past the guard. A guard over a member the block does not set stays a condition."""
+    source = tmp_path / "l.cpp"
+    source.write_text(NOT_AGAIN)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert {c.name: _conditions(c) for c in result.calls if c.kind == "publish"} == {
+        "log": [], "other": [("else", "count_ > 10")]}

@@ -78,7 +78,9 @@ def test_a_body_that_can_leave_early_keeps_the_loop_condition(tmp_path) -> None:
                  "                return\n"
                  "            self.create_publisher(Image, side + '/z', 10)\n")
     assert names(result) == [
-        ("a/x", ("side in ['a', 'b']",)), ("b/x", ("side in ['a', 'b']",)),
+        # (after ``if side == self.stop: break``: under its else)
+        ("a/x", ("side in ['a', 'b']", "side == self.stop")),
+        ("b/x", ("side in ['a', 'b']", "side == self.stop")),
         ("c/y", ()),  # the inner loop's break is its own
         ("d/z", ("side in ['d']",))]  # a return leaves every loop
 

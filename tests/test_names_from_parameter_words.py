@@ -62,9 +62,11 @@ def test_each_word_of_a_string_parameter_names_the_calls_of_the_loop(tmp_path) -
     got = sorted((c.location.line, c.kind, c.name, c.name_param, c.name_each,
                   tuple(x.statement for x in c.conditions)) for c in result.calls)
     each = ("~observation_sources", WORDS, ("for each",))
+    # the copy and the delete follow ``if (!old_h.hasParam(name)) return;``: its else
+    copied = ("~observation_sources", WORDS, ("for each", "else"))
     assert got == [(24, "read", "~observation_sources", None, None, ()),
-                   (29, "read", "~?", *each), (29, "write", "~?", *each),
-                   (29, "write", "~obstacle_layer/?", *each),
+                   (29, "read", "~?", *each), (29, "write", "~?", *copied),
+                   (29, "write", "~obstacle_layer/?", *copied),
                    (30, "subscribe", "~?/points", *each)]
 
 

@@ -239,7 +239,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             # a node the process makes: its files apply by name (a controller's section
             # of the file given to ros2_control_node, after its spawner's file, whose
             # values win: rcl's global arguments reach every node of the process)
-            _process_params(decl, reader, params)
+            _process_params(decl, reader, params, declared=slot.names == SPAWNER)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
         if slot.declares:  # the host's loading code declares them on the plugin's node
@@ -304,13 +304,18 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
     return instance, node
 
 
-def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params) -> None:
-    """The entries of the process's parameter files that name a node it makes (not the
-    ``/**`` ones: those are the launched node's, and a node the code makes has them only
-    where it declares them)."""
+def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params,
+                    declared: bool = False) -> None:
+    """The entries of the process's parameter files that name a node it makes; the
+    ``/**`` ones too when the node declares every override it is given (``declared``:
+    ros2_control's controllers, made with ``automatically_declare_parameters_from_
+    overrides(true)``, get the ``robot_description`` a launch file gives the manager as
+    a dictionary, which launch_ros writes under ``/**``); else not, a node the code makes
+    having those only where it declares them."""
     for document, where in decl.param_files:
         values = {name: value for pattern, entries in node_patterns(document)
-                  if pattern != "/**" and pattern_matches(pattern, instance.name)
+                  if (pattern != "/**" or declared) and (
+                      pattern == "/**" or pattern_matches(pattern, instance.name))
                   for name, value in flatten(entries)}
         _set_params(params, instance.name, values, where, instance.conditions)
 

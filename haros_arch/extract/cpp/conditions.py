@@ -60,6 +60,7 @@ _SPACE = re.compile(r"\s+")
 # ``!node->has_parameter(name)``, ``!this->has_parameter("x")``, ``!has_parameter(x)``
 _NOT_DECLARED = re.compile(
     r"!\s*(?:[A-Za-z_][\w:]*\s*(?:\(\s*\))?\s*(?:->|\.)\s*)*has_parameter\s*\(\s*(.+?)\s*\)")
+_DECLARED = re.compile(_NOT_DECLARED.pattern.removeprefix("!\\s*"))
 _ELSE = re.compile(r"\belse\b")
 _SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
 # a handler that catches what rclcpp throws for a parameter that is not set (its
@@ -231,16 +232,23 @@ class ConditionReader:
         return None
 
     def _guards_first_time(self, tested: Cursor, rest: list[Cursor]) -> bool:
-        """Whether ``if (flag) return;`` guards a lazy initialisation: ``flag`` a bool
-        member the rest of the block sets to true."""
+        """Whether ``if (TEST) return;`` guards what the function does only once, or
+        not again for the same input: TEST reads a member the rest of the block sets
+        (``if (initialized_) { ROS_WARN(..); return; }`` before ``initialized_ = true``;
+        navigation2's ``if (!always_reload_bt_ && current_bt_file_or_id_ == file_or_id)
+        return true;`` before ``current_bt_file_or_id_ = file_or_id``). The first run
+        goes past it, so what follows is made."""
         from .members import member_of
         from .writes import writes_of
 
+        members = {member_of(node) for node in tested.walk_preorder()
+                   if node.kind == CursorKind.MEMBER_REF_EXPR}
         flag = _flag(strip(tested))
-        if flag is None:
+        members = {m for m in members | {flag} if m is not None
+                   and m.kind == CursorKind.FIELD_DECL}
+        if not members:
             return False
-        return any(write.whole and write.value is not None and _true(write.value)
-                   and member_of(write.target) == flag
+        return any(write.whole and member_of(write.target) in members
                    for statement in rest for found in statement.walk_preorder()
                    for write in writes_of(found, self.source))
 
@@ -431,8 +439,11 @@ class ConditionReader:
         written = None
         kept = []
         for condition in conditions:
+            # ``if (!has_parameter(n)) declare``, or after ``if (has_parameter(n)) return
+            # get_parameter(n);`` (navigation2's ``declare_or_get_parameter``): ``else``
             found = _NOT_DECLARED.fullmatch(condition.text) if (
-                condition.statement == "if") else None
+                condition.statement == "if") else _DECLARED.fullmatch(condition.text) if (
+                condition.statement == "else") else None
             if found is not None:
                 written = self._text(name) if written is None else written
                 if found.group(1) == written:

@@ -106,6 +106,8 @@ class Walker:
         self.calls: list[PrimitiveCall] = []
         self.diagnostics: list[Diagnostic] = []
         self._limit_reported = False
+        # the ``if`` statement walked last, with its two conditions (``_block``)
+        self._tested_if: tuple[ast.If, Condition, Condition] | None = None
         self._unrolled = 0  # unrolled loops the walk is in
         self.rosname: str | None = None
         self.namespace: str | None = None
@@ -259,6 +261,10 @@ class Walker:
     # -- statements ---------------------------------------------------------------------
 
     def _block(self, body: list[ast.stmt], frame: Frame, conds: Conditions) -> None:
+        """The statements of ``body`` in turn; after ``if test: return`` (``continue``,
+        ``break``) the rest runs under ``else`` test, after ``if test: ... else:
+        return`` under test, unless that side fails (``raise``, an exit, an error logged,
+        ``return False``): the rest is then the function's work when it succeeds."""
         for statement in body:
             self.steps += 1
             limit = f"{MAX_STEPS} statements walked" if self.steps > MAX_STEPS else \
@@ -271,6 +277,14 @@ class Walker:
                 return
             handler = getattr(self, "_" + type(statement).__name__, self._statement)
             handler(statement, frame, conds)
+            if isinstance(statement, ast.If) and self._tested_if is not None and (
+                    self._tested_if[0] is statement):
+                _, yes, no = self._tested_if
+                first, second = _leaves(statement.body), _leaves(statement.orelse)
+                if first == "done" and second is None:
+                    conds = (*conds, no)
+                elif second == "done" and first is None:
+                    conds = (*conds, yes)
 
     def _statement(self, statement: ast.stmt, frame: Frame, conds: Conditions) -> None:
         """Fallback: the calls in the statement's expressions, in source order."""
@@ -389,24 +403,31 @@ class Walker:
         where = self._where(frame, statement)
         held = self._held(statement.test, frame)
         yes, no = condition("if", text, where, held), condition("else", text, where, held)
+        self._tested_if = None
+        # a presence test whose absent side fails: the other side runs whenever the
+        # function goes on (the parameter is required)
+        required = _PRESENCE.search(text) is not None and (
+            "if" if _leaves(statement.orelse) == "failed" else
+            "else" if _leaves(statement.body) == "failed" else None)
         # the locals, and the attributes of ``self`` (interbotix_xs_modules' core: ``if
         # self.robot_name is None: self.robot_name = robot_model``, with ``robot_name`` an
         # option argparse parses), each path sets: both, joined after
         attrs = frame.instance.attrs if frame.instance is not None else {}
         before, attrs_before = dict(frame.locals), dict(attrs)
-        self._block(statement.body, frame, (*conds, yes))
+        self._block(statement.body, frame, conds if required == "if" else (*conds, yes))
         taken, attrs_taken = dict(frame.locals), dict(attrs)
         frame.locals.clear()  # the other path starts from what was before the if
         frame.locals.update(before)
         attrs.clear()
         attrs.update(attrs_before)
         if statement.orelse:
-            self._block(statement.orelse, frame, (*conds, no))
+            self._block(statement.orelse, frame, conds if required == "else" else (*conds, no))
         other, attrs_other = dict(frame.locals), dict(attrs)
         frame.locals.clear()
         frame.locals.update(_joined(before, taken, other, yes, no))
         attrs.clear()
         attrs.update(_joined(attrs_before, attrs_taken, attrs_other, yes, no))
+        self._tested_if = (statement, yes, no)
 
     def _held(self, test: ast.expr, frame: Frame) -> tuple[tuple[str, str], ...] | None:
         """What ``test`` reads that holds a parameter's value, as the graph decides a
@@ -1179,6 +1200,73 @@ def _changed(value: Seq | Record, method: str, args: list[object]) -> Seq | None
         items.insert(args[0], args[1])
         return Seq(tuple(items))
     return None
+
+
+# a test of whether a parameter is set (``rospy.has_param('~x')``, ``self.has_parameter(
+# 'x')``): when its absent side fails, the parameter is required
+_PRESENCE = re.compile(r"\b(?:has_param|has_parameter)\s*\(")
+# what logs an error: rospy's ``logerr`` / ``logfatal`` (and their variants), a logger's
+# ``error`` / ``fatal`` (``self.get_logger().error(..)``)
+_ERROR_LOGS = frozenset({"logerr", "logfatal", "logerr_throttle", "logfatal_throttle",
+                         "logerr_once", "logfatal_once", "logerr_throttle_identical"})
+
+
+def _leaves(body: list[ast.stmt]) -> str | None:
+    """Whether a block always leaves the one around it, and how: ``"failed"`` by
+    ``raise``, an exit, or with an error logged; ``"false"`` by ``return False`` or a
+    negative number; ``"done"`` by another ``return``, ``continue`` or ``break``; None
+    when it may go on (as ``ConditionReader._leaves`` tells for C++)."""
+    if not body:
+        return None
+    last = body[-1]
+    found: str | None = None
+    if isinstance(last, ast.Raise):
+        return "failed"
+    if isinstance(last, ast.Return):
+        value = last.value
+        failed = (isinstance(value, ast.Constant) and value.value is False) or (
+            isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub)
+            and isinstance(value.operand, ast.Constant))
+        found = "false" if failed else "done"
+    elif isinstance(last, ast.Continue | ast.Break):
+        found = "done"
+    elif isinstance(last, ast.Expr) and _exits(last.value):
+        return "failed"
+    elif isinstance(last, ast.If):
+        both = (_leaves(last.body), _leaves(last.orelse))
+        if None in both:
+            return None
+        found = "failed" if "failed" in both else "false" if "false" in both else "done"
+    if found in ("done", "false") and any(
+            isinstance(s, ast.Expr) and (_exits(s.value) or _logs_error(s.value))
+            for s in body[:-1]):
+        return "failed"
+    return found
+
+
+def _called(expr: ast.expr) -> str:
+    if not isinstance(expr, ast.Call):
+        return ""
+    func = expr.func
+    return func.attr if isinstance(func, ast.Attribute) else (
+        func.id if isinstance(func, ast.Name) else "")
+
+
+def _exits(expr: ast.expr) -> bool:
+    """``sys.exit(1)``, ``exit()``, ``rospy.signal_shutdown(..)``, ``rclpy.shutdown()``."""
+    return _called(expr) in _EXITS or _called(expr) == "quit"
+
+
+def _logs_error(expr: ast.expr) -> bool:
+    name = _called(expr)
+    if name in _ERROR_LOGS:
+        return True
+    if name not in ("error", "fatal") or not isinstance(expr, ast.Call):
+        return False
+    owner = expr.func.value if isinstance(expr.func, ast.Attribute) else None
+    return _called(owner) == "get_logger" if isinstance(owner, ast.Call) else (
+        isinstance(owner, ast.Name | ast.Attribute) and "log" in (
+            owner.id if isinstance(owner, ast.Name) else owner.attr).lower())
 
 
 def _leaves_early(body: list[ast.stmt]) -> bool:

@@ -183,6 +183,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         for name, leaf in flat(key, convert(value, ev)):
             put(name, leaf, location, f"{location.file}:{location.line}:{location.column}")
     commands: dict[str, str] = {}
+    given: dict[str, Any] = {}  # the node's dictionaries' parameters
     for entry in entries:
         if isinstance(entry, e.ParamFile):
             read_file(entry, entry.location if entry.location.file else where)
@@ -192,9 +193,16 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             written, value = entry
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
                 put(name, leaf, where)
+                given[name] = leaf
             command = command_line(value, ev)
             if command is not None:
                 commands[ev.value(written).text] = command
+    if given:
+        # launch_ros writes a node's dictionaries to a file of its own under ``/**``: a
+        # parameter file of the process, which reaches a node the process makes that
+        # takes every override (``plugins.attach``: ros2_control's controllers)
+        runner.model.nodes[-1].param_files.append(
+            ({"/**": {naming.PARAMS_KEY: given}}, where))
     owner = len(runner.model.nodes) - 1  # the declaration just appended
     for name, (leaf, location, setting) in found.items():
         param = make_param(node, name, leaf, scope.conditions, location)
