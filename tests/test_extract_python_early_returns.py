@@ -37,11 +37,19 @@ class Relay(object):
         return True
 
 
-if __name__ == "__main__":
+def main():
     rospy.init_node("relay")
+    if not rospy.has_param("~ready"):
+        print("not ready")
+        return 1
     relay = Relay()
     relay.check()
     rospy.spin()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
 '''
 
 
@@ -74,5 +82,8 @@ def test_python_early_returns_and_required_parameters(tmp_path):
     # a plain return: the publisher exists only when enabled
     assert calls["publish", "out", line('"out"')] == [
         ("else", 'not rospy.get_param("~enabled", True)')]
-    # a failure (an error logged, False returned): the function's work when it succeeds
+    # a failure (an error logged, False returned; an exit status): the function's work
+    # when it succeeds
     assert calls["publish", "status", line('"status"')] == []
+    assert calls["publish", "out", line('"out"')] == [
+        ("else", 'not rospy.get_param("~enabled", True)')]

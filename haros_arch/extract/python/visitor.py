@@ -1213,8 +1213,8 @@ _ERROR_LOGS = frozenset({"logerr", "logfatal", "logerr_throttle", "logfatal_thro
 
 def _leaves(body: list[ast.stmt]) -> str | None:
     """Whether a block always leaves the one around it, and how: ``"failed"`` by
-    ``raise``, an exit, or with an error logged; ``"false"`` by ``return False`` or a
-    negative number; ``"done"`` by another ``return``, ``continue`` or ``break``; None
+    ``raise``, an exit, or with an error logged; ``"false"`` by ``return False``, a
+    negative number or a nonzero integer; ``"done"`` by another ``return``, ``continue`` or ``break``; None
     when it may go on (as ``ConditionReader._leaves`` tells for C++)."""
     if not body:
         return None
@@ -1224,7 +1224,10 @@ def _leaves(body: list[ast.stmt]) -> str | None:
         return "failed"
     if isinstance(last, ast.Return):
         value = last.value
-        failed = (isinstance(value, ast.Constant) and value.value is False) or (
+        # ``return False``, a negative number, or a nonzero exit status (a script's
+        # ``main`` returning 1 to ``sys.exit(main())``: baxter_tools' calibrate_arm.py)
+        failed = (isinstance(value, ast.Constant) and (value.value is False or (
+            type(value.value) is int and value.value != 0))) or (
             isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub)
             and isinstance(value.operand, ast.Constant))
         found = "false" if failed else "done"
