@@ -1214,8 +1214,9 @@ _ERROR_LOGS = frozenset({"logerr", "logfatal", "logerr_throttle", "logfatal_thro
 def _leaves(body: list[ast.stmt]) -> str | None:
     """Whether a block always leaves the one around it, and how: ``"failed"`` by
     ``raise``, an exit, or with an error logged; ``"false"`` by ``return False``, a
-    negative number or a nonzero integer; ``"done"`` by another ``return``, ``continue`` or ``break``; None
-    when it may go on (as ``ConditionReader._leaves`` tells for C++)."""
+    negative number or a nonzero integer; ``"done"`` by another ``return``,
+    ``continue`` or ``break``; None when it may go on (as ``ConditionReader._leaves``
+    tells for C++)."""
     if not body:
         return None
     last = body[-1]
