@@ -168,6 +168,36 @@ _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
 _INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
 
 
+def _handle_resolve(target: Cursor) -> bool:
+    """roscpp's ``NodeHandle::resolveName(name[, remap])``: ``name`` resolved in the
+    handle's namespace and remapped. Its value is the name as seen from the node
+    (``_handle_resolved``); the graph resolves and remaps it (``names_prefix``)."""
+    parent = target.semantic_parent
+    return target.spelling == "resolveName" and parent is not None and (
+        qualified_name(parent) == "ros::NodeHandle")
+
+
+def _expands(target: Cursor) -> bool:
+    """rclcpp's free ``expand_topic_or_service_name(name, node, namespace[, service])``:
+    ``name`` expanded in the namespace given, the node's own where a node passes its
+    ``get_namespace()``. Its value is the name as written, as ``_RESOLVERS``' are."""
+    parent = target.semantic_parent
+    return target.spelling == "expand_topic_or_service_name" and parent is not None and (
+        parent.kind == CursorKind.NAMESPACE and parent.spelling == "rclcpp")
+
+
+def join_parts(namespace: Parts, name: Parts) -> Parts:
+    """``name`` as seen from a handle in ``namespace`` (``~`` private, ``""`` the node's):
+    ``handles.join_name`` of values whose parts may be unknown."""
+    first = next((p for p in name if p != ""), "")
+    if (first is not None and first.startswith(("/", "~"))) or namespace == ("",):
+        return name
+    if all(type(p) is str for p in namespace):
+        text = "".join(namespace)  # type: ignore[arg-type]
+        return (text if text == "~" or text.endswith("/") else text + "/", *name)
+    return (*namespace, "/", *name)
+
+
 def _names_resolve(target: Cursor) -> bool:
     """roscpp's ``ros::names::resolve(name[, remap])``: ``name`` resolved in the node's
     namespace and remapped. Its value is the name as written (the graph expands and
@@ -986,8 +1016,11 @@ class Scope:
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
             # manage_nodes``, ``~/manage_nodes``: ``own_name``)
             return (NODE_NAME,)
-        if args and (_resolver(target) is not None or _names_resolve(target)):
+        if args and (_resolver(target) is not None or _names_resolve(target)
+                     or _expands(target)):
             return self.string(args[0], depth + 1)
+        if args and _handle_resolve(target):
+            return self._handle_resolved(call, args[0], depth)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
                 and target.semantic_parent is not None
                 and target.semantic_parent.spelling == "image_transport"):
@@ -1017,6 +1050,15 @@ class Scope:
             if len(values) == 1:
                 return values.pop()
         return UNKNOWN
+
+    def _handle_resolved(self, call: Cursor, name: Cursor, depth: int) -> Parts:
+        """``handle.resolveName(name)``: ``name`` in the namespace of the handle
+        (``~image`` on a private one, ``motors/image`` on one in ``motors``), which
+        ``CallSites.handle_namespace`` tells; unknown where it is not known."""
+        handle = _method_object(call)
+        find = None if self.sites is None else self.sites.handle_namespace
+        namespace = UNKNOWN if handle is None or find is None else find(handle, self)
+        return join_parts(namespace, self.string(name, depth + 1))
 
     def _string_format(self, call: Cursor, target: Cursor, args: list[Cursor],
                        depth: int) -> Parts | None:
@@ -1114,8 +1156,9 @@ class Scope:
             only_expand >= len(args) or self.boolean(args[only_expand]) is False)
 
     def names_prefix(self, cursor: Cursor, depth: int = 0) -> str | None:
-        """The relative name ``ros::names::resolve`` resolved at the start of the name
-        ``cursor`` holds (imu_tools' ``ros::names::resolve("imu") + "/data"``: ``imu``),
+        """The relative name ``ros::names::resolve`` (or a handle's ``resolveName``, in
+        the handle's namespace) resolved at the start of the name ``cursor`` holds
+        (imu_tools' ``ros::names::resolve("imu") + "/data"``: ``imu``),
         through variables, string copies and ``+``; None when it starts otherwise."""
         cursor = strip(cursor)
         if depth > MAX_DEPTH:
@@ -1132,9 +1175,12 @@ class Scope:
         if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
             inner = operand(cursor) if target is None else args[0]
             return None if inner is None else self.names_prefix(inner, depth + 1)
-        if not args or not _names_resolve(target):
+        if args and _handle_resolve(target):  # a handle's: in the handle's namespace
+            written = render(self.string(cursor, depth + 1))
+        elif not args or not _names_resolve(target):
             return None
-        written = render(self.string(args[0], depth + 1))
+        else:
+            written = render(self.string(args[0], depth + 1))
         if not written or "?" in written or written.startswith(("/", "~")):
             return None
         return written.rstrip("/")

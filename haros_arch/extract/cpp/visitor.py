@@ -320,6 +320,7 @@ class CallFinder:
         self.functions = list(self._definitions(self._root, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True, main=self.tu.spelling)
+        self.sites.handle_namespace = self.namespaces.value_namespace
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
         self.wrappers.build()
