@@ -113,6 +113,8 @@ _API_NAMES = frozenset(
                           *api.STANDIN_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+# a nodelet's lookup name as a launch file gives it (``pkg/Name``, a C++ type)
+_LOOKUP_NAME = re.compile(r"[A-Za-z_][\w/:]*")
 # the text after a call whose result the code looks one key up in (``_looked_up``)
 _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[)")
 # where a call's name comes from: a ``Source`` (the parameter, its default, the
@@ -674,6 +676,8 @@ class CallFinder:
                 self._dependent(node, conditions, scope)
             elif node.kind == CursorKind.CALL_EXPR and node.spelling == "operator()":
                 self._vendor_member_call(node)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == api.NODELET_LOAD[1]:
+                self._nodelet_load(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
@@ -868,6 +872,23 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _nodelet_load(self, call: Cursor, conditions: tuple[Condition, ...],
+                      scope: Scope) -> None:
+        """nodelet::Loader's ``load(name, type, ...)`` with the node's own name and a
+        class written as text, not under a condition (image_view's wrapper executable):
+        the nodelet runs as this node (``CPP_NODELET_IN_PROCESS``; the graph gives its
+        instances the class's calls). Any other stays a load by name
+        (``CPP_PLUGINS_LOADED``, found in the unit's text)."""
+        target, args = call.referenced, written_arguments(call)
+        if target is None or len(args) < 2 or (
+                qualified_name(target.semantic_parent), target.spelling) != api.NODELET_LOAD:
+            return
+        name, cls = render(scope.string(args[0])), render(scope.string(args[1]))
+        if conditions or name != "~" or not _LOOKUP_NAME.fullmatch(cls):
+            return
+        self.diagnostics.append(diag.make("CPP_NODELET_IN_PROCESS", self.where(call),
+                                          cls=cls))
 
     def _handed_to(self, owner: str, name: str, call: Cursor) -> None:
         """``owner`` hands the node to ``call`` of a function or class the parse does not
