@@ -104,6 +104,13 @@ def test_a_load_under_another_name_stays_a_load_by_name(write_tree: Any) -> None
     assert "parameter-set-not-read" not in found
 
 
+def test_a_load_with_remappings_of_its_own_stays_a_load_by_name(write_tree: Any) -> None:
+    # the nodelet's names remapped by the program's map first: not known here
+    instance, _ = _run(write_tree, 'remap["image"] = "/other";\n  ' + LOAD)
+    assert instance.completeness == "partial" and not instance.node.nodelets
+    assert instance.node.plugin_loads == ["viewer/src/viewer.cpp:10"]
+
+
 def test_the_same_node_without_the_load_decides(write_tree: Any) -> None:
     instance, found = _run(write_tree, "")
     assert instance.completeness == "complete" and not instance.node.plugin_loads

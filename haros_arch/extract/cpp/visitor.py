@@ -885,10 +885,42 @@ class CallFinder:
                 qualified_name(target.semantic_parent), target.spelling) != api.NODELET_LOAD:
             return
         name, cls = render(scope.string(args[0])), render(scope.string(args[1]))
-        if conditions or name != "~" or not _LOOKUP_NAME.fullmatch(cls):
+        if conditions or name != "~" or not _LOOKUP_NAME.fullmatch(cls) or (
+                len(args) > 2 and not self._own_remappings(args[2], scope)):
             return
         self.diagnostics.append(diag.make("CPP_NODELET_IN_PROCESS", self.where(call),
                                           cls=cls))
+
+    def _own_remappings(self, given: Cursor, scope: Scope) -> bool:
+        """Whether the remappings a nodelet load is given add none to the node's own: a
+        local map made empty or from ``ros::names::getRemappings()`` that its function
+        uses only as the remappings of nodelet loads (roscpp then remaps the nodelet's
+        names as the node's). A map the code fills (image_proc's
+        ``remappings["image_mono"] = ...``), or of another origin, is not known here."""
+        given = strip(given)
+        decl = given.referenced if given.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.VAR_DECL or scope.body is None:
+            return False
+        init = initializer(decl)
+        if init is not None and not default_constructed(init):
+            made = strip(init)
+            copied = written_arguments(made) if made.kind == CursorKind.CALL_EXPR and (
+                made.referenced is not None
+                and made.referenced.kind == CursorKind.CONSTRUCTOR) else []
+            source = strip(copied[0]) if len(copied) == 1 else made
+            if source.kind != CursorKind.CALL_EXPR or source.spelling != "getRemappings":
+                return False
+        loads: list[tuple[int, int]] = []  # where each load's remappings are written
+        uses: list[int] = []
+        for node in walk_cursors(scope.body):
+            if node.kind == CursorKind.CALL_EXPR and node.spelling == api.NODELET_LOAD[1]:
+                written = written_arguments(node)
+                if len(written) > 2:
+                    loads.append((written[2].extent.start.offset,
+                                  written[2].extent.end.offset))
+            elif node.kind == CursorKind.DECL_REF_EXPR and node.referenced == decl:
+                uses.append(node.extent.start.offset)
+        return all(any(start <= use <= end for start, end in loads) for use in uses)
 
     def _handed_to(self, owner: str, name: str, call: Cursor) -> None:
         """``owner`` hands the node to ``call`` of a function or class the parse does not
