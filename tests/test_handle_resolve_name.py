@@ -53,9 +53,15 @@ class Scanner : public rclcpp::Node {
         "scan", this->get_name(), this->get_namespace());
     sub_ = create_subscription<sensor_msgs::msg::LaserScan>(
         topic, 10, [](sensor_msgs::msg::LaserScan::SharedPtr) {});
+    // an expanded name after other text holds the node's namespace there (image_view's
+    // stereo_view_node: stereo_ns + "/left" + expand(image, ...))
+    std::string back = "rear" + rclcpp::expand_topic_or_service_name(
+        "scan", this->get_name(), this->get_namespace());
+    rear_ = create_subscription<sensor_msgs::msg::LaserScan>(
+        back, 10, [](sensor_msgs::msg::LaserScan::SharedPtr) {});
   }
  private:
-  rclcpp::Subscription<sensor_msgs::msg::LaserScan>::SharedPtr sub_;
+  rclcpp::Subscription<sensor_msgs::msg::LaserScan>::SharedPtr sub_, rear_;
 };
 
 int main(int argc, char** argv) {
@@ -123,4 +129,7 @@ def test_an_expanded_name_is_in_the_nodes_namespace(write_tree):
         "src/scan/launch/scan.launch.py": ROS2_LAUNCH,
         "project.yaml": "project: p\nconfigurations:\n  c: [scan/launch/scan.launch.py]\n",
     })
-    assert _links(root, "/robot/scanner") == [("subscribe", "/robot/front/scan")]
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (node,) = [n for p in model.packages for n in p.nodes if n.name == "scan/scanner"]
+    assert sorted(c.name for c in node.calls) == ["rear?/scan", "scan"]
+    assert ("subscribe", "/robot/front/scan") in _links(root, "/robot/scanner")

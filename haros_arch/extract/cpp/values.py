@@ -72,6 +72,16 @@ class NodeName(str):
 NODE_NAME = NodeName("~")
 
 
+class NodeNamespace(str):
+    """The node's namespace, which rclcpp's ``expand_topic_or_service_name`` puts before
+    a relative name (with a ``/``: ``_expanded``): unknown to ``render``; ``own_name``
+    leaves it out, with that ``/``, where it begins a call's name (then the name as
+    written, which the graph expands in the node's namespace)."""
+
+
+NODE_NAMESPACE = NodeNamespace("?")
+
+
 class SearchedName(str):
     """The name roscpp's ``searchParam(key, result)`` wrote to ``result``: ``key`` as
     found in the nearest namespace that has it (a part ``render`` writes as ``key``; a
@@ -124,7 +134,7 @@ def argument_of(parts: Parts) -> int | None:
     runs: list[list[str | None]] = []
     after_known = True
     for part in parts:
-        if part is None or isinstance(part, (NodeName, ProgramArgument)):
+        if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument)):
             if after_known:
                 runs.append([])
             runs[-1].append(part)
@@ -139,11 +149,20 @@ def argument_of(parts: Parts) -> int | None:
 def own_name(parts: Parts) -> Parts:
     """``parts`` with the node's own name unknown where it is not the node's private
     namespace: anywhere but first, or followed by text that does not start with ``/``."""
-    if not any(isinstance(part, NodeName) for part in parts):
+    if not any(isinstance(part, (NodeName, NodeNamespace)) for part in parts):
         return parts
     found: list[str | None] = []
+    skip = False
     for index, part in enumerate(parts):
-        if isinstance(part, NodeName):
+        if skip:  # the ``/`` after the node's namespace that begins the name
+            skip = False
+            if part == "/":
+                continue
+        if isinstance(part, NodeNamespace):
+            skip = not any(p != "" for p in parts[:index])
+            if not skip:
+                found.append(None)
+        elif isinstance(part, NodeName):
             after = next((p for p in parts[index + 1:] if p != ""), "")
             first = not any(p != "" for p in parts[:index])
             private = first and (after == "" or (after is not None and after.startswith("/")))
@@ -180,10 +199,21 @@ def _handle_resolve(target: Cursor) -> bool:
 def _expands(target: Cursor) -> bool:
     """rclcpp's free ``expand_topic_or_service_name(name, node, namespace[, service])``:
     ``name`` expanded in the namespace given, the node's own where a node passes its
-    ``get_namespace()``. Its value is the name as written, as ``_RESOLVERS``' are."""
+    ``get_namespace()`` (``_expanded``)."""
     parent = target.semantic_parent
     return target.spelling == "expand_topic_or_service_name" and parent is not None and (
         parent.kind == CursorKind.NAMESPACE and parent.spelling == "rclcpp")
+
+
+def _expanded(name: Parts) -> Parts:
+    """``expand_topic_or_service_name(name, ...)``: a global name as it is, a relative
+    or private one after the node's namespace (a name it begins is the name as written:
+    ``own_name``; stereo_view's ``stereo_ns + "/left" + expand(image)`` has it unknown
+    in the middle)."""
+    first = next((p for p in name if p != ""), "")
+    if first is not None and first.startswith("/"):
+        return name
+    return (NODE_NAMESPACE, "/", *name)
 
 
 def join_parts(namespace: Parts, name: Parts) -> Parts:
@@ -1016,9 +1046,10 @@ class Scope:
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
             # manage_nodes``, ``~/manage_nodes``: ``own_name``)
             return (NODE_NAME,)
-        if args and (_resolver(target) is not None or _names_resolve(target)
-                     or _expands(target)):
+        if args and (_resolver(target) is not None or _names_resolve(target)):
             return self.string(args[0], depth + 1)
+        if args and _expands(target):
+            return _expanded(self.string(args[0], depth + 1))
         if args and _handle_resolve(target):
             return self._handle_resolved(call, args[0], depth)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1

@@ -74,6 +74,7 @@ from .values import (
     PLACEHOLDER,
     SEPARATOR,
     NodeName,
+    NodeNamespace,
     Scope,
     SearchedName,
     _method_object,
@@ -3037,8 +3038,8 @@ def _constructed_from(expr: Cursor) -> Cursor:
 
 def _known(parts: tuple[str | None, ...]) -> bool:
     """A value with no unknown part and no placeholder for what other calls pass."""
-    return all(part is not None and PLACEHOLDER not in part and not isinstance(part, NodeName)
-               for part in parts)
+    return all(part is not None and PLACEHOLDER not in part
+               and not isinstance(part, (NodeName, NodeNamespace)) for part in parts)
 
 
 def _prefixed(name: str, spec: api.RosFunction) -> str:
