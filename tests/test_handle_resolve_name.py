@@ -57,6 +57,9 @@ class Scanner : public rclcpp::Node {
     // stereo_view_node: stereo_ns + "/left" + expand(image, ...))
     std::string back = "rear" + rclcpp::expand_topic_or_service_name(
         "scan", this->get_name(), this->get_namespace());
+    // an expanded name expanded again is as it was (humble's stereo_view_node)
+    back = rclcpp::expand_topic_or_service_name(rclcpp::expand_topic_or_service_name(
+        back, this->get_name(), this->get_namespace()), get_name(), get_namespace());
     rear_ = create_subscription<sensor_msgs::msg::LaserScan>(
         back, 10, [](sensor_msgs::msg::LaserScan::SharedPtr) {});
   }

@@ -211,8 +211,8 @@ def _expanded(name: Parts) -> Parts:
     ``own_name``; stereo_view's ``stereo_ns + "/left" + expand(image)`` has it unknown
     in the middle)."""
     first = next((p for p in name if p != ""), "")
-    if first is not None and first.startswith("/"):
-        return name
+    if isinstance(first, NodeNamespace) or (first is not None and first.startswith("/")):
+        return name  # expanded already (humble's stereo_view expands twice)
     return (NODE_NAMESPACE, "/", *name)
 
 
