@@ -462,6 +462,16 @@ CATALOGUE: dict[str, Entry] = {
         "README: nav2 servers, costmaps, move_base, controller managers, ...), each "
         "instance of it is 'partial', so checks that claim something is absent do not "
         "decide on it."),
+    "CPP_NODELET_IN_PROCESS": Entry(
+        "info", "runs the nodelet {cls} in its own process, under the node's own name",
+        "The program loads a nodelet through nodelet::Loader's load(name, type, ...) with "
+        "its own node name (ros::this_node::getName()) and a class written as a literal, "
+        "not under a condition (image_view's, image_rotate's and image_publisher's wrapper "
+        "executables): the nodelet's onInit runs as this node, with the node's namespace, "
+        "private namespace and remaps, so each instance of the node makes the calls of "
+        "the nodelet class (found as a launch file's 'nodelet standalone' finds it: in "
+        "the package that exports it, else the interface models). A class found nowhere "
+        "leaves the instance partial."),
     "CPP_LIBRARY_LOADED": Entry(
         "info", "{text}: loads a shared library chosen at run time",
         "The code opens a shared library by name (POSIX dlopen, Windows LoadLibrary): "

@@ -2,8 +2,9 @@
 ``nodelet::Loader`` and loads its nodelet with ``ros::names::getRemappings()``
 (local_planner_node_main.cpp), its nodelet a ``tf::TransformListener(ros::Duration(
 tf::Transformer::DEFAULT_CACHE_TIME), true)``: three clang errors, one in a function that
-calls the ROS API, which left the node partial. The loader's load stays a load of a
-plugin by name (``CPP_PLUGINS_LOADED``, read from the source's text)."""
+calls the ROS API, which left the node partial. The loader's load, under the node's
+own name with the node's remappings, runs the nodelet as the node
+(``CPP_NODELET_IN_PROCESS``, in place of ``CPP_PLUGINS_LOADED``)."""
 
 from __future__ import annotations
 
@@ -50,7 +51,8 @@ def test_a_nodelet_loader_and_tf_s_cache_time_parse(tmp_path) -> None:
     main = extract_cpp([str(tmp_path / "main.cpp")], Workspace(root=str(tmp_path)),
                        cache_dir=None)
     assert [d.code for d in main.diagnostics if d.code in (
-        "CPP_PARSE_ERROR", "CPP_PLUGINS_LOADED")] == ["CPP_PLUGINS_LOADED"]
+        "CPP_PARSE_ERROR", "CPP_PLUGINS_LOADED", "CPP_NODELET_IN_PROCESS")] == [
+        "CPP_NODELET_IN_PROCESS"]
     nodelet = extract_cpp([str(tmp_path / "planner.cpp")], Workspace(root=str(tmp_path)),
                           cache_dir=None)
     assert sorted((c.kind, c.name) for c in nodelet.calls) == [

@@ -117,3 +117,33 @@ def test_boost_lexical_cast_beside_a_ros_call(tmp_path) -> None:
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_an_opencv_window_handed_to_gtk_and_a_stamped_camera_publish(tmp_path) -> None:
+    """image_view's nodelets (image_pipeline before 1.12.20: ``#ifdef HAVE_GTK``, which its
+    CMakeLists.txt defines for every target) give the window's native handle to GTK
+    beside their ROS calls, and video_stream_opencv publishes through a CameraPublisher
+    with a stamp: each was an error in a function that calls the ROS API (partial)."""
+    (tmp_path / "package.xml").write_text(package_xml("view"))
+    source = tmp_path / "view.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <image_transport/image_transport.h>\n"
+        "#include <opencv2/highgui/highgui.hpp>\n#include <gtk/gtk.h>\n"
+        "#include <sensor_msgs/CameraInfo.h>\n"
+        "static void destroyNode(GtkWidget* widget, gpointer data) {}\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"view\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  image_transport::ImageTransport it(nh);\n"
+        "  image_transport::CameraPublisher pub = it.advertiseCamera(\"camera\", 1);\n"
+        "  GtkWidget* widget = GTK_WIDGET(cvGetWindowHandle(\"view\"));\n"
+        "  g_signal_connect(widget, \"destroy\", G_CALLBACK(destroyNode), NULL);\n"
+        "  sensor_msgs::Image image;\n"
+        "  sensor_msgs::CameraInfo info;\n"
+        "  pub.publish(image, info, ros::Time::now());\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert ("publish", "camera") in [(c.kind, c.name) for c in result.calls]

@@ -307,6 +307,36 @@ def test_a_nodelet_of_a_package_without_source_takes_its_model(write_tree):
         ("subscribe", "/image_mono"), ("publish", "/image_rect")}
 
 
+def test_image_view_of_its_model_makes_the_calls_of_the_nodelet_it_runs(write_tree):
+    # image_view's main runs the nodelet image_view/image under its own name: the
+    # model's executable lists it, its instance makes the nodelet's calls (of the same
+    # model), with its remaps; the nodelet names its topic nh.resolveName("image")
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam"),
+        "src/cam/CMakeLists.txt": "project(cam)\n",
+        "src/cam/launch/view.launch": """
+            <launch>
+              <group ns="camera">
+                <node pkg="image_view" type="image_view" name="view">
+                  <remap from="image" to="image_raw"/>
+                </node>
+              </group>
+            </launch>
+            """,
+        "project.yaml": "project: p\ndistro: noetic\n"
+                        "configurations:\n  c: [cam/launch/view.launch]\n",
+    })
+    config = _configuration(root)
+    view = _instance(config, "/camera/view")
+    assert view.node is not None and view.node.model.startswith("noetic/image_view ")
+    assert view.node.nodelets == ["image_view/image"] and view.is_complete
+    links = {(link.kind, link.name) for link in view.links}
+    assert {("subscribe", "/camera/image_raw"), ("read", "/camera/view/autosize")} <= links
+    assert not any("?" in name for _, name in links)
+
+
 def test_a_nodelet_named_pcl_takes_the_model_of_pcl_ros(write_tree):
     # pcl_ros exports its nodelets as ``pcl/VoxelGrid``, ...: there is no package pcl
     from conftest import package_xml

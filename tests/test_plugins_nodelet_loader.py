@@ -1,8 +1,10 @@
 """An executable that loads a nodelet by name through ``nodelet::Loader`` (image_view's
 ``image_view`` node: ``nodelet.load(ros::this_node::getName(), "image_view/image", ...)``)
 makes the nodelet's calls in its own process, under its own name, and none in its
-code. Each instance of it is partial, so a parameter a launch file gives it is not
-called unread (image_view's ``autosize``, read by the nodelet)."""
+code. Each instance of it makes the calls of the nodelet class, found as a launch file's
+``nodelet standalone`` finds it, with the node's namespace and remaps; a class found
+nowhere, or a load under another name, leaves it partial, so a parameter a launch file
+gives it is not called unread (image_view's ``autosize``, read by the nodelet)."""
 
 from __future__ import annotations
 
@@ -84,11 +86,29 @@ def _analyse(root: Any) -> tuple[Any, dict[str, list[tuple[str, ...]]]]:
 
 
 def test_a_node_that_loads_a_nodelet_is_partial_and_does_not_decide(write_tree: Any) -> None:
+    # its own name, but a class that no package here or model exports
     instance, found = _run(write_tree, LOAD)
     assert instance.completeness == "partial"
-    assert instance.node.plugin_loads == ["viewer/src/viewer.cpp:9"]
+    assert instance.node.nodelets == ["viewer/view"] and not instance.node.plugin_loads
+    assert "runs the nodelet viewer/view" in instance.node.completeness_reasons[0]
     assert "parameter-set-not-read" not in found
     assert found["parameter-set-not-read" + UNDECIDED] == [("node:/viewer",)]
+
+
+def test_a_load_under_another_name_stays_a_load_by_name(write_tree: Any) -> None:
+    # image_proc's: each nodelet a node of its own beside the program's
+    instance, found = _run(write_tree, LOAD.replace("ros::this_node::getName()",
+                                                    'ros::this_node::getName() + "_x"'))
+    assert instance.completeness == "partial" and not instance.node.nodelets
+    assert instance.node.plugin_loads == ["viewer/src/viewer.cpp:9"]
+    assert "parameter-set-not-read" not in found
+
+
+def test_a_load_with_remappings_of_its_own_stays_a_load_by_name(write_tree: Any) -> None:
+    # the nodelet's names remapped by the program's map first: not known here
+    instance, _ = _run(write_tree, 'remap["image"] = "/other";\n  ' + LOAD)
+    assert instance.completeness == "partial" and not instance.node.nodelets
+    assert instance.node.plugin_loads == ["viewer/src/viewer.cpp:10"]
 
 
 def test_the_same_node_without_the_load_decides(write_tree: Any) -> None:
@@ -137,4 +157,59 @@ def test_a_wrapper_that_links_its_nodelet_runs_its_code(write_tree: Any) -> None
     })
     instance, found = _analyse(root)
     assert instance.completeness == "complete" and not instance.node.plugin_loads
+    assert found["parameter-set-not-read"] == [("parameter:/viewer/autosise",)]
+
+
+VIEW = """#include <ros/ros.h>
+#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.h>
+#include <sensor_msgs/Image.h>
+
+namespace viewer {
+class View : public nodelet::Nodelet {
+  void onInit() override {
+    ros::NodeHandle& nh = getNodeHandle();
+    bool autosize = false;
+    getPrivateNodeHandle().param("autosize", autosize, false);
+    std::string topic = nh.resolveName("image");
+    sub_ = nh.subscribe(topic, 1, &View::onImage, this);
+  }
+  void onImage(const sensor_msgs::Image::ConstPtr& msg) {}
+  ros::Subscriber sub_;
+};
+}  // namespace viewer
+
+PLUGINLIB_EXPORT_CLASS(viewer::View, nodelet::Nodelet)
+"""
+
+
+def test_a_nodelet_run_under_the_nodes_name_gives_it_its_calls(write_tree: Any) -> None:
+    # image_view's: the executable links no nodelet library, the package exports it
+    root = write_tree({
+        "src/viewer/package.xml": PACKAGE.replace(
+            "</package>", '<export><nodelet plugin="${prefix}/nodelets.xml"/></export>'
+                          "</package>"),
+        "src/viewer/nodelets.xml":
+            '<library path="lib/libview"><class name="viewer/view" type="viewer::View" '
+            'base_class_type="nodelet::Nodelet"/></library>\n',
+        "src/viewer/CMakeLists.txt":
+            "project(viewer)\nfind_package(catkin REQUIRED COMPONENTS roscpp nodelet)\n"
+            "catkin_package()\nadd_library(view src/view.cpp)\n"
+            "add_executable(viewer src/viewer.cpp)\n",
+        "src/viewer/src/view.cpp": VIEW,
+        "src/viewer/src/viewer.cpp": WRAPPER.replace("BODY", LOAD.replace(
+            "ros::this_node::getName()", "name")).replace(
+            "nodelet::V_string nargv;",
+            "nodelet::V_string nargv;\n  std::string name = ros::this_node::getName();"),
+        "src/viewer/launch/viewer.launch": LAUNCH.replace(
+            '<param name="autosize" value="true"/>',
+            '<param name="autosize" value="true"/><param name="autosise" value="1"/>'
+            '<remap from="image" to="/camera/image_raw"/>'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [viewer/launch/viewer.launch]\n",
+    })
+    instance, found = _analyse(root)
+    assert instance.node.name == "viewer/viewer" and instance.node.nodelets == ["viewer/view"]
+    assert instance.completeness == "complete" and not instance.node.plugin_loads
+    assert sorted((link.kind, link.rosname.full) for link in instance.links) == [
+        ("read", "/viewer/autosize"), ("subscribe", "/camera/image_raw")]
     assert found["parameter-set-not-read"] == [("parameter:/viewer/autosise",)]

@@ -115,7 +115,7 @@ def other_key(node: Node) -> str:
 
 # the node fields extraction sets (``extract_node``, ``completeness``)
 _RESULT_FIELDS = ("calls", "rosname", "rosnames", "completeness", "completeness_reasons",
-                  "plugin_loads")
+                  "plugin_loads", "nodelets")
 
 
 def _result_data(node: Node, said: list[Diagnostic]) -> dict[str, Any]:
@@ -209,6 +209,8 @@ _SAID_AT_THE_PLACE = frozenset({"CPP_VERSION_UNKNOWN"})
 # nodelet::Loader's load(name, type, ...): a nodelet made by name in this process (the
 # wrapper executables of image_view, stereo_image_proc, ...), with arguments
 NODELET_LOAD = re.compile(r"(?:\.|->)\s*(load)\s*\(\s*[^)\s]")
+# the class of a ``CPP_NODELET_IN_PROCESS`` (its message)
+_IN_PROCESS = re.compile(r"runs the nodelet (\S+) in its own process")
 
 
 def _links_plugin_classes(node: Node, workspace: Workspace | None) -> bool:
@@ -234,9 +236,15 @@ def completeness(node: Node, found: Sequence[Diagnostic],
         node.completeness_reasons = ["no source file of the node was found"]
         return []
     loads = [d for d in found if d.code == "CPP_PLUGINS_LOADED" and d.location.file]
-    if any(NODELET_LOAD.search(d.message) for d in loads) and _links_plugin_classes(
-            node, workspace):
+    # the nodelets run under the node's own name: the graph gives each instance their
+    # calls (``CPP_NODELET_IN_PROCESS``, said instead of the load)
+    own = [match.group(1) for d in found if d.code == "CPP_NODELET_IN_PROCESS"
+           and (match := _IN_PROCESS.match(d.message)) is not None]
+    if (own or any(NODELET_LOAD.search(d.message) for d in loads)) and (
+            _links_plugin_classes(node, workspace)):
         loads = [d for d in loads if not NODELET_LOAD.search(d.message)]
+        own = []
+    node.nodelets = list(dict.fromkeys(own))
     node.plugin_loads = list(dict.fromkeys(f"{d.location.file}:{d.location.line}"
                                            for d in loads))
     # a unit's errors are in its files and the headers they include; an unreadable

@@ -32,7 +32,7 @@ from ..model.source import NUMBERED, ROS_ARGUMENT, WORDS, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
-from ..plugins.attach import PluginModels, chains, class_packages
+from ..plugins.attach import PluginModels, chains, class_packages, own_partial
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import GZSERVER
@@ -160,7 +160,8 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         config.nodes.append(instance)
         if instance.node is None:
             continue
-        _link_calls(instance, instance.node.calls_of(own), resources, config, transports)
+        _link_calls(instance, [*instance.node.calls_of(own), *in_process_nodelets(
+            instance, nodes, plugin_models)], resources, config, transports)
     # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
     # serves the controller_manager services the spawners' controllers are loaded by
@@ -617,6 +618,11 @@ def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
     plugin = nodelet_plugin(decl)
     if plugin is None:
         return f"{decl.package}/{decl.executable}"
+    return nodelet_key(plugin, nodes)
+
+
+def nodelet_key(plugin: str, nodes: Mapping[str, Node]) -> str:
+    """The node type ``pkg/Class`` of the nodelet of lookup name ``plugin`` (``node_key``)."""
     keys = [f"{package}/{plugin}" for package in class_packages(plugin)]
     found = next((key for key in keys if key in nodes), None)
     if found is None:
@@ -626,6 +632,36 @@ def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
     if found is None and _bare(plugin):
         return plugin  # no package of the workspace exports it: NODE_NOT_FOUND
     return found or (keys[0] if keys else f"{plugin.partition('/')[0]}/{plugin}")
+
+
+def in_process_nodelets(instance: NodeInstance, nodes: Mapping[str, Node],
+                        models: PluginModels | None) -> list[PrimitiveCall]:
+    """The calls of the nodelets ``instance``'s program runs in its own process under its
+    own node name (``Node.nodelets``: image_view's wrapper executable), made as its own:
+    the nodelet's handles are the node's, with its remaps. Each class is found as a
+    launch file's ``nodelet standalone`` finds it (``nodelet_key``), else in the
+    interface models; one found nowhere, or partial, leaves the instance partial (its
+    own copy of the node model)."""
+    node = instance.node
+    if node is None or not node.nodelets:
+        return []
+    calls: list[PrimitiveCall] = []
+    owned: set[int] = set()
+    for plugin in node.nodelets:
+        key = nodelet_key(plugin, nodes)
+        found = nodes.get(key) or (models(key) if models is not None else None)
+        if found is None:
+            own_partial(instance, f"runs the nodelet {plugin}, which no package of the "
+                        "workspace nor interface model has", owned)
+            continue
+        if not found.is_complete:
+            reasons = found.completeness_reasons[:1] or [found.completeness]
+            own_partial(instance, f"nodelet {found.name}: {reasons[0]}", owned)
+        elif found.plugin_loads:
+            own_partial(instance, f"nodelet {found.name}: loads plugin classes by name "
+                        f"({found.plugin_loads[0]})", owned)
+        calls.extend(found.calls)
+    return calls
 
 
 def nodelet_plugin(decl: NodeDecl) -> str | None:

@@ -197,7 +197,9 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                     data.get("plugin_base"), str) else None,
                 aliases=[str(a) for a in data.get("aliases", ()) or () if isinstance(a, str)],
                 plugin_loads=[str(a) for a in data.get("plugin_loads", ()) or ()
-                              if isinstance(a, str)])
+                              if isinstance(a, str)],
+                nodelets=[str(a) for a in data.get("nodelets", ()) or ()
+                          if isinstance(a, str)])
 
 
 def _completeness(value: Any) -> Completeness:

@@ -320,6 +320,10 @@ class Node:
     # their calls are not in the code; an instance is partial unless the graph attaches
     # its plugins (a host of ``plugins.hosts``)
     plugin_loads: list[str] = field(default_factory=list, metadata={"optional": True})
+    # the nodelets the program runs in its own process under its own node name
+    # (``nodelet::Loader``'s ``load(ros::this_node::getName(), "pkg/Name", ...)``), by
+    # lookup name: each instance makes their calls too (``graph.build``)
+    nodelets: list[str] = field(default_factory=list, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

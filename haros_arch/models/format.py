@@ -18,6 +18,9 @@ A plugin class is a node of kind ``plugin`` whose ``executable`` is its pluginli
 name, with ``plugin_class`` (its C++ type) and, optionally, ``plugin_base`` (the base class
 its plugin description names) and ``rosname`` (the name of the node it makes, for plugins
 that are nodes of their own: mavros'); hosts find modelled classes by lookup name or type.
+An executable that runs nodelets under its own name lists their lookup names in
+``nodelets`` (image_view's ``image_view``: ``["image_view/image"]``); its instances make
+their calls, the classes found in the workspace or in the models.
 Optional fields are additions within ``haros-arch-model/1``: readers ignore what they do
 not know, and a file without them reads as before.
 

@@ -1234,7 +1234,11 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 finder.release()
                 continue
         break
-    result.diagnostics.extend(plugin_loads(path, text, workspace))
+    # a nodelet load the walk found run under the node's own name is said so instead
+    own = {(d.location.file, d.location.line) for d in finder.diagnostics
+           if d.code == "CPP_NODELET_IN_PROCESS"}
+    result.diagnostics.extend(d for d in plugin_loads(path, text, workspace)
+                              if (d.location.file, d.location.line) not in own)
     result.diagnostics.extend(library_loads(path, text, workspace, tu))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))

@@ -468,6 +468,10 @@ NODE_NAME: dict[tuple[str, str], dict[int, int]] = {
     ("ros", "init"): {2: 1, 3: 2, 4: 2},
 }
 
+# nodelet::Loader's load(name, type, remappings, argv): a nodelet made in this process
+# (``CallFinder._nodelet_load``)
+NODELET_LOAD = ("nodelet::Loader", "load")
+
 # Classes whose objects are node handles, and functions that return a handle in a fixed
 # namespace: (scope, function) -> namespace.
 HANDLE_CLASSES = frozenset({NODE_HANDLE, "image_transport::ImageTransport"})

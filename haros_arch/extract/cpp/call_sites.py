@@ -23,6 +23,7 @@ from .expressions import is_default_argument, lost_class, strip
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
+    Parts,
     Scope,
     Value,
     initializer,
@@ -79,6 +80,10 @@ class CallSites:
         # constructors are all defined in other files, which may set it (cleared by the
         # caller that reports why a name is unknown)
         self.elsewhere: list[str] = []
+        # the namespace of the handle an expression stands for, asked while a value is
+        # read (``handles.Namespaces.value_namespace``, set by the visitor): where a
+        # handle's ``resolveName(name)`` resolves ``name``
+        self.handle_namespace: Callable[[Cursor, Scope], Parts] | None = None
 
     def agreed(self, parm: Cursor, read: Callable[[Cursor, Scope], Value],
                unknown: Value) -> Value:

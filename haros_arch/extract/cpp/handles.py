@@ -39,6 +39,7 @@ from .values import (
 from .writes import writes_of
 
 MAX_DEPTH = 16
+_MAX_ASKED = 3  # handles' namespaces asked within one another (``value_namespace``)
 # a declaration's initialiser that starts with a string literal and a ``+``
 _PREFIX_PLUS = re.compile(rb'\s*[({]\s*("(?:[^"\\\n]|\\.)*")\s*\+')
 _FUNCTIONS = frozenset({
@@ -132,6 +133,7 @@ class Namespaces:
         # the last namespace asked for is a ROS 1 controller's root handle
         # (``controller_root``): the manager's namespace, not known here
         self.root = False
+        self._asked = 0  # ``value_namespace`` questions open
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -146,6 +148,23 @@ class Namespaces:
             parent = target.semantic_parent if target is not None else None
             return ("",) if is_ros2_node(parent) else UNKNOWN
         return self.of(objects[0], scope)
+
+    def value_namespace(self, expr: Cursor, scope: Scope) -> Parts:
+        """The namespace of the handle ``expr`` asked while a value is read (a handle's
+        ``resolveName``, ``CallSites.handle_namespace``), perhaps within a question of
+        this object, whose state it leaves as it was; unknown for a controller's root
+        handle, or when asked within itself again and again (a handle named by its own
+        ``resolveName``)."""
+        if self._asked >= _MAX_ASKED:
+            return UNKNOWN
+        state = (self.unknown_from, self._unknown_count, self.root)
+        self._asked += 1
+        try:
+            found = self.of(expr, scope)
+            return UNKNOWN if self.root else found
+        finally:
+            self._asked -= 1
+            self.unknown_from, self._unknown_count, self.root = state
 
     def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
         """The namespace of the handle ``expr`` stands for."""

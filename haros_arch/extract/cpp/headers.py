@@ -139,6 +139,7 @@ UMBRELLAS = {
     "gtest/": "gtest/gtest.h", "gmock/": "gtest/gtest.h",
     # libraries beside ROS that node classes use: minimal stand-ins keep them parsing
     "opencv2/": "opencv2/opencv.hpp", "opencv/": "opencv2/opencv.hpp",
+    "gtk/": "gtk/gtk.h",  # around an OpenCV window (image_view's nodelets)
     "angles/": "angles/angles.h",
     "urdf/": "urdf/model.h", "urdf_model/": "urdf/model.h", "urdf_parser/": "urdf/model.h",
     "cv_bridge/": "cv_bridge/cv_bridge.h", "Eigen/": "Eigen/Dense", "eigen3/": "Eigen/Dense",

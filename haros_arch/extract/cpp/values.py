@@ -72,6 +72,16 @@ class NodeName(str):
 NODE_NAME = NodeName("~")
 
 
+class NodeNamespace(str):
+    """The node's namespace, which rclcpp's ``expand_topic_or_service_name`` puts before
+    a relative name (with a ``/``: ``_expanded``): unknown to ``render``; ``own_name``
+    leaves it out, with that ``/``, where it begins a call's name (then the name as
+    written, which the graph expands in the node's namespace)."""
+
+
+NODE_NAMESPACE = NodeNamespace("?")
+
+
 class SearchedName(str):
     """The name roscpp's ``searchParam(key, result)`` wrote to ``result``: ``key`` as
     found in the nearest namespace that has it (a part ``render`` writes as ``key``; a
@@ -124,7 +134,7 @@ def argument_of(parts: Parts) -> int | None:
     runs: list[list[str | None]] = []
     after_known = True
     for part in parts:
-        if part is None or isinstance(part, (NodeName, ProgramArgument)):
+        if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument)):
             if after_known:
                 runs.append([])
             runs[-1].append(part)
@@ -139,11 +149,20 @@ def argument_of(parts: Parts) -> int | None:
 def own_name(parts: Parts) -> Parts:
     """``parts`` with the node's own name unknown where it is not the node's private
     namespace: anywhere but first, or followed by text that does not start with ``/``."""
-    if not any(isinstance(part, NodeName) for part in parts):
+    if not any(isinstance(part, (NodeName, NodeNamespace)) for part in parts):
         return parts
     found: list[str | None] = []
+    skip = False
     for index, part in enumerate(parts):
-        if isinstance(part, NodeName):
+        if skip:  # the ``/`` after the node's namespace that begins the name
+            skip = False
+            if part == "/":
+                continue
+        if isinstance(part, NodeNamespace):
+            skip = not any(p != "" for p in parts[:index])
+            if not skip:
+                found.append(None)
+        elif isinstance(part, NodeName):
             after = next((p for p in parts[index + 1:] if p != ""), "")
             first = not any(p != "" for p in parts[:index])
             private = first and (after == "" or (after is not None and after.startswith("/")))
@@ -166,6 +185,47 @@ _RESOLVERS: dict[tuple[str, str], int] = {
 _ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
 _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
 _INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
+
+
+def _handle_resolve(target: Cursor) -> bool:
+    """roscpp's ``NodeHandle::resolveName(name[, remap])``: ``name`` resolved in the
+    handle's namespace and remapped. Its value is the name as seen from the node
+    (``_handle_resolved``); the graph resolves and remaps it (``names_prefix``)."""
+    parent = target.semantic_parent
+    return target.spelling == "resolveName" and parent is not None and (
+        qualified_name(parent) == "ros::NodeHandle")
+
+
+def _expands(target: Cursor) -> bool:
+    """rclcpp's free ``expand_topic_or_service_name(name, node, namespace[, service])``:
+    ``name`` expanded in the namespace given, the node's own where a node passes its
+    ``get_namespace()`` (``_expanded``)."""
+    parent = target.semantic_parent
+    return target.spelling == "expand_topic_or_service_name" and parent is not None and (
+        parent.kind == CursorKind.NAMESPACE and parent.spelling == "rclcpp")
+
+
+def _expanded(name: Parts) -> Parts:
+    """``expand_topic_or_service_name(name, ...)``: a global name as it is, a relative
+    or private one after the node's namespace (a name it begins is the name as written:
+    ``own_name``; stereo_view's ``stereo_ns + "/left" + expand(image)`` has it unknown
+    in the middle)."""
+    first = next((p for p in name if p != ""), "")
+    if isinstance(first, NodeNamespace) or (first is not None and first.startswith("/")):
+        return name  # expanded already (humble's stereo_view expands twice)
+    return (NODE_NAMESPACE, "/", *name)
+
+
+def join_parts(namespace: Parts, name: Parts) -> Parts:
+    """``name`` as seen from a handle in ``namespace`` (``~`` private, ``""`` the node's):
+    ``handles.join_name`` of values whose parts may be unknown."""
+    first = next((p for p in name if p != ""), "")
+    if (first is not None and first.startswith(("/", "~"))) or namespace == ("",):
+        return name
+    if all(type(p) is str for p in namespace):
+        text = "".join(namespace)  # type: ignore[arg-type]
+        return (text if text == "~" or text.endswith("/") else text + "/", *name)
+    return (*namespace, "/", *name)
 
 
 def _names_resolve(target: Cursor) -> bool:
@@ -995,6 +1055,10 @@ class Scope:
             return (NODE_NAME,)
         if args and (_resolver(target) is not None or _names_resolve(target)):
             return self.string(args[0], depth + 1)
+        if args and _expands(target):
+            return _expanded(self.string(args[0], depth + 1))
+        if args and _handle_resolve(target):
+            return self._handle_resolved(call, args[0], depth)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
                 and target.semantic_parent is not None
                 and target.semantic_parent.spelling == "image_transport"):
@@ -1024,6 +1088,15 @@ class Scope:
             if len(values) == 1:
                 return values.pop()
         return UNKNOWN
+
+    def _handle_resolved(self, call: Cursor, name: Cursor, depth: int) -> Parts:
+        """``handle.resolveName(name)``: ``name`` in the namespace of the handle
+        (``~image`` on a private one, ``motors/image`` on one in ``motors``), which
+        ``CallSites.handle_namespace`` tells; unknown where it is not known."""
+        handle = _method_object(call)
+        find = None if self.sites is None else self.sites.handle_namespace
+        namespace = UNKNOWN if handle is None or find is None else find(handle, self)
+        return join_parts(namespace, self.string(name, depth + 1))
 
     def _string_format(self, call: Cursor, target: Cursor, args: list[Cursor],
                        depth: int) -> Parts | None:
@@ -1121,8 +1194,9 @@ class Scope:
             only_expand >= len(args) or self.boolean(args[only_expand]) is False)
 
     def names_prefix(self, cursor: Cursor, depth: int = 0) -> str | None:
-        """The relative name ``ros::names::resolve`` resolved at the start of the name
-        ``cursor`` holds (imu_tools' ``ros::names::resolve("imu") + "/data"``: ``imu``),
+        """The relative name ``ros::names::resolve`` (or a handle's ``resolveName``, in
+        the handle's namespace) resolved at the start of the name ``cursor`` holds
+        (imu_tools' ``ros::names::resolve("imu") + "/data"``: ``imu``),
         through variables, string copies and ``+``; None when it starts otherwise."""
         cursor = strip(cursor)
         if depth > MAX_DEPTH:
@@ -1139,9 +1213,12 @@ class Scope:
         if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
             inner = operand(cursor) if target is None else args[0]
             return None if inner is None else self.names_prefix(inner, depth + 1)
-        if not args or not _names_resolve(target):
+        if args and _handle_resolve(target):  # a handle's: in the handle's namespace
+            written = render(self.string(cursor, depth + 1))
+        elif not args or not _names_resolve(target):
             return None
-        written = render(self.string(args[0], depth + 1))
+        else:
+            written = render(self.string(args[0], depth + 1))
         if not written or "?" in written or written.startswith(("/", "~")):
             return None
         return written.rstrip("/")

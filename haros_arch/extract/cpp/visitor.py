@@ -74,6 +74,7 @@ from .values import (
     PLACEHOLDER,
     SEPARATOR,
     NodeName,
+    NodeNamespace,
     Scope,
     SearchedName,
     _method_object,
@@ -113,6 +114,8 @@ _API_NAMES = frozenset(
                           *api.STANDIN_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+# a nodelet's lookup name as a launch file gives it (``pkg/Name``, a C++ type)
+_LOOKUP_NAME = re.compile(r"[A-Za-z_][\w/:]*")
 # the text after a call whose result the code looks one key up in (``_looked_up``)
 _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[)")
 # where a call's name comes from: a ``Source`` (the parameter, its default, the
@@ -320,6 +323,7 @@ class CallFinder:
         self.functions = list(self._definitions(self._root, top=True))
         self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
                                                        external=True, main=self.tu.spelling)
+        self.sites.handle_namespace = self.namespaces.value_namespace
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
         self.wrappers.build()
@@ -673,6 +677,8 @@ class CallFinder:
                 self._dependent(node, conditions, scope)
             elif node.kind == CursorKind.CALL_EXPR and node.spelling == "operator()":
                 self._vendor_member_call(node)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == api.NODELET_LOAD[1]:
+                self._nodelet_load(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
@@ -867,6 +873,55 @@ class CallFinder:
                 return
         if spec is not None:
             self._emit(spec, call, args, cls, conditions, scope)
+
+    def _nodelet_load(self, call: Cursor, conditions: tuple[Condition, ...],
+                      scope: Scope) -> None:
+        """nodelet::Loader's ``load(name, type, ...)`` with the node's own name and a
+        class written as text, not under a condition (image_view's wrapper executable):
+        the nodelet runs as this node (``CPP_NODELET_IN_PROCESS``; the graph gives its
+        instances the class's calls). Any other stays a load by name
+        (``CPP_PLUGINS_LOADED``, found in the unit's text)."""
+        target, args = call.referenced, written_arguments(call)
+        if target is None or len(args) < 2 or (
+                qualified_name(target.semantic_parent), target.spelling) != api.NODELET_LOAD:
+            return
+        name, cls = render(scope.string(args[0])), render(scope.string(args[1]))
+        if conditions or name != "~" or not _LOOKUP_NAME.fullmatch(cls) or (
+                len(args) > 2 and not self._own_remappings(args[2], scope)):
+            return
+        self.diagnostics.append(diag.make("CPP_NODELET_IN_PROCESS", self.where(call),
+                                          cls=cls))
+
+    def _own_remappings(self, given: Cursor, scope: Scope) -> bool:
+        """Whether the remappings a nodelet load is given add none to the node's own: a
+        local map made empty or from ``ros::names::getRemappings()`` that its function
+        uses only as the remappings of nodelet loads (roscpp then remaps the nodelet's
+        names as the node's). A map the code fills (image_proc's
+        ``remappings["image_mono"] = ...``), or of another origin, is not known here."""
+        given = strip(given)
+        decl = given.referenced if given.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.VAR_DECL or scope.body is None:
+            return False
+        init = initializer(decl)
+        if init is not None and not default_constructed(init):
+            made = strip(init)
+            copied = written_arguments(made) if made.kind == CursorKind.CALL_EXPR and (
+                made.referenced is not None
+                and made.referenced.kind == CursorKind.CONSTRUCTOR) else []
+            source = strip(copied[0]) if len(copied) == 1 else made
+            if source.kind != CursorKind.CALL_EXPR or source.spelling != "getRemappings":
+                return False
+        loads: list[tuple[int, int]] = []  # where each load's remappings are written
+        uses: list[int] = []
+        for node in walk_cursors(scope.body):
+            if node.kind == CursorKind.CALL_EXPR and node.spelling == api.NODELET_LOAD[1]:
+                written = written_arguments(node)
+                if len(written) > 2:
+                    loads.append((written[2].extent.start.offset,
+                                  written[2].extent.end.offset))
+            elif node.kind == CursorKind.DECL_REF_EXPR and node.referenced == decl:
+                uses.append(node.extent.start.offset)
+        return all(any(start <= use <= end for start, end in loads) for use in uses)
 
     def _handed_to(self, owner: str, name: str, call: Cursor) -> None:
         """``owner`` hands the node to ``call`` of a function or class the parse does not
@@ -3006,8 +3061,8 @@ def _constructed_from(expr: Cursor) -> Cursor:
 
 def _known(parts: tuple[str | None, ...]) -> bool:
     """A value with no unknown part and no placeholder for what other calls pass."""
-    return all(part is not None and PLACEHOLDER not in part and not isinstance(part, NodeName)
-               for part in parts)
+    return all(part is not None and PLACEHOLDER not in part
+               and not isinstance(part, (NodeName, NodeNamespace)) for part in parts)
 
 
 def _prefixed(name: str, spec: api.RosFunction) -> str:

@@ -32,6 +32,8 @@ public:
   template<class N, class... A> CameraPublisher(N&& node, const std::string& base_topic,
       A&&... more);
   template<class I, class C> void publish(const I& image, const C& info) const;
+  // ROS 1: the image and info stamped with ``stamp`` first (non-const references)
+  template<class I, class C, class T> void publish(I& image, C& info, T stamp) const;
   uint32_t getNumSubscribers() const;
   std::string getTopic() const;
   std::string getInfoTopic() const;

@@ -506,4 +506,10 @@ public:
 };
 class VideoWriter { public: VideoWriter(); bool isOpened() const; void write(const Mat& image); };
 }  // namespace cv
+// highgui's C API (opencv2/highgui/highgui_c.h): the native handle of a window (image_view
+// gives it to GTK) and the window thread
+extern "C" {
+void* cvGetWindowHandle(const char* name);
+int cvStartWindowThread();
+}
 #endif

@@ -638,6 +638,9 @@ public:
   bool use_intra_process_comms() const;
 };
 class Event;
+// rclcpp/expand_topic_or_service_name.hpp
+std::string expand_topic_or_service_name(const std::string& name, const std::string& node_name,
+    const std::string& namespace_, bool is_service = false);
 namespace node_interfaces {
 class NodeBaseInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeBaseInterface)
   const char* get_name() const; const char* get_namespace() const;
