@@ -48,11 +48,11 @@ _JUMPED_TO = frozenset({*_LABELS, CursorKind.LABEL_STMT})
 _PRESENCE = re.compile(
     r"\b(?:hasParam|getParam|getParamCached|has_parameter|get_parameter|has_param|get_param"
     r"|param::get|param::has)\s*[<(]")
+# an error logged by the client library's macros
+_ERROR_LOG = re.compile(r"\b(?:ROS|RCLCPP)_(?:ERROR|FATAL)\w*\s*\(")
 # a returned value that says the function failed (``return false;``, ``return -1;``,
 # ``return CallbackReturn::ERROR;``, ``return EXIT_FAILURE;``, ``return nullptr;``);
 # any other value, or none, is a function done early on purpose
-# an error logged by the client library's macros
-_ERROR_LOG = re.compile(r"\b(?:ROS|RCLCPP)_(?:ERROR|FATAL)\w*\s*\(")
 _FAILED = re.compile(
     r"^(?:false|-\s*\d+|nullptr|NULL|\w*(?:::)?\w*EXIT_FAILURE)$|\b(?:ERROR|FAILURE|Error"
     r"|Failure|FAILED|Failed)\b")
@@ -177,8 +177,8 @@ class ConditionReader:
         """The condition the statements after the ``if`` ``node`` in its block run
         under: its ``else`` when its ``then`` side leaves the block without failing and its
         ``else`` side (if any) does not leave; its ``if`` the other way round; none
-        otherwise, or when the test is a lazy initialisation's (``if (initialized_) {
-        ROS_WARN(..); return; }`` before ``initialized_ = true``)."""
+        otherwise, or when the test guards what the function does once
+        (``_guards_first_time``)."""
         children = list(node.get_children())
         sides = self._sides(node, children)
         if sides is None:
