@@ -16,8 +16,9 @@ latch=latch, queue_size=100)`` with ``latch = rate is None or --latch``
 ``_rosservice_cmd_call``, noetic-devel) takes the flags ``-v``, ``--nostr``, ``--noarr``
 and ``--wait`` (which waits for the service), then the service, resolved in the node's
 namespace (``script_resolve_name``), and YAML arguments; it calls it through
-``rospy.ServiceProxy`` with the type the master gives. For ros2 topic pub the QoS is what its ``--qos-*`` options say
-(unknown, ``None``, when they say nothing: its defaults changed between releases).
+``rospy.ServiceProxy`` with the type the master gives. For ros2 topic pub the QoS is
+what its ``--qos-*`` options say (unknown, ``None``, when they say nothing: its defaults
+changed between releases).
 
 topic_tools (ros_comm ``tools/topic_tools/src``, noetic-devel): ``relay IN [OUT]``
 subscribes IN and advertises OUT (default ``IN_relay``), reading ``~unreliable``,
