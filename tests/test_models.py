@@ -772,32 +772,6 @@ def test_a_release_name_of_the_executable_and_a_distribution_without_models(writ
     assert not any(d.code == "MODEL_NODE_MISSING" for d in config.diagnostics)
 
 
-def test_robot_state_publisher_started_by_its_old_name_takes_the_model(write_tree):
-    """Launch files written up to melodic start robot_state_publisher as
-    ``state_publisher``, the name its releases installed the same main under until
-    noetic dropped it: the node takes the noetic model (so a global parameter no node
-    reads is decided, katana_driver 5546e9e), not an unknown interface."""
-    root = write_tree({
-        "src/arm/package.xml": package_xml("arm"),
-        "src/arm/CMakeLists.txt": "project(arm)\n",
-        "src/arm/launch/arm.launch": """
-            <launch>
-              <param name="arm_type" value="small"/>
-              <node pkg="robot_state_publisher" type="state_publisher" name="rsp">
-                <param name="publish_frequency" value="50.0"/>
-              </node>
-            </launch>
-            """,
-        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch]\n",
-    })
-    config = _configuration(root)
-    rsp = _instance(config, "/rsp")
-    assert rsp.node is not None and rsp.node.model.startswith("noetic/robot_state_publisher ")
-    assert rsp.node.completeness == "model"
-    assert "/rsp/publish_frequency" in {link.name for link in rsp.links if link.kind == "read"}
-    assert "/joint_states" in {link.name for link in rsp.subscribers}
-
-
 def test_a_model_node_is_found_by_an_alias():
     data = {"schema": "haros-arch-model/2", "package": "p", "distro": "jazzy",
             "nodes": [{"name": "p/old", "aliases": ["p_old"]}, {"name": "p/p_old_too"}]}
