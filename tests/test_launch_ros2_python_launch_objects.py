@@ -73,3 +73,27 @@ def generate_launch_description():
     assert [n.name for n in model.nodes] == ["/kept"]
     said = [d.message for d in model.diagnostics if d.code.startswith("LAUNCH_PY_ALWAYS")]
     assert len(said) == 1 and "always false" in said[0]
+
+
+ACTION_AS_NAME = """
+def generate_launch_description():
+    frame = DeclareLaunchArgument('reference_frame', default_value='')
+    params = {'reference_frame': LaunchConfiguration(frame),
+              'camera_frame': LaunchConfiguration('camera_frame')}
+    return LaunchDescription([
+        frame,
+        DeclareLaunchArgument('camera_frame', default_value='cam'),
+        Node(package='p', executable='e', name='detector', parameters=[params]),
+    ])
+"""
+
+
+def test_an_action_where_launch_takes_text_is_an_error(write_tree):
+    """``LaunchConfiguration(frame)`` with ``frame`` the DeclareLaunchArgument action, not
+    its name (aruco_ros 238489d): launch's normalisation of substitutions raises a
+    TypeError, so the launch stops; an error, not a construct we do not read."""
+    model, _ = run(write_tree, ACTION_AS_NAME)
+    bad = [d for d in model.diagnostics if d.code == "LAUNCH_BAD_VALUE"]
+    assert len(bad) == 1 and "DeclareLaunchArgument('reference_frame')" in bad[0].message
+    assert bad[0].severity == "error"
+    assert not any(d.code == "LAUNCH_UNSUPPORTED" for d in model.diagnostics)

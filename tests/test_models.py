@@ -109,6 +109,36 @@ def test_rostopic_pub_publishes_what_its_arguments_say():
     assert [s.node.name for s in topic.subscribers] == ["/amcl"]
 
 
+def test_rosservice_call_is_a_client_of_its_service(write_tree):
+    """``rosservice call --wait /prbt/driver/init`` (pilz_robots' robot.launch): a client
+    of that service, its type the server's, known when it runs; not a node of unknown
+    interface that could be the missing side of every absence in the configuration."""
+    root = write_tree({
+        "src/arm/package.xml": package_xml("arm"),
+        "src/arm/CMakeLists.txt": "project(arm)\n",
+        "src/arm/launch/arm.launch": """
+            <launch>
+              <node pkg="rosservice" type="rosservice" name="robot_init"
+                    args="call --wait /prbt/driver/init"/>
+              <group ns="prbt">
+                <node pkg="rosservice" type="rosservice" name="reset"
+                      args="call -v driver/recover '{}'"/>
+              </group>
+              <node pkg="rosservice" type="rosservice" name="lister" args="list"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [arm/launch/arm.launch]\n",
+    })
+    config = _configuration(root)
+    init, reset = _instance(config, "/robot_init"), _instance(config, "/prbt/reset")
+    assert init.completeness == reset.completeness == "model"
+    assert [(link.kind, link.name, link.type) for link in init.links] == [
+        ("client", "/prbt/driver/init", None)]
+    assert [(link.kind, link.name) for link in reset.links] == [
+        ("client", "/prbt/driver/recover")]
+    assert _instance(config, "/lister").completeness == "unknown"
+
+
 def test_rostopic_pub_with_a_rate_does_not_latch():
     from haros_arch.models.commands import command_node
 

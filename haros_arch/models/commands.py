@@ -1,4 +1,5 @@
 """Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
+``rosservice call``,
 ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, ROS 1
 controller_manager's ``spawner`` and gazebo_ros' ``spawn_model``.
 
@@ -11,8 +12,13 @@ anywhere, and those that take a value take the next word.
 Facts from the tools' sources: rostopic pub creates ``rospy.Publisher(topic, type,
 latch=latch, queue_size=100)`` with ``latch = rate is None or --latch``
 (ros_comm ``tools/rostopic/src/rostopic/__init__.py``, ``_rostopic_cmd_pub`` and
-``create_publisher``). For ros2 topic pub the QoS is what its ``--qos-*`` options say
-(unknown, ``None``, when they say nothing: its defaults changed between releases).
+``create_publisher``). rosservice call (``tools/rosservice/src/rosservice/__init__.py``,
+``_rosservice_cmd_call``, noetic-devel) takes the flags ``-v``, ``--nostr``, ``--noarr``
+and ``--wait`` (which waits for the service), then the service, resolved in the node's
+namespace (``script_resolve_name``), and YAML arguments; it calls it through
+``rospy.ServiceProxy`` with the type the master gives. For ros2 topic pub the QoS is
+what its ``--qos-*`` options say (unknown, ``None``, when they say nothing: its defaults
+changed between releases).
 
 topic_tools (ros_comm ``tools/topic_tools/src``, noetic-devel): ``relay IN [OUT]``
 subscribes IN and advertises OUT (default ``IN_relay``), reading ``~unreliable``,
@@ -98,6 +104,8 @@ def command_node(decl: NodeDecl) -> Node | None:
     words = _words(decl.args)
     if (decl.package, decl.executable) == ("rostopic", "rostopic"):
         return _rostopic(decl, words)
+    if (decl.package, decl.executable) == ("rosservice", "rosservice"):
+        return _rosservice(decl, words)
     if decl.executable == "ros2" and words[:2] == ["topic", "pub"]:
         return _ros2_topic(decl, words[1:])
     if decl.package == "topic_tools" and decl.ros_version == 1:
@@ -346,6 +354,20 @@ def _rostopic(decl: NodeDecl, words: list[str]) -> Node | None:
     call = PrimitiveCall("publish", positional[0], type_, queue_size=100, latch=latch,
                          location=decl.location, origin="arguments")
     return _node(decl, "rostopic", call, "python")
+
+
+def _rosservice(decl: NodeDecl, words: list[str]) -> Node | None:
+    """``rosservice call [-v] [--wait] SERVICE [ARGS...]``: a client of SERVICE (the
+    other verbs only look at the master). Its type is the one the server has, looked up
+    when it runs (``get_service_class_by_name``): not known here."""
+    if not words or words[0] != "call":
+        return None
+    positional, _values, _flags = split_options(words[1:], set())
+    if not positional:
+        return None  # optparse refuses it: "service must be specified"
+    call = PrimitiveCall("client", positional[0], None, location=decl.location,
+                         origin="arguments")
+    return _node(decl, "rosservice", call, "python")
 
 
 def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:

@@ -129,6 +129,7 @@ class Opaque(Subst):
 
     origin: str
     report: bool = True  # False when the reason was reported already (a syntax error)
+    refused: bool = False  # launch itself raises on it: an error, not a gap of ours
 
 
 COMMAND_NOT_RUN = "Command (never run) is not evaluated; its value is unknown"

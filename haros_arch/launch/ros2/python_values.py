@@ -356,6 +356,11 @@ def to_text(value: Any) -> e.Text:
         return (e.Opaque(value.origin, report=value.kind != "unsupported"),)
     if isinstance(value, e.ParamFile):
         return (e.FileRef(value),)
+    if isinstance(value, e.Action):  # launch's normalisation raises a TypeError on it
+        what = (f"DeclareLaunchArgument('{value.name}')" if isinstance(value, e.DeclareArg)
+                else f"a {type(value).__name__} action")
+        return (e.Opaque(f"{what} is used where launch takes text or substitutions: "
+                         "ros2 launch stops with a TypeError", refused=True),)
     return (e.Opaque(f"{type(value).__name__} value"),)
 
 

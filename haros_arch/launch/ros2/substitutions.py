@@ -489,7 +489,8 @@ class Evaluator:
 
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:
-            self.report("LAUNCH_UNSUPPORTED", detail=s.origin)
+            self.report("LAUNCH_BAD_VALUE" if s.refused else "LAUNCH_UNSUPPORTED",
+                        detail=s.origin)
         return Value.unknown(s.origin)
 
     # -- conditions ------------------------------------------------------------------
