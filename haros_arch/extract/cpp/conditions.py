@@ -168,11 +168,6 @@ class ConditionReader:
         then = len(children) - (2 if has_else else 1)
         return then, has_else, self._parens(node.extent.start), children[then - 1]
 
-    def has_else(self, node: Cursor, children: list[Cursor]) -> bool:
-        """Whether the ``if`` statement ``node`` (with its children) has an ``else``."""
-        sides = self._sides(node, children)
-        return sides is not None and sides[1]
-
     def _after_if(self, node: Cursor, rest: list[Cursor]) -> tuple[Condition, ...]:
         """The condition the statements after the ``if`` ``node`` in its block run
         under: its ``else`` when its ``then`` side leaves the block without failing and its
@@ -252,18 +247,25 @@ class ConditionReader:
                    for statement in rest for found in statement.walk_preorder()
                    for write in writes_of(found, self.source))
 
-    def required(self, node: Cursor) -> str | None:
-        """Which side of the ``if`` ``node`` a parameter's presence test makes
-        required: ``"if"`` when the ``else`` side fails (``if (nh.hasParam("x")) {..}
-        else { ROS_ERROR(..); return false; }``), ``"else"`` when the ``then`` side does;
-        None otherwise. Code on that side runs whenever the function goes on, so it is
-        under no condition of the test. Failing is throwing, exiting or logging an error:
-        a bare ``return false;`` may be a fallback the caller takes."""
-        children = list(node.get_children())
+    def required(self, node: Cursor, children: list[Cursor]) -> tuple[str, Cursor] | None:
+        """The side of the ``if`` ``node`` (with its children) that a parameter's
+        presence test makes required (``_required``), with the tested expression."""
         sides = self._sides(node, children)
-        if sides is None or not _PRESENCE.search(sides[2]):
+        side = self._required(children, sides) if sides is not None else None
+        return (side, sides[3]) if side is not None and sides is not None else None
+
+    def _required(self, children: list[Cursor], sides: tuple[int, bool, str, Cursor]
+                  ) -> str | None:
+        """Which side of an ``if`` (its children and ``_sides``) a parameter's presence
+        test makes required: ``"if"`` when the ``else`` side fails (``if
+        (nh.hasParam("x")) {..} else { ROS_ERROR(..); return false; }``), ``"else"`` when
+        the ``then`` side does; None otherwise. Code on that side runs whenever the
+        function goes on, so it is under no condition of the test. Failing is throwing,
+        exiting or logging an error: a bare ``return false;`` may be a fallback the
+        caller takes."""
+        then, has_else, text, _ = sides
+        if not _PRESENCE.search(text):
             return None
-        then, has_else, _, _ = sides
         if has_else and self._leaves(children[-1]) == "failed":
             return "if"
         if self._leaves(children[then]) == "failed":
@@ -275,7 +277,7 @@ class ConditionReader:
         if sides is None:
             return [(c, ()) for c in children]
         then, has_else, text, tested = sides
-        required = self.required(node)
+        required = self._required(children, sides)
         out: list[Branch] = [(c, ()) for c in children[:then]]
         first = required == "if" or self._first_time(tested, children[then])
         out.append((children[then], () if first else (self._condition(node, "if", text,

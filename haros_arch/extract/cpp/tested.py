@@ -63,9 +63,9 @@ class TestedCalls:
             children = list(node.get_children())
             if children:
                 self._condition(children[0])
-            side = self.reader.required(node) if kind == CursorKind.IF_STMT else None
-            if side is not None:
-                tested = children[-3] if self.reader.has_else(node, children) else children[-2]
+            found = self.reader.required(node, children) if kind == CursorKind.IF_STMT else None
+            if found is not None:
+                side, tested = found
                 fails = side != "if"  # the test's value that takes the failing side
                 self.required.update(k for k, v in self._when_absent(tested).items()
                                      if v == fails)

@@ -406,7 +406,7 @@ class Walker:
         self._tested_if = None
         # a presence test whose absent side fails: the other side runs whenever the
         # function goes on (the parameter is required)
-        required = _PRESENCE.search(text) is not None and (
+        required = None if _PRESENCE.search(text) is None else (
             "if" if _leaves(statement.orelse) == "failed" else
             "else" if _leaves(statement.body) == "failed" else None)
         # the locals, and the attributes of ``self`` (interbotix_xs_modules' core: ``if
