@@ -9,7 +9,10 @@ through ``load`` / ``compose``; a document past a bound raises ``YAMLLimit``, a
 
 from __future__ import annotations
 
+import pickle
 import re
+import threading
+from collections import OrderedDict
 from typing import Any
 
 import yaml
@@ -151,8 +154,50 @@ def load(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader) -> Any:
     return _document(text, loader, lines=False)[0]
 
 
+# Documents read again: a launch gives one parameter file to many nodes (nav2's bringup:
+# twenty, each reading the file, then the text its rewrite dumped and substituted), and
+# the workspace's launch files are each loaded to find the configurations, then again.
+# What a read gave is kept, pickled (each reader gets its own fresh objects, aliases
+# shared as the reader made them), by text and loader, for texts of at least
+# ``_KEPT_FROM`` characters, at most ``_KEPT_CHARACTERS`` of them in all (least recently
+# read dropped first). A text the reader refuses is read (and refused) again.
+_KEPT_FROM = 512
+_KEPT_CHARACTERS = 32_000_000
+_kept: OrderedDict[tuple[str, type, bool], bytes] = OrderedDict()
+_kept_size = [0]
+_kept_lock = threading.Lock()
+
+
 def _document(text: str, loader: type[yaml.SafeLoader], lines: bool) -> tuple[Any, Any]:
     """The document of ``text`` read with the bounds, and its key lines if asked."""
+    if len(text) < _KEPT_FROM:
+        return _read_document(text, loader, lines)
+    key = (text, loader, lines)
+    with _kept_lock:
+        found = _kept.get(key)
+        if found is not None:
+            _kept.move_to_end(key)
+    if found is not None:
+        return pickle.loads(found)  # our own bytes, of the safe loader's values
+    read = _read_document(text, loader, lines)
+    try:
+        data = pickle.dumps(read, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # a value pickle cannot write is only not kept
+        return read
+    size = len(text) + len(data)
+    if size <= _KEPT_CHARACTERS:
+        with _kept_lock:
+            if key not in _kept:
+                _kept[key] = data
+                _kept_size[0] += size
+            while _kept_size[0] > _KEPT_CHARACTERS:
+                (old_text, _, _), old_data = _kept.popitem(last=False)
+                _kept_size[0] -= len(old_text) + len(old_data)
+    return read
+
+
+def _read_document(text: str, loader: type[yaml.SafeLoader], lines: bool
+                   ) -> tuple[Any, Any]:
     _check_flow_depth(text)
     reader = _reader(loader, text)
     try:

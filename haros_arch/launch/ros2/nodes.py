@@ -220,23 +220,22 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
 def _key_places(runner: Runner, placed: list[tuple[str, Any]], composable: bool,
                 node: str) -> dict[tuple[str, str], Location]:
     """Where each parameter of a file read for ``node`` is written, at its key's line
-    (``Runner.param_file``'s ``placed``): by (section pattern, name), and by ("", name)
+    (``Runner.param_file``'s ``placed``): for a node whose name is known, by ("", name)
     for what the file gives the node itself (its last section that matches, as
-    ``naming.params_for_node`` takes the values)."""
+    ``naming.params_for_node`` takes the values); else by (section pattern, name)."""
     if not placed or not isinstance(placed[-1][1], dict):
         return {}
     file, lines = placed[-1]
     if composable:
         lines = naming.as_component_file(lines)
     at = runner.workspace.location(file, 1, 0)
-    found = {(pattern, name): replace(at, line=line)
-             for pattern, params in naming.node_patterns(lines)
-             for name, line in naming.flatten(params) if isinstance(line, int)}
-    if UNKNOWN_MARK not in node:
-        found.update((("", name), replace(at, line=line))
-                     for name, line in naming.params_for_node(lines, node)
-                     if isinstance(line, int))
-    return found
+    if UNKNOWN_MARK not in node:  # ``read_file`` asks only for the node's own
+        return {("", name): replace(at, line=line)
+                for name, line in naming.params_for_node(lines, node)
+                if isinstance(line, int)}
+    return {(pattern, name): replace(at, line=line)
+            for pattern, params in naming.node_patterns(lines)
+            for name, line in naming.flatten(params) if isinstance(line, int)}
 
 
 def sections_for_no_node(runner: Runner) -> None:

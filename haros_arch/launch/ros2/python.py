@@ -21,6 +21,7 @@ from __future__ import annotations
 import ast
 import builtins
 import os
+import threading
 from collections.abc import Mapping
 from pathlib import PurePosixPath
 from typing import Any
@@ -1147,7 +1148,30 @@ def parse_python(text: str, path: str, workspace: Workspace,
 
 def checked_tree(text: str, path: str, workspace: Workspace
                  ) -> tuple[ast.Module | None, Diagnostic | None]:
-    """The syntax tree of a Python file within the size bounds, or why not."""
+    """The syntax tree of a Python file within the size bounds, or why not. A tree read
+    is kept (``_TREES``: by path and text; the interpreter never changes one): a launch
+    file included by many others is read once, not once per include."""
+    key = (path, text)
+    with _TREES_LOCK:
+        kept = _TREES.get(key)
+    if kept is not None:
+        return kept, None
+    tree, problem = _checked_tree(text, path, workspace)
+    if tree is not None:
+        with _TREES_LOCK:
+            if len(_TREES) >= MAX_TREES_KEPT:
+                _TREES.pop(next(iter(_TREES)))
+            _TREES[key] = tree
+    return tree, problem
+
+
+MAX_TREES_KEPT = 64
+_TREES: dict[tuple[str, str], ast.Module] = {}
+_TREES_LOCK = threading.Lock()
+
+
+def _checked_tree(text: str, path: str, workspace: Workspace
+                  ) -> tuple[ast.Module | None, Diagnostic | None]:
     where = workspace.location(path)
     if len(text) > MAX_SOURCE:
         return None, diag.make("LAUNCH_PY_BUDGET", where,

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import ast
 import os
+import pickle
 import shlex
+import threading
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -36,7 +38,7 @@ from ...model.values import Unknown, Value
 from ...share import generated_at, share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment, found_nowhere
-from ..partial_yaml import marked_text, unknown_parts
+from ..partial_yaml import MARK, marked_text, unknown_parts
 from ..tree import node_items
 from . import entities as e
 from . import naming, recording
@@ -743,10 +745,10 @@ class Runner:
             return None
         try:
             if placed is None:
-                document = unknown_parts(naming.load_param_file(text))
+                document = _unknown_parts(naming.load_param_file(text), text)
             else:
                 loaded, lines = safe_yaml.load_with_lines(text, naming.ParamFileLoader)
-                document = unknown_parts(loaded)
+                document = _unknown_parts(loaded, text)
         except yaml.YAMLError as err:
             mark = getattr(err, "problem_mark", None)
             self.report("LAUNCH_YAML_SYNTAX", self.workspace.location(
@@ -770,12 +772,11 @@ class Runner:
         the rewrite dumped (without the source's comments), then reads it again."""
         if not entry.allow_substs or not _substitutes(document):
             return document  # (nothing to perform: the text read again is the same data)
-        text = self.substitute(yaml.safe_dump(document, default_flow_style=False), scope,
-                               where)
+        text = self.substitute(_dumped(document), scope, where)
         if text is None:
             return None
         try:
-            return unknown_parts(safe_yaml.load(text))
+            return _unknown_parts(safe_yaml.load(text), text)
         except yaml.YAMLError:
             self.report("LAUNCH_PARAM_FILE", where, detail="a parameter file is not valid "
                         "YAML after its substitutions")
@@ -864,6 +865,40 @@ class Runner:
             if root is not None and root.text:
                 document = {root.text: document}
         return document
+
+
+def _unknown_parts(document: Any, text: str) -> Any:
+    """``unknown_parts`` of a document read from ``text``: the document itself when the
+    text can hold no unknown part marked (each value and key would be what it is): no
+    mark, and no backslash (a double-quoted scalar can write the mark with escapes, as
+    ``yaml.safe_dump`` writes it)."""
+    return unknown_parts(document) if MARK in text or "\\" in text else document
+
+
+def _dumped(document: Any) -> str:
+    """``yaml.safe_dump`` of a rewritten parameter document, as launch_ros writes it
+    (block style); the text of a document made again is the text made before, by its
+    pickle (which tells every type and every value shared, as the dump's aliases do):
+    nav2's bringup rewrites one file for twenty nodes, and YAML's pure writer took most
+    of a launch's time. At most ``_DUMPS_KEPT`` texts are kept."""
+    try:
+        key = pickle.dumps(document, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # what pickle cannot write, the dump says what is wrong with
+        return yaml.safe_dump(document, default_flow_style=False)
+    with _DUMPS_LOCK:
+        found = _DUMPS.get(key)
+    if found is None:
+        found = yaml.safe_dump(document, default_flow_style=False)
+        with _DUMPS_LOCK:
+            if len(_DUMPS) >= _DUMPS_KEPT:
+                _DUMPS.pop(next(iter(_DUMPS)))
+            _DUMPS[key] = found
+    return found
+
+
+_DUMPS: dict[bytes, str] = {}
+_DUMPS_LOCK = threading.Lock()
+_DUMPS_KEPT = 64
 
 
 def _substitutes(node: Any, depth: int = 0) -> bool:
