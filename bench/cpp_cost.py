@@ -7,15 +7,16 @@ docs and examples left out) as its own node, with no cache, through
 ``extract_cpp_nodes`` (the entry point every checkout since round 1 has, so the same
 script times an old checkout and a new one), and prints the units, the calls found and
 this process's CPU seconds for the extraction (with ``--jobs 1`` every parse is in it).
-``--out FILE`` appends that line to FILE. To compare two checkouts, pair the two
-commands with ``farm-bench`` (A and B alternate, the ratio is taken pair by pair)::
+``--out FILE`` appends that line to FILE. To compare two checkouts, run the two
+commands in turn, A B A B ... (the ratio is taken pair by pair, so that a drift of the
+machine's speed cancels)::
 
-    farm-bench -n 5 --timeout 1800 -- sh -c 'exec env PYTHONPATH=NEW python \
-        bench/cpp_cost.py WS --out /tmp/new.txt' \
-        --vs "sh -c 'exec env PYTHONPATH=OLD python bench/cpp_cost.py WS --out /tmp/old.txt'"
+    PYTHONPATH=NEW python bench/cpp_cost.py WS --out /tmp/new.txt
+    PYTHONPATH=OLD python bench/cpp_cost.py WS --out /tmp/old.txt
 
 and read the per-run extraction CPU of each from the two files (their medians' ratio is
-the cost per unit of the change; the process figures of ``farm-bench`` add start-up).
+the cost per unit of the change; a whole process's figures, `/usr/bin/time -v`, add
+start-up).
 """
 
 from __future__ import annotations
