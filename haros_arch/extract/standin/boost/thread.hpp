@@ -10,6 +10,8 @@ struct time_duration {
   long total_milliseconds() const;
   long total_microseconds() const;
   long total_nanoseconds() const;
+  long ticks() const;
+  static long ticks_per_second();
 };
 time_duration milliseconds(long n);
 time_duration seconds(long n);
@@ -33,6 +35,7 @@ public:
   thread();
   template<class F, class... A> explicit thread(F f, A... args);
   void join();
+  template<class D> bool timed_join(const D& duration);
   void detach();
   bool joinable() const;
   void interrupt();

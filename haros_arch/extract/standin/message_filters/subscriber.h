@@ -58,7 +58,12 @@ public:
 };
 struct NullType {};
 namespace sync_policies {
-template<class... M> struct ApproximateTime { explicit ApproximateTime(uint32_t queue_size); void setMaxIntervalDuration(...); };
+template<class... M> struct ApproximateTime {
+  explicit ApproximateTime(uint32_t queue_size);
+  void setMaxIntervalDuration(...);
+  void setAgePenalty(double age_penalty);
+  template<class D> void setInterMessageLowerBound(int index, const D& bound);
+};
 template<class... M> struct ExactTime { explicit ExactTime(uint32_t queue_size); };
 }
 template<class P> class Synchronizer {

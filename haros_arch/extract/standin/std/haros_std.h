@@ -1170,6 +1170,7 @@ public:
 };
 exception_ptr current_exception() noexcept;
 [[noreturn]] void rethrow_exception(exception_ptr p);
+[[noreturn]] void terminate() noexcept;
 template<class E> exception_ptr make_exception_ptr(E e) noexcept;
 class runtime_error : public exception {
 public:
