@@ -194,10 +194,11 @@ def test_spencer_forms_names_remap_string_algorithms_and_a_synchroniser_penalty(
     """spencer_people_tracking (noetic, survey Z39) logs and subscribes through
     ``ros::names::remap(topic)``, splits and trims with Boost.StringAlgo
     (``<boost/algorithm/string.hpp>`` was not found, its names unknown), sets an
-    ApproximateTime policy's age penalty, calls ``std::terminate`` and reads a
-    ``time_duration``'s ticks: each was an error in the function that makes the node's
-    calls (eleven of spencer's nodes partial); the name ``remap`` gives is the name as
-    written, which the graph remaps."""
+    ApproximateTime policy's age penalty, calls ``std::terminate``, reads a
+    ``time_duration``'s ticks, keeps a ``posix_time::seconds`` (a class, not a function)
+    and catches ``boost::thread_interrupted``: each was an error in the function that
+    makes the node's calls (eleven of spencer's nodes partial); the name ``remap`` gives
+    is the name as written, which the graph remaps."""
     (tmp_path / "package.xml").write_text(package_xml("tracks"))
     source = tmp_path / "filter.cpp"
     source.write_text(
@@ -225,6 +226,9 @@ def test_spencer_forms_names_remap_string_algorithms_and_a_synchroniser_penalty(
         "  long t = boost::posix_time::seconds(1).ticks() / "
         "boost::posix_time::time_duration::ticks_per_second();\n"
         "  ROS_INFO_STREAM(\"output \" << ros::names::remap(\"out\") << t);\n"
+        "  boost::posix_time::seconds interval(3);\n"
+        "  try { boost::this_thread::sleep(interval); }\n"
+        "  catch (boost::thread_interrupted&) { return 0; }\n"
         "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n"
         "}\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
