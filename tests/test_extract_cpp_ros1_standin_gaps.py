@@ -238,3 +238,32 @@ def test_spencer_forms_names_remap_string_algorithms_and_a_synchroniser_penalty(
                           "CPP_NAMES_DECLARED")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "laser"),
                                                          ("publish", "out")]
+
+
+def test_piksi_forms_eigenvalues_a_path_compare_and_strftime(tmp_path) -> None:
+    """ethz_piksi_ros' piksi_multi_cpp (noetic, survey Z39) logs a covariance's
+    ``R.eigenvalues().real().cwiseSqrt()``, compares a ``std::filesystem::path``'s
+    extension and formats a time with ``std::strftime``: each was an error in the
+    function that makes the node's calls (piksi_multi and piksi_multi_config partial)."""
+    (tmp_path / "package.xml").write_text(package_xml("piksi"))
+    source = tmp_path / "piksi.cc"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <Eigen/Dense>\n#include <filesystem>\n"
+        "#include <ctime>\n#include <std_msgs/String.h>\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"piksi\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();\n"
+        "  ROS_DEBUG_STREAM(\"bound \" << R.eigenvalues().real().cwiseSqrt().transpose());\n"
+        "  std::filesystem::path file(\"a.ini\");\n"
+        "  if (file.extension().compare(\".ini\") != 0) return 1;\n"
+        "  std::time_t now = std::time(nullptr);\n"
+        "  char text[32];\n"
+        "  std::strftime(text, sizeof(text), \"%Y\", std::localtime(&now));\n"
+        "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"settings\", 1);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "settings")]
