@@ -244,7 +244,10 @@ def test_piksi_forms_eigenvalues_a_path_compare_and_strftime(tmp_path) -> None:
     """ethz_piksi_ros' piksi_multi_cpp (noetic, survey Z39) logs a covariance's
     ``R.eigenvalues().real().cwiseSqrt()``, compares a ``std::filesystem::path``'s
     extension and formats a time with ``std::strftime``: each was an error in the
-    function that makes the node's calls (piksi_multi and piksi_multi_config partial)."""
+    function that makes the node's calls (piksi_multi and piksi_multi_config partial);
+    spencer's trackers make an ``Eigen::FullPivLU`` from a matrix for its determinant
+    and inverse, and divide a vector in place (srl_nearest_neighbor_tracker and the
+    laser segmentation nodes partial)."""
     (tmp_path / "package.xml").write_text(package_xml("piksi"))
     source = tmp_path / "piksi.cc"
     source.write_text(
@@ -255,6 +258,12 @@ def test_piksi_forms_eigenvalues_a_path_compare_and_strftime(tmp_path) -> None:
         "  ros::NodeHandle nh;\n"
         "  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();\n"
         "  ROS_DEBUG_STREAM(\"bound \" << R.eigenvalues().real().cwiseSqrt().transpose());\n"
+        # spencer's trackers: a decomposition made from a matrix, a mean divided in place
+        "  Eigen::FullPivLU<Eigen::Matrix3d> lu(R);\n"
+        "  Eigen::Matrix3d Sinv = lu.inverse();\n"
+        "  Eigen::Vector2d mean = Eigen::Vector2d::Zero();\n"
+        "  mean /= (double) 2;\n"
+        "  if (std::log(lu.determinant()) > 0 && mean.norm() > 0) return 2;\n"
         "  std::filesystem::path file(\"a.ini\");\n"
         "  if (file.extension().compare(\".ini\") != 0) return 1;\n"
         "  std::time_t now = std::time(nullptr);\n"
@@ -267,3 +276,31 @@ def test_piksi_forms_eigenvalues_a_path_compare_and_strftime(tmp_path) -> None:
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "settings")]
+
+
+def test_a_filter_subscriber_subscribed_again_makes_no_other_call(tmp_path) -> None:
+    """rwth_upper_body_detector and rwth_ground_plane (spencer, survey Z39) unsubscribe
+    their message_filters subscribers until someone listens, then ``subscribe()`` them
+    again to the topic they had: the method without arguments was hidden by the
+    stand-in's own ``subscribe(node, topic, ...)``, an error in the connect callback
+    that makes the node's calls. The re-subscription is no call of its own."""
+    (tmp_path / "package.xml").write_text(package_xml("detector"))
+    source = tmp_path / "detector.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <message_filters/subscriber.h>\n"
+        "#include <sensor_msgs/CameraInfo.h>\n"
+        "void connect(message_filters::Subscriber<sensor_msgs::CameraInfo>& sub, bool on) {\n"
+        "  if (on) sub.subscribe(); else sub.unsubscribe();\n"
+        "}\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"detector\");\n"
+        "  ros::NodeHandle n;\n"
+        "  message_filters::Subscriber<sensor_msgs::CameraInfo> info(n, \"camera_info\", 1);\n"
+        "  info.unsubscribe();\n"
+        "  connect(info, true);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "camera_info")]

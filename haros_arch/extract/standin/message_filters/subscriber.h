@@ -50,6 +50,7 @@ public:
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
+  void subscribe();  // again, to the topic it had (ROS 1's re-subscribe after unsubscribe)
   void unsubscribe();
   std::string getTopic() const;
   const haros_filter_subscription& getSubscriber() const;
