@@ -269,3 +269,52 @@ def test_include_folders_given_through_set_variables(tmp_path) -> None:
         ("publish", "~status"), ("read", "~port")]
     assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NODE_PARTIAL"} & {
         d.code for d in result.diagnostics}
+
+
+def _detector(tmp_path, name: str, member: str, topic: str) -> str:
+    """A catkin package ``name`` whose node includes its own ``"Globals.h"`` (from
+    ``include/``, or ``include/<name>`` as rwth_ground_plane's CMake gives it) and
+    publishes ``topic`` after reading ``Globals::<member>``."""
+    root = tmp_path / name
+    root.mkdir()
+    (root / "package.xml").write_text(package_xml(name))
+    folder = "include" if name == "upper_body" else f"include/{name}"
+    (root / "CMakeLists.txt").write_text(
+        f"project({name})\nfind_package(catkin REQUIRED COMPONENTS roscpp)\n"
+        f"include_directories(include {folder})\n"
+        f"add_executable(node src/node.cpp)\n")
+    (root / folder).mkdir(parents=True, exist_ok=True)
+    (root / folder / "Globals.h").write_text(
+        f"#pragma once\nclass Globals {{ public: static double {member}; }};\n")
+    (root / "src").mkdir()
+    source = root / "src" / "node.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/Float64.h>\n#include \"Globals.h\"\n"
+        f"double Globals::{member};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"node\");\n"
+        "  ros::NodeHandle n;\n"
+        f"  n.param(\"{member}\", Globals::{member}, 1.0);\n"
+        f"  ros::Publisher pub = n.advertise<std_msgs::Float64>(\"{topic}\", 1);\n"
+        "}\n")
+    return str(source)
+
+
+def test_each_unit_reads_its_own_package_header_of_a_name_two_packages_hold(
+        tmp_path) -> None:
+    """spencer_people_tracking (survey Z39): rwth_ground_plane and
+    rwth_upper_body_detector each have a ``Globals.h`` on their CMake include path; in
+    one batch the search order was the first package's, and the upper-body detector's
+    units read the ground plane's class (20 errors in the function that reads its
+    parameters, the node partial with none of them)."""
+    from haros_arch.extract.cpp import extract_cpp_nodes
+    ground = _detector(tmp_path, "ground_plane", "camera_height", "ground")
+    upper = _detector(tmp_path, "upper_body", "distance_range", "detections")
+    batch = extract_cpp_nodes([[ground], [upper]], scan([str(tmp_path)]), cache_dir=None,
+                              distro="noetic")
+    for result, (member, topic) in zip(batch.results, (("camera_height", "ground"),
+                                                       ("distance_range", "detections")),
+                                       strict=True):
+        assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+        assert [(c.kind, c.name) for c in result.calls] == [("read", member),
+                                                            ("publish", topic)]

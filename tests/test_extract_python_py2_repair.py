@@ -95,3 +95,30 @@ def test_tuple_parameters_keep_columns_and_leave_other_brackets() -> None:
     }
     for before, after in cases.items():
         assert _repair_python2(before) == after
+
+
+def test_an_except_clause_that_unpacks_its_exception() -> None:
+    """spencer_diagnostics' ntp_monitor.py (survey Z39) has ``except OSError, (errno,
+    msg):``, a Python 2 tuple target: the file stayed PY_PARSE_ERROR and its node
+    partial with no call. Python 3 binds one name; the first stands for the tuple."""
+    from haros_arch.extract.python.modules import _repair_python2
+    cases = {
+        "    except OSError, (errno, msg):": "    except OSError as errno:",
+        "except (IOError, OSError), ( code , text ):": "except (IOError, OSError) as code:",
+        "except OSError, e:": "except OSError as e:",
+    }
+    for before, after in cases.items():
+        assert _repair_python2(before) == after
+
+
+def test_a_node_whose_except_unpacks_its_exception_is_read(write_tree) -> None:
+    node = ("#!/usr/bin/env python\nimport rospy\nfrom std_msgs.msg import String\n"
+            "rospy.init_node('ntp')\n"
+            "pub = rospy.Publisher('diag', String, queue_size=1)\n"
+            "try:\n    pass\nexcept OSError, (errno, msg):\n"
+            "    if errno == 4:\n        print 'interrupted'\n")
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"), "pkg/ntp.py": node})
+    result = extract_python([str(folder / "pkg" / "ntp.py")], scan([str(folder)]),
+                            package="pkg")
+    assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "diag")]

@@ -4,7 +4,7 @@ in the JSON model, and what the ``remap-unused`` query reads (``Configuration.re
 from __future__ import annotations
 
 from haros_arch.graph import build
-from haros_arch.launch.model import LaunchModel, NodeDecl
+from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Model, Node, PrimitiveCall
 from haros_arch.model.load import from_data
 from haros_arch.model.serialise import to_data
@@ -185,3 +185,27 @@ def test_one_text_given_in_two_namespaces_is_two_remaps() -> None:
     found = sorted(([n.name for n in r.nodes], [n.name for n in r.users]) for r in config.remaps)
     assert found == [(["/bluetooth_teleop/teleop"], ["/bluetooth_teleop/teleop"]),
                      (["/twist_marker_server"], [])]
+
+
+def test_an_empty_parameter_value_inside_a_ros1_name_drops_its_segment() -> None:
+    """heron_nmea's command_publisher calls ``"/" + ns + "/activate_control"`` with ``ns``
+    its ``~namespace``, which the launch file sets to "" (``$(optenv ROBOT_NAMESPACE)``):
+    roscpp cleans ``//activate_control`` to ``/activate_control``; the name stayed
+    ``/?/activate_control`` with a diagnostic saying the parameter was not set (survey
+    Z39). A ``?`` that begins the name, or ends it, still names nothing known."""
+    commands = Node("heron_nmea", "command_publisher", calls=[
+        PrimitiveCall("client", "/?/activate_control", "std_srvs/SetBool",
+                      name_param="~namespace"),
+        PrimitiveCall("publish", "?/cmd", "std_msgs/Bool", name_param="~prefix"),
+        PrimitiveCall("publish", "robot/?", "std_msgs/Bool", name_param="~prefix")])
+    decl = NodeDecl("/nmea_if/nmea_commands", "heron_nmea", "command_publisher", "/nmea_if/")
+    params = [ParamDecl("/nmea_if/nmea_commands/namespace", ""),
+              ParamDecl("/nmea_if/nmea_commands/prefix", "")]
+    config = build(Configuration("c"), LaunchModel(nodes=[decl], params=params),
+                   Workspace(root="/x"), {"heron_nmea/command_publisher": commands})
+    assert sorted(link.rosname.full for link in config.links) == [
+        "/activate_control", "/nmea_if/robot/?", "?/cmd"]
+    # as written: the code's global name (the global-names query quotes it)
+    assert "/activate_control" in [link.rosname.given for link in config.links]
+    assert [d.code for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"] == [
+        "NAME_PARAM_UNSET", "NAME_PARAM_UNSET"]

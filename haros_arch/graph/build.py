@@ -16,7 +16,7 @@ from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
-from ..model.rosname import RosName, namespace_of, remap, resolve
+from ..model.rosname import RosName, clean, namespace_of, remap, resolve
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -783,9 +783,27 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         return pieces[0] + "".join(
             (UNKNOWN_MARK if v is None else v) + piece for v, piece in zip(
                 values, pieces[1:], strict=True))
+    if value == "" and instance.ros_version == 1 and _empty_piece(call):
+        # an empty piece of a longer name (heron's ``"/" + ns + "/activate_control"``,
+        # ``~namespace`` set to ""): roscpp and rospy drop the empty segment its slashes
+        # leave, ``//activate_control`` is ``/activate_control``
+        return clean(_filled(call.name, value))
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     return _filled(call.name, value)
+
+
+def _empty_piece(call: PrimitiveCall) -> bool:
+    """Whether the one ``?`` of a ROS 1 call's name, given "", leaves the name the code
+    wrote around it: text written before it and a name after it (``/?/activate_control``,
+    ``robot_?/odom``). Not when the ``?`` begins what the code wrote: ``"" + "/scan"`` is a
+    global name on any handle, and a ``?`` with nothing after it named the handle itself."""
+    if call.name.count(UNKNOWN_MARK) != 1:
+        return False
+    head, _, tail = call.name.partition(UNKNOWN_MARK)
+    handle = call.handle_namespace or ""
+    prefix = handle if handle in ("", "~") or handle.endswith("/") else handle + "/"
+    return bool(tail.strip("/")) and head.startswith(prefix) and len(head) > len(prefix)
 
 
 def _filled(name: str, value: str) -> str:

@@ -149,6 +149,7 @@ UMBRELLAS = {
     # handlers take (the asio classes are declared permissively)
     "boost/asio/": "boost/asio.hpp", "boost/system/": "boost/system/error_code.hpp",
     "boost/filesystem/": "boost/filesystem.hpp",
+    "boost/algorithm/string/": "boost/algorithm/string.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
 SHADOWED = ("ros/", "boost/", "tf/", *UMBRELLAS)
@@ -403,6 +404,7 @@ class IncludeSetup:
         # (header, folder of a quoted include) -> what ``_prepare`` found, when it
         # changed nothing
         self._looked_up: dict[tuple[str, str], str | None] = {}
+        self._unit_dirs: dict[str, list[str]] = {}  # see ``_unit_folders``
         self.written: dict[str, str] = {}  # synthesised header path -> its text
         self.overflow = os.path.join(self.generated, OVERFLOW)
         self._folders: set[str] = set()  # the folders of the written headers
@@ -445,6 +447,8 @@ class IncludeSetup:
         if unit is not None:
             args += unit.arguments()
         args += self.package_macros(source, unit)
+        if unit is None:  # its own target's folders first, as its compile line has them
+            args += [a for f in self._unit_folders(source) for a in ("-I", f)]
         for folder in (self.search if pch and self.search is not None else self.user_dirs):
             args += ["-I", folder]
         if self.system_headers:
@@ -477,6 +481,24 @@ class IncludeSetup:
                 d.name == "ament_cmake_ros" for d in package.dependencies)):
             return [*own, f'-DROS_PACKAGE_NAME="{package.name}"']
         return own
+
+    def _unit_folders(self, source: str | None) -> list[str]:
+        """The include folders the CMake files give the target that compiles ``source``
+        (``_built_include_dirs``), searched before the batch's shared ones: in a batch of
+        several packages the shared order is the first package's, and a header name two
+        packages hold (spencer's rwth_ground_plane and rwth_upper_body_detector, each
+        with its ``Globals.h``) was the first package's for every unit. Empty when the
+        shared search begins with them anyway."""
+        if source is None:
+            return []
+        found = self._unit_dirs.get(source)
+        if found is None:
+            found = [f for f in _built_include_dirs([source], self.workspace)
+                     if os.path.isdir(f)]
+            if self.user_dirs[:len(found)] == found:
+                found = []
+            self._unit_dirs[source] = found
+        return found
 
     def _own_folders(self, source: str | None) -> list[str]:
         """The include folders of ``source``'s package when it is one our stand-ins also

@@ -238,6 +238,17 @@ def _names_resolve(target: Cursor) -> bool:
             and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
 
 
+def _names_remap(target: Cursor) -> bool:
+    """roscpp's ``ros::names::remap(name)``: the target of the remapping of ``name``
+    (resolved in the node's namespace), else ``name`` as written; its value is the name
+    as written, which the graph remaps where the call that takes it resolves it
+    (spencer's ``subscribe(ros::names::remap(laserTopic), ...)``)."""
+    parent = target.semantic_parent
+    grand = None if parent is None else parent.semantic_parent
+    return (target.spelling == "remap" and parent is not None
+            and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
+
+
 def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
@@ -1053,7 +1064,8 @@ class Scope:
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
             # manage_nodes``, ``~/manage_nodes``: ``own_name``)
             return (NODE_NAME,)
-        if args and (_resolver(target) is not None or _names_resolve(target)):
+        if args and (_resolver(target) is not None or _names_resolve(target)
+                     or _names_remap(target)):
             return self.string(args[0], depth + 1)
         if args and _expands(target):
             return _expanded(self.string(args[0], depth + 1))

@@ -360,8 +360,8 @@ _HEAD = (r"^(\s*(?:(?:if|elif|while|for|with|except)\b[^#:'\"]*:\s*"
          r"|(?:else|try|finally)\s*:\s*)?)")
 _PRINT = re.compile(_HEAD + r"print\b(?!\s*\()(?!\s*=)(.*)$")
 _EXEC = re.compile(_HEAD + r"exec\s+(?!\()(.*)$")
-# ``except E, e:`` and ``except (E1, E2), e:``
-_EXCEPT = re.compile(r"^(\s*except\s+(?:\([^()]*\)|[^,:()]+)),\s*(\w+)\s*:")
+# ``except E, e:``, ``except (E1, E2), e:`` and the unpacked ``except E, (errno, msg):``
+_EXCEPT = re.compile(r"^(\s*except\s+(?:\([^()]*\)|[^,:()]+)),\s*(\w+|\(\s*\w+[\w\s,]*\))\s*:")
 # ``010`` but not a float's exponent (``2e-06``)
 _OCTAL = re.compile(r"(?<![\w.])(?<![\d.][eE][-+])0([0-7]+)(?![\w.])")
 _LONG = re.compile(r"(?<![\w.])(\d+)[lL](?!\w)")
@@ -394,7 +394,7 @@ def _repair_python2(text: str) -> str:
                     rest = _strip_chevron(found.group(2)) if word == "print" else found.group(2)
                     fixed, going = _close_call(f"{found.group(1)}{word}({rest}", (-1, ""))
                     break
-        fixed = _EXCEPT.sub(lambda m: f"{m.group(1)} as {m.group(2)}:", fixed)
+        fixed = _EXCEPT.sub(lambda m: f"{m.group(1)} as {_first_name(m.group(2))}:", fixed)
         fixed = _RAISE.sub(lambda m: f"{m.group(1)}({m.group(2)})", fixed)
         fixed = _BACKTICK.sub(lambda m: f"repr({m.group(1)})", fixed)
         if "0" in fixed:
@@ -405,6 +405,13 @@ def _repair_python2(text: str) -> str:
             fixed = _untuple_parameters(fixed)
         lines[i] = fixed
     return "\n".join(lines)
+
+
+def _first_name(target: str) -> str:
+    """The name an ``except`` clause binds in Python 3: a tuple target's first name
+    (``(errno, msg)``: ``errno``; the others stay unbound, which a reading of ROS calls
+    does not mind)."""
+    return re.findall(r"\w+", target)[0]
 
 
 def _untuple_parameters(line: str) -> str:

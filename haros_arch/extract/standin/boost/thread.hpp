@@ -10,10 +10,16 @@ struct time_duration {
   long total_milliseconds() const;
   long total_microseconds() const;
   long total_nanoseconds() const;
+  long ticks() const;
+  static long ticks_per_second();
 };
-time_duration milliseconds(long n);
-time_duration seconds(long n);
-time_duration microseconds(long n);
+// classes, as boost's: a variable of one is a duration (``posix_time::seconds
+// interval(period);``)
+struct hours : time_duration { explicit hours(long n); };
+struct minutes : time_duration { explicit minutes(long n); };
+struct seconds : time_duration { explicit seconds(long n); };
+struct milliseconds : time_duration { explicit milliseconds(long n); };
+struct microseconds : time_duration { explicit microseconds(long n); };
 // a point in time (ros::Time::toBoost gives one)
 struct ptime {
   ptime();
@@ -27,12 +33,14 @@ std::string to_iso_extended_string(const ptime& t);
 std::string to_iso_string(const ptime& t);
 std::string to_simple_string(const ptime& t);
 }
+class thread_interrupted { };  // what an interrupted thread's wait throws
 class thread {
 public:
   struct id_type { };
   thread();
   template<class F, class... A> explicit thread(F f, A... args);
   void join();
+  template<class D> bool timed_join(const D& duration);
   void detach();
   bool joinable() const;
   void interrupt();

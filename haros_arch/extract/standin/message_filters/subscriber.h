@@ -50,6 +50,7 @@ public:
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
+  void subscribe();  // again, to the topic it had (ROS 1's re-subscribe after unsubscribe)
   void unsubscribe();
   std::string getTopic() const;
   const haros_filter_subscription& getSubscriber() const;
@@ -58,7 +59,12 @@ public:
 };
 struct NullType {};
 namespace sync_policies {
-template<class... M> struct ApproximateTime { explicit ApproximateTime(uint32_t queue_size); void setMaxIntervalDuration(...); };
+template<class... M> struct ApproximateTime {
+  explicit ApproximateTime(uint32_t queue_size);
+  void setMaxIntervalDuration(...);
+  void setAgePenalty(double age_penalty);
+  template<class D> void setInterMessageLowerBound(int index, const D& bound);
+};
 template<class... M> struct ExactTime { explicit ExactTime(uint32_t queue_size); };
 }
 template<class P> class Synchronizer {

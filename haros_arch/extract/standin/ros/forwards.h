@@ -10,6 +10,7 @@
 #include <boost/function.hpp>
 #include <boost/bind/bind.hpp>
 #include <boost/thread.hpp>
+#include <ros/message_forward.h>  // reached through roscpp's message traits
 namespace ros {
 typedef std::map<std::string, std::string> M_string;
 typedef std::vector<std::string> V_string;

@@ -32,6 +32,10 @@ void getSubscribedTopics(V_string& topics);
 namespace names {
 std::string resolve(const std::string& name, bool remap = true);
 std::string append(const std::string& left, const std::string& right);
+std::string remap(const std::string& name);
+std::string clean(const std::string& name);
+std::string parentNamespace(const std::string& name);
+bool validate(const std::string& name, std::string& error);
 const M_string& getRemappings();
 const M_string& getUnresolvedRemappings();
 }

@@ -172,6 +172,11 @@ typedef __builtin_va_list va_list;
 #define VEOL 11
 #define VEOF 4
 #define POLLIN 1
+#define POLLPRI 2
+#define POLLOUT 4
+#define POLLERR 8
+#define POLLHUP 16
+#define POLLNVAL 32
 #define O_RDWR 2
 #define O_RDONLY 0
 #define O_WRONLY 1
@@ -267,11 +272,13 @@ long lrand48(void);
 int abs(int x);
 long labs(long x);
 size_t strlen(const char* s);
+size_t strnlen(const char* s, size_t n);
 int strcmp(const char* a, const char* b);
 int strncmp(const char* a, const char* b, size_t n);
 // <strings.h>, which glibc's <string.h> includes: unitree_legged_real's ros_udp.cpp
 int strcasecmp(const char* a, const char* b);
 int strncasecmp(const char* a, const char* b, size_t n);
+void bzero(void* s, size_t n);
 char* strcpy(char* d, const char* s);
 char* strncpy(char* d, const char* s, size_t n);
 char* strcat(char* d, const char* s);

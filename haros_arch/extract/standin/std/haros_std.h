@@ -25,6 +25,7 @@ using ::isnan; using ::isinf; using ::isfinite; using ::signal;
 using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
 using ::isupper; using ::islower; using ::ispunct; using ::isxdigit; using ::toupper;
 using ::tolower; using ::hypotf; using ::nan; using ::nanf;
+using ::tm; using ::localtime; using ::gmtime; using ::mktime; using ::strftime;
 using ::fopen; using ::fclose; using ::fread; using ::fwrite; using ::fgets; using ::fputs;
 using ::fflush; using ::fgetc; using ::fputc; using ::fscanf; using ::sscanf; using ::feof;
 using ::ferror; using ::fseek; using ::ftell; using ::rewind; using ::remove; using ::rename;
@@ -1170,6 +1171,7 @@ public:
 };
 exception_ptr current_exception() noexcept;
 [[noreturn]] void rethrow_exception(exception_ptr p);
+[[noreturn]] void terminate() noexcept;
 template<class E> exception_ptr make_exception_ptr(E e) noexcept;
 class runtime_error : public exception {
 public:
