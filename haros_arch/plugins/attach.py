@@ -239,7 +239,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             # a node the process makes: its files apply by name (a controller's section
             # of the file given to ros2_control_node, after its spawner's file, whose
             # values win: rcl's global arguments reach every node of the process)
-            _process_params(decl, reader, params, declared=slot.names == SPAWNER)
+            _process_params(decl, reader, params,
+                            host=instance if slot.names == SPAWNER else None)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(node.calls, instance)))
         if slot.declares:  # the host's loading code declares them on the plugin's node
@@ -305,19 +306,49 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
 
 
 def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params,
-                    declared: bool = False) -> None:
+                    host: NodeInstance | None = None) -> None:
     """The entries of the process's parameter files that name a node it makes; the
-    ``/**`` ones too when the node declares every override it is given (``declared``:
+    ``/**`` ones too when the node declares every override it is given (a ``host``:
     ros2_control's controllers, made with ``automatically_declare_parameters_from_
     overrides(true)``, get the ``robot_description`` a launch file gives the manager as
     a dictionary, which launch_ros writes under ``/**``); else not, a node the code makes
-    having those only where it declares them."""
+    having those only where it declares them.
+
+    A ``/**`` value reaches the host and each of its controllers alike: a setting for
+    several nodes (``Parameter.setting``), unread only when none of them reads it (UR's
+    driver gives its manager ``verify_payload_on_set``, which one controller reads)."""
     for document, where in decl.param_files:
-        values = {name: value for pattern, entries in node_patterns(document)
-                  if (pattern != "/**" or declared) and (
-                      pattern == "/**" or pattern_matches(pattern, instance.name))
-                  for name, value in flatten(entries)}
-        _set_params(params, instance.name, values, where, instance.conditions)
+        values: dict[str, Any] = {}
+        shared: dict[str, str] = {}
+        for pattern, entries in node_patterns(document):
+            if pattern == "/**" and host is None:
+                continue
+            if pattern != "/**" and not pattern_matches(pattern, instance.name):
+                continue
+            for name, value in flatten(entries):
+                values[name] = value
+                if pattern == "/**":
+                    shared[name] = _host_setting(params, host, name, where)
+                else:
+                    shared.pop(name, None)
+        _set_params(params, instance.name, values, where, instance.conditions,
+                    settings=shared)
+
+
+def _host_setting(params: Params, host: NodeInstance | None, name: str,
+                  where: Location) -> str:
+    """The setting a ``/**`` value of the host's parameter files is: the one the host's
+    own copy has (a file given to several nodes), else the place of the entry, which the
+    host's copy then takes when it came from that entry."""
+    setting = f"{where.file}:{where.line}:{where.column}"
+    if host is None:
+        return setting
+    own = params.by_name.get((Parameter, f"{host.name.rstrip('/')}/{name}"))
+    if not isinstance(own, Parameter) or not own.set_by_launch:
+        return setting
+    if own.setting is None and own.launch_location == where:
+        own.setting = setting
+    return own.setting or setting
 
 
 def _exported(instance: NodeInstance, slot: Slot, params: Params,
@@ -990,9 +1021,11 @@ def _bounded(document: Any, limit: int = MAX_PARAM_VALUES) -> bool:
 
 def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
                 where: Location, conditions: tuple[Condition, ...],
-                placed: Mapping[str, Location] | None = None) -> None:
+                placed: Mapping[str, Location] | None = None,
+                settings: Mapping[str, str] | None = None) -> None:
     """The controller's parameters from the spawner's file, set as launch sets them;
-    ``placed``: where each is written, by full name (else ``where``)."""
+    ``placed``: where each is written, by full name (else ``where``); ``settings``: the
+    setting for several nodes each key comes from, if any (``Parameter.setting``)."""
     for key, value in values.items():
         parameter = params.get(Parameter, f"{node_name}/{key}")
         assert isinstance(parameter, Parameter)
@@ -1002,6 +1035,7 @@ def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
         parameter.set_by_launch = True
         parameter.launch_location = (placed or {}).get(parameter.name, where)
         parameter.launch_conditions = conditions
+        parameter.setting = (settings or {}).get(key)
 
 
 def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,

@@ -696,15 +696,19 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         action.later = []
         added: list[Any] = []
         elsewhere: list[Any] = []
+        context = Context(py)
         try:
             try:
-                result = i.call(function, [Context(py), *extra], extra_kwargs, n)
+                result = i.call(function, [context, *extra], extra_kwargs, n)
             finally:
                 for described, size in zip(given, sizes, strict=True):
                     holds = any(x is action for x in described.actions[:size])
                     (added if holds else elsewhere).extend(described.actions[size:])
                     del described.actions[size:]
             made = actions(i, result, n) if result is not None else []
+            # the configurations it set, for what it returns and what comes after it
+            made[:0] = [e.SetConfig(to_text(key), to_text(value), location=i.where(n))
+                        for key, value in context.assigned.items()]
             action.later = actions(i, added, n)
             if elsewhere:
                 i.unsupported(n, "actions an OpaqueFunction adds to a launch description "
