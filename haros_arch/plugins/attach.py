@@ -72,6 +72,7 @@ from .hosts import (
     sources_of,
     tree_host_of,
 )
+from .inherit import direct_bases
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -242,7 +243,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             _process_params(decl, reader, params,
                             host=instance if slot.names == SPAWNER else None)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
-        out.append((reader, _not_hosts(node.calls, instance)))
+        out.append((reader, _not_hosts(_with_base(node, index, workspace, models),
+                                       instance)))
         if slot.declares:  # the host's loading code declares them on the plugin's node
             out.append((reader, [PrimitiveCall(
                 "declare", name, location=choice.location, conditions=choice.conditions,
@@ -275,13 +277,36 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
 
 def _with_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
                models: PluginModels | None) -> list[PrimitiveCall]:
-    """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``)."""
+    """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``),
+    or of an exported base class of a package without source here that an interface
+    model describes (``_modelled_base``)."""
     base = EXTENDS.get((node.plugin_class or "").lstrip(":")) or EXTENDS.get(node.executable)
     found = _lookup(Choice("", base, node.location), index, workspace, models) if base else None
+    if found is None:
+        found = _modelled_base(node, index, workspace, models)
     if found is None or found is node:
         return list(node.calls)
     own = {_key(c) for c in node.calls}
     return [*node.calls, *(c for c in found.calls if _key(c) not in own)]
+
+
+def _modelled_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
+                   models: PluginModels | None) -> Node | None:
+    """The interface model of the exported plugin class a workspace plugin class derives
+    from, when the base's package has no source here: its code runs in the derived
+    class's node (UR's ``ScaledJointTrajectoryController : public joint_trajectory_
+    controller::JointTrajectoryController`` calls the base's ``on_init``,
+    ``on_configure``, ...: the action server and topics are the base's). A base of the
+    workspace is read from its source (``inherit.inherited_sources``)."""
+    if node.model is not None or not node.plugin_class or not node.sources:
+        return None
+    for base in direct_bases(node.plugin_class, node.sources, workspace):
+        if "::" not in base.strip(":") or UNKNOWN_MARK in base:
+            continue
+        found = _lookup(Choice("", base, node.location), index, workspace, models)
+        if found is not None and found is not node and found.model is not None:
+            return found
+    return None
 
 
 def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
