@@ -52,3 +52,33 @@ def generate_launch_description():
 """)
     assert any(d.code == "LAUNCH_PY_UNSUPPORTED" and "launch configuration" in d.message
                for d in model.diagnostics)
+
+
+def test_a_parameter_value_given_by_keyword(write_tree):
+    """ur_control.launch.py:219: ``ParameterValue(value=robot_description_content,
+    value_type=str)``. Only a value by position was read: the robot description was
+    ``None``, not the xacro command, and the controller manager's hardware unknown
+    (HARDWARE_UNKNOWN) though the description was in the workspace."""
+    model, _ = run(write_tree, """
+from launch.substitutions import Command
+from launch_ros.parameter_descriptions import ParameterValue
+
+def generate_launch_description():
+    xacro_file = os.path.join(get_package_share_directory('pkg'), 'urdf', 'r.urdf.xacro')
+    return LaunchDescription([
+        Node(package='p', executable='e', name='by_keyword', parameters=[{
+            'robot_description': ParameterValue(value=Command(['xacro ', xacro_file]),
+                                                value_type=str),
+            'rate': ParameterValue(value='5')}]),
+        Node(package='p', executable='e', name='by_position', parameters=[{
+            'robot_description': ParameterValue(Command(['xacro ', xacro_file]),
+                                                value_type=str),
+            'rate': ParameterValue('5')}]),
+    ])
+""")
+    commands = {p.name: p.command for p in model.params if p.name.endswith("description")}
+    assert commands["/by_keyword/robot_description"] == commands[
+        "/by_position/robot_description"]
+    assert commands["/by_keyword/robot_description"].startswith("xacro ")
+    values = {p.name: p.value for p in model.params}
+    assert values["/by_keyword/rate"] == values["/by_position/rate"] is not None

@@ -743,8 +743,11 @@ def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     value_type = k.get("value_type")
     as_text = isinstance(value_type, Unknown) is False and getattr(
         value_type, "qualified", "") == "str"
-    return e.ParamValue(to_text(a[0]) if a and as_text else param_value(a[0] if a else None),
-                        as_text)
+    # ``ParameterValue(value, *, value_type=None)``: the value by position or keyword (UR's
+    # ur_control.launch.py: ``ParameterValue(value=Command([...]), value_type=str)``)
+    given = bool(a) or "value" in k
+    value = arg(a, k, 0, "value")
+    return e.ParamValue(to_text(value) if given and as_text else param_value(value), as_text)
 
 
 def copy_of(deep: bool) -> Builder:
