@@ -577,6 +577,39 @@ def test_a_linked_class_that_is_a_node_of_its_own_stays_out(write_tree) -> None:
     assert "costmap" not in {c.name for c in node.calls}
 
 
+def test_a_linked_node_class_main_builds_is_a_node_of_the_process(write_tree) -> None:
+    """PlanSys2's plansys2_node: ``main()`` makes ``std::make_shared<plansys2::
+    DomainExpertNode>()``, ``ProblemExpertNode``, ``PlannerNode`` and ``ExecutorNode``,
+    classes of four other packages' libraries it links, and spins them in one executor.
+    Each is a node of its own, so their files were left out as their host's business:
+    plansys2_node had no call at all and was complete, the whole PlanSys2 core missing
+    from the graph. A class the program's own ``main()`` builds is one of its nodes."""
+    files = dict(NODES)
+    # a file naming the client library (a file that names none makes no call)
+    files["util/src/costmap_ros.cpp"] = NODES["util/src/costmap_ros.cpp"].replace(
+        'declare_parameter("resolution", 0.05);',
+        'declare_parameter("resolution", 0.05);\n          '
+        'RCLCPP_INFO(rclcpp::get_logger("costmap"), "made");')
+    files["server/src/server.cpp"] = """
+        #include "util/lifecycle_node.hpp"
+        #include "util/costmap_ros.hpp"
+        int main(int argc, char ** argv)
+        {
+          rclcpp::init(argc, argv);
+          rclcpp::executors::MultiThreadedExecutor exe;
+          auto costmap = std::make_shared<util::CostmapROS>("global_costmap");
+          auto other = std::make_shared<util::LifecycleNode>("other");
+          exe.add_node(costmap->get_node_base_interface());
+          exe.add_node(other->get_node_base_interface());
+          exe.spin();
+        }
+        """
+    node, _ = _node(write_tree, files, "server", "server")
+    assert "util/src/costmap_ros.cpp" in node.sources
+    assert "costmap" in {c.name for c in node.calls}
+    assert "resolution" in {c.name for c in node.calls if c.kind == "declare"}
+
+
 def test_a_nodelet_runs_the_named_files_of_another_package_it_links(write_tree) -> None:
     # mrs_uav_managers' nodelets (plugin classes of a library target linking
     # catkin_LIBRARIES) build mrs_lib's Profiler, which advertises "profiler": the

@@ -294,3 +294,36 @@ def test_plansys2_bt_action_node_is_a_tree_host_of_its_plugins_and_file(tmp_path
     config = build(Configuration("c"), launch, scan([str(tmp_path)]), {node.name: node})
     assert config.node("/move").completeness_reasons == [
         "behavior tree bt_xml_file not set: the tree is not known"]
+
+
+def test_a_library_of_a_package_on_behaviortree_cpp_through_another(tmp_path):
+    """PlanSys2's plansys2_bt_example builds its tree nodes' libraries
+    (``plansys2_move_bt_node``, ``BT_REGISTER_NODES``) and depends on plansys2_bt_actions,
+    which depends on behaviortree_cpp; it names none of BehaviorTree.CPP's packages
+    itself. Its libraries were not read: BT_LIBRARY_NOT_FOUND for each one the
+    bt_action_node instances load (10), BT_NODE_UNKNOWN for each tree node (10), and
+    the move action's ``navigate_to_pose`` client lost."""
+    path = _workspace(tmp_path)
+    manifest = path.parent.parent / "package.xml"
+    manifest.write_text(manifest.read_text().replace(
+        "<depend>behaviortree_cpp</depend>", "<depend>bt_base</depend>"))
+    base = tmp_path / "bt_base"
+    base.mkdir()
+    (base / "package.xml").write_text(
+        '<package format="3"><name>bt_base</name><version>1.0.0</version>'
+        "<description>x</description><maintainer email='a@b.c'>a</maintainer>"
+        "<license>x</license><buildtool_depend>ament_cmake</buildtool_depend>"
+        "<depend>behaviortree_cpp</depend><export><build_type>ament_cmake</build_type>"
+        "</export></package>")
+    (base / "CMakeLists.txt").write_text("cmake_minimum_required(VERSION 3.8)\n"
+                                         "project(bt_base)\n")
+    node = Node("plansys2_bt_actions", "bt_action_node")
+    decl = NodeDecl("/move", "plansys2_bt_actions", "bt_action_node", ros_version=2)
+    launch = LaunchModel(nodes=[decl], params=[
+        ParamDecl("/move/plugins", ["my_bt_nodes"]),
+        ParamDecl("/move/bt_xml_file", str(path))])
+    config = build(Configuration("c"), launch, scan([str(tmp_path)]), {node.name: node})
+    assert not [d for d in config.diagnostics if d.code == "BT_LIBRARY_NOT_FOUND"]
+    names = {(link.kind, link.resource.name) for link in config.links
+             if link.node.name == "/move"}
+    assert {("action-client", "/go_there"), ("client", "/clear_all")} <= names

@@ -87,3 +87,105 @@ def test_a_controller_gets_the_managers_dictionary_parameters(write_tree):
     unset = sorted(f.message.split(" is read")[0] for f in run_catalogue(model)
                    if f.rule == "parameter-read-not-set")
     assert unset == ["/robot/follower/mode"]
+
+
+LEADER = r"""
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <pluginlib/class_list_macros.hpp>
+
+namespace ros2_ctrl
+{
+class Leader
+{
+public:
+  bool on_init(rclcpp::Node::SharedPtr node)
+  {
+    bool gate = node->declare_parameter<bool>("gate", true);
+    return gate;
+  }
+};
+class Quiet
+{
+public:
+  bool on_init(rclcpp::Node::SharedPtr node)
+  {
+    return node->declare_parameter<int>("period", 1) > 0;
+  }
+};
+}  // namespace ros2_ctrl
+
+PLUGINLIB_EXPORT_CLASS(ros2_ctrl::Leader, controller_interface::ControllerInterface)
+PLUGINLIB_EXPORT_CLASS(ros2_ctrl::Quiet, controller_interface::ControllerInterface)
+"""
+
+PLUGINS_XML = """<library path="ros2_ctrl">
+  <class name="ros2_ctrl/Leader" type="ros2_ctrl::Leader"
+         base_class_type="controller_interface::ControllerInterface"/>
+  <class name="ros2_ctrl/Quiet" type="ros2_ctrl::Quiet"
+         base_class_type="controller_interface::ControllerInterface"/>
+</library>
+"""
+
+SPAWNED = """/robot/leader:
+  ros__parameters:
+    type: ros2_ctrl/Leader
+/robot/quiet:
+  ros__parameters:
+    type: ros2_ctrl/Quiet
+"""
+
+SHARED_LAUNCH = """
+import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    config = os.path.join(get_package_share_directory('ros2_bringup'), 'config',
+                          'spawned.yaml')
+    return LaunchDescription([
+        Node(package='controller_manager', executable='ros2_control_node',
+             namespace='robot',
+             parameters=[{'robot_description': '<robot/>', 'gate': False, 'nobody': 1}]),
+        Node(package='controller_manager', executable='spawner', namespace='robot',
+             arguments=['leader', 'quiet', '--param-file', config]),
+    ])
+"""
+
+
+def test_a_managers_dictionary_value_is_one_setting_for_its_controllers(write_tree):
+    """Universal_Robots_ROS2_Driver's ur_control.launch.py:246 gives ros2_control_node
+    ``{"verify_payload_on_set": ...}``, which launch_ros writes under ``/**``: every
+    controller of the process gets it, and only the io_and_status_controller reads it.
+    It was "set but never read" once per other controller (15 warnings); a value for the
+    whole process is unread only when none of its nodes reads it."""
+    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
+             for name in ("CMakeLists.txt", "package.xml")}
+    files["src/ros2_ctrl/ros2_ctrl.xml"] = PLUGINS_XML
+    files["src/ros2_ctrl/src/follower.cpp"] = LEADER
+    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
+                  for name in ("CMakeLists.txt", "package.xml")})
+    files["src/ros2_bringup/params/spawned.yaml"] = SPAWNED
+    files["src/ros2_bringup/launch/c.launch.py"] = SHARED_LAUNCH
+    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
+                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    root = write_tree(files)
+    model = analyse(load(os.path.join(root, "project.yaml")), {},
+                    Options(cache_dir=None, jobs=1))
+    config = model.configuration("c")
+    gate = config.parameter("/robot/quiet/gate")
+    assert gate is not None and gate.set_by_launch
+    leader = config.parameter("/robot/leader/gate")
+    assert leader is not None and [r.node.name for r in leader.readers] == ["/robot/leader"]
+    findings = run_catalogue(model)
+    unread = sorted(f.message.split(" is set")[0] for f in findings
+                    if f.rule == "parameter-set-not-read")
+    # ``gate`` is read by one node of the process; ``nobody`` by none it reaches: said
+    # once, for the manager, whose own reads are partly unseen (undecided)
+    assert unread == []
+    undecided = [f.message for f in findings if f.rule == "parameter-set-not-read-undecided"]
+    assert len(undecided) == 1 and "/robot/controller_manager/nobody" in undecided[0]
+    assert "gate" not in undecided[0]

@@ -26,6 +26,7 @@ from ..plugins.classes import (
     defined_in,
     derives_from,
     exported_classes,
+    main_words,
     named_closure,
     named_helpers,
     named_words,
@@ -259,18 +260,21 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     through ``plugins.hosts``, not by linking), nor a class that is a node of its own,
     which makes its calls on that node (nav2's Costmap2DROS in the planner server: its
     host makes it an instance) unless it is this node's own base class (nav2_util's
-    LifecycleNode)."""
+    LifecycleNode) or a node the program's ``main()`` builds itself, one of the nodes of
+    its process (PlanSys2's plansys2_node: the domain expert, problem expert, planner and
+    executor nodes of four other packages)."""
     if not kept:
         return kept
     # a class or function the node's own files define is theirs, whatever another
     # package calls the same (opennav_following's ParameterHandler against
     # opennav_docking's)
     words = code_words(kept, workspace) - defined_in(kept, workspace)
+    built = frozenset().union(*(main_words(s, workspace) for s in kept))
     found: list[str] = []
     for group in sources.elsewhere(target):
         others = [s for s in group if s not in kept
                   and not exported_classes(os.path.join(workspace.root, s), workspace)
-                  and all(derives_from(cls, kept, workspace)
+                  and all(cls in built or derives_from(cls, kept, workspace)
                           for cls in node_classes(s, workspace))]
         found.extend(named_closure(words, others, workspace, anonymous=False))
     # a file that names no ROS client library makes no call of the node (its parse

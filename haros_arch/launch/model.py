@@ -70,6 +70,9 @@ class NodeDecl:
     # (LAUNCH_PARAM_FILE) only if the node is not named from its code after all
     # (``graph.processes.unnamed_param_files``)
     unnamed_param_files: list[Location] = field(default_factory=list, repr=False)
+    # ROS 2: the command line of each argument that is a ``Command``'s output (``ros_gz_sim
+    # create -string <xacro ...>``), by its index among the words of ``args``
+    arg_commands: dict[int, str] = field(default_factory=dict, repr=False)
 
 
 @dataclass

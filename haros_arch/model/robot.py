@@ -40,7 +40,9 @@ class DescribedControl:
 
 @dataclass
 class RobotDescription:
-    name: str  # the parameter (``/robot_description``) or the file the spawner names
+    # the parameter (``/robot_description``), the file the spawner names, or the command
+    # line whose output its ``-string`` is
+    name: str
     file: str | None = None  # the top file read (workspace-relative), None if unknown
     location: Location = NOWHERE  # where the launch file gives it (param, spawner)
     files: list[str] = field(default_factory=list)

@@ -72,6 +72,7 @@ from .hosts import (
     sources_of,
     tree_host_of,
 )
+from .inherit import direct_bases
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -239,9 +240,11 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             # a node the process makes: its files apply by name (a controller's section
             # of the file given to ros2_control_node, after its spawner's file, whose
             # values win: rcl's global arguments reach every node of the process)
-            _process_params(decl, reader, params, declared=slot.names == SPAWNER)
+            _process_params(decl, reader, params,
+                            host=instance if slot.names == SPAWNER else None)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
-        out.append((reader, _not_hosts(node.calls, instance)))
+        out.append((reader, _not_hosts(_with_base(node, index, workspace, models),
+                                       instance)))
         if slot.declares:  # the host's loading code declares them on the plugin's node
             out.append((reader, [PrimitiveCall(
                 "declare", name, location=choice.location, conditions=choice.conditions,
@@ -274,13 +277,36 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
 
 def _with_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
                models: PluginModels | None) -> list[PrimitiveCall]:
-    """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``)."""
+    """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``),
+    or of an exported base class of a package without source here that an interface
+    model describes (``_modelled_base``)."""
     base = EXTENDS.get((node.plugin_class or "").lstrip(":")) or EXTENDS.get(node.executable)
     found = _lookup(Choice("", base, node.location), index, workspace, models) if base else None
+    if found is None:
+        found = _modelled_base(node, index, workspace, models)
     if found is None or found is node:
         return list(node.calls)
     own = {_key(c) for c in node.calls}
     return [*node.calls, *(c for c in found.calls if _key(c) not in own)]
+
+
+def _modelled_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
+                   models: PluginModels | None) -> Node | None:
+    """The interface model of the exported plugin class a workspace plugin class derives
+    from, when the base's package has no source here: its code runs in the derived
+    class's node (UR's ``ScaledJointTrajectoryController : public joint_trajectory_
+    controller::JointTrajectoryController`` calls the base's ``on_init``,
+    ``on_configure``, ...: the action server and topics are the base's). A base of the
+    workspace is read from its source (``inherit.inherited_sources``)."""
+    if node.model is not None or not node.plugin_class or not node.sources:
+        return None
+    for base in direct_bases(node.plugin_class, node.sources, workspace):
+        if "::" not in base.strip(":") or UNKNOWN_MARK in base:
+            continue
+        found = _lookup(Choice("", base, node.location), index, workspace, models)
+        if found is not None and found is not node and found.model is not None:
+            return found
+    return None
 
 
 def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
@@ -305,19 +331,49 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
 
 
 def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params,
-                    declared: bool = False) -> None:
+                    host: NodeInstance | None = None) -> None:
     """The entries of the process's parameter files that name a node it makes; the
-    ``/**`` ones too when the node declares every override it is given (``declared``:
+    ``/**`` ones too when the node declares every override it is given (a ``host``:
     ros2_control's controllers, made with ``automatically_declare_parameters_from_
     overrides(true)``, get the ``robot_description`` a launch file gives the manager as
     a dictionary, which launch_ros writes under ``/**``); else not, a node the code makes
-    having those only where it declares them."""
+    having those only where it declares them.
+
+    A ``/**`` value reaches the host and each of its controllers alike: a setting for
+    several nodes (``Parameter.setting``), unread only when none of them reads it (UR's
+    driver gives its manager ``verify_payload_on_set``, which one controller reads)."""
     for document, where in decl.param_files:
-        values = {name: value for pattern, entries in node_patterns(document)
-                  if (pattern != "/**" or declared) and (
-                      pattern == "/**" or pattern_matches(pattern, instance.name))
-                  for name, value in flatten(entries)}
-        _set_params(params, instance.name, values, where, instance.conditions)
+        values: dict[str, Any] = {}
+        shared: dict[str, str] = {}
+        for pattern, entries in node_patterns(document):
+            if pattern == "/**" and host is None:
+                continue
+            if pattern != "/**" and not pattern_matches(pattern, instance.name):
+                continue
+            for name, value in flatten(entries):
+                values[name] = value
+                if pattern == "/**":
+                    shared[name] = _host_setting(params, host, name, where)
+                else:
+                    shared.pop(name, None)
+        _set_params(params, instance.name, values, where, instance.conditions,
+                    settings=shared)
+
+
+def _host_setting(params: Params, host: NodeInstance | None, name: str,
+                  where: Location) -> str:
+    """The setting a ``/**`` value of the host's parameter files is: the one the host's
+    own copy has (a file given to several nodes), else the place of the entry, which the
+    host's copy then takes when it came from that entry."""
+    setting = f"{where.file}:{where.line}:{where.column}"
+    if host is None:
+        return setting
+    own = params.by_name.get((Parameter, f"{host.name.rstrip('/')}/{name}"))
+    if not isinstance(own, Parameter) or not own.set_by_launch:
+        return setting
+    if own.setting is None and own.launch_location == where:
+        own.setting = setting
+    return own.setting or setting
 
 
 def _exported(instance: NodeInstance, slot: Slot, params: Params,
@@ -990,9 +1046,11 @@ def _bounded(document: Any, limit: int = MAX_PARAM_VALUES) -> bool:
 
 def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
                 where: Location, conditions: tuple[Condition, ...],
-                placed: Mapping[str, Location] | None = None) -> None:
+                placed: Mapping[str, Location] | None = None,
+                settings: Mapping[str, str] | None = None) -> None:
     """The controller's parameters from the spawner's file, set as launch sets them;
-    ``placed``: where each is written, by full name (else ``where``)."""
+    ``placed``: where each is written, by full name (else ``where``); ``settings``: the
+    setting for several nodes each key comes from, if any (``Parameter.setting``)."""
     for key, value in values.items():
         parameter = params.get(Parameter, f"{node_name}/{key}")
         assert isinstance(parameter, Parameter)
@@ -1002,6 +1060,7 @@ def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
         parameter.set_by_launch = True
         parameter.launch_location = (placed or {}).get(parameter.name, where)
         parameter.launch_conditions = conditions
+        parameter.setting = (settings or {}).get(key)
 
 
 def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,

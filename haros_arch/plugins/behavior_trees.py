@@ -118,8 +118,9 @@ def libraries(workspace: Workspace) -> Libraries:
 
 def _libraries(workspace: Workspace) -> Libraries:
     found = Libraries()
+    using = _using_bt(workspace)
     for package in workspace.packages.values():
-        if not any(d.name in BT_PACKAGES for d in package.dependencies):
+        if package.name not in using:
             continue
         targets, _ = targets_of(package, workspace)
         for target in targets:
@@ -137,6 +138,22 @@ def _libraries(workspace: Workspace) -> Libraries:
                 found.by_library.setdefault(name, registered)
                 found.by_package.setdefault(package.name, []).append(name)
     return found
+
+
+def _using_bt(workspace: Workspace) -> set[str]:
+    """The workspace packages that depend on BehaviorTree.CPP, directly or through other
+    workspace packages (PlanSys2's plansys2_bt_example builds its tree nodes' libraries
+    with plansys2_bt_actions, which depends on behaviortree_cpp)."""
+    using: set[str] = set()
+    changed = True
+    while changed:
+        changed = False
+        for package in workspace.packages.values():
+            if package.name not in using and any(
+                    d.name in BT_PACKAGES or d.name in using for d in package.dependencies):
+                using.add(package.name)
+                changed = True
+    return using
 
 
 def _registrations(path: str, library: str, workspace: Workspace) -> list[Registered]:

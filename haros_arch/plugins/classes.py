@@ -529,6 +529,31 @@ def node_classes(source: str, workspace: Files) -> set[str]:
     return remembered("node classes", source, workspace, compute)
 
 
+_MAIN = re.compile(r"\bint\s+main\s*\([^)]*\)\s*\{")
+MAX_MAIN_BODY = 200_000  # characters of a main() body read for the classes it names
+
+
+def main_words(source: str, workspace: Files) -> frozenset[str]:
+    """The words of the body of the ``main()`` a source file defines (none without one):
+    the classes a program builds itself, as nodes of its process (PlanSys2's plansys2_node
+    makes ``DomainExpertNode``, ``ProblemExpertNode``, ... of other packages' libraries)."""
+    def compute() -> frozenset[str]:
+        text = _text(os.path.join(workspace.root, source), workspace)
+        code = code_only(text) if text else ""
+        found = _MAIN.search(code)
+        if found is None:
+            return frozenset()
+        depth, end = 1, min(len(code), found.end() + MAX_MAIN_BODY)
+        for index in range(found.end(), end):
+            depth += {"{": 1, "}": -1}.get(code[index], 0)
+            if depth == 0:
+                end = index
+                break
+        return frozenset(_WORD.findall(code[found.end():end]))
+
+    return remembered("main words", source, workspace, compute)
+
+
 # the ROS client libraries (and the API libraries the extractor knows) named in code
 _ROS_CODE = re.compile(r"\b(?:ros|rclcpp|rclcpp_lifecycle|rclcpp_action|nodelet|actionlib|"
                        r"image_transport|tf2_ros|message_filters)::|\bNodeHandle\b")

@@ -129,6 +129,13 @@ def chain(cls: str, files: list[str], workspace: Files,
     return out
 
 
+def direct_bases(cls: str, sources: Sequence[str], workspace: Files) -> list[str]:
+    """The base classes the declaration of ``cls`` in ``sources`` (or the headers they
+    include) lists, as written (``joint_trajectory_controller::JointTrajectoryController``)."""
+    return _bases(_plain(cls), [text for source in sources
+                                for text in with_headers(source, workspace, HEADER_DEPTH)])
+
+
 def _qualifier(name: str) -> str | None:
     """The innermost namespace a class name is written with (``a::b::C``: ``b``)."""
     parts = [p.strip() for p in _untemplated(name).strip().lstrip(":").split("::")]

@@ -79,6 +79,9 @@ class Spawn:
     topic: str | None = None
     model: str | None = None
     robot_namespace: str | None = None
+    # ``-string``: the command line whose output it is (``Command(["xacro ", file])``)
+    command: str | None = None
+    string: bool = False
 
 
 def spawn_args(decl: NodeDecl, ros_version: int) -> Spawn:
@@ -104,6 +107,9 @@ def spawn_args(decl: NodeDecl, ros_version: int) -> Spawn:
                 spawn.model = value
             elif word == "-robot_namespace":
                 spawn.robot_namespace = value
+            elif word == "-string":
+                spawn.string = True
+                spawn.command = decl.arg_commands.get(index - 1)
             continue
         index += 1
     return spawn
@@ -274,7 +280,9 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
                 "is not given by a xacro command"
             _note(config, decl.location, f"parameter {name} {what}")
             return None
-        return _from_command(param, name, workspace, config)
+        return _from_command(param.command, name, param.location, workspace, config)
+    if spawn.command is not None:  # ros_gz_sim's -string: the output of a xacro command
+        return _from_command(spawn.command, spawn.command, decl.location, workspace, config)
     if spawn.topic is not None:  # ROS 2: robot_state_publisher's latched description
         topic = resolve(spawn.topic, decl.namespace)
         for param in reversed(launch.params):
@@ -282,11 +290,14 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
                     and clean(namespace_of(param.node) + "robot_description") == topic):
                 if param.command is None:
                     break
-                return _from_command(param, topic, workspace, config)
+                return _from_command(param.command, topic, param.location, workspace,
+                                     config)
         _note(config, decl.location, f"no node of the configuration is given the "
                                      f"description published on {topic} by a xacro command")
         return None
-    _note(config, decl.location, "the spawner's description (-database, -stdin) is not read")
+    _note(config, decl.location, "the spawner's description ("
+          + ("-string, not a command's output" if spawn.string else "-database, -stdin")
+          + ") is not read")
     return None
 
 
@@ -453,20 +464,20 @@ def xacro_command(command: str) -> XacroCommand | None:
     return None
 
 
-def _from_command(param: ParamDecl, name: str, workspace: Workspace,
+def _from_command(command: str | None, name: str, where: Location, workspace: Workspace,
                   config: Configuration,
                   ) -> tuple[RobotDescription, xacro.Description] | None:
-    assert param.command is not None
-    parsed = xacro_command(param.command)
+    assert command is not None
+    parsed = xacro_command(command)
     if parsed is None:
-        _note(config, param.location, f"command \"{param.command}\" is not a xacro command")
+        _note(config, where, f"command \"{command}\" is not a xacro command")
         return None
     if UNKNOWN_MARK in parsed.path:
-        _note(config, param.location, f"the xacro file {parsed.path} is not known")
+        _note(config, where, f"the xacro file {parsed.path} is not known")
         return None
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
               for key, value in parsed.args.items()}
-    return _expanded(parsed.path, values, name, param.location, workspace, config,
+    return _expanded(parsed.path, values, name, where, workspace, config,
                      by_xacro=parsed.by_xacro)
 
 

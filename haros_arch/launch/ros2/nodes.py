@@ -67,6 +67,10 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         args=" ".join(plain if action.split else map(_quoted, plain)), remaps=remaps,
         conditions=scope.conditions, location=where,
         name_given=given is not None or parsed.node_name is not None))
+    if not action.split:  # one word per argument: a Command's output is one of them
+        runner.model.nodes[-1].arg_commands = {
+            index: line for index, argument in enumerate(action.arguments[:len(plain)])
+            if (line := command_line(argument, ev)) is not None}
     entries: list[e.ParamEntry] = list(action.parameters)
     entries += [e.ParamFile((path,), location=where) for path in parsed.params_files]
     entries += [((key,), (value,)) for key, value in parsed.params]

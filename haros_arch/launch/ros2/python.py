@@ -50,6 +50,7 @@ from .python_values import (
     ActionClass,
     Budget,
     Constructing,
+    Context,
     EnumMember,
     FieldFactory,
     Func,
@@ -651,6 +652,16 @@ class Interpreter(Expressions):
             elif isinstance(container, list) and isinstance(key, int) and (
                     -len(container) <= key < len(container)):
                 container[key] = value
+            elif isinstance(container, Context) and isinstance(target.value, ast.Attribute):
+                # ``context.launch_configurations[key] = value`` in an OpaqueFunction (UR's
+                # ur_control.launch.py: the update rate read from a file, for the
+                # ``$(var update_rate)`` of a parameter file)
+                if isinstance(key, str):
+                    container.assigned[key] = value
+                else:
+                    self.unsupported(target, f"{_source(target)} = ...: a launch "
+                                             "configuration whose name is not known "
+                                             "statically")
         elif isinstance(target, ast.Attribute) and isinstance(
                 owner := self.eval(target.value, env), (Constructing, Instance)):
             owner.attributes[target.attr] = value  # self.name = ... in a constructor

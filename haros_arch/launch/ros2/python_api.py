@@ -696,15 +696,19 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         action.later = []
         added: list[Any] = []
         elsewhere: list[Any] = []
+        context = Context(py)
         try:
             try:
-                result = i.call(function, [Context(py), *extra], extra_kwargs, n)
+                result = i.call(function, [context, *extra], extra_kwargs, n)
             finally:
                 for described, size in zip(given, sizes, strict=True):
                     holds = any(x is action for x in described.actions[:size])
                     (added if holds else elsewhere).extend(described.actions[size:])
                     del described.actions[size:]
             made = actions(i, result, n) if result is not None else []
+            # the configurations it set, for what it returns and what comes after it
+            made[:0] = [e.SetConfig(to_text(key), to_text(value), location=i.where(n))
+                        for key, value in context.assigned.items()]
             action.later = actions(i, added, n)
             if elsewhere:
                 i.unsupported(n, "actions an OpaqueFunction adds to a launch description "
@@ -739,8 +743,11 @@ def parameter_value(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     value_type = k.get("value_type")
     as_text = isinstance(value_type, Unknown) is False and getattr(
         value_type, "qualified", "") == "str"
-    return e.ParamValue(to_text(a[0]) if a and as_text else param_value(a[0] if a else None),
-                        as_text)
+    # ``ParameterValue(value, *, value_type=None)``: the value by position or keyword (UR's
+    # ur_control.launch.py: ``ParameterValue(value=Command([...]), value_type=str)``)
+    given = bool(a) or "value" in k
+    value = arg(a, k, 0, "value")
+    return e.ParamValue(to_text(value) if given and as_text else param_value(value), as_text)
 
 
 def copy_of(deep: bool) -> Builder:

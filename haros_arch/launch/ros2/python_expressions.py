@@ -338,6 +338,8 @@ class Expressions(Walker):
         if isinstance(value, _Environ):
             return value.get(self, [key], node)
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
+            if isinstance(key, str) and key in value.assigned:
+                return value.assigned[key]
             return value.perform((e.Var(_text_of(key)),))
         if isinstance(value, (list, tuple)) and value and _opaque(key) and all(
                 isinstance(item, e.Action) for item in value):

@@ -225,9 +225,13 @@ class LaunchDescription:
 
 @dataclass(frozen=True)
 class Context:
-    """The ``context`` an ``OpaqueFunction`` receives: reads the runner's scope."""
+    """The ``context`` an ``OpaqueFunction`` receives: reads the runner's scope.
+    ``assigned``: the launch configurations the function sets
+    (``context.launch_configurations["rate"] = ...``), which it reads back and the
+    actions after it see."""
 
     perform: Callable[[e.Text], Any]
+    assigned: dict[str, Any] = field(default_factory=dict, compare=False)
 
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
