@@ -1391,7 +1391,11 @@ struct haros_manip {};
 haros_manip setprecision(int n);
 haros_manip setw(int n);
 haros_manip setfill(char c);
+haros_manip put_time(const tm* t, const char* format);
+haros_manip get_time(tm* t, const char* format);
 ostream& operator<<(ostream& os, haros_manip m);
+istream& operator>>(istream& is, haros_manip m);
+istream& operator>>(istream&& is, haros_manip m);
 class stringstream : public iostream {
 public:
   stringstream();
