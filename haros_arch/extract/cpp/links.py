@@ -483,6 +483,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 whole) else None
             if made.name == "?" and classes:
                 made = dataclasses.replace(made, host_named=classes)
+            if made.struct_member and made.name.startswith(("?", "~?")):
+                continue  # what was handed is no parameter's value: nothing read
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,

@@ -238,6 +238,31 @@ def _names_resolve(target: Cursor) -> bool:
             and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
 
 
+def _names_clean(target: Cursor) -> bool:
+    """roscpp's ``ros::names::clean(name)`` (``_cleaned``)."""
+    parent = target.semantic_parent
+    grand = None if parent is None else parent.semantic_parent
+    return (target.spelling == "clean" and parent is not None
+            and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
+
+
+def _cleaned(name: Parts) -> Parts:
+    """``ros::names::clean(name)``: each run of slashes one slash, and a last slash
+    dropped, as roscpp does, in the text the name is known by (image_pipeline's
+    stereo_view: ``clean(stereo_ns + "/left" + image)``, ``stereo_ns`` a handle's
+    ``resolveName``); an unknown run stays as it is."""
+    merged: list[str | None] = []
+    for part in name:
+        if type(part) is str and merged and type(merged[-1]) is str:
+            merged[-1] += part
+        else:
+            merged.append(part)
+    out = [re.sub("/{2,}", "/", part) if type(part) is str else part for part in merged]
+    if out and type(out[-1]) is str and out[-1].endswith("/"):
+        out[-1] = out[-1][:-1]
+    return tuple(out)
+
+
 def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
@@ -1057,6 +1082,8 @@ class Scope:
             return self.string(args[0], depth + 1)
         if args and _expands(target):
             return _expanded(self.string(args[0], depth + 1))
+        if len(args) == 1 and _names_clean(target):
+            return _cleaned(self.string(args[0], depth + 1))
         if args and _handle_resolve(target):
             return self._handle_resolved(call, args[0], depth)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
@@ -1213,6 +1240,8 @@ class Scope:
         if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
             inner = operand(cursor) if target is None else args[0]
             return None if inner is None else self.names_prefix(inner, depth + 1)
+        if len(args) == 1 and _names_clean(target):  # the same start, slashes cleaned
+            return self.names_prefix(args[0], depth + 1)
         if args and _handle_resolve(target):  # a handle's: in the handle's namespace
             written = render(self.string(cursor, depth + 1))
         elif not args or not _names_resolve(target):

@@ -78,6 +78,7 @@ from .values import (
     Scope,
     SearchedName,
     _method_object,
+    _textual,
     argument_of,
     initializer,
     literal,
@@ -592,6 +593,8 @@ class CallFinder:
                     self._vendor_member_call(node)  # (so too in the walk, after a return)
                 if spelling == "operator[]" and not self.ros2 and _struct_subscript(node):
                     return True  # a struct parameter's member read by key
+                if spelling == "bind" and _bound_api(node) is not None:
+                    return True
                 if spelling in _API_NAMES or (spelling and spelling in names) or (
                     not spelling and _recovered_name(node) in rows
                 ) or constructed_class(node, self.owned) is not None:
@@ -690,6 +693,11 @@ class CallFinder:
                 self._vendor_member_call(node)
             elif node.kind == CursorKind.CALL_EXPR and node.spelling == api.NODELET_LOAD[1]:
                 self._nodelet_load(node, conditions, scope)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == "bind":
+                bound = _bound_api(node)
+                if bound is not None:  # the call the bound function object makes
+                    self._emit(bound, node, written_arguments(node)[1:], None, conditions,
+                               scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
@@ -2443,8 +2451,9 @@ class CallFinder:
             return None
         inner = strip(expr)
         found = _subscript(inner)
-        if found is not None:
-            base = self._struct_path(found[0], scope, depth + 1)
+        if found is not None:  # a member by key (a list's element is the list's value)
+            base = self._struct_path(found[0], scope, depth + 1) if _textual(
+                found[1]) else None
             return None if base is None else (*base, "/", *scope.string(found[1]))
         over = struct_member_of(inner, scope)
         if over is not None:
@@ -2458,13 +2467,15 @@ class CallFinder:
         if decl is not None and decl.kind == CursorKind.PARM_DECL and (
                 scope.sites is not None and is_struct_value(decl.type)):
             unknown: tuple[str | None, ...] = (None,)
-            value = scope.sites.agreed(decl, lambda arg, site: self._struct_path(
-                arg, site, depth + 1) or unknown, unknown)
+            value = scope.sites.agreed(decl, lambda arg, site: (None if _local(
+                arg) else self._struct_path(arg, site, depth + 1)) or unknown, unknown)
             return value if isinstance(value, tuple) and value != (None,) else None
         return None
 
     def _struct_text(self, expr: Cursor, scope: Scope) -> str | None:
         """``_struct_path`` as a fact's value (``links.argument_facts``)."""
+        if _local(expr):
+            return None  # a struct read whole (its own read reads all of it)
         path = self._struct_path(expr, scope) if is_struct_value(expr.type) else None
         return render(path) if path is not None and path[0] is not None else None
 
@@ -2476,7 +2487,8 @@ class CallFinder:
         struct reads the keys alone: ``keys_only``). A member of a local variable a read
         fills is read by that read."""
         found = _subscript(call)
-        if found is None or not is_struct_value(strip(found[0]).type):
+        if found is None or not is_struct_value(strip(found[0]).type) or not _textual(
+                found[1]):
             return
         base = strip(found[0])
         while (below := _subscript(base)) is not None:
@@ -2492,7 +2504,7 @@ class CallFinder:
         if path is None or path[0] is None:
             return  # no parameter's (or one not known: its own read is whole)
         self.calls.append(PrimitiveCall(kind="read", name=render(path), conditions=conditions,
-                                        location=self.where(expr)))
+                                        location=self.where(expr), struct_member=True))
 
     def _struct_parameters(self, function: Cursor, conditions: tuple[Condition, ...],
                            scope: Scope) -> None:
@@ -3312,6 +3324,37 @@ def struct_member_of(expr: Cursor, scope: Scope) -> Cursor | None:
                 strip(header[1]).type):
             return header[1]
     return None
+
+
+def _bound_api(call: Cursor) -> api.RosFunction | None:
+    """The API row of the free function ``std::bind`` / ``boost::bind`` binds, with the
+    arguments after it (ros_canopen's ``std::bind(ros::service::call<SwitchController>,
+    "controller_manager/switch_controller", srv)``, run in a ``boost::thread``): the
+    call the function object makes, read as made where it is bound; None for any other
+    bind (a method, a lambda, a function of no row)."""
+    target = call.referenced
+    space = target.semantic_parent if target is not None else None
+    if target is None or space is None or space.spelling not in ("std", "boost"):
+        return None
+    args = written_arguments(call)
+    bound = strip(args[0]) if args else None
+    if bound is not None and bound.kind == CursorKind.UNARY_OPERATOR:  # ``&f``
+        inner = [c for c in bound.get_children() if c.kind.is_expression()]
+        bound = strip(inner[0]) if len(inner) == 1 else None
+    function = bound.referenced if bound is not None and (
+        bound.kind == CursorKind.DECL_REF_EXPR) else None
+    if function is None or function.kind != CursorKind.FUNCTION_DECL:
+        return None
+    spec = api.ALL.get((qualified_name(function.semantic_parent), function.spelling))
+    return spec if spec is not None and not spec.on_handle else None
+
+
+def _local(expr: Cursor) -> bool:
+    """Whether ``expr`` is a local variable (a struct handed on whole: what a read
+    fills is read whole by it, and one no read fills is no parameter's)."""
+    inner = strip(expr)
+    return inner.kind == CursorKind.DECL_REF_EXPR and inner.referenced is not None and (
+        inner.referenced.kind == CursorKind.VAR_DECL)
 
 
 def _same(one: Cursor | None, other: Cursor | None) -> bool:

@@ -32,6 +32,8 @@ void getSubscribedTopics(V_string& topics);
 namespace names {
 std::string resolve(const std::string& name, bool remap = true);
 std::string append(const std::string& left, const std::string& right);
+std::string clean(const std::string& name);
+std::string parentNamespace(const std::string& name);
 const M_string& getRemappings();
 const M_string& getUnresolvedRemappings();
 }
