@@ -5,7 +5,8 @@ then ``PublishedRigidBody body(i->second)``, whose constructor in mocap_config.c
 ``config_node["child_frame_id"]``, through a helper ``validateParam(config_node, name)``
 too) reads those keys of each member, not every key under the namespace: a key no
 member reads (rigid body 2's ``frame_id``) is set and never read. A member used whole
-(converted, passed to code not read) still reads everything under it."""
+(converted, passed to code not read) still reads everything under it; a struct the code
+makes is no parameter's, and what its receiver takes from it no read."""
 
 from __future__ import annotations
 
@@ -75,6 +76,9 @@ NODE = """
           }
         }
       }
+      XmlRpc::XmlRpcValue made;
+      made["child_frame_id"] = std::string("c");
+      Body other(made);
       XmlRpc::XmlRpcValue gain_list;
       n.getParam("gain_sets", gain_list);
       for (auto& pair : gain_list) {
@@ -121,6 +125,8 @@ def test_struct_members_handed_to_a_constructor_read_their_keys(write_tree):
     assert ("~gain_sets/?", False) in reads
     assert {"~rigid_bodies/?/child_frame_id", "~rigid_bodies/?/parent_frame_id"} <= {
         name for name, _ in reads}
+    # a struct the code makes itself is no parameter: the constructor reads none there
+    assert not [name for name, _ in reads if name.startswith("?")]
     unread = sorted(f.entities[0] for f in run_catalogue(model)
                     if f.rule == "parameter-set-not-read")
     assert unread == ["parameter:/bodies/rigid_bodies/2/frame_id"]
