@@ -1012,10 +1012,27 @@ class Scope:
             return UNKNOWN
         if binary_operator(cursor, children) != "+":
             return UNKNOWN
-        left, right = (self.string(c, depth + 1) for c in children)
+        left, right = self.string(children[0], depth + 1), self._appended(children[1], depth)
         if all(part is None for part in (*left, *right)):
             return UNKNOWN
         return left + right
+
+    def _appended(self, cursor: Cursor, depth: int) -> Parts:
+        """The value of a string appended to another: a name roscpp resolved
+        (``NodeHandle::resolveName``, ``ros::names::resolve``, as written or held in a
+        local) is a global name there, the node's namespace (not known here) before it
+        (``_expanded``; image_view's stereo_view: ``stereo_ns + "/left/" +
+        nh.resolveName("image")``, ``stereo/left/?/image``); it is taken as written only
+        where it begins a call's name (``names_prefix``)."""
+        value = self.string(cursor, depth + 1)
+        held = strip(cursor)
+        if held.kind == CursorKind.DECL_REF_EXPR and held.referenced is not None:
+            held = strip(self.variable(held.referenced) or held)
+        target = held.referenced if held.kind == CursorKind.CALL_EXPR else None
+        if target is not None and written_arguments(held) and (
+                _handle_resolve(target) or _names_resolve(target)):
+            return _expanded(value)
+        return value
 
     def field(self, decl: Cursor, initial: bool = False) -> tuple[Cursor, Scope] | None:
         """A member this function does not write: the value its class's constructor
@@ -1047,7 +1064,7 @@ class Scope:
                 type(text[0]) is str and text[0]) else UNKNOWN
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
-            return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)
+            return self.string(args[0], depth + 1) + self._appended(args[1], depth)
         if call.spelling in ('operator""s', 'operator""sv') and args and (
                 strip(args[0]).kind == CursorKind.STRING_LITERAL):
             # std's string literal, ``"/change_state"s`` (ouster's lifecycle client)
