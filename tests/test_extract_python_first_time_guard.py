@@ -1,7 +1,8 @@
 """Python nodes as C++ ones (``ConditionReader._guards_first_time``): ``if
 self._initialized: return`` before ``self._initialized = True`` guards what the method
 does once, and its first run goes past it: what follows is under no condition of the
-test. A test of something the rest does not set keeps the rest under its ``else``; and
+test. A test of something the rest does not set, or that the code may first set to a
+value of its own, keeps the rest under its ``else``; and
 a test of a loop variable whose value the unrolled loop knows is decided there
 (``for side in ['left', 'right']: if side == 'skip': continue``), as C++ decides it."""
 
@@ -19,6 +20,9 @@ class Arms(object):
     def __init__(self):
         self._initialized = False
         self._enabled = rospy.get_param("~enabled", True)
+        self._matrix = None
+        if rospy.has_param("~matrix"):
+            self._matrix = rospy.get_param("~matrix")
 
     def start(self):
         if self._initialized:
@@ -33,6 +37,15 @@ class Arms(object):
                 continue
             rospy.Publisher(side + "/cmd", String, queue_size=1)
 
+    def calibrate(self):
+        if self._matrix is not None:
+            return
+        self.tf = rospy.Subscriber("tf", String, self.on_tf)
+        self._matrix = [1.0]
+
+    def on_tf(self, msg):
+        pass
+
     def enable(self):
         if not self._enabled:
             return
@@ -45,6 +58,7 @@ def main():
     arms.start()
     arms.sides()
     arms.enable()
+    arms.calibrate()
     rospy.spin()
 
 
@@ -64,7 +78,7 @@ def _calls(tmp_path):
     script.write_text(NODE)
     result = extract_python([str(script)], scan([str(tmp_path)]), package="arms")
     return {(c.kind, c.name): [(k.statement, k.text) for k in c.conditions]
-            for c in result.calls if c.kind == "publish"}
+            for c in result.calls if c.kind in ("publish", "subscribe")}
 
 
 def test_a_first_time_guard_makes_no_condition(tmp_path):
@@ -72,6 +86,8 @@ def test_a_first_time_guard_makes_no_condition(tmp_path):
     assert calls["publish", "state"] == []
     # a member the rest does not set: the rest is under the test's else
     assert calls["publish", "on"] == [("else", "not self._enabled")]
+    # nor a member the code may set to a value of its own (a parameter's) first
+    assert calls["subscribe", "tf"] == [("else", "self._matrix is not None")]
 
 
 def test_a_test_of_an_unrolled_loop_variable_is_decided(tmp_path):

@@ -293,8 +293,8 @@ class Walker:
                 _, yes, no = self._tested_if
                 first, second = _leaves(statement.body), _leaves(statement.orelse)
                 if first == "done" and second is None:
-                    if statement.orelse or not _guards_first_time(statement.test,
-                                                                  body[index + 1:]):
+                    if statement.orelse or not _guards_first_time(
+                            statement.test, body[index + 1:], frame.module.tree):
                         conds = (*conds, no)
                 elif second == "done" and first is None:
                     conds = (*conds, yes)
@@ -1318,27 +1318,32 @@ def _logs_error(expr: ast.expr) -> bool:
             owner.id if isinstance(owner, ast.Name) else owner.attr).lower())
 
 
-def _guards_first_time(test: ast.expr, rest: list[ast.stmt]) -> bool:
+def _guards_first_time(test: ast.expr, rest: list[ast.stmt], module: ast.AST) -> bool:
     """Whether ``if TEST: return`` guards what the method does only once: TEST reads a
     member of ``self`` that the rest of the block assigns (``if self._initialized:
-    return`` before ``self._initialized = True``). The first run goes past it, so
-    what follows is made (``ConditionReader._guards_first_time`` for C++)."""
+    return`` before ``self._initialized = True``), and that the rest of the module
+    assigns literals alone (its first value, ``self._initialized = False``). The first
+    run goes past it, so what follows is made (``ConditionReader._guards_first_time``
+    for C++). A member the module may set to a value of its own (uuv_simulator's
+    thruster manager: ``self.configuration_matrix = numpy.array(tam)`` when ``~tam`` is
+    given, then ``update_tam`` returns before its transform listener) is no such flag."""
     members = {_self_member(node) for node in ast.walk(test) if isinstance(node, ast.Attribute)}
     members.discard(None)
     if not members:
         return False
-    stack: list[ast.AST] = list(rest)
-    while stack:
-        node = stack.pop()
-        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef | ast.Lambda):
-            continue
+    inside = {id(node) for statement in rest for node in ast.walk(statement)}
+    assigned = False
+    for node in ast.walk(module):
         targets = node.targets if isinstance(node, ast.Assign) else [node.target] if (
-            isinstance(node, ast.AnnAssign)) else []
-        if any(_self_member(t) in members for target in targets for t in ast.walk(target)
-               if isinstance(t, ast.Attribute)):
-            return True
-        stack.extend(ast.iter_child_nodes(node))
-    return False
+            isinstance(node, ast.AnnAssign | ast.AugAssign)) else []
+        if not any(_self_member(t) in members for target in targets for t in ast.walk(target)
+                   if isinstance(t, ast.Attribute)):
+            continue
+        if id(node) in inside:
+            assigned = True
+        elif not isinstance(getattr(node, "value", None), ast.Constant):
+            return False
+    return assigned
 
 
 def _leaves_early(body: list[ast.stmt]) -> bool:
