@@ -156,6 +156,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          tested=bool(c.get("tested", False)),
                          under=c.get("under") is True,
                          keys_only=c.get("keys_only") is True,
+                         struct_member=c.get("struct_member") is True,
                          handle_namespace=c.get("handle_namespace"),
                          root_handle=c.get("root_handle") is True,
                          deletes=bool(c.get("deletes", False)),

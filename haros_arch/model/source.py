@@ -119,6 +119,12 @@ class PrimitiveCall:
     # sensors' names and reads each one's parameters by name. What is set under it is
     # not read as part of it (``graph.build._namespace_values``)
     keys_only: bool = field(default=False, metadata={"optional": True})
+    # ROS 1: a read of a member of a struct parameter (an ``XmlRpcValue``) that the code
+    # was handed (``config_node["child_frame_id"]`` in a constructor given each member
+    # of ``~rigid_bodies`` read whole: ``~rigid_bodies/?/child_frame_id``), or of the
+    # member whole. Where what is handed is no parameter's value (its name's first run
+    # unknown once the node's files are joined), the read is none (``links.resolve``)
+    struct_member: bool = field(default=False, metadata={"optional": True})
     # ROS 1: the namespace of the NodeHandle the call is made on, as written (``input``,
     # ``~``, ``/robot``), when ``name`` was joined to it; roscpp remaps that namespace
     # before it resolves the name in it, so the graph resolves it first

@@ -98,6 +98,10 @@ class RosFunction:
     transport_arg: int | None = None
     # searchParam: the name is looked up in the enclosing namespaces
     searched: bool = False
+    # ROS 1 hasParam, ros::param::has: a read that asks whether the parameter is set,
+    # not its value (a namespace so asked reads none of the values under it:
+    # ``PrimitiveCall.keys_only``)
+    presence: bool = False
     # deleteParam, ros::param::del: a parameter write that deletes it
     deletes: bool = False
     # the call's name is the name argument's then this (a parameter client's remote node
@@ -183,7 +187,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     (NODE_HANDLE, "getParam"): _PARAM_READ,
     (NODE_HANDLE, "getParamCached"): _PARAM_READ,
     (NODE_HANDLE, "param"): _PARAM_READ_DEFAULT,
-    (NODE_HANDLE, "hasParam"): RosFunction("read"),
+    (NODE_HANDLE, "hasParam"): RosFunction("read", presence=True),
     (NODE_HANDLE, "searchParam"): RosFunction("read", searched=True),
     (NODE_HANDLE, "setParam"): _PARAM_WRITE,
     (NODE_HANDLE, "deleteParam"): RosFunction("write", deletes=True),
@@ -195,7 +199,7 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     ("ros::param", "param"): RosFunction(
         "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2,
         on_handle=False),
-    ("ros::param", "has"): RosFunction("read", on_handle=False),
+    ("ros::param", "has"): RosFunction("read", on_handle=False, presence=True),
     ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True),
     ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1, on_handle=False),
     ("ros::param", "del"): RosFunction("write", on_handle=False, deletes=True),

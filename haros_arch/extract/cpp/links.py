@@ -115,13 +115,15 @@ _SPLIT = "\x02"
 def argument_facts(sites: CallSites, namespaces: Namespaces,
                    owned: Callable[[str], bool],
                    named: Callable[[Cursor, Scope], str | None] | None = None,
-                   conditioned: Callable[[Cursor, Cursor], tuple[Condition, ...]] | None = None
+                   conditioned: Callable[[Cursor, Cursor], tuple[Condition, ...]] | None = None,
+                   struct: Callable[[Cursor, Scope], str | None] | None = None
                    ) -> list[Fact]:
     """What this file passes, as handles' namespaces or strings, to the workspace
     functions it calls but does not define; ``named`` gives a string that is (or holds)
     a parameter's value with that parameter marked (``parameter_mark``); ``conditioned``
     the source conditions of a call in its function, said of the constructions
-    (``CONDITIONS``)."""
+    (``CONDITIONS``); ``struct`` the name of the parameter a ROS 1 ``XmlRpcValue``
+    holds (a struct parameter's member handed to a constructor that reads its keys)."""
     facts: list[Fact] = []
     done: set[tuple[str, int]] = set()
     for _round in range(MAX_DEPTH):  # reading a value may give another function a mark
@@ -142,6 +144,8 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
             for index, parm in enumerate(params):
                 arg = argument(call, parm, index)
                 value = _value(arg, scope, namespaces, named) if arg is not None else None
+                if value is None and arg is not None and struct is not None:
+                    value = struct(arg, scope)
                 if value is not None:
                     facts.append((usr, index, value, site))
                     if _literal(arg, value):
@@ -479,6 +483,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 whole) else None
             if made.name == "?" and classes:
                 made = dataclasses.replace(made, host_named=classes)
+            if made.struct_member and made.name.startswith(("?", "~?")):
+                continue  # what was handed is no parameter's value: nothing read
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,

@@ -249,6 +249,31 @@ def _names_remap(target: Cursor) -> bool:
             and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
 
 
+def _names_clean(target: Cursor) -> bool:
+    """roscpp's ``ros::names::clean(name)`` (``_cleaned``)."""
+    parent = target.semantic_parent
+    grand = None if parent is None else parent.semantic_parent
+    return (target.spelling == "clean" and parent is not None
+            and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
+
+
+def _cleaned(name: Parts) -> Parts:
+    """``ros::names::clean(name)``: each run of slashes one slash, and a last slash
+    dropped, as roscpp does, in the text the name is known by (image_pipeline's
+    stereo_view: ``clean(stereo_ns + "/left" + image)``, ``stereo_ns`` a handle's
+    ``resolveName``); an unknown run stays as it is."""
+    merged: list[str | None] = []
+    for part in name:
+        if type(part) is str and merged and type(merged[-1]) is str:
+            merged[-1] += part
+        else:
+            merged.append(part)
+    out = [re.sub("/{2,}", "/", part) if type(part) is str else part for part in merged]
+    if out and type(out[-1]) is str and out[-1].endswith("/"):
+        out[-1] = out[-1][:-1]
+    return tuple(out)
+
+
 def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
@@ -998,10 +1023,27 @@ class Scope:
             return UNKNOWN
         if binary_operator(cursor, children) != "+":
             return UNKNOWN
-        left, right = (self.string(c, depth + 1) for c in children)
+        left, right = self.string(children[0], depth + 1), self._appended(children[1], depth)
         if all(part is None for part in (*left, *right)):
             return UNKNOWN
         return left + right
+
+    def _appended(self, cursor: Cursor, depth: int) -> Parts:
+        """The value of a string appended to another: a name roscpp resolved
+        (``NodeHandle::resolveName``, ``ros::names::resolve``, as written or held in a
+        local) is a global name there, the node's namespace (not known here) before it
+        (``_expanded``; image_view's stereo_view: ``stereo_ns + "/left/" +
+        nh.resolveName("image")``, ``stereo/left/?/image``); it is taken as written only
+        where it begins a call's name (``names_prefix``)."""
+        value = self.string(cursor, depth + 1)
+        held = strip(cursor)
+        if held.kind == CursorKind.DECL_REF_EXPR and held.referenced is not None:
+            held = strip(self.variable(held.referenced) or held)
+        target = held.referenced if held.kind == CursorKind.CALL_EXPR else None
+        if target is not None and written_arguments(held) and (
+                _handle_resolve(target) or _names_resolve(target)):
+            return _expanded(value)
+        return value
 
     def field(self, decl: Cursor, initial: bool = False) -> tuple[Cursor, Scope] | None:
         """A member this function does not write: the value its class's constructor
@@ -1033,7 +1075,7 @@ class Scope:
                 type(text[0]) is str and text[0]) else UNKNOWN
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
-            return self.string(args[0], depth + 1) + self.string(args[1], depth + 1)
+            return self.string(args[0], depth + 1) + self._appended(args[1], depth)
         if call.spelling in ('operator""s', 'operator""sv') and args and (
                 strip(args[0]).kind == CursorKind.STRING_LITERAL):
             # std's string literal, ``"/change_state"s`` (ouster's lifecycle client)
@@ -1069,6 +1111,8 @@ class Scope:
             return self.string(args[0], depth + 1)
         if args and _expands(target):
             return _expanded(self.string(args[0], depth + 1))
+        if len(args) == 1 and _names_clean(target):
+            return _cleaned(self.string(args[0], depth + 1))
         if args and _handle_resolve(target):
             return self._handle_resolved(call, args[0], depth)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
@@ -1225,6 +1269,8 @@ class Scope:
         if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
             inner = operand(cursor) if target is None else args[0]
             return None if inner is None else self.names_prefix(inner, depth + 1)
+        if len(args) == 1 and _names_clean(target):  # the same start, slashes cleaned
+            return self.names_prefix(args[0], depth + 1)
         if args and _handle_resolve(target):  # a handle's: in the handle's namespace
             written = render(self.string(cursor, depth + 1))
         elif not args or not _names_resolve(target):

@@ -78,6 +78,7 @@ from .values import (
     Scope,
     SearchedName,
     _method_object,
+    _textual,
     argument_of,
     initializer,
     literal,
@@ -314,6 +315,9 @@ class CallFinder:
         self._status_calls: dict[tuple[str, int], bool] = {}
         # parameter reads and the member variable each stores its value in
         self._stored: list[tuple[PrimitiveCall, Cursor, Key | None]] = []
+        # the names of the ROS 1 reads that fill each local ``XmlRpcValue`` (by place):
+        # the parameter its members are of (``_struct_path``)
+        self._struct_reads: dict[tuple[str, int], list[str]] = {}
         # (file, offset) of the macro expansions and #includes of the workspace's files:
         # a function's text that holds one does not show all its code
         self.opaque: list[tuple[str, int]] = []
@@ -367,7 +371,7 @@ class CallFinder:
                         read.variable = member.spelling
                         read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
-                                    self._site_conditions)
+                                    self._site_conditions, self._struct_text)
         self.facts.extend(call_conditions.site_facts(
             self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
             self.globals, self.declared))
@@ -575,6 +579,9 @@ class CallFinder:
         if self.clients is not None and function.kind == CursorKind.CONSTRUCTOR:
             self._unseen_members(function)
         dependent = False  # a call that depends on a template parameter, of no wrapper
+        if not self.ros2 and any(c.kind == CursorKind.PARM_DECL and is_struct_value(c.type)
+                                 for c in function.get_children()):
+            return True  # it may read the parameter a struct it is given holds
         for node in function.walk_preorder() if nodes is None else nodes:
             kind = node.kind
             if kind in _MAKES:
@@ -584,6 +591,10 @@ class CallFinder:
                 spelling = node.spelling
                 if spelling == "operator()":
                     self._vendor_member_call(node)  # (so too in the walk, after a return)
+                if spelling == "operator[]" and not self.ros2 and _struct_subscript(node):
+                    return True  # a struct parameter's member read by key
+                if spelling == "bind" and _bound_api(node) is not None:
+                    return True
                 if spelling in _API_NAMES or (spelling and spelling in names) or (
                     not spelling and _recovered_name(node) in rows
                 ) or constructed_class(node, self.owned) is not None:
@@ -663,6 +674,9 @@ class CallFinder:
                 self._lost_initialiser(node, *unresolved, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and node.spelling in _TAKEN_AS:
                 self._typed_accessor(node)
+            if node.kind == CursorKind.CALL_EXPR and node.spelling == "operator[]" and (
+                    not self.ros2):
+                self._struct_read(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and (
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
@@ -679,6 +693,11 @@ class CallFinder:
                 self._vendor_member_call(node)
             elif node.kind == CursorKind.CALL_EXPR and node.spelling == api.NODELET_LOAD[1]:
                 self._nodelet_load(node, conditions, scope)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == "bind":
+                bound = _bound_api(node)
+                if bound is not None:  # the call the bound function object makes
+                    self._emit(bound, node, written_arguments(node)[1:], None, conditions,
+                               scope)
             if node.kind == CursorKind.CALL_EXPR:
                 self._construction(node, conditions)
                 self._to_unknown(node, function)
@@ -688,6 +707,8 @@ class CallFinder:
                 self._unseen_class(node)
             tested.visit(node)
             stack.extend(self.reader.below(node, conditions))
+        if not self.ros2:
+            self._struct_parameters(function, made_under, scope)
         for site, read in self._status_reads:
             read.tested = read.tested or (site in tested.keys and site not in tested.required)
         self._unit_status_reads.extend(self._status_reads)
@@ -1822,8 +1843,8 @@ class CallFinder:
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
                 searched=spec.searched or isinstance(written, SearchedName) or (
                     isinstance(written, ChoiceName) and written.searched),
-                keys_only=not self.ros2 and spec.kind == "read" and keys_only(
-                    arg(spec.out_arg), scope),
+                keys_only=not self.ros2 and spec.kind == "read" and (spec.presence or keys_only(
+                    arg(spec.out_arg), scope, self.owned)),
                 handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
@@ -1835,6 +1856,13 @@ class CallFinder:
                 argument=spec.argument))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
+            filled = strip(arg(spec.out_arg)) if spec.kind == "read" and not self.ros2 and (
+                arg(spec.out_arg) is not None) else None
+            if filled is not None and filled.kind == CursorKind.DECL_REF_EXPR and (
+                    filled.referenced is not None
+                    and filled.referenced.kind == CursorKind.VAR_DECL
+                    and is_struct_value(filled.referenced.type)):
+                self._struct_reads.setdefault(place_of(filled.referenced), []).append(name)
             member = self._member(spec, call, shift) if len(names) == 1 else None
             if member is not None:
                 self._stored.append((self.calls[-1], member, key_of(call)))
@@ -2410,6 +2438,82 @@ class CallFinder:
         if spec is not None:
             return self._returns_read(spec, expr)
         return self._gives_value(expr, depth + 1)
+
+    def _struct_path(self, expr: Cursor, scope: Scope, depth: int = 0
+                     ) -> tuple[str | None, ...] | None:
+        """The parameter a ROS 1 ``XmlRpcValue`` holds, as the parts of its name (None:
+        an unknown run): the local variable a read fills (that read's name), a member of
+        a struct it holds (``i->second``: ``name/?``), a member by key (``v[key]``:
+        ``name/key``), a function's parameter (what its calls pass,
+        ``CallSites.agreed``: a placeholder when they are in other files, which
+        ``links`` fills from ``argument_facts``). None: no parameter's value."""
+        if depth > MAX_DEPTH:
+            return None
+        inner = strip(expr)
+        found = _subscript(inner)
+        if found is not None:  # a member by key (a list's element is the list's value)
+            base = self._struct_path(found[0], scope, depth + 1) if _textual(
+                found[1]) else None
+            return None if base is None else (*base, "/", *scope.string(found[1]))
+        over = struct_member_of(inner, scope)
+        if over is not None:
+            base = self._struct_path(over, scope, depth + 1)
+            return None if base is None else (*base, "/", None)
+        decl = inner if inner.kind == CursorKind.PARM_DECL else (
+            inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None)
+        if decl is not None and decl.kind == CursorKind.VAR_DECL:
+            names = set(self._struct_reads.get(place_of(decl), ()))
+            return (names.pop(),) if len(names) == 1 else None
+        if decl is not None and decl.kind == CursorKind.PARM_DECL and (
+                scope.sites is not None and is_struct_value(decl.type)):
+            unknown: tuple[str | None, ...] = (None,)
+            value = scope.sites.agreed(decl, lambda arg, site: (None if _local(
+                arg) else self._struct_path(arg, site, depth + 1)) or unknown, unknown)
+            return value if isinstance(value, tuple) and value != (None,) else None
+        return None
+
+    def _struct_text(self, expr: Cursor, scope: Scope) -> str | None:
+        """``_struct_path`` as a fact's value (``links.argument_facts``)."""
+        if _local(expr):
+            return None  # a struct read whole (its own read reads all of it)
+        path = self._struct_path(expr, scope) if is_struct_value(expr.type) else None
+        return render(path) if path is not None and path[0] is not None else None
+
+    def _struct_read(self, call: Cursor, conditions: tuple[Condition, ...],
+                     scope: Scope) -> None:
+        """A read of one member, by key, of an ``XmlRpcValue`` struct that is a member of
+        a struct parameter read whole (``i->second[key]``) or a function's parameter
+        (``config_node[key]``, given such a member): its own read (the read of the whole
+        struct reads the keys alone: ``keys_only``). A member of a local variable a read
+        fills is read by that read."""
+        found = _subscript(call)
+        if found is None or not is_struct_value(strip(found[0]).type) or not _textual(
+                found[1]):
+            return
+        base = strip(found[0])
+        while (below := _subscript(base)) is not None:
+            base = strip(below[0])
+        if base.kind == CursorKind.DECL_REF_EXPR and base.referenced is not None and (
+                base.referenced.kind == CursorKind.VAR_DECL):
+            return
+        self._struct_emit(call, conditions, scope)
+
+    def _struct_emit(self, expr: Cursor, conditions: tuple[Condition, ...],
+                     scope: Scope) -> None:
+        path = self._struct_path(expr, scope)
+        if path is None or path[0] is None:
+            return  # no parameter's (or one not known: its own read is whole)
+        self.calls.append(PrimitiveCall(kind="read", name=render(path), conditions=conditions,
+                                        location=self.where(expr), struct_member=True))
+
+    def _struct_parameters(self, function: Cursor, conditions: tuple[Condition, ...],
+                           scope: Scope) -> None:
+        """A read, whole, of the parameter each ``XmlRpcValue`` parameter of ``function``
+        holds when its code uses it otherwise than by key (``_read_by_key``)."""
+        for parm in function.get_children():
+            if parm.kind == CursorKind.PARM_DECL and is_struct_value(parm.type) and (
+                    not _read_by_key(parm, scope, self.owned)):
+                self._struct_emit(parm, conditions, scope)
 
     def _marked(self, expr: Cursor, scope: Scope) -> str | None:
         """A string passed to another file's function whose one unknown run is a
@@ -3082,13 +3186,16 @@ def _private(name: str) -> str:
 _KEYS_ONLY_METHODS = frozenset({"getType", "size", "valid", "hasMember"})
 
 
-def keys_only(expr: Cursor | None, scope: Scope) -> bool:
+def keys_only(expr: Cursor | None, scope: Scope,
+              owned: Callable[[str], bool] | None = None) -> bool:
     """Whether ``expr``, the ``XmlRpcValue`` a ROS 1 read fills, is a local variable its
     function uses for the keys alone: besides the read, only ``getType()``, ``size()``,
-    ``valid()``, ``hasMember(k)`` and range-based ``for`` loops over it whose variable is
-    named only as ``.first`` (mavros' distance_sensor: ``for (auto &pair : map_dict)``
-    then ``create_item(this, pair.first)``). Any other use (passed on, indexed, its
-    entries' values) reads the values."""
+    ``valid()``, ``hasMember(k)`` and loops over it (range-based, whose variable is
+    named only as ``.first``: mavros' distance_sensor, ``for (auto &pair : map_dict)``
+    then ``create_item(this, pair.first)``; or from ``begin()`` to ``end()``) whose
+    members' values (``pair.second``, ``i->second``) are read by key alone
+    (``_read_by_key``: each such read is a call of its own, ``CallFinder._struct_read``).
+    Any other use (passed on, indexed, its entries' values) reads the values."""
     inner = strip(expr) if expr is not None else None
     decl = inner.referenced if inner is not None and (
         inner.kind == CursorKind.DECL_REF_EXPR) else None
@@ -3101,7 +3208,8 @@ def keys_only(expr: Cursor | None, scope: Scope) -> bool:
                 node == inner):
             continue
         if parent is not None and parent.kind == CursorKind.MEMBER_REF_EXPR and (
-                parent.spelling in _KEYS_ONLY_METHODS):
+                parent.spelling in _KEYS_ONLY_METHODS
+                or (parent.spelling in ("begin", "end") and owned is not None)):
             continue
         if parent is not None and parent.kind == CursorKind.CXX_FOR_RANGE_STMT:
             variable = next((c for c in parent.get_children()
@@ -3110,13 +3218,196 @@ def keys_only(expr: Cursor | None, scope: Scope) -> bool:
                 loops.append(variable)
                 continue
         return False
-    for variable in loops:
-        for node, parent in _with_parents(scope.body):
-            if node.kind == CursorKind.DECL_REF_EXPR and node.referenced == variable and not (
-                    parent is not None and parent.kind == CursorKind.MEMBER_REF_EXPR
-                    and parent.spelling == "first"):
+    iterators = _iterators(decl, scope) if owned is not None else []
+    for node, parent in _with_parents(scope.body):
+        if node.kind == CursorKind.MEMBER_REF_EXPR and node.spelling == "second" and (
+                owned is not None):
+            over = struct_member_of(node, scope)
+            if over is not None and strip(over).referenced == decl and not _read_by_key(
+                    node, scope, owned):
                 return False
+            continue
+        if node.kind != CursorKind.DECL_REF_EXPR or (
+                node.referenced not in loops and node.referenced not in iterators):
+            continue
+        if parent is not None and parent.kind == CursorKind.MEMBER_REF_EXPR and (
+                parent.spelling == "first" or (parent.spelling == "second"
+                                               and owned is not None)):
+            continue  # a member's value: read by key alone (above)
+        if node.referenced in iterators and (_in_loop_header(
+                node, node.referenced, scope) or (
+                    parent is not None and parent.kind == CursorKind.CALL_EXPR
+                    and parent.spelling == "operator->")):
+            continue  # ``i = v.begin(); i != v.end(); ++i``, ``i->first``, ``i->second``
+        return False
     return True
+
+
+def is_struct_value(type_: Type) -> bool:
+    """Whether ``type_`` is ROS 1's ``XmlRpc::XmlRpcValue`` (or a reference to one)."""
+    if type_.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        type_ = type_.get_pointee()
+    return type_.get_canonical().get_declaration().spelling == "XmlRpcValue"
+
+
+def _iterators(decl: Cursor, scope: Scope) -> list[Cursor]:
+    """The iterators the ``for`` loops of the body start at ``decl.begin()``."""
+    found: list[Cursor] = []
+    for loop in walk_cursors(scope.body) if scope.body is not None else ():
+        header = _loop_start(loop)
+        if header is None:
+            continue
+        variable, container = header
+        held = strip(container)
+        if held.kind == CursorKind.DECL_REF_EXPR and held.referenced == decl:
+            found.append(variable)
+    return found
+
+
+def _loop_start(loop: Cursor) -> tuple[Cursor, Cursor] | None:
+    """(the iterator, the container) of a ``for`` loop whose first part starts an
+    iterator at ``container.begin()`` (``for (i = v.begin(); ...)``, ``for (auto i =
+    v.begin(); ...)``), else None."""
+    if loop.kind != CursorKind.FOR_STMT:
+        return None
+    init = next(iter(loop.get_children()), None)
+    if init is None:
+        return None
+    begins = [n for n in walk_cursors(init)
+              if n.kind == CursorKind.MEMBER_REF_EXPR and n.spelling == "begin"]
+    objects = [c for c in begins[0].get_children() if c.kind.is_expression()] if (
+        len(begins) == 1) else []
+    container = {place_of(n) for o in objects for n in walk_cursors(o)}
+    targets = [n for n in walk_cursors(init) if n.kind == CursorKind.VAR_DECL] or [
+        n.referenced for n in walk_cursors(init) if n.kind == CursorKind.DECL_REF_EXPR
+        and n.referenced is not None and n.referenced.kind == CursorKind.VAR_DECL
+        and place_of(n) not in container]
+    return (targets[0], objects[0]) if len(targets) == 1 and objects else None
+
+
+def _in_loop_header(node: Cursor, variable: Cursor, scope: Scope) -> bool:
+    """Whether ``node`` is in the header of the ``for`` loop that starts ``variable``."""
+    for loop in walk_cursors(scope.body) if scope.body is not None else ():
+        header = _loop_start(loop)
+        if header is None or not _same(header[0], variable):
+            continue
+        parts = list(loop.get_children())[:-1]  # all but the body
+        return any(_same(n, node) for part in parts for n in walk_cursors(part))
+    return False
+
+
+def struct_member_of(expr: Cursor, scope: Scope) -> Cursor | None:
+    """The ``XmlRpcValue`` struct whose member's value ``expr`` is: ``pair.second`` of a
+    range-based ``for`` over it, ``i->second`` of an iterator a ``for`` loop starts at
+    its ``begin()``; else None."""
+    inner = strip(expr)
+    if inner.kind != CursorKind.MEMBER_REF_EXPR or inner.spelling != "second":
+        return None
+    held = next((strip(c) for c in inner.get_children() if c.kind.is_expression()), None)
+    if held is not None and held.kind == CursorKind.CALL_EXPR and (
+            held.spelling == "operator->"):
+        held = next((strip(c) for c in held.get_children()
+                     if strip(c).kind == CursorKind.DECL_REF_EXPR
+                     and strip(c).referenced is not None
+                     and strip(c).referenced.kind == CursorKind.VAR_DECL), None)
+    decl = held.referenced if held is not None and (
+        held.kind == CursorKind.DECL_REF_EXPR) else None
+    if decl is None or decl.kind != CursorKind.VAR_DECL:
+        return None
+    walk = scope.range_of(decl)
+    if walk is not None:
+        over = list(walk.get_children())[1]
+        return over if is_struct_value(strip(over).type) else None
+    for loop in walk_cursors(scope.body) if scope.body is not None else ():
+        header = _loop_start(loop)
+        if header is not None and _same(header[0], decl) and is_struct_value(
+                strip(header[1]).type):
+            return header[1]
+    return None
+
+
+def _bound_api(call: Cursor) -> api.RosFunction | None:
+    """The API row of the free function ``std::bind`` / ``boost::bind`` binds, with the
+    arguments after it (ros_canopen's ``std::bind(ros::service::call<SwitchController>,
+    "controller_manager/switch_controller", srv)``, run in a ``boost::thread``): the
+    call the function object makes, read as made where it is bound; None for any other
+    bind (a method, a lambda, a function of no row)."""
+    target = call.referenced
+    space = target.semantic_parent if target is not None else None
+    if target is None or space is None or space.spelling not in ("std", "boost"):
+        return None
+    args = written_arguments(call)
+    bound = strip(args[0]) if args else None
+    if bound is not None and bound.kind == CursorKind.UNARY_OPERATOR:  # ``&f``
+        inner = [c for c in bound.get_children() if c.kind.is_expression()]
+        bound = strip(inner[0]) if len(inner) == 1 else None
+    function = bound.referenced if bound is not None and (
+        bound.kind == CursorKind.DECL_REF_EXPR) else None
+    if function is None or function.kind != CursorKind.FUNCTION_DECL:
+        return None
+    spec = api.ALL.get((qualified_name(function.semantic_parent), function.spelling))
+    return spec if spec is not None and not spec.on_handle else None
+
+
+def _local(expr: Cursor) -> bool:
+    """Whether ``expr`` is a local variable (a struct handed on whole: what a read
+    fills is read whole by it, and one no read fills is no parameter's)."""
+    inner = strip(expr)
+    return inner.kind == CursorKind.DECL_REF_EXPR and inner.referenced is not None and (
+        inner.referenced.kind == CursorKind.VAR_DECL)
+
+
+def _same(one: Cursor | None, other: Cursor | None) -> bool:
+    """Whether two cursors are the same one: by place and kind."""
+    return one is not None and other is not None and one.kind == other.kind and (
+        place_of(one) == place_of(other))
+
+
+def _struct_subscript(call: Cursor) -> bool:
+    """Whether ``call`` (an ``operator[]``) takes a member of an ``XmlRpcValue``."""
+    found = _subscript(call)
+    return found is not None and is_struct_value(strip(found[0]).type)
+
+
+def _read_by_key(value: Cursor, scope: Scope, owned: Callable[[str], bool]) -> bool:
+    """Whether the ``XmlRpcValue`` ``value`` (a struct's member, ``i->second``; or its
+    function's parameter) is used by key alone: each use asks only its type or keys
+    (``_KEYS_ONLY_METHODS``), takes one of its members by key (``v[key]``: a read of
+    its own), or hands it to a function of the workspace that takes an
+    ``XmlRpcValue`` (whose own code reads it so, or reads it whole)."""
+    decl = value if value.kind == CursorKind.PARM_DECL else None
+    for node, parent in _with_parents(scope.body) if scope.body is not None else ():
+        if decl is not None:
+            if node.kind != CursorKind.DECL_REF_EXPR or node.referenced != decl:
+                continue
+        elif not _same(node, value):
+            continue
+        if parent is not None and parent.kind == CursorKind.MEMBER_REF_EXPR and (
+                parent.spelling in _KEYS_ONLY_METHODS):
+            continue
+        found = _subscript(parent) if parent is not None else None
+        if found is not None and _same(strip(found[0]), node):
+            continue
+        if parent is not None and _handed_to_reader(parent, node, owned):
+            continue
+        return False
+    return True
+
+
+def _handed_to_reader(call: Cursor, arg: Cursor, owned: Callable[[str], bool]) -> bool:
+    """Whether ``call`` passes ``arg`` to a function (or constructor) of the workspace
+    whose parameter there is an ``XmlRpcValue``."""
+    target = call.referenced if call.kind == CursorKind.CALL_EXPR else None
+    if target is None or target.kind not in (CursorKind.CONSTRUCTOR, CursorKind.CXX_METHOD,
+                                             CursorKind.FUNCTION_DECL):
+        return False
+    where = target.location.file
+    if where is None or not owned(where.name):
+        return False
+    args = written_arguments(call)
+    params = [c for c in target.get_children() if c.kind == CursorKind.PARM_DECL]
+    index = next((i for i, a in enumerate(args) if _same(strip(a), arg)), None)
+    return index is not None and index < len(params) and is_struct_value(params[index].type)
 
 
 def _with_parents(root: Cursor) -> Iterator[tuple[Cursor, Cursor | None]]:

@@ -109,6 +109,11 @@ class Walker:
         # the ``if`` statement walked last, with its two conditions (``_block``)
         self._tested_if: tuple[ast.If, Condition, Condition] | None = None
         self._unrolled = 0  # unrolled loops the walk is in
+        # the variables of the unrolled loops the walk is in, by frame: each holds one
+        # known item per walk of the body (``_decided``)
+        self._loop_names: list[tuple[int, frozenset[str]]] = []
+        # the ``if`` walked last whose test the walk decided, and the side it took
+        self._decided_if: tuple[ast.If, list[ast.stmt]] | None = None
         self.rosname: str | None = None
         self.namespace: str | None = None
         self.anonymous = False
@@ -264,8 +269,9 @@ class Walker:
         """The statements of ``body`` in turn; after ``if test: return`` (``continue``,
         ``break``) the rest runs under ``else`` test, after ``if test: ... else:
         return`` under test, unless that side fails (``raise``, an exit, an error logged,
-        ``return False``): the rest is then the function's work when it succeeds."""
-        for statement in body:
+        ``return False``): the rest is then the function's work when it succeeds; nor
+        when the test guards what the method does once (``_guards_first_time``)."""
+        for index, statement in enumerate(body):
             self.steps += 1
             limit = f"{MAX_STEPS} statements walked" if self.steps > MAX_STEPS else \
                 self.evaluator.limited
@@ -277,12 +283,19 @@ class Walker:
                 return
             handler = getattr(self, "_" + type(statement).__name__, self._statement)
             handler(statement, frame, conds)
+            if isinstance(statement, ast.If) and self._decided_if is not None and (
+                    self._decided_if[0] is statement):
+                if _leaves(self._decided_if[1]) is not None:
+                    return  # the side taken leaves: the rest does not run
+                continue
             if isinstance(statement, ast.If) and self._tested_if is not None and (
                     self._tested_if[0] is statement):
                 _, yes, no = self._tested_if
                 first, second = _leaves(statement.body), _leaves(statement.orelse)
                 if first == "done" and second is None:
-                    conds = (*conds, no)
+                    if statement.orelse or not _guards_first_time(
+                            statement.test, body[index + 1:], frame.module.tree):
+                        conds = (*conds, no)
                 elif second == "done" and first is None:
                     conds = (*conds, yes)
 
@@ -399,11 +412,17 @@ class Walker:
             self._block(statement.body, frame, conds)
             self._block(statement.orelse, frame, conds)
             return
+        decided = self._decided(statement.test, frame)
+        self._tested_if = self._decided_if = None
+        if decided is not None:  # one side runs, under no condition of the test
+            side = statement.body if decided else statement.orelse
+            self._block(side, frame, conds)
+            self._decided_if = (statement, side)
+            return
         text = self._text(frame, statement.test)
         where = self._where(frame, statement)
         held = self._held(statement.test, frame)
         yes, no = condition("if", text, where, held), condition("else", text, where, held)
-        self._tested_if = None
         # a presence test whose absent side fails: the other side runs whenever the
         # function goes on (the parameter is required)
         required = None if _PRESENCE.search(text) is None else (
@@ -428,6 +447,27 @@ class Walker:
         attrs.clear()
         attrs.update(_joined(attrs_before, attrs_taken, attrs_other, yes, no))
         self._tested_if = (statement, yes, no)
+
+    def _decided(self, test: ast.expr, frame: Frame) -> bool | None:
+        """The value of an ``if``'s test over the variables of the unrolled loops the walk
+        is in, which hold one known item per walk of the body, and literals alone
+        (``for side in ['left', 'right']: if side == 'skip': continue``): decided for
+        that item, as a C++ test over constants is (``Condition.constants``). None for
+        any other test, or one whose value is not known."""
+        names = {name for at, given in self._loop_names if at == id(frame) for name in given}
+        if not names:
+            return None
+        for node in ast.walk(test):
+            if (isinstance(node, ast.Name) and node.id not in names) or not isinstance(
+                    node, ast.Name | ast.Constant | ast.Compare | ast.BoolOp | ast.UnaryOp
+                    | ast.cmpop | ast.boolop | ast.unaryop | ast.expr_context | ast.Tuple
+                    | ast.List):
+                return None
+        if not any(isinstance(node, ast.Name) for node in ast.walk(test)):
+            return None  # a test of literals alone (``if False:``) is the code's own
+        value = self.evaluator.eval(test, frame)
+        plain = value.literal if isinstance(value, Value) else value
+        return bool(plain) if isinstance(plain, bool | int | float | str) else None
 
     def _held(self, test: ast.expr, frame: Frame) -> tuple[tuple[str, str], ...] | None:
         """What ``test`` reads that holds a parameter's value, as the graph decides a
@@ -489,12 +529,17 @@ class Walker:
                 items = (element,)
         # a loop over a known, short sequence is unrolled: one walk of the body per item
         self._unrolled += 1 if items else 0
+        if items:
+            self._loop_names.append((id(frame), frozenset(
+                n.id for n in ast.walk(target) if isinstance(n, ast.Name))))
         try:
             for item in items if items else (Unknown("loop variable"),):
                 ev.bind(target, item, frame)
                 body(loop)
         finally:
             self._unrolled -= 1 if items else 0
+            if items:
+                self._loop_names.pop()
         if items:  # after the loop its variable is unknown to the rest of the walk
             ev.bind(target, Unknown("loop variable"), frame)
 
@@ -1271,6 +1316,34 @@ def _logs_error(expr: ast.expr) -> bool:
     return _called(owner) == "get_logger" if isinstance(owner, ast.Call) else (
         isinstance(owner, ast.Name | ast.Attribute) and "log" in (
             owner.id if isinstance(owner, ast.Name) else owner.attr).lower())
+
+
+def _guards_first_time(test: ast.expr, rest: list[ast.stmt], module: ast.AST) -> bool:
+    """Whether ``if TEST: return`` guards what the method does only once: TEST reads a
+    member of ``self`` that the rest of the block assigns (``if self._initialized:
+    return`` before ``self._initialized = True``), and that the rest of the module
+    assigns literals alone (its first value, ``self._initialized = False``). The first
+    run goes past it, so what follows is made (``ConditionReader._guards_first_time``
+    for C++). A member the module may set to a value of its own (uuv_simulator's
+    thruster manager: ``self.configuration_matrix = numpy.array(tam)`` when ``~tam`` is
+    given, then ``update_tam`` returns before its transform listener) is no such flag."""
+    members = {_self_member(node) for node in ast.walk(test) if isinstance(node, ast.Attribute)}
+    members.discard(None)
+    if not members:
+        return False
+    inside = {id(node) for statement in rest for node in ast.walk(statement)}
+    assigned = False
+    for node in ast.walk(module):
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if (
+            isinstance(node, ast.AnnAssign | ast.AugAssign)) else []
+        if not any(_self_member(t) in members for target in targets for t in ast.walk(target)
+                   if isinstance(t, ast.Attribute)):
+            continue
+        if id(node) in inside:
+            assigned = True
+        elif not isinstance(getattr(node, "value", None), ast.Constant):
+            return False
+    return assigned
 
 
 def _leaves_early(body: list[ast.stmt]) -> bool:
