@@ -40,8 +40,13 @@ def test_closed_and_plain_dollars_are_not_said(write_tree):
           <param name="price" value="5 $ (not a substitution)"/>
           <param name="shell" value="echo $HOME"/>
           <param name="eval" value="$(eval 1 + 2)"/>
+          <param name="nested" value="$(eval optenv('PREFIX', arg('a')) + 'x')"/>
         </launch>""")
     assert said(model) == []
+    # a whole $(eval) is one expression: its nested parentheses are not scanned
+    assert [d.code for d in model.diagnostics if d.severity != "info"] == []
+    assert [(p.name, p.value) for p in model.params if p.name == "/nested"] == [
+        ("/nested", "xx")]
 
 
 def test_unclosed_keeps_roslaunch_state_machine():
@@ -50,4 +55,5 @@ def test_unclosed_keeps_roslaunch_state_machine():
     assert unclosed("$(arg a)") is None
     assert unclosed("a $ (b") is None  # '(' must follow '$' at once
     assert unclosed("$()") is None  # closed, though empty
+    assert unclosed("$(eval optenv('X', arg('y')))") is None  # one expression
     assert collect("$(find pkg)/a $(arg b") == ["find pkg"]

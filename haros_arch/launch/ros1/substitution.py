@@ -69,6 +69,8 @@ def unclosed(text: str) -> str | None:
     roslaunch's state machine collects a body only at its ``)``: one still open at the
     end is no substitution, and the attribute keeps ``$(arg x`` as plain text (no error;
     a whole ``$(eval ...`` without its ``)`` is no expression either)."""
+    if _whole_eval(text):  # one expression, never scanned (its parentheses nest)
+        return None
     start = _scan(text)[1]
     return None if start is None else text[start:]
 
@@ -102,11 +104,16 @@ def _scan(text: str) -> tuple[list[str], int | None]:
     return out, (start if state in ("lp", "in") else None)
 
 
+def _whole_eval(text: str) -> bool:
+    """roslaunch's test for an attribute that is one ``$(eval EXPR)``."""
+    return text.startswith("$(eval ") and text.endswith(")")
+
+
 def substitute(text: str, ctx: Context) -> Value:
     """Resolve every substitution in ``text`` as roslaunch does."""
     if not text or "$" not in text:
         return Value.of(text)
-    if text.startswith("$(eval ") and text.endswith(")"):
+    if _whole_eval(text):
         return evaluate(text[7:-1], ctx)
     bodies = collect(text)
     for body in bodies:
