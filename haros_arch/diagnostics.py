@@ -399,6 +399,14 @@ CATALOGUE: dict[str, Entry] = {
         "(\"Cannot have a value before ros__parameters\"), so a node given it on its "
         "command line does not start. Fix: put the values under the node's "
         "ros__parameters."),
+    "LAUNCH_SUBST_UNCLOSED": Entry(
+        "warning", "the substitution \"{text}\" is never closed: roslaunch keeps it as "
+        "plain text",
+        "A ROS 1 launch attribute holds $( without its closing parenthesis. roslaunch "
+        "substitutes only what it finds closed and says nothing of the rest, so the value "
+        "is the text as written: a parameter \"$(arg flag\" (a string, not the "
+        "argument's value), an include or file path that does not exist. Fix: add the "
+        "missing ')'."),
     "LAUNCH_PARAM_SET_TWICE": Entry(
         "warning", "parameter {name} is set again here (first at line {line}): roslaunch "
         "keeps the last value, the first is never used",

@@ -35,7 +35,7 @@ from ..model import (
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
-from .substitution import ArgUndefined, Context, SubstitutionError, substitute
+from .substitution import ArgUndefined, Context, SubstitutionError, substitute, unclosed
 
 Element = etree._Element
 MAX_INCLUDE_DEPTH = 32
@@ -135,6 +135,9 @@ class Ros1Loader:
         except SubstitutionError as err:
             self.fail(scope, element, f"\"{raw}\": {err}")
             return Value.unknown(raw)
+        left_open = unclosed(raw)
+        if left_open is not None:
+            self.report("LAUNCH_SUBST_UNCLOSED", scope, element, text=left_open)
         for name in dict.fromkeys(ctx.unset):
             if scope.in_include and not scope.command_line:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,

@@ -60,8 +60,25 @@ class Context:
 
 def collect(text: str) -> list[str]:
     """The ``$(...)`` bodies in ``text``, with roslaunch's state machine."""
-    out, buff, state = [], "", "out"
-    for char in text:
+    return _scan(text)[0]
+
+
+def unclosed(text: str) -> str | None:
+    """The text from a ``$(`` that is never closed to the end of ``text``, or None.
+
+    roslaunch's state machine collects a body only at its ``)``: one still open at the
+    end is no substitution, and the attribute keeps ``$(arg x`` as plain text (no error;
+    a whole ``$(eval ...`` without its ``)`` is no expression either)."""
+    if _whole_eval(text):  # one expression, never scanned (its parentheses nest)
+        return None
+    start = _scan(text)[1]
+    return None if start is None else text[start:]
+
+
+def _scan(text: str) -> tuple[list[str], int | None]:
+    """The closed bodies, and where a ``$(`` still open at the end starts (or None)."""
+    out, buff, state, start = [], "", "out", None
+    for index, char in enumerate(text):
         if char == "$":
             if state in ("in", "lp"):
                 raise SubstitutionError(f"dollar signs '$' cannot be inside of "
@@ -69,7 +86,7 @@ def collect(text: str) -> list[str]:
             state = "dollar"
         elif char == "(":
             if state == "dollar":
-                state = "lp"
+                state, start = "lp", index - 1
             elif state != "out":
                 raise SubstitutionError(f"invalid left parenthesis '(' in substitution "
                                         f"args: {text}")
@@ -84,14 +101,19 @@ def collect(text: str) -> list[str]:
             state = "in"
         if state == "in":
             buff += char
-    return out
+    return out, (start if state in ("lp", "in") else None)
+
+
+def _whole_eval(text: str) -> bool:
+    """roslaunch's test for an attribute that is one ``$(eval EXPR)``."""
+    return text.startswith("$(eval ") and text.endswith(")")
 
 
 def substitute(text: str, ctx: Context) -> Value:
     """Resolve every substitution in ``text`` as roslaunch does."""
     if not text or "$" not in text:
         return Value.of(text)
-    if text.startswith("$(eval ") and text.endswith(")"):
+    if _whole_eval(text):
         return evaluate(text[7:-1], ctx)
     bodies = collect(text)
     for body in bodies:
