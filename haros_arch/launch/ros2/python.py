@@ -20,8 +20,8 @@ from __future__ import annotations
 
 import ast
 import builtins
+import functools
 import os
-import threading
 from collections.abc import Mapping
 from pathlib import PurePosixPath
 from typing import Any
@@ -1159,42 +1159,31 @@ def parse_python(text: str, path: str, workspace: Workspace,
 
 def checked_tree(text: str, path: str, workspace: Workspace
                  ) -> tuple[ast.Module | None, Diagnostic | None]:
-    """The syntax tree of a Python file within the size bounds, or why not. A tree read
-    is kept (``_TREES``: by path and text; the interpreter never changes one): a launch
-    file included by many others is read once, not once per include."""
-    key = (path, text)
-    with _TREES_LOCK:
-        kept = _TREES.get(key)
-    if kept is not None:
-        return kept, None
-    tree, problem = _checked_tree(text, path, workspace)
-    if tree is not None:
-        with _TREES_LOCK:
-            if len(_TREES) >= MAX_TREES_KEPT:
-                _TREES.pop(next(iter(_TREES)))
-            _TREES[key] = tree
-    return tree, problem
+    """The syntax tree of a Python file within the size bounds, or why not."""
+    found = _tree(path, text)
+    if isinstance(found, ast.Module):
+        return found, None
+    code, line, column, detail = found
+    where = workspace.location(path) if line is None else workspace.location(
+        path, line, column or 0)
+    return None, diag.make(code, where, detail=detail)
 
 
-MAX_TREES_KEPT = 64
-_TREES: dict[tuple[str, str], ast.Module] = {}
-_TREES_LOCK = threading.Lock()
-
-
-def _checked_tree(text: str, path: str, workspace: Workspace
-                  ) -> tuple[ast.Module | None, Diagnostic | None]:
-    where = workspace.location(path)
+@functools.lru_cache(maxsize=64)
+def _tree(path: str, text: str) -> ast.Module | tuple[str, int | None, int | None, str]:
+    """``checked_tree`` of ``text`` without the workspace: the tree, or the diagnostic's
+    code, line, column (None: the file's) and detail. Kept by path and text (the
+    interpreter never changes a tree): a launch file included by many others is read
+    once, not once per include."""
     if len(text) > MAX_SOURCE:
-        return None, diag.make("LAUNCH_PY_BUDGET", where,
-                               detail=f"file larger than {MAX_SOURCE} characters")
+        return "LAUNCH_PY_BUDGET", None, None, f"file larger than {MAX_SOURCE} characters"
     try:
         tree = syntax.parse(text, path)
     except SyntaxError as err:
-        return None, diag.make("LAUNCH_PY_SYNTAX", workspace.location(
-            path, err.lineno or 0, err.offset or 0), detail=err.msg)
+        return "LAUNCH_PY_SYNTAX", err.lineno or 0, err.offset or 0, err.msg
     except (RecursionError, MemoryError, ValueError) as err:
-        return None, diag.make("LAUNCH_PY_SYNTAX", where,
-                               detail=f"too deeply nested to parse ({type(err).__name__})")
+        return ("LAUNCH_PY_SYNTAX", None, None,
+                f"too deeply nested to parse ({type(err).__name__})")
     count = 0
     stack: list[tuple[ast.AST, int]] = [(tree, 0)]
     while stack:
@@ -1203,9 +1192,9 @@ def _checked_tree(text: str, path: str, workspace: Workspace
         if count > MAX_NODES or depth > MAX_DEPTH:
             what = f"more than {MAX_NODES} syntax nodes" if count > MAX_NODES else \
                 f"nesting deeper than {MAX_DEPTH}"
-            return None, diag.make("LAUNCH_PY_BUDGET", where, detail=what)
+            return "LAUNCH_PY_BUDGET", None, None, what
         stack.extend((child, depth + 1) for child in ast.iter_child_nodes(node))
-    return tree, None
+    return tree
 
 
 def _enum_members(cls: PlainClass) -> list[EnumMember]:

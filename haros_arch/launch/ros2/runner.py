@@ -9,10 +9,10 @@ started: a ``Node`` becomes a ``NodeDecl`` and its parameters ``ParamDecl``s.
 from __future__ import annotations
 
 import ast
+import functools
 import os
 import pickle
 import shlex
-import threading
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -877,28 +877,21 @@ def _unknown_parts(document: Any, text: str) -> Any:
 
 def _dumped(document: Any) -> str:
     """``yaml.safe_dump`` of a rewritten parameter document, as launch_ros writes it
-    (block style); the text of a document made again is the text made before, by its
-    pickle (which tells every type and every value shared, as the dump's aliases do):
-    nav2's bringup rewrites one file for twenty nodes, and YAML's pure writer took most
-    of a launch's time. At most ``_DUMPS_KEPT`` texts are kept."""
+    (block style); a document made again is dumped once, by its pickle (which tells
+    every type and every value shared, as the dump's aliases do): nav2's bringup
+    rewrites one file for twenty nodes, and YAML's pure writer took most of a launch's
+    time."""
     try:
-        key = pickle.dumps(document, protocol=pickle.HIGHEST_PROTOCOL)
+        pickled = pickle.dumps(document, protocol=pickle.HIGHEST_PROTOCOL)
     except Exception:  # what pickle cannot write, the dump says what is wrong with
         return yaml.safe_dump(document, default_flow_style=False)
-    with _DUMPS_LOCK:
-        found = _DUMPS.get(key)
-    if found is None:
-        found = yaml.safe_dump(document, default_flow_style=False)
-        with _DUMPS_LOCK:
-            if len(_DUMPS) >= _DUMPS_KEPT:
-                _DUMPS.pop(next(iter(_DUMPS)))
-            _DUMPS[key] = found
-    return found
+    return _dump_of(pickled)
 
 
-_DUMPS: dict[bytes, str] = {}
-_DUMPS_LOCK = threading.Lock()
-_DUMPS_KEPT = 64
+@functools.lru_cache(maxsize=64)
+def _dump_of(pickled: bytes) -> str:
+    """The dump of the document ``pickled`` holds (our own bytes, made just above)."""
+    return yaml.safe_dump(pickle.loads(pickled), default_flow_style=False)
 
 
 def _substitutes(node: Any, depth: int = 0) -> bool:

@@ -9,6 +9,7 @@ in the configuration) becomes an ``Unknown`` part, with a diagnostic where it ma
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -92,19 +93,14 @@ def _fragments(raw: str, pos: int, stop: str, depth: int) -> tuple[e.Text, int]:
     return tuple(out), pos
 
 
+@functools.cache  # a few stops: "", an argument's, each quote
 def _special(stop: str) -> re.Pattern[str]:
     """The characters that end a run of literal text in ``_fragments`` (with ``stop``) or
     ``_quoted`` (``stop``: the quote): a backslash, ``$``, and in an argument its stops
     and the quotes (a parameter file of nav2's size is read for its substitutions once
     per node: a character at a time, that took most of a launch's time)."""
-    found = _SPECIALS.get(stop)
-    if found is None:
-        chars = "\\$" + stop + ("'\"" if stop else "")
-        found = _SPECIALS[stop] = re.compile(f"[{re.escape(chars)}]")
-    return found
-
-
-_SPECIALS: dict[str, re.Pattern[str]] = {}
+    chars = "\\$" + stop + ("'\"" if stop else "")
+    return re.compile(f"[{re.escape(chars)}]")
 
 
 def _quoted(raw: str, pos: int, quote: str, depth: int) -> tuple[e.Text, int]:
