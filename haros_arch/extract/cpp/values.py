@@ -228,32 +228,17 @@ def join_parts(namespace: Parts, name: Parts) -> Parts:
     return (*namespace, "/", *name)
 
 
-def _names_resolve(target: Cursor) -> bool:
-    """roscpp's ``ros::names::resolve(name[, remap])``: ``name`` resolved in the node's
-    namespace and remapped. Its value is the name as written (the graph expands and
-    remaps it); a call named by it is told the resolved prefix (``names_prefix``)."""
+def _ros_names(target: Cursor, function: str) -> bool:
+    """Whether ``target`` is roscpp's ``ros::names::<function>``. ``resolve(name[,
+    remap])``: ``name`` resolved in the node's namespace and remapped; its value is the
+    name as written (the graph expands and remaps it), and a call named by it is told
+    the resolved prefix (``names_prefix``). ``remap(name)``: the target of the remapping
+    of ``name``, else ``name``; its value too is the name as written, which the graph
+    remaps where the call that takes it resolves it (spencer's
+    ``subscribe(ros::names::remap(laserTopic), ...)``). ``clean(name)``: ``_cleaned``."""
     parent = target.semantic_parent
     grand = None if parent is None else parent.semantic_parent
-    return (target.spelling == "resolve" and parent is not None
-            and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
-
-
-def _names_remap(target: Cursor) -> bool:
-    """roscpp's ``ros::names::remap(name)``: the target of the remapping of ``name``
-    (resolved in the node's namespace), else ``name`` as written; its value is the name
-    as written, which the graph remaps where the call that takes it resolves it
-    (spencer's ``subscribe(ros::names::remap(laserTopic), ...)``)."""
-    parent = target.semantic_parent
-    grand = None if parent is None else parent.semantic_parent
-    return (target.spelling == "remap" and parent is not None
-            and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
-
-
-def _names_clean(target: Cursor) -> bool:
-    """roscpp's ``ros::names::clean(name)`` (``_cleaned``)."""
-    parent = target.semantic_parent
-    grand = None if parent is None else parent.semantic_parent
-    return (target.spelling == "clean" and parent is not None
+    return (target.spelling == function and parent is not None
             and parent.spelling == "names" and grand is not None and grand.spelling == "ros")
 
 
@@ -1041,7 +1026,7 @@ class Scope:
             held = strip(self.variable(held.referenced) or held)
         target = held.referenced if held.kind == CursorKind.CALL_EXPR else None
         if target is not None and written_arguments(held) and (
-                _handle_resolve(target) or _names_resolve(target)):
+                _handle_resolve(target) or _ros_names(target, "resolve")):
             return _expanded(value)
         return value
 
@@ -1106,12 +1091,12 @@ class Scope:
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
             # manage_nodes``, ``~/manage_nodes``: ``own_name``)
             return (NODE_NAME,)
-        if args and (_resolver(target) is not None or _names_resolve(target)
-                     or _names_remap(target)):
+        if args and (_resolver(target) is not None or _ros_names(target, "resolve")
+                     or _ros_names(target, "remap")):
             return self.string(args[0], depth + 1)
         if args and _expands(target):
             return _expanded(self.string(args[0], depth + 1))
-        if len(args) == 1 and _names_clean(target):
+        if len(args) == 1 and _ros_names(target, "clean"):
             return _cleaned(self.string(args[0], depth + 1))
         if args and _handle_resolve(target):
             return self._handle_resolved(call, args[0], depth)
@@ -1269,11 +1254,11 @@ class Scope:
         if target is None or (target.kind == CursorKind.CONSTRUCTOR and len(args) == 1):
             inner = operand(cursor) if target is None else args[0]
             return None if inner is None else self.names_prefix(inner, depth + 1)
-        if len(args) == 1 and _names_clean(target):  # the same start, slashes cleaned
+        if len(args) == 1 and _ros_names(target, "clean"):  # the same start, slashes cleaned
             return self.names_prefix(args[0], depth + 1)
         if args and _handle_resolve(target):  # a handle's: in the handle's namespace
             written = render(self.string(cursor, depth + 1))
-        elif not args or not _names_resolve(target):
+        elif not args or not _ros_names(target, "resolve"):
             return None
         else:
             written = render(self.string(args[0], depth + 1))
