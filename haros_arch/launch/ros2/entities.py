@@ -314,11 +314,14 @@ class Delayed(Action):
 class Callback(Action):
     """``OpaqueFunction``: interpreted when reached, with the scope of that moment.
 
-    ``run(perform)`` gets a function that computes a ``Text`` in that scope and returns
-    the actions the function made and the diagnostics it gave.
+    ``run(perform, configuration)`` gets a function that computes a ``Text`` in that
+    scope and one that tells how the scope holds a launch configuration
+    (``python_values.Context.configuration``), and returns the actions the function
+    made and the diagnostics it gave.
     """
 
-    run: Callable[[Callable[[Text], Value]], tuple[list[Action], list[Diagnostic]]]
+    run: Callable[[Callable[[Text], Value], Callable[[str], tuple[str, Any]]],
+                  tuple[list[Action], list[Diagnostic]]]
     # what the last run added to the launch description that holds this action (an
     # argument of the function): run after the rest of that description
     later: list[Action] = field(default_factory=list)

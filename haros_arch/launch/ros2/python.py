@@ -605,8 +605,20 @@ class Interpreter(Expressions):
             self.unsupported(stmt, "while loops are not interpreted (never run)")
         elif isinstance(stmt, (ast.Global, ast.Nonlocal)):
             self.outer_names(stmt, env)
+        elif isinstance(stmt, ast.Assert):
+            self.assertion(stmt, env)
         else:
             self.unsupported(stmt, f"{type(stmt).__name__} statements are not interpreted")
+
+    def assertion(self, stmt: ast.Assert, env: dict[str, Any]) -> None:
+        """``assert TEST, message``: the launch goes on only where TEST holds, so what
+        follows is read as it is; a TEST known false is the AssertionError that ends the
+        launch, said (or given to a ``try`` that catches it). Autoware's launch files
+        check their arguments so (``assert detection_type in [...]``)."""
+        _, test = self.test_of(stmt.test, env)
+        if test is False:
+            self.failed(stmt, f"assert {_source(stmt.test)} fails: the launch stops here",
+                        "AssertionError: assertion failed")
 
     def outer_names(self, stmt: ast.Global | ast.Nonlocal, env: dict[str, Any]) -> None:
         """``global n`` / ``nonlocal n`` in a function: ``n`` is the module's (the

@@ -38,6 +38,7 @@ from .python_methods import (
     arg,
     bounded_range,
     builtin,
+    chained,
     cond,
     get_attribute,
     is_instance,
@@ -50,6 +51,7 @@ from .python_methods import (
     xacro_process,
     xacro_process_doc,
     xacro_process_file,
+    yaml_load,
 )
 from .python_moveit import METHODS as MOVEIT_METHODS
 from .python_moveit import MOVEIT_CONFIGS_UTILS
@@ -674,7 +676,9 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not hasattr(function, "node"):
         return finish(i, e.Unsupported("OpaqueFunction of an unknown function"), k, n)
 
-    def run(perform: Callable[[e.Text], Value]) -> tuple[list[e.Action], list[Diagnostic]]:
+    def run(perform: Callable[[e.Text], Value],
+            configuration: Callable[[str], tuple[str, Any]] | None = None
+            ) -> tuple[list[e.Action], list[Diagnostic]]:
         def py(t: e.Text) -> Any:
             value = perform(t)
             if value.literal is not None:
@@ -696,7 +700,7 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         action.later = []
         added: list[Any] = []
         elsewhere: list[Any] = []
-        context = Context(py)
+        context = Context(py, configuration=configuration)
         try:
             try:
                 result = i.call(function, [context, *extra], extra_kwargs, n)
@@ -869,7 +873,8 @@ API: dict[str, Builder] = {
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
     "print": ignored, "isinstance": is_instance, "type": type_of,
     "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
-    "open": open_file, "safe_load": safe_load,
+    "open": open_file, "safe_load": safe_load, "yaml.load": yaml_load,
+    "yaml.full_load": yaml_load, "itertools.chain": chained,
     "copy": copy_of(False), "deepcopy": copy_of(True),
     "process_file": xacro_process_file, "process": xacro_process,
     "xacro.parse": xacro_parse, "xacro.process_doc": xacro_process_doc,

@@ -122,6 +122,45 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return i.unsupported(n, f"YAML cannot be read: {err}")
 
 
+# the loaders of ``yaml.load(stream, Loader=...)`` that read plain YAML as the safe one
+# does (the full loader's Python tags are refused by the safe reader: not known here)
+_PLAIN_LOADERS = frozenset(f"yaml.{name}" for name in (
+    "SafeLoader", "CSafeLoader", "FullLoader", "CFullLoader"))
+
+
+def yaml_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``yaml.load(stream, Loader=yaml.FullLoader)`` (or ``SafeLoader``) and
+    ``yaml.full_load(stream)``: as ``yaml.safe_load`` (Autoware's traffic light launch
+    files read their ``camera_namespaces`` argument so); another loader is not run."""
+    loader = k.get("Loader", a[1] if len(a) > 1 else None)
+    full = isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute) and (
+        n.func.attr == "full_load")
+    if not full and not (isinstance(loader, Ref) and loader.qualified in _PLAIN_LOADERS):
+        return i.unsupported(n, f"{_source(n)}: a YAML loader other than the safe or full "
+                                "one is not run")
+    return safe_load(i, a[:1], {}, n)
+
+
+def chained(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``itertools.chain(*iterables)`` of lists, tuples or texts known here: their items
+    in turn, as a list (what the launch file makes of it, ``list(chain(...))``, is the
+    same); of anything else, not known."""
+    if k or not all(isinstance(v, (list, tuple, str)) for v in a):
+        return Unknown("itertools.chain() of values not known statically")
+    items: list[Any] = []
+    for value in a:
+        items.extend(value)
+    return items
+
+
+def m_read_text(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``Path(p).read_text()`` of a path known here: the file's text, as
+    ``open(p).read()``."""
+    if isinstance(owner, PurePosixPath):
+        return m_read(i, ReadOnlyFile(str(owner)), a, k, n)
+    return i.unsupported(n, ".read_text() on a value not known statically")
+
+
 def module_of_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """launch's ``load_python_launch_file_as_module(path)``: the Python file at that
     path (of a package's share folder: its source), read as an imported module
@@ -398,6 +437,19 @@ def m_perform_substitution(i: Interpreter, owner: Any, a: Args, k: Kwargs,
 def m_dict(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(owner, Context) and name == "get" and a:
+            if isinstance(a[0], str) and a[0] in owner.assigned:
+                return owner.assigned[a[0]]
+            held = owner.configuration(a[0]) if owner.configuration is not None and (
+                isinstance(a[0], str)) else None
+            if held is not None and held[0] == "value":
+                return held[1]  # launch_ros' global_params
+            if held is not None and held[0] == "unset":
+                # dict.get of a configuration nothing set: the default as it is, a
+                # text or not (Autoware's ``.get("ros_params", {})``)
+                return a[1] if len(a) > 1 else None
+            if held is not None and held[0] == "unknown" and len(a) > 1 and not isinstance(
+                    a[1], str):
+                return Unknown(f"launch configuration {a[0]}: an action not seen may set it")
             return owner.perform((e.Var(to_text(a[0]), to_text(a[1]) if len(a) > 1
                                         else None),))
         if hasattr(owner, "get") and not isinstance(owner, dict) and name == "get":
@@ -500,7 +552,7 @@ def m_xml(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 METHODS: dict[str, Method] = {
     "toxml": m_xml, "toprettyxml": m_xml,
     "add_action": m_add_action, "add_entity": m_add_action, "find": m_find,
-    "read": m_read, "evaluate": m_evaluate,
+    "read": m_read, "read_text": m_read_text, "evaluate": m_evaluate,
     "append": m_list("append"), "extend": m_list("extend"),
     "insert": m_list("insert"), "remove": m_list("remove"), "pop": m_list("pop"),
     "items": m_dict("items"), "keys": m_dict("keys"),

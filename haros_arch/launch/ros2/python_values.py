@@ -228,16 +228,22 @@ class Context:
     """The ``context`` an ``OpaqueFunction`` receives: reads the runner's scope.
     ``assigned``: the launch configurations the function sets
     (``context.launch_configurations["rate"] = ...``), which it reads back and the
-    actions after it see."""
+    actions after it see. ``configuration(name)``: how the scope holds a configuration,
+    ``("set", None)`` (performed as a ``LaunchConfiguration``), ``("value", v)`` (one
+    that is no text: launch_ros' ``global_params``), ``("unset", None)`` or
+    ``("unknown", None)`` (an action not seen may have set it); None for a context the
+    launch file made itself."""
 
     perform: Callable[[e.Text], Any]
     assigned: dict[str, Any] = field(default_factory=dict, compare=False)
+    configuration: Callable[[str], tuple[str, Any]] | None = field(default=None,
+                                                                  compare=False)
 
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy", "launch_pal",
                 "controller_manager", "robotnik_common", "moveit_configs_utils",
-                "launch_param_builder")
+                "launch_param_builder", "itertools")
 
 
 def _known_module(qualified: str) -> bool:

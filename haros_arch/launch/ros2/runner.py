@@ -34,7 +34,7 @@ from ...model.launch_tree import (
     installed_check,
 )
 from ...model.location import Location
-from ...model.values import Unknown, Value
+from ...model.values import UNKNOWN_MARK, Unknown, Value
 from ...share import generated_at, share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment, found_nowhere
@@ -492,7 +492,7 @@ class Runner:
 
     def do_Callback(self, action: e.Callback, scope: Scope) -> None:
         ev = self.evaluator(scope, action.location)
-        made, found = action.run(ev.value)
+        made, found = action.run(ev.value, functools.partial(self.configuration, scope, ev))
         for item in found:
             if item.code in HIDING_CODES:
                 self.hidden(item)
@@ -508,6 +508,39 @@ class Runner:
         else:
             self.running[-1].extend(action.later)
         self.run(made, scope)
+
+    def configuration(self, scope: Scope, ev: Evaluator, name: str) -> tuple[str, Any]:
+        """How ``scope`` holds the launch configuration ``name`` for an OpaqueFunction's
+        ``context.launch_configurations`` (``python_values.Context.configuration``).
+        ``global_params`` is the list launch_ros' ``SetParameter`` and
+        ``SetParametersFromFile`` extend: a ``(name, value)`` pair per parameter, the
+        value as launch_ros evaluates it (substitutions performed, then read as YAML),
+        and a file's path as a text (Autoware's launch files read the vehicle's
+        dimensions back from it: ``dict(context.launch_configurations.get(
+        "global_params", {}))``); a value not known here is ``Unknown``, and actions not
+        seen add a pair not known, so a name looked up that the pairs lack is not known
+        either (``python_values.open_keys``)."""
+        if name == "global_params" and scope.params:
+            from .nodes import convert
+
+            pairs: list[Any] = []
+            for key, value, _ in scope.params:
+                if key is None:
+                    path = value.path[0] if isinstance(value, e.ParamFile) and len(
+                        value.path) == 1 and isinstance(value.path[0], str) else None
+                    pairs.append(path if path is not None else Unknown("parameter file"))
+                    continue
+                known = convert(value, ev)
+                pairs.append((key if UNKNOWN_MARK not in key else Unknown(f"parameter {key}"),
+                              Unknown(f"parameter {key}") if known is None
+                              else tuple(known) if isinstance(known, list) else known))
+            if scope.unseen:
+                pairs.append((Unknown("a parameter an action not seen set"),
+                              Unknown("a parameter an action not seen set")))
+            return "value", pairs
+        if name in scope.configs:
+            return "set", None
+        return ("unknown", None) if scope.unseen else ("unset", None)
 
     def do_Process(self, action: e.Process, scope: Scope) -> None:
         """A process whose command line, as the shell splits it, is ``ros2 run PKG EXE
