@@ -225,3 +225,41 @@ Visualization Manager:
     assert [r.partition(":")[0] for r in rviz.completeness_reasons] == [
         "display moveit_rviz_plugin/Trajectory of view.rviz",
         "display moveit_rviz_plugin/PlanningScene of view.rviz"]
+
+
+AUTOWARE_PATH = """\
+Visualization Manager:
+  Displays:
+    - Class: rviz_plugins/Path
+      Enabled: true
+      Topic:
+        Depth: 5
+        Value: /planning/path
+    - Class: rviz_default_plugins/Path
+      Enabled: true
+      Topic:
+        Depth: 5
+        Value: /planning/nav_path
+    - Class: nav2_rviz_plugins/ParticleCloud
+      Enabled: true
+      Topic:
+        Depth: 5
+        Value: /particle_cloud
+"""
+
+
+def test_a_display_of_another_package_with_a_known_name_is_another_display(
+        tmp_path: Path) -> None:
+    """Autoware's autoware.rviz shows its planner's path with ``rviz_plugins/Path``
+    (autoware_planning_rviz_plugin's display of an autoware_planning_msgs Path). It was
+    taken for rviz's own Path display, so rviz subscribed to the planner's path as a
+    nav_msgs Path: a false topic-type-mismatch error against the planner."""
+    config = _graph(tmp_path, AUTOWARE_PATH, 2)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    by_name = {link.resource.name: link for link in rviz.links}
+    assert "/planning/path" not in by_name
+    assert by_name["/planning/nav_path"].type == "nav_msgs/msg/Path"
+    assert by_name["/particle_cloud"].type == "nav2_msgs/msg/ParticleCloud"
+    assert rviz.completeness_reasons == [
+        "display rviz_plugins/Path of view.rviz is not known: it may subscribe or publish "
+        "anything"]

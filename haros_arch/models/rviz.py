@@ -68,6 +68,13 @@ _DISPLAYS: dict[str, tuple[str, str] | None] = {
     "Imu": ("sensor_msgs", "Imu"),
     "ParticleCloud": ("nav2_msgs", "ParticleCloud"),  # nav2_rviz_plugins' (amcl's particles)
 }
+# the packages whose display classes ``_DISPLAYS`` describes: rviz's own, and the one
+# plugin package of a display there; another package's class of the same last name is
+# another display (Autoware's ``rviz_plugins/Path`` shows an autoware_planning_msgs
+# Path, not nav_msgs')
+_RVIZ_OWNERS = frozenset(("rviz", "rviz_default_plugins"))
+_DISPLAY_OWNERS: dict[str, frozenset[str]] = {
+    "ParticleCloud": frozenset(("nav2_rviz_plugins",))}
 # a tool -> (ROS 1 topic, ROS 2 topic, package, message) it publishes by default; None:
 # a tool that publishes nothing
 _TOOLS: dict[str, tuple[str, str, str, str] | None] = {
@@ -279,7 +286,8 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
             if gap is not None:
                 gaps.append((f"display {cls}", gap))
             continue
-        if kind not in _DISPLAYS:
+        if kind not in _DISPLAYS or cls.rpartition("/")[0] not in _DISPLAY_OWNERS.get(
+                kind, _RVIZ_OWNERS):
             unknown.append(f"display {cls}")
             continue
         message = _DISPLAYS[kind]
