@@ -931,3 +931,15 @@ def test_eigen_matrix_base_decompositions_and_boost_microseconds(write_tree) -> 
     result = _extract(write_tree, _source("ros1_eigen_decompositions.cpp"), "catkin")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("read", "~K"), ("publish", "~chi2")]
+
+
+def test_ros2_declaration_macros_one_after_another(write_tree) -> None:
+    """autoware_utils_geometry's boost_geometry.hpp registers its points and ring with
+    ``BOOST_GEOMETRY_REGISTER_POINT_2D(..)``, ``_3D(..)`` and ``BOOST_GEOMETRY_REGISTER_RING
+    (..)`` in a row at namespace scope. With Boost.Geometry's headers missing clang read
+    the three as one declarator wanting a body, which swallowed everything after it: the
+    macro before the error was not learnt (the statement was not one call) and the one
+    after it not seen, so every node including the header (Autoware's goal distance
+    calculator, 0 calls) lost its calls."""
+    result = _extract(write_tree, _source("ros2_declaration_macros_in_a_row.cpp"), "ament_cmake")
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "chatter")]

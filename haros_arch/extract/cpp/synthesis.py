@@ -471,14 +471,45 @@ _DECLARATION_MACRO = re.compile(
     rb"([A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+)\s*\((?:[^;{}()]|\([^;{}()]*\))*\)")
 
 
-def _declaration_macro(text: bytes, offset: int) -> str | None:
-    """The macro whose call is the whole declaration that ends before ``offset`` (from
-    the last ``;``, ``{`` or ``}`` before it, comments left out), if it is one."""
+def _declaration_macros(text: bytes, offset: int) -> list[str]:
+    """The macros whose calls, one after another, are the whole declaration that ends
+    before ``offset`` (from the last ``;``, ``{`` or ``}`` before it, comments left
+    out), if it is such: clang reads ``A(..) B(..)`` as one declarator wanting a body
+    (autoware_utils_geometry's ``BOOST_GEOMETRY_REGISTER_POINT_2D(..)`` then ``_3D(..)``
+    and ``BOOST_GEOMETRY_REGISTER_RING(..)`` at namespace scope, Boost.Geometry's
+    headers missing), so each is one of them."""
     window = text[max(0, offset - _MACRO_SPAN):offset]
     start = max(window.rfind(b";"), window.rfind(b"{"), window.rfind(b"}")) + 1
     statement = re.sub(rb"//[^\n]*|/\*.*?\*/", b" ", window[start:], flags=re.DOTALL).strip()
-    found = _DECLARATION_MACRO.fullmatch(statement)
-    return found.group(1).decode() if found is not None else None
+    found = _macro_calls(statement)
+    if not found:
+        return []
+    # clang points at what follows the declarator: the macro calls written next, each
+    # ending its line (before the next ``;``, ``{``, ``}`` or ``#``), are the same kind
+    # of declaration
+    after = text[offset:offset + _MACRO_SPAN]
+    end = min((i for i in (after.find(b";"), after.find(b"{"), after.find(b"}"),
+                           after.find(b"#")) if i >= 0), default=len(after))
+    following = re.sub(rb"//[^\n]*|/\*.*?\*/", b" ", after[:end], flags=re.DOTALL).strip()
+    return [*found, *_macro_calls(following, whole=False)]
+
+
+def _macro_calls(statement: bytes, whole: bool = True) -> list[str]:
+    """The macros of ``statement`` when it is macro calls one after another alone (else
+    none); not ``whole``: those it starts with, each ending its line."""
+    found: list[str] = []
+    at = 0
+    while at < len(statement):
+        call = _DECLARATION_MACRO.match(statement, at)
+        line_end = statement.find(b"\n", call.end()) if call is not None else -1
+        if call is None or (not whole and statement[call.end():(
+                line_end if line_end >= 0 else len(statement))].strip()):
+            return [] if whole else found
+        found.append(call.group(1).decode())
+        at = call.end()
+        while at < len(statement) and statement[at:at + 1].isspace():
+            at += 1
+    return found
 
 
 def library_prefixes(messages: Iterable[str]) -> set[str]:
@@ -656,6 +687,12 @@ class Names:
             if self.count >= MAX_NAMES:
                 break
             self._learn_one(message, text, offset)
+            if _BODY_EXPECTED.match(message) and text is not None and _declaration_macros(
+                    text, offset):
+                # a declaration clang took for a function's swallowed what follows it:
+                # the errors after it are of that reading (the classes it hid are
+                # "undeclared"), not names to declare; the next parse shows the real ones
+                break
         self._spread()
         return (self.count, len(self.members), len(self.withdrawn),
                 len(self.withdrawn_members), self.changed) != before
@@ -784,10 +821,10 @@ class Names:
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         if _BODY_EXPECTED.match(message):
-            macro = _declaration_macro(text, offset) if text is not None else None
-            if macro is not None and macro not in self.declaration_macros:
-                self.declaration_macros.add(macro)
-                self.count += 1
+            for macro in _declaration_macros(text, offset) if text is not None else []:
+                if macro not in self.declaration_macros:
+                    self.declaration_macros.add(macro)
+                    self.count += 1
             return
         template = _NOT_TEMPLATE.match(message)
         if template is not None:
