@@ -182,7 +182,11 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
-            i.uses.append(PackageUse(name, i.where(n), guard=installed_check(i.guards)))
+            written = (n.args[0] if isinstance(n, ast.Call) and n.args
+                       else next((kw.value for kw in getattr(n, "keywords", ())
+                                  if kw.arg == "package_name"), None))
+            i.uses.append(PackageUse(name, i.written(n, written),
+                                     guard=installed_check(i.guards)))
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found
