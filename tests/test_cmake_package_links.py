@@ -909,3 +909,102 @@ def test_a_base_class_named_in_a_header_of_include_slash_package_is_run(write_tr
     assert node.sources == ["sim/src/sim.cpp", "base/src/platform.cpp"]
     assert {c.name for c in node.calls if c.kind in ("publish", "subscribe")} == {
         "state", "command"}
+
+
+def test_a_plugin_loader_runs_what_it_links_but_the_plugins_themselves(write_tree) -> None:
+    """nav2's costmap node loads its layers by name and links the library that builds
+    them: it runs its filters' base class (no class of it exported), but each layer's
+    own file is the layer's, run only when a parameter chooses it (``plugins.attach``).
+    All linked files were run: the costmap of neo_simulation2's humble configuration,
+    with an obstacle and an inflation layer, published the voxel layer's
+    ``voxel_grid`` and read the static layer's ``map_topic``."""
+    files = {
+        "costmap/package.xml": package_xml("costmap", "ament_cmake"),
+        "costmap/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(costmap)
+            find_package(rclcpp REQUIRED)
+            find_package(pluginlib REQUIRED)
+            add_library(layers SHARED src/costmap.cpp plugins/filter.cpp
+                        plugins/voxel_layer.cpp)
+            add_executable(costmap_node src/main.cpp)
+            target_link_libraries(costmap_node layers)
+            ament_package()
+            """,
+        "costmap/include/costmap/layer.hpp": """
+            #include "rclcpp/rclcpp.hpp"
+            namespace costmap {
+            class Layer { public: virtual void initialize(rclcpp::Node * node) = 0; };
+            }
+            """,
+        "costmap/include/costmap/costmap.hpp": """
+            #include "rclcpp/rclcpp.hpp"
+            #include "pluginlib/class_loader.hpp"
+            #include "costmap/layer.hpp"
+            namespace costmap {
+            class Costmap : public rclcpp::Node {
+            public:
+              Costmap();
+              pluginlib::ClassLoader<Layer> loader_{"costmap", "costmap::Layer"};
+            };
+            }
+            """,
+        "costmap/src/costmap.cpp": """
+            #include "costmap/costmap.hpp"
+            #include "std_msgs/msg/string.hpp"
+            namespace costmap {
+            Costmap::Costmap() : rclcpp::Node("costmap")
+            {
+              create_publisher<std_msgs::msg::String>("costmap", 1);
+              auto layer = loader_.createSharedInstance(
+                declare_parameter("layer", std::string("costmap::VoxelLayer")));
+              layer->initialize(this);
+            }
+            }
+            """,
+        "costmap/include/costmap/filter.hpp": """
+            #include "costmap/layer.hpp"
+            namespace costmap {
+            class Filter : public Layer { public: void initialize(rclcpp::Node * node) override; };
+            }
+            """,
+        "costmap/plugins/filter.cpp": """
+            #include "costmap/filter.hpp"
+            #include "std_msgs/msg/string.hpp"
+            namespace costmap {
+            void Filter::initialize(rclcpp::Node * node)
+            {
+              node->create_subscription<std_msgs::msg::String>(
+                "filter_info", 1, [](std_msgs::msg::String::ConstSharedPtr) {});
+            }
+            }
+            """,
+        "costmap/plugins/voxel_layer.cpp": """
+            #include "costmap/layer.hpp"
+            #include "std_msgs/msg/string.hpp"
+            #include "pluginlib/class_list_macros.hpp"
+            namespace costmap {
+            class VoxelLayer : public Layer {
+            public:
+              void initialize(rclcpp::Node * node) override
+              {
+                node->create_publisher<std_msgs::msg::String>("voxel_grid", 1);
+              }
+            };
+            }
+            PLUGINLIB_EXPORT_CLASS(costmap::VoxelLayer, costmap::Layer)
+            """,
+        "costmap/src/main.cpp": """
+            #include "costmap/costmap.hpp"
+            int main(int argc, char ** argv)
+            {
+              rclcpp::init(argc, argv);
+              rclcpp::spin(std::make_shared<costmap::Costmap>());
+            }
+            """,
+    }
+    node, _ = _node(write_tree, files, "costmap", "costmap_node")
+    assert node.sources == ["costmap/src/main.cpp", "costmap/src/costmap.cpp",
+                            "costmap/plugins/filter.cpp"]
+    assert "voxel_grid" not in {c.name for c in node.calls}
+    assert {"costmap", "filter_info"} <= {c.name for c in node.calls}
