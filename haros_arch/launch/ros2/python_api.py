@@ -210,6 +210,19 @@ def has_resource(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return Unknown(f"has_resource('packages', '{name}')")
 
 
+_DICT = builtin(dict, list, tuple, dict)
+
+
+def dict_of(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``dict(...)``: of a known mapping or pairs, then the keyword items over it, as
+    Python makes it (``dict(use_sim_time=use_sim_time)``, ``dict(common, name='x')``:
+    aerostack2-style launch helpers); a keyword's value may be any launch value."""
+    made = _DICT(i, list(a), {}, n)
+    if not k or not isinstance(made, dict):
+        return made
+    return {**made, **k}
+
+
 def package_share_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``get_package_share_path(name)``: ``get_package_share_directory`` as a
     ``pathlib.Path`` (a pure path, grown with ``/``); a package not in the workspace is
@@ -866,7 +879,7 @@ API: dict[str, Builder] = {
     "str": text_of(False), "repr": text_of(True),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
-    "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
+    "tuple": builtin(tuple, str, list, tuple), "dict": dict_of,
     "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
