@@ -830,3 +830,181 @@ def test_a_library_linked_by_its_alias_is_linked(write_tree) -> None:
     assert targets["node"].links == ["core"] and targets["node"].packages == []
     assert targets["other"].links == ["core"]
     assert "p::core" not in targets and "again" not in targets
+
+
+def test_a_base_class_named_in_a_header_of_include_slash_package_is_run(write_tree) -> None:
+    """aerostack2's as2_platform_gazebo: its CMake says
+    ``include_directories(include include/${PROJECT_NAME})`` and its source includes
+    ``"as2_platform_gazebo.hpp"``, which is ``include/as2_platform_gazebo/``'s and says
+    the class derives from as2_core's ``AerialPlatform``, a node class of a library it
+    links. The header was looked for only beside the source and in ``include/``: the
+    base class was not seen, its file was left out as a node of its own, and the
+    platform lost every subscription and service of its base while staying complete."""
+    files = {
+        "base/package.xml": package_xml("base", "ament_cmake"),
+        "base/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(base)
+            find_package(rclcpp REQUIRED)
+            add_library(base_core SHARED src/platform.cpp)
+            ament_export_targets(base_core)
+            ament_package()
+            """,
+        "base/include/base/platform.hpp": """
+            #include "rclcpp/rclcpp.hpp"
+            namespace base {
+            class Platform : public rclcpp::Node {
+            public:
+              Platform();
+            };
+            }
+            """,
+        "base/src/platform.cpp": """
+            #include "base/platform.hpp"
+            #include "std_msgs/msg/string.hpp"
+            namespace base {
+            Platform::Platform() : rclcpp::Node("platform")
+            {
+              create_subscription<std_msgs::msg::String>(
+                "command", 1, [](std_msgs::msg::String::ConstSharedPtr) {});
+            }
+            }
+            """,
+        "sim/package.xml": package_xml("sim", "ament_cmake"),
+        "sim/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(sim)
+            find_package(base REQUIRED)
+            include_directories(include include/${PROJECT_NAME})
+            add_executable(sim_node src/sim.cpp)
+            target_link_libraries(sim_node base::base_core)
+            ament_package()
+            """,
+        "sim/include/sim/sim.hpp": """
+            #include "base/platform.hpp"
+            namespace sim {
+            class SimPlatform : public base::Platform {
+            public:
+              SimPlatform();
+            };
+            }
+            """,
+        "sim/src/sim.cpp": """
+            #include "sim.hpp"
+            #include "std_msgs/msg/string.hpp"
+            namespace sim {
+            SimPlatform::SimPlatform() : base::Platform()
+            {
+              create_publisher<std_msgs::msg::String>("state", 1);
+            }
+            }
+            int main(int argc, char ** argv)
+            {
+              rclcpp::init(argc, argv);
+              rclcpp::spin(std::make_shared<sim::SimPlatform>());
+            }
+            """,
+    }
+    node, _ = _node(write_tree, files, "sim", "sim_node")
+    assert node.sources == ["sim/src/sim.cpp", "base/src/platform.cpp"]
+    assert {c.name for c in node.calls if c.kind in ("publish", "subscribe")} == {
+        "state", "command"}
+
+
+def test_a_plugin_loader_runs_what_it_links_but_the_plugins_themselves(write_tree) -> None:
+    """nav2's costmap node loads its layers by name and links the library that builds
+    them: it runs its filters' base class (no class of it exported), but each layer's
+    own file is the layer's, run only when a parameter chooses it (``plugins.attach``).
+    All linked files were run: the costmap of neo_simulation2's humble configuration,
+    with an obstacle and an inflation layer, published the voxel layer's
+    ``voxel_grid`` and read the static layer's ``map_topic``."""
+    files = {
+        "costmap/package.xml": package_xml("costmap", "ament_cmake"),
+        "costmap/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.8)
+            project(costmap)
+            find_package(rclcpp REQUIRED)
+            find_package(pluginlib REQUIRED)
+            add_library(layers SHARED src/costmap.cpp plugins/filter.cpp
+                        plugins/voxel_layer.cpp)
+            add_executable(costmap_node src/main.cpp)
+            target_link_libraries(costmap_node layers)
+            ament_package()
+            """,
+        "costmap/include/costmap/layer.hpp": """
+            #include "rclcpp/rclcpp.hpp"
+            namespace costmap {
+            class Layer { public: virtual void initialize(rclcpp::Node * node) = 0; };
+            }
+            """,
+        "costmap/include/costmap/costmap.hpp": """
+            #include "rclcpp/rclcpp.hpp"
+            #include "pluginlib/class_loader.hpp"
+            #include "costmap/layer.hpp"
+            namespace costmap {
+            class Costmap : public rclcpp::Node {
+            public:
+              Costmap();
+              pluginlib::ClassLoader<Layer> loader_{"costmap", "costmap::Layer"};
+            };
+            }
+            """,
+        "costmap/src/costmap.cpp": """
+            #include "costmap/costmap.hpp"
+            #include "std_msgs/msg/string.hpp"
+            namespace costmap {
+            Costmap::Costmap() : rclcpp::Node("costmap")
+            {
+              create_publisher<std_msgs::msg::String>("costmap", 1);
+              auto layer = loader_.createSharedInstance(
+                declare_parameter("layer", std::string("costmap::VoxelLayer")));
+              layer->initialize(this);
+            }
+            }
+            """,
+        "costmap/include/costmap/filter.hpp": """
+            #include "costmap/layer.hpp"
+            namespace costmap {
+            class Filter : public Layer { public: void initialize(rclcpp::Node * node) override; };
+            }
+            """,
+        "costmap/plugins/filter.cpp": """
+            #include "costmap/filter.hpp"
+            #include "std_msgs/msg/string.hpp"
+            namespace costmap {
+            void Filter::initialize(rclcpp::Node * node)
+            {
+              node->create_subscription<std_msgs::msg::String>(
+                "filter_info", 1, [](std_msgs::msg::String::ConstSharedPtr) {});
+            }
+            }
+            """,
+        "costmap/plugins/voxel_layer.cpp": """
+            #include "costmap/layer.hpp"
+            #include "std_msgs/msg/string.hpp"
+            #include "pluginlib/class_list_macros.hpp"
+            namespace costmap {
+            class VoxelLayer : public Layer {
+            public:
+              void initialize(rclcpp::Node * node) override
+              {
+                node->create_publisher<std_msgs::msg::String>("voxel_grid", 1);
+              }
+            };
+            }
+            PLUGINLIB_EXPORT_CLASS(costmap::VoxelLayer, costmap::Layer)
+            """,
+        "costmap/src/main.cpp": """
+            #include "costmap/costmap.hpp"
+            int main(int argc, char ** argv)
+            {
+              rclcpp::init(argc, argv);
+              rclcpp::spin(std::make_shared<costmap::Costmap>());
+            }
+            """,
+    }
+    node, _ = _node(write_tree, files, "costmap", "costmap_node")
+    assert node.sources == ["costmap/src/main.cpp", "costmap/src/costmap.cpp",
+                            "costmap/plugins/filter.cpp"]
+    assert "voxel_grid" not in {c.name for c in node.calls}
+    assert {"costmap", "filter_info"} <= {c.name for c in node.calls}

@@ -237,3 +237,48 @@ def test_a_header_of_a_stood_in_package_that_the_stand_in_lacks_is_read(write_tr
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("declare", "in_transport"), ("publish", "out")]
     assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+
+
+SEND_EVENT_HPP = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+namespace trees {
+class SendEvent {
+public:
+  explicit SendEvent(rclcpp::Node::SharedPtr node);
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}
+"""
+
+SEND_EVENT_CPP = """
+#include "trees/action/send_event.hpp"
+#include "trees/action/dock.hpp"
+namespace trees {
+SendEvent::SendEvent(rclcpp::Node::SharedPtr node)
+{
+  pub_ = node->create_publisher<std_msgs::msg::String>("event", 1);
+  trees::action::Dock::Goal goal;
+  goal.dock_id = "a";
+}
+}
+"""
+
+
+def test_a_header_at_an_interface_path_that_defines_no_interface_is_read(write_tree) -> None:
+    """aerostack2's as2_behavior_tree keeps its tree nodes' headers in
+    ``include/as2_behavior_tree/action/``: ``as2_behavior_tree/action/arm_service.hpp``
+    looks like the header of an action ``ArmService`` of the package, and an empty one
+    was synthesised in its place, though the package defines no such action: every tree
+    node's class was undeclared (55 clang errors) and their calls lost. A header the
+    package defines (``action/Dock.action``) is still the interface's."""
+    root = write_tree({
+        "trees/package.xml": package_xml("trees", "ament_cmake"),
+        "trees/action/Dock.action": "string dock_id\n---\nbool ok\n---\nfloat32 left\n",
+        "trees/include/trees/action/send_event.hpp": SEND_EVENT_HPP,
+        "trees/src/send_event.cpp": SEND_EVENT_CPP,
+    })
+    result = extract_cpp([str(root / "trees" / "src" / "send_event.cpp")],
+                         scan([str(root)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "event")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]

@@ -373,3 +373,58 @@ def test_ros1_an_include_a_condition_leaves_out_uses_no_package(write_tree):
     assert findings(model) == [("bringup/launch/robot.launch", 7, "lidar")]
     assert sorted(u.package for u in model.configurations[0].package_uses) == [
         "camera", "lidar"]
+
+
+HELPER_MODULE = """import os
+from ament_index_python.packages import get_package_share_directory
+
+
+def plugins_of(package_name, kind=None):
+    return os.path.join(get_package_share_directory(package_name), 'plugins.xml')
+
+
+def viewer_config():
+    return os.path.join(get_package_share_directory('viewer'), 'a.rviz')
+"""
+
+HELPER_LAUNCH = """from launch import LaunchDescription
+from launch_ros.actions import Node
+from core.plugin_utils import plugins_of, viewer_config
+
+
+def generate_launch_description():
+    own = plugins_of('est')
+    other = plugins_of(package_name='planner')
+    return LaunchDescription([
+        Node(package='est', executable='est_node', name='est',
+             parameters=[{'a': own, 'b': other, 'c': viewer_config()}]),
+    ])
+"""
+
+
+def test_ros2_a_package_named_by_the_caller_of_another_packages_helper_is_the_callers(
+        write_tree):
+    """aerostack2: each package's launch file calls as2_core's
+    ``get_available_plugins('<its own package>')``, whose
+    ``get_package_share_directory(package_name)`` in as2_core's module was the use:
+    as2_core was said to use six packages it never names. A package name the helper
+    is given is used where it was written, by the caller; one the helper writes itself
+    stays the helper's package's."""
+    root = write_tree({
+        "src/core/package.xml": manifest("core", build_type="ament_cmake"),
+        "src/core/CMakeLists.txt": "project(core)\nament_python_install_package(core)\n",
+        "src/core/core/__init__.py": "",
+        "src/core/core/plugin_utils.py": HELPER_MODULE,
+        "src/est/package.xml": manifest("est", ("exec_depend", "core"),
+                                        build_type="ament_cmake"),
+        "src/est/CMakeLists.txt": "project(est)\n",
+        "src/est/launch/est.launch.py": HELPER_LAUNCH,
+        "src/planner/package.xml": manifest("planner", build_type="ament_cmake"),
+        "src/planner/CMakeLists.txt": "project(planner)\n",
+        "src/viewer/package.xml": manifest("viewer", build_type="ament_cmake"),
+        "src/viewer/CMakeLists.txt": "project(viewer)\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [est/launch/est.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("core/core/plugin_utils.py", 10, "viewer"),
+                               ("est/launch/est.launch.py", 8, "planner")]

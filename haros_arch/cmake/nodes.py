@@ -243,7 +243,8 @@ def _run(target: Target, sources: SourceMap, workspace: Files) -> list[str]:
     nodes' classes that each executable links whole: robot_localization's ekf_node
     links navsat_transform.cpp, Autoware's hdd_reader every monitor's component. An
     executable whose code loads plugins by name runs all it links: the plugins' base
-    classes are named by the plugins, not by it (nav2's costmap filters)."""
+    classes are named by the plugins, not by it (nav2's costmap filters), but not a
+    file exporting plugin classes it never names (the plugins themselves)."""
     own = sources.own(target)
     return with_elsewhere(_run_here(target, own, sources, workspace), target, sources,
                            workspace)
@@ -295,8 +296,20 @@ def _run_here(target: Target, own: list[str], sources: SourceMap,
     words = set().union(*(named_words(s, workspace) for s in own),
                         *(named_words(s, workspace) for s in named if not exported[s]))
     if words & _LOADS_PLUGINS:
-        return [*own, *linked]
+        # all it links but the files that export plugin classes its code never names:
+        # a plugin's calls reach its host when a parameter chooses it
+        # (``plugins.attach``), not by linking (nav2's costmap node published the voxel
+        # layer's ``voxel_grid`` with only an obstacle and an inflation layer loaded)
+        return [*own, *(s for s in linked if not _exports_other(s, words, workspace))]
     return [*own, *(s for s in named if not exported[s] or exported[s] & words)]
+
+
+def _exports_other(source: str, words: set[str], workspace: Files) -> bool:
+    """Whether ``source`` exports plugin classes (a pluginlib macro) none of which
+    ``words`` names."""
+    exported = {name.rsplit("::", 1)[-1] for name, _ in exported_classes(
+        os.path.join(workspace.root, source), workspace)}
+    return bool(exported) and not exported & words
 
 
 def _component(target: Target, cls: str, sources: SourceMap, workspace: Files) -> list[str]:

@@ -626,17 +626,36 @@ def _with_headers(source: str, workspace: Files, depth: int) -> list[str]:
 
 
 def _included(path: str, text: str, workspace: Files) -> list[str]:
-    """The headers of the workspace ``text`` (the file at ``path``) includes by name."""
+    """The headers of the workspace ``text`` (the file at ``path``) includes by name,
+    found beside it, in its package's ``include`` folder or in that folder's
+    ``include/<package>``: CMake's ``include_directories(include/${PROJECT_NAME})`` lets
+    aerostack2's as2_platform_gazebo.cpp write ``#include "as2_platform_gazebo.hpp"``
+    for ``include/as2_platform_gazebo/as2_platform_gazebo.hpp``, the header that says
+    its class derives from as2_core's ``AerialPlatform``."""
     out = []
     package = _package_root(os.path.dirname(path), workspace.root)
+    folders = [os.path.dirname(path), *(_include_folders(package, workspace)
+                                        if package else [])]
     for header in INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
-        for folder in (os.path.dirname(path), *(
-                [os.path.join(package, "include")] if package else [])):
+        for folder in folders:
             candidate = os.path.normpath(os.path.join(folder, header))
             if os.path.isfile(candidate) and candidate.startswith(workspace.root + os.sep):
                 out.append(candidate)
                 break
     return out
+
+
+_PACKAGE_NAME = re.compile(r"<name>\s*([\w.-]+)\s*</name>")
+
+
+def _include_folders(package: str, workspace: Files) -> list[str]:
+    """A package's ``include`` folder, then ``include/<its name>`` (package.xml's name,
+    and its folder's when that differs)."""
+    include = os.path.join(package, "include")
+    manifest = _text(os.path.join(package, "package.xml"), workspace) or ""
+    found = _PACKAGE_NAME.search(manifest)
+    names = dict.fromkeys([*([found.group(1)] if found else []), os.path.basename(package)])
+    return [include, *(os.path.join(include, name) for name in names)]
 
 
 def _package_root(folder: str, top: str) -> str | None:

@@ -599,6 +599,9 @@ class IncludeSetup:
         if quoted and os.path.isfile(nearby := os.path.normpath(os.path.join(folder, header))):
             return nearby
         ros2 = _ROS2_HEADER.fullmatch(header)
+        if ros2 is not None and not self.system_headers and (
+                real := self._own_interface_like(header, ros2)) is not None:
+            return real
         if ros2 is not None and (not self.system_headers or self._resolve(header) is None):
             self._ros2_interface(header, ros2.group(1), ros2.group(2), ros2.group(3), where)
             return None
@@ -889,6 +892,24 @@ class IncludeSetup:
                 self._prepare(f"{dep}.h", "", False, where)
             return True
         return False
+
+    def _own_interface_like(self, header: str, ros2: re.Match[str]) -> str | None:
+        """A header of the workspace at the path of a ROS 2 interface's
+        (``pkg/action/name.hpp``) that ``pkg`` defines no interface for: the header
+        itself, not a synthesised message (aerostack2's
+        ``as2_behavior_tree/action/arm_service.hpp``, a behavior tree node's class; the
+        empty action in its place left every tree node's class undeclared)."""
+        real = self._resolve(header)
+        if real is None or not real.startswith(self.workspace.root + os.sep):
+            return None
+        package, kind, snake = ros2.group(1), ros2.group(2), ros2.group(3)
+        folder = self.workspace.find(package)
+        if folder is None:
+            return None
+        names = [f[: -len(kind) - 1] for f in self._definitions(folder, kind)]
+        if any(ros2_interfaces.snake_case(name) == snake for name in names):
+            return None
+        return real
 
     def _ros2_interface(self, header: str, package: str, kind: str, snake: str,
                         where: Location) -> None:

@@ -94,6 +94,9 @@ class Interpreter(Expressions):
         self.limits = LIMITS
         self.depth = 0
         self.running: list[ast.AST] = []  # the functions being run, outermost first
+        # where each of them was called: the call, the function, the caller's file and
+        # how many values were given before the call's own arguments (a method's self)
+        self.call_sites: list[tuple[ast.AST, Func, str, int]] = []
         self.guards: list[Guard] = []  # the unknown Python `if` tests we are under
         self.guard_runs = 0
         self.decided: dict[int, ast.AST] = {}
@@ -118,6 +121,28 @@ class Interpreter(Expressions):
         self.methods = METHODS
 
     # -- diagnostics -------------------------------------------------------------------
+    def written(self, node: ast.AST, expression: ast.AST | None) -> Location:
+        """Where the value of ``expression`` (an argument of the call ``node``) was
+        written: ``node``'s place, unless ``expression`` is a parameter of the function
+        being run, which another file's call gave: then that call's place, and so on up
+        (aerostack2's launch files call as2_core's ``get_available_plugins(package)``,
+        whose ``get_package_share_directory(package_name)`` asks for the caller's
+        package, not for one as2_core names)."""
+        here = self.where(node)
+        place, path = here, self.path
+        depth = len(self.call_sites)
+        while isinstance(expression, ast.Name) and depth > 0:
+            site, func, caller, given = self.call_sites[depth - 1]
+            expression = _argument_written(site, func, expression.id, given)
+            if expression is None:
+                break
+            depth -= 1
+            if caller != path:
+                line = getattr(site, "lineno", 0) or 0
+                place = self.workspace.location(caller, line, getattr(site, "col_offset", -1) + 1)
+                path = caller
+        return here if place.file == here.file else place
+
     def where(self, node: ast.AST | None) -> Location:
         line = getattr(node, "lineno", 0) or 0
         col = getattr(node, "col_offset", -1) + 1
@@ -1095,6 +1120,8 @@ class Interpreter(Expressions):
             raise Budget(f"calls nested deeper than {MAX_CALL_DEPTH}")
         self.running.append(func.node)
         outer = self.path
+        written = len(node.args) if isinstance(node, ast.Call) else len(args)
+        self.call_sites.append((node, func, outer, len(args) - written))
         self.path = _file_of(func.closure, outer)  # a function of an imported module
         env: dict[str, Any] = {}
         try:
@@ -1137,6 +1164,7 @@ class Interpreter(Expressions):
             _write_outer(env)
             self.depth = max(self.depth - 1, 0)
             self.running.pop()
+            self.call_sites.pop()
             self.path = outer
 
 
@@ -1251,6 +1279,22 @@ def _write_outer(env: dict[str, Any]) -> None:
     for name, scope in env.get(_OUTER, {}).items():
         if name in env:
             scope[name] = env[name]
+
+
+def _argument_written(site: ast.AST, func: Func, name: str, given: int) -> ast.AST | None:
+    """The expression ``site`` (a call of ``func``) wrote for its parameter ``name``;
+    None when not written there (a default, ``*args``, ``**kwargs``, a lambda's)."""
+    if not isinstance(site, ast.Call) or not isinstance(func.node, ast.FunctionDef):
+        return None
+    params = func.node.args
+    positional = [a.arg for a in params.posonlyargs + params.args]
+    for keyword in site.keywords:
+        if keyword.arg == name:
+            return keyword.value
+    if name not in positional or any(isinstance(a, ast.Starred) for a in site.args):
+        return None
+    index = positional.index(name) - given
+    return site.args[index] if 0 <= index < len(site.args) else None
 
 
 def _file_of(closure: dict[str, Any], default: str) -> str:

@@ -184,7 +184,11 @@ def package_directory(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         name = arg(a, k, 0, "package_name")
         if isinstance(name, str):
-            i.uses.append(PackageUse(name, i.where(n), guard=installed_check(i.guards)))
+            written = (n.args[0] if isinstance(n, ast.Call) and n.args
+                       else next((kw.value for kw in getattr(n, "keywords", ())
+                                  if kw.arg == "package_name"), None))
+            i.uses.append(PackageUse(name, i.written(n, written),
+                                     guard=installed_check(i.guards)))
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found
@@ -206,6 +210,19 @@ def has_resource(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     i.unknown_value(n, f"whether package {name} is installed where the launch file runs "
                        "is not known here")
     return Unknown(f"has_resource('packages', '{name}')")
+
+
+_DICT = builtin(dict, list, tuple, dict)
+
+
+def dict_of(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``dict(...)``: of a known mapping or pairs, then the keyword items over it, as
+    Python makes it (``dict(use_sim_time=use_sim_time)``, ``dict(common, name='x')``:
+    aerostack2-style launch helpers); a keyword's value may be any launch value."""
+    made = _DICT(i, list(a), {}, n)
+    if not k or not isinstance(made, dict):
+        return made
+    return {**made, **k}
 
 
 def package_share_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -866,7 +883,7 @@ API: dict[str, Builder] = {
     "str": text_of(False), "repr": text_of(True),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
-    "tuple": builtin(tuple, str, list, tuple), "dict": builtin(dict, list, tuple, dict),
+    "tuple": builtin(tuple, str, list, tuple), "dict": dict_of,
     "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
     "max": builtin(max, int, float, list, tuple), "abs": builtin(abs, int, float),
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),

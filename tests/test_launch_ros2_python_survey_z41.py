@@ -1,0 +1,29 @@
+"""Python launch file shapes met on real workspaces (survey Z41, 2026-12-02)."""
+
+from __future__ import annotations
+
+from test_launch_ros2_python import codes, run
+
+
+def test_dict_with_keyword_items(write_tree):
+    """``dict(key=value)`` and ``dict(mapping, key=value)``, as a launch helper builds the
+    arguments of an include or a node's parameters (the survey's aerostack2 bringup
+    wrapper: ``dict(common, plugin_name='ground_truth')``). Keyword items made the value
+    not known: LAUNCH_PY_UNSUPPORTED and the node's parameters lost."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    ns = LaunchConfiguration('namespace')
+    common = {'use_sim_time': True}
+    return LaunchDescription([
+        DeclareLaunchArgument('namespace', default_value='drone0'),
+        Node(package='p', executable='est', name='est', namespace=ns,
+             parameters=[dict(common, plugin_name='ground_truth'),
+                         dict(rate=2.0, frame=ns),
+                         dict([('a', 1)], b=2)]),
+    ])
+""")
+    assert {p.name: p.value for p in model.params} == {
+        "/drone0/est/use_sim_time": True, "/drone0/est/plugin_name": "ground_truth",
+        "/drone0/est/rate": 2.0, "/drone0/est/frame": "drone0",
+        "/drone0/est/a": 1, "/drone0/est/b": 2}
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
