@@ -214,3 +214,32 @@ def generate_launch_description():
     return LaunchDescription(list(chain(*lists)) + list(itertools.chain([], ())))
 """)
     assert [n.name for n in model.nodes] == ["/c6_a", "/c6_b", "/c7_a", "/c7_b"]
+
+
+def test_defaultdict_of_lists(write_tree):
+    """autoware_component_state_monitor's launch file groups its topic monitors by type
+    and module with ``defaultdict(lambda: defaultdict(list))`` for the component's
+    parameters; 'not interpreted' before, and the parameters unknown."""
+    model, _ = run(write_tree, """
+from collections import defaultdict
+import collections
+
+def generate_launch_description():
+    rows = [{'type': 'topic', 'module': 'map', 'name': 'a'},
+            {'type': 'topic', 'module': 'map', 'name': 'b'},
+            {'type': 'tf', 'module': 'loc', 'name': 'c'}]
+    grouped = defaultdict(lambda: defaultdict(list))
+    for row in rows:
+        grouped[row['type']][row['module']].append(row['name'])
+    grouped = {t: dict(m) for t, m in grouped.items()}
+    counts = collections.defaultdict(int)
+    for row in rows:
+        counts[row['module']] += 1
+    return LaunchDescription([Node(package='p', executable='monitor', name='monitor',
+                                   parameters=[grouped, {'maps': counts['map']}])])
+""")
+    params = {p.name: p.value for p in model.params}
+    assert params["/monitor/topic.map"] == ["a", "b"]
+    assert params["/monitor/tf.loc"] == ["c"]
+    assert params["/monitor/maps"] == 2
+    assert not [d for d in model.diagnostics if d.code.startswith("LAUNCH_PY")]

@@ -29,6 +29,7 @@ from .python_values import (
     Budget,
     Constructing,
     Context,
+    DefaultDict,
     EnumMember,
     Func,
     Guard,
@@ -351,6 +352,13 @@ class Expressions(Walker):
             # ``ld.add_action(spawn_entity[i])`` in a loop over robots whose number is
             # not known): one of them, so each, under the test it was made under
             return self.either(list(value), f"{_source(node)}")
+        if isinstance(value, DefaultDict) and value.factory is not None and not (
+                _opaque(key) or isinstance(key, (list, dict, slice))):
+            hashable = _hashable(key)
+            if not _opaque(hashable) and hashable not in value and not open_keys(value):
+                # a key it lacks: what the factory makes, stored, as Python's does
+                value[hashable] = self.call(value.factory, [], {}, node)
+                self.sized(value)
         if isinstance(key, slice) or isinstance(value, (dict, list, tuple, str)):
             self.step(ops.walk_cost(key, LIMITS))  # a key is hashed
             try:

@@ -27,6 +27,7 @@ from .python_values import (
     LIMITS,
     Budget,
     Context,
+    DefaultDict,
     Instance,
     LaunchDescription,
     Lazy,
@@ -139,6 +140,19 @@ def yaml_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return i.unsupported(n, f"{_source(n)}: a YAML loader other than the safe or full "
                                 "one is not run")
     return safe_load(i, a[:1], {}, n)
+
+
+def default_dict(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``collections.defaultdict(factory[, mapping])``: the dict that fills a key it
+    lacks with ``factory()`` when it is looked up (autoware_component_state_monitor's
+    ``defaultdict(lambda: defaultdict(list))``); with no factory, a plain dict's lookup."""
+    if k or len(a) > 2 or (len(a) == 2 and not isinstance(a[1], dict)):
+        return i.unsupported(n, f"{_source(n)}: defaultdict with these arguments is not "
+                                "interpreted")
+    made = DefaultDict(a[0] if a else None)
+    if len(a) == 2:
+        made.update(a[1])
+    return made
 
 
 def chained(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -223,6 +223,16 @@ class LaunchDescription:
     actions: list[Any] = field(default_factory=list)
 
 
+class DefaultDict(dict):  # type: ignore[type-arg]
+    """``collections.defaultdict(factory)``: a dict whose lookup of a key it lacks
+    stores what calling ``factory`` (an interpreted value: ``list``, a lambda) gives
+    (``Interpreter.eval_Subscript``); a plain dict to everything else."""
+
+    def __init__(self, factory: Any, *args: Any) -> None:
+        super().__init__(*args)
+        self.factory = factory
+
+
 @dataclass(frozen=True)
 class Context:
     """The ``context`` an ``OpaqueFunction`` receives: reads the runner's scope.
@@ -243,7 +253,7 @@ class Context:
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy", "launch_pal",
                 "controller_manager", "robotnik_common", "moveit_configs_utils",
-                "launch_param_builder", "itertools")
+                "launch_param_builder", "itertools", "collections")
 
 
 def _known_module(qualified: str) -> bool:
