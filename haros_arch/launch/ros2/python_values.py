@@ -223,7 +223,7 @@ class LaunchDescription:
     actions: list[Any] = field(default_factory=list)
 
 
-class DefaultDict(dict):  # type: ignore[type-arg]
+class DefaultDict(dict[Any, Any]):
     """``collections.defaultdict(factory)``: a dict whose lookup of a key it lacks
     stores what calling ``factory`` (an interpreted value: ``list``, a lambda) gives
     (``Interpreter.eval_Subscript``); a plain dict to everything else."""
