@@ -1008,3 +1008,117 @@ def test_a_plugin_loader_runs_what_it_links_but_the_plugins_themselves(write_tre
                             "costmap/plugins/filter.cpp"]
     assert "voxel_grid" not in {c.name for c in node.calls}
     assert {"costmap", "filter_info"} <= {c.name for c in node.calls}
+
+
+def _xml(name: str, depends: list[str]) -> str:
+    deps = "".join(f"<depend>{d}</depend>" for d in depends)
+    return (f'<?xml version="1.0"?>\n<package format="3"><name>{name}</name>'
+            f"<version>0.1.0</version><description>d</description>"
+            f'<maintainer email="a@b.c">m</maintainer><license>MIT</license>'
+            f"<buildtool_depend>ament_cmake_auto</buildtool_depend>{deps}"
+            f"<export><build_type>ament_cmake</build_type></export></package>\n")
+
+
+UMBRELLA = {
+    # a header-only package that re-exports its parts (autoware_utils 1.3: its CMake is
+    # ``ament_auto_package()`` alone, its package.xml depends on autoware_utils_logging, ...)
+    "utils/package.xml": _xml("utils", ["utils_logging"]),
+    "utils/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.14)
+        project(utils)
+        find_package(ament_cmake_auto REQUIRED)
+        ament_auto_find_build_dependencies()
+        ament_auto_package()
+        """,
+    "utils/include/utils/utils.hpp": """
+        #include "utils_logging/logger_level_configure.hpp"
+        """,
+    "utils_logging/package.xml": _xml("utils_logging", ["rclcpp"]),
+    "utils_logging/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.14)
+        project(utils_logging)
+        find_package(ament_cmake_auto REQUIRED)
+        ament_auto_find_build_dependencies()
+        ament_auto_add_library(${PROJECT_NAME} SHARED src/logger_level_configure.cpp)
+        ament_auto_package()
+        """,
+    "utils_logging/include/utils_logging/logger_level_configure.hpp": """
+        #include "rclcpp/rclcpp.hpp"
+        #include "std_srvs/srv/trigger.hpp"
+        namespace utils_logging {
+        class LoggerLevelConfigure {
+        public:
+          explicit LoggerLevelConfigure(rclcpp::Node * node);
+        private:
+          rclcpp::Service<std_srvs::srv::Trigger>::SharedPtr srv_;
+        };
+        }
+        """,
+    "utils_logging/src/logger_level_configure.cpp": """
+        #include "utils_logging/logger_level_configure.hpp"
+        namespace utils_logging {
+        LoggerLevelConfigure::LoggerLevelConfigure(rclcpp::Node * node)
+        {
+          srv_ = node->create_service<std_srvs::srv::Trigger>(
+            "~/config_logger",
+            [](const std::shared_ptr<std_srvs::srv::Trigger::Request>,
+               std::shared_ptr<std_srvs::srv::Trigger::Response>) {});
+        }
+        }
+        """,
+    "calibrator/package.xml": _xml("calibrator", ["rclcpp", "utils"]),
+    "calibrator/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.14)
+        project(calibrator)
+        find_package(ament_cmake_auto REQUIRED)
+        ament_auto_find_build_dependencies()
+        ament_auto_add_executable(calibrator src/calibrator.cpp)
+        ament_auto_package()
+        """,
+    "calibrator/src/calibrator.cpp": """
+        #include <memory>
+        #include "rclcpp/rclcpp.hpp"
+        #include "utils/utils.hpp"
+        class Calibrator : public rclcpp::Node {
+        public:
+          Calibrator() : rclcpp::Node("calibrator") {
+            logger_configure_ = std::make_unique<utils_logging::LoggerLevelConfigure>(this);
+            declare_parameter<double>("gain", 1.0);
+          }
+        private:
+          std::unique_ptr<utils_logging::LoggerLevelConfigure> logger_configure_;
+        };
+        int main(int argc, char ** argv)
+        {
+          rclcpp::init(argc, argv);
+          rclcpp::spin(std::make_shared<Calibrator>());
+        }
+        """,
+}
+
+
+def test_a_header_only_package_brings_the_libraries_it_exports(write_tree) -> None:
+    """Autoware's accel_brake_map_calibrator depends on autoware_utils, which builds no
+    library and exports autoware_utils_logging, ...; the calibrator builds
+    ``LoggerLevelConfigure(this)``, whose constructor (in autoware_utils_logging's
+    library) serves ``~/config_logger``. The linked package's own dependencies were
+    never followed: the constructor was not read and the node partial
+    (CPP_NODE_PASSED)."""
+    node, _ = _node(write_tree, UMBRELLA, "calibrator", "calibrator")
+    assert "utils_logging/src/logger_level_configure.cpp" in node.sources
+    assert sorted((c.kind, c.name) for c in node.calls) == [
+        ("declare", "gain"), ("server", "~config_logger")]
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_package_with_a_library_does_not_bring_what_it_exports(write_tree) -> None:
+    """Only a package with no library of its own hands on its dependencies' libraries;
+    one with a library of its own keeps them its own business, as before."""
+    files = dict(UMBRELLA)
+    files["utils/CMakeLists.txt"] = files["utils/CMakeLists.txt"].replace(
+        "ament_auto_package()", "ament_auto_add_library(utils SHARED src/utils.cpp)\n"
+        "        ament_auto_package()")
+    files["utils/src/utils.cpp"] = '#include "utils/utils.hpp"\nnamespace utils { int x; }\n'
+    node, _ = _node(write_tree, files, "calibrator", "calibrator")
+    assert "utils_logging/src/logger_level_configure.cpp" not in node.sources
+    assert node.completeness == "partial"

@@ -139,6 +139,19 @@ def _package_links(name: str, workspace: Workspace) -> list[str]:
                               for other in sources.packages(target)))
 
 
+# the package.xml dependencies a package hands its users (format 2 and 3)
+_EXPORTED = ("depend", "build_export_depend")
+
+
+def package_exports(name: str, workspace: Workspace) -> list[str]:
+    """The dependencies the workspace package ``name`` exports to the packages that
+    build on it (``depend``, ``build_export_depend``); none when it is not one."""
+    package = workspace.packages.get(name)
+    if package is None:
+        return []
+    return list(dict.fromkeys(d.name for d in package.dependencies if d.kind in _EXPORTED))
+
+
 # a macro two targets that compile one source define differently, or that a target and a
 # library it links define differently: which one a parse should take is not known
 CONFLICT = CompileDefinition("", None, known=False)
@@ -271,7 +284,8 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     found = list(found)
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
                         build_depends(package), package.name,
-                        lambda name: package_links(name, workspace))
+                        lambda name: package_links(name, workspace),
+                        lambda name: package_exports(name, workspace))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     nodes.extend(gazebo_plugins(interpreter, package, files, sources))

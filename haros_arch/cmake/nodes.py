@@ -107,7 +107,7 @@ class SourceMap:
 
     def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
                  build_depends: Sequence[str] = (), package: str = "",
-                 links: Links | None = None) -> None:
+                 links: Links | None = None, exports: Links | None = None) -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
@@ -116,6 +116,7 @@ class SourceMap:
         self._build_depends = list(build_depends)
         self._package = package  # its own libraries are ``linked``'s
         self._links = links
+        self._exports = exports  # a package's exported dependencies (``package_exports``)
 
     def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
         if target.name in self._own:
@@ -190,8 +191,27 @@ class SourceMap:
         publishers are no node's)."""
         if self._elsewhere is None:
             return []
-        found = (self._elsewhere(name) for name in self.packages(target))
-        return [group for group in found if group]
+        out: list[list[str]] = []
+        seen = {self._package}
+        for name in self.packages(target):
+            seen.add(name)
+            group = self._elsewhere(name)
+            if group:
+                out.append(group)
+            elif group == [] and self._exports is not None:
+                # a workspace package that builds no library of its own, a header-only
+                # umbrella (autoware_utils, whose CMake is ``ament_auto_package()``
+                # alone), hands its users the libraries of the packages it exports:
+                # ament (``ament_export_dependencies``, ament_cmake_auto) and catkin
+                # (``CATKIN_DEPENDS``) put theirs in its ``_LIBRARIES``
+                for other in self._exports(name):
+                    if other in seen or other in MODELLED_PACKAGES:
+                        continue
+                    seen.add(other)
+                    more = self._elsewhere(other)
+                    if more:
+                        out.append(more)
+        return out
 
     def reached(self, target: Target) -> list[list[str]]:
         """``elsewhere``'s groups, then those of the packages their libraries link, and
