@@ -51,6 +51,7 @@ from .conditions import (
 from .processes import (
     code_node,
     guessed_names,
+    own_calls,
     process_nodes,
     process_params,
     unnamed_param_files,
@@ -160,7 +161,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         config.nodes.append(instance)
         if instance.node is None:
             continue
-        _link_calls(instance, [*instance.node.calls_of(own), *in_process_nodelets(
+        _link_calls(instance, [*own_calls(decl, instance.node, own), *in_process_nodelets(
             instance, nodes, plugin_models)], resources, config, transports)
     # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
@@ -840,7 +841,8 @@ def _made_under(node: Node | None, own: str | None) -> tuple[Condition, ...]:
     """The source conditions under which a process makes one of its nodes but the first:
     those all its calls share (the extractor gives each call of such a node the
     conditions of its construction, ``cpp._made_under``)."""
-    if node is None or own is None or len(node.rosnames) < 2 or own == node.rosnames[0]:
+    if node is None or own is None or len(node.rosnames) < 2 or own in (
+            node.rosnames[0], UNKNOWN_MARK):  # ``?``: calls of nodes made apart
         return ()
     calls = node.calls_of(own)
     if not calls:
