@@ -446,7 +446,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # such a handle: filled as the name is
         lists = sorted({listed for c in call.conditions for _, listed, _ in c.elements or ()
                         if PLACEHOLDER in listed})
-        node_text = named.get(call.node_name or "")
+        node_text = _site_asked(named.get(call.node_name or ""))
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
             filled_lists = _lists_filled(call, {
                 listed: _parameter_filled(listed, known.passed) for listed in lists})
@@ -454,7 +454,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 out.append(filled_lists)
                 continue
             out.extend(_on_each_node(filled_lists, _expand(
-                node_text, known.passed, 0, unbuilt, unrun, idle)))
+                node_text, known.passed, 0, unbuilt, unrun, idle), known.within, unbuilt))
             continue
         namespace = call.handle_namespace
         written = call.name
@@ -505,7 +505,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             if made.struct_member and made.name.startswith(("?", "~?")):
                 continue  # what was handed is no parameter's value: nothing read
             if node_text is not None:
-                made = _on_each_node(made, [node_filled])[0]
+                made = _on_each_node(made, [node_filled], known.within, unbuilt, call)[0]
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
@@ -515,6 +515,10 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
 _NODE_SPLIT = "\x11"  # before the node name expanded with a call's name (``resolve``)
+# around a function's USR: ``_expand`` writes the call site whose values it takes for that
+# function's placeholders in its stead (after ``_SITE_AT``)
+_SITE_OF = "\x13"
+_SITE_AT = "\x14"
 # between a call's owner and the node one construction of it names (``resolve``)
 NODE_OF = "\x12"
 
@@ -528,17 +532,38 @@ def per_construction(owner: str | None) -> tuple[str | None, str | None]:
     return owner, node
 
 
-def _on_each_node(call: PrimitiveCall, names: list[str]) -> list[PrimitiveCall]:
+def _site_asked(text: str | None) -> str | None:
+    """A node name with placeholders, asking ``_expand`` for the site of the constructor
+    they name (``_SITE_OF``)."""
+    if text is None:
+        return None
+    found = _MARK.search(text)
+    return text if found is None else f"{text}{_SITE_OF}{found.group(1)}{_SITE_OF}"
+
+
+def _on_each_node(call: PrimitiveCall, names: list[str], within: dict[str, str],
+                  unbuilt: Callable[[str], bool], whole: PrimitiveCall | None = None
+                  ) -> list[PrimitiveCall]:
     """``call`` once per node name (``resolve``'s ``named``), each fully known one
-    written into its ``node_name``; one not known leaves the call's owner alone."""
+    written into its ``node_name``; one not known leaves the call's owner alone. A
+    construction in a constructor the node never runs (``within``, ``unbuilt``: a
+    subclass no file builds, topic_tools' Mux beside the Relay main makes) makes none;
+    when no construction is left, the call as it was (``whole``, else ``call``)."""
     out: list[PrimitiveCall] = []
     for filled in names:
+        filled, _, site = filled.partition(_SITE_AT)
+        site = site.rstrip(_SITE_OF)
+        if _SITE_OF in filled:  # no site filled it: not asked of any
+            filled = filled.split(_SITE_OF, 1)[0]
+        caller = within.get(site) if site else None
+        if caller is not None and unbuilt(caller):
+            continue
         name = node_name_joined(_unmarked(filled)) if PLACEHOLDER not in filled else "?"
         made = call if not name or "?" in name else dataclasses.replace(
             call, node_name=f"{call.node_name}{NODE_OF}{name}")
         if made not in out:
             out.append(made)
-    return out
+    return out or [call if whole is None else dataclasses.replace(call, node_name=whole.node_name)]
 _LIST_SPLIT = "\x10"  # before each list of its conditions' elements expanded with it
 
 
@@ -779,16 +804,19 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     if match is None:
         return [choose(text)]
     usr = match.group(1)
-    sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
-    if idle is not None and len(sites) > 1:
-        running = [values for site, values in passed[usr].items() if not idle(site)]
-        sites = running or sites
+    items = list(passed.get(usr, {}).items()) if depth < MAX_DEPTH else []
+    if idle is not None and len(items) > 1:
+        running = [(site, values) for site, values in items if not idle(site)]
+        items = running or items
+    sites = [values for _, values in items]
     if depth and not sites and unbuilt is not None and unbuilt(usr):
         return []
     if not sites and depth < MAX_DEPTH and unrun is not None and unrun(usr):
         return []
     out: list[str] = []
-    for values in sites or [{}]:
+    mark = f"{_SITE_OF}{usr}{_SITE_OF}"  # the site of this function's call, asked for
+    for site, values in items or [("", {})]:
+        here = text.replace(mark, f"{_SITE_AT}{site}{_SITE_OF}") if mark in text else text
         def fill(found: re.Match[str], values: dict[int, str] = values) -> str:
             if found.group(1) != usr:
                 return found.group(0)
@@ -797,7 +825,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in _marked_usrs(value) else value
-        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt, unrun,
+        for filled in _expand(_MARK.sub(fill, here), passed, depth + 1, unbuilt, unrun,
                               idle):
             if filled not in out:
                 out.append(filled)
