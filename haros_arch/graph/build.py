@@ -899,6 +899,9 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     ``name.<key>.<field>``), none for an empty list (unless the launch file sets it
     under a condition); without such a value, the call as it is (its name keeps its
     ``?``)."""
+    members = _member_calls(call, instance, resources)
+    if members is not None:
+        return members
     if call.name_each is None or call.name_param is None:
         return _element_turns(call, instance, resources)
     full = _list_name(call.name_param, instance)
@@ -930,6 +933,39 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                     name_default=None, name_each=None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
+
+
+def _member_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources
+                  ) -> list[PrimitiveCall] | None:
+    """A read of each member of a ROS 1 struct parameter the code walks and hands on
+    (``PrimitiveCall.struct_member``: ``~rigid_bodies/?/child_frame_id``): one read per
+    member the launch files set under the struct (``~rigid_bodies/1/child_frame_id``,
+    ``~rigid_bodies/2/child_frame_id``), as ``element_calls`` names a list's elements;
+    none when they set it to an empty dictionary unconditionally (the loop runs no
+    turn). None where no member is known (the read keeps its ``?``)."""
+    if not call.struct_member or call.name.count(UNKNOWN_MARK) != 1:
+        return None
+    head, mark, rest = call.name.partition("/" + UNKNOWN_MARK)
+    if not mark or not head or head == "~" or (rest and not rest.startswith("/")):
+        return None
+    full = _list_name(head, instance).rstrip("/")
+    param = resources.by_name.get((Parameter, full))
+    value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if value is not None:
+        if not isinstance(value, dict):
+            return None
+        keys = [str(key) for key in value]
+    else:
+        keys = list(dict.fromkeys(
+            name[len(full) + 1:].split("/", 1)[0] for (cls, name), found
+            in resources.by_name.items() if cls is Parameter and name.startswith(full + "/")
+            and isinstance(found, Parameter) and found.set_by_launch))
+        if not keys:
+            return None
+    if not keys and isinstance(param, Parameter) and param.launch_conditions:
+        return [call]  # empty only where the launch file's condition holds
+    return [replace(call, name=f"{head}/{key}{rest}") for key in keys
+            if key and "/" not in key and UNKNOWN_MARK not in key]
 
 
 def _list_name(param: str, instance: NodeInstance) -> str:
