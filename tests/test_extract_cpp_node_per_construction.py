@@ -134,3 +134,51 @@ def test_a_call_whose_node_is_not_known_is_no_node_s_as_a_fact(write_tree) -> No
     assert [own for _, own in made] == ["executor", "executor_lc_mngr", "planner_lc_mngr"]
     assert own_calls(made[0][0], node, "executor") == [
         c for c in result.calls if c.node_name is None]
+
+
+DELEGATING = """
+#include <memory>
+#include <string>
+#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+
+namespace plan {
+class Router : public rclcpp::Node {
+public:
+  explicit Router(const std::string & node_name = "router")
+  : Router(rclcpp::NodeOptions(), node_name) {}
+  Router(const rclcpp::NodeOptions & options, const std::string & node_name = "router")
+  : rclcpp::Node(node_name, options) {
+    pub_ = create_publisher<std_msgs::msg::String>("routed", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}  // namespace plan
+"""
+
+DELEGATING_MAIN = """
+#include "pkg/router.hpp"
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::NodeOptions options;
+  auto node = std::make_shared<rclcpp::Node>("container", options);
+  auto router = std::make_shared<plan::Router>(options, "mavros_like_router");
+  rclcpp::spin(node);
+}
+"""
+
+ROUTER_SOURCE = '#include "pkg/router.hpp"\nplan::Router * make() { return nullptr; }\n'
+
+
+def test_a_delegating_constructor_nothing_calls_names_no_node(write_tree) -> None:
+    """mavros' Router has ``Router(node_name) : Router(NodeOptions(), node_name)`` beside
+    the ``Router(options, node_name)`` mavros_node's main builds: the file that holds the
+    first's code named the class's node by its parameter, which no call fills ("?"),
+    beside "mavros_router": two names, no node told, and the router's 23 calls went to
+    the process's first node."""
+    root = write_tree({"pkg/package.xml": PACKAGE, "pkg/include/pkg/router.hpp": DELEGATING,
+                       "pkg/src/main.cpp": DELEGATING_MAIN,
+                       "pkg/src/router.cpp": ROUTER_SOURCE})
+    result = _extract(root, "main.cpp", "router.cpp")
+    assert sorted(result.rosnames) == ["container", "mavros_like_router"]
+    assert ("publish", "routed", "mavros_like_router") in rows(result)

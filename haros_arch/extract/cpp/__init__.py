@@ -541,15 +541,26 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     found = _reached(units, unseen, entry)
     reached, hiding, entered, named, scoped = found if found is not None else (
         None, unseen, set(), set(), {})
+    unbuilt_constructor = links.constructor_unbuilt(facts, unseen)
+    idle_names: set[tuple[str, str]] = set()
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
             owners.setdefault(owner, [])
+            marked = links.constructor_marked(written) if "?" in name else None
+            if marked is not None and unbuilt_constructor(marked):
+                idle_names.add((owner, name))
             if name not in owners[owner]:
                 owners[owner].append(name)
             if "?" not in name and name not in result.rosnames and (
                     reached is None or owner in reached):
                 result.rosnames.append(name)
+    for owner, names in owners.items():
+        # a name a constructor no file of the node calls would give (mavros' delegating
+        # ``Router(node_name) : Router(NodeOptions(), node_name)`` beside the
+        # ``Router(options, "mavros_router")`` main builds) is none, when another is known
+        if any((owner, name) not in idle_names for name in names):
+            names[:] = [name for name in names if (owner, name) not in idle_names]
     if reached is not None and result.rosname is not None and not any(
             owner in reached for owner, names in owners.items() if result.rosname in names):
         # named by a class the process never makes (a header's node class beside the
