@@ -14,6 +14,7 @@ import textwrap
 
 from conftest import package_xml
 
+from haros_arch.model.values import UNKNOWN_MARK
 from haros_arch.pipeline import analyse
 from haros_arch.project import load
 from haros_arch.query import run_catalogue
@@ -130,3 +131,41 @@ def test_struct_members_handed_to_a_constructor_read_their_keys(write_tree):
     unread = sorted(f.entities[0] for f in run_catalogue(model)
                     if f.rule == "parameter-set-not-read")
     assert unread == ["parameter:/bodies/rigid_bodies/2/frame_id"]
+
+
+def test_each_member_the_launch_file_sets_is_read_by_name(write_tree):
+    """The reads of the members' keys were ``~rigid_bodies/?/child_frame_id``: one
+    ``unresolved-names`` finding per key, and every key the launch file sets under a
+    member was undecided for ``parameter-set-not-read``. The graph reads each member the
+    launch file sets, as it does a list's elements (``graph.build.element_calls``)."""
+    root = write_tree({
+        "src/bodies/package.xml": package_xml("bodies").replace(
+            "</package>", "<depend>roscpp</depend></package>"),
+        "src/bodies/CMakeLists.txt": (
+            "project(bodies)\nfind_package(catkin REQUIRED)\ncatkin_package()\n"
+            "include_directories(include)\n"
+            "add_executable(bodies src/node.cpp src/config.cpp)\n"),
+        "src/bodies/include/bodies/body.h": textwrap.dedent(HEADER),
+        "src/bodies/src/config.cpp": textwrap.dedent(CONFIG),
+        "src/bodies/src/node.cpp": textwrap.dedent(NODE),
+        "src/bodies/launch/bodies.launch": textwrap.dedent(LAUNCH),
+        "project.yaml": "project: p\ndistro: noetic\nworkspace: src\nconfigurations:\n"
+                        "  c: [bodies/launch/bodies.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {})
+    config = model.configurations[0]
+    reads = {link.name for link in config.links if link.kind == "read"}
+    assert {"/bodies/rigid_bodies/1/child_frame_id", "/bodies/rigid_bodies/2/child_frame_id",
+            "/bodies/rigid_bodies/1/parent_frame_id",
+            "/bodies/rigid_bodies/2/parent_frame_id", "/bodies/gain_sets/fast"} <= reads
+    assert not [name for name in reads if UNKNOWN_MARK in name]
+    findings = run_catalogue(model)
+    assert [f.entities[0] for f in findings if f.rule == "unresolved-names"] == []
+    assert sorted(f.entities[0] for f in findings if f.rule == "parameter-set-not-read") == [
+        "parameter:/bodies/rigid_bodies/2/frame_id"]
+    # nothing set under it: the read keeps its '?'
+    (root / "src/bodies/launch/bodies.launch").write_text(
+        '<launch><node pkg="bodies" type="bodies" name="bodies"/></launch>\n')
+    config = analyse(load(str(root / "project.yaml")), {}).configurations[0]
+    assert "/bodies/rigid_bodies/?/child_frame_id" in {
+        link.name for link in config.links if link.kind == "read"}

@@ -65,8 +65,9 @@ def test_each_class_names_its_node_and_its_calls(base: CppResult) -> None:
         ("subscribe", "wheel_speed", "odometry_node"),
         # a device class, constructed by the driver only, publishes on the driver's node
         ("publish", "battery_voltage", "rover_base_node"),
-        # constructed by both nodes: no one node (the graph gives it to the first)
-        ("publish", "heartbeat", None),
+        # constructed by both nodes, each handing its own: made on each
+        ("publish", "heartbeat", "rover_base_node"),
+        ("publish", "heartbeat", "odometry_node"),
     }
 
 
@@ -166,12 +167,12 @@ def test_the_executable_has_two_node_instances(model: Model) -> None:
     config = model.configuration("base")
     assert [n.name for n in config.nodes] == ["/rover_base_node", "/odometry_node"]
     assert links(model, "/odometry_node") == [
-        ("publish", "/odom"), ("subscribe", "/wheel_speed")]
+        ("publish", "/heartbeat"), ("publish", "/odom"), ("subscribe", "/wheel_speed")]
     driver = links(model, "/rover_base_node")
     assert ("subscribe", "/cmd_vel") in driver and ("publish", "/battery") in driver
     assert ("publish", "/wheel_speed") in driver and ("publish", "/odom") not in driver
     assert ("publish", "/battery_voltage") in driver
-    assert ("publish", "/heartbeat") in driver  # no one node: the first node's
+    assert ("publish", "/heartbeat") in driver  # both nodes build a Heartbeat
     topic = next(t for t in config.topics if t.name == "/wheel_speed")
     assert [p.node.name for p in topic.publishers] == ["/rover_base_node"]
     assert [s.node.name for s in topic.subscribers] == ["/odometry_node"]
@@ -200,8 +201,8 @@ def test_a_component_library_is_one_node_per_plugin() -> None:
     process = Node("rover_base", "base_ros", "executable", "cpp", list(sources))
     extract_nodes([library, process], scan([str(CASE)]), cache_dir=None)
     assert process.rosnames == ["rover_base_node", "odometry_node"]
-    assert {c.node_name for c in process.calls} == {  # None: the shared heartbeat
-        "rover_base_node", "odometry_node", None}
+    assert {c.node_name for c in process.calls} == {  # the heartbeat on both
+        "rover_base_node", "odometry_node"}
     assert library.rosnames == [] and library.calls
     assert {c.node_name for c in library.calls} == {None}
 

@@ -108,5 +108,14 @@ def test_mavros_loads_every_exported_plugin_its_deny_list_lets_through():
                   and not p.name.startswith("/mavros/?")
                   and (p.setting is None or (p.setting, p.rosname.own) not in read_by_setting)]
     assert never_read == []
+    # the model's calls that no node of the process could be told for (the router's
+    # header code) are a node '?''s, not the first node's (/mavros/mavros) as a fact
     assert {n.name for n in config.nodes if n.origin == "launch"} == {
-        "/mavros/mavros", "/mavros/mavros_router", "/mavros/mavros_node"}
+        "/mavros/mavros", "/mavros/mavros_router", "/mavros/mavros_node", "/mavros/?"}
+    # the router's own calls are its node's (the model rebuilt with the delegating
+    # constructor's name left out), no longer the first node's
+    served = {(link.node.name, link.resource.name) for link in config.links
+              if link.kind == "server"}
+    assert ("/mavros/mavros_router", "/mavros/mavros_router/add_endpoint") in served
+    assert not [name for node, name in served if name.endswith("/add_endpoint")
+                and node != "/mavros/mavros_router"]

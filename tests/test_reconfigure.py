@@ -302,3 +302,28 @@ def test_a_config_in_the_namespace_its_cfg_names(write_tree) -> None:
     assert ("read", "~max_speed") in [(c.kind, c.name) for c in result.calls]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_CLASS_UNSEEN" not in codes and "CPP_PARSE_ERROR" not in codes
+
+
+def test_a_cfg_the_cmake_file_names_outside_cfg_makes_its_config(write_tree) -> None:
+    """moveit_ros_planning keeps its .cfg files beside each library
+    (``trajectory_execution_manager/cfg/TrajectoryExecutionDynamicReconfigure.cfg``) and
+    hands their paths to ``generate_dynamic_reconfigure_options``: only ``cfg/`` was
+    read, so move_group's trajectory execution server read none of its parameters
+    (``~trajectory_execution/allowed_execution_duration_scaling``). A path the CMake
+    file builds from other variables, or outside the package, is not followed."""
+    root = _tree(write_tree, _fixture("Tracker.cfg"))
+    os.makedirs(root / "tracker" / "manager" / "cfg")
+    os.rename(root / "tracker" / "cfg" / "Tracker.cfg",
+              root / "tracker" / "manager" / "cfg" / "Tracker.cfg")
+    cmake = root / "tracker" / "CMakeLists.txt"
+    cmake.write_text(cmake.read_text().replace(
+        "generate_dynamic_reconfigure_options(cfg/Tracker.cfg)",
+        "# generate_dynamic_reconfigure_options(old/Old.cfg)\n"
+        'generate_dynamic_reconfigure_options(\n  "${CMAKE_CURRENT_SOURCE_DIR}/manager/cfg/'
+        'Tracker.cfg"\n  ${OTHER}/More.cfg ../outside/Out.cfg)'))
+    result = extract_cpp([str(root / "tracker" / "src" / "tracker.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    reads = [(c.name, c.default) for c in result.calls if c.kind == "read"]
+    assert reads[:4] == [("~rate", 10.0), ("~frame_id", "base_link"), ("~mode", 0),
+                         ("~use_filter", True)]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_INCLUDE_MISSING"] == []

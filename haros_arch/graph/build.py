@@ -51,6 +51,7 @@ from .conditions import (
 from .processes import (
     code_node,
     guessed_names,
+    own_calls,
     process_nodes,
     process_params,
     unnamed_param_files,
@@ -160,7 +161,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         config.nodes.append(instance)
         if instance.node is None:
             continue
-        _link_calls(instance, [*instance.node.calls_of(own), *in_process_nodelets(
+        _link_calls(instance, [*own_calls(decl, instance.node, own), *in_process_nodelets(
             instance, nodes, plugin_models)], resources, config, transports)
     # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
@@ -840,7 +841,8 @@ def _made_under(node: Node | None, own: str | None) -> tuple[Condition, ...]:
     """The source conditions under which a process makes one of its nodes but the first:
     those all its calls share (the extractor gives each call of such a node the
     conditions of its construction, ``cpp._made_under``)."""
-    if node is None or own is None or len(node.rosnames) < 2 or own == node.rosnames[0]:
+    if node is None or own is None or len(node.rosnames) < 2 or own in (
+            node.rosnames[0], UNKNOWN_MARK):  # ``?``: calls of nodes made apart
         return ()
     calls = node.calls_of(own)
     if not calls:
@@ -897,6 +899,9 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     ``name.<key>.<field>``), none for an empty list (unless the launch file sets it
     under a condition); without such a value, the call as it is (its name keeps its
     ``?``)."""
+    members = _member_calls(call, instance, resources)
+    if members is not None:
+        return members
     if call.name_each is None or call.name_param is None:
         return _element_turns(call, instance, resources)
     full = _list_name(call.name_param, instance)
@@ -928,6 +933,39 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                     name_default=None, name_each=None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
+
+
+def _member_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources
+                  ) -> list[PrimitiveCall] | None:
+    """A read of each member of a ROS 1 struct parameter the code walks and hands on
+    (``PrimitiveCall.struct_member``: ``~rigid_bodies/?/child_frame_id``): one read per
+    member the launch files set under the struct (``~rigid_bodies/1/child_frame_id``,
+    ``~rigid_bodies/2/child_frame_id``), as ``element_calls`` names a list's elements;
+    none when they set it to an empty dictionary unconditionally (the loop runs no
+    turn). None where no member is known (the read keeps its ``?``)."""
+    if not call.struct_member or call.name.count(UNKNOWN_MARK) != 1:
+        return None
+    head, mark, rest = call.name.partition("/" + UNKNOWN_MARK)
+    if not mark or not head or head == "~" or (rest and not rest.startswith("/")):
+        return None
+    full = _list_name(head, instance).rstrip("/")
+    param = resources.by_name.get((Parameter, full))
+    value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if value is not None:
+        if not isinstance(value, dict):
+            return None
+        keys = [str(key) for key in value]
+    else:
+        keys = list(dict.fromkeys(
+            name[len(full) + 1:].split("/", 1)[0] for (cls, name), found
+            in resources.by_name.items() if cls is Parameter and name.startswith(full + "/")
+            and isinstance(found, Parameter) and found.set_by_launch))
+        if not keys:
+            return None
+    if not keys and isinstance(param, Parameter) and param.launch_conditions:
+        return [call]  # empty only where the launch file's condition holds
+    return [replace(call, name=f"{head}/{key}{rest}") for key in keys
+            if key and "/" not in key and UNKNOWN_MARK not in key]
 
 
 def _list_name(param: str, instance: NodeInstance) -> str:

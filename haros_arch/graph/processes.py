@@ -9,7 +9,9 @@ guess, and ``guessed_names`` says so for each.
 
 An rclpy executable that creates two nodes (two ``Node`` subclasses added to one
 executor, ``create_node`` called twice) has them in ``Node.rosnames``, and each of its
-calls names the node it is made on (``PrimitiveCall.node_name``). A launch ``Node`` that
+calls names the node it is made on (``PrimitiveCall.node_name``); the calls made on a node
+the code does not tell (a class built by two of its nodes) are those of a node of its
+own, named ``?``, never the first's as a fact. A launch ``Node`` that
 starts it gives one node instance per ROS node, named as ROS 2 names them: without
 ``name=`` each keeps the name its code gives it, in the launch namespace; with
 ``name=`` (``__node:=``) every node of the process takes that name, as rcl renames them
@@ -29,7 +31,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
 from ..launch.ros2.naming import pattern_matches
-from ..model.source import Node
+from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import by_arguments, command_node
 
@@ -132,7 +134,10 @@ def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
     if node is None or decl.ros_version != 2:
         return []
     if len(node.rosnames) >= 2:
-        return list(node.rosnames)
+        # the calls made on a node the code does not tell (``Node.unplaced``): a node
+        # of its own, named ``?``, when each node keeps its code's name; under a name
+        # the launch gives every node, the first's (they all have that name)
+        return [*node.rosnames, *([UNKNOWN_MARK] if _apart(decl, node) else [])]
     # one node: a launch Node without name= runs it under the name its code gives it
     if _unnamed(decl) and node.rosname and UNKNOWN_MARK not in node.rosname:
         return [node.rosname]
@@ -143,6 +148,18 @@ def _unnamed(decl: NodeDecl) -> bool:
     """Launched without a name: its code's name (or a guess) names it. A name the launch
     gives but that is not known statically (``name=camera.name``) stays unknown."""
     return decl.name.rsplit("/", 1)[-1] == UNKNOWN_MARK and not decl.name_given
+
+
+def own_calls(decl: NodeDecl, node: Node, own: str | None) -> list[PrimitiveCall]:
+    """The calls of the process's node ``own`` (None: its only node), those no node
+    could be told for apart (``?``) when ``_own_names`` gives them a node."""
+    return node.calls_of(own, apart=_apart(decl, node))
+
+
+def _apart(decl: NodeDecl, node: Node) -> bool:
+    """Whether the calls of ``node`` (its code's) made on a node not told are a node
+    ``?``'s: when the launch gives no name (``name=`` names every node alike)."""
+    return node.unplaced and not decl.name_given
 
 
 def _renamed(decl: NodeDecl, own: str) -> str:

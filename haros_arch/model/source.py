@@ -7,6 +7,7 @@ from typing import Any, ClassVar, Literal
 
 from .conditions import Condition
 from .location import NOWHERE, Location
+from .values import UNKNOWN_MARK
 
 BuildType = Literal["catkin", "ament_cmake", "ament_python", "cmake", "unknown"]
 NodeKind = Literal["executable", "nodelet", "component", "plugin", "script"]
@@ -355,14 +356,25 @@ class Node:
     def __repr__(self) -> str:
         return f"Node({self.name})"
 
-    def calls_of(self, rosname: str | None) -> list[PrimitiveCall]:
+    def calls_of(self, rosname: str | None, apart: bool = False) -> list[PrimitiveCall]:
         """The calls of the ROS node ``rosname`` of this executable (one of ``rosnames``):
-        its own, and, for the first, the calls no node could be told for. None: all."""
+        its own, and, for the first, the calls no node could be told for, unless
+        ``apart``: then those are ``?``'s, the process's node not known (``unplaced``).
+        None: all."""
         if rosname is None or not self.rosnames:
             return list(self.calls)
-        first = rosname == self.rosnames[0]
+        if rosname == UNKNOWN_MARK:
+            return [c for c in self.calls if c.node_name not in self.rosnames]
+        first = rosname == self.rosnames[0] and not apart
         return [c for c in self.calls if c.node_name == rosname
                 or (first and c.node_name not in self.rosnames)]
+
+    @property
+    def unplaced(self) -> bool:
+        """Whether some call of a process of several nodes is made on a node the
+        extractor could not tell (its ``node_name`` none of ``rosnames``)."""
+        return len(self.rosnames) >= 2 and any(
+            c.node_name not in self.rosnames for c in self.calls)
 
 
 @dataclass(eq=False)

@@ -40,6 +40,7 @@ from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names, owner_of
+from .values import PLACEHOLDER
 from .visitor import OTHER_WRITES, STATIC, WORDS, CallFinder, known_name
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
@@ -362,7 +363,7 @@ def _made_under_fewest(calls: list[PrimitiveCall],
     same in its ``else`` makes it under neither."""
     out: list[PrimitiveCall] = []
     for call in calls:
-        made = seen[(call.kind, call.name, call.location, call.name_param)]
+        made = seen[_call_key(call)]
         if len(made) < 2:
             out.append(call)
             continue
@@ -370,6 +371,14 @@ def _made_under_fewest(calls: list[PrimitiveCall],
         for conditions, rest in fewest(ways):
             out.append(dataclasses.replace(rest, conditions=conditions))
     return out
+
+
+def _call_key(call: PrimitiveCall) -> tuple[object, ...]:
+    """One call of the node: by kind, name, place and name parameter, and the node a
+    construction names it for (``links.per_construction``: a class built twice makes
+    its calls on each of two nodes)."""
+    return (call.kind, call.name, call.location, call.name_param,
+            links.per_construction(call.node_name)[1])
 
 
 # the diagnostics the visitor makes at a call it keeps, which say something of that call
@@ -397,8 +406,17 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # process of several nodes named as before from its first file (``_name_nodes``)
     result.rosname = (given[0] if all(n == given[0] for n in given) else "?") if (
         given) else None
+    # the owners whose constructor names their node from its parameters, given several
+    # values (or none known): their calls are made once per construction (``resolve``)
+    written: dict[str, set[str]] = {}
     for unit in units:
-        calls, found = links.resolve(unit.calls, known, unseen)
+        for owner, name in unit.node_names:
+            written.setdefault(owner, set()).add(name)
+    per_site = {owner: next(iter(names)) for owner, names in written.items()
+                if len(names) == 1 and PLACEHOLDER in next(iter(names))
+                and "?" in links.resolve_name(next(iter(names)), known, unseen)}
+    for unit in units:
+        calls, found = links.resolve(unit.calls, known, unseen, per_site)
         # a diagnostic of a call the node does not make (one a header's template or a
         # constructor no file of the node calls makes) is none of the node's
         dropped = {call.location for call in unit.calls} - {call.location for call in calls}
@@ -418,7 +436,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                                            conditions=(*extra, *call.conditions))
             # (two calls named '?' by different parameters are two: nav2's
             # CostmapSubscriber, built with the local and the global costmap's topic)
-            key = (call.kind, call.name, call.location, call.name_param)
+            key = _call_key(call)
             if key not in seen:
                 seen[key] = [call]
                 result.calls.append(call)
@@ -523,15 +541,26 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     found = _reached(units, unseen, entry)
     reached, hiding, entered, named, scoped = found if found is not None else (
         None, unseen, set(), set(), {})
+    unbuilt_constructor = links.constructor_unbuilt(facts, unseen)
+    idle_names: set[tuple[str, str]] = set()
     for _, unit in units:
         for owner, written in unit.node_names:
             name = links.resolve_name(written, facts, unseen)
             owners.setdefault(owner, [])
+            marked = links.constructor_marked(written) if "?" in name else None
+            if marked is not None and unbuilt_constructor(marked):
+                idle_names.add((owner, name))
             if name not in owners[owner]:
                 owners[owner].append(name)
             if "?" not in name and name not in result.rosnames and (
                     reached is None or owner in reached):
                 result.rosnames.append(name)
+    for owner, names in owners.items():
+        # a name a constructor no file of the node calls would give (mavros' delegating
+        # ``Router(node_name) : Router(NodeOptions(), node_name)`` beside the
+        # ``Router(options, "mavros_router")`` main builds) is none, when another is known
+        if any((owner, name) not in idle_names for name in names):
+            names[:] = [name for name in names if (owner, name) not in idle_names]
     if reached is not None and result.rosname is not None and not any(
             owner in reached for owner, names in owners.items() if result.rosname in names):
         # named by a class the process never makes (a header's node class beside the
@@ -542,24 +571,53 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                                   result.rosnames[0])
         elif any(result.rosname in names for names in owners.values()):
             result.rosname = "?"
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped)
+    for call in result.calls:  # a class's nodes, one per construction (``links.resolve``)
+        holder, own = links.per_construction(call.node_name)
+        if own is not None and holder not in unbuilt and own not in result.rosnames and (
+                reached is None or holder in reached):
+            result.rosnames.append(own)
     if len(result.rosnames) < 2:
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped)
-    calls = []
+    calls: list[PrimitiveCall] = []
     nodes: dict[str, str | None] = {}
     for call in result.calls:
-        if call.node_name in unbuilt:
+        holder, own = links.per_construction(call.node_name)
+        if holder in unbuilt:
             continue
-        node = _node_of(call.node_name, owners, made_by, result.rosnames, nodes, 0)
+        if own is not None:
+            call = dataclasses.replace(call, node_name=holder)
+        node = own if own in result.rosnames else _node_of(
+            holder, owners, made_by, result.rosnames, nodes, 0)
         # a copy: a translation unit's calls are shared by the nodes that build it
         if call.node_name is None and node is None:
             calls.append(call)
             continue
-        extra = tuple(c for c in under.get(node or "", ()) if c not in call.conditions)
-        calls.append(dataclasses.replace(call, node_name=node,
-                                         conditions=(*extra, *call.conditions)))
+        for each in [node] if node is not None or own is not None else _makers_nodes(
+                holder, owners, made_by, result.rosnames, nodes):
+            extra = tuple(c for c in under.get(each or "", ()) if c not in call.conditions)
+            copy = dataclasses.replace(call, node_name=each,
+                                       conditions=(*extra, *call.conditions))
+            if copy not in calls:
+                calls.append(copy)
     result.calls = calls
+
+
+def _makers_nodes(owner: str | None, owners: dict[str, list[str]],
+                  made_by: dict[str, list[str]], rosnames: list[str],
+                  known: dict[str, str | None]) -> list[str | None]:
+    """The nodes an owner that names no node of its own makes its calls on, when several
+    of the process's nodes construct it, each known (``_node_of``): each of them, as
+    each hands it its own node (a ``Heartbeat(this)`` both nodes build publishes on
+    both). ``[None]`` where one of them is not known: the node is not told."""
+    if owner is None or owners.get(owner) or not rosnames:
+        return [None]
+    makers = [_node_of(maker, owners, made_by, rosnames, known, 1)
+              for maker in made_by.get(owner, ())]
+    if len(makers) < 2 or None in makers:
+        return [None]
+    return [name for name in rosnames if name in makers]
 
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
@@ -590,7 +648,8 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
                and ("@" in owner or not _named_in(owner, unseen, scoped))}
-    return classes | {owner for call in result.calls if (owner := call.node_name) is not None
+    return classes | {owner for call in result.calls
+                      if (owner := links.per_construction(call.node_name)[0]) is not None
                       and owner not in reached and (owner.endswith("()") or (
                           (owner in entered or owner.rsplit("::", 1)[-1] in named)
                           and not _named_in(owner, unseen, scoped)))}

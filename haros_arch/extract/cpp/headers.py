@@ -149,6 +149,8 @@ UMBRELLAS = {
     # handlers take (the asio classes are declared permissively)
     "boost/asio/": "boost/asio.hpp", "boost/system/": "boost/system/error_code.hpp",
     "boost/filesystem/": "boost/filesystem.hpp",
+    "boost/ptr_container/": "boost/ptr_container/ptr_vector.hpp",
+    "boost/circular_buffer/": "boost/circular_buffer.hpp",
     "boost/algorithm/string/": "boost/algorithm/string.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }

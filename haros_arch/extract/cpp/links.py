@@ -408,12 +408,22 @@ class NodeFacts:
 
 
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
-            unseen: Collection[str] = ("*",)) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+            unseen: Collection[str] = ("*",), named: dict[str, str] | None = None
+            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
     call a constructor makes with a name from its parameters (``made_in``) is left out
     when no file of the node calls that constructor and the class's name is not among
-    the words ``unseen`` of the code where the parse left errors (``*``: anywhere)."""
+    the words ``unseen`` of the code where the parse left errors (``*``: anywhere).
+
+    ``named``: owner -> the node name its constructor writes from its parameters, where
+    the node's files pass it several values (``Node(node_name)`` of a class built
+    twice, ``LifecycleServiceClient("domain_expert_lc_mngr", ...)`` and
+    ``("planner_lc_mngr", ...)``): each call of that owner is made once per
+    construction, on the node that construction names, filled with the values of the
+    same site (``_expand``); its ``node_name`` then says both (``per_construction``).
+    A construction whose name is not known leaves the owner's call as it was."""
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
+    named = named or {}
     out: list[PrimitiveCall] = []
     found: list[Diagnostic] = []
     unbuilt = constructor_unbuilt(known, unseen)
@@ -436,9 +446,15 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # such a handle: filled as the name is
         lists = sorted({listed for c in call.conditions for _, listed, _ in c.elements or ()
                         if PLACEHOLDER in listed})
+        node_text = _site_asked(named.get(call.node_name or ""))
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
-            out.append(_lists_filled(call, {listed: _parameter_filled(listed, known.passed)
-                                            for listed in lists}))
+            filled_lists = _lists_filled(call, {
+                listed: _parameter_filled(listed, known.passed) for listed in lists})
+            if node_text is None:
+                out.append(filled_lists)
+                continue
+            out.extend(_on_each_node(filled_lists, _expand(
+                node_text, known.passed, 0, unbuilt, unrun, idle), known.within, unbuilt))
             continue
         namespace = call.handle_namespace
         written = call.name
@@ -451,10 +467,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             text += _PARAM_SPLIT + _param_text(raw_param)
         if lists:
             text += "".join(_LIST_SPLIT + _param_text(listed) for listed in lists)
+        if node_text is not None:
+            text += _NODE_SPLIT + node_text
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
+            filled, _, node_filled = filled.partition(_NODE_SPLIT)
             filled, *lists_text = filled.split(_LIST_SPLIT)
             filled, _, param_text = filled.partition(_PARAM_SPLIT)
             ns, _, name = filled.partition(_SPLIT)
@@ -485,6 +504,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 made = dataclasses.replace(made, host_named=classes)
             if made.struct_member and made.name.startswith(("?", "~?")):
                 continue  # what was handed is no parameter's value: nothing read
+            if node_text is not None:
+                made = _on_each_node(made, [node_filled], known.within, unbuilt, call)[0]
             out.append(made)
             if "?" in made.name:
                 found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
@@ -493,6 +514,56 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
+_NODE_SPLIT = "\x11"  # before the node name expanded with a call's name (``resolve``)
+# around a function's USR: ``_expand`` writes the call site whose values it takes for that
+# function's placeholders in its stead (after ``_SITE_AT``)
+_SITE_OF = "\x13"
+_SITE_AT = "\x14"
+# between a call's owner and the node one construction of it names (``resolve``)
+NODE_OF = "\x12"
+
+
+def per_construction(owner: str | None) -> tuple[str | None, str | None]:
+    """A call's ``node_name`` as ``resolve`` leaves it: its owner, and the node that
+    the construction it was made for names (None: not told per construction)."""
+    if owner is None or NODE_OF not in owner:
+        return owner, None
+    owner, _, node = owner.partition(NODE_OF)
+    return owner, node
+
+
+def _site_asked(text: str | None) -> str | None:
+    """A node name with placeholders, asking ``_expand`` for the site of the constructor
+    they name (``_SITE_OF``)."""
+    if text is None:
+        return None
+    found = _MARK.search(text)
+    return text if found is None else f"{text}{_SITE_OF}{found.group(1)}{_SITE_OF}"
+
+
+def _on_each_node(call: PrimitiveCall, names: list[str], within: dict[str, str],
+                  unbuilt: Callable[[str], bool], whole: PrimitiveCall | None = None
+                  ) -> list[PrimitiveCall]:
+    """``call`` once per node name (``resolve``'s ``named``), each fully known one
+    written into its ``node_name``; one not known leaves the call's owner alone. A
+    construction in a constructor the node never runs (``within``, ``unbuilt``: a
+    subclass no file builds, topic_tools' Mux beside the Relay main makes) makes none;
+    when no construction is left, the call as it was (``whole``, else ``call``)."""
+    out: list[PrimitiveCall] = []
+    for filled in names:
+        filled, _, site = filled.partition(_SITE_AT)
+        site = site.rstrip(_SITE_OF)
+        if _SITE_OF in filled:  # no site filled it: not asked of any
+            filled = filled.split(_SITE_OF, 1)[0]
+        caller = within.get(site) if site else None
+        if caller is not None and unbuilt(caller):
+            continue
+        name = node_name_joined(_unmarked(filled)) if PLACEHOLDER not in filled else "?"
+        made = call if not name or "?" in name else dataclasses.replace(
+            call, node_name=f"{call.node_name}{NODE_OF}{name}")
+        if made not in out:
+            out.append(made)
+    return out or [call if whole is None else dataclasses.replace(call, node_name=whole.node_name)]
 _LIST_SPLIT = "\x10"  # before each list of its conditions' elements expanded with it
 
 
@@ -733,16 +804,19 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     if match is None:
         return [choose(text)]
     usr = match.group(1)
-    sites = list(passed.get(usr, {}).values()) if depth < MAX_DEPTH else []
-    if idle is not None and len(sites) > 1:
-        running = [values for site, values in passed[usr].items() if not idle(site)]
-        sites = running or sites
+    items = list(passed.get(usr, {}).items()) if depth < MAX_DEPTH else []
+    if idle is not None and len(items) > 1:
+        running = [(site, values) for site, values in items if not idle(site)]
+        items = running or items
+    sites = [values for _, values in items]
     if depth and not sites and unbuilt is not None and unbuilt(usr):
         return []
     if not sites and depth < MAX_DEPTH and unrun is not None and unrun(usr):
         return []
     out: list[str] = []
-    for values in sites or [{}]:
+    mark = f"{_SITE_OF}{usr}{_SITE_OF}"  # the site of this function's call, asked for
+    for site, values in items or [("", {})]:
+        here = text.replace(mark, f"{_SITE_AT}{site}{_SITE_OF}") if mark in text else text
         def fill(found: re.Match[str], values: dict[int, str] = values) -> str:
             if found.group(1) != usr:
                 return found.group(0)
@@ -751,7 +825,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in _marked_usrs(value) else value
-        for filled in _expand(_MARK.sub(fill, text), passed, depth + 1, unbuilt, unrun,
+        for filled in _expand(_MARK.sub(fill, here), passed, depth + 1, unbuilt, unrun,
                               idle):
             if filled not in out:
                 out.append(filled)

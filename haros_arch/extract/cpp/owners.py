@@ -155,12 +155,34 @@ def _construction(call: Cursor, owned: Callable[[str], bool]
         cls, constructor = target.semantic_parent, target
     elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
         cls = factory_made(call)
+    elif target.kind == CursorKind.CXX_METHOD and target.is_static_method():
+        cls = _own_factory(target)
     if cls is None or cls.kind not in _CLASSES:
         return None
     where = cls.location.file
     if where is None or not owned(where.name):
         return None
     return cls, constructor
+
+
+def _own_factory(method: Cursor) -> Cursor | None:
+    """The class of a static method that returns a new object of it, by value, pointer
+    or smart pointer (``static Ptr make_shared(action, node) { return
+    std::make_shared<ActionExecutor>(action, node); }``): calling it constructs the
+    class, as ``std::make_shared<ActionExecutor>`` would."""
+    cls = method.semantic_parent
+    if cls is None or cls.kind not in _CLASSES:
+        return None
+    returned = method.result_type.get_canonical()
+    while returned.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE):
+        returned = returned.get_pointee().get_canonical()
+    decl = returned.get_declaration()
+    if decl.kind != CursorKind.NO_DECL_FOUND and decl.spelling in _SMART_POINTERS and (
+            returned.get_num_template_arguments() > 0):
+        decl = returned.get_template_argument_type(0).get_canonical().get_declaration()
+    own = cls.get_definition() or cls
+    return cls if decl.kind != CursorKind.NO_DECL_FOUND and (
+        (decl.get_definition() or decl) == own) else None
 
 
 # the node classes whose object a node's code hands to other code (``*this`` of a class

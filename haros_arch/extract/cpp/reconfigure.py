@@ -1,5 +1,6 @@
 """dynamic_reconfigure (ROS 1): the ``<Name>Config.h`` header it generates at build time,
-from the package's ``cfg/*.cfg`` (and those a few folders down).
+from the package's ``cfg/*.cfg`` (and those a few folders down), and the other .cfg files
+its CMakeLists.txt hands ``generate_dynamic_reconfigure_options``.
 
 A ``.cfg`` is a Python script (``gen = ParameterGenerator()``, ``gen.add("name", double_t,
 level, "description", default, min, max)``, ``gen.enum([gen.const(...)])``, groups from
@@ -281,7 +282,7 @@ def configs(folder: str, package: str, modules: Modules | None = None
     found: dict[str, Config] = {}
     problems: list[Diagnostic] = []
     cfg = os.path.join(folder, "cfg")
-    for path in _cfg_files(cfg):
+    for path in dict.fromkeys([*_cfg_files(cfg), *_cmake_cfg_files(folder)]):
         here = os.path.dirname(path)
         try:
             if os.path.getsize(path) > MAX_CFG_BYTES:
@@ -325,6 +326,43 @@ def _cfg_files(cfg: str) -> list[str]:
             elif depth < CFG_DEPTH and not entry.startswith(".") and os.path.isdir(path) and (
                     not os.path.islink(path)):
                 todo.append((path, depth + 1))
+    return found
+
+
+_GENERATE = re.compile(r"\bgenerate_dynamic_reconfigure_options\s*\(([^)]*)\)", re.IGNORECASE)
+_CMAKE_COMMENT = re.compile(r"#[^\n]*")
+_SOURCE_DIRS = ("${CMAKE_CURRENT_SOURCE_DIR}/", "${PROJECT_SOURCE_DIR}/",
+                "${CMAKE_SOURCE_DIR}/")
+MAX_CMAKE_BYTES = 1 << 20
+
+
+def _cmake_cfg_files(folder: str) -> list[str]:
+    """The ``.cfg`` files the package's CMakeLists.txt hands
+    ``generate_dynamic_reconfigure_options`` outside its ``cfg/`` folder
+    (moveit_ros_planning's ``trajectory_execution_manager/cfg/
+    TrajectoryExecutionDynamicReconfigure.cfg``): paths written literally, relative to
+    the package (or after ``${CMAKE_CURRENT_SOURCE_DIR}/``), that are files in it; a
+    path built of other variables is not known and left out."""
+    path = os.path.join(folder, "CMakeLists.txt")
+    try:
+        if os.path.getsize(path) > MAX_CMAKE_BYTES:
+            return []
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            text = _CMAKE_COMMENT.sub("", handle.read())
+    except OSError:
+        return []
+    root = os.path.realpath(folder)
+    found: list[str] = []
+    for call in _GENERATE.finditer(text):
+        for word in re.findall(r'"([^"]*)"|(\S+)', call.group(1)):
+            written = word[0] or word[1]
+            for prefix in _SOURCE_DIRS:
+                written = written.removeprefix(prefix)
+            if not written.endswith(".cfg") or "${" in written or os.path.isabs(written):
+                continue
+            candidate = os.path.realpath(os.path.join(folder, written))
+            if candidate.startswith(root + os.sep) and os.path.isfile(candidate):
+                found.append(os.path.join(folder, written))
     return found
 
 

@@ -7,6 +7,11 @@
 namespace diagnostic_updater {
 class DiagnosticStatusWrapper {
 public:
+  // the levels of diagnostic_msgs' DiagnosticStatus, its base
+  static const unsigned char OK = 0;
+  static const unsigned char WARN = 1;
+  static const unsigned char ERROR = 2;
+  static const unsigned char STALE = 3;
   std::string name, message, hardware_id;
   unsigned char level;
   void summary(unsigned char level, const std::string& message);
@@ -64,10 +69,43 @@ public:
   void clear();
   void run(DiagnosticStatusWrapper& stat);
 };
-class HeaderlessTopicDiagnostic {
+class TimeStampStatus : public DiagnosticTask {
 public:
+  TimeStampStatus();
+  explicit TimeStampStatus(const TimeStampStatusParam& params);
+  template<class T> void tick(const T& stamp);  // a ros::Time, rclcpp::Time or double
+  void run(DiagnosticStatusWrapper& stat);
+};
+class CompositeDiagnosticTask : public DiagnosticTask {
+public:
+  explicit CompositeDiagnosticTask(const std::string& name);
+  void addTask(DiagnosticTask* task);
+  void run(DiagnosticStatusWrapper& stat);
+};
+class HeaderlessTopicDiagnostic : public CompositeDiagnosticTask {
+public:
+  // ROS 2 takes a clock last
+  template<class... C>
   HeaderlessTopicDiagnostic(std::string name, Updater& diag,
-                            const FrequencyStatusParam& freq);
+                            const FrequencyStatusParam& freq, C&&... clock);
   void tick();
+  void clear_window();
+};
+class TopicDiagnostic : public HeaderlessTopicDiagnostic {
+public:
+  template<class... C>
+  TopicDiagnostic(std::string name, Updater& diag, const FrequencyStatusParam& freq,
+                  const TimeStampStatusParam& stamp, C&&... clock);
+  template<class T> void tick(const T& stamp);
+};
+// a publisher whose publish() ticks a TopicDiagnostic: the publisher it wraps is the
+// ROS call (made where it is advertised)
+template<class T>
+class DiagnosedPublisher : public TopicDiagnostic {
+public:
+  template<class P>
+  DiagnosedPublisher(const P& pub, Updater& diag, const FrequencyStatusParam& freq,
+                     const TimeStampStatusParam& stamp);
+  template<class M> void publish(const M& message);
 };
 }  // namespace diagnostic_updater
