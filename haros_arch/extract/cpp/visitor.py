@@ -379,6 +379,9 @@ class CallFinder:
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
+        self.facts.extend(links.global_facts(
+            ((usr, render(parts)) for usr, parts in self.namespaces.global_handles(self.tu)),
+            self.tu.spelling))
         self.uses.extend(self._uses())
         self.registered = self._registered()
         # the owners the unit's code defines, not a workspace header's: a header's
