@@ -2080,6 +2080,15 @@ class CallFinder:
         source = self._parameter_source(expr, scope, 0)
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
             source = self._parameter_source(unknown[0], scope, 0)
+        if source is None and inner.kind == CursorKind.DECL_REF_EXPR:
+            # a local that holds a parameter's value with text around it (OpenMower's
+            # ``std::string target_topic = topic + "/converted";``): that parameter, as
+            # when the call writes the same text
+            held = scope.variable(inner.referenced) if inner.referenced is not None and (
+                inner.referenced.kind == CursorKind.VAR_DECL) else None
+            operands = _unknown_operands(held, scope) if held is not None else []
+            if len(operands) == 1:
+                source = self._parameter_source(operands[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
