@@ -325,8 +325,12 @@ class CallFinder:
     def run(self) -> None:
         self._root = root(self.tu)
         self.functions = list(self._definitions(self._root, top=True))
-        self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
-                                                       external=True, main=self.tu.spelling)
+        # an object of namespace scope built with arguments (OpenMower's
+        # ``StateSubscriber<Status> status_state_subscriber{"/ll/mower_status"};``) calls
+        # its constructor as a function's local does: a site of what it passes
+        self.sites = self.namespaces.sites = CallSites(
+            [*self.functions, *filter(_constructed_global, self.globals)], self.macros,
+            self.source, external=True, main=self.tu.spelling)
         self.sites.handle_namespace = self.namespaces.value_namespace
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
@@ -3581,6 +3585,20 @@ def _element_loop(expr: Cursor, scope: Scope
         return None, None, EACH
     walk = scope.counted_loop(index.referenced, container)
     return (walk, container, EACH) if walk is not None else (None, None, EACH)
+
+
+def _constructed_global(variable: Cursor) -> bool:
+    """Whether ``variable``, of namespace scope, is built by a constructor call that
+    passes it arguments."""
+    parent = variable.semantic_parent
+    if parent is None or parent.kind not in (CursorKind.NAMESPACE,
+                                             CursorKind.TRANSLATION_UNIT):
+        return False
+    made = initializer(variable)
+    made = strip(made) if made is not None else None
+    return made is not None and made.kind == CursorKind.CALL_EXPR and (
+        made.referenced is not None and made.referenced.kind == CursorKind.CONSTRUCTOR
+    ) and any(c.kind.is_expression() for c in made.get_children())
 
 
 def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor]:
