@@ -501,6 +501,32 @@ def library_prefixes(messages: Iterable[str]) -> set[str]:
     return found
 
 
+_STATEMENT_END = re.compile(rb"[;{}]\s*$")
+
+
+def _called_statement(text: bytes, start: int, end: int) -> bool:
+    """Whether the name written from ``start`` to ``end`` begins a statement that is a
+    call of it alone: ``;``, ``{`` or ``}`` before it, its parenthesised arguments, and
+    ``;`` after them (``vendor::set_logger(logger);``)."""
+    if _STATEMENT_END.search(text[max(0, start - 64):start]) is None:
+        return False
+    at = end
+    while at < len(text) and text[at:at + 1].isspace():
+        at += 1
+    if text[at:at + 1] != b"(":
+        return False
+    depth = 0
+    for index in range(at, min(len(text), at + 2000)):
+        char = text[index:index + 1]
+        if char == b"(":
+            depth += 1
+        elif char == b")":
+            depth -= 1
+            if depth == 0:
+                return text[index + 1:index + 64].lstrip()[:1] == b";"
+    return False
+
+
 def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:
     """(index, offset) of each argument of the template argument list that starts at
     ``start`` (after its ``<``); empty when it does not close within a few hundred bytes."""
@@ -934,6 +960,12 @@ class Names:
             # constant read as a value (a class there would be a syntax error); so is
             # one in parentheses after ``case`` (kobuki's ``case (ecl::OpenError):``,
             # where a type is a cast with no operand)
+            last = "value"
+        if last == "type" and use == "any" and (scope or len(written) > 1) and (
+                _called_statement(text, offset, found.end())):
+            # ``spdlog::set_default_logger(logger);`` (spdlog's headers missing): a
+            # statement of a call alone is a function's call; a class there would make
+            # it a declaration of ``logger``, which the line before declares already
             last = "value"
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
