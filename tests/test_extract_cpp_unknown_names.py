@@ -1341,3 +1341,21 @@ def test_a_qualified_call_alone_as_a_statement_is_a_function() -> None:
     assert "extern haros_any set_default_logger;" in header
     for kind in ("logger", "Guard", "Scale"):
         assert f"struct {kind} : haros_any {{" in header
+
+
+def test_members_are_read_from_code_not_comments_strings_or_includes() -> None:
+    """OpenMower's mower_comms_v1: a comment ``// have reasonable defaults.`` before a
+    line ``size_t payload_size = ...`` made ``size_t`` a member of the permissive class,
+    and inside every class derived from a permissive base (``boost::noncopyable``, its
+    header missing) the name was that member, not the type: "unknown type name
+    'size_t'" in the xesc drivers' headers. The same for ``"file.txt"`` and
+    ``#include <vendor/crc.hpp>``."""
+    names = synthesis.Names()
+    text = (b'#include <vendor/crc.hpp>\nvoid f(vendor::Frame& frame) {\n'
+            b'  // have reasonable defaults.\n  size_t n = 3;\n'
+            b'  /* the end. Since\n  then */ frame.count = n;\n'
+            b'  open("file.txt"); char c = \'.\'; frame -> size = 1;\n}\n')
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor::"))])
+    names.read_members([text])
+    assert {"count", "size"} <= names.members
+    assert not {"size_t", "Since", "txt", "hpp"} & names.members

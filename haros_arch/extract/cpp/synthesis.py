@@ -135,6 +135,11 @@ _VALUE_WRITTEN = re.compile(
 _SCOPE_NAME_BEFORE = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*\s*$")
 # a member template named with C++'s ``template`` keyword (``bb->template set<T>(k, v)``,
 # where the object's type depends on a template parameter or is unknown)
+# what is no code where members are read: comments, string and character literals,
+# #include lines
+_NOT_CODE = re.compile(
+    rb'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|^[ \t]*#[ \t]*include[^\n]*',
+    re.DOTALL | re.MULTILINE)
 _TEMPLATE_MEMBER = re.compile(rb"(?:\.|->)\s*template\s+([A-Za-z_]\w*)\s*<")
 _NOT_TEMPLATE = re.compile(
     r"^'(\w+)' following the 'template' keyword does not refer to a template")
@@ -786,11 +791,16 @@ class Names:
         skip = _KEYWORDS | _api_methods()
         for text in texts:
             if text is not None:
+                # in code only: a comment's sentence ends in ``.`` too (a sentence
+                # of OpenMower's xesc headers ended before ``size_t``), and an #include
+                # names ``.hpp``: a member ``size_t`` of the permissive class hid the
+                # type in every class derived from one (``boost::noncopyable``)
+                code = _NOT_CODE.sub(b" ", text)
                 self.members.update(
-                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
+                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(code)) if n not in skip)
                 # ``x->template get<T>()`` says itself that it names a template
                 self.member_templates.update(
-                    n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(text))
+                    n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(code))
                     if n not in skip)
                 self.taken.update(_case_literals(text))
                 for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
