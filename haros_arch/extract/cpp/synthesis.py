@@ -382,6 +382,9 @@ struct haros_any {
   haros_any &operator()(const haros_any &) const;
   haros_any &operator()(const haros_any &, const haros_any &) const;
   haros_any &operator()(const haros_any &, const haros_any &, const haros_any &) const;
+  // and a variable-length array, which no template deduces (OpenMower's ``uint8_t
+  // buf[size]; crc.process_bytes(buf, size)``, boost/crc.hpp missing): the last resort
+  haros_any &operator()(...) const;
   template <class A> haros_any &operator[](A &&) const;
   template <class A> haros_any &operator=(A &&);
   haros_any &operator++(); haros_any &operator--();
