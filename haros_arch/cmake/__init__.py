@@ -92,6 +92,10 @@ def package_libraries(name: str, workspace: Workspace) -> list[str] | None:
                       lambda: _package_libraries(name, workspace))
 
 
+# the packages whose libraries are being gathered (a CATKIN_DEPENDS cycle ends there)
+_GATHERING: set[str] = set()
+
+
 def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     package = workspace.packages.get(name)
     if package is None or package.build_type not in CMAKE_BUILD_TYPES:
@@ -99,8 +103,22 @@ def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
     sources = SourceMap(interpreter, files)
-    return list(dict.fromkeys(source for target in _exported(interpreter, sources)
-                              for source in sources.own(target)))
+    found = list(dict.fromkeys(source for target in _exported(interpreter, sources)
+                               for source in sources.own(target)))
+    # catkin's generated config of the package adds the libraries of its CATKIN_DEPENDS
+    # to its own, transitively: OpenMower's mower_comms_v1 links xesc_driver, whose
+    # XescDriver builds xesc_2040_driver's Xesc2040Driver, a library xesc_driver's own
+    # target links nowhere
+    _GATHERING.add(name)
+    try:
+        for depend in interpreter.catkin_depends:
+            if depend in _GATHERING or depend == name:
+                continue
+            found.extend(s for s in package_libraries(depend, workspace) or ()
+                         if s not in found)
+    finally:
+        _GATHERING.discard(name)
+    return found
 
 
 def _exported(interpreter: Interpreter, sources: SourceMap) -> list[Target]:
