@@ -137,6 +137,28 @@ def _exported(interpreter: Interpreter, sources: SourceMap) -> list[Target]:
                  for linked in sources.closure(target) if linked.kind == "library"}.values())
 
 
+def library_target(package: str, target: str, workspace: Workspace) -> list[str] | None:
+    """The workspace-relative sources of the library target ``target`` (by its name or
+    output name) of the workspace package ``package``, with the package libraries it
+    links; None when the package is not a CMake package of the workspace or builds no
+    such library."""
+    return remembered("library target", f"{package}\0{target}", workspace,
+                      lambda: _library_target(package, target, workspace))
+
+
+def _library_target(package_name: str, name: str, workspace: Workspace) -> list[str] | None:
+    package = workspace.packages.get(package_name)
+    if package is None or package.build_type not in CMAKE_BUILD_TYPES:
+        return None
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    found = next((t for t in interpreter.targets.values() if t.kind == "library" and (
+        name in (t.name, t.output_name))), None)
+    if found is None:
+        return None
+    return SourceMap(interpreter, files).linked(found)
+
+
 def package_links(name: str, workspace: Workspace) -> list[str]:
     """The other packages the libraries of the workspace package ``name`` link (as
     ``SourceMap.packages`` says for each); none when it is not a CMake package of the
@@ -276,6 +298,22 @@ def _run(package: Package, workspace: Workspace,
     return again, list(dict.fromkeys([*first, said, *found, *again.diagnostics]))
 
 
+def _named_library(name: str, own: str, depends: list[str],
+                   workspace: Workspace) -> list[str] | None:
+    """The sources of the library target ``name`` that a target links by its bare name
+    where its own package builds no such target: a library of the workspace package of
+    that name, or of one of its build dependencies (catkin's devel space holds every
+    package's libraries, so ``target_link_libraries(x industrial_robot_client)`` links
+    industrial_core's library that its ``catkin_package`` does not export)."""
+    for package in dict.fromkeys([name, *depends]):
+        if package == own or package not in workspace.packages:
+            continue
+        found = library_target(package, name, workspace)
+        if found:
+            return found
+    return None
+
+
 def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], list[Diagnostic]]:
     """The build targets of a package's CMake files."""
     interpreter, found = interpret(package, workspace)
@@ -287,9 +325,11 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     files = PackageFiles(package, workspace)
     interpreter, found = _interpret(package, workspace, files)
     found = list(found)
+    depends = build_depends(package)
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
-                        build_depends(package), package.name,
-                        lambda name: package_links(name, workspace))
+                        depends, package.name,
+                        lambda name: package_links(name, workspace),
+                        lambda name: _named_library(name, package.name, depends, workspace))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     nodes.extend(gazebo_plugins(interpreter, package, files, sources))

@@ -107,7 +107,7 @@ class SourceMap:
 
     def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
                  build_depends: Sequence[str] = (), package: str = "",
-                 links: Links | None = None) -> None:
+                 links: Links | None = None, named: Elsewhere | None = None) -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
@@ -116,6 +116,9 @@ class SourceMap:
         self._build_depends = list(build_depends)
         self._package = package  # its own libraries are ``linked``'s
         self._links = links
+        # a library target of another workspace package linked by its bare name
+        # (``cmake._named_library``)
+        self._named = named
 
     def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
         if target.name in self._own:
@@ -190,7 +193,14 @@ class SourceMap:
         publishers are no node's)."""
         if self._elsewhere is None:
             return []
-        found = (self._elsewhere(name) for name in self.packages(target))
+        found = [self._elsewhere(name) for name in self.packages(target)]
+        if self._named is not None:
+            # a library of another package linked by its target's name (motoman's
+            # ``target_link_libraries(motoman_industrial_robot_client
+            # industrial_robot_client)``, a library industrial_core does not export)
+            found.extend(self._named(name) for linked in self.closure(target)
+                         for name in dict.fromkeys(linked.links)
+                         if name not in self.targets)
         return [group for group in found if group]
 
     def reached(self, target: Target) -> list[list[str]]:
