@@ -1322,3 +1322,40 @@ def test_a_declared_value_cast_as_a_shared_pointer(write_tree) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "map")]
     assert [d.message for d in result.diagnostics if d.code in (
         "CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")] == []
+
+
+def test_a_qualified_call_alone_as_a_statement_is_a_function() -> None:
+    """OpenMower's mower_comms_v2 (spdlog's headers missing): ``auto logger = ...;`` then
+    ``spdlog::set_default_logger(logger);``. Declared a class, the statement declared
+    ``logger`` again ("redefinition of 'logger' with a different type"), an error in
+    ``main`` that made the node partial; a call alone on its statement is a function's.
+    A name followed by a declarator or called as a value keeps its class."""
+    names = synthesis.Names()
+    text = (b"void f() {\n  auto logger = std::make_shared<vendor::logger>(\"\", sink);\n"
+            b"  vendor::set_default_logger(logger);\n  vendor::Guard g(logger);\n"
+            b"  auto v = vendor::Scale(2.0);\n}\n")
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(name))
+                 for name in (b"vendor::logger", b"vendor::set", b"vendor::Guard",
+                              b"vendor::Scale")])
+    header = names.header()
+    assert "extern haros_any set_default_logger;" in header
+    for kind in ("logger", "Guard", "Scale"):
+        assert f"struct {kind} : haros_any {{" in header
+
+
+def test_members_are_read_from_code_not_comments_strings_or_includes() -> None:
+    """OpenMower's mower_comms_v1: a comment ``// have reasonable defaults.`` before a
+    line ``size_t payload_size = ...`` made ``size_t`` a member of the permissive class,
+    and inside every class derived from a permissive base (``boost::noncopyable``, its
+    header missing) the name was that member, not the type: "unknown type name
+    'size_t'" in the xesc drivers' headers. The same for ``"file.txt"`` and
+    ``#include <vendor/crc.hpp>``."""
+    names = synthesis.Names()
+    text = (b'#include <vendor/crc.hpp>\nvoid f(vendor::Frame& frame) {\n'
+            b'  // have reasonable defaults.\n  size_t n = 3;\n'
+            b'  /* the end. Since\n  then */ frame.count = n;\n'
+            b'  open("file.txt"); char c = \'.\'; frame -> size = 1;\n}\n')
+    names.learn([("use of undeclared identifier 'vendor'", text, text.index(b"vendor::"))])
+    names.read_members([text])
+    assert {"count", "size"} <= names.members
+    assert not {"size_t", "Since", "txt", "hpp"} & names.members

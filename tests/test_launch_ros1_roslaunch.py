@@ -57,6 +57,10 @@ NOT_FOUND: dict[str, str] = {
 }
 
 
+# a variable of the fixtures' environment, for both: ``env()`` in ``$(eval)`` is its text
+FIXTURE_ENV = {"HAROS_FIXTURE_NUMBER": "1"}
+
+
 def _roslaunch_available() -> bool:
     if not os.path.exists(SYSTEM_PYTHON):
         return False
@@ -73,7 +77,7 @@ pytestmark = pytest.mark.skipif(
 
 def oracle_env(tmp: Path) -> dict[str, str]:
     return {"PATH": "/usr/bin:/bin", "HOME": str(tmp), "ROS_HOME": str(tmp),
-            "ROS_PACKAGE_PATH": ROS_PACKAGE_PATH, "LANG": "C.UTF-8"}
+            "ROS_PACKAGE_PATH": ROS_PACKAGE_PATH, "LANG": "C.UTF-8", **FIXTURE_ENV}
 
 
 def run_roslaunch(files: list[tuple[str, dict[str, str]]], tmp: Path) -> list[dict[str, Any]]:
@@ -95,7 +99,7 @@ def oracle(tmp_path_factory: pytest.TempPathFactory) -> dict[int, dict[str, Any]
 
 
 def ours(name: str, args: dict[str, str]) -> LaunchModel:
-    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH}
+    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH, **FIXTURE_ENV}
     workspace = scan([str(WS)], env)
     return load(str(LAUNCH / name), workspace, args, env)
 

@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from test_launch_ros1_roslaunch import CASES, ROS_PACKAGE_PATH, run_roslaunch
+from test_launch_ros1_roslaunch import CASES, FIXTURE_ENV, ROS_PACKAGE_PATH, run_roslaunch
 from test_launch_ros1_roslaunch import pytestmark as needs_roslaunch
 from test_launch_tree import tree
 
@@ -24,7 +24,7 @@ LAUNCH = WS / "robot_bringup" / "launch"
 
 
 def flattened(name: str, args: dict[str, str], out: Path) -> tuple[Path, list[str]]:
-    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH}
+    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH, **FIXTURE_ENV}
     model = load(str(LAUNCH / name), scan([str(WS)], env), args, env)
     text, notes = flatten(model)
     out.write_text(text)
@@ -92,7 +92,7 @@ def test_roslaunch_reads_the_flattened_file_as_the_original(
 def test_our_loader_reads_the_flattened_file_as_the_original(
         index: int, case: tuple[str, dict[str, str]], tmp_path: Path) -> None:
     name, args = case
-    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH}
+    env = {"ROS_PACKAGE_PATH": ROS_PACKAGE_PATH, **FIXTURE_ENV}
     workspace = scan([str(WS)], env)
     model = load(str(LAUNCH / name), workspace, args, env)
     text, notes = flatten(model)

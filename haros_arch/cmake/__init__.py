@@ -92,6 +92,10 @@ def package_libraries(name: str, workspace: Workspace) -> list[str] | None:
                       lambda: _package_libraries(name, workspace))
 
 
+# the packages whose libraries are being gathered (a CATKIN_DEPENDS cycle ends there)
+_GATHERING: set[str] = set()
+
+
 def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     package = workspace.packages.get(name)
     if package is None or package.build_type not in CMAKE_BUILD_TYPES:
@@ -99,8 +103,22 @@ def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
     sources = SourceMap(interpreter, files)
-    return list(dict.fromkeys(source for target in _exported(interpreter, sources)
-                              for source in sources.own(target)))
+    found = list(dict.fromkeys(source for target in _exported(interpreter, sources)
+                               for source in sources.own(target)))
+    # catkin's generated config of the package adds the libraries of its CATKIN_DEPENDS
+    # to its own, transitively: OpenMower's mower_comms_v1 links xesc_driver, whose
+    # XescDriver builds xesc_2040_driver's Xesc2040Driver, a library xesc_driver's own
+    # target links nowhere
+    _GATHERING.add(name)
+    try:
+        for depend in interpreter.catkin_depends:
+            if depend in _GATHERING or depend == name:
+                continue
+            found.extend(s for s in package_libraries(depend, workspace) or ()
+                         if s not in found)
+    finally:
+        _GATHERING.discard(name)
+    return found
 
 
 def _exported(interpreter: Interpreter, sources: SourceMap) -> list[Target]:
@@ -117,6 +135,28 @@ def _exported(interpreter: Interpreter, sources: SourceMap) -> list[Target]:
     return list({linked.name: linked for target in libraries
                  if target.name in named or target.output_name in named
                  for linked in sources.closure(target) if linked.kind == "library"}.values())
+
+
+def library_target(package: str, target: str, workspace: Workspace) -> list[str] | None:
+    """The workspace-relative sources of the library target ``target`` (by its name or
+    output name) of the workspace package ``package``, with the package libraries it
+    links; None when the package is not a CMake package of the workspace or builds no
+    such library."""
+    return remembered("library target", f"{package}\0{target}", workspace,
+                      lambda: _library_target(package, target, workspace))
+
+
+def _library_target(package_name: str, name: str, workspace: Workspace) -> list[str] | None:
+    package = workspace.packages.get(package_name)
+    if package is None or package.build_type not in CMAKE_BUILD_TYPES:
+        return None
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    found = next((t for t in interpreter.targets.values() if t.kind == "library" and (
+        name in (t.name, t.output_name))), None)
+    if found is None:
+        return None
+    return SourceMap(interpreter, files).linked(found)
 
 
 def package_links(name: str, workspace: Workspace) -> list[str]:
@@ -271,6 +311,22 @@ def _run(package: Package, workspace: Workspace,
     return again, list(dict.fromkeys([*first, said, *found, *again.diagnostics]))
 
 
+def _named_library(name: str, own: str, depends: list[str],
+                   workspace: Workspace) -> list[str] | None:
+    """The sources of the library target ``name`` that a target links by its bare name
+    where its own package builds no such target: a library of the workspace package of
+    that name, or of one of its build dependencies (catkin's devel space holds every
+    package's libraries, so ``target_link_libraries(x industrial_robot_client)`` links
+    industrial_core's library that its ``catkin_package`` does not export)."""
+    for package in dict.fromkeys([name, *depends]):
+        if package == own or package not in workspace.packages:
+            continue
+        found = library_target(package, name, workspace)
+        if found:
+            return found
+    return None
+
+
 def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], list[Diagnostic]]:
     """The build targets of a package's CMake files."""
     interpreter, found = interpret(package, workspace)
@@ -282,10 +338,12 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     files = PackageFiles(package, workspace)
     interpreter, found = _interpret(package, workspace, files)
     found = list(found)
+    depends = build_depends(package)
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
-                        build_depends(package), package.name,
+                        depends, package.name,
                         lambda name: package_links(name, workspace),
-                        lambda name: package_exports(name, workspace))
+                        lambda name: package_exports(name, workspace),
+                        lambda name: _named_library(name, package.name, depends, workspace))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))
     nodes.extend(gazebo_plugins(interpreter, package, files, sources))

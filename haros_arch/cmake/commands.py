@@ -776,17 +776,22 @@ CATKIN_PACKAGE_KEYWORDS = frozenset({"INCLUDE_DIRS", "LIBRARIES", "CATKIN_DEPEND
 def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     """``catkin_package(LIBRARIES a b ...)``: the libraries catkin puts in another
     package's ``${catkin_LIBRARIES}`` when it finds this one (``Interpreter.catkin_exports``;
-    no LIBRARIES: none)."""
+    no LIBRARIES: none), and ``CATKIN_DEPENDS``, whose libraries it puts there too
+    (``Interpreter.catkin_depends``)."""
     names: list[str] = []
-    taking = False
+    depends: list[str] = []
+    taking = ""
     for arg in args:
         if arg in CATKIN_PACKAGE_KEYWORDS:
-            taking = arg == "LIBRARIES"
-        elif taking and arg:
+            taking = arg
+        elif taking == "LIBRARIES" and arg:
             names.append(arg)
+        elif taking == "CATKIN_DEPENDS" and _PACKAGE_NAME.fullmatch(arg):
+            depends.append(arg)
     if not it.sure():
         it.catkin_exports_unsure = True
     it.catkin_exports = list(dict.fromkeys([*(it.catkin_exports or []), *names]))
+    it.catkin_depends = list(dict.fromkeys([*it.catkin_depends, *depends]))
 
 
 @handles("set_target_properties")

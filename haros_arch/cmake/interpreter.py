@@ -164,6 +164,9 @@ class Interpreter:
         # a catkin_package() read under an if() not decided, or with a value not known:
         # which libraries it exports is not known
         self.catkin_exports_unsure = False
+        # catkin_package(CATKIN_DEPENDS ...): the packages whose exported libraries
+        # catkin's generated config adds to this one's (``<pkg>_LIBRARIES``)
+        self.catkin_depends: list[str] = []
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
         self.expanded = 0  # characters of arguments expanded, against MAX_EXPANDED

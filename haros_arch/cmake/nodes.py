@@ -107,7 +107,8 @@ class SourceMap:
 
     def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
                  build_depends: Sequence[str] = (), package: str = "",
-                 links: Links | None = None, exports: Links | None = None) -> None:
+                 links: Links | None = None, exports: Links | None = None,
+                 named: Elsewhere | None = None) -> None:
         self.targets = it.targets
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
@@ -117,6 +118,9 @@ class SourceMap:
         self._package = package  # its own libraries are ``linked``'s
         self._links = links
         self._exports = exports  # a package's exported dependencies (``package_exports``)
+        # a library target of another workspace package linked by its bare name
+        # (``cmake._named_library``)
+        self._named = named
 
     def own(self, target: Target, seen: frozenset[str] = frozenset()) -> list[str]:
         if target.name in self._own:
@@ -211,6 +215,13 @@ class SourceMap:
                     more = self._elsewhere(other)
                     if more:
                         out.append(more)
+        if self._named is not None:
+            # a library of another package linked by its target's name (motoman's
+            # ``target_link_libraries(motoman_industrial_robot_client
+            # industrial_robot_client)``, a library industrial_core does not export)
+            named = (self._named(name) for linked in self.closure(target)
+                     for name in dict.fromkeys(linked.links) if name not in self.targets)
+            out.extend(group for group in named if group)
         return out
 
     def reached(self, target: Target) -> list[list[str]]:

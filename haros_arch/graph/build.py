@@ -791,7 +791,20 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         return clean(_filled(call.name, value))
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
+    if value.startswith("/") and call.name.count(UNKNOWN_MARK) == 1 and (
+            call.name.partition(UNKNOWN_MARK)[0] == _handle_prefix(call)):
+        # a global value that begins what the code wrote, on a handle with a namespace
+        # (OpenMower's ``paramNh.advertise(topic + "/converted")``, ``paramNh`` private):
+        # the name is global, not resolved in the handle's namespace
+        return value + call.name.partition(UNKNOWN_MARK)[2]
     return _filled(call.name, value)
+
+
+def _handle_prefix(call: PrimitiveCall) -> str:
+    """What the handle's namespace puts before a relative name the code writes: ``~``,
+    ``ns/``, or nothing."""
+    handle = call.handle_namespace or ""
+    return handle if handle in ("", "~") or handle.endswith("/") else handle + "/"
 
 
 def _empty_piece(call: PrimitiveCall) -> bool:
@@ -802,8 +815,7 @@ def _empty_piece(call: PrimitiveCall) -> bool:
     if call.name.count(UNKNOWN_MARK) != 1:
         return False
     head, _, tail = call.name.partition(UNKNOWN_MARK)
-    handle = call.handle_namespace or ""
-    prefix = handle if handle in ("", "~") or handle.endswith("/") else handle + "/"
+    prefix = _handle_prefix(call)
     return bool(tail.strip("/")) and head.startswith(prefix) and len(head) > len(prefix)
 
 

@@ -164,8 +164,9 @@ class CallSites:
         """The placeholder of a handle member ``field`` that the unit's files never set
         and whose class's constructors are all defined in other files
         (``constructed_elsewhere``): the value those files' code gives it
-        (``links.MEMBER``), filled for the node. None when the unit passes no value to
-        other files (``external``) or the member has no USR."""
+        (``links.MEMBER``), filled for the node; also of a global handle the unit only
+        declares ``extern`` (``Namespaces._global_elsewhere``). None when the unit
+        passes no value to other files (``external``) or the member has no USR."""
         usr = field.get_usr()
         if not self.external or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
             return None

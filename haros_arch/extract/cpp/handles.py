@@ -10,6 +10,7 @@ namespace, ``""``, unless it comes from ``create_sub_node("ns")``.
 from __future__ import annotations
 
 import re
+from typing import Any
 
 from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
@@ -123,6 +124,8 @@ class Namespaces:
         # the writes of the unit's global variables in its main file's functions (see
         # ``_global_value``), found once
         self._globals: dict[tuple[str, int], list[Cursor]] | None = None
+        # the USR of each global variable those writes write, by the same key
+        self._global_usrs: dict[tuple[str, int], str] = {}
         # the string that gave the last namespace asked (``of``) its one unknown run,
         # with the scope it reads in: ``ros::NodeHandle lnh(nh, firstcam)`` where
         # ``firstcam`` holds a parameter's value (pointgrey's stereo nodelet's
@@ -201,6 +204,9 @@ class Namespaces:
                 if value is not None:  # written in another function: its own scope
                     return self.of(value, Scope(None, self.macros, self.source, self.sites),
                                    depth + 1)
+                marker = self._global_elsewhere(decl)
+                if marker is not None:
+                    return (marker,)
             if value is None and initializer(decl) is None:
                 return self._dropped_prefix(decl)
             return UNKNOWN if value is None else self.of(value, scope, depth + 1)
@@ -321,9 +327,13 @@ class Namespaces:
         exactly once: ublox's ``boost::shared_ptr<ros::NodeHandle> nh;`` (a header) set by
         ``nh.reset(new ros::NodeHandle("~"))`` in ``main`` and used by every publisher
         (``nh = boost::make_shared<ros::NodeHandle>("~")`` alike)."""
+        writes = self._global_writes_of(decl.translation_unit).get(key_of(decl), [])
+        return writes[0] if len(writes) == 1 else None
+
+    def _global_writes_of(self, unit: Any) -> dict[tuple[str, int], list[Cursor]]:
+        """The writes of the unit's global variables in its main file's functions."""
         if self._globals is None:
             self._globals = {}
-            unit = decl.translation_unit
             main = unit.spelling if unit is not None else ""
             stack = list(unit.cursor.get_children()) if unit is not None else []
             while stack:
@@ -334,8 +344,32 @@ class Namespaces:
                     stack.extend(node.get_children())
                 elif node.kind in _FUNCTIONS and node.is_definition():
                     self._global_writes(node)
-        writes = self._globals.get(key_of(decl), [])
-        return writes[0] if len(writes) == 1 else None
+        return self._globals
+
+    def _global_elsewhere(self, decl: Cursor) -> str | None:
+        """The placeholder of a global handle that this unit only declares (``extern
+        ros::NodeHandle* n;``: another file of the node defines it) and never writes:
+        the namespace the file of the node whose functions write it once gives it
+        (``global_handles``, ``links.MEMBER``), filled for the node; OpenMower's
+        mower_logic sets ``n = new ros::NodeHandle()`` in main and its behaviours, in
+        other files, make their clients and publishers on ``n``. None otherwise."""
+        if self.sites is None or decl.get_definition() is not None or not is_handle(decl):
+            return None
+        if self._global_writes_of(decl.translation_unit).get(key_of(decl)):
+            return None
+        return self.sites.member_placeholder(decl)
+
+    def global_handles(self, unit: Any) -> list[tuple[str, Parts]]:
+        """(USR, namespace) of each global handle the functions of the unit's main file
+        write exactly once (``_global_value``), for the other files of the node that
+        use it (``_global_elsewhere``)."""
+        found: list[tuple[str, Parts]] = []
+        for key, writes in sorted(self._global_writes_of(unit).items()):
+            usr = self._global_usrs.get(key, "")
+            if len(writes) == 1 and usr:
+                found.append((usr, self.of(writes[0], Scope(
+                    None, self.macros, self.source, self.sites))))
+        return found
 
     def _global_writes(self, function: Cursor) -> None:
         assert self._globals is not None
@@ -348,6 +382,9 @@ class Namespaces:
                 ):
                     self._globals.setdefault(key_of(target.referenced), []).append(
                         write.value)
+                    if is_handle(target.referenced):
+                        self._global_usrs[key_of(target.referenced)] = (
+                            target.referenced.get_usr())
 
     def _dropped_prefix(self, decl: Cursor) -> Parts:
         """A handle declared ``NodeHandle nh("~/" + name_)`` whose initialiser clang

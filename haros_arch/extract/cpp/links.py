@@ -93,7 +93,9 @@ DEFINED = -16
 # the index of a fact that says the namespace of a handle member (the fact's USR, a
 # field's) is its value where the unit (its own source the fact's site) defines a
 # constructor of the member's class: another unit that reads the member and has none of
-# those constructors holds it as a placeholder (``CallSites.member_placeholder``)
+# those constructors holds it as a placeholder (``CallSites.member_placeholder``); and of
+# a global handle (a variable's USR) that the unit's own source writes once
+# (``global_facts``), which another unit declares ``extern`` and never writes
 MEMBER = -17
 # the index of a fact that says the call site (the fact's site) is in the constructor whose
 # USR is the fact's value, which its unit never calls: where no file of the node calls it
@@ -230,6 +232,14 @@ def member_facts(functions: Iterable[Cursor], main: str,
             if value is not None and usr not in _marked_usrs(value):
                 facts.append((usr, MEMBER, value, main))
     return facts
+
+
+def global_facts(found: Iterable[tuple[str, str]], main: str) -> list[Fact]:
+    """A ``MEMBER`` fact for each global handle (by USR) the unit's own source ``main``
+    writes once, with the namespace it gives it (``Namespaces.global_handles``): another
+    file of the node that declares it ``extern`` holds it as a placeholder."""
+    return [(usr, MEMBER, value, main) for usr, value in found
+            if usr not in _marked_usrs(value)]
 
 
 def opaque_unseen(facts: Iterable[Fact]) -> set[str]:

@@ -135,6 +135,11 @@ _VALUE_WRITTEN = re.compile(
 _SCOPE_NAME_BEFORE = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*\s*$")
 # a member template named with C++'s ``template`` keyword (``bb->template set<T>(k, v)``,
 # where the object's type depends on a template parameter or is unknown)
+# what is no code where members are read: comments, string and character literals,
+# #include lines
+_NOT_CODE = re.compile(
+    rb'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|^[ \t]*#[ \t]*include[^\n]*',
+    re.DOTALL | re.MULTILINE)
 _TEMPLATE_MEMBER = re.compile(rb"(?:\.|->)\s*template\s+([A-Za-z_]\w*)\s*<")
 _NOT_TEMPLATE = re.compile(
     r"^'(\w+)' following the 'template' keyword does not refer to a template")
@@ -377,6 +382,9 @@ struct haros_any {
   haros_any &operator()(const haros_any &) const;
   haros_any &operator()(const haros_any &, const haros_any &) const;
   haros_any &operator()(const haros_any &, const haros_any &, const haros_any &) const;
+  // and a variable-length array, which no template deduces (OpenMower's ``uint8_t
+  // buf[size]; crc.process_bytes(buf, size)``, boost/crc.hpp missing): the last resort
+  haros_any &operator()(...) const;
   template <class A> haros_any &operator[](A &&) const;
   template <class A> haros_any &operator=(A &&);
   haros_any &operator++(); haros_any &operator--();
@@ -530,6 +538,32 @@ def library_prefixes(messages: Iterable[str]) -> set[str]:
                 if not word.startswith("lib"):
                     found.add("lib" + word)
     return found
+
+
+_STATEMENT_END = re.compile(rb"[;{}]\s*$")
+
+
+def _called_statement(text: bytes, start: int, end: int) -> bool:
+    """Whether the name written from ``start`` to ``end`` begins a statement that is a
+    call of it alone: ``;``, ``{`` or ``}`` before it, its parenthesised arguments, and
+    ``;`` after them (``vendor::set_logger(logger);``)."""
+    if _STATEMENT_END.search(text[max(0, start - 64):start]) is None:
+        return False
+    at = end
+    while at < len(text) and text[at:at + 1].isspace():
+        at += 1
+    if text[at:at + 1] != b"(":
+        return False
+    depth = 0
+    for index in range(at, min(len(text), at + 2000)):
+        char = text[index:index + 1]
+        if char == b"(":
+            depth += 1
+        elif char == b")":
+            depth -= 1
+            if depth == 0:
+                return text[index + 1:index + 64].lstrip()[:1] == b";"
+    return False
 
 
 def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:
@@ -797,11 +831,16 @@ class Names:
         skip = _KEYWORDS | _api_methods()
         for text in texts:
             if text is not None:
+                # in code only: a comment's sentence ends in ``.`` too (a sentence
+                # of OpenMower's xesc headers ended before ``size_t``), and an #include
+                # names ``.hpp``: a member ``size_t`` of the permissive class hid the
+                # type in every class derived from one (``boost::noncopyable``)
+                code = _NOT_CODE.sub(b" ", text)
                 self.members.update(
-                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(text)) if n not in skip)
+                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(code)) if n not in skip)
                 # ``x->template get<T>()`` says itself that it names a template
                 self.member_templates.update(
-                    n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(text))
+                    n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(code))
                     if n not in skip)
                 self.taken.update(_case_literals(text))
                 for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
@@ -971,6 +1010,12 @@ class Names:
             # constant read as a value (a class there would be a syntax error); so is
             # one in parentheses after ``case`` (kobuki's ``case (ecl::OpenError):``,
             # where a type is a cast with no operand)
+            last = "value"
+        if last == "type" and use == "any" and (scope or len(written) > 1) and (
+                _called_statement(text, offset, found.end())):
+            # ``spdlog::set_default_logger(logger);`` (spdlog's headers missing): a
+            # statement of a call alone is a function's call; a class there would make
+            # it a declaration of ``logger``, which the line before declares already
             last = "value"
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("

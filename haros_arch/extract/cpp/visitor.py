@@ -325,8 +325,12 @@ class CallFinder:
     def run(self) -> None:
         self._root = root(self.tu)
         self.functions = list(self._definitions(self._root, top=True))
-        self.sites = self.namespaces.sites = CallSites(self.functions, self.macros, self.source,
-                                                       external=True, main=self.tu.spelling)
+        # an object of namespace scope built with arguments (OpenMower's
+        # ``StateSubscriber<Status> status_state_subscriber{"/ll/mower_status"};``) calls
+        # its constructor as a function's local does: a site of what it passes
+        self.sites = self.namespaces.sites = CallSites(
+            [*self.functions, *filter(_constructed_global, self.globals)], self.macros,
+            self.source, external=True, main=self.tu.spelling)
         self.sites.handle_namespace = self.namespaces.value_namespace
         self.members = self.namespaces.members = MemberWrites(self.functions, self.source,
                                                               self.opaque)
@@ -379,6 +383,9 @@ class CallFinder:
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_namespace))
+        self.facts.extend(links.global_facts(
+            ((usr, render(parts)) for usr, parts in self.namespaces.global_handles(self.tu)),
+            self.tu.spelling))
         self.uses.extend(self._uses())
         self.registered = self._registered()
         # the owners the unit's code defines, not a workspace header's: a header's
@@ -2077,6 +2084,15 @@ class CallFinder:
         source = self._parameter_source(expr, scope, 0)
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
             source = self._parameter_source(unknown[0], scope, 0)
+        if source is None and inner.kind == CursorKind.DECL_REF_EXPR:
+            # a local that holds a parameter's value with text around it (OpenMower's
+            # ``std::string target_topic = topic + "/converted";``): that parameter, as
+            # when the call writes the same text
+            held = scope.variable(inner.referenced) if inner.referenced is not None and (
+                inner.referenced.kind == CursorKind.VAR_DECL) else None
+            operands = _unknown_operands(held, scope) if held is not None else []
+            if len(operands) == 1:
+                source = self._parameter_source(operands[0], scope, 0)
         return (name, None if source is None else (*source, None, None))
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
@@ -3569,6 +3585,20 @@ def _element_loop(expr: Cursor, scope: Scope
         return None, None, EACH
     walk = scope.counted_loop(index.referenced, container)
     return (walk, container, EACH) if walk is not None else (None, None, EACH)
+
+
+def _constructed_global(variable: Cursor) -> bool:
+    """Whether ``variable``, of namespace scope, is built by a constructor call that
+    passes it arguments."""
+    parent = variable.semantic_parent
+    if parent is None or parent.kind not in (CursorKind.NAMESPACE,
+                                             CursorKind.TRANSLATION_UNIT):
+        return False
+    made = initializer(variable)
+    made = strip(made) if made is not None else None
+    return made is not None and made.kind == CursorKind.CALL_EXPR and (
+        made.referenced is not None and made.referenced.kind == CursorKind.CONSTRUCTOR
+    ) and any(c.kind.is_expression() for c in made.get_children())
 
 
 def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor]:

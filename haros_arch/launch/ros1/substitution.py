@@ -219,7 +219,13 @@ def evaluate(text: str, ctx: Context) -> Value:
         return as_python(_arg(str(name), ctx))
 
     def env(name: object) -> object:
-        return as_python(_one("env", [str(name)], f"env {name}", ctx))
+        # roslaunch's ``_eval_env`` is the variable's text, as ``optenv``'s: only
+        # ``arg()`` converts (OpenMower's ``env('HARDWARE_PLATFORM') == '1'`` holds for
+        # ``1``; an ``int`` here made it false and left its nodes out)
+        value = _one("env", [str(name)], f"env {name}", ctx)
+        if value.literal is None:
+            return expression.Unknown(f"{value.origins}", "unknown")
+        return value.literal
 
     def optenv(name: object, default: object = "") -> object:
         return ctx.environment.get(str(name), default)
