@@ -554,16 +554,22 @@ def _called_statement(text: bytes, start: int, end: int) -> bool:
         at += 1
     if text[at:at + 1] != b"(":
         return False
+    close = _closing(text, at)
+    return close is not None and text[close + 1:close + 64].lstrip()[:1] == b";"
+
+
+def _closing(text: bytes, at: int, span: int = 2000) -> int | None:
+    """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes)."""
     depth = 0
-    for index in range(at, min(len(text), at + 2000)):
+    for index in range(at, min(len(text), at + span)):
         char = text[index:index + 1]
         if char == b"(":
             depth += 1
         elif char == b")":
             depth -= 1
             if depth == 0:
-                return text[index + 1:index + 64].lstrip()[:1] == b";"
-    return False
+                return index
+    return None
 
 
 def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:
@@ -615,18 +621,8 @@ def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> b
     last = (before or ahead)[-1:]
     if last not in (b":", b",") or (before or ahead).endswith(b"::"):
         return False
-    depth, at = 0, found.end() - 1  # the ``(``
-    while at < len(text) and at < found.end() + 2000:
-        char = text[at:at + 1]
-        if char == b"(":
-            depth += 1
-        elif char == b")":
-            depth -= 1
-            if depth == 0:
-                rest = text[at + 1:at + 200].lstrip()
-                return rest[:1] in (b",", b"{")
-        at += 1
-    return False
+    close = _closing(text, found.end() - 1, 2001)  # the call's ``(``
+    return close is not None and text[close + 1:close + 200].lstrip()[:1] in (b",", b"{")
 
 
 def _spelled_at(name: str, text: bytes, offset: int) -> int:
