@@ -1059,6 +1059,12 @@ class Wrappers:
                 before or after) else scope
             start = len(finder.calls)
             finder._emit(row, call, args, None, (*conditions, *inside), named)
+            # the QoS (queue) is the call site's argument when it passes one: a value not
+            # known there stays unknown, not the parameter's default (autoware_utils'
+            # ``InterProcessPollingSubscriber{this, topic, single_depth_sensor_qos()}``,
+            # its parameter defaulting to ``rclcpp::QoS{1}``)
+            given = row.qos_arg if finder.ros2 else row.queue_arg
+            passed = given is not None and given < len(args)
             for made in finder.calls[start:]:
                 if wrapper.namespace:
                     if not finder.ros2 and not made.name.startswith(("/", "~")):
@@ -1066,7 +1072,8 @@ class Wrappers:
                     made.name = join_name(wrapper.namespace, made.name)
                 for field, value in wrapper.own:
                     if getattr(made, field) in (None, False) and (
-                        field not in ("qos", "queue_size") or made.queue_size is None
+                        field not in ("qos", "queue_size") or (
+                            made.queue_size is None and not passed)
                     ):
                         setattr(made, field, value)
         return True
