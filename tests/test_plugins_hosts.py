@@ -589,7 +589,9 @@ def test_ros1_a_controller_whose_type_nothing_sets_is_a_read_of_its_host_not_unk
     (read,) = [link for link in config.links if link.resource.name == "/r/untyped/type"]
     assert read.location.line == 9  # the spawner's line
     assert config.node("/r/base_node").completeness == "complete"
-    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    # still said where the spawner names it, as before (its class is not set)
+    (unset,) = [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert unset.code == "PLUGIN_CLASS_UNKNOWN" and unset.location.line == 9
     assert not config.parameter("/r/untyped/type").is_set
     # an include not read may set it (ROS 1 files set any name): not known, as before
     unread = LaunchItem("include", "$(find other)/launch/more.launch", where(3))

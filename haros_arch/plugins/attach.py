@@ -1294,7 +1294,9 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
                 # was not specified", controller_manager.cpp loadController), so it
                 # makes no calls and leaves its host as it was; the read stays, for
                 # parameter-read-not-set to say (UR's velocity_based_... controller of a
-                # YAML file that names it vel_based_...)
+                # YAML file that names it vel_based_...), beside PLUGIN_CLASS_UNKNOWN
+                config.diagnostics.append(_not_found(
+                    Choice(controller, None, decl.location, spawner.conditions), host.name))
                 out.append((host, [PrimitiveCall(
                     "read", _relative(full + "/type", host.namespace),
                     location=decl.location, conditions=spawner.conditions,
