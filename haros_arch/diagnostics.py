@@ -166,7 +166,8 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "the class of plugin {plugin} loaded by {host} is not known",
         "The parameter that gives the plugin's class (``<name>.plugin``, ``<name>.type``, "
         "``base_global_planner``, a spawner's parameter file) is not set or its value is "
-        "not known statically; the host instance is partial."),
+        "not known statically; the host instance is partial (not for a ROS 1 controller "
+        "whose type nothing may set: the manager refuses to load it)."),
     "BT_XML_SYNTAX": Entry(
         "error", "behavior tree file is not well-formed XML: {detail}",
         "A BehaviorTree.CPP tree file that a tree host (nav2's bt_navigator) runs could "

@@ -7,6 +7,7 @@ from pathlib import Path
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
+from haros_arch.model.launch_tree import LaunchItem
 from haros_arch.model.values import UNKNOWN_MARK
 from haros_arch.plugins.attach import ros1_spawn_args, spawn_args
 from haros_arch.workspace import Workspace
@@ -519,16 +520,23 @@ def test_ros1_mavros_before_0_18_loads_plugins_of_its_older_base():
     assert config.node("/mavros").completeness == "complete"
 
 
+def _ros1_controllers_plugins():
+    return [plugin("diff_drive_controller", "diff_drive_controller/DiffDriveController",
+                   "diff_drive_controller::DiffDriveController",
+                   call("subscribe", "?/cmd_vel", "geometry_msgs/Twist", handle_namespace="?"),
+                   call("read", "?/publish_rate", "double", handle_namespace="?"))]
+
+
+def _ros1_controllers_params():
+    return [ParamDecl("/r/base/type", "diff_drive_controller/DiffDriveController",
+                      location=where(4)),
+            ParamDecl("/r/joints/type", "joint_state_controller/JointStateController",
+                      location=where(5))]
+
+
 def _ros1_controllers(decls, extra_nodes=()):
-    diff = plugin("diff_drive_controller", "diff_drive_controller/DiffDriveController",
-                  "diff_drive_controller::DiffDriveController",
-                  call("subscribe", "?/cmd_vel", "geometry_msgs/Twist", handle_namespace="?"),
-                  call("read", "?/publish_rate", "double", handle_namespace="?"))
-    params = [ParamDecl("/r/base/type", "diff_drive_controller/DiffDriveController",
-                        location=where(4)),
-              ParamDecl("/r/joints/type", "joint_state_controller/JointStateController",
-                        location=where(5))]
-    return graph(decls, params, [diff, *extra_nodes])
+    return graph(decls, _ros1_controllers_params(),
+                 [*_ros1_controllers_plugins(), *extra_nodes])
 
 
 def test_ros1_spawned_controllers_without_a_manager_in_the_configuration_are_own_instances():
@@ -564,6 +572,38 @@ def test_ros1_spawned_controllers_go_to_the_instance_serving_their_manager():
     assert ("read", "/r/base/type") in links_of(config, "/r/base_node")
     assert ros1_spawn_args(NodeDecl("/c", "controller_manager", "controller_manager",
                                     args="spawn a b")) == (["a", "b"], "")
+
+
+def test_ros1_a_controller_whose_type_nothing_sets_is_a_read_of_its_host_not_unknown():
+    # UR's ur3_ros_control.launch spawned velocity_based_position_trajectory_controller,
+    # which its YAML file named vel_based_pos_traj_controller: the manager reads the
+    # type, finds none and loads nothing (controller_manager.cpp, loadController), so its
+    # host is not partial for it and the read is there for parameter-read-not-set
+    hardware = Node("robot_base", "base_node",
+                    calls=[call("server", "controller_manager/load_controller", "L")])
+    spawner = NodeDecl("/spawner", "controller_manager", "spawner", "/",
+                       args="--namespace=r base untyped", location=where(9))
+    decls = [NodeDecl("/r/base_node", "robot_base", "base_node", "/r/"), spawner]
+    config = _ros1_controllers(decls, [hardware])
+    assert ("read", "/r/untyped/type") in links_of(config, "/r/base_node")
+    (read,) = [link for link in config.links if link.resource.name == "/r/untyped/type"]
+    assert read.location.line == 9  # the spawner's line
+    assert config.node("/r/base_node").completeness == "complete"
+    # still said where the spawner names it, as before (its class is not set)
+    (unset,) = [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    assert unset.code == "PLUGIN_CLASS_UNKNOWN" and unset.location.line == 9
+    assert not config.parameter("/r/untyped/type").is_set
+    # an include not read may set it (ROS 1 files set any name): not known, as before
+    unread = LaunchItem("include", "$(find other)/launch/more.launch", where(3))
+    launch = LaunchModel(nodes=[NodeDecl("/r/base_node", "robot_base", "base_node", "/r/"),
+                                NodeDecl("/spawner", "controller_manager", "spawner", "/",
+                                         args="--namespace=r base untyped")],
+                         params=_ros1_controllers_params(),
+                         tree=[LaunchItem("file", "bringup.launch", children=[unread])])
+    config = build(Configuration("c"), launch, Workspace(root="/nowhere"),
+                   {n.name: n for n in [hardware, *_ros1_controllers_plugins()]})
+    assert [d.code for d in config.diagnostics] == ["PLUGIN_CLASS_UNKNOWN"]
+    assert config.node("/r/base_node").completeness == "partial"
 
 
 def test_ros2_plugin_nodes_leave_their_hosts_framework_calls_to_the_host():

@@ -54,3 +54,33 @@ def test_a_missing_included_file_is_said_at_the_include(write_tree):
     ((file, line, message),) = places(write_tree, "top.urdf.xacro")
     assert (file, line) == ("bot/urdf/top.urdf.xacro", 3)
     assert "bot/urdf/part_gone.xacro" in message
+
+
+UNSPAWNED = """\
+<launch>
+  <param name="robot_description"
+         command="$(find xacro)/xacro.py '$(find bot)/urdf/{file}' prefix:=a_"/>
+  <param name="other" command="$(find xacro)/xacro '$(find bot)/urdf/top.urdf.xacro'"/>
+</launch>
+"""
+
+
+def test_a_missing_file_is_said_when_no_node_here_takes_the_description(write_tree):
+    # kuka_experimental's load_kr60_ha.launch ran xacro on urdf/kr60_ha.xacro, the file
+    # being kr60ha.xacro: roslaunch stops on the failed command, spawned or not; and
+    # xacro not found here (installed on the robot) changes nothing of that
+    def said(file: str) -> list[tuple[str | None, int, str]]:
+        root = str(write_tree({"bot/package.xml": package_xml("bot"),
+                               "bot/launch/load.launch": UNSPAWNED.format(file=file),
+                               "bot/urdf/top.urdf.xacro": TOP}))
+        project = Project("p", os.path.join(root, "project.yaml"), workspace=[root],
+                          configurations=[ConfigurationSpec("c", ["bot/launch/load.launch"],
+                                                            {})])
+        model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
+        return [(d.location.file, d.location.line, d.message) for d in
+                model.configurations[0].diagnostics if d.code == "ROBOT_DESCRIPTION_FILE"]
+
+    ((file, line, message),) = said("kr60_ha.xacro")
+    assert (file, line) == ("bot/launch/load.launch", 2)
+    assert "bot/urdf/kr60_ha.xacro" in message
+    assert said("top.urdf.xacro") == []

@@ -175,6 +175,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         None if models is None else lambda: models(GZSERVER))
     for instance, calls in described.calls:
         _link_calls(instance, calls, resources, config, transports)
+    config.launch_tree = launch.tree  # the includes not read, which may set parameters
     attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
                               workspace, plugin_models, described.hardware)
     for instance, calls in attached:

@@ -1287,6 +1287,21 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
         for controller in controllers[:MAX_PLUGINS]:
             full = f"{manager.rstrip('/')}/{controller}"
             typed = _parameter(params, full + "/type")
+            if typed is None and host is not None and _set_nowhere(config, params,
+                                                                   full + "/type"):
+                # no class, and nothing we could miss may give one: the manager reads
+                # ``<c>/type``, finds none and refuses to load the controller ("the type
+                # was not specified", controller_manager.cpp loadController), so it
+                # makes no calls and leaves its host as it was; the read stays, for
+                # parameter-read-not-set to say (UR's velocity_based_... controller of a
+                # YAML file that names it vel_based_...), beside PLUGIN_CLASS_UNKNOWN
+                config.diagnostics.append(_not_found(
+                    Choice(controller, None, decl.location, spawner.conditions), host.name))
+                out.append((host, [PrimitiveCall(
+                    "read", _relative(full + "/type", host.namespace),
+                    location=decl.location, conditions=spawner.conditions,
+                    origin="plugin")]))
+                continue
             choice = Choice(controller, _text(typed.value) if typed else None,
                             typed.launch_location if typed else decl.location,
                             (*spawner.conditions, *(typed.launch_conditions if typed else ())),
@@ -1320,6 +1335,18 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
             if reader is not None:
                 out.extend(_loading_reads(choice, reader, reader))
     return out
+
+
+def _set_nowhere(config: Configuration, params: Params, name: str) -> bool:
+    """Whether the ROS 1 parameter ``name`` is set by nothing the configuration shows
+    and by nothing it could miss: no launch parameter or code sets it, no launch
+    parameter not known statically may be it (``_may_be_set``), and no include was left
+    unread (roslaunch's files may set any name; a node's code writing it would be a
+    parameter of that name, set)."""
+    if params.by_name.get((Parameter, name)) is not None or _may_be_set(name, params):
+        return False
+    return not any(item.kind == "include" and not item.skipped
+                   for tree in config.launch_tree for item in tree.walk())
 
 
 def _ros1_spawn_files(words: list[str], decl: NodeDecl, spawner: NodeInstance,

@@ -155,7 +155,34 @@ def attach(config: Configuration, launch: LaunchModel,
     out.calls[:0] = [(instance, list(instance.node.calls)) for instance in made
                      if instance.node is not None]
     out.calls.extend(bridges(config, launch, started, workspace))
+    _unmade(config, launch, workspace)
     return out
+
+
+def _unmade(config: Configuration, launch: LaunchModel, workspace: Workspace) -> None:
+    """A launch parameter whose xacro (or ``cat``) command names a file of the workspace
+    that is not there: the command fails, and roslaunch (or launch, which runs a
+    ``Command`` substitution as it gives the node its parameters) stops, whether or not a
+    node read here takes the description (kuka_experimental's load_kr60_ha.launch runs
+    xacro on ``urdf/kr60_ha.xacro``, the package's file being ``kr60ha.xacro``).
+    ROBOT_DESCRIPTION_FILE at the parameter's line, once, unless a description made
+    from it said so already."""
+    said = {(d.location.file, d.location.line) for d in config.diagnostics
+            if d.code == "ROBOT_DESCRIPTION_FILE"}
+    top = os.path.abspath(workspace.root) + os.sep
+    for param in launch.params:
+        parsed = xacro_command(param.command) if param.command is not None else None
+        if parsed is None or UNKNOWN_MARK in parsed.path or not os.path.isabs(parsed.path):
+            continue
+        path = os.path.abspath(parsed.path)
+        where = (param.location.file, param.location.line)
+        if not path.startswith(top) or where in said or os.path.exists(path) or \
+                os.path.exists(share_source(workspace, path)):
+            continue
+        said.add(where)
+        config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", param.location,
+                                            path=workspace.relpath(path),
+                                            detail="no such file"))
 
 
 def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
