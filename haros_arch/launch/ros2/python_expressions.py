@@ -339,12 +339,9 @@ class Expressions(Walker):
         if isinstance(value, _Environ):
             return value.get(self, [key], node)
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
-            if isinstance(key, str) and key in value.assigned:
-                return value.assigned[key]
-            held = value.configuration(key) if value.configuration is not None and (
-                isinstance(key, str)) else None
-            if held is not None and held[0] == "value":
-                return held[1]  # launch_ros' global_params
+            state, held = value.held(key)
+            if state == "value":  # set by the function, or launch_ros' global_params
+                return held
             return value.perform((e.Var(_text_of(key)),))
         if isinstance(value, (list, tuple)) and value and _opaque(key) and all(
                 isinstance(item, e.Action) for item in value):

@@ -451,18 +451,14 @@ def m_perform_substitution(i: Interpreter, owner: Any, a: Args, k: Kwargs,
 def m_dict(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(owner, Context) and name == "get" and a:
-            if isinstance(a[0], str) and a[0] in owner.assigned:
-                return owner.assigned[a[0]]
-            held = owner.configuration(a[0]) if owner.configuration is not None and (
-                isinstance(a[0], str)) else None
-            if held is not None and held[0] == "value":
-                return held[1]  # launch_ros' global_params
-            if held is not None and held[0] == "unset":
+            state, held = owner.held(a[0])
+            if state == "value":  # set by the function, or launch_ros' global_params
+                return held
+            if state == "unset":
                 # dict.get of a configuration nothing set: the default as it is, a
                 # text or not (Autoware's ``.get("ros_params", {})``)
                 return a[1] if len(a) > 1 else None
-            if held is not None and held[0] == "unknown" and len(a) > 1 and not isinstance(
-                    a[1], str):
+            if state == "unknown" and len(a) > 1 and not isinstance(a[1], str):
                 return Unknown(f"launch configuration {a[0]}: an action not seen may set it")
             return owner.perform((e.Var(to_text(a[0]), to_text(a[1]) if len(a) > 1
                                         else None),))

@@ -249,6 +249,17 @@ class Context:
     configuration: Callable[[str], tuple[str, Any]] | None = field(default=None,
                                                                   compare=False)
 
+    def held(self, name: Any) -> tuple[str, Any]:
+        """How the configuration ``name`` is held for a read: ``("value", v)`` for one
+        the function set or launch_ros' ``global_params``, else ``configuration``'s
+        state (``("set", None)`` when it cannot tell: performed as a
+        ``LaunchConfiguration``)."""
+        if not isinstance(name, str):
+            return "set", None
+        if name in self.assigned:
+            return "value", self.assigned[name]
+        return self.configuration(name) if self.configuration is not None else ("set", None)
+
 
 _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "ament_index_python",
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy", "launch_pal",
