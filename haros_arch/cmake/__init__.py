@@ -23,6 +23,7 @@ from .commands import on_every_path
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
 from .nodes import (
+    MODELLED_PACKAGES,
     PackageFiles,
     SourceMap,
     components,
@@ -87,38 +88,72 @@ def build_depends(package: Package) -> list[str]:
 def package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     """The workspace-relative sources of the libraries the workspace package ``name``
     builds, for the targets of other packages that link it; None when it is not a
-    CMake package of the workspace."""
+    CMake package of the workspace. catkin's generated config of the package adds the
+    libraries of its CATKIN_DEPENDS to its own, transitively: OpenMower's
+    mower_comms_v1 links xesc_driver, whose XescDriver builds xesc_2040_driver's
+    Xesc2040Driver, a library xesc_driver's own target links nowhere."""
     return remembered("libraries", name, workspace,
                       lambda: _package_libraries(name, workspace))
 
 
-# the packages whose libraries are being gathered (a CATKIN_DEPENDS cycle ends there)
-_GATHERING: set[str] = set()
-
-
 def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
+    own = _own_libraries(name, workspace)
+    if own is None:
+        return None
+    found = list(own[0])
+    seen = {name}
+
+    def gather(depends: list[str]) -> None:  # depth first, as the configs append them
+        for depend in depends:
+            if depend in seen:
+                continue  # a CATKIN_DEPENDS cycle ends there
+            seen.add(depend)
+            more = _own_libraries(depend, workspace)
+            if more is not None:
+                found.extend(s for s in more[0] if s not in found)
+                gather(more[1])
+
+    gather(own[1])
+    return found
+
+
+def _own_libraries(name: str, workspace: Workspace) -> tuple[list[str], list[str]] | None:
+    """The sources of the libraries the package ``name`` exports itself, and its
+    CATKIN_DEPENDS; None when it is not a CMake package of the workspace."""
+    return remembered("own libraries", name, workspace,
+                      lambda: _own_libraries_of(name, workspace))
+
+
+def _own_libraries_of(name: str, workspace: Workspace
+                      ) -> tuple[list[str], list[str]] | None:
     package = workspace.packages.get(name)
     if package is None or package.build_type not in CMAKE_BUILD_TYPES:
         return None
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
     sources = SourceMap(interpreter, files)
-    found = list(dict.fromkeys(source for target in _exported(interpreter, sources)
-                               for source in sources.own(target)))
-    # catkin's generated config of the package adds the libraries of its CATKIN_DEPENDS
-    # to its own, transitively: OpenMower's mower_comms_v1 links xesc_driver, whose
-    # XescDriver builds xesc_2040_driver's Xesc2040Driver, a library xesc_driver's own
-    # target links nowhere
-    _GATHERING.add(name)
-    try:
-        for depend in interpreter.catkin_depends:
-            if depend in _GATHERING or depend == name:
-                continue
-            found.extend(s for s in package_libraries(depend, workspace) or ()
-                         if s not in found)
-    finally:
-        _GATHERING.discard(name)
-    return found
+    return (list(dict.fromkeys(source for target in _exported(interpreter, sources)
+                               for source in sources.own(target))),
+            [d for d in interpreter.catkin_depends if d != name])
+
+
+def libraries_handed(name: str, workspace: Workspace) -> list[tuple[str, list[str]]]:
+    """What a target that links the workspace package ``name`` gets of the workspace's
+    libraries, a (package, sources) pair per package: its own libraries
+    (``package_libraries``); where it builds none, a header-only umbrella
+    (autoware_utils, whose CMake is ``ament_auto_package()`` alone), those of each
+    package it exports (``package_exports``; ament's ``ament_export_dependencies`` and
+    ament_cmake_auto, and catkin's ``CATKIN_DEPENDS``, put theirs in its
+    ``_LIBRARIES``), an empty list for one that builds none either. A package that
+    builds libraries of its own hands on no more: a package's dependencies are its own
+    business."""
+    own = package_libraries(name, workspace)
+    if own is None:
+        return []
+    if own:
+        return [(name, own)]
+    return [(other, package_libraries(other, workspace) or [])
+            for other in package_exports(name, workspace) if other not in MODELLED_PACKAGES]
 
 
 def _exported(interpreter: Interpreter, sources: SourceMap) -> list[Target]:
@@ -342,7 +377,7 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),
                         depends, package.name,
                         lambda name: package_links(name, workspace),
-                        lambda name: package_exports(name, workspace),
+                        lambda name: libraries_handed(name, workspace),
                         lambda name: _named_library(name, package.name, depends, workspace))
     nodes = executables(interpreter, package, files, sources)
     nodes.extend(components(interpreter, package, files, sources))

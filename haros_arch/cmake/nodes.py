@@ -84,6 +84,9 @@ Elsewhere = Callable[[str], "list[str] | None"]
 # the other packages the libraries of a package of the workspace link, by its name
 # (``cmake.package_links``)
 Links = Callable[[str], "list[str]"]
+# what a target linking a package of the workspace gets of the workspace's libraries, by
+# the package's name: a (package, sources) pair per package (``cmake.libraries_handed``)
+Handed = Callable[[str], "list[tuple[str, list[str]]]"]
 MAX_REACHED = 64  # packages followed from a target for its classes' base classes
 
 
@@ -107,7 +110,7 @@ class SourceMap:
 
     def __init__(self, it: Interpreter, workspace: Files, elsewhere: Elsewhere | None = None,
                  build_depends: Sequence[str] = (), package: str = "",
-                 links: Links | None = None, exports: Links | None = None,
+                 links: Links | None = None, handed: Handed | None = None,
                  named: Elsewhere | None = None) -> None:
         self.targets = it.targets
         self.workspace = workspace
@@ -117,7 +120,7 @@ class SourceMap:
         self._build_depends = list(build_depends)
         self._package = package  # its own libraries are ``linked``'s
         self._links = links
-        self._exports = exports  # a package's exported dependencies (``package_exports``)
+        self._handed = handed
         # a library target of another workspace package linked by its bare name
         # (``cmake._named_library``)
         self._named = named
@@ -188,33 +191,26 @@ class SourceMap:
     def elsewhere(self, target: Target) -> list[list[str]]:
         """The sources of the libraries of each other workspace package ``target``
         links (catkin's ``catkin_LIBRARIES``, ament's dependencies), a list per
-        package: move_base links costmap_2d, whose ``Costmap2DROS`` makes the costmaps'
-        calls on move_base's node. Not those of the packages they link in turn: a
+        package (``cmake.libraries_handed``: a header-only package's are those of the
+        packages it exports): move_base links costmap_2d, whose ``Costmap2DROS`` makes
+        the costmaps' calls on move_base's node. Not those of the packages they link in
+        turn: a
         package's dependencies are its own business (a test-support package an
         Autoware planner declares as a dependency links the test utilities, whose
         publishers are no node's)."""
-        if self._elsewhere is None:
+        if self._handed is None:
             return []
         out: list[list[str]] = []
         seen = {self._package}
         for name in self.packages(target):
             seen.add(name)
-            group = self._elsewhere(name)
-            if group:
-                out.append(group)
-            elif group == [] and self._exports is not None:
-                # a workspace package that builds no library of its own, a header-only
-                # umbrella (autoware_utils, whose CMake is ``ament_auto_package()``
-                # alone), hands its users the libraries of the packages it exports:
-                # ament (``ament_export_dependencies``, ament_cmake_auto) and catkin
-                # (``CATKIN_DEPENDS``) put theirs in its ``_LIBRARIES``
-                for other in self._exports(name):
-                    if other in seen or other in MODELLED_PACKAGES:
+            for owner, group in self._handed(name):
+                if owner != name:  # an exported package of a header-only one: once
+                    if owner in seen:
                         continue
-                    seen.add(other)
-                    more = self._elsewhere(other)
-                    if more:
-                        out.append(more)
+                    seen.add(owner)
+                if group:
+                    out.append(group)
         if self._named is not None:
             # a library of another package linked by its target's name (motoman's
             # ``target_link_libraries(motoman_industrial_robot_client
