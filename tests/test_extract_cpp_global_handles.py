@@ -52,3 +52,33 @@ def test_a_global_handle_main_sets_once(write_tree) -> None:
                          cache_dir=None)
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("publish", "?/either"), ("publish", "gps/status"), ("publish", "~fix")]
+
+
+NESTED = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include "ub/node.h"
+namespace app { namespace setup {
+void start() { nh.reset(new ros::NodeHandle("~")); }
+} }
+namespace app {
+void run() { ros::Publisher p = nh->advertise<std_msgs::String>("out", 1); }
+}
+int main(int argc, char ** argv) {
+  ros::init(argc, argv, "nested");
+  app::setup::start();
+  app::run();
+}
+"""
+
+
+def test_the_write_may_be_in_a_function_of_a_namespace(write_tree) -> None:
+    """The main file's functions are looked for in its namespaces, nested too."""
+    root = write_tree({
+        "ub/package.xml": package_xml("ub"),
+        "ub/include/ub/node.h": HEADER,
+        "ub/src/node.cpp": NESTED,
+    })
+    result = extract_cpp([str(root / "ub" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "~out")]

@@ -22,7 +22,7 @@ from .call_sites import (
     uses_parameter,
     value_text,
 )
-from .cursors import MAX_OVERLOADS, from_standin, overloads
+from .cursors import MAX_OVERLOADS, children_in, from_standin, overloads
 from .expressions import qualified_name
 from .members import MemberWrites
 from .values import (
@@ -137,6 +137,7 @@ class Namespaces:
         # (``controller_root``): the manager's namespace, not known here
         self.root = False
         self._asked = 0  # ``value_namespace`` questions open
+        self.unit_root: Any = None  # the unit's root node (``cursors.root``), once known
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -331,10 +332,25 @@ class Namespaces:
         return writes[0] if len(writes) == 1 else None
 
     def _global_writes_of(self, unit: Any) -> dict[tuple[str, int], list[Cursor]]:
-        """The writes of the unit's global variables in its main file's functions."""
+        """The writes of the unit's global variables in its main file's functions (of
+        namespace scope: a class's own are not read), found once. Read on the unit's
+        nodes (``unit_root``, the visitor's: their children are made once for every
+        analysis) where they are known."""
         if self._globals is None:
             self._globals = {}
             main = unit.spelling if unit is not None else ""
+            if self.unit_root is not None:
+                def in_main(name: str) -> bool:
+                    return name == main
+
+                stack = children_in(self.unit_root, in_main)
+                while stack:
+                    node = stack.pop()
+                    if node.kind == CursorKind.NAMESPACE:
+                        stack.extend(children_in(node, in_main))
+                    elif node.kind in _FUNCTIONS and node.is_definition():
+                        self._global_writes(node)
+                return self._globals
             stack = list(unit.cursor.get_children()) if unit is not None else []
             while stack:
                 node = stack.pop()
@@ -374,6 +390,8 @@ class Namespaces:
     def _global_writes(self, function: Cursor) -> None:
         assert self._globals is not None
         for node in function.walk_preorder():
+            if node.kind not in _WHOLE_WRITES:
+                continue  # a declaration writes itself, an operator in place no whole value
             for write in writes_of(node, self.source):
                 target = write.target
                 if write.whole and write.value is not None and (
@@ -500,6 +518,11 @@ def binds_handle(field: Cursor) -> bool:
         return False
     decl = ctype.get_pointee().get_canonical().get_declaration()
     return decl is not None and qualified_name(decl) in api.HANDLE_CLASSES
+
+
+# the nodes whose writes (``writes_of``) may set a variable named by a reference to a
+# whole value: an assignment, a call (``operator=``, ``reset``, a search's result)
+_WHOLE_WRITES = frozenset({CursorKind.CALL_EXPR, CursorKind.BINARY_OPERATOR})
 
 
 def _is_global(decl: Cursor) -> bool:

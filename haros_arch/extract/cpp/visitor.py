@@ -323,7 +323,7 @@ class CallFinder:
         self.opaque: list[tuple[str, int]] = []
 
     def run(self) -> None:
-        self._root = root(self.tu)
+        self._root = self.namespaces.unit_root = root(self.tu)
         self.functions = list(self._definitions(self._root, top=True))
         # an object of namespace scope built with arguments (OpenMower's
         # ``StateSubscriber<Status> status_state_subscriber{"/ll/mower_status"};``) calls
