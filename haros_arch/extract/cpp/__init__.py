@@ -1349,7 +1349,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
             (name, owner) for owner, name in finder.handed_to if name not in told)})
     if (result.unseen or finder.opaque_words) and result.unseen != ["*"]:
         result.facts = [*result.facts, *call_conditions.hidden_facts(
-            finder.unit_cursor(), owned, _error_words(errors, places))]
+            finder.unit_cursor(), finder.owned, _error_words(errors, places))]
     finder.release()
     headers = [path, *read]
     for include in tu.get_includes():

@@ -326,8 +326,13 @@ def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
     """The children of ``parent`` (the unit, a namespace, a class) whose location is in
     a file whose name is ``wanted``, in order: what a loop over its children that asks
     each one's ``location.file`` keeps, each file judged once (``by_file``) and a node
-    made only for the children kept (most of a unit's are in headers nobody walks)."""
+    made only for the children kept (most of a unit's are in headers nobody walks). Kept
+    with the parent for the same ``wanted``: the visitor's search for definitions and
+    ``call_conditions.hidden_facts`` ask the same."""
     assert isinstance(parent, Node)
+    asked = parent.__dict__.setdefault("_kept", {})  # by ``wanted``: the same asked again
+    if wanted in asked:
+        return list(asked[wanted])
     lib = conf.lib
     kept = by_file(wanted)
     found: list[bytes] = []
@@ -339,7 +344,8 @@ def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
 
     visit_children(parent, visit)
     made = parent._unit.made
-    return [made(raw) for raw in found]
+    asked[wanted] = nodes = [made(raw) for raw in found]
+    return list(nodes)
 
 
 def overloads(cursor: Cursor) -> list[Cursor | None]:
