@@ -602,6 +602,14 @@ CATALOGUE: dict[str, Entry] = {
         "The nodes it starts, and what they communicate, are decided at run time, so "
         "the node is 'partial' and checks that claim something is absent do not decide "
         "on it, rather than take a robot's whole base for a node with no interface."),
+    "PY_RUNS_ROS_TOOL": Entry(
+        "info", "{call} runs rosrun or roslaunch at run time; the nodes it starts are "
+        "not read",
+        "A Python program runs a command that starts ROS nodes (``subprocess.call(["
+        "'rosrun', 'rviz', 'rviz', '-d', path])``, ``os.system('roslaunch ...')``): "
+        "Doosan's dmodel.py writes an rviz configuration and starts rviz so. The nodes "
+        "it starts are decided at run time, so the node is 'partial' and checks that "
+        "claim something is absent do not decide on it."),
     "PY_DYNAMIC_IMPORT": Entry(
         "info", "{call} imports a module whose name is computed at run time ({name}); "
         "its code is not read",
@@ -619,8 +627,9 @@ CATALOGUE: dict[str, Entry] = {
         "{first})",
         "A source of the node could not be read or parsed, or was too large to analyse, "
         "or the node builds a class whose code is not read (PY_CLASS_UNSEEN), runs "
-        "roslaunch in its process (PY_LAUNCHES) or imports a module by a computed "
-        "name (PY_DYNAMIC_IMPORT): calls may be missing. The node model is "
+        "roslaunch in its process (PY_LAUNCHES) or with a command (PY_RUNS_ROS_TOOL), "
+        "or imports a module by a computed name (PY_DYNAMIC_IMPORT): calls may be "
+        "missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
     "CPP_PARAMETER_LIBRARY": Entry(

@@ -798,6 +798,12 @@ class Walker:
                         call, spec.owner), frame))
             elif target.qualname in _IMPORTERS:
                 self._dynamic_import(target.qualname, call, frame)
+            elif target.qualname in _SUBPROCESSES and self._runs_ros_tool(call, frame):
+                where = self._where(frame, call)
+                if where not in self._launches_said:
+                    self._launches_said.add(where)
+                    self.diagnostics.append(diag.make(
+                        "PY_RUNS_ROS_TOOL", where, call=target.qualname))
             elif target.qualname.split(".")[0] == "roslaunch" and (
                     target.key[1] in _LAUNCHERS):
                 where = self._where(frame, call)
@@ -1091,6 +1097,21 @@ class Walker:
             return
         self._classes_said[target.qualname] = self._where(frame, call)
 
+    def _runs_ros_tool(self, call: ast.Call, frame: Frame) -> bool:
+        """Whether a subprocess call's command (a list's first word, or a string's)
+        is roslaunch or rosrun, which start nodes (Doosan's dmodel.py writes an rviz
+        configuration and runs ``['rosrun', 'rviz', 'rviz', '-d', path]``)."""
+        given = call.args[0] if call.args else next(
+            (k.value for k in call.keywords if k.arg == "args"), None)
+        if given is None or isinstance(given, ast.Starred):
+            return False
+        value = self.evaluator.eval(given, frame)
+        if isinstance(value, Seq):
+            value = value.items[0] if value.items else None
+        text = text_of(value).text.strip() if value is not None else ""
+        word = text.split()[0] if text else ""
+        return word.rsplit("/", 1)[-1] in _ROS_TOOLS
+
     def _dynamic_import(self, function: str, call: ast.Call, frame: Frame) -> None:
         """Say where the program imports a module whose name it computes at run time
         (FlexBE's onboard engine imports each behavior it is sent, ``__import__("tmp_%d"
@@ -1137,6 +1158,12 @@ class Walker:
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
                                     getattr(node, "col_offset", -1) + 1)
+
+
+# the functions that run a command, and the commands that start ROS nodes
+_SUBPROCESSES = frozenset({"subprocess.call", "subprocess.check_call", "subprocess.run",
+                           "subprocess.Popen", "subprocess.check_output", "os.system"})
+_ROS_TOOLS = frozenset({"rosrun", "roslaunch"})
 
 
 # the functions that import a module by its name (the first argument)
