@@ -602,13 +602,34 @@ CATALOGUE: dict[str, Entry] = {
         "The nodes it starts, and what they communicate, are decided at run time, so "
         "the node is 'partial' and checks that claim something is absent do not decide "
         "on it, rather than take a robot's whole base for a node with no interface."),
+    "PY_RUNS_ROS_TOOL": Entry(
+        "info", "{call} runs rosrun or roslaunch at run time; the nodes it starts are "
+        "not read",
+        "A Python program runs a command that starts ROS nodes (``subprocess.call(["
+        "'rosrun', 'rviz', 'rviz', '-d', path])``, ``os.system('roslaunch ...')``): "
+        "Doosan's dmodel.py writes an rviz configuration and starts rviz so. The nodes "
+        "it starts are decided at run time, so the node is 'partial' and checks that "
+        "claim something is absent do not decide on it."),
+    "PY_DYNAMIC_IMPORT": Entry(
+        "info", "{call} imports a module whose name is computed at run time ({name}); "
+        "its code is not read",
+        "A Python program imports a module by a name it computes (``__import__``, "
+        "``importlib.import_module``, ``runpy.run_module`` of a variable): FlexBE's "
+        "onboard engine imports each behavior it is sent and runs its state machine, "
+        "which reads the engine's logging parameters and opens its topics; a plugin "
+        "named by a parameter. What that code communicates is not known, so the node "
+        "is 'partial' and checks that claim something is absent do not decide on it. "
+        "A name ending in .msg, .srv or .action (a package's message classes) does "
+        "not count."),
     "PY_NODE_PARTIAL": Entry(
         "warning", "node {node}: its calls may be incomplete, {count} place(s) in its "
         "Python sources where calls may be missing or made by code not read (first: "
         "{first})",
         "A source of the node could not be read or parsed, or was too large to analyse, "
-        "or the node builds a class whose code is not read (PY_CLASS_UNSEEN) or runs "
-        "roslaunch in its process (PY_LAUNCHES): calls may be missing. The node model is "
+        "or the node builds a class whose code is not read (PY_CLASS_UNSEEN), runs "
+        "roslaunch in its process (PY_LAUNCHES) or with a command (PY_RUNS_ROS_TOOL), "
+        "or imports a module by a computed name (PY_DYNAMIC_IMPORT): calls may be "
+        "missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
     "CPP_PARAMETER_LIBRARY": Entry(

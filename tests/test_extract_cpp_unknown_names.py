@@ -1359,3 +1359,26 @@ def test_members_are_read_from_code_not_comments_strings_or_includes() -> None:
     names.read_members([text])
     assert {"count", "size"} <= names.members
     assert not {"size_t", "Since", "txt", "hpp"} & names.members
+
+
+def test_a_builders_member_template_assigned_whole_is_declared() -> None:
+    """Doosan's dsr_control: ``arm_joint_names = boost::assign::list_of("joint1")(
+    "joint2").convert_to_container<ros::V_string>();`` with boost's header not read
+    (the stand-ins' include path): the member template of what a chain of calls returns,
+    its result assigned whole to a variable that keeps its own type, is declared one, not
+    an error in the constructor that makes the node's calls; a member template of a
+    member (``x = this->tree_.build<C>()``) or kept in a new ``auto`` stays one."""
+    names = synthesis.Names()
+    text = (b"void f() {\n"
+            b"  names = boost::assign::list_of(\"a\")(\"b\").convert_to_container<V>();\n"
+            b"  auto made = make_list(\"a\")(\"b\").to_container<V>();\n"
+            b"  other = make_list(\"a\").into<V>() + 1;\n"
+            b"  x = this->tree_.build<C>();\n}\n")
+    message = "'%s' does not name a template but is followed by template arguments"
+    names.learn([(message % n.decode(), text, text.index(n))
+                 for n in (b"convert_to_container", b"to_container", b"into", b"build")])
+    header = names.header()
+    declared = "template <class... T, class... A> static haros_any &%s(const A &...);"
+    assert declared % "convert_to_container" in header
+    for name in ("to_container", "into", "build"):
+        assert declared % name not in header

@@ -480,16 +480,36 @@ def _registered_in(path: str, workspace: Files) -> Iterable[tuple[str, int]]:
         yield match.group(1).lstrip(":"), text.count("\n", 0, match.start()) + 1
 
 
+# a shell line that runs the script itself again under Python: ``python "$0"``,
+# ``exec python3 "${BASH_SOURCE[0]}" "$@"``, ``python${ROS_PYTHON_VERSION:-} ...``
+_SHELL_RERUN = re.compile(
+    rb"^\s*(?:exec\s+)?(?:/usr/bin/(?:env\s+)?)?python[\w.${}:-]*\s+(?:-\w+\s+)*"
+    rb"([\"']?)\$(?:0|\{0\}|\{BASH_SOURCE(?:\[0\])?\})\1(?=\s|$)", re.MULTILINE)
+_SHELLS = (b"sh", b"bash", b"dash", b"zsh", b"ksh")
+
+
 def is_python(path: str) -> bool:
-    """A ``.py`` file, or one whose shebang names Python."""
+    """A ``.py`` file, or one whose shebang names Python, or a shell script that runs
+    itself again under Python: a file both read, the shell's lines hidden from Python
+    in a string (``#!/bin/bash``, ``if "true" : '''\\'``, ``then``, ``python
+    "${BASH_SOURCE[0]}" $*``, ``exit``, ``fi``, ``'''``), whose program is Python's."""
     if path.endswith(".py"):
         return True
     try:
         with open(path, "rb") as handle:
-            first = handle.readline(200)
+            head = handle.read(2048)
     except OSError:
         return False
-    return first.startswith(b"#!") and b"python" in first
+    first = head.split(b"\n", 1)[0][:200]
+    if not first.startswith(b"#!"):
+        return False
+    if b"python" in first:
+        return True
+    words = first[2:].split()
+    shell = (words[1] if len(words) > 1 and words[0].endswith(b"/env")
+             else words[0] if words else b"")
+    return (shell.rsplit(b"/", 1)[-1] in _SHELLS
+            and _SHELL_RERUN.search(head) is not None)
 
 
 def _script_source(path: str, workspace: Files) -> str:

@@ -559,12 +559,20 @@ _ROS_CODE = re.compile(r"\b(?:ros|rclcpp|rclcpp_lifecycle|rclcpp_action|nodelet|
                        r"image_transport|tf2_ros|message_filters)::|\bNodeHandle\b")
 
 
+# how deep ``uses_ros`` follows a file's includes of its package's headers
+USES_ROS_DEPTH = 8
+
+
 def uses_ros(source: str, workspace: Files) -> bool:
-    """Whether a source file, or a header of its package it includes, names the ROS
-    client libraries: a file that does not (mavros' libmavconn, a serial link) makes no
-    ROS call."""
+    """Whether a source file, or a header of its package it includes (directly or
+    through its package's other headers), names the ROS client libraries: a file that
+    does not (mavros' libmavconn, a serial link) makes no ROS call. A file may call ROS
+    only through its package's headers: iiwa_ros' state/joint_position.cpp calls
+    ``State<M>::init``, a template of iiwa_ros.hpp that subscribes, which it includes
+    through its own header and generic_state.hpp."""
     return remembered("uses ros", source, workspace, lambda: any(
-        _ROS_CODE.search(text) for text in with_headers(source, workspace)))
+        _ROS_CODE.search(text) for text in with_headers(source, workspace,
+                                                        USES_ROS_DEPTH)))
 
 
 def derives_from(cls: str, sources: Iterable[str], workspace: Files) -> bool:

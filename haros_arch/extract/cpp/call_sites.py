@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import msg_types
-from .expressions import is_default_argument, lost_class, strip
+from .expressions import is_default_argument, lost_class, qualified_name, strip
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
@@ -203,6 +203,10 @@ class CallSites:
                 callee = self._implicit.get((key_of(call), key)) if call.kind in (
                     CursorKind.VAR_DECL, *_CONSTRUCTORS) else (
                     callee_of(call) or self._base_calls.get(key_of(call)))
+                bound = bound_function(call)[0] if call.kind == CursorKind.CALL_EXPR \
+                    else None
+                if bound is not None and key_of(bound.canonical) == key:
+                    callee = bound  # the function a bind or a thread calls
                 if callee is not None:
                     yield callee, call, caller
 
@@ -443,6 +447,13 @@ class CallSites:
                     if callee is not None:
                         for key in specialised_keys(callee):
                             self._index.setdefault(key, []).append((node, function))
+                    bound = bound_function(node)[0] if node.kind == CursorKind.CALL_EXPR \
+                        else None
+                    if bound is not None:
+                        # ``boost::bind(&f, nh)`` / ``std::thread(&f, nh)``: f is
+                        # called with the arguments after it (``argument``)
+                        self._index.setdefault(key_of(bound.canonical), []).append(
+                            (node, function))
                 # a constructor that delegates to another calls it with that argument
                 # list (``Filter(nh, priv) : Filter(nh, priv, getName()) {}``)
                 if function.kind in _CONSTRUCTORS:
@@ -542,15 +553,57 @@ def overridden(method: Cursor, depth: int = 0) -> list[Cursor]:
 def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:
     """What ``call`` passes for parameter ``parm`` (at ``index``): the written argument,
     or the parameter's default when the call leaves it out. A constructor's delegation
-    (``delegation``) is its argument list."""
+    (``delegation``) is its argument list. A ``bind`` or thread of the function of
+    ``parm`` (``bound_function``) passes what follows the function (and its object)."""
     # (a variable whose construction the parse dropped, a constructor that leaves a
     # base to C++: nothing passed)
     args = list(call.get_arguments()) if call.kind == CursorKind.CALL_EXPR \
         else [] if call.kind in (CursorKind.VAR_DECL, *_CONSTRUCTORS) \
         else list(call.get_children())
+    if call.kind == CursorKind.CALL_EXPR and parm.semantic_parent is not None:
+        bound, skip = bound_function(call)
+        if bound is not None and key_of(bound.canonical) == key_of(
+                parm.semantic_parent.canonical):
+            if any(is_default_argument(a) for a in args[skip:]):
+                return None  # a placeholder (``_1``) or a default: not known here
+            args = args[skip:]
     if index < len(args) and not is_default_argument(args[index]):
         return args[index]
     return default_argument(parm)
+
+
+# what calls a function it is given, with the arguments given after it: std::bind and
+# boost::bind, and the threads started with a function (std::thread, boost::thread)
+_BINDERS = frozenset({("std", "bind"), ("boost", "bind")})
+_THREADS = frozenset({"std::thread", "std::jthread", "boost::thread"})
+
+
+def bound_function(call: Cursor) -> tuple[Cursor | None, int]:
+    """The function of the workspace a ``bind`` or a thread's construction is given
+    first (``boost::thread(boost::bind(&thread_subscribe, private_nh_))``, Doosan's
+    dsr_control, whose static ``thread_subscribe(ros::NodeHandle nh)`` subscribes on
+    ``nh``), and how many arguments go before those it is called with: the function,
+    and the object for a method that is not static. (None, 0) for any other call."""
+    target = call.referenced
+    if target is None:
+        return None, 0
+    if target.kind == CursorKind.CONSTRUCTOR:
+        if qualified_name(target.semantic_parent) not in _THREADS:
+            return None, 0
+    elif (qualified_name(target.semantic_parent), target.spelling) not in _BINDERS:
+        return None, 0
+    args = list(call.get_arguments())
+    first = strip(args[0]) if args else None
+    if first is not None and first.kind == CursorKind.UNARY_OPERATOR:  # ``&f``
+        inner = [c for c in first.get_children() if c.kind.is_expression()]
+        first = strip(inner[0]) if len(inner) == 1 else None
+    function = first.referenced if first is not None and first.kind in (
+        CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+    if function is None or function.kind not in (CursorKind.FUNCTION_DECL,
+                                                 CursorKind.CXX_METHOD):
+        return None, 0
+    own = function.kind == CursorKind.CXX_METHOD and not function.is_static_method()
+    return function, 2 if own else 1
 
 
 def default_argument(parm: Cursor) -> Cursor | None:

@@ -152,6 +152,12 @@ _NAMES_NO_TEMPLATE = re.compile(
 _STATEMENT_OBJECT = re.compile(
     rb"(?:^|[;{}])\s*(?:this\s*->\s*)?[A-Za-z_]\w*(?:\s*(?:\.|->)\s*[A-Za-z_]\w*)*"
     rb"\s*(?:\.|->)\s*$")
+# the object of a member written as what a call returns: ``list_of("a")("b").``
+_CALLED_OBJECT = re.compile(rb"\)\s*\.\s*$")
+# a statement that assigns to a variable or member that exists (``a.b = ``, ``p_->x = ``;
+# not a declaration, ``auto x = ``, nor ``==``)
+_ASSIGNED = re.compile(rb"\s*(?:this\s*->\s*)?[A-Za-z_]\w*(?:\s*(?:\.|->)\s*[A-Za-z_]\w*)*"
+                       rb"(?:\s*\[[^\[\];{}]*\])?\s*=(?!=)")
 # a value read from a scope: ``Mode::FAST)``, ``case Mode::FAST:``, an enumerator of a
 # vendor enum
 _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
@@ -162,14 +168,22 @@ _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s
 
 def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
     """Whether the member template ``name`` at ``offset`` is called as a whole statement,
-    ``obj.name<T>(args);``, its result unused: declared a member template (any template
-    arguments, any call arguments), nothing is then read from what it returns, whose own
-    ROS calls would be lost (``x.get<T>("node")->create_publisher(...)``, which is better
-    left an error and kept by its API name)."""
+    ``obj.name<T>(args);``, its result unused, or called on what a chain of calls
+    returns and assigned whole to a variable or member that exists (a builder's:
+    ``names = boost::assign::list_of("a")("b").convert_to_container<ros::V_string>();``,
+    Doosan's dsr_control, boost's header not read; the variable keeps its own type):
+    declared a member template (any template arguments, any call
+    arguments), nothing is then read from what it returns, whose own ROS calls would be
+    lost (``x.get<T>("node")->create_publisher(...)``, which is better left an error
+    and kept by its API name)."""
     if not text.startswith(name.encode(), offset):
         return False
     if _STATEMENT_OBJECT.search(text[max(0, offset - 200):offset]) is None:
-        return False
+        # or the member of what a chain of calls returns, assigned whole (a builder)
+        before = text[max(0, offset - 2000):offset]
+        start = max(before.rfind(b";"), before.rfind(b"{"), before.rfind(b"}")) + 1
+        if _CALLED_OBJECT.search(before) is None or _ASSIGNED.match(before, start) is None:
+            return False
     closing = {ord("<"): ord(">"), ord("("): ord(")")}
     stack: list[int] = []
     called = False

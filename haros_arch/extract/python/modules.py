@@ -351,7 +351,9 @@ def add_import(module: Module, loader: Loader, statement: ast.Import | ast.Impor
         elif local is not None:
             local_imports[name] = (local, alias.name)
         elif not statement.level:
-            imports[name] = f"{source}.{alias.name}"
+            # roslib's legacy ``ros`` package imports the ROS package a ``from ros import
+            # X`` names (Doosan's dmodel.py: ``from ros import rosparam``)
+            imports[name] = alias.name if source == "ros" else f"{source}.{alias.name}"
 
 
 # a statement at the start of a line, or after a compound statement's colon on it

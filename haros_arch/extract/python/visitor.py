@@ -131,6 +131,7 @@ class Walker:
         self._ros_init = False  # rclpy.init() is called
         self._gui_plugin = False  # rqt_gui runs a plugin alone (``_standalone_plugin``)
         self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
+        self._imports_said: set[Location] = set()  # PY_DYNAMIC_IMPORT
         # the classes the walk constructs, and those they derive from (ids)
         self._constructed: set[int] = set()
         self.steps = 0
@@ -764,6 +765,9 @@ class Walker:
             # builds that plugin class (with a context the walk does not know)
             target, self._gui_plugin = plugin, True
             call = ast.copy_location(ast.Call(func=call.func, args=[], keywords=[]), call)
+        if isinstance(call.func, ast.Name) and call.func.id == "__import__" \
+                and isinstance(target, Unknown):
+            self._dynamic_import("__import__", call, frame)
         if isinstance(target, SuperInit):
             if frame.instance is not None and ev.is_node_class(frame.instance.cls):
                 node_spec = rclpy.NODE_NAMES[("rclpy", "Node")]
@@ -792,6 +796,14 @@ class Walker:
                 if spec.owner is not None:
                     self._made_on(self.calls[start:], evaluate(ev, argument(
                         call, spec.owner), frame))
+            elif target.qualname in _IMPORTERS:
+                self._dynamic_import(target.qualname, call, frame)
+            elif target.qualname in _SUBPROCESSES and self._runs_ros_tool(call, frame):
+                where = self._where(frame, call)
+                if where not in self._launches_said:
+                    self._launches_said.add(where)
+                    self.diagnostics.append(diag.make(
+                        "PY_RUNS_ROS_TOOL", where, call=target.qualname))
             elif target.qualname.split(".")[0] == "roslaunch" and (
                     target.key[1] in _LAUNCHERS):
                 where = self._where(frame, call)
@@ -1085,6 +1097,42 @@ class Walker:
             return
         self._classes_said[target.qualname] = self._where(frame, call)
 
+    def _runs_ros_tool(self, call: ast.Call, frame: Frame) -> bool:
+        """Whether a subprocess call's command (a list's first word, or a string's)
+        is roslaunch or rosrun, which start nodes (Doosan's dmodel.py writes an rviz
+        configuration and runs ``['rosrun', 'rviz', 'rviz', '-d', path]``)."""
+        given = call.args[0] if call.args else next(
+            (k.value for k in call.keywords if k.arg == "args"), None)
+        if given is None or isinstance(given, ast.Starred):
+            return False
+        value = self.evaluator.eval(given, frame)
+        if isinstance(value, Seq):
+            value = value.items[0] if value.items else None
+        text = text_of(value).text.strip() if value is not None else ""
+        word = text.split()[0] if text else ""
+        return word.rsplit("/", 1)[-1] in _ROS_TOOLS
+
+    def _dynamic_import(self, function: str, call: ast.Call, frame: Frame) -> None:
+        """Say where the program imports a module whose name it computes at run time
+        (FlexBE's onboard engine imports each behavior it is sent, ``__import__("tmp_%d"
+        % msg.behavior_checksum)``, and runs it; a plugin chosen by a parameter): that
+        code is not read, and what it communicates may be missing
+        (``PY_DYNAMIC_IMPORT``), so the node is partial. A module of messages, services
+        or actions (``import_module(pkg + ".msg")``) runs no ROS call, and a name known
+        here is an import as any other."""
+        first = call.args[0] if call.args else next(
+            (k.value for k in call.keywords if k.arg == "name"), None)
+        if first is None:
+            return
+        name = text_of(self.evaluator.eval(first, frame))
+        if name.is_known or name.text.endswith((".msg", ".srv", ".action")):
+            return
+        where = self._where(frame, call)
+        if where not in self._imports_said:  # a function walked twice: once
+            self._imports_said.add(where)
+            self.diagnostics.append(diag.make(
+                "PY_DYNAMIC_IMPORT", where, call=function, name=name.text))
+
     def _unseen_said(self) -> None:
         """``PY_CLASS_UNSEEN`` where the executable makes a ROS node of its own, starts
         rclpy (``rclpy.init()``, then ``BasicNavigator()``, a node) or makes ROS calls
@@ -1110,6 +1158,17 @@ class Walker:
     def _where(self, frame: Frame, node: ast.AST) -> Location:
         return self.loader.location(frame.module.path, getattr(node, "lineno", 0),
                                     getattr(node, "col_offset", -1) + 1)
+
+
+# the functions that run a command, and the commands that start ROS nodes
+_SUBPROCESSES = frozenset({"subprocess.call", "subprocess.check_call", "subprocess.run",
+                           "subprocess.Popen", "subprocess.check_output", "os.system"})
+_ROS_TOOLS = frozenset({"rosrun", "roslaunch"})
+
+
+# the functions that import a module by its name (the first argument)
+_IMPORTERS = frozenset({"importlib.import_module", "importlib.__import__",
+                        "runpy.run_module"})
 
 
 # roslaunch's entry points that start the nodes of launch files in the calling process
