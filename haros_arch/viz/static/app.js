@@ -348,6 +348,15 @@ function fit(only, least = 0) {
     if (names && !names.has(name)) continue;
     x0 = Math.min(x0, r.x0); x1 = Math.max(x1, r.x1); y0 = Math.min(y0, r.y0); y1 = Math.max(y1, r.y1);
   }
+  // and the bends of the edges between them: a long edge of the layered layout may run
+  // above every vertex (under the hint, out of sight, were it left out)
+  const ids = new Set(vs.map(v => v.id));
+  for (const e of app.view ? app.view.edges : []) {
+    if (!e.points || !ids.has(e.source.id) || !ids.has(e.target.id)) continue;
+    for (const [x, y] of e.points) {
+      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+    }
+  }
   x0 -= 30; x1 += 30; y0 -= 20; y1 += 30;
   const top = ui.hint.hidden ? 0 : ui.hint.offsetHeight + 8;  // keep clear of the hint
   const k = Math.max(least, Math.min(1.4, box.width / (x1 - x0), (box.height - top) / (y1 - y0)));
