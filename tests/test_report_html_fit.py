@@ -1,6 +1,7 @@
-"""The report's first view of a configuration shows all of its graph: every vertex and
-every edge inside the stage and below the hint, long edges of the layered layout too
-(dingo's twist_mux -> /diagnostics ran above every vertex, under the hint, out of sight).
+"""The report's views fit what they show. The first view of a configuration shows all of
+its graph: every vertex and every edge inside the stage and below the hint, long edges of
+the layered layout too (dingo's twist_mux -> /diagnostics ran above every vertex, under the
+hint, out of sight); the package view's tables fit the view.
 In headless Chromium, on models of bench/report_scale.py's generator and a pipeline."""
 
 from __future__ import annotations
@@ -88,5 +89,34 @@ def test_the_first_view_shows_every_vertex_and_edge(browser: Any, tmp_path: Path
       return out;
     }""")
     assert outside == []
+    assert watched.problems == []
+    watched.page.close()
+
+
+def test_the_package_view_fits_long_names_types_and_paths(browser: Any,  # noqa: F811
+                                                          tmp_path: Path) -> None:
+    """A node's interface table wraps its long names, types and file paths between their
+    parts ('/', '_') and stays inside the package view (the 'where' column of
+    robot_localization's ekf node ran under the side panel)."""
+    model = pipeline_model(3)
+    long_file = "include/a_rather_long_package_name/a_rather_long_file_name_of_a_filter.h"
+    where = {"package": "demo", "file": long_file, "line": 755, "column": 5}
+    calls = [{"kind": kind, "name": f"~a_long_parameter_name_of_the_filter_{i}",
+              "type": "diagnostic_msgs/DiagnosticArrayOfAVeryLongName", "conditions": [],
+              "location": where} for i, kind in enumerate(("publish", "read", "subscribe"))]
+    model["packages"] = [{"name": "demo", "build_type": "catkin", "path": "demo", "nodes": [
+        {"package": "demo", "executable": "node", "kind": "executable", "language": "cpp",
+         "sources": [long_file], "calls": calls}]}]
+    path = tmp_path / "report.html"
+    write_report(model, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    watched.page.click("#tab-packages")
+    sizes = watched.page.evaluate("""() => {
+      const pane = document.querySelector('#packages');
+      const table = pane.querySelector('table.calls');
+      return [pane.scrollWidth, pane.clientWidth, table.textContent];
+    }""")
+    assert sizes[0] <= sizes[1]
+    assert long_file + ":755:5" in sizes[2]  # the text itself unchanged
     assert watched.problems == []
     watched.page.close()

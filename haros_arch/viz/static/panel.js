@@ -16,6 +16,13 @@ function el(tag, attrs, ...children) {
   return node;
 }
 
+// Text that may wrap after each '/' or '_' (a long name, type or path breaks between its
+// parts, not inside a word, and a table of them fits its column).
+function wrappable(text) {
+  const parts = String(text).split(/(?<=[\/_])/);
+  return parts.flatMap((part, i) => i < parts.length - 1 ? [part, el('wbr')] : [part]);
+}
+
 const SEVERITIES = ['error', 'warning', 'info'];
 
 function where(loc) {
@@ -196,12 +203,13 @@ function packageView(model, app) {
         el('table', {class: 'calls'},
           el('tr', {}, el('th', {}, 'interface'), el('th', {}, 'name'), el('th', {}, 'type'), el('th', {}, 'where')),
           (node.calls || []).map(call => el('tr', {class: (call.conditions || []).length ? 'conditional' : ''},
-            el('td', {}, call.kind), el('td', {}, el('code', {}, call.name)), el('td', {}, call.type || '?'),
+            el('td', {}, call.kind), el('td', {}, el('code', {}, wrappable(call.name))),
+            el('td', {}, wrappable(call.type || '?')),
             el('td', {}, el('a', {href: '#', onclick: event => {
               event.preventDefault();
               app.showPanel([el('div', {class: 'panel-kind'}, call.kind + ' call'), el('h2', {class: 'panel-title'}, call.name),
                 field('node', name), field('type', call.type || '?'), conditionList(call.conditions, app.sources),
                 codeBlock(call.location, app.sources)]);
-            }}, where(call.location)))))));
+            }}, wrappable(where(call.location))))))));
     }) : el('p', {class: 'muted'}, 'no nodes found in this package')));
 }
