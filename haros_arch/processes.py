@@ -29,10 +29,16 @@ class _Held:
         self.requested: BaseException | None = None
 
     def __enter__(self) -> None:
-        self.depth += 1
+        # the main thread's calls only: Python runs a signal's handler there, and a call
+        # of another thread (a worker thread's visit) must neither hold the main
+        # thread's stop nor get it raised in its own
+        if threading.current_thread() is threading.main_thread():
+            self.depth += 1
 
     def __exit__(self, kind: type[BaseException] | None, _error: BaseException | None,
                  _trace: TracebackType | None) -> None:
+        if threading.current_thread() is not threading.main_thread():
+            return
         self.depth -= 1
         if self.depth == 0 and kind is None:  # else that exception unwinds the run
             raise_if_stopped()

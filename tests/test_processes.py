@@ -61,3 +61,34 @@ def test_nothing_changes_where_the_program_has_its_own_handler():
             assert signal.getsignal(signal.SIGINT) is processes._stopped
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+def test_a_visit_of_another_thread_does_not_hold_the_main_threads_stop():
+    """Python runs a signal's handler in the main thread: a visit another thread is in
+    (a worker thread's, or one a test left running) neither holds the main thread's
+    Ctrl-C nor has it raised in its own."""
+    import threading
+
+    inside, leave = threading.Event(), threading.Event()
+    raised: list[BaseException] = []
+
+    def visiting() -> None:
+        try:
+            with processes.held_signals:
+                inside.set()
+                leave.wait(10)
+        except BaseException as error:  # what the thread would get
+            raised.append(error)
+
+    thread = threading.Thread(target=visiting)
+    thread.start()
+    try:
+        assert inside.wait(10)
+        with processes.stop_signals(), pytest.raises(KeyboardInterrupt):
+            os.kill(os.getpid(), signal.SIGINT)
+            for _ in range(1000):  # the handler runs between two bytecodes
+                pass
+    finally:
+        leave.set()
+        thread.join(10)
+    assert raised == []
