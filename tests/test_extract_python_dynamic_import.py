@@ -3,7 +3,8 @@ the tool does not read (FlexBE's onboard engine imports each behavior it is sent
 ``__import__("tmp_%d" % msg.behavior_checksum)``, and runs its state machine, which reads
 the engine's ``~log_enabled``): ``PY_DYNAMIC_IMPORT`` at the call, and the node is
 partial, so its launch parameters are not "set but never read" for sure. A module of
-messages or a name known here is no such import."""
+messages, a name known here, or a package asked only where it is
+(``__import__(pkg).__path__``, FlexBE's behavior library) is no such import."""
 
 from __future__ import annotations
 
@@ -44,6 +45,7 @@ if __name__ == '__main__':
     plugin(rospy.get_param('~plugin', 'x'))
     types = importlib.import_module(rospy.get_param('~pkg', 'y') + '.msg')
     known = __import__('os')
+    where = __import__(rospy.get_param('~behaviors', 'z')).__path__[-1]
     rospy.spin()
 """
 

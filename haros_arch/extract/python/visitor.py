@@ -148,6 +148,8 @@ class Walker:
         # reads whose value the code converts (``int(rospy.get_param('~baud', '500000'))``):
         # any value the conversion takes will do, so the read has no type of its own
         self._converted: set[int] = set()
+        # imports whose module only tells where it is (``__import__(pkg).__path__``)
+        self._located: set[int] = set()
         # the conditions under which each QoS profile held by a local or an attribute of
         # ``self`` was made (``_qos_assigned``)
         self._qos_made: dict[tuple[int, str], Conditions] = {}
@@ -666,6 +668,9 @@ class Walker:
                 and isinstance(node.args[0], ast.Call)
             ):
                 self._converted.add(id(node.args[0]))
+            elif isinstance(node, ast.Attribute) and node.attr in _MODULE_PLACE and (
+                    isinstance(node.value, ast.Call)):
+                self._located.add(id(node.value))
         calls: list[ast.Call] = []
         comprehensions: list[_Comprehension] = []
         _outside_comprehensions(expr, calls, comprehensions)
@@ -1122,7 +1127,10 @@ class Walker:
         here is an import as any other."""
         first = call.args[0] if call.args else next(
             (k.value for k in call.keywords if k.arg == "name"), None)
-        if first is None:
+        if first is None or id(call) in self._located:
+            # an import asked only where its package is (FlexBE's behavior library:
+            # ``__import__(entry["package"]).__path__[-1]``) runs no more than the
+            # package's ``__init__``
             return
         name = text_of(self.evaluator.eval(first, frame))
         if name.is_known or name.text.endswith((".msg", ".srv", ".action")):
@@ -1164,6 +1172,10 @@ class Walker:
 _SUBPROCESSES = frozenset({"subprocess.call", "subprocess.check_call", "subprocess.run",
                            "subprocess.Popen", "subprocess.check_output", "os.system"})
 _ROS_TOOLS = frozenset({"rosrun", "roslaunch"})
+
+
+# a module's attributes that tell where it is
+_MODULE_PLACE = frozenset({"__path__", "__file__"})
 
 
 # the functions that import a module by its name (the first argument)
