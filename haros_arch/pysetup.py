@@ -18,6 +18,7 @@ import glob
 import os
 import posixpath
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -117,9 +118,13 @@ def _text_args(*args: Any) -> list[str]:
     return list(args)
 
 
-def setup_functions(root: str) -> dict[str, Any]:
+def setup_functions(root: str, environment: Mapping[str, str] | None = None
+                    ) -> dict[str, Any]:
     """What setup.py may call for us: safe builtins, ``os.path`` on text, ``glob`` from the
-    package folder and inside it (nothing else is called, nothing is run)."""
+    package folder and inside it (nothing else is called, nothing is run); and, given the
+    run's ``environment``, ``os.environ`` / ``os.getenv`` over it (the distribution's
+    ROS_VERSION: ros-bridge's ``if int(os.environ['ROS_VERSION']) == 2:`` around the ROS 2
+    ``setup()`` and the names it uses)."""
 
     def exists(test: Any) -> Any:
         def call(path: Any) -> bool:
@@ -148,16 +153,22 @@ def setup_functions(root: str) -> dict[str, Any]:
         "os.path.isfile": exists(os.path.isfile), "os.path.isdir": exists(os.path.isdir),
         "glob.glob": globbed,
     }
+    if environment is not None:
+        known = dict(environment)
+        table["os.environ"] = known
+        table["os.getenv"] = lambda name, default=None: known.get(name, default)
     return table
 
 
 MAX_GLOB = 2_000
 
 
-def setup_module(tree: ast.Module, root: str) -> Module:
-    """setup.py's module-level names, run over known values only, and its ``setup()`` calls
+def setup_module(tree: ast.Module, root: str,
+                 environment: Mapping[str, str] | None = None) -> Module:
+    """setup.py's module-level names, run over known values only (an ``if`` of a test
+    known there, over ``environment`` too, runs its branch), and its ``setup()`` calls
     (collected, never run)."""
-    return run_module(tree, setup_functions(root), calls=SETUP_CALLS)
+    return run_module(tree, setup_functions(root, environment), calls=SETUP_CALLS)
 
 
 def _from_setup_py(path: str, workspace: Workspace,
@@ -174,7 +185,7 @@ def _from_setup_py(path: str, workspace: Workspace,
         found.append(diag.make("PYSETUP_SYNTAX", workspace.location(path, line, column),
                                detail=getattr(err, "msg", str(err))))
         return [], {}
-    module = setup_module(tree, os.path.dirname(path))
+    module = setup_module(tree, os.path.dirname(path), workspace.environment)
     entries, package_dir = _from_setup_call(module, tree, path, workspace, found)
     if module.limited is not None:  # what came after the bound is unknown: said once
         unknown, node = module.limited
