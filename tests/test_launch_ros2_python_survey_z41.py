@@ -27,3 +27,23 @@ def generate_launch_description():
         "/drone0/est/rate": 2.0, "/drone0/est/frame": "drone0",
         "/drone0/est/a": 1, "/drone0/est/b": 2}
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
+def test_an_opaque_function_returning_a_descriptions_entities(write_tree):
+    """``LaunchDescription.entities``, launch's property (survey Z43: lbr_fri_ros2_stack's
+    move_group.launch.py builds a description in an OpaqueFunction and returns
+    ``ld.entities``): the description's actions, not a value not known
+    (LAUNCH_PY_UNSUPPORTED, and move_group and RViz never started)."""
+    model, _ = run(write_tree, """
+def hidden_setup(context):
+    ld = LaunchDescription()
+    ld.add_action(Node(package='p', executable='move_group', name='move_group'))
+    ld.add_action(Node(package='p', executable='rviz2', name='rviz'))
+    return ld.entities
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=hidden_setup)])
+""")
+    assert [n.name for n in model.nodes] == ["/move_group", "/rviz"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
