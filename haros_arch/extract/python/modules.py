@@ -290,7 +290,7 @@ def _index_statement(module: Module, loader: Loader, statement: ast.stmt) -> Non
     elif isinstance(statement, ast.FunctionDef | ast.AsyncFunctionDef):
         module.functions[statement.name] = FunctionInfo(statement, module)
     elif isinstance(statement, ast.ClassDef):
-        module.classes[statement.name] = _definition(statement, module)  # type: ignore[assignment]
+        module.classes[statement.name] = _class_info(statement, module)
     elif isinstance(statement, ast.Assign):
         for target in statement.targets:
             if isinstance(target, ast.Name):
@@ -336,6 +336,10 @@ def _definition(statement: ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef
                 module: Module) -> ClassInfo | FunctionInfo:
     if not isinstance(statement, ast.ClassDef):
         return FunctionInfo(statement, module)
+    return _class_info(statement, module)
+
+
+def _class_info(statement: ast.ClassDef, module: Module) -> ClassInfo:
     info = ClassInfo(statement, module)
     for item in statement.body:
         if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
