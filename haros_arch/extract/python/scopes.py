@@ -82,7 +82,9 @@ class Scopes(EvaluatorBase):
                     self._computing.discard(key)
             return module.values.get(name, Unknown(name))
         if name in module.guarded:
-            return self._guarded(module, name)
+            found = self._guarded(module, name)
+            if not isinstance(found, Unknown):
+                return found
         for path in module.local_stars:
             other = self.loader.load(path)
             if other is not None and other is not module:
