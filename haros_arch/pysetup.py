@@ -154,10 +154,30 @@ def setup_functions(root: str, environment: Mapping[str, str] | None = None
         "glob.glob": globbed,
     }
     if environment is not None:
-        known = dict(environment)
+        known = _Environment({k: v for k, v in environment.items() if k in DISTRO_VARIABLES})
         table["os.environ"] = known
         table["os.getenv"] = lambda name, default=None: known.get(name, default)
     return table
+
+
+# the variables a ROS distribution's setup script sets, which a build has as the run
+# gives them; any other is the builder's shell's, not known here
+DISTRO_VARIABLES = frozenset({"ROS_VERSION", "ROS_DISTRO", "ROS_PYTHON_VERSION"})
+
+
+class _Environment(dict[str, str]):
+    """``os.environ`` of setup.py: the distribution's variables (``DISTRO_VARIABLES``);
+    any other is not known (neither its value nor whether it is set), not absent."""
+
+    def get(self, key: Any, default: Any = None) -> Any:
+        if key in self.keys():
+            return self[key]
+        raise LookupError(f"environment variable {key} is not known here")
+
+    def __contains__(self, key: object) -> bool:
+        if key in self.keys():
+            return True
+        raise LookupError(f"environment variable {key} is not known here")
 
 
 MAX_GLOB = 2_000

@@ -70,3 +70,20 @@ def test_a_ros2_ament_python_package_with_a_catkin_cmakelists_installs_by_setup_
               for k, v in share_map(workspace.packages["bridge"], workspace).items()}
     assert mapped == {"bridge.launch.py": "bridge/launch/bridge.launch.py",
                       "package.xml": "bridge/package.xml"}
+
+
+def test_a_variable_the_distribution_does_not_set_decides_no_branch(write_tree) -> None:
+    """``CI`` is the builder's shell's: neither branch is known, so neither's files are
+    said installed (the analyst's own shell decides nothing)."""
+    root = write_tree({"tool/package.xml": package_xml("tool", "ament_python"),
+                       "tool/setup.py": "import os\nfrom setuptools import setup\n"
+                       "if 'CI' in os.environ:\n    extra = ['ci.yaml']\n"
+                       "else:\n    extra = ['local.yaml']\n"
+                       "setup(name='tool', data_files=[('share/tool', ['package.xml']),\n"
+                       "                               ('share/tool/config', extra)])\n",
+                       "tool/ci.yaml": "a: 1\n", "tool/local.yaml": "a: 2\n"})
+    workspace = scan([str(root)], {"CI": "1", "ROS_DISTRO": "humble",
+                                   **distro_variables("humble")})
+    mapped = {k: workspace.relpath(v)
+              for k, v in share_map(workspace.packages["tool"], workspace).items()}
+    assert mapped == {"package.xml": "tool/package.xml"}
