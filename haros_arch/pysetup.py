@@ -18,6 +18,7 @@ import glob
 import os
 import posixpath
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -117,9 +118,13 @@ def _text_args(*args: Any) -> list[str]:
     return list(args)
 
 
-def setup_functions(root: str) -> dict[str, Any]:
+def setup_functions(root: str, environment: Mapping[str, str] | None = None
+                    ) -> dict[str, Any]:
     """What setup.py may call for us: safe builtins, ``os.path`` on text, ``glob`` from the
-    package folder and inside it (nothing else is called, nothing is run)."""
+    package folder and inside it (nothing else is called, nothing is run); and, given the
+    run's ``environment``, ``os.environ`` / ``os.getenv`` over it (the distribution's
+    ROS_VERSION: ros-bridge's ``if int(os.environ['ROS_VERSION']) == 2:`` around the ROS 2
+    ``setup()`` and the names it uses)."""
 
     def exists(test: Any) -> Any:
         def call(path: Any) -> bool:
@@ -148,16 +153,42 @@ def setup_functions(root: str) -> dict[str, Any]:
         "os.path.isfile": exists(os.path.isfile), "os.path.isdir": exists(os.path.isdir),
         "glob.glob": globbed,
     }
+    if environment is not None:
+        known = _Environment({k: v for k, v in environment.items() if k in DISTRO_VARIABLES})
+        table["os.environ"] = known
+        table["os.getenv"] = lambda name, default=None: known.get(name, default)
     return table
+
+
+# the variables a ROS distribution's setup script sets, which a build has as the run
+# gives them; any other is the builder's shell's, not known here
+DISTRO_VARIABLES = frozenset({"ROS_VERSION", "ROS_DISTRO", "ROS_PYTHON_VERSION"})
+
+
+class _Environment(dict[str, str]):
+    """``os.environ`` of setup.py: the distribution's variables (``DISTRO_VARIABLES``);
+    any other is not known (neither its value nor whether it is set), not absent."""
+
+    def get(self, key: Any, default: Any = None) -> Any:
+        if key in self.keys():
+            return self[key]
+        raise LookupError(f"environment variable {key} is not known here")
+
+    def __contains__(self, key: object) -> bool:
+        if key in self.keys():
+            return True
+        raise LookupError(f"environment variable {key} is not known here")
 
 
 MAX_GLOB = 2_000
 
 
-def setup_module(tree: ast.Module, root: str) -> Module:
-    """setup.py's module-level names, run over known values only, and its ``setup()`` calls
+def setup_module(tree: ast.Module, root: str,
+                 environment: Mapping[str, str] | None = None) -> Module:
+    """setup.py's module-level names, run over known values only (an ``if`` of a test
+    known there, over ``environment`` too, runs its branch), and its ``setup()`` calls
     (collected, never run)."""
-    return run_module(tree, setup_functions(root), calls=SETUP_CALLS)
+    return run_module(tree, setup_functions(root, environment), calls=SETUP_CALLS)
 
 
 def _from_setup_py(path: str, workspace: Workspace,
@@ -174,7 +205,7 @@ def _from_setup_py(path: str, workspace: Workspace,
         found.append(diag.make("PYSETUP_SYNTAX", workspace.location(path, line, column),
                                detail=getattr(err, "msg", str(err))))
         return [], {}
-    module = setup_module(tree, os.path.dirname(path))
+    module = setup_module(tree, os.path.dirname(path), workspace.environment)
     entries, package_dir = _from_setup_call(module, tree, path, workspace, found)
     if module.limited is not None:  # what came after the bound is unknown: said once
         unknown, node = module.limited

@@ -63,11 +63,14 @@ def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
     generated: dict[str, tuple[str, int]] = {}
     workspace.generated_shares[package.name] = generated
     setup_py = os.path.join(package.root, "setup.py")
-    if os.path.isfile(os.path.join(package.root, "CMakeLists.txt")):
+    if os.path.isfile(os.path.join(package.root, "CMakeLists.txt")) and not (
+            package.build_type == "ament_python" and os.path.isfile(setup_py)):
         _from_cmake(package, workspace, found, generated)
         # ament_package() / catkin_package() install the manifest
         found.setdefault("package.xml", os.path.join(package.root, "package.xml"))
     elif os.path.isfile(setup_py):
+        # an ament_python package (its manifest's build type, for this ROS version:
+        # ros-bridge's packages keep a catkin CMakeLists.txt beside their setup.py)
         _from_setup_py(package, workspace, setup_py, found)
     workspace.share_maps[package.name] = found
     return found
@@ -323,7 +326,7 @@ def _from_setup_py(package: Package, workspace: Workspace, path: str,
         tree = syntax.parse(text, path)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return  # pysetup reports it
-    module = pysetup.setup_module(tree, package.root)
+    module = pysetup.setup_module(tree, package.root, workspace.environment)
     data_files: object = None
     for call in module.calls:
         for keyword in call.keywords:

@@ -59,7 +59,7 @@ def hardware_nodes() -> list[Node]:
 
 
 def configure(tmp_path: Path, decls: list[NodeDecl], params: list[ParamDecl],
-              with_models: bool = True) -> Configuration:
+              with_models: bool = True, distro: str = "jazzy") -> Configuration:
     (tmp_path / "arm_hw").mkdir(exist_ok=True)
     (tmp_path / "arm_hw" / "package.xml").write_text(
         "<package format='3'><name>arm_hw</name><version>0.1.0</version></package>")
@@ -67,7 +67,7 @@ def configure(tmp_path: Path, decls: list[NodeDecl], params: list[ParamDecl],
     workspace = Workspace(root=str(tmp_path))
     workspace.packages = {}
     config = Configuration("c")
-    attacher = Attacher(Library([]), "jazzy", [])
+    attacher = Attacher(Library([]), distro, [])
     nodes = {n.name: n for n in hardware_nodes()}
     nodes = attacher.nodes_for(launch, workspace, nodes, {}, config.diagnostics)
     build(config, launch, workspace, nodes,
@@ -135,6 +135,26 @@ def test_the_description_robot_state_publisher_publishes_is_the_managers(tmp_pat
         node="/robot_state_publisher", key="robot_description")])
     assert "/arm_driver" in {n.name for n in config.nodes}
     assert not [d for d in config.diagnostics if d.code == "HARDWARE_UNKNOWN"]
+
+
+def test_humbles_manager_reads_the_description_of_its_private_topic(tmp_path):
+    """Humble: the manager subscribes to ``~/robot_description`` (its model writes
+    ``~robot_description``), which lbr_fri_ros2_stack remaps to ``robot_description``,
+    what robot_state_publisher publishes: the last part of that name is the key too
+    (it was ``HARDWARE_UNKNOWN`` and the manager partial), and the manager's own
+    ``robot_description`` parameter, which the remap does not rename, is no other's."""
+    urdf = tmp_path / "arm.urdf.xacro"
+    urdf.write_text(DESCRIPTION)
+    decls = [NodeDecl("/lbr/robot_state_publisher", "robot_state_publisher",
+                      "robot_state_publisher", namespace="/lbr", ros_version=2),
+             manager("/lbr/controller_manager", namespace="/lbr",
+                     remaps=[("~/robot_description", "robot_description")])]
+    config = configure(tmp_path, decls, [ParamDecl(
+        "/lbr/robot_state_publisher/robot_description", "?", command=f"xacro {urdf}",
+        node="/lbr/robot_state_publisher", key="robot_description")], distro="humble")
+    assert "/lbr/arm_driver" in {n.name for n in config.nodes}
+    assert not [d for d in config.diagnostics if d.code == "HARDWARE_UNKNOWN"]
+    assert ("read", "/lbr/robot_description") not in links_of(config, "/lbr/controller_manager")
 
 
 def test_a_description_copied_with_ros2_param_get_is_the_one_it_reads(tmp_path):

@@ -69,26 +69,40 @@ def run_module(tree: ast.Module, functions: Mapping[str, Any] | None = None,
         for inner in ast.walk(statement):
             if isinstance(inner, ast.Call) and _qualified(inner.func, module.aliases) in wanted:
                 module.calls.append(inner)
-        if isinstance(statement, ast.Import):
-            for alias in statement.names:
-                local = alias.asname or alias.name.split(".")[0]
-                module.aliases[local] = alias.name if alias.asname else local
-        elif isinstance(statement, ast.ImportFrom) and statement.module:
-            for alias in statement.names:
-                module.aliases[alias.asname or alias.name] = f"{statement.module}.{alias.name}"
-        elif isinstance(statement, ast.Assign) and len(statement.targets) == 1 \
-                and isinstance(statement.targets[0], ast.Name):
-            module.names[statement.targets[0].id] = interp.run(statement.value)
-        elif isinstance(statement, ast.AugAssign) and isinstance(statement.target, ast.Name):
-            combined = ast.BinOp(ast.Name(statement.target.id, ast.Load()), statement.op,
-                                 statement.value)
-            module.names[statement.target.id] = interp.run(combined)
-        elif isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Call) \
-                and statement.value not in module.calls:
-            interp.run(statement.value)
+        _statement(statement, module, interp)
         if interp.steps > limits.steps:
             break
     return module
+
+
+def _statement(statement: ast.stmt, module: Module, interp: _Interpreter) -> None:
+    """One module-level statement run over known values; an ``if`` whose test is known
+    runs the branch it takes (setup.py's ``if ROS_VERSION == 2:`` over the distribution's
+    environment), one whose test is not known neither."""
+    if isinstance(statement, ast.If):
+        test = interp.run(statement.test)
+        if type(test) in (bool, int, str):
+            for inner in statement.body if test else statement.orelse:
+                _statement(inner, module, interp)
+                if interp.steps > interp.limits.steps:
+                    return
+    elif isinstance(statement, ast.Import):
+        for alias in statement.names:
+            local = alias.asname or alias.name.split(".")[0]
+            module.aliases[local] = alias.name if alias.asname else local
+    elif isinstance(statement, ast.ImportFrom) and statement.module:
+        for alias in statement.names:
+            module.aliases[alias.asname or alias.name] = f"{statement.module}.{alias.name}"
+    elif isinstance(statement, ast.Assign) and len(statement.targets) == 1 \
+            and isinstance(statement.targets[0], ast.Name):
+        module.names[statement.targets[0].id] = interp.run(statement.value)
+    elif isinstance(statement, ast.AugAssign) and isinstance(statement.target, ast.Name):
+        combined = ast.BinOp(ast.Name(statement.target.id, ast.Load()), statement.op,
+                             statement.value)
+        module.names[statement.target.id] = interp.run(combined)
+    elif isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Call) \
+            and statement.value not in module.calls:
+        interp.run(statement.value)
 
 
 def _qualified(node: ast.expr, aliases: Mapping[str, str]) -> str | None:

@@ -709,8 +709,13 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
 
 def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
                   resources: Resources) -> RosName:
-    """The name a call of ``instance`` resolves to, remapped."""
+    """The name a call of ``instance`` resolves to, remapped (not a ROS 2 parameter's:
+    rcl's remap rules rename topics and services, and the node's name and namespace,
+    never a parameter; lbr_fri_ros2_stack remaps the controller manager's
+    ``~/robot_description`` topic, not the parameter of that name it reads)."""
     given = _given_name(call, instance, resources)
+    if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
+        remaps = {}
     namespace = call.handle_namespace
     if namespace and UNKNOWN_MARK in namespace and call.name.startswith(namespace + "/") and (
         given != call.name and given.endswith(call.name[len(namespace):])

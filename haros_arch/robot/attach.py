@@ -386,7 +386,8 @@ def _description_param(instance: NodeInstance, config: Configuration,
         return _copied(own, given)
     for link in config.links:
         if link.node is not instance or link.kind != "subscribe" or (
-                (link.call.name if link.call else "").rsplit("/", 1)[-1] != DESCRIPTION_KEY):
+                (link.call.name if link.call else "").rsplit("/", 1)[-1].lstrip("~")
+                != DESCRIPTION_KEY):  # ``~robot_description`` (humble's manager) too
             continue
         for other in config.links:
             if other.kind == "publish" and other.resource is link.resource:

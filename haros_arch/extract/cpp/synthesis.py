@@ -263,12 +263,18 @@ def _case_literals(text: bytes) -> set[int]:
     return found
 
 
+# the uses of a name read only as a value (a constant, of its kinds)
+_VALUE_USES = frozenset({"value", "constant", "flag", "size"})
+
+
 def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
     """How the ``name`` written from ``offset`` (the start of its qualified name or of
     its last part) to ``end`` is read where C++ needs a constant expression
     (``_CONSTANT_SPAN`` comments): "flag" when an operator combines it with another
     (``case A | B:``, ``N + 16``: the two need bits of their own, or ``A | B`` may be
-    the value of a third), "constant" else, None when it is not such a place."""
+    the value of a third), "size" for an array's bound or a template's argument (a
+    value above the small ones: an initialiser may list more elements), "constant"
+    else, None when it is not such a place."""
     window = text[max(0, offset - _CONSTANT_SPAN):offset]
     if window.rstrip().endswith(b"::"):  # the scope written before the name
         before = _SCOPE_BEFORE.search(window)
@@ -280,13 +286,43 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
         after[:1] in _COMBINING and after not in (b"->", b"||", b"&&")) else "constant"
     statement = window[max(window.rfind(b";"), window.rfind(b"{"), window.rfind(b"}")) + 1:]
     if window.endswith(b"[") and _DECLARED_ARRAY.search(statement):
-        return kind  # an array's bound in its declaration (``buffer[N]`` is a subscript)
+        # an array's bound in its declaration (``buffer[N]`` is a subscript)
+        return "size" if kind == "constant" else kind
     if _CONSTEXPR.search(statement):
         return kind
+    if window[-1:] in (b"<", b",") and _CONSTANT.fullmatch(name) and _template_argument(window):
+        # a template's argument in capitals (``std::array<std::string,
+        # KUKA::FRI::LBRState::NUMBER_OF_JOINTS>``, the robot SDK's header missing): a
+        # non-type argument needs a constant, as an array's bound does, and is often a
+        # size (the array's initialiser lists the seven joints)
+        return "size" if kind == "constant" else kind
     labels = list(_CASE_WORDS.finditer(statement))
     if labels and b":" not in statement[labels[-1].end():].replace(b"::", b""):
         return kind  # in the label's expression, up to its colon
     return kind if _in_enum_body(text, offset) else None
+
+
+def _template_argument(window: bytes) -> bool:
+    """Whether ``window`` (the text before a name, ending with ``<`` or ``,``) ends in
+    a template's argument list: back to an unmatched ``<`` after a name, through
+    balanced brackets, before any ``;``, ``{``, ``}`` or unmatched opening bracket."""
+    depth, at = 0, len(window) - 1
+    while at >= 0 and len(window) - at < _TEMPLATE_SPAN:
+        char = window[at:at + 1]
+        if char in b">)]":
+            depth += 1
+        elif char in b"([":
+            if depth == 0:
+                return False
+            depth -= 1
+        elif char == b"<":
+            if depth == 0:
+                return _SCOPE_NAME_BEFORE.search(window[max(0, at - 200):at]) is not None
+            depth -= 1
+        elif char in b";{}":
+            return False
+        at -= 1
+    return False
 
 
 def _in_enum_body(text: bytes, offset: int) -> bool:
@@ -1010,14 +1046,18 @@ class Names:
             # an alias declaration names is a type)
             use = "type"
         last = self._last_use(use, rest)
-        if last == "type" and use == "any" and rest.lstrip()[:1] in (b")", b",", b"}") and (
+        if last == "type" and use == "any" and (
+            rest.lstrip()[:1] in (b")", b",", b"}") or (
+                rest.lstrip()[:1] == b">" and _template_argument(window.rstrip()))
+        ) and (
             _CONSTANT.fullmatch(written[-1])
             or text[max(0, offset - 8):offset].rstrip().endswith(b"=")
             or (rest.lstrip()[:1] == b")" and _CASE_OPEN.search(
                 text[max(0, offset - _CONSTANT_SPAN):offset]) is not None)
         ):
             # ``f(vendor::MODE_A)``, ``x = vendor::FRAMING_OK,``: an enumerator or a
-            # constant read as a value (a class there would be a syntax error); so is
+            # constant read as a value (a class there would be a syntax error), and one
+            # a template's argument list ends with (``std::array<T, vendor::SIZE>``); so is
             # one in parentheses after ``case`` (kobuki's ``case (ecl::OpenError):``,
             # where a type is a cast with no operand)
             last = "value"
@@ -1374,7 +1414,7 @@ class Names:
                 if (only is not None and name != only) or child.known or top is None or \
                         top.known or name in found:
                     continue
-                if only is not None and top.uses and top.uses <= {"value", "constant", "flag"}:
+                if only is not None and top.uses and top.uses <= _VALUE_USES:
                     # a name the code reads only as a value: not the type that the
                     # using-declaration's line suggests of a capitalised name
                     # (``using nav2_costmap_2d::LETHAL_OBSTACLE;``)
@@ -1421,20 +1461,26 @@ class _Values:
     are an error), none that a case label of the code writes; small (an enum of
     ``uint8_t`` takes them), but those an operator combines, which get a bit of their
     own above the small ones (``case A | B:`` is then no other constant's value) while
-    bits last."""
+    bits last, and sizes (an array's bound, a template's argument), from ``FIRST_SIZE``
+    up, which an initialiser of a few elements fits."""
 
     FIRST_BIT, LAST_BIT = 16, 30
 
+    FIRST_SIZE = 64
+
     def __init__(self, taken: set[int]) -> None:
-        self._small = (value for value in itertools.count(1) if value not in taken)
+        self._used = set(taken)
         self._bits = iter(range(self.FIRST_BIT, self.LAST_BIT + 1))
 
-    def next(self, flag: bool = False) -> int:
+    def next(self, flag: bool = False, size: bool = False) -> int:
         if flag:
             bit = next(self._bits, None)
             if bit is not None:
                 return 1 << bit
-        return next(self._small)
+        value = next(v for v in itertools.count(self.FIRST_SIZE if size else 1)
+                     if v not in self._used)
+        self._used.add(value)
+        return value
 
 
 def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
@@ -1450,12 +1496,13 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
         return [f"{indent}namespace {name} {{", *inner, f"{indent}}}"]
     if node.base is not None and not nested:
         return [f"{indent}struct {name};"]  # defined after its base (``Names._derived``)
-    if node.uses - {"flag"} == {"value", "constant"} and not node.children:
+    if node.uses - {"flag", "size"} == {"value", "constant"} and not node.children:
         # read where C++ needs a constant: an enumerator (an unnamed enum's, which
         # converts to any integer and makes ``enum_value(X)``'s underlying type), that
         # is still compared, passed and assigned as a value
-        return [f"{indent}enum : int {{ {name} = {values.next('flag' in node.uses)} }};"]
-    if node.uses <= {"value", "constant", "flag"}:
+        return [f"{indent}enum : int {{ {name} = "
+                f"{values.next('flag' in node.uses, 'size' in node.uses)} }};"]
+    if node.uses <= _VALUE_USES:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
     head = "template <class... T> " if "template" in node.uses else ""
     if head and node.value_arguments:

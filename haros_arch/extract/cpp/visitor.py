@@ -183,10 +183,28 @@ _TAKEN_AS = {"as_int": "int", "as_double": "double", "as_string": "str", "as_boo
              "as_integer_array": "int[]", "as_double_array": "double[]",
              "as_string_array": "str[]", "as_bool_array": "bool[]"}
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
-                            "get_value", "value_to_string",
+                            "get_value", "value_to_string", "get_parameter_value",
                             # SDFormat's ``GetElement("key")->GetValue()->GetAsString()``
                             # (api.SDF)
                             "GetValue", "GetAsString"})
+
+
+
+
+def _value_method(call: Cursor, children: list[Cursor]) -> bool:
+    """Whether ``call`` is a method that gives its object's value: ``_VALUE_METHODS``,
+    or rclcpp's ``ParameterValue::get<T>()`` (``declare_parameter(name,
+    PARAMETER_STRING).get<std::string>()``; ``get`` of any other class, a smart
+    pointer's, is not)."""
+    if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
+        return False
+    if call.spelling in _VALUE_METHODS:
+        return True
+    if call.spelling != "get":
+        return False
+    objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+    return bool(objects) and objects[0].type.get_canonical().spelling.removeprefix(
+        "const ").split("<")[0] == "rclcpp::ParameterValue"
 
 
 # the parameter a value is read from: its name, its default when known (one ``?`` where
@@ -2284,9 +2302,7 @@ class CallFinder:
         whether the parameter is there: ``getParam(name, v)``)."""
         spec, _ = self._row(call)
         children = list(call.get_children())
-        if spec is None and call.spelling in _VALUE_METHODS and children and (
-            children[0].kind == CursorKind.MEMBER_REF_EXPR
-        ):
+        if spec is None and _value_method(call, children):
             objects = [c for c in children[0].get_children() if c.kind.is_expression()]
             inner = strip(objects[0]) if objects else None
             if inner is None or inner.kind != CursorKind.CALL_EXPR:
@@ -2443,9 +2459,7 @@ class CallFinder:
         if expr.kind != CursorKind.CALL_EXPR:
             return False
         children = list(expr.get_children())
-        if expr.spelling in _VALUE_METHODS and children and (
-            children[0].kind == CursorKind.MEMBER_REF_EXPR
-        ):
+        if _value_method(expr, children):
             objects = [c for c in children[0].get_children() if c.kind.is_expression()]
             return bool(objects) and self._read_value(objects[0], wrapper, scope, depth)
         if self.wrappers.inner_of(expr) != wrapper:
@@ -2634,9 +2648,7 @@ class CallFinder:
             if known and len(known) == len(sources) and all(s[0] == known[0][0] for s in known):
                 return next((s for s in known if s[1] is not None), known[0])
         children = list(expr.get_children())
-        if expr.spelling in _VALUE_METHODS and children and (
-            children[0].kind == CursorKind.MEMBER_REF_EXPR
-        ):
+        if _value_method(expr, children):
             objects = [c for c in children[0].get_children() if c.kind.is_expression()]
             return self._parameter_source(
                 objects[0], scope, depth + 1, value) if objects else None

@@ -83,6 +83,12 @@ class Module:
     # the ROS version of the node these modules make, for a module that imports neither
     # rospy nor rclpy (``extract_python`` sets it)
     node_version: int = 1
+    # the classes and functions a module-level ``if`` / ``elif`` / ``else`` defines, by
+    # name, each with the tests that choose its branch (the test, and whether it must
+    # hold): ros_compatibility's ``if ROS_VERSION == 1: class CompatibleNode(object)
+    # ... elif ROS_VERSION == 2: class CompatibleNode(Node)`` (``Scopes.lookup``)
+    guarded: dict[str, list[tuple[tuple[tuple[ast.expr, bool], ...], ClassInfo | FunctionInfo]]] \
+        = field(default_factory=dict)
 
     @property
     def lines(self) -> list[str]:
@@ -98,13 +104,15 @@ class Module:
 
     @property
     def client_version(self) -> int | None:
-        """2 when the module imports rclpy, 1 when it imports rospy, else None."""
+        """2 when the module imports rclpy, 1 when it imports rospy, else None (and
+        None when it imports both, each under its own test: a compatibility module of
+        either version, which is the node's)."""
         qualified = (*self.imports.values(), *self.stars)
-        if any(q == "rclpy" or q.startswith("rclpy.") for q in qualified):
-            return 2
-        if any(q == "rospy" or q.startswith("rospy.") for q in qualified):
-            return 1
-        return None
+        ros2 = any(q == "rclpy" or q.startswith("rclpy.") for q in qualified)
+        ros1 = any(q == "rospy" or q.startswith("rospy.") for q in qualified)
+        if ros1 and ros2:
+            return None
+        return 2 if ros2 else 1 if ros1 else None
 
 
 class Loader:
@@ -282,18 +290,7 @@ def _index_statement(module: Module, loader: Loader, statement: ast.stmt) -> Non
     elif isinstance(statement, ast.FunctionDef | ast.AsyncFunctionDef):
         module.functions[statement.name] = FunctionInfo(statement, module)
     elif isinstance(statement, ast.ClassDef):
-        info = ClassInfo(statement, module)
-        for item in statement.body:
-            if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
-                info.methods[item.name] = FunctionInfo(item, module, info)
-            elif isinstance(item, ast.Assign):
-                for target in item.targets:
-                    if isinstance(target, ast.Name):
-                        info.constants[target.id] = item.value
-            elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name) \
-                    and item.value is not None:
-                info.constants[item.target.id] = item.value
-        module.classes[statement.name] = info
+        module.classes[statement.name] = _class_info(statement, module)
     elif isinstance(statement, ast.Assign):
         for target in statement.targets:
             if isinstance(target, ast.Name):
@@ -302,10 +299,59 @@ def _index_statement(module: Module, loader: Loader, statement: ast.stmt) -> Non
             and statement.value is not None:
         module.constants[statement.target.id] = statement.value
     elif isinstance(statement, ast.If | ast.Try):
-        # imports guarded by try/except ImportError or version checks
-        for child in (*statement.body, *getattr(statement, "orelse", ())):
-            if isinstance(child, ast.Import | ast.ImportFrom):
-                add_import(module, loader, child, module.imports, module.local_imports)
+        _index_guarded_imports(module, loader, statement)
+        if isinstance(statement, ast.If):
+            _index_guarded(module, statement, ())
+
+
+def _index_guarded_imports(module: Module, loader: Loader, statement: ast.If | ast.Try) -> None:
+    """Imports guarded by try/except ImportError or version checks, through the
+    ``elif``s and nested ``if``s of a module-level ``if`` (ros_compatibility imports
+    rospy under ``if ROS_VERSION == 1:`` and rclpy's ``Node`` under ``elif ROS_VERSION
+    == 2:``; a module that so imports both is of the node's ROS version,
+    ``Module.client_version``)."""
+    for child in (*statement.body, *getattr(statement, "orelse", ())):
+        if isinstance(child, ast.Import | ast.ImportFrom):
+            add_import(module, loader, child, module.imports, module.local_imports)
+        elif isinstance(child, ast.If) and isinstance(statement, ast.If):
+            _index_guarded_imports(module, loader, child)
+
+
+def _index_guarded(module: Module, statement: ast.If,
+                   tests: tuple[tuple[ast.expr, bool], ...]) -> None:
+    """The classes and functions each branch of a module-level ``if`` defines
+    (``Module.guarded``), under the tests that choose the branch, through ``elif``s and
+    nested ``if``s."""
+    for body, holds in ((statement.body, True), (statement.orelse, False)):
+        under = (*tests, (statement.test, holds))
+        for child in body:
+            if isinstance(child, ast.If):
+                _index_guarded(module, child, under)
+            elif isinstance(child, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
+                made = _definition(child, module)
+                module.guarded.setdefault(child.name, []).append((under, made))
+
+
+def _definition(statement: ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef,
+                module: Module) -> ClassInfo | FunctionInfo:
+    if not isinstance(statement, ast.ClassDef):
+        return FunctionInfo(statement, module)
+    return _class_info(statement, module)
+
+
+def _class_info(statement: ast.ClassDef, module: Module) -> ClassInfo:
+    info = ClassInfo(statement, module)
+    for item in statement.body:
+        if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
+            info.methods[item.name] = FunctionInfo(item, module, info)
+        elif isinstance(item, ast.Assign):
+            for target in item.targets:
+                if isinstance(target, ast.Name):
+                    info.constants[target.id] = item.value
+        elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name) \
+                and item.value is not None:
+            info.constants[item.target.id] = item.value
+    return info
 
 
 def add_import(module: Module, loader: Loader, statement: ast.Import | ast.ImportFrom,

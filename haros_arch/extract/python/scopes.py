@@ -81,6 +81,10 @@ class Scopes(EvaluatorBase):
                 finally:
                     self._computing.discard(key)
             return module.values.get(name, Unknown(name))
+        if name in module.guarded:
+            found = self._guarded(module, name)
+            if not isinstance(found, Unknown):
+                return found
         for path in module.local_stars:
             other = self.loader.load(path)
             if other is not None and other is not module:
@@ -88,6 +92,31 @@ class Scopes(EvaluatorBase):
                 if not isinstance(found, Unknown):
                     return found
         return self._star_interface(module, name)
+
+    def _guarded(self, module: Module, name: str) -> object:
+        """The class or function a module-level ``if`` defines (``Module.guarded``) in
+        the branch its tests choose, over the module's names (ros_compatibility's
+        ``ROS_VERSION == 2``, from the distribution's ROS_VERSION); not known when a
+        test is not, or no branch defines it."""
+        key = (f"guarded:{module.path}", name)
+        if key in self._computing:
+            return Unknown(name)
+        self._computing.add(key)
+        try:
+            for tests, made in module.guarded[name]:
+                held = [self._truth(test, module) for test, _ in tests]
+                if any(h is None for h in held):
+                    return Unknown(name)
+                if all(h == holds for h, (_, holds) in zip(held, tests, strict=True)):
+                    return made
+        finally:
+            self._computing.discard(key)
+        return Unknown(name)
+
+    def _truth(self, test: ast.expr, module: Module) -> bool | None:
+        value = self.eval(test, Frame(module))
+        plain = value.literal if isinstance(value, Value) else value
+        return bool(plain) if isinstance(plain, bool | int | float | str) else None
 
     def _star_interface(self, module: Module, name: str) -> object:
         guesses: list[str] = []

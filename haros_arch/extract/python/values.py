@@ -108,6 +108,11 @@ _PARAMETER_VALUES = frozenset({
     "byte_array_value"})
 
 
+# the environment variables a ROS distribution's setup script sets, which a node's
+# process has as the run gives them (``Evaluator._environ``)
+DISTRO_VARIABLES = frozenset({"ROS_VERSION", "ROS_DISTRO", "ROS_PYTHON_VERSION"})
+
+
 class Evaluator(Instances, QoSProfiles, Walker):
     """The static value of an expression (``eval``), never running it: a configuration of
     the one evaluator's walk (dispatch, steps, size checks). Its handlers are those of its
@@ -244,6 +249,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
         index = self.eval(expr.slice, frame)
         if isinstance(base, Ref) and base.qualname == "sys.argv":
             base = ProgramArgs(stripped=False)
+        if isinstance(base, Ref) and base.qualname == "os.environ":
+            return self._environ(index)
         if isinstance(base, ProgramArgs):
             return base.item(index)
         if isinstance(base, Record) and isinstance(index, Value) and index.literal is not None:
@@ -342,6 +349,13 @@ class Evaluator(Instances, QoSProfiles, Walker):
             value = self.eval(expr.args[0], frame)
             if expr.func.id == "str":
                 return text_of(value)
+            if isinstance(value, Value) and value.literal is not None:
+                # ``int(os.environ.get("ROS_VERSION", 0))``: a known text read as Python
+                # reads it, a text that is no number being an error (not known)
+                try:
+                    return int(value.literal) if expr.func.id == "int" else float(value.literal)
+                except ValueError:
+                    return Unknown(expr.func.id)
             return value if number(value) else Unknown(expr.func.id)
         return Unknown("call")
 
@@ -417,10 +431,24 @@ class Evaluator(Instances, QoSProfiles, Walker):
                                 self.eval(given, frame) if given is not None else None)
         if key == ("rclpy", "QoSProfile"):
             return self.qos_profile(expr, frame)
+        if ref.qualname in ("os.environ.get", "os.getenv") and expr.args and not any(
+                isinstance(a, ast.Starred) for a in expr.args):
+            return self._environ(self.eval(expr.args[0], frame))
         if ref.qualname in ("os.path.join", "posixpath.join") and expr.args and not any(
                 isinstance(a, ast.Starred) for a in expr.args):
             return _path_join([text_of(self.eval(a, frame)) for a in expr.args])
         return Unknown(ref.qualname)
+
+    def _environ(self, key: object) -> object:
+        """An environment variable of the node's process that the distribution's setup
+        sets (``DISTRO_VARIABLES``: ros_compatibility's ``os.environ.get("ROS_VERSION",
+        0)``), from the run's environment; any other is not known here (the robot's
+        shell sets it), nor is one the run does not set (not its default)."""
+        name = key.literal if isinstance(key, Value) else None
+        environment = getattr(self.loader.workspace, "environment", {})
+        if name in DISTRO_VARIABLES and name in environment:
+            return Value.of(environment[name])
+        return Unknown(f"environment variable {name or '?'}")
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
         if name in NAME_METHODS and not expr.args:

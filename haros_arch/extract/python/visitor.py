@@ -655,6 +655,10 @@ class Walker:
             self._tested.add(id(expr))
 
     def _expr(self, expr: ast.expr, frame: Frame, conds: Conditions) -> None:
+        assigned = self._setattr(expr, frame) if isinstance(expr, ast.Call) else None
+        if assigned is not None:
+            self._Assign(assigned, frame, conds)
+            return
         for node in ast.walk(expr):  # operands of ``x if c else y``, ``and`` / ``or``, ``not``
             if isinstance(node, ast.IfExp):
                 self._test(node.test)
@@ -844,6 +848,28 @@ class Walker:
                     self._used_classes.append(used)
             if init is not None:
                 self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
+
+    def _setattr(self, call: ast.Call, frame: Frame) -> ast.Assign | None:
+        """The builtin ``setattr(obj, name, value)`` with a name known statically, as the
+        assignment ``obj.<name> = value`` it is (vortex-auv's joystick interface: ``for
+        param in ['pose', 'joy', ...]: setattr(self, param + '_topic',
+        self.get_parameter(f'topics.{param}').value)``, then ``create_subscription(Joy,
+        self.joy_topic, ...)``); None for any other call, or a name not known."""
+        if not (isinstance(call.func, ast.Name) and call.func.id == "setattr"
+                and len(call.args) == 3 and not call.keywords
+                and not any(isinstance(a, ast.Starred) for a in call.args)
+                and call.func.id not in frame.locals):
+            return None
+        builtin = self.evaluator.callee(call.func, frame)  # not a function of the code's
+        if builtin is not None and not (isinstance(builtin, Unknown)
+                                        and builtin.origin == "setattr"):
+            return None
+        name = self.evaluator.eval(call.args[1], frame)
+        if not (isinstance(name, Value) and name.is_known and name.text.isidentifier()):
+            return None
+        target = ast.copy_location(ast.Attribute(
+            value=call.args[0], attr=name.text, ctx=ast.Store()), call)
+        return ast.copy_location(ast.Assign(targets=[target], value=call.args[2]), call)
 
     def _standalone_plugin(self, call: ast.Call, frame: Frame) -> ClassInfo | Ref | None:
         """The plugin class ``Main.main(argv, standalone='pkg.module.Class')`` of

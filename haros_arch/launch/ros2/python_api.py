@@ -405,7 +405,9 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
                 out.append((to_text(key), param_value(val)))
         elif isinstance(item, e.ParamFile):
             out.append(item)
-        elif isinstance(item, (str, Lazy, e.Subst, list)):
+        elif isinstance(item, (str, Lazy, e.Subst, list, PurePosixPath)):
+            # a file's path, also a ``pathlib.Path`` (launch_ros takes one: carla's
+            # ``Path(get_package_share_directory(pkg), "settings.yaml")``)
             out.append(e.ParamFile(to_text(item), location=i.where(n)))
         else:
             i.unsupported(n, "a node parameter entry not known statically")

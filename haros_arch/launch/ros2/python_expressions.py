@@ -34,6 +34,7 @@ from .python_values import (
     Func,
     Guard,
     Instance,
+    LaunchDescription,
     Lazy,
     Method,
     Module,
@@ -413,6 +414,10 @@ class Expressions(Walker):
             return _Environ()
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
             return getattr(owner, node.attr)
+        if isinstance(owner, LaunchDescription) and node.attr == "entities":
+            # launch's property: the description's list of entities itself (an
+            # OpaqueFunction returning ``ld.entities``: lbr_fri_ros2_stack's move_group)
+            return owner.actions
         if isinstance(owner, Constructing):  # self.x in a constructor
             if node.attr in owner.attributes:
                 return owner.attributes[node.attr]

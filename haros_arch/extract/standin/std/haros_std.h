@@ -648,6 +648,9 @@ template<class T, size_t N> struct array {
   const T* cbegin() const;
   const T* cend() const;
 };
+template<class T, size_t N> bool operator==(const array<T, N>& a, const array<T, N>& b);
+template<class T, size_t N> bool operator!=(const array<T, N>& a, const array<T, N>& b);
+template<class T, size_t N> bool operator<(const array<T, N>& a, const array<T, N>& b);
 template<class K, class V> class haros_map_iterator {
 public:
   typedef pair<const K, V> value_type;
@@ -845,6 +848,54 @@ template<class A, class B, class O> O set_intersection(A first1, A last1, B firs
 template<class A, class B, class O> O set_difference(A first1, A last1, B first2, B last2, O out);
 template<class It, class P> It partition(It first, It last, P pred);
 template<class It, class P> It stable_partition(It first, It last, P pred);
+// C++20's constrained algorithms (std::ranges::for_each(v, f), std::ranges::transform(a,
+// b, out, f), std::ranges::find_if(v, p), ...), declared loosely: each of a range or of
+// iterators, the projections and comparators any further arguments; an algorithm that
+// gives a position gives the range's iterator (or the first argument's type when that
+// is an iterator: the range form is then no candidate, ``r.begin()`` failing)
+namespace ranges {
+template<class R> auto begin(R&& r) -> decltype(r.begin());
+template<class R> auto end(R&& r) -> decltype(r.end());
+template<class R> auto size(R&& r) -> decltype(r.size());
+template<class R> bool empty(R&& r);
+template<class R> auto data(R&& r) -> decltype(r.data());
+template<class R> using iterator_t = decltype(declval<R&>().begin());
+template<class R> using range_value_t =
+    typename decay<decltype(*declval<R&>().begin())>::type;
+#define HAROS_RANGES_VOID(name) template<class... A> void name(A&&... args);
+#define HAROS_RANGES_BOOL(name) template<class... A> bool name(A&&... args);
+#define HAROS_RANGES_POSITION(name) \
+  template<class R, class... A> auto name(R&& r, A&&... args) -> decltype(r.begin()); \
+  template<class I, class... A> I name(I first, I last, A&&... args);
+HAROS_RANGES_VOID(for_each) HAROS_RANGES_VOID(for_each_n) HAROS_RANGES_VOID(transform)
+HAROS_RANGES_VOID(copy) HAROS_RANGES_VOID(copy_if) HAROS_RANGES_VOID(copy_n)
+HAROS_RANGES_VOID(copy_backward) HAROS_RANGES_VOID(move) HAROS_RANGES_VOID(fill)
+HAROS_RANGES_VOID(fill_n) HAROS_RANGES_VOID(generate) HAROS_RANGES_VOID(generate_n)
+HAROS_RANGES_VOID(sort) HAROS_RANGES_VOID(stable_sort) HAROS_RANGES_VOID(partial_sort)
+HAROS_RANGES_VOID(nth_element) HAROS_RANGES_VOID(reverse) HAROS_RANGES_VOID(reverse_copy)
+HAROS_RANGES_VOID(shuffle) HAROS_RANGES_VOID(replace) HAROS_RANGES_VOID(replace_if)
+HAROS_RANGES_VOID(iota) HAROS_RANGES_VOID(merge) HAROS_RANGES_VOID(set_union)
+HAROS_RANGES_VOID(set_intersection) HAROS_RANGES_VOID(set_difference)
+HAROS_RANGES_BOOL(any_of) HAROS_RANGES_BOOL(all_of) HAROS_RANGES_BOOL(none_of)
+HAROS_RANGES_BOOL(equal) HAROS_RANGES_BOOL(contains) HAROS_RANGES_BOOL(includes)
+HAROS_RANGES_BOOL(is_sorted) HAROS_RANGES_BOOL(binary_search)
+HAROS_RANGES_BOOL(lexicographical_compare) HAROS_RANGES_BOOL(is_permutation)
+HAROS_RANGES_POSITION(find) HAROS_RANGES_POSITION(find_if) HAROS_RANGES_POSITION(find_if_not)
+HAROS_RANGES_POSITION(min_element) HAROS_RANGES_POSITION(max_element)
+HAROS_RANGES_POSITION(lower_bound) HAROS_RANGES_POSITION(upper_bound)
+HAROS_RANGES_POSITION(adjacent_find) HAROS_RANGES_POSITION(find_first_of)
+HAROS_RANGES_POSITION(is_sorted_until) HAROS_RANGES_POSITION(partition_point)
+#undef HAROS_RANGES_VOID
+#undef HAROS_RANGES_BOOL
+#undef HAROS_RANGES_POSITION
+template<class... A> ptrdiff_t count(A&&... args);
+template<class... A> ptrdiff_t count_if(A&&... args);
+template<class T, class... A> const T& min(const T& a, const T& b, A&&... args);
+template<class T, class... A> const T& max(const T& a, const T& b, A&&... args);
+template<class R, class... A> auto min(R&& r, A&&... args) -> range_value_t<R>;
+template<class R, class... A> auto max(R&& r, A&&... args) -> range_value_t<R>;
+template<class T, class... A> const T& clamp(const T& v, const T& lo, const T& hi, A&&...);
+}  // namespace ranges
 template<class It, class P> It partition_point(It first, It last, P pred);
 template<class It> bool next_permutation(It first, It last);
 template<class It> bool prev_permutation(It first, It last);
