@@ -1382,3 +1382,44 @@ def test_a_builders_member_template_assigned_whole_is_declared() -> None:
     assert declared % "convert_to_container" in header
     for name in ("to_container", "into", "build"):
         assert declared % name not in header
+
+
+def test_a_constant_compared_then_anded_is_a_value(write_tree) -> None:
+    """A C library's constant right after ``==`` / ``!=`` is a value whatever follows it:
+    ``err != UVC_SUCCESS && n == 1`` is no rvalue reference ``UVC_SUCCESS&&`` (libuvc's
+    header missing, ros_astra_camera's driver): read as a type it made every
+    ``err != UVC_SUCCESS`` an error in a function that calls the ROS API."""
+    result = _server(
+        write_tree,
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <libuvc/libuvc.h>\n"
+        "class Server : public rclcpp::Node {\n public:\n"
+        "  Server() : Node(\"server\") {\n"
+        "    uvc_error_t err = uvc_init(&ctx_, NULL);\n"
+        "    if (err != UVC_SUCCESS && count_ == 1) { return; }\n"
+        "    if (err != UVC_SUCCESS) { return; }\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"image\", 10);\n  }\n"
+        "  uvc_context_t *ctx_;\n  int count_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("publish", "image", 10)]
+    assert not [d for d in result.diagnostics
+                if d.code in ("CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")]
+    names = synthesis.Names()
+    text = b"void f(int e) { if (e == UVC_OK || e != VND_DONE && e > 0) {} }\n"
+    names.learn([("use of undeclared identifier '" + n.decode() + "'", text, text.index(n))
+                 for n in (b"UVC_OK", b"VND_DONE")])
+    header = names.header()
+    assert "extern haros_any UVC_OK;" in header and "extern haros_any VND_DONE;" in header
+
+
+def test_a_float_literal_gives_no_member() -> None:
+    """The ``.`` of a float literal is no member access: ``1.e5``, ``2.f`` and ``3.e-2``
+    give no member ``e5`` / ``f`` / ``e`` of the permissive class (a member ``f`` would
+    hide a name of every class derived from one); a name after ``.`` of an object whose
+    name ends in a digit is still read."""
+    names = synthesis.Names()
+    names.read_members([b"double x = 1.e5 + 2.f * 3.e-2 + 0x1.p3;\n"
+                        b"int n = obj1.size() + p2->count;\n"])
+    assert {"e5", "f", "e", "p3"}.isdisjoint(names.members)
+    assert {"size", "count"} <= names.members

@@ -80,9 +80,9 @@ def test_names_from_argparse_options(write_tree) -> None:
     names = {(link.node.name, link.kind, link.rosname.full) for link in config.links
              if link.kind in ("publish", "subscribe")}
     assert names == {
-        # a server per element of ~limbs (not set: unknown), or the one of --limb
-        ("/a", "publish", "/robot/limb/?/joint_command"),
-        ("/b", "publish", "/robot/limb/?/joint_command"),
+        # a server per element of ~limbs, or the one of --limb: nothing sets ~limbs, and
+        # rospy.get_param("~limbs") with no default raises, so no server per element
+        # (graph.conditions._list_unset); /c's "?" is its --limb default, ~limb unset
         ("/a", "publish", "/robot/limb/right/joint_command"),
         ("/a", "subscribe", "/robot/velocity/state"),
         ("/b", "publish", "/robot/limb/left/joint_command"),

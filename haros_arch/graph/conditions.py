@@ -43,10 +43,11 @@ from typing import Any
 from .. import diagnostics as diag
 from ..evaluate.python import KeyAttributes, evaluate, is_unknown
 from ..launch.ros2.naming import split_arguments
-from ..model.conditions import PARAMETER_VALUE, Condition
+from ..model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ..model.location import Location
-from ..model.rosname import pattern_for
+from ..model.rosname import RosName, pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
+from ..model.source import NUMBERED, WORDS
 from ..model.values import UNKNOWN_MARK, Unknown
 
 DECIDED_STATEMENTS = ("if", "else", "switch")
@@ -728,6 +729,8 @@ def decide_links(config: Configuration) -> None:
                     break
                 if answer is None:
                     kept.append(condition)
+            if false is None:
+                false = _list_unset(config, instance, link, made)
             if false is not None:
                 dropped.append(link)
                 falses.append((link, false))
@@ -749,6 +752,33 @@ def decide_links(config: Configuration) -> None:
         falses.clear()
     if dropped:
         drop_links(config, dropped)
+
+
+def _list_unset(config: Configuration, instance: NodeInstance, link: Link,
+                made: dict[str, Any]) -> Condition | None:
+    """The loop over a ROS 1 list parameter that makes ``link`` (a call named by each of
+    its elements, ``PrimitiveCall.name_each``, left with ``?`` by ``graph.build.
+    element_calls``), as a condition that does not hold, when the list is not set:
+    every read the node makes of it has no default (roscpp's ``getParam`` fails, so
+    the code's loop runs no turn or the value it walks throws: twist_mux's
+    ``xh::fetchParam(nh_priv, "locks", ...)`` throws and its caller catches it) and
+    nothing seen sets it nor may unseen (``_present``). None otherwise."""
+    call = link.call
+    if instance.ros_version != 1 or call is None or call.name_each is None or (
+        call.name_param is None or call.name_each in (NUMBERED, WORDS)
+        or UNKNOWN_MARK in call.name_param or not link.rosname.is_unresolved
+    ):
+        return None
+    full = RosName.make(call.name_param, instance.namespace, instance.name).full
+    reads = [k for k in instance.links if k.kind == "read" and k.call is not None
+             and isinstance(k.resource, Parameter) and k.resource.name == full]
+    if not reads or any(k.call is not None and k.call.has_default for k in reads):
+        return None
+    if any(_present(config, k, "get", made) is not False for k in reads):
+        return None
+    where = reads[0].location
+    return Condition(f"each element of {call.name_param}, which nothing sets",
+                     statement=EACH_STATEMENT, location=where)
 
 
 def drop_links(config: Configuration, links: list[Link]) -> None:

@@ -651,6 +651,33 @@ FILTERS: dict[tuple[str, str], RosFunction] = {
         "declare", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
         name_prefix="?.", library_default=True, standin_only=True, ros2_only=True),
 }
+# ROS 1 control_toolbox's Pid (noetic-devel pid.cpp): init(nh) reads the gains from the
+# handle's namespace, ``p`` required (init fails without it), the others with defaults,
+# and starts a dynamic_reconfigure server there whose config (cfg/Parameters.cfg) it
+# reads as every server does (no write said, as for the servers above); initParam(prefix)
+# does the same in NodeHandle(prefix). Not said: ``<ns>/state``, the PidState publisher
+# init makes only when ``publish_state`` is true.
+_RECONFIGURE_SERVICES: tuple[Sibling, ...] = (
+    ("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+    ("publish", "parameter_updates", "dynamic_reconfigure/Config"))
+_PID_CONFIG: tuple[Sibling, ...] = (
+    ("read", "i", "double"), ("read", "d", "double"), ("read", "i_clamp_min", "double"),
+    ("read", "i_clamp_max", "double"), ("read", "antiwindup", "bool"))
+_PID_SIBLINGS: tuple[Sibling, ...] = (
+    *_PID_CONFIG, ("read", "i_clamp", "double"), ("read", "publish_state", "bool"),
+    ("server", "set_parameters", "dynamic_reconfigure/Reconfigure"), *_RECONFIGURE_SERVICES)
+CONTROL_TOOLBOX: dict[tuple[str, str], RosFunction] = {
+    ("control_toolbox::Pid", "init"): RosFunction(
+        "read", fixed_name="p", fixed_type="double", on_handle=False, handle_default="",
+        standin_only=True, siblings=_PID_SIBLINGS),
+    ("control_toolbox::Pid", "initParam"): RosFunction(
+        "read", name_arg=0, name_suffix="p", fixed_type="double", on_handle=False,
+        name_required=True, standin_only=True, siblings=_PID_SIBLINGS),
+    ("control_toolbox::Pid", "initDynamicReconfig"): RosFunction(
+        "server", fixed_name="set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
+        on_handle=False, handle_default="", standin_only=True,
+        siblings=(*_RECONFIGURE_SERVICES, ("read", "p", "double"), *_PID_CONFIG)),
+}
 # SDFormat's Element: what a Gazebo classic plugin reads of its <plugin> element's
 # children (``Get<T>("key")``, ``GetElement("key")->Get<T>()``, ``->GetValue()->
 # GetAsString()``): no call, a value the description gives (``SDF_ELEMENT`` + the key)
@@ -770,7 +797,7 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
                        "dynamic_reconfigure"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
-                                            **NAV2, **FILTERS, **SDF}
+                                            **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

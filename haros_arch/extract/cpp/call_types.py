@@ -106,6 +106,26 @@ class CallTypes:
             found.setdefault(given.get_canonical().spelling, given)
         return next(iter(found.values())) if len(found) == 1 else None
 
+    def template_parameter(self, function: Cursor | None) -> tuple[Cursor, int] | None:
+        """The class template and the index of its type parameter that the first
+        parameter of a callback (``function``) takes (``const M&`` of
+        ``StateSubscriber<M>::setMessage``), where nothing in the unit binds it to one
+        type (``bound``): each construction then gives its own (``links.TYPE_ARGUMENT``)."""
+        if function is None or function.kind == CursorKind.LAMBDA_EXPR:
+            return None
+        params = parameters(function)
+        if not params:
+            return None
+        ctype = params[0]
+        if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE,
+                          TypeKind.POINTER):
+            ctype = ctype.get_pointee()
+        own = _PARAMETER.fullmatch(ctype.get_canonical().spelling.removeprefix("const "))
+        template = function.semantic_parent
+        if own is None or template is None or template.kind != CursorKind.CLASS_TEMPLATE:
+            return None
+        return template, int(own.group(1))
+
     def ros_type(self, name: str) -> str:
         """A ROS 1 type name, written the ROS 2 way (``pkg/msg/Name``) in a ROS 2 node."""
         if not self.ros2 or name.count("/") != 1:
@@ -121,6 +141,10 @@ class CallTypes:
         if found is None and spec.fixed_type is not None:
             found = self.ros_type(spec.fixed_type)
         return found
+
+    def message(self, ctype: Type) -> str | None:
+        """The ROS message type ``ctype`` is, if it is one."""
+        return self._message(ctype)
 
     def _message(self, ctype: Type, service: bool = False) -> str | None:
         return msg_types.message_type(ctype, service, self.adapters, self.ros2)

@@ -22,7 +22,7 @@ import functools
 import re
 from collections.abc import Callable, Collection, Iterable, Iterator
 
-from clang.cindex import Cursor, CursorKind, conf
+from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -101,6 +101,11 @@ MEMBER = -17
 # USR is the fact's value, which its unit never calls: where no file of the node calls it
 # either, the site passes nothing (``NodeFacts.idle``)
 WITHIN = -18
+# the index, plus K, of a fact that says the construction (the fact's site) builds the
+# class template whose constructor is the fact's USR with the ROS type (the value) as its
+# K-th template argument: a call whose callback takes that type parameter is typed by it
+# (``CallFinder._per_construction_type``; OpenMower's ``StateSubscriber<M>``)
+TYPE_ARGUMENT = 1000
 # facts that say no call of their function
 NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
                        OPAQUE, DEFINED, MEMBER, WITHIN})
@@ -118,14 +123,17 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                    owned: Callable[[str], bool],
                    named: Callable[[Cursor, Scope], str | None] | None = None,
                    conditioned: Callable[[Cursor, Cursor], tuple[Condition, ...]] | None = None,
-                   struct: Callable[[Cursor, Scope], str | None] | None = None
+                   struct: Callable[[Cursor, Scope], str | None] | None = None,
+                   typed: Callable[[Type], str | None] | None = None
                    ) -> list[Fact]:
     """What this file passes, as handles' namespaces or strings, to the workspace
     functions it calls but does not define; ``named`` gives a string that is (or holds)
     a parameter's value with that parameter marked (``parameter_mark``); ``conditioned``
     the source conditions of a call in its function, said of the constructions
     (``CONDITIONS``); ``struct`` the name of the parameter a ROS 1 ``XmlRpcValue``
-    holds (a struct parameter's member handed to a constructor that reads its keys)."""
+    holds (a struct parameter's member handed to a constructor that reads its keys);
+    ``typed`` the ROS type of a class template's argument at a construction
+    (``TYPE_ARGUMENT``)."""
     facts: list[Fact] = []
     done: set[tuple[str, int]] = set()
     for _round in range(MAX_DEPTH):  # reading a value may give another function a mark
@@ -171,6 +179,15 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                 # ``CallFinder._made_in``, a constructor template's names)
                 facts.extend((template.get_usr(), index, value, at)
                              for _usr, index, value, at in facts[given:])
+            if typed is not None and template is not None and (
+                    callee.kind == CursorKind.CONSTRUCTOR and _of_class_template(template)):
+                # the ROS types the construction gives the class template's arguments
+                made = callee.semantic_parent.type
+                for index in range(max(made.get_num_template_arguments(), 0)):
+                    given_type = made.get_template_argument_type(index)
+                    value = typed(given_type) if given_type.kind != TypeKind.INVALID else None
+                    facts.append((template.get_usr(), TYPE_ARGUMENT + index, value or "?",
+                                  site))
     for usr, (function, bases) in sites.overrides.items():
         params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
         facts.extend((usr, OVERRIDES, base, str(index)) for base in bases if base
@@ -229,7 +246,7 @@ def member_facts(functions: Iterable[Cursor], main: str,
                 continue
             seen.add(usr)
             value = namespace(field)
-            if value is not None and usr not in _marked_usrs(value):
+            if value is not None and usr not in marked_usrs(value):
                 facts.append((usr, MEMBER, value, main))
     return facts
 
@@ -239,7 +256,7 @@ def global_facts(found: Iterable[tuple[str, str]], main: str) -> list[Fact]:
     writes once, with the namespace it gives it (``Namespaces.global_handles``): another
     file of the node that declares it ``extern`` holds it as a placeholder."""
     return [(usr, MEMBER, value, main) for usr, value in found
-            if usr not in _marked_usrs(value)]
+            if usr not in marked_usrs(value)]
 
 
 def opaque_unseen(facts: Iterable[Fact]) -> set[str]:
@@ -457,7 +474,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         lists = sorted({listed for c in call.conditions for _, listed, _ in c.elements or ()
                         if PLACEHOLDER in listed})
         node_text = _site_asked(named.get(call.node_name or ""))
-        if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or ""):
+        typed = call.type if call.type is not None and PLACEHOLDER in call.type else None
+        if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or "") \
+                and typed is None:
             filled_lists = _lists_filled(call, {
                 listed: _parameter_filled(listed, known.passed) for listed in lists})
             if node_text is None:
@@ -479,10 +498,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             text += "".join(_LIST_SPLIT + _param_text(listed) for listed in lists)
         if node_text is not None:
             text += _NODE_SPLIT + node_text
+        if typed is not None:  # filled from the same construction as the name
+            text += _TYPE_SPLIT + typed
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
+            filled, _, type_filled = filled.partition(_TYPE_SPLIT)
             filled, _, node_filled = filled.partition(_NODE_SPLIT)
             filled, *lists_text = filled.split(_LIST_SPLIT)
             filled, _, param_text = filled.partition(_PARAM_SPLIT)
@@ -501,6 +523,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                     PLACEHOLDER not in call.camera_of) else (
                     join_name(ns, _unmarked(camera)) if camera and PLACEHOLDER not in camera
                     else None))
+            if typed is not None:
+                made = dataclasses.replace(made, type=type_filled if type_filled and (
+                    PLACEHOLDER not in type_filled) else "?")
             if param_text:
                 filled_param = _param_joined(param_text)
                 if filled_param and PLACEHOLDER not in filled_param:
@@ -525,6 +550,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
 _NODE_SPLIT = "\x11"  # before the node name expanded with a call's name (``resolve``)
+_TYPE_SPLIT = "\x15"  # before the type expanded with a call's name (``TYPE_ARGUMENT``)
 # around a function's USR: ``_expand`` writes the call site whose values it takes for that
 # function's placeholders in its stead (after ``_SITE_AT``)
 _SITE_OF = "\x13"
@@ -792,7 +818,7 @@ def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
     return passed
 
 
-def _marked_usrs(text: str) -> set[str]:
+def marked_usrs(text: str) -> set[str]:
     """The functions whose placeholders ``text`` holds."""
     return {found.group(1) for found in _MARK.finditer(text)} if PLACEHOLDER in text else set()
 
@@ -834,7 +860,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # a value that holds the function's own placeholder (a call it makes of
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
-            return "?" if usr in _marked_usrs(value) else value
+            return "?" if usr in marked_usrs(value) else value
         for filled in _expand(_MARK.sub(fill, here), passed, depth + 1, unbuilt, unrun,
                               idle):
             if filled not in out:

@@ -127,7 +127,9 @@ _INCOMPLETE = re.compile(
     r"incomplete (?:result )?type '(?:const )?(?:(?:struct|class) )?"
     r"([A-Za-z_]\w*(?:::[A-Za-z_]\w*)*)'")
 _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::Name``
-_AFTER_MEMBER = re.compile(rb"(?:\.|->)\s*([A-Za-z_]\w*)")
+# a name after ``.`` or ``->``; a number is matched whole first, with no name, so that
+# the ``.`` of a float literal gives none (``1.e5``, ``2.f``: no member ``e5``, ``f``)
+_AFTER_MEMBER = re.compile(rb"\b[0-9](?:[eEpP][-+]|[\w.])*|(?:\.|->)\s*([A-Za-z_]\w*)")
 _TEMPLATE_SPAN = 400  # bytes searched back for the ``<`` of a template argument list
 _VALUE_LITERAL = re.compile(rb"\s*(?:[-+(]?\s*[0-9]|(?:true|false|sizeof)\b)")
 _VALUE_WRITTEN = re.compile(
@@ -883,7 +885,8 @@ class Names:
                 # type in every class derived from one (``boost::noncopyable``)
                 code = _NOT_CODE.sub(b" ", text)
                 self.members.update(
-                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(code)) if n not in skip)
+                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(code))
+                    if n and n not in skip)
                 # ``x->template get<T>()`` says itself that it names a template
                 self.member_templates.update(
                     n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(code))
@@ -1060,6 +1063,12 @@ class Names:
             # a template's argument list ends with (``std::array<T, vendor::SIZE>``); so is
             # one in parentheses after ``case`` (kobuki's ``case (ecl::OpenError):``,
             # where a type is a cast with no operand)
+            last = "value"
+        if last == "type" and use == "any" and rest.lstrip()[:1] not in (b"(", b"{") and (
+                text[max(0, offset - 8):offset].rstrip()[-2:] in (b"==", b"!=")):
+            # ``err != UVC_SUCCESS && n == 1``: an operand of a comparison is a value
+            # whatever follows it (``&&`` there is no rvalue reference's; a type could
+            # only be a functional cast, ``x != T(...)``)
             last = "value"
         if last == "type" and use == "any" and (scope or len(written) > 1) and (
                 _called_statement(text, offset, found.end())):

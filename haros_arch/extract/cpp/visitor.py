@@ -393,7 +393,8 @@ class CallFinder:
                         read.variable = member.spelling
                         read.also = also or None
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
-                                    self._site_conditions, self._struct_text)
+                                    self._site_conditions, self._struct_text,
+                                    self.types.message)
         self.facts.extend(call_conditions.site_facts(
             self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
             self.globals, self.declared))
@@ -1102,7 +1103,7 @@ class CallFinder:
                     made, type=msg_types.written_type(written, self.ros2, True) or "?")
         self.diagnostics.append(diag.make(
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
-            type=self.calls[before].type or "?"))
+            type=_shown_type(self.calls[before].type)))
 
     def _lost_initialiser(self, init: Cursor, spec: api.RosFunction, made: Cursor,
                           conditions: tuple[Condition, ...], scope: Scope) -> None:
@@ -1121,6 +1122,25 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_CALL_UNRESOLVED", self.calls[before].location, function=made.spelling,
                 type=self.calls[before].type or "?"))
+
+    def _per_construction_type(self, function: Cursor, names: list[str]) -> str | None:
+        """The type of a call whose callback takes a type parameter of the class
+        template it is a member of (``CallTypes.template_parameter``), as a placeholder
+        of the constructor that builds the object, which each construction fills with
+        its template argument (``links.TYPE_ARGUMENT``): the constructor whose
+        placeholders the name holds, else the template's one constructor; None when
+        that is not one."""
+        found = self.types.template_parameter(function)
+        if found is None:
+            return None
+        template, index = found
+        constructors = {c.canonical.get_usr() for c in template.get_children()
+                        if c.kind == CursorKind.CONSTRUCTOR} - {""}
+        marked = {usr for name in names for usr in links.marked_usrs(name)} & constructors
+        chosen = marked if marked else constructors
+        if len(chosen) != 1:
+            return None
+        return f"{PLACEHOLDER}{chosen.pop()}{SEPARATOR}{links.TYPE_ARGUMENT + index}{PLACEHOLDER}"
 
     def _unresolved_rows(self) -> dict[str, api.RosFunction]:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
@@ -1750,6 +1770,8 @@ class CallFinder:
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
+        if ctype is None and function is not None and "callback" in spec.type_from:
+            ctype = self._per_construction_type(function, [n for n, _ in names])
         if ctype is None and spec.kind == "read":
             ctype = self._taken_as.get(place_of(call))
         qos = None
@@ -2812,6 +2834,12 @@ class CallFinder:
             # made where a constructor initialises the member, whose call is that one
             return
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+
+
+def _shown_type(ctype: str | None) -> str:
+    """A call's type as a diagnostic says it: ``?`` for none, or one each construction
+    gives (``CallFinder._per_construction_type``)."""
+    return ctype if ctype and PLACEHOLDER not in ctype else "?"
 
 
 UNREAD = "haros_unread"  # the annotation of a stand-in's class whose calls no row says
