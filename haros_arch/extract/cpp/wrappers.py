@@ -7,7 +7,8 @@ into the name argument of a ROS call (a row of ``api.ALL``, or of another wrappe
 *wrapper*: it gets a derived row of the same kind whose argument indexes are its own
 parameters (``Wrapper``). A call of it is then a ROS call at the call site, with the
 name, type (the call's template argument when the inner type is the wrapper's template
-parameter, or the value / callback it passes on), QoS, queue, default, handle and
+parameter, or, where the call writes none, the type of the argument that deduces it; or
+the value / callback it passes on), QoS, queue, default, handle and
 conditions of that call site, and under the conditions the call is under inside the
 wrapper (and inside each wrapper of a chain: ``if (use_extra_)`` around a second
 publisher the wrapper makes); the call inside the wrapper is no longer emitted on its
