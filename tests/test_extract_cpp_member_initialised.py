@@ -70,12 +70,31 @@ int main(int argc, char ** argv)
 """
 
 
-def _calls(write_tree, source: str, build_type: str) -> list[tuple[str, str, int]]:
+DEFAULT_INITIALISER = """#include <rclcpp/rclcpp.hpp>
+#include <diagnostic_updater/diagnostic_updater.hpp>
+
+class Sync : public rclcpp::Node
+{
+public:
+  explicit Sync(const rclcpp::NodeOptions & options);
+
+private:
+  diagnostic_updater::Updater diagnostic_updater_{this};
+};
+
+Sync::Sync(const rclcpp::NodeOptions & options) : rclcpp::Node("sync", options) {}
+"""
+
+
+def _calls(write_tree, source: str, build_type: str,
+           columns: bool = False) -> list[tuple[str, str, int] | tuple[str, str, int, int]]:
     root = write_tree({"pkg/package.xml": package_xml("pkg", build_type),
                        "pkg/src/node.cpp": source})
     result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
                          cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    if columns:
+        return [(c.kind, c.name, c.location.line, c.location.column) for c in result.calls]
     return [(c.kind, c.name, c.location.line) for c in result.calls]
 
 
@@ -91,3 +110,11 @@ def test_members_every_constructor_initialises_are_built_there_only(write_tree) 
 def test_a_member_a_constructor_leaves_out_is_built_at_its_declaration(write_tree) -> None:
     # Pose() leaves br_ out: built by default, at its declaration
     assert _calls(write_tree, ROS1, "catkin") == [("publish", "/tf", 12)]
+
+
+def test_a_member_with_a_default_initialiser_is_built_by_it(write_tree) -> None:
+    # Autoware's concatenate_and_time_sync_node.hpp:111 ``Updater diagnostic_updater_{this}``
+    assert _calls(write_tree, DEFAULT_INITIALISER, "ament_cmake", columns=True) == [
+        ("publish", "/diagnostics", 10, 50),
+        ("declare", "diagnostic_updater.period", 10, 50),
+        ("declare", "diagnostic_updater.use_fqn", 10, 50)]

@@ -2817,16 +2817,21 @@ def _unread(cls: Cursor | None) -> bool:
 
 
 def _initialised(field: Cursor) -> bool:
-    """Whether no constructor of the member's class builds ``field`` by default: the
-    class declares constructors, and each of them that this unit defines with a body
-    names the member among its initialisers or delegates to another constructor
-    (mavros' ``Router``: ``diagnostic_updater(this, 1.0)``, whose construction is the
-    call); with none of them defined here, the unit that defines them tells. A class
-    with no constructor of its own, or one that leaves the member out (or ``= default``),
-    builds it by default."""
+    """Whether no constructor of the member's class builds ``field`` by default: it has
+    a default member initialiser (``{this}``, that call), or the class declares
+    constructors and each of them that this unit defines with a body names the member
+    among its initialisers or delegates to another constructor (mavros' ``Router``:
+    ``diagnostic_updater(this, 1.0)``, whose construction is the call); with none of
+    them defined here, the unit that defines them tells. A class with no constructor of
+    its own, or one that leaves the member out (or ``= default``), builds it by
+    default."""
     owner = field.semantic_parent
     if owner is None or field.kind != CursorKind.FIELD_DECL:
         return False
+    if initializer(field) is not None:
+        # a default member initialiser (``Updater diagnostic_updater_{this};``) builds it
+        # wherever a constructor does not: walked as a function, its call is that one
+        return True
     constructors = [c for c in owner.get_children() if c.kind == CursorKind.CONSTRUCTOR]
     if not constructors:
         return False
