@@ -2817,8 +2817,8 @@ def _unread(cls: Cursor | None) -> bool:
 
 
 def _initialised(field: Cursor) -> bool:
-    """Whether no constructor of the member's class builds ``field`` by default: it has
-    a default member initialiser (``{this}``, that call), or the class declares
+    """Whether no constructor of the member's class builds ``field`` by default (nor by
+    its default member initialiser, which the declaration stands for): the class declares
     constructors and each of them that this unit defines with a body names the member
     among its initialisers or delegates to another constructor (mavros' ``Router``:
     ``diagnostic_updater(this, 1.0)``, whose construction is the call); with none of
@@ -2829,9 +2829,11 @@ def _initialised(field: Cursor) -> bool:
     if owner is None or field.kind != CursorKind.FIELD_DECL:
         return False
     if initializer(field) is not None:
-        # a default member initialiser (``Updater diagnostic_updater_{this};``) builds it
-        # wherever a constructor does not: walked as a function, its call is that one
-        return True
+        # a default member initialiser (``Updater diagnostic_updater_{this};``,
+        # ``TransformListener tf_listener_{tf_buffer_};``) builds it wherever a
+        # constructor does not: the declaration stands for that construction in every
+        # unit that sees it (its walk as a function adds no second one)
+        return False
     constructors = [c for c in owner.get_children() if c.kind == CursorKind.CONSTRUCTOR]
     if not constructors:
         return False
