@@ -721,8 +721,10 @@ def test_tf2_advanced_lookup_and_a_scalar_of_another_type_in_ros1(write_tree) ->
     partial."""
     result = _extract(write_tree, _source("ros1_tf2_advanced_eigen_scalar.cpp"), "catkin")
     assert _errors(result) == []
+    # the listener at its initialiser ``listener_(buffer_)`` (line 9), its one
+    # construction, before the publisher's member initialiser (line 19)
     assert [(c.kind, c.name) for c in result.calls] == [
-        ("publish", "delta"), ("subscribe", "/tf"), ("subscribe", "/tf_static")]
+        ("subscribe", "/tf"), ("subscribe", "/tf_static"), ("publish", "delta")]
 
 
 def test_a_serial_port_opened_with_termios_and_fcntl(write_tree) -> None:

@@ -189,7 +189,9 @@ def test_parameter_forms_of_real_nodes() -> None:
 
 def test_ros_version_comes_from_the_package() -> None:
     result = extract("tf_only.cpp")
-    assert rows(result) == [("publish", "/tf", "tf2_msgs/msg/TFMessage", 14)]
+    # at the constructor's initialiser ``broadcaster_(node)``, the member's one
+    # construction (not at its declaration: tests/test_extract_cpp_member_initialised.py)
+    assert rows(result) == [("publish", "/tf", "tf2_msgs/msg/TFMessage", 9)]
 
 
 @pytest.mark.parametrize(("build_type", "depends", "version", "fmt"), [

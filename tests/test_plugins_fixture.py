@@ -108,10 +108,12 @@ def test_mavros_loads_every_exported_plugin_its_deny_list_lets_through():
                   and not p.name.startswith("/mavros/?")
                   and (p.setting is None or (p.setting, p.rosname.own) not in read_by_setting)]
     assert never_read == []
-    # the model's calls that no node of the process could be told for (the router's
-    # header code) are a node '?''s, not the first node's (/mavros/mavros) as a fact
+    # the model's calls that no node of the process could be told for were those of
+    # the UAS's and router's member declarations, built twice (a node '?''s); the
+    # members are built by the constructors' initialisers only (helper followups9's
+    # rebuilt model), so every call is a node's of the process
     assert {n.name for n in config.nodes if n.origin == "launch"} == {
-        "/mavros/mavros", "/mavros/mavros_router", "/mavros/mavros_node", "/mavros/?"}
+        "/mavros/mavros", "/mavros/mavros_router", "/mavros/mavros_node"}
     # the router's own calls are its node's (the model rebuilt with the delegating
     # constructor's name left out), no longer the first node's
     served = {(link.node.name, link.resource.name) for link in config.links

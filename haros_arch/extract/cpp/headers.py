@@ -117,6 +117,7 @@ UMBRELLAS = {
     "rclcpp_lifecycle/": "rclcpp_lifecycle/lifecycle_node.hpp",
     "rclcpp_components/": "rclcpp_components/register_node_macro.hpp",
     "rmw/": "rmw/qos_profiles.h", "tf2/": "tf2_ros/buffer.h", "tf2_ros/": "tf2_ros/buffer.h",
+    "rosidl_runtime_cpp/": "rosidl_runtime_cpp/traits.hpp",
     "rcl/": "rcl/haros_rcl.h", "rcutils/": "rcl/haros_rcl.h", "rcpputils/": "rcl/haros_rcl.h",
     "class_loader/": "class_loader/class_loader.hpp",
     "tf2_geometry_msgs/": "tf2_ros/buffer.h",

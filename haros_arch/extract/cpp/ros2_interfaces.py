@@ -107,8 +107,47 @@ def render(interface: Interface, kind: str) -> str:
                       "    using GoalStatusMessage = action_msgs::msg::GoalStatusArray;",
                       "    using CancelGoalService = action_msgs::srv::CancelGoal;", "  };"]
         lines.append("};")
-    lines += [f"}} }}  // namespace {pkg}::{kind}", "#endif", ""]
+    lines.append(f"}} }}  // namespace {pkg}::{kind}")
+    lines += traits(pkg, kind, name)
+    lines += ["#endif", ""]
     return "\n".join(lines)
+
+
+def traits(pkg: str, kind: str, name: str) -> list[str]:
+    """rosidl_generator_cpp's traits of an interface (``detail/*__traits.hpp``): each
+    message, a service's request and response, an action's goal, result and feedback
+    (and the messages of its services) is a message; the service, the action itself.
+    Code chooses overloads on them (autoware_utils' ``DebugPublisher::publish<T>``).
+    Given where rosidl_runtime_cpp's traits are declared (the rclcpp stand-in includes
+    them; a system's real header has the same guard)."""
+    scope = f"{pkg}::{kind}::"
+    if kind == "msg":
+        flags = [("is_message", name)]
+    elif kind == "srv":
+        flags = [("is_service", name), ("is_message", f"{name}_Request"),
+                 ("is_service_request", f"{name}_Request"),
+                 ("is_message", f"{name}_Response"),
+                 ("is_service_response", f"{name}_Response")]
+    else:
+        flags = [("is_action", name), ("is_message", f"{name}_Goal"),
+                 ("is_action_goal", f"{name}_Goal"), ("is_message", f"{name}_Result"),
+                 ("is_action_result", f"{name}_Result"), ("is_message", f"{name}_Feedback"),
+                 ("is_action_feedback", f"{name}_Feedback"),
+                 ("is_message", f"{name}_FeedbackMessage"),
+                 *((trait, f"{name}_{service}_{part}") for service in ("SendGoal", "GetResult")
+                   for trait, part in (("is_message", "Request"), ("is_message", "Response"))),
+                 *(("is_service", f"{name}_{service}") for service in ("SendGoal", "GetResult"))]
+    lines = ["#if __has_include(<rosidl_runtime_cpp/traits.hpp>)",
+             "#include <rosidl_runtime_cpp/traits.hpp>", "#endif",
+             "#ifdef ROSIDL_RUNTIME_CPP__TRAITS_HPP_"]
+    for trait, struct in flags:
+        # one guard per specialisation: the rclcpp stand-in specialises those of the
+        # messages it defines itself the same way
+        guard = f"HAROS_TRAIT_{trait}_{pkg}_{kind}_{struct}".upper()
+        lines += [f"#ifndef {guard}", f"#define {guard}",
+                  f"template<> struct rosidl_generator_traits::{trait}<{scope}{struct}>"
+                  " : std::true_type {};", "#endif"]
+    return [*lines, "#endif"]
 
 
 def _action_impl_parts(name: str) -> list[str]:

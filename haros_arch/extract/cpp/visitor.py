@@ -27,7 +27,7 @@ from ...model.source import ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
-from .call_sites import CallSites, base_keys
+from .call_sites import CallSites, base_keys, delegation
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
@@ -2833,6 +2833,8 @@ class CallFinder:
             # a class that takes arguments (camera_info_manager's, given a handle) is
             # made where a constructor initialises the member, whose call is that one
             return
+        if _initialised(field):
+            return  # each constructor builds it with its initialiser: that call is it
         self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
 
 
@@ -2852,6 +2854,47 @@ def _unread(cls: Cursor | None) -> bool:
     return cls is not None and from_standin(cls) and any(
         child.kind == CursorKind.ANNOTATE_ATTR and child.spelling == UNREAD
         for child in cls.get_children())
+
+
+def _initialised(field: Cursor) -> bool:
+    """Whether no constructor of the member's class builds ``field`` by default (nor by
+    its default member initialiser, which the declaration stands for): the class declares
+    constructors and each of them that this unit defines with a body names the member
+    among its initialisers or delegates to another constructor (mavros' ``Router``:
+    ``diagnostic_updater(this, 1.0)``, whose construction is the call); with none of
+    them defined here, the unit that defines them tells. A class with no constructor of
+    its own, or one that leaves the member out (or ``= default``), builds it by
+    default."""
+    owner = field.semantic_parent
+    if owner is None or field.kind != CursorKind.FIELD_DECL:
+        return False
+    if initializer(field) is not None:
+        # a default member initialiser (``Updater diagnostic_updater_{this};``,
+        # ``TransformListener tf_listener_{tf_buffer_};``) builds it wherever a
+        # constructor does not: the declaration stands for that construction in every
+        # unit that sees it (its walk as a function adds no second one)
+        return False
+    constructors = [c for c in owner.get_children() if c.kind == CursorKind.CONSTRUCTOR]
+    if not constructors:
+        return False
+    where = place_of(field)
+    for declared in constructors:
+        if declared.is_deleted_method():
+            continue
+        definition = declared.get_definition()
+        if definition is None:
+            continue
+        children = list(definition.get_children())
+        if not any(c.kind == CursorKind.COMPOUND_STMT for c in children):
+            if declared.is_copy_constructor() or declared.is_move_constructor():
+                continue  # copies the member
+            return False  # ``= default``: each member built by default
+        if delegation(definition) is not None:
+            continue
+        if not any(c.kind == CursorKind.MEMBER_REF and c.referenced is not None
+                   and place_of(c.referenced) == where for c in children):
+            return False
+    return True
 
 
 def _default_constructible(cls: Cursor) -> bool:

@@ -7,7 +7,8 @@ into the name argument of a ROS call (a row of ``api.ALL``, or of another wrappe
 *wrapper*: it gets a derived row of the same kind whose argument indexes are its own
 parameters (``Wrapper``). A call of it is then a ROS call at the call site, with the
 name, type (the call's template argument when the inner type is the wrapper's template
-parameter, or the value / callback it passes on), QoS, queue, default, handle and
+parameter, or, where the call writes none, the type of the argument that deduces it; or
+the value / callback it passes on), QoS, queue, default, handle and
 conditions of that call site, and under the conditions the call is under inside the
 wrapper (and inside each wrapper of a chain: ``if (use_extra_)`` around a second
 publisher the wrapper makes); the call inside the wrapper is no longer emitted on its
@@ -981,6 +982,14 @@ class Wrappers:
                 if decl is not None and decl.kind == CursorKind.TEMPLATE_TYPE_PARAMETER:
                     if templates and _key(decl) == _key(templates[0]):
                         sources.append(source)
+                        deduced = _deducing(params, templates[0]) if (
+                            source == "template" and type_arg is None) else None
+                        if deduced is not None:
+                            # a call site that writes no template argument: the type
+                            # deduced from its argument (autoware_utils'
+                            # ``DebugPublisher::publish(name, const T & data)``)
+                            sources.append("arg")
+                            type_arg = deduced
                     continue
             elif source in ("value", "arg") and spec.type_arg is not None:
                 index = passed(spec.type_arg)
@@ -989,6 +998,13 @@ class Wrappers:
                     if source == "value":
                         sources.append("template-value")
                     type_arg = index
+                    continue
+                if source == "arg" and templates and spec.type_arg + shift < len(args) and (
+                        _made_as(args[spec.type_arg + shift], templates[0])):
+                    # the argument is a value of the wrapper's first template parameter:
+                    # the call site's template argument (autoware_utils'
+                    # ``publish<T_msg>(name, to_debug_msg<T_msg>(data, stamp))``)
+                    sources.append("template")
                     continue
             elif source in ("callback", "service-callback") and (
                     passed(spec.callback_arg) is not None):
@@ -1407,6 +1423,52 @@ def _template_parameter_index(ref: Cursor | None, function: Cursor) -> int | Non
         of_class_template(function) and is_constructor(function)
     ) else _template_parameters(function)
     return next((i for i, p in enumerate(params) if _key(p) == where), None)
+
+
+def _deducing(params: list[Cursor], template: Cursor) -> int | None:
+    """The index of the function parameter of type ``template`` (``T``, ``const T &``,
+    ``T &&``): a call's argument there deduces it."""
+    for index, param in enumerate(params):
+        ptype = param.type
+        if ptype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            ptype = ptype.get_pointee()
+        # (clang exposes no declaration for it: the spelling, as ``_deduced_spec``)
+        if ptype.spelling.replace("const ", "").strip() == template.spelling:
+            return index
+    return None
+
+
+def _made_as(expr: Cursor, template: Cursor) -> bool:
+    """Whether ``expr`` is a value of the template type parameter ``template``: a call
+    of a function template that returns its own first template parameter, written with
+    ``template`` as that argument (``to_debug_msg<T_msg>(data, stamp)``), whose type
+    clang leaves dependent."""
+    expr = strip(expr)
+    if expr.kind != CursorKind.CALL_EXPR:
+        return False
+    ref = template_argument(expr)
+    given = ref.referenced if ref is not None else None
+    if given is None or given.kind != CursorKind.TEMPLATE_TYPE_PARAMETER or (
+            _key(given) != _key(template)):
+        return False
+    head = next(iter(expr.get_children()), None)
+    while head is not None and head.kind == CursorKind.UNEXPOSED_EXPR:
+        head = next(iter(head.get_children()), None)
+    if head is None:
+        return False
+    # a name looked up at instantiation (clang's unresolved lookup): the templates it
+    # may be are its first child's
+    names = next((c for c in head.get_children()
+                  if c.kind == CursorKind.OVERLOADED_DECL_REF), head)
+    called = overloads(names) if names.kind == CursorKind.OVERLOADED_DECL_REF else [
+        names.referenced]
+    for function in called:
+        if function is None or function.kind != CursorKind.FUNCTION_TEMPLATE:
+            return False
+        own = _template_parameters(function)
+        if not own or function.result_type.spelling != own[0].spelling:
+            return False
+    return bool(called)
 
 
 def _class_parameters(constructor: Cursor) -> list[Cursor]:

@@ -150,6 +150,52 @@ struct ParameterEvent {
 };
 #endif
 } }
+// rosidl's traits of the messages above, as ros2_interfaces.traits guards them
+#include <rosidl_runtime_cpp/traits.hpp>
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_FLOATINGPOINTRANGE
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_FLOATINGPOINTRANGE
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::FloatingPointRange> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_INTEGERRANGE
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_INTEGERRANGE
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::IntegerRange> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETERDESCRIPTOR
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETERDESCRIPTOR
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::ParameterDescriptor> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_SETPARAMETERSRESULT
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_SETPARAMETERSRESULT
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::SetParametersResult> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_LISTPARAMETERSRESULT
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_LISTPARAMETERSRESULT
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::ListParametersResult> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETERTYPE
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETERTYPE
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::ParameterType> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETERVALUE
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETERVALUE
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::ParameterValue> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETER
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETER
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::Parameter> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETEREVENT
+#define HAROS_TRAIT_IS_MESSAGE_RCL_INTERFACES_MSG_PARAMETEREVENT
+template<> struct rosidl_generator_traits::is_message<rcl_interfaces::msg::ParameterEvent> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_BUILTIN_INTERFACES_MSG_TIME
+#define HAROS_TRAIT_IS_MESSAGE_BUILTIN_INTERFACES_MSG_TIME
+template<> struct rosidl_generator_traits::is_message<builtin_interfaces::msg::Time> : std::true_type {};
+#endif
+#ifndef HAROS_TRAIT_IS_MESSAGE_BUILTIN_INTERFACES_MSG_DURATION
+#define HAROS_TRAIT_IS_MESSAGE_BUILTIN_INTERFACES_MSG_DURATION
+template<> struct rosidl_generator_traits::is_message<builtin_interfaces::msg::Duration> : std::true_type {};
+#endif
 namespace rclcpp {
 void init(int argc, char const* const argv[]);
 bool ok(std::shared_ptr<class Context> context = nullptr);
