@@ -291,13 +291,8 @@ def _index_statement(module: Module, loader: Loader, statement: ast.stmt) -> Non
         module.functions[statement.name] = FunctionInfo(statement, module)
     elif isinstance(statement, ast.ClassDef):
         module.classes[statement.name] = _class_info(statement, module)
-    elif isinstance(statement, ast.Assign):
-        for target in statement.targets:
-            if isinstance(target, ast.Name):
-                module.constants[target.id] = statement.value
-    elif isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name) \
-            and statement.value is not None:
-        module.constants[statement.target.id] = statement.value
+    elif isinstance(statement, ast.Assign | ast.AnnAssign):
+        _constant(statement, module.constants)
     elif isinstance(statement, ast.If | ast.Try):
         _index_guarded_imports(module, loader, statement)
         if isinstance(statement, ast.If):
@@ -344,14 +339,20 @@ def _class_info(statement: ast.ClassDef, module: Module) -> ClassInfo:
     for item in statement.body:
         if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
             info.methods[item.name] = FunctionInfo(item, module, info)
-        elif isinstance(item, ast.Assign):
-            for target in item.targets:
-                if isinstance(target, ast.Name):
-                    info.constants[target.id] = item.value
-        elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name) \
-                and item.value is not None:
-            info.constants[item.target.id] = item.value
+        elif isinstance(item, ast.Assign | ast.AnnAssign):
+            _constant(item, info.constants)
     return info
+
+
+def _constant(statement: ast.Assign | ast.AnnAssign, into: dict[str, ast.expr]) -> None:
+    """The names an assignment of a module or class body binds, with the expression
+    (``x = y = 1``, ``x: int = 1``; a bare annotation binds nothing)."""
+    if isinstance(statement, ast.Assign):
+        for target in statement.targets:
+            if isinstance(target, ast.Name):
+                into[target.id] = statement.value
+    elif isinstance(statement.target, ast.Name) and statement.value is not None:
+        into[statement.target.id] = statement.value
 
 
 def add_import(module: Module, loader: Loader, statement: ast.Import | ast.ImportFrom,
