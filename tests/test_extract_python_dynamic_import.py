@@ -3,8 +3,9 @@ the tool does not read (FlexBE's onboard engine imports each behavior it is sent
 ``__import__("tmp_%d" % msg.behavior_checksum)``, and runs its state machine, which reads
 the engine's ``~log_enabled``): ``PY_DYNAMIC_IMPORT`` at the call, and the node is
 partial, so its launch parameters are not "set but never read" for sure. A module of
-messages, a name known here, or a package asked only where it is
-(``__import__(pkg).__path__``, FlexBE's behavior library) is no such import."""
+messages, a name known here, a package asked only where it is
+(``__import__(pkg).__path__``, FlexBE's behavior library), or the module of a class
+(``t.__module__``, carla's ros_compatibility) is no such import."""
 
 from __future__ import annotations
 
@@ -39,6 +40,12 @@ def plugin(name):
     return importlib.import_module(name)
 
 
+def request_of(service_type):
+    module = ".".join(service_type.__module__.split(".")[:-1])
+    made = __import__(module, fromlist=[service_type.__name__ + "Request"])
+    return getattr(made, service_type.__name__ + "Request")()
+
+
 if __name__ == '__main__':
     rospy.init_node('engine')
     Engine()
@@ -46,6 +53,7 @@ if __name__ == '__main__':
     types = importlib.import_module(rospy.get_param('~pkg', 'y') + '.msg')
     known = __import__('os')
     where = __import__(rospy.get_param('~behaviors', 'z')).__path__[-1]
+    request = request_of(String)
     rospy.spin()
 """
 

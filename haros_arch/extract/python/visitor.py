@@ -1159,7 +1159,8 @@ class Walker:
             # package's ``__init__``
             return
         name = text_of(self.evaluator.eval(first, frame))
-        if name.is_known or name.text.endswith((".msg", ".srv", ".action")):
+        if name.is_known or name.text.endswith((".msg", ".srv", ".action")) or (
+                _loaded_module(first, frame.module.tree)):
             return
         where = self._where(frame, call)
         if where not in self._imports_said:  # a function walked twice: once
@@ -1202,6 +1203,31 @@ _ROS_TOOLS = frozenset({"rosrun", "roslaunch"})
 
 # a module's attributes that tell where it is
 _MODULE_PLACE = frozenset({"__path__", "__file__"})
+
+
+def _loaded_module(expr: ast.expr, tree: ast.Module) -> bool:
+    """Whether the module name ``expr`` computes is that of a class's module or of its
+    package (``".".join(service_type.__module__.split(".")[:-1])``, carla's
+    ros_compatibility getting a service's request class): a module already imported,
+    whose import runs nothing new. ``expr`` holds ``__module__``, or is a local of a
+    function every assignment of which does."""
+    if _of_module(expr):
+        return True
+    if not isinstance(expr, ast.Name):
+        return False
+    for function in ast.walk(tree):
+        if isinstance(function, ast.FunctionDef | ast.AsyncFunctionDef) and any(
+                node is expr for node in ast.walk(function)):
+            values = [node.value for node in ast.walk(function) if isinstance(node, ast.Assign)
+                      and any(isinstance(t, ast.Name) and t.id == expr.id
+                              for t in node.targets)]
+            return bool(values) and all(_of_module(v) for v in values)
+    return False
+
+
+def _of_module(expr: ast.expr) -> bool:
+    return any(isinstance(node, ast.Attribute) and node.attr == "__module__"
+               for node in ast.walk(expr))
 
 
 # the functions that import a module by its name (the first argument)
