@@ -620,7 +620,8 @@ CATALOGUE: dict[str, Entry] = {
         "named by a parameter. What that code communicates is not known, so the node "
         "is 'partial' and checks that claim something is absent do not decide on it. "
         "A name ending in .msg, .srv or .action (a package's message classes) does "
-        "not count, nor an import asked only where it is (``__import__(pkg).__path__``)."),
+        "not count, nor an import asked only where it is (``__import__(pkg).__path__``) "
+        "or of a class's module (``t.__module__``), imported already."),
     "PY_NODE_PARTIAL": Entry(
         "warning", "node {node}: its calls may be incomplete, {count} place(s) in its "
         "Python sources where calls may be missing or made by code not read (first: "
