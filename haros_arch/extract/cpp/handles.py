@@ -333,34 +333,24 @@ class Namespaces:
 
     def _global_writes_of(self, unit: Any) -> dict[tuple[str, int], list[Cursor]]:
         """The writes of the unit's global variables in its main file's functions (of
-        namespace scope: a class's own are not read), found once. Read on the unit's
-        nodes (``unit_root``, the visitor's: their children are made once for every
-        analysis) where they are known."""
-        if self._globals is None:
+        namespace scope: a class's own are not read), found once on the unit's nodes
+        (``unit_root``, the visitor's: their children are made once for every
+        analysis); none before the visitor has them."""
+        if self._globals is None and self.unit_root is not None:
             self._globals = {}
             main = unit.spelling if unit is not None else ""
-            if self.unit_root is not None:
-                def in_main(name: str) -> bool:
-                    return name == main
 
-                stack = children_in(self.unit_root, in_main)
-                while stack:
-                    node = stack.pop()
-                    if node.kind == CursorKind.NAMESPACE:
-                        stack.extend(children_in(node, in_main))
-                    elif node.kind in _FUNCTIONS and node.is_definition():
-                        self._global_writes(node)
-                return self._globals
-            stack = list(unit.cursor.get_children()) if unit is not None else []
+            def in_main(name: str) -> bool:
+                return name == main
+
+            stack = children_in(self.unit_root, in_main)
             while stack:
                 node = stack.pop()
-                if node.location.file is None or node.location.file.name != main:
-                    continue
                 if node.kind == CursorKind.NAMESPACE:
-                    stack.extend(node.get_children())
+                    stack.extend(children_in(node, in_main))
                 elif node.kind in _FUNCTIONS and node.is_definition():
                     self._global_writes(node)
-        return self._globals
+        return self._globals if self._globals is not None else {}
 
     def _global_elsewhere(self, decl: Cursor) -> str | None:
         """The placeholder of a global handle that this unit only declares (``extern
