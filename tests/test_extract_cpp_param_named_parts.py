@@ -50,8 +50,7 @@ def test_a_name_around_a_parameter_value_keeps_its_text(write_tree) -> None:
     assert calls == [
         ("client", "/?/base/clear", "~robot_name"),
         ("client", "/?/direct", "~robot_name"),
-        # two parameters: the first '?' is the first's value (survey Z23), the second
-        # stays unknown
+        # two parameters: each '?' a parameter's value (below)
         ("publish", "/?/?", "~first"),
         ("subscribe", "?/feedback", "~robot_name"),
     ]
@@ -63,10 +62,34 @@ def test_a_name_around_a_parameter_value_keeps_its_text(write_tree) -> None:
     assert sorted((link.kind, link.rosname.full) for link in config.links
                   if link.kind in ("client", "subscribe", "publish")) == [
         ("client", "/arm/base/clear"), ("client", "/arm/direct"),
-        # the value fills the first '?' only: the name keeps its second
+        # the second parameter not set: the name keeps its second '?'
         ("publish", "/left/?"), ("subscribe", "/arm/feedback")]
     # the parameter set, the second '?' is no parameter left unset
     assert "NAME_PARAM_UNSET" not in [d.code for d in config.diagnostics]
+
+
+def test_a_name_of_two_parameter_values_takes_both(write_tree) -> None:
+    """``"/" + first + "/" + second``, each read from a parameter: the second ``?`` is the
+    second parameter's (``name_more``), as a Python name of several parameters is; the
+    graph fills each from the configuration and leaves ``?`` where one is not given
+    (ros_kortex's ``"/" + robot_name + "/" + prefix + ...``; survey Z23 filled the first
+    only)."""
+    root = write_tree({"ex/package.xml": package_xml("ex"), "ex/src/node.cpp": NODE})
+    result = extract_cpp([str(root / "ex" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    [publish] = [c for c in result.calls if c.kind == "publish"]
+    assert (publish.name, publish.name_param, publish.name_more) == (
+        "/?/?", "~first", [["~second", None]])
+    node = Node("ex", "ex", calls=list(result.calls))
+    for given, expected in ((["left", "right"], "/left/right"), (["left"], "/left/?"),
+                            ([], "/?/?")):
+        config = build(Configuration("c"), LaunchModel(
+            nodes=[NodeDecl("/ex", "ex", "ex")],
+            params=[ParamDecl(f"/ex/{key}", value, "str")
+                    for key, value in zip(("first", "second"), given)]),
+            Workspace(root="/nowhere"), {node.name: node})
+        assert [link.rosname.full for link in config.links if link.kind == "publish"] == [
+            expected]
 
 
 MEMBER_NODE = """

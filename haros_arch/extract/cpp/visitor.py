@@ -122,10 +122,12 @@ _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[
 # where a call's name comes from: a ``Source`` (the parameter, its default, the
 # parameter the default holds), then ``EACH`` when the name is each element of that list
 # parameter in turn (PrimitiveCall.name_each) and the (line, column) of the range-based
-# for that walks it
+# for that walks it, then the parameters whose values fill the name's further ``?``, one
+# each in order ([parameter, its default]: ``PrimitiveCall.name_more``)
 # ``PrimitiveCall.stores`` of a read into a member the unit also writes otherwise
 OTHER_WRITES = "!"
-NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None]
+NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None,
+                   list[list[str | None]] | None]
 EACH = "."
 
 
@@ -422,6 +424,9 @@ class CallFinder:
                 call.name_param in self._declared
             ):
                 call.name_default, call.default_param = self._declared[call.name_param]
+            if call.name_more:  # and each further parameter of the name the same way
+                call.name_more = [[p, d if d is not None or p not in self._declared
+                                   else self._declared[p][0]] for p, d in call.name_more]
 
     def _uses(self) -> list[tuple[str, str]]:
         """(owner, owner of the workspace function it calls or names) for each function
@@ -1840,8 +1845,8 @@ class CallFinder:
         # target_layer(nh, plugin_name)``, ``plugin_name`` each ``plugins[i]["name"]``)
         each = self._each_element(unknown_from[0], unknown_from[1]) if (
             one_unknown and unknown_from is not None and held is None) else None
-        held_source = (*held, None, None) if held is not None else (
-            (each[0], None, None, each[2], each[1]) if each is not None
+        held_source = (*held, None, None, None) if held is not None else (
+            (each[0], None, None, each[2], each[1], None) if each is not None
             and each[0] is not None else None)
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
@@ -1886,6 +1891,7 @@ class CallFinder:
                 name_default=source[1] if source else holds[0],
                 default_param=source[2] if source else holds[1],
                 name_each=source[3] if source else None,
+                name_more=source[5] if source else None,
                 has_default=has_default or isinstance(written, PrefixName),
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
                 searched=spec.searched or isinstance(written, SearchedName) or (
@@ -2112,14 +2118,14 @@ class CallFinder:
             # gives it, in the place of the ``?`` (graph.element_calls); or each word of
             # a string parameter (``while (ss >> source)``, ``EACH_WORD``)
             listed, at, mark = each
-            return (name, (listed, None, None, mark, at) if listed is not None else None)
+            return (name, (listed, None, None, mark, at, None) if listed is not None else None)
         searched = self._searched_key_source(inner, scope)
         if searched is not None:
             # the name ``searchParam(key, name)`` found for a key a parameter holds
             # (arm_kinematics' ``nh.param("urdf_xml", urdf_xml, ...)`` then
             # ``searchParam(urdf_xml, full)`` and ``getParam(full, ...)``): the read of
             # the parameter searched for, named as that parameter's value is
-            return (SearchedName(name), (*searched, None, None))
+            return (SearchedName(name), (*searched, None, None, None))
         # a parameter's value: the graph puts it in the place of the ``?``
         source = self._parameter_source(expr, scope, 0)
         if source is None and len(unknown) == 1 and unknown[0] is not inner:
@@ -2133,7 +2139,7 @@ class CallFinder:
             operands = _unknown_operands(held, scope) if held is not None else []
             if len(operands) == 1:
                 source = self._parameter_source(operands[0], scope, 0)
-        return (name, None if source is None else (*source, None, None))
+        return (name, None if source is None else (*source, None, None, None))
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
                       ) -> tuple[str | None, tuple[int, int] | None, str] | None:
@@ -2189,13 +2195,20 @@ class CallFinder:
     def _first_parameter(self, expr: Cursor, scope: Scope, runs: int) -> NameSource | None:
         """A name of several unknown runs whose first is a parameter's value
         (mrpt_map_server's ``pub_mm_topic_ + "/" + layerName + "_gridmap"``): the
-        parameter, which the graph puts in the place of the first ``?``; None when the
-        first run is anything else, or the runs are not one operand each."""
+        parameter, which the graph puts in the place of the first ``?``, and when every
+        other run is a parameter's value too (ros_kortex's ``"/" + robot_name + "/" +
+        prefix + ...``), those parameters for the other ``?`` in order (``name_more``);
+        None when the first run is anything else, or the runs are not one operand each."""
         unknown = _unknown_operands(expr, scope)
         if len(unknown) != runs:
             return None
         source = self._parameter_source(unknown[0], scope, 0)
-        return None if source is None else (*source, None, None)
+        if source is None:
+            return None
+        others = [self._parameter_source(each, scope, 0) for each in unknown[1:]]
+        more = [[other[0], other[1]] for other in others
+                if other is not None and known_name(other[0])]
+        return (*source, None, None, more if more and len(more) == len(others) else None)
 
     def _name_member(self, expr: Cursor | None) -> str | None:
         """The USR of the member ``expr`` is, when no function of this unit writes it
