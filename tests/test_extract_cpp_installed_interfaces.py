@@ -212,3 +212,24 @@ IkNode::IkNode() : rclcpp::Node("ik") {
     assert [(c.kind, c.name, c.type) for c in result.calls] == [
         ("client", "compute_ik", "moveit_msgs/srv/GetPositionIK"),
         ("publish", "out", "std_msgs/msg/Float64")]
+
+
+def test_pcl_and_geographic_messages_come_from_the_catalogue(write_tree) -> None:
+    """pcl_msgs and geographic_msgs, installed with pcl_ros and geographic_info, are in the
+    catalogue (ROS 1 and ROS 2): their fields parse. Without them a node reading
+    ``indices.indices`` was partial (Autoware's pointcloud preprocessor filters), and an
+    error in a call's arguments cost the call."""
+    ros2 = _extract(write_tree, "ros2_pcl_geographic.cpp", "ament_cmake", "humble")
+    assert _errors(ros2) == []
+    assert sorted((c.kind, c.name, c.type) for c in ros2.calls) == [
+        ("publish", "altitude", "std_msgs/msg/Float64"),
+        ("publish", "altitude_in_frame", "std_msgs/msg/Float64"),
+        ("publish", "inliers", "pcl_msgs/msg/PointIndices"),
+        ("subscribe", "fix", "geographic_msgs/msg/GeoPointStamped")]
+    jazzy = _extract(write_tree, "ros2_pcl_geographic.cpp", "ament_cmake", "jazzy")
+    assert _errors(jazzy) == []
+    ros1 = _extract(write_tree, "ros1_pcl_geographic.cpp", "catkin", "noetic")
+    assert _errors(ros1) == []
+    assert sorted((c.kind, c.name, c.type) for c in ros1.calls) == [
+        ("publish", "plane", "pcl_msgs/ModelCoefficients"),
+        ("subscribe", "fix", "geographic_msgs/GeoPointStamped")]
