@@ -87,12 +87,15 @@ def render(interface: Interface, kind: str) -> str:
         parts = ("Request", "Response")
     elif kind == "action":
         parts = ("Goal", "Result", "Feedback")
+    built: list[tuple[str, list[Field]]] = []  # the structs given a builder
     if not parts:
         lines += _struct(name, sections[0], pkg, kind, interface.known)
+        built.append((name, sections[0]))
     else:
         sections = [*sections, [], [], []][:len(parts)]
         for part, fields in zip(parts, sections, strict=True):
             lines += _struct(f"{name}_{part}", fields, pkg, kind, interface.known)
+            built.append((f"{name}_{part}", fields))
         if kind == "action":
             lines += _action_impl_parts(name)
         lines.append(f"struct {name} {{")
@@ -107,10 +110,43 @@ def render(interface: Interface, kind: str) -> str:
                       "    using GoalStatusMessage = action_msgs::msg::GoalStatusArray;",
                       "    using CancelGoalService = action_msgs::srv::CancelGoal;", "  };"]
         lines.append("};")
+    if interface.known:
+        lines += [line for struct, fields in built for line in _initialisers(struct, fields)]
     lines.append(f"}} }}  // namespace {pkg}::{kind}")
+    if interface.known:
+        lines += _builders(pkg, kind, built)
     lines += traits(pkg, kind, name)
     lines += ["#endif", ""]
     return "\n".join(lines)
+
+
+def _initialisers(struct: str, fields: list[Field]) -> list[str]:
+    """rosidl_generator_cpp's builder of a struct (``detail/*__builder.hpp``): one class
+    per field, in the definition's order, whose method named after the field takes its
+    value and gives the next field's class, the last one the struct itself
+    (``geometry_msgs::build<Pose>().position(p).orientation(q)`` is a ``Pose``), in the
+    namespace ``builder`` of the struct's."""
+    names = [fld.name for fld in fields if fld.constant is None]
+    lines = ["namespace builder {"]
+    for index in range(len(names) - 1, -1, -1):
+        field = names[index]
+        after = f"Init_{struct}_{names[index + 1]}" if index + 1 < len(names) else struct
+        lines += [f"class Init_{struct}_{field} {{", "public:",
+                  f"  {after} {field}({struct}::_{field}_type arg);", "};"]
+    return [*lines, "}  // namespace builder"]
+
+
+def _builders(pkg: str, kind: str, built: list[tuple[str, list[Field]]]) -> list[str]:
+    """rosidl's ``pkg::build<T>()`` of each struct: its first field's builder class, or
+    the struct itself when it has no field (declared again by every header of the
+    package, as the generated headers do)."""
+    lines = [f"namespace {pkg} {{", "template<class MessageType> auto build();"]
+    for struct, fields in built:
+        names = [fld.name for fld in fields if fld.constant is None]
+        made = f"{kind}::builder::Init_{struct}_{names[0]}" if names else f"{kind}::{struct}"
+        lines.append(f"template<> inline auto build<::{pkg}::{kind}::{struct}>() "
+                     f"{{ return {made}(); }}")
+    return [*lines, f"}}  // namespace {pkg}"]
 
 
 def traits(pkg: str, kind: str, name: str) -> list[str]:

@@ -221,6 +221,8 @@ public:
   Mat cross(const Mat& m) const;
   Mat& setTo(const Scalar& value);
   Mat& setTo(const Scalar& value, const Mat& mask);
+  // any array value (``img.setTo(cv::Vec3b(0, 0, 255), mask)``: OpenCV's InputArray)
+  template<class V> Mat& setTo(const V& value, const Mat& mask);
   void push_back(const Mat& m);
   int checkVector(int channels, int depth = -1, bool continuous = true) const;
   Mat getMat(int index = -1) const;  // InputArray's, which is a Mat here

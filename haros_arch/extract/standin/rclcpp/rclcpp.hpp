@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include <filesystem>
 #include <rmw/qos_profiles.h>
 #include <rcl/haros_rcl.h>
 #include <rclcpp/serialization.hpp>
@@ -542,6 +543,7 @@ public:
   bool wait_for_all_acked(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1)) const;
   size_t get_subscription_count() const;
   size_t get_intra_process_subscription_count() const;
+  const rmw_gid_t& get_gid() const;
 };
 template<class M, class A = void> class Publisher : public PublisherBase {
 public:
@@ -659,7 +661,12 @@ public:
   bool is_canceled();
   std::shared_ptr<void> call();
   void execute_callback(const std::shared_ptr<void>& data);
+  std::shared_ptr<const rcl_timer_t> get_timer_handle();
+  std::chrono::nanoseconds time_until_trigger();
+  bool is_ready();
 };
+// the folder of the process's log files (rclcpp/logging.hpp)
+std::filesystem::path get_logging_directory();
 template<class F, class = void> class GenericTimer : public TimerBase {
 public: RCLCPP_SMART_PTR_DEFINITIONS(GenericTimer) };
 template<class F> class WallTimer : public TimerBase { public: RCLCPP_SMART_PTR_DEFINITIONS(WallTimer) };

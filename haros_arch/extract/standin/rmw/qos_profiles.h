@@ -21,6 +21,11 @@ typedef enum { RMW_UNIQUE_NETWORK_FLOW_ENDPOINTS_NOT_REQUIRED = 0,
                RMW_UNIQUE_NETWORK_FLOW_ENDPOINTS_SYSTEM_DEFAULT
 } rmw_unique_network_flow_endpoints_requirement_t;
 typedef struct rmw_time_t { unsigned long long sec; unsigned long long nsec; } rmw_time_t;
+// rmw/types.h: a publisher's global id (rclcpp's ``PublisherBase::get_gid``)
+#define RMW_GID_STORAGE_SIZE 16u
+typedef struct rmw_gid_t {
+  const char* implementation_identifier; unsigned char data[RMW_GID_STORAGE_SIZE];
+} rmw_gid_t;
 #define RMW_QOS_POLICY_DEPTH_SYSTEM_DEFAULT 0
 #define RMW_QOS_DEADLINE_DEFAULT {0, 0}
 #define RMW_QOS_LIFESPAN_DEFAULT {0, 0}

@@ -22,6 +22,9 @@ using ::cos; using ::tan; using ::asin; using ::acos; using ::atan; using ::atan
 using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using ::fmod;
 using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
 using ::isnan; using ::isinf; using ::isfinite; using ::signal;
+using ::memcmp; using ::memmove; using ::vsnprintf;
+bool signbit(float x); bool signbit(double x); bool signbit(long double x);
+template<class I> bool signbit(I x);  // an integer, as a double
 using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
 using ::isupper; using ::islower; using ::ispunct; using ::isxdigit; using ::toupper;
 using ::tolower; using ::hypotf; using ::nan; using ::nanf;
@@ -304,6 +307,16 @@ template<class F, class... A> struct is_invocable {
   static constexpr bool value = decltype(test<F>(0))::value;
 };
 template<class F, class... A> constexpr bool is_invocable_v = is_invocable<F, A...>::value;
+// std::invoke (C++17): a callable with its arguments (Autoware's ``const auto x =
+// std::invoke([&]() { ... });``), or a member function on an object; std::exchange (C++14)
+template<class F, class... A> auto invoke(F&& f, A&&... a) -> decltype(declval<F>()(declval<A>()...));
+template<class R, class C, class... P, class O, class... A> R invoke(R (C::*m)(P...), O&& o, A&&... a);
+template<class R, class C, class... P, class O, class... A> R invoke(R (C::*m)(P...) const, O&& o, A&&... a);
+template<class T, class U = T> T exchange(T& obj, U&& value);
+template<class T> struct remove_extent { typedef T type; };
+template<class T> struct remove_extent<T[]> { typedef T type; };
+template<class T, size_t N> struct remove_extent<T[N]> { typedef T type; };
+template<class T> using remove_extent_t = typename remove_extent<T>::type;
 template<class F, class T> decltype(auto) apply(F&& f, T&& t);
 template<class T> const T& as_const(T& t) noexcept;
 template<class It> struct reverse_iterator {
@@ -634,6 +647,7 @@ template<class T, size_t N> struct array {
   T& operator[](size_t i);
   const T& operator[](size_t i) const;
   T& at(size_t i);
+  const T& at(size_t i) const;
   constexpr size_t size() const;
   bool empty() const;
   T* data();
@@ -914,6 +928,9 @@ template<class M, class N> constexpr auto lcm(M m, N n) -> decltype(m + n);
 template<class It> It prev(It it, ptrdiff_t n = 1);
 template<class C> auto begin(C& c) -> decltype(c.begin());
 template<class C> auto end(C& c) -> decltype(c.end());
+template<class C> auto cbegin(const C& c) -> decltype(c.begin());
+template<class C> auto cend(const C& c) -> decltype(c.end());
+template<class It> It make_move_iterator(It it);
 template<class T, size_t N> T* begin(T (&a)[N]);
 template<class T, size_t N> T* end(T (&a)[N]);
 template<class It> ptrdiff_t distance(It first, It last);
@@ -983,6 +1000,8 @@ public:
   explicit operator bool() const noexcept;
 };
 template<class T, class U> bool operator==(const shared_ptr<T>& a, const shared_ptr<U>& b);
+template<class T, class U> bool operator!=(const shared_ptr<T>& a, const shared_ptr<U>& b);
+template<class T, class U> bool operator<(const shared_ptr<T>& a, const shared_ptr<U>& b);
 template<class T> bool operator==(const shared_ptr<T>& a, nullptr_t);
 template<class T> bool operator!=(const shared_ptr<T>& a, nullptr_t);
 template<class T> bool operator==(nullptr_t, const shared_ptr<T>& a);
@@ -1382,6 +1401,9 @@ public:
   long tellg();
   long gcount() const;
   istream& operator>>(istream& (*manip)(istream&));
+  // the format flags, which the stand-in declares as output manipulators
+  // (``std::istringstream(text) >> std::boolalpha >> flag``)
+  istream& operator>>(ostream& (*manip)(ostream&));
 };
 class iostream : public ostream, public istream {};
 // <iterator>'s stream iterators
@@ -1421,6 +1443,8 @@ public:
 istream& getline(istream& is, string& s);
 istream& getline(istream& is, string& s, char delim);
 istream& ws(istream& is);
+istream& skipws(istream& is);
+istream& noskipws(istream& is);
 ostream& endl(ostream& os);
 ostream& flush(ostream& os);
 ostream& fixed(ostream& os);
@@ -1798,7 +1822,13 @@ template<class T, class... V> bool holds_alternative(const variant<V...>& v) noe
 template<class T, class... V> T& get(variant<V...>& v);
 template<class T, class... V> const T& get(const variant<V...>& v);
 template<class T, class... V> T* get_if(variant<V...>* v) noexcept;
-template<class F, class... V> auto visit(F&& f, V&&... v) -> decltype(f(0));
+// the visitor called with each variant's first alternative (a generic lambda's body is
+// read as written: ``[&](auto & var) { ... }``)
+template<class V> struct haros_first_alternative;
+template<class T0, class... T> struct haros_first_alternative<variant<T0, T...>> {
+  typedef T0 type; };
+template<class F, class... V> auto visit(F&& f, V&&... v) -> decltype(f(
+    declval<typename haros_first_alternative<typename decay<V>::type>::type&>()...));
 struct monostate {};
 inline constexpr size_t variant_npos = static_cast<size_t>(-1);
 template<class T> struct variant_size;
@@ -1835,6 +1865,8 @@ public:
 };
 typedef haros_engine<unsigned int> mt19937;
 typedef haros_engine<unsigned long long> mt19937_64;
+template<class E, size_t W, class U> class independent_bits_engine : public haros_engine<U> {
+public: independent_bits_engine(); explicit independent_bits_engine(U seed); };
 typedef haros_engine<unsigned int> default_random_engine;
 typedef haros_engine<unsigned int> minstd_rand;
 template<class T = double> class uniform_real_distribution {

@@ -86,9 +86,9 @@ public:
 class Vector3 {
 public:
   Vector3(); Vector3(double x, double y, double z);
-  double x() const; double y() const; double z() const;
+  double x() const; double y() const; double z() const; double w() const;
   double getX() const; double getY() const; double getZ() const;
-  void setX(double v); void setY(double v); void setZ(double v);
+  void setX(double v); void setY(double v); void setZ(double v); void setW(double v);
   void setValue(double x, double y, double z);
   double length() const; double length2() const;
   Vector3 operator+(const Vector3& v) const; Vector3 operator-(const Vector3& v) const;
@@ -168,6 +168,9 @@ public:
 double angle(const Quaternion& a, const Quaternion& b);
 Vector3 quatRotate(const Quaternion& rotation, const Vector3& v);
 Quaternion slerp(const Quaternion& a, const Quaternion& b, double t);
+Vector3 lerp(const Vector3& a, const Vector3& b, double t);
+// tf2/utils.h: a quaternion's (or a message's) yaw, pitch and roll
+template<class A> void getEulerYPR(const A& a, double& yaw, double& pitch, double& roll);
 Quaternion inverse(const Quaternion& q);
 double dot(const Quaternion& a, const Quaternion& b);
 Quaternion shortestArcQuat(const Vector3& a, const Vector3& b);
@@ -220,6 +223,11 @@ public:
   std::string allFramesAsYAML() const;
   void getFrameStrings(std::vector<std::string>& ids) const;
   bool _frameExists(const std::string& frame_id_str) const;
+  // what a Buffer looks up, on the core itself (a ``tf2::BufferCore`` member)
+  template<class S, class T, class... A> haros_standin::any_transform_stamped lookupTransform(
+      const std::string& target, const S& source, const T& time, const A&... more) const;
+  template<class S, class T, class... A> bool canTransform(const std::string& target,
+      const S& source, const T& time, const A&... more) const;
 };
 }
 // ROS 2's tf2_ros: a tf2 time or duration as a builtin_interfaces message and back
