@@ -114,3 +114,49 @@ def test_a_compile_command_of_cxx20_is_parsed(write_tree) -> None:
     plain = next(n for p in model.packages for n in p.nodes if n.executable == "plain")
     assert [c.name for c in plain.calls if c.kind == "publish"] == ["cxx20"]
     assert not [d for d in model.diagnostics if d.code == "CPP_PARSE_FAILED"]
+
+
+CONCEPTS = """
+#include <concepts>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <vector>
+
+template<class T> concept Sized = requires(T v) {
+  { v.size() } -> std::convertible_to<std::size_t>;
+};
+
+template<std::integral Q, Sized V>
+void advertise(rclcpp::Node& node, Q depth, const V& topics) {
+  static_assert(std::same_as<Q, int> && !std::floating_point<Q>);
+  auto pub = node.create_publisher<std_msgs::msg::String>("sized", depth + topics.size());
+}
+
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("n");
+  advertise(*node, 10, std::vector<int>{});
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_the_standard_s_concepts(write_tree) -> None:
+    """vortex-utils' and vortex-vkf's concepts (``std::convertible_to``, ...) of
+    ``<concepts>``, which the stand-ins lacked: a C++20 unit reads them."""
+    root = write_tree({
+        "src/conc/package.xml": package_xml("conc", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"),
+        "src/conc/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(conc)\n"
+                                   "set(CMAKE_CXX_STANDARD 20)\n"
+                                   "add_executable(conc src/conc.cpp)\nament_package()\n",
+        "src/conc/src/conc.cpp": CONCEPTS,
+        "project.yaml": "project: p\nconfigurations: {}\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    (node,) = [n for p in model.packages for n in p.nodes]
+    assert [c.name for c in node.calls if c.kind == "publish"] == ["sized"]
+    assert [(d.location.line, d.message) for d in model.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED")] == []
+    assert node.completeness == "complete"
