@@ -118,6 +118,7 @@ def test_a_compile_command_of_cxx20_is_parsed(write_tree) -> None:
 
 CONCEPTS = """
 #include <concepts>
+#include <Eigen/Dense>
 #include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/string.hpp>
 #include <vector>
@@ -129,6 +130,7 @@ template<class T> concept Sized = requires(T v) {
 template<std::integral Q, Sized V>
 void advertise(rclcpp::Node& node, Q depth, const V& topics) {
   static_assert(std::same_as<Q, int> && !std::floating_point<Q>);
+  Eigen::Vector<double, 3> offset = Eigen::Vector3<double>::Zero();
   auto pub = node.create_publisher<std_msgs::msg::String>("sized", depth + topics.size());
 }
 
@@ -143,7 +145,8 @@ int main(int argc, char** argv) {
 
 def test_the_standard_s_concepts(write_tree) -> None:
     """vortex-utils' and vortex-vkf's concepts (``std::convertible_to``, ...) of
-    ``<concepts>``, which the stand-ins lacked: a C++20 unit reads them."""
+    ``<concepts>``, which the stand-ins lacked: a C++20 unit reads them; and Eigen
+    3.4's alias templates (``Eigen::Vector<double, 3>``)."""
     root = write_tree({
         "src/conc/package.xml": package_xml("conc", "ament_cmake").replace(
             "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"),
