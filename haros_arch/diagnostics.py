@@ -622,6 +622,17 @@ CATALOGUE: dict[str, Entry] = {
         "A name ending in .msg, .srv or .action (a package's message classes) does "
         "not count, nor an import asked only where it is (``__import__(pkg).__path__``) "
         "or of a class's module (``t.__module__``), imported already."),
+    "PY_CALL_DEPTH": Entry(
+        "info", "the call of {call} is not followed, {depth} calls deep; ROS calls it "
+        "may make are not read here",
+        "The Python walk follows a node's calls into the package's own functions and "
+        "methods (with the arguments given) up to a depth; a call deeper than that is "
+        "not followed, its function walked alone, with its parameters and the object "
+        "it is called on not known, so a publisher it makes on a node it was handed "
+        "(carla's actors, built five calls down from the bridge) may be lost. Said only "
+        "where the function, or one it calls by name, may reach a call of the ROS API; "
+        "the node is 'partial' and checks that claim something is absent do not "
+        "decide on it."),
     "PY_NODE_PARTIAL": Entry(
         "warning", "node {node}: its calls may be incomplete, {count} place(s) in its "
         "Python sources where calls may be missing or made by code not read (first: "
@@ -629,7 +640,8 @@ CATALOGUE: dict[str, Entry] = {
         "A source of the node could not be read or parsed, or was too large to analyse, "
         "or the node builds a class whose code is not read (PY_CLASS_UNSEEN), runs "
         "roslaunch in its process (PY_LAUNCHES) or with a command (PY_RUNS_ROS_TOOL), "
-        "or imports a module by a computed name (PY_DYNAMIC_IMPORT): calls may be "
+        "or imports a module by a computed name (PY_DYNAMIC_IMPORT), or calls "
+        "deeper than the walk follows (PY_CALL_DEPTH): calls may be "
         "missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),

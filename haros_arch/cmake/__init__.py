@@ -277,6 +277,42 @@ def _source_definitions(package: Package, workspace: Workspace
     return found
 
 
+# the C++ standard the parse uses unless told another (``toolchain.base_arguments``);
+# the stand-in headers are written for it, so an older one a package asks is read so too
+DEFAULT_STANDARD = 17
+
+
+def source_standards(package: Package, workspace: Workspace) -> dict[str, str]:
+    """Each C/C++ source of the package's targets (workspace-relative) whose targets ask
+    a C++ standard newer than ``DEFAULT_STANDARD`` -> its ``-std`` value (``c++20``): a
+    target's own (``CXX_STANDARD``, from ``CMAKE_CXX_STANDARD`` when it is made, or a
+    ``-std=`` flag) or the newest that its ``target_compile_features(cxx_std_NN)`` and
+    the PUBLIC and INTERFACE ones of the package's libraries it links require, as CMake
+    takes the newer of them; the newest of the targets that compile the source."""
+    return remembered("compile standards", package.root, workspace,
+                      lambda: _source_standards(package, workspace))
+
+
+def _source_standards(package: Package, workspace: Workspace) -> dict[str, str]:
+    if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return {}
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files)
+    sources = SourceMap(interpreter, files)
+    newest: dict[str, int] = {}
+    for target in interpreter.targets.values():
+        years = [target.standard or 0,
+                 *(year for keyword, year in target.features if keyword != "INTERFACE"),
+                 *(year for linked in sources.closure(target)[1:]
+                   for keyword, year in linked.features if keyword != "PRIVATE")]
+        year = max(years)
+        if year <= DEFAULT_STANDARD or year == 98:
+            continue
+        for source in sources.own(target):
+            newest[source] = max(newest.get(source, 0), year)
+    return {source: f"c++{year}" for source, year in newest.items()}
+
+
 def source_include_dirs(package: Package, workspace: Workspace) -> dict[str, list[str]]:
     """Each C/C++ source of the package's targets (workspace-relative) -> the include
     folders the compile lines of the targets that compile it give, in order: each

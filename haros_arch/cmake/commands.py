@@ -413,6 +413,9 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         directory_definitions=it.compile_definitions[-1],
         definitions=[("PRIVATE", each) for each in it.compile_options[-1]],
         directory_includes=it.include_directories[-1])
+    target.standard = cxx_standard(it.get("CMAKE_CXX_STANDARD"))
+    for word in (it.get("CMAKE_CXX_FLAGS") or "").split():
+        target.standard = std_flag(word) or target.standard
     if command.name.lower().startswith("ament_auto_add_"):
         target.auto = True
         # ament_cmake_auto links the package's earlier ament_auto libraries unless told
@@ -480,6 +483,39 @@ def _target_compile_options(it: Interpreter, command: Invocation, args: list[str
     if target is None or not command.args:
         return
     target.definitions.extend(_definitions(it, command, command.args[1:], "-D"))
+    for word in args[1:]:
+        target.standard = std_flag(word) or target.standard
+
+
+@handles("target_compile_features")
+def _target_compile_features(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``cxx_std_NN``: the target's sources (PRIVATE, PUBLIC) and those of the targets
+    that link it (PUBLIC, INTERFACE) are compiled with C++NN at least."""
+    target = it.targets.get(it.aliases.get(args[0], args[0])) if args else None
+    if target is None:
+        return
+    keyword = "PRIVATE"
+    for word in args[1:]:
+        if word in _DEFINITION_KEYWORDS:
+            keyword = word
+        elif word.startswith("cxx_std_") and (year := cxx_standard(word[8:])):
+            target.features.append((keyword, year))
+
+
+# the C++ standards as CMake and the compilers name them, by year
+_YEARS = {"98": 98, "03": 98, "11": 11, "0x": 11, "14": 14, "1y": 14, "17": 17, "1z": 17,
+          "20": 20, "2a": 20, "23": 23, "2b": 23, "26": 26, "2c": 26}
+
+
+def cxx_standard(value: str | None) -> int | None:
+    """The year of a ``CXX_STANDARD`` value (``20``), None when not one."""
+    return _YEARS.get((value or "").strip())
+
+
+def std_flag(word: str) -> int | None:
+    """The year of a compiler's ``-std=c++20`` / ``-std=gnu++2a`` word, else None."""
+    match = re.fullmatch(r"-std=(?:c|gnu)\+\+(\w\w)", word)
+    return _YEARS.get(match.group(1)) if match else None
 
 
 @handles("target_compile_definitions")
@@ -599,7 +635,7 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
 IGNORED = frozenset({
     "project", "cmake_minimum_required",
     "link_directories", "add_dependencies",
-    "target_compile_features", "ament_package", "message",
+    "ament_package", "message",
     "add_custom_target", "add_custom_command", "add_test",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",
     "rosidl_generate_interfaces", "ament_export_dependencies", "ament_export_include_directories",
@@ -806,6 +842,10 @@ def _set_target_properties(it: Interpreter, command: Invocation, args: list[str]
             for name in args[:split]:
                 if name in it.targets:
                     it.targets[name].output_name = value
+        if key == "CXX_STANDARD":
+            for name in args[:split]:
+                if name in it.targets:
+                    it.targets[name].standard = cxx_standard(value)
 
 
 @handles("set_property")
@@ -818,6 +858,10 @@ def _set_property(it: Interpreter, command: Invocation, args: list[str]) -> None
         for name in args[1:at]:
             if name in it.targets:
                 it.targets[name].output_name = args[at + 2]
+    if args[at + 1:at + 2] == ["CXX_STANDARD"] and len(args) > at + 2:
+        for name in args[1:at]:
+            if name in it.targets:
+                it.targets[name].standard = cxx_standard(args[at + 2])
 
 
 # -- installed programs and components ------------------------------------------

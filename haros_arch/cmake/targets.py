@@ -53,6 +53,13 @@ class Target:
     # the if()s around it the reading did not decide (``commands.include_folders``)
     directory_includes: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
     includes: list[tuple[str, str, tuple[Condition, ...]]] = field(default_factory=list)
+    # the C++ standard its CXX_STANDARD property asks (from ``CMAKE_CXX_STANDARD`` when it
+    # is made, ``set_property`` / ``set_target_properties``, a ``-std=`` of
+    # ``CMAKE_CXX_FLAGS`` or its compile options), as a year (17, 20, 23); and those its
+    # ``target_compile_features(cxx_std_NN)`` require, each with its keyword (PUBLIC and
+    # INTERFACE ones also the targets that link it)
+    standard: int | None = None
+    features: list[tuple[str, int]] = field(default_factory=list)
 
 
 @dataclass

@@ -52,6 +52,18 @@ def cmake_flags(source: str, workspace: Workspace) -> list[str]:
     return _cmake_macros(source, workspace)[0]
 
 
+def cmake_standard(source: str, workspace: Workspace) -> str | None:
+    """The ``-std`` value (``c++20``) the CMake targets that compile ``source`` (an
+    absolute path) ask when newer than the parse's default (``cmake.source_standards``);
+    None for the default."""
+    from ...cmake import source_standards
+
+    package = workspace.package_of(source)
+    if package is None:
+        return None
+    return source_standards(package, workspace).get(workspace.relpath(source))
+
+
 def _cmake_macros(source: str, workspace: Workspace
                   ) -> tuple[list[str], set[str], dict[str, tuple[str, int]]]:
     """``cmake_flags``; the names of the macros whose presence the CMake reading decides

@@ -106,6 +106,9 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "behaviortree_cpp_v3/": "behaviortree_cpp/haros_behaviortree_cpp.h"}
 # CXTranslationUnit_ForSerialization | Incomplete (a header, not a whole program)
 _PCH_OPTIONS = 0x10 | 0x02
+_DETAILED_RECORD = 0x01  # CXTranslationUnit_DetailedPreprocessingRecord
+# a ``-std`` past C++17 (``c++20``, ``gnu++2a``, ``c++23``, ...)
+_NEWER_STD = re.compile(r"-std=(?:c|gnu)\+\+(?:2\w)")
 # a second folder of synthesised headers, for a header whose name is a folder of others
 OVERFLOW = ".overflow"
 HEADER_MAP = "workspace.hmap"  # the include folders as one header map (``header_map``)
@@ -423,9 +426,12 @@ class IncludeSetup:
         # each source's -D flags from its package's CMake files (``package_macros``),
         # found before the workers start, which take a copy
         self._cmake_flags: dict[str, list[str]] = {}
+        # and the C++ standard they ask, when newer than the default (``cmake_standard``)
+        self._cmake_std: dict[str, str | None] = {}
         for source in dict.fromkeys(map(os.path.abspath, sources)):
             if os.path.realpath(source) not in self.units:
                 self._cmake_flags[source] = build_macros.cmake_flags(source, workspace)
+                self._cmake_std[source] = build_macros.cmake_standard(source, workspace)
         # generate_parameter_library's targets (``_parameter_header``), read when needed
         self._parameter_targets: list[parameter_library.Target] | None = None
         # the dynamic_reconfigure configs of each package read so far (``_reconfigure``)
@@ -437,10 +443,10 @@ class IncludeSetup:
         precompiled stand-ins and the header map are left out (the flags that key the
         cache, which must not name this process's files): the folders are listed."""
         unit = self.units.get(os.path.realpath(source)) if source and self.units else None
+        std = unit.std if unit is not None else self.cmake_standard(source)
         # the version macros are language flags: the precompiled stand-ins are keyed by
         # them, and so is the cache (``arguments(False)``)
-        flags = [*toolchain.base_arguments(self.system_headers, unit.std if unit else None),
-                 *self._versions]
+        flags = [*toolchain.base_arguments(self.system_headers, std), *self._versions]
         args = ["-I", self.generated, "-I", self.overflow]
         own = self._own_folders(source)
         if own:  # before everything, and no precompiled stand-ins that would redefine
@@ -460,6 +466,15 @@ class IncludeSetup:
         args += ["-isystem", STD_STANDIN, *flags]
         made = precompiled_prelude(flags) if pch else None
         return [*args, "-include-pch", made] if made is not None else args
+
+    def cmake_standard(self, source: str | None) -> str | None:
+        """The C++ standard the CMake targets of a unit that no compile command gives
+        ask, when newer than the default (``build_macros.cmake_standard``)."""
+        if source is None:
+            return None
+        if source not in self._cmake_std:
+            self._cmake_std[source] = build_macros.cmake_standard(source, self.workspace)
+        return self._cmake_std[source]
 
     def package_macros(self, source: str | None, unit: UnitFlags | None = None) -> list[str]:
         """The macros the build defines for a unit that no compile command gives: those
@@ -1114,8 +1129,13 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
                                       exitpriority=0)
         path: str | None = os.path.join(folder, "prelude.pch")
         args = ["-I", STANDIN, "-isystem", STD_STANDIN, *flags, "-x", "c++-header"]
+        # from C++20 on, libclang refuses (``Error parsing translation unit``) a PCH made
+        # without the detailed preprocessing record to a unit parsed with it
+        # (``PARSE_OPTIONS``); before, the PCH stays as it was
+        options = _PCH_OPTIONS | (_DETAILED_RECORD if any(
+            _NEWER_STD.fullmatch(flag) for flag in flags) else 0)
         try:
-            tu = toolchain.index().parse(PRELUDE, args=args, options=_PCH_OPTIONS)
+            tu = toolchain.index().parse(PRELUDE, args=args, options=options)
             if any(d.severity >= 3 for d in tu.diagnostics):
                 path = None
             else:

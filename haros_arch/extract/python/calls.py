@@ -12,7 +12,12 @@ from .modules import FunctionInfo
 from .objects import BoundMethod, Frame, Instance
 from .scopes import Scopes
 
-MAX_CALL_DEPTH = 4
+# how many calls deep the walk follows the package's own functions (and the evaluator
+# their results and constructors): carla's bridge builds its actors, which make the
+# publishers, five calls down; ten recovered every call of the Python nodes of carla's
+# ros-bridge, rosbridge_suite and navigation2 (bench/README.md, followups10), and a cut
+# that may lose a ROS call is said (``PY_CALL_DEPTH``)
+MAX_CALL_DEPTH = 10
 
 
 class Calls(Scopes):

@@ -56,6 +56,7 @@ from .objects import (
     text_of,
 )
 from .qos import as_profile, with_policy
+from .reach import Reach
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
@@ -132,6 +133,10 @@ class Walker:
         self._gui_plugin = False  # rqt_gui runs a plugin alone (``_standalone_plugin``)
         self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
         self._imports_said: set[Location] = set()  # PY_DYNAMIC_IMPORT
+        # the cuts of the walk under way (``_collect``) and those said (PY_CALL_DEPTH)
+        self._cuts: list[Diagnostic] = []
+        self._cuts_said: set[Location] = set()
+        self._reach = Reach()
         # the classes the walk constructs, and those they derive from (ids)
         self._constructed: set[int] = set()
         self.steps = 0
@@ -158,10 +163,12 @@ class Walker:
 
     def run(self, modules: list[Module]) -> None:
         self.main = {m.path for m in modules}
-        entries: list[tuple[FunctionInfo, list[PrimitiveCall]]] = []
+        entries: list[tuple[FunctionInfo, list[PrimitiveCall], list[Diagnostic]]] = []
         for module in modules:
-            self.calls.extend(self._collect(lambda m=module: self._block(
-                m.tree.body, Frame(m, top=True), ())))
+            calls, cuts = self._collect(lambda m=module: self._block(
+                m.tree.body, Frame(m, top=True), ()))
+            self.calls.extend(calls)
+            self._said_cuts(cuts)
         done: set[int] = set()
         queue: list[FunctionInfo] = []
         for module in modules:
@@ -187,13 +194,14 @@ class Walker:
             if id(info.node) in done:
                 continue
             done.add(id(info.node))
-            entries.append((info, self._collect(lambda i=info: self._entry(i))))
+            entries.append((info, *self._collect(lambda i=info: self._entry(i))))
         self._unseen_said()
         unbuilt = self._unbuilt(modules)
-        for info, calls in entries:
+        for info, calls, cuts in entries:
             if id(info.node) not in self._inlined and (info.cls is None
                                                        or id(info.cls) not in unbuilt):
                 self.calls.extend(calls)
+                self._said_cuts(cuts)
 
     def _named(self, done: set[int]) -> set[str]:
         """The attribute names (and identifier strings, for ``getattr``) the code may use:
@@ -249,13 +257,21 @@ class Walker:
             self.rosname, self.namespace = self.names[0], None
         return unbuilt
 
-    def _collect(self, walk: object) -> list[PrimitiveCall]:
+    def _collect(self, walk: object) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+        """The calls of one walk, and its cuts (``_cut``): kept or dropped together."""
         saved, self.calls = self.calls, []
+        saved_cuts, self._cuts = self._cuts, []
         try:
             walk()  # type: ignore[operator]
-            return self.calls
+            return self.calls, self._cuts
         finally:
-            self.calls = saved
+            self.calls, self._cuts = saved, saved_cuts
+
+    def _said_cuts(self, cuts: list[Diagnostic]) -> None:
+        for cut in cuts:
+            if cut.location not in self._cuts_said:
+                self._cuts_said.add(cut.location)
+                self.diagnostics.append(cut)
 
     def _entry(self, info: FunctionInfo) -> None:
         instance = self.evaluator.new(info.cls) if info.cls is not None else None
@@ -916,7 +932,10 @@ class Walker:
     def _inline(self, func: FunctionInfo | BoundMethod, call: ast.Call, frame: Frame,
                 conds: Conditions) -> None:
         info = func.function if isinstance(func, BoundMethod) else func
-        if frame.depth >= MAX_CALL_DEPTH or id(info.node) in self._active:
+        if id(info.node) in self._active:
+            return  # recursion: the calls it makes are those being walked
+        if frame.depth >= MAX_CALL_DEPTH:
+            self._cut(info, call, frame)
             return
         inner = self.evaluator.call_frame(func, call, frame)
         self._inlined.add(id(info.node))
@@ -925,6 +944,19 @@ class Walker:
             self._block(info.node.body, inner, conds)
         finally:
             self._active.discard(id(info.node))
+
+    def _cut(self, info: FunctionInfo, call: ast.Call, frame: Frame) -> None:
+        """A call ``MAX_CALL_DEPTH`` calls deep is not followed: its function is walked
+        as an entry only (its parameters, and the object it is called on, not known),
+        so the calls it makes on what it is given (carla's actors, five calls down from
+        the bridge, publish through the node passed to them) can be lost. Said
+        (``PY_CALL_DEPTH``), and the node is partial, when its code may reach a ROS
+        call (``Reach``); a helper that cannot is cut silently. Said with the walk's
+        calls: not for an entry walk whose calls are dropped (its function was walked
+        where it is called, from a lower depth)."""
+        if self._reach.may_call_ros(info, self.loader.modules.values()):
+            self._cuts.append(diag.make("PY_CALL_DEPTH", self._where(frame, call),
+                                        call=info.qualname, depth=MAX_CALL_DEPTH))
 
     def _logger_services(self, spec: object, call: ast.Call, frame: Frame, conds: Conditions,
                          name: str | None) -> None:

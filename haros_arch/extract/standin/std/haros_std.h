@@ -713,6 +713,10 @@ public:
   const_iterator cbegin() const;
   const_iterator cend() const;
 };
+template<class K, class V, class C, class A>
+bool operator==(const map<K, V, C, A>& a, const map<K, V, C, A>& b);
+template<class K, class V, class C, class A>
+bool operator!=(const map<K, V, C, A>& a, const map<K, V, C, A>& b);
 template<class K, class V, class H = hash<K>, class E = equal_to<K>,
          class A = allocator<pair<const K, V>>>
 class unordered_map : public map<K, V> {
@@ -741,6 +745,8 @@ public:
   iterator begin() const;
   iterator end() const;
 };
+template<class K, class C, class A> bool operator==(const set<K, C, A>& a, const set<K, C, A>& b);
+template<class K, class C, class A> bool operator!=(const set<K, C, A>& a, const set<K, C, A>& b);
 template<class K, class H = hash<K>, class E = equal_to<K>, class A = allocator<K>>
 class unordered_set : public set<K> {
 public:
