@@ -146,3 +146,39 @@ def test_a_subscriber_subclass_of_a_fixed_type_is_untyped_but_kept(tmp_path) -> 
     result = _extract(tmp_path, "stereo.cpp", text, "rclcpp message_filters sensor_msgs")
     assert sorted((c.kind, c.name) for c in result.calls if c.kind == "subscribe") == [
         ("subscribe", "left"), ("subscribe", "right")]
+
+
+CLOUD = """\
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <sensor_msgs/msg/point_cloud2.hpp>
+#include <sensor_msgs/point_cloud2_iterator.hpp>
+using sensor_msgs::msg::PointCloud2;
+using sensor_msgs::msg::PointField;
+namespace odometry {
+class Odometry : public rclcpp::Node {
+ public:
+  Odometry() : Node("odometry") {
+    pub_ = create_publisher<PointCloud2>("frame", 10);
+    auto cloud = std::make_unique<PointCloud2>();
+    sensor_msgs::PointCloud2Modifier modifier(*cloud);
+    int offset = 0;
+    offset = addPointField(*cloud, "x", 1, PointField::FLOAT32, offset);
+    offset += sizeOfPointField(PointField::FLOAT64);
+    cloud->point_step = offset;
+    pub_->publish(std::move(cloud));
+  }
+ private:
+  rclcpp::Publisher<PointCloud2>::SharedPtr pub_;
+};
+}  // namespace odometry
+"""
+
+
+def test_the_point_cloud_field_helpers(tmp_path) -> None:
+    # kiss-icp's Utils.hpp builds its clouds' fields with sensor_msgs' addPointField and
+    # sizeOfPointField, which its implementation header declares in an unnamed namespace
+    # of the global one: undeclared in the stand-in
+    result = _extract(tmp_path, "odometry.cpp", CLOUD, "rclcpp sensor_msgs")
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "frame")]
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
