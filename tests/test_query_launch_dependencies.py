@@ -428,3 +428,42 @@ def test_ros2_a_package_named_by_the_caller_of_another_packages_helper_is_the_ca
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
     assert findings(model) == [("core/core/plugin_utils.py", 10, "viewer"),
                                ("est/launch/est.launch.py", 8, "planner")]
+
+
+BAG_LAUNCH = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration, PythonExpression
+
+
+def generate_launch_description():
+    bag = LaunchConfiguration('bagfile', default='')
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2', 'bag', 'play', bag],
+                       condition=IfCondition(PythonExpression(["'", bag, "' != ''"]))),
+        ExecuteProcess(cmd=['ros2', 'service', 'call', '/reset', 'std_srvs/srv/Empty']),
+        ExecuteProcess(cmd=['ros2', 'frobnicate']),
+    ])
+"""
+
+
+def test_ros2_a_ros2cli_verb_uses_the_package_that_gives_it(write_tree):
+    # kiss-icp's odometry.launch.py plays a bag with ``ros2 bag play`` and declares only
+    # ros2launch: ros2bag is what gives ros2 its ``bag`` verb; a verb not known names
+    # no package; a process a condition leaves out uses none
+    root = write_tree({
+        "src/odom/package.xml": manifest("odom", ("exec_depend", "ros2launch"),
+                                         ("exec_depend", "ros2service"),
+                                         build_type="ament_cmake"),
+        "src/odom/CMakeLists.txt": "project(odom)\n",
+        "src/odom/launch/odometry.launch.py": BAG_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  bag:\n"
+                        "    launch: [odom/launch/odometry.launch.py]\n"
+                        "    args: {bagfile: /data/run.bag}\n"
+                        "  live: [odom/launch/odometry.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    bag, live = model.configurations
+    assert sorted(u.package for u in bag.package_uses) == ["ros2bag", "ros2service"]
+    assert sorted(u.package for u in live.package_uses) == ["ros2service"]
+    assert findings(model) == [("odom/launch/odometry.launch.py", 10, "ros2bag")]

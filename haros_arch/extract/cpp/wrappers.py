@@ -192,6 +192,9 @@ class Wrappers:
         # constructor -> (argument list, base constructor, whether the base is named with
         # the class's own template parameters) of each base it initialises (``build``)
         self._base_inits: dict[Key, list[tuple[Cursor, Key, bool]]] = {}
+        # constructor -> (argument list, API row, whether typed) of each base of the API
+        # it initialises (``build``, ``_base_call``)
+        self._base_rows: dict[Key, list[tuple[Cursor, api.RosFunction, bool]]] = {}
         # id of each function of the unit -> its calls and unexposed expressions in
         # preorder (``_scan``), for ``CallFinder._gives``
         self.preorder: dict[int, list[Cursor]] = {}
@@ -260,6 +263,14 @@ class Wrappers:
                                 inits := [(arguments, _key(base.canonical),
                                            _same_parameters(f, base))
                                           for arguments, base in base_initialisers(f)])}
+        # and one that initialises a base of the API with such arguments (stella_vslam_ros'
+        # ``ModifiedSubscriber<M>(node, topic, qos) : message_filters::Subscriber<M>(node,
+        # topic, qos)``): the base's row, made with those arguments
+        self._base_rows = {_key(f.canonical): rows for f in finder.functions
+                           if is_constructor(f) and of_class_template(f) and (
+                               rows := [(arguments, spec, _first_parameter_passed(f, base))
+                                        for arguments, base in base_initialisers(f)
+                                        if (spec := self._api_base(base)) is not None])}
         todo = [f for f in finder.functions if f.kind != CursorKind.FIELD_DECL]
         top = {id(f) for f in todo}
         while todo:
@@ -306,6 +317,9 @@ class Wrappers:
                 for arguments, base, typed in self._base_inits.get(key, ()):
                     if self._delegate(function, key, arguments, [base], typed):
                         changed.add(key)
+                for arguments, spec, typed in self._base_rows.get(key, ()):
+                    if self._base_call(function, key, arguments, spec, typed):
+                        changed.add(key)
             if not changed:
                 break
             # the functions that call one that changed are read again
@@ -323,12 +337,16 @@ class Wrappers:
         # call of a type of its own in a tag-dispatched overload, depthai_bridge's
         # image_transport publisher, made only by the constructions of Image)
         constructors = {_key(f.canonical) for f in functions if is_constructor(f)}
+        # (and one that makes the API's call by initialising its base, typed or not: no
+        # call of it stays in the constructor, where clang keeps only the arguments)
+        base_arguments = {(_key(arguments),) for rows in self._base_rows.values()
+                          for arguments, _, _ in rows}
         self.summaries = {
             key: kept for key, found in self.summaries.items() if key not in self._recursive
             and not any(self._recursive & w.through for w in found)
             and (kept := [w for w in found if key not in constructors
                           or "template" in w.row.type_from or w.spec_param is not None
-                          or w.when is not None])}
+                          or w.when is not None or w.inside[:1] in base_arguments])}
         self._inner = {call: owner for call, owner in self._inner.items()
                        if owner in self.summaries}
         self._functions = {key: f for f in functions
@@ -671,6 +689,39 @@ class Wrappers:
                 added = self._keep(function, key, dataclasses.replace(
                     lifted, row=row, when=wrapper.when, inside=wrapper.inside)) or added
         return added
+
+    def _api_base(self, base: Cursor) -> api.RosFunction | None:
+        """The API row of a base constructor a class template's constructor calls
+        (``base_initialisers``): one of the API's classes (a stand-in's row only on the
+        stand-in's class, a ROS 2 one in a ROS 2 unit)."""
+        owner = base.semantic_parent
+        if owner is None:
+            return None
+        spec = api.ALL.get((qualified_name(owner), base.spelling.split("<")[0]))
+        if spec is None or (spec.ros2_only and not self.finder.ros2) or (
+                spec.standin_only and not from_standin(base)):
+            return None
+        return dataclasses.replace(spec, standin_only=False)
+
+    def _base_call(self, function: Cursor, key: Key, arguments: Cursor,
+                   spec: api.RosFunction, typed: bool) -> bool:
+        """``_summarise`` for the API call a class template's constructor makes by
+        initialising its base (``_api_base``) with the argument list ``arguments``: a row
+        typed by the class's template argument (``Subscriber<M>``) is typed by the
+        construction's (``ModifiedSubscriber<Image>``) where the base is named with the
+        class's first template parameter (``typed``), else not typed."""
+        by_class = "class" in spec.type_from
+        spec = dataclasses.replace(spec, type_from=tuple(
+            source for source in spec.type_from if source != "class"))
+        args = [c for c in arguments.get_children() if c.kind.is_expression()]
+        lifted = self._lift(function, Wrapper(spec), arguments, args, None)
+        if lifted is None:
+            return False
+        row = lifted.row
+        if by_class and typed:
+            row = dataclasses.replace(row, type_from=(*row.type_from, "template"))
+        return self._keep(function, key, dataclasses.replace(
+            lifted, row=row, inside=self._through(function, arguments)))
 
     def _unnamed(self, call: Cursor) -> bool:
         """Whether an unresolved call names no API function, factory or wrapper in its
@@ -2004,6 +2055,24 @@ def _same_parameters(function: Cursor, base: Cursor) -> bool:
             text = spec.type.spelling
             given = text[text.find("<") + 1:text.rfind(">")] if "<" in text else ""
             return bool(params) and [a.strip() for a in given.split(",")] == params
+    return False
+
+
+def _first_parameter_passed(function: Cursor, base: Cursor) -> bool:
+    """Whether the class of constructor ``function`` names the class of constructor
+    ``base`` as its base with its own first template parameter as the base's first
+    template argument (``Modified<M, NodeType> : message_filters::Subscriber<M>``)."""
+    cls, owner = function.semantic_parent, base.semantic_parent
+    if cls is None or owner is None:
+        return False
+    params = [c.spelling for c in cls.get_children()
+              if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+    for spec in cls.get_children():
+        if spec.kind == CursorKind.CXX_BASE_SPECIFIER and spec.referenced is not None and (
+                _key(spec.referenced.canonical) == _key(owner.canonical)):
+            text = spec.type.spelling
+            given = text[text.find("<") + 1:text.rfind(">")] if "<" in text else ""
+            return bool(params) and given.split(",")[0].strip() == params[0]
     return False
 
 

@@ -578,7 +578,11 @@ class Runner:
         which publishes the recorded topics: ouster's replay launch) starts a node whose
         topics and parameters are not seen: it may be the missing side of anything, as
         an include not read is."""
-        if head.split()[:1] == ["ros2"]:
+        words = head.split()
+        if words[:1] == ["ros2"]:
+            verb = ROS2CLI_VERBS.get(words[1]) if len(words) > 1 else None
+            if verb is not None:  # ``ros2 bag``: the package that gives ros2 the verb
+                self.uses(verb, where)
             self.unread(head, scope, where, detail="process")
 
     def do_LaunchCommand(self, action: e.LaunchCommand, scope: Scope) -> None:
@@ -976,6 +980,18 @@ def _rewrite(node: Any, rewrites: dict[str, Any], path: tuple[str, ...]) -> Any:
         else:
             out[key] = _rewrite(value, rewrites, here)
     return out
+
+
+# the ros2cli verbs and the package that adds each to ``ros2`` (its setup.py's
+# ``ros2cli.command`` entry point): a process running ``ros2 bag play ...`` needs ros2bag
+# installed, as one running ``ros2 run`` needs the node's package
+ROS2CLI_VERBS = {
+    "action": "ros2action", "bag": "ros2bag", "component": "ros2component",
+    "control": "ros2controlcli", "doctor": "ros2doctor", "interface": "ros2interface",
+    "launch": "ros2launch", "lifecycle": "ros2lifecycle", "node": "ros2node",
+    "param": "ros2param", "pkg": "ros2pkg", "run": "ros2run", "service": "ros2service",
+    "topic": "ros2topic",
+}
 
 
 def make_param(node: str, key: str, value: Any, conditions: tuple[Condition, ...],

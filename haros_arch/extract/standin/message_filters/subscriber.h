@@ -27,9 +27,25 @@ public:
   template<class F> explicit Connection(const F& disconnect);
   void disconnect();
 };
-// what every filter with one output gives: callbacks on what it lets through
+// a filter's message pointer, MConstPtr: boost's in ROS 1, std's in ROS 2, either here
+template<class M> struct haros_filter_message {
+  haros_filter_message();
+  haros_filter_message(const boost::shared_ptr<const M>& message);
+  haros_filter_message(const std::shared_ptr<const M>& message);
+  haros_filter_message(const boost::shared_ptr<M>& message);
+  haros_filter_message(const std::shared_ptr<M>& message);
+  const M* operator->() const;
+  const M& operator*() const;
+  explicit operator bool() const;
+  operator boost::shared_ptr<const M>() const;
+  operator std::shared_ptr<const M>() const;
+};
+// what every filter with one output gives: callbacks on what it lets through; a filter
+// of the node's own (a Subscriber's subclass) passes a message on with signalMessage
 template<class M> class SimpleFilter {
 public:
+  typedef haros_filter_message<M> MConstPtr;
+  template<class E> void signalMessage(const E& message);
   template<class C> Connection registerCallback(const C& callback);
   template<class C, class T> Connection registerCallback(const C& callback, T* object);
   const std::string& getName() const;
@@ -47,6 +63,8 @@ public:
 template<class M, class NodeType = void> class Subscriber
     : public haros_subscriber_base, public SimpleFilter<M> {
 public:
+  typedef std::shared_ptr<NodeType> NodePtr;  // ROS 2's, for a subclass's constructors
+  typedef typename SimpleFilter<M>::MConstPtr MConstPtr;
   Subscriber();
   template<class N, class... A> Subscriber(N&& node, const std::string& topic, A&&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& topic, A&&... more);
@@ -58,14 +76,21 @@ public:
   template<class C, class T> Connection registerCallback(const C& callback, T* object);
 };
 struct NullType {};
+template<class P> class Synchronizer;
+// a policy names its synchronizer, Sync (``std::make_shared<Policy::Sync>(10, a, b)``:
+// the queue size converts to the policy, as the policies' constructors are not explicit)
 namespace sync_policies {
 template<class... M> struct ApproximateTime {
-  explicit ApproximateTime(uint32_t queue_size);
+  typedef Synchronizer<ApproximateTime> Sync;
+  ApproximateTime(uint32_t queue_size);
   void setMaxIntervalDuration(...);
   void setAgePenalty(double age_penalty);
   template<class D> void setInterMessageLowerBound(int index, const D& bound);
 };
-template<class... M> struct ExactTime { explicit ExactTime(uint32_t queue_size); };
+template<class... M> struct ExactTime {
+  typedef Synchronizer<ExactTime> Sync;
+  ExactTime(uint32_t queue_size);
+};
 }
 template<class P> class Synchronizer {
 public:

@@ -1812,6 +1812,18 @@ public:
   void set_value();
   template<class E> void set_exception(E e);
 };
+template<class S> class packaged_task;
+template<class R, class... A> class packaged_task<R(A...)> {
+public:
+  packaged_task() noexcept;
+  template<class F> explicit packaged_task(F&& f);
+  packaged_task(packaged_task&& other) noexcept;
+  packaged_task& operator=(packaged_task&& other) noexcept;
+  bool valid() const noexcept;
+  future<R> get_future();
+  void operator()(A... args);
+  void reset();
+};
 enum class launch { async = 1, deferred = 2 };
 template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);
 template<class F, class... A> future<int> async(F&& f, A&&... args);
