@@ -26,11 +26,12 @@ from .values import (
     Parts,
     Scope,
     Value,
+    _plain_value,
     initializer,
     key_of,
     written_arguments,
 )
-from .writes import default_constructed, parameter_callback, writes_of
+from .writes import default_constructed, out_argument, parameter_callback, writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -1003,6 +1004,8 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
     children = list(definition.get_children())
     for i, child in enumerate(children[:-1]):
         if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
+            if constructor and _filled(field, children[-1], source):
+                return None
             return children[i + 1]
     for node in definition.walk_preorder():
         for write in writes_of(node, source):
@@ -1012,6 +1015,19 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
             ) and (constructor or not uses_parameter(value)):
                 return value
     return None
+
+
+def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
+    """Whether the constructor's ``body`` passes member ``field``, a string or a number,
+    as an out argument (``writes.out_argument``): Kimera-VIO-ROS's RosbagDataProvider
+    initialises ``left_imgs_topic_("")`` and then ``CHECK(nh_private_.getParam(
+    "left_cam_rosbag_topic", left_imgs_topic_))``; the initialiser is not what the
+    member holds after the constructor."""
+    if body.kind != CursorKind.COMPOUND_STMT or not _plain_value(field):
+        return False
+    return any(write.variable is not None and write.variable == field
+               and out_argument(write)
+               for node in body.walk_preorder() for write in writes_of(node, source))
 
 
 def uses_parameter(expr: Cursor) -> bool:
