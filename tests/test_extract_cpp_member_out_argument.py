@@ -55,10 +55,11 @@ def test_a_member_an_out_argument_filled_is_not_its_initialiser(tmp_path) -> Non
     source.write_text(NODE)
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
                          distro="noetic")
-    assert [(c.kind, c.name, c.location.line) for c in result.calls
+    # the parameter's value (the graph fills it from the launch file), not ""
+    assert [(c.kind, c.name, c.name_param, c.location.line) for c in result.calls
             if c.kind == "publish"] == [
-        ("publish", "?", 15),  # the parameter's value, not ""
-        ("publish", "?", 18),
-        ("publish", "/fixed", 19),
-        ("publish", "~status", 20),
+        ("publish", "?", "~left_topic", 15),
+        ("publish", "?", "~imu_topic", 18),
+        ("publish", "/fixed", None, 19),
+        ("publish", "~status", None, 20),
     ]

@@ -34,15 +34,7 @@ from .expressions import (
     written_arguments,
 )
 from .synthesis import ANY
-from .writes import (
-    Write,
-    by_operator,
-    const_array,
-    emptied,
-    out_argument,
-    searched_key,
-    writes_of,
-)
+from .writes import Write, by_operator, const_array, emptied, searched_key, writes_of
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -535,10 +527,7 @@ class Scope:
             self._write(decl, value)
         elif is_own_member(target):
             if value is None:
-                if write.whole or by_operator(write) or (
-                        _plain_value(target.referenced) and out_argument(write)):
-                    # (an out argument: the constructor's ``topic_("")`` is not what a
-                    # ``getParam("topic", topic_)`` of this body leaves in it)
+                if write.whole or by_operator(write):
                     self._changed.add(key_of(target.referenced))
                 return
             self._members.setdefault(key_of(target.referenced), []).append(
