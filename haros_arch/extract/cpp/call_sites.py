@@ -283,6 +283,8 @@ class CallSites:
         if found is not None:
             value, constructor = found
             if value is not None:
+                if not initial and _filled(field, constructor, self.source):
+                    return None  # (``initial``: the default of the read that fills it)
                 return value, self.scope(constructor)
         value = initializer(field)
         if value is None or (not initial and self.written(field)):
@@ -1004,8 +1006,6 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
     children = list(definition.get_children())
     for i, child in enumerate(children[:-1]):
         if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
-            if constructor and _filled(field, children[-1], source):
-                return None
             return children[i + 1]
     for node in definition.walk_preorder():
         for write in writes_of(node, source):
@@ -1018,12 +1018,14 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
 
 
 def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
-    """Whether the constructor's ``body`` passes member ``field``, a string or a number,
+    """Whether a constructor's ``body`` (or the constructor's) passes member ``field``, a string or a number,
     as an out argument (``writes.out_argument``): Kimera-VIO-ROS's RosbagDataProvider
     initialises ``left_imgs_topic_("")`` and then ``CHECK(nh_private_.getParam(
     "left_cam_rosbag_topic", left_imgs_topic_))``; the initialiser is not what the
     member holds after the constructor."""
-    if body.kind != CursorKind.COMPOUND_STMT or not _plain_value(field):
+    body = next((c for c in body.get_children() if c.kind == CursorKind.COMPOUND_STMT),
+                None) if body.kind != CursorKind.COMPOUND_STMT else body
+    if body is None or not _plain_value(field):
         return False
     return any(write.variable is not None and write.variable == field
                and out_argument(write)
