@@ -1018,11 +1018,12 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
 
 
 def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
-    """Whether a constructor's ``body`` (or the constructor's) passes member ``field``, a string or a number,
-    as an out argument (``writes.out_argument``): Kimera-VIO-ROS's RosbagDataProvider
-    initialises ``left_imgs_topic_("")`` and then ``CHECK(nh_private_.getParam(
-    "left_cam_rosbag_topic", left_imgs_topic_))``; the initialiser is not what the
-    member holds after the constructor."""
+    """Whether a constructor's ``body`` (or the constructor's) passes member ``field``, a
+    string or a number, as an out argument (``writes.out_argument``): Kimera-VIO-ROS's
+    RosbagDataProvider initialises ``left_imgs_topic_("")`` and then
+    ``CHECK(nh_private_.getParam("left_cam_rosbag_topic", left_imgs_topic_))``; the
+    initialiser is not what the member holds after the constructor (it is the read's
+    default: ``CallSites.field``'s ``initial``)."""
     body = next((c for c in body.get_children() if c.kind == CursorKind.COMPOUND_STMT),
                 None) if body.kind != CursorKind.COMPOUND_STMT else body
     if body is None or not _plain_value(field):
