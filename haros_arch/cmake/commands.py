@@ -716,8 +716,11 @@ def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> No
 
 def _listed(args: list[str]) -> list[str]:
     """The items of arguments a command takes as lists (a target's sources): a quoted
-    argument ``"a.cpp;b.cpp"`` is the two files, as CMake's SOURCES property reads it."""
-    return [item for arg in args for item in (split_list(arg) if ";" in arg else [arg])]
+    argument ``"a.cpp;b.cpp"`` is the two files, as CMake's SOURCES property reads it. An
+    empty item names no file: Kimera-VIO's ``add_library(${PROJECT_NAME} SHARED "")``,
+    whose sources ``target_sources`` gives after, has none of its own."""
+    return [item for arg in args for item in (split_list(arg) if ";" in arg else [arg])
+            if item]
 
 
 # what ``find_package(pkg)`` leaves in ``pkg_LIBRARIES`` (and catkin in

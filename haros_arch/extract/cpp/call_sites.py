@@ -26,11 +26,12 @@ from .values import (
     Parts,
     Scope,
     Value,
+    _plain_value,
     initializer,
     key_of,
     written_arguments,
 )
-from .writes import default_constructed, parameter_callback, writes_of
+from .writes import default_constructed, out_argument, parameter_callback, writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -282,6 +283,8 @@ class CallSites:
         if found is not None:
             value, constructor = found
             if value is not None:
+                if not initial and _filled(field, constructor, self.source):
+                    return None  # (``initial``: the default of the read that fills it)
                 return value, self.scope(constructor)
         value = initializer(field)
         if value is None or (not initial and self.written(field)):
@@ -1012,6 +1015,22 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
             ) and (constructor or not uses_parameter(value)):
                 return value
     return None
+
+
+def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
+    """Whether a constructor's ``body`` (or the constructor's) passes member ``field``, a
+    string or a number, as an out argument (``writes.out_argument``): Kimera-VIO-ROS's
+    RosbagDataProvider initialises ``left_imgs_topic_("")`` and then
+    ``CHECK(nh_private_.getParam("left_cam_rosbag_topic", left_imgs_topic_))``; the
+    initialiser is not what the member holds after the constructor (it is the read's
+    default: ``CallSites.field``'s ``initial``)."""
+    body = next((c for c in body.get_children() if c.kind == CursorKind.COMPOUND_STMT),
+                None) if body.kind != CursorKind.COMPOUND_STMT else body
+    if body is None or not _plain_value(field):
+        return False
+    return any(write.variable is not None and write.variable == field
+               and out_argument(write)
+               for node in body.walk_preorder() for write in writes_of(node, source))
 
 
 def uses_parameter(expr: Cursor) -> bool:

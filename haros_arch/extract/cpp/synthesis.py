@@ -661,6 +661,11 @@ def _names_a_declared_type(name: str, text: bytes, offset: int) -> bool:
 # a call of a name with a ``_`` after a first word of letters and digits (not after a
 # word, ``::``, ``.`` or ``->``): the first word is the prefix of a C library's functions
 # where ``library_prefixes`` has it (``Names._spread_calls``)
+# the prefixes of C runtimes the compiler brings (``-fopenmp``: OpenMP's ``omp_get_max_threads()``,
+# ``omp_get_thread_num()``), whose header a unit often has only through another library's
+# (hdl_global_localization's RANSAC through PCL's): an unqualified call under one, with no
+# argument for argument-dependent lookup to find a friend by, is the runtime's (a value)
+COMPILER_LIBRARIES = frozenset({"omp"})
 _LIBRARY_CALL = re.compile(rb"(?<![\w:.>])(([A-Za-z0-9]+)_\w+)\s*\(")
 
 
@@ -701,9 +706,10 @@ class Names:
         the parse already has in a top-level namespace (a stand-in's class in a vendor
         namespace whose other names are unknown), never declared again. ``libraries``:
         the prefixes of the C libraries whose headers are missing (``library_prefixes``):
-        an unqualified function under one (``ogg_stream_init(...)``) is the library's."""
+        an unqualified function under one (``ogg_stream_init(...)``) is the library's;
+        so is one of OpenMP's runtime (``COMPILER_LIBRARIES``)."""
         self.packages = frozenset(packages)
-        self.libraries = frozenset(libraries)
+        self.libraries = frozenset(libraries) | COMPILER_LIBRARIES
         self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from .expressions import initializer, qualified_name, strip, written_arguments
+from .synthesis import ANY as ANY_CLASS
 
 _NAMES = (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
 _MAKERS = ("make_shared", "make_unique", "allocate_shared")
@@ -81,6 +82,36 @@ def by_operator(write: Write) -> bool:
     at = write.at
     return at.kind in (CursorKind.COMPOUND_ASSIGNMENT_OPERATOR, CursorKind.UNARY_OPERATOR) or (
         at.kind == CursorKind.CALL_EXPR and at.spelling in _COMPOUND)
+
+
+def out_argument(write: Write) -> bool:
+    """Whether ``write`` is of a variable passed to a function the parse resolved whose
+    parameter there is a non-const lvalue reference: the function's own declaration says
+    it may store into it (``CHECK(pnh.getParam("left_cam_rosbag_topic", left_imgs_topic_))``,
+    Kimera-VIO-ROS; ``std::getline(in, name_)``). Not a call clang leaves unresolved (in a
+    class template every call is dependent: nav2_util's ``create_server(..., action_name_,
+    ...)``), nor one of a permissive value's (``haros_any``'s ``operator()`` takes what it
+    is given by forwarding reference)."""
+    at = write.at
+    if at.kind != CursorKind.CALL_EXPR or write.whole or by_operator(write):
+        return False
+    target = at.referenced
+    if target is None or target.type.kind != TypeKind.FUNCTIONPROTO:
+        return False
+    parent = target.semantic_parent
+    if parent is not None and parent.spelling == ANY_CLASS:
+        return False
+    args = list(at.get_arguments())
+    types = list(target.type.argument_types())
+    if target.kind == CursorKind.CXX_METHOD and at.spelling.startswith("operator") and (
+            len(args) == len(types) + 1):
+        args = args[1:]  # a member operator's call lists its object first
+    for arg, ptype in zip(args, types, strict=False):
+        # (the cursor itself: in a macro's expansion every argument has one place)
+        if arg == write.target or strip(arg) == write.target:
+            return ptype.kind == TypeKind.LVALUEREFERENCE and (
+                not ptype.get_pointee().is_const_qualified())
+    return False
 
 
 def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:

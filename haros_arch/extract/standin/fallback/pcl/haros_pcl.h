@@ -5,6 +5,7 @@
 #ifndef HAROS_STANDIN_PCL
 #define HAROS_STANDIN_PCL
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -46,6 +47,26 @@
 #define POINT_CLOUD_REGISTER_POINT_WRAPPER(wrapper, pod)
 #define PCL_INSTANTIATE(TEMPLATE, POINT_TYPES)
 #define PCL_INSTANTIATE_PRODUCT(TEMPLATE, PRODUCT)
+// console/print.h: printf-like messages
+#define PCL_ALWAYS(...) ((void)0)
+#define PCL_ERROR(...) ((void)0)
+#define PCL_WARN(...) ((void)0)
+#define PCL_INFO(...) ((void)0)
+#define PCL_DEBUG(...) ((void)0)
+#define PCL_VERBOSE(...) ((void)0)
+// pcl_config.h: the version this stand-in's API is (std::shared_ptr pointers, PCL 1.12, the
+// version of Humble's Ubuntu), so a node's ``#if PCL_VERSION >= PCL_VERSION_CALC(1, 10, 0)``
+// takes the branch that names ``pcl::shared_ptr``
+#define PCL_MAJOR_VERSION 1
+#define PCL_MINOR_VERSION 12
+#define PCL_REVISION_VERSION 1
+#define PCL_DEV_VERSION 0
+#define PCL_VERSION_PRETTY "1.12.1"
+#define PCL_VERSION_CALC(MAJ, MIN, PATCH) ((MAJ) * 100000 + (MIN) * 100 + (PATCH))
+#define PCL_VERSION \
+  PCL_VERSION_CALC(PCL_MAJOR_VERSION, PCL_MINOR_VERSION, PCL_REVISION_VERSION)
+#define PCL_VERSION_COMPARE(OP, MAJ, MIN, PATCH) \
+  (PCL_VERSION * 10 + PCL_DEV_VERSION OP PCL_VERSION_CALC(MAJ, MIN, PATCH) * 10)
 #define PCL_XYZ_POINT_TYPES (pcl::PointXYZ)(pcl::PointXYZI)(pcl::PointXYZRGB)(pcl::PointXYZRGBA)
 #define PCL_POINT_TYPES PCL_XYZ_POINT_TYPES
 
@@ -648,11 +669,23 @@ template<class PointSource, class PointTarget, class Scalar = float> class Regis
     : public PCLBase<PointSource> {
  public:
   typedef Eigen::Matrix<Scalar, 4, 4> Matrix4;
-  typedef shared_ptr<Registration> Ptr;
-  typedef typename PointCloud<PointSource>::ConstPtr PointCloudSourceConstPtr;
-  typedef typename PointCloud<PointTarget>::ConstPtr PointCloudTargetConstPtr;
+  typedef shared_ptr<Registration<PointSource, PointTarget, Scalar>> Ptr;
+  typedef shared_ptr<const Registration<PointSource, PointTarget, Scalar>> ConstPtr;
+  // the names a registration of the node's own (a subclass: NDT or GICP variants) takes
+  typedef PointCloud<PointSource> PointCloudSource;
+  typedef typename PointCloudSource::Ptr PointCloudSourcePtr;
+  typedef typename PointCloudSource::ConstPtr PointCloudSourceConstPtr;
+  typedef PointCloud<PointTarget> PointCloudTarget;
+  typedef typename PointCloudTarget::Ptr PointCloudTargetPtr;
+  typedef typename PointCloudTarget::ConstPtr PointCloudTargetConstPtr;
+  typedef search::KdTree<PointTarget> KdTree;
   typedef typename search::KdTree<PointTarget>::Ptr KdTreePtr;
+  typedef search::KdTree<PointSource> KdTreeReciprocal;
   typedef typename search::KdTree<PointSource>::Ptr KdTreeReciprocalPtr;
+  using PCLBase<PointSource>::initCompute;
+  using PCLBase<PointSource>::deinitCompute;
+  using PCLBase<PointSource>::input_;
+  using PCLBase<PointSource>::indices_;
   Registration();
   void setSearchMethodTarget(const KdTreePtr& tree, bool force_no_recompute = false);
   KdTreePtr getSearchMethodTarget() const;
@@ -674,6 +707,40 @@ template<class PointSource, class PointTarget, class Scalar = float> class Regis
   double getFitnessScore(double max_range = 1e300);
   void align(PointCloud<PointSource>& output);
   void align(PointCloud<PointSource>& output, const Matrix4& guess);
+  void setTransformationRotationEpsilon(double epsilon);
+  double getTransformationEpsilon();
+  double getMaxCorrespondenceDistance();
+  int getRANSACIterations();
+  void setRANSACIterations(int ransac_iterations);
+  const std::string& getClassName() const;
+ protected:  // what a registration of the node's own reads and writes
+  std::string reg_name_;
+  KdTreePtr tree_;
+  KdTreeReciprocalPtr tree_reciprocal_;
+  int nr_iterations_;
+  int max_iterations_;
+  int ransac_iterations_;
+  PointCloudTargetConstPtr target_;
+  Matrix4 final_transformation_;
+  Matrix4 transformation_;
+  Matrix4 previous_transformation_;
+  double transformation_epsilon_;
+  double transformation_rotation_epsilon_;
+  double euclidean_fitness_epsilon_;
+  double corr_dist_threshold_;
+  double inlier_threshold_;
+  bool converged_;
+  int min_number_correspondences_;
+  bool target_cloud_updated_;
+  bool source_cloud_updated_;
+  bool force_no_recompute_;
+  bool force_no_recompute_reciprocal_;
+  std::function<void(const PointCloud<PointSource>&, const std::vector<int>&,
+                     const PointCloud<PointTarget>&, const std::vector<int>&)>
+      update_visualizer_;
+  bool initComputeReciprocal();
+  // pure in PCL; declared here so the stand-in's own registrations are not abstract
+  virtual void computeTransformation(PointCloudSource& output, const Matrix4& guess);
 };
 template<class PointSource, class PointTarget, class Scalar = float> class IterativeClosestPoint
     : public Registration<PointSource, PointTarget, Scalar> {
@@ -829,4 +896,19 @@ enum VERBOSITY_LEVEL { L_ALWAYS, L_ERROR, L_WARN, L_INFO, L_DEBUG, L_VERBOSE };
 void setVerbosityLevel(VERBOSITY_LEVEL level);
 }  // namespace console
 }  // namespace pcl
+
+// registration/bfgs.h (global namespace): the functor a registration's optimiser derives from
+template<typename _Scalar, int NX = Eigen::Dynamic> struct BFGSDummyFunctor {
+  typedef _Scalar Scalar;
+  enum { InputsAtCompileTime = NX };
+  typedef Eigen::Matrix<Scalar, InputsAtCompileTime, 1> VectorType;
+  const int m_inputs;
+  BFGSDummyFunctor();
+  BFGSDummyFunctor(int inputs);
+  virtual ~BFGSDummyFunctor();
+  int inputs() const;
+  virtual double operator()(const VectorType& x) = 0;
+  virtual void df(const VectorType& x, VectorType& df) = 0;
+  virtual void fdf(const VectorType& x, Scalar& f, VectorType& df) = 0;
+};
 #endif
