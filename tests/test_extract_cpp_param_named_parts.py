@@ -86,7 +86,7 @@ def test_a_name_of_two_parameter_values_takes_both(write_tree) -> None:
         config = build(Configuration("c"), LaunchModel(
             nodes=[NodeDecl("/ex", "ex", "ex")],
             params=[ParamDecl(f"/ex/{key}", value, "str")
-                    for key, value in zip(("first", "second"), given)]),
+                    for key, value in zip(("first", "second"), given, strict=False)]),
             Workspace(root="/nowhere"), {node.name: node})
         assert [link.rosname.full for link in config.links if link.kind == "publish"] == [
             expected]
