@@ -270,6 +270,13 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_UNKNOWN_ATTRIBUTE": Entry(
         "warning", "unknown attribute {attribute}= on <{tag}> is ignored",
         "The attribute is not part of the launch format for this tag."),
+    "LAUNCH_UNEXPECTED_ATTRIBUTE": Entry(
+        "error", "ros2 launch refuses <{tag}> with attribute {attribute}= (Unexpected "
+        "attribute): the launch fails",
+        "A ROS 2 XML / YAML action has an attribute launch does not read for it (ROS 1's "
+        "required=, an arg's help=, a misspelling): launch checks an action's attributes "
+        "after parsing it and stops with \"Unexpected attribute(s) found\". The rest of "
+        "the file is still read here, for the other findings."),
     "LAUNCH_MISSING_ATTRIBUTE": Entry(
         "error", "<{tag}> needs attribute {attribute}=; the element is skipped",
         "A required attribute of a launch tag is missing."),
