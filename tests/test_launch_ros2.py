@@ -322,8 +322,14 @@ def test_an_action_attribute_launch_does_not_read_fails_the_launch(write_tree):
                      ("LAUNCH_UNEXPECTED_ATTRIBUTE", 3, "error"),
                      ("LAUNCH_UNKNOWN_ATTRIBUTE", 4, "warning")]
     assert "required=" in next(d for d in model.diagnostics if d.location.line == 3).message
+    # in YAML a node's env (like its param and remap) is a list of entities, not an
+    # attribute
     yaml_model, _ = run(write_tree, "main.launch.yaml", """
         launch:
-        - node: {pkg: p, exec: e, name: n, respawn_if_dead: "true"}
+        - node: {pkg: p, exec: e, name: n, respawn_if_dead: "true",
+                 env: [{name: A, value: B}], remap: [{from: a, to: b}]}
         """)
-    assert codes(yaml_model) == ["LAUNCH_UNEXPECTED_ATTRIBUTE"]
+    assert [(d.code, d.message) for d in yaml_model.diagnostics] == [
+        ("LAUNCH_UNEXPECTED_ATTRIBUTE", "ros2 launch refuses <node> with attribute "
+                                        "respawn_if_dead= (Unexpected attribute): the "
+                                        "launch fails")]

@@ -384,7 +384,7 @@ def _yaml_entity(tag: str, body: Any, line: int) -> Entity:
         name = str(key.value)
         if isinstance(value, yaml.SequenceNode) and name in (
                 "children", "param", "remap", "arg", "composable_node", "keep", "choice",
-                "extra_arg"):
+                "extra_arg", "env"):
             if name == "children":
                 ent.children.extend(_yaml_list(value))
             else:
