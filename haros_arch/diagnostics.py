@@ -270,6 +270,13 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_UNKNOWN_ATTRIBUTE": Entry(
         "warning", "unknown attribute {attribute}= on <{tag}> is ignored",
         "The attribute is not part of the launch format for this tag."),
+    "LAUNCH_UNEXPECTED_ATTRIBUTE": Entry(
+        "error", "ros2 launch refuses <{tag}> with attribute {attribute}= (Unexpected "
+        "attribute): the launch fails",
+        "A ROS 2 XML / YAML action has an attribute launch does not read for it (ROS 1's "
+        "required=, an arg's help=, a misspelling): launch checks an action's attributes "
+        "after parsing it and stops with \"Unexpected attribute(s) found\". The rest of "
+        "the file is still read here, for the other findings."),
     "LAUNCH_MISSING_ATTRIBUTE": Entry(
         "error", "<{tag}> needs attribute {attribute}=; the element is skipped",
         "A required attribute of a launch tag is missing."),
@@ -765,6 +772,13 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_NOT_EXECUTABLE": Entry(
+        "warning", "node type {node}: {path} is there but not executable, so roslaunch "
+        "cannot start it; its interface is not read",
+        "A ROS 1 launch file starts a type that is a file of the package without its "
+        "execute bit, and no build file installs it (catkin_install_python): roslaunch "
+        "finds it and refuses it (\"Found ... but it is not executable\"), so the node "
+        "does not run. Set the bit (chmod +x) or install the script."),
     "NODE_TYPE_UNKNOWN": Entry(
         "warning", "node type {node} is not known statically; its interface is unknown",
         "A launch file starts a node whose package or executable it names with a value "

@@ -20,8 +20,9 @@ MAX_DEPTH = 8
 SKIP = {"build", "devel", "install", "node_modules", "__pycache__"}
 
 
-def find_executable(root: str, name: str) -> str | None:
-    """The first executable file called ``name`` under ``root`` (breadth first)."""
+def find_executable(root: str, name: str, executable: bool = True) -> str | None:
+    """The first executable file called ``name`` under ``root`` (breadth first); with
+    ``executable=False``, the first plain file of that name, executable or not."""
     level = [root]
     for _ in range(MAX_DEPTH):
         following: list[str] = []
@@ -35,10 +36,18 @@ def find_executable(root: str, name: str) -> str | None:
                     continue
                 if entry.is_dir(follow_symlinks=False):
                     following.append(entry.path)
-                elif entry.name == name and _is_executable(entry.path):
+                elif entry.name == name and (
+                        _is_executable(entry.path) if executable else _is_file(entry.path)):
                     return entry.path
         level = following
     return None
+
+
+def _is_file(path: str) -> bool:
+    try:
+        return stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:
+        return False
 
 
 def _is_executable(path: str) -> bool:

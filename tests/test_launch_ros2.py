@@ -203,7 +203,7 @@ def test_xml_reports_unknown_tags_attributes_and_syntax(write_tree):
         """)
     found = sorted((d.code, d.location.line) for d in model.diagnostics)
     assert found == [("LAUNCH_BAD_VALUE", 5), ("LAUNCH_MISSING_ATTRIBUTE", 4),
-                     ("LAUNCH_UNKNOWN_ATTRIBUTE", 3), ("LAUNCH_UNKNOWN_TAG", 2)]
+                     ("LAUNCH_UNEXPECTED_ATTRIBUTE", 3), ("LAUNCH_UNKNOWN_TAG", 2)]
     broken, _ = run(write_tree, "bad.launch.xml", "<launch><node></launch>")
     assert codes(broken) == ["LAUNCH_XML_SYNTAX"] and broken.nodes == []
 
@@ -302,3 +302,34 @@ def test_a_key_given_twice_in_a_parameter_file_merges_as_rcl_reads_it():
     assert params_for_node(document, "/tb3") == [
         ("wheels.radius", 0.03), ("wheels.separation", 0.16), ("a", 3)]
     assert params_for_node(document, "/ctrl") == [("b", 2)]
+
+
+def test_an_action_attribute_launch_does_not_read_fails_the_launch(write_tree):
+    # rmf_demos 080bb7b / 5af125a: ROS 1's required= on a <node>, help= on an <arg>;
+    # launch checks an action's own attributes and stops ("Unexpected attribute(s)"),
+    # not a nested entity's, and takes shell= / node-name= on a node
+    model, _ = run(write_tree, "main.launch.xml", """
+        <launch>
+          <arg name="map" default="m" help="the map"/>
+          <node pkg="p" exec="e" name="n" required="true" shell="false">
+            <param name="a" value="1" colour="red"/>
+          </node>
+          <node pkg="p" exec="e" node-name="m"/>
+        </launch>
+        """)
+    found = sorted((d.code, d.location.line, d.severity) for d in model.diagnostics)
+    assert found == [("LAUNCH_UNEXPECTED_ATTRIBUTE", 2, "error"),
+                     ("LAUNCH_UNEXPECTED_ATTRIBUTE", 3, "error"),
+                     ("LAUNCH_UNKNOWN_ATTRIBUTE", 4, "warning")]
+    assert "required=" in next(d for d in model.diagnostics if d.location.line == 3).message
+    # in YAML a node's env (like its param and remap) is a list of entities, not an
+    # attribute
+    yaml_model, _ = run(write_tree, "main.launch.yaml", """
+        launch:
+        - node: {pkg: p, exec: e, name: n, respawn_if_dead: "true",
+                 env: [{name: A, value: B}], remap: [{from: a, to: b}]}
+        """)
+    assert [(d.code, d.message) for d in yaml_model.diagnostics] == [
+        ("LAUNCH_UNEXPECTED_ATTRIBUTE", "ros2 launch refuses <node> with attribute "
+                                        "respawn_if_dead= (Unexpected attribute): the "
+                                        "launch fails")]

@@ -611,3 +611,24 @@ def generate_launch_description():
     assert found == [("LAUNCH_PY_ALWAYS_TRUE", "info", test_line)]
     assert "LaunchConfigurationEquals('aligned', 'True')" in next(
         d.message for d in model.diagnostics if d.code == "LAUNCH_PY_ALWAYS_TRUE")
+
+
+def test_a_call_of_a_value_python_does_not_call_is_a_type_error(write_tree):
+    # clearpath_robot 577bfcf: a comma missing between two remappings calls the first
+    # tuple with the second: a TypeError, said as such (not "a value not known");
+    # a try that catches TypeError takes it
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    try:
+        caught = 'x'(1)
+    except TypeError:
+        caught = 'handled'
+    return LaunchDescription([Node(
+        package='p', executable='e', name=caught,
+        remappings=[('image_color', 'color/image') ('image_mono', 'mono/image')])])
+""")
+    said = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert any("('image_color', 'color/image') fails: TypeError: 'tuple' object is not "
+               "callable" in m for m in said), said
+    assert not any("not known statically" in m and "image_color" in m for m in said)
+    assert [n.name for n in model.nodes] == ["/handled"]

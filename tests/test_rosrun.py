@@ -40,7 +40,8 @@ def test_a_launched_script_outside_scripts_folder_is_found(write_tree):
     assert checker.node.sources == ["pkg/test/checker.py"]
     assert [(link.kind, link.name) for link in checker.links] == [("subscribe", "/chatter")]
     assert config.node("/n").node is None
-    assert [d.code for d in config.diagnostics] == ["NODE_NOT_FOUND"]
+    # roslaunch finds not_executable.py and refuses it: said so, not "not in the workspace"
+    assert [d.code for d in config.diagnostics] == ["NODE_NOT_EXECUTABLE"]
 
 
 def test_launched_scripts_are_extracted_in_the_one_batch(write_tree, monkeypatch):
@@ -74,7 +75,9 @@ def test_a_launched_executable_that_is_not_python_is_there_but_not_read(write_tr
     (scripts/, executable): roslaunch finds it in the package's folder and runs it, so the
     launch does not name a missing executable (launch-missing-reference, an error); the
     tool does not read shell scripts, so its interface is unknown (NODE_NOT_READ, a
-    warning). A name that no file of the package has stays NODE_NOT_FOUND."""
+    warning). A file without its execute bit is found and refused by roslaunch
+    (NODE_NOT_EXECUTABLE, panther_ros' fan_controller.py); a name that no file of the
+    package has stays NODE_NOT_FOUND. Both are launch-missing-reference."""
     root = write_tree({
         "src/pkg/package.xml": package_xml("pkg"),
         "src/pkg/CMakeLists.txt": "project(pkg)\n",
@@ -97,8 +100,9 @@ def test_a_launched_executable_that_is_not_python_is_there_but_not_read(write_tr
         ("NODE_NOT_READ", 2, "node type pkg/server.sh is pkg/scripts/server.sh, a program "
                              "this tool does not read (not a built target nor a Python "
                              "program); its interface is unknown"),
-        ("NODE_NOT_FOUND", 3, "node type pkg/notes.sh is not in the workspace; its "
-                              "interface is unknown"),
+        ("NODE_NOT_EXECUTABLE", 3, "node type pkg/notes.sh: pkg/scripts/notes.sh is there "
+                                   "but not executable, so roslaunch cannot start it; its "
+                                   "interface is not read"),
         ("NODE_NOT_FOUND", 4, "node type pkg/missing_node is not in the workspace; its "
                               "interface is unknown")]
     from haros_arch.query.catalogue import run_catalogue

@@ -513,6 +513,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     ):
         config.diagnostics.append(diag.make("NODE_NOT_READ", decl.location, node=key,
                                             path=workspace.relpath(found)))
+    elif node is None and plugin is None and decl.ros_version == 1 and (
+        found := _program_file(workspace, *key.partition("/")[::2], executable=False)
+    ):
+        # roslaunch finds the file and refuses it: "Found ... but it is not executable"
+        config.diagnostics.append(diag.make("NODE_NOT_EXECUTABLE", decl.location, node=key,
+                                            path=workspace.relpath(found)))
     elif node is None:
         config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
                                             node=plugin or key))
@@ -529,14 +535,16 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
                         ros_version=decl.ros_version, test=decl.is_test)
 
 
-def _program_file(workspace: Workspace, package: str, name: str) -> str | None:
+def _program_file(workspace: Workspace, package: str, name: str,
+                  executable: bool = True) -> str | None:
     """An executable file ``name`` in ``package``'s folder, as roslaunch finds a node
-    type (``rosrun.find_executable``): a shell script in scripts/, a prebuilt program.
+    type (``rosrun.find_executable``): a shell script in scripts/, a prebuilt program
+    (with ``executable=False``, a file of that name without its execute bit too).
     None when there is none, or the name is not a plain file name."""
     root = workspace.find(package)
     if not root or not name or "/" in name or UNKNOWN_MARK in name:
         return None
-    return find_executable(root, name)
+    return find_executable(root, name, executable)
 
 
 def external_containers(config: Configuration, launch: LaunchModel) -> None:

@@ -96,13 +96,18 @@ class Frontend:
                 assert expr is not None
                 action.condition = e.Cond(expr, negate=key == "unless", source=str(raw))
         action.location = self.where(ent)
-        self.leftovers(ent)
+        self.leftovers(ent, action=True)
         return action
 
-    def leftovers(self, ent: Entity) -> None:
+    def leftovers(self, ent: Entity, action: bool = False) -> None:
+        # launch's frontend checks an action's own attributes once its parse method
+        # has run (expose_action, since foxy) and refuses the file with "Unexpected
+        # attribute(s)": an action's attribute no distro reads fails the launch; one
+        # on a nested entity (<param>, <remap>, <arg> of an include) is not checked
+        code = "LAUNCH_UNEXPECTED_ATTRIBUTE" if action else "LAUNCH_UNKNOWN_ATTRIBUTE"
         for key in ent.attrs:
             if key not in ent.read and key not in COMMON:
-                self.report("LAUNCH_UNKNOWN_ATTRIBUTE", ent, attribute=key, tag=ent.tag)
+                self.report(code, ent, attribute=key, tag=ent.tag)
 
     def cond_of(self, ent: Entity) -> e.Cond | None:
         for key in COMMON:
@@ -287,8 +292,10 @@ class Frontend:
             return [] if found is None else [found]
 
         container = ent.tag == "node_container"
+        # what launch's ExecuteProcess and launch_ros's Node read, in any distro
         for key in ("output", "respawn", "respawn_delay", "launch-prefix", "exec_name",
-                    "emulate_tty", "cwd", "sigterm_timeout", "sigkill_timeout"):
+                    "emulate_tty", "cwd", "sigterm_timeout", "sigkill_timeout", "shell",
+                    "respawn_max_retries", "node-name", "on_exit"):
             ent.read.add(key)
         action = e.NodeAction(
             self.text(ent, "pkg", True), self.text(ent, "exec", True),
@@ -377,7 +384,7 @@ def _yaml_entity(tag: str, body: Any, line: int) -> Entity:
         name = str(key.value)
         if isinstance(value, yaml.SequenceNode) and name in (
                 "children", "param", "remap", "arg", "composable_node", "keep", "choice",
-                "extra_arg"):
+                "extra_arg", "env"):
             if name == "children":
                 ent.children.extend(_yaml_list(value))
             else:

@@ -1085,6 +1085,12 @@ class Interpreter(Expressions):
         if isinstance(func, Unknown) and func.origin.startswith("class "):
             return self.unsupported(node, f"call to {func.origin}")
         callee = _source(node.func) if isinstance(node, ast.Call) else "?"
+        if func is None or isinstance(func, (str, bytes, int, float, tuple, list, dict)):
+            # a value known statically that Python does not call: ``('a', 'b') ('c',
+            # 'd')``, a comma missing between two remappings, is a TypeError when
+            # generate_launch_description runs, not a value unknown
+            reason = f"TypeError: '{type(func).__name__}' object is not callable"
+            return self.failed(node, f"call to {callee} fails: {reason}", reason)
         if isinstance(func, Unknown) and func.kind == "unsupported":
             # what it calls was said where it was made (``eval`` not defined, a call
             # not interpreted); its result is as unknown, and said no more
