@@ -220,3 +220,71 @@ def test_a_method_the_constructor_calls_of_a_class_also_built_unconditionally(
     main = SCANNER_MAIN.replace("  Scanner * s = nullptr;\n", "  Scanner * s = new Mockup();\n")
     assert _setup_node(write_tree, main)["datagram"] == []
     assert _setup_node(write_tree, main, one_file=True)["datagram"] == []
+
+
+SMOOTHERS_H = """
+#include <rclcpp/rclcpp.hpp>
+class Smoother { public: virtual ~Smoother() = default; };
+class L2 : public Smoother { public: explicit L2(rclcpp::Node & node); double w_; };
+class Jerk : public Smoother { public: explicit Jerk(rclcpp::Node & node); double w_; };
+"""
+
+SMOOTHERS_CPP = """
+#include "smoothers.h"
+L2::L2(rclcpp::Node & node) { w_ = node.declare_parameter<double>("pseudo_jerk_weight"); }
+Jerk::Jerk(rclcpp::Node & node) { w_ = node.declare_parameter<double>("jerk_weight"); }
+"""
+
+INFO_H = """
+#include <rclcpp/rclcpp.hpp>
+namespace vehicle { class Info { public: explicit Info(rclcpp::Node & node); double length; }; }
+"""
+
+SMOOTHER_NODE = """
+#include <memory>
+#include <vehicle/info.h>
+#include "smoothers.h"
+enum class Algorithm { JERK, L2 };
+Algorithm algorithm(const std::string & name)
+{
+  return name == "l2" ? Algorithm::L2 : Algorithm::JERK;
+}
+class Node : public rclcpp::Node {
+public:
+  Node() : rclcpp::Node("smoother") {
+    length_ = vehicle::Info(*this).length;
+    switch (algorithm(declare_parameter<std::string>("algorithm_type"))) {
+      case Algorithm::JERK: { smoother_ = std::make_shared<Jerk>(*this); break; }
+      case Algorithm::L2: { smoother_ = std::make_shared<L2>(*this); break; }
+    }
+  }
+  double length_;
+  std::shared_ptr<Smoother> smoother_;
+};
+"""
+
+
+def test_the_construction_s_condition_with_the_node_handed_to_another_package(
+        write_tree) -> None:
+    """The node handed to a class of another package whose code is not read
+    (``CPP_NODE_PASSED``, Autoware's ``VehicleInfoUtils(*this)``) may build what that
+    package can name, not the node's own package's classes: each smoother's
+    declarations keep the ``case`` it is built in (autoware_velocity_smoother built one
+    of four smoothers by its ``algorithm_type``; all four declared their parameters
+    unconditionally)."""
+    root = write_tree({
+        "smoother/package.xml": package_xml("smoother", "ament_cmake").replace(
+            "<export>", "<depend>rclcpp</depend><depend>vehicle</depend><export>"),
+        "smoother/src/smoothers.h": SMOOTHERS_H,
+        "smoother/src/smoothers.cpp": SMOOTHERS_CPP,
+        "smoother/src/node.cpp": SMOOTHER_NODE,
+        "vehicle/package.xml": package_xml("vehicle", "ament_cmake"),
+        "vehicle/include/vehicle/info.h": INFO_H})
+    result = extract_cpp([str(root / "smoother" / "src" / "node.cpp"),
+                          str(root / "smoother" / "src" / "smoothers.cpp")],
+                         scan([str(root)]), cache_dir=None)
+    assert "CPP_NODE_PASSED" in [d.code for d in result.diagnostics]
+    found = {c.name: [k.statement for k in c.conditions]
+             for c in result.calls if c.kind == "declare"}
+    assert found == {"algorithm_type": [], "pseudo_jerk_weight": ["switch"],
+                     "jerk_weight": ["switch"]}

@@ -397,7 +397,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # parse left (an error drops its statement), everywhere when a file was not read
     unseen = {word for unit in units for word in unit.unseen} | links.opaque_unseen(
         facts) if complete else {"*"}
-    built = _built_under(facts, unseen)
+    built = _built_under(facts, _building_unseen(units, facts) if complete else unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
     called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen),
                                     links.construction_unseen(unseen))
@@ -492,6 +492,27 @@ def _members_named(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:
                 name_default=default, default_param=other_param)
         out.append(call)
     return out
+
+
+def _building_unseen(units: list[CppResult], facts: list[links.Fact]) -> set[str]:
+    """The words where a construction of a class of the executable may be missed, for
+    the conditions a class is built under (``_built_under``): as ``unseen``, but a unit
+    whose node is handed (``*``) only to known code, a function or a class of another
+    package given ``this`` (``CPP_NODE_PASSED``: Autoware's ``VehicleInfoUtils(*this)``),
+    counts what its errors hide (``CppResult.hidden``) and the names it hands the node
+    to, as ``_reached`` does where that code runs. Such code cannot name a class of the
+    package that depends on it (packages do not depend on each other in a circle):
+    velocity_smoother's four smoothers, each built in one ``case`` of a ``switch`` on
+    the algorithm, kept no condition, and the parameters only the smoothers not chosen
+    read were 17 false "read but never set"."""
+    words: set[str] = set()
+    for unit in units:
+        if unit.unseen == ["*"] and unit.handed and "" not in unit.handed and (
+                unit.hidden != ["*"]):
+            words.update(unit.hidden)
+        else:
+            words.update(unit.unseen)
+    return words | links.opaque_unseen(facts)
 
 
 def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[Condition, ...]]:
