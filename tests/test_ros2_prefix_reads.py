@@ -182,3 +182,62 @@ def test_python_prefix_read_of_everything_is_the_node_whole(write_tree) -> None:
     calls = extract_python([str(root / "src/talk/talk/node.py")], scan([str(root)]),
                            package="talk").calls
     assert [(c.kind, c.name, c.under) for c in calls] == [("read", "~", False)]
+
+
+LIST_NODE = """
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+class Dummy : public rclcpp::Node
+{
+public:
+  Dummy() : rclcpp::Node("dummy",
+      rclcpp::NodeOptions().automatically_declare_parameters_from_overrides(true))
+  {
+    const auto names = this->list_parameters({"required_diags"}, 3).names;
+    for (const auto & name : names) {
+      std::string status;
+      this->get_parameter_or(name + ".status", status, std::string("OK"));
+    }
+  }
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Dummy>());
+}
+"""
+
+LIST_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='ex', executable='dummy', name='dummy',
+             parameters=[{'required_diags': {'localization': 'ekf', 'map': {'status': 'OK'}},
+                          'unused': 4}]),
+    ])
+"""
+
+
+def test_cpp_list_parameters_reads_what_is_set_under_each_prefix(write_tree) -> None:
+    """``list_parameters({prefix}, depth)`` gives the names the node has under the prefix,
+    which the code then reads by them: a read of the prefix's namespace whole, as
+    ``get_parameters(prefix, map)`` (Autoware's dummy_diag_publisher lists
+    ``required_diags``: 7 false "set but never read")."""
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex", "ament_cmake"),
+        "src/ex/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(ex)\n"
+                                 "add_executable(dummy src/node.cpp)\n",
+        "src/ex/src/node.cpp": LIST_NODE,
+        "src/ex/launch/ex.launch.py": LIST_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [ex/launch/ex.launch.py]\n"})
+    result = extract_cpp([str(root / "src/ex/src/node.cpp")], scan([str(root / "src")]),
+                         cache_dir=None)
+    assert ("required_diags.", True) in [(c.name, c.under) for c in result.calls
+                                         if c.kind == "read"]
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    assert [e for e, _ in _rule(model, "parameter-set-not-read")] == [
+        ["parameter:/dummy/unused"]]

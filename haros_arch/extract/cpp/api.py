@@ -520,6 +520,11 @@ _RCLCPP_NODE: dict[str, RosFunction] = {
         "read", type_from=("value",), type_arg=1, out_arg=1, default_arg=2, on_handle=False),
     "get_parameters": RosFunction("read", on_handle=False, per_element=True),
     "has_parameter": RosFunction("read", on_handle=False),
+    # list_parameters({prefix, ...}, depth): the names the node has under each prefix,
+    # which the code then reads by them (Autoware's dummy_diag_publisher lists
+    # ``required_diags`` and reads ``<name>.is_active``): each prefix's namespace, read
+    # whole as get_parameters(prefix, map) reads it
+    "list_parameters": RosFunction("read", on_handle=False, per_element=True),
     "set_parameter": RosFunction("write", on_handle=False),
     "set_parameters": RosFunction("write", on_handle=False, per_element=True),
     "set_parameters_atomically": RosFunction("write", on_handle=False, per_element=True),
@@ -690,7 +695,7 @@ SDF: dict[tuple[str, str], RosFunction] = {
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"
 _INTERFACE_METHODS = ("declare_parameter", "undeclare_parameter", "has_parameter",
-                      "get_parameter", "get_parameters", "set_parameters",
+                      "get_parameter", "get_parameters", "list_parameters", "set_parameters",
                       "set_parameters_atomically")
 RCLCPP: dict[tuple[str, str], RosFunction] = {
     **{(cls, name): row for cls in RCLCPP_NODES for name, row in _RCLCPP_NODE.items()},

@@ -2040,6 +2040,11 @@ class CallFinder:
         parameter its value comes from, if any: (parameter, its default, and ``.`` when
         the name is each element of that list parameter in turn)."""
         if spec.per_element:
+            if call.spelling == "list_parameters":
+                # each prefix's namespace whole (``PrimitiveCall.under``); "": all of them
+                prefixes = [self._name(e, scope)[0] for e in _elements(expr)]
+                return [(PrefixName(prefix + ".") if prefix else "~", None)
+                        if "?" not in prefix else ("?", None) for prefix in prefixes]
             if call.spelling in _PREFIXED and len(args) >= 2:
                 prefix = render(scope.string(expr))
                 declared = self._prefix_keys.get(prefix)
