@@ -111,6 +111,9 @@ def test_lifecycle_rcl_std_and_opencv_apis_parse() -> None:
         ("server", "~get_available_transitions", lifecycle + "GetAvailableTransitions", 28),
         ("server", "~get_transition_graph", lifecycle + "GetAvailableTransitions", 28),
         ("publish", "monitor/report", "std_msgs/msg/String", 30),
+        # list_parameters({}, 0): the names of every parameter, which it then reads by
+        # them, a read of the node's namespace whole
+        ("read", "~", None, 48),
         ("publish", "probe", "std_msgs/msg/String", 74),
     ]
     assert [(d.code, d.message) for d in found.diagnostics] == []

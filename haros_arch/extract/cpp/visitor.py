@@ -2041,7 +2041,10 @@ class CallFinder:
         the name is each element of that list parameter in turn)."""
         if spec.per_element:
             if call.spelling == "list_parameters":
-                # each prefix's namespace whole (``PrimitiveCall.under``); "": all of them
+                # each prefix's namespace whole (``PrimitiveCall.under``); "" or no
+                # prefix at all (``list_parameters({}, 0)``): every parameter, ``~``
+                if "".join(t.spelling for t in expr.get_tokens()) == "{}":
+                    return [("~", None)]
                 prefixes = [self._name(e, scope)[0] for e in _elements(expr)]
                 return [(PrefixName(prefix + ".") if prefix else "~", None)
                         if "?" not in prefix else ("?", None) for prefix in prefixes]
