@@ -2040,13 +2040,13 @@ def _scan(function: Cursor, every: list[Cursor] | None = None,
     return calls, lambdas
 
 
-def _same_parameters(function: Cursor, base: Cursor) -> bool:
-    """Whether the class of constructor ``function`` names the class of constructor
-    ``base`` as its base with its own template parameters, in order
-    (``Service<ServiceT> : BaseService<ServiceT>``)."""
+def _base_arguments(function: Cursor, base: Cursor) -> tuple[list[str], list[str]] | None:
+    """The template parameters of the class of constructor ``function`` and the template
+    arguments it names the class of constructor ``base`` with as its base (None when it
+    does not derive from that class)."""
     cls, owner = function.semantic_parent, base.semantic_parent
     if cls is None or owner is None:
-        return False
+        return None
     params = [c.spelling for c in cls.get_children()
               if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
     for spec in cls.get_children():
@@ -2054,26 +2054,24 @@ def _same_parameters(function: Cursor, base: Cursor) -> bool:
                 _key(spec.referenced.canonical) == _key(owner.canonical)):
             text = spec.type.spelling
             given = text[text.find("<") + 1:text.rfind(">")] if "<" in text else ""
-            return bool(params) and [a.strip() for a in given.split(",")] == params
-    return False
+            return params, [a.strip() for a in given.split(",")]
+    return None
+
+
+def _same_parameters(function: Cursor, base: Cursor) -> bool:
+    """Whether the class of constructor ``function`` names the class of constructor
+    ``base`` as its base with its own template parameters, in order
+    (``Service<ServiceT> : BaseService<ServiceT>``)."""
+    found = _base_arguments(function, base)
+    return found is not None and bool(found[0]) and found[1] == found[0]
 
 
 def _first_parameter_passed(function: Cursor, base: Cursor) -> bool:
     """Whether the class of constructor ``function`` names the class of constructor
     ``base`` as its base with its own first template parameter as the base's first
     template argument (``Modified<M, NodeType> : message_filters::Subscriber<M>``)."""
-    cls, owner = function.semantic_parent, base.semantic_parent
-    if cls is None or owner is None:
-        return False
-    params = [c.spelling for c in cls.get_children()
-              if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
-    for spec in cls.get_children():
-        if spec.kind == CursorKind.CXX_BASE_SPECIFIER and spec.referenced is not None and (
-                _key(spec.referenced.canonical) == _key(owner.canonical)):
-            text = spec.type.spelling
-            given = text[text.find("<") + 1:text.rfind(">")] if "<" in text else ""
-            return bool(params) and given.split(",")[0].strip() == params[0]
-    return False
+    found = _base_arguments(function, base)
+    return found is not None and bool(found[0]) and found[1][0] == found[0][0]
 
 
 def _delegation(function: Cursor) -> Cursor | None:
