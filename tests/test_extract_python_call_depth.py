@@ -14,6 +14,7 @@ import os
 from conftest import package_xml
 
 from haros_arch.extract.python import extract_python
+from haros_arch.extract.python.calls import MAX_CALL_DEPTH as DEPTH
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
 from haros_arch.workspace import Workspace
@@ -95,9 +96,10 @@ def test_a_cut_that_may_lose_a_ros_call_is_said(tmp_path) -> None:
     result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
     said = [(d.location.file, d.location.line, d.message) for d in result.diagnostics
             if d.code == "PY_CALL_DEPTH"]
-    # main, called from the module, is walked at depth 1: f9 calls f10 ten calls deep
-    assert said == [("deep.py", 38, "the call of f10 is not followed, 10 calls deep; "
-                                      "ROS calls it may make are not read here")]
+    # main, called from the module, is walked at depth 1: the call of f<DEPTH> is the
+    # one DEPTH calls deep (each f<k> four lines below the one before)
+    assert said == [("deep.py", 4 * DEPTH - 2, f"the call of f{DEPTH} is not followed, "
+                     f"{DEPTH} calls deep; ROS calls it may make are not read here")]
 
 
 def test_a_cut_of_a_helper_without_ros_calls_is_silent(tmp_path) -> None:
@@ -126,5 +128,5 @@ def test_the_node_with_a_cut_is_partial(write_tree) -> None:
                     Options(cache_dir=None))
     (node,) = model.configuration("c").nodes
     assert node.completeness == "partial"
-    assert any("deep.py:38" in reason and "f10" in reason
+    assert any(f"deep.py:{4 * DEPTH - 2}" in reason and f"f{DEPTH}" in reason
                for reason in node.completeness_reasons)
