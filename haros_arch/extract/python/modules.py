@@ -275,6 +275,14 @@ def module_file(base: str, parts: list[str]) -> str | None:
     return None
 
 
+def last_name(expr: ast.expr | None) -> str:
+    """The name an expression ends in (``rospy.Publisher`` -> ``Publisher``, ``f`` ->
+    ``f``; "" for anything else): what a call or a base class names."""
+    if isinstance(expr, ast.Attribute):
+        return expr.attr
+    return expr.id if isinstance(expr, ast.Name) else ""
+
+
 def _ast_parse(text: str, path: str) -> ast.Module:
     return syntax.parse(text, path)
 

@@ -11,21 +11,12 @@ import ast
 from collections.abc import Iterable
 
 from . import rclpy, rospy
-from .modules import ClassInfo, FunctionInfo, Module
+from .modules import ClassInfo, FunctionInfo, Module, last_name
 
 # the names a call of the API tables ends in: ``rospy.Publisher``, ``node.create_client``
 API_NAMES = frozenset(
     {key[1] for key in (*rospy.ROWS, *rclpy.ROWS, *rospy.NODE_NAMES, *rclpy.NODE_NAMES)}
     | set(rclpy.NODE_METHODS))
-
-
-def _called(call: ast.Call) -> str | None:
-    func = call.func
-    if isinstance(func, ast.Attribute):
-        return func.attr
-    if isinstance(func, ast.Name):
-        return func.id
-    return None
 
 
 class Reach:
@@ -69,8 +60,8 @@ class Reach:
             for part in ast.walk(node):
                 if not isinstance(part, ast.Call):
                     continue
-                name = _called(part)
-                if name is None:
+                name = last_name(part.func)
+                if not name:
                     continue
                 if name in API_NAMES:
                     found = True
@@ -97,11 +88,10 @@ class Reach:
         if init is not None:
             found.append(init.node)
         for base in cls.node.bases:
-            name = base.attr if isinstance(base, ast.Attribute) else (
-                base.id if isinstance(base, ast.Name) else None)
+            name = last_name(base)
             if name in API_NAMES:
                 found.append(ast.Call(func=ast.Name(id=name), args=[], keywords=[]))
-            for other in self._index.get(name or "", ()):
+            for other in self._index.get(name, ()):
                 if isinstance(other, ClassInfo):
                     found.extend(self._class_bodies(other, seen))
         return found

@@ -27,7 +27,7 @@ from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
 from .conditions import condition, is_main_guard, source_text
-from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import
+from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import, last_name
 from .msg_types import ros_type
 from .objects import (
     ELEMENT_OF,
@@ -86,12 +86,8 @@ def _goes_on(handler: ast.ExceptHandler) -> bool:
     for node in ast.walk(handler):
         if isinstance(node, ast.Raise | ast.Return):
             return False
-        if isinstance(node, ast.Call):
-            func = node.func
-            name = func.attr if isinstance(func, ast.Attribute) else (
-                func.id if isinstance(func, ast.Name) else "")
-            if name in _EXITS:
-                return False
+        if isinstance(node, ast.Call) and last_name(node.func) in _EXITS:
+            return False
     return True
 
 
@@ -1449,11 +1445,7 @@ def _leaves(body: list[ast.stmt]) -> str | None:
 
 
 def _called(expr: ast.expr) -> str:
-    if not isinstance(expr, ast.Call):
-        return ""
-    func = expr.func
-    return func.attr if isinstance(func, ast.Attribute) else (
-        func.id if isinstance(func, ast.Name) else "")
+    return last_name(expr.func) if isinstance(expr, ast.Call) else ""
 
 
 def _exits(expr: ast.expr) -> bool:
