@@ -228,3 +228,52 @@ def test_many_private_parameters_are_one_box_collapsed_at_first(browser: Any,  #
     assert {f"parameter:{n}" for n in names} <= watched.ids("#graph .vertex")
     assert watched.page.is_visible('#graph .group[data-group="/talker/"]')
     assert watched.problems == []
+
+
+def test_crowded_global_names_are_boxed_by_namespace_and_unresolved_apart(
+        browser: Any, tmp_path: Path) -> None:  # noqa: F811
+    # Autoware's shape: a few nodes in /, and many global topics and services in
+    # namespaces no node is in (/api/..., /vehicle/status/...), some named '?'.
+    where = {"package": "p", "file": "p/src/node.cpp", "line": 3, "column": 1}
+    nodes = [f"/adapter{i}" for i in range(70)]
+    topics = ([f"/api/routing/t{i}" for i in range(20)] + [f"/api/motion/t{i}" for i in range(25)]
+              + [f"/vehicle/status/s{i}" for i in range(12)] + ["/diagnostics", "/clock"]
+              + ["?", "?", "/?/scan", "/?/odom"])
+    links, records = [], []
+    for i, name in enumerate(topics):
+        node = nodes[i % len(nodes)]
+        links.append({"kind": "publish", "node": node, "name": name, "given": name,
+                      "type": "std_msgs/String", "queue_size": 1, "qos": None,
+                      "conditions": [], "location": where})
+        records.append({"name": name, "id": f"topic:{name}#{i}", "types": ["std_msgs/String"],
+                        "publishers": [node], "subscribers": [], "conditions": []})
+        links[-1]["resource"] = records[-1]["id"]
+    config = {
+        "name": "c", "launch": [], "args": {}, "diagnostics": [], "services": [], "actions": [],
+        "parameters": [], "topics": records, "links": links,
+        "nodes": [{"name": n, "id": f"node:{n}", "node": "p/adapter", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where}
+                  for n in nodes]}
+    model = {"schema": "haros-arch/1", "project": "p", "packages": [], "diagnostics": [],
+             "configurations": [config]}
+    path = tmp_path / "crowded.html"
+    write_report(model, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    drawn = watched.ids("#graph .vertex")
+    # Big: the boxes start collapsed; the nodes and the two lone global topics stay.
+    assert {"namespace:/api/", "namespace:/vehicle/", "namespace:/?/"} <= drawn
+    assert {"topic:/diagnostics#57", "topic:/clock#58"} <= drawn
+    assert not any(v.startswith("topic:/api/") or v.startswith("topic:/vehicle/") for v in drawn)
+    unresolved = watched.page.text_content(watched.vertex("namespace:/?/"))
+    assert "unresolved" in unresolved and "4 topics" in unresolved
+    assert "could not resolve" in watched.page.inner_text("#hint")
+    # /api/ holds more than a box shows at once: its two namespaces are boxes inside it.
+    watched.page.click(watched.vertex("namespace:/api/"))
+    shown = watched.ids("#graph .vertex")
+    assert {"namespace:/api/routing/", "namespace:/api/motion/"} <= shown
+    watched.page.click(watched.vertex("namespace:/api/motion/"))
+    assert "topic:/api/motion/t3#23" in watched.ids("#graph .vertex")
+    # Opening a box zooms to it: the other is clicked where it is, out of view.
+    watched.page.dispatch_event(watched.vertex("namespace:/?/"), "click")
+    assert {"topic:?#59", "topic:?#60", "topic:/?/scan#61"} <= watched.ids("#graph .vertex")
+    assert watched.problems == []

@@ -301,11 +301,13 @@ function showHint() {
   ui.hint.hidden = !shut || !ui.packages.hidden || !ui.launch.hidden;
   if (!shut) return;
   const prefixed = [...app.index.tree.boxes.values()].some(b => b.prefix);
+  const unresolved = [...app.index.tree.boxes.values()].some(b => b.unresolved);
   ui.hint.replaceChildren(
     el('strong', {}, 'Click a namespace to open it.'), ' ',
     app.big && !app.touched ? `This configuration has ${app.big.toLocaleString('en')} elements, so ${shut} namespaces start collapsed; ` +
       'each box counts what it holds, and a thick arrow stands for every link between two boxes (hover for the count). ' +
       (prefixed ? 'Names that share their first word (camera_driver, /camera/image) are boxed together as /camera*. ' : '') +
+      (unresolved ? 'Names the tool could not resolve (a \u2018?\u2019 in their namespace) are boxed as \u2018? unresolved names\u2019. ' : '') +
       'Search + Enter opens the namespace of a name. '
       : `${shut} namespace${shut === 1 ? '' : 's'} collapsed. `,
     el('a', {href: '#', id: 'open-all', onclick: event => { event.preventDefault(); setCollapsed([]); }}, 'open all'));

@@ -372,5 +372,6 @@ function drawGroups(layer, view, handlers) {
 }
 
 function boxTitle(box) {
+  if (box.unresolved) return 'names whose namespace is not known';
   return box.prefix ? `names starting with ${box.name.slice(0, -1)}` : `namespace ${box.name}`;
 }

@@ -10,9 +10,14 @@
 // them by the first word of their names (camera_driver, camera_info, /camera/image ->
 // "/camera*") when a word is shared by PREFIX_MIN or more, two of them nodes (one node
 // and its private names are not a group), so a flat 300-node system opens
-// as boxes of related names instead of one wall.
+// as boxes of related names instead of one wall. What is still more than PREFIX_AT there
+// (global topics and services in namespaces no node is in: /api/..., /vehicle/status/...)
+// goes into a box of each namespace that names PREFIX_MIN or more of them, and names
+// whose namespace is not known (a topic named '?', '/?/scan') into one box of unresolved
+// names, so that Autoware opens as boxes, not as a column of a hundred global names.
 //
-// box: {name (a namespace, '/robot1/arm/', or a name prefix, '/camera*'), label (relative
+// box: {name (a namespace, '/robot1/arm/', a name prefix, '/camera*', or base + '?/' for
+// the unresolved names), label (relative
 // to the enclosing box), base (what member labels are relative to), parent, depth,
 // children, members (direct), size (elements in the subtree)}. entity.path: the names of
 // the boxes around it, outermost first.
@@ -80,7 +85,8 @@ function namespaceTree(entities) {
     for (const e of box.members) e.path = here;
     box.size = box.members.length;
     for (const child of box.children) {
-      child.label = child.name.startsWith(box.base) && box.name ? child.name.slice(box.base.length) : child.name;
+      child.label = child.unresolved ? '? unresolved names'
+        : child.name.startsWith(box.base) && box.name ? child.name.slice(box.base.length) : child.name;
       visit(child, here, depth + 1);
       box.size += child.size;
     }
@@ -110,6 +116,48 @@ function groupByPrefix(box) {
     for (const e of members) grouped.add(e);
   }
   box.members = box.members.filter(e => !grouped.has(e));
+  groupByNamespace(box);
+}
+
+// What is still crowded in a box after the first words: names (no node: a node's place is
+// its namespace) under the same first namespace below the box, and names with '?' before
+// their last part.
+function groupByNamespace(box) {
+  if (box.members.length <= PREFIX_AT) return;
+  const spaces = new Map();
+  for (const e of box.members) {
+    if (e.kind === 'node') continue;
+    const ns = firstSpace(e.name, box.base);
+    if (!ns) continue;
+    if (!spaces.has(ns)) spaces.set(ns, []);
+    spaces.get(ns).push(e);
+  }
+  const grouped = new Set();
+  for (const [ns, members] of spaces) {
+    if (members.length < PREFIX_MIN || members.length === box.members.length) continue;
+    const name = box.base + ns;
+    const unresolved = ns === '?/';
+    let child = box.children.find(c => c.name === name);
+    if (child) child.members.push(...members);
+    else {
+      child = {name, base: unresolved ? box.base : name, members, children: [], parent: box, unresolved};
+      box.children.push(child);
+    }
+    for (const e of members) grouped.add(e);
+    if (!unresolved) groupByNamespace(child);
+  }
+  box.members = box.members.filter(e => !grouped.has(e));
+}
+
+// The first namespace of a name below base ('/api/' of '/api/routing/state' below '/'),
+// '?/' for a name whose namespace is not known there, '' for a name right in base.
+function firstSpace(name, base) {
+  if (!name.startsWith(base)) return name.includes('?') ? '?/' : '';
+  const rest = name.slice(base.length);
+  const cut = rest.indexOf('/');
+  const first = cut < 0 ? rest : rest.slice(0, cut + 1);
+  if (first.includes('?')) return '?/';
+  return cut < 0 ? '' : first;
 }
 
 function firstWord(name, base) {
