@@ -107,6 +107,17 @@ CASES = {
         "    char c;\n"
         "    in >> std::noskipws >> c;\n"
         "    if (std::signbit(-1.0) && first != last && element == 0 && bits() > 0) {}\n"),
+    # the thirty-fourth session: the emergency braking node's closest object
+    "algorithms_with_a_comparison": (
+        "",
+        "    std::vector<double> values{1.0, 2.0};\n"
+        "    const auto closest = std::min_element(values.begin(), values.end(),\n"
+        "      [](const auto & a, const auto & b) { return a < b; });\n"
+        "    const auto farthest = std::max_element(values.begin(), values.end(),\n"
+        "      [](double a, double b) { return a < b; });\n"
+        "    auto end = std::unique(values.begin(), values.end(),\n"
+        "      [](double a, double b) { return a == b; });\n"
+        "    if (closest != farthest && end != values.end()) {}\n"),
 }
 
 
