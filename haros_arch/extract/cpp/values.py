@@ -1091,6 +1091,11 @@ class Scope:
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
             # manage_nodes``, ``~/manage_nodes``: ``own_name``)
             return (NODE_NAME,)
+        if len(args) == 1 and target.spelling in ("move", "forward") and (
+                _namespace_of(target) == "std"):
+            # ``suffix_(std::move(suffix))``: the value moved (autoware_utils'
+            # PublishedTimePublisher keeps its topic suffix so)
+            return self.string(args[0], depth + 1)
         if args and (_resolver(target) is not None or _ros_names(target, "resolve")
                      or _ros_names(target, "remap")):
             return self.string(args[0], depth + 1)
