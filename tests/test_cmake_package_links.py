@@ -1122,3 +1122,49 @@ def test_a_package_with_a_library_does_not_bring_what_it_exports(write_tree) -> 
     node, _ = _node(write_tree, files, "calibrator", "calibrator")
     assert "utils_logging/src/logger_level_configure.cpp" not in node.sources
     assert node.completeness == "partial"
+
+
+def test_what_a_linked_package_names_of_a_package_it_links_comes_along(write_tree) -> None:
+    # Autoware's trajectory follower links the MPC controller's library, whose code
+    # builds autoware_vehicle_info_utils' VehicleInfoUtils with the node: that
+    # constructor declares the vehicle's parameters on the node, so its file is run
+    files = dict(ROS1)
+    files["costs/CMakeLists.txt"] = files["costs/CMakeLists.txt"].replace(
+        "roscpp std_msgs", "roscpp std_msgs probe")
+    _catkin_library(files, "probe", "src/probe.cpp", """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        namespace probe {
+        class Probe { public: explicit Probe(ros::NodeHandle & nh); };
+        Probe::Probe(ros::NodeHandle & nh)
+        {
+          nh.advertise<std_msgs::String>("probe", 1);
+        }
+        }
+        """)
+    _catkin_library(files, "unlinked", "src/other.cpp", """
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+        namespace unlinked {
+        class Other { public: explicit Other(ros::NodeHandle & nh); };
+        Other::Other(ros::NodeHandle & nh)
+        {
+          nh.advertise<std_msgs::String>("other", 1);
+        }
+        }
+        """)
+    files["costs/src/map_ros.cpp"] = files["costs/src/map_ros.cpp"].replace(
+        "namespace costs {",
+        "namespace probe { class Probe { public: explicit Probe(ros::NodeHandle & nh); }; }\n"
+        "namespace unlinked { class Other { public: explicit Other(ros::NodeHandle & nh); };"
+        " }\nnamespace costs {").replace(
+        'private_nh.param("update_rate", rate_, 5.0);',
+        'private_nh.param("update_rate", rate_, 5.0);\n'
+        '  probe::Probe probe(private_nh);\n  unlinked::Other other(private_nh);')
+    node, _ = _node(write_tree, files, "planner", "planner_node")
+    assert "costs/src/map_ros.cpp" in node.sources
+    assert "probe/src/probe.cpp" in node.sources
+    # a package costs does not link: its class is not costs' to build
+    assert "unlinked/src/other.cpp" not in node.sources
+    calls = {(c.kind, c.name) for c in node.calls}
+    assert {("publish", "~global_costmap/probe"), ("publish", "~local_costmap/probe")} <= calls

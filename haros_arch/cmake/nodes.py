@@ -193,14 +193,15 @@ class SourceMap:
         links (catkin's ``catkin_LIBRARIES``, ament's dependencies), a list per
         package (``cmake.libraries_handed``: a header-only package's are those of the
         packages it exports): move_base links costmap_2d, whose ``Costmap2DROS`` makes
-        the costmaps' calls on move_base's node. Not those of the packages they link in
-        turn: a
-        package's dependencies are its own business (a test-support package an
-        Autoware planner declares as a dependency links the test utilities, whose
-        publishers are no node's)."""
+        the costmaps' calls on move_base's node."""
+        return [group for _owner, group in self.handed_groups(target)]
+
+    def handed_groups(self, target: Target) -> list[tuple[str, list[str]]]:
+        """``elsewhere``'s lists, each with the package it is of ('' for a library
+        target linked by its bare name)."""
         if self._handed is None:
             return []
-        out: list[list[str]] = []
+        out: list[tuple[str, list[str]]] = []
         seen = {self._package}
         for name in self.packages(target):
             seen.add(name)
@@ -210,15 +211,25 @@ class SourceMap:
                         continue
                     seen.add(owner)
                 if group:
-                    out.append(group)
+                    out.append((owner, group))
         if self._named is not None:
             # a library of another package linked by its target's name (motoman's
             # ``target_link_libraries(motoman_industrial_robot_client
             # industrial_robot_client)``, a library industrial_core does not export)
             named = (self._named(name) for linked in self.closure(target)
                      for name in dict.fromkeys(linked.links) if name not in self.targets)
-            out.extend(group for group in named if group)
+            out.extend(("", group) for group in named if group)
         return out
+
+    def handed_by(self, package: str) -> list[tuple[str, list[str]]]:
+        """The (package, sources) lists of the libraries that the libraries of the
+        workspace package ``package`` link in turn (its ``package_links``, each as
+        ``libraries_handed`` gives it): what code of that package may call."""
+        if self._handed is None or self._links is None:
+            return []
+        return [(owner, group) for name in self._links(package)
+                if name not in MODELLED_PACKAGES and name != self._package
+                for owner, group in self._handed(name) if group]
 
     def reached(self, target: Target) -> list[list[str]]:
         """``elsewhere``'s groups, then those of the packages their libraries link, and
@@ -281,9 +292,12 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
                     workspace: Files) -> list[str]:
     """``kept`` and the sources of other packages' libraries that ``target`` links and
     that kept code names: those defining a class member or free function it names, and
-    those that these name in their own package (``classes.named_closure``; what one
-    package's helper names does not bring another package's: Autoware's route handler
-    names test utilities its package links). Never one that names nothing we can tell,
+    those that these name in their own package (``classes.named_closure``), and in the
+    packages that package's libraries link (Autoware's trajectory follower links the
+    MPC controller's library, which builds autoware_vehicle_info_utils'
+    ``VehicleInfoUtils`` with the node), never in a package it links only for its
+    tests (the route handler names test utilities its tests link). Never one that
+    names nothing we can tell,
     nor one that exports plugin or node classes (a plugin's calls reach its host
     through ``plugins.hosts``, not by linking), nor a class that is a node of its own,
     which makes its calls on that node (nav2's Costmap2DROS in the planner server: its
@@ -298,16 +312,46 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     # opennav_docking's)
     words = code_words(kept, workspace) - defined_in(kept, workspace)
     built = frozenset().union(*(main_words(s, workspace) for s in kept))
-    found: list[str] = []
-    for group in sources.elsewhere(target):
-        others = [s for s in group if s not in kept
-                  and not exported_classes(os.path.join(workspace.root, s), workspace)
-                  and all(cls in built or derives_from(cls, kept, workspace)
-                          for cls in node_classes(s, workspace))]
-        found.extend(named_closure(words, others, workspace, anonymous=False))
+
+    def usable(group: list[str]) -> list[str]:
+        return [s for s in group if s not in kept
+                and not exported_classes(os.path.join(workspace.root, s), workspace)
+                and all(cls in built or derives_from(cls, kept, workspace)
+                        for cls in node_classes(s, workspace))]
+
+    # each package's list, and the words that may name its files: the node's own code
+    # for the packages it links; the files found of a package for the packages that
+    # package's libraries link (the trajectory follower's MPC controller, of another
+    # package, builds VehicleInfoUtils with the node)
+    groups: dict[str, list[str]] = {}
+    naming: dict[str, set[str]] = {}
+    for index, (owner, group) in enumerate(sources.handed_groups(target)):
+        key = owner or f"\0{index}"
+        groups[key] = usable(group)
+        naming[key] = set(words)
+    found: dict[str, None] = {}
+    waiting = list(groups)
+    while waiting:
+        key = waiting.pop(0)
+        new = [s for s in named_closure(naming[key], groups[key], workspace, anonymous=False)
+               if s not in found]
+        if not new:
+            continue
+        found.update(dict.fromkeys(new))
+        if key.startswith("\0"):
+            continue
+        said = set().union(*(named_words(s, workspace) for s in new)) - defined_in(kept,
+                                                                                   workspace)
+        for owner, group in sources.handed_by(key):
+            if owner not in groups:
+                groups[owner], naming[owner] = usable(group), set()
+            if not said <= naming[owner]:
+                naming[owner] |= said
+                if owner not in waiting:
+                    waiting.append(owner)
     # a file that names no ROS client library makes no call of the node (its parse
     # errors would only make the node look partial): what it names still counts
-    return [*kept, *(s for s in dict.fromkeys(found) if uses_ros(s, workspace))]
+    return [*kept, *(s for s in found if uses_ros(s, workspace))]
 
 
 def _run_here(target: Target, own: list[str], sources: SourceMap,
