@@ -635,6 +635,7 @@ class CallFinder:
                     # match (``Wrappers.emit``) or one clang resolved gives something
                     if node.referenced is not None or self.wrappers.calls_wrapper(node):
                         return True
+                    self._library_method(node)  # in every function, walked or not
                     dependent = True
             elif kind == CursorKind.UNEXPOSED_EXPR and not node.spelling and (
                 _recovered_name(node) in rows
@@ -1042,6 +1043,26 @@ class CallFinder:
         finally:
             self._made_by = None
         return True
+
+    def _library_method(self, call: Cursor) -> None:
+        """A call a template leaves unresolved, of a name a wrapper of the unit has, on
+        an object the code declares of a class of a ROS client library: that class's
+        method, not the wrapper, so no call is hidden there (``resolved``, read by
+        ``recall``). Autoware's fusion node template publishes with
+        ``pub_ptr_->publish(msg)``, ``pub_ptr_`` a ``typename
+        rclcpp::Publisher<ExportObj>::SharedPtr``, in a unit where autoware_utils'
+        ``DebugPublisher::publish`` makes publishers."""
+        name = _recovered_name(call)
+        if not name or name not in self.wrappers.names or call.location.file is None:
+            return
+        obj = _method_object(call)
+        declared = obj.referenced if obj is not None else None
+        if declared is None or declared.kind not in (
+                CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL):
+            return
+        written = declared.type.spelling.removeprefix("const ").removeprefix("typename ")
+        if written.split("::", 1)[0] in _CLIENT_NAMESPACES:
+            self.resolved.add((call.location.file.name, call.location.line))
 
     def _unresolved(self, call: Cursor, conditions: tuple[Condition, ...],
                     scope: Scope) -> None:
@@ -3200,6 +3221,12 @@ def _lost_new(expr: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     base = row_class(decl)
     spec = api.ALL.get((qualified_name(base), base.spelling))
     return None if spec is None else (spec, base)
+
+
+# the namespaces of the ROS client libraries' classes: a method of one of them called on
+# an object declared of it is no wrapper of the unit (``_library_method``)
+_CLIENT_NAMESPACES = frozenset({"rclcpp", "rclcpp_lifecycle", "rclcpp_action", "ros",
+                                "actionlib", "image_transport"})
 
 
 def _recovered_name(expr: Cursor) -> str:
