@@ -1,0 +1,130 @@
+"""What real ROS 2 code needed of the C++ extraction (survey Z48).
+
+- naoqi_driver2's ``src/event/audio.hpp`` includes ``"../src/publishers/basic.hpp"``: not
+  found beside it (``src/event/../src``), found through the package's include folder
+  (``include/../src/publishers/basic.hpp``), as its CMakeLists' ``include_directories(
+  "include")`` makes the compiler search. The parse searches the include folders through
+  one header map, in which a name with ``..`` parts was a miss: an empty stand-in took
+  the header's place, the publisher class template it defines was unknown and the
+  driver's audio and touch publishers were lost (the node partial)."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+CMAKE = """\
+cmake_minimum_required(VERSION 3.5)
+project(z48)
+find_package(rclcpp REQUIRED)
+include_directories("include")
+add_executable(talker src/main.cpp src/event/audio.cpp)
+"""
+
+BASIC = """\
+#pragma once
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+template<class T>
+class BasicPublisher {
+ public:
+  explicit BasicPublisher(const std::string& topic) : topic_(topic) {}
+  void reset(rclcpp::Node* node) { pub_ = node->create_publisher<T>(topic_, 10); }
+ private:
+  std::string topic_;
+  typename rclcpp::Publisher<T>::SharedPtr pub_;
+};
+"""
+
+AUDIO_HPP = """\
+#pragma once
+#include <std_msgs/msg/string.hpp>
+#include "../src/publishers/basic.hpp"
+class AudioEvent {
+ public:
+  AudioEvent() : publisher_("audio") {}
+  void resetPublisher(rclcpp::Node* node);
+ private:
+  BasicPublisher<std_msgs::msg::String> publisher_;
+};
+"""
+
+AUDIO_CPP = """\
+#include "audio.hpp"
+void AudioEvent::resetPublisher(rclcpp::Node* node) { publisher_.reset(node); }
+"""
+
+MAIN = """\
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include "event/audio.hpp"
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("talker");
+  AudioEvent event;
+  event.resetPublisher(node.get());
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_an_include_with_dot_dot_found_through_an_include_folder(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("z48", "ament_cmake").replace(
+        "</license>", "</license><depend>rclcpp</depend><depend>std_msgs</depend>"))
+    (tmp_path / "CMakeLists.txt").write_text(CMAKE)
+    (tmp_path / "include" / "z48").mkdir(parents=True)
+    (tmp_path / "include" / "z48" / "tools.hpp").write_text("#pragma once\n")
+    (tmp_path / "src" / "publishers").mkdir(parents=True)
+    (tmp_path / "src" / "event").mkdir()
+    (tmp_path / "src" / "publishers" / "basic.hpp").write_text(BASIC)
+    (tmp_path / "src" / "event" / "audio.hpp").write_text(AUDIO_HPP)
+    (tmp_path / "src" / "event" / "audio.cpp").write_text(AUDIO_CPP)
+    (tmp_path / "src" / "main.cpp").write_text(MAIN)
+    sources = [str(tmp_path / "src" / "main.cpp"), str(tmp_path / "src" / "event" / "audio.cpp")]
+    result = extract_cpp(sources, scan([str(tmp_path)]), cache_dir=None)
+    assert not [d for d in result.diagnostics if d.code == "CPP_INCLUDE_MISSING"]
+    assert [(c.kind, c.name, c.type) for c in result.calls if c.kind == "publish"] == [
+        ("publish", "audio", "std_msgs/msg/String")]
+
+
+CAMERAS = """\
+#include <memory>
+#include <string>
+#include <rclcpp/rclcpp.hpp>
+#include <image_transport/image_transport.hpp>
+class CameraPublisher {
+ public:
+  explicit CameraPublisher(const std::string& topic) : topic_(topic) {}
+  void reset(rclcpp::Node* node) { pub_ = image_transport::create_camera_publisher(node, topic_); }
+ private:
+  std::string topic_;
+  image_transport::CameraPublisher pub_;
+};
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("driver");
+  auto front = std::make_shared<CameraPublisher>("camera/front/image_raw");
+  auto bottom = std::make_shared<CameraPublisher>("camera/bottom/image_raw");
+  front->reset(node.get());
+  bottom->reset(node.get());
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_camera_publisher_class_constructed_twice_has_two_info_topics(tmp_path) -> None:
+    # naoqi_driver2's CameraPublisher, made once per camera with its image topic: each
+    # construction's camera_info is beside its image topic (image_transport's
+    # getCameraInfoTopic), not one ``camera_info`` for all of them
+    (tmp_path / "package.xml").write_text(package_xml("z48", "ament_cmake").replace(
+        "</license>", "</license><depend>rclcpp</depend><depend>image_transport</depend>"))
+    source = tmp_path / "driver.cpp"
+    source.write_text(CAMERAS)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert sorted((c.name, c.camera_of) for c in result.calls if c.kind == "publish") == [
+        ("camera/bottom/image_raw", None), ("camera/front/image_raw", None),
+        ("camera_info", "camera/bottom/image_raw"), ("camera_info", "camera/front/image_raw")]
