@@ -128,3 +128,37 @@ def test_a_camera_publisher_class_constructed_twice_has_two_info_topics(tmp_path
     assert sorted((c.name, c.camera_of) for c in result.calls if c.kind == "publish") == [
         ("camera/bottom/image_raw", None), ("camera/front/image_raw", None),
         ("camera_info", "camera/bottom/image_raw"), ("camera_info", "camera/front/image_raw")]
+
+
+QOS = """\
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include "vendor_common/qos.hpp"
+namespace nvidia { namespace vendor { namespace slam {
+class SlamNode : public rclcpp::Node {
+ public:
+  explicit SlamNode(const rclcpp::NodeOptions& options)
+  : Node("slam", options),
+    pub_(create_publisher<std_msgs::msg::String>(
+      "slam/status", ::vendor::common::ParseQosString("DEFAULT"))) {}
+ private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}}}
+"""
+
+
+def test_a_global_namespace_named_as_a_nested_one_is_declared(tmp_path) -> None:
+    # isaac_ros_visual_slam's node, in ``namespace nvidia::isaac_ros``, writes
+    # ``::isaac_ros::common::ParseQosString(..)`` (isaac_ros_common, not in the
+    # workspace): clang said "'isaac_ros' is not a class, namespace, or enumeration",
+    # which no permissive declaration answered, and the 24 publishers whose QoS it gives
+    # were lost
+    (tmp_path / "package.xml").write_text(package_xml("z48", "ament_cmake").replace(
+        "</license>", "</license><depend>rclcpp</depend><depend>std_msgs</depend>"))
+    source = tmp_path / "slam.cpp"
+    source.write_text(QOS)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "slam/status")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
