@@ -162,3 +162,41 @@ def test_a_global_namespace_named_as_a_nested_one_is_declared(tmp_path) -> None:
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "slam/status")]
     assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+
+
+TRIM = """\
+#include <string>
+#include <vector>
+#include <string_view>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+class Synchronizer : public rclcpp::Node {
+ public:
+  Synchronizer() : Node("synchronizer") {
+    auto names = declare_parameter<std::vector<std::string>>("camera_names", {});
+    for (auto & name : names) {
+      name.erase(0, name.find_first_not_of('/'));
+      name.erase(name.find_last_not_of('/') + 1);
+      std::string_view view(name);
+      if (view.find_last_not_of(' ') == std::string_view::npos) { continue; }
+      pubs_.push_back(create_publisher<std_msgs::msg::String>(name + "/emitter", 10));
+    }
+  }
+ private:
+  std::vector<rclcpp::Publisher<std_msgs::msg::String>::SharedPtr> pubs_;
+};
+"""
+
+
+def test_the_char_forms_of_find_first_not_of_and_find_last_not_of(tmp_path) -> None:
+    # nvblox's multi_realsense_emitter_synchronizer trims each camera name with
+    # ``find_first_not_of('/')``: the stand-in string had only the string forms, the
+    # constructor was a C++ error and its publishers possibly missed (the node partial)
+    (tmp_path / "package.xml").write_text(package_xml("z48", "ament_cmake").replace(
+        "</license>", "</license><depend>rclcpp</depend><depend>std_msgs</depend>"))
+    source = tmp_path / "sync.cpp"
+    source.write_text(TRIM)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert not [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("declare", "camera_names"), ("publish", "?/emitter")]
