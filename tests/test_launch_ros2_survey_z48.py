@@ -53,3 +53,26 @@ def generate_launch_description():
 """)
     assert [d.code for d in model.diagnostics if d.code.startswith("LAUNCH_")] == [
         "LAUNCH_BAD_VALUE"], [d.message for d in model.diagnostics]
+
+
+def test_a_method_of_a_library_table_on_a_value_said_unknown_is_not_said_again(write_tree):
+    # nvblox_examples_bringup's launch files build isaac_ros_launch_utils'
+    # ``ArgumentContainer`` (isaac_ros_common, not in the workspace), then call its
+    # ``add_arg`` ten times: each was said again, as robotnik_common's ``add_arg`` of the
+    # table, on a value already said not interpreted where it was made
+    model = _load(write_tree, """
+import missing_launch_utils as lu
+from launch import LaunchDescription
+
+def generate_launch_description():
+    args = lu.ArgumentContainer()
+    args.add_arg('rosbag', 'None', cli=True)
+    args.add_arg('log_level', 'info', cli=True)
+    args.process_arg()
+    poses = lu.poses()
+    poses.value()
+    return LaunchDescription([])
+""")
+    said = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert len(said) == 2, said
+    assert all("is not interpreted (never run)" in m for m in said), said
