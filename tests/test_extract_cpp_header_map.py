@@ -54,8 +54,8 @@ def test_the_map_finds_what_the_folders_in_their_order_find(write_tree, monkeypa
     used: list[list[str] | None] = []
     real = header_map.search_path
 
-    def spy(path, folders):
-        found = real(path, folders)
+    def spy(path, folders, dotted=None):
+        found = real(path, folders, dotted)
         used.append(found)
         return found
 
