@@ -54,8 +54,8 @@ def test_the_map_finds_what_the_folders_in_their_order_find(write_tree, monkeypa
     used: list[list[str] | None] = []
     real = header_map.search_path
 
-    def spy(path, folders):
-        found = real(path, folders)
+    def spy(path, folders, dotted=None):
+        found = real(path, folders, dotted)
         used.append(found)
         return found
 
@@ -65,7 +65,7 @@ def test_the_map_finds_what_the_folders_in_their_order_find(write_tree, monkeypa
     # the two folders that hold names differing only in case are searched after the map
     assert sorted(os.path.basename(os.path.dirname(f)) for f in used[0][1:]) == [
         "alpha", "beta"]
-    monkeypatch.setattr(header_map, "search_path", lambda path, folders: None)
+    monkeypatch.setattr(header_map, "search_path", lambda path, folders, dotted=None: None)
     searched = extract_cpp([str(main)], workspace, cache_dir=None)
     assert _names(mapped) == _names(searched)
     # the first package's folder comes first on the include path, as it is listed

@@ -374,11 +374,12 @@ def _made_under_fewest(calls: list[PrimitiveCall],
 
 
 def _call_key(call: PrimitiveCall) -> tuple[object, ...]:
-    """One call of the node: by kind, name, place and name parameter, and the node a
+    """One call of the node: by kind, name, place and name parameter, the node a
     construction names it for (``links.per_construction``: a class built twice makes
-    its calls on each of two nodes)."""
+    its calls on each of two nodes), and the image topic a camera_info call is beside
+    (a camera publisher class built twice makes two)."""
     return (call.kind, call.name, call.location, call.name_param,
-            links.per_construction(call.node_name)[1])
+            links.per_construction(call.node_name)[1], call.camera_of)
 
 
 # the diagnostics the visitor makes at a call it keeps, which say something of that call

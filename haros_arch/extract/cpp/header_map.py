@@ -19,17 +19,19 @@ only in case cannot both be in a map: they are left out, and the folders that ho
 are searched after the map, in their order, as before.
 
 Where the map and the folders could differ, and why it does not matter here: a name
-written with ``.`` or ``..`` parts (``<a/../b.h>``) is a miss in the map where a folder
-would resolve it, a name written in another case than the file's is found where Linux
+written with ``.`` or ``..`` parts (``"../src/publishers/basic.hpp"``) is no file's name
+below a folder, so the map has it only when the scan before the parse resolved it
+through a folder (``dotted``: naoqi_driver2 includes it so, through its ``include``
+folder); a name written in another case than the file's is found where Linux
 would not find it, and ``#include_next`` in a header found through the map goes on after
-the map, not after its folder. Code that builds on Linux writes none of these.
+the map, not after its folder. Code that builds on Linux writes neither of these two.
 """
 
 from __future__ import annotations
 
 import os
 import struct
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 MAGIC = 0x686D6170  # 'hmap'
 VERSION = 1
@@ -39,14 +41,23 @@ _HEADER = struct.Struct("<IHHIIII")
 _BUCKET = struct.Struct("<III")
 
 
-def search_path(path: str, folders: Sequence[str]) -> list[str] | None:
+def search_path(path: str, folders: Sequence[str],
+                dotted: Mapping[str, str] | None = None) -> list[str] | None:
     """Write the header map of ``folders`` at ``path``; the include folders to use in
     their place (the map, then the folders holding names that differ only in case), or
-    None when the folders are too large or the file cannot be written (search them)."""
+    None when the folders are too large or the file cannot be written (search them).
+    ``dotted``: names written with ``.`` or ``..`` parts -> the folder of ``folders``
+    that resolves them (the first, as the search would), mapped as written."""
     found = _names(folders)
     if found is None:
         return None
     names, clashing = found
+    lowered = {name.lower() for name in names}
+    for header, folder in (dotted or {}).items():
+        key = os.fsencode(header)
+        if folder in folders and folder not in clashing and key.lower() not in lowered:
+            names[key] = os.fsencode(folder) + b"/"
+            lowered.add(key.lower())
     try:
         with open(path, "wb") as handle:
             handle.write(_encode(names))

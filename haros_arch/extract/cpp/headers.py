@@ -419,6 +419,9 @@ class IncludeSetup:
         # the include folders as the parse searches them (``header_map``), once written
         self.search: list[str] | None = None
         self._tops: dict[str, list[str]] | None = None  # see ``_resolve``
+        # a name written with ``.`` or ``..`` parts that an include folder resolves
+        # (``"../src/publishers/basic.hpp"`` through ``include``) -> that folder
+        self._dotted: dict[str, str] = {}
         self._defined: dict[str, dict[str, str]] = {}  # see ``_definitions``
         self._roots: frozenset[str] | None = None  # see ``_inside``
         self._inside_of: dict[str, bool] = {}
@@ -991,6 +994,8 @@ class IncludeSetup:
         for folder in folders:
             candidate = os.path.normpath(os.path.join(folder, header))
             if os.path.isfile(candidate):
+                if top in (".", "..") and folder in self.user_dirs:
+                    self._dotted.setdefault(header, folder)  # see ``materialise``
                 return candidate
         return None
 
@@ -1062,8 +1067,12 @@ class IncludeSetup:
             else:
                 for path, text in self.written.items():
                     _write_file(path, text)
+            # with the names written with ``..`` the scan resolved through a folder: the
+            # map has each file's name below its folder only (naoqi_driver2's
+            # ``src/event/audio.hpp`` includes ``"../src/publishers/basic.hpp"``, found
+            # through ``include`` as its CMakeLists says)
             self.search = header_map.search_path(
-                os.path.join(self.generated, HEADER_MAP), self.user_dirs)
+                os.path.join(self.generated, HEADER_MAP), self.user_dirs, self._dotted)
 
     # -- after parsing ----------------------------------------------------------------
 

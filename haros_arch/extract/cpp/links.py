@@ -475,8 +475,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                         if PLACEHOLDER in listed})
         node_text = _site_asked(named.get(call.node_name or ""))
         typed = call.type if call.type is not None and PLACEHOLDER in call.type else None
+        # a camera_info call named ``camera_info`` whose image topic a constructor's
+        # parameter names: one per construction, as its image call (naoqi_driver2's
+        # CameraPublisher, made once per camera)
+        camera_raw = call.camera_of if call.camera_of and PLACEHOLDER in call.camera_of and (
+            not call.handle_namespace) else None
         if PLACEHOLDER not in call.name and PLACEHOLDER not in (call.handle_namespace or "") \
-                and typed is None:
+                and typed is None and camera_raw is None:
             filled_lists = _lists_filled(call, {
                 listed: _parameter_filled(listed, known.passed) for listed in lists})
             if node_text is None:
@@ -500,10 +505,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             text += _NODE_SPLIT + node_text
         if typed is not None:  # filled from the same construction as the name
             text += _TYPE_SPLIT + typed
+        if camera_raw is not None:  # so is the image topic a camera_info call names
+            text += _CAMERA_SPLIT + camera_raw
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
+            filled, _, camera_filled = filled.partition(_CAMERA_SPLIT)
             filled, _, type_filled = filled.partition(_TYPE_SPLIT)
             filled, _, node_filled = filled.partition(_NODE_SPLIT)
             filled, *lists_text = filled.split(_LIST_SPLIT)
@@ -526,6 +534,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             if typed is not None:
                 made = dataclasses.replace(made, type=type_filled if type_filled and (
                     PLACEHOLDER not in type_filled) else "?")
+            if camera_raw is not None:
+                made = dataclasses.replace(made, camera_of=_unmarked(camera_filled) if (
+                    camera_filled and PLACEHOLDER not in camera_filled) else None)
             if param_text:
                 filled_param = _param_joined(param_text)
                 if filled_param and PLACEHOLDER not in filled_param:
@@ -551,6 +562,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
 _NODE_SPLIT = "\x11"  # before the node name expanded with a call's name (``resolve``)
 _TYPE_SPLIT = "\x15"  # before the type expanded with a call's name (``TYPE_ARGUMENT``)
+_CAMERA_SPLIT = "\x16"  # before the image topic a camera_info call names (``camera_of``)
 # around a function's USR: ``_expand`` writes the call site whose values it takes for that
 # function's placeholders in its stead (after ``_SITE_AT``)
 _SITE_OF = "\x13"

@@ -65,6 +65,10 @@ _MESSAGES: tuple[tuple[re.Pattern[str], str], ...] = (
     (re.compile(r"^no member named '(\w+)' in namespace '([\w:]+)'"), "any"),
     (re.compile(r"^expected class name$"), "type"),
     (re.compile(r"^unknown class name '(\w+)'"), "type"),
+    # ``::isaac_ros::common::ParseQosString(..)`` in ``namespace nvidia::isaac_ros``, with
+    # no global ``isaac_ros`` declared (isaac_ros_common's header missing): clang names
+    # the nested namespace's name in its message
+    (re.compile(r"^'(\w+)' is not a class, namespace, or enumeration$"), "any"),
 )
 _MEMBER = re.compile(
     r"^no member named '(\w+)' in '(?:const )?(?:(?:struct|class) )?([\w:]+)(<.*>)?'")

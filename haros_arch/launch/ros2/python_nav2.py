@@ -85,6 +85,8 @@ def m_value(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     entries separated by ``;`` (an entry without exactly one ``=`` skipped), each pose
     read as YAML with the fields it omits at 0.0; ``{}`` when the argument is not given."""
     if not isinstance(owner, MultiRobotPoses):
+        if isinstance(owner, Unknown) and owner.kind == "unsupported":  # said where made
+            return Unknown("method .value() of a value not known statically")
         return i.unsupported(n, "method .value() is not interpreted")
     poses: dict[str, Any] = {}
     for entry in owner.text.split(";") if owner.text else []:

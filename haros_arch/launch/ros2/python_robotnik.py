@@ -17,6 +17,7 @@ import ast
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from ...model.values import Unknown
 from .python_methods import Args, Builder, Kwargs, Method, arg
 from .python_values import LaunchDescription
 
@@ -74,14 +75,14 @@ def _declare(i: Interpreter, ld: LaunchDescription, name: str, description: Any,
 def m_add_arg(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not isinstance(owner, ArgumentParser) or not isinstance(
             arg(a, k, 0, "arg"), ExtendedArgument):
-        return i.unsupported(n, "method .add_arg() is not interpreted")
+        return _other(i, owner, "add_arg", n)
     owner.arguments.append(arg(a, k, 0, "arg"))
     return None
 
 
 def m_process_arg(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not isinstance(owner, ArgumentParser):
-        return i.unsupported(n, "method .process_arg() is not interpreted")
+        return _other(i, owner, "process_arg", n)
     params: dict[str, Any] = {}
     for argument in owner.arguments:
         if not isinstance(argument.use_env, bool):
@@ -108,3 +109,12 @@ ROBOTNIK_COMMON: dict[str, Builder] = {
     "add_launch_args": add_launch_args,
 }
 ROBOTNIK_METHODS: dict[str, Method] = {"add_arg": m_add_arg, "process_arg": m_process_arg}
+
+
+def _other(i: Interpreter, owner: Any, name: str, n: ast.AST) -> Unknown:
+    """A method of this name on another value (isaac_ros_launch_utils'
+    ``ArgumentContainer.add_arg``, its module not in the workspace): not interpreted,
+    said once, not again on a value already said unknown where it was made."""
+    if isinstance(owner, Unknown) and owner.kind == "unsupported":
+        return Unknown(f"method .{name}() of a value not known statically")
+    return i.unsupported(n, f"method .{name}() is not interpreted")

@@ -377,6 +377,16 @@ def to_text(value: Any) -> e.Text:
         return (value,)
     if isinstance(value, (list, tuple)):
         return e.text(*(to_text(v) for v in value))
+    if isinstance(value, dict):
+        # launch's normalisation iterates what it is given: a dict gives its keys
+        # (space-ros' ``arguments=["-topic", robot_description]``, the parameter dict
+        # ``{"robot_description": ...}``, is the word ``robot_description``); a key that
+        # is neither text nor a substitution is its TypeError
+        if all(isinstance(key, str) or is_lazy(key) for key in value):
+            return e.text(*(to_text(key) for key in value))
+        return (e.Opaque("a dict whose keys are not all text or substitutions is used "
+                         "where launch takes text or substitutions: ros2 launch stops "
+                         "with a TypeError", refused=True),)
     if isinstance(value, bool):
         return (str(value).lower(),)
     if isinstance(value, (int, float)):

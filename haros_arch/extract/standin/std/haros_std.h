@@ -423,7 +423,9 @@ public:
   size_t find_last_of(const basic_string& s, size_t pos = npos) const;
   size_t find_last_of(C c, size_t pos = npos) const;
   size_t find_first_not_of(const basic_string& s, size_t pos = 0) const;
+  size_t find_first_not_of(C c, size_t pos = 0) const;
   size_t find_last_not_of(const basic_string& s, size_t pos = npos) const;
+  size_t find_last_not_of(C c, size_t pos = npos) const;
   int compare(const basic_string& s) const;
   int compare(size_t pos, size_t n, const basic_string& s) const;
   iterator begin();
@@ -502,6 +504,9 @@ public:
   size_t find_last_of(string_view s, size_t pos = npos) const;
   size_t find_last_of(char c, size_t pos = npos) const;
   size_t find_first_not_of(string_view s, size_t pos = 0) const;
+  size_t find_first_not_of(char c, size_t pos = 0) const;
+  size_t find_last_not_of(string_view s, size_t pos = npos) const;
+  size_t find_last_not_of(char c, size_t pos = npos) const;
   int compare(string_view s) const;
   bool starts_with(string_view s) const;
   bool starts_with(char c) const;
