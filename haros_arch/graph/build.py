@@ -519,6 +519,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # roslaunch finds the file and refuses it: "Found ... but it is not executable"
         config.diagnostics.append(diag.make("NODE_NOT_EXECUTABLE", decl.location, node=key,
                                             path=workspace.relpath(found)))
+    elif node is None and plugin is None and not decl.executable.strip():
+        # ``executable="  "`` (Universal_Robots_ROS2_Driver 2477f13's spawner): the package
+        # is there, the program named is blank; NODE_NOT_FOUND said it was not in the
+        # workspace
+        config.diagnostics.append(diag.make("NODE_EXECUTABLE_BLANK", decl.location,
+                                            package=decl.package, given=decl.executable))
     elif node is None:
         config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
                                             node=plugin or key))
