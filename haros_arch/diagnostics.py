@@ -772,6 +772,14 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_EXECUTABLE_BLANK": Entry(
+        "warning", "a node of package {package} is given a blank executable ({given!r}): "
+        "no program of the package has that name, so the launch cannot start it; its "
+        "interface is unknown",
+        "A launch file starts a node whose executable (ROS 2 exec=, ROS 1 type=) is empty "
+        "or white space, often a launch argument's value with the name left out; "
+        "ros2 launch and roslaunch fail to find the program at that line. Reported as "
+        "launch-missing-reference, like NODE_NOT_FOUND."),
     "NODE_NOT_EXECUTABLE": Entry(
         "warning", "node type {node}: {path} is there but not executable, so roslaunch "
         "cannot start it; its interface is not read",

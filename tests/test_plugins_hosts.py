@@ -744,7 +744,9 @@ def test_a_ros2_spawner_is_named_and_calls_the_manager_as_its_arguments_say():
     config = graph(decls, nodes=[model])
     names = sorted(n.name for n in config.nodes if n.node is not None
                    and n.node.executable == "spawner")
-    assert names == [f"/{UNKNOWN_MARK}", "/robot/spawner_joint_state_broadcaster",
+    # (controllers not known: the model's node, named as the model names it, the
+    # controller's part unknown)
+    assert names == ["/robot/spawner_joint_state_broadcaster", f"/spawner_{UNKNOWN_MARK}",
                      "/spawner_gripper"], names
     manager = "/robot/controller_manager"
     assert links_of(config, "/robot/spawner_joint_state_broadcaster") == [
@@ -755,7 +757,7 @@ def test_a_ros2_spawner_is_named_and_calls_the_manager_as_its_arguments_say():
         ("client", f"{manager}/{verb}") for verb in (
             "list_controllers", "load_controller", "set_parameters")]
     # controllers not known: the model's node, as before
-    assert links_of(config, f"/{UNKNOWN_MARK}") == [("client", UNKNOWN_MARK)]
+    assert links_of(config, f"/spawner_{UNKNOWN_MARK}") == [("client", UNKNOWN_MARK)]
     assert "NODE_NAME_GUESSED" not in [d.code for d in config.diagnostics]
 
 

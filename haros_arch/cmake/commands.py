@@ -413,9 +413,10 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         directory_definitions=it.compile_definitions[-1],
         definitions=[("PRIVATE", each) for each in it.compile_options[-1]],
         directory_includes=it.include_directories[-1])
-    target.standard = cxx_standard(it.get("CMAKE_CXX_STANDARD"))
-    for word in (it.get("CMAKE_CXX_FLAGS") or "").split():
-        target.standard = std_flag(word) or target.standard
+    # the newest its directory may ask when it is made (a branch not decided: either's)
+    target.standard = newest([*(cxx_standard(v) for v in it.possible("CMAKE_CXX_STANDARD")),
+                              *_flag_standards(it), *it.compile_standards[-1]])
+    it.made_here[-1].append(args[0])
     if command.name.lower().startswith("ament_auto_add_"):
         target.auto = True
         # ament_cmake_auto links the package's earlier ament_auto libraries unless told
@@ -474,6 +475,30 @@ def _add_compile_options(it: Interpreter, command: Invocation, args: list[str]) 
     directory's COMPILE_OPTIONS start a target's own; other options are not read."""
     for _, found in _definitions(it, command, command.args, "-D"):
         it.compile_options[-1].append(found)
+    it.compile_standards[-1].extend(year for word in args if (year := std_flag(word)))
+
+
+def directory_done(it: Interpreter) -> None:
+    """At the end of a directory's CMakeLists.txt: its ``CMAKE_CXX_FLAGS`` then, which
+    CMake gives every target of the directory (a ``set`` after ``add_executable``
+    counts), for the targets it made, the newest of that and what they asked."""
+    years = _flag_standards(it)
+    for name in it.made_here[-1] if years else ():
+        target = it.targets.get(name)
+        if target is not None:
+            target.standard = newest([target.standard, *years])
+
+
+def _flag_standards(it: Interpreter) -> list[int]:
+    """The standards the ``-std=`` words of ``CMAKE_CXX_FLAGS`` may ask here."""
+    return [year for value in it.possible("CMAKE_CXX_FLAGS") for word in value.split()
+            if (year := std_flag(word))]
+
+
+def newest(years: list[int | None]) -> int | None:
+    """The newest standard of ``years`` (98 the oldest), None when there is none."""
+    known = [y for y in years if y]
+    return max(known, key=lambda y: 0 if y == 98 else y) if known else None
 
 
 @handles("target_compile_options")
@@ -483,8 +508,7 @@ def _target_compile_options(it: Interpreter, command: Invocation, args: list[str
     if target is None or not command.args:
         return
     target.definitions.extend(_definitions(it, command, command.args[1:], "-D"))
-    for word in args[1:]:
-        target.standard = std_flag(word) or target.standard
+    target.standard = newest([target.standard, *(std_flag(word) for word in args[1:])])
 
 
 @handles("target_compile_features")

@@ -27,7 +27,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.location import Location
-from .commands import HANDLERS, IGNORED, defined_names, unknown_command
+from .commands import HANDLERS, IGNORED, defined_names, directory_done, unknown_command
 from .conditions import BINARY, FALSE_WORDS, TRUE_WORDS, UNARY, Evaluator
 from .lexer import Argument, Invocation
 from .listops import split_list
@@ -130,6 +130,12 @@ class Interpreter:
         # last: a target takes those made before it (the directory's COMPILE_OPTIONS
         # start its own), a subdirectory starts with a copy of its parent's
         self.compile_options: list[list[CompileDefinition]] = [[]]
+        # the C++ standards the ``-std=`` words of each directory's
+        # ``add_compile_options`` ask so far, innermost last, as its ``-D`` words; and the
+        # targets each directory being read made, which the directory's CMAKE_CXX_FLAGS
+        # at its end compiles too (``commands.directory_done``)
+        self.compile_standards: list[list[int]] = [[]]
+        self.made_here: list[list[str]] = [[]]
         # the ``include_directories`` folders of each directory being read, innermost
         # last, as its compile definitions (``Target.directory_includes``)
         self.include_directories: list[list[tuple[str, tuple[Condition, ...]]]] = [[]]
@@ -188,6 +194,12 @@ class Interpreter:
     def get(self, name: str) -> str | None:
         value = self.scopes[-1].get(name)
         return self.cache.get(name) if value is None else value
+
+    def possible(self, name: str) -> list[str]:
+        """Each value variable ``name`` may hold here: its value, and those the paths
+        through the if()s the reading did not decide leave it (``either``)."""
+        return [v for v in dict.fromkeys((self.get(name), *self.either.get(name, ())))
+                if v is not None]
 
     def set(self, name: str, value: str) -> None:
         self._bounded(name, value)
@@ -357,6 +369,7 @@ class Interpreter:
         """Run a top-level file; stops quietly after a reported limit."""
         with contextlib.suppress(_Stop, _Return, _Break, _Continue):
             self.run(commands)
+        directory_done(self)
 
     def run(self, commands: list[Invocation], start: int = 0, end: int | None = None) -> None:
         """Run ``commands[start:end]`` (a block's body is a range of the list that holds
@@ -836,6 +849,8 @@ class Interpreter:
         self.scopes.append(dict(self.scopes[-1]))
         self.compile_definitions.append(list(self.compile_definitions[-1]))
         self.compile_options.append(list(self.compile_options[-1]))
+        self.compile_standards.append(list(self.compile_standards[-1]))
+        self.made_here.append([])
         self.include_directories.append(list(self.include_directories[-1]))
         self._enter_directory(folder)
         self.depth += 1
@@ -847,9 +862,12 @@ class Interpreter:
         finally:
             self.depth -= 1
             del self.returns[frame:]
+            directory_done(self)
             self.scopes.pop()
             self.compile_definitions.pop()
             self.compile_options.pop()
+            self.compile_standards.pop()
+            self.made_here.pop()
             self.include_directories.pop()
 
 

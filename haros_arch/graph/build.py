@@ -28,7 +28,7 @@ from ..model.runtime import (
     Service,
     Topic,
 )
-from ..model.source import NUMBERED, ROS_ARGUMENT, WORDS, Node, PrimitiveCall
+from ..model.source import NUMBERED, ROS_ARGUMENT, WORDS, Node, PrimitiveCall, name_runs
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
@@ -253,7 +253,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             ):
                 # (a name of several unknown runs keeps the others: unset only when the
                 # parameter gave none)
-                config.diagnostics.append(_name_param_unset(instance, each))
+                config.diagnostics.append(_name_param_unset(instance, each, resources))
             if each.name_arg is not None and UNKNOWN_MARK in each.name and not (
                 program_argument(instance, each.name_arg)
             ):
@@ -519,6 +519,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # roslaunch finds the file and refuses it: "Found ... but it is not executable"
         config.diagnostics.append(diag.make("NODE_NOT_EXECUTABLE", decl.location, node=key,
                                             path=workspace.relpath(found)))
+    elif node is None and plugin is None and not decl.executable.strip():
+        # ``executable="  "`` (Universal_Robots_ROS2_Driver 2477f13's spawner): the package
+        # is there, the program named is blank; NODE_NOT_FOUND said it was not in the
+        # workspace
+        config.diagnostics.append(diag.make("NODE_EXECUTABLE_BLANK", decl.location,
+                                            package=decl.package, given=decl.executable))
     elif node is None:
         config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
                                             node=plugin or key))
@@ -789,15 +795,18 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         # one the code sets from a value it knows, not read recursively any further
         other = _parameter_value(call.default_param, None, instance, resources)
         value = value.replace(UNKNOWN_MARK, other, 1) if other else None
-    if call.name_more:  # several parameters, one per ``?`` in order; unknown: ``?``
-        values = [value, *(_parameter_value(p or "", d, instance, resources)
-                           for p, d in call.name_more)]
+    if call.name_more:  # several parameters, one per ``?`` in order (or several joined
+        # in one, JOINED: ``prefix + arm``, known when each is); unknown: ``?``
+        values = name_runs(call, value, [_parameter_value(p or "", d, instance, resources)
+                                         for p, d, *_ in call.name_more])
         pieces = call.name.split(UNKNOWN_MARK)
         if len(pieces) != len(values) + 1:
             return call.name
-        return pieces[0] + "".join(
-            (UNKNOWN_MARK if v is None else v) + piece for v, piece in zip(
-                values, pieces[1:], strict=True))
+        if len(values) > 1:
+            return pieces[0] + "".join(
+                (UNKNOWN_MARK if v is None else v) + piece for v, piece in zip(
+                    values, pieces[1:], strict=True))
+        value = values[0]  # one ``?``, its values joined: as one parameter's below
     if value == "" and instance.ros_version == 1 and _empty_piece(call):
         # an empty piece of a longer name (heron's ``"/" + ns + "/activate_control"``,
         # ``~namespace`` set to ""): roscpp and rospy drop the empty segment its slashes
@@ -1101,10 +1110,18 @@ def _code_default(call: PrimitiveCall, instance: NodeInstance, kind: type) -> An
     return found[0] if found and all(d == found[0] for d in found) else None
 
 
-def _name_param_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
-    """Why a name taken from a parameter stays unknown: the configuration sets none."""
+def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
+                      resources: Resources) -> Diagnostic:
+    """Why a name taken from a parameter stays unknown: the configuration sets none (of
+    a name of several parameters, those it does not set)."""
     param = call.name_param
-    what = {None: f"parameter {param}", NUMBERED: f"parameters {param}0, {param}1, ...",
+    named = [(param or "", call.name_default), *((p or "", d) for p, d, *_ in (
+        call.name_more or []))]
+    unset = [p for p, d in named if _parameter_value(p, d, instance, resources) is None]
+    if len(named) > 1 and unset:
+        param = ", ".join(unset)
+    what = {None: f"parameter{'s' if len(unset) > 1 else ''} {param}",
+            NUMBERED: f"parameters {param}0, {param}1, ...",
             WORDS: f"words of the parameter {param}"
             }.get(call.name_each, f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,

@@ -120,7 +120,8 @@ def unnamed_param_files(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[
                       detail=f"parameter file applied to {decl.name}, whose name is not "
                              "known here: only its /** entries are used")
             for decl in launch.nodes if decl.unnamed_param_files
-            and (code_node(decl, nodes) is None or not _own_names(decl, nodes))
+            and (code_node(decl, nodes) is None or not [
+                own for own in _own_names(decl, nodes) if UNKNOWN_MARK not in own])
             for where in decl.unnamed_param_files]
 
 
@@ -138,8 +139,12 @@ def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
         # of its own, named ``?``, when each node keeps its code's name; under a name
         # the launch gives every node, the first's (they all have that name)
         return [*node.rosnames, *([UNKNOWN_MARK] if _apart(decl, node) else [])]
-    # one node: a launch Node without name= runs it under the name its code gives it
-    if _unnamed(decl) and node.rosname and UNKNOWN_MARK not in node.rosname:
+    # one node: a launch Node without name= runs it under the name its code gives it,
+    # also one the code makes at run time around text it writes (tf2_ros'
+    # static_transform_publisher, ``static_transform_publisher_`` and 16 random
+    # characters: ``static_transform_publisher_?``, as an anonymous name is)
+    if _unnamed(decl) and node.rosname and node.rosname.rsplit("/", 1)[-1].strip(
+            UNKNOWN_MARK):
         return [node.rosname]
     return []
 

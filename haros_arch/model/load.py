@@ -30,6 +30,7 @@ from .runtime import (
     Topic,
 )
 from .source import (
+    JOINED,
     Completeness,
     Dependency,
     Node,
@@ -132,13 +133,15 @@ def _program_arg(value: Any) -> int | None:
 
 
 def _name_more(value: Any) -> list[list[str | None]] | None:
-    """``PrimitiveCall.name_more``: [parameter, default or None] pairs, else None."""
+    """``PrimitiveCall.name_more``: [parameter, default or None] pairs, each maybe with
+    JOINED after (its value continues the ``?`` before), else None."""
     if not isinstance(value, list) or not value or not all(
-        isinstance(v, list) and len(v) == 2 and isinstance(v[0], str)
-        and (v[1] is None or isinstance(v[1], str)) for v in value
+        isinstance(v, list) and len(v) in (2, 3) and isinstance(v[0], str)
+        and (v[1] is None or isinstance(v[1], str)) and v[2:] in ([], [JOINED])
+        for v in value
     ):
         return None
-    return [[v[0], v[1]] for v in value]
+    return [list(v) for v in value]
 
 
 def call_from_data(c: dict[str, Any]) -> PrimitiveCall:

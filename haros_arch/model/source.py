@@ -56,6 +56,10 @@ SDF_ELEMENT = "sdf:"
 # argv, "key")`` returns (``ros_arg:robot``); the graph takes it from the words
 # roslaunch gives the instance (its ``args`` and remaps)
 ROS_ARGUMENT = "ros_arg:"
+# the third element of a ``PrimitiveCall.name_more`` entry whose value continues the
+# ``?`` of the parameter before it rather than filling a ``?`` of its own (ros_kortex's
+# ``m_prefix + m_arm_name``: one run of the name, two parameters' values joined)
+JOINED = "+"
 
 @dataclass(frozen=True)
 class Dependency:
@@ -171,7 +175,10 @@ class PrimitiveCall:
     # a name with several ``?``, each a parameter's value, in order: ``name_param`` (and
     # ``name_default``) fills the first, each [parameter, its default or None] here one
     # more (f1tenth_gym_ros' ``ego_namespace + '/' + get_parameter('ego_odom_topic')``:
-    # name ``?/?``, name_param ``ego_namespace``, name_more ``[["ego_odom_topic", None]]``)
+    # name ``?/?``, name_param ``ego_namespace``, name_more ``[["ego_odom_topic", None]]``).
+    # An entry [parameter, default, JOINED] continues the ``?`` before it: one ``?`` of
+    # several values joined (``"/" + name + model + "/stop"``: name ``/?/stop``,
+    # name_param ``name``, name_more ``[["model", None, "+"]]``), known when each is
     name_more: list[list[str | None]] | None = field(
         default=None, metadata={"optional": True})
     # a call made through image_transport (``plugins.hosts.TRANSPORTS``): ``*`` for a
@@ -399,3 +406,17 @@ class Package:
             if node.executable == executable:
                 return node
         return None
+
+
+def name_runs(call: PrimitiveCall, first: str | None,
+              values: list[str | None]) -> list[str | None]:
+    """The values of a call's ``?``, in order, from ``first`` (``name_param``'s value)
+    and ``values`` (each ``name_more`` entry's): a JOINED entry's value joined to the
+    run before it, which is None (unknown) unless every value of it is known."""
+    runs: list[str | None] = [first]
+    for entry, value in zip(call.name_more or [], values, strict=True):
+        if len(entry) > 2 and entry[2] == JOINED:
+            runs[-1] = None if runs[-1] is None or value is None else runs[-1] + value
+        else:
+            runs.append(value)
+    return runs

@@ -56,7 +56,7 @@ STEPS = DEFAULT_STEPS
 UNDECIDED = "-undecided"  # suffix of the id of a rule's info on matches it cannot decide
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND",
-                            "NODE_NOT_EXECUTABLE"})
+                            "NODE_NOT_EXECUTABLE", "NODE_EXECUTABLE_BLANK"})
 # a name computed at run time, said by the extractor about a call; where a configuration
 # instantiates the call, the graph says it better: unresolved-names reports the name per
 # node instance, or a launch value or code default has completed it, or a condition

@@ -113,8 +113,11 @@ def render(interface: Interface, kind: str) -> str:
     if interface.known:
         lines += [line for struct, fields in built for line in _initialisers(struct, fields)]
     lines.append(f"}} }}  // namespace {pkg}::{kind}")
-    if interface.known:
-        lines += _builders(pkg, kind, built)
+    # a message known only by name has a builder too (another of its package may be
+    # known, which declares ``build`` for all): the message itself, whose fields the
+    # parse learns from the chain as from ``msg.field`` (``fields_hook``)
+    lines += _builders(pkg, kind, built if interface.known else [
+        (struct, []) for struct, _ in built])
     lines += traits(pkg, kind, name)
     lines += ["#endif", ""]
     return "\n".join(lines)

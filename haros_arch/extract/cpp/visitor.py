@@ -23,7 +23,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, Condition
 from ...model.location import Location
-from ...model.source import ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
+from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
@@ -75,6 +75,7 @@ from .values import (
     SEPARATOR,
     NodeName,
     NodeNamespace,
+    ProgramArgument,
     Scope,
     SearchedName,
     _method_object,
@@ -426,7 +427,8 @@ class CallFinder:
                 call.name_default, call.default_param = self._declared[call.name_param]
             if call.name_more:  # and each further parameter of the name the same way
                 call.name_more = [[p, d if d is not None or p not in self._declared
-                                   else self._declared[p][0]] for p, d in call.name_more]
+                                   else self._declared[p][0], *joined]
+                                  for p, d, *joined in call.name_more]
 
     def _uses(self) -> list[tuple[str, str]]:
         """(owner, owner of the workspace function it calls or names) for each function
@@ -2168,6 +2170,10 @@ class CallFinder:
             operands = _unknown_operands(held, scope) if held is not None else []
             if len(operands) == 1:
                 source = self._parameter_source(operands[0], scope, 0)
+        if source is None and len(unknown) > 1:
+            # several parameters' values joined in the one ``?`` (doosan's ``"/" + name +
+            # model + "/stop"``): each, the graph joins them where all are set
+            return (name, self._first_parameter(expr, scope, 1))
         return (name, None if source is None else (*source, None, None, None))
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
@@ -2226,18 +2232,28 @@ class CallFinder:
         (mrpt_map_server's ``pub_mm_topic_ + "/" + layerName + "_gridmap"``): the
         parameter, which the graph puts in the place of the first ``?``, and when every
         other run is a parameter's value too (ros_kortex's ``"/" + robot_name + "/" +
-        prefix + ...``), those parameters for the other ``?`` in order (``name_more``);
-        None when the first run is anything else, or the runs are not one operand each."""
-        unknown = _unknown_operands(expr, scope)
-        if len(unknown) != runs:
+        prefix + ...``), those parameters for the other ``?`` in order (``name_more``).
+        A run of several operands, each a parameter's value (``prefix + arm``), is its
+        parameters in order, each after the first JOINED to it. None when the first run
+        is anything else, or the runs are not the name's ``?``."""
+        grouped = _unknown_runs(expr, scope)
+        if len(grouped) != runs:
             return None
-        source = self._parameter_source(unknown[0], scope, 0)
+        first, *rest = [[self._parameter_source(each, scope, 0) for each in run]
+                        for run in grouped]
+        source = first[0]
         if source is None:
             return None
-        others = [self._parameter_source(each, scope, 0) for each in unknown[1:]]
-        more = [[other[0], other[1]] for other in others
-                if other is not None and known_name(other[0])]
-        return (*source, None, None, more if more and len(more) == len(others) else None)
+        # the others: every one a parameter's, or the name keeps only the first, alone
+        joined = len(first) > 1
+        if joined and not all(s is not None and known_name(s[0]) for s in first[1:]):
+            return None
+        more = [[s[0], s[1]] + ([JOINED] if i else []) for run in rest
+                for i, s in enumerate(run) if s is not None and known_name(s[0])]
+        if len(more) != sum(len(run) for run in rest):
+            return (*source, None, None, None) if not joined else None
+        more = [[s[0], s[1], JOINED] for s in first[1:] if s is not None] + more
+        return (*source, None, None, more or None)
 
     def _name_member(self, expr: Cursor | None) -> str | None:
         """The USR of the member ``expr`` is, when no function of this unit writes it
@@ -3732,9 +3748,34 @@ def _constructed_global(variable: Cursor) -> bool:
     ) and any(c.kind.is_expression() for c in made.get_children())
 
 
-def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor]:
+def _unknown_operands(expr: Cursor, scope: Scope) -> list[Cursor]:
     """The operands of a string concatenation (``a + b + c``) whose value is not known,
-    innermost first; empty when ``expr`` is no concatenation."""
+    in the order written; empty when ``expr`` is no concatenation."""
+    return [each for each in _concatenated(expr, scope) if each is not None]
+
+
+def _unknown_runs(expr: Cursor, scope: Scope) -> list[list[Cursor]]:
+    """The operands ``_unknown_operands`` gives, grouped by the ``?`` of the name they
+    make (``values.render``): operands with no known text between them are one run
+    (ros_kortex's ``"/" + robot_name + "/" + prefix + arm + "_controller"``: [robot_name],
+    [prefix, arm])."""
+    runs: list[list[Cursor]] = []
+    apart = True  # known text since the last unknown operand
+    for each in _concatenated(expr, scope):
+        if each is None:
+            apart = True
+        elif apart or not runs:
+            runs.append([each])
+            apart = False
+        else:
+            runs[-1].append(each)
+    return runs
+
+
+def _concatenated(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor | None]:
+    """The unknown operands of a string concatenation in the order written, with None
+    where known text stands between them (before, between or after: an operand whose
+    own value begins or ends with known text gives it too)."""
     expr = strip(expr)
     if depth > MAX_DEPTH:
         return []
@@ -3746,19 +3787,35 @@ def _unknown_operands(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor
         operands = children
     elif expr.kind == CursorKind.CALL_EXPR and expr.referenced is not None and (
             expr.referenced.kind == CursorKind.CONSTRUCTOR and len(children) == 1):
-        return _unknown_operands(children[0], scope, depth + 1)  # std::string(a + b)
+        return _concatenated(children[0], scope, depth + 1)  # std::string(a + b)
     elif permissive_conversion(expr):
         # a concatenation with a permissive value (``prefix + "/" + layer``, the layer of
         # a library the parse does not have), converted to the string the call takes
         held = permissive_held(expr)
-        return [] if held is None else _unknown_operands(held, scope, depth + 1)
+        return [] if held is None else _concatenated(held, scope, depth + 1)
     else:
         return []
-    found: list[Cursor] = []
+    found: list[Cursor | None] = []
     for operand in operands:
-        if None in scope.string(operand):
-            found += _unknown_operands(operand, scope, depth + 1) or [operand]
+        parts = scope.string(operand)
+        if None not in parts:
+            if any(_text(part) for part in parts):
+                found.append(None)
+            continue
+        inner = _concatenated(operand, scope, depth + 1)
+        if any(each is not None for each in inner):
+            found += inner
+            continue
+        found += [None] if _text(parts[0]) else []
+        found.append(operand)
+        found += [None] if _text(parts[-1]) else []
     return found
+
+
+def _text(part: str | None) -> bool:
+    """Whether a part of a string's value is text a name shows (``values.render``), not
+    empty and no ``?``."""
+    return bool(part) and not isinstance(part, (NodeName, ProgramArgument))
 
 
 def _name_namespace(name: str) -> str:

@@ -141,7 +141,8 @@ class Frontend:
 
     def arg(self, ent: Entity) -> e.Action | None:
         name = ent.attrs.get("name")
-        ent.read.update(("name", "description", "doc"))
+        # (not ROS 1's ``doc``: DeclareArgument.parse does not read it, launch refuses it)
+        ent.read.update(("name", "description"))
         for child in ent.children:
             if child.tag != "choice":
                 self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
@@ -178,10 +179,9 @@ class Frontend:
                     keeps.append((name, value))
             else:
                 others.append(child)
-        ns = self.text(ent, "ns")
+        # (no ``ns``: ROS 1's; GroupAction.parse does not read it, launch refuses it and
+        # pushes no namespace, which is launch_ros' <push-ros-namespace>)
         actions = self.actions(others)
-        if ns is not None:
-            actions.insert(0, e.PushNamespace(ns, location=self.where(ent)))
         return e.Group(actions, self.flag(ent, "scoped", True),
                        self.flag(ent, "forwarding", True), keeps)
 
