@@ -22,6 +22,7 @@ workspaces they changed little and cost a parse each, so the default is one roun
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import itertools
 import re
@@ -489,6 +490,20 @@ template <class T> shared_ptr<T> const_pointer_cast(const haros_any &);
 }
 template <decltype(sizeof 0) I> haros_any &get(const haros_any &);
 %s"""
+
+
+# names of a library the stand-ins provide, by namespace, with the stand-in header that
+# declares each: a name the parse did not know because the header that would have
+# included the library's is missing (Autoware's scenario selector holds a
+# ``boost::optional<rclcpp::Time>`` it never includes, lanelet2's headers do) is the
+# library's, not a permissive one (``x = {}`` on that was ambiguous)
+_PROVIDED: dict[str, dict[str, str]] = {
+    "boost": {"optional": "boost/optional.hpp", "none": "boost/optional.hpp",
+              "none_t": "boost/optional.hpp", "make_optional": "boost/optional.hpp",
+              "circular_buffer": "boost/circular_buffer.hpp",
+              "lexical_cast": "boost/lexical_cast.hpp", "format": "boost/format.hpp",
+              "scoped_ptr": "boost/scoped_ptr.hpp"},
+}
 
 
 @dataclass
@@ -1398,9 +1413,18 @@ class Names:
             for record in sorted({*self.fields, *self.types})]
         hidden = self._found_by_using()
         for name, node in sorted(self.root.children.items()):
-            if name not in hidden:
-                lines.extend(_render(name, node, "", nested=False, values=values,
-                                     withdrawn=self.withdrawn))
+            if name in hidden:
+                continue
+            provided = _PROVIDED.get(name, {})
+            headers = sorted({provided[n] for n in node.children if n in provided})
+            lines += [f"#include <{header}>" for header in headers]
+            if headers and not node.uses and not node.known:
+                node = dataclasses.replace(node, children={
+                    n: child for n, child in node.children.items() if n not in provided})
+                if not node.children:
+                    continue
+            lines.extend(_render(name, node, "", nested=False, values=values,
+                                 withdrawn=self.withdrawn))
         lines += self._derived(hidden, values)
         return "\n".join(lines) + "\n"
 

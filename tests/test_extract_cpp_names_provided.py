@@ -1,0 +1,43 @@
+"""A name of a library the stand-ins provide that the code uses without including it,
+because a header that would have included it is missing (Autoware's scenario selector
+holds a ``boost::optional<rclcpp::Time>`` that only lanelet2's headers include), is the
+stand-in's declaration, not a permissive one: ``stop_time_ = {}`` on a permissive
+template was ambiguous, an error in the constructor that makes the node's calls."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+SOURCE = """#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <lanelet2_core/LaneletMap.h>
+
+class Selector : public rclcpp::Node
+{
+public:
+  Selector() : rclcpp::Node("selector")
+  {
+    stop_time_ = {};
+    if (!stop_time_ || stop_time_ == boost::none) {
+      stop_time_ = now();
+    }
+    pub_ = create_publisher<std_msgs::msg::String>("scenario", 1);
+  }
+  boost::optional<rclcpp::Time> stop_time_;
+  lanelet::LaneletMapPtr map_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+"""
+
+
+def test_a_boost_name_reached_through_a_missing_header_is_the_stand_in_s(tmp_path) -> None:
+    (tmp_path / "package.xml").write_text(package_xml("selector", "ament_cmake"))
+    source = tmp_path / "selector.cpp"
+    source.write_text(SOURCE)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="humble")
+    assert [c.name for c in result.calls] == ["scenario"]
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
