@@ -788,6 +788,13 @@ class IncludeSetup:
         names in lowercase: LIO-SAM's ``msg/cloud_info.msg`` and ``srv/save_map.srv``
         generate ``<lio_sam/cloud_info.h>`` and ``<lio_sam/save_map.h>``)."""
         found = _MESSAGE_HEADER.fullmatch(header)
+        if found is not None and not found.group(1).islower() and (
+                self._definition(found.group(1), found.group(2)) is None):
+            # no ROS package is named so (REP 144: lowercase letters, digits and
+            # underscores): a library's header (CGAL's
+            # <CGAL/Exact_predicates_inexact_constructions_kernel.h>, X11's <X11/Xlib.h>),
+            # missing, not a message of a package we have no definition of
+            return None
         if found is not None:
             return found
         found = _DEFINED_HEADER.fullmatch(header)
