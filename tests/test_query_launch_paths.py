@@ -131,3 +131,27 @@ def test_ros2_python_environment_paths_are_not_hard_coded(write_tree):
     (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
     found = sorted(f.entities for f in run_rule(rule, model))
     assert found == [("parameter:/loader/map_file",), ("parameter:/loader/socket",)]
+
+
+MACOS_LAUNCH = """
+<launch>
+  <arg name="voxblox_file_path" default="/Users/helen/data/voxblox/const_0_05.vxblx" />
+  <param name="map_file" value="$(arg voxblox_file_path)" />
+  <param name="topic" value="/Users" />
+</launch>
+"""
+
+
+def test_a_macos_home_folder_is_an_absolute_path(write_tree):
+    """A macOS home, ``/Users/<name>/...``, is as much the author's machine as
+    ``/home/<name>/...`` (voxblox's eval launch files: ``/Users/helen/data/...vxblx``
+    and ``.ply`` files; survey Z47). ``/Users`` alone is no folder's content."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/eval.launch": MACOS_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/eval.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    assert [f.entities for f in run_rule(rule, model)] == [("parameter:/map_file",)]

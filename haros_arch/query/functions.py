@@ -273,8 +273,9 @@ def group_by(charge: Charge, values: Any, field: Any) -> list[list[Any]]:
 FUNCTIONS["group_by"] = Function("group_by", group_by, 2, 2, charged=True)
 
 
+# ``/Users/``: a macOS home, as ``/home/`` is Linux's (voxblox's eval launch files)
 _PATH_PREFIXES = ("/home/", "/opt/", "/usr/", "/tmp/", "/mnt/", "/media/", "/root/",
-                  "/var/", "/etc/", "/srv/")
+                  "/var/", "/etc/", "/srv/", "/Users/")
 _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json", ".pgm",
                   ".png", ".bag", ".db3", ".csv", ".txt", ".so", ".py", ".cfg", ".ini")
 

@@ -1080,12 +1080,32 @@ def _calls(element: etree._Element, row: Plugin, where: Location,
         # the key (``PrimitiveCall.handle_namespace``)
         handle = name[:-len(own) - 1] if entity.searched and name.endswith("/" + own) \
             else None
+        if handle is None and entity.handle is not None and namespace is not None:
+            handle = _handle_namespace(element, row, entity.handle, namespace, name, own,
+                                       home)
         yield PrimitiveCall(cast(CallKind, entity.kind), name,
                             kind if entity.kind != "read" else None,
                             conditions=(*conditions, *extra), location=where,
                             origin="description", searched=entity.searched,
                             handle_namespace=handle or None,
                             transport="*" if entity.transport else None)
+
+
+def _handle_namespace(element: etree._Element, row: Plugin, template: str, namespace: str,
+                      name: str, own: str, home: str) -> str | None:
+    """The namespace of the node handle an entity's call is made on (``Entity.handle``),
+    written as the call's ``name`` is: ``camera/left`` of ``camera/left/image_raw``, so
+    the graph remaps it before it resolves the rest (``graph.build._handle_name``). None
+    when it is the plugin's own handle (an empty ``<cameraName>``), when the name the
+    description gives does not lie under it (a global topic name), or when not known."""
+    below = _template(element, row, template)
+    if below is None or UNKNOWN_MARK in below or not below.strip("/") or \
+            below.startswith("/") or not own.startswith(below.rstrip("/") + "/"):
+        return None
+    handle = clean(namespace + below.rstrip("/"))
+    if handle.startswith(home) and len(handle) > len(home):
+        handle = handle[len(home):]
+    return handle if name.startswith(handle + "/") else None
 
 
 def _ros1_namespace(element: etree._Element, row: Plugin, spawn: Spawn,

@@ -49,6 +49,12 @@ class Entity:
     # a read of the parameter found by searching up from the handle's namespace
     # (``searchParam``, ``PrimitiveCall.searched``): gazebo_ros_control's getURDF
     searched: bool = False
+    # ROS 1: the template of the namespace of the node handle the call is made on, below
+    # the plugin's (``{cameraName}``: gazebo_ros_camera_utils.cpp's LoadThread makes
+    # ``ros::NodeHandle(robot_namespace_ + "/" + camera_name_)``), which roscpp remaps
+    # before it resolves the name in it (``PrimitiveCall.handle_namespace``); None: the
+    # plugin's own handle
+    handle: str | None = None
 
 
 @dataclass(frozen=True)
@@ -75,8 +81,10 @@ def _ros2(*filenames: str, entities: tuple[Entity, ...],
 
 
 _CAMERA_1 = (
-    Entity("publish", "{cameraName}/{imageTopicName}", "sensor_msgs/Image", transport=True),
-    Entity("publish", "{cameraName}/{cameraInfoTopicName}", "sensor_msgs/CameraInfo"),
+    Entity("publish", "{cameraName}/{imageTopicName}", "sensor_msgs/Image", transport=True,
+           handle="{cameraName}"),
+    Entity("publish", "{cameraName}/{cameraInfoTopicName}", "sensor_msgs/CameraInfo",
+           handle="{cameraName}"),
 )
 _CAMERA_1_DEFAULTS = (("cameraName", ""), ("imageTopicName", "image_raw"),
                       ("cameraInfoTopicName", "camera_info"))
@@ -108,16 +116,17 @@ PLUGINS: tuple[Plugin, ...] = (
     # its name <cameraName>/left (/right); gazebo_ros_multicamera.cpp's Load
     _ros1("gazebo_ros_multicamera", namespace="sensor", entities=tuple(
         Entity(e.kind, e.name.replace("{cameraName}", "{cameraName}/" + side), e.type,
-               when=f"@camera:{side}", transport=e.transport)
+               when=f"@camera:{side}", transport=e.transport,
+               handle="{cameraName}/" + side)
         for side in MULTICAMERA_SIDES for e in _CAMERA_1), defaults=_CAMERA_1_DEFAULTS),
     _ros1("gazebo_ros_depth_camera", "gazebo_ros_openni_kinect", namespace="sensor",
           entities=(*_CAMERA_1,
                     Entity("publish", "{cameraName}/{depthImageTopicName}",
-                           "sensor_msgs/Image"),
+                           "sensor_msgs/Image", handle="{cameraName}"),
                     Entity("publish", "{cameraName}/{depthImageCameraInfoTopicName}",
-                           "sensor_msgs/CameraInfo"),
+                           "sensor_msgs/CameraInfo", handle="{cameraName}"),
                     Entity("publish", "{cameraName}/{pointCloudTopicName}",
-                           "sensor_msgs/PointCloud2")),
+                           "sensor_msgs/PointCloud2", handle="{cameraName}")),
           defaults=(*_CAMERA_1_DEFAULTS, ("depthImageTopicName", "depth/image_raw"),
                     ("depthImageCameraInfoTopicName", "depth/camera_info"),
                     ("pointCloudTopicName", "points"))),

@@ -102,6 +102,9 @@ public:
   template<class D> void setInterMessageLowerBound(const D& bound);
   void setAgePenalty(double penalty);
   template<class D> void setMaxIntervalDuration(const D& duration);
+  // the policy it was built with (Autoware's lane_select:
+  // ``sync->getPolicy()->setMaxIntervalDuration(ros::Duration(0.1))``)
+  P* getPolicy();
 };
 template<class... M> class TimeSynchronizer {
 public:

@@ -1143,6 +1143,15 @@ template<class C, class Tr, class A> struct haros_not_callable<basic_string<C, T
 template<class T> struct haros_not_callable<shared_ptr<T>> : true_type {};
 template<class T> struct haros_not_callable<weak_ptr<T>> : true_type {};
 template<class T, class D> struct haros_not_callable<unique_ptr<T, D>> : true_type {};
+// and a function object whose one call operator, not a template, cannot take the
+// signature's arguments: the library's constraint, which a set of overloads on
+// std::function types relies on (Autoware's vector_map: ``findByFilter(Filter<Lane>)``,
+// ``findByFilter(Filter<Point>)``, ... given a lambda of one of them); a generic lambda
+// or an overloaded call operator is taken, as before (its body is not instantiated)
+template<class F, class Signature, class = void> struct haros_refuses_call : false_type {};
+template<class F, class R, class... A>
+struct haros_refuses_call<F, R(A...), decltype((void)&F::operator())>
+    : integral_constant<bool, !is_invocable<F&, A...>::value> {};
 template<class Signature> class function;
 template<class R, class... A> class function<R(A...)> {
 public:
@@ -1151,7 +1160,8 @@ public:
   function(nullptr_t) noexcept;
   function(const function& f);
   function(function&& f) noexcept;
-  template<class F, class = typename enable_if<!haros_not_callable<F>::value>::type>
+  template<class F, class = typename enable_if<!haros_not_callable<F>::value &&
+                                               !haros_refuses_call<F, R(A...)>::value>::type>
   function(F f);
   function& operator=(const function& f);
   function& operator=(nullptr_t) noexcept;
