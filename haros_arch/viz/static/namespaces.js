@@ -100,15 +100,8 @@ function namespaceTree(entities) {
 function groupByPrefix(box) {
   for (const child of box.children) groupByPrefix(child);
   if (box.members.length <= PREFIX_AT) return;
-  const words = new Map();
-  for (const e of box.members) {
-    const word = firstWord(e.name, box.base);
-    if (!word) continue;
-    if (!words.has(word)) words.set(word, []);
-    words.get(word).push(e);
-  }
   const grouped = new Set();
-  for (const [word, members] of words) {
+  for (const [word, members] of bucket(box.members, e => firstWord(e.name, box.base))) {
     const nodes = members.filter(e => e.kind === 'node').length;
     if (members.length < PREFIX_MIN || nodes < 2 || members.length === box.members.length) continue;
     const name = box.base + word + '*';
@@ -124,16 +117,9 @@ function groupByPrefix(box) {
 // their last part.
 function groupByNamespace(box) {
   if (box.members.length <= PREFIX_AT) return;
-  const spaces = new Map();
-  for (const e of box.members) {
-    if (e.kind === 'node') continue;
-    const ns = firstSpace(e.name, box.base);
-    if (!ns) continue;
-    if (!spaces.has(ns)) spaces.set(ns, []);
-    spaces.get(ns).push(e);
-  }
   const grouped = new Set();
-  for (const [ns, members] of spaces) {
+  const spaceOf = e => (e.kind === 'node' ? '' : firstSpace(e.name, box.base));
+  for (const [ns, members] of bucket(box.members, spaceOf)) {
     if (members.length < PREFIX_MIN || members.length === box.members.length) continue;
     const name = box.base + ns;
     const unresolved = ns === '?/';
@@ -158,6 +144,18 @@ function firstSpace(name, base) {
   const first = cut < 0 ? rest : rest.slice(0, cut + 1);
   if (first.includes('?')) return '?/';
   return cut < 0 ? '' : first;
+}
+
+// The members by key (those whose key is '' left out), in order of first appearance.
+function bucket(members, keyOf) {
+  const found = new Map();
+  for (const e of members) {
+    const key = keyOf(e);
+    if (!key) continue;
+    if (!found.has(key)) found.set(key, []);
+    found.get(key).push(e);
+  }
+  return found;
 }
 
 function firstWord(name, base) {
