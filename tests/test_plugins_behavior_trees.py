@@ -327,3 +327,47 @@ def test_a_library_of_a_package_on_behaviortree_cpp_through_another(tmp_path):
     names = {(link.kind, link.resource.name) for link in config.links
              if link.node.name == "/move"}
     assert {("action-client", "/go_there"), ("client", "/clear_all")} <= names
+
+
+SIMPLE = """#include "behaviortree_cpp/bt_factory.h"
+namespace my_bt {
+BT::NodeStatus ready(BT::TreeNode & node)
+{
+  return node.config().blackboard->get<bool>("ready") ? BT::NodeStatus::SUCCESS
+                                                     : BT::NodeStatus::FAILURE;
+}
+}  // namespace my_bt
+
+BT_REGISTER_NODES(factory)
+{
+  factory.registerSimpleCondition(
+    "Ready", std::bind(&my_bt::ready, std::placeholders::_1));
+}
+"""
+
+
+def test_a_library_of_function_nodes_only_is_found(tmp_path):
+    """nav2's nav2_initial_pose_received_condition_bt_node (humble) registers one node
+    made of a function, ``registerSimpleCondition("InitialPoseReceived", ...)``, and no
+    class: the library was not indexed, so a navigator listing it (every humble
+    nav2_params.yaml) got BT_LIBRARY_NOT_FOUND with the library's source in the
+    workspace, and the tree's tag BT_NODE_UNKNOWN."""
+    tree = TREE.replace("<Unregistered/>", "<Ready/>")
+    path = _workspace(tmp_path, tree)
+    (path.parents[1] / "src" / "simple.cpp").write_text(SIMPLE)
+    cmake = path.parents[1] / "CMakeLists.txt"
+    cmake.write_text(cmake.read_text() + "add_library(my_ready_node SHARED src/simple.cpp)\n")
+    workspace = scan([str(tmp_path)])
+    navigator = Node("nav2_bt_navigator", "bt_navigator")
+    where = Location("bringup", "bringup/params.yaml", 4, 0)
+    launch = LaunchModel(
+        nodes=[NodeDecl("/nav/bt_navigator", "nav2_bt_navigator", "bt_navigator", "/nav/",
+                        ros_version=2)],
+        params=[ParamDecl("/nav/bt_navigator/plugin_lib_names",
+                          ["my_bt_nodes", "my_ready_node"], location=where),
+                ParamDecl("/nav/bt_navigator/default_nav_to_pose_bt_xml", str(path),
+                          location=where)])
+    config = build(Configuration("c"), launch, workspace, {navigator.name: navigator})
+    codes = [d.code for d in config.diagnostics if d.code.startswith("BT_")]
+    assert codes == []
+    assert ("publish", "/nav/watch_state", "std_msgs/msg/String") in _links(config)

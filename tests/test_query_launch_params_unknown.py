@@ -161,3 +161,40 @@ def test_ros1_a_rosparam_in_a_namespace_not_seen_sets_only_below_it(write_tree: 
     assert "parameter-set-not-read" not in found  # no phantom /talker/gains
     assert sorted(found["parameter-read-not-set"]) == [("parameter:/shared/frame",),
                                                         ("parameter:/talker/port",)]
+
+
+SLASH_LAUNCH = """
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        return LaunchDescription([
+            Node(package='talk', executable='talker',
+                 parameters=[{'/port': 'ttyS0', 'gain': 2.0}]),
+            Node(package='not_here', executable='other'),
+        ])
+    """
+
+
+def test_ros2_a_parameter_named_with_a_leading_slash_is_its_nodes(write_tree: Any) -> None:
+    # moveit2_tutorials 1968607: parameters=[{"/child_frame_id": ...}] on tf2_ros'
+    # static transform node, which declares child_frame_id. launch_ros hands the
+    # name as written, so the node gets the override /child_frame_id, declares another
+    # name and never reads it. A ROS 2 parameter is its node's alone: the node of unknown
+    # interface beside it (not_here/other) cannot be its reader, so the finding is
+    # decided. The parameter's full name has two slashes, /talker//port, which the
+    # search for its owner did not take for /talker's
+    root = write_tree({
+        "src/talk/package.xml": package_xml("talk", build_type="ament_python"),
+        "src/talk/setup.py": "from setuptools import setup\n"
+                             "setup(name='talk', packages=['talk'], entry_points="
+                             "{'console_scripts': ['talker = talk.talker:main']})\n",
+        "src/talk/resource/talk": "",
+        "src/talk/talk/__init__.py": "",
+        "src/talk/talk/talker.py": ROS2_NODE,
+        "src/talk/launch/talk.launch.py": SLASH_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [talk/launch/talk.launch.py]\n",
+    })
+    found = _findings(root)
+    assert ("parameter:/talker//port",) in found.get("parameter-set-not-read", [])
+    assert "parameter-set-not-read" + UNDECIDED not in found

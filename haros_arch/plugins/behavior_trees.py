@@ -68,6 +68,9 @@ _GENERIC_TAGS = frozenset(("Action", "Condition", "Decorator", "Control", "SubTr
 
 _BUILDER = re.compile(r"registerBuilder\s*<\s*([\w:]+)\s*>\s*\(\s*\"([^\"]+)\"")
 _NODE_TYPE = re.compile(r"registerNodeType\s*<\s*([\w:]+)\s*>\s*\(\s*\"([^\"]+)\"")
+# a node made of a function, ``registerSimpleCondition("ID", callback, ports)`` (nav2's
+# InitialPoseReceived: a library that registers nothing else)
+_SIMPLE = re.compile(r"registerSimple(?:Action|Condition|Decorator)\s*\(\s*\"([^\"]+)\"")
 _MADE = re.compile(r"make_(?:unique|shared)\s*<\s*([\w:]+)\s*>\s*\(\s*\w+\s*,\s*\"([^\"]*)\"")
 _BASE = r"(?:[\w:]*::)?(BtActionNode|BtCancelActionNode|BtServiceNode)\s*<\s*([\w:]+)\s*>"
 _MADE_CALL = re.compile(r"\bcreate_(subscription|publisher|service|client)\s*<\s*([\w:]+)\s*>"
@@ -173,6 +176,12 @@ def _registrations(path: str, library: str, workspace: Workspace) -> list[Regist
                               made.get(cls) if pattern is _BUILDER else None)
             _read_class(each, code, everything)
             out.append(each)
+    for match in _SIMPLE.finditer(code):
+        # no class: its calls are those of the file that no registered class owns
+        line = code.count("\n", 0, match.start()) + 1
+        each = Registered(match.group(1), "", library, workspace.location(path, line, 0))
+        _own_calls(each, code, everything, None)
+        out.append(each)
     return out
 
 
@@ -194,6 +203,12 @@ def _read_class(each: Registered, code: str, everything: str) -> None:
             r"InputPort\s*<\s*std::string\s*>\s*\(\s*\"(\w+)\"\s*,\s*"
             r"(?:std::string\s*\(\s*)?\"([^\"]*)\"\s*(?:\)\s*)?,\s*\"", everything):
         each.ports.setdefault(port, default)
+    _own_calls(each, code, everything, short)
+
+
+def _own_calls(each: Registered, code: str, everything: str, short: str | None) -> None:
+    """The ``create_*`` calls of the file that are the class ``short``'s (or, for a
+    function's node, None, that no registered class owns)."""
     owners = [(m.start(), m.group(1)) for m in _MEMBER_DEF.finditer(code)]
     for made in _MADE_CALL.finditer(code):
         owner = next((name for start, name in reversed(owners) if start < made.start()), None)

@@ -279,8 +279,10 @@ HOSTS: tuple[Host, ...] = (
         Slot("smoother_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Smoother")),)),
     Host("nav2_waypoint_follower", ("waypoint_follower",
                                     "nav2_waypoint_follower::WaypointFollower"), 2, (
+        # the loader's package is nav2_waypoint_follower from Humble to Jazzy (its
+        # plugins.xml exported under that tag), nav2_core after
         Slot("waypoint_task_executor_plugin", "{name}.plugin",
-             ("nav2_core", "nav2_core::WaypointTaskExecutor")),)),
+             ("nav2_core", "nav2_waypoint_follower", "nav2_core::WaypointTaskExecutor")),)),
     Host("nav2_costmap_2d", ("nav2_costmap_2d",), 2, _NAV2_COSTMAP),
     # bt_navigator loads its navigators by id (bt_navigator.cpp: ``navigators``, each
     # class from ``<id>.plugin``; the two defaults when the list is not set); a navigator

@@ -158,12 +158,14 @@ def _per_configuration(cache: WeakKeyDictionary[Configuration, Built], config: C
 def owner_of(config: Configuration, parameter: Parameter,
              known: Known | None = None) -> NodeInstance | None:
     """The node instance a parameter is private to (``/ns/node/param`` of ``/ns/node``;
-    a ROS 2 parameter always belongs to its node), or None for a shared one."""
+    a ROS 2 parameter always belongs to its node), or None for a shared one. A ROS 2
+    parameter whose own name begins with a slash (launch_ros hands ``{"/frame_id": ...}``
+    to the node as written) is ``/ns/node//frame_id``: still ``/ns/node``'s."""
     by_name = (known or _known(config)).by_name
     name = parameter.name
     while "/" in name.rstrip("/"):
         name = name.rstrip("/").rsplit("/", 1)[0]
-        found = by_name.get(name)
+        found = by_name.get(name.rstrip("/") or name)
         if found is not None:
             return found
     return None
