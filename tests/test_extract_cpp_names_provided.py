@@ -41,3 +41,30 @@ def test_a_boost_name_reached_through_a_missing_header_is_the_stand_in_s(tmp_pat
     assert [c.name for c in result.calls] == ["scenario"]
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+
+
+def test_the_stand_in_s_names_are_not_declared_again_in_a_reopened_namespace(
+        tmp_path, monkeypatch) -> None:
+    # boost is a namespace the parse knows (boost::shared_ptr's stand-in): the synthesised
+    # header reopens it; the names the stand-in header provides are included, not also
+    # declared there as permissive templates
+    from haros_arch.extract.cpp import synthesis
+
+    headers: list[str] = []
+    original = synthesis.Names.header
+
+    def header(self: synthesis.Names) -> str:
+        headers.append(original(self))
+        return headers[-1]
+
+    monkeypatch.setattr(synthesis.Names, "header", header)
+    (tmp_path / "package.xml").write_text(package_xml("selector", "ament_cmake"))
+    source = tmp_path / "selector.cpp"
+    source.write_text(SOURCE.replace("#include <lanelet2_core/LaneletMap.h>",
+                                     "#include <boost/shared_ptr.hpp>\n"
+                                     "#include <lanelet2_core/LaneletMap.h>"))
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="humble")
+    assert [c.name for c in result.calls] == ["scenario"]
+    assert headers and all("#include <boost/optional.hpp>" in text for text in headers)
+    assert not any("struct optional" in text or "struct none" in text for text in headers)

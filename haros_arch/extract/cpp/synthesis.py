@@ -1417,8 +1417,8 @@ class Names:
                 continue
             provided = _PROVIDED.get(name, {})
             headers = sorted({provided[n] for n in node.children if n in provided})
-            lines += [f"#include <{header}>" for header in headers]
-            if headers and not node.uses and not node.known:
+            if headers:  # included, and not declared again (in ``boost`` reopened, too)
+                lines += [f"#include <{header}>" for header in headers]
                 node = dataclasses.replace(node, children={
                     n: child for n, child in node.children.items() if n not in provided})
                 if not node.children:
