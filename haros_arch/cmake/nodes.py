@@ -310,7 +310,8 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     # a class or function the node's own files define is theirs, whatever another
     # package calls the same (opennav_following's ParameterHandler against
     # opennav_docking's)
-    words = code_words(kept, workspace) - defined_in(kept, workspace)
+    own = defined_in(kept, workspace)
+    words = code_words(kept, workspace) - own
     built = frozenset().union(*(main_words(s, workspace) for s in kept))
 
     def usable(group: list[str]) -> list[str]:
@@ -340,8 +341,7 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
         found.update(dict.fromkeys(new))
         if key.startswith("\0"):
             continue
-        said = set().union(*(named_words(s, workspace) for s in new)) - defined_in(kept,
-                                                                                   workspace)
+        said = set().union(*(named_words(s, workspace) for s in new)) - own
         for owner, group in sources.handed_by(key):
             if owner not in groups:
                 groups[owner], naming[owner] = usable(group), set()
