@@ -277,3 +277,49 @@ def test_crowded_global_names_are_boxed_by_namespace_and_unresolved_apart(
     watched.page.dispatch_event(watched.vertex("namespace:/?/"), "click")
     assert {"topic:?#59", "topic:?#60", "topic:/?/scan#61"} <= watched.ids("#graph .vertex")
     assert watched.problems == []
+
+
+def test_a_box_of_many_names_linked_outside_it_opens_as_columns(browser: Any,  # noqa: F811
+                                                                 tmp_path: Path) -> None:
+    # A node's 40 private parameters, each read by the node outside their box: opened, the
+    # box is a block of columns about the stage's shape, not one column 40 names tall, and
+    # every read still runs between items, never across another name.
+    where = {"package": "p", "file": "p/src/talker.cpp", "line": 3, "column": 1}
+    names = [f"/talker/param{i:02d}" for i in range(40)]
+
+    def link(kind: str, node: str, name: str) -> dict[str, Any]:
+        return {"kind": kind, "node": node, "name": name, "given": name, "type": "int",
+                "queue_size": None, "qos": None, "conditions": [], "location": where}
+
+    config = {
+        "name": "c", "launch": [], "args": {}, "diagnostics": [], "services": [], "actions": [],
+        "nodes": [{"name": "/talker", "id": "node:/talker", "node": "p/talker", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where}],
+        "topics": [],
+        "parameters": [{"name": n, "id": f"parameter:{n}", "type": "int", "value": 1,
+                        "readers": ["/talker"], "writers": [], "conditions": []} for n in names],
+        "links": [link("read", "/talker", n) for n in names]}
+    model = {"schema": "haros-arch/1", "project": "p", "packages": [], "diagnostics": [],
+             "configurations": [config]}
+    path = tmp_path / "params.html"
+    write_report(model, [], str(tmp_path), str(path))
+    watched = Watched(browser, path)
+    watched.page.click(watched.vertex("namespace:/talker/"))
+    drawn = watched.page.evaluate(GEOMETRY)
+    params = {v: g for v, g in drawn["vertices"].items() if v.startswith("parameter:")}
+    assert len(params) == 40
+    columns = {round(g["x"]) for g in params.values()}
+    assert len(columns) >= 3
+    box = drawn["boxes"]["/talker/"]
+    assert (box["y1"] - box["y0"]) < 2 * (box["x1"] - box["x0"])
+    # Name order down each column, the columns left to right.
+    order = sorted(params, key=lambda v: (round(params[v]["x"]), params[v]["y"]))
+    assert order == [f"parameter:{n}" for n in names]
+    reads = [e for e in drawn["edges"] if e["target"] in params or e["source"] in params]
+    assert len(reads) == 40
+    for e in reads:
+        ends = {e["source"], e["target"]}
+        for point in e["points"][2:-2]:
+            assert not any(inside(point, g, 1) for v, g in drawn["vertices"].items()
+                           if v not in ends), (e["source"], e["target"], point)
+    assert watched.problems == []

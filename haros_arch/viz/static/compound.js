@@ -24,6 +24,7 @@ const WIDE = 4;
 const SHELF_GAP_X = 60;
 const SHELF_GAP_Y = 44;
 const BLOCK_GAP = 50;
+const LOOSE_COLUMN = 12;  // more items than this with no link inside their box: several columns
 
 function layeredLayout(vertices, edges, opts = {}) {
   for (const e of edges) e.points = null;
@@ -105,6 +106,7 @@ function arrange(lv, levels, boxItem, aspect, isRoot) {
     layer = layering(rest, inner.filter(([a, b]) => !lv.free.has(a) && !lv.free.has(b)).map(([a, b]) => [a, b]));
   }
   const routed = dag.filter(([a, b]) => !lv.free.has(a) && !lv.free.has(b));
+  spreadLoose(lv.items, routed.filter(([a, b]) => !a.port && !b.port), layer, lv.free, aspect);
   const left = ports.filter(p => p.side === 'left'), right = ports.filter(p => p.side === 'right');
   if (left.length) for (const [v, l] of layer) layer.set(v, l + 1);
   for (const p of left) layer.set(p, 0);
@@ -162,6 +164,22 @@ function arrange(lv, levels, boxItem, aspect, isRoot) {
     v.w = child.w; v.h = child.h;
   }
   coordinates(lv, layers, layer, out, inc, aspect, isRoot);
+}
+
+// Items linked to nothing else inside their level (a box of names each linked only to
+// something outside it, through the box's ports, or to nothing) would all stand in one tall
+// column. When they are many, they fill as many columns as give them about the stage's shape,
+// in name order; their links reach them between the columns, as any link that crosses layers.
+function spreadLoose(items, pairs, layer, free, aspect) {
+  const linked = new Set(pairs.flatMap(([a, b]) => [a, b]));
+  const loose = items.filter(v => !free.has(v) && !linked.has(v) && v.kind !== 'box' && v.kind !== 'namespace');
+  if (loose.length <= LOOSE_COLUMN) return;
+  const wide = Math.max(...loose.map(v => v.w)) + LAYER_GAP;
+  const tall = loose.reduce((sum, v) => sum + v.h + ROW_GAP, 0);
+  const columns = Math.min(loose.length, Math.max(1, Math.round(Math.sqrt(aspect * tall / wide))));
+  const per = Math.ceil(loose.length / columns);
+  loose.sort((a, b) => compareText(a.name || '', b.name || ''));
+  loose.forEach((v, i) => layer.set(v, Math.floor(i / per)));
 }
 
 // Would these items, in these layers, make a strip much wider than the stage? Boxes
