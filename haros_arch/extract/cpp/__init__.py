@@ -1450,6 +1450,11 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         functions.setdefault(name, []).append((start.line, end.line, function.spelling))
         if function.kind != CursorKind.FIELD_DECL and finder.wrappers.silent(function):
             silent.setdefault(name, []).append((start.line, end.line))
+    for function in finder.wrappers.silent_lambdas():
+        start, end = function.extent.start, function.extent.end
+        if start.file is not None:
+            silent.setdefault(os.path.abspath(start.file.name), []).append(
+                (start.line, end.line))
     lines: dict[str | None, set[int]] = {}
     for call in finder.calls:
         lines.setdefault(call.location.file, set()).add(call.location.line)

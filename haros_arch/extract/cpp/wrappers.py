@@ -481,6 +481,15 @@ class Wrappers:
         key = _key(function.canonical)
         return (key in self.summaries and key not in self._kept) or key in self._left
 
+    def silent_lambdas(self) -> list[Cursor]:
+        """The lambdas whose calls are emitted where they are called (``silent``): their
+        bodies are no function of the unit's, and a call there that a generic lambda
+        leaves dependent (MoveIt's planning scene monitor's ``[this](const std::string&
+        name, auto value, ...) { return pnode_->declare_parameter(name, value, desc); }``)
+        is resolved nowhere but at the lambda's calls."""
+        return [f for f in self._functions.values()
+                if f.kind == CursorKind.LAMBDA_EXPR and self.silent(f)]
+
     def _constructed(self, call: Cursor, args: list[Cursor]) -> list[Key]:
         """The wrapper constructors ``std::make_shared<C>(args)`` may call (C a class
         template of the unit whose constructor wraps the API), resolved or dependent."""
