@@ -233,3 +233,27 @@ def test_pcl_and_geographic_messages_come_from_the_catalogue(write_tree) -> None
     assert sorted((c.kind, c.name, c.type) for c in ros1.calls) == [
         ("publish", "plane", "pcl_msgs/ModelCoefficients"),
         ("subscribe", "fix", "geographic_msgs/GeoPointStamped")]
+
+
+def test_interfaces_of_widely_used_stacks_come_from_the_catalogue(write_tree) -> None:
+    """MoveIt's, Navigation2's, ros_control's / ros2_control's controller manager's,
+    Gazebo's, MAVROS's, vision_msgs' and ackermann_msgs' interfaces, which a workspace
+    usually has installed, are in the catalogue: a field read in a call's arguments keeps
+    the call. Without them MoveIt's ``get_parameter(param + ".name", constraints.name)``
+    (kinematic_constraints' utils.cpp) was lost and 8 of MoveIt's nodes were partial."""
+    for distro in ("jazzy", "humble"):
+        ros2 = _extract(write_tree, "ros2_stacks.cpp", "ament_cmake", distro)
+        assert _errors(ros2) == [], distro
+        assert sorted((c.kind, c.name, c.type) for c in ros2.calls) == [
+            ("client", "controller_manager/list_controllers",
+             "controller_manager_msgs/srv/ListControllers"),
+            ("declare", "controllers", "int"), ("declare", "default_tree", "str"),
+            ("declare", "frame", "str"), ("declare", "max_speed", "double"),
+            ("declare", "mode", "str"), ("read", "path_constraints.name", "str")], distro
+    ros1 = _extract(write_tree, "ros1_stacks.cpp", "catkin", "noetic")
+    assert _errors(ros1) == []
+    assert sorted((c.kind, c.name, c.type) for c in ros1.calls) == [
+        ("client", "controller_manager/switch_controller",
+         "controller_manager_msgs/SwitchController"),
+        ("read", "constraints/name", "str"), ("read", "max_speed", "double"),
+        ("read", "mode", "str"), ("read", "models", "str[]"), ("read", "start", "str[]")]
