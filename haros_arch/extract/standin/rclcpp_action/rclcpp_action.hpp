@@ -42,8 +42,16 @@ public:
     ResultCode code;
     std::shared_ptr<typename A::Result> result;
   };
+  using Feedback = typename A::Feedback;
+  using Result = typename A::Result;
+  using FeedbackCallback = std::function<void(std::shared_ptr<ClientGoalHandle>,
+                                              const std::shared_ptr<const Feedback>)>;
+  using ResultCallback = std::function<void(const WrappedResult&)>;
   const GoalUUID& get_goal_id() const;
+  rclcpp::Time get_goal_stamp() const;
   int8_t get_status();
+  bool is_feedback_aware();
+  bool is_result_aware();
 };
 template<class A> class Server {
 public:
@@ -61,6 +69,18 @@ public:
   using Goal = typename A::Goal;
   using GoalHandle = ClientGoalHandle<A>;
   using WrappedResult = typename GoalHandle::WrappedResult;
+  using Feedback = typename A::Feedback;
+  using Result = typename A::Result;
+  using FeedbackCallback = typename GoalHandle::FeedbackCallback;
+  using ResultCallback = typename GoalHandle::ResultCallback;
+  // action_msgs' CancelGoal response, as the client hands it back
+  struct CancelResponse {
+    RCLCPP_SMART_PTR_DEFINITIONS(CancelResponse)
+    static const int8_t ERROR_NONE = 0, ERROR_REJECTED = 1, ERROR_UNKNOWN_GOAL_ID = 2,
+                        ERROR_GOAL_TERMINATED = 3;
+    int8_t return_code;
+    std::vector<GoalUUID> goals_canceling;
+  };
   struct SendGoalOptions {
     SendGoalOptions();
     std::function<void(std::shared_ptr<GoalHandle>)> goal_response_callback;
@@ -72,9 +92,20 @@ public:
   bool wait_for_action_server(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
   std::shared_future<std::shared_ptr<GoalHandle>> async_send_goal(
       const Goal& goal, const SendGoalOptions& options = SendGoalOptions());
-  std::shared_future<WrappedResult> async_get_result(std::shared_ptr<GoalHandle> handle);
-  std::shared_future<int> async_cancel_goal(std::shared_ptr<GoalHandle> handle);
-  std::shared_future<int> async_cancel_all_goals();
+  std::shared_future<WrappedResult> async_get_result(std::shared_ptr<GoalHandle> handle,
+                                                     ResultCallback callback = nullptr);
+  // the cancel callback takes the response (any callable here: code names its type in
+  // several ways)
+  template<class F = std::nullptr_t>
+  std::shared_future<typename CancelResponse::SharedPtr> async_cancel_goal(
+      std::shared_ptr<GoalHandle> handle, F callback = nullptr);
+  template<class F = std::nullptr_t>
+  std::shared_future<typename CancelResponse::SharedPtr> async_cancel_all_goals(
+      F callback = nullptr);
+  template<class F = std::nullptr_t>
+  std::shared_future<typename CancelResponse::SharedPtr> async_cancel_goals_before(
+      const rclcpp::Time& stamp, F callback = nullptr);
+  void stop_callbacks(std::shared_ptr<GoalHandle> handle);
 };
 template<class A, class N, class G, class C, class H>
 typename Server<A>::SharedPtr create_server(N node, const std::string& name, G handle_goal,
