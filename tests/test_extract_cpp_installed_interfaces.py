@@ -177,6 +177,35 @@ def test_models_interfaces_reads_a_pinned_tree(tmp_path, capsys) -> None:
                  str(tmp_path / "nowhere"), "-o", str(out)]) == 2
 
 
+def test_models_interfaces_reads_definitions_one_folder_down(tmp_path) -> None:
+    """rosidl takes the files a CMakeLists lists, wherever they are; the header is
+    ``pkg/msg/name.hpp`` all the same: tier4_perception_msgs keeps its traffic light
+    messages in ``msg/traffic_light/``, autoware_adapi_v1_msgs its in ``planning/msg/``.
+    A test folder's are no package's."""
+    commit = "b" * 40
+    tree = tmp_path / "sources" / folder_of("github:someone/deep_msgs", commit)
+    package = tree / "deep_msgs"
+    for folder in ("msg", "msg/traffic_light", "planning/msg", "test/msg", "srv"):
+        (package / folder).mkdir(parents=True)
+    (package / "package.xml").write_text("<package format='3'><name>deep_msgs</name></package>")
+    (package / "msg" / "Top.msg").write_text("int32 a\n")
+    (package / "msg" / "traffic_light" / "Light.msg").write_text("uint8 color\n")
+    (package / "planning" / "msg" / "Decision.msg").write_text("string reason\n")
+    (package / "test" / "msg" / "Fake.msg").write_text("int8 x\n")
+    (package / "planning" / "msg" / "Top.msg").write_text("int64 shadowed\n")
+    listing = tmp_path / "list.yaml"
+    listing.write_text(yaml.safe_dump([{
+        "repository": "github:someone/deep_msgs", "commit": commit, "distro": "humble",
+        "packages": ["deep_msgs"]}]))
+    out = tmp_path / "out"
+    assert main(["models", "interfaces", str(listing), "--sources",
+                 str(tmp_path / "sources"), "-o", str(out)]) == 0
+    document = json.loads((out / "humble.json").read_text())
+    assert document["definitions"] == {"deep_msgs/msg/Decision": "string reason",
+                                       "deep_msgs/msg/Light": "uint8 color",
+                                       "deep_msgs/msg/Top": "int32 a"}
+
+
 def test_ros2_interface_named_with_capitals_together(write_tree) -> None:
     # franka's JointImpedanceWithIKExampleController: moveit_msgs (not in the workspace,
     # not in the catalogue) has get_position_ik.hpp for GetPositionIK, which capitalising
@@ -237,7 +266,8 @@ def test_pcl_and_geographic_messages_come_from_the_catalogue(write_tree) -> None
 
 def test_interfaces_of_widely_used_stacks_come_from_the_catalogue(write_tree) -> None:
     """MoveIt's, Navigation2's, ros_control's / ros2_control's controller manager's,
-    Gazebo's, MAVROS's, vision_msgs' and ackermann_msgs' interfaces, which a workspace
+    Gazebo's, MAVROS's, vision_msgs', ackermann_msgs', turtlesim's and Autoware's
+    interfaces, which a workspace
     usually has installed, are in the catalogue: a field read in a call's arguments keeps
     the call. Without them MoveIt's ``get_parameter(param + ".name", constraints.name)``
     (kinematic_constraints' utils.cpp) was lost and 8 of MoveIt's nodes were partial."""
@@ -249,11 +279,14 @@ def test_interfaces_of_widely_used_stacks_come_from_the_catalogue(write_tree) ->
              "controller_manager_msgs/srv/ListControllers"),
             ("declare", "controllers", "int"), ("declare", "default_tree", "str"),
             ("declare", "frame", "str"), ("declare", "max_speed", "double"),
-            ("declare", "mode", "str"), ("read", "path_constraints.name", "str")], distro
+            ("declare", "mode", "str"), ("declare", "start_x", "double"),
+            ("declare", "trajectory_frame", "str"),
+            ("read", "path_constraints.name", "str")], distro
     ros1 = _extract(write_tree, "ros1_stacks.cpp", "catkin", "noetic")
     assert _errors(ros1) == []
     assert sorted((c.kind, c.name, c.type) for c in ros1.calls) == [
         ("client", "controller_manager/switch_controller",
          "controller_manager_msgs/SwitchController"),
         ("read", "constraints/name", "str"), ("read", "max_speed", "double"),
-        ("read", "mode", "str"), ("read", "models", "str[]"), ("read", "start", "str[]")]
+        ("read", "mode", "str"), ("read", "models", "str[]"), ("read", "start", "str[]"),
+        ("read", "start_x", "double")]
