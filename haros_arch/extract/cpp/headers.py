@@ -159,6 +159,7 @@ UMBRELLAS = {
     "boost/ptr_container/": "boost/ptr_container/ptr_vector.hpp",
     "boost/circular_buffer/": "boost/circular_buffer.hpp",
     "boost/optional/": "boost/optional.hpp",
+    "boost/random/": "boost/random.hpp",  # Boost.Random, the engines of <random>
     "boost/algorithm/string/": "boost/algorithm/string.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
