@@ -74,7 +74,9 @@ CATALOGUE: dict[str, Entry] = {
         "it are still used."),
     "CMAKE_SOURCE_MISSING": Entry(
         "warning", "source file {path} of target {target} does not exist",
-        "A build target names a source file that is not in the package."),
+        "A build target names a source file that is not in the package (nor one a "
+        "configure_file writes by that name in the build folder, where CMake looks "
+        "next)."),
     "CMAKE_PROGRAM_NOT_IN_SOURCES": Entry(
         "info", "program {path} installed here is not in the sources; the package's "
         "{command} ({where}) may make it at build time",
@@ -305,7 +307,8 @@ CATALOGUE: dict[str, Entry] = {
         "recurse until it fails. The repeated include is skipped."),
     "LAUNCH_NODE_DUPLICATE": Entry(
         "error", "launch starts two nodes named {name} (also at {other})",
-        "roslaunch refuses a launch whose node names collide."),
+        "roslaunch refuses a launch whose node names collide (two $(anon x) of one "
+        "file are one name; those of two includes of it are two)."),
     "LAUNCH_ARG_UNDEFINED": Entry(
         "error", "argument {name} is not defined here",
         "$(arg) names an argument that is neither declared in this scope nor passed "

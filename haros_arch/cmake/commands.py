@@ -402,7 +402,7 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         rest = rest[:at] + rest[at + 2:]
         sources.extend(_glob(it, [os.path.join(folder, "*" + s) for s in C_SUFFIXES],
                              recurse=True))
-    sources.extend(it.path(a) for a in rest if a not in flags)
+    sources.extend(it.source_path(a) for a in rest if a not in flags)
     conditions = it.current_conditions()
     before = it.targets.get(args[0])
     if before is not None:
@@ -733,7 +733,7 @@ def _target_sources(it: Interpreter, command: Invocation, args: list[str]) -> No
         keywords = ("PRIVATE", "PUBLIC", "INTERFACE", "FILE_SET", "TYPE", "BASE_DIRS",
                     "FILES", "HEADERS", "CXX_MODULES")
         every = it.every_way(command.args)
-        target.sources.extend(it.path(a) for a in _listed((every if every[:1] == args[:1]
+        target.sources.extend(it.source_path(a) for a in _listed((every if every[:1] == args[:1]
                                                            else args)[1:])
                               if a not in keywords)
 

@@ -278,6 +278,21 @@ class Interpreter:
             return text
         return os.path.normpath(os.path.join(self.source_dir, text))
 
+    def source_path(self, text: str) -> str:
+        """A target's source: relative to the current source folder, as ``path``; but
+        where no file of that name is there and a configure_file before wrote one in the
+        current binary folder, that one, as CMake looks a relative source up in the
+        source folder and then in the binary folder (jsk_topic_tools' ``jsk_nodelet``
+        macro configures ``<name>.cpp`` and builds ``add_executable(<name> <name>.cpp)``)."""
+        found = self.path(text)
+        if text.startswith("$<") or os.path.isabs(text) or os.path.exists(found):
+            return found
+        binary = os.path.normpath(os.path.join(
+            self.get("CMAKE_CURRENT_BINARY_DIR") or self.source_dir, text))
+        if any(made.output == binary for made in self.configured):
+            return binary
+        return found
+
     # -- values ---------------------------------------------------------------
     def expand(self, text: str) -> str:
         return self._expanded(text)[0]

@@ -820,5 +820,11 @@ OPTIONS: dict[tuple[str, str], RosFunction] = {
     ("ros::AdvertiseOptions", "create"): _ADVERTISE_OPTIONS,
     ("ros::AdvertiseServiceOptions", "init"): _SERVICE_OPTIONS,
     ("ros::AdvertiseServiceOptions", "create"): _SERVICE_OPTIONS,
+    # the options built by roscpp's constructor of a topic, queue, md5sum and datatype
+    # (the type's name, as text: a ShapeShifter's ``msg->getDataType()`` is not known)
+    ("ros::SubscribeOptions", "SubscribeOptions"): RosFunction(
+        "subscribe", type_from=("type-name",), type_arg=3, queue_arg=1),
+    ("ros::AdvertiseOptions", "AdvertiseOptions"): RosFunction(
+        "publish", type_from=("type-name",), type_arg=3, queue_arg=1),
 }
 OPTION_CLASSES = frozenset(owner for owner, _ in OPTIONS)

@@ -209,7 +209,7 @@ class CallTypes:
                 arg = args[spec.type_arg]
                 ctype = strip(arg).type
                 if source == "type-name":
-                    found = _type_name(render(scope.string(arg)))
+                    found = _type_name(render(scope.string(arg)), self.ros2)
                 elif source == "arg":
                     # ros::service::call(name, request, response): the request names its
                     # service
@@ -374,11 +374,14 @@ def aliased_argument(call: Cursor, ref: Cursor) -> Cursor | None:
     return next((c for c in children[opened + 1:] if c.kind == CursorKind.TYPE_REF), None)
 
 
-def _type_name(text: str) -> str | None:
-    """A ROS 2 type as a string names it (``pkg/msg/Name``; ``pkg/Name`` is a message)."""
+def _type_name(text: str, ros2: bool = True) -> str | None:
+    """A ROS 2 type as a string names it (``pkg/msg/Name``; ``pkg/Name`` is a message);
+    a ROS 1 type, ``pkg/Name`` (roscpp's options of a datatype given as text)."""
     parts = text.split("/")
     if "?" in text or not all(parts):
         return None
+    if not ros2:
+        return text if len(parts) == 2 else None
     if len(parts) == 2:
         return f"{parts[0]}/msg/{parts[1]}"
     return text if len(parts) == 3 and parts[1] in _INTERFACE else None

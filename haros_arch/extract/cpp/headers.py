@@ -136,6 +136,9 @@ UMBRELLAS = {
     "camera_info_manager/": "camera_info_manager/camera_info_manager.h",
     "bondcpp/": "bondcpp/bond.hpp",
     "xmlrpcpp/": "xmlrpcpp/XmlRpc.h",  # roscpp's XmlRpcValue, XmlRpcException
+    # and its headers by their bare names, <XmlRpcValue.h>, <XmlRpc.h>: xmlrpcpp exports
+    # its include/xmlrpcpp folder too (cob_bms_driver, cob_scan_unifier)
+    "XmlRpc": "xmlrpcpp/XmlRpc.h",
     "realtime_tools/": "realtime_tools/realtime_publisher.h",
     "pal_statistics/": "pal_statistics/pal_statistics_macros.hpp",
     # test nodes (rostest, launch_testing): without it a TEST's body, and every ROS call
@@ -157,6 +160,7 @@ UMBRELLAS = {
     "boost/circular_buffer/": "boost/circular_buffer.hpp",
     "boost/optional/": "boost/optional.hpp",
     "boost/program_options/": "boost/program_options.hpp",
+    "boost/random/": "boost/random.hpp",  # Boost.Random, the engines of <random>
     "boost/algorithm/string/": "boost/algorithm/string.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }

@@ -1508,7 +1508,9 @@ class CallFinder:
     def _options(self, expr: Cursor,
                  scope: Scope) -> tuple[api.RosFunction, Cursor, Scope] | None:
         """The ``ops.init<M>(...)`` or ``Options::create<M>(...)`` call that filled the
-        options object ``expr`` (in this function, else in any function of the file)."""
+        options object ``expr`` (in this function, else in any function of the file), or
+        the constructor of a local one given its topic (``ros::AdvertiseOptions
+        opts(topic, 1, md5sum, datatype, definition)``)."""
         expr = strip(expr)
         decl = expr.referenced if expr.kind in (
             CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
@@ -1519,6 +1521,15 @@ class CallFinder:
             inner = _creator(value)
             if inner is not None:
                 return inner[0], inner[1], scope
+        made = strip(initializer(decl)) if decl.kind == CursorKind.VAR_DECL and (
+            initializer(decl) is not None) else None
+        if made is not None and made.kind == CursorKind.CALL_EXPR and (
+                made.referenced is not None
+                and made.referenced.kind == CursorKind.CONSTRUCTOR):
+            row = api.OPTIONS.get((qualified_name(made.referenced.semantic_parent),
+                                   made.referenced.spelling))
+            if row is not None and len(written_arguments(made)) > 1:
+                return row, made, scope
         for function in [scope.body, *self.functions]:
             if function is None:
                 continue

@@ -23,7 +23,7 @@ from ...model.conditions import Condition, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
 from ...model.rosname import is_legal_name
-from ...model.values import Value
+from ...model.values import Unknown, Value
 from ...workspace import Workspace
 from ..model import (
     LaunchModel,
@@ -77,7 +77,12 @@ class Ros1Loader:
         self.environment: Mapping[str, str] = RecordedEnvironment(environment,
                                                         self.model.environment_values)
         self.default_machine: str | None = None
-        self.node_names: dict[str, list[tuple[Location, tuple[Condition, ...]]]] = {}
+        # the nodes started so far by name, and the anonymous parts of the name: two
+        # ``$(anon x)`` of one file are one name, those of two includes are not
+        self.node_names: dict[tuple[str, tuple[int, ...]],
+                              list[tuple[Location, tuple[Condition, ...]]]] = {}
+        # each ``$(anon x)`` unknown met in a node name, by identity, with its number
+        self.anon_parts: dict[int, tuple[Unknown, int]] = {}
         self.includes = 0
         # the first <param> tag of each name per parent element (LAUNCH_PARAM_SET_TWICE)
         self.param_tags: dict[tuple[int, str, str, tuple[str, ...]], Element] = {}
@@ -92,6 +97,20 @@ class Ros1Loader:
         }
 
     # -- diagnostics and values ----------------------------------------------
+    def anonymous_parts(self, value: Value) -> tuple[int, ...]:
+        """The ``$(anon x)`` parts of a node's name, numbered by identity: roslaunch
+        gives every use of ``$(anon x)`` in one file the same name, and an included file
+        a fresh one (its context starts with a new substitution dictionary), so two
+        nodes of ``$(anon cpu_monitor)`` in two includes of one file are two names, which
+        both read ``cpu_monitor_?``."""
+        numbers = []
+        for part in value.parts:
+            if isinstance(part, Unknown) and part.origin.startswith("anon "):
+                # the unknown is kept, so its id is never another's while loading
+                kept = self.anon_parts.setdefault(id(part), (part, len(self.anon_parts)))
+                numbers.append(kept[1])
+        return tuple(numbers)
+
     def where(self, scope: Scope | str, element: Element | None = None) -> Location:
         line = element.sourceline if element is not None else None
         path = scope if isinstance(scope, str) else scope.path
@@ -429,8 +448,11 @@ class Ros1Loader:
                     return
             test_name = self.text(element, "test-name", scope) or ""
             name = self.text(element, "name", scope) or test_name
+            anonymous: tuple[int, ...] = ()
         else:
-            name = self.text(element, "name", scope) or ""
+            given = self.value(element, "name", scope)
+            name = given.text if given is not None else ""
+            anonymous = () if given is None else self.anonymous_parts(given)
         if "/" in name:
             self.fail(scope, element, f"node name {name!r} cannot contain a namespace")
             return
@@ -497,7 +519,7 @@ class Ros1Loader:
             # they are under the same conditions; under conditions that cannot both
             # hold (<group if="$(eval model == 'a')"> and 'b') never; in between the
             # duplicate-node-names query says it is not decided
-            earlier = self.node_names.setdefault(full, [])
+            earlier = self.node_names.setdefault((full, anonymous), [])
             other = next((where for where, conditions in earlier
                           if same_conditions(conditions, scope.conditions)), None)
             if other is not None:

@@ -10,6 +10,10 @@ namespace ros {
 // what subscribe(ops) / advertise(ops) take; init<M> / create<M> hold the topic
 struct SubscribeOptions {
   SubscribeOptions();
+  // roscpp's constructor of a topic by its md5sum and datatype, the callback set on the
+  // object's ``helper`` after (topic_tools' ShapeShifter subscribers)
+  SubscribeOptions(const std::string& topic, uint32_t queue_size, const std::string& md5sum,
+                   const std::string& datatype);
   template<class M>
   void init(const std::string& topic, uint32_t queue_size,
             const boost::function<void(const boost::shared_ptr<M const>&)>& callback);
@@ -33,6 +37,12 @@ struct SubscribeOptions {
 };
 struct AdvertiseOptions {
   AdvertiseOptions();
+  // roscpp's constructor of a topic by its md5sum, datatype and definition (a relay's
+  // publisher of the ShapeShifter type it received: jsk_topic_tools' nodelets)
+  AdvertiseOptions(const std::string& topic, uint32_t queue_size, const std::string& md5sum,
+                   const std::string& datatype, const std::string& message_definition,
+                   const SubscriberStatusCallback& connect_cb = SubscriberStatusCallback(),
+                   const SubscriberStatusCallback& disconnect_cb = SubscriberStatusCallback());
   template<class M>
   void init(const std::string& topic, uint32_t queue_size,
             const SubscriberStatusCallback& connect_cb = SubscriberStatusCallback(),
@@ -47,9 +57,13 @@ struct AdvertiseOptions {
   uint32_t queue_size;
   std::string md5sum;
   std::string datatype;
+  std::string message_definition;
+  SubscriberStatusCallback connect_cb;
+  SubscriberStatusCallback disconnect_cb;
   CallbackQueueInterface* callback_queue;
   VoidConstPtr tracked_object;
   bool latch;
+  bool has_header;
 };
 // what advertiseService(ops) takes; init<Service> / init<MReq, MRes> / create<Service>
 // hold the service name and callback
