@@ -800,6 +800,14 @@ class IncludeSetup:
             # <CGAL/Exact_predicates_inexact_constructions_kernel.h>, X11's <X11/Xlib.h>),
             # missing, not a message of a package we have no definition of
             return None
+        if found is not None and versions.RCLCPP.version(self.distro) is not None and (
+                self.workspace.find(found.group(1)) is None
+                and self._definition(found.group(1), found.group(2)) is None):
+            # a ROS 2 distribution generates ``<pkg/msg/name.hpp>``, never ``<pkg/Name.h>``:
+            # such a header of a package neither in the workspace nor in the catalogue is
+            # a library's, missing (lanelet2's <lanelet2_core/LaneletMap.h>,
+            # <lanelet2_routing/RoutingGraph.h> in Autoware), not a message without fields
+            return None
         if found is not None:
             return found
         found = _DEFINED_HEADER.fullmatch(header)
