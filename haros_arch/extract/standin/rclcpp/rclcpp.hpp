@@ -621,6 +621,13 @@ public:
 template<class S> class Service : public ServiceBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Service)
+  using SharedRequest = std::shared_ptr<typename S::Request>;
+  using SharedResponse = std::shared_ptr<typename S::Response>;
+  // the callback types of rclcpp's AnyServiceCallback, as code names them
+  using CallbackType = std::function<void(const SharedRequest, SharedResponse)>;
+  using CallbackWithHeaderType =
+      std::function<void(const std::shared_ptr<rmw_request_id_t>, const SharedRequest,
+                         SharedResponse)>;
   void send_response(rmw_request_id_t& header, typename S::Response& response);
   void configure_introspection(std::shared_ptr<Clock> clock, const QoS& qos,
                                rcl_service_introspection_state_t state);
@@ -640,6 +647,8 @@ public:
   using SharedResponse = std::shared_ptr<typename S::Response>;
   using SharedFuture = std::shared_future<SharedResponse>;
   using SharedFutureWithRequest = std::shared_future<std::pair<SharedRequest, SharedResponse>>;
+  using CallbackType = std::function<void(SharedFuture)>;
+  using CallbackWithRequestType = std::function<void(SharedFutureWithRequest)>;
   struct FutureAndRequestId : std::future<SharedResponse> { std::shared_future<SharedResponse> future; long request_id; };
   using SharedFutureAndRequestId = FutureAndRequestId;
   FutureAndRequestId async_send_request(SharedRequest request);
