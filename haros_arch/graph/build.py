@@ -505,9 +505,10 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # the package's interface model was found without this node: said there
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
                    for d in config.diagnostics):
+            name = key.partition("/")[0]
             config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
-                                                name=key.partition("/")[0],
-                                                node=plugin or key))
+                                                name=name, node=plugin or key,
+                                                why=workspace.absence(name)))
     elif node is None and plugin is None and decl.ros_version == 1 and (
         found := _program_file(workspace, *key.partition("/")[::2])
     ):
