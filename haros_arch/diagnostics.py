@@ -566,13 +566,16 @@ CATALOGUE: dict[str, Entry] = {
         "parameters, the topics of newer releases). The node is 'partial', so checks that "
         "claim something is absent do not decide on it."),
     "CPP_NAMES_DECLARED": Entry(
-        "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
-        "clang errors in this unit: {before} before, {after} after",
+        "info", "{count} name(s) unknown to the parse declared permissively "
+        "({names}){included}; clang errors in this unit: {before} before, {after} after",
         "Names clang did not know (a type, namespace, template or base class of a library "
         "whose headers are not available) would make the classes that use them invalid "
         "and hide their calls. The extractor declared them as permissive stand-ins (a "
         "namespace; a class constructible from and convertible to anything, with any "
-        "member; a template taking any arguments) and parsed the unit again."),
+        "member; a template taking any arguments) and parsed the unit again. A name of "
+        "a library the stand-ins provide (boost::optional reached through a missing "
+        "header) is not declared permissively: the stand-in's header is included, and "
+        "the name is listed apart."),
     "CPP_CALL_UNRESOLVED": Entry(
         "info", "this {function} call could not be resolved by the parse; it is kept by "
         "its name, with type {type}",
