@@ -103,3 +103,12 @@ def test_a_joined_run_handed_to_a_constructor_keeps_its_parameters(write_tree) -
     # private name led by a value not known may be any name: ``?_...``)
     assert _publishers(result.calls, {"arm": "gen3"}) == [
         "/ex/gen3_alone/feedback", "?_joint_trajectory_controller/feedback"]
+
+
+def test_empty_values_before_text_of_their_segment_leave_that_text(write_tree) -> None:
+    # ros_kortex's gripper server with ``prefix`` and ``gripper`` both "" (its launch
+    # file's defaults for a gen3): ``_gripper_controller/gripper_cmd``, a name; it stayed
+    # ``?`` with NAME_PARAM_UNSET saying the set ``~prefix`` was not set
+    result = _result(write_tree)
+    assert _publishers(result.calls, {"prefix": "", "arm": ""}) == [
+        "/ex/_alone/feedback", "/ex/_joint_trajectory_controller/feedback"]
