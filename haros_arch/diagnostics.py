@@ -64,9 +64,11 @@ CATALOGUE: dict[str, Entry] = {
         "Two folders of the workspace declare the same package name; the first one "
         "found is used, as colcon and catkin refuse such workspaces."),
     "PACKAGE_NOT_FOUND": Entry(
-        "error", "package {name} is not in the workspace nor installed",
+        "error", "package {name} {why}",
         "A launch file, project file or $(find) names a package that is neither in the "
-        "workspace nor on ROS_PACKAGE_PATH / AMENT_PREFIX_PATH."),
+        "workspace nor on ROS_PACKAGE_PATH / AMENT_PREFIX_PATH, or one the workspace "
+        "holds in a folder an ignore marker (COLCON_IGNORE, CATKIN_IGNORE, AMENT_IGNORE) "
+        "leaves out, as colcon and catkin do: the marker file is named."),
     # build files
     "CMAKE_SYNTAX": Entry(
         "error", "CMake syntax error: {detail}",
@@ -567,13 +569,16 @@ CATALOGUE: dict[str, Entry] = {
         "parameters, the topics of newer releases). The node is 'partial', so checks that "
         "claim something is absent do not decide on it."),
     "CPP_NAMES_DECLARED": Entry(
-        "info", "{count} name(s) unknown to the parse declared permissively ({names}); "
-        "clang errors in this unit: {before} before, {after} after",
+        "info", "{count} name(s) unknown to the parse declared permissively "
+        "({names}){included}; clang errors in this unit: {before} before, {after} after",
         "Names clang did not know (a type, namespace, template or base class of a library "
         "whose headers are not available) would make the classes that use them invalid "
         "and hide their calls. The extractor declared them as permissive stand-ins (a "
         "namespace; a class constructible from and convertible to anything, with any "
-        "member; a template taking any arguments) and parsed the unit again."),
+        "member; a template taking any arguments) and parsed the unit again. A name of "
+        "a library the stand-ins provide (boost::optional reached through a missing "
+        "header) is not declared permissively: the stand-in's header is included, and "
+        "the name is listed apart."),
     "CPP_CALL_UNRESOLVED": Entry(
         "info", "this {function} call could not be resolved by the parse; it is kept by "
         "its name, with type {type}",
@@ -812,11 +817,12 @@ CATALOGUE: dict[str, Entry] = {
         "is kept without links, of unknown interface; describe it with hints if it "
         "matters."),
     "NODE_PACKAGE_UNKNOWN": Entry(
-        "warning", "package {name} of node {node} is neither in the workspace nor "
-                   "installed; its interface is unknown",
+        "warning", "package {name} of node {node} {why}; its interface is unknown",
         "A launch file starts a node from a package this machine does not have (it may "
-        "be installed where the system runs). The instance is kept without links; "
-        "describe it with hints if it matters."),
+        "be installed where the system runs), or one the workspace holds in a folder an "
+        "ignore marker (COLCON_IGNORE, CATKIN_IGNORE, AMENT_IGNORE) leaves out of the "
+        "build, as colcon and catkin do: the marker file is named. The instance is kept "
+        "without links; describe it with hints if it matters."),
     # interface models (haros_arch.models)
     "MODEL_DISTRO": Entry(
         "info", "interface models of distribution {distro} ({why})",

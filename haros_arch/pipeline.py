@@ -235,7 +235,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     for name in project.packages:
         if name not in workspace.packages:
             model.diagnostics.append(diag.make(
-                "PACKAGE_NOT_FOUND", Location(file=os.path.relpath(project.path)), name=name))
+                "PACKAGE_NOT_FOUND", Location(file=os.path.relpath(project.path)), name=name,
+                why=workspace.absence(name)))
     for launched in launches.values():
         for decl in launched.nodes:
             plugin = nodelet_plugin(decl)
@@ -354,8 +355,9 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
         where = Location(file=os.path.relpath(project.path), line=line, column=1)
         path = launch_path(entry, project, workspace)
         if path is None:
+            package = entry.partition("/")[0]
             merged.diagnostics.append(diag.make(
-                "PACKAGE_NOT_FOUND", where, name=entry.partition("/")[0]))
+                "PACKAGE_NOT_FOUND", where, name=package, why=workspace.absence(package)))
             continue
         if not os.path.isfile(path):
             merged.diagnostics.append(diag.make("LAUNCH_FILE_MISSING", where, path=entry))

@@ -55,6 +55,9 @@ class Workspace:
     # (package name, folder) -> its CMake interpreter and diagnostics
     # (``cmake._interpret``): a package whose libraries others link is read once
     interpreted: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)
+    # package name -> (its ignore marker, its folder): a package under a folder with an
+    # IGNORE_MARKERS file, left out as colcon and catkin leave it out, kept to say why
+    ignored: dict[str, tuple[str, str]] = field(default_factory=dict, repr=False)
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute (asked
@@ -136,6 +139,17 @@ class Workspace:
                                                     self._path_index)
         return self._installed[name]
 
+    def absence(self, name: str) -> str:
+        """Why ``find(name)`` found nothing, the rest of a sentence "package NAME ...":
+        a package of the workspace left out by its ignore marker (named, the place to
+        look) is not just missing."""
+        ignored = self.ignored.get(name)
+        if ignored is None:
+            return "is not in the workspace nor installed here"
+        marker, folder = ignored
+        return (f"is in the workspace ({self.relpath(folder)}) but ignored: "
+                f"{self.relpath(marker)} keeps colcon and catkin out of that folder")
+
 
 def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> Workspace:
     """Find every package under ``roots``. Problems become diagnostics, never exceptions."""
@@ -143,11 +157,12 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
     roots = [os.path.abspath(r) for r in roots]
     ws = Workspace(root=roots[0] if roots else os.getcwd(), roots=roots, environment=env)
     seen: set[str] = set()
+    skipped: list[tuple[str, str]] = []
     for top in roots:
         if not os.path.isdir(top):
             ws.diagnostics.append(diag.make("WORKSPACE_MISSING", Location(file=top), path=top))
             continue
-        for folder in _package_folders(top):
+        for folder in _package_folders(top, skipped=skipped):
             real = os.path.realpath(folder)
             if real in seen:
                 continue
@@ -174,14 +189,28 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
             ) and os.path.exists(os.path.join(folder, "setup.py")):
                 package.build_type = "ament_python"
             ws.packages[package.name] = package
+    _note_ignored(ws, skipped)
     return ws
+
+
+def _note_ignored(ws: Workspace, skipped: list[tuple[str, str]]) -> None:
+    """Record the packages under the folders their ``(folder, marker)`` left out (the
+    outermost marker names them all), not those the workspace has elsewhere."""
+    budget = [MAX_PATH_FOLDERS]
+    for top, marker in skipped:
+        for folder in _package_folders(top, (), budget=budget):
+            name = _package_name(folder)
+            if name is not None and name not in ws.packages:
+                ws.ignored.setdefault(name, (os.path.join(top, marker), folder))
 
 
 def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
                      skip: frozenset[str] = SKIP_FOLDERS,
-                     budget: list[int] | None = None) -> Iterable[str]:
+                     budget: list[int] | None = None,
+                     skipped: list[tuple[str, str]] | None = None) -> Iterable[str]:
     """Folders holding a package.xml or a rosbuild manifest.xml, honouring the ``ignore``
-    markers and leaving out the ``skip`` folders; packages do not nest.
+    markers (each folder one leaves out added to ``skipped`` with its marker) and
+    leaving out the ``skip`` folders; packages do not nest.
 
     Symbolic links to folders are followed, as catkin, colcon and rospkg do (a
     workspace's src/ often links checkouts kept elsewhere); each real folder is visited
@@ -205,7 +234,10 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
             entries = sorted(os.listdir(folder))
         except OSError:
             continue
-        if any(marker in entries for marker in ignore):
+        marker = next((m for m in ignore if m in entries), None)
+        if marker is not None:
+            if skipped is not None:
+                skipped.append((folder, marker))
             continue
         if "package.xml" in entries or "manifest.xml" in entries:
             yield folder

@@ -63,9 +63,15 @@ def test_a_directory_asks_the_standard(write_tree) -> None:
         # made before add_compile_options: not its
         "stds/src/options.cpp": "c++20",
         # the subdirectory's targets take the parent's options, and its own
-        # CMAKE_CXX_FLAGS at its end (C++23), set after them
-        "stds/src/inherited.cpp": "c++23", "stds/src/late.cpp": "c++23",
-        # the newest of the two branches
-        "stds/src/branches.cpp": "c++23"}
+        # CMAKE_CXX_FLAGS at its end (C++23), set after them; CMake writes the flags
+        # first, the options after them: g++ gets "-std=c++2b -Wall -std=c++20"
+        "stds/src/inherited.cpp": "c++20", "stds/src/late.cpp": "c++20",
+        # the newest of the two branches, 23, written before the options' c++20 by
+        # CMake 3.28 (no distribution: the newest CMake's order)
+        "stds/src/branches.cpp": "c++20"}
+    humble = scan([str(root / "src")], {"ROS_DISTRO": "humble"})
+    # CMake 3.22 writes the standard's flag after the options: the newest branch's
+    assert source_standards(humble.packages["stds"], humble)["stds/src/branches.cpp"] == (
+        "c++23")
     # the flags set after the only target, at the end of the top-level file
     assert source_standards(ws.packages["other"], ws) == {"other/src/first.cpp": "c++20"}

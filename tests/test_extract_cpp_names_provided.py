@@ -68,3 +68,23 @@ def test_the_stand_in_s_names_are_not_declared_again_in_a_reopened_namespace(
     assert [c.name for c in result.calls] == ["scenario"]
     assert headers and all("#include <boost/optional.hpp>" in text for text in headers)
     assert not any("struct optional" in text or "struct none" in text for text in headers)
+
+
+def test_the_diagnostic_lists_only_the_names_declared_permissively(tmp_path) -> None:
+    # boost::optional and boost::none come from the stand-in's header: CPP_NAMES_DECLARED
+    # listed them among the permissive names and counted them
+    (tmp_path / "package.xml").write_text(package_xml("selector", "ament_cmake"))
+    source = tmp_path / "selector.cpp"
+    source.write_text(SOURCE)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="humble")
+    (said,) = [d.message for d in result.diagnostics if d.code == "CPP_NAMES_DECLARED"]
+    assert said.startswith("2 name(s) unknown to the parse declared permissively "
+                           "(lanelet, lanelet::LaneletMapPtr); boost::none, "
+                           "boost::optional from the stand-ins' headers;"), said
+    source.write_text(SOURCE.replace("  lanelet::LaneletMapPtr map_;\n", ""))
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="humble")
+    (said,) = [d.message for d in result.diagnostics if d.code == "CPP_NAMES_DECLARED"]
+    assert said.startswith("0 name(s) unknown to the parse declared permissively (none); "
+                           "boost::none, boost::optional from the stand-ins' headers;"), said

@@ -136,8 +136,8 @@ def test_nodelets_loaded_by_the_nodelet_executable_get_their_interface():
         "/manager/list", "/manager/load_nodelet", "/manager/num_worker_threads",
         "/manager/unload_nodelet"]
     assert [(d.code, d.message) for d in config.diagnostics] == [
-        ("NODE_PACKAGE_UNKNOWN", "package stereo of node stereo/missing is neither in "
-                                 "the workspace nor installed; its interface is unknown")]
+        ("NODE_PACKAGE_UNKNOWN", "package stereo of node stereo/missing is not in the "
+                                 "workspace nor installed here; its interface is unknown")]
 
 
 def test_a_nodelet_whose_lookup_name_is_not_its_package_s_gets_its_interface():

@@ -51,9 +51,11 @@ REFUSED: dict[str, str] = {
 # roslaunch refuses these because a package is not found; a package we cannot find may be
 # installed where we do not look, so ours is a warning: the value is unknown, and said so
 NOT_FOUND: dict[str, str] = {
-    "refused_find_ignored.launch": "package ghost is not found",  # under CATKIN_IGNORE
-    "refused_find_nested.launch": "package nested_hidden is not found",  # in a package
-    "refused_find_hidden.launch": "package secret is not found",  # in a .folder
+    # under CATKIN_IGNORE (on ROS_PACKAGE_PATH, not in the workspace), in a package, in a
+    # .folder
+    "refused_find_ignored.launch": "package ghost is not in the workspace nor installed",
+    "refused_find_nested.launch": "package nested_hidden is not in the workspace",
+    "refused_find_hidden.launch": "package secret is not in the workspace",
 }
 
 

@@ -19,7 +19,7 @@ from ..files import read_text
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
 from ..workspace import Workspace
-from .commands import on_every_path
+from .commands import effective_standard, newest, on_every_path
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
 from .nodes import (
@@ -284,11 +284,14 @@ DEFAULT_STANDARD = 17
 
 def source_standards(package: Package, workspace: Workspace) -> dict[str, str]:
     """Each C/C++ source of the package's targets (workspace-relative) whose targets ask
-    a C++ standard newer than ``DEFAULT_STANDARD`` -> its ``-std`` value (``c++20``): a
-    target's own (``CXX_STANDARD``, from ``CMAKE_CXX_STANDARD`` when it is made, or a
-    ``-std=`` flag) or the newest that its ``target_compile_features(cxx_std_NN)`` and
-    the PUBLIC and INTERFACE ones of the package's libraries it links require, as CMake
-    takes the newer of them; the newest of the targets that compile the source."""
+    a C++ standard newer than ``DEFAULT_STANDARD`` -> its ``-std`` value (``c++20``): the
+    one the compiler uses for a target (``commands.effective_standard``: its
+    ``CXX_STANDARD``, from ``CMAKE_CXX_STANDARD`` when it is made, raised to the newest
+    that its ``target_compile_features(cxx_std_NN)`` and the PUBLIC and INTERFACE ones
+    of the package's libraries it links require, and the ``-std=`` words of
+    ``CMAKE_CXX_FLAGS`` and of its compile options, in the order CMake writes them on
+    the compile line, the last winning); the newest of the targets that compile the
+    source."""
     return remembered("compile standards", package.root, workspace,
                       lambda: _source_standards(package, workspace))
 
@@ -299,18 +302,18 @@ def _source_standards(package: Package, workspace: Workspace) -> dict[str, str]:
     files = PackageFiles(package, workspace)
     interpreter, _ = _interpret(package, workspace, files)
     sources = SourceMap(interpreter, files)
-    newest: dict[str, int] = {}
+    found: dict[str, int] = {}
+    distro = workspace.environment.get("ROS_DISTRO")
     for target in interpreter.targets.values():
-        years = [target.standard or 0,
-                 *(year for keyword, year in target.features if keyword != "INTERFACE"),
-                 *(year for linked in sources.closure(target)[1:]
-                   for keyword, year in linked.features if keyword != "PRIVATE")]
-        year = max(years)
+        required = [*(year for keyword, year in target.features if keyword != "INTERFACE"),
+                    *(year for linked in sources.closure(target)[1:]
+                      for keyword, year in linked.features if keyword != "PRIVATE")]
+        year = effective_standard(target, newest(required), interpreter.cmp0128, distro)
         if year <= DEFAULT_STANDARD or year == 98:
             continue
         for source in sources.own(target):
-            newest[source] = max(newest.get(source, 0), year)
-    return {source: f"c++{year}" for source, year in newest.items()}
+            found[source] = max(found.get(source, 0), year)
+    return {source: f"c++{year}" for source, year in found.items()}
 
 
 def source_include_dirs(package: Package, workspace: Workspace) -> dict[str, list[str]]:

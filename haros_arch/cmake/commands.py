@@ -10,7 +10,7 @@ import fnmatch
 import glob
 import os
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
@@ -18,7 +18,7 @@ from ..files import read_text
 from ..model.conditions import Condition
 from ..model.location import NOWHERE
 from . import listops
-from .conditions import FALSE_WORDS
+from .conditions import FALSE_WORDS, TRUE_WORDS
 from .lexer import Argument, Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
 from .targets import CompileDefinition, Configured, Install, Program, Registration, Target
@@ -414,8 +414,12 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         definitions=[("PRIVATE", each) for each in it.compile_options[-1]],
         directory_includes=it.include_directories[-1])
     # the newest its directory may ask when it is made (a branch not decided: either's)
-    target.standard = newest([*(cxx_standard(v) for v in it.possible("CMAKE_CXX_STANDARD")),
-                              *_flag_standards(it), *it.compile_standards[-1]])
+    target.standard = newest([cxx_standard(v) for v in it.possible("CMAKE_CXX_STANDARD")])
+    target.standard_required = any(v.upper() in TRUE_WORDS
+                                   for v in it.possible("CMAKE_CXX_STANDARD_REQUIRED"))
+    target.extensions = _switch(it.get("CMAKE_CXX_EXTENSIONS"))
+    target.options_standard = it.compile_standards[-1][-1] if it.compile_standards[-1] \
+        else None
     it.made_here[-1].append(args[0])
     if command.name.lower().startswith("ament_auto_add_"):
         target.auto = True
@@ -481,21 +485,65 @@ def _add_compile_options(it: Interpreter, command: Invocation, args: list[str]) 
 def directory_done(it: Interpreter) -> None:
     """At the end of a directory's CMakeLists.txt: its ``CMAKE_CXX_FLAGS`` then, which
     CMake gives every target of the directory (a ``set`` after ``add_executable``
-    counts), for the targets it made, the newest of that and what they asked."""
-    years = _flag_standards(it)
-    for name in it.made_here[-1] if years else ():
+    counts), for the targets it made: the standard its last ``-std=`` word asks (the
+    newest of the values the paths through undecided if()s leave)."""
+    year = newest(_flag_standards(it))
+    for name in it.made_here[-1] if year else ():
         target = it.targets.get(name)
         if target is not None:
-            target.standard = newest([target.standard, *years])
+            target.flags_standard = year
 
 
-def _flag_standards(it: Interpreter) -> list[int]:
-    """The standards the ``-std=`` words of ``CMAKE_CXX_FLAGS`` may ask here."""
-    return [year for value in it.possible("CMAKE_CXX_FLAGS") for word in value.split()
-            if (year := std_flag(word))]
+def _flag_standards(it: Interpreter) -> list[int | None]:
+    """For each value ``CMAKE_CXX_FLAGS`` may hold here, the standard its last
+    ``-std=`` word asks (the compiler takes the last one)."""
+    return [next((y for word in reversed(value.split()) if (y := std_flag(word))), None)
+            for value in it.possible("CMAKE_CXX_FLAGS")]
 
 
-def newest(years: list[int | None]) -> int | None:
+def _switch(value: str | None) -> bool | None:
+    """A CMake boolean's value: None when not set (or not a boolean word)."""
+    if value is None:
+        return None
+    upper = value.upper()
+    return True if upper in TRUE_WORDS else False if upper in FALSE_WORDS or not upper \
+        else None
+
+
+# the compiler's own C++ standard (g++'s default ``-std=gnu++NN``) and whether CMake
+# writes the standard's flag before the compile options (newer than 3.25: Jazzy's 3.28;
+# 3.22 and 3.25 write it after them), by the distribution's Ubuntu release
+_DISTRO_COMPILERS: dict[str, tuple[int, bool]] = {
+    "kinetic": (98, False), "lunar": (98, False), "melodic": (14, False),
+    "noetic": (14, False), "foxy": (14, False), "galactic": (14, False),
+    "humble": (17, False), "iron": (17, False),
+    "jazzy": (17, True), "kilted": (17, True), "rolling": (17, True),
+}
+NEWEST_COMPILER = (17, True)  # a distribution not in the table
+
+
+def effective_standard(target: Target, required: int | None, cmp0128: bool,
+                       distro: str | None) -> int:
+    """The C++ standard the compiler uses for ``target``'s sources, as CMake writes its
+    compile line: ``CMAKE_CXX_FLAGS``, then the standard's flag, then the compile
+    options (after 3.25; until then, the flag after the options), the last ``-std=``
+    winning; the flag is the standard asked (``CXX_STANDARD``, raised to what the
+    compile features ``required``), left out only under policy CMP0128 NEW (CMake 3.22)
+    when that is the compiler's own, not required and with the compiler's extensions;
+    with no ``-std=`` at all, the compiler's own."""
+    default, flag_first = _DISTRO_COMPILERS.get((distro or "").strip().lower(),
+                                                NEWEST_COMPILER)
+    asked = newest([target.standard, required])
+    flag = asked
+    if asked is not None and cmp0128 and not target.standard_required and \
+            asked == default and target.extensions is not False:
+        flag = None  # the compiler's default already: no flag
+    order = [target.flags_standard, flag, target.options_standard] if flag_first else [
+        target.flags_standard, target.options_standard, flag]
+    return next((year for year in reversed(order) if year), default)
+
+
+def newest(years: Sequence[int | None]) -> int | None:
     """The newest standard of ``years`` (98 the oldest), None when there is none."""
     known = [y for y in years if y]
     return max(known, key=lambda y: 0 if y == 98 else y) if known else None
@@ -508,7 +556,9 @@ def _target_compile_options(it: Interpreter, command: Invocation, args: list[str
     if target is None or not command.args:
         return
     target.definitions.extend(_definitions(it, command, command.args[1:], "-D"))
-    target.standard = newest([target.standard, *(std_flag(word) for word in args[1:])])
+    own = [year for word in args[1:] if (year := std_flag(word))]
+    if own:  # after the directory's options
+        target.options_standard = own[-1]
 
 
 @handles("target_compile_features")
@@ -869,10 +919,9 @@ def _set_target_properties(it: Interpreter, command: Invocation, args: list[str]
             for name in args[:split]:
                 if name in it.targets:
                     it.targets[name].output_name = value
-        if key == "CXX_STANDARD":
-            for name in args[:split]:
-                if name in it.targets:
-                    it.targets[name].standard = cxx_standard(value)
+        for name in args[:split] if key in _STANDARD_PROPERTIES else ():
+            if name in it.targets:
+                _standard_property(it.targets[name], key, value)
 
 
 @handles("set_property")
@@ -885,10 +934,43 @@ def _set_property(it: Interpreter, command: Invocation, args: list[str]) -> None
         for name in args[1:at]:
             if name in it.targets:
                 it.targets[name].output_name = args[at + 2]
-    if args[at + 1:at + 2] == ["CXX_STANDARD"] and len(args) > at + 2:
+    if args[at + 1:at + 2] and args[at + 1] in _STANDARD_PROPERTIES and len(args) > at + 2:
         for name in args[1:at]:
             if name in it.targets:
-                it.targets[name].standard = cxx_standard(args[at + 2])
+                _standard_property(it.targets[name], args[at + 1], args[at + 2])
+
+
+_STANDARD_PROPERTIES = ("CXX_STANDARD", "CXX_STANDARD_REQUIRED", "CXX_EXTENSIONS")
+
+
+def _standard_property(target: Target, key: str, value: str) -> None:
+    if key == "CXX_STANDARD":
+        target.standard = cxx_standard(value)
+    elif key == "CXX_STANDARD_REQUIRED":
+        target.standard_required = value.upper() in TRUE_WORDS
+    else:
+        target.extensions = _switch(value)
+
+
+@handles("cmake_minimum_required")
+def _cmake_minimum_required(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``VERSION min[...max]`` sets the policies of the newer of the two."""
+    if args[:1] == ["VERSION"] and len(args) > 1:
+        _policy_version(it, args[1])
+
+
+@handles("cmake_policy")
+def _cmake_policy(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``VERSION min[...max]``, and ``SET CMP0128 NEW|OLD`` (the one read here)."""
+    if args[:1] == ["VERSION"] and len(args) > 1:
+        _policy_version(it, args[1])
+    elif args[:2] == ["SET", "CMP0128"] and len(args) > 2:
+        it.cmp0128 = args[2].upper() == "NEW"
+
+
+def _policy_version(it: Interpreter, text: str) -> None:
+    version = tuple(int(p) for p in re.findall(r"\d+", text.split("...")[-1])[:2])
+    it.cmp0128 = version >= (3, 22)  # CMP0128 was introduced by CMake 3.22
 
 
 # -- installed programs and components ------------------------------------------

@@ -135,6 +135,9 @@ class Interpreter:
         # targets each directory being read made, which the directory's CMAKE_CXX_FLAGS
         # at its end compiles too (``commands.directory_done``)
         self.compile_standards: list[list[int]] = [[]]
+        # policy CMP0128 NEW (``cmake_minimum_required(VERSION 3.22)`` or later): no
+        # standard flag when the compiler's own is the one asked
+        self.cmp0128 = False
         self.made_here: list[list[str]] = [[]]
         # the ``include_directories`` folders of each directory being read, innermost
         # last, as its compile definitions (``Target.directory_includes``)

@@ -54,12 +54,21 @@ class Target:
     directory_includes: list[tuple[str, tuple[Condition, ...]]] = field(default_factory=list)
     includes: list[tuple[str, str, tuple[Condition, ...]]] = field(default_factory=list)
     # the C++ standard its CXX_STANDARD property asks (from ``CMAKE_CXX_STANDARD`` when it
-    # is made, ``set_property`` / ``set_target_properties``, a ``-std=`` of
-    # ``CMAKE_CXX_FLAGS`` or its compile options), as a year (17, 20, 23); and those its
-    # ``target_compile_features(cxx_std_NN)`` require, each with its keyword (PUBLIC and
-    # INTERFACE ones also the targets that link it)
+    # is made, ``set_property`` / ``set_target_properties``), as a year (17, 20, 23);
+    # and those its ``target_compile_features(cxx_std_NN)`` require, each with its
+    # keyword (PUBLIC and INTERFACE ones also the targets that link it)
     standard: int | None = None
     features: list[tuple[str, int]] = field(default_factory=list)
+    # its CXX_STANDARD_REQUIRED and CXX_EXTENSIONS (None: not set), from the variables
+    # when it is made or its properties; the year of the last ``-std=`` word of its
+    # directory's ``CMAKE_CXX_FLAGS`` (its value at the directory's end) and of its
+    # compile options (the directory's ``add_compile_options`` before it, then its own
+    # ``target_compile_options``): ``commands.effective_standard`` orders them as CMake
+    # writes the compile line
+    standard_required: bool = False
+    extensions: bool | None = None
+    flags_standard: int | None = None
+    options_standard: int | None = None
 
 
 @dataclass

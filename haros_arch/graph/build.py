@@ -505,9 +505,10 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # the package's interface model was found without this node: said there
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
                    for d in config.diagnostics):
+            name = key.partition("/")[0]
             config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
-                                                name=key.partition("/")[0],
-                                                node=plugin or key))
+                                                name=name, node=plugin or key,
+                                                why=workspace.absence(name)))
     elif node is None and plugin is None and decl.ros_version == 1 and (
         found := _program_file(workspace, *key.partition("/")[::2])
     ):
@@ -812,6 +813,10 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         # ``~namespace`` set to ""): roscpp and rospy drop the empty segment its slashes
         # leave, ``//activate_control`` is ``/activate_control``
         return clean(_filled(call.name, value))
+    if value == "" and _empty_prefix(call):
+        # an empty prefix of a segment (ros_kortex's ``m_prefix + m_gripper_name +
+        # "_gripper_controller/gripper_cmd"``, both set to ""): the rest of the segment
+        return _filled(call.name, value)
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     if value.startswith("/") and call.name.count(UNKNOWN_MARK) == 1 and (
@@ -840,6 +845,17 @@ def _empty_piece(call: PrimitiveCall) -> bool:
     head, _, tail = call.name.partition(UNKNOWN_MARK)
     prefix = _handle_prefix(call)
     return bool(tail.strip("/")) and head.startswith(prefix) and len(head) > len(prefix)
+
+
+def _empty_prefix(call: PrimitiveCall) -> bool:
+    """Whether the one ``?`` of a call's name, given "", leaves a name: text of the same
+    segment follows it (``?_gripper_controller/gripper_cmd``, ``~?_state``); not a ``?``
+    followed by ``/`` or by nothing (``"" + "/scan"`` would be global, ``?`` alone no
+    name)."""
+    if call.name.count(UNKNOWN_MARK) != 1:
+        return False
+    tail = call.name.partition(UNKNOWN_MARK)[2]
+    return bool(tail) and not tail.startswith("/")
 
 
 def _filled(name: str, value: str) -> str:

@@ -36,7 +36,7 @@ from .. import diagnostics as diag
 from .. import safe_yaml
 from ..files import read_text
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl, shell_words
-from ..launch.ros2.naming import params_for_node, split_rule
+from ..launch.ros2.naming import params_for_node, pattern_matches, split_rule
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
@@ -235,7 +235,7 @@ def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace, config: Configu
             reason = workspace_gz_system(filename, workspace)
         if reason is not None and _base(filename) in GZ_MANAGERS:
             managers.append(_manager(element, spawn, where, _conditions(element, where),
-                                     workspace, config, params))
+                                     workspace, config, params, gz=True))
         if reason is None:
             found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename,
                               host="gz sim")
@@ -879,17 +879,32 @@ def clean_join(head: str, value: str, tail: str) -> str:
 
 def _manager(element: etree._Element, spawn: Spawn, where: Location,
              conditions: tuple[Condition, ...], workspace: Workspace,
-             config: Configuration, params: Params) -> tuple[NodeDecl, NodeInstance]:
+             config: Configuration, params: Params,
+             gz: bool = False) -> tuple[NodeDecl, NodeInstance]:
     """The controller manager a gazebo_ros2_control / gz_ros2_control plugin starts:
     ``controller_manager`` in the plugin's ``<ros><namespace>``, with the parameters of
-    its ``<parameters>`` files, as a launch file's ``ros2_control_node`` would be."""
+    its ``<parameters>`` files, as a launch file's ``ros2_control_node`` would be (each
+    node a section of a file names, ``/**/controller_manager`` as rcl matches it, gets
+    its parameters: the files are ``--params-file`` arguments of the process). The gz
+    plugin (``gz``: gz_ros2_control / ign_ros2_control, gz_ros2_control_plugin.cpp) names
+    it ``<controller_manager_prefix_node_name>_controller_manager`` when that element is
+    given, and gives its ``<ros><remapping>`` rules to ``rclcpp::init``: rules of the
+    whole process, the manager's and its controllers' (the instance's remaps, which the
+    controllers take)."""
     namespace = as_namespace(spawn.robot_namespace or _child(element, "ros/namespace") or "/")
-    name = clean(namespace + MANAGER)
+    prefix = _child(element, "controller_manager_prefix_node_name") if gz else None
+    name = clean(namespace + (f"{prefix}_{MANAGER}" if prefix else MANAGER))
+    remaps: list[tuple[str, str]] = []
+    for rule in element.iterfind("ros/remapping") if gz else ():
+        found = split_rule((rule.text or "").strip())
+        if found is not None and found[0] is None:
+            remaps.append((found[1], found[2]))
     decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
                     conditions=(*spawn.decl.conditions, *conditions), location=where,
-                    ros_version=2)
+                    ros_version=2, remaps=list(remaps))
     instance = NodeInstance(name, None, namespace=namespace, conditions=decl.conditions,
-                            location=where, origin="description", ros_version=2)
+                            location=where, origin="description", ros_version=2,
+                            remaps=list(remaps))
     taken = sum(1 for n in config.nodes if n.name == name)
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
@@ -911,15 +926,22 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
 
 def _node_names(document: Any, namespace: str) -> list[str]:
     """The nodes a ROS 2 parameter file names, in ``namespace`` (its own ``/`` keys
-    as they are); ``/**`` is for every node and names none."""
+    as they are); a key with wildcards names the node of its last name in
+    ``namespace`` when it matches it as rcl matches (``/**/controller_manager``, the
+    manager or a controller of this process in any namespace: rosbot_ros' controller
+    files); ``/**`` is for every node and names none."""
     if not isinstance(document, dict):
         return []
     names = []
     for key in list(document)[:MAX_PLUGINS]:
         text = str(key)
-        if "*" in text:
+        if "*" not in text:
+            names.append(text if text.startswith("/") else clean(namespace + text))
             continue
-        names.append(text if text.startswith("/") else clean(namespace + text))
+        last = text.rstrip("/").rsplit("/", 1)[-1]
+        node = clean(namespace + last)
+        if "*" not in last and pattern_matches(text, node) and node not in names:
+            names.append(node)
     return names
 
 

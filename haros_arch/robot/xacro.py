@@ -516,7 +516,7 @@ class _Expander:
         if command == "find" and len(rest) == 1:
             found = self.workspace.find(rest[0])
             if found is None:
-                return _unknown(f"package {rest[0]} is not found")
+                return _unknown(f"package {rest[0]} {self.workspace.absence(rest[0])}")
             return found
         if command == "env" and len(rest) == 1:
             if rest[0] in self.environment:

@@ -1998,9 +1998,11 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     if best is tu:
         return tu  # declaring them made it no better: the parse as it was
     again = best
+    included = names.included()
     result.diagnostics.append(diag.make(
-        "CPP_NAMES_DECLARED", workspace.location(path), count=names.count,
-        names=", ".join(names.first()), before=before, after=len(mine(again))))
+        "CPP_NAMES_DECLARED", workspace.location(path), count=names.declared_count(),
+        names=", ".join(names.first()) or "none", before=before, after=len(mine(again)),
+        included=f"; {', '.join(included)} from the stand-ins' headers" if included else ""))
     return again
 
 

@@ -28,7 +28,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
 from ...model.rosname import node_name_joined
-from ...model.source import PrimitiveCall
+from ...model.source import JOINED, PrimitiveCall
 from . import msg_types
 from .cache import conditions_text
 from .call_conditions import (
@@ -285,7 +285,10 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
     if msg_types.param_type(arg.type) == "str":
         parts = scope.string(arg)
         # only a string with one unknown run can hold a parameter's value with a mark
-        marked = named(arg, scope) if named is not None and parts.count(None) == 1 else None
+        # (or several joined: ``prefix + arm + "_controller"``, unknown parts side by side)
+        runs = sum(1 for index, part in enumerate(parts)
+                   if part is None and (index == 0 or parts[index - 1] is not None))
+        marked = named(arg, scope) if named is not None and runs == 1 else None
         return marked if marked is not None else render(parts)
     return None
 
@@ -300,30 +303,51 @@ PARAMETER = "\x03"
 _PARAMETER = re.compile(f"{PARAMETER}([^{PARAMETER}]*){PARAMETER}([^{PARAMETER}]*){PARAMETER}")
 
 
-def parameter_mark(name: str, param: str, each: str | None) -> str:
-    """``name`` (one ``?``) with the parameter it is named by in the place of its ``?``."""
-    return name.replace("?", f"{PARAMETER}{param}{PARAMETER}{each or ''}{PARAMETER}", 1)
+def parameter_mark(name: str, param: str, each: str | None,
+                   joined: Iterable[str] = ()) -> str:
+    """``name`` (one ``?``) with the parameter it is named by in the place of its ``?``;
+    ``joined``: the parameters whose values follow that one's in the same ``?``
+    (``prefix + arm``), each marked right after it."""
+    marks = "".join(f"{PARAMETER}{p}{PARAMETER}{PARAMETER}" for p in joined)
+    return name.replace("?", f"{PARAMETER}{param}{PARAMETER}{each or ''}{PARAMETER}{marks}",
+                        1)
+
+
+# marks with nothing between them: the values of one ``?`` (``values.render``)
+_PARAMETER_RUN = re.compile(f"(?:{_PARAMETER.pattern})+")
 
 
 def _unmarked(text: str) -> str:
-    return _PARAMETER.sub("?", text)
+    return _PARAMETER_RUN.sub("?", text)
 
 
 def _named_by(call: PrimitiveCall) -> PrimitiveCall:
     """``call`` with the parameter marks of its name taken out: its ``name_param`` when
-    the name holds one mark and no other unknown run."""
+    the name holds one mark and no other unknown run; when every unknown run of it is
+    made of marks (a run of several: the values joined, ros_kortex's ``m_prefix +
+    m_arm_name + "_joint_trajectory_controller/..."`` handed to its action server's
+    constructor), the first mark's parameter, then the others' (``name_more``), each
+    in a run after its first JOINED to the one before it."""
     if PARAMETER not in call.name:
         return call
-    marks = _PARAMETER.findall(call.name)
     name = _unmarked(call.name)
-    if len(marks) != 1 or name.count("?") != 1 or call.name_param is not None:
+    runs = [_PARAMETER.findall(run.group(0)) for run in _PARAMETER_RUN.finditer(call.name)]
+    marks = [mark for run in runs for mark in run]
+    if name.count("?") != len(runs) or call.name_param is not None or any(
+            PLACEHOLDER in param or "?" in param for param, _ in marks):
+        # (a parameter named after what no file passes, or after what several pass)
         return dataclasses.replace(call, name=name)
-    param, each = marks[0]
-    if PLACEHOLDER in param or "?" in param:  # named after what no file passes, or
-        # after what several pass
+    if len(marks) == 1:
+        param, each = marks[0]
+        return dataclasses.replace(call, name=name, name_param=normalise(param),
+                                   name_each=each or None)
+    if any(each for _, each in marks):
         return dataclasses.replace(call, name=name)
-    return dataclasses.replace(call, name=name, name_param=normalise(param),
-                               name_each=each or None)
+    more: list[list[str | None]] = [
+        [normalise(param), None, *([JOINED] if index else [])]
+        for run in runs for index, (param, _) in enumerate(run)]
+    return dataclasses.replace(call, name=name, name_param=more[0][0], name_default=None,
+                               name_more=more[1:])
 
 
 # ``made_in`` of one alternative of a call whose member the class's constructors give

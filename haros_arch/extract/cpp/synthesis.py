@@ -1412,13 +1412,14 @@ class Names:
                for f in sorted(self.fields.get(record, ())))])
             for record in sorted({*self.fields, *self.types})]
         hidden = self._found_by_using()
+        included = self._included(hidden)
         for name, node in sorted(self.root.children.items()):
             if name in hidden:
                 continue
-            provided = _PROVIDED.get(name, {})
-            headers = sorted({provided[n] for n in node.children if n in provided})
-            if headers:  # included, and not declared again (in ``boost`` reopened, too)
-                lines += [f"#include <{header}>" for header in headers]
+            if name in included:  # included, not declared again (in ``boost`` reopened too)
+                provided = included[name]
+                lines += [f"#include <{header}>" for header in sorted(
+                    {_PROVIDED[name][n] for n in provided})]
                 node = dataclasses.replace(node, children={
                     n: child for n, child in node.children.items() if n not in provided})
                 if not node.children:
@@ -1466,14 +1467,61 @@ class Names:
                 found.add(name)
         return found
 
+    def _included(self, hidden: set[str]) -> dict[str, set[str]]:
+        """The names the stand-ins provide (``_PROVIDED``) that ``header`` includes
+        instead of declaring, by their top-level namespace (not one ``hidden``, declared
+        in the namespace a ``using`` names)."""
+        found: dict[str, set[str]] = {}
+        for name, node in self.root.children.items():
+            provided = {n for n in node.children if n in _PROVIDED.get(name, {})}
+            if provided and name not in hidden:
+                found[name] = provided
+        return found
+
+    def _not_declared(self) -> set[int]:
+        """The nodes of the names ``header`` does not declare permissively: those the
+        stand-ins provide, with what was learnt under them, and a namespace not known
+        that holds nothing else."""
+        skipped: set[int] = set()
+        for name, provided in self._included(self._found_by_using()).items():
+            top = self.root.children[name]
+            stack = [top.children[n] for n in provided]
+            while stack:
+                node = stack.pop()
+                skipped.add(id(node))
+                stack.extend(node.children.values())
+            if set(top.children) == provided:
+                skipped.add(id(top))
+        return skipped
+
+    def included(self) -> list[str]:
+        """The qualified names ``header`` includes a stand-in's declaration for."""
+        return sorted(f"{top}::{name}" for top, names in self._included(
+            self._found_by_using()).items() for name in names)
+
+    def declared_count(self) -> int:
+        """How many names (and members, friends, ...) were learnt, less the names of the
+        tree ``header`` includes from a stand-in rather than declares permissively."""
+        skipped = self._not_declared()
+        stack = [self.root]
+        dropped = 0
+        while stack:
+            node = stack.pop()
+            stack.extend(node.children.values())
+            dropped += id(node) in skipped and not node.known
+        return self.count - dropped
+
     def first(self, limit: int = 5) -> list[str]:
-        """The qualified names of the first few declared names."""
+        """The qualified names of the first few names declared permissively."""
+        skipped = self._not_declared()
         found: list[str] = []
         stack = [("", self.root)]
         while stack and len(found) < limit:
             prefix, node = stack.pop(0)
             for name, child in node.children.items():
                 qualified = f"{prefix}{name}"
+                if id(child) in skipped:
+                    continue
                 if not child.known and len(found) < limit:
                     found.append(qualified)
                 stack.append((qualified + "::", child))

@@ -2647,7 +2647,14 @@ class CallFinder:
         if source is None or PLACEHOLDER in name or not (
                 known_name(source[0]) or _on_passed_handle(source[0])):
             return None
-        return parameter_mark(name, source[0], source[3])
+        # the parameters joined to it in the one ``?`` (``prefix + arm``), if that is all
+        more = source[5] or []
+        if more and not (name.count("?") == 1 and source[3] is None and all(
+                len(entry) > 2 and entry[2] == JOINED and isinstance(entry[0], str)
+                and known_name(entry[0]) for entry in more)):
+            return None
+        return parameter_mark(name, source[0], source[3],
+                              [str(entry[0]) for entry in more])
 
     def _searched_key_source(self, expr: Cursor, scope: Scope) -> Source | None:
         """The parameter whose value is the key of the ``searchParam(key, result)`` that

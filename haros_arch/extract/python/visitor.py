@@ -22,7 +22,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ...model.location import Location
-from ...model.source import PrimitiveCall
+from ...model.source import JOINED, PrimitiveCall
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
@@ -1094,16 +1094,27 @@ class Walker:
                 call.name_option_default = ev.option_defaults.get(call.name_option)
             elif params and all(p.startswith("parameter ") for p in params):
                 # one parameter's value with text around it (``"/" + ns + "/cmd"``), or
-                # several, each in the place of its ``?`` (``ns + "/" + topic``)
-                filled = []
-                for origin in params:
-                    name = origin.removeprefix("parameter ")
+                # several, each in the place of its ``?`` (``ns + "/" + topic``); values
+                # with no text between them are one ``?`` (``"/" + robot_id + model``),
+                # each after the first a JOINED entry, as the C++ side makes them
+                filled: list[list[str | None]] = []
+                after_unknown = False
+                for part in text.parts:
+                    if not isinstance(part, Unknown):
+                        after_unknown = False
+                        continue
+                    name = part.origin.removeprefix("parameter ")
                     default = ev.param_defaults.get(name)
                     filled.append([param_name(Value.of(name)) if version == 2 else name,
                                    default.text if isinstance(default, Value)
-                                   and default.is_known else None])
-                call.name_param, call.name_default = filled[0]
+                                   and default.is_known else None,
+                                   *([JOINED] if after_unknown else [])])
+                    after_unknown = True
+                call.name_param, call.name_default = filled[0][0], filled[0][1]
                 call.name_more = filled[1:] or None
+                text = Value(tuple(part for i, part in enumerate(text.parts) if not (
+                    i and isinstance(part, Unknown) and isinstance(text.parts[i - 1],
+                                                                   Unknown))))
         found = searched_name(text)
         if found is not None:  # get_param(search_param('x')): the parameter found
             call.name, call.searched = found, True
@@ -1115,7 +1126,8 @@ class Walker:
             call.name = "~" + text.text[2:]
         else:  # get_name() is "~": only as the start of a name is it the node's name
             call.name = (text.text[:1] + text.text[1:].replace("~", "?")) or "?"
-        if call.name_more and call.name.count("?") != 1 + len(call.name_more):
+        if call.name_more and call.name.count("?") != 1 + sum(
+                entry[2:] != [JOINED] for entry in call.name_more):
             call.name_param = call.name_default = call.name_more = None  # not one each
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,

@@ -135,7 +135,7 @@ class Ros1Loader:
                 scope.include_args is not None and name in scope.outer_arg_names)
 
         ctx = Context(scope.args, self.environment, find, scope.filename,
-                      scope.anon, declared)
+                      scope.anon, declared, absence=self.workspace.absence)
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:

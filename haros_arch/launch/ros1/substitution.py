@@ -56,6 +56,8 @@ class Context:
     declared: Callable[[str], bool] = lambda name: False  # declared but without value
     unset: list[str] = field(default_factory=list)  # declared args without value that were used
     unknown: list[str] = field(default_factory=list)  # other reasons for unknown parts
+    # why ``find`` found nothing, the rest of "package NAME ..." (Workspace.absence)
+    absence: Callable[[str], str] = lambda name: "is not found"
 
 
 def collect(text: str) -> list[str]:
@@ -176,7 +178,7 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
         _arity(raw, args, 1)
         path = ctx.find(args[0])
         if path is None:
-            ctx.unknown.append(f"package {args[0]} is not found")
+            ctx.unknown.append(f"package {args[0]} {ctx.absence(args[0])}")
             return package_not_found(args[0])
         return Value.of(path)
     if command == "anon":

@@ -663,7 +663,7 @@ class Runner:
         folder = self.workspace.find(package)
         if folder is None:  # installed on the robot, perhaps: what it starts is unknown
             self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
-                f"package {package} is not in the workspace nor installed here; what "
+                f"package {package} {self.workspace.absence(package)}; what "
                 f"ros2 launch {package} {name} starts is unknown"))
             return None
         found: list[str] = []

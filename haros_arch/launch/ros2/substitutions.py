@@ -302,8 +302,8 @@ class Evaluator:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
         if found is None:  # installed on the robot, perhaps: unknown here, as in ROS 1
-            self.report("LAUNCH_UNKNOWN_VALUE", detail=f"package {name} is not in the "
-                        "workspace nor installed here")
+            self.report("LAUNCH_UNKNOWN_VALUE", detail=(
+                f"package {name} {self.runner.workspace.absence(name)}"))
             return package_not_found(name)
         if s.share:
             return Value.of(found)
