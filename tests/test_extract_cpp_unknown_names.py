@@ -1425,3 +1425,24 @@ def test_a_float_literal_gives_no_member() -> None:
                         b"int n = obj1.size() + p2->count;\n"])
     assert {"e5", "f", "e", "p3"}.isdisjoint(names.members)
     assert {"size", "count"} <= names.members
+
+
+def test_a_name_in_a_string_or_character_literal_is_no_call_site() -> None:
+    """A log message that names a wrapper of the unit (MoveIt's planning scene monitor:
+    ``RCLCPP_FATAL_STREAM(logger_, "requestPlanningSceneState() to self-provided
+    service")``) is no call: with errors in the unit it was ``CPP_CALL_MISSED`` and left
+    move_group partial. A call after the literal, or after a digit separator, still is;
+    the site's text is the line as written."""
+    from haros_arch.extract.cpp import recall
+
+    text = ('void f(const std::string & name)\n'
+            '{\n'
+            '  RCLCPP_FATAL_STREAM(logger_, "requestPlanningSceneState() to " << name);\n'
+            '  RCLCPP_INFO(logger_, "called psm.providePlanningSceneService()?");\n'
+            '  log("x\\"y", \'"\'); requestPlanningSceneState(name);\n'
+            '  const int n = 1\'000; auto c = node->create_client<S>("srv(", n);\n'
+            '}\n')
+    wrappers = ["requestPlanningSceneState", "providePlanningSceneService"]  # callable with
+    sites = recall.call_sites(text, wrappers, wrappers)  # no argument: a default one
+    assert [s.line for s in sites] == [5, 6]
+    assert sites[1].text == 'const int n = 1\'000; auto c = node->create_client<S>("srv(", n);'

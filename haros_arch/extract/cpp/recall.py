@@ -159,7 +159,11 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
                 line = head + " " + tail.split("*/", 1)[1]
             else:
                 line, in_comment = head, True
-        code = line.split("//", 1)[0]
+        shown = line.split("//", 1)[0]
+        # what a string or character literal holds is no call: the message of moveit's
+        # ``RCLCPP_FATAL_STREAM(logger_, "requestPlanningSceneState() to self-provided
+        # service")`` names a wrapper of the unit
+        code = _masked(shown)
         if code.lstrip().startswith("#") or _DEFINITION.match(code) or (
                 _INSTANTIATION.match(code)):
             continue
@@ -169,8 +173,30 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
                and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
                and not _constructor_declared(code, m, extra)
                for m in pattern.finditer(code)):
-            found.append(Site(number, code.strip()[:80]))
+            found.append(Site(number, shown.strip()[:80]))
     return tuple(found)
+
+
+def _masked(code: str) -> str:
+    """``code`` with what its string and character literals hold blanked (their quotes
+    kept, the length the same); a quote between a digit and another digit or letter is
+    C++14's digit separator (``1'000``), no literal."""
+    out = list(code)
+    quote = ""
+    escaped = False
+    for i, char in enumerate(code):
+        if quote:
+            if escaped:
+                escaped = False
+            elif char == "\\":
+                escaped = True
+            elif char == quote:
+                quote = ""
+                continue
+            out[i] = " "
+        elif char == '"' or (char == "'" and not (i and code[i - 1].isalnum())):
+            quote = char
+    return "".join(out)
 
 
 # what comes before a class name that is made there (``std::make_shared<``, ``new``),
