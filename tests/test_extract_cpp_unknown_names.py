@@ -404,9 +404,9 @@ def test_fields_of_messages_known_only_by_name_leave_no_error() -> None:
     result = extract("message_fields.cpp")
     assert rows(result) == [
         ("publish", "markers", "visualization_msgs/msg/Marker", 17),
-        ("subscribe", "tracks", "radar_msgs/msg/Track", 18),
+        ("subscribe", "tracks", "vendor_radar_msgs/msg/Track", 18),
         ("declare", "limit", "double", 25),
-        ("server", "reset", "radar_msgs/srv/Reset", 26),
+        ("server", "reset", "vendor_radar_msgs/srv/Reset", 26),
     ]
     # fields and constants (``Marker::SPHERE``) are declared on the message's struct; the
     # unqualified ``Pose2`` of ``using namespace vendor_geometry`` is not ambiguous
