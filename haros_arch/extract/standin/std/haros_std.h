@@ -1255,6 +1255,20 @@ public:
   bool operator==(const type_info& other) const noexcept;
   bool operator!=(const type_info& other) const noexcept;
 };
+// <typeindex>: a type_info as a value (a map key: yasmin's clients cache)
+class type_index {
+public:
+  type_index(const type_info& info) noexcept;
+  size_t hash_code() const noexcept;
+  const char* name() const noexcept;
+  bool operator==(const type_index& other) const noexcept;
+  bool operator!=(const type_index& other) const noexcept;
+  bool operator<(const type_index& other) const noexcept;
+  bool operator<=(const type_index& other) const noexcept;
+  bool operator>(const type_index& other) const noexcept;
+  bool operator>=(const type_index& other) const noexcept;
+};
+template<> struct hash<type_index> { size_t operator()(const type_index& t) const noexcept; };
 
 // <exception>, <stdexcept>
 class exception {
@@ -1889,6 +1903,7 @@ public:
   template<class T> any& operator=(T&& value);
   bool has_value() const noexcept;
   void reset() noexcept;
+  const type_info& type() const noexcept;
 };
 template<class T> T any_cast(const any& operand);
 template<class T> T any_cast(any& operand);
