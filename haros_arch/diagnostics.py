@@ -810,10 +810,12 @@ CATALOGUE: dict[str, Entry] = {
         "matters."),
     "NODE_PACKAGE_UNKNOWN": Entry(
         "warning", "package {name} of node {node} is neither in the workspace nor "
-                   "installed; its interface is unknown",
+                   "installed; {interface}",
         "A launch file starts a node from a package this machine does not have (it may "
         "be installed where the system runs). The instance is kept without links; "
-        "describe it with hints if it matters."),
+        "describe it with hints if it matters. A ros_gz bridge (parameter_bridge, "
+        "image_bridge, or their ros_ign names) is the exception: its topics are its "
+        "arguments, read as the bridge reads them."),
     # interface models (haros_arch.models)
     "MODEL_DISTRO": Entry(
         "info", "interface models of distribution {distro} ({why})",
