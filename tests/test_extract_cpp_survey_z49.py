@@ -137,3 +137,69 @@ def test_a_static_member_template_called_in_a_template_is_typed_by_its_argument(
     made = [(c.name, c.type) for c in result.calls
             if c.kind == "publish" and c.name != "?"]
     assert made == [("count", "std_msgs/msg/Int32")]
+
+
+FORWARD = """\
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+#include <iterator>
+#include <moveit/macros/class_forward.hpp>
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp_action/rclcpp_action.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <example_interfaces/action/fibonacci.hpp>
+namespace tasks {
+MOVEIT_CLASS_FORWARD(Stage);
+using Fibonacci = example_interfaces::action::Fibonacci;
+using FibonacciServer = rclcpp_action::Server<Fibonacci>;
+class Stage {
+ public:
+  explicit Stage(const rclcpp::Node::SharedPtr & node) {
+    pub_ = node->create_publisher<std_msgs::msg::String>("stage_status", 10);
+    server_ = rclcpp_action::create_server<Fibonacci>(
+      node, "fibonacci",
+      FibonacciServer::GoalCallback(
+        [](const rclcpp_action::GoalUUID &, std::shared_ptr<const Fibonacci::Goal>) {
+          return rclcpp_action::GoalResponse::ACCEPT_AND_EXECUTE;
+        }),
+      FibonacciServer::CancelCallback(
+        [](std::shared_ptr<rclcpp_action::ServerGoalHandle<Fibonacci>>) {
+          return rclcpp_action::CancelResponse::ACCEPT;
+        }),
+      FibonacciServer::AcceptedCallback(
+        [](std::shared_ptr<rclcpp_action::ServerGoalHandle<Fibonacci>>) {}));
+  }
+ private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+  FibonacciServer::SharedPtr server_;
+};
+}  // namespace tasks
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("stages");
+  std::vector<std::string> names{"a", "b"};
+  std::set<std::string> unique;
+  std::copy(names.begin(), names.end(), std::inserter(unique, unique.end()));
+  tasks::StagePtr stage = std::make_shared<tasks::Stage>(node);
+  tasks::StageConstPtr seen = stage;
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_moveit_class_forward_action_server_callback_types_and_inserter(tmp_path) -> None:
+    # moveit_task_constructor: ``MOVEIT_CLASS_FORWARD(Stage);`` of an installed
+    # moveit_core (not known, the macro read as a type made ``Stage`` a variable that hid
+    # the class), ``ActionServerType::GoalCallback(...)`` of rclcpp_action's Server and
+    # ``std::inserter``: each was a C++ error in a function that makes ROS calls
+    _package(tmp_path, "rclcpp", "rclcpp_action", "std_msgs", "example_interfaces",
+             "moveit_core")
+    source = tmp_path / "stages.cpp"
+    source.write_text(FORWARD)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert not [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("action-server", "fibonacci"), ("publish", "stage_status")]

@@ -48,6 +48,12 @@ public:
 template<class A> class Server {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Server)
+  // the handlers' types, as a member holds them before create_server is called
+  // (moveit_task_constructor's ExecuteTaskSolutionCapability)
+  using GoalCallback = std::function<GoalResponse(const GoalUUID&,
+                                                  std::shared_ptr<const typename A::Goal>)>;
+  using CancelCallback = std::function<CancelResponse(std::shared_ptr<ServerGoalHandle<A>>)>;
+  using AcceptedCallback = std::function<void(std::shared_ptr<ServerGoalHandle<A>>)>;
   // as from Kilted (rclcpp_action 29): what an action's services and feedback show to
   // introspection
   void configure_introspection(std::shared_ptr<rclcpp::Clock> clock, const rclcpp::QoS& qos,

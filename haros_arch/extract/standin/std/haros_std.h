@@ -962,6 +962,14 @@ template<class C> struct back_insert_iterator {
   template<class V> back_insert_iterator& operator=(const V& v);
 };
 template<class C> back_insert_iterator<C> back_inserter(C& c);
+// std::inserter(c, it): inserts at a position (into a set or map: moveit_task_constructor)
+template<class C> struct insert_iterator {
+  insert_iterator& operator*();
+  insert_iterator& operator++();
+  insert_iterator operator++(int);
+  template<class V> insert_iterator& operator=(const V& v);
+};
+template<class C, class I> insert_iterator<C> inserter(C& c, I it);
 template<class T> struct numeric_limits {
   static constexpr bool is_specialized = true;
   static constexpr T min() noexcept;
