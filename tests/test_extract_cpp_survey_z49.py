@@ -203,3 +203,49 @@ def test_moveit_class_forward_action_server_callback_types_and_inserter(tmp_path
     assert not [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"]
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("action-server", "fibonacci"), ("publish", "stage_status")]
+
+
+TWO_NODES = """\
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+namespace bridge {
+void declareParameters(rclcpp::Node * node) {
+  node->declare_parameter("port", 8765);
+}
+class Bridge : public rclcpp::Node {
+ public:
+  Bridge() : Node("bridge") {
+    declareParameters(this);
+    pub_ = create_publisher<std_msgs::msg::String>("status", 10);
+  }
+ private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+}  // namespace bridge
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  {
+    auto dummy = std::make_shared<rclcpp::Node>("dummy");
+    dummy->declare_parameter("num_threads", 0);
+  }
+  auto node = std::make_shared<bridge::Bridge>();
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_free_helper_makes_its_calls_on_the_node_of_its_caller(tmp_path) -> None:
+    # foxglove_bridge's executable makes a ``dummy`` node in main() to read num_threads,
+    # then its bridge node, whose constructor calls ``declareParameters(this)``: the
+    # helper's declarations had no node (the graph's '/?' node of the process), though
+    # its one caller is the bridge's constructor
+    _package(tmp_path, "rclcpp", "std_msgs")
+    source = tmp_path / "bridge.cpp"
+    source.write_text(TWO_NODES)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert result.rosnames == ["bridge", "dummy"]
+    assert sorted((c.kind, c.name, c.node_name) for c in result.calls) == [
+        ("declare", "num_threads", "dummy"), ("declare", "port", "bridge"),
+        ("publish", "status", "bridge")]
