@@ -36,8 +36,8 @@ from ..plugins.attach import PluginModels, chains, class_packages, own_partial
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import GZSERVER
-from ..robot.bridge import IMAGE_BRIDGES, PARAMETER_BRIDGES
 from ..robot.attach import attach as attach_descriptions
+from ..robot.bridge import IMAGE_BRIDGES, PARAMETER_BRIDGES
 from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
