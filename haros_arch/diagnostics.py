@@ -817,12 +817,14 @@ CATALOGUE: dict[str, Entry] = {
         "is kept without links, of unknown interface; describe it with hints if it "
         "matters."),
     "NODE_PACKAGE_UNKNOWN": Entry(
-        "warning", "package {name} of node {node} {why}; its interface is unknown",
+        "warning", "package {name} of node {node} {why}; {interface}",
         "A launch file starts a node from a package this machine does not have (it may "
         "be installed where the system runs), or one the workspace holds in a folder an "
         "ignore marker (COLCON_IGNORE, CATKIN_IGNORE, AMENT_IGNORE) leaves out of the "
         "build, as colcon and catkin do: the marker file is named. The instance is kept "
-        "without links; describe it with hints if it matters."),
+        "without links; describe it with hints if it matters. A ros_gz bridge "
+        "(parameter_bridge, image_bridge, or their ros_ign names) is the exception: its "
+        "topics are its arguments, read as the bridge reads them."),
     # interface models (haros_arch.models)
     "MODEL_DISTRO": Entry(
         "info", "interface models of distribution {distro} ({why})",

@@ -321,3 +321,82 @@ def test_no_shipped_model_names_a_path_of_the_machine_that_built_it():
             found += [(os.path.basename(path), r) for r in node.get(
                 "completeness_reasons", []) if "/tmp/" in r]
     assert found == []
+
+
+DUAL_CMAKE = """\
+cmake_minimum_required(VERSION 3.10)
+project(dual_bridge)
+if("$ENV{ROS_VERSION}" STREQUAL "1")
+  find_package(catkin REQUIRED COMPONENTS roscpp)
+  catkin_package()
+  add_executable(bridge ros1/bridge.cpp)
+elseif("$ENV{ROS_VERSION}" STREQUAL "2")
+  find_package(ament_cmake REQUIRED)
+  find_package(rclcpp REQUIRED)
+  add_executable(bridge ros2/bridge.cpp)
+  install(TARGETS bridge DESTINATION lib/${PROJECT_NAME})
+  ament_package()
+else()
+  message(FATAL_ERROR "ROS_VERSION environment variable must be 1 or 2")
+endif()
+"""
+
+DUAL_ROS2 = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("bridge");
+  auto pub = node->create_publisher<std_msgs::msg::String>("status", 10);
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+DUAL_ROS1 = """\
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+int main(int argc, char ** argv) {
+  ros::init(argc, argv, "bridge");
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<std_msgs::String>("ros1_status", 10);
+  ros::spin();
+  return 0;
+}
+"""
+
+
+@pytest.mark.parametrize(("distro", "topic"), [("jazzy", "status"), ("noetic", "ros1_status")])
+def test_a_package_for_both_ros_versions_is_modelled_for_its_distribution(
+        tmp_path, distro, topic):
+    """foxglove_bridge builds for ROS 1 or 2 on ``$ENV{ROS_VERSION}``, which the
+    distribution's setup script sets: the build read with no environment made the jazzy
+    model of its ROS 1 nodelet only, without the ROS 2 node ``foxglove_bridge``."""
+    commit = "0123456789abcdef0123456789abcdef01234567"
+    listed = tmp_path / "list.yaml"
+    listed.write_text(f"- repository: github:example/dual_bridge\n  commit: {commit}\n"
+                      f"  distro: {distro}\n  packages: [dual_bridge]\n")
+    tree = tmp_path / "sources" / "example+dual_bridge@0123456789ab"
+    (tree / "ros1").mkdir(parents=True)
+    (tree / "ros2").mkdir()
+    (tree / "package.xml").write_text(
+        '<?xml version="1.0"?>\n<package format="3">\n  <name>dual_bridge</name>\n'
+        '  <version>1.0.0</version>\n  <description>d</description>\n'
+        '  <maintainer email="a@b.c">a</maintainer>\n  <license>MIT</license>\n'
+        '  <buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>\n'
+        '  <buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>\n'
+        '  <depend condition="$ROS_VERSION == 1">roscpp</depend>\n'
+        '  <depend condition="$ROS_VERSION == 2">rclcpp</depend>\n'
+        '  <depend>std_msgs</depend>\n  <export>\n'
+        '    <build_type condition="$ROS_VERSION == 1">catkin</build_type>\n'
+        '    <build_type condition="$ROS_VERSION == 2">ament_cmake</build_type>\n'
+        '  </export>\n</package>\n')
+    (tree / "CMakeLists.txt").write_text(DUAL_CMAKE)
+    (tree / "ros1" / "bridge.cpp").write_text(DUAL_ROS1)
+    (tree / "ros2" / "bridge.cpp").write_text(DUAL_ROS2)
+    (task,) = tasks(read_list(str(listed)), str(tmp_path / "sources"),
+                    os.path.join(FIXTURE, "none"), cache_dir=None)
+    outcome = build_package(task)
+    model = from_document(json.loads(outcome.text))
+    assert [n.executable for n in model.nodes] == ["bridge"]
+    assert [(c.kind, c.name) for c in model.node("bridge").calls] == [("publish", topic)]

@@ -26,6 +26,7 @@ from ..plugins.classes import (
     defined_in,
     derives_from,
     exported_classes,
+    included_headers,
     main_words,
     named_closure,
     named_helpers,
@@ -445,21 +446,30 @@ def gazebo_plugins(it: Interpreter, package: Package, workspace: Files,
     source registers a class with ``GZ_REGISTER_<KIND>_PLUGIN`` is a ``plugin`` node
     named by the library (the ``<plugin filename>`` a robot description loads it by),
     with the class's sources as a component's are found; its ``plugin_base`` is
-    ``gazebo::<Kind>Plugin``. ``robot.attach`` gives its calls to the Gazebo node."""
+    ``gazebo::<Kind>Plugin``. ``robot.attach`` gives its calls to the Gazebo node. The
+    macro may be written in a header of the workspace the source includes, after the
+    class it declares (audibot_gazebo's AudibotInterfacePlugin.hpp): the one source
+    that includes it defines the registration."""
     nodes: list[Node] = []
     for target in it.targets.values():
         if target.kind != "library":
             continue
         for path in sources.own(target):
-            found = _gazebo_registered(os.path.join(workspace.root, path), workspace)
+            source = os.path.join(workspace.root, path)
+            where, found = source, _gazebo_registered(source, workspace)
+            if found is None:
+                text, _ = read_text(source, workspace.location(source))
+                for header in included_headers(source, text or "", workspace):
+                    where, found = header, _gazebo_registered(header, workspace)
+                    if found is not None:
+                        break
             if found is None:
                 continue
             kind, cls, line = found
             nodes.append(Node(package.name, target.output_name or target.name, "plugin",
                               "cpp", _component(target, cls, sources, workspace),
                               conditions=target.conditions,
-                              location=workspace.location(
-                                  os.path.join(workspace.root, path), line, 1),
+                              location=workspace.location(where, line, 1),
                               plugin_class=cls,
                               plugin_base=f"gazebo::{GAZEBO_BASES[kind]}Plugin"))
             break

@@ -37,6 +37,7 @@ from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import GZSERVER
 from ..robot.attach import attach as attach_descriptions
+from ..robot.bridge import IMAGE_BRIDGES, PARAMETER_BRIDGES
 from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
@@ -506,9 +507,13 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
                    for d in config.diagnostics):
             name = key.partition("/")[0]
-            config.diagnostics.append(diag.make("NODE_PACKAGE_UNKNOWN", decl.location,
-                                                name=name, node=plugin or key,
-                                                why=workspace.absence(name)))
+            # (a ros_gz bridge's topics are its arguments: ``robot.bridge`` reads them)
+            bridge = (decl.package, decl.executable) in (*PARAMETER_BRIDGES, *IMAGE_BRIDGES)
+            config.diagnostics.append(diag.make(
+                "NODE_PACKAGE_UNKNOWN", decl.location, name=name, node=plugin or key,
+                why=workspace.absence(name),
+                interface="its topics are read from its arguments" if bridge
+                else "its interface is unknown"))
     elif node is None and plugin is None and decl.ros_version == 1 and (
         found := _program_file(workspace, *key.partition("/")[::2])
     ):

@@ -44,7 +44,7 @@ from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import NUMBERED, Node, PrimitiveCall, declared_defaults
 from ..model.values import UNKNOWN_MARK
-from ..pipeline import read_build_files
+from ..pipeline import distro_variables, read_build_files
 from ..processes import worker_pool
 from ..workspace import scan
 from .format import InterfaceModel, dumps
@@ -192,7 +192,12 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     if missing:
         outcome.problem = f"no source tree at {missing[0]} (run scripts/models-fetch)"
         return outcome
-    workspace = scan([task.tree, *task.context], {})
+    # the environment the release's build runs in, as its distribution's setup script
+    # sets it: a package for both ROS versions chooses its build on it (foxglove_bridge's
+    # ``if("$ENV{ROS_VERSION}" STREQUAL "2")``, package.xml's ``condition=``), and with
+    # none the jazzy model had its ROS 1 nodelet only, not the ROS 2 node
+    environment = {"ROS_DISTRO": task.entry.distro, **distro_variables(task.entry.distro)}
+    workspace = scan([task.tree, *task.context], environment)
     package = workspace.packages.get(task.package)
     if package is None:
         outcome.problem = f"no package {task.package} in {task.entry.repository}"

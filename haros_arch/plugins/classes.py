@@ -272,7 +272,7 @@ def header_exports(source: str, workspace: Files) -> set[str]:
     """The classes the headers of the workspace that ``source`` includes export (a
     pluginlib macro written in a header), without template arguments."""
     path = os.path.join(workspace.root, source)
-    return {_untemplated(name) for header in _included(path, _text(path, workspace) or "",
+    return {_untemplated(name) for header in included_headers(path, _text(path, workspace) or "",
                                                        workspace)
             for name, _ in exported_classes(header, workspace)}
 
@@ -628,12 +628,12 @@ def _with_headers(source: str, workspace: Files, depth: int) -> list[str]:
             text = _text(each, workspace)
             texts.append(text or "")
             if step < depth:
-                below.extend(_included(each, text or "", workspace))
+                below.extend(included_headers(each, text or "", workspace))
         level = below
     return texts
 
 
-def _included(path: str, text: str, workspace: Files) -> list[str]:
+def included_headers(path: str, text: str, workspace: Files) -> list[str]:
     """The headers of the workspace ``text`` (the file at ``path``) includes by name,
     found beside it, in its package's ``include`` folder or in that folder's
     ``include/<package>``: CMake's ``include_directories(include/${PROJECT_NAME})`` lets

@@ -560,6 +560,13 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
     for _, unit in units:
         for maker, made in unit.constructions:
             made_by.setdefault(made, []).append(maker)
+        for caller, used in unit.uses:
+            # a free function of the workspace that names no node makes its calls on
+            # the node of what calls it (foxglove_bridge's ``declareParameters(this)``
+            # in its node's constructor, beside main's ``dummy`` node), as a class on
+            # the node of what constructs it
+            if used.endswith("()") and caller != used and caller not in made_by.get(used, ()):
+                made_by.setdefault(used, []).append(caller)
     found = _reached(units, unseen, entry)
     reached, hiding, entered, named, scoped = found if found is not None else (
         None, unseen, set(), set(), {})

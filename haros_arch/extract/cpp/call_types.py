@@ -250,14 +250,40 @@ def callee(call: Cursor) -> Cursor:
     return strip(children[0]) if children else call
 
 
+def _qualifiers(head: Cursor) -> set[int]:
+    """The start offsets of the type references that qualify the called name before
+    its template arguments (``Cache::get<M>``'s ``Cache``: followed by ``::`` and before
+    the first ``<``). In a template the call's function may not be resolved, so its
+    class is not known to leave out: the tokens say which is the qualifier."""
+    tokens = [(t.extent.start.offset, t.spelling) for t in head.get_tokens()]
+    opening = next((at for at, text in tokens if text == "<"), None)
+    found: set[int] = set()
+    for child in head.get_children():
+        if child.kind != CursorKind.TYPE_REF:
+            continue
+        end = child.extent.end.offset
+        if opening is not None and end > opening:
+            break
+        after = next((text for at, text in tokens if at >= end), None)
+        if after == "::":
+            found.add(child.extent.start.offset)
+    return found
+
+
 def _class_template_first(call: Cursor) -> Cursor | None:
     """The class template written first among the template arguments of the called
     function (``subscribe<pcl::PointCloud<P>>``, whose first type reference is ``P``);
     None when a type is written first."""
     target = call.referenced
     owner = target.semantic_parent if target is not None else None
-    for child in callee(call).get_children():
+    head = callee(call)
+    qualifiers: set[int] | None = None
+    for child in head.get_children():
         if child.kind == CursorKind.TYPE_REF and (owner is None or child.referenced != owner):
+            if qualifiers is None:
+                qualifiers = _qualifiers(head)
+            if child.extent.start.offset in qualifiers:
+                continue
             return None
         if child.kind == CursorKind.TEMPLATE_REF and child.referenced is not None:
             return child.referenced
@@ -268,10 +294,16 @@ def template_argument(call: Cursor) -> Cursor | None:
     """The first type written as a template argument of the called function."""
     target = call.referenced
     owner = target.semantic_parent if target is not None else None
-    for child in callee(call).get_children():
+    head = callee(call)
+    qualifiers: set[int] | None = None
+    for child in head.get_children():
         if child.kind == CursorKind.TYPE_REF and (
             owner is None or child.referenced != owner  # not ``Class::`` of Class::f<M>
         ):
+            if qualifiers is None:
+                qualifiers = _qualifiers(head)
+            if child.extent.start.offset in qualifiers:
+                continue  # (the same, the call not resolved: the tokens tell)
             return child
     return None
 

@@ -487,13 +487,36 @@ def then_on_exit(i: Interpreter, process: e.Action, k: Kwargs, n: ast.AST) -> e.
     if later is None:
         return process
     if not isinstance(later, (e.Action, list, tuple, LaunchDescription)):
-        i.unsupported(n, "on_exit with a callable is not interpreted")
+        not_actions(i, later, n, "on_exit")
         return process
     handler = e.Delayed(actions(i, later, n), exit_event(process.location), "event",
                         location=process.location)
     condition, process.condition = process.condition, None
     return e.Group([process, handler], scoped=False, condition=condition,
                    location=process.location)
+
+
+def not_actions(i: Interpreter, value: Any, n: ast.AST, label: str) -> None:
+    """Said of what an event handler is given that is neither actions nor a list of
+    them (launch's ``OnActionEventBase``): a callable is called when the event comes,
+    not interpreted here; text is iterated when the handler is made, each character no
+    launch entity (a TypeError); a substitution is kept as the one entity to run and
+    refused when the event comes (launch's RuntimeError "expected a
+    LaunchDescriptionEntity from event_handler"): go2_ros2_sdk's
+    ``on_exit=LaunchConfiguration('on_exit', default='shutdown')``."""
+    if isinstance(value, str):
+        i.diagnostics.append(diag.make(
+            "LAUNCH_BAD_VALUE", i.where(n),
+            detail=f"{label} is given the text {value!r}, not actions: launch iterates "
+                   "it and stops with a TypeError (a character is no launch entity)"))
+    elif isinstance(value, (e.Subst, Lazy)):
+        i.diagnostics.append(diag.make(
+            "LAUNCH_BAD_VALUE", i.where(n),
+            detail=f"{label} is given a substitution, not actions: launch keeps it as "
+                   "what to run on the event and stops with a RuntimeError when the "
+                   "event comes (a substitution is no launch entity)"))
+    elif not isinstance(value, Unknown) or value.kind != "unsupported":
+        i.unsupported(n, f"{label} with a callable is not interpreted")
 
 
 def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -651,7 +674,7 @@ def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(value, (e.Action, list, tuple, LaunchDescription)):
             contents.extend(actions(i, value, n))
         elif value is not None:
-            i.unsupported(n, f"{label} with a callable is not interpreted")
+            not_actions(i, value, n, label)
     target = k.get("target_action")
     if label.rsplit(".", 1)[-1] == "OnProcessExit" and isinstance(target, e.Action) \
             and target.location.file:

@@ -257,6 +257,7 @@ public:
   int64_t as_int() const;
   double as_double() const;
   const std::string& as_string() const;
+  const std::vector<uint8_t>& as_byte_array() const;
   const std::vector<bool>& as_bool_array() const;
   const std::vector<int64_t>& as_integer_array() const;
   const std::vector<double>& as_double_array() const;

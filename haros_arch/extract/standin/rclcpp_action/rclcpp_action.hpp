@@ -53,9 +53,21 @@ public:
   bool is_feedback_aware();
   bool is_result_aware();
 };
+// an action's Goal, void for a type with none (a message known only by name: the
+// server's handler types must not make every use of Server<A> an error)
+template<class A, class = void> struct haros_action_goal { using type = void; };
+template<class A> struct haros_action_goal<A, std::void_t<typename A::Goal>> {
+  using type = typename A::Goal;
+};
 template<class A> class Server {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Server)
+  // the handlers' types, as a member holds them before create_server is called
+  // (moveit_task_constructor's ExecuteTaskSolutionCapability)
+  using GoalCallback = std::function<GoalResponse(
+      const GoalUUID&, std::shared_ptr<const typename haros_action_goal<A>::type>)>;
+  using CancelCallback = std::function<CancelResponse(std::shared_ptr<ServerGoalHandle<A>>)>;
+  using AcceptedCallback = std::function<void(std::shared_ptr<ServerGoalHandle<A>>)>;
   // as from Kilted (rclcpp_action 29): what an action's services and feedback show to
   // introspection
   void configure_introspection(std::shared_ptr<rclcpp::Clock> clock, const rclcpp::QoS& qos,

@@ -962,6 +962,14 @@ template<class C> struct back_insert_iterator {
   template<class V> back_insert_iterator& operator=(const V& v);
 };
 template<class C> back_insert_iterator<C> back_inserter(C& c);
+// std::inserter(c, it): inserts at a position (into a set or map: moveit_task_constructor)
+template<class C> struct insert_iterator {
+  insert_iterator& operator*();
+  insert_iterator& operator++();
+  insert_iterator operator++(int);
+  template<class V> insert_iterator& operator=(const V& v);
+};
+template<class C, class I> insert_iterator<C> inserter(C& c, I it);
 template<class T> struct numeric_limits {
   static constexpr bool is_specialized = true;
   static constexpr T min() noexcept;
@@ -1255,6 +1263,20 @@ public:
   bool operator==(const type_info& other) const noexcept;
   bool operator!=(const type_info& other) const noexcept;
 };
+// <typeindex>: a type_info as a value (a map key: yasmin's clients cache)
+class type_index {
+public:
+  type_index(const type_info& info) noexcept;
+  size_t hash_code() const noexcept;
+  const char* name() const noexcept;
+  bool operator==(const type_index& other) const noexcept;
+  bool operator!=(const type_index& other) const noexcept;
+  bool operator<(const type_index& other) const noexcept;
+  bool operator<=(const type_index& other) const noexcept;
+  bool operator>(const type_index& other) const noexcept;
+  bool operator>=(const type_index& other) const noexcept;
+};
+template<> struct hash<type_index> { size_t operator()(const type_index& t) const noexcept; };
 
 // <exception>, <stdexcept>
 class exception {
@@ -1889,6 +1911,7 @@ public:
   template<class T> any& operator=(T&& value);
   bool has_value() const noexcept;
   void reset() noexcept;
+  const type_info& type() const noexcept;
 };
 template<class T> T any_cast(const any& operand);
 template<class T> T any_cast(any& operand);
