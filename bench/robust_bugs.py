@@ -12,7 +12,8 @@ it is reported in, a text of its message or entities).
 
 For each bug in scope, both trees are written into a temporary folder (``--keep DIR``
 keeps them, ``DIR/<system>-<id>/{buggy,fixed}``): the fix commit's parent (buggy) and the
-fix commit (fixed), under ``src/<repository>``, with the repositories the launch files
+fix commit (fixed; its launch files are ``fixed_launch`` when the fix renamed
+them), under ``src/<repository>``, with the repositories the launch files
 need from the same organisation (``deps``) at their last commit before the fix's date
 (or the commit given). A project file that launches the bug's launch files is written
 beside, and ``python -m haros_arch check project.yaml --format json`` runs on each (one
@@ -128,8 +129,9 @@ def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, P
         materialize(main, rev, folder / "src" / bug["repo"].split("/")[1])
         for gitdir, dep_rev, name in deps:
             materialize(gitdir, dep_rev, folder / "src" / name)
+        launch = bug.get("fixed_launch", bug["launch"]) if side == "fixed" else bug["launch"]
         project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": "src",
-                   "configurations": {"bug": {"launch": bug["launch"],
+                   "configurations": {"bug": {"launch": launch,
                                               "args": bug.get("args", {})}}}
         if bug.get("environment"):
             project["environment"] = bug["environment"]

@@ -296,6 +296,14 @@ CATALOGUE: dict[str, Entry] = {
         "part. A ROS 2 configuration not seen declared after an action the reader "
         "could not see (a value not known among a launch description's entities, an "
         "include not read) may be declared there: LAUNCH_UNKNOWN_VALUE, undecided."),
+    "LAUNCH_PATH_JOIN_ABSOLUTE": Entry(
+        "warning", "path join part {part} starts with '/': it drops the parts before it, "
+        "the path is {path}",
+        "os.path.join, launch's PathJoinSubstitution and a pathlib path start again at a "
+        "part that is an absolute path: [FindPackageShare('gazebo_ros'), 'launch', "
+        "'/gazebo.launch.py'] is /gazebo.launch.py, not the file in the package's launch "
+        "folder (a leading slash written as for a list joined by concatenation). The "
+        "path is kept as launch makes it."),
     "LAUNCH_UNSUPPORTED": Entry(
         "warning", "{detail}",
         "A launch construct that the static interpreter does not evaluate; what it "

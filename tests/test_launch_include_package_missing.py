@@ -72,3 +72,28 @@ def test_an_include_of_a_package_not_here_is_said_once_where_it_is_looked_for(wr
         m for m in [d.message for d in ros1.diagnostics if d.code == "LAUNCH_UNSUPPORTED"]
         if "gazebo_ros" not in m]
     assert len(ros1.unread_includes) == 2
+
+
+UNSET_PASSED = (
+    '<launch><arg name="iamge_input" default="camera/color/image_raw"/>'
+    '<include file="$(find raw2compressed)/launch/image.launch">'
+    '<arg name="image_input" value="$(arg image_input)"/>'
+    '<arg name="unused" value="$(arg never)" if="false"/>'
+    '<env name="CAMERA" value="$(arg iamge_input)"/>'
+    '</include></launch>')
+
+
+def test_an_include_not_read_still_substitutes_the_values_it_passes(write_tree):
+    """roslaunch substitutes an include's <arg> values before it reads the file, so a
+    value naming an argument nothing declares fails the launch even where the included
+    package is installed (turtlebot3 625cf703e: ``iamge_input`` declared, ``$(arg
+    image_input)`` passed to raw2compressed's launch, not in the workspace). The arg a
+    false condition leaves out is not substituted; the file is still not read."""
+    root = write_tree({"src/pkg/package.xml": package_xml("pkg"),
+                       "src/pkg/launch/cam.launch": UNSET_PASSED})
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/pkg/launch/cam.launch"), ws, {}, {})
+    unset = [d.message for d in model.diagnostics if d.code == "LAUNCH_ARG_UNSET"]
+    assert len(unset) == 1 and "image_input" in unset[0]
+    assert not any("never" in d.message for d in model.diagnostics)
+    assert len(model.unread_includes) == 1

@@ -555,6 +555,7 @@ class Ros1Loader:
             self.model.unread_includes.append(UnreadInclude(
                 element.get("file", ""), scope.child(ns).ns, list(scope.remaps),
                 scope.conditions, where))
+            self.unread_include_values(element, scope)
             return
         self.include_pattern(element, scope)
         pass_all = self.flag(element, "pass_all_args", scope, False)
@@ -598,6 +599,24 @@ class Ros1Loader:
         if unused and not inner.pass_all_args:
             self.fail(scope, element, f"unused args ({', '.join(unused)}) for include of "
                                       f"{self.workspace.relpath(filename)}")
+
+    def unread_include_values(self, element: Element, scope: Scope) -> None:
+        """The values an include not read passes: roslaunch substitutes its ``<arg>``
+        and ``<env>`` children in the including file before it reads the file, so an
+        ``$(arg x)`` there that nothing declares fails the launch whatever the file is
+        (turtlebot3's d435i launch passing ``$(arg image_input)`` with only
+        ``iamge_input`` declared, to raw2compressed's launch not in the workspace).
+        Substituted for what they say; nothing is recorded of the file not read."""
+        inner = scope.include_child(None, scope.filename)
+        for child in element:
+            if not isinstance(child.tag, str) or child.tag.lower() not in ("arg", "env"):
+                continue
+            inner_child = self.condition(child, inner)
+            self.guard = None
+            if inner_child is None or not self.check(child, inner_child):
+                continue
+            for attribute in ("name", "value", "default"):
+                self.value(child, attribute, inner)
 
     def include_pattern(self, element: Element, scope: Scope, reached: bool = True) -> None:
         """What an include's file would be with any value of the arguments it names

@@ -264,7 +264,16 @@ def pure_path(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     a = [str(p) if isinstance(p, PurePosixPath) else p for p in a]
     if all(isinstance(p, str) for p in a):
-        return os.path.join(*a) if a else Unknown("os.path.join()")
+        if not a:
+            return Unknown("os.path.join()")
+        joined = os.path.join(*a)
+        restart = max((j for j, p in enumerate(a) if j and p.startswith("/")), default=0)
+        if any(a[:restart]):  # parts os.path.join drops (LAUNCH_PATH_JOIN_ABSOLUTE)
+            found = diag.make("LAUNCH_PATH_JOIN_ABSOLUTE", i.where(n), part=a[restart],
+                              path=joined)
+            if found not in i.diagnostics:
+                i.diagnostics.append(found)
+        return joined
     return Lazy((e.PathJoin(tuple(to_text(p) for p in a)),))
 
 

@@ -466,14 +466,20 @@ class Evaluator:
 
     def s_PathJoin(self, s: e.PathJoin) -> Value:
         parts: list[str | Value] = []
+        dropped = None  # the absolute part that started the path again
         for index, piece in enumerate(s.parts):
             value = self.value(piece)
             if value.literal is not None and value.literal.startswith("/"):
+                if any(not isinstance(p, Value) or p.text for p in parts):
+                    dropped = value.literal
                 parts = []
             elif index and parts:
                 parts.append("/")
             parts.append(value)
-        return Value.of(*parts)
+        result = Value.of(*parts)
+        if dropped is not None:
+            self.report("LAUNCH_PATH_JOIN_ABSOLUTE", part=dropped, path=result.text)
+        return result
 
     def s_FileContent(self, s: e.FileContent) -> Value:
         path = self.value(s.path).literal
