@@ -31,7 +31,8 @@ void configure(const rclcpp::Node::SharedPtr & node, const std::shared_ptr<Loade
   const srdf::ModelSharedPtr & srdf =
     loader->getSRDF() ? loader->getSRDF() : std::make_shared<srdf::Model>();
   for (const srdf::Model::Group & group : srdf->getGroups()) {
-    node->declare_parameter<std::string>("robot_description_kinematics." + group.name_ + ".kinematics_solver", "");
+    node->declare_parameter<std::string>(
+      "robot_description_kinematics." + group.name_ + ".kinematics_solver", "");
   }
   node->declare_parameter("robot_description_planning.joint_limits_count",
                           static_cast<int>(srdf->getVirtualJoints().size()));
