@@ -478,7 +478,8 @@ def cmd_capture(args: argparse.Namespace, out: Console, err: Console) -> int:
         err.print(f"haros-arch: cannot capture from {escape(where)}: "
                   f"{escape(str(error))}", highlight=False)
         return EXIT_USAGE
-    _write(json.dumps(data, indent=2) + "\n", args.output)
+    from .model.serialise import json_text
+    _write(json_text(data, indent=2) + "\n", args.output)
     return EXIT_OK
 
 
@@ -496,7 +497,8 @@ def cmd_compare(args: argparse.Namespace, out: Console, err: Console) -> int:
         err.print(f"haros-arch: cannot compare: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
-        _write(json.dumps(result.to_data(), indent=2) + "\n", None)
+        from .model.serialise import json_text
+        _write(json_text(result.to_data(), indent=2) + "\n", None)
         return EXIT_OK
     from .report.results import print_comparison
 
@@ -582,7 +584,8 @@ def cmd_launch(args: argparse.Namespace, out: Console, err: Console) -> int:
         err.print(f"haros-arch: --format {args.format} is for --flatten", highlight=False)
         return EXIT_USAGE
     if args.format == "json":
-        out.print(json.dumps(as_data(model), indent=2), highlight=False, markup=False)
+        from .model.serialise import json_text
+        out.print(json_text(as_data(model), indent=2), highlight=False, markup=False)
     elif args.tree:
         from .launch.tree_view import as_rich
 

@@ -42,7 +42,7 @@ from .model.load import from_data, location
 from .model.location import NOWHERE, Location
 from .model.model import Model
 from .model.runtime import REPEAT, Configuration, Link
-from .model.serialise import to_data
+from .model.serialise import json_text, to_data
 
 Elements = dict[tuple[str, str], tuple[dict[str, Any], str]]
 KINDS = ("node", "topic", "service", "action", "link", "parameter")
@@ -660,4 +660,4 @@ def _block_rows(config: ConfigDiff) -> tuple[str, ...]:
 
 
 def to_json(result: DiffResult) -> str:
-    return json.dumps(result.to_data(), indent=2, ensure_ascii=False) + "\n"
+    return json_text(result.to_data(), indent=2, ensure_ascii=False) + "\n"

@@ -176,4 +176,29 @@ def _read_back(config: Configuration, data: dict[str, Any], listed: set[int]) ->
 
 
 def dumps(model: Model) -> str:
-    return json.dumps(model_to_data(model), indent=2, ensure_ascii=False) + "\n"
+    return json_text(model_to_data(model), indent=2, ensure_ascii=False) + "\n"
+
+
+def json_text(data: Any, **options: Any) -> str:
+    """``json.dumps`` of ``data`` as JSON defines it, for what is written for a user or a
+    browser: a float that is no number JSON has (infinity, a parameter's default of
+    ``std::numeric_limits<double>::infinity()``, YAML's ``.inf``, in ros2_controllers'
+    joint_trajectory_controller model; NaN) is the string ``"Infinity"``,
+    ``"-Infinity"`` or ``"NaN"``. Python writes them as bare words, which JSON.parse
+    refuses: a report holding one opened as a blank page."""
+    try:
+        return json.dumps(data, allow_nan=False, **options)
+    except ValueError:
+        return json.dumps(_finite(data), allow_nan=False, **options)
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float) and value != value:
+        return "NaN"
+    if isinstance(value, float) and value in (float("inf"), float("-inf")):
+        return "Infinity" if value > 0 else "-Infinity"
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(item) for item in value]
+    return value

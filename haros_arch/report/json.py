@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from typing import TYPE_CHECKING, Any
 
-from ..model.serialise import to_data
+from ..model.serialise import json_text, to_data
 
 if TYPE_CHECKING:
     from ..model.model import Model
@@ -15,7 +15,7 @@ if TYPE_CHECKING:
 
 def document_json(data: dict[str, Any]) -> str:
     """``extract``'s JSON model (with its ``findings``), as written to a file."""
-    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+    return json_text(data, indent=2, ensure_ascii=False) + "\n"
 
 
 def document_text(model: Model, project: Project | None) -> str:
@@ -32,8 +32,8 @@ def document_text(model: Model, project: Project | None) -> str:
 
 
 def check_json(checked: Checked) -> str:
-    return json.dumps({"diagnostics": to_data(checked.diagnostics),
-                       "findings": to_data(checked.findings)}, indent=2) + "\n"
+    return json_text({"diagnostics": to_data(checked.diagnostics),
+                      "findings": to_data(checked.findings)}, indent=2) + "\n"
 
 
 def matches_json(matches: list[Match]) -> str:
@@ -42,4 +42,4 @@ def matches_json(matches: list[Match]) -> str:
     data = [{"configuration": m.configuration, "value": plain(m.value),
              "locations": [str(location_of(e)) for e in entities(m.value)
                            if location_of(e).file]} for m in matches]
-    return json.dumps(data, indent=2)
+    return json_text(data, indent=2)

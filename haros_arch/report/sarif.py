@@ -6,7 +6,6 @@ code-scanning UIs point at the source line.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -15,6 +14,7 @@ from .. import __version__
 from ..model.diagnostic import Diagnostic
 from ..model.finding import Finding
 from ..model.location import Location
+from ..model.serialise import json_text
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 LEVELS = {"error": "error", "warning": "warning", "info": "note"}
@@ -79,4 +79,4 @@ def to_sarif(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
 
 
 def dumps(*args: Any, **kwargs: Any) -> str:
-    return json.dumps(to_sarif(*args, **kwargs), indent=2) + "\n"
+    return json_text(to_sarif(*args, **kwargs), indent=2) + "\n"

@@ -12,14 +12,13 @@ from __future__ import annotations
 import base64
 import hashlib
 import html
-import json
 import os
 import re
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from ..model.serialise import to_data
+from ..model.serialise import json_text, to_data
 from .sources import collect_snippets
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -55,7 +54,7 @@ _SURROGATE = re.compile("[\ud800-\udfff]")
 
 def json_for_script(data: Any) -> str:
     """JSON that is safe inside a ``<script type="application/json">`` element."""
-    text = json.dumps(data, ensure_ascii=False, separators=(",", ":"))
+    text = json_text(data, ensure_ascii=False, separators=(",", ":"))
     # a lone surrogate (a name from a Python literal '\udc80') cannot be written as UTF-8;
     # in JSON text it only occurs inside strings, where \uXXXX gives it back to the page
     text = _SURROGATE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
