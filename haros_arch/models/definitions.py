@@ -21,7 +21,7 @@ import os
 import re
 from collections.abc import Iterable
 
-from ..extract.cpp.interfaces import parse_definition
+from ..extract.cpp.interfaces import definition_files, parse_definition
 from .generate import Entry
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -29,7 +29,6 @@ LIST = os.path.join(HERE, "interfaces.yaml")
 FOLDER = os.path.join(HERE, "interfaces")
 FORMAT = 1
 KINDS = {"msg": ".msg", "srv": ".srv", "action": ".action"}
-_LEFT_OUT = ("test", "tests", "doc", "docs")  # folders whose definitions are no package's
 _NAME = re.compile(r"<name>\s*([A-Za-z0-9_]+)\s*</name>")
 
 
@@ -67,32 +66,6 @@ def render(package: str, name: str, text: str) -> str:
     return "\n".join(lines)
 
 
-def definition_files(package: str, kind: str) -> dict[str, str]:
-    """A package's definitions of one kind (msg, srv, action) by name: the files in
-    ``<package>/<kind>/``, then those one folder further down, in ``<package>/<kind>/<sub>/``
-    or ``<package>/<sub>/<kind>/`` (rosidl takes the files its CMakeLists lists, and the
-    generated header is ``<package>/<kind>/<name>.hpp`` wherever the file was:
-    tier4_perception_msgs' ``msg/traffic_light/``, autoware_adapi_v1_msgs'
-    ``planning/msg/``); a name found twice is the first."""
-    extension = KINDS[kind]
-    found: dict[str, str] = {}
-    own = os.path.join(package, kind)
-    folders = [own]
-    for above in (own, package):
-        if os.path.isdir(above):
-            folders += [os.path.join(above, sub) if above == own
-                        else os.path.join(above, sub, kind)
-                        for sub in sorted(os.listdir(above))
-                        if not sub.startswith(".") and sub not in _LEFT_OUT]
-    for folder in folders:
-        if not os.path.isdir(folder):
-            continue
-        for file in sorted(os.listdir(folder)):
-            if file.endswith(extension) and os.path.isfile(os.path.join(folder, file)):
-                found.setdefault(file[: -len(extension)], os.path.join(folder, file))
-    return found
-
-
 def collect(entries: Iterable[Entry], sources: str) -> dict[str, dict[str, object]]:
     """Each distribution's document: its sources and its definitions."""
     documents: dict[str, dict[str, object]] = {}
@@ -114,8 +87,9 @@ def collect(entries: Iterable[Entry], sources: str) -> dict[str, dict[str, objec
         definitions = document["definitions"]
         assert isinstance(definitions, dict)
         for package in entry.packages:
-            for kind in KINDS:
-                for name, path in definition_files(packages[package], kind).items():
+            for kind, extension in KINDS.items():
+                for file, path in definition_files(packages[package], kind).items():
+                    name = file[: -len(extension)]
                     with open(path, encoding="utf-8", errors="replace") as handle:
                         definitions[f"{package}/{kind}/{name}"] = render(
                             package, name, handle.read())

@@ -875,26 +875,11 @@ class IncludeSetup:
 
     def _definitions(self, folder: str, kind: str) -> dict[str, str]:
         """The ``kind`` (msg, srv, action) definition files of a package folder, by file
-        name: those in ``kind/`` first, then any a few levels down, not in hidden or test
-        folders (rosidl takes them from the folders its CMakeLists lists: slam_toolbox's
-        ``srvs/``)."""
+        name (``interfaces.definition_files``; the folder walked once)."""
         found = self._defined.get(folder)
         if found is None:
-            found = self._defined[folder] = {}
-            for here, dirs, files in os.walk(folder):
-                depth = here[len(folder):].count(os.sep)
-                dirs[:] = [] if depth >= 2 else sorted(
-                    d for d in dirs if not d.startswith(".") and d not in ("test", "build"))
-                for file in sorted(files):
-                    if file.endswith((".msg", ".srv", ".action")):
-                        found.setdefault(file, os.path.join(here, file))
-        extension = "." + kind
-        chosen = {f: p for f, p in found.items() if f.endswith(extension)}
-        own = os.path.join(folder, kind)
-        if os.path.isdir(own):
-            chosen.update((f, os.path.join(own, f)) for f in os.listdir(own)
-                          if f.endswith(extension) and os.path.isfile(os.path.join(own, f)))
-        return chosen
+            found = self._defined[folder] = interfaces.definition_walk(folder)
+        return interfaces.definition_files(folder, kind, found)
 
     def _action(self, package: str, name: str, where: Location) -> bool:
         """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``.

@@ -168,6 +168,38 @@ WELL_KNOWN: dict[str, str] = {
                                       "StatisticDataPoint[] statistics",
 }
 
+def definition_walk(folder: str) -> dict[str, str]:
+    """Every message, service and action definition file of a package folder, by file
+    name, a few levels down, not in hidden, test or build folders (rosidl takes them from
+    the folders its CMakeLists lists: slam_toolbox's ``srvs/``, tier4_perception_msgs'
+    ``msg/traffic_light/``, autoware_adapi_v1_msgs' ``planning/msg/``); a name found
+    twice is the first, in sorted order."""
+    found: dict[str, str] = {}
+    for here, dirs, files in os.walk(folder):
+        depth = here[len(folder):].count(os.sep)
+        dirs[:] = [] if depth >= 2 else sorted(
+            d for d in dirs if not d.startswith(".") and d not in ("test", "build"))
+        for file in sorted(files):
+            if file.endswith((".msg", ".srv", ".action")):
+                found.setdefault(file, os.path.join(here, file))
+    return found
+
+
+def definition_files(folder: str, kind: str,
+                     walked: dict[str, str] | None = None) -> dict[str, str]:
+    """The ``kind`` (msg, srv, action) definition files of a package folder, by file
+    name: those of ``definition_walk`` (``walked``, when already made), the ones in
+    ``<folder>/<kind>/`` winning over others of the same name."""
+    extension = "." + kind
+    found = definition_walk(folder) if walked is None else walked
+    chosen = {f: p for f, p in found.items() if f.endswith(extension)}
+    own = os.path.join(folder, kind)
+    if os.path.isdir(own):
+        chosen.update((f, os.path.join(own, f)) for f in os.listdir(own)
+                      if f.endswith(extension) and os.path.isfile(os.path.join(own, f)))
+    return chosen
+
+
 # the catalogue of the standard interface packages' definitions, per ROS distribution
 # (``haros-arch models interfaces`` writes it from pinned public sources); the default
 # of each ROS generation is read when the run names no distribution of that ROS
