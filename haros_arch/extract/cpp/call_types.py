@@ -10,6 +10,7 @@ argument's C++ type, or an argument that names the type as a string
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
@@ -270,10 +271,11 @@ def _qualifiers(head: Cursor) -> set[int]:
     return found
 
 
-def _class_template_first(call: Cursor) -> Cursor | None:
-    """The class template written first among the template arguments of the called
-    function (``subscribe<pcl::PointCloud<P>>``, whose first type reference is ``P``);
-    None when a type is written first."""
+def _written_references(call: Cursor) -> Iterator[Cursor]:
+    """The template and type references written in the called function's name, in
+    order, but the class a resolved method is of (``Class::`` of ``Class::f<M>``) and the
+    qualifiers before the template arguments (``_qualifiers``: the same, where the call
+    is not resolved, the tokens tell)."""
     target = call.referenced
     owner = target.semantic_parent if target is not None else None
     head = callee(call)
@@ -282,30 +284,28 @@ def _class_template_first(call: Cursor) -> Cursor | None:
         if child.kind == CursorKind.TYPE_REF and (owner is None or child.referenced != owner):
             if qualifiers is None:
                 qualifiers = _qualifiers(head)
-            if child.extent.start.offset in qualifiers:
-                continue
+            if child.extent.start.offset not in qualifiers:
+                yield child
+        elif child.kind == CursorKind.TEMPLATE_REF:
+            yield child
+
+
+def _class_template_first(call: Cursor) -> Cursor | None:
+    """The class template written first among the template arguments of the called
+    function (``subscribe<pcl::PointCloud<P>>``, whose first type reference is ``P``);
+    None when a type is written first."""
+    for child in _written_references(call):
+        if child.kind == CursorKind.TYPE_REF:
             return None
-        if child.kind == CursorKind.TEMPLATE_REF and child.referenced is not None:
+        if child.referenced is not None:
             return child.referenced
     return None
 
 
 def template_argument(call: Cursor) -> Cursor | None:
     """The first type written as a template argument of the called function."""
-    target = call.referenced
-    owner = target.semantic_parent if target is not None else None
-    head = callee(call)
-    qualifiers: set[int] | None = None
-    for child in head.get_children():
-        if child.kind == CursorKind.TYPE_REF and (
-            owner is None or child.referenced != owner  # not ``Class::`` of Class::f<M>
-        ):
-            if qualifiers is None:
-                qualifiers = _qualifiers(head)
-            if child.extent.start.offset in qualifiers:
-                continue  # (the same, the call not resolved: the tokens tell)
-            return child
-    return None
+    return next((child for child in _written_references(call)
+                 if child.kind == CursorKind.TYPE_REF), None)
 
 
 def _explicit_parameter_type(call: Cursor, index: int | None) -> Type | None:

@@ -793,21 +793,19 @@ class IncludeSetup:
         names in lowercase: LIO-SAM's ``msg/cloud_info.msg`` and ``srv/save_map.srv``
         generate ``<lio_sam/cloud_info.h>`` and ``<lio_sam/save_map.h>``)."""
         found = _MESSAGE_HEADER.fullmatch(header)
-        if found is not None and not found.group(1).islower() and (
-                self._definition(found.group(1), found.group(2)) is None):
+        if found is not None and (
             # no ROS package is named so (REP 144: lowercase letters, digits and
             # underscores): a library's header (CGAL's
-            # <CGAL/Exact_predicates_inexact_constructions_kernel.h>, X11's <X11/Xlib.h>),
-            # missing, not a message of a package we have no definition of
-            return None
-        if found is not None and versions.RCLCPP.version(self.distro) is not None and (
-                self.workspace.find(found.group(1)) is None
-                and self._definition(found.group(1), found.group(2)) is None):
+            # <CGAL/Exact_predicates_inexact_constructions_kernel.h>, X11's <X11/Xlib.h>)
+            not found.group(1).islower()
             # a ROS 2 distribution generates ``<pkg/msg/name.hpp>``, never ``<pkg/Name.h>``:
-            # such a header of a package neither in the workspace nor in the catalogue is
-            # a library's, missing (lanelet2's <lanelet2_core/LaneletMap.h>,
-            # <lanelet2_routing/RoutingGraph.h> in Autoware), not a message without fields
-            return None
+            # such a header of a package not in the workspace is a library's (lanelet2's
+            # <lanelet2_core/LaneletMap.h>, <lanelet2_routing/RoutingGraph.h> in Autoware)
+            or (versions.RCLCPP.version(self.distro) is not None
+                and self.workspace.find(found.group(1)) is None)
+        ) and self._definition(found.group(1), found.group(2)) is None:
+            return None  # missing, not a message without fields of a package we have no
+            # definition of
         if found is not None:
             return found
         found = _DEFINED_HEADER.fullmatch(header)
