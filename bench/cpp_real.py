@@ -90,6 +90,7 @@ def main(argv: list[str] | None = None) -> None:
               f" walk / parse {spent['walk'] / max(spent['parse'], 1e-9):.2f}")
     if profile is not None:
         _profile_report(profile, args.profile)
+    nodes = [n for n in nodes if not n.deferred]  # plugin classes nothing loads
     if args.json is not None:
         _dump(args.json, nodes, found, workspace.root)
     errors = [d for d in found if d.code in ERRORS]

@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import os
 import time
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
@@ -253,9 +253,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
     every = [n for p in model.packages for n in p.nodes]
-    sources = cpp_sources(every, workspace)
     batch = None
-    if sources:  # libclang loads only when there is C++ to parse
+    if cpp_sources(every, workspace):  # libclang loads only when there is C++ to parse
         from .extract.cpp import CppBatch
 
         batch = CppBatch()
@@ -263,8 +262,9 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     others: dict[str, Any] = {}
     model.diagnostics.extend(_extract(every, workspace, project, options, env, batch,
                                       kept if tells else None, others))
+    every = without_deferred(model.packages, nodes)
     if record is not None and tells:
-        record.update(units=sources, gave=_gave(batch), others=others)
+        record.update(units=cpp_sources(every, workspace), gave=_gave(batch), others=others)
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
@@ -290,6 +290,18 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
             graph.find_candidates(config)
         model.configurations.append(config)
     return model
+
+
+def without_deferred(packages: Sequence[Package], nodes: dict[str, Node] | None = None,
+                     ) -> list[Node]:
+    """The packages' nodes, the plugin classes extraction left deferred (nothing loads
+    them: ``Node.deferred``) taken out of them (and of ``nodes``, by name)."""
+    for package in packages:
+        for node in package.nodes:
+            if node.deferred and nodes is not None and nodes.get(node.name) is node:
+                del nodes[node.name]
+        package.nodes = [node for node in package.nodes if not node.deferred]
+    return [node for package in packages for node in package.nodes]
 
 
 def read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagnostic]:

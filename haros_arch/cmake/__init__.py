@@ -436,7 +436,10 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
             libraries.setdefault(target.output_name or target.name, library)
     described = [Plugin(base, files.relpath(path))
                  for base, path in interpreter.plugin_descriptions]
-    classes, problems = plugins.plugin_classes(package, files, libraries, described)
+    roots = [package.root, *(workspace.packages[d].root for d in depends
+                             if d in workspace.packages and workspace.packages[d].root)]
+    classes, problems = plugins.plugin_classes(package, files, libraries, described,
+                                               plugins.loaded_bases(roots, files))
     nodes.extend(classes)
     found.extend(problems)
     found.extend(sources.diagnostics)

@@ -13,16 +13,16 @@ import json
 import os
 import re
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..files import read_text
-from ..model.source import Node
+from ..model.source import Node, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
-from ..plugins.classes import exported_classes
+from ..plugins.classes import base_name, exported_classes
 from ..plugins.inherit import without_other_classes, without_overridden
 from ..workspace import Workspace
 
@@ -73,17 +73,23 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                 completeness(node, [])
         spent[0] += time.perf_counter() - began
 
-    cpp = _cpp_nodes(nodes)
+    every = _cpp_nodes(nodes)
+    # plugin classes only code's ClassLoaders load (``Node.deferred``): read after the
+    # others, those of a base some node read so far loads by a parameter's value
+    cpp = [node for node in every if not node.deferred]
+    deferred = [node for node in every if node.deferred]
     if not cpp:
         other_nodes()
-    else:
+    meanwhile: Callable[[], None] | None = other_nodes
+    while cpp:
         from .cpp import extract_cpp_nodes  # libclang loads only when there is C++ to parse
 
         # the other nodes are read while the workers parse C++ (they need none of it)
         batch = extract_cpp_nodes([_paths(node, workspace) for node in cpp], workspace,
                                   cache_dir=cache_dir, jobs=jobs,
-                                  compile_commands=compile_commands, meanwhile=other_nodes,
+                                  compile_commands=compile_commands, meanwhile=meanwhile,
                                   distro=distro, entries=_entries(cpp))
+        meanwhile = None
         for node, result in zip(cpp, batch.results, strict=True):
             node.calls = without_other_classes(
                 node, without_overridden(node, result.calls, workspace), workspace)
@@ -98,6 +104,12 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         for node, result, said in zip(cpp, batch.results, macros, strict=True):
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics,
                                              *said], workspace))
+        bases = {base.rsplit("::", 1)[-1] for node in cpp for call in node.calls
+                 if (base := class_load_base(call.loads)) is not None}
+        cpp = [node for node in deferred if base_name(node.plugin_base or "") in bases]
+        deferred = [node for node in deferred if node not in cpp]
+        for node in cpp:
+            node.deferred = False
     found.extend(others)
     if timings is not None:  # with workers, the other nodes' seconds are within C++'s
         batch_seconds = time.perf_counter() - start if cpp else 0.0
@@ -236,6 +248,11 @@ def completeness(node: Node, found: Sequence[Diagnostic],
         node.completeness_reasons = ["no source file of the node was found"]
         return []
     loads = [d for d in found if d.code == "CPP_PLUGINS_LOADED" and d.location.file]
+    # a load of the class a parameter's value names (``model.source.PLUGINLIB_CLASS``):
+    # the graph loads it (``plugins.attach.chains``), the site hides nothing
+    named = {(c.location.file, c.location.line) for c in node.calls
+             if is_class_load(c.loads)}
+    loads = [d for d in loads if (d.location.file, d.location.line) not in named]
     # the nodelets run under the node's own name: the graph gives each instance their
     # calls (``CPP_NODELET_IN_PROCESS``, said instead of the load)
     own = [match.group(1) for d in found if d.code == "CPP_NODELET_IN_PROCESS"

@@ -25,6 +25,23 @@ CALL_KINDS = (
     "publish", "subscribe", "server", "client", "action-server", "action-client",
     "read", "write", "declare",
 )
+# ``PrimitiveCall.loads`` of a read whose parameter's value names the one class a
+# pluginlib ClassLoader of the node's code creates (``extract.cpp.api.PLUGINLIB``),
+# followed by ``:`` and the loader's base class when known (``pluginlib:karto::ScanSolver``)
+PLUGINLIB_CLASS = "pluginlib"
+
+
+def is_class_load(loads: str | None) -> bool:
+    """Whether ``PrimitiveCall.loads`` marks a read naming the one class a pluginlib
+    ClassLoader creates (``PLUGINLIB_CLASS``)."""
+    return loads is not None and loads.partition(":")[0] == PLUGINLIB_CLASS
+
+
+def class_load_base(loads: str | None) -> str | None:
+    """The base class such a load's ClassLoader loads, when known."""
+    return loads.partition(":")[2] or None if is_class_load(loads) else None  # type: ignore[union-attr]
+
+
 CallKind = Literal[
     "publish", "subscribe", "server", "client", "action-server", "action-client",
     "read", "write", "declare",
@@ -249,7 +266,9 @@ class PrimitiveCall:
     # by pluginlib, of the export tag / base class given (``plugins.hosts.CHAINS``): a
     # filters FilterChain's ``configure`` (ROS 1 its list of {name, type, params}, ROS 2
     # ``<prefix>filter1.type``, then filter2, ...); the graph gives the instance the calls
-    # of the classes its parameters name (``plugins.attach.chains``)
+    # of the classes its parameters name (``plugins.attach.chains``); or ``PLUGINLIB_CLASS``:
+    # the parameter's value is the lookup name of the one class a pluginlib ClassLoader
+    # of the code creates there, its default the code's
     loads: str | None = field(default=None, metadata={"optional": True})
     # ROS 1, a Gazebo classic plugin: the child element of its SDF (``sdf:robotNamespace``,
     # ``SDF_ELEMENT``) whose value is the one ``?`` of the handle's namespace
@@ -326,6 +345,11 @@ class Node:
     # a plugin class: the base class its plugin description names (``base_class_type``),
     # by which a host that loads every exported class of a base finds it (mavros)
     plugin_base: str | None = field(default=None, metadata={"optional": True})
+    # a plugin class that only a pluginlib ClassLoader in the code of its package (or of
+    # one it depends on) may load (``plugins.classes.loaded_bases``): extracted only
+    # once a node extracted reads a parameter naming a class of its base to load
+    # (``extract.extract_nodes``); one still deferred then is no node of the model
+    deferred: bool = field(default=False, metadata={"optional": True})
     # an interface model's node: the other names releases install its executable under
     # (cartographer_ros' occupancy_grid_node is cartographer_occupancy_grid_node in the
     # humble and jazzy releases); a launched executable of one of these names takes it

@@ -44,7 +44,7 @@ from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import NUMBERED, Node, PrimitiveCall, declared_defaults
 from ..model.values import UNKNOWN_MARK
-from ..pipeline import distro_variables, read_build_files
+from ..pipeline import distro_variables, read_build_files, without_deferred
 from ..processes import worker_pool
 from ..workspace import scan
 from .format import InterfaceModel, dumps
@@ -205,6 +205,7 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     found = read_build_files(package, workspace)
     found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1,
                            distro=task.entry.distro)  # the code of that release's rclcpp
+    without_deferred([package])
     override = _apply_override(task, package.nodes, found)
     outcome.override_problems = [f"{d.location.file}: {d.message}" for d in found
                                  if d.code == "HINT_INVALID"]

@@ -7,6 +7,15 @@ of a configuration the calls of the plugins its parameters name (imported by
 ``graph.build`` as ``plugins.attach``; not re-exported here, as it needs ``launch``).
 """
 
-from .classes import Files, Library, exported_classes, library_name, narrow, plugin_classes
+from .classes import (
+    Files,
+    Library,
+    exported_classes,
+    library_name,
+    loaded_bases,
+    narrow,
+    plugin_classes,
+)
 
-__all__ = ["Files", "Library", "exported_classes", "library_name", "narrow", "plugin_classes"]
+__all__ = ["Files", "Library", "exported_classes", "library_name", "loaded_bases", "narrow",
+           "plugin_classes"]

@@ -51,7 +51,7 @@ from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.location import Location
 from ..model.rosname import namespace_of, pattern_for, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
-from ..model.source import Node, PrimitiveCall
+from ..model.source import PLUGINLIB_CLASS, Node, PrimitiveCall, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
 from ..share import share_source
 from ..workspace import Workspace
@@ -826,8 +826,9 @@ def chains(config: Configuration, nodes: Mapping[str, Node], params: Params,
     for instance in list(config.nodes):
         for each in list(instance.links):
             call = each.call
-            if call is None or call.loads not in CHAINS or call.kind not in (
-                    "read", "declare"):
+            if call is None or call.loads is None or (
+                    call.loads not in CHAINS and not is_class_load(call.loads)) or (
+                    call.kind not in ("read", "declare")):
                 continue
             full = each.resource.name
             if (id(instance), full) in done:
@@ -838,6 +839,10 @@ def chains(config: Configuration, nodes: Mapping[str, Node], params: Params,
                 own_partial(instance, f"{where.file}:{where.line}: loads the plugin classes "
                             f"the parameters {full} name, whose name is not known "
                             "statically", owned)
+                continue
+            if is_class_load(call.loads):
+                out.extend(_class_load(instance, call, full, params, index, workspace,
+                                       models, config, owned, made, loaded))
                 continue
             slot = Slot(full, None, (call.loads,))
             if instance.ros_version == 2:
@@ -853,6 +858,41 @@ def chains(config: Configuration, nodes: Mapping[str, Node], params: Params,
             for choice in choices:
                 out.extend(_load(choice, slot, instance, index, workspace, models, params,
                                  config, owned, made, loaded, None))
+    return out
+
+
+def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: Params,
+                index: Mapping[str, Node], workspace: Workspace,
+                models: PluginModels | None, config: Configuration, owned: set[int],
+                made: dict[int, set[tuple[Any, ...]]], loaded: set[tuple[int, str]],
+                ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The calls of the one class a pluginlib ClassLoader of the instance's code creates,
+    named by the value of the parameter ``full`` (``PLUGINLIB_CLASS``): the value the
+    configuration sets, else the default the code gives it; its calls are the node's.
+    Neither: the instance is partial, as it is where a launch parameter not known
+    statically may set it."""
+    default = call.default if isinstance(call.default, str) and call.default else None
+    slot = Slot(None, full, (class_load_base(call.loads) or PLUGINLIB_CLASS,),
+                defaults=(("", default),) if default else ())
+    unseen = _may_be_set(full, params)
+    if unseen is not None:
+        own_partial(instance, unseen, owned)
+    choices = [replace(c, reads=(), conditions=(*call.conditions, *c.conditions))
+               for c in _chosen(instance, slot, params, base="")]
+    if not choices:
+        where = call.location
+        own_partial(instance, f"{where.file}:{where.line}: loads the plugin class the "
+                    f"parameter {full} names, which is not set and has no default", owned)
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    own = instance.node.package if instance.node is not None else ""
+    for choice in choices:
+        if own and choice.cls and models is not None and _lookup(
+                choice, index, workspace, models) is None:
+            # a class of the loading node's own package, whatever its namespace
+            # (slam_toolbox's ``solver_plugins::CeresSolver``), in that package's model
+            choice = replace(choice, node=models(f"{own}/{choice.cls.strip().lstrip(':')}"))
+        out.extend(_load(choice, slot, instance, index, workspace, models, params, config,
+                         owned, made, loaded, None))
     return out
 
 

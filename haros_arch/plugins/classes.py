@@ -84,16 +84,62 @@ def library_name(path: str) -> str:
     return name[3:] if name.startswith("lib") and len(name) > 3 else name
 
 
+# a pluginlib ClassLoader of a base class (``pluginlib::ClassLoader<karto::ScanSolver>``)
+_CLASS_LOADER = re.compile(r"\bClassLoader\s*<\s*([A-Za-z_][\w:]*)\s*>")
+
+
+def loaded_bases(roots: Iterable[str], workspace: Files) -> frozenset[str]:
+    """The base classes (the last part of their names) that pluginlib ClassLoaders in the
+    C++ files of these package folders load (their tests left out): the packages' code
+    may create a class of them by a parameter's value (``api.PLUGINLIB``), so a
+    package's exported classes of those bases are plugin nodes (``plugin_classes``).
+    Given the package's own folder and those of the workspace packages it depends on
+    (dwb_plugins' trajectory generator, of the base dwb_core's planner loads)."""
+    found: set[str] = set()
+    for root in roots:
+        found.update(remembered("class loaders", root, workspace,
+                                lambda r=root: _loaders(r, workspace)))  # type: ignore[misc]
+    return frozenset(found)
+
+
+_CPP_FILES = (".cpp", ".cc", ".cxx", ".hpp", ".h", ".hh", ".hxx")
+
+
+def _loaders(root: str, workspace: Files) -> frozenset[str]:
+    found: set[str] = set()
+    for folder, dirs, names in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in (
+            "test", "tests", "build", "install"))
+        for name in names:
+            if not name.endswith(_CPP_FILES):
+                continue
+            path = os.path.join(folder, name)
+            data, _ = read_bytes(path, workspace.location(path))
+            if data is None or b"ClassLoader" not in data:
+                continue
+            text = code_only(data.decode("utf-8", "replace"))
+            found.update(match.group(1).rsplit("::", 1)[-1]
+                         for match in _CLASS_LOADER.finditer(text))
+    return frozenset(found)
+
+
+def base_name(base: str) -> str:
+    """The last part of a base class's name, without template arguments."""
+    return base.split("<", 1)[0].strip().rsplit("::", 1)[-1]
+
+
 def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, Library],
-                   described: Sequence[Plugin] = ()) -> tuple[list[Node], list[Diagnostic]]:
+                   described: Sequence[Plugin] = (), loaded: frozenset[str] = frozenset(),
+                   ) -> tuple[list[Node], list[Diagnostic]]:
     """Nodes for the classes of the package's plugin descriptions: package.xml exports
     and ``described`` (ROS 2's ``pluginlib_export_plugin_description_file``).
 
     A nodelet (export tag ``nodelet``) is a ``nodelet`` node; a class some host of
     ``hosts.HOSTS`` loads (its export tag or base class is one the table names) is a
     ``plugin`` node. Each is named by its pluginlib lookup name (``name``, else
-    ``type``) and keeps its C++ type in ``plugin_class``. Classes nothing loads (rviz,
-    rqt panels) are not nodes.
+    ``type``) and keeps its C++ type in ``plugin_class``; so is a class of a base that
+    ``loaded`` names (``loaded_bases`` of the package's code). Classes nothing loads
+    (rviz, rqt panels) are not nodes.
     """
     # they read classes with this module's helpers
     from .inherit import built_sources, inherited_sources
@@ -104,7 +150,7 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     found: list[Diagnostic] = []
     for plugin in [*package.plugins, *described]:
         if plugin.kind not in NODE_PLUGIN_KINDS and plugin.kind not in bases and not any(
-                base.startswith(plugin.kind + "::") for base in bases):
+                base.startswith(plugin.kind + "::") for base in bases) and not loaded:
             continue
         path = os.path.join(workspace.root, plugin.file)
         roots = _read_description(path, workspace, found)
@@ -122,18 +168,27 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 name = cls.get("name") or cls.get("type")
                 base = cls.get("base_class_type", "")
                 if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base
-                                and base not in bases and plugin.kind not in bases):
+                                and base not in bases and plugin.kind not in bases
+                                and base_name(base) not in loaded):
                     continue
+                if not base and plugin.kind not in bases and not any(
+                        b.startswith(plugin.kind + "::") for b in bases) and (
+                        plugin.kind not in NODE_PLUGIN_KINDS):
+                    continue  # a description read only for the loaded bases
                 where = workspace.location(path, _line(cls), 0)
                 type_name = cls.get("type", "")
                 registered = _registered(type_name, libraries.get(wanted), libraries,
                                          workspace)
                 library = libraries.get(wanted) or _exporting(registered, libraries,
                                                               workspace)
-                if library is None:
+                kind: NodeKind = "nodelet" if plugin.kind in NODE_PLUGIN_KINDS else "plugin"
+                # a class only code's ClassLoaders load: a node once something loads it
+                # (``Node.deferred``), nothing said of it before
+                deferred = kind == "plugin" and bool(base) and (
+                    base not in bases and plugin.kind not in bases)
+                if library is None and not deferred:
                     found.append(diag.make("PLUGIN_LIBRARY_UNKNOWN", where,
                                            library=wanted, plugin=name))
-                kind: NodeKind = "nodelet" if plugin.kind in NODE_PLUGIN_KINDS else "plugin"
                 files = [] if library is None else library.sources if (
                     kind == "nodelet" or library.own is None) else library.own
                 sources = narrow(files, registered, workspace)
@@ -156,14 +211,14 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                         # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose
                         # ParamProvider reads their parameters
                         sources = library.with_elsewhere(sources)
-                if files and not sources:
+                if files and not sources and not deferred:
                     found.append(diag.make("PLUGIN_CLASS_NOT_BUILT", where, plugin=name,
                                            cls=registered, library=wanted or "?"))
                 nodes.append(Node(package.name, name, kind, "cpp", sources,
                                   rosname=_node_name(sources, names.get(base), workspace),
                                   conditions=library.conditions if library else (),
                                   location=where, plugin_class=type_name or None,
-                                  plugin_base=base or None))
+                                  plugin_base=base or None, deferred=deferred))
     return nodes, found
 
 

@@ -38,7 +38,13 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from ...model.source import LIFECYCLE_EVENTS, LIFECYCLE_SERVICES, SDF_ELEMENT, CallKind
+from ...model.source import (
+    LIFECYCLE_EVENTS,
+    LIFECYCLE_SERVICES,
+    PLUGINLIB_CLASS,
+    SDF_ELEMENT,
+    CallKind,
+)
 
 # (kind, name relative to the call's name's namespace or global, or "" for the call's
 # own name, ROS 1 type)
@@ -656,6 +662,20 @@ FILTERS: dict[tuple[str, str], RosFunction] = {
         "declare", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
         name_prefix="?.", library_default=True, standin_only=True, ros2_only=True),
 }
+# pluginlib's ClassLoader<Base> (ROS 1 and 2 alike) creating an instance of the class
+# whose lookup name it is given: where that name is the value of a parameter the node
+# reads (slam_toolbox's ``createSharedInstance(solver_plugin)``, ``solver_plugin`` read
+# from the parameter of that name with the default ``solver_plugins::CeresSolver``), the
+# call is a read of that parameter marked ``loads`` (``PLUGINLIB_CLASS``): the graph
+# loads the class its value (or the default) names into the node
+# (``plugins.attach.chains``). A name written in the code, or not known, makes no call:
+# the node stays partial for the load (``CPP_PLUGINS_LOADED``)
+_CLASS_LOAD = RosFunction("read", on_handle=False, call_site=False, standin_only=True,
+                          loads=PLUGINLIB_CLASS)
+PLUGINLIB: dict[tuple[str, str], RosFunction] = {
+    ("pluginlib::ClassLoader", method): _CLASS_LOAD for method in (
+        "createSharedInstance", "createUniqueInstance", "createUnmanagedInstance",
+        "createInstance", "createClassInstance")}
 # ROS 1 control_toolbox's Pid (noetic-devel pid.cpp): init(nh) reads the gains from the
 # handle's namespace, ``p`` required (init fails without it), the others with defaults,
 # and starts a dynamic_reconfigure server there whose config (cfg/Parameters.cfg) it
@@ -802,7 +822,8 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
                        "dynamic_reconfigure"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
-                                            **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX}
+                                            **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
+                                            **PLUGINLIB}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

@@ -132,6 +132,16 @@ NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | No
 EACH = "."
 
 
+# a pluginlib ClassLoader of a base class, and the words of a type that hold an object
+# of a class rather than name it (``_of_loaded_base``)
+_CLASS_LOADER = re.compile(rb"\bClassLoader\s*<\s*([A-Za-z_][\w:]*)\s*>")
+_TYPE_WORDS = re.compile(r"[A-Za-z_][\w:]*")
+_OBJECTS = (CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL)
+_HOLDERS = frozenset({"std::shared_ptr", "std::unique_ptr", "boost::shared_ptr", "const",
+                      "volatile", "std::weak_ptr", "Ptr", "SharedPtr", "UniquePtr",
+                      "pluginlib::UniquePtr", "std::function", "void"})
+
+
 class ChoiceName(str):
     """One of the values a call's name may hold (``Scope.written_choices``): the call
     with it is made under ``condition`` (a side of the ``if`` that decides it), and it is
@@ -1352,6 +1362,8 @@ class CallFinder:
             return  # a callback binding: the member's calls are read where it is defined
         if given and self._listener_registration(call, given, function):
             return  # the vendor sees the object as its own base: it calls the overrides
+        if given and self._of_loaded_base(call):
+            return  # the class pluginlib loads makes the calls: said where it loads
         # the function's own owner: ``_gives`` asks before any walk of it sets ``_owner``
         owner = (owner_of(function) if function is not None else self._owner) or ""
         if not given and self._of_unknown_base(unknown, function):
@@ -1375,6 +1387,37 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call),
                 given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+
+    def _of_loaded_base(self, call: Cursor) -> bool:
+        """Whether ``call`` is a method of an object held as the base class that a
+        pluginlib ClassLoader written beside it (in the file declaring the object, or
+        the call's) loads: slam_toolbox's ``solver_->Configure(shared_from_this())``,
+        ``solver_`` a ``std::shared_ptr<karto::ScanSolver>`` and the class's
+        ``pluginlib::ClassLoader<karto::ScanSolver> solver_loader_``. The class loaded
+        makes what calls there are: ``CPP_PLUGINS_LOADED`` says so at the load, or the
+        graph gives them (``api.PLUGINLIB_CLASS``); the base's declaration is no code."""
+        # the object the callee is read from, first and innermost in the callee's
+        # expression (through a smart pointer's ``operator->``, or a permissive value's
+        # call operator: ``solver_`` before ``solver_->Configure``)
+        children = list(call.get_children())
+        named = sorted((((c.extent.start.offset, c.extent.end.offset), c.referenced) for c in (
+            walk_cursors(children[0]) if children else ()) if c.kind in (
+            CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR) and c.referenced is not None
+            and c.referenced.kind in _OBJECTS), key=lambda each: each[0])
+        if not named:
+            return False
+        decl = named[0][1]
+        classes = [w for w in _TYPE_WORDS.findall(decl.type.spelling) if w not in _HOLDERS]
+        if not classes or decl.location.file is None or call.location.file is None:
+            return False
+        base = classes[-1].rsplit("::", 1)[-1].encode()
+        for name in dict.fromkeys((decl.location.file.name, call.location.file.name)):
+            data = self.source.get(name)
+            if data and b"ClassLoader" in data and any(
+                    m.group(1).rsplit(b"::", 1)[-1] == base
+                    for m in _CLASS_LOADER.finditer(data)):
+                return True
+        return False
 
     def _listener_registration(self, call: Cursor, given: list[Cursor],
                                function: Cursor | None) -> bool:
@@ -1790,6 +1833,9 @@ class CallFinder:
                 names = [(_prefixed(name, spec) + spec.name_suffix if spec.suffix_appended
                           else join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
+        if spec.loads == api.PLUGINLIB_CLASS:
+            self._class_load(names, conditions, location, site.type)
+            return
         owner = self._owner
         if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
             made = handle_node(callee)
@@ -1996,6 +2042,25 @@ class CallFinder:
             if spec.reconfigure:
                 self._reconfigured(call, cls, name, handle_namespace, conditions, location,
                                    owner)
+
+    def _class_load(self, names: list[tuple[str, NameSource | None]],
+                    conditions: tuple[Condition, ...], location: Location,
+                    made: Type) -> None:
+        """pluginlib's ClassLoader creating the class whose lookup name is wholly the value
+        of a parameter the node reads (``api.PLUGINLIB_CLASS``): a read of that parameter
+        marked ``loads``, with the loader's base class (the class of the pointer ``made``)
+        and the default the code gives it; any other name makes none."""
+        classes = [w for w in _TYPE_WORDS.findall(made.spelling) if w not in _HOLDERS]
+        base = classes[0] if classes and classes[0] != synthesis.ANY else ""
+        loads = f"{api.PLUGINLIB_CLASS}:{base}" if base else api.PLUGINLIB_CLASS
+        for written, source in names:
+            if written != UNKNOWN_MARK or source is None or source[3] is not None or (
+                    source[5] is not None or UNKNOWN_MARK in source[0]):
+                continue  # a class written in the code, or not known
+            self.calls.append(PrimitiveCall(
+                kind="read", name=source[0], type="str", conditions=conditions,
+                location=location, has_default=source[1] is not None, default=source[1],
+                loads=loads, node_name=self._owner))
 
     def _reconfigured(self, call: Cursor, cls: Cursor | None, name: str,
                       namespace: str | None, conditions: tuple[Condition, ...],
@@ -2760,22 +2825,36 @@ class CallFinder:
 
     def _host_value_or_default(self, decl: Cursor, expr: Cursor, scope: Scope, depth: int,
                                value: bool) -> Source | None:
-        """A variable the body writes twice, a host's value (``api.RosFunction.
-        value_only``) and a literal: the value with the literal as its default. Gazebo
-        plugins write ``topic_ = "imu"; if (_sdf->HasElement("topicName")) topic_ =
-        _sdf->Get<std::string>("topicName");`` (or the literal in the ``else``)."""
+        """A variable the body writes twice, a parameter's or a host's value
+        (``api.RosFunction.value_only``) and a literal: the value with the literal as
+        its default, unless the read gives its own. Gazebo plugins write ``topic_ =
+        "imu"; if (_sdf->HasElement("topicName")) topic_ = _sdf->Get<std::string>(
+        "topicName");`` (or the literal in the ``else``); slam_toolbox ``solver_plugin =
+        "solver_plugins::CeresSolver"``, declares the parameter with it, then
+        ``solver_plugin = get_parameter("solver_plugin").as_string()``."""
         written = scope.values_written(decl, expr)
-        if len(written) != 2 or None in written:
+        values = [each for each in written if each is not None]
+        if len(values) != len(written):
+            return None
+        return self._literal_or_parameter(values, scope, depth, value)
+
+    def _literal_or_parameter(self, written: list[Cursor], scope: Scope, depth: int,
+                              value: bool) -> Source | None:
+        """Of the two values a variable is written, one a literal and the other a
+        parameter's or a host's value: that value, the literal its default unless the
+        read gives its own (``_host_value_or_default``, ``_written_once``)."""
+        if len(written) != 2:
             return None
         for index, each in enumerate(written):
             other = written[1 - index]
-            assert each is not None and other is not None
             parts = scope.string(other)
             if not _known(parts):
                 continue
             source = self._parameter_source(each, scope, depth + 1, value)
             if source is not None and source[0].startswith(SDF_ELEMENT):
                 return source[0], render(parts), None
+            if source is not None and UNKNOWN_MARK not in source[0]:
+                return source[0], render(parts) if source[1] is None else source[1], source[2]
         return None
 
     def _written_once(self, member: Cursor, depth: int,
@@ -2784,12 +2863,19 @@ class CallFinder:
         read or declaration of that parameter, in another method than the one using it
         (rplidar_ros' ``init_param()``, which the constructor calls before it makes the
         publisher: ``get_parameter("topic_name", topic_name_)``, ``frame_ =
-        declare_parameter("frame_id", ..)``)."""
-        if self.members is None or member.kind != CursorKind.FIELD_DECL or (
-            self.members.writes(member) != 1
-        ):
+        declare_parameter("frame_id", ..)``), or when one method writes it a literal and
+        that parameter's value (slam_toolbox's ``setParams()``: ``map_name_ =
+        std::string("/map")``, then ``map_name_ = get_parameter("map_name").as_string()``:
+        ``_literal_or_parameter``)."""
+        if self.members is None or member.kind != CursorKind.FIELD_DECL:
             return None
-        assigned = self.members.assignments(member)
+        writes = self.members.writes(member)
+        assigned = self.members.assignments(member) if writes in (1, 2) else []
+        if writes == 2 and len(assigned) == 2 and assigned[0][1] == assigned[1][1]:
+            return self._literal_or_parameter([written for written, _ in assigned],
+                                              self._scope_of(assigned[0][1]), depth, value)
+        if writes != 1:
+            return None
         if len(assigned) == 1:
             written, function = assigned[0]
             return self._parameter_source(

@@ -978,6 +978,28 @@ template<class T> struct numeric_limits {
   static constexpr T epsilon() noexcept;
   static constexpr T infinity() noexcept;
   static constexpr T quiet_NaN() noexcept;
+  static constexpr T signaling_NaN() noexcept;
+  static constexpr T denorm_min() noexcept;
+  static constexpr T round_error() noexcept;
+  static constexpr bool is_signed = true;
+  static constexpr bool is_integer = false;
+  static constexpr bool is_exact = false;
+  static constexpr bool has_infinity = true;
+  static constexpr bool has_quiet_NaN = true;
+  static constexpr bool has_signaling_NaN = true;
+  static constexpr bool is_iec559 = true;
+  static constexpr bool is_bounded = true;
+  static constexpr bool is_modulo = false;
+  static constexpr bool traps = false;
+  static constexpr bool tinyness_before = false;
+  static constexpr int digits = 53;
+  static constexpr int digits10 = 15;
+  static constexpr int max_digits10 = 17;
+  static constexpr int radix = 2;
+  static constexpr int min_exponent = -1021;
+  static constexpr int min_exponent10 = -307;
+  static constexpr int max_exponent = 1024;
+  static constexpr int max_exponent10 = 308;
 };
 
 // <memory>
