@@ -268,7 +268,11 @@ class Namespaces:
                 return UNKNOWN
             found = found or assigned
         value, where = found if found is not None else (None, None)
-        if value is None and found is not None:  # left to its default initialiser
+        if value is None and (found is not None or self.sites is None
+                              or not constructed_elsewhere(field, self.source)):
+            # left to its default initialiser, or set by no constructor (of this file:
+            # one elsewhere may give it another): ``ros::NodeHandle pnh_{"~"};``,
+            # ``ros::NodeHandle pnh_ = ros::NodeHandle("~");``
             value, where = initializer(field), None
         if value is None:
             # a member nothing sets: the default handle when it holds one, unless its
