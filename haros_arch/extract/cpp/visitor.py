@@ -184,7 +184,8 @@ CAMERA_INFO = "sensor_msgs/CameraInfo"  # an image_transport camera's sibling to
 # rclcpp::Parameter's typed accessors and the parameter type each asks for
 _TAKEN_AS = {"as_int": "int", "as_double": "double", "as_string": "str", "as_bool": "bool",
              "as_integer_array": "int[]", "as_double_array": "double[]",
-             "as_string_array": "str[]", "as_bool_array": "bool[]"}
+             "as_string_array": "str[]", "as_bool_array": "bool[]",
+             "as_byte_array": msg_types.BYTE_ARRAY}
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
                             "get_value", "value_to_string", "get_parameter_value",
                             # SDFormat's ``GetElement("key")->GetValue()->GetAsString()``
