@@ -691,7 +691,7 @@ def _this_member(access: Node) -> Node | None:
     static member of that name the class declares, else one of the classes it derives
     from, nearest first; None for any other access, or a name none of them declares
     (a member of a base that depends on the template's parameters)."""
-    children = access._children
+    children = list(access.get_children())
     if not children or children[0].kind != CursorKind.CXX_THIS_EXPR:
         return None
     this = children[0]
@@ -701,8 +701,8 @@ def _this_member(access: Node) -> Node | None:
         tokens.pop(0)
     if not tokens or not (tokens[0][0].isalpha() or tokens[0][0] == "_"):
         return None
-    pointee = this.type.get_pointee()
-    owner = access._unit.node(pointee.get_declaration()) if pointee is not None else None
+    pointee: Type = this.type.get_pointee()
+    owner = access._unit.node(pointee.get_declaration())
     return _declared_member(owner, tokens[0], 0)
 
 
@@ -711,17 +711,14 @@ def _declared_member(owner: Node | None, name: str, depth: int) -> Node | None:
         return None
     definition = owner.get_definition() or owner
     bases: list[Node] = []
-    for child in definition._children:
+    for child in definition.get_children():
         if child.kind in _MEMBERS and child.spelling == name:
             return child
         if child.kind == CursorKind.CXX_BASE_SPECIFIER:
-            base = child.referenced or child.type.get_declaration()
-            if isinstance(base, Node):
-                bases.append(base)
-            elif base is not None:
-                found = definition._unit.node(base)
-                if found is not None:
-                    bases.append(found)
+            base: Cursor | None = child.referenced or child.type.get_declaration()
+            found = base if isinstance(base, Node) else definition._unit.node(base)
+            if found is not None:
+                bases.append(found)
     for base in bases:
         found = _declared_member(base, name, depth + 1)
         if found is not None:

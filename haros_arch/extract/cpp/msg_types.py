@@ -162,8 +162,9 @@ def written_param_type(text: str) -> str | None:
 
 def param_type(ctype: Type) -> str | None:
     """The parameter type of a C++ value type, where cheap: double, int, str, bool, an
-    array of one (``T[]``), rclcpp's byte array (``std::vector<uint8_t>``), and ``dict`` for a ``std::map`` keyed by strings (roscpp's
-    getParam fills one from a dictionary only)."""
+    array of one (``T[]``), rclcpp's byte array (``std::vector<uint8_t>``), and
+    ``dict`` for a ``std::map`` keyed by strings (roscpp's getParam fills one from a
+    dictionary only)."""
     ctype = _bare(ctype)
     if ctype.kind in _PARAM_TYPES:
         return _PARAM_TYPES[ctype.kind]
