@@ -98,6 +98,8 @@ class Condition:
 # argument compared with a string
 _EVAL = re.compile(r"\s*\$\(eval\s+(.+?)\s*\)\s*")
 _COMPARED = re.compile(r"(.+?)\s*(==|!=)\s*(.+)")
+# ``$(eval x in ['a', 'b'])``, ``$(eval arg('x') not in ('a', 'b'))``: one of strings
+_MEMBER = re.compile(r"(.+?)\s+(in|not\s+in)\s*[\[(]\s*(.*?)\s*,?\s*[\])]")
 _ARG = re.compile(r"""(?:arg\(\s*(['"])(\w+)\1\s*\)|([A-Za-z_]\w*))""")
 _STRING = re.compile(r"""(['"])([^'"]*)\1""")
 
@@ -110,6 +112,16 @@ def _equality(condition: Condition) -> tuple[str, tuple[str, ...], bool] | None:
     if condition.compares is not None:
         return condition.compares
     inner = _EVAL.fullmatch(condition.text)
+    member = _MEMBER.fullmatch(inner.group(1)) if inner else None
+    if member is not None:
+        name_side, operator, items = member.groups()
+        name = _ARG.fullmatch(name_side)
+        strings = [_STRING.fullmatch(item.strip()) for item in items.split(",")]
+        if name is None or name_side in ("True", "False") or not all(strings):
+            return None
+        inside = (operator == "in") == (condition.statement == "if")
+        return (name.group(2) or name.group(3),
+                tuple(m.group(2) for m in strings if m is not None), inside)
     compared = _COMPARED.fullmatch(inner.group(1)) if inner else None
     if compared is None:
         return None

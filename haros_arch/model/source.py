@@ -273,7 +273,10 @@ class PrimitiveCall:
     # ROS 1, a Gazebo classic plugin: the child element of its SDF (``sdf:robotNamespace``,
     # ``SDF_ELEMENT``) whose value is the one ``?`` of the handle's namespace
     # (``handle_namespace``), where the name's own part holds another (``name_param``);
-    # robot.attach fills both from the robot description
+    # or the elements, separated by spaces, that give each ``?`` of that namespace in
+    # order (hector's sonar serves its dynamic_reconfigure on ``NodeHandle(*nh, topic_)``:
+    # ``sdf:robotNamespace sdf:topicName``); robot.attach fills them from the robot
+    # description
     namespace_param: str | None = field(default=None, metadata={"optional": True})
     # a ``read`` of no parameter but of the process's ``name:=value`` command-line word
     # (roscpp's ``ros::getROSArg(argc, argv, "name")``; ``name`` as written, matched

@@ -813,18 +813,21 @@ def sdf_filled(call: PrimitiveCall, element: etree._Element,
     with the default the code gives; left ``?`` when none is there. The ``sdf:``
     parameter is no ROS parameter: it goes."""
     param = call.name_param or ""
-    if not param.startswith(SDF_ELEMENT):
+    if not param.startswith(SDF_ELEMENT) and not call.namespace_param:
         return replace(call, conditions=(*conditions, *call.conditions), origin="description")
     name, namespace = call.name, call.handle_namespace
-    outer = _sdf_value(element, call.namespace_param, given)
-    if outer is not None and namespace and name.startswith(namespace.rstrip("/") + "/"):
+    # the handle namespace's unknown runs, in order, each a child element's text
+    outers = [_sdf_value(element, key, given) for key in (call.namespace_param or "").split()]
+    if outers and None not in outers and namespace and len(outers) <= namespace.count(
+            UNKNOWN_MARK) and name.startswith(namespace.rstrip("/") + "/"):
         rest = name[len(namespace.rstrip("/")) + 1:]
-        head, _, tail = namespace.partition(UNKNOWN_MARK)
-        namespace = clean_join(head, outer, tail)
+        for outer in outers:
+            head, _, tail = namespace.partition(UNKNOWN_MARK)
+            namespace = clean_join(head, cast(str, outer), tail)
         name = f"{namespace.rstrip('/')}/{rest}" if namespace.strip("/") else (
             namespace + rest)
-    value = _sdf_value(element, param, given)
-    if value is None:
+    value = _sdf_value(element, param, given) if param.startswith(SDF_ELEMENT) else None
+    if value is None and param.startswith(SDF_ELEMENT):
         value = call.name_default
     if value is not None and UNKNOWN_MARK not in value:
         name = _one_filled(name, namespace, value)

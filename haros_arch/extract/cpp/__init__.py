@@ -18,7 +18,14 @@ from collections.abc import Callable, Collection, Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from clang.cindex import Cursor, CursorKind, TranslationUnit, TranslationUnitLoadError
+from clang.cindex import (
+    Cursor,
+    CursorKind,
+    SourceLocation,
+    SourceRange,
+    TranslationUnit,
+    TranslationUnitLoadError,
+)
 from clang.cindex import Diagnostic as ClangDiagnostic
 
 from ... import diagnostics as diag
@@ -132,6 +139,13 @@ class _Error:
 
 # clang's error for a function template used with a type of no linkage and not defined
 _UNDEFINED_HERE = "is used but not defined in this translation unit, and cannot be defined"
+# libclang 18 takes ``this->member_`` in a class template as dependent (clang 19 looks the
+# current instantiation up), so ``this->node_->create_subscription<MsgT>(...)`` asks for
+# ``template`` before the name, which a compiler does not: a member whose type depends on
+# the template's parameters would need it there too (g++ refuses the call without it)
+_TEMPLATE_KEYWORD = re.compile(
+    r"use 'template' keyword to treat '\w+' as a dependent template name")
+_THIS_MEMBER = ("this", "->")
 
 
 def _errors(tu: TranslationUnit) -> list[_Error]:
@@ -154,6 +168,9 @@ def _errors(tu: TranslationUnit) -> list[_Error]:
                 # with the unknown names declared no better than one without (bwi's
                 # logical translator kept ``boost::algorithm`` unknown)
                 continue
+            if name is not None and _TEMPLATE_KEYWORD.fullmatch(d.spelling) and (
+                    _through_this_member(tu, loc)):
+                continue
             if name is not None and name not in full:
                 full[name] = os.path.abspath(name)
             spelling = d.spelling
@@ -163,6 +180,17 @@ def _errors(tu: TranslationUnit) -> list[_Error]:
                                 loc.line, loc.column, loc.offset, notes))
         tu._haros_errors = found
     return found
+
+
+def _through_this_member(tu: TranslationUnit, at: SourceLocation) -> bool:
+    """Whether the tokens of ``at``'s line before it end with ``this->name->`` or
+    ``this->name.``: a template named through a member of the current instantiation
+    (``_TEMPLATE_KEYWORD``)."""
+    start = SourceLocation.from_position(tu, at.file, at.line, 1)
+    tokens = [t.spelling for t in tu.get_tokens(extent=SourceRange.from_locations(start, at))
+              if t.extent.end.offset <= at.offset]
+    return len(tokens) >= 4 and tuple(tokens[-4:-2]) == _THIS_MEMBER and (
+        tokens[-1] in ("->", ".")) and (tokens[-2][0].isalpha() or tokens[-2][0] == "_")
 
 
 def _names_fieldless_type(spelling: str, packages: set[str]) -> bool:

@@ -12,7 +12,11 @@ the one ``Node`` of those bytes in the unit, so later walks run over Python list
 
 Nothing here changes an answer: a ``Node`` is the cursor libclang gave, its cached
 facts are those libclang returns for it (a parsed unit never changes), and two nodes
-are equal exactly when ``clang_equalCursors`` says so.
+are equal exactly when ``clang_equalCursors`` says so. One exception, for libclang 18:
+``this->member_`` in a class template is a dependent member access there (clang 19
+looks the current instantiation up at definition), which refers to nothing; its
+``referenced`` is the data member of that name the class (or a base it names) declares,
+as clang 19 and a compiler's instantiation find it (``_this_member``).
 """
 
 from __future__ import annotations
@@ -619,7 +623,10 @@ class Node(Cursor):
 
     @cached
     def referenced(self) -> Node | None:
-        return self._related(_raw().referenced)
+        found = self._related(_raw().referenced)
+        if found is None and self.kind == CursorKind.MEMBER_REF_EXPR:
+            return _this_member(self)
+        return found
 
     @cached
     def semantic_parent(self) -> Node | None:
@@ -668,6 +675,55 @@ class Node(Cursor):
 
     def is_definition(self) -> bool:
         return self._is_definition
+
+
+_MEMBERS = frozenset({CursorKind.FIELD_DECL, CursorKind.VAR_DECL})
+_CLASSES = frozenset({CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_DECL,
+                      CursorKind.STRUCT_DECL,
+                      CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+MAX_BASES = 4  # base classes followed up from a class template for ``this->member``
+
+
+def _this_member(access: Node) -> Node | None:
+    """The data member ``this->name`` names in a class template, which libclang 18 keeps
+    as a dependent member access referring to nothing (yasmin's ``MonitorState<MsgT>``:
+    ``this->node_->create_subscription<MsgT>(this->topic_name, ...)``): the field or
+    static member of that name the class declares, else one of the classes it derives
+    from, nearest first; None for any other access, or a name none of them declares
+    (a member of a base that depends on the template's parameters)."""
+    children = list(access.get_children())
+    if not children or children[0].kind != CursorKind.CXX_THIS_EXPR:
+        return None
+    this = children[0]
+    tokens = [t.spelling for t in access.get_tokens()
+              if t.extent.start.offset >= this.extent.end.offset]
+    while tokens and tokens[0] in ("->", "template"):
+        tokens.pop(0)
+    if not tokens or not (tokens[0][0].isalpha() or tokens[0][0] == "_"):
+        return None
+    pointee: Type = this.type.get_pointee()
+    owner = access._unit.node(pointee.get_declaration())
+    return _declared_member(owner, tokens[0], 0)
+
+
+def _declared_member(owner: Node | None, name: str, depth: int) -> Node | None:
+    if owner is None or owner.kind not in _CLASSES or depth > MAX_BASES:
+        return None
+    definition = owner.get_definition() or owner
+    bases: list[Node] = []
+    for child in definition.get_children():
+        if child.kind in _MEMBERS and child.spelling == name:
+            return child
+        if child.kind == CursorKind.CXX_BASE_SPECIFIER:
+            base: Cursor | None = child.referenced or child.type.get_declaration()
+            found = base if isinstance(base, Node) else definition._unit.node(base)
+            if found is not None:
+                bases.append(found)
+    for base in bases:
+        found = _declared_member(base, name, depth + 1)
+        if found is not None:
+            return found
+    return None
 
 
 _STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")

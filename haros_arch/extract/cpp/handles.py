@@ -133,6 +133,10 @@ class Namespaces:
         # None when no string or several gave one
         self.unknown_from: tuple[Cursor, Scope] | None = None
         self._unknown_count = 0
+        # the strings that gave it each of its unknown runs, in order, when each gave one
+        # (hector's sonar plugin: ``ros::NodeHandle(*node_handle_, topic_)``, the
+        # plugin's robotNamespace, then its topicName); empty otherwise
+        self.unknown_parts: list[tuple[Cursor, Scope]] = []
         # the last namespace asked for is a ROS 1 controller's root handle
         # (``controller_root``): the manager's namespace, not known here
         self.root = False
@@ -161,22 +165,25 @@ class Namespaces:
         ``resolveName``)."""
         if self._asked >= _MAX_ASKED:
             return UNKNOWN
-        state = (self.unknown_from, self._unknown_count, self.root)
+        state = (self.unknown_from, self._unknown_count, self.root, self.unknown_parts)
         self._asked += 1
         try:
             found = self.of(expr, scope)
             return UNKNOWN if self.root else found
         finally:
             self._asked -= 1
-            self.unknown_from, self._unknown_count, self.root = state
+            self.unknown_from, self._unknown_count, self.root, self.unknown_parts = state
 
     def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
         """The namespace of the handle ``expr`` stands for."""
         if depth == 0:
             self.unknown_from, self._unknown_count, self.root = None, 0, False
+            self.unknown_parts = []
         found = self._namespace(expr, scope, depth)
         if depth == 0 and self._unknown_count != 1:
             self.unknown_from = None
+        if depth == 0 and len(self.unknown_parts) != self._unknown_count:
+            self.unknown_parts = []
         if (found == UNKNOWN or any(PLACEHOLDER in (p or "") for p in found)) and (
             is_ros2_node(record_class(expr))
         ):
@@ -268,7 +275,11 @@ class Namespaces:
                 return UNKNOWN
             found = found or assigned
         value, where = found if found is not None else (None, None)
-        if value is None and found is not None:  # left to its default initialiser
+        if value is None and (found is not None or self.sites is None
+                              or not constructed_elsewhere(field, self.source)):
+            # left to its default initialiser, or set by no constructor (of this file:
+            # one elsewhere may give it another): ``ros::NodeHandle pnh_{"~"};``,
+            # ``ros::NodeHandle pnh_ = ros::NodeHandle("~");``
             value, where = initializer(field), None
         if value is None:
             # a member nothing sets: the default handle when it holds one, unless its
@@ -296,6 +307,8 @@ class Namespaces:
         if "?" in written:
             self.unknown_from = (expr, scope) if written.count("?") == 1 else None
             self._unknown_count += written.count("?")
+            if written.count("?") == 1:
+                self.unknown_parts.append((expr, scope))
 
     def _assigned(self, field: Cursor, depth: int = 0
                   ) -> tuple[Cursor | None, Cursor] | None:

@@ -26,6 +26,11 @@ _PARAM_TYPES = {
     TypeKind.SHORT: "int", TypeKind.USHORT: "int", TypeKind.FLOAT: "double",
     TypeKind.DOUBLE: "double",
 }
+# rclcpp's byte array parameter (``PARAMETER_BYTE_ARRAY``), the ``std::vector<uint8_t>``
+# a ParameterValue holds; roscpp has no such parameter type (getParam takes no vector of
+# bytes), so only ROS 2 code names it
+BYTE_ARRAY = "byte[]"
+_BYTES = frozenset({"uint8_t", "std::uint8_t", "unsigned char"})
 
 
 def message_type(ctype: Type, service: bool = False,
@@ -144,6 +149,8 @@ def written_param_type(text: str) -> str | None:
     text = " ".join(text.replace("::", " :: ").split()).replace(" :: ", "::").strip()
     text = text.removeprefix("const ").lstrip(":")
     if text.startswith(("std::vector<", "vector<")) and text.endswith(">"):
+        if text[text.index("<") + 1:-1].strip() in _BYTES:
+            return BYTE_ARRAY
         inner = written_param_type(text[text.index("<") + 1:-1])
         return f"{inner}[]" if inner is not None and not inner.endswith("[]") else None
     if text in _WRITTEN_SCALARS:
@@ -155,8 +162,9 @@ def written_param_type(text: str) -> str | None:
 
 def param_type(ctype: Type) -> str | None:
     """The parameter type of a C++ value type, where cheap: double, int, str, bool, an
-    array of one (``T[]``), and ``dict`` for a ``std::map`` keyed by strings (roscpp's
-    getParam fills one from a dictionary only)."""
+    array of one (``T[]``), rclcpp's byte array (``std::vector<uint8_t>``), and
+    ``dict`` for a ``std::map`` keyed by strings (roscpp's getParam fills one from a
+    dictionary only)."""
     ctype = _bare(ctype)
     if ctype.kind in _PARAM_TYPES:
         return _PARAM_TYPES[ctype.kind]
@@ -171,6 +179,8 @@ def param_type(ctype: Type) -> str | None:
         return "str"
     if decl.spelling == "vector" and ctype.get_num_template_arguments() > 0:
         element = ctype.get_template_argument_type(0)
+        if element.get_canonical().kind == TypeKind.UCHAR:
+            return BYTE_ARRAY
         inner = param_type(element) if element.kind != TypeKind.INVALID else None
         return f"{inner}[]" if inner is not None and not inner.endswith("[]") else None
     if decl.spelling == "map" and ctype.get_num_template_arguments() > 1:
@@ -247,7 +257,7 @@ PARAMETER_TYPE_NAMES = {
     "PARAMETER_BOOL": "bool", "PARAMETER_INTEGER": "int", "PARAMETER_DOUBLE": "double",
     "PARAMETER_STRING": "str", "PARAMETER_BOOL_ARRAY": "bool[]",
     "PARAMETER_INTEGER_ARRAY": "int[]", "PARAMETER_DOUBLE_ARRAY": "double[]",
-    "PARAMETER_STRING_ARRAY": "str[]",
+    "PARAMETER_STRING_ARRAY": "str[]", "PARAMETER_BYTE_ARRAY": BYTE_ARRAY,
 }
 _BUILDS = frozenset({CursorKind.CALL_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
                      CursorKind.UNEXPOSED_EXPR, CursorKind.INIT_LIST_EXPR})

@@ -194,7 +194,8 @@ CAMERA_INFO = "sensor_msgs/CameraInfo"  # an image_transport camera's sibling to
 # rclcpp::Parameter's typed accessors and the parameter type each asks for
 _TAKEN_AS = {"as_int": "int", "as_double": "double", "as_string": "str", "as_bool": "bool",
              "as_integer_array": "int[]", "as_double_array": "double[]",
-             "as_string_array": "str[]", "as_bool_array": "bool[]"}
+             "as_string_array": "str[]", "as_bool_array": "bool[]",
+             "as_byte_array": msg_types.BYTE_ARRAY}
 _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", "as_bool",
                             "get_value", "value_to_string", "get_parameter_value",
                             # SDFormat's ``GetElement("key")->GetValue()->GetAsString()``
@@ -1788,6 +1789,7 @@ class CallFinder:
         name_expr: Cursor | None = None
         # the string whose value is the namespace's one unknown run (ROS 1)
         unknown_from: tuple[Cursor, Scope] | None = None
+        unknown_parts: list[tuple[Cursor, Scope]] = []  # each of its runs' (ROS 1)
         root = False  # made on a ROS 1 controller's root handle (``handles.controller_root``)
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
@@ -1796,6 +1798,7 @@ class CallFinder:
                     self.namespaces.of(handle, scope)))
                 if handle is not None:
                     unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                    unknown_parts = list(self.namespaces.unknown_parts)
             # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
             key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
@@ -1849,9 +1852,11 @@ class CallFinder:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
                 unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                unknown_parts = list(self.namespaces.unknown_parts)
             elif handle_arg is not None and handle_arg < len(args):
                 namespace = render(self.namespaces.of(args[handle_arg], scope))
                 unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                unknown_parts = list(self.namespaces.unknown_parts)
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
@@ -1928,6 +1933,11 @@ class CallFinder:
         held_source = (*held, None, None, None) if held is not None else (
             (each[0], None, None, each[2], each[1], None) if each is not None
             and each[0] is not None else None)
+        # ... or, a Gazebo plugin's handle whose namespace has several unknown runs, each
+        # a child element of its SDF: all of them, in order (hector's sonar plugin serves
+        # its dynamic_reconfigure on ``ros::NodeHandle(*node_handle_, topic_)``)
+        sdf_parts = self._sdf_parts(namespace, unknown_parts) if (
+            held is None and not self.ros2) else None
         for written, source in names:
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
@@ -1957,7 +1967,8 @@ class CallFinder:
             # gives too: both filled from the description (robot.attach)
             namespace_param = held[0] if (
                 held is not None and source is not None and handle_namespace == namespace
-                and held[0].startswith(SDF_ELEMENT) and name.count("?") == 2) else None
+                and held[0].startswith(SDF_ELEMENT) and name.count("?") == 2) else (
+                sdf_parts if handle_namespace == namespace else None)
             made_in = self._made_in(name, handle_namespace)
             name_member = self._name_member(name_expr) if (
                 written == "?" and source is None and spec.fixed_name is None) else None
@@ -2039,9 +2050,12 @@ class CallFinder:
                 ):
                     beside = self.calls[-1]
                     beside.name_param, beside.name_default, beside.default_param = held
+                elif sdf_parts is not None and namespace and sibling_namespace == namespace:
+                    self.calls[-1].namespace_param = sdf_parts
             if spec.reconfigure:
                 self._reconfigured(call, cls, name, handle_namespace, conditions, location,
-                                   owner)
+                                   owner, sdf_parts if sdf_parts is not None and (
+                                       handle_namespace == namespace) else None)
 
     def _class_load(self, names: list[tuple[str, NameSource | None]],
                     conditions: tuple[Condition, ...], location: Location,
@@ -2064,10 +2078,12 @@ class CallFinder:
 
     def _reconfigured(self, call: Cursor, cls: Cursor | None, name: str,
                       namespace: str | None, conditions: tuple[Condition, ...],
-                      location: Location, owner: str | None) -> None:
+                      location: Location, owner: str | None,
+                      namespace_param: str | None = None) -> None:
         """The parameters a dynamic_reconfigure server of a synthesised config reads
         when it starts (``reconfigure``): each field of the config, in the namespace of
-        the server's own service ``name`` (its handle's), with the .cfg's default."""
+        the server's own service ``name`` (its handle's), with the .cfg's default; its
+        ``namespace_param`` is the server's (a Gazebo plugin's SDF elements)."""
         config = None
         for made in (call.type, cls.type if cls is not None else None):
             canonical = made.get_canonical() if made is not None else None
@@ -2089,7 +2105,7 @@ class CallFinder:
                 kind="read", name=full, type=kind, conditions=conditions,
                 location=location, has_default=True, default=default,
                 handle_namespace=namespace, node_name=owner,
-                made_in=self._made_in(full, namespace)))
+                made_in=self._made_in(full, namespace), namespace_param=namespace_param))
 
     def _made_in(self, name: str, namespace: str | None) -> str | None:
         """The USR of the constructor being walked when ``name`` (or the handle's
@@ -2734,6 +2750,22 @@ class CallFinder:
         if key is None or index != len(written_arguments(call)) - 1:
             return None
         return self._parameter_source(key, scope, 1)
+
+    def _sdf_parts(self, namespace: str | None, parts: list[tuple[Cursor, Scope]]
+                   ) -> str | None:
+        """The SDF elements (``sdf:key``) that give a handle's namespace each of its
+        unknown runs, in order, joined by spaces (``PrimitiveCall.namespace_param``),
+        when it has several and a Gazebo plugin's SDF gives each; else None."""
+        count = namespace.count("?") if namespace is not None else 0
+        if count < 2 or len(parts) != count:
+            return None
+        keys: list[str] = []
+        for expr, scope in parts:
+            found = self._parameter_source(expr, scope, 0)
+            if found is None or not (found[0] or "").startswith(SDF_ELEMENT):
+                return None
+            keys.append(found[0])
+        return " ".join(keys)
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
                           depth: int, value: bool = False) -> Source | None:

@@ -19,7 +19,7 @@ from lxml import etree
 from ... import diagnostics as diag
 from ...files import read_bytes
 from ...manifest import start_lines, xml_parser
-from ...model.conditions import Condition, same_conditions
+from ...model.conditions import Condition, exclusive, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
 from ...model.rosname import is_legal_name
@@ -327,12 +327,23 @@ class Ros1Loader:
         if value is not None and default is not None:
             self.fail(scope, element, "<arg> tag must have one and only one of value/default")
             return
-        if name in scope.arg_names and not scope.pass_all_args:
+        earlier = scope.arg_conditions.get(name, [()])
+        # declared before only under conditions that cannot hold with this one's: roslaunch
+        # declares one of them, so the argument is either's (one of two values)
+        alternative = name in scope.arg_names and all(
+            exclusive(conditions, scope.conditions) for conditions in earlier)
+        if name in scope.arg_names and not scope.pass_all_args and not alternative:
             self.fail(scope, element, f"arg '{name}' has already been declared")
             return
         if name not in scope.arg_names:
             scope.arg_names.append(name)
+            scope.arg_conditions.pop(name, None)
+        if scope.conditions:
+            scope.arg_conditions.setdefault(name, []).append(scope.conditions)
         target = scope.args if scope.include_args is None else scope.include_args
+        if alternative:
+            self.alternative_arg(name, scope, element, value, default, target)
+            return
         given = name in target
         if value is not None:
             if name in target and not scope.pass_all_args:
@@ -343,6 +354,27 @@ class Ros1Loader:
         elif default is not None and name not in target:
             target[name] = default
         self.record_arg(name, scope, element, given, value is not None, default is not None)
+
+    def alternative_arg(self, name: str, scope: Scope, element: Element, value: Value | None,
+                        default: Value | None, target: dict[str, Value]) -> None:
+        """Another declaration of an argument under conditions that exclude the earlier
+        ones' (not decided here): its value is the earlier one where they agree, else
+        unknown. A default gives way to a value the include or command line passed."""
+        written = value if value is not None else default
+        recorded = scope.item.arg(name)
+        passed = recorded is not None and recorded.origin not in ("value", "default")
+        if written is not None and not (value is None and passed):
+            before = target.get(name)
+            target[name] = written if before == written else Value.unknown(
+                f"arg {name}, declared again under {' and '.join(map(str, scope.conditions))}")
+        if written is None or (value is None and passed):
+            return
+        if scope.include_args is not None:  # an <arg> inside an <include>: the one passed
+            self.record_arg(name, scope, element, True, True, False)
+        else:  # each declaration as written
+            scope.item.args.append(LaunchArg(
+                name, written.text, "value" if value is not None else "default",
+                self.where(scope, element)))
 
     def record_arg(self, name: str, scope: Scope, element: Element, given: bool,
                    fixed: bool, has_default: bool) -> None:

@@ -58,6 +58,11 @@ class Scope:
     path: str  # the file being read, for locations
     args: dict[str, Value] = field(default_factory=dict)
     arg_names: list[str] = field(default_factory=list)
+    # the conditions each argument was declared under, once per declaration: roslaunch
+    # declares an <arg> only where its if / unless holds, so two declarations of a name
+    # under conditions that cannot both hold (unless="$(arg sim)" and if="$(arg sim)")
+    # are one argument of either value; a name not here was declared unconditionally
+    arg_conditions: dict[str, list[tuple[Condition, ...]]] = field(default_factory=dict)
     include_args: dict[str, Value] | None = None
     pass_all_args: bool = False
     remaps: tuple[tuple[str, str], ...] = ()
@@ -86,6 +91,7 @@ class Scope:
         child_ns = (ns if ns.startswith("/") else join(self.ns, ns)) if ns else self.ns
         return replace(
             self, ns=global_ns(child_ns), args=dict(self.args), arg_names=list(self.arg_names),
+            arg_conditions={k: list(v) for k, v in self.arg_conditions.items()},
             pass_all_args=False, private=self.private if self.private else [],
             env=list(self.env), anon=dict(self.anon))
 
@@ -93,6 +99,7 @@ class Scope:
         inner = self.child(ns)
         inner.outer_arg_names = tuple(self.arg_names)
         inner.arg_names = []
+        inner.arg_conditions = {}
         inner.filename = filename
         inner.include_args = {}
         return inner
@@ -101,6 +108,7 @@ class Scope:
         """Swap in the arguments passed to an include; returns their names."""
         passed = self.include_args or {}
         self.arg_names = []
+        self.arg_conditions = {}
         self.args = dict(passed)
         self.include_args = None
         self.outer_arg_names = ()
