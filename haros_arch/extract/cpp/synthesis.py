@@ -612,13 +612,41 @@ def library_prefixes(messages: Iterable[str]) -> set[str]:
 
 
 _STATEMENT_END = re.compile(rb"[;{}]\s*$")
+# what a statement may follow that is no statement's end: ``else``, ``do``
+_BODY_KEYWORD = re.compile(rb"\b(?:else|do)\s*$")
+# the keyword of a head in parentheses that a statement follows: ``if (...)``,
+# ``if constexpr (...)``, ``while (...)``, ``for (...)``, ``switch (...)``
+_HEAD_KEYWORD = re.compile(rb"\b(?:if(?:\s+constexpr)?|while|for|switch)\s*$")
+
+
+def _statement_starts(text: bytes, start: int) -> bool:
+    """Whether a statement begins at ``start``: after ``;``, ``{`` or ``}``, after
+    ``else`` or ``do``, or as the body of an ``if`` / ``while`` / ``for`` / ``switch``
+    without braces, after the ``)`` that closes its head (realsense2_camera's ``if
+    (...)`` then ``console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_DEBUG);``)."""
+    before = text[max(0, start - 64):start]
+    if _STATEMENT_END.search(before) is not None or _BODY_KEYWORD.search(before):
+        return True
+    at = len(before.rstrip()) + max(0, start - 64) - 1
+    if text[at:at + 1] != b")":
+        return False
+    depth = 0
+    for index in range(at, max(-1, at - 2000), -1):  # back to the ``(`` it closes
+        char = text[index:index + 1]
+        if char == b")":
+            depth += 1
+        elif char == b"(":
+            depth -= 1
+            if depth == 0:
+                return _HEAD_KEYWORD.search(text[max(0, index - 32):index]) is not None
+    return False
 
 
 def _called_statement(text: bytes, start: int, end: int) -> bool:
     """Whether the name written from ``start`` to ``end`` begins a statement that is a
-    call of it alone: ``;``, ``{`` or ``}`` before it, its parenthesised arguments, and
-    ``;`` after them (``vendor::set_logger(logger);``)."""
-    if _STATEMENT_END.search(text[max(0, start - 64):start]) is None:
+    call of it alone: a statement's start before it (``_statement_starts``), its
+    parenthesised arguments, and ``;`` after them (``vendor::set_logger(logger);``)."""
+    if not _statement_starts(text, start):
         return False
     at = end
     while at < len(text) and text[at:at + 1].isspace():
