@@ -1458,3 +1458,15 @@ def test_a_vendor_call_as_an_unbraced_body_is_a_call_not_a_declaration() -> None
     assert rows(result) == [("publish", "out", "std_msgs/msg/String", 17)]
     assert "CPP_PARSE_ERROR" not in codes(result)
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_a_vendor_member_template_tested_as_a_condition_is_declared_a_template() -> None:
+    """``if (profile.is<vendor::VideoProfile>())`` and ``while (!profile.is<..>() &&
+    ..)`` of a header not found (realsense2_camera's startPublishers): the result is
+    only tested, so ``is`` is declared a member template, as for a call whose result is
+    unused; it was an error in a function that calls the ROS API, the node partial."""
+    result = extract("vendor_tested_template.cpp")
+    assert rows(result) == [("publish", "image", "std_msgs/msg/String", 11),
+                            ("publish", "motion", "std_msgs/msg/String", 14)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
