@@ -1446,3 +1446,27 @@ def test_a_name_in_a_string_or_character_literal_is_no_call_site() -> None:
     sites = recall.call_sites(text, wrappers, wrappers)  # no argument: a default one
     assert [s.line for s in sites] == [5, 6]
     assert sites[1].text == 'const int n = 1\'000; auto c = node->create_client<S>("srv(", n);'
+
+
+def test_a_vendor_call_as_an_unbraced_body_is_a_call_not_a_declaration() -> None:
+    """``if (...) vendor::setLogLevel(vendor::LOG_DEBUG);`` with the header missing
+    (realsense2_camera's console_bridge call): the statement after an ``if``, ``else``
+    or ``for`` head is a call alone, as after ``;`` or ``{``. Declared a class,
+    ``setLogLevel`` made it the declaration of a variable ``vendor::LOG_DEBUG``, an error
+    in a function that calls the ROS API, and the node partial."""
+    result = extract("vendor_call_statement.cpp")
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 17)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_a_vendor_member_template_tested_as_a_condition_is_declared_a_template() -> None:
+    """``if (profile.is<vendor::VideoProfile>())`` and ``while (!profile.is<..>() &&
+    ..)`` of a header not found (realsense2_camera's startPublishers): the result is
+    only tested, so ``is`` is declared a member template, as for a call whose result is
+    unused; it was an error in a function that calls the ROS API, the node partial."""
+    result = extract("vendor_tested_template.cpp")
+    assert rows(result) == [("publish", "image", "std_msgs/msg/String", 11),
+                            ("publish", "motion", "std_msgs/msg/String", 14)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)

@@ -159,6 +159,12 @@ _NAMES_NO_TEMPLATE = re.compile(
 _STATEMENT_OBJECT = re.compile(
     rb"(?:^|[;{}])\s*(?:this\s*->\s*)?[A-Za-z_]\w*(?:\s*(?:\.|->)\s*[A-Za-z_]\w*)*"
     rb"\s*(?:\.|->)\s*$")
+# the object of a member call written as an ``if`` or ``while`` condition's start
+# (``if (profile.is<rs2::video_stream_profile>())``, realsense2_camera's): its value is
+# only tested
+_TESTED_OBJECT = re.compile(
+    rb"\b(?:if|while)\s*\(\s*!?\s*(?:this\s*->\s*)?[A-Za-z_]\w*"
+    rb"(?:\s*(?:\.|->)\s*[A-Za-z_]\w*)*\s*(?:\.|->)\s*$")
 # the object of a member written as what a call returns: ``list_of("a")("b").``
 _CALLED_OBJECT = re.compile(rb"\)\s*\.\s*$")
 # a statement that assigns to a variable or member that exists (``a.b = ``, ``p_->x = ``;
@@ -175,7 +181,9 @@ _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s
 
 def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
     """Whether the member template ``name`` at ``offset`` is called as a whole statement,
-    ``obj.name<T>(args);``, its result unused, or called on what a chain of calls
+    ``obj.name<T>(args);``, its result unused, or as a whole condition, ``if
+    (obj.name<T>())`` (or its first operand before ``&&`` / ``||``), its result only
+    tested, or called on what a chain of calls
     returns and assigned whole to a variable or member that exists (a builder's:
     ``names = boost::assign::list_of("a")("b").convert_to_container<ros::V_string>();``,
     Doosan's dsr_control, boost's header not read; the variable keeps its own type):
@@ -185,7 +193,9 @@ def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
     and kept by its API name)."""
     if not text.startswith(name.encode(), offset):
         return False
-    if _STATEMENT_OBJECT.search(text[max(0, offset - 200):offset]) is None:
+    # or the whole of a condition (or its first operand), ``if (obj.name<T>())``
+    tested = _TESTED_OBJECT.search(text[max(0, offset - 200):offset]) is not None
+    if not tested and _STATEMENT_OBJECT.search(text[max(0, offset - 200):offset]) is None:
         # or the member of what a chain of calls returns, assigned whole (a builder)
         before = text[max(0, offset - 2000):offset]
         start = max(before.rfind(b";"), before.rfind(b"{"), before.rfind(b"}")) + 1
@@ -204,7 +214,7 @@ def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
         elif char in (ord(";"), ord("{"), ord("}")) and stack:
             return False
         elif not stack and not chr(char).isspace():
-            return called and char == ord(";")
+            return called and (char == ord(";") or (tested and char in b")&|"))
     return False
 
 
@@ -612,13 +622,41 @@ def library_prefixes(messages: Iterable[str]) -> set[str]:
 
 
 _STATEMENT_END = re.compile(rb"[;{}]\s*$")
+# what a statement may follow that is no statement's end: ``else``, ``do``
+_BODY_KEYWORD = re.compile(rb"\b(?:else|do)\s*$")
+# the keyword of a head in parentheses that a statement follows: ``if (...)``,
+# ``if constexpr (...)``, ``while (...)``, ``for (...)``, ``switch (...)``
+_HEAD_KEYWORD = re.compile(rb"\b(?:if(?:\s+constexpr)?|while|for|switch)\s*$")
+
+
+def _statement_starts(text: bytes, start: int) -> bool:
+    """Whether a statement begins at ``start``: after ``;``, ``{`` or ``}``, after
+    ``else`` or ``do``, or as the body of an ``if`` / ``while`` / ``for`` / ``switch``
+    without braces, after the ``)`` that closes its head (realsense2_camera's ``if
+    (...)`` then ``console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_DEBUG);``)."""
+    before = text[max(0, start - 64):start]
+    if _STATEMENT_END.search(before) is not None or _BODY_KEYWORD.search(before):
+        return True
+    at = len(before.rstrip()) + max(0, start - 64) - 1
+    if text[at:at + 1] != b")":
+        return False
+    depth = 0
+    for index in range(at, max(-1, at - 2000), -1):  # back to the ``(`` it closes
+        char = text[index:index + 1]
+        if char == b")":
+            depth += 1
+        elif char == b"(":
+            depth -= 1
+            if depth == 0:
+                return _HEAD_KEYWORD.search(text[max(0, index - 32):index]) is not None
+    return False
 
 
 def _called_statement(text: bytes, start: int, end: int) -> bool:
     """Whether the name written from ``start`` to ``end`` begins a statement that is a
-    call of it alone: ``;``, ``{`` or ``}`` before it, its parenthesised arguments, and
-    ``;`` after them (``vendor::set_logger(logger);``)."""
-    if _STATEMENT_END.search(text[max(0, start - 64):start]) is None:
+    call of it alone: a statement's start before it (``_statement_starts``), its
+    parenthesised arguments, and ``;`` after them (``vendor::set_logger(logger);``)."""
+    if not _statement_starts(text, start):
         return False
     at = end
     while at < len(text) and text[at:at + 1].isspace():
