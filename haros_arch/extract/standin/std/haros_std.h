@@ -1519,6 +1519,8 @@ haros_manip setprecision(int n);
 haros_manip setw(int n);
 haros_manip setfill(char c);
 haros_manip put_time(const tm* t, const char* format);
+// C++14: a string written between delimiters (MoveIt's ``<< std::quoted(group)``)
+template<class S> haros_manip quoted(const S& s, char delim = '"', char escape = '\\');
 haros_manip get_time(tm* t, const char* format);
 ostream& operator<<(ostream& os, haros_manip m);
 istream& operator>>(istream& is, haros_manip m);
