@@ -50,3 +50,39 @@ def test_the_state_monitors_tf_listener_and_waits_parse(tmp_path) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [("subscribe", "?")]
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+
+
+SHARED = """
+#include <ros/ros.h>
+#include <memory>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+struct Deleter {
+  explicit Deleter(tf2_ros::TransformListener* listener);
+  void operator()(tf2_ros::Buffer* buffer) const;
+};
+struct Model { int* part(); };
+
+std::shared_ptr<tf2_ros::Buffer> shared(std::shared_ptr<Model> owner) {
+  std::shared_ptr<tf2_ros::Buffer> buffer;
+  tf2_ros::Buffer* raw = new tf2_ros::Buffer();
+  buffer.reset(raw, Deleter(new tf2_ros::TransformListener(*raw)));
+  std::shared_ptr<int> alias(owner, owner->part());
+  ros::NodeHandle nh;
+  nh.advertise<std_msgs::String>("alive", 1);
+  return buffer;
+}
+"""
+
+
+def test_shared_ptrs_reset_with_a_deleter_and_aliasing_parse(tmp_path) -> None:
+    # MoveIt's common_objects.cpp: getSharedTF() resets its buffer with a deleter that
+    # also deletes the listener, getSharedRobotModel() makes an aliasing shared_ptr
+    source = tmp_path / "objects.cpp"
+    source.write_text(SHARED.replace("#include <memory>", "#include <memory>\n"
+                                     "#include <std_msgs/String.h>"))
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    assert ("publish", "alive") in [(c.kind, c.name) for c in result.calls]
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
