@@ -750,3 +750,12 @@ def test_moveits_random_number_library_leaves_it_complete(write_tree: Any) -> No
                      "octomap", "random_numbers")
     assert node.completeness == "complete", node.completeness_reasons
     assert node.said == []
+
+
+def test_the_ruckig_library_leaves_it_complete(write_tree: Any) -> None:
+    # MoveIt's AddRuckigTrajectorySmoothing builds ruckig's InputParameter (pantor/ruckig,
+    # a plain CMake package released into noetic)
+    node = _smoother(write_tree, "ruckig::InputParameter input;", "gtsam", "octomap",
+                     "ruckig")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
