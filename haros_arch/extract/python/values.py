@@ -423,11 +423,11 @@ class Evaluator(Instances, QoSProfiles, Walker):
             # a publisher's own name: the name as written, which the graph resolves; text
             # put after it (jsk's mux_selector: ``resolve_name('mux') + '/select'``) is in
             # the remapped name, as a C++ handle's namespace (``RESOLVED``)
-            value = self.eval(expr.args[0], frame)
-            text = text_of(value)
-            if text.is_known and text.text:
-                return Value.of(Unknown(RESOLVED + text.text))
-            return value
+            given = self.eval(expr.args[0], frame)
+            written = text_of(given)
+            if written.is_known and written.text:
+                return Value.unknown(RESOLVED + written.text)
+            return given
         if key == ("rclpy", "AsyncParameterClient"):
             remote = argument(expr, rclpy.PARAMETER_CLIENT)
             return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None
