@@ -816,6 +816,16 @@ CATALOGUE: dict[str, Entry] = {
         "with an error before the program starts its node: roslaunch starts the process, "
         "nothing of what it would do happens (a spawner with no controller named loads "
         "none). The instance is kept, with no ROS call."),
+    "NODE_STANDALONE_NODELET": Entry(
+        "info", "node type {node} is no target of its package's CMake files; a command "
+                "they call from outside the workspace is given its name with the nodelet "
+                "{plugin}: taken as that nodelet run alone",
+        "A ROS 1 launch file starts a program that the package's CMake files make through "
+        "a function of a package not in the workspace (jsk_topic_tools' jsk_nodelet, which "
+        "writes a main() that loads a nodelet class under the node's own name, as "
+        "'nodelet standalone' does). The function is not read; its arguments name the "
+        "program and one nodelet class the package exports, so the instance takes that "
+        "class's interface."),
     "NODE_NOT_READ": Entry(
         "warning", "node type {node} is {path}, a program this tool does not read (not a "
                    "built target nor a Python program); its interface is unknown",

@@ -739,3 +739,23 @@ def test_laser_proc_s_publisher_is_known(write_tree: Any) -> None:
         ("publish", "hokuyo/first", "sensor_msgs/LaserScan", 20),
         ("publish", "hokuyo/last", "sensor_msgs/LaserScan", 20),
         ("publish", "hokuyo/most_intense", "sensor_msgs/LaserScan", 20)]
+
+
+def test_moveits_random_number_library_leaves_it_complete(write_tree: Any) -> None:
+    # MoveIt's RobotState::getRandomNumberGenerator() builds
+    # random_numbers::RandomNumberGenerator (ros-planning/random_numbers, a catkin
+    # library over Boost.Random whose package.xml names boost alone): every node that
+    # includes robot_state.h was partial for it (move_group, its capabilities, ...)
+    node = _smoother(write_tree, "random_numbers::RandomNumberGenerator rng;", "gtsam",
+                     "octomap", "random_numbers")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+
+
+def test_the_ruckig_library_leaves_it_complete(write_tree: Any) -> None:
+    # MoveIt's AddRuckigTrajectorySmoothing builds ruckig's InputParameter (pantor/ruckig,
+    # a plain CMake package released into noetic)
+    node = _smoother(write_tree, "ruckig::InputParameter input;", "gtsam", "octomap",
+                     "ruckig")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []

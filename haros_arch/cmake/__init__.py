@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import os
+import re
 
 from .. import diagnostics as diag
 from .. import plugins, pysetup
@@ -19,7 +20,7 @@ from ..files import read_text
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
 from ..workspace import Workspace
-from .commands import effective_standard, newest, on_every_path
+from .commands import C_SUFFIXES, effective_standard, newest, on_every_path
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
 from .nodes import (
@@ -407,6 +408,35 @@ def targets_of(package: Package, workspace: Workspace) -> tuple[list[Target], li
     return list(interpreter.targets.values()), found
 
 
+def _standalone_names(classes: list[Node], it: Interpreter, files: PackageFiles) -> None:
+    """A command defined outside the workspace that is given one of the package's nodelet
+    classes by its lookup name may build a program that runs it alone under its own node
+    name (jsk_topic_tools' ``jsk_nodelet(src/logger.cpp "pkg/Logger" logger SRCS EXECS)``
+    configures a ``main`` that loads the class, as ``nodelet standalone`` does, and adds
+    the source to the list SRCS the package's library builds): the command's other plain
+    words are the names such a program may have (``Node.aliases``), which a launch file's
+    ``type=`` that names no target of the package takes (``graph.build.node_key``), and
+    its C/C++ files of the package are the class's code. Class names and targets are no
+    program names."""
+    for node in classes:
+        if node.kind != "nodelet":
+            continue
+        for args, code in it.foreign_calls:
+            if node.executable not in args:
+                continue
+            node.aliases.extend(
+                a for a in dict.fromkeys(args) if a != node.executable
+                and _PROGRAM_NAME.fullmatch(a) and not a.endswith(_CODE_SUFFIXES)
+                and a not in it.targets and a not in node.aliases)
+            node.sources.extend(relative for relative in map(files.relpath, code)
+                                if relative not in node.sources)
+
+
+# a word that may name a program: no path, no ``::`` (C/C++ files left out by suffix)
+_PROGRAM_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.+-]*")
+_CODE_SUFFIXES = (*C_SUFFIXES, ".h", ".hh", ".hpp", ".hxx")
+
+
 def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], list[Diagnostic]]:
     """The runnable nodes a CMake-built package has, with their sources."""
     files = PackageFiles(package, workspace)
@@ -440,6 +470,7 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
                              if d in workspace.packages and workspace.packages[d].root)]
     classes, problems = plugins.plugin_classes(package, files, libraries, described,
                                                plugins.loaded_bases(roots, files))
+    _standalone_names(classes, interpreter, files)
     nodes.extend(classes)
     found.extend(problems)
     found.extend(sources.diagnostics)

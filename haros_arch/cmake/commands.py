@@ -743,6 +743,9 @@ def unknown_command(it: Interpreter, command: Invocation, args: list[str]) -> No
     ``ament_add_google_benchmark``, sources in a ``test`` folder) are no nodes. A
     function of keyword arguments names its target after a keyword (MOLA's
     ``mola_add_executable(TARGET mola-cli SOURCES mola-cli.cpp)``): the word after it."""
+    code = [it.path(a) for a in args if a.endswith(C_SUFFIXES)]
+    it.foreign_calls.append((list(args), [path for path in code if it.inside_package(path)
+                                          and os.path.isfile(path)]))
     if args[:1] and args[0] in _NAME_KEYWORDS:
         args = args[1:]
     if (len(args) < 2 or _NOT_NODES.search(command.name) or args[0] in it.targets

@@ -112,6 +112,11 @@ class Interpreter:
         # add_custom_target / add_custom_command: what they make at build time is not
         # known here (a program installed from the source folder may be one)
         self.custom_builds: list[Invocation] = []
+        # the arguments of each command neither CMake nor the workspace defines (a
+        # function of a package outside it: jsk_topic_tools' ``jsk_nodelet(src.cpp
+        # "pkg/Class" exe ...)``), expanded, with the package's C/C++ files among them
+        # (absolute paths): what they may build is named there
+        self.foreign_calls: list[tuple[list[str], list[str]]] = []
         self.installs: list[Install] = []  # for haros_arch.share
         self.configured: list[Configured] = []  # configure_file, for haros_arch.share
         # ament_python_install_package(... SCRIPTS_DESTINATION ...): setup.cfg's entry

@@ -492,6 +492,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         config.diagnostics.append(diag.make("NODE_EXITS", decl.location, node=key, why=why))
     # rviz: the displays and tools of the configuration it is started with
     node = rviz.with_displays(decl, node, workspace, config.diagnostics) or node
+    if node is not None and plugin is None and node.kind == "nodelet":
+        # a program no target of its package's CMake files makes, built by a command
+        # from outside the workspace that was given this nodelet (``node_key``)
+        config.diagnostics.append(diag.make(
+            "NODE_STANDALONE_NODELET", decl.location, node=f"{decl.package}/{decl.executable}",
+            plugin=node.executable))
     if node is None and plugin is None and is_container(decl):
         # a nodelet manager or component container: what it loads are node instances of
         # their own; the process's own interface is its loader's services, known
@@ -639,8 +645,19 @@ def node_key(decl: NodeDecl, nodes: Mapping[str, Node]) -> str:
     ``class_packages`` names, else the one package of ``nodes`` that exports it."""
     plugin = nodelet_plugin(decl)
     if plugin is None:
-        return f"{decl.package}/{decl.executable}"
+        key = f"{decl.package}/{decl.executable}"
+        return key if key in nodes else standalone_nodelet(decl, nodes) or key
     return nodelet_key(plugin, nodes)
+
+
+def standalone_nodelet(decl: NodeDecl, nodes: Mapping[str, Node]) -> str | None:
+    """The node type ``pkg/Class`` of the one nodelet of the declaration's package that a
+    command defined outside the workspace was given with the executable's name
+    (``Node.aliases`` of a nodelet: jsk_topic_tools' ``jsk_nodelet`` builds a program
+    that runs the class alone, as ``nodelet standalone``); None when no one class is."""
+    found = [key for key, node in nodes.items() if node.kind == "nodelet"
+             and node.package == decl.package and decl.executable in node.aliases]
+    return found[0] if len(found) == 1 else None
 
 
 def nodelet_key(plugin: str, nodes: Mapping[str, Node]) -> str:

@@ -24,8 +24,9 @@ topic_tools (ros_comm ``tools/topic_tools/src``, noetic-devel): ``relay IN [OUT]
 subscribes IN and advertises OUT (default ``IN_relay``), reading ``~unreliable``,
 ``~lazy``, ``~stealth`` (relay.cpp:146-183); ``mux OUT IN...`` advertises OUT and the
 latched ``mux/selected``, subscribes every IN, serves ``OUT_select`` and
-``mux/select|add|list|delete`` (mux.cpp:291-380); ``demux IN OUT...`` the other way round
-under ``demux/`` (demux.cpp:247-295); ``throttle messages IN RATE [OUT]`` and ``throttle
+``mux/select|add|list|delete`` (mux.cpp:291-380), those five on ``NodeHandle
+mux_nh("mux")``, whose namespace a ``mux:=NAME`` remap moves; ``demux IN OUT...`` the other
+way round under ``demux/`` (demux.cpp:247-295); ``throttle messages IN RATE [OUT]`` and ``throttle
 bytes IN RATE WINDOW [OUT]`` (default ``IN_throttle``, throttle.cpp:181-246); ``drop IN X
 Y [OUT]`` (default ``IN_drop``, drop.cpp:65-90). Their messages are of any type
 (``ShapeShifter``): the calls have none.
@@ -279,6 +280,7 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     """A ROS 1 topic_tools node from its arguments (see the module's docstring)."""
     tool, args = decl.executable, [w for w in words if not w.startswith("__")]
     calls: list[tuple[CallKind, str, str | None]] = []  # (kind, name, type)
+    on_handle: list[tuple[CallKind, str, str | None]] = []  # of those, made on mux_nh
     params = TOPIC_TOOLS_READS.get(tool)
     if params is None:
         return None
@@ -288,11 +290,12 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
     elif tool in ("mux", "demux") and len(args) >= 2:
         one: CallKind = "publish" if tool == "mux" else "subscribe"
         many: CallKind = "subscribe" if tool == "mux" else "publish"
-        calls = [(one, args[0], None), *((many, name, None) for name in args[1:]),
-                 ("publish", f"{tool}/selected", "std_msgs/String")]
+        calls = [(one, args[0], None), *((many, name, None) for name in args[1:])]
         kind = tool.capitalize()
-        calls += [("server", f"{tool}/{verb}", f"topic_tools/{kind}{verb.capitalize()}")
-                  for verb in ("select", "add", "list", "delete")]
+        on_handle = [("publish", f"{tool}/selected", "std_msgs/String"),
+                     *(("server", f"{tool}/{verb}", f"topic_tools/{kind}{verb.capitalize()}")
+                       for verb in ("select", "add", "list", "delete"))]
+        calls += on_handle
         if tool == "mux":
             calls.append(("server", args[0] + "_select", "topic_tools/MuxSelect"))
     elif tool == "throttle" and len(args) >= 3 and args[0] in ("messages", "bytes"):
@@ -304,9 +307,14 @@ def _topic_tools(decl: NodeDecl, words: list[str]) -> Node | None:
                  ("publish", args[3] if len(args) == 4 else args[0] + "_drop", None)]
     if not calls:
         return None
+    # mux and demux make ``selected`` and their services on ``NodeHandle mux_nh("mux")``
+    # (``demux_nh("demux")``): roscpp remaps that namespace first, so ``mux:=base_mux``
+    # moves all five (``graph.build._handle_name``)
     made = [PrimitiveCall(kind, name, type_, queue_size=None if kind == "server" else (
         1 if name.endswith("/selected") else 10), latch=name.endswith("/selected"),
-        location=decl.location, origin="arguments") for kind, name, type_ in calls]
+        location=decl.location, origin="arguments",
+        handle_namespace=tool if (kind, name, type_) in on_handle else None)
+        for kind, name, type_ in calls]
     made += [PrimitiveCall("read", name, type_, location=decl.location, origin="arguments",
                            has_default=True, default=default)
              for name, (type_, default) in params.items()]

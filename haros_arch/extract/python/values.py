@@ -59,8 +59,8 @@ from .qos import QoSProfiles
 from .scopes import MAX_UNROLL
 from .strings import from_plain, number, percent, plain, string_method
 
-__all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "NODE_NAME", "Evaluator", "argument",
-           "own_name", "unknown_params"]
+__all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "NODE_NAME", "RESOLVED", "Evaluator",
+           "argument", "own_name", "unknown_params"]
 
 MAX_EVAL_DEPTH = 60
 MAX_RECORD = 64  # entries of a dict literal kept (``Record``)
@@ -70,6 +70,9 @@ LIMITS = ops.Limits(steps=500_000)
 # methods of an rclpy node that give its own name; in a name they are the private '~'
 NAME_METHODS = ("get_name", "get_fully_qualified_name")
 NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
+# origin of what rospy.resolve_name(name) gives, the name written after it: a known name,
+# resolved and remapped at run time (``visitor._resolved``)
+RESOLVED = "resolved name "
 NODE_NAME = "node name"  # origin of the unknown get_name() gives (see own_name)
 
 
@@ -417,8 +420,14 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return Value.unknown(NAMESPACE)  # relative names resolve in it
         if key == ("rospy", "resolve_name") and len(expr.args) == 1 and not expr.keywords:
             # the name resolved (and remapped) in the node's namespace, as rospy does to
-            # a publisher's own name: the name as written, which the graph resolves
-            return self.eval(expr.args[0], frame)
+            # a publisher's own name: the name as written, which the graph resolves; text
+            # put after it (jsk's mux_selector: ``resolve_name('mux') + '/select'``) is in
+            # the remapped name, as a C++ handle's namespace (``RESOLVED``)
+            given = self.eval(expr.args[0], frame)
+            written = text_of(given)
+            if written.is_known and written.text:
+                return Value.unknown(RESOLVED + written.text)
+            return given
         if key == ("rclpy", "AsyncParameterClient"):
             remote = argument(expr, rclpy.PARAMETER_CLIENT)
             return ParameterClient(text_of(self.eval(remote, frame)) if remote is not None

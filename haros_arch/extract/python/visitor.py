@@ -62,6 +62,7 @@ from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
     MAX_CALL_DEPTH,
     NAMESPACE,
+    RESOLVED,
     Evaluator,
     argument,
     own_name,
@@ -1065,6 +1066,9 @@ class Walker:
 
     def _set_name(self, call: PrimitiveCall, value: object, version: int) -> None:
         ev = self.evaluator
+        resolved = _resolved(value)
+        if resolved is not None:
+            value, call.handle_namespace = resolved
         text = text_of(value)
         if isinstance(value, ParamValue):
             call.name_param = param_name(Value.of(value.name)) if version == 2 else value.name
@@ -1367,6 +1371,24 @@ def _mapping_members(module: Module) -> set[str]:
             and node.func.attr in _MAPPING_METHODS
             and (member := _self_member(node.func.value)) is not None}
     return module.mapping_members
+
+
+def _resolved(value: object) -> tuple[Value, str | None] | None:
+    """A name that begins with ``rospy.resolve_name(name)``: the name as written, and,
+    when ``/...`` follows it (``resolve_name('mux') + '/select'``), that name as the
+    namespace the rest is in, which the graph remaps first (``handle_namespace``: rospy
+    gives the name resolved and remapped, ``mux:=input_vel_mux`` makes it
+    ``/input_vel_mux/select``). None for any other value."""
+    if not isinstance(value, Value) or not value.parts:
+        return None
+    first = value.parts[0]
+    if not isinstance(first, Unknown) or not first.origin.startswith(RESOLVED):
+        return None
+    written = first.origin.removeprefix(RESOLVED)
+    rest = value.parts[1:]
+    under = bool(rest) and isinstance(rest[0], str) and rest[0].startswith("/") and (
+        rest[0].strip("/"))
+    return Value.of(written, *rest), (written if under else None)
 
 
 def _in_namespace(text: Value) -> Value:

@@ -76,12 +76,19 @@ template<class M> class unique_lock { public: explicit unique_lock(M& m); void l
 template<class M> class shared_lock { public: explicit shared_lock(M& m); };
 template<class M> class upgrade_lock { public: explicit upgrade_lock(M& m); };
 namespace detail { template<class M> struct scoped { explicit scoped(M& m); }; }
+enum class cv_status { no_timeout, timeout };
 class condition_variable {
 public:
   void notify_one();
   void notify_all();
   template<class L> void wait(L& lock);
   template<class L, class D> bool timed_wait(L& lock, const D& d);
+  template<class L, class P> void wait(L& lock, P predicate);
+  // with a predicate, whether it holds; without, whether the time ran out (cv_status)
+  template<class L, class D> cv_status wait_for(L& lock, const D& d);
+  template<class L, class D, class P> bool wait_for(L& lock, const D& d, P predicate);
+  template<class L, class T> cv_status wait_until(L& lock, const T& t);
+  template<class L, class T, class P> bool wait_until(L& lock, const T& t, P predicate);
 };
 typedef condition_variable condition_variable_any;
 }

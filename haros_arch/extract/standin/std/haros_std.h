@@ -1014,8 +1014,12 @@ public:
   constexpr shared_ptr(nullptr_t) noexcept;
   template<class Y> explicit shared_ptr(Y* p);
   template<class Y, class D> shared_ptr(Y* p, D d);
+  template<class Y, class D, class A> shared_ptr(Y* p, D d, A a);
+  template<class D> shared_ptr(nullptr_t p, D d);
   shared_ptr(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  // aliasing: shares ownership with ``other``, points at ``p`` (MoveIt's robot models)
+  template<class Y> shared_ptr(const shared_ptr<Y>& other, element_type* p) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
   template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
@@ -1025,6 +1029,8 @@ public:
   T* get() const noexcept;
   void reset() noexcept;
   template<class Y> void reset(Y* p);
+  template<class Y, class D> void reset(Y* p, D d);
+  template<class Y, class D, class A> void reset(Y* p, D d, A a);
   long use_count() const noexcept;
   explicit operator bool() const noexcept;
 };
@@ -1037,8 +1043,12 @@ public:
   constexpr shared_ptr(nullptr_t) noexcept;
   template<class Y> explicit shared_ptr(Y* p);
   template<class Y, class D> shared_ptr(Y* p, D d);
+  template<class Y, class D, class A> shared_ptr(Y* p, D d, A a);
+  template<class D> shared_ptr(nullptr_t p, D d);
   shared_ptr(const shared_ptr& other) noexcept;
   template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  // aliasing: shares ownership with ``other``, points at ``p`` (MoveIt's robot models)
+  template<class Y> shared_ptr(const shared_ptr<Y>& other, element_type* p) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
   template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
@@ -1046,6 +1056,8 @@ public:
   void* get() const noexcept;
   void reset() noexcept;
   template<class Y> void reset(Y* p);
+  template<class Y, class D> void reset(Y* p, D d);
+  template<class Y, class D, class A> void reset(Y* p, D d, A a);
   long use_count() const noexcept;
   explicit operator bool() const noexcept;
 };
@@ -1541,6 +1553,8 @@ haros_manip setprecision(int n);
 haros_manip setw(int n);
 haros_manip setfill(char c);
 haros_manip put_time(const tm* t, const char* format);
+// C++14: a string written between delimiters (MoveIt's ``<< std::quoted(group)``)
+template<class S> haros_manip quoted(const S& s, char delim = '"', char escape = '\\');
 haros_manip get_time(tm* t, const char* format);
 ostream& operator<<(ostream& os, haros_manip m);
 istream& operator>>(istream& is, haros_manip m);

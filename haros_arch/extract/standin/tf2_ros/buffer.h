@@ -223,6 +223,10 @@ public:
   std::string allFramesAsYAML() const;
   void getFrameStrings(std::vector<std::string>& ids) const;
   bool _frameExists(const std::string& frame_id_str) const;
+  // ROS 1 tf2: a callback run whenever transforms change, and its removal by the
+  // boost::signals2::connection the first returns (MoveIt's CurrentStateMonitor)
+  template<class F> haros_standin::any_message _addTransformsChangedListener(F callback);
+  template<class C> void _removeTransformsChangedListener(const C& connection);
   // what a Buffer looks up, on the core itself (a ``tf2::BufferCore`` member)
   template<class S, class T, class... A> haros_standin::any_transform_stamped lookupTransform(
       const std::string& target, const S& source, const T& time, const A&... more) const;

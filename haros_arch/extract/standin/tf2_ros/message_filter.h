@@ -31,6 +31,8 @@ public:
   void setTargetFrames(const std::vector<std::string>& frames) override;
   template<class D> void setTolerance(const D& tolerance);
   void setQueueSize(uint32_t size);
+  uint32_t getQueueSize();
+  std::string getTargetFramesString();  // ROS 1: the frames joined, for logging
   void clear() override;
   template<class P> void add(const P& message);
 };
