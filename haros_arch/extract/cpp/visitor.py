@@ -2788,17 +2788,17 @@ class CallFinder:
                     return None  # searchParam's result: the name it found, no value
                 spec, _ = self._row(call)
                 if spec is not None and spec.out_arg == index and spec.kind in _PARAM_KINDS:
-                    found = self._parameter(spec, call, scope, depth)
-                    written = scope.values_written(decl, expr) if (
-                        found is not None and found[1] is None) else []
-                    values = [each for each in written if each is not None]
-                    if found is not None and len(values) == 1 and len(written) == 2 and (
+                    read = self._parameter(spec, call, scope, depth)
+                    writes = scope.values_written(decl, expr) if (
+                        read is not None and read[1] is None) else []
+                    values = [each for each in writes if each is not None]
+                    if read is not None and len(values) == 1 and len(writes) == 2 and (
                             _known(parts := scope.string(values[0]))):
                         # the one literal the body writes it beside the read, which
                         # writes it by reference (ROS 1's ``if (!pnh.getParam("topic",
                         # topic)) topic = "scan";``): the value where it is not set
-                        return found[0], render(parts), found[2]
-                    return found
+                        return read[0], render(parts), read[2]
+                    return read
             if scope.sites is not None and scope.is_parameter(decl):
                 # a function's parameter: the parameter every call of the file passes
                 # (nav2's ``CostmapSubscriber(node, costmap_topic)``, the topic a local
