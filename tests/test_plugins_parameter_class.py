@@ -272,3 +272,19 @@ def test_a_method_of_the_loaded_object_hides_nothing_and_a_member_holds_the_para
     links = _links(config, "/host")
     assert ("publish", "/grid") in links  # the parameter's value, not ``?``
     assert ("publish", "/solver_status") in links
+
+
+def test_a_host_rows_own_slot_is_left_to_the_row() -> None:
+    """move_base reads ``base_local_planner`` and creates that class through a ClassLoader
+    (a read marked ``loads``): the host row attaches it with the plugin name it
+    initialises it with; loaded again by the read, its names were ``~?/...``."""
+    from haros_arch.model.runtime import NodeInstance
+    from haros_arch.model.source import Node
+    from haros_arch.plugins.attach import _host_slot_reads
+
+    host = NodeInstance("/move_base", Node("move_base", "move_base", sources=["a.cpp"]))
+    assert _host_slot_reads(host, "/move_base/base_local_planner")
+    assert not _host_slot_reads(host, "/move_base/other_plugin")
+    assert not _host_slot_reads(host, "/move_base_extra/base_local_planner")
+    other = NodeInstance("/slam", Node("slam", "slam_node", sources=["a.cpp"]))
+    assert not _host_slot_reads(other, "/slam/solver_plugin")

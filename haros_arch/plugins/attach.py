@@ -871,6 +871,8 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
     configuration sets, else the default the code gives it; its calls are the node's.
     Neither: the instance is partial, as it is where a launch parameter not known
     statically may set it."""
+    if _host_slot_reads(instance, full):
+        return []  # the host's row loads it, with the plugin name and placement it knows
     default = call.default if isinstance(call.default, str) and call.default else None
     slot = Slot(None, full, (class_load_base(call.loads) or PLUGINLIB_CLASS,),
                 defaults=(("", default),) if default else ())
@@ -894,6 +896,21 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
         out.extend(_load(choice, slot, instance, index, workspace, models, params, config,
                          owned, made, loaded, None))
     return out
+
+
+def _host_slot_reads(instance: NodeInstance, full: str) -> bool:
+    """Whether a slot of the host row of the instance's node names its plugins by the
+    parameter ``full`` (move_base's ``base_local_planner``): the row attaches them."""
+    node = instance.node
+    host = host_of(node.package, node.executable, instance.ros_version) if (
+        node is not None) else None
+    if host is None:
+        return False
+    own = instance.name.rstrip("/")
+    relative = full[len(own) + 1:] if full.startswith(own) and full[len(own):len(own) + 1] in (
+        "/", ".") else None
+    return relative is not None and any(
+        relative in (slot.type_of, slot.names) for slot in host.slots)
 
 
 def _numbered_filters(instance: NodeInstance, call: PrimitiveCall, full: str,
