@@ -233,12 +233,12 @@ def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagno
     return found
 
 
-def _names_the_node(pattern: str, instance: NodeInstance) -> bool:
+def _names_the_node(pattern: str, instance: NodeInstance | None) -> bool:
     """Whether a parameter file's section (``/teleop_node``, ``teleop_node``) is named
     after the node's executable or the name its code gives it, not the name the launch
     file gave it: a section written for the node before it was renamed."""
-    node = instance.node
-    if node is None:
+    node = instance.node if instance is not None else None
+    if instance is None or node is None:
         return False
     last = pattern.rstrip("/").rsplit("/", 1)[-1]
     own = {node.executable.rsplit("/", 1)[-1], (node.rosname or "").rsplit("/", 1)[-1],
