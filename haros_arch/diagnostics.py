@@ -446,9 +446,14 @@ CATALOGUE: dict[str, Entry] = {
         "none of the nodes it is given to has, nor a node their processes make (a file "
         "written for another node name, imu_filter: for a node launched as "
         "imu_filter_node), so none of its parameters is set and the node runs on its "
-        "defaults. Not said when a node it is given to may make nodes unseen (code not "
-        "known, plugins loaded by name). Fix: key the section by the node's name (or "
-        "/**), or launch the node under the name the file uses."),
+        "defaults. Also said for a file shared by several nodes for one of them that no "
+        "section is for, naming only the sections no node has that are named after that "
+        "node's executable or the name its code gives it (go2_ros2_sdk's /teleop_node: "
+        "for teleop_twist_joy's teleop_node launched as go2_teleop_node): the section "
+        "written before the launch file renamed the node. Not said when a node it is "
+        "given to may make nodes unseen (code not known, plugins loaded by name). Fix: "
+        "key the section by the node's name (or /**), or launch the node under the "
+        "name the file uses."),
     # sources
     "CPP_PARSE_ERROR": Entry(
         "info", "C++ error: {detail}",

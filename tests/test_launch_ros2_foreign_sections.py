@@ -105,3 +105,73 @@ def test_a_value_outside_ros__parameters_is_said(write_tree) -> None:
                       "ros__parameters, a parameter of no node")]
     assert _outside(write_tree, "imu_filter_node:\n  ros__parameters:\n    use_mag: false\n"
                                 "    nested:\n      a: 1\n") == []
+
+
+SHARED_SETUP = """
+    from setuptools import setup
+    setup(name="imu", packages=["imu"],
+          entry_points={"console_scripts": ["filter = imu.filt:main", "mux = imu.mux:main"]})
+    """
+MUX = """
+    import rclpy
+    def main():
+        rclpy.init()
+        node = rclpy.create_node("mux")
+        node.declare_parameter("topics", "")
+    """
+SHARED_LAUNCH = """
+    import os
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+
+    def generate_launch_description():
+        config = os.path.join(get_package_share_directory("imu"), "config", "shared.yaml")
+        return LaunchDescription([
+            Node(package="imu", executable="filter", name="robot_filter",
+                 parameters=[config]),
+            Node(package="imu", executable="mux", parameters=[config]),
+        ])
+    """
+
+
+def _shared(write_tree, sections: str) -> list[str]:
+    root = write_tree({
+        "src/imu/package.xml": package_xml("imu", "ament_python"),
+        "src/imu/setup.py": SHARED_SETUP,
+        "src/imu/imu/__init__.py": "",
+        "src/imu/imu/filt.py": NODE,
+        "src/imu/imu/mux.py": MUX,
+        "src/imu/config/shared.yaml": sections,
+        "src/imu/launch/shared.launch.py": SHARED_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [imu/launch/shared.launch.py]\n",
+    })
+    out = root / "check.json"
+    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
+          "--fail-on", "never"])
+    report = json.loads(out.read_text())
+    return [d["message"] for d in report["diagnostics"] if d["code"] == "LAUNCH_PARAMS_NO_NODE"]
+
+
+MUX_SECTION = "/mux:\n  ros__parameters:\n    topics: cmd\n"
+
+
+def test_a_shared_file_s_section_under_the_name_the_launch_changed_is_said(write_tree) -> None:
+    """go2_ros2_sdk's twist_mux.yaml, given to twist_mux (its ``/twist_mux:`` section)
+    and to teleop_twist_joy's ``teleop_node`` launched as ``go2_teleop_node``, kept the
+    teleop's axes and buttons under ``/teleop_node:``: the teleop ran on its defaults.
+    Said for the node no section is for, where a section no node has is named after its
+    executable or the name its code gives it; not for a section of another name (a node
+    of another launch file may have it) nor when the node has its own section."""
+    filt = ("/robot_filter", "/imu_filter_node")
+    for section in ("/imu_filter_node", "/filter"):
+        found = _shared(write_tree, f"{section}:\n  ros__parameters:\n    use_mag: false\n"
+                                    + MUX_SECTION)
+        assert found == [f"parameter file imu/config/shared.yaml is given to {filt[0]}, but "
+                         f"its sections are for {section}: rcl gives their parameters to "
+                         "none of them"]
+    assert _shared(write_tree, "/other:\n  ros__parameters:\n    use_mag: false\n"
+                               + MUX_SECTION) == []
+    assert _shared(write_tree, "/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
+                               "/imu_filter_node:\n  ros__parameters:\n    use_mag: true\n"
+                               + MUX_SECTION) == []

@@ -220,12 +220,31 @@ def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagno
         given = [by_name.get(name) for name in item.nodes]
         if any(n is None or n.node is None or n.node.plugin_loads for n in given):
             continue
-        if any(pattern_matches(p, name) for p in item.patterns for name in names):
+        patterns = item.patterns
+        if item.lonely:  # the sections no node has, named after the node
+            patterns = [p for p in patterns if _names_the_node(p, given[0]) and not any(
+                pattern_matches(p, name) for name in names)]
+            if not patterns:
+                continue
+        elif any(pattern_matches(p, name) for p in patterns for name in names):
             continue
         found.append(diag.make("LAUNCH_PARAMS_NO_NODE", item.location, file=item.path,
-                               nodes=", ".join(item.nodes),
-                               patterns=", ".join(item.patterns)))
+                               nodes=", ".join(item.nodes), patterns=", ".join(patterns)))
     return found
+
+
+def _names_the_node(pattern: str, instance: NodeInstance | None) -> bool:
+    """Whether a parameter file's section (``/teleop_node``, ``teleop_node``) is named
+    after the node's executable or the name its code gives it, not the name the launch
+    file gave it: a section written for the node before it was renamed."""
+    node = instance.node if instance is not None else None
+    if instance is None or node is None:
+        return False
+    last = pattern.rstrip("/").rsplit("/", 1)[-1]
+    own = {node.executable.rsplit("/", 1)[-1], (node.rosname or "").rsplit("/", 1)[-1],
+           (instance.code_name or "").rsplit("/", 1)[-1]}
+    return last not in ("", "*", "**") and last in own and (
+        last != instance.name.rsplit("/", 1)[-1])
 
 
 def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resources: Resources,

@@ -78,14 +78,22 @@ class NodeDecl:
 @dataclass
 class ForeignSections:
     """ROS 2: a parameter file whose every section for particular nodes is for a name
-    that none of the nodes it is given to has (``nodes.sections_for_no_node``): the
-    graph says so (``LAUNCH_PARAMS_NO_NODE``) unless a node its process makes has one of
-    those names."""
+    that none of the nodes it is given to has (``nodes.sections_for_no_node``), or a node
+    it is given to that none of its sections is for (``lonely``): the graph says so
+    (``LAUNCH_PARAMS_NO_NODE``) unless a node its process makes has one of those
+    names."""
 
     path: str
     nodes: list[str]  # full names of the nodes it is given to
     patterns: list[str]  # its sections' node name patterns
     location: Location = NOWHERE  # where it is first given
+    # a file other nodes it is given to take sections of: ``nodes`` is the one node
+    # it is given to that no section is for (where it is given to that node), and
+    # ``patterns`` the sections for none of its nodes; said only for a section named
+    # after that node's executable or the name its code gives it, the name the launch
+    # file changed (go2_ros2_sdk's ``/teleop_node:`` for teleop_twist_joy's teleop_node,
+    # launched as ``go2_teleop_node``)
+    lonely: bool = False
 
 
 @dataclass

@@ -885,6 +885,27 @@ class Scope:
 
     # -- values -----------------------------------------------------------------------
 
+    def given_back(self, parm: Cursor) -> Cursor | None:
+        """The value this body hands its caller through ``parm``, a parameter taken by
+        non-const reference: the one expression it assigns it, when that assignment runs
+        whenever the body runs on (in no branch, loop, handler or lambda) and the body
+        passes ``parm`` to no call that may write it too. nav2's collision monitor:
+        ``getParameters(cmd_vel_in_topic, cmd_vel_out_topic, state_topic)`` assigns each
+        ``get_parameter("cmd_vel_out_topic").as_string()`` and the caller publishes on
+        it."""
+        ctype = parm.type
+        if parm.kind != CursorKind.PARM_DECL or ctype.kind != TypeKind.LVALUEREFERENCE or (
+                ctype.get_pointee().is_const_qualified()):
+            return None
+        key = key_of(parm)
+        found = self.writes.get(key)
+        if not found or len(found) != 1 or found[0] is None or key in self._passed:
+            return None
+        at = found[0].extent.start.offset
+        if any(first <= at <= last for first, last in self._regions):
+            return None
+        return found[0]
+
     def passed_to(self, decl: Cursor, at: Cursor | None = None) -> tuple[Cursor, int] | None:
         """The last call ``decl`` was passed to by reference, and at which index; for a
         read ``at`` in this body, the last such call that ends before it (costmap_2d's

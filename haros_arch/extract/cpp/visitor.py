@@ -27,7 +27,7 @@ from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
-from .call_sites import CallSites, base_keys, delegation
+from .call_sites import CallSites, base_keys, callee_of, delegation
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
@@ -2737,6 +2737,25 @@ class CallFinder:
         return parameter_mark(name, source[0], source[3],
                               [str(entry[0]) for entry in more])
 
+    @staticmethod
+    def _given_back(call: Cursor, index: int, scope: Scope) -> tuple[Cursor, Scope] | None:
+        """What the function ``call`` calls (defined in this unit) assigns to its
+        parameter ``index``, taken by non-const reference, for the caller's variable
+        passed there (``Scope.given_back``), with the scope of that function's body."""
+        if scope.sites is None:
+            return None
+        function = callee_of(call)
+        definition = function.get_definition() if function is not None else None
+        if definition is None or definition.kind not in (
+                CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD):
+            return None
+        parms = list(definition.get_arguments())
+        if index >= len(parms):
+            return None
+        body = scope.sites.scope(definition)
+        handed = body.given_back(parms[index])
+        return None if handed is None else (handed, body)
+
     def _searched_key_source(self, expr: Cursor, scope: Scope) -> Source | None:
         """The parameter whose value is the key of the ``searchParam(key, result)`` that
         last wrote the variable ``expr`` (its result), if it is one."""
@@ -2799,6 +2818,9 @@ class CallFinder:
                         # topic)) topic = "scan";``): the value where it is not set
                         return read[0], render(parts), read[2]
                     return read
+                handed = self._given_back(call, index, scope) if spec is None else None
+                if handed is not None:
+                    return self._parameter_source(handed[0], handed[1], depth + 1, value)
             if scope.sites is not None and scope.is_parameter(decl):
                 # a function's parameter: the parameter every call of the file passes
                 # (nav2's ``CostmapSubscriber(node, costmap_topic)``, the topic a local

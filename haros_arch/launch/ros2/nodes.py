@@ -248,21 +248,31 @@ def sections_for_no_node(runner: Runner) -> None:
     imu_filter.yaml, ``imu_filter:``, given to the node ``imu_filter_node``): rcl sets
     none of those parameters (``LaunchModel.foreign_sections``, judged by the graph).
     Not when a node it is given to has a name not known statically (it may be the
-    section's) or the file has no section for particular nodes (only ``/**``)."""
+    section's) or the file has no section for particular nodes (only ``/**``). Where
+    some sections are for nodes it is given to, each node of a known name that no
+    section is for, with the sections none of its nodes has (``lonely``: the graph keeps
+    those named after that node's executable or code name)."""
     for path, uses in runner.file_uses.items():
         nodes = list(dict.fromkeys(node for _, node, _, _ in uses))
-        if any(UNKNOWN_MARK in node for node in nodes):
-            continue
         patterns = list(dict.fromkeys(
             pattern for document, _, _, _ in uses
             for pattern, _ in naming.node_patterns(document)))
-        if any(pattern == "/**" or any(naming.pattern_matches(pattern, n) for n in nodes)
-               for pattern in patterns):
+        if not patterns or "/**" in patterns:
             continue
-        if patterns:
-            file = runner.workspace.relpath(share_source(runner.workspace, path))
+        file = runner.workspace.relpath(share_source(runner.workspace, path))
+        foreign = [p for p in patterns if not any(naming.pattern_matches(p, n) for n in nodes)]
+        if len(foreign) == len(patterns) and not any(UNKNOWN_MARK in n for n in nodes):
             runner.model.foreign_sections.append(
                 ForeignSections(file, nodes, patterns, uses[0][2]))
+            continue
+        # the nodes no section is for, beside nodes that take theirs (or whose name the
+        # graph finds: it keeps only the sections no node of the configuration has): the
+        # graph says the file for one of them where such a section is named after it
+        for node in (n for n in nodes if UNKNOWN_MARK not in n):
+            if foreign and not any(naming.pattern_matches(p, node) for p in patterns):
+                where = next(location for _, name, location, _ in uses if name == node)
+                runner.model.foreign_sections.append(
+                    ForeignSections(file, [node], foreign, where, lonely=True))
 
 
 def _for_every_node(document: Any, node: str) -> set[str]:
