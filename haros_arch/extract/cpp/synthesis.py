@@ -640,16 +640,9 @@ def _statement_starts(text: bytes, start: int) -> bool:
     at = len(before.rstrip()) + max(0, start - 64) - 1
     if text[at:at + 1] != b")":
         return False
-    depth = 0
-    for index in range(at, max(-1, at - 2000), -1):  # back to the ``(`` it closes
-        char = text[index:index + 1]
-        if char == b")":
-            depth += 1
-        elif char == b"(":
-            depth -= 1
-            if depth == 0:
-                return _HEAD_KEYWORD.search(text[max(0, index - 32):index]) is not None
-    return False
+    opening = _closing(text, at, backwards=True)  # back to the ``(`` it closes
+    return opening is not None and _HEAD_KEYWORD.search(
+        text[max(0, opening - 32):opening]) is not None
 
 
 def _called_statement(text: bytes, start: int, end: int) -> bool:
@@ -667,14 +660,18 @@ def _called_statement(text: bytes, start: int, end: int) -> bool:
     return close is not None and text[close + 1:close + 64].lstrip()[:1] == b";"
 
 
-def _closing(text: bytes, at: int, span: int = 2000) -> int | None:
-    """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes)."""
+def _closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
+    """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes);
+    ``backwards``: of the ``(`` that the ``)`` at ``at`` closes."""
+    opens, closes = (b")", b"(") if backwards else (b"(", b")")
     depth = 0
-    for index in range(at, min(len(text), at + span)):
+    indexes = range(at, max(-1, at - span), -1) if backwards else range(
+        at, min(len(text), at + span))
+    for index in indexes:
         char = text[index:index + 1]
-        if char == b"(":
+        if char == opens:
             depth += 1
-        elif char == b")":
+        elif char == closes:
             depth -= 1
             if depth == 0:
                 return index
