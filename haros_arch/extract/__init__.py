@@ -104,7 +104,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         for node, result, said in zip(cpp, batch.results, macros, strict=True):
             found.extend(completeness(node, [*batch.diagnostics, *result.diagnostics,
                                              *said], workspace))
-        bases = {base.rsplit("::", 1)[-1] for node in cpp for call in node.calls
+        bases = {base_name(base) for node in cpp for call in node.calls
                  if (base := class_load_base(call.loads)) is not None}
         cpp = [node for node in deferred if base_name(node.plugin_base or "") in bases]
         deferred = [node for node in deferred if node not in cpp]

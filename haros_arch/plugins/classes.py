@@ -117,10 +117,14 @@ def _loaders(root: str, workspace: Files) -> frozenset[str]:
             data, _ = read_bytes(path, workspace.location(path))
             if data is None or b"ClassLoader" not in data:
                 continue
-            text = code_only(data.decode("utf-8", "replace"))
-            found.update(match.group(1).rsplit("::", 1)[-1]
-                         for match in _CLASS_LOADER.finditer(text))
+            found.update(loader_bases(code_only(data.decode("utf-8", "replace"))))
     return frozenset(found)
+
+
+def loader_bases(text: str) -> set[str]:
+    """The base classes (the last part of their names) of the pluginlib ClassLoaders
+    ``text`` declares (``ClassLoader<karto::ScanSolver>``: ``ScanSolver``)."""
+    return {base_name(match.group(1)) for match in _CLASS_LOADER.finditer(text)}
 
 
 def base_name(base: str) -> str:
@@ -149,8 +153,10 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     nodes: list[Node] = []
     found: list[Diagnostic] = []
     for plugin in [*package.plugins, *described]:
-        if plugin.kind not in NODE_PLUGIN_KINDS and plugin.kind not in bases and not any(
-                base.startswith(plugin.kind + "::") for base in bases) and not loaded:
+        # a description of classes some host loads, else read for the loaded bases only
+        hosted = plugin.kind in NODE_PLUGIN_KINDS or plugin.kind in bases or any(
+            base.startswith(plugin.kind + "::") for base in bases)
+        if not hosted and not loaded:
             continue
         path = os.path.join(workspace.root, plugin.file)
         roots = _read_description(path, workspace, found)
@@ -171,9 +177,7 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                                 and base not in bases and plugin.kind not in bases
                                 and base_name(base) not in loaded):
                     continue
-                if not base and plugin.kind not in bases and not any(
-                        b.startswith(plugin.kind + "::") for b in bases) and (
-                        plugin.kind not in NODE_PLUGIN_KINDS):
+                if not base and not hosted:
                     continue  # a description read only for the loaded bases
                 where = workspace.location(path, _line(cls), 0)
                 type_name = cls.get("type", "")

@@ -26,6 +26,7 @@ from ...model.location import Location
 from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
+from ...plugins.classes import base_name, loader_bases
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import CallSites, base_keys, callee_of, delegation
 from .call_types import CallTypes, factory_made, row_class
@@ -132,14 +133,21 @@ NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | No
 EACH = "."
 
 
-# a pluginlib ClassLoader of a base class, and the words of a type that hold an object
-# of a class rather than name it (``_of_loaded_base``)
-_CLASS_LOADER = re.compile(rb"\bClassLoader\s*<\s*([A-Za-z_][\w:]*)\s*>")
+# the words of a type that hold an object of a class rather than name it
+# (``_held_classes``)
 _TYPE_WORDS = re.compile(r"[A-Za-z_][\w:]*")
 _OBJECTS = (CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL)
 _HOLDERS = frozenset({"std::shared_ptr", "std::unique_ptr", "boost::shared_ptr", "const",
                       "volatile", "std::weak_ptr", "Ptr", "SharedPtr", "UniquePtr",
                       "pluginlib::UniquePtr", "std::function", "void"})
+
+
+def _held_classes(ctype: Type) -> list[str]:
+    """The class words of type ``ctype`` as written, its holders left out
+    (``std::shared_ptr<karto::ScanSolver>``, ``pluginlib::UniquePtr<T>``, ``T *``), and
+    none for a value declared permissively."""
+    return [w for w in _TYPE_WORDS.findall(ctype.spelling)
+            if w not in _HOLDERS and w != synthesis.ANY]
 
 
 class ChoiceName(str):
@@ -1408,15 +1416,14 @@ class CallFinder:
         if not named:
             return False
         decl = named[0][1]
-        classes = [w for w in _TYPE_WORDS.findall(decl.type.spelling) if w not in _HOLDERS]
-        if not classes or decl.location.file is None or call.location.file is None:
+        held = _held_classes(decl.type)  # the innermost: a container's element's
+        if not held or decl.location.file is None or call.location.file is None:
             return False
-        base = classes[-1].rsplit("::", 1)[-1].encode()
+        base = base_name(held[-1])
         for name in dict.fromkeys((decl.location.file.name, call.location.file.name)):
             data = self.source.get(name)
-            if data and b"ClassLoader" in data and any(
-                    m.group(1).rsplit(b"::", 1)[-1] == base
-                    for m in _CLASS_LOADER.finditer(data)):
+            if data and b"ClassLoader" in data and base in loader_bases(
+                    data.decode("utf-8", "replace")):
                 return True
         return False
 
@@ -2064,8 +2071,8 @@ class CallFinder:
         of a parameter the node reads (``api.PLUGINLIB_CLASS``): a read of that parameter
         marked ``loads``, with the loader's base class (the class of the pointer ``made``)
         and the default the code gives it; any other name makes none."""
-        classes = [w for w in _TYPE_WORDS.findall(made.spelling) if w not in _HOLDERS]
-        base = classes[0] if classes and classes[0] != synthesis.ANY else ""
+        held = _held_classes(made)  # the outermost: a templated base, not its argument
+        base = held[0] if held else ""
         loads = f"{api.PLUGINLIB_CLASS}:{base}" if base else api.PLUGINLIB_CLASS
         for written, source in names:
             if written != UNKNOWN_MARK or source is None or source[3] is not None or (
