@@ -874,8 +874,11 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
     if _host_slot_reads(instance, full):
         return []  # the host's row loads it, with the plugin name and placement it knows
     default = call.default if isinstance(call.default, str) and call.default else None
+    # the element of a list the parameter is named by (nav2's ``<id>.plugin``) is the
+    # plugin name the class is given (``plugin->configure(node, ids[i])``)
+    element = _loaded_element(instance, call)
     slot = Slot(None, full, (class_load_base(call.loads) or PLUGINLIB_CLASS,),
-                defaults=(("", default),) if default else ())
+                defaults=(("", default),) if default else (), given=element)
     unseen = _may_be_set(full, params)
     if unseen is not None:
         own_partial(instance, unseen, owned)
@@ -898,6 +901,23 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
     return out
 
 
+def _loaded_element(instance: NodeInstance, call: PrimitiveCall) -> str | None:
+    """The element of a list parameter that names the parameter ``call`` reads to load a
+    class, when the code's read is one per element (``name_each``, the graph made one
+    call per element): the text that fills the ``?`` of the code's name."""
+    node = instance.node
+    for written in (node.calls if node is not None else ()):
+        if written.loads != call.loads or written.location != call.location or (
+                written.name_each is None or written.name.count(UNKNOWN_MARK) != 1):
+            continue
+        head, tail = written.name.split(UNKNOWN_MARK)
+        name = call.name
+        if name.startswith(head) and name.endswith(tail) and len(name) > len(head) + len(
+                tail):
+            return name[len(head):len(name) - len(tail)]
+    return None
+
+
 def _host_slot_reads(instance: NodeInstance, full: str) -> bool:
     """Whether a slot of the host row of the instance's node names its plugins by the
     parameter ``full`` (move_base's ``base_local_planner``): the row attaches them."""
@@ -910,7 +930,9 @@ def _host_slot_reads(instance: NodeInstance, full: str) -> bool:
     relative = full[len(own) + 1:] if full.startswith(own) and full[len(own):len(own) + 1] in (
         "/", ".") else None
     return relative is not None and any(
-        relative in (slot.type_of, slot.names) for slot in host.slots)
+        written is not None and re.fullmatch(
+            re.escape(written).replace(re.escape("{name}"), "[^/]+"), relative)
+        for slot in host.slots for written in (slot.type_of, slot.names))
 
 
 def _numbered_filters(instance: NodeInstance, call: PrimitiveCall, full: str,

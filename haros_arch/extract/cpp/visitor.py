@@ -1844,7 +1844,7 @@ class CallFinder:
                           else join_name(name or "~", spec.name_suffix), source)
                          for name, source in names]
         if spec.loads == api.PLUGINLIB_CLASS:
-            self._class_load(names, conditions, location, site.type)
+            self._class_load(names, conditions, location, site.type, name_expr, scope)
             return
         owner = self._owner
         if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
@@ -2066,22 +2066,59 @@ class CallFinder:
 
     def _class_load(self, names: list[tuple[str, NameSource | None]],
                     conditions: tuple[Condition, ...], location: Location,
-                    made: Type) -> None:
+                    made: Type, name_expr: Cursor | None = None,
+                    scope: Scope | None = None) -> None:
         """pluginlib's ClassLoader creating the class whose lookup name is wholly the value
         of a parameter the node reads (``api.PLUGINLIB_CLASS``): a read of that parameter
         marked ``loads``, with the loader's base class (the class of the pointer ``made``)
-        and the default the code gives it; any other name makes none."""
+        and the default the code gives it; any other name makes none. The parameter's
+        name may hold each element of a list parameter in turn, as the read that gives
+        the value says (nav2's ``type = get_plugin_type_param(node, ids[i])``, reading
+        ``<id>.plugin`` for each id of ``edge_cost_functions``): the read is one per
+        element, each loading its class (``plugins.attach.chains``)."""
         held = _held_classes(made)  # the outermost: a templated base, not its argument
         base = held[0] if held else ""
         loads = f"{api.PLUGINLIB_CLASS}:{base}" if base else api.PLUGINLIB_CLASS
         for written, source in names:
             if written != UNKNOWN_MARK or source is None or source[3] is not None or (
-                    source[5] is not None or UNKNOWN_MARK in source[0]):
+                    source[5] is not None):
                 continue  # a class written in the code, or not known
+            each = None
+            if UNKNOWN_MARK in source[0]:
+                each = self._read_element(source[0], name_expr, scope)
+                if each is None:
+                    continue
+                # the loop over the list is the element's turn, as for that read
+                conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
+                    c.statement in ("for", "while") and c.location in each[2]
+                ) else c for c in conditions)
             self.calls.append(PrimitiveCall(
                 kind="read", name=source[0], type="str", conditions=conditions,
                 location=location, has_default=source[1] is not None, default=source[1],
-                loads=loads, node_name=self._owner))
+                loads=loads, node_name=self._owner,
+                name_param=each[0] if each else None, name_each=each[1] if each else None))
+
+    def _read_element(self, name: str, expr: Cursor | None, scope: Scope | None,
+                      ) -> tuple[str, str, list[Location]] | None:
+        """(the list parameter, ``name_each``, the places of the loops over it) of the
+        read named ``name`` whose value the variable ``expr`` holds, when that read's
+        name holds each element of the list in turn: the read this unit emitted where
+        the variable's value is computed."""
+        if expr is None or scope is None:
+            return None
+        expr = strip(expr)
+        decl = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
+        value = scope.variable(decl) if decl is not None else None
+        if value is None:
+            return None
+        where = self.where(value)
+        for call in reversed(self.calls):
+            if call.kind == "read" and call.name == name and call.name_param and (
+                    call.name_each == EACH) and call.location.file == where.file and (
+                    call.location.line == where.line):
+                return call.name_param, call.name_each, [
+                    c.location for c in call.conditions if c.statement == EACH_STATEMENT]
+        return None
 
     def _reconfigured(self, call: Cursor, cls: Cursor | None, name: str,
                       namespace: str | None, conditions: tuple[Condition, ...],
