@@ -869,3 +869,71 @@ def test_a_controllers_section_of_the_managers_parameter_file_is_the_controllers
     assert all(p is not None and p.set_by_launch and p.is_read for p in values.values())
     assert [values[name].value for name in values] == [3.0, "panda", 5.0]
     assert config.parameter("/other/gain") is None  # no node of the process is named so
+
+
+def _dwb_config(critics: list[str], *more: ParamDecl):
+    """nav2's controller server with a DWB controller ``FollowPath`` whose critics are
+    ``critics``: the critics' classes complete as dwb's ``resolveCriticClassName`` does
+    (``Critic`` added, the first of ``default_critic_namespaces`` with such a class)."""
+    dwb = Node("dwb_core", "dwb_core::DWBLocalPlanner", "plugin",
+               plugin_class="dwb_core::DWBLocalPlanner",
+               calls=[call("declare", "?.critics", "str[]"),
+                      call("read", "?.trajectory_generator_name", "str", line=91,
+                           has_default=True,
+                           default="dwb_plugins::StandardTrajectoryGenerator",
+                           loads="pluginlib:TrajectoryGenerator")],
+               plugin_loads=["navigation2/nav2_dwb_controller/dwb_core/src/"
+                             "dwb_local_planner.cpp:176"])
+    generator = plugin("dwb_plugins", "dwb_plugins::StandardTrajectoryGenerator",
+                       "dwb_plugins::StandardTrajectoryGenerator",
+                       call("declare", "?.max_vel_x", "double"))
+    obstacle = plugin("dwb_critics", "dwb_critics::BaseObstacleCritic",
+                      "dwb_critics::BaseObstacleCritic", call("declare", "?.?.scale", "double"),
+                      call("declare", "?.?.sum_scores", "bool"))
+    oscillation = plugin("dwb_critics", "dwb_critics::OscillationCritic",
+                         "dwb_critics::OscillationCritic",
+                         call("declare", "?.?.scale", "double"),
+                         call("declare", "?.oscillation_reset_dist", "double"))
+    speed = plugin("my_critics", "my_critics::SpeedCritic", "my_critics::SpeedCritic",
+                   call("declare", "?.?.gain", "double"))
+    decl = ros2(NodeDecl("/controller_server", "nav2_controller", "controller_server"))
+    params = [ParamDecl("/controller_server/controller_plugins", ["FollowPath"]),
+              ParamDecl("/controller_server/FollowPath.plugin", "dwb_core::DWBLocalPlanner"),
+              ParamDecl("/controller_server/FollowPath.critics", critics),
+              ParamDecl("/controller_server/goal_checker_plugins", []),
+              ParamDecl("/controller_server/progress_checker_plugins", []),
+              ParamDecl("/controller_server/path_handler_plugins", []),
+              *more, *no_layers("/controller_server", "local_costmap")]
+    host = Node("nav2_controller", "controller_server",
+                plugin_loads=["nav2_controller/src/controller_server.cpp:87"])
+    config = graph([decl], params, [dwb, obstacle, oscillation, speed, generator, host])
+    return config, next(n for n in config.nodes if n.name == "/controller_server")
+
+
+def test_a_dwb_controller_loads_its_critics_with_their_names_under_its_own():
+    config, server = _dwb_config(
+        ["BaseObstacle", "OscillationCritic", "Speed"],
+        ParamDecl("/controller_server/FollowPath.Speed.class", "my_critics::SpeedCritic"))
+    assert server.is_complete, server.completeness_reasons
+    links = links_of(config, "/controller_server")
+    for name in ("FollowPath.critics", "FollowPath.BaseObstacle.scale",
+                 "FollowPath.BaseObstacle.sum_scores", "FollowPath.OscillationCritic.scale",
+                 "FollowPath.oscillation_reset_dist", "FollowPath.Speed.gain",
+                 "FollowPath.Speed.class",
+                 # the class the plugin loads by its parameter's value, given its name
+                 "FollowPath.trajectory_generator_name", "FollowPath.max_vel_x"):
+        assert ("read", f"/controller_server/{name}") in links, (name, links)
+    assert not [link for link in links if UNKNOWN_MARK in link[1]], links
+
+
+def test_dwb_critics_are_found_in_the_namespaces_it_is_given_or_not_at_all():
+    config, server = _dwb_config(
+        ["Speed"], ParamDecl("/controller_server/FollowPath.default_critic_namespaces",
+                             ["other_critics", "my_critics"]))
+    assert server.is_complete, server.completeness_reasons
+    assert ("read", "/controller_server/FollowPath.Speed.gain") in links_of(
+        config, "/controller_server")
+    config, server = _dwb_config(["Speed"])  # not under dwb_critics
+    assert not server.is_complete
+    assert [d.code for d in config.diagnostics if "SpeedCritic" in d.message] == [
+        "PLUGIN_NOT_FOUND"]

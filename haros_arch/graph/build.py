@@ -1023,6 +1023,7 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
     return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None,
+                    loads_given=name if call.loads is not None else None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
 

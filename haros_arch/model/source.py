@@ -270,6 +270,12 @@ class PrimitiveCall:
     # the parameter's value is the lookup name of the one class a pluginlib ClassLoader
     # of the code creates there, its default the code's
     loads: str | None = field(default=None, metadata={"optional": True})
+    # a ``loads`` read's name made of the name the code gives the loaded class, in a
+    # configuration (never in a node's calls): the element of a list parameter the graph
+    # put for its ``?`` (nav2's ``<id>.plugin``), or the plugin name of a plugin's read
+    # on its host (dwb's ``<plugin>.trajectory_generator_name``); the class's own ``?``
+    # names are that name (``plugins.attach.chains``)
+    loads_given: str | None = field(default=None, metadata={"optional": True})
     # ROS 1, a Gazebo classic plugin: the child element of its SDF (``sdf:robotNamespace``,
     # ``SDF_ELEMENT``) whose value is the one ``?`` of the handle's namespace
     # (``handle_namespace``), where the name's own part holds another (``name_param``);

@@ -63,6 +63,7 @@ from .hosts import (
     EXTENDS,
     KEYED,
     LOOKUP_PACKAGES,
+    PLUGIN_SLOTS,
     SPAWNER,
     Child,
     Host,
@@ -254,9 +255,12 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
             reasons = node.completeness_reasons[:1] or [node.completeness]
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
-        elif set(node.plugin_loads) - sites:  # a plugin that loads plugins (MPPI's critics)
-            own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
-        calls = [_under(call, plugin, choice.conditions, slot.bases)
+        else:
+            inner = PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ())
+            if _uncovered(node.plugin_loads, {*sites, *(s.site for s in inner if s.site)}):
+                # a plugin that loads plugins no row attaches (MPPI's critics)
+                own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
+        calls = [_under(call, plugin, choice.conditions, slot.bases, slot.inner)
                  for call in _with_base(node, index, workspace, models)]
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
@@ -267,12 +271,71 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             calls = _per_source(calls, row, plugin, choice, instance, node, params,
                                 workspace)
         out.append((instance, _new(calls, instance, made)))
+        for inner_slot in PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ()):
+            out.extend(_inner(choice, inner_slot, plugin, instance, index, workspace, models,
+                              params, config, owned, made, loaded, decl))
     for own, reads in _loading_reads(choice, instance, reader):
         kept = [r for r in reads if (id(own), r.name) not in loaded]
         loaded.update((id(own), r.name) for r in kept)
         if kept:
             out.append((own, kept))
     return out
+
+
+def _uncovered(loads: list[str], sites: set[str]) -> bool:
+    """Whether a load site (``file:line``) is none of ``sites``: a ``file:line``, or a
+    file (its end) whose every load a row attaches."""
+    return any(load not in sites and not any(
+        load.rsplit(":", 1)[0].endswith(site) for site in sites) for load in loads)
+
+
+def _inner(choice: Choice, slot: Slot, plugin: str, instance: NodeInstance,
+           index: Mapping[str, Node], workspace: Workspace, models: PluginModels | None,
+           params: Params, config: Configuration, owned: set[int],
+           made: dict[int, set[tuple[Any, ...]]], loaded: set[tuple[int, str]],
+           decl: NodeDecl | None) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The calls of the plugins that the plugin ``plugin`` (chosen by ``choice``) loads
+    from its host's parameters (``hosts.PLUGIN_SLOTS``), on the host."""
+    def relative(text: str | None) -> str | None:
+        return None if text is None else text.replace("{plugin}", plugin)
+
+    nested = replace(slot, names=relative(slot.names), type_of=relative(slot.type_of),
+                     prefix=plugin + ".", resolve=None if slot.resolve is None else (
+                         slot.resolve[0], relative(slot.resolve[1]) or "",
+                         slot.resolve[2]))
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    for each in list(_chosen(instance, nested, params)):
+        cls = each.cls or (each.name if slot.class_is_name and UNKNOWN_MARK not in (
+            each.name) else None)
+        each = replace(each, cls=_completed(cls, nested, instance, params, index,
+                                            workspace, models),
+                       conditions=(*choice.conditions, *each.conditions))
+        out.extend(_load(each, nested, instance, index, workspace, models, params, config,
+                         owned, made, loaded, decl))
+    return out
+
+
+def _completed(cls: str | None, slot: Slot, instance: NodeInstance, params: Params,
+               index: Mapping[str, Node], workspace: Workspace,
+               models: PluginModels | None) -> str | None:
+    """A class written short, completed as the loading code does (``Slot.resolve``):
+    its suffix added, then the first of the namespaces the list parameter gives (or its
+    defaults) under which a class is found."""
+    if cls is None or slot.resolve is None or UNKNOWN_MARK in cls:
+        return cls
+    suffix, listing, defaults = slot.resolve
+    if suffix not in cls:
+        cls += suffix
+    if "::" in cls:
+        return cls
+    given = _parameter(params, instance.name.rstrip("/") + "/" + listing)
+    namespaces = [str(n) for n in given.value] if given is not None and isinstance(
+        given.value, list) and given.value else list(defaults)
+    for namespace in namespaces:
+        full = f"{namespace}::{cls}"
+        if _lookup(Choice("", full, instance.location), index, workspace, models):
+            return full
+    return cls
 
 
 def _with_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
@@ -874,11 +937,11 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
     if _host_slot_reads(instance, full):
         return []  # the host's row loads it, with the plugin name and placement it knows
     default = call.default if isinstance(call.default, str) and call.default else None
-    # the element of a list the parameter is named by (nav2's ``<id>.plugin``) is the
-    # plugin name the class is given (``plugin->configure(node, ids[i])``)
-    element = _loaded_element(instance, call)
+    # the name the parameter's name is made of (an element of a list, nav2's
+    # ``<id>.plugin``; a plugin's name) is the one the class is given
+    # (``plugin->configure(node, ids[i])``)
     slot = Slot(None, full, (class_load_base(call.loads) or PLUGINLIB_CLASS,),
-                defaults=(("", default),) if default else (), given=element)
+                defaults=(("", default),) if default else (), given=call.loads_given)
     unseen = _may_be_set(full, params)
     if unseen is not None:
         own_partial(instance, unseen, owned)
@@ -899,23 +962,6 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
         out.extend(_load(choice, slot, instance, index, workspace, models, params, config,
                          owned, made, loaded, None))
     return out
-
-
-def _loaded_element(instance: NodeInstance, call: PrimitiveCall) -> str | None:
-    """The element of a list parameter that names the parameter ``call`` reads to load a
-    class, when the code's read is one per element (``name_each``, the graph made one
-    call per element): the text that fills the ``?`` of the code's name."""
-    node = instance.node
-    for written in (node.calls if node is not None else ()):
-        if written.loads != call.loads or written.location != call.location or (
-                written.name_each is None or written.name.count(UNKNOWN_MARK) != 1):
-            continue
-        head, tail = written.name.split(UNKNOWN_MARK)
-        name = call.name
-        if name.startswith(head) and name.endswith(tail) and len(name) > len(head) + len(
-                tail):
-            return name[len(head):len(name) - len(tail)]
-    return None
 
 
 def _host_slot_reads(instance: NodeInstance, full: str) -> bool:
@@ -1165,7 +1211,7 @@ def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
 
 
 def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
-           bases: tuple[str, ...] = ()) -> PrimitiveCall:
+           bases: tuple[str, ...] = (), inner: bool = False) -> PrimitiveCall:
     """The call as the plugin named ``plugin`` makes it on its host: an unknown first
     part of its name (and handle namespace, and the parameter its name comes from) is
     the plugin name, and so is a name that is wholly the string the host passes the
@@ -1181,10 +1227,14 @@ def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
         name = name[:-1] + plugin
     elif not call.name_param or (call.handle_namespace and name.startswith(
             call.handle_namespace + "/")):
-        name = _named(name, plugin)
-    return replace(call, name=name, host_named=None,
-                   handle_namespace=_named(call.handle_namespace, plugin),
-                   name_param=_named(call.name_param, plugin),
+        name = _named(name, plugin, inner)
+    given = call.loads_given
+    if call.loads is not None and given is None and name != call.name and (
+            call.name.count(UNKNOWN_MARK) == 1):
+        given = plugin  # the class this read loads is given the plugin's name
+    return replace(call, name=name, host_named=None, loads_given=given,
+                   handle_namespace=_named(call.handle_namespace, plugin, inner),
+                   name_param=_named(call.name_param, plugin, inner),
                    conditions=(*conditions, *call.conditions))
 
 
@@ -1196,20 +1246,33 @@ def _moved(name: str, namespace: str) -> str:
     return "~" + namespace.strip("/") + "/" + name[1:].lstrip("/")
 
 
-def _named(name: str | None, plugin: str) -> Any:
+def _named(name: str | None, plugin: str, inner: bool = False) -> Any:
     """``name`` with its unknown first part the plugin name; a plugin name in the host's
     private namespace (``~ns``, ``~``: a MoveIt pipeline's) is that whether the call's
-    handle was private or not (the namespace the host passes is absolute)."""
+    handle was private or not (the namespace the host passes is absolute). ``inner``:
+    the plugin is ``<outer>.<own>`` of a plugin's own slot (``Slot.inner``), whose
+    names' first unknown part is the outer plugin's name and the next its own."""
     if name is None or not plugin:
         return name
+    if inner and "." in plugin:
+        outer, own = plugin.rsplit(".", 1)
+        first = _named(name, outer)
+        if first == name:
+            return name
+        cut = first.index(outer) + len(outer)
+        rest = first[cut:]
+        if rest[:1] in (".", "/") and rest[1:2] == UNKNOWN_MARK and rest[2:3] in (
+                ".", "/") and len(rest) > 3:
+            return first[:cut] + rest[0] + own + rest[2:]
+        return first
     for lead in ("~/", "~", ""):
         if name.startswith(lead + UNKNOWN_MARK):
             rest = name[len(lead) + 1:]
             # a prefix only: a name that is wholly unknown is not the plugin name
             if rest[:1] in ("/", ".") and len(rest) > 1:
                 if plugin.startswith("~"):
-                    inner = plugin.lstrip("~/")
-                    return "~" + (inner + rest if inner else rest[1:])
+                    below = plugin.lstrip("~/")
+                    return "~" + (below + rest if below else rest[1:])
                 return lead + plugin + rest
     return name
 

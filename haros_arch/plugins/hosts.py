@@ -112,6 +112,20 @@ class Slot:
     # starting with ``~``, loads nothing (MoveIt's octomap updaters,
     # occupancy_map_monitor.cpp:113-130)
     typed_only: bool = False
+    # the class of a plugin whose ``type_of`` is not set is its plugin name (dwb's critics:
+    # ``BaseObstacle``), completed as ``resolve`` says
+    class_is_name: bool = False
+    # how a class written short is completed (``PLUGIN_SLOTS``): this suffix added when
+    # the class does not hold it, then, when it names no namespace, the first namespace
+    # of the list parameter ``resolve[1]`` (default ``resolve[2]``) under which a class is
+    # found (dwb's ``resolveCriticClassName``: ``Critic``, ``default_critic_namespaces``,
+    # ``dwb_critics``)
+    resolve: tuple[str, str, tuple[str, ...]] | None = None
+    # a plugin's own slot (``PLUGIN_SLOTS``, ``prefix`` the outer plugin's name and a
+    # dot): its plugins' names fill two unknown parts, the outer plugin's name the first
+    # and theirs the next (``<plugin>.<critic>.scale``); a name of one unknown part is the
+    # outer plugin's
+    inner: bool = False
 
 
 @dataclass(frozen=True)
@@ -271,7 +285,12 @@ HOSTS: tuple[Host, ...] = (
              ("nav2_core", "nav2_core::ProgressChecker"),
              defaults=(("progress_checker", "nav2_controller::SimpleProgressChecker"),)),
         Slot("progress_checker_plugin", "{name}.plugin",
-             ("nav2_core", "nav2_core::ProgressChecker")),),
+             ("nav2_core", "nav2_core::ProgressChecker")),
+        # path handlers from navigation2 1.5.0 (f3406e246, "Centralize path handler
+        # logic in controller server"; parameter_handler.cpp's ``path_handler_plugins``)
+        Slot("path_handler_plugins", "{name}.plugin", ("nav2_core", "nav2_core::PathHandler"),
+             defaults=(("PathHandler", "nav2_controller::FeasiblePathHandler"),),
+             since=(1, 5)),),
          (Child("local_costmap", "local_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
     Host("nav2_behaviors", ("behavior_server", "behavior_server::BehaviorServer"), 2, (
         Slot("behavior_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Behavior")),)),
@@ -474,10 +493,30 @@ def node_name_patterns() -> dict[str, str]:
             if slot.node_name for base in slot.bases if "::" in base}
 
 
+# plugin classes that load plugins of their own from their host's parameters, named
+# relative to the plugin (``{plugin}``: the name the host gives it): each slot's plugins
+# make their calls on the host, their names' first unknown part the plugin's name and the
+# next the inner plugin's (``attach._inner``); ``site``: the file of the loading code (any
+# line), whose load then hides nothing.
+# dwb_core's DWBLocalPlanner (navigation2 humble to main, dwb_local_planner.cpp
+# ``loadCritics``): ``<plugin>.critics`` lists the critics, each's class is
+# ``<plugin>.<critic>.class`` or the critic's name, completed by
+# ``resolveCriticClassName``; ``TrajectoryCritic::initialize(node, critic, plugin, ...)``
+# names their parameters ``<plugin>.<critic>.<key>``
+PLUGIN_SLOTS: dict[str, tuple[Slot, ...]] = {
+    "dwb_core::DWBLocalPlanner": (
+        Slot("{plugin}.critics", "{plugin}.{name}.class",
+             ("dwb_core", "dwb_core::TrajectoryCritic"), class_is_name=True,
+             resolve=("Critic", "{plugin}.default_critic_namespaces", ("dwb_critics",)),
+             site="dwb_core/src/dwb_local_planner.cpp", inner=True),),
+}
+
+
 def plugin_bases() -> frozenset[str]:
     """Export tags and base classes of every class some host loads."""
     return frozenset((*ROS1_CONTROLLER_BASES, *CHAINS, *(
-        base for host in HOSTS for slot in host.slots for base in slot.bases)))
+        base for host in HOSTS for slot in host.slots for base in slot.bases), *(
+        base for slots in PLUGIN_SLOTS.values() for slot in slots for base in slot.bases)))
 
 
 # -- image_transport ---------------------------------------------------------------------
