@@ -759,3 +759,13 @@ def test_the_ruckig_library_leaves_it_complete(write_tree: Any) -> None:
                      "ruckig")
     assert node.completeness == "complete", node.completeness_reasons
     assert node.said == []
+
+
+def test_the_serial_port_library_leaves_it_complete(write_tree: Any) -> None:
+    # mit-racecar's vesc_driver builds wjwwood/serial's serial::Serial (a catkin package
+    # whose package.xml names catkin alone, released into noetic): the driver node and its
+    # nodelet were partial for it
+    node = _smoother(write_tree, "serial::Serial port(\"/dev/ttyACM0\");", "gtsam",
+                     "octomap", "serial")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
