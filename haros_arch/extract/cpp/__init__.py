@@ -1546,7 +1546,9 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     parameter, topic or service functions; another package's when the unit's package
     declares it as a dependency and it is installed with a package.xml that depends on
     roscpp, or found nowhere (its headers are missing: what it does is not known) and
-    not in the table of dependencies known to make no ROS calls (``no_clients``). A
+    not in the table of dependencies known to make no ROS calls (``no_clients``); not,
+    the package not in the workspace, a class that table lists as making none
+    (``no_client_classes``). A
     dependency counts when the unit's package declares it or a workspace package it
     depends on exports it (``_visible``). The workspace files it reads (manifests, the
     files that define a class) go to ``read``, so a cached result is used only while
