@@ -634,6 +634,11 @@ def test_the_table_names_its_sources() -> None:
     with open(NO_CLIENTS, encoding="utf-8") as handle:
         data = safe_yaml.load(handle.read())
     assert "gtsam" in no_clients() and "roscpp" not in no_clients()
+    assert set(data) == {"system", "released", "classes"}
+    for name, entry in data["classes"].items():  # each package's list names its source
+        repo, commit, *paths = entry["source"].split()
+        assert repo.startswith("github:") and len(commit) == 40 and paths, name
+        assert entry["names"] and all("::" not in n for n in entry["names"]), name
     # every released library names the manifest read: repository, commit, path
     for name, source in data["released"].items():
         repo, commit, path = source.split()
@@ -759,3 +764,35 @@ def test_the_ruckig_library_leaves_it_complete(write_tree: Any) -> None:
                      "ruckig")
     assert node.completeness == "complete", node.completeness_reasons
     assert node.said == []
+
+
+def test_the_serial_port_library_leaves_it_complete(write_tree: Any) -> None:
+    # mit-racecar's vesc_driver builds wjwwood/serial's serial::Serial (a catkin package
+    # whose package.xml names catkin alone, released into noetic): the driver node and its
+    # nodelet were partial for it
+    node = _smoother(write_tree, "serial::Serial port(\"/dev/ttyACM0\");", "gtsam",
+                     "octomap", "serial")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+
+
+def test_a_class_of_a_ros_package_known_to_make_no_calls_leaves_it_complete(
+        write_tree: Any) -> None:
+    # m-explore's explore_lite keeps a costmap_2d::Costmap2D (the grid: no ROS call in
+    # costmap_2d.cpp) and kth-ros-pkg/yumi's yumi_hw ros_control's joint limits handles
+    # and interfaces; neither package in the workspace, both nodes were partial for them.
+    # The shipped table lists such classes by package; another class of the same package
+    # (Costmap2DROS reads ~costmap/*) still makes the node partial
+    node = _smoother(write_tree, "costmap_2d::Costmap2D grid;\n"
+                     "joint_limits_interface::PositionJointSaturationInterface sat;\n"
+                     "joint_limits_interface::JointLimits limits;",
+                     "gtsam", "octomap", "costmap_2d", "joint_limits_interface")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+    node = _smoother(write_tree, "costmap_2d::Costmap2D grid;\n"
+                     "costmap_2d::Costmap2DROS map(\"costmap\", grid);",
+                     "gtsam", "octomap", "costmap_2d")
+    assert node.completeness == "partial"
+    assert [d.location.line for d in node.said] == [14], node.said
+    assert any("costmap_2d::Costmap2DROS of ROS package costmap_2d" in r
+               for r in node.completeness_reasons), node.completeness_reasons

@@ -140,6 +140,32 @@ def test_unknown_macro_and_missing_include_are_diagnostics_with_their_line(tmp_p
     assert len(description.unknown) == 2 and description.root is not None
 
 
+def test_a_macro_an_include_not_read_may_define_is_unknown_not_wrong(tmp_path: Path):
+    """yumi_description's gripper includes ``$(find hector_xacro_tools)/urdf/
+    inertia_tensors.urdf.xacro`` and calls its ``xacro:inertial_cuboid``: with that
+    package absent the call was an "unknown macro" warning, a fault the file does not
+    have. After an include not read (package not found, file missing), a macro not
+    defined is unknown, said with the include; one called before it, or outside an
+    ``ns=`` include's namespace, is still wrong."""
+    description = tmp_expand(
+        tmp_path, '\n<xacro:early/>\n<xacro:include filename="gone.xacro" ns="g"/>\n'
+                  '<xacro:g.part/>\n<xacro:h.part/>\n'
+                  '<xacro:include filename="$(find absent_tools)/urdf/tensors.xacro"/>\n'
+                  '<link name="l"><xacro:inertial_cuboid mass="1"/></link>')
+    assert codes(description) == [("ROBOT_DESCRIPTION_XACRO", 2),
+                                  ("ROBOT_DESCRIPTION_FILE", 3),
+                                  ("ROBOT_DESCRIPTION_XACRO", 5)]
+    assert [d.message for d in description.diagnostics
+            if d.code == "ROBOT_DESCRIPTION_XACRO"] == ["xacro: unknown macro xacro:early",
+                                                        "xacro: unknown macro xacro:h.part"]
+    assert ("macro g.part is not defined here; it may be one of gone.xacro, which is not "
+            "read (robot.urdf.xacro:4)") in description.unknown
+    assert ("macro inertial_cuboid is not defined here; it may be one of $(find absent_tools)"
+            "/urdf/tensors.xacro, which is not read (robot.urdf.xacro:7)"
+            ) in description.unknown
+    assert description.root.find("link[@name='l']") is not None
+
+
 def test_an_include_outside_the_workspace_is_not_read(tmp_path: Path):
     inside = tmp_path / "ws"
     inside.mkdir()

@@ -240,6 +240,9 @@ class _Expander:
         self.characters = 0  # of evaluated text made
         self.deadline = time.monotonic() + MAX_SECONDS
         self.files: list[str] = []  # the stack of files being read
+        # the includes not read so far (their namespace, the file as written): a macro
+        # called after one may be defined there (``_unread_source``)
+        self.unread: list[tuple[str, str]] = []
 
     # -- diagnostics and unknowns ----------------------------------------------------------
     def where(self, element: Element | None) -> Any:
@@ -250,6 +253,14 @@ class _Expander:
 
     def report(self, element: Element | None, code: str, **params: object) -> None:
         self.description.diagnostics.append(diag.make(code, self.where(element), **params))
+
+    def _unread_source(self, name: str) -> str | None:
+        """The first include not read so far (a package not found, a file that is not
+        there or outside the workspace) that could define the macro ``name``: one
+        without ``ns=``, or whose namespace prefixes ``name``. xacro reads in order, so
+        an include after the call defines nothing for it."""
+        return next((text for namespace, text in self.unread
+                     if not namespace or name.startswith(namespace + ".")), None)
 
     def unknown(self, element: Element | None, reason: str) -> None:
         where = self.where(element)
@@ -554,6 +565,11 @@ class _Expander:
              depth: int) -> list[Element]:
         macro = scope.macro(name)
         if macro is None:
+            source = self._unread_source(name)
+            if source is not None:  # no fault of the file: the macro may be defined there
+                self.unknown(element, f"macro {name} is not defined here; it may be one of "
+                                      f"{source}, which is not read")
+                return []
             self.report(element, "ROBOT_DESCRIPTION_XACRO",
                         detail=f"unknown macro xacro:{name}")
             self.unknown(element, f"macro {name} is not defined")
@@ -761,10 +777,12 @@ def _include(self: _Expander, element: Element, scope: _Scope, depth: int) -> li
     if not spec:
         self.report(element, "ROBOT_DESCRIPTION_XACRO", detail="xacro:include without filename")
         return []
+    namespace = self.text_of(element, element.get("ns") or "", scope)
     value = self.evaluate(element, spec, scope)
     if isinstance(value, Value):
         self.unknown(element, f"included file {value.text} is not known: "
                               + "; ".join(dict.fromkeys(value.origins)))
+        self.unread.append((namespace, spec))
         return []
     path = _str(value)
     if not path:
@@ -772,12 +790,12 @@ def _include(self: _Expander, element: Element, scope: _Scope, depth: int) -> li
     if not os.path.isabs(path):
         here = self.files[-1] if self.files else self.description.path
         path = os.path.join(os.path.dirname(here), path)
-    namespace = self.text_of(element, element.get("ns") or "", scope)
     optional = element.get("optional") in ("true", "1")
     if optional and not os.path.isfile(path):
         return []
     root = self.read(path, element)
     if root is None:
+        self.unread.append((namespace, spec))
         return []
     if namespace:  # its macros and properties are its own, called as ns.name
         inner = _Scope(scope, namespace=True)

@@ -1546,7 +1546,9 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     parameter, topic or service functions; another package's when the unit's package
     declares it as a dependency and it is installed with a package.xml that depends on
     roscpp, or found nowhere (its headers are missing: what it does is not known) and
-    not in the table of dependencies known to make no ROS calls (``no_clients``). A
+    not in the table of dependencies known to make no ROS calls (``no_clients``); not,
+    the package not in the workspace, a class that table lists as making none
+    (``no_client_classes``). A
     dependency counts when the unit's package declares it or a workspace package it
     depends on exports it (``_visible``). The workspace files it reads (manifests, the
     files that define a class) go to ``read``, so a cached result is used only while
@@ -1618,6 +1620,8 @@ def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
                 os.path.join(generated, name, each + ".h")):
             return False
     other = workspace.packages.get(name)
+    if other is None and cls in no_client_classes().get(name, ()):
+        return False  # a class of a ROS package, read in its source: no ROS call
     if other is not None:
         if not any(d.name == ROSCPP for d in other.dependencies):
             return False
@@ -1648,6 +1652,21 @@ def no_clients() -> frozenset[str]:
     with open(NO_CLIENTS, encoding="utf-8") as handle:
         data = safe_yaml.load(handle.read())
     return frozenset([*data["system"], *data["released"]])
+
+
+@functools.lru_cache(maxsize=1)
+def no_client_classes() -> dict[str, frozenset[str]]:
+    """Classes (qualified) of ROS packages that make ROS calls elsewhere, whose
+    constructors and what they run make none, each package's list read in its source
+    (``nonclients.yaml``'s ``classes``): costmap_2d's ``Costmap2D``, the grid that
+    frontier explorers and planners build; ros_control's joint limits handles and
+    interfaces (its ``getJointLimits(name, nh, limits)`` reads parameters: a function,
+    not a class, still unknown where the header is missing). Used where the package is
+    not in the workspace (a workspace package's code is read instead)."""
+    with open(NO_CLIENTS, encoding="utf-8") as handle:
+        data = safe_yaml.load(handle.read())
+    return {package: frozenset(f"{package}::{name}" for name in entry["names"])
+            for package, entry in data["classes"].items()}
 
 
 def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
