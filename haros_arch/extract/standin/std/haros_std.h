@@ -1007,6 +1007,17 @@ template<class T> struct default_delete { void operator()(T* p) const; };
 template<class T> class weak_ptr;
 template<class T, class D> class unique_ptr;
 template<class T> class auto_ptr;
+// whether a shared_ptr<Y> converts to a shared_ptr<T>: as the real one, when Y* converts
+// to T* (so overloads on shared_ptr<A> and shared_ptr<B> are not ambiguous: MoveIt's
+// PlanningScene(RobotModelConstPtr) beside its PlanningScene(PlanningSceneConstPtr));
+// also, as before, when either class is one the parse declared permissively
+// (``haros_any``) or is not complete here (its definition in a header not found)
+template<class... A> struct haros_sp_void { typedef void type; };
+template<class Y, class T, class = void> struct haros_sp_converts : true_type {};
+template<class Y, class T> struct haros_sp_converts<Y, T,
+    typename haros_sp_void<decltype(sizeof(Y)), decltype(sizeof(T))>::type>
+    : integral_constant<bool, __is_convertible_to(Y*, T*) || __is_base_of(::haros_any, Y)
+                              || __is_base_of(::haros_any, T)> {};
 template<class T> class shared_ptr {
 public:
   typedef T element_type;
@@ -1017,13 +1028,15 @@ public:
   template<class Y, class D, class A> shared_ptr(Y* p, D d, A a);
   template<class D> shared_ptr(nullptr_t p, D d);
   shared_ptr(const shared_ptr& other) noexcept;
-  template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  shared_ptr(const shared_ptr<Y>& other) noexcept;
   // aliasing: shares ownership with ``other``, points at ``p`` (MoveIt's robot models)
   template<class Y> shared_ptr(const shared_ptr<Y>& other, element_type* p) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
   template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
-  template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   T* operator->() const noexcept;
   T& operator*() const noexcept;
   T* get() const noexcept;
