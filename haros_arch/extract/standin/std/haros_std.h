@@ -23,6 +23,9 @@ using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using :
 using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
 using ::isnan; using ::isinf; using ::isfinite; using ::signal;
 using ::memcmp; using ::memmove; using ::vsnprintf;
+// the rest of <cstring> (cartographer_ros' and yasmin's std::strrchr of a file's path)
+using ::strcat; using ::strncat; using ::strchr; using ::strrchr; using ::strstr;
+using ::strtok; using ::strpbrk; using ::strspn; using ::strcspn; using ::memchr;
 bool signbit(float x); bool signbit(double x); bool signbit(long double x);
 template<class I> bool signbit(I x);  // an integer, as a double
 using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
@@ -639,10 +642,30 @@ public:
 template<class T, class A = allocator<T>> class list : public vector<T, A> {
 public:
   using vector<T, A>::vector;
+  typedef typename vector<T, A>::const_iterator const_iterator;
   void push_front(const T& v);
+  void push_front(T&& v);
+  template<class... Args> T& emplace_front(Args&&... args);
   void pop_front();
   void sort();
+  template<class C> void sort(C comp);
   void remove(const T& v);
+  template<class P> void remove_if(P pred);
+  void unique();
+  template<class P> void unique(P pred);
+  void reverse() noexcept;
+  void merge(list& other);
+  void merge(list&& other);
+  template<class C> void merge(list& other, C comp);
+  template<class C> void merge(list&& other, C comp);
+  // moves elements of ``other`` before ``pos`` (an LRU cache's move to the front:
+  // yasmin's demangle cache, autoware_utils' lru_cache; MoveIt's trajectory generation)
+  void splice(const_iterator pos, list& other);
+  void splice(const_iterator pos, list&& other);
+  void splice(const_iterator pos, list& other, const_iterator it);
+  void splice(const_iterator pos, list&& other, const_iterator it);
+  void splice(const_iterator pos, list& other, const_iterator first, const_iterator last);
+  void splice(const_iterator pos, list&& other, const_iterator first, const_iterator last);
 };
 template<class T, size_t N> struct array {
   T elems_[N ? N : 1];
