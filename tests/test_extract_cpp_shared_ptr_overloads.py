@@ -4,7 +4,8 @@ builds ``PlanningScene ps(rml->getModel())`` where PlanningScene has a construct
 ``RobotModelConstPtr`` and a private one on a ``PlanningSceneConstPtr``; the
 unconstrained conversion made the two ambiguous, a parse error beside the node's
 publisher. A class the parse declared permissively (from a header not found) still
-converts, as before."""
+converts, as before, and so does a base to its derived class (the stand-ins return
+rclcpp's ``TimerBase`` where the real ``create_timer`` returns a ``GenericTimer<F>``)."""
 
 from __future__ import annotations
 
@@ -32,6 +33,8 @@ private:
 struct Loader { const std::shared_ptr<RobotModel>& getModel() const; };
 void take(std::shared_ptr<Base> b);
 void take_model(std::shared_ptr<unknown::Model> m);
+std::shared_ptr<Base> make_base();
+std::shared_ptr<Derived> make_derived() { return make_base(); }
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "n");

@@ -1031,15 +1031,19 @@ template<class T> class weak_ptr;
 template<class T, class D> class unique_ptr;
 template<class T> class auto_ptr;
 // whether a shared_ptr<Y> converts to a shared_ptr<T>: as the real one, when Y* converts
-// to T* (so overloads on shared_ptr<A> and shared_ptr<B> are not ambiguous: MoveIt's
-// PlanningScene(RobotModelConstPtr) beside its PlanningScene(PlanningSceneConstPtr));
-// also, as before, when either class is one the parse declared permissively
-// (``haros_any``) or is not complete here (its definition in a header not found)
+// to T* (so overloads on shared_ptr<A> and shared_ptr<B> of unrelated classes are not
+// ambiguous: MoveIt's PlanningScene(RobotModelConstPtr) beside its
+// PlanningScene(PlanningSceneConstPtr)); also, as before, from a base to a class derived
+// from it (the stand-ins return a base where the real API returns the derived class:
+// rclcpp::create_timer's TimerBase for GenericTimer<F>, nav2's lifecycle node), and when
+// either class is one the parse declared permissively (``haros_any``) or is not complete
+// here (its definition in a header not found)
 template<class... A> struct haros_sp_void { typedef void type; };
 template<class Y, class T, class = void> struct haros_sp_converts : true_type {};
 template<class Y, class T> struct haros_sp_converts<Y, T,
     typename haros_sp_void<decltype(sizeof(Y)), decltype(sizeof(T))>::type>
-    : integral_constant<bool, __is_convertible_to(Y*, T*) || __is_base_of(::haros_any, Y)
+    : integral_constant<bool, __is_convertible_to(Y*, T*) || __is_base_of(Y, T)
+                              || __is_base_of(::haros_any, Y)
                               || __is_base_of(::haros_any, T)> {};
 template<class T> class shared_ptr {
 public:
