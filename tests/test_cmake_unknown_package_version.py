@@ -64,3 +64,20 @@ def test_an_unset_variable_of_another_kind_is_empty_as_before():
         endif()
         """)
     assert list(conditions(it)) == ["plain"]
+
+
+def test_what_no_find_package_looks_for_is_empty():
+    # MoveIt 2's planning_components_tools, an ament package: catkin is never found, so
+    # catkin_LIBRARIES is empty and the bullet comparison tool is not built
+    it = run("""
+        find_package(ament_cmake REQUIRED)
+        if("${catkin_LIBRARIES}" MATCHES "moveit_collision_detection_bullet")
+          add_executable(compare a.cpp)
+        endif()
+        find_package(Bullet)
+        if("${BULLET_VERSION}" VERSION_GREATER "2.8")
+          add_executable(bullet_tool a.cpp)
+        endif()
+        """)
+    assert list(conditions(it)) == ["bullet_tool"]
+    assert conditions(it)["bullet_tool"] != []

@@ -31,7 +31,7 @@ BINARY = ("STREQUAL", "STRLESS", "STRGREATER", "STRLESS_EQUAL", "STRGREATER_EQUA
 # known here unless the reading set it, read bare (``if(X_FOUND)``) or through a reference
 # (``"${X_VERSION}" VERSION_GREATER 1.0``, which the test gets as ``UNKNOWN_MARK``)
 FOUND_BY_PACKAGE = re.compile(
-    r"[A-Za-z_][A-Za-z0-9_]*_(FOUND|DIR|LIBRARIES|INCLUDE_DIRS|VERSION)")
+    r"([A-Za-z_][A-Za-z0-9_]*)_(FOUND|DIR|LIBRARIES|INCLUDE_DIRS|VERSION)")
 # an argument of a test whose value is not known (a generator expression's form, which
 # no text CMake reads has)
 UNKNOWN_MARK = "$<HAROS_UNKNOWN>"

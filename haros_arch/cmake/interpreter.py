@@ -164,6 +164,9 @@ class Interpreter:
         # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
         # an empty string); ``unknown_reference`` takes them as not known
         self.uncertain: set[str] = set()
+        # the packages a find_package of this reading looks for (and catkin's
+        # components), lower-cased: what it sets of them (``<pkg>_VERSION``) is not known
+        self.found_packages: set[str] = set()
         # variables written on some paths through if()s the reading cannot decide and not
         # on others, or to different values: each path's value (None: not set), the
         # variable holding the last path's (or its last set one) meanwhile. A test that
@@ -532,17 +535,21 @@ class Interpreter:
 
     def test_arguments(self, args: tuple[Argument, ...]) -> list[str]:
         """An ``if()`` / ``while()`` test's arguments expanded, each one that reads what a
-        ``find_package`` sets (``${mongodb_store_VERSION}``) which is not set here
+        ``find_package`` of this reading sets (``${mongodb_store_VERSION}`` after
+        ``find_package(catkin COMPONENTS mongodb_store)``) which is not set here
         ``UNKNOWN_MARK``: its value is not known, not the empty text CMake would give an
         unset variable (jsk_robot_startup's ``if("${mongodb_store_VERSION}"
-        VERSION_GREATER "0.5.1")`` of a package not in the workspace is not decided)."""
+        VERSION_GREATER "0.5.1")`` of a package not in the workspace is not decided). A
+        package no find_package looks for sets nothing: empty, as CMake has it (MoveIt 2's
+        ``if("${catkin_LIBRARIES}" MATCHES ...)`` in an ament package)."""
         values: list[str] = []
         for arg in args:
             read: list[str] = []
             if arg.kind != "bracket":
                 self._expanded(arg.text, read=read)
             if any(self.get(name) is None and name not in self.assigned
-                   and FOUND_BY_PACKAGE.fullmatch(name) for name in read):
+                   and (found := FOUND_BY_PACKAGE.fullmatch(name)) is not None
+                   and found.group(1).lower() in self.found_packages for name in read):
                 values.append(UNKNOWN_MARK)
             else:
                 values.extend(self.arguments((arg,)))
