@@ -23,10 +23,10 @@ YAML = os.path.join(PACKAGE, "src", "joint_gain_controller_parameters.yaml")
 UNCLEAN = ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_CALL_UNRESOLVED",
            "CPP_NAMES_DECLARED", "CPP_ERROR_NEAR_CALL", "CPP_PARAMETER_LIBRARY")
 DECLARED = [
-    ("joints", "list", True, ["shoulder", "elbow"]),
+    ("joints", "str[]", True, ["shoulder", "elbow"]),
     ("interface_name", "str", True, "position"),
     ("update_rate", "int", True, 100),
-    ("command_joints", "list", True, []),
+    ("command_joints", "str[]", True, []),
     ("open_loop", "bool", True, False),
     ("limits.max_velocity", "double", True, 1.5),
     ("limits.max_effort", "double", False, None),  # no default_value: required

@@ -835,6 +835,7 @@ def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
 def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if not args or not _PACKAGE_NAME.fullmatch(args[0]):
         return
+    it.found_packages.add(args[0].lower())
     found = _tool_found(it, args[0], "REQUIRED" in args[1:])
     if found is not None:
         it.set(f"{args[0]}_FOUND", found)
@@ -848,6 +849,7 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
                 taking = False  # REQUIRED, QUIET, CONFIG, ...
             elif taking and _PACKAGE_NAME.fullmatch(arg):
                 components.append(arg)
+                it.found_packages.add(arg.lower())  # catkin finds each one
         it.set("catkin_LIBRARIES", ";".join(PACKAGE_MARK.format(c) for c in components))
         return
     for variable in (f"{args[0]}_LIBRARIES", f"{args[0]}_TARGETS"):

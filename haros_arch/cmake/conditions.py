@@ -27,6 +27,16 @@ BINARY = ("STREQUAL", "STRLESS", "STRGREATER", "STRLESS_EQUAL", "STRGREATER_EQUA
           "VERSION_GREATER_EQUAL", "IN_LIST", "IS_NEWER_THAN", "PATH_EQUAL")
 
 
+# what ``find_package(X)`` sets at configure time (``X_FOUND``, ``X_VERSION``, ...): not
+# known here unless the reading set it, read bare (``if(X_FOUND)``) or through a reference
+# (``"${X_VERSION}" VERSION_GREATER 1.0``, which the test gets as ``UNKNOWN_MARK``)
+FOUND_BY_PACKAGE = re.compile(
+    r"([A-Za-z_][A-Za-z0-9_]*)_(FOUND|DIR|LIBRARIES|INCLUDE_DIRS|VERSION)")
+# an argument of a test whose value is not known (a generator expression's form, which
+# no text CMake reads has)
+UNKNOWN_MARK = "$<HAROS_UNKNOWN>"
+
+
 class Evaluator:
     def __init__(self, variables: Mapping[str, str], targets: Mapping[str, object],
                  base: str, known_commands: Callable[[str], bool] = lambda _: False,
@@ -97,14 +107,17 @@ class Evaluator:
 
     def _value(self, text: str) -> str | None:
         """A binary operand: a variable's value if it names one, else the text."""
+        if UNKNOWN_MARK in text:
+            return None
         if text in self.variables:
             return self.variables[text]
-        if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*_(FOUND|DIR|LIBRARIES|INCLUDE_DIRS|VERSION)",
-                        text):
+        if FOUND_BY_PACKAGE.fullmatch(text):
             return None  # set by find_package at configure time
         return text
 
     def _truth(self, text: str) -> Truth:
+        if UNKNOWN_MARK in text:
+            return None
         upper = text.upper()
         if upper in _TRUE or (_is_number(text) and float(text) != 0):
             return True
@@ -118,6 +131,8 @@ class Evaluator:
         return None  # a variable we do not know: an environment or cache setting
 
     def _unary(self, op: str, arg: str) -> Truth:
+        if UNKNOWN_MARK in arg:
+            return None
         if op == "DEFINED":
             if arg.startswith("ENV{") and arg.endswith("}"):
                 return True if arg[4:-1] in self.environment else None
@@ -140,7 +155,7 @@ class Evaluator:
     def _binary(self, left_text: str, op: str, right_text: str) -> Truth:
         left, right = self._value(left_text), self._value(right_text)
         if op == "IN_LIST":
-            items = self.variables.get(right_text)
+            items = self.variables.get(right_text) if UNKNOWN_MARK not in right_text else None
             if left is None or items is None:
                 return None
             return left in items.split(";")

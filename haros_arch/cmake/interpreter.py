@@ -28,7 +28,15 @@ from ..diagnostics import Diagnostic
 from ..model.conditions import Condition
 from ..model.location import Location
 from .commands import HANDLERS, IGNORED, defined_names, directory_done, unknown_command
-from .conditions import BINARY, FALSE_WORDS, TRUE_WORDS, UNARY, Evaluator
+from .conditions import (
+    BINARY,
+    FALSE_WORDS,
+    FOUND_BY_PACKAGE,
+    TRUE_WORDS,
+    UNARY,
+    UNKNOWN_MARK,
+    Evaluator,
+)
 from .lexer import Argument, Invocation
 from .listops import split_list
 from .targets import CompileDefinition, Configured, Install, Program, Registration, Target
@@ -156,6 +164,9 @@ class Interpreter:
         # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
         # an empty string); ``unknown_reference`` takes them as not known
         self.uncertain: set[str] = set()
+        # the packages a find_package of this reading looks for (and catkin's
+        # components), lower-cased: what it sets of them (``<pkg>_VERSION``) is not known
+        self.found_packages: set[str] = set()
         # variables written on some paths through if()s the reading cannot decide and not
         # on others, or to different values: each path's value (None: not set), the
         # variable holding the last path's (or its last set one) meanwhile. A test that
@@ -495,7 +506,7 @@ class Interpreter:
         into the branch, or past it, holds only those)."""
         names = [name for name in dict.fromkeys(self._names_read(head.args)) if name in self.either]
         if not names:
-            return self.evaluate(self.arguments(head.args)), {}, {}
+            return self.evaluate(self.test_arguments(head.args)), {}, {}
         choices = list(itertools.product(*(self.either[name] for name in names)))
         if len(choices) > MAX_CHOICES:
             return None, {}, {}
@@ -506,7 +517,7 @@ class Interpreter:
             for choice in choices:
                 for name, value in zip(names, choice, strict=True):
                     _put(scope, name, value)
-                results.append(self.evaluate(self.arguments(head.args)))
+                results.append(self.evaluate(self.test_arguments(head.args)))
         finally:
             for name, value in kept.items():
                 _put(scope, name, value)
@@ -521,6 +532,28 @@ class Interpreter:
                 if result is not True:
                     fails[name].add(value)
         return None, holds, fails
+
+    def test_arguments(self, args: tuple[Argument, ...]) -> list[str]:
+        """An ``if()`` / ``while()`` test's arguments expanded, each one that reads what a
+        ``find_package`` of this reading sets (``${mongodb_store_VERSION}`` after
+        ``find_package(catkin COMPONENTS mongodb_store)``) which is not set here
+        ``UNKNOWN_MARK``: its value is not known, not the empty text CMake would give an
+        unset variable (jsk_robot_startup's ``if("${mongodb_store_VERSION}"
+        VERSION_GREATER "0.5.1")`` of a package not in the workspace is not decided). A
+        package no find_package looks for sets nothing: empty, as CMake has it (MoveIt 2's
+        ``if("${catkin_LIBRARIES}" MATCHES ...)`` in an ament package)."""
+        values: list[str] = []
+        for arg in args:
+            read: list[str] = []
+            if arg.kind != "bracket":
+                self._expanded(arg.text, read=read)
+            if any(self.get(name) is None and name not in self.assigned
+                   and (found := FOUND_BY_PACKAGE.fullmatch(name)) is not None
+                   and found.group(1).lower() in self.found_packages for name in read):
+                values.append(UNKNOWN_MARK)
+            else:
+                values.extend(self.arguments((arg,)))
+        return values
 
     def every_way(self, args: tuple[Argument, ...]) -> list[str]:
         """A command's arguments expanded with every choice of the values its variables

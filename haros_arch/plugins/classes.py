@@ -173,9 +173,16 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
             for cls in element.iter("class"):
                 name = cls.get("name") or cls.get("type")
                 base = cls.get("base_class_type", "")
-                if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base
-                                and base not in bases and plugin.kind not in bases
-                                and base_name(base) not in loaded):
+                # pluginlib's ClassLoader(tag, base) finds the classes exported under its
+                # own tag: a class whose tag no host names is loaded by no host, whatever
+                # its base (navigation2's dwb_plugins exports goal checkers of
+                # nav2_core::GoalChecker under dwb_core, which the controller server's
+                # ClassLoader("nav2_core", ...) never reads); it is a node only as one a
+                # ClassLoader of its package or its dependencies' code may load, by base
+                by_code = bool(base) and base_name(base) in loaded
+                if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base and (
+                        not hosted or (base not in bases and plugin.kind not in bases))
+                        and not by_code):
                     continue
                 if not base and not hosted:
                     continue  # a description read only for the loaded bases
@@ -188,8 +195,8 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 kind: NodeKind = "nodelet" if plugin.kind in NODE_PLUGIN_KINDS else "plugin"
                 # a class only code's ClassLoaders load: a node once something loads it
                 # (``Node.deferred``), nothing said of it before
-                deferred = kind == "plugin" and bool(base) and (
-                    base not in bases and plugin.kind not in bases)
+                deferred = kind == "plugin" and bool(base) and (not hosted or (
+                    base not in bases and plugin.kind not in bases))
                 if library is None and not deferred:
                     found.append(diag.make("PLUGIN_LIBRARY_UNKNOWN", where,
                                            library=wanted, plugin=name))

@@ -171,7 +171,9 @@ def parameter_type(kind: str) -> str | None:
         kind = fixed.group(1) + (fixed.group(2) or "")
     if kind in _SCALARS:
         return _SCALARS[kind][1]
-    return "list" if kind.endswith("_array") and kind[: -len("_array")] in _SCALARS else None
+    element = kind.removesuffix("_array")
+    # an array as the extractor writes std::vector<T>'s: T[] (string_array: str[])
+    return f"{_SCALARS[element][1]}[]" if element != kind and element in _SCALARS else None
 
 
 def _pascal(name: str) -> str:

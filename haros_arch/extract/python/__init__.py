@@ -150,6 +150,12 @@ NOT_CLIENTS = frozenset({
     "pykdl_utils", "angles", "smach", "rospy_message_converter", "ros2cli", "ros2topic",
     "rosunit", "rostest", "launch_testing", "launch_testing_ros", "ament_copyright",
     "ament_flake8", "ament_pep257", "pytest", "catkin_pkg",
+    # not ROS packages at all: rosdep keys a package.xml may write that name a Python
+    # library by the module it imports (rosdep/python.yaml of github:ros/rosdistro
+    # 8468e88c: its keys that are modules; pyquaternion, PyPI's, which jsk_fetch_startup
+    # names so through a rosdep rule of its own)
+    "paramiko", "pika", "rpy2", "yapf", "black", "gunicorn", "virtualenv", "pydocstyle",
+    "epydoc", "nuitka", "platformio", "pyquaternion",
 })
 
 

@@ -263,7 +263,12 @@ def param_type(value: object) -> str | None:
     if isinstance(value, Value):
         return "str"
     if isinstance(value, Seq):
-        return "list"
+        # rclpy types a list by its elements (Parameter.Type.from_parameter_value): a
+        # list of one known scalar type is that type's array, as C++'s std::vector<T>
+        # is T[]; an empty one, or one of elements not known or mixed, stays a list
+        kinds = {param_type(item) for item in value.items}
+        only = next(iter(kinds)) if len(kinds) == 1 else None
+        return f"{only}[]" if only in ("bool", "int", "double", "str") else "list"
     return None
 
 

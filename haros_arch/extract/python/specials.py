@@ -262,8 +262,8 @@ def param_name(text: Value) -> str:
 # names parameter types, for declarations that give a type and no value
 _DECLARED_TYPES: dict[str, str | None] = {
     "BOOL": param_type(True), "INTEGER": param_type(0), "DOUBLE": param_type(0.0),
-    "STRING": "str", **{f"{kind}_ARRAY": "list" for kind in (
-        "BYTE", "BOOL", "INTEGER", "DOUBLE", "STRING")}}
+    "STRING": "str", "BYTE_ARRAY": "byte[]", "BOOL_ARRAY": "bool[]",
+    "INTEGER_ARRAY": "int[]", "DOUBLE_ARRAY": "double[]", "STRING_ARRAY": "str[]"}
 
 
 def type_only(expr: ast.expr | None) -> str | None:

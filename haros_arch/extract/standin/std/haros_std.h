@@ -23,6 +23,9 @@ using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using :
 using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
 using ::isnan; using ::isinf; using ::isfinite; using ::signal;
 using ::memcmp; using ::memmove; using ::vsnprintf;
+// the rest of <cstring> (cartographer_ros' and yasmin's std::strrchr of a file's path)
+using ::strcat; using ::strncat; using ::strchr; using ::strrchr; using ::strstr;
+using ::strtok; using ::strpbrk; using ::strspn; using ::strcspn; using ::memchr;
 bool signbit(float x); bool signbit(double x); bool signbit(long double x);
 template<class I> bool signbit(I x);  // an integer, as a double
 using ::strerror; using ::isalpha; using ::isdigit; using ::isspace; using ::isalnum;
@@ -639,10 +642,30 @@ public:
 template<class T, class A = allocator<T>> class list : public vector<T, A> {
 public:
   using vector<T, A>::vector;
+  typedef typename vector<T, A>::const_iterator const_iterator;
   void push_front(const T& v);
+  void push_front(T&& v);
+  template<class... Args> T& emplace_front(Args&&... args);
   void pop_front();
   void sort();
+  template<class C> void sort(C comp);
   void remove(const T& v);
+  template<class P> void remove_if(P pred);
+  void unique();
+  template<class P> void unique(P pred);
+  void reverse() noexcept;
+  void merge(list& other);
+  void merge(list&& other);
+  template<class C> void merge(list& other, C comp);
+  template<class C> void merge(list&& other, C comp);
+  // moves elements of ``other`` before ``pos`` (an LRU cache's move to the front:
+  // yasmin's demangle cache, autoware_utils' lru_cache; MoveIt's trajectory generation)
+  void splice(const_iterator pos, list& other);
+  void splice(const_iterator pos, list&& other);
+  void splice(const_iterator pos, list& other, const_iterator it);
+  void splice(const_iterator pos, list&& other, const_iterator it);
+  void splice(const_iterator pos, list& other, const_iterator first, const_iterator last);
+  void splice(const_iterator pos, list&& other, const_iterator first, const_iterator last);
 };
 template<class T, size_t N> struct array {
   T elems_[N ? N : 1];
@@ -1007,6 +1030,21 @@ template<class T> struct default_delete { void operator()(T* p) const; };
 template<class T> class weak_ptr;
 template<class T, class D> class unique_ptr;
 template<class T> class auto_ptr;
+// whether a shared_ptr<Y> converts to a shared_ptr<T>: as the real one, when Y* converts
+// to T* (so overloads on shared_ptr<A> and shared_ptr<B> of unrelated classes are not
+// ambiguous: MoveIt's PlanningScene(RobotModelConstPtr) beside its
+// PlanningScene(PlanningSceneConstPtr)); also, as before, from a base to a class derived
+// from it (the stand-ins return a base where the real API returns the derived class:
+// rclcpp::create_timer's TimerBase for GenericTimer<F>, nav2's lifecycle node), and when
+// either class is one the parse declared permissively (``haros_any``) or is not complete
+// here (its definition in a header not found)
+template<class... A> struct haros_sp_void { typedef void type; };
+template<class Y, class T, class = void> struct haros_sp_converts : true_type {};
+template<class Y, class T> struct haros_sp_converts<Y, T,
+    typename haros_sp_void<decltype(sizeof(Y)), decltype(sizeof(T))>::type>
+    : integral_constant<bool, __is_convertible_to(Y*, T*) || __is_base_of(Y, T)
+                              || __is_base_of(::haros_any, Y)
+                              || __is_base_of(::haros_any, T)> {};
 template<class T> class shared_ptr {
 public:
   typedef T element_type;
@@ -1017,13 +1055,15 @@ public:
   template<class Y, class D, class A> shared_ptr(Y* p, D d, A a);
   template<class D> shared_ptr(nullptr_t p, D d);
   shared_ptr(const shared_ptr& other) noexcept;
-  template<class Y> shared_ptr(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  shared_ptr(const shared_ptr<Y>& other) noexcept;
   // aliasing: shares ownership with ``other``, points at ``p`` (MoveIt's robot models)
   template<class Y> shared_ptr(const shared_ptr<Y>& other, element_type* p) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
   template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
   shared_ptr& operator=(const shared_ptr& other) noexcept;
-  template<class Y> shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   T* operator->() const noexcept;
   T& operator*() const noexcept;
   T* get() const noexcept;

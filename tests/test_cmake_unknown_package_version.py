@@ -1,0 +1,83 @@
+"""An ``if()`` that reads, through a reference, what ``find_package`` of a package not
+read here sets (``"${mongodb_store_VERSION}" VERSION_GREATER "0.5.1"``: jsk_robot_startup's
+test around its lightweight_logger nodelet) is not decided: the value is not known, not
+the empty text of an unset variable, which decided it false and left the nodelet out."""
+
+from __future__ import annotations
+
+from haros_arch.cmake.interpreter import Interpreter
+from haros_arch.cmake.lexer import tokenize
+
+
+def run(text: str) -> Interpreter:
+    it = Interpreter("/pkg", {})
+    it.run_file(tokenize(text, "/pkg/CMakeLists.txt"))
+    return it
+
+
+def conditions(it: Interpreter) -> dict[str, list[str]]:
+    return {n: [str(c) for c in t.conditions] for n, t in it.targets.items()}
+
+
+def test_a_version_find_package_sets_leaves_the_test_undecided():
+    it = run("""
+        find_package(catkin COMPONENTS mongodb_store)
+        if (("${mongodb_store_VERSION}" VERSION_GREATER "0.4.3"
+             AND "${mongodb_store_VERSION}" VERSION_LESS "0.5.0")
+            OR "${mongodb_store_VERSION}" VERSION_GREATER "0.5.1")
+          add_executable(logger a.cpp)
+        endif()
+        """)
+    assert list(conditions(it)) == ["logger"]
+    assert len(conditions(it)["logger"]) == 1
+    assert "mongodb_store_VERSION" in conditions(it)["logger"][0]
+
+
+def test_one_known_side_still_decides():
+    it = run("""
+        if ("${other_FOUND}" AND 0)
+          add_executable(never a.cpp)
+        endif()
+        if ("${other_VERSION}" VERSION_GREATER 1 OR 1)
+          add_executable(always a.cpp)
+        endif()
+        """)
+    assert conditions(it) == {"always": []}
+
+
+def test_a_version_the_package_sets_decides():
+    it = run("""
+        set(mine_VERSION 0.6.0)
+        if ("${mine_VERSION}" VERSION_GREATER "0.5.1")
+          add_executable(newer a.cpp)
+        else()
+          add_executable(older a.cpp)
+        endif()
+        """)
+    assert conditions(it) == {"newer": []}
+
+
+def test_an_unset_variable_of_another_kind_is_empty_as_before():
+    it = run("""
+        if ("${SOME_OPTION}" STREQUAL "")
+          add_executable(plain a.cpp)
+        endif()
+        """)
+    assert list(conditions(it)) == ["plain"]
+
+
+def test_what_no_find_package_looks_for_is_empty():
+    # MoveIt 2's planning_components_tools, an ament package: catkin is never found, so
+    # catkin_LIBRARIES is empty and the bullet comparison tool is not built
+    it = run("""
+        find_package(ament_cmake REQUIRED)
+        if("${catkin_LIBRARIES}" MATCHES "moveit_collision_detection_bullet")
+          add_executable(compare a.cpp)
+        endif()
+        find_package(Bullet)
+        if("${BULLET_VERSION}" VERSION_GREATER "2.8")
+          add_executable(bullet_tool a.cpp)
+        endif()
+        """)
+    assert list(conditions(it)) == ["bullet_tool"]
+    assert conditions(it)["bullet_tool"] != []
