@@ -30,7 +30,7 @@ from ..manifest import xml_parser
 from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node, NodeKind, Package, Plugin
-from .hosts import node_name_patterns, plugin_bases
+from .hosts import hosted_class, hosted_tag, node_name_patterns
 
 NODE_PLUGIN_KINDS = ("nodelet",)
 _EXPORT = re.compile(
@@ -148,14 +148,12 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     # they read classes with this module's helpers
     from .inherit import built_sources, inherited_sources
 
-    bases = plugin_bases()
     names = node_name_patterns()
     nodes: list[Node] = []
     found: list[Diagnostic] = []
     for plugin in [*package.plugins, *described]:
         # a description of classes some host loads, else read for the loaded bases only
-        hosted = plugin.kind in NODE_PLUGIN_KINDS or plugin.kind in bases or any(
-            base.startswith(plugin.kind + "::") for base in bases)
+        hosted = plugin.kind in NODE_PLUGIN_KINDS or hosted_tag(plugin.kind)
         if not hosted and not loaded:
             continue
         path = os.path.join(workspace.root, plugin.file)
@@ -181,8 +179,7 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 # ClassLoader of its package or its dependencies' code may load, by base
                 by_code = bool(base) and base_name(base) in loaded
                 if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base and (
-                        not hosted or (base not in bases and plugin.kind not in bases))
-                        and not by_code):
+                        not hosted_class(plugin.kind, base)) and not by_code):
                     continue
                 if not base and not hosted:
                     continue  # a description read only for the loaded bases
@@ -195,8 +192,8 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 kind: NodeKind = "nodelet" if plugin.kind in NODE_PLUGIN_KINDS else "plugin"
                 # a class only code's ClassLoaders load: a node once something loads it
                 # (``Node.deferred``), nothing said of it before
-                deferred = kind == "plugin" and bool(base) and (not hosted or (
-                    base not in bases and plugin.kind not in bases))
+                deferred = kind == "plugin" and bool(base) and not hosted_class(
+                    plugin.kind, base)
                 if library is None and not deferred:
                     found.append(diag.make("PLUGIN_LIBRARY_UNKNOWN", where,
                                            library=wanted, plugin=name))

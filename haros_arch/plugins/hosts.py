@@ -505,18 +505,40 @@ def node_name_patterns() -> dict[str, str]:
 # names their parameters ``<plugin>.<critic>.<key>``
 PLUGIN_SLOTS: dict[str, tuple[Slot, ...]] = {
     "dwb_core::DWBLocalPlanner": (
+        # (the base alone: dwb_plugins exports other classes under dwb_core's tag too,
+        # the goal checkers, which no dwb ClassLoader loads)
         Slot("{plugin}.critics", "{plugin}.{name}.class",
-             ("dwb_core", "dwb_core::TrajectoryCritic"), class_is_name=True,
+             ("dwb_core::TrajectoryCritic",), class_is_name=True,
              resolve=("Critic", "{plugin}.default_critic_namespaces", ("dwb_critics",)),
              site="dwb_core/src/dwb_local_planner.cpp", inner=True),),
 }
 
 
-def plugin_bases() -> frozenset[str]:
-    """Export tags and base classes of every class some host loads."""
-    return frozenset((*ROS1_CONTROLLER_BASES, *CHAINS, *(
-        base for host in HOSTS for slot in host.slots for base in slot.bases), *(
-        base for slots in PLUGIN_SLOTS.values() for slot in slots for base in slot.bases)))
+def _base_groups() -> list[tuple[str, ...]]:
+    """The export tags and base classes of each slot (one ``ClassLoader`` each)."""
+    return [ROS1_CONTROLLER_BASES, *((tag,) for tag in CHAINS),
+            *(slot.bases for host in HOSTS for slot in host.slots),
+            *(slot.bases for slots in PLUGIN_SLOTS.values() for slot in slots)]
+
+
+def hosted_class(tag: str, base: str) -> bool:
+    """Whether some slot loads a class exported under ``tag`` with the base class
+    ``base``: pluginlib's ``ClassLoader(tag, base)`` finds only the classes exported
+    under its own tag (a slot's tags are its entries without ``::``, else the first
+    namespace of its classes), of its base (a slot naming no class takes any)."""
+    base = base.replace(" ", "").lstrip(":")
+    for group in _base_groups():
+        classes = [b.lstrip(":") for b in group if "::" in b]
+        tags = [b for b in group if "::" not in b] or [c.split("::", 1)[0] for c in classes]
+        if tag in tags and (not classes or base in classes):
+            return True
+    return False
+
+
+def hosted_tag(tag: str) -> bool:
+    """Whether some slot loads classes exported under ``tag``."""
+    return any(tag in ([b for b in group if "::" not in b] or [
+        b.lstrip(":").split("::", 1)[0] for b in group]) for group in _base_groups())
 
 
 # -- image_transport ---------------------------------------------------------------------
