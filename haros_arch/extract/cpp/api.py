@@ -787,10 +787,15 @@ IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
 # node classes of our stand-ins (``standin_only``): named as rclcpp's, with what
 # ``IMPLICIT`` says they make, only where the class is the stand-in's (with navigation2's
 # sources in the workspace, its own constructor is read)
-STANDIN_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
-    **{(f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")},
-    # ros2_control's manager: ControllerManager(executor, manager_node_name, namespace)
-    ("controller_manager::ControllerManager", "ControllerManager"): (1, 2)}
+# (by the names of the parameters of the constructor called that take them: a class with
+# several constructors takes the name at different places)
+STANDIN_NODE_NAME: dict[tuple[str, str], tuple[str, str]] = {
+    **{(f"{scope}::LifecycleNode", "LifecycleNode"): ("node_name", "ns")
+       for scope in ("nav2_util", "nav2")},
+    # ros2_control's manager: ControllerManager([resource_manager,] executor, [urdf,
+    # activate_all_hw_components,] manager_node_name, node_namespace)
+    ("controller_manager::ControllerManager", "ControllerManager"): (
+        "manager_node_name", "node_namespace")}
 # the constructor argument that, given as false, makes none of them
 # (``LifecycleNode(name, ns, options, false)``: enable_communication_interface; the
 # controllers of ros2_control make their nodes so, controller_interface_base.cpp:77)
