@@ -764,20 +764,25 @@ _NAV2_LIFECYCLE_PARAMETERS = RosFunction(
 # ros2_control's manager (its stand-in: a node of the workspace that makes one, as
 # ros2_control_node does) serves these under its own name, Humble and Jazzy alike; the
 # rest it makes is not described (the stand-in's class is HAROS_UNREAD: partial)
+# (``CONTROLLER_MANAGER_SERVICES``: also the services of the manager a ros2_control
+# Gazebo plugin starts, ``robot.attach``)
+CONTROLLER_MANAGER_SERVICES: tuple[tuple[str, str], ...] = tuple(
+    (f"~{name}", f"controller_manager_msgs/srv/{kind}") for name, kind in (
+        ("load_controller", "LoadController"),
+        ("list_controllers", "ListControllers"),
+        ("list_controller_types", "ListControllerTypes"),
+        ("configure_controller", "ConfigureController"),
+        ("reload_controller_libraries", "ReloadControllerLibraries"),
+        ("switch_controller", "SwitchController"),
+        ("unload_controller", "UnloadController"),
+        ("list_hardware_components", "ListHardwareComponents"),
+        ("list_hardware_interfaces", "ListHardwareInterfaces"),
+        ("set_hardware_component_state", "SetHardwareComponentState")))
 _CONTROLLER_MANAGER_2 = RosFunction(
-    "server", fixed_name="~load_controller",
-    fixed_type="controller_manager_msgs/srv/LoadController", on_handle=False,
+    "server", fixed_name=CONTROLLER_MANAGER_SERVICES[0][0],
+    fixed_type=CONTROLLER_MANAGER_SERVICES[0][1], on_handle=False,
     call_site=False, siblings=tuple(
-        ("server", f"~{name}", f"controller_manager_msgs/srv/{kind}") for name, kind in (
-            ("list_controllers", "ListControllers"),
-            ("list_controller_types", "ListControllerTypes"),
-            ("configure_controller", "ConfigureController"),
-            ("reload_controller_libraries", "ReloadControllerLibraries"),
-            ("switch_controller", "SwitchController"),
-            ("unload_controller", "UnloadController"),
-            ("list_hardware_components", "ListHardwareComponents"),
-            ("list_hardware_interfaces", "ListHardwareInterfaces"),
-            ("set_hardware_component_state", "SetHardwareComponentState"))))
+        ("server", name, kind) for name, kind in CONTROLLER_MANAGER_SERVICES[1:]))
 IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (_LIFECYCLE,),
     ("controller_manager::ControllerManager", "ControllerManager"): (_CONTROLLER_MANAGER_2,),

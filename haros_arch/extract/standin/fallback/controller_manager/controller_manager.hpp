@@ -27,12 +27,14 @@
 namespace controller_manager {
 class HAROS_UNREAD ControllerManager : public rclcpp::Node {
  public:
+#ifndef HAROS_STANDIN_HARDWARE_INTERFACE_ROS1_H  // (ROS 1's ResourceManager: a template)
   ControllerManager(std::unique_ptr<hardware_interface::ResourceManager> resource_manager,
                     std::shared_ptr<rclcpp::Executor> executor,
                     const std::string& manager_node_name = "controller_manager",
                     const std::string& node_namespace = "",
                     const rclcpp::NodeOptions& options = rclcpp::NodeOptions())
       : rclcpp::Node(manager_node_name, node_namespace, options) {}
+#endif
   ControllerManager(std::shared_ptr<rclcpp::Executor> executor,
                     const std::string& manager_node_name = "controller_manager",
                     const std::string& node_namespace = "",

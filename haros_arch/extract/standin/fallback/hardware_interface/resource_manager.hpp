@@ -15,6 +15,8 @@
 #include <hardware_interface/sensor_interface.hpp>
 #include <hardware_interface/system_interface.hpp>
 #include <hardware_interface/types/hardware_interface_return_values.hpp>
+// ROS 1's class template of the same name (haros_ros1.h) wins in a unit that has both
+#ifndef HAROS_STANDIN_HARDWARE_INTERFACE_ROS1_H
 namespace hardware_interface {
 struct HardwareComponentInfo {
   std::string name;
@@ -63,4 +65,5 @@ class ResourceManager {
   std::vector<std::string> command_interface_keys() const;
 };
 }  // namespace hardware_interface
+#endif
 #endif
