@@ -913,14 +913,14 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
     decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
                     conditions=(*spawn.decl.conditions, *conditions), location=where,
                     ros_version=2, remaps=list(remaps))
-    node = Node("controller_manager", "ControllerManager", kind="plugin", location=where,
-                calls=[PrimitiveCall("server", service, kind, conditions=decl.conditions,
-                                     location=where)
-                       for service, kind in CONTROLLER_MANAGER_SERVICES])
-    node.mark_partial(f"the controller manager {_base(element.get('filename') or '')} "
-                      "starts: its services are known, not the rest it makes "
-                      f"({where.file}:{where.line})")
-    instance = NodeInstance(name, node, namespace=namespace, conditions=decl.conditions,
+    served = Node("controller_manager", "ControllerManager", kind="plugin", location=where,
+                  calls=[PrimitiveCall("server", service, kind, conditions=decl.conditions,
+                                       location=where)
+                         for service, kind in CONTROLLER_MANAGER_SERVICES])
+    served.mark_partial(f"the controller manager {_base(element.get('filename') or '')} "
+                        "starts: its services are known, not the rest it makes "
+                        f"({where.file}:{where.line})")
+    instance = NodeInstance(name, served, namespace=namespace, conditions=decl.conditions,
                             location=where, origin="description", ros_version=2,
                             remaps=list(remaps))
     taken = sum(1 for n in config.nodes if n.name == name)
