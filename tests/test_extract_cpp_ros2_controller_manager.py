@@ -60,3 +60,50 @@ def test_a_manager_left_at_its_default_name_is_named_by_the_launch(write_tree) -
     result = extract(write_tree, "")
     assert result.rosname is None  # "controller_manager" by default: not written here
     assert any(c.name == "~load_controller" for c in result.calls)
+
+
+SIMULATED = """
+#include "controller_manager/controller_manager.hpp"
+#include "hardware_interface/resource_manager.hpp"
+#include "rclcpp/rclcpp.hpp"
+
+void start(std::shared_ptr<rclcpp::Executor> executor, const std::string & urdf)
+{
+  MAKE;
+  executor->add_node(manager);
+}
+"""
+
+
+def extract_made(write_tree, make: str):
+    root = write_tree({
+        "src/sim/package.xml": package_xml("sim", "ament_cmake"),
+        "src/sim/src/plugin.cpp": SIMULATED.replace("MAKE", make)})
+    return extract_cpp([str(root / "src/sim/src/plugin.cpp")], scan([str(root)]),
+                       cache_dir=None)
+
+
+def test_a_manager_given_a_resource_manager_is_named_by_its_third_argument(
+        write_tree) -> None:
+    """gazebo_ros2_control's plugin: ``ControllerManager(std::move(resource_manager),
+    executor, "controller_manager", namespace)``; the stand-in's one constructor took
+    the name from the second argument (it did not parse, so the node was partial)."""
+    result = extract_made(write_tree, (
+        "auto resources = std::make_unique<hardware_interface::ResourceManager>();\n"
+        "  std::shared_ptr<controller_manager::ControllerManager> manager(\n"
+        "    new controller_manager::ControllerManager(std::move(resources), executor,\n"
+        "      \"sim_manager\", \"robot\"))"))
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+    assert result.rosname == "/robot/sim_manager"
+    assert any(c.name == "~load_controller" for c in result.calls)
+
+
+def test_a_manager_given_the_urdf_is_named_by_its_fourth_argument(write_tree) -> None:
+    """Jazzy's ``ControllerManager(executor, urdf, activate_all_hw_components, name)``,
+    made by ``std::make_shared``: ros2_control_node's constructor's places would name
+    the node by the URDF and put it in the namespace ``true``."""
+    result = extract_made(write_tree, (
+        "auto manager = std::make_shared<controller_manager::ControllerManager>(\n"
+        "    executor, urdf, true, \"described_manager\")"))
+    assert result.rosname == "described_manager"
+    assert any(c.name == "~switch_controller" for c in result.calls)

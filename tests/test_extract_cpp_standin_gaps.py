@@ -945,3 +945,23 @@ def test_ros2_declaration_macros_one_after_another(write_tree) -> None:
     calculator, 0 calls) lost its calls."""
     result = _extract(write_tree, _source("ros2_declaration_macros_in_a_row.cpp"), "ament_cmake")
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "chatter")]
+
+
+def test_ros2_a_simulator_plugin_that_starts_the_controller_manager(write_tree) -> None:
+    """gazebo_ros2_control (humble 42d875b4, gazebo_ros2_control_plugin.cpp:204-256, 365):
+    the plugin parses its parameter files into the rcl context's global arguments
+    (``Context::get_rcl_context``, ``rcl_parse_arguments`` and the other argument
+    functions were not declared), builds a ``hardware_interface::ResourceManager`` from
+    the URDF (its header and the component parser's were missing) and hands it to
+    ``controller_manager::ControllerManager``, whose stand-in had only ros2_control_node's
+    constructor: five clang errors in the function that makes its calls, the node
+    partial. Its component, of a class derived from ``SystemInterface``, is imported
+    with ``import_component`` (one overload per component kind: ambiguous to the parse
+    if declared so). Jazzy's constructors (clock and logging interfaces, the manager's
+    URDF one) too."""
+    result = _extract(write_tree, _source("ros2_simulated_control_manager.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert "CPP_NODE_PARTIAL" not in [d.code for d in result.diagnostics]
+    assert [(c.kind, c.name) for c in result.calls if c.kind != "server"] == [
+        ("read", "update_rate"), ("publish", "sim_status")]
+    assert ("server", "~switch_controller") in [(c.kind, c.name) for c in result.calls]

@@ -112,3 +112,20 @@ def test_the_manager_s_name_takes_the_prefix_element(write_tree) -> None:
     assert manager is not None and manager.origin == "description"
     assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN_")]
     assert ("publish", "/joint_states") in _topics(config, "/joint_state_broadcaster")
+
+
+def test_the_manager_serves_the_services_the_spawners_call(write_tree) -> None:
+    """The plugin makes ``ControllerManager(resource_manager, executor, name, ns)``
+    (gazebo_ros2_control_plugin.cpp, gz_ros2_control_plugin.cpp): the manager's services,
+    which the spawners call, were no node's (the instance had no interface: unknown,
+    so every spawner client was undecided). Now served by it, partial for the rest."""
+    config = _config(write_tree, None)
+    manager = config.node("/controller_manager")
+    assert manager.node is not None and manager.node.completeness == "partial"
+    served = {link.resource.name for link in config.links
+              if link.node.name == "/controller_manager" and link.kind == "server"}
+    assert {"/controller_manager/load_controller", "/controller_manager/switch_controller",
+            "/controller_manager/list_controllers"} <= served
+    called = {link.resource.name for link in config.links
+              if link.node.name.startswith("/spawner") and link.kind == "client"}
+    assert called and called <= served

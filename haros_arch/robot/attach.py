@@ -34,6 +34,7 @@ from lxml import etree
 
 from .. import diagnostics as diag
 from .. import safe_yaml
+from ..extract.cpp.api import CONTROLLER_MANAGER_SERVICES
 from ..files import read_text
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl, shell_words
 from ..launch.ros2.naming import params_for_node, pattern_matches, split_rule
@@ -154,6 +155,8 @@ def attach(config: Configuration, launch: LaunchModel,
                     out.managers, (gzserver, made)), []))
     out.calls[:0] = [(instance, list(instance.node.calls)) for instance in made
                      if instance.node is not None]
+    out.calls.extend((instance, list(instance.node.calls)) for _, instance in out.managers
+                     if instance.node is not None)
     out.calls.extend(bridges(config, launch, started, workspace))
     _unmade(config, launch, workspace)
     return out
@@ -893,7 +896,12 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
     it ``<controller_manager_prefix_node_name>_controller_manager`` when that element is
     given, and gives its ``<ros><remapping>`` rules to ``rclcpp::init``: rules of the
     whole process, the manager's and its controllers' (the instance's remaps, which the
-    controllers take)."""
+    controllers take). Both plugins make it as ``ControllerManager(resource_manager,
+    executor, name, namespace)``: it serves the manager's services (those the C++ API
+    row gives a node of the workspace that makes one, ``api.CONTROLLER_MANAGER_
+    SERVICES``); what else it makes is not described (ros2_control_node's model is not
+    its interface: that constructor does not subscribe to the robot description once
+    the plugin has loaded the URDF into the resource manager), so the node is partial."""
     namespace = as_namespace(spawn.robot_namespace or _child(element, "ros/namespace") or "/")
     prefix = _child(element, "controller_manager_prefix_node_name") if gz else None
     name = clean(namespace + (f"{prefix}_{MANAGER}" if prefix else MANAGER))
@@ -905,7 +913,14 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
     decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
                     conditions=(*spawn.decl.conditions, *conditions), location=where,
                     ros_version=2, remaps=list(remaps))
-    instance = NodeInstance(name, None, namespace=namespace, conditions=decl.conditions,
+    served = Node("controller_manager", "ControllerManager", kind="plugin", location=where,
+                  calls=[PrimitiveCall("server", service, kind, conditions=decl.conditions,
+                                       location=where)
+                         for service, kind in CONTROLLER_MANAGER_SERVICES])
+    served.mark_partial(f"the controller manager {_base(element.get('filename') or '')} "
+                        "starts: its services are known, not the rest it makes "
+                        f"({where.file}:{where.line})")
+    instance = NodeInstance(name, served, namespace=namespace, conditions=decl.conditions,
                             location=where, origin="description", ros_version=2,
                             remaps=list(remaps))
     taken = sum(1 for n in config.nodes if n.name == name)

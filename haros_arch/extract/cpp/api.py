@@ -764,20 +764,25 @@ _NAV2_LIFECYCLE_PARAMETERS = RosFunction(
 # ros2_control's manager (its stand-in: a node of the workspace that makes one, as
 # ros2_control_node does) serves these under its own name, Humble and Jazzy alike; the
 # rest it makes is not described (the stand-in's class is HAROS_UNREAD: partial)
+# (``CONTROLLER_MANAGER_SERVICES``: also the services of the manager a ros2_control
+# Gazebo plugin starts, ``robot.attach``)
+CONTROLLER_MANAGER_SERVICES: tuple[tuple[str, str], ...] = tuple(
+    (f"~{name}", f"controller_manager_msgs/srv/{kind}") for name, kind in (
+        ("load_controller", "LoadController"),
+        ("list_controllers", "ListControllers"),
+        ("list_controller_types", "ListControllerTypes"),
+        ("configure_controller", "ConfigureController"),
+        ("reload_controller_libraries", "ReloadControllerLibraries"),
+        ("switch_controller", "SwitchController"),
+        ("unload_controller", "UnloadController"),
+        ("list_hardware_components", "ListHardwareComponents"),
+        ("list_hardware_interfaces", "ListHardwareInterfaces"),
+        ("set_hardware_component_state", "SetHardwareComponentState")))
 _CONTROLLER_MANAGER_2 = RosFunction(
-    "server", fixed_name="~load_controller",
-    fixed_type="controller_manager_msgs/srv/LoadController", on_handle=False,
+    "server", fixed_name=CONTROLLER_MANAGER_SERVICES[0][0],
+    fixed_type=CONTROLLER_MANAGER_SERVICES[0][1], on_handle=False,
     call_site=False, siblings=tuple(
-        ("server", f"~{name}", f"controller_manager_msgs/srv/{kind}") for name, kind in (
-            ("list_controllers", "ListControllers"),
-            ("list_controller_types", "ListControllerTypes"),
-            ("configure_controller", "ConfigureController"),
-            ("reload_controller_libraries", "ReloadControllerLibraries"),
-            ("switch_controller", "SwitchController"),
-            ("unload_controller", "UnloadController"),
-            ("list_hardware_components", "ListHardwareComponents"),
-            ("list_hardware_interfaces", "ListHardwareInterfaces"),
-            ("set_hardware_component_state", "SetHardwareComponentState"))))
+        ("server", name, kind) for name, kind in CONTROLLER_MANAGER_SERVICES[1:]))
 IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (_LIFECYCLE,),
     ("controller_manager::ControllerManager", "ControllerManager"): (_CONTROLLER_MANAGER_2,),
@@ -787,10 +792,15 @@ IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
 # node classes of our stand-ins (``standin_only``): named as rclcpp's, with what
 # ``IMPLICIT`` says they make, only where the class is the stand-in's (with navigation2's
 # sources in the workspace, its own constructor is read)
-STANDIN_NODE_NAME: dict[tuple[str, str], tuple[int, int]] = {
-    **{(f"{scope}::LifecycleNode", "LifecycleNode"): (0, 1) for scope in ("nav2_util", "nav2")},
-    # ros2_control's manager: ControllerManager(executor, manager_node_name, namespace)
-    ("controller_manager::ControllerManager", "ControllerManager"): (1, 2)}
+# (by the names of the parameters of the constructor called that take them: a class with
+# several constructors takes the name at different places)
+STANDIN_NODE_NAME: dict[tuple[str, str], tuple[str, str]] = {
+    **{(f"{scope}::LifecycleNode", "LifecycleNode"): ("node_name", "ns")
+       for scope in ("nav2_util", "nav2")},
+    # ros2_control's manager: ControllerManager([resource_manager,] executor, [urdf,
+    # activate_all_hw_components,] manager_node_name, node_namespace)
+    ("controller_manager::ControllerManager", "ControllerManager"): (
+        "manager_node_name", "node_namespace")}
 # the constructor argument that, given as false, makes none of them
 # (``LifecycleNode(name, ns, options, false)``: enable_communication_interface; the
 # controllers of ros2_control make their nodes so, controller_interface_base.cpp:77)

@@ -817,6 +817,20 @@ def callee_of(call: Cursor) -> Cursor | None:
     return found[0] if len(found) == 1 else None
 
 
+def parameter_places(constructor: Cursor | None, names: tuple[str, str]
+                     ) -> tuple[int, int] | None:
+    """Where ``constructor`` takes the parameters ``names`` (a node's name and namespace:
+    ``api.STANDIN_NODE_NAME``), as argument indices; the second past the end when it has
+    no such parameter, None when it has not the first (or is not known)."""
+    if constructor is None:
+        return None
+    params = [p.spelling for p in constructor.get_children() if p.kind == CursorKind.PARM_DECL]
+    if names[0] not in params:
+        return None
+    return params.index(names[0]), (
+        params.index(names[1]) if names[1] in params else len(params))
+
+
 def _dependent_maker(call: Cursor) -> Cursor | None:
     """In a template, ``std::make_unique<C<T>>(args)`` whose class depends on a template
     parameter is no call clang resolves: the one constructor of class template ``C``
@@ -848,20 +862,26 @@ def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
     template before a template (nav2's CostmapSubscriber takes a
     ``LifecycleNode::WeakPtr``, or any ``NodeT``, and a topic; nav2's
     ``declare_or_get_parameter(node, name, descriptor)`` before the overload over any
-    ``default_value``). Fewer than two are as they are."""
+    ``default_value``), then by one of the same class template as the argument (a
+    ``std::shared_ptr<MultiThreadedExecutor>`` for a ``std::shared_ptr<Executor>``, not
+    a ``std::unique_ptr<ResourceManager>``: ros2_control's ControllerManager
+    constructors). Fewer than two are as they are."""
     if len(functions) < 2:
         return functions
 
-    def score(function: Cursor) -> tuple[int, int, bool]:
+    def score(function: Cursor) -> tuple[int, int, int, bool]:
         params = [p for p in function.get_children() if p.kind == CursorKind.PARM_DECL]
-        same = generic = 0
+        same = generic = alike = 0
         for param, arg in zip(params, args, strict=False):
-            wanted = _bare(param.type)
+            wanted, given = _bare(param.type), _bare(arg.type)
             if wanted is None:
                 generic += 1
-            elif wanted == _bare(arg.type):
+            elif wanted == given:
                 same += 1
-        return same, generic, function.kind != CursorKind.FUNCTION_TEMPLATE
+            elif given is not None and "<" in wanted and (
+                    wanted.split("<", 1)[0] == given.split("<", 1)[0]):
+                alike += 1
+        return same, generic, alike, function.kind != CursorKind.FUNCTION_TEMPLATE
 
     scores = [score(f) for f in functions]
     best = max(scores)

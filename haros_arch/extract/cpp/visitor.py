@@ -28,7 +28,7 @@ from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from ...plugins.classes import base_name, loader_bases
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
-from .call_sites import CallSites, base_keys, callee_of, delegation
+from .call_sites import CallSites, base_keys, callee_of, delegation, parameter_places
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
@@ -923,11 +923,14 @@ class CallFinder:
             self._listener(call, args, declared, conditions, scope)
             return
         node_name = api.RCLCPP_NODE_NAME.get(key)
-        if node_name is None and key in api.STANDIN_NODE_NAME and self.ros2 and from_standin(
-                made or target):
-            node_name = api.STANDIN_NODE_NAME[key]  # the stand-in's class, not the real one
-        if node_name is not None:
-            self._node_name(node_name, args, scope)
+        # the stand-in's class, not the real one: named by its constructor's parameters
+        standin = node_name is None and key in api.STANDIN_NODE_NAME and self.ros2 and (
+            from_standin(made or target))
+        if standin:
+            node_name = parameter_places(callee_of(call), api.STANDIN_NODE_NAME[key])
+        if node_name is not None or standin:
+            if node_name is not None:
+                self._node_name(node_name, args, scope)
             switch = api.IMPLICIT_SWITCH.get(key)
             if not (switch is not None and switch < len(args)
                     and scope.boolean(args[switch]) is False):

@@ -155,6 +155,43 @@ template<class... A> void haros_rcutils_log(A&&... args);
 #define RCUTILS_LOG_FATAL_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
 #define RCUTILS_LOG_FATAL_SKIPFIRST_THROTTLE(time_source, duration, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
 #define RCUTILS_LOG_FATAL_SKIPFIRST_THROTTLE_NAMED(time_source, duration, name, ...) HAROS_RCUTILS_LOG(__VA_ARGS__)
+// rcl/arguments.h, rcl/context.h: a process's ROS arguments parsed by hand (a simulator
+// plugin gives its controller manager parameter files through the context's global
+// arguments: gazebo_ros2_control, gz_ros2_control)
+extern "C" {
+typedef struct rcl_arguments_impl_s rcl_arguments_impl_t;
+typedef struct rcl_arguments_s { rcl_arguments_impl_t* impl; } rcl_arguments_t;
+#define RCL_ROS_ARGS_FLAG "--ros-args"
+#define RCL_ROS_ARGS_EXPLICIT_END_TOKEN "--"
+#define RCL_PARAM_FLAG "--param"
+#define RCL_SHORT_PARAM_FLAG "-p"
+#define RCL_PARAM_FILE_FLAG "--params-file"
+#define RCL_REMAP_FLAG "--remap"
+#define RCL_SHORT_REMAP_FLAG "-r"
+#define RCL_ENCLAVE_FLAG "--enclave"
+#define RCL_SHORT_ENCLAVE_FLAG "-e"
+#define RCL_LOG_LEVEL_FLAG "--log-level"
+#define RCL_EXTERNAL_LOG_CONFIG_FLAG "--log-config-file"
+rcl_arguments_t rcl_get_zero_initialized_arguments(void);
+rcl_ret_t rcl_parse_arguments(int argc, const char* const* argv, rcl_allocator_t allocator,
+                              rcl_arguments_t* args_output);
+int rcl_arguments_get_count_unparsed(const rcl_arguments_t* args);
+int rcl_arguments_get_count_unparsed_ros(const rcl_arguments_t* args);
+int rcl_arguments_get_param_files_count(const rcl_arguments_t* args);
+rcl_ret_t rcl_arguments_get_param_files(const rcl_arguments_t* arguments,
+                                        rcl_allocator_t allocator, char*** parameter_files);
+rcl_ret_t rcl_remove_ros_arguments(const char* const* argv, const rcl_arguments_t* args,
+                                   rcl_allocator_t allocator, int* nonros_argc,
+                                   const char*** nonros_argv);
+rcl_ret_t rcl_arguments_copy(const rcl_arguments_t* args, rcl_arguments_t* args_out);
+rcl_ret_t rcl_arguments_fini(rcl_arguments_t* args);
+typedef struct rcl_context_impl_s rcl_context_impl_t;
+typedef struct rcl_context_s {
+  rcl_arguments_t global_arguments;
+  rcl_context_impl_t* impl;
+  uint8_t instance_id_storage[8];
+} rcl_context_t;
+}
 namespace rcpputils {
 template<class C> std::string join(const C& items, const std::string& delimiter);
 bool set_env_var(const char* name, const char* value);

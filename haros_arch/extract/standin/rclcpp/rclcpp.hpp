@@ -912,6 +912,7 @@ public:
 enum class FutureReturnCode { SUCCESS, INTERRUPTED, TIMEOUT };
 class PreShutdownCallbackHandle {};
 class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() const;
+  std::shared_ptr<rcl_context_t> get_rcl_context();
   template<class C> PreShutdownCallbackHandle add_pre_shutdown_callback(C callback);
   bool remove_pre_shutdown_callback(const PreShutdownCallbackHandle& handle);
   template<class C> void add_on_shutdown_callback(C callback);

@@ -6,8 +6,10 @@
 // Its constructor serves the manager's services (api.LIBRARIES, the ROS 2 form of ROS 1's
 // row); the rest of what it makes (the robot_description subscription, its parameters,
 // Jazzy's activity and statistics topics) is not described: HAROS_UNREAD, the node is
-// partial. Only the constructor ros2_control_node calls is declared: a node that calls
-// another (the URDF or resource manager ones) is partial by the parse error.
+// partial. Its three constructors (Humble has the first two, Jazzy all): one given the
+// resource manager (a simulator plugin's: gazebo_ros2_control, gz_ros2_control), the one
+// ros2_control_node calls, and Jazzy's given the URDF; each names the node by its
+// parameter manager_node_name (api.STANDIN_NODE_NAME reads the parameters' names).
 #ifndef HAROS_STANDIN_CONTROLLER_MANAGER_HPP
 #define HAROS_STANDIN_CONTROLLER_MANAGER_HPP
 // ROS 1's class of the same name (controller_manager.h) wins in a unit that has both
@@ -17,6 +19,7 @@
 #include <string>
 #include <vector>
 #include <rclcpp/rclcpp.hpp>
+#include <hardware_interface/resource_manager.hpp>
 
 #ifndef HAROS_UNREAD
 #define HAROS_UNREAD __attribute__((annotate("haros_unread")))
@@ -24,7 +27,21 @@
 namespace controller_manager {
 class HAROS_UNREAD ControllerManager : public rclcpp::Node {
  public:
+#ifndef HAROS_STANDIN_HARDWARE_INTERFACE_ROS1_H  // (ROS 1's ResourceManager: a template)
+  ControllerManager(std::unique_ptr<hardware_interface::ResourceManager> resource_manager,
+                    std::shared_ptr<rclcpp::Executor> executor,
+                    const std::string& manager_node_name = "controller_manager",
+                    const std::string& node_namespace = "",
+                    const rclcpp::NodeOptions& options = rclcpp::NodeOptions())
+      : rclcpp::Node(manager_node_name, node_namespace, options) {}
+#endif
   ControllerManager(std::shared_ptr<rclcpp::Executor> executor,
+                    const std::string& manager_node_name = "controller_manager",
+                    const std::string& node_namespace = "",
+                    const rclcpp::NodeOptions& options = rclcpp::NodeOptions())
+      : rclcpp::Node(manager_node_name, node_namespace, options) {}
+  ControllerManager(std::shared_ptr<rclcpp::Executor> executor, const std::string& urdf,
+                    bool activate_all_hw_components,
                     const std::string& manager_node_name = "controller_manager",
                     const std::string& node_namespace = "",
                     const rclcpp::NodeOptions& options = rclcpp::NodeOptions())
