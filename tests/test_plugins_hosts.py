@@ -878,6 +878,10 @@ def _dwb_config(critics: list[str], *more: ParamDecl):
     dwb = Node("dwb_core", "dwb_core::DWBLocalPlanner", "plugin",
                plugin_class="dwb_core::DWBLocalPlanner",
                calls=[call("declare", "?.critics", "str[]"),
+                      # its loop's read per critic, and the critics' base's inline
+                      # initialize, in a header its unit includes
+                      call("declare", "?.?.class", "str", line=170),
+                      call("declare", "?.?.scale", "double", line=105),
                       call("read", "?.trajectory_generator_name", "str", line=91,
                            has_default=True,
                            default="dwb_plugins::StandardTrajectoryGenerator",
@@ -921,7 +925,9 @@ def test_a_dwb_controller_loads_its_critics_with_their_names_under_its_own():
                  "FollowPath.oscillation_reset_dist", "FollowPath.Speed.gain",
                  "FollowPath.Speed.class",
                  # the class the plugin loads by its parameter's value, given its name
-                 "FollowPath.trajectory_generator_name", "FollowPath.max_vel_x"):
+                 "FollowPath.trajectory_generator_name", "FollowPath.max_vel_x",
+                 # the planner's code made once per critic
+                 "FollowPath.BaseObstacle.class", "FollowPath.Speed.scale"):
         assert ("read", f"/controller_server/{name}") in links, (name, links)
     assert not [link for link in links if UNKNOWN_MARK in link[1]], links
 

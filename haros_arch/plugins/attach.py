@@ -260,8 +260,14 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             if _uncovered(node.plugin_loads, {*sites, *(s.site for s in inner if s.site)}):
                 # a plugin that loads plugins no row attaches (MPPI's critics)
                 own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
+        own_calls = _with_base(node, index, workspace, models)
+        inner_slots = PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ())
+        # the code the plugin runs once per plugin of its own (a base's inline method in
+        # a header its unit includes: dwb's TrajectoryCritic::initialize declares
+        # ``<plugin>.<critic>.scale``): made for each of them, below
+        each_inner = [call for call in own_calls if inner_slots and _per_inner(call)]
         calls = [_under(call, plugin, choice.conditions, slot.bases, slot.inner)
-                 for call in _with_base(node, index, workspace, models)]
+                 for call in own_calls if not (inner_slots and _per_inner(call))]
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
                      for call in calls]
@@ -271,9 +277,9 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             calls = _per_source(calls, row, plugin, choice, instance, node, params,
                                 workspace)
         out.append((instance, _new(calls, instance, made)))
-        for inner_slot in PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ()):
+        for inner_slot in inner_slots:
             out.extend(_inner(choice, inner_slot, plugin, instance, index, workspace, models,
-                              params, config, owned, made, loaded, decl))
+                              params, config, owned, made, loaded, decl, each_inner))
     for own, reads in _loading_reads(choice, instance, reader):
         kept = [r for r in reads if (id(own), r.name) not in loaded]
         loaded.update((id(own), r.name) for r in kept)
@@ -293,9 +299,11 @@ def _inner(choice: Choice, slot: Slot, plugin: str, instance: NodeInstance,
            index: Mapping[str, Node], workspace: Workspace, models: PluginModels | None,
            params: Params, config: Configuration, owned: set[int],
            made: dict[int, set[tuple[Any, ...]]], loaded: set[tuple[int, str]],
-           decl: NodeDecl | None) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+           decl: NodeDecl | None, each_inner: Sequence[PrimitiveCall] = (),
+           ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The calls of the plugins that the plugin ``plugin`` (chosen by ``choice``) loads
-    from its host's parameters (``hosts.PLUGIN_SLOTS``), on the host."""
+    from its host's parameters (``hosts.PLUGIN_SLOTS``), on the host; ``each_inner``, the
+    outer plugin's calls made once per such plugin (``_per_inner``), with each."""
     def relative(text: str | None) -> str | None:
         return None if text is None else text.replace("{plugin}", plugin)
 
@@ -312,7 +320,18 @@ def _inner(choice: Choice, slot: Slot, plugin: str, instance: NodeInstance,
                        conditions=(*choice.conditions, *each.conditions))
         out.extend(_load(each, nested, instance, index, workspace, models, params, config,
                          owned, made, loaded, decl))
+        if each_inner and UNKNOWN_MARK not in each.name:
+            out.append((instance, _new([
+                _under(call, f"{plugin}.{each.name}", each.conditions, inner=True)
+                for call in each_inner], instance, made)))
     return out
+
+
+def _per_inner(call: PrimitiveCall) -> bool:
+    """Whether a plugin's call is named by its name and one of its own plugins' (two
+    unknown parts first, ``?.?.scale``), which its code makes once per such plugin."""
+    return call.name.startswith(f"{UNKNOWN_MARK}.{UNKNOWN_MARK}.") and not (
+        call.name_param or call.handle_namespace)
 
 
 def _completed(cls: str | None, slot: Slot, instance: NodeInstance, params: Params,
