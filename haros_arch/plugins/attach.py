@@ -252,22 +252,24 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
                 has_default=True, origin="plugin") for name in slot.declares]))
     else:
         plugin = slot.prefix + _given(choice, slot)
+        inner_slots = PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ())
         if node.completeness in ("partial", "unknown"):  # its calls on the host: some unseen
             reasons = node.completeness_reasons[:1] or [node.completeness]
             own_partial(instance, f"plugin {node.name}: {reasons[0]}", owned)
-        else:
-            inner = PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ())
-            if _uncovered(node.plugin_loads, {*sites, *(s.site for s in inner if s.site)}):
-                # a plugin that loads plugins no row attaches (MPPI's critics)
-                own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
-        own_calls = _with_base(node, index, workspace, models)
-        inner_slots = PLUGIN_SLOTS.get((node.plugin_class or "").lstrip(":"), ())
+        elif _uncovered(node.plugin_loads,
+                        {*sites, *(s.site for s in inner_slots if s.site)}):
+            # a plugin that loads plugins no row attaches (MPPI's critics)
+            own_partial(instance, f"plugin {node.name}: {_loads(node)}", owned)
         # the code the plugin runs once per plugin of its own (a base's inline method in
         # a header its unit includes: dwb's TrajectoryCritic::initialize declares
         # ``<plugin>.<critic>.scale``): made for each of them, below
-        each_inner = [call for call in own_calls if inner_slots and _per_inner(call)]
-        calls = [_under(call, plugin, choice.conditions, slot.bases, slot.inner)
-                 for call in own_calls if not (inner_slots and _per_inner(call))]
+        each_inner: list[PrimitiveCall] = []
+        calls = []
+        for call in _with_base(node, index, workspace, models):
+            if inner_slots and _per_inner(call):
+                each_inner.append(call)
+            else:
+                calls.append(_under(call, plugin, choice.conditions, slot.bases, slot.inner))
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
                      for call in calls]
