@@ -84,3 +84,24 @@ def test_the_node_name_starts_a_private_name(write_tree) -> None:
                    if link.kind == "server")
     assert "/robot/lifecycle_manager/load_map" in names
     assert "/robot/lifecycle_manager/manage_nodes" in names
+
+
+def test_the_node_name_inside_a_name_is_the_instance_name(write_tree) -> None:
+    """navigation2's costmap serves ``std::string("get_cost_") + get_name()``: the node's
+    name without its namespace, which each instance gives (``/global_costmap/
+    get_cost_global_costmap``); it was ``get_cost_?``. The fully qualified name inside a
+    name stays unknown."""
+    root = write_tree({"mgr/package.xml": package_xml("mgr", "ament_cmake"),
+                       "mgr/src/node.cpp": NODE})
+    result = extract_cpp([str(root / "mgr" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    selves = sorted(c.name for c in result.calls if c.name_self)
+    assert "status/?" in selves and "?.verbose" in selves
+    node = Node("mgr", "mgr", calls=list(result.calls))
+    config = build(Configuration("c"), LaunchModel(
+        nodes=[NodeDecl("/robot/lifecycle_manager", "mgr", "mgr")]),
+        Workspace(root="/nowhere"), {node.name: node})
+    topics = sorted(link.rosname.full for link in config.links if link.kind == "publish")
+    assert "/status/lifecycle_manager" in topics  # (the instance is in "/")
+    params = {link.rosname.full for link in config.links if link.kind == "read"}
+    assert "/lifecycle_manager.verbose" in params  # (resolved as ROS 1 here)

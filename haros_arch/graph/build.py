@@ -819,6 +819,10 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         given = program_argument(instance, call.name_arg)
         if given:
             call = replace(call, name=_filled(call.name, given), name_arg=None)
+    if call.name_self and UNKNOWN_MARK in call.name:
+        # the node's own name (``"get_cost_" + get_name()``): the instance's
+        call = replace(call, name=_filled(call.name, instance.name.rstrip("/").rsplit(
+            "/", 1)[-1]), name_self=False)
     if call.name_option is not None and UNKNOWN_MARK in call.name:
         # an option's value (``"/robot/limb/" + args.limb``), else its default when the
         # arguments are known and do not give it; neither: the ``?``

@@ -166,6 +166,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
                          program_arg=_program_arg(c.get("program_arg")),
                          name_arg=_program_arg(c.get("name_arg")),
+                         name_self=c.get("name_self") is True,
                          name_option=c.get("name_option") if isinstance(
                              c.get("name_option"), str) else None,
                          name_option_default=c.get("name_option_default") if isinstance(

@@ -180,6 +180,10 @@ class PrimitiveCall:
     # ``"/" + robot_name + "_driver/..."`` with ``robot_name = argv[argc - 1]``. The graph
     # takes the value from the arguments the launch file gives the instance
     name_arg: int | None = field(default=None, metadata={"optional": True})
+    # the name's one ``?`` is the node's own name without its namespace (rclcpp's
+    # ``get_name()`` inside a name: nav2's costmap serves ``"get_cost_" + get_name()``):
+    # the graph puts the instance's name there
+    name_self: bool = field(default=False, metadata={"optional": True})
     # a name whose one ``?`` is the value of an option of the process's command line that
     # argparse parses (its flags, space separated: ``-l --limb``): intera_interface's
     # joint trajectory action server's ``--limb``, which names its topics. The graph takes

@@ -72,6 +72,16 @@ class NodeName(str):
 NODE_NAME = NodeName("~")
 
 
+class NodeBaseName(NodeName):
+    """rclcpp's ``get_name()`` alone: the node's name without its namespace, which the
+    graph knows per instance. In the middle of a call's name (nav2's costmap serves
+    ``std::string("get_cost_") + get_name()``) it is the call's one unknown run
+    (``own_name_run``; ``PrimitiveCall.name_self``)."""
+
+
+NODE_BASE_NAME = NodeBaseName("~")
+
+
 class NodeNamespace(str):
     """The node's namespace, which rclcpp's ``expand_topic_or_service_name`` puts before
     a relative name (with a ``/``: ``_expanded``): unknown to ``render``; ``own_name``
@@ -144,6 +154,17 @@ def argument_of(parts: Parts) -> int | None:
     if len(runs) != 1 or len(runs[0]) != 1 or not isinstance(runs[0][0], ProgramArgument):
         return None
     return runs[0][0].position
+
+
+def own_name_run(written: Parts, parts: Parts) -> bool:
+    """Whether the one unknown run of ``parts`` (``written`` after ``own_name``) is the
+    node's name alone (``NodeBaseName``), not its private namespace: the graph puts the
+    instance's name there."""
+    if len(written) != len(parts) or any(isinstance(p, NodeNamespace) for p in written):
+        return False
+    unknown = [i for i, part in enumerate(parts)
+               if part is None or isinstance(part, (NodeName, ProgramArgument))]
+    return len(unknown) == 1 and isinstance(written[unknown[0]], NodeBaseName)
 
 
 def own_name(parts: Parts) -> Parts:
@@ -1111,7 +1132,7 @@ class Scope:
             # an rclcpp node's get_name() (or its base interface's): the node's own name
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
             # manage_nodes``, ``~/manage_nodes``: ``own_name``)
-            return (NODE_NAME,)
+            return (NODE_BASE_NAME,) if target.spelling == "get_name" else (NODE_NAME,)
         if len(args) == 1 and target.spelling in ("move", "forward") and (
                 _namespace_of(target) == "std"):
             # ``suffix_(std::move(suffix))``: the value moved (autoware_utils'

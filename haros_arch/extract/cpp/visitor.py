@@ -85,6 +85,7 @@ from .values import (
     initializer,
     literal,
     own_name,
+    own_name_run,
     permissive_conversion,
     permissive_held,
     program_argument,
@@ -174,6 +175,13 @@ class ArgumentName(str):
         made = super().__new__(cls, name)
         made.program_arg = program_arg
         return made
+
+
+class SelfName(str):
+    """A call's name whose one ``?`` is the node's own name without its namespace
+    (``values.NodeBaseName``): ``PrimitiveCall.name_self``."""
+
+
 # the calls of a prefix and a map: declare_parameters declares the map's keys under the
 # prefix; the others read what the node has under it
 _PREFIXED = ("declare_parameters", "get_parameters", "get_parameters_by_prefix")
@@ -2006,6 +2014,7 @@ class CallFinder:
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
                     name.count("?") == 1) else None, name_member=name_member,
+                name_self=isinstance(written, SelfName) and name.count("?") == 1,
                 loads=spec.loads, namespace_param=namespace_param,
                 argument=spec.argument))
             if status is not None:
@@ -2261,11 +2270,14 @@ class CallFinder:
         if named is not None:
             return (render(scope.string(named)), None)
         with program_arguments():
-            parts = own_name(scope.string(expr))
+            written = scope.string(expr)
+        parts = own_name(written)
         name = render(parts)
         argument = argument_of(parts)
         if argument is not None:
             return (ArgumentName(name, argument), None)
+        if own_name_run(written, parts):
+            return (SelfName(name), None)
         if len(parts) == 1 and isinstance(parts[0], SearchedName):
             return (SearchedName(name), None)  # the key ``searchParam`` found
         if None not in parts:
