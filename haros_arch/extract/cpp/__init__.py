@@ -511,7 +511,7 @@ def _members_named(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:
     for call in calls:
         if call.name_member is not None or call.stores is not None:
             names = held.get(call.name_member or "", set())
-            named = call.name_member is not None and call.name == "?" and (
+            named = call.name_member is not None and call.name.count("?") == 1 and (
                 call.name_param is None and len(names) == 1 and known_name(next(iter(names))))
             default, other_param = defaults.get(call.name_member or "", (None, None)) if (
                 named) else (call.name_default, call.default_param)

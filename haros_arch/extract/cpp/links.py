@@ -300,6 +300,9 @@ def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
 # ``name_param`` (navigation2's collision monitor passes each name of its ``polygons``
 # list to a ``Polygon`` made in another file, which reads ``polygon_name_ + ".enabled"``)
 PARAMETER = "\x03"
+# before a mark's parameter: it is the USR of a member that another file of the node
+# writes (``PrimitiveCall.name_member``), not a parameter
+MEMBER_MARK = "\x04"
 _PARAMETER = re.compile(f"{PARAMETER}([^{PARAMETER}]*){PARAMETER}([^{PARAMETER}]*){PARAMETER}")
 
 
@@ -339,9 +342,11 @@ def _named_by(call: PrimitiveCall) -> PrimitiveCall:
         return dataclasses.replace(call, name=name)
     if len(marks) == 1:
         param, each = marks[0]
+        if param.startswith(MEMBER_MARK):
+            return dataclasses.replace(call, name=name, name_member=param[len(MEMBER_MARK):])
         return dataclasses.replace(call, name=name, name_param=normalise(param),
                                    name_each=each or None)
-    if any(each for _, each in marks):
+    if any(each or param.startswith(MEMBER_MARK) for param, each in marks):
         return dataclasses.replace(call, name=name)
     more: list[list[str | None]] = [
         [normalise(param), None, *([JOINED] if index else [])]

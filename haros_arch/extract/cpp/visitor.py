@@ -48,7 +48,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
-from .links import PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
+from .links import MEMBER_MARK, PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
 from .members import MemberWrites, member_of
 from .owners import (
     binds_own_member,
@@ -1988,8 +1988,8 @@ class CallFinder:
                 and held[0].startswith(SDF_ELEMENT) and name.count("?") == 2) else (
                 sdf_parts if handle_namespace == namespace else None)
             made_in = self._made_in(name, handle_namespace)
-            name_member = self._name_member(name_expr) if (
-                written == "?" and source is None and spec.fixed_name is None) else None
+            name_member = self._run_member(name_expr, scope, name) if (
+                source is None and spec.fixed_name is None) else None
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function),
@@ -2419,6 +2419,35 @@ class CallFinder:
             return None
         return field.get_usr() or None
 
+    def _run_member(self, expr: Cursor | None, scope: Scope, name: str) -> str | None:
+        """The USR of the member that is the one unknown run of ``name`` (the value of
+        ``expr``), when no function of this unit writes it (``_name_member``): nav2's
+        controller server publishes on ``params_->odom_topic + ...``, a field of a struct
+        that its ParameterHandler fills from a parameter in another file."""
+        if expr is None or name.count("?") != 1 or PLACEHOLDER in name:
+            return None
+        return self._member_of(expr, scope, 0)
+
+    def _member_of(self, expr: Cursor, scope: Scope, depth: int) -> str | None:
+        """``_run_member`` of the one unknown operand of ``expr``; a parameter of the
+        function: of what every call of this unit passes for it, when all agree (nav2's
+        ``OdomSmoother(node, duration, params_->odom_topic)`` subscribes to its
+        constructor's ``odom_topic``)."""
+        inner = strip(expr)
+        operands = [inner] if inner.kind in (
+            CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR) else _unknown_operands(
+            expr, scope)
+        if len(operands) != 1:
+            return None
+        one = strip(operands[0])
+        decl = one.referenced if one.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is not None and decl.kind == CursorKind.PARM_DECL:
+            if depth >= 4 or scope.sites is None or not scope.is_parameter(decl):
+                return None
+            return scope.sites.agreed(
+                decl, lambda arg, at: self._member_of(arg, at, depth + 1), None)
+        return self._name_member(one)
+
     def _held_parameters(self, tested: Cursor, scope: Scope) -> tuple[tuple[str, str], ...]:
         """The locals ``tested`` names that hold a parameter's value: each written once,
         by a read (or declaration) of a parameter with a known name; and the calls it
@@ -2780,6 +2809,12 @@ class CallFinder:
         """A string passed to another file's function whose one unknown run is a
         parameter's value, with that parameter marked (``links.parameter_mark``)."""
         name, source = self._name(expr, scope)
+        if source is None:
+            # a member another file writes (``params_->odom_topic``): the member marked,
+            # which the node's files name by the parameter stored there
+            # (``extract.cpp._members_named``)
+            usr = self._run_member(expr, scope, name)
+            return parameter_mark(name, MEMBER_MARK + usr, None) if usr else None
         # (a parameter named after what other files pass is not known until they are
         # read: its name stays unknown; but for one read on a handle whose namespace
         # they pass, filled site by site as the name is: costmap_2d's ``plugins`` on
