@@ -769,6 +769,12 @@ def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[s
     rcl's remap rules rename topics and services, and the node's name and namespace,
     never a parameter; lbr_fri_ros2_stack remaps the controller manager's
     ``~/robot_description`` topic, not the parameter of that name it reads)."""
+    if call.name_below is not None and call.name.startswith(UNKNOWN_MARK):
+        # below the topic of a publisher or subscription the node made, as resolved and
+        # remapped (``"<topic>" + "/debug/published_time"``)
+        base = resolved_name(instance, replace(call, name=call.name_below, name_below=None),
+                             remaps, resources).full
+        call = replace(call, name=_filled(call.name, base), name_below=None)
     given = _given_name(call, instance, resources)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         remaps = {}

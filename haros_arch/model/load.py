@@ -167,6 +167,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          program_arg=_program_arg(c.get("program_arg")),
                          name_arg=_program_arg(c.get("name_arg")),
                          name_self=c.get("name_self") is True,
+                         name_below=c.get("name_below") if isinstance(
+                             c.get("name_below"), str) else None,
                          name_option=c.get("name_option") if isinstance(
                              c.get("name_option"), str) else None,
                          name_option_default=c.get("name_option_default") if isinstance(

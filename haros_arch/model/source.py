@@ -184,6 +184,11 @@ class PrimitiveCall:
     # ``get_name()`` inside a name: nav2's costmap serves ``"get_cost_" + get_name()``):
     # the graph puts the instance's name there
     name_self: bool = field(default=False, metadata={"optional": True})
+    # the name's one ``?`` begins it and is the topic of a publisher or subscription the
+    # node made, resolved and remapped (rclcpp's ``get_topic_name()``: autoware_utils'
+    # published-time publisher names ``<topic>/debug/published_time``): that topic's
+    # name as the code wrote it, which the graph resolves and remaps in the instance
+    name_below: str | None = field(default=None, metadata={"optional": True})
     # a name whose one ``?`` is the value of an option of the process's command line that
     # argparse parses (its flags, space separated: ``-l --limb``): intera_interface's
     # joint trajectory action server's ``--limb``, which names its topics. The graph takes

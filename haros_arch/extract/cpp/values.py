@@ -123,6 +123,42 @@ class ProgramArgument(str):
         return hash(("argv", self.position))
 
 
+class TopicOf(str):
+    """The topic name of a publisher or subscription the code made (rclcpp's
+    ``get_topic_name()``): the name as resolved and remapped in the node, which
+    ``base`` is as the code wrote it; unknown to ``render``. Given only for a call's
+    name (``program_arguments``): a name it begins (autoware_utils' published-time
+    publisher, ``topic_name + "/debug/published_time"``) is named below that topic
+    (``PrimitiveCall.name_below``)."""
+
+    base: str
+
+    def __new__(cls, base: str) -> TopicOf:
+        made = super().__new__(cls, "?")
+        made.base = base
+        return made
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, TopicOf) and other.base == self.base
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    def __hash__(self) -> int:
+        return hash(("topic", self.base))
+
+
+def topic_base(parts: Parts) -> str | None:
+    """The written name of the topic that begins ``parts`` when it is their one unknown
+    run (``TopicOf``), else None."""
+    unknown = [i for i, part in enumerate(parts)
+               if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument,
+                                                    TopicOf))]
+    if unknown != [0] or not isinstance(parts[0], TopicOf):
+        return None
+    return parts[0].base
+
+
 # whether ``Scope.string`` gives a program argument as a ``ProgramArgument`` part (only
 # for a call's name, ``program_arguments``; other readers of parts know only None)
 _ARGUMENTS = [False]
@@ -144,7 +180,8 @@ def argument_of(parts: Parts) -> int | None:
     runs: list[list[str | None]] = []
     after_known = True
     for part in parts:
-        if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument)):
+        if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument,
+                                             TopicOf)):
             if after_known:
                 runs.append([])
             runs[-1].append(part)
@@ -163,7 +200,7 @@ def own_name_run(written: Parts, parts: Parts) -> bool:
     if len(written) != len(parts) or any(isinstance(p, NodeNamespace) for p in written):
         return False
     unknown = [i for i, part in enumerate(parts)
-               if part is None or isinstance(part, (NodeName, ProgramArgument))]
+               if part is None or isinstance(part, (NodeName, ProgramArgument, TopicOf))]
     return len(unknown) == 1 and isinstance(written[unknown[0]], NodeBaseName)
 
 
@@ -284,7 +321,7 @@ def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
     for part in parts:
-        if part is None or isinstance(part, (NodeName, ProgramArgument)):
+        if part is None or isinstance(part, (NodeName, ProgramArgument, TopicOf)):
             if not text or text[-1] != "?":
                 text.append("?")
         else:
@@ -362,7 +399,7 @@ def is_empty(parts: Parts) -> bool | None:
     for part in parts:
         if isinstance(part, NodeName):
             return False
-        if part is None or isinstance(part, ProgramArgument) or PLACEHOLDER in part or (
+        if part is None or isinstance(part, (ProgramArgument, TopicOf)) or PLACEHOLDER in part or (
                 CHOICE in part):
             known = False
         elif part:
@@ -372,7 +409,7 @@ def is_empty(parts: Parts) -> bool | None:
 
 def _choice_text(parts: Parts) -> str:
     """A side of a ``CHOICE``: its text, ``?`` for an unknown run (placeholders kept)."""
-    return "".join("?" if part is None or isinstance(part, (NodeName, ProgramArgument))
+    return "".join("?" if part is None or isinstance(part, (NodeName, ProgramArgument, TopicOf))
                    else part for part in parts)
 
 
@@ -421,7 +458,7 @@ def camera_info_topic(base: Parts) -> Parts:
     the base (``left/image_rect`` -> ``left/camera_info``); unknown when that namespace
     is."""
     last = base[-1]
-    if last is None or PLACEHOLDER in last or isinstance(last, ProgramArgument):
+    if last is None or PLACEHOLDER in last or isinstance(last, (ProgramArgument, TopicOf)):
         return UNKNOWN
     if "/" in last:
         return (*base[:-1], last.rpartition("/")[0] + "/camera_info")
@@ -1072,6 +1109,48 @@ class Scope:
             return _expanded(value)
         return value
 
+    def _made_topic(self, made: Cursor | None, depth: int) -> str | None:
+        """The name, as written and known, that the publisher or subscription ``made``
+        holds was created with: a variable, member or parameter (what every call of this
+        file passes, when all agree) holding a node's ``create_publisher(name, ...)`` /
+        ``create_subscription(name, ...)``."""
+        from .handles import pointee  # (handles reads values)
+
+        if made is None or depth > MAX_DEPTH:
+            return None
+        held = pointee(made)  # ``publisher->``: the shared pointer
+        if held.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = held.referenced
+            if decl is None:
+                return None
+            if self.is_parameter(decl):
+                return self.sites.agreed(  # type: ignore[union-attr]
+                    decl, lambda arg, scope: scope._made_topic(arg, depth + 1), None)
+            value = self.variable(decl)
+            if value is None and held.kind == CursorKind.MEMBER_REF_EXPR and (
+                decl.kind == CursorKind.FIELD_DECL
+            ):
+                value = self.assigned(decl, held)
+            elif value is None and decl.kind == CursorKind.VAR_DECL:
+                value = self.written_before(decl, held, depth)
+            if value is None:
+                found = self.field(decl)
+                return None if found is None else found[1]._made_topic(found[0], depth + 1)
+            return self._made_topic(value, depth + 1)
+        if held.kind != CursorKind.CALL_EXPR:
+            return None
+        target = held.referenced
+        args = written_arguments(held)
+        if target is not None and target.kind == CursorKind.CONSTRUCTOR and len(args) == 1:
+            return self._made_topic(args[0], depth + 1)  # a shared pointer converted
+        if target is None or held.spelling not in _TOPIC_MAKERS or not args or (
+                target.semantic_parent is None
+                or qualified_name(target.semantic_parent) not in _NODE_NAME_OWNERS):
+            return None
+        name = self.string(args[0], depth + 1)
+        return None if any(not _known_text(part) for part in name) else "".join(
+            part for part in name if part is not None)
+
     def field(self, decl: Cursor, initial: bool = False) -> tuple[Cursor, Scope] | None:
         """A member this function does not write: the value its class's constructor
         gives it, and the scope to read that value in. ``initial``: the value it holds
@@ -1128,6 +1207,13 @@ class Scope:
             # getName() is its own, which its private handle's namespace is too
             # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics")
             return ("~",)
+        if not args and _ARGUMENTS[0] and target.spelling == "get_topic_name" and (
+                target.semantic_parent is not None
+                and qualified_name(target.semantic_parent) in _TOPIC_HOLDERS):
+            # a publisher's or subscription's topic, resolved and remapped: the name the
+            # code made it with, where that is known (``TopicOf``)
+            made = self._made_topic(_method_object(call), depth + 1)
+            return UNKNOWN if made is None else (TopicOf(made),)
         if not args and _names_node(target):
             # an rclcpp node's get_name() (or its base interface's): the node's own name
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/
@@ -1700,6 +1786,16 @@ def _constructed(expr: Cursor) -> Cursor | None:
 _ROS1_NAME_OWNERS = frozenset({"ros::this_node", "nodelet::Nodelet"})
 _NODE_NAME_FUNCTIONS = frozenset({"get_name", "get_fully_qualified_name"})
 _NODE_NAME_OWNERS = frozenset({*api.RCLCPP_NODES, "rclcpp::node_interfaces::NodeBaseInterface"})
+
+
+# a node's methods that make a publisher or subscription of the name they are given first
+_TOPIC_MAKERS = frozenset({"create_publisher", "create_subscription"})
+_TOPIC_HOLDERS = frozenset({"rclcpp::PublisherBase", "rclcpp::SubscriptionBase"})
+
+
+def _known_text(part: str | None) -> bool:
+    return part is not None and type(part) is str and PLACEHOLDER not in part and (
+        CHOICE not in part)
 
 
 def _names_node(target: Cursor) -> bool:

@@ -92,6 +92,7 @@ from .values import (
     program_arguments,
     render,
     strip,
+    topic_base,
     written_arguments,
 )
 from .values import _walk as walk_cursors
@@ -174,6 +175,19 @@ class ArgumentName(str):
     def __new__(cls, name: str, program_arg: int) -> ArgumentName:
         made = super().__new__(cls, name)
         made.program_arg = program_arg
+        return made
+
+
+class BelowName(str):
+    """A call's name whose one ``?`` begins it and is the topic of a publisher or
+    subscription the code made (``values.TopicOf``), as resolved and remapped:
+    ``PrimitiveCall.name_below``, that topic's name as written."""
+
+    base: str
+
+    def __new__(cls, name: str, base: str) -> BelowName:
+        made = super().__new__(cls, name)
+        made.base = base
         return made
 
 
@@ -1989,7 +2003,8 @@ class CallFinder:
                 sdf_parts if handle_namespace == namespace else None)
             made_in = self._made_in(name, handle_namespace)
             name_member = self._run_member(name_expr, scope, name) if (
-                source is None and spec.fixed_name is None) else None
+                source is None and spec.fixed_name is None
+                and not isinstance(written, BelowName)) else None
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function),
@@ -2015,6 +2030,7 @@ class CallFinder:
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
                     name.count("?") == 1) else None, name_member=name_member,
                 name_self=isinstance(written, SelfName) and name.count("?") == 1,
+                name_below=written.base if isinstance(written, BelowName) else None,
                 loads=spec.loads, namespace_param=namespace_param,
                 argument=spec.argument))
             if status is not None:
@@ -2278,6 +2294,9 @@ class CallFinder:
             return (ArgumentName(name, argument), None)
         if own_name_run(written, parts):
             return (SelfName(name), None)
+        below = topic_base(parts)
+        if below is not None:
+            return (BelowName(name, below), None)
         if len(parts) == 1 and isinstance(parts[0], SearchedName):
             return (SearchedName(name), None)  # the key ``searchParam`` found
         if None not in parts:
@@ -2809,7 +2828,7 @@ class CallFinder:
         """A string passed to another file's function whose one unknown run is a
         parameter's value, with that parameter marked (``links.parameter_mark``)."""
         name, source = self._name(expr, scope)
-        if source is None:
+        if source is None and not isinstance(name, BelowName):
             # a member another file writes (``params_->odom_topic``): the member marked,
             # which the node's files name by the parameter stored there
             # (``extract.cpp._members_named``)
