@@ -98,7 +98,7 @@ from .values import (
 from .values import _walk as walk_cursors
 from .values import key_of as place_of
 from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
-from .writes import default_constructed, may_write, searched_key
+from .writes import const_array, default_constructed, may_write, searched_key
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
@@ -119,6 +119,7 @@ _API_NAMES = frozenset(
                           *api.STANDIN_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+_MAX_CONSTANT_ELEMENTS = 64  # a constant list longer than this is read as unknown
 # a nodelet's lookup name as a launch file gives it (``pkg/Name``, a C++ type)
 _LOOKUP_NAME = re.compile(r"[A-Za-z_][\w/:]*")
 # the text after a call whose result the code looks one key up in (``_looked_up``)
@@ -188,6 +189,18 @@ class BelowName(str):
     def __new__(cls, name: str, base: str) -> BelowName:
         made = super().__new__(cls, name)
         made.base = base
+        return made
+
+
+class EachName(str):
+    """A call's name for one element of a constant list the code walks in a loop (its
+    ``at``): the call is made once per element, so that loop is no condition of it."""
+
+    at: tuple[int, int]
+
+    def __new__(cls, name: str, at: tuple[int, int]) -> EachName:
+        made = super().__new__(cls, name)
+        made.at = at
         return made
 
 
@@ -1988,6 +2001,11 @@ class CallFinder:
                 handle_namespace == namespace and name.count("?") == 1
             ):
                 source = held_source
+            if isinstance(written, EachName):
+                # one element of a constant list: the loop over it runs that turn
+                conditions = tuple(c for c in conditions if not (
+                    c.statement in ("for", "while")
+                    and (c.location.line, c.location.column) == written.at))
             if source is not None and source[4] is not None:
                 # the loop over the list: one call per element, each made by that
                 # element's turn (the graph drops it where it knows the elements)
@@ -2263,6 +2281,13 @@ class CallFinder:
         named = self._name(expr, scope)
         if "?" not in named[0] or named[1] is not None:
             return [named]
+        constant = self._constant_each(expr, scope, named[0])
+        if constant is not None:
+            # each element of a constant list the loop walks (navigation2's controller
+            # server declares ``default_ids_[i] + ".plugin"`` for its default ids)
+            values, at = constant
+            return [(EachName(named[0].replace("?", value, 1), at), None)
+                    for value in values]
         # a key the writes that may reach the call disagree on, each known: one call
         # per value it may hold, each under its side of the ``if`` that decides it
         # (costmap_2d's searched key, or the fallback if the search finds nothing)
@@ -2345,6 +2370,45 @@ class CallFinder:
             # model + "/stop"``): each, the graph joins them where all are set
             return (name, self._first_parameter(expr, scope, 1))
         return (name, None if source is None else (*source, None, None, None))
+
+    def _constant_each(self, expr: Cursor, scope: Scope, name: str
+                       ) -> tuple[list[str], tuple[int, int]] | None:
+        """The values of ``name``'s one ``?`` and the place of the loop, when it is each
+        element in turn of a constant list of strings written here (a ``const`` member
+        or variable, or a constant array, initialised with a braced list of texts all
+        known, none empty) that a loop of this body walks (``_element_loop``)."""
+        if name.count("?") != 1 or isinstance(name, (ArgumentName, SelfName, BelowName)):
+            return None
+        inner = strip(expr)
+        operands = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
+            inner) is not None else _unknown_operands(expr, scope)
+        if len(operands) != 1:
+            return None
+        one = strip(operands[0])
+        made = written_arguments(one) if one.kind == CursorKind.CALL_EXPR and (
+            one.referenced is not None and one.referenced.kind == CursorKind.CONSTRUCTOR
+        ) else []
+        if len(made) == 1:
+            one = strip(made[0])  # ``std::string(name)``
+        walk, over, mark = _element_loop(one, scope)
+        if walk is None or over is None or mark != EACH:
+            return None
+        held = strip(over)
+        decl = held.referenced if held.kind in (
+            CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+        if decl is None or decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL) or (
+            not decl.type.is_const_qualified() and not const_array(decl)
+        ):
+            return None
+        value = scope.variable(decl)
+        items = _elements(value) if value is not None else []
+        if not items or len(items) > _MAX_CONSTANT_ELEMENTS or (
+                len(items) == 1 and strip(items[0]) == strip(value)):
+            return None
+        values = [render(scope.string(item)) for item in items]
+        if any(not v or "?" in v or PLACEHOLDER in v for v in values):
+            return None
+        return values, (walk.location.line, walk.location.column)
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
                       ) -> tuple[str | None, tuple[int, int] | None, str] | None:

@@ -1,0 +1,62 @@
+"""A name made of each element of a constant list the code walks: navigation2's
+controller server declares ``default_progress_checker_ids_[i] + ".plugin"`` for each of
+its default ids (a ``const std::vector<std::string>`` member initialised with a braced
+list), which was ``?.plugin``. One call per element, the loop no condition of it; a list
+that is not constant, or whose texts are not all known, keeps the ``?``."""
+
+from __future__ import annotations
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+from tests.conftest import package_xml
+
+NODE = """
+#include <rclcpp/rclcpp.hpp>
+class N : public rclcpp::Node {
+public:
+  N() : rclcpp::Node("n") {
+    ids_ = declare_parameter("checker_plugins", default_ids_);
+    if (ids_ == default_ids_) {
+      for (size_t i = 0; i < default_ids_.size(); ++i) {
+        declare_parameter(default_ids_[i] + ".plugin", default_types_[i]);
+      }
+    }
+    for (const auto & name : kNames) {
+      declare_parameter(std::string(name) + ".enabled", true);
+    }
+    for (const auto & name : ids_) {
+      declare_parameter(name + ".scale", 1.0);  // a parameter's list, not a constant
+    }
+    std::vector<std::string> changing{"a", "b"};
+    changing.push_back(get_name());
+    for (const auto & name : changing) {
+      declare_parameter(name + ".other", 1.0);  // not constant
+    }
+  }
+  std::vector<std::string> ids_;
+  const std::vector<std::string> default_ids_{"progress_checker", "goal_checker"};
+  const std::vector<std::string> default_types_{"pkg::A", "pkg::B"};
+  static constexpr const char * kNames[] = {"x", "y"};
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<N>());
+}
+"""
+
+
+def test_each_element_of_a_constant_list(write_tree) -> None:
+    root = write_tree({"cl/package.xml": package_xml("cl", "ament_cmake"),
+                       "cl/src/n.cpp": NODE})
+    result = extract_cpp([str(root / "cl" / "src" / "n.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    declared = {c.name: [cond.statement for cond in c.conditions]
+                for c in result.calls if c.kind == "declare"}
+    assert declared["progress_checker.plugin"] == ["if"]  # the loop is no condition
+    assert declared["goal_checker.plugin"] == ["if"]
+    assert declared["x.enabled"] == [] and declared["y.enabled"] == []
+    assert "?.plugin" not in declared and "?.enabled" not in declared
+    assert "?.other" in declared  # a list the code changes
+    scale = [c for c in result.calls if c.kind == "declare" and c.name == "?.scale"]
+    assert scale and scale[0].name_param == "checker_plugins"  # the graph's, per element
