@@ -68,7 +68,11 @@ CATALOGUE: dict[str, Entry] = {
         "A launch file, project file or $(find) names a package that is neither in the "
         "workspace nor on ROS_PACKAGE_PATH / AMENT_PREFIX_PATH, or one the workspace "
         "holds in a folder an ignore marker (COLCON_IGNORE, CATKIN_IGNORE, AMENT_IGNORE) "
-        "leaves out, as colcon and catkin do: the marker file is named."),
+        "leaves out, as colcon and catkin do: the marker file is named. A launch file's "
+        "$(find) or FindPackageShare of a package not found is an info "
+        "(LAUNCH_UNKNOWN_VALUE: installed where the robot runs, perhaps), unless the name "
+        "is a letter or two from a package that is here: then it is this error, with "
+        "the name it most likely misspells."),
     # build files
     "CMAKE_SYNTAX": Entry(
         "error", "CMake syntax error: {detail}",

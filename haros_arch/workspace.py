@@ -19,6 +19,7 @@ IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
 SKIP_FOLDERS = frozenset({"build", "devel", "install", "log", "node_modules", "__pycache__"})
 MAX_DEPTH = 12
 MAX_PATH_FOLDERS = 50_000  # folders listed when indexing ROS_PACKAGE_PATH
+MAX_NEAR = 3  # package names a "did you mean" offers at most
 MAX_REMEMBERED_PATHS = 200_000  # relpath's answers kept per workspace
 
 
@@ -33,6 +34,8 @@ class Workspace:
     environment: Mapping[str, str] = field(default_factory=dict)
     _installed: dict[str, str | None] = field(default_factory=dict)
     _path_index: dict[str, str] | None = field(default=None, repr=False)
+    # the names of the packages installed here, for ``misspelt``: filled when first asked
+    _known_names: list[str] | None = field(default=None, repr=False)
     # package name -> {share-relative path: source file}, filled by haros_arch.share
     share_maps: dict[str, dict[str, str]] = field(default_factory=dict, repr=False)
     # package name -> {share-relative path (a folder ends in "/"): (CMake file, line) of
@@ -142,13 +145,54 @@ class Workspace:
     def absence(self, name: str) -> str:
         """Why ``find(name)`` found nothing, the rest of a sentence "package NAME ...":
         a package of the workspace left out by its ignore marker (named, the place to
-        look) is not just missing."""
+        look) is not just missing; a name a letter or two from a package's that is here
+        says which (``misspelt``)."""
         ignored = self.ignored.get(name)
         if ignored is None:
-            return "is not in the workspace nor installed here"
+            near = self.misspelt(name)
+            hint = f" (did you mean {' or '.join(near)}?)" if near else ""
+            return "is not in the workspace nor installed here" + hint
         marker, folder = ignored
         return (f"is in the workspace ({self.relpath(folder)}) but ignored: "
                 f"{self.relpath(marker)} keeps colcon and catkin out of that folder")
+
+
+    def misspelt(self, name: str) -> list[str]:
+        """The names of the packages here (in the workspace, on ROS_PACKAGE_PATH, in an
+        ament index) nearest to ``name``, a package ``find`` does not find, when they are
+        close enough that ``name`` is most likely one of them misspelt: at most one edit
+        per four letters and never more than two (``query.absence.distance``, the
+        similar-name rule's measure); none when nothing is that close."""
+        if not name or self.find(name) is not None:
+            return []
+        from .query.absence import MAX_DISTANCE, distance, masks
+        limit = min(MAX_DISTANCE, len(name) // 4)
+        if limit < 1:
+            return []
+        if self._known_names is None:
+            if self._path_index is None:
+                self._path_index = package_path_index(self.environment)
+            self._known_names = [*self._path_index, *ament_index_packages(self.environment)]
+        pattern = masks(name)
+        scored = [(distance(name, other, pattern), other)
+                  for other in sorted({*self.packages, *self._known_names})
+                  if abs(len(other) - len(name)) <= limit]
+        best = min((score for score, _other in scored), default=limit + 1)
+        return [other for score, other in scored if score == best <= limit][:MAX_NEAR]
+
+
+def ament_index_packages(env: Mapping[str, str]) -> list[str]:
+    """The packages the ament index of each prefix on AMENT_PREFIX_PATH registers (the
+    file names in ``share/ament_index/resource_index/packages``), as ros2 lists them."""
+    names: list[str] = []
+    for prefix in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep):
+        folder = os.path.join(prefix, "share", "ament_index", "resource_index", "packages")
+        if prefix and os.path.isdir(folder):
+            try:
+                names.extend(n for n in os.listdir(folder) if not n.startswith("."))
+            except OSError:
+                continue
+    return names
 
 
 def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> Workspace:

@@ -81,3 +81,35 @@ def test_what_no_find_package_looks_for_is_empty():
         """)
     assert list(conditions(it)) == ["bullet_tool"]
     assert conditions(it)["bullet_tool"] != []
+
+
+def test_a_value_computed_from_an_unknown_version_leaves_its_test_undecided():
+    """``string(REGEX MATCH "^[0-9]+" ROS2_MAJOR_VERSION "${rclcpp_VERSION}")`` of an
+    rclcpp not read here is not known either: ``if(ROS2_MAJOR_VERSION GREATER_EQUAL 28)``
+    was decided on the empty match, false, and only the older branch was built. A value
+    computed from one (``list(GET ...)``) is not known in turn; a variable set again from
+    what is known is known again."""
+    it = run("""
+        find_package(rclcpp REQUIRED)
+        string(REGEX MATCH "^[0-9]+" ROS2_MAJOR_VERSION "${rclcpp_VERSION}")
+        if(ROS2_MAJOR_VERSION GREATER_EQUAL 28)
+          add_executable(jazzy a.cpp)
+        else()
+          add_executable(older a.cpp)
+        endif()
+        string(REGEX REPLACE "^([0-9]+)\\\\..*" "\\\\1" MAJOR "${rclcpp_VERSION}")
+        string(REPLACE "." ";" PARTS "${rclcpp_VERSION}.0")
+        list(GET PARTS 1 MINOR)
+        if("${MAJOR}" LESS 16 OR MINOR GREATER 2)
+          add_executable(either a.cpp)
+        endif()
+        set(MAJOR 30)
+        if(MAJOR GREATER 20)
+          add_executable(known a.cpp)
+        endif()
+        """)
+    found = conditions(it)
+    assert found["jazzy"] == ["if (ROS2_MAJOR_VERSION GREATER_EQUAL 28)"]
+    assert found["older"] == ["else (ROS2_MAJOR_VERSION GREATER_EQUAL 28)"]
+    assert len(found["either"]) == 1
+    assert found["known"] == []

@@ -23,20 +23,18 @@ YAML = os.path.join(PACKAGE, "src", "joint_gain_controller_parameters.yaml")
 UNCLEAN = ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_CALL_UNRESOLVED",
            "CPP_NAMES_DECLARED", "CPP_ERROR_NEAR_CALL", "CPP_PARAMETER_LIBRARY")
 DECLARED = [
-    ("joints", "str[]", True, ["shoulder", "elbow"]),
-    ("interface_name", "str", True, "position"),
-    ("update_rate", "int", True, 100),
-    ("command_joints", "str[]", True, []),
-    ("open_loop", "bool", True, False),
-    ("limits.max_velocity", "double", True, 1.5),
-    ("limits.max_effort", "double", False, None),  # no default_value: required
-    # __map_joints: one per element of the default of ``joints``
-    ("gains.shoulder.p", "double", True, 1.0),
-    ("gains.elbow.p", "double", True, 1.0),
-    ("gains.shoulder.i", "double", True, 0.0),
-    ("gains.elbow.i", "double", True, 0.0),
-    # __map_command_joints: its list's default is empty, so the element is unknown
-    ("feedforward.?.scale", "double", True, 1.0),
+    ("joints", "str[]", True, ["shoulder", "elbow"], None),
+    ("interface_name", "str", True, "position", None),
+    ("update_rate", "int", True, 100, None),
+    ("command_joints", "str[]", True, [], None),
+    ("open_loop", "bool", True, False, None),
+    ("limits.max_velocity", "double", True, 1.5, None),
+    ("limits.max_effort", "double", False, None, None),  # no default_value: required
+    # __map_joints: one per element of ``joints`` in the configuration (the graph names
+    # them from its value, else its default)
+    ("gains.?.p", "double", True, 1.0, "joints"),
+    ("gains.?.i", "double", True, 0.0, "joints"),
+    ("feedforward.?.scale", "double", True, 1.0, "command_joints"),
 ]
 
 
@@ -45,9 +43,15 @@ def controller() -> CppResult:
     return extract_cpp([CONTROLLER], scan([ROOT]), cache_dir=None)
 
 
-def _declares(result: CppResult, line: int) -> list[tuple[str, str | None, bool, object]]:
-    return [(c.name, c.type, c.has_default, c.default) for c in result.calls
-            if c.kind == "declare" and c.location.line == line]
+def _declares(result: CppResult, line: int
+              ) -> list[tuple[str, str | None, bool, object, str | None]]:
+    """Each declare's (name, type, has default, default, the list parameter whose
+    elements name it)."""
+    found = [(c.name, c.type, c.has_default, c.default, c.name_param) for c in result.calls
+             if c.kind == "declare" and c.location.line == line]
+    assert all((c.name_each == ".") == (c.name_param is not None) for c in result.calls
+               if c.kind == "declare" and c.location.line == line)
+    return found
 
 
 def test_cmake_records_the_target_and_its_yaml() -> None:
@@ -65,7 +69,8 @@ def test_the_listener_declares_every_parameter_of_the_yaml(controller: CppResult
 def test_a_prefix_given_to_the_listener_heads_every_name(controller: CppResult) -> None:
     # ParamListener backup(get_node(), "backup"), a local
     assert _declares(controller, 65) == [
-        (f"backup.{name}", kind, has, default) for name, kind, has, default in DECLARED]
+        (f"backup.{name}", kind, has, default, listed and f"backup.{listed}")
+        for name, kind, has, default, listed in DECLARED]
 
 
 def test_the_params_struct_parses_cleanly(controller: CppResult) -> None:
@@ -82,7 +87,8 @@ def test_the_controller_node_is_complete() -> None:
     nodes = [n for n in package.nodes if n.language == "cpp"]
     found = extract_nodes(nodes, workspace, cache_dir=None, jobs=1)
     node = next(n for n in nodes if n.name.endswith("JointGainController"))
-    assert ("declare", "gains.elbow.p") in [(c.kind, c.name) for c in node.calls]
+    assert ("declare", "gains.?.p", "joints") in [
+        (c.kind, c.name, c.name_param) for c in node.calls]
     assert not [d for d in found if d.code == "CPP_NODE_PARTIAL"]
 
 

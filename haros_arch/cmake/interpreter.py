@@ -167,6 +167,11 @@ class Interpreter:
         # the packages a find_package of this reading looks for (and catkin's
         # components), lower-cased: what it sets of them (``<pkg>_VERSION``) is not known
         self.found_packages: set[str] = set()
+        # variables computed from such a value (``string(REGEX MATCH "^[0-9]+" MAJOR
+        # "${rclcpp_VERSION}")``, or from another of them): not known either, so a test
+        # that reads one is not decided (``test_arguments``)
+        self.from_found: set[str] = set()
+        self._deriving = 0  # > 0: what is set now is computed from such a value
         # variables written on some paths through if()s the reading cannot decide and not
         # on others, or to different values: each path's value (None: not set), the
         # variable holding the last path's (or its last set one) meanwhile. A test that
@@ -229,6 +234,13 @@ class Interpreter:
             self.uncertain.add(name)
         else:
             self.uncertain.discard(name)
+        self._derived(name)
+
+    def _derived(self, name: str) -> None:
+        if self._deriving:
+            self.from_found.add(name)
+        else:
+            self.from_found.discard(name)
 
     def _bounded(self, name: str, value: str) -> None:
         """A value past ``MAX_VALUE`` (a list or string doubled in a loop or through
@@ -252,6 +264,7 @@ class Interpreter:
             self.uncertain.add(name)
         else:
             self.uncertain.discard(name)
+        self._derived(name)
 
     def set_parent(self, name: str, value: str | None) -> None:
         if len(self.scopes) < 2:
@@ -450,12 +463,16 @@ class Interpreter:
         handler = HANDLERS.get(name[1:] if name.startswith("_") else name)
         if handler is not None:
             # (the variable ``set()`` writes is no value it reads)
-            unsure = self._reads_unknown(command.args[1:] if name == "set" else command.args)
+            read = command.args[1:] if name == "set" else command.args
+            unsure = self._reads_unknown(read)
+            deriving = self._reads_found(read)
             self._unsure += unsure
+            self._deriving += deriving
             try:
                 handler(self, command, self.arguments(command.args))
             finally:
                 self._unsure -= unsure
+                self._deriving -= deriving
         elif name not in IGNORED:
             unknown_command(self, command, self.arguments(command.args))
         return index + 1
@@ -544,16 +561,28 @@ class Interpreter:
         ``if("${catkin_LIBRARIES}" MATCHES ...)`` in an ament package)."""
         values: list[str] = []
         for arg in args:
-            read: list[str] = []
-            if arg.kind != "bracket":
-                self._expanded(arg.text, read=read)
-            if any(self.get(name) is None and name not in self.assigned
-                   and (found := FOUND_BY_PACKAGE.fullmatch(name)) is not None
-                   and found.group(1).lower() in self.found_packages for name in read):
+            if arg.kind == "unquoted" and arg.text in self.from_found:
+                values.append(UNKNOWN_MARK)  # ``if(MAJOR GREATER 20)``, named bare
+            elif self._reads_found((arg,)):
                 values.append(UNKNOWN_MARK)
             else:
                 values.extend(self.arguments((arg,)))
         return values
+
+    def _reads_found(self, args: tuple[Argument, ...]) -> bool:
+        """Whether the arguments read, through a reference, what a ``find_package`` of
+        this reading sets that is not set here, or a variable computed from such a
+        value (``from_found``)."""
+        for arg in args:
+            read: list[str] = []
+            if arg.kind != "bracket":
+                self._expanded(arg.text, read=read)
+            if any(name in self.from_found or (
+                    self.get(name) is None and name not in self.assigned
+                    and (found := FOUND_BY_PACKAGE.fullmatch(name)) is not None
+                    and found.group(1).lower() in self.found_packages) for name in read):
+                return True
+        return False
 
     def every_way(self, args: tuple[Argument, ...]) -> list[str]:
         """A command's arguments expanded with every choice of the values its variables

@@ -1081,9 +1081,13 @@ def _list_elements(call: PrimitiveCall, instance: NodeInstance, resources: Resou
                    full: str) -> list[Any] | None:
     """The elements of the list parameter ``full`` in this configuration: the launch
     files' value, the ROS 2 parameters under its prefix (ROS 1: a dictionary's leaves),
-    else the node's code default; None when none is known."""
+    else the node's code default; None when none is known, and when the launch files set
+    it to a value not known here (an argument nobody gave: the node reads that, not its
+    default)."""
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
+    if value is None and isinstance(param, Parameter) and param.set_by_launch:
+        return None
     if value is None:
         value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
     if value is None and call.name_param is not None and _list_name(

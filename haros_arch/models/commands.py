@@ -66,6 +66,7 @@ read any parameter: the arguments decide over it too.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 from ..launch.model import NodeDecl, shell_words
@@ -109,6 +110,8 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _rosservice(decl, words)
     if decl.executable == "ros2" and words[:2] == ["topic", "pub"]:
         return _ros2_topic(decl, words[1:])
+    if decl.executable == "ros2" and words[:2] == ["control", "load_controller"]:
+        return _ros2_control_load(decl)
     if decl.package == "topic_tools" and decl.ros_version == 1:
         return _topic_tools(decl, words)
     if (decl.package, decl.executable) == ("controller_manager", "spawner") and (
@@ -170,6 +173,73 @@ def _ros2_spawner(decl: NodeDecl, words: list[str]) -> Node | None:
     node = _node(decl, "controller_manager", calls[0], "python")
     node.calls = calls
     node.rosname = f"spawner_{controllers[0]}"
+    return node
+
+
+# ``ros2 control load_controller``'s options that take a value (ros2controlcli's
+# ``add_controller_mgr_parsers`` and ros2cli's direct node's ``--spin-time``)
+CLI_LOAD_VALUES = {"-c", "--controller-manager", "--set-state", "--spin-time"}
+
+
+@dataclass(frozen=True)
+class CliLoad:
+    """What ``ros2 control load_controller [options] NAME [PARAM_FILE]`` asks of the
+    controller manager: load NAME (after setting its parameters from PARAM_FILE), then
+    with ``--set-state`` configure it, and with ``--set-state active`` activate it."""
+
+    controller: str
+    param_file: str | None
+    manager: str  # as given: relative ones are in the process's namespace
+    state: str | None
+
+
+def cli_load(decl: NodeDecl) -> CliLoad | None:
+    """The load a ``ros2 control load_controller`` declaration asks for, read as its
+    argparse reads the words (ros2_control's ros2controlcli ``verb/load_controller.py``:
+    the controller's name, an optional parameter file (Jazzy on), ``--set-state``
+    ``inactive`` / ``configured`` / ``active``, ``-c`` the manager, default
+    ``controller_manager`` or ``/controller_manager`` by release, one node either way
+    for a process in the root namespace); None for another declaration, or one whose
+    words are not known or that argparse refuses."""
+    words = _words(decl.args)
+    if decl.executable != "ros2" or words[:2] != ["control", "load_controller"]:
+        return None
+    rest = words[2:]
+    if "--ros-args" in rest:
+        rest = rest[:rest.index("--ros-args")]
+    positional, values, _flags = split_options(rest, CLI_LOAD_VALUES)
+    if not 1 <= len(positional) <= 2 or any(UNKNOWN_MARK in w for w in positional):
+        return None
+    manager = values.get("-c", values.get("--controller-manager", "controller_manager"))
+    if UNKNOWN_MARK in manager:
+        return None
+    return CliLoad(positional[0], positional[1] if len(positional) > 1 else None,
+                   manager, values.get("--set-state"))
+
+
+def _ros2_control_load(decl: NodeDecl) -> Node | None:
+    """The DirectNode of ``ros2 control load_controller``: the manager's services it
+    calls (``list_controllers``, ``set_parameters`` for a parameter file, then
+    ``load_controller``, ``configure_controller`` with ``--set-state``,
+    ``switch_controller`` with ``--set-state active``)."""
+    load = cli_load(decl)
+    if load is None:
+        return None
+    manager = load.manager if load.manager.startswith("/") else (
+        f"{decl.namespace.rstrip('/')}/{load.manager}")
+    verbs = ["list_controllers", "load_controller"]
+    if load.state:
+        verbs.append("configure_controller")
+    if load.state == "active":
+        verbs.append("switch_controller")
+    calls = [PrimitiveCall("client", f"{manager}/{verb}", _SPAWNER_TYPES[verb],
+                           location=decl.location, origin="arguments") for verb in verbs]
+    if load.param_file:
+        calls.append(PrimitiveCall("client", f"{manager}/set_parameters",
+                                   "rcl_interfaces/srv/SetParameters",
+                                   location=decl.location, origin="arguments"))
+    node = _node(decl, "ros2controlcli", calls[0], "python")
+    node.calls = calls
     return node
 
 

@@ -53,6 +53,7 @@ from ..model.rosname import namespace_of, pattern_for, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
 from ..model.source import PLUGINLIB_CLASS, Node, PrimitiveCall, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
+from ..models.commands import cli_load
 from ..share import share_source
 from ..workspace import Workspace
 from . import behavior_trees
@@ -1082,6 +1083,19 @@ def spawn_args(decl: NodeDecl) -> Spawn:
     return spawn
 
 
+def _spawn_of(decl: NodeDecl) -> Spawn | None:
+    """What a declaration that loads ROS 2 controllers asks for: a spawner's command
+    line, or ``ros2 control load_controller NAME [PARAM_FILE]`` (``commands.cli_load``),
+    the one controller and its file; None for any other."""
+    if (decl.package, decl.executable) in SPAWNERS:
+        return spawn_args(decl)
+    load = cli_load(decl)
+    if load is None:
+        return None
+    return Spawn([load.controller], load.manager,
+                 [load.param_file] if load.param_file else [], None, [])
+
+
 def _manager_name(spawner: NodeDecl, manager: str) -> str:
     """The controller manager a spawner talks to: ``-c`` resolved in its namespace."""
     if manager.startswith("/"):
@@ -1106,10 +1120,8 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
              config: Configuration, unnamed: bool = False) -> Iterator[Choice]:
     """The controllers the spawners of the configuration load into ``host``."""
     for decl, instance in started:
-        if (decl.package, decl.executable) not in SPAWNERS:
-            continue
-        spawn = spawn_args(decl)
-        if not _serves(host, _manager_name(decl, spawn.manager), unnamed):
+        spawn = _spawn_of(decl)
+        if spawn is None or not _serves(host, _manager_name(decl, spawn.manager), unnamed):
             continue
         documents = [doc for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]

@@ -204,19 +204,42 @@ def _struct(tree: dict[str, Any], indent: str) -> list[str]:
     return lines
 
 
-def declared(tree: dict[str, Any]) -> list[tuple[str, str | None, bool, Any]]:
-    """What a listener declares: (name, ROS type, has default, default) per parameter.
-    A parameter under ``__map_<key>`` is one per element of the list parameter ``<key>``
-    when its default is a list of names, else named with ``?`` for the element."""
-    found: list[tuple[str, str | None, bool, Any]] = []
+def declared(tree: dict[str, Any]) -> list[tuple[str, str | None, bool, Any, str | None]]:
+    """What a listener declares: (name, ROS type, has default, default, list) per
+    parameter. A parameter under one ``__map_<key>`` is one per element of the list
+    parameter ``<key>`` (looked up from its scope outwards) in the configuration: named
+    with ``?`` for the element, and ``list`` names that parameter (the graph makes one
+    declare per element of its value: the launch files', else its default; without one,
+    the ``?`` stays). Under several, each ``__map_`` is the elements of its list's
+    default, or ``?``, and ``list`` is None."""
+    found: list[tuple[str, str | None, bool, Any, str | None]] = []
     every = {p.name: p for p in parameters(tree)}
     for param in every.values():
         kind = parameter_type(param.kind)
         if kind is None:
             continue  # ``none``: no value
+        listed = _mapped_over(param.name, every)
+        if listed is not None:
+            found.append((listed[0], kind, param.has_default, param.default, listed[1]))
+            continue
         for name in _expanded(param.name, every):
-            found.append((name, kind, param.has_default, param.default))
+            found.append((name, kind, param.has_default, param.default, None))
     return found
+
+
+def _mapped_over(name: str, every: dict[str, Parameter]) -> tuple[str, str] | None:
+    """``name`` with its one ``__map_<key>`` segment (not the last) as ``?``, and the
+    list parameter ``<key>`` it maps over; None for a name of no or several such
+    segments, or whose list is not a parameter of the YAML."""
+    segments = name.split(".")
+    maps = [i for i, s in enumerate(segments[:-1]) if s.startswith(MAP)]
+    if len(maps) != 1:
+        return None
+    index = maps[0]
+    listed = _list_parameter(segments[index][len(MAP):], segments[:index], every)
+    if listed is None:
+        return None
+    return ".".join([*segments[:index], "?", *segments[index + 1:]]), listed
 
 
 def _expanded(name: str, every: dict[str, Parameter]) -> list[str]:
@@ -233,20 +256,25 @@ def _expanded(name: str, every: dict[str, Parameter]) -> list[str]:
     return names
 
 
-def _keys(key: str, scope: list[str], every: dict[str, Parameter]) -> list[str]:
+def _list_parameter(key: str, scope: list[str], every: dict[str, Parameter]) -> str | None:
+    """The name of the parameter ``key`` from ``scope`` outwards, as the library looks
+    a ``__map_<key>``'s list up; None when the YAML has none."""
     plain = [s for s in scope if not s.startswith(MAP)]  # the library's struct name
     while True:
         candidate = ".".join([*plain, key])
-        param = every.get(candidate)
-        if param is not None:
-            value = param.default
-            if isinstance(value, list) and value and all(
-                    isinstance(v, str) and v for v in value):
-                return list(dict.fromkeys(value))
-            return ["?"]
+        if candidate in every:
+            return candidate
         if not plain:
-            return ["?"]
+            return None
         plain.pop()
+
+
+def _keys(key: str, scope: list[str], every: dict[str, Parameter]) -> list[str]:
+    listed = _list_parameter(key, scope, every)
+    value = every[listed].default if listed is not None else None
+    if isinstance(value, list) and value and all(isinstance(v, str) and v for v in value):
+        return list(dict.fromkeys(value))
+    return ["?"]
 
 
 def annotation(text: str) -> str:
@@ -322,12 +350,12 @@ def field_parameter(expr: Cursor) -> str | None:
 
 
 def listener_parameters(cls: Cursor | None
-                        ) -> list[tuple[str, str | None, bool, Any]] | None:
-    """The parameters a synthesised ``ParamListener`` class declares (its annotations);
-    None when ``cls`` is not one."""
+                        ) -> list[tuple[str, str | None, bool, Any, str | None]] | None:
+    """The parameters a synthesised ``ParamListener`` class declares (its annotations,
+    as ``declared`` lists them); None when ``cls`` is not one."""
     if cls is None or cls.spelling != LISTENER:
         return None
-    found: list[tuple[str, str | None, bool, Any]] = []
+    found: list[tuple[str, str | None, bool, Any, str | None]] = []
     marked = False
     for child in cls.get_children():
         if child.kind != CursorKind.ANNOTATE_ATTR:
@@ -335,8 +363,10 @@ def listener_parameters(cls: Cursor | None
         marked = marked or child.spelling == _LISTENER_MARK
         if child.spelling.startswith(_MARK):
             try:
-                name, kind, has_default, default = json.loads(child.spelling[len(_MARK):])
+                name, kind, has_default, default, listed = json.loads(
+                    child.spelling[len(_MARK):])
             except (ValueError, TypeError):
                 continue
-            found.append((str(name), kind, bool(has_default), default))
+            found.append((str(name), kind, bool(has_default), default,
+                          str(listed) if listed is not None else None))
     return found if marked else None

@@ -2215,13 +2215,14 @@ class CallFinder:
         return usr if mark in name or mark in (namespace or "") else None
 
     def _listener(self, call: Cursor, args: list[Cursor],
-                  declared: list[tuple[str, str | None, bool, Any]],
+                  declared: list[tuple[str, str | None, bool, Any, str | None]],
                   conditions: tuple[Condition, ...], scope: Scope) -> None:
         """A generate_parameter_library ``ParamListener`` built on a node (or its
         parameters interface) and an optional prefix: one declare per parameter of its
         YAML (``parameter_library``), on that node, under the prefix: a ROS 2 node's own
         parameters, whichever handle of it (the node, ``get_node()``, its parameters
-        interface) the listener is given."""
+        interface) the listener is given. A parameter of a ``__map_`` is one declare
+        named by each element of the list parameter it maps over (``name_each``)."""
         target = call.referenced
         location = self.where(call if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee_of_call(call))
@@ -2229,12 +2230,14 @@ class CallFinder:
                        if msg_types.param_type(a.type) == "str"), "")
         if prefix and not prefix.endswith("."):
             prefix += "."
-        for name, kind, has_default, default in declared:
+        for name, kind, has_default, default, listed in declared:
             full = prefix + name
             self.calls.append(PrimitiveCall(
                 kind="declare", name=full, type=kind, conditions=conditions,
                 location=location, has_default=has_default,
-                default=default if has_default else None, node_name=self._owner))
+                default=default if has_default else None, node_name=self._owner,
+                name_param=prefix + listed if listed is not None else None,
+                name_each="." if listed is not None else None))
             if "?" in full:
                 self.diagnostics.append(diag.make(
                     "CPP_DYNAMIC_NAME", location, kind="declare", name=full))
@@ -3499,7 +3502,8 @@ def _dependent_class(call: Cursor) -> Cursor | None:
     return classes[0]
 
 
-def _dependent_listener(call: Cursor) -> list[tuple[str, str | None, bool, Any]] | None:
+def _dependent_listener(call: Cursor
+                        ) -> list[tuple[str, str | None, bool, Any, str | None]] | None:
     """The parameters of a generate_parameter_library ``ParamListener`` that a
     dependent ``std::make_shared<ParamListener>(...)`` builds: in a member of a class
     template, ``get_node()`` is called on the implicit ``this``, which depends on the

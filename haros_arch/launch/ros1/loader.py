@@ -135,7 +135,8 @@ class Ros1Loader:
                 scope.include_args is not None and name in scope.outer_arg_names)
 
         ctx = Context(scope.args, self.environment, find, scope.filename,
-                      scope.anon, declared, absence=self.workspace.absence)
+                      scope.anon, declared, absence=self.workspace.absence,
+                      misspelt=self.workspace.misspelt)
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:
@@ -165,6 +166,9 @@ class Ros1Loader:
                 self.report("LAUNCH_ARG_UNSET", scope, element, name=name)
         for detail in dict.fromkeys(ctx.unknown):
             self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=detail)
+        for name in dict.fromkeys(ctx.misspelt_packages):
+            self.report("PACKAGE_NOT_FOUND", scope, element, name=name,
+                        why=self.workspace.absence(name))
         return result
 
     def value(self, element: Element, attribute: str, scope: Scope) -> Value | None:

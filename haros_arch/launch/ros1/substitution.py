@@ -58,6 +58,10 @@ class Context:
     unknown: list[str] = field(default_factory=list)  # other reasons for unknown parts
     # why ``find`` found nothing, the rest of "package NAME ..." (Workspace.absence)
     absence: Callable[[str], str] = lambda name: "is not found"
+    # the packages here whose names a package ``find`` did not find most likely misspells
+    # (Workspace.misspelt), and the packages so named in a $(find)
+    misspelt: Callable[[str], list[str]] = lambda name: []
+    misspelt_packages: list[str] = field(default_factory=list)
 
 
 def collect(text: str) -> list[str]:
@@ -178,7 +182,10 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
         _arity(raw, args, 1)
         path = ctx.find(args[0])
         if path is None:
-            ctx.unknown.append(f"package {args[0]} {ctx.absence(args[0])}")
+            if ctx.misspelt(args[0]):  # most likely a typo: the launch fails here
+                ctx.misspelt_packages.append(args[0])
+            else:  # installed on the robot, perhaps
+                ctx.unknown.append(f"package {args[0]} {ctx.absence(args[0])}")
             return package_not_found(args[0])
         return Value.of(path)
     if command == "anon":

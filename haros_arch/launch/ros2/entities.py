@@ -366,9 +366,10 @@ class UnknownAction(Action):
 
 def ros2_command_node(words: list[Text]) -> NodeAction | None:
     """The node a process's command line starts, when it is ``ros2 run PKG EXE ...``
-    (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``) or ``ros2
+    (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``), ``ros2
     topic pub ...`` (a publisher that ``models.commands`` reads from its arguments,
-    named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``);
+    named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``)
+    or ``ros2 control load_controller ...`` (its DirectNode, which loads a controller);
     None for any other process (a simulator, xacro), or when those words are not known.
     """
     def plain(word: Text) -> str | None:
@@ -388,6 +389,12 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
             if plain(word) in ("-n", "--node-name"):
                 name = words[index + 1]
         return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
+    if head[1:] == ["control", "load_controller"]:
+        # ros2controlcli's verb: its DirectNode (``_ros2cli_<pid>``) asks the controller
+        # manager to load the controller (``models.commands``; the graph attaches the
+        # controller to the manager as a spawner's, ``plugins.attach``)
+        name = ("_ros2cli_", Opaque("the process id of ros2 control", report=False))
+        return NodeAction(("ros2controlcli",), ("ros2",), name, arguments=list(words[1:]))
     return None
 
 

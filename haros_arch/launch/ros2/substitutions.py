@@ -301,6 +301,11 @@ class Evaluator:
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
+        if found is None and self.runner.workspace.misspelt(name):
+            # a letter or two from a package here: most likely a typo, the launch fails
+            self.report("PACKAGE_NOT_FOUND", name=name,
+                        why=self.runner.workspace.absence(name))
+            return package_not_found(name)
         if found is None:  # installed on the robot, perhaps: unknown here, as in ROS 1
             self.report("LAUNCH_UNKNOWN_VALUE", detail=(
                 f"package {name} {self.runner.workspace.absence(name)}"))
