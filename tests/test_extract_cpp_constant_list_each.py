@@ -60,3 +60,60 @@ def test_each_element_of_a_constant_list(write_tree) -> None:
     assert "?.other" in declared  # a list the code changes
     scale = [c for c in result.calls if c.kind == "declare" and c.name == "?.scale"]
     assert scale and scale[0].name_param == "checker_plugins"  # the graph's, per element
+
+
+HANDED = """
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/bool.hpp>
+template <class T>
+std::vector<typename rclcpp::Subscription<T>::SharedPtr> init_factors(
+  rclcpp::Node * node, const std::vector<std::string> & topics)
+{
+  std::vector<typename rclcpp::Subscription<T>::SharedPtr> subs;
+  for (size_t index = 0; index < topics.size(); ++index) {
+    subs.push_back(node->create_subscription<T>(topics[index], rclcpp::QoS(1),
+      [](const typename T::ConstSharedPtr) {}));
+  }
+  return subs;
+}
+class Planning : public rclcpp::Node {
+public:
+  Planning() : rclcpp::Node("planning") {
+    std::vector<std::string> factor_topics = {
+      "/planning/planning_factors/crosswalk", "/planning/planning_factors/stop_line"};
+    subs_ = init_factors<std_msgs::msg::Bool>(this, factor_topics);
+    std::vector<std::string> grown = {"/a"};
+    grown.push_back(get_name());
+    more_ = init_other(grown);
+  }
+  std::vector<rclcpp::Subscription<std_msgs::msg::Bool>::SharedPtr> init_other(
+    const std::vector<std::string> & names)
+  {
+    std::vector<rclcpp::Subscription<std_msgs::msg::Bool>::SharedPtr> out;
+    for (const auto & name : names) {
+      out.push_back(create_subscription<std_msgs::msg::Bool>(name, 1,
+        [](const std_msgs::msg::Bool::ConstSharedPtr) {}));
+    }
+    return out;
+  }
+  std::vector<rclcpp::Subscription<std_msgs::msg::Bool>::SharedPtr> subs_, more_;
+};
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Planning>());
+}
+"""
+
+
+def test_a_constant_list_handed_to_a_function(write_tree) -> None:
+    """Autoware's ADAPI planning node subscribes to 28 planning-factor topics of a local
+    list it hands to ``init_factors``: one subscription each (was one, ``?``); a list
+    the code grows keeps the ``?``."""
+    root = write_tree({"pl/package.xml": package_xml("pl", "ament_cmake"),
+                       "pl/src/n.cpp": HANDED})
+    result = extract_cpp([str(root / "pl" / "src" / "n.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    subscribed = sorted(c.name for c in result.calls if c.kind == "subscribe")
+    assert subscribed == ["/planning/planning_factors/crosswalk",
+                          "/planning/planning_factors/stop_line", "?"]

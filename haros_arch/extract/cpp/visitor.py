@@ -2396,22 +2396,42 @@ class CallFinder:
         walk, over, mark = _element_loop(one, scope)
         if walk is None or over is None or mark != EACH:
             return None
-        held = strip(over)
+        values = self._constant_list(over, scope, 0)
+        return None if values is None else (
+            list(values), (walk.location.line, walk.location.column))
+
+    def _constant_list(self, expr: Cursor, scope: Scope, depth: int
+                       ) -> tuple[str, ...] | None:
+        """The texts of a list initialised with a braced list of known, non-empty texts
+        and never changed: a ``const`` member or variable, a constant array, a local
+        written once, or a function's parameter every call of this file passes one such
+        list (Autoware's ADAPI planning node hands its ``factor_topics`` to
+        ``init_factors``, which subscribes to each)."""
+        held = strip(expr)
         decl = held.referenced if held.kind in (
             CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
-        if decl is None or decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL) or (
-            not decl.type.is_const_qualified() and not const_array(decl)
-        ):
+        if decl is None:
             return None
+        if decl.kind == CursorKind.PARM_DECL:
+            if depth >= 4 or scope.sites is None or not scope.is_parameter(decl):
+                return None
+            return scope.sites.agreed(
+                decl, lambda arg, at: self._constant_list(arg, at, depth + 1), None)
+        if decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
+            return None
+        if not decl.type.is_const_qualified() and not const_array(decl) and (
+            decl.kind == CursorKind.FIELD_DECL or not _read_only(decl, scope)
+        ):
+            return None  # (a member that is not constant may change anywhere)
         value = scope.variable(decl)
         items = _elements(value) if value is not None else []
         if not items or len(items) > _MAX_CONSTANT_ELEMENTS or (
                 len(items) == 1 and strip(items[0]) == strip(value)):
             return None
-        values = [render(scope.string(item)) for item in items]
+        values = tuple(render(scope.string(item)) for item in items)
         if any(not v or "?" in v or PLACEHOLDER in v for v in values):
             return None
-        return values, (walk.location.line, walk.location.column)
+        return values
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
                       ) -> tuple[str | None, tuple[int, int] | None, str] | None:
@@ -4057,6 +4077,45 @@ def _string_of_variable(expr: Cursor) -> Cursor | None:
     children = [c for c in expr.get_children() if c.kind.is_expression()]
     held = strip(children[0]) if len(children) == 1 else None
     return held if held is not None and held.kind == CursorKind.DECL_REF_EXPR else None
+
+
+def _read_only(variable: Cursor, scope: Scope) -> bool:
+    """Whether the body of ``scope`` only reads the local ``variable``: every use is an
+    argument a call may not change (a value or a const reference), the object of a
+    const method, or the range of a range-based ``for``."""
+    if scope.body is None:
+        return False
+    key = place_of(variable)
+    uses = safe = 0
+    for node in walk_cursors(scope.body):
+        kind = node.kind
+        if kind == CursorKind.DECL_REF_EXPR:
+            if node.referenced is not None and place_of(node.referenced) == key:
+                uses += 1
+        elif kind == CursorKind.CXX_FOR_RANGE_STMT:
+            children = list(node.get_children())
+            ranged = strip(children[1]) if len(children) > 1 else None
+            if ranged is not None and ranged.kind == CursorKind.DECL_REF_EXPR and (
+                    ranged.referenced is not None and place_of(ranged.referenced) == key):
+                safe += 1
+        elif kind == CursorKind.CALL_EXPR:
+            target = node.referenced
+            held = _method_object(node)
+            held = strip(held) if held is not None else None
+            if held is not None and held.kind == CursorKind.DECL_REF_EXPR and (
+                held.referenced is not None and place_of(held.referenced) == key
+            ):
+                if target is None or not target.is_const_method():
+                    return False
+                safe += 1
+            for index, arg in enumerate(written_arguments(node)):
+                arg = strip(arg)
+                if arg.kind == CursorKind.DECL_REF_EXPR and arg.referenced is not None and (
+                        place_of(arg.referenced) == key):
+                    if may_write(node, index):
+                        return False
+                    safe += 1
+    return uses == safe
 
 
 def _element_loop(expr: Cursor, scope: Scope
