@@ -346,3 +346,32 @@ def test_a_target_takes_the_sources_of_every_path():
     assert [s.rsplit("/", 1)[1] for s in it.targets["lib"].sources] == ["a.cpp", "gpu.cpp"]
     assert [s.rsplit("/", 1)[1] for s in it.targets["node"].sources] == [
         "cpu.cpp", "cuda.cpp", "a.cpp", "gpu.cpp"]
+
+
+CLIENT_LIBRARIES = """
+    find_package(roscpp QUIET)
+    if(roscpp_FOUND)
+      add_definitions(-DROS_FOUND)
+    endif()
+    find_package(rclcpp QUIET)
+    if(rclcpp_FOUND)
+      add_definitions(-DROS2_FOUND)
+    endif()
+    add_executable(driver a.cpp)
+    """
+
+
+@pytest.mark.parametrize(("env", "expected"), [
+    ({"ROS_VERSION": "1"}, {"ROS_FOUND": []}),
+    ({"ROS_VERSION": "2"}, {"ROS2_FOUND": []}),
+    ({}, {"ROS_FOUND": ["if (roscpp_FOUND)"], "ROS2_FOUND": ["if (rclcpp_FOUND)"]}),
+])
+def test_the_distribution_decides_which_client_library_is_found(env, expected):
+    """Hesai's driver (HesaiLidar_ROS_2.0 e7e112f0) defines ROS2_FOUND under
+    ``find_package(rclcpp QUIET)`` and ``if(rclcpp_FOUND)``, and picks its ROS 2 code
+    with ``#elif ROS2_FOUND``: a project's ``distro:`` says which ROS's C++ client
+    library is found (roscpp is in no ROS 2 distribution, rclcpp in no ROS 1 one); with
+    none known both definitions stay under their tests."""
+    it = run(CLIENT_LIBRARIES, env=env)
+    defined = it.targets["driver"].directory_definitions
+    assert {d.name: [str(c) for c in d.conditions] for d in defined} == expected

@@ -364,3 +364,28 @@ def test_a_description_library_of_seventy_files_is_read(tmp_path: Path):
     description = tmp_expand(tmp_path, includes + "<xacro:s69/>")
     assert codes(description) == []
     assert [link.get("name") for link in description.root.iter("link")] == ["l69"]
+
+
+EVAL_OF_ARGS = (
+    '<xacro:arg name="ee_type" default="openarm_hand"/>\n'
+    '<xacro:arg name="count" default="2"/>\n'
+    '<xacro:property name="hand" value="true"/>\n'
+    '<xacro:if value="$(eval ee_type == \'none\')">\n'
+    '  <xacro:property name="hand" value="false"/>\n'
+    '</xacro:if>\n'
+    '<a hand="${hand}" n="$(eval count + 1)" p="$(eval hand)"/>')
+
+
+@pytest.mark.parametrize(("args", "hand"), [({}, "True"), ({"ee_type": "none"}, "False")])
+def test_eval_substitution_reads_the_arguments_as_names(tmp_path: Path, args, hand):
+    """openarm_description's v10.urdf.xacro (af6f0358) tests
+    ``$(eval ee_type == 'none')``: in ``$(eval)`` xacro's names are its arguments (after
+    roslaunch's functions), each converted as roslaunch's 'auto' does; properties are
+    not names there. The argument was an undefined property, a ROBOT_DESCRIPTION_XACRO
+    warning, and the condition undecided."""
+    description = tmp_expand(tmp_path, EVAL_OF_ARGS, **args)
+    a = description.root.find("a")
+    assert (a.get("hand"), a.get("n"), a.get("p")) == (hand, "3", "?")
+    # only the property read in $(eval) is an error, as xacro's NameError
+    assert [(d.code, d.location.line, d.message) for d in description.diagnostics] == [
+        ("ROBOT_DESCRIPTION_XACRO", 7, "xacro: ${hand}: name 'hand' is not defined")]

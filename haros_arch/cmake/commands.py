@@ -813,22 +813,26 @@ _PACKAGE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _TARGET_NAME = re.compile(r"[A-Za-z0-9_.+-]+")
 
 
-# the build tool each ROS version's distributions have (catkin is in none of ROS 2's)
-_BUILD_TOOLS = {"catkin": "1", "ament_cmake": "2"}
+# the build tool and the C++ client library each ROS version's distributions have
+_BUILD_TOOLS = {"catkin": "1", "ament_cmake": "2", "roscpp": "1", "rclcpp": "2"}
+# those no distribution of the other ROS version has
+_ONE_VERSION_ONLY = frozenset({"catkin", "roscpp", "rclcpp"})
 
 
 def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
-    """``<tool>_FOUND`` for a ROS build tool, where the run's environment says which ROS
-    it builds for (``distro:`` gives ROS_VERSION): a distribution's own tool is found
-    (a dual package's ``find_package(catkin QUIET)`` then ``if(catkin_FOUND)``); catkin
-    is not in a ROS 2 one. None where that is not known."""
+    """``<tool>_FOUND`` for a ROS build tool or C++ client library, where the run's
+    environment says which ROS it builds for (``distro:`` gives ROS_VERSION): a
+    distribution's own is found (a dual package's ``find_package(catkin QUIET)`` then
+    ``if(catkin_FOUND)``; Hesai's driver, ``find_package(rclcpp QUIET)`` then
+    ``if(rclcpp_FOUND) add_definitions(-DROS2_FOUND)``); catkin and roscpp are not in a
+    ROS 2 one, rclcpp in no ROS 1 one. None where that is not known."""
     version = it.environment.get("ROS_VERSION", "").strip()
     tool = _BUILD_TOOLS.get(name)
     if tool is None or version not in ("1", "2"):
         return None
     if version == tool:
         return "TRUE"
-    return "FALSE" if name == "catkin" and not required else None
+    return "FALSE" if name in _ONE_VERSION_ONLY and not required else None
 
 
 @handles("find_package")

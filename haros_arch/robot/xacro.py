@@ -41,6 +41,7 @@ from .. import safe_yaml
 from ..evaluate.python import KeyAttributes
 from ..files import read_bytes, read_text
 from ..launch import expression
+from ..launch.ros1.params import convert_value
 from ..manifest import xml_parser
 from ..model.diagnostic import Diagnostic
 from ..model.location import Location
@@ -444,13 +445,28 @@ class _Expander:
             return Value.of(*texts)
         return "".join(str(text) for text in texts)
 
-    def expression(self, element: Element, text: str, scope: _Scope) -> Any:
+    def expression(self, element: Element, text: str, scope: _Scope,
+                   of_args: bool = False) -> Any:
+        """``${text}``; ``of_args``: the body of ``$(eval text)``, whose names are the
+        xacro arguments (substitution_args' ``_eval``: roslaunch's table, then each
+        argument's value as ``convert_value(.., 'auto')`` gives it), not properties."""
         inner = self.evaluate(element, text, scope)
         if isinstance(inner, Value):
             return _unknown(f"${{{text}}}", inner.origins)
         reasons: list[str] = []
 
+        def argument(name: object) -> object:
+            value = self.args.get(str(name))
+            if value is None:
+                raise KeyError(name)
+            if isinstance(value, Value):
+                reasons.extend(value.origins)
+                return expression.Unknown(f"arg {name} is not known")
+            return convert_value(value, "auto")
+
         def names(name: str) -> object:
+            if of_args:
+                return argument(name)
             if scope.owner(name) is None:
                 raise KeyError(name)
             value = self.lookup(element, name, scope)
@@ -463,8 +479,12 @@ class _Expander:
 
         # xacro's table: Python's builtins, math's names, and its own functions, as the
         # attributes of its ``xacro`` name (``load_yaml`` alone too, as xacro still has it)
-        functions = {**expression.BUILTINS, **expression.MATH,
-                     "load_yaml": self.load_yaml, "xacro.load_yaml": self.load_yaml}
+        functions: dict[str, Any] = {**expression.BUILTINS, **expression.MATH,
+                                     "load_yaml": self.load_yaml,
+                                     "xacro.load_yaml": self.load_yaml}
+        if of_args:
+            functions = {**expression.BUILTINS, **expression.MATH, "arg": argument,
+                         "true": True, "false": False, "True": True, "False": False}
         source = _str(inner)
         if time.monotonic() > self.deadline:
             self.report(element, "ROBOT_DESCRIPTION_LIMIT",
@@ -539,7 +559,7 @@ class _Expander:
             return os.path.dirname(self.files[-1] if self.files else self.description.path)
         if command == "eval":
             body = _str(inner)[len("eval"):].strip()
-            return self.expression(element, body, scope)
+            return self.expression(element, body, scope, of_args=True)
         self.report(element, "ROBOT_DESCRIPTION_XACRO",
                     detail=f"$({_str(inner)}) is not supported")
         return _unknown(f"$({_str(inner)}) is not supported", kind="unsupported")

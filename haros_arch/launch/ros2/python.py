@@ -22,7 +22,7 @@ import ast
 import builtins
 import functools
 import os
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from pathlib import PurePosixPath
 from typing import Any
 
@@ -37,7 +37,14 @@ from ...model.values import Unknown
 from ...share import share_source
 from ...workspace import Workspace
 from . import entities as e
-from .python_expressions import UNBOUND, Expressions, _Bound, math_constant, os_value
+from .python_expressions import (
+    UNBOUND,
+    Expressions,
+    _Bound,
+    _Environ,
+    math_constant,
+    os_value,
+)
 from .python_values import (
     LIMITS,
     MAX_CALL_DEPTH,
@@ -77,6 +84,24 @@ from .python_values import (
 )
 
 
+class _Overlay(Mapping[str, str]):
+    """The configuration's environment under what the launch file sets in it."""
+
+    def __init__(self, base: Mapping[str, str]) -> None:
+        self.base = base
+        self.own: dict[str, str] = {}
+
+    def __getitem__(self, key: str) -> str:
+        return self.own[key] if key in self.own else self.base[key]
+
+    def __iter__(self) -> Iterator[str]:
+        yield from self.own
+        yield from (key for key in self.base if key not in self.own)
+
+    def __len__(self) -> int:
+        return len(self.own) + sum(1 for key in self.base if key not in self.own)
+
+
 class Interpreter(Expressions):
     """Statements, calls and the module; expressions come from ``Expressions``."""
 
@@ -85,6 +110,7 @@ class Interpreter(Expressions):
         self.launch_file = path
         self.workspace = workspace
         self.environment = environment
+        self.environment_unsure: set[str] = set()
         self.diagnostics: list[Diagnostic] = []
         # packages whose folders the file asks for now (get_package_share_directory)
         self.uses: list[PackageUse] = []
@@ -689,6 +715,8 @@ class Interpreter(Expressions):
             elif isinstance(container, list) and isinstance(key, int) and (
                     -len(container) <= key < len(container)):
                 container[key] = value
+            elif isinstance(container, _Environ):
+                self.set_environment(target, key, value)
             elif isinstance(container, Context) and isinstance(target.value, ast.Attribute):
                 # ``context.launch_configurations[key] = value`` in an OpaqueFunction (UR's
                 # ur_control.launch.py: the update rate read from a file, for the
@@ -710,6 +738,24 @@ class Interpreter(Expressions):
             owner.attributes[target.attr] = value
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
+
+    def set_environment(self, target: ast.expr, key: Any, value: Any) -> None:
+        """``os.environ[key] = value``: the launch process's environment from here on, as
+        ``os.environ.get`` / ``os.getenv`` read it after (rslidar_sdk's
+        humble_start.py sets RMW_IMPLEMENTATION, then prints it); the configuration's
+        own environment is left as it is. Under a test not known statically, reads of it
+        after are not known; a name or value not known is said and not applied."""
+        if not isinstance(key, str) or not isinstance(value, str):
+            self.unsupported(target, f"{_source(target)} = ...: an environment variable "
+                                     "whose name or value is not known statically")
+            return
+        if self.guards:
+            self.environment_unsure.add(key)
+            return
+        if not isinstance(self.environment, _Overlay):
+            self.environment = _Overlay(self.environment)
+        self.environment.own[key] = value
+        self.environment_unsure.discard(key)
 
     def try_(self, stmt: ast.Try, env: dict[str, Any]) -> None:
         """``try``: its body, then ``else`` and ``finally``. A builtin exception the body

@@ -311,6 +311,10 @@ def path_exists(test: Callable[[str], bool]) -> Builder:
 
 def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     name = arg(a, k, 0, "key")
+    if isinstance(name, str) and name in i.environment_unsure:
+        i.unknown_value(n, f"environment variable {name} is set by the launch file under "
+                           "a test not known statically")
+        return Lazy((e.Opaque(f"environment variable {name}", report=False),))
     if isinstance(name, str) and name in i.environment:
         return i.environment[name]
     default = arg(a, k, 1, "default")

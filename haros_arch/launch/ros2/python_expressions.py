@@ -81,6 +81,9 @@ class Expressions(Walker):
     builtins: frozenset[str]
     methods: dict[str, Any]
     environment: Mapping[str, str]
+    # variables the file sets (``os.environ[key] = ...``) under a test not known
+    # statically: read after, their value is not known
+    environment_unsure: set[str]
     guards: list[Guard]
     # the expressions whose value Python's handling of a launch object decided: ``not``
     # of one, one compared with ``==`` (``compare_values``); by id, the node kept alive
@@ -638,6 +641,9 @@ class _Environ:
     def has(self, interp: Expressions, name: Any, node: ast.AST) -> bool | None:
         """``name in os.environ``: True when the configuration sets it, else not known
         (as a ``get`` without a default), and said."""
+        if isinstance(name, str) and name in interp.environment_unsure:
+            interp.unknown_value(node, _unsure(name))
+            return None
         if isinstance(name, str) and name in interp.environment:
             return True
         if isinstance(name, str):
@@ -647,6 +653,9 @@ class _Environ:
 
     def get(self, interp: Expressions, args: list[Any], node: ast.AST) -> Any:
         name = args[0] if args else None
+        if isinstance(name, str) and name in interp.environment_unsure:
+            interp.unknown_value(node, _unsure(name))
+            return Lazy((e.Opaque(f"environment variable {name}", report=False),))
         if isinstance(name, str) and name in interp.environment:
             return interp.environment[name]
         if len(args) > 1:
@@ -656,3 +665,8 @@ class _Environ:
         interp.unknown_value(node, f"environment variable {name} is not set in the "
                                    "configuration")
         return Lazy((e.Opaque(f"environment variable {name}", report=False),))
+
+
+def _unsure(name: str) -> str:
+    return (f"environment variable {name} is set by the launch file under a test not "
+            "known statically")
