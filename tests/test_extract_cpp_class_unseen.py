@@ -796,3 +796,45 @@ def test_a_class_of_a_ros_package_known_to_make_no_calls_leaves_it_complete(
     assert [d.location.line for d in node.said] == [14], node.said
     assert any("costmap_2d::Costmap2DROS of ROS package costmap_2d" in r
                for r in node.completeness_reasons), node.completeness_reasons
+
+
+# abb_robot_driver's EGM hardware interface: ros_control's joint_limits_interface,
+# installed, reads each joint's limits from the handle given (getJointLimits,
+# getSoftJointLimits of joint_limits_rosparam.h); the node was partial for them
+JOINT_LIMITS = """
+    #include <ros/ros.h>
+    #include <joint_limits_interface/joint_limits.h>
+    #include <joint_limits_interface/joint_limits_rosparam.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "hw");
+      ros::NodeHandle nh("egm");
+      joint_limits_interface::JointLimits limits{};
+      joint_limits_interface::SoftJointLimits soft{};
+      joint_limits_interface::getJointLimits("joint_1", nh, limits);
+      if (!joint_limits_interface::getSoftJointLimits("joint_1", nh, soft)) {
+        soft.k_position = 1.0;
+      }
+      ros::spin();
+    }
+    """
+
+
+def test_joint_limits_rosparam_reads_are_known(write_tree: Any) -> None:
+    model = _model(write_tree, {
+        "src/hw/package.xml": _depends("hw", "roscpp", "joint_limits_interface"),
+        "src/hw/CMakeLists.txt": "project(hw)\nadd_executable(hw src/hw.cpp)\n",
+        "src/hw/src/hw.cpp": JOINT_LIMITS,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "hw/hw")
+    assert node.completeness == "complete", node.completeness_reasons
+    reads = sorted((c.name, c.type) for c in node.calls if c.kind == "read")
+    limits = "egm/joint_limits/joint_1/"
+    assert reads == sorted(
+        [(limits + name, "double") for name in (
+            "min_position", "max_position", "max_velocity", "max_acceleration",
+            "max_jerk", "max_effort", "k_position", "k_velocity", "soft_lower_limit",
+            "soft_upper_limit")]
+        + [(limits + name, "bool") for name in (
+            "has_position_limits", "angle_wraparound", "has_velocity_limits",
+            "has_acceleration_limits", "has_jerk_limits", "has_effort_limits")])

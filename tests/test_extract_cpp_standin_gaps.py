@@ -965,3 +965,36 @@ def test_ros2_a_simulator_plugin_that_starts_the_controller_manager(write_tree) 
     assert [(c.kind, c.name) for c in result.calls if c.kind != "server"] == [
         ("read", "update_rate"), ("publish", "sim_status")]
     assert ("server", "~switch_controller") in [(c.kind, c.name) for c in result.calls]
+
+
+def test_a_conditional_between_arithmetic_on_a_permissive_value_and_a_number(
+        write_tree) -> None:
+    """abb_robot_driver's EGM hardware interface (egm_hardware_interface.cpp:664):
+    ``limits.max_velocity = (joint.rotational ? 10.0*Constants::DEG_TO_RAD : 0.1);``,
+    ``Constants`` of abb_egm_rws_managers, not here. The product of a number and a
+    permissive value was a permissive value, which converts to ``double`` and is built
+    from one: the conditional was ambiguous, an error in the function that reads the
+    joint limits, and the node partial. Both sides permissive stay one type."""
+    result = _extract(write_tree, """
+        #include <ros/ros.h>
+        #include <std_msgs/Float64.h>
+        #include <vendor/constants.h>
+        struct Joint { bool rotational; };
+        void configure(ros::NodeHandle& nh, const Joint& joint) {
+          vendor::Manager manager;
+          double limit = (joint.rotational ? 10.0*Constants::DEG_TO_RAD : 0.1);
+          int steps = joint.rotational ? 2 : Constants::STEPS * 2;
+          auto both = joint.rotational ? 2.0 * Constants::DEG_TO_RAD : Constants::DEG_TO_RAD;
+          nh.setParam("limit", limit + steps);
+          ros::Publisher pub = nh.advertise<std_msgs::Float64>("velocity", 1);
+        }
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "hw");
+          ros::NodeHandle nh;
+          configure(nh, Joint{argc > 1});
+          ros::spin();
+        }
+        """, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("write", "limit"), ("publish", "velocity")]

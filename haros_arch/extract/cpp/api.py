@@ -703,6 +703,31 @@ CONTROL_TOOLBOX: dict[tuple[str, str], RosFunction] = {
         on_handle=False, handle_default="", standin_only=True,
         siblings=(*_RECONFIGURE_SERVICES, ("read", "p", "double"), *_PID_CONFIG)),
 }
+# ROS 1 ros_control's joint_limits_rosparam.h (ros_control 136adb6): getJointLimits(joint,
+# nh, limits) reads, under ``joint_limits/<joint>`` of the handle given, each limit's
+# ``has_*`` flag and its value (getParam, so no default: the limits given stay as they
+# are); getSoftJointLimits(joint, nh, soft) reads the four soft limits. The overload that
+# takes a URDF joint reads none (no name argument: no call). Not said: the hasParam of
+# the joint's namespace each function asks first.
+_JOINT_LIMITS: tuple[Sibling, ...] = (
+    ("read", "min_position", "double"), ("read", "max_position", "double"),
+    ("read", "angle_wraparound", "bool"), ("read", "has_velocity_limits", "bool"),
+    ("read", "max_velocity", "double"), ("read", "has_acceleration_limits", "bool"),
+    ("read", "max_acceleration", "double"), ("read", "has_jerk_limits", "bool"),
+    ("read", "max_jerk", "double"), ("read", "has_effort_limits", "bool"),
+    ("read", "max_effort", "double"))
+JOINT_LIMITS_INTERFACE: dict[tuple[str, str], RosFunction] = {
+    ("joint_limits_interface", "getJointLimits"): RosFunction(
+        "read", name_arg=0, name_prefix="joint_limits/", name_suffix="has_position_limits",
+        fixed_type="bool", on_handle=False, handle_arg=1, name_required=True,
+        library_default=True, standin_only=True, siblings=_JOINT_LIMITS),
+    ("joint_limits_interface", "getSoftJointLimits"): RosFunction(
+        "read", name_arg=0, name_prefix="joint_limits/", name_suffix="k_position",
+        fixed_type="double", on_handle=False, handle_arg=1, name_required=True,
+        library_default=True, standin_only=True, siblings=tuple(
+            ("read", name, "double")
+            for name in ("k_velocity", "soft_lower_limit", "soft_upper_limit"))),
+}
 # SDFormat's Element: what a Gazebo classic plugin reads of its <plugin> element's
 # children (``Get<T>("key")``, ``GetElement("key")->Get<T>()``, ``->GetValue()->
 # GetAsString()``): no call, a value the description gives (``SDF_ELEMENT`` + the key)
@@ -833,7 +858,7 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
-                                            **PLUGINLIB}
+                                            **JOINT_LIMITS_INTERFACE, **PLUGINLIB}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

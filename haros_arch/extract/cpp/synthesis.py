@@ -381,9 +381,14 @@ _USING_ONE = re.compile(
 # (odr-use), and a lambda that names a local constant so must capture it (book_ros2's
 # object_tracker: ``msg->bbox.center.position.x / IMG_WIDTH`` in a subscription's
 # callback, ``bbox`` of a message known only by name, was an error there)
-_BINARY = (("haros_any", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
-_OPERATORS = "template <bool C, class R> struct haros_if {};\n" \
-    "template <class R> struct haros_if<true, R> { typedef R type; };\n" + "".join(
+# The arithmetic result is a ``haros_number``: a permissive value that converts to any
+# type as every one does, but that no number converts to, so a conditional between it and
+# a number has the number's type (abb_robot_driver's ``rotational ? 10.0*Constants::
+# DEG_TO_RAD : 0.1``, Constants of a library not here, was ambiguous: a permissive value
+# converts to ``double`` and is built from one), and one between it and another
+# permissive value has the permissive base's (haros_any converts to no haros_number)
+_BINARY = (("haros_number", "+ - / % | ^ & *"), ("bool", "== != < > <= >= && ||"))
+_OPERATORS = "".join(
         f"template <class A, class B> typename haros_if<(__is_base_of(haros_any, A) || "
         f"__is_base_of(haros_any, B)) && !__is_arithmetic(A) && !__is_arithmetic(B), "
         f"{r}>::type operator{o}(const A &, const B &);\n"
@@ -420,7 +425,10 @@ _PRELUDE = """\
 #include <string>  // std::to_string of a permissive value (below)
 #include <memory>  // a cast of a permissive value to a shared_ptr (below)
 enum haros_integral : long long {};
+template <bool C, class R> struct haros_if {};
+template <class R> struct haros_if<true, R> { typedef R type; };
 struct haros_any;
+struct haros_number;  // the result of arithmetic on a permissive value (_BINARY)
 // the address of a permissive value converts to any pointer, as the value does to any
 // type: realsense's ``readAndSetDynamicParam(nh1, ..., &(roi.min_x))`` takes an ``int *``,
 // ``roi`` of librealsense's missing ``rs2::region_of_interest``, and clang kept the call,
@@ -438,7 +446,8 @@ struct haros_any {
   // an initializer_list, which list-initialisation would prefer for flat braces too
   // (``debug_{this, "~/debug"}``, the node given to a vendor's class: CPP_NODE_TO_UNKNOWN)
   template <decltype(sizeof 0) N> haros_any(const haros_any (&)[N]);
-  template <class T> operator T &() const;
+  template <class T, class = typename haros_if<!__is_same(T, haros_number), void>::type>
+  operator T &() const;
   haros_any *operator->() const;
   haros_any &operator*() const;
   haros_address operator&() const;  // (above)
@@ -460,6 +469,7 @@ struct haros_any {
   haros_any operator-() const; haros_any operator+() const; haros_any operator~() const;
 %s  operator haros_integral() const;
 %s};
+struct haros_number : haros_any { using haros_any::operator=; };
 // a range-for over a permissive object (found by argument-dependent lookup, unless the
 // code reads members begin / end of one, which then serve), and a structured binding of
 // its elements as a pair's (mrpt_map_server's ``for (auto& [name, layer] : map.layers)``)
