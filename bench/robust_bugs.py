@@ -14,10 +14,10 @@ For each bug in scope, both trees are written into a temporary folder (``--keep 
 keeps them, ``DIR/<system>-<id>/{buggy,fixed}``): the fix commit's parent (buggy) and the
 fix commit (fixed; its launch files are ``fixed_launch`` and its launch arguments
 ``fixed_args`` when the fix renamed them), under ``src/<repository>``, with the
-repositories the launch files need from the same organisation (``deps``) at their last commit before the fix's date
-(or the commit given). A project file that launches the bug's launch files is written
-beside, and ``python -m haros_arch check project.yaml --format json`` runs on each (one
-process each, ``--jobs 1``). Per bug it prints:
+repositories the launch files need from the same organisation (``deps``) at their last
+commit before the fix's date (or the commit given). A project file that launches the
+bug's launch files is written beside, and ``python -m haros_arch check project.yaml
+--format json`` runs on each (one process each, ``--jobs 1``). Per bug it prints:
 
 - ``found``: a finding of the expected rules whose location and text point at the bug,
   and ``gone after fix`` when the fixed tree no longer has it (else ``stays after fix``);
@@ -130,7 +130,9 @@ def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, P
         for gitdir, dep_rev, name in deps:
             materialize(gitdir, dep_rev, folder / "src" / name)
         launch = bug.get("fixed_launch", bug["launch"]) if side == "fixed" else bug["launch"]
-        args = bug.get("fixed_args", bug.get("args", {})) if side == "fixed" else bug.get("args", {})
+        args = bug.get("args", {})
+        if side == "fixed":
+            args = bug.get("fixed_args", args)
         project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": "src",
                    "configurations": {"bug": {"launch": launch, "args": args}}}
         if bug.get("environment"):
