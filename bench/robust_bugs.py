@@ -12,12 +12,12 @@ it is reported in, a text of its message or entities).
 
 For each bug in scope, both trees are written into a temporary folder (``--keep DIR``
 keeps them, ``DIR/<system>-<id>/{buggy,fixed}``): the fix commit's parent (buggy) and the
-fix commit (fixed; its launch files are ``fixed_launch`` when the fix renamed
-them), under ``src/<repository>``, with the repositories the launch files
-need from the same organisation (``deps``) at their last commit before the fix's date
-(or the commit given). A project file that launches the bug's launch files is written
-beside, and ``python -m haros_arch check project.yaml --format json`` runs on each (one
-process each, ``--jobs 1``). Per bug it prints:
+fix commit (fixed; its launch files are ``fixed_launch`` and its launch arguments
+``fixed_args`` when the fix renamed them), under ``src/<repository>``, with the
+repositories the launch files need from the same organisation (``deps``) at their last
+commit before the fix's date (or the commit given). A project file that launches the
+bug's launch files is written beside, and ``python -m haros_arch check project.yaml
+--format json`` runs on each (one process each, ``--jobs 1``). Per bug it prints:
 
 - ``found``: a finding of the expected rules whose location and text point at the bug,
   and ``gone after fix`` when the fixed tree no longer has it (else ``stays after fix``);
@@ -130,9 +130,11 @@ def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, P
         for gitdir, dep_rev, name in deps:
             materialize(gitdir, dep_rev, folder / "src" / name)
         launch = bug.get("fixed_launch", bug["launch"]) if side == "fixed" else bug["launch"]
+        args = bug.get("args", {})
+        if side == "fixed":
+            args = bug.get("fixed_args", args)
         project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": "src",
-                   "configurations": {"bug": {"launch": launch,
-                                              "args": bug.get("args", {})}}}
+                   "configurations": {"bug": {"launch": launch, "args": args}}}
         if bug.get("environment"):
             project["environment"] = bug["environment"]
         (folder / "project.yaml").write_text(yaml.safe_dump(project, sort_keys=False))

@@ -8,6 +8,7 @@ import tarfile
 from pathlib import Path
 
 import pytest
+import yaml
 from conftest import ROOT
 
 
@@ -39,3 +40,32 @@ def test_a_link_to_an_absolute_path_is_left_out_not_fatal(tmp_path: Path) -> Non
     assert not (dest / "CMakeLists.txt").is_symlink()
     assert not (dest / "CMakeLists.txt").exists()
     assert (dest / "pkg" / "near").is_symlink()  # a link inside the tree is kept
+
+
+def test_the_fixed_tree_takes_the_launch_arguments_the_fix_renamed(tmp_path: Path) -> None:
+    # teleop_twist_joy 80dd095 renames config/ps3-breaking.config.yaml to
+    # ps3-braking.config.yaml: the fixed tree must be launched with joy_config:=ps3-braking,
+    # or its launch fails on the old name and the finding is "gone" for the wrong reason
+    repo = tmp_path / "mirrors" / "o+r" / "repo"
+    (repo / "pkg" / "launch").mkdir(parents=True)
+    (repo / "pkg" / "launch" / "a.launch").write_text("<launch/>\n")
+    for args in (["init", "-q"], ["add", "-A"],
+                 ["-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "one"],
+                 ["-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "two",
+                  "--allow-empty"]):
+        subprocess.run(["git", "-C", str(repo), *args], check=True)
+    fix = subprocess.run(["git", "-C", str(repo), "rev-parse", "HEAD"], check=True,
+                         capture_output=True, text=True).stdout.strip()
+    bug = {"id": "r/x", "repo": "o/r", "fix": fix, "launch": ["pkg/launch/a.launch"],
+           "args": {"cfg": "old"}, "fixed_args": {"cfg": "new"}}
+    trees = _script().prepare(bug, tmp_path / "mirrors", tmp_path / "out")
+    assert isinstance(trees, dict)
+    buggy = yaml.safe_load(trees["buggy"].read_text())["configurations"]["bug"]
+    fixed = yaml.safe_load(trees["fixed"].read_text())["configurations"]["bug"]
+    assert buggy["args"] == {"cfg": "old"}
+    assert fixed["args"] == {"cfg": "new"}
+    del bug["fixed_args"]  # without it both trees take the same arguments
+    trees = _script().prepare(bug, tmp_path / "mirrors", tmp_path / "out2")
+    assert isinstance(trees, dict)
+    assert yaml.safe_load(trees["fixed"].read_text())["configurations"]["bug"]["args"] == {
+        "cfg": "old"}
