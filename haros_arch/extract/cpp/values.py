@@ -148,12 +148,15 @@ class TopicOf(str):
         return hash(("topic", self.base))
 
 
+# the parts ``render`` writes ``?`` for besides None: known only to the graph or per instance
+_UNKNOWN_PARTS = (NodeName, ProgramArgument, TopicOf)
+
+
 def topic_base(parts: Parts) -> str | None:
     """The written name of the topic that begins ``parts`` when it is their one unknown
     run (``TopicOf``), else None."""
     unknown = [i for i, part in enumerate(parts)
-               if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument,
-                                                    TopicOf))]
+               if part is None or isinstance(part, (*_UNKNOWN_PARTS, NodeNamespace))]
     if unknown != [0] or not isinstance(parts[0], TopicOf):
         return None
     return parts[0].base
@@ -180,8 +183,7 @@ def argument_of(parts: Parts) -> int | None:
     runs: list[list[str | None]] = []
     after_known = True
     for part in parts:
-        if part is None or isinstance(part, (NodeName, NodeNamespace, ProgramArgument,
-                                             TopicOf)):
+        if part is None or isinstance(part, (*_UNKNOWN_PARTS, NodeNamespace)):
             if after_known:
                 runs.append([])
             runs[-1].append(part)
@@ -200,7 +202,7 @@ def own_name_run(written: Parts, parts: Parts) -> bool:
     if len(written) != len(parts) or any(isinstance(p, NodeNamespace) for p in written):
         return False
     unknown = [i for i, part in enumerate(parts)
-               if part is None or isinstance(part, (NodeName, ProgramArgument, TopicOf))]
+               if part is None or isinstance(part, _UNKNOWN_PARTS)]
     return len(unknown) == 1 and isinstance(written[unknown[0]], NodeBaseName)
 
 
@@ -321,7 +323,7 @@ def render(parts: Parts) -> str:
     """The name with ``?`` for each unknown run of parts."""
     text: list[str] = []
     for part in parts:
-        if part is None or isinstance(part, (NodeName, ProgramArgument, TopicOf)):
+        if part is None or isinstance(part, _UNKNOWN_PARTS):
             if not text or text[-1] != "?":
                 text.append("?")
         else:
@@ -409,7 +411,7 @@ def is_empty(parts: Parts) -> bool | None:
 
 def _choice_text(parts: Parts) -> str:
     """A side of a ``CHOICE``: its text, ``?`` for an unknown run (placeholders kept)."""
-    return "".join("?" if part is None or isinstance(part, (NodeName, ProgramArgument, TopicOf))
+    return "".join("?" if part is None or isinstance(part, _UNKNOWN_PARTS)
                    else part for part in parts)
 
 
@@ -1009,19 +1011,10 @@ class Scope:
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
-            value = self.variable(decl)
-            if value is None and kind == CursorKind.MEMBER_REF_EXPR and (
-                decl.kind == CursorKind.FIELD_DECL
-            ):
-                value = self.assigned(decl, cursor)
-            elif value is None and decl.kind == CursorKind.VAR_DECL:
-                value = self.written_before(decl, cursor, depth)
-            if value is None:
-                found = self.field(decl)
-                if found is None and self.sites is not None:
-                    self.sites.unset(decl)  # why the name is unknown (``CallSites.unset``)
-                return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
-            return self.string(value, depth + 1)
+            found = self.held(cursor, decl, depth)
+            if found is None and self.sites is not None:
+                self.sites.unset(decl)  # why the name is unknown (``CallSites.unset``)
+            return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
         if _ARGUMENTS[0] and (kind == CursorKind.ARRAY_SUBSCRIPT_EXPR or (
                 kind == CursorKind.CALL_EXPR and cursor.spelling in _ELEMENT)):
             index = program_argument(cursor, self)
@@ -1109,6 +1102,19 @@ class Scope:
             return _expanded(value)
         return value
 
+    def held(self, cursor: Cursor, decl: Cursor, depth: int) -> tuple[Cursor, Scope] | None:
+        """The expression the variable or member ``decl`` that ``cursor`` reads holds
+        there, and the scope to read it in: its one value, the last assignment before the
+        read, else (a member this function does not write) its constructor's value."""
+        value = self.variable(decl)
+        if value is None and cursor.kind == CursorKind.MEMBER_REF_EXPR and (
+            decl.kind == CursorKind.FIELD_DECL
+        ):
+            value = self.assigned(decl, cursor)
+        elif value is None and decl.kind == CursorKind.VAR_DECL:
+            value = self.written_before(decl, cursor, depth)
+        return (value, self) if value is not None else self.field(decl)
+
     def _made_topic(self, made: Cursor | None, depth: int) -> str | None:
         """The name, as written and known, that the publisher or subscription ``made``
         holds was created with: a variable, member or parameter (what every call of this
@@ -1126,17 +1132,8 @@ class Scope:
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope._made_topic(arg, depth + 1), None)
-            value = self.variable(decl)
-            if value is None and held.kind == CursorKind.MEMBER_REF_EXPR and (
-                decl.kind == CursorKind.FIELD_DECL
-            ):
-                value = self.assigned(decl, held)
-            elif value is None and decl.kind == CursorKind.VAR_DECL:
-                value = self.written_before(decl, held, depth)
-            if value is None:
-                found = self.field(decl)
-                return None if found is None else found[1]._made_topic(found[0], depth + 1)
-            return self._made_topic(value, depth + 1)
+            found = self.held(held, decl, depth)
+            return None if found is None else found[1]._made_topic(found[0], depth + 1)
         if held.kind != CursorKind.CALL_EXPR:
             return None
         target = held.referenced

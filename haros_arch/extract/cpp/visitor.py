@@ -2382,12 +2382,9 @@ class CallFinder:
         known, none empty) that a loop of this body walks (``_element_loop``)."""
         if name.count("?") != 1 or isinstance(name, (ArgumentName, SelfName, BelowName)):
             return None
-        inner = strip(expr)
-        operands = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
-            inner) is not None else _unknown_operands(expr, scope)
-        if len(operands) != 1:
+        one = _unknown_operand(expr, scope)
+        if one is None:
             return None
-        one = strip(operands[0])
         made = written_arguments(one) if one.kind == CursorKind.CALL_EXPR and (
             one.referenced is not None and one.referenced.kind == CursorKind.CONSTRUCTOR
         ) else []
@@ -2539,13 +2536,9 @@ class CallFinder:
         function: of what every call of this unit passes for it, when all agree (nav2's
         ``OdomSmoother(node, duration, params_->odom_topic)`` subscribes to its
         constructor's ``odom_topic``)."""
-        inner = strip(expr)
-        operands = [inner] if inner.kind in (
-            CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR) else _unknown_operands(
-            expr, scope)
-        if len(operands) != 1:
+        one = _unknown_operand(expr, scope)
+        if one is None:
             return None
-        one = strip(operands[0])
         decl = one.referenced if one.kind == CursorKind.DECL_REF_EXPR else None
         if decl is not None and decl.kind == CursorKind.PARM_DECL:
             if depth >= 4 or scope.sites is None or not scope.is_parameter(decl):
@@ -4077,6 +4070,17 @@ def _string_of_variable(expr: Cursor) -> Cursor | None:
     children = [c for c in expr.get_children() if c.kind.is_expression()]
     held = strip(children[0]) if len(children) == 1 else None
     return held if held is not None and held.kind == CursorKind.DECL_REF_EXPR else None
+
+
+def _unknown_operand(expr: Cursor, scope: Scope) -> Cursor | None:
+    """The one operand of the string ``expr`` whose value is not known: itself when it
+    names a variable, a member or an element (``list[i]``), else the one unknown
+    operand of its concatenation; None when there are several or none."""
+    inner = strip(expr)
+    operands = [inner] if inner.kind in (
+        CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) or _subscript(
+        inner) is not None else _unknown_operands(expr, scope)
+    return strip(operands[0]) if len(operands) == 1 else None
 
 
 def _read_only(variable: Cursor, scope: Scope) -> bool:
