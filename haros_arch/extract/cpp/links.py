@@ -306,12 +306,21 @@ MEMBER_MARK = "\x04"
 _PARAMETER = re.compile(f"{PARAMETER}([^{PARAMETER}]*){PARAMETER}([^{PARAMETER}]*){PARAMETER}")
 
 
+# after a mark's parameter: the parameter's default as a name, when the caller's code
+# knows it (slam_toolbox's ``map_name_``, written "/map" before it is read back from the
+# parameter it declares with that value, handed to ``MapSaver``)
+DEFAULT_MARK = "\x05"
+
+
 def parameter_mark(name: str, param: str, each: str | None,
-                   joined: Iterable[str] = ()) -> str:
+                   joined: Iterable[str] = (), default: str | None = None) -> str:
     """``name`` (one ``?``) with the parameter it is named by in the place of its ``?``;
     ``joined``: the parameters whose values follow that one's in the same ``?``
-    (``prefix + arm``), each marked right after it."""
+    (``prefix + arm``), each marked right after it; ``default``: the first one's default
+    (``DEFAULT_MARK``)."""
     marks = "".join(f"{PARAMETER}{p}{PARAMETER}{PARAMETER}" for p in joined)
+    if default is not None:
+        param = f"{param}{DEFAULT_MARK}{default}"
     return name.replace("?", f"{PARAMETER}{param}{PARAMETER}{each or ''}{PARAMETER}{marks}",
                         1)
 
@@ -344,15 +353,18 @@ def _named_by(call: PrimitiveCall) -> PrimitiveCall:
         param, each = marks[0]
         if param.startswith(MEMBER_MARK):
             return dataclasses.replace(call, name=name, name_member=param[len(MEMBER_MARK):])
+        param, _, default = param.partition(DEFAULT_MARK)
         return dataclasses.replace(call, name=name, name_param=normalise(param),
+                                   name_default=default or call.name_default,
                                    name_each=each or None)
     if any(each or param.startswith(MEMBER_MARK) for param, each in marks):
         return dataclasses.replace(call, name=name)
     more: list[list[str | None]] = [
-        [normalise(param), None, *([JOINED] if index else [])]
-        for run in runs for index, (param, _) in enumerate(run)]
-    return dataclasses.replace(call, name=name, name_param=more[0][0], name_default=None,
-                               name_more=more[1:])
+        [normalise(param), default or None, *([JOINED] if index else [])]
+        for run in runs for index, (param, _, default) in enumerate(
+            (*mark[0].partition(DEFAULT_MARK)[::2], mark[1]) for mark in run)]
+    return dataclasses.replace(call, name=name, name_param=more[0][0],
+                               name_default=more[0][1], name_more=more[1:])
 
 
 # ``made_in`` of one alternative of a call whose member the class's constructors give
@@ -498,6 +510,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         if raw_param is not None:
             call = dataclasses.replace(call, name_param=_parameter_filled(raw_param,
                                                                           known.passed))
+        call = _held_filled(call, known.passed)
         # the lists a condition's names hold elements of (``Condition.elements``) read on
         # such a handle: filled as the name is
         lists = sorted({listed for c in call.conditions for _, listed, _ in c.elements or ()
@@ -642,6 +655,26 @@ def _on_each_node(call: PrimitiveCall, names: list[str], within: dict[str, str],
             out.append(made)
     return out or [call if whole is None else dataclasses.replace(call, node_name=whole.node_name)]
 _LIST_SPLIT = "\x10"  # before each list of its conditions' elements expanded with it
+
+
+def _held_filled(call: PrimitiveCall, passed: dict[str, dict[str, dict[int, str]]]
+                 ) -> PrimitiveCall:
+    """``call`` with the parameters its conditions' names hold (``Condition.parameters``)
+    read on a handle a caller in another file passes named as that handle makes them
+    (``_parameter_filled``: teleop_twist_joy's ``if (pimpl_->is_3D)``, read on the
+    private handle its node file passes); one still not known is dropped (its condition
+    stays undecided)."""
+    if not any(PLACEHOLDER in param for c in call.conditions for _, param in (
+            c.parameters or ())):
+        return call
+    conditions = []
+    for condition in call.conditions:
+        held = tuple((name, _parameter_filled(param, passed) if PLACEHOLDER in param
+                      else param) for name, param in condition.parameters or ())
+        kept = tuple(h for h in held if PLACEHOLDER not in h[1] and "?" not in h[1])
+        conditions.append(condition if held == condition.parameters else (
+            dataclasses.replace(condition, parameters=kept or None)))
+    return dataclasses.replace(call, conditions=tuple(conditions))
 
 
 def _lists_filled(call: PrimitiveCall, filled: dict[str, str]) -> PrimitiveCall:

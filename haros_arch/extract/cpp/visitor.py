@@ -48,7 +48,15 @@ from .handles import (
     qualified_name,
     record_class,
 )
-from .links import MEMBER_MARK, PARAMETER, Fact, argument_facts, constructed_by, parameter_mark
+from .links import (
+    DEFAULT_MARK,
+    MEMBER_MARK,
+    PARAMETER,
+    Fact,
+    argument_facts,
+    constructed_by,
+    parameter_mark,
+)
 from .members import MemberWrites, member_of
 from .owners import (
     binds_own_member,
@@ -2575,6 +2583,11 @@ class CallFinder:
                 if field is not None and text != "?":
                     found[text] = field
                     continue
+                member = self._held_member(node, scope)
+                text = self.reader.text(node) if member is not None else "?"
+                if member is not None and text != "?":
+                    found[text] = member
+                    continue
             stack.extend(reversed(list(node.get_children())))
             decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
             if decl is None or decl.kind != CursorKind.VAR_DECL or decl.spelling in found or (
@@ -2585,13 +2598,31 @@ class CallFinder:
             # (the function's own, a construction site's) meets the condition
             key = place_of(decl)
             if key not in self._held:
-                source = self._parameter_source(node, scope, 0, value=True)
-                self._held[key] = source[0] if source is not None and known_name(
-                    source[0]) else None
+                self._held[key] = _held_name(self._parameter_source(
+                    node, scope, 0, value=True))
             parameter = self._held[key]
             if parameter is not None:
                 found[decl.spelling] = parameter
         return tuple(sorted(found.items()))
+
+    def _held_member(self, expr: Cursor, scope: Scope) -> str | None:
+        """The parameter a member ``expr`` names holds: its one write in the unit's
+        functions is a read of that parameter (teleop_twist_joy's ``param<bool>("is_3D",
+        pimpl_->is_3D, false)``, then ``if (pimpl_->is_3D)``); None for a member written
+        otherwise too (a callback's toggle) or by no read the unit sees. A member of the
+        object itself (``use_filter_``, ``this->use_filter_``) is not asked: the graph
+        knows it by name from the reads that store it (``PrimitiveCall.variable``)."""
+        member = expr.referenced
+        if member is None or member.kind != CursorKind.FIELD_DECL or self.members is None:
+            return None
+        base = next(iter(expr.get_children()), None)
+        if base is None or strip(base).kind == CursorKind.CXX_THIS_EXPR:
+            return None
+        key = place_of(expr)
+        if key not in self._held:
+            self._held[key] = _held_name(self._parameter_source(
+                expr, scope, 0, value=True)) if self.members.writes(member) == 1 else None
+        return self._held[key]
 
     def _held_constants(self, tested: Cursor, scope: Scope
                         ) -> tuple[tuple[str, int | bool], ...]:
@@ -2927,8 +2958,10 @@ class CallFinder:
                 len(entry) > 2 and entry[2] == JOINED and isinstance(entry[0], str)
                 and known_name(entry[0]) for entry in more)):
             return None
+        default = source[1] if source[2] is None and source[1] is not None and not (
+            {UNKNOWN_MARK, PLACEHOLDER, PARAMETER, DEFAULT_MARK} & set(source[1])) else None
         return parameter_mark(name, source[0], source[3],
-                              [str(entry[0]) for entry in more])
+                              [str(entry[0]) for entry in more], default)
 
     @staticmethod
     def _given_back(call: Cursor, index: int, scope: Scope) -> tuple[Cursor, Scope] | None:
@@ -4013,6 +4046,14 @@ def _on_passed_handle(name: str) -> bool:
     start, mark, _ = head.partition(PLACEHOLDER)
     return bool(slash) and mark == PLACEHOLDER and start in ("", "~", "/", "~/") and (
         known_name(rest)) and head.count(PLACEHOLDER) == 1
+
+
+def _held_name(source: Source | None) -> str | None:
+    """The parameter a condition's name holds the value of (``Condition.parameters``):
+    known here, or read on a handle another file passes (``links`` fills it)."""
+    if source is None or not (known_name(source[0]) or _on_passed_handle(source[0])):
+        return None
+    return source[0]
 
 
 def known_name(name: str) -> bool:
