@@ -967,6 +967,43 @@ def test_ros2_a_simulator_plugin_that_starts_the_controller_manager(write_tree) 
     assert ("server", "~switch_controller") in [(c.kind, c.name) for c in result.calls]
 
 
+def test_a_macro_of_a_missing_header_used_as_an_operand_is_a_value(write_tree) -> None:
+    """ROBOTIS-THORMANG-MPC's motion modules (head_control_module.cpp:469,
+    manipulation_module.cpp:593): robotis_math's ``DEGREE2RADIAN`` / ``RADIAN2DEGREE``
+    (``#define``d there, the header missing) written before ``)`` (``/ (30 *
+    DEGREE2RADIAN)``) were declared as types, and every use an error, "does not refer
+    to a value". An operand of ``*``, ``/``, ``-``, ``!``, ``?``/``:`` is a value, and an
+    unqualified name in capitals not called is declared as one."""
+    result = _extract(write_tree, """
+        #include <ros/ros.h>
+        #include <std_msgs/Float64.h>
+        #include "robotis_math/robotis_math.h"
+        class Module {
+         public:
+          void init(ros::NodeHandle& nh, double value, double angle, bool c) {
+            joint_ = value * DEGREE2RADIAN;
+            moving_ = fabs(angle - value) / (30 * DEGREE2RADIAN);
+            ROS_INFO("x : %f", angle * RADIAN2DEGREE);
+            limit_ = c ? Vendor::K * 2.0 : -Vendor::L;
+            flag_ = c && !Vendor::FLAG;
+            pub_ = nh.advertise<std_msgs::Float64>("angle", 1);
+          }
+          double joint_, moving_, limit_;
+          bool flag_;
+          vendor::Port port_;
+          ros::Publisher pub_;
+        };
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "m");
+          ros::NodeHandle nh;
+          Module m;
+          m.init(nh, 1, 2, argc > 1);
+        }
+        """, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "angle")]
+
+
 def test_a_conditional_between_arithmetic_on_a_permissive_value_and_a_number(
         write_tree) -> None:
     """abb_robot_driver's EGM hardware interface (egm_hardware_interface.cpp:664):

@@ -75,3 +75,30 @@ def test_a_name_below_a_publishers_remapped_topic(write_tree) -> None:
     topics = sorted(link.rosname.full for link in config.links if link.kind == "publish")
     assert "/planning/path" in topics
     assert "/planning/path/debug/published_time" in topics
+
+
+def test_an_overload_the_node_never_calls_makes_no_call(write_tree) -> None:
+    """autoware_utils' ``PublishedTimePublisher`` has two ``publish_if_subscribed``
+    overloads (a stamp, a header), each making the publisher below the topic of the
+    publisher it is handed: a node that calls one got a second ``?/debug/published_time``
+    call from the other (one per node), whose publisher parameter no call gives. That
+    parameter's topic is what the node's calls give it (``links``): none, so no call."""
+    from haros_arch.extract.cpp import extract_cpp_nodes
+
+    source = NODE.replace("""private:
+  void ensure(""", """  void publish_if_subscribed(
+    const rclcpp::PublisherBase::ConstSharedPtr & publisher, const std_msgs::msg::Header & h)
+  {
+    (void)h;
+    ensure(publisher->get_topic_name());
+  }
+private:
+  void ensure(""")
+    assert source != NODE
+    root = write_tree({"sm/package.xml": package_xml("sm", "ament_cmake"),
+                       "sm/src/node.cpp": source})
+    batch = extract_cpp_nodes([[str(root / "sm" / "src" / "node.cpp")]], scan([str(root)]),
+                              cache_dir=None, jobs=1)
+    calls = batch.results[0].calls
+    assert sorted((c.name, c.name_below) for c in calls if c.kind == "publish") == [
+        ("?/debug/published_time", "~/output/path"), ("~?", None), ("~output/path", None)]

@@ -36,3 +36,61 @@ def test_a_variable_the_file_sets_is_read_back(write_tree):
     assert [code for code, _ in said] == ["LAUNCH_UNKNOWN_VALUE"] * 2, said
     assert "UNSET_FOR_TEST" in said[0][1] and "LATER" in said[1][1]
     assert environment == {"OTHER": "1"}  # the configuration's own is left as it is
+
+
+PARENT = """
+os.environ['ROBOT_NAME'] = 'rover'
+if os.environ.get('UNSET_FOR_TEST'):
+    os.environ['MAYBE'] = 'x'
+
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    return LaunchDescription([
+        Node(package='p', executable='e', name=EnvironmentVariable('ROBOT_NAME')),
+        SetEnvironmentVariable('SCOPED', 'scoped'),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(
+            os.path.join(share, 'launch', 'child.launch.py'))),
+        IncludeLaunchDescription(XMLLaunchDescriptionSource(
+            os.path.join(share, 'launch', 'child.launch.xml'))),
+    ])
+""".replace("from launch.substitutions import", "")
+
+CHILD_PY = """
+import os
+from launch import LaunchDescription
+from launch.substitutions import EnvironmentVariable
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    loaded = os.environ.get('ROBOT_NAME', 'none') + '_' + os.environ.get('SCOPED', 'none')
+    return LaunchDescription([
+        Node(package='p', executable='e', name=loaded),
+        Node(package='p', executable='e', name=EnvironmentVariable('ROBOT_NAME')),
+        Node(package='p', executable='e', name=EnvironmentVariable('MAYBE', default_value='d')),
+    ])
+"""
+
+CHILD_XML = """<launch>
+  <node pkg="p" exec="e" name="xml_$(env ROBOT_NAME)"/>
+</launch>
+"""
+
+
+def test_a_variable_written_as_a_file_loads_is_seen_by_the_files_it_includes(write_tree):
+    """``ros2 launch`` loads a Python launch file (its module, then
+    ``generate_launch_description``) before it runs any action of it, and loads an
+    included file when the include runs: what the includer wrote in ``os.environ`` is
+    the process's by then, for ``EnvironmentVariable`` / ``$(env X)`` of either file and
+    ``os.environ`` reads of the included one, as a ``SetEnvironmentVariable`` in scope
+    is. A write under a test not known leaves the variable not known there too."""
+    body = PARENT.replace("\nos.environ", "\nimport os\nfrom launch.actions import "
+                          "SetEnvironmentVariable\nfrom launch.substitutions import "
+                          "EnvironmentVariable\nfrom launch.launch_description_sources "
+                          "import XMLLaunchDescriptionSource\nos.environ", 1)
+    model, _ = run(write_tree, body, extra={
+        "src/pkg/launch/child.launch.py": CHILD_PY,
+        "src/pkg/launch/child.launch.xml": CHILD_XML}, env={"OTHER": "1"})
+    # the includer's own substitution, the included file's os.environ reads (the
+    # scoped variable too) and substitution, MAYBE (written under a test), the XML's
+    assert [n.name for n in model.nodes] == [
+        "/rover", "/rover_scoped", "/rover", "/?", "/xml_rover"]

@@ -19,7 +19,7 @@ import json
 import os
 from collections.abc import Callable, Collection, Iterable
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, conf
 
 from ...model.conditions import EACH_STATEMENT, Condition
 from .cache import conditions_of_text, conditions_text
@@ -54,8 +54,12 @@ OVERLOADED = -13
 # component's export, ``PLUGINLIB_EXPORT_CLASS(C, Base)``; a global object): a loader or
 # any code may run its methods
 NAMED_CLASS = -14
+# the fact's USR is a function template a specialisation of which the unit calls or
+# names (``getParameter<int>(...)``): its code runs where that one does (a call's facts
+# say the specialisation, ``SITE_UNDER``, ``REFERENCED``)
+INSTANTIATED = -19
 INDICES = frozenset({SITE_UNDER, REFERENCED, BASES, HIDDEN, RUNS_WHEN_CALLED, OVERLOADED,
-                     NAMED_CLASS})
+                     NAMED_CLASS, INSTANTIATED})
 _CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
                       CursorKind.CLASS_TEMPLATE})
 _CONTAINERS = frozenset({
@@ -118,6 +122,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     calls: dict[str, int] = {}
     refs: dict[str, int] = {}
     overloaded: set[str] = set()
+    instantiated: set[str] = set()  # the function templates of the specialisations named
     by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
     def built(cursor: Cursor) -> bool:
         """Whether a callee is the constructor of a class of the workspace's files (not
@@ -158,6 +163,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 usr = target.canonical.get_usr()
                 if usr:
                     refs[usr] = refs.get(usr, 0) + 1
+                instantiated.add(_template_usr(target))
         for node in nodes:
             if node.kind == CursorKind.CALL_EXPR:
                 callee = callee_of(node)
@@ -167,6 +173,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 if not usr:
                     continue
                 calls[usr] = calls.get(usr, 0) + 1
+                instantiated.add(_template_usr(callee))
                 place = _place(node)
                 # a virtual method called unqualified may run an override instead
                 virtual = callee.kind == CursorKind.CXX_METHOD and (
@@ -200,10 +207,17 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     facts.extend((usr, REFERENCED, "", "") for usr in sorted(used) if usr)
     facts.extend((name, OVERLOADED, "", "") for name in sorted(overloaded) if name)
     facts.extend((usr, NAMED_CLASS, "", "") for usr in sorted(classes) if usr)
-    # a placeholder's function that runs only when called (``RUNS_WHEN_CALLED``)
+    facts.extend((usr, INSTANTIATED, "", "") for usr in sorted(instantiated) if usr)
+    # a placeholder's function that runs only when called (``RUNS_WHEN_CALLED``); a
+    # function template's (abb_robot_cpp_utilities' ``getParameter``, instantiated
+    # explicitly in its .cpp) too, its name with it (its USR spells it ``@FT@``)
     for usr, (function, _bases) in sites.overrides.items():
         where = function.location.file
-        if where is not None and owned(where.name) and eligible(function) and (
+        if where is None or not owned(where.name):
+            continue
+        if function.kind == CursorKind.FUNCTION_TEMPLATE and _free_template(function):
+            facts.append((usr, RUNS_WHEN_CALLED, function.spelling, ""))
+        elif eligible(function) and (
             function.spelling != "main") and (
                 function.kind != CursorKind.CXX_METHOD or (
                     not function.is_virtual_method()
@@ -220,6 +234,22 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
                          else (usr, REFERENCED, "", ""))
     return list(dict.fromkeys(facts))
+
+
+def _template_usr(function: Cursor) -> str:
+    """The USR of the function template ``function`` specialises, else ``""``."""
+    template = conf.lib.clang_getSpecializedCursorTemplate(function)
+    if template is None or template.kind != CursorKind.FUNCTION_TEMPLATE:
+        return ""
+    return template.canonical.get_usr() or ""
+
+
+def _free_template(function: Cursor) -> bool:
+    """Whether the function template ``function`` is a namespace's (a free function's
+    template, not a member's: no virtual dispatch nor class template around it)."""
+    parent = function.semantic_parent
+    return parent is None or parent.kind in (
+        CursorKind.NAMESPACE, CursorKind.TRANSLATION_UNIT, CursorKind.LINKAGE_SPEC)
 
 
 def _bases_read(cls: Cursor | None, declared: str | None, depth: int = 0) -> bool:

@@ -123,6 +123,18 @@ class CallSites:
                 return (marker,)  # type: ignore[return-value]
         return unknown
 
+    def given_elsewhere(self, parm: Cursor) -> str | None:
+        """The placeholder of ``parm`` when the values its function is given are not this
+        file's to tell: no call of this file calls it, or the node's other files may
+        (``_shared``); None when the unit passes no value to other files
+        (``external``). A value read from it then comes from the node's calls
+        (``links``), and none where no file of the node calls the function (an overload
+        of autoware_utils' ``publish_if_subscribed`` the node never calls)."""
+        if not self.external or (self._sites().get(self._function_key(parm))
+                                 and not self._shared(parm.semantic_parent)):
+            return None
+        return self.placeholder(parm)
+
     def _many(self, parm: Cursor) -> bool:
         """Whether the function of ``parm`` has more calls in this file than
         ``_arguments`` reads."""

@@ -35,6 +35,7 @@ from .call_conditions import (
     BASES,
     HIDDEN,
     INDICES,
+    INSTANTIATED,
     NAMED_CLASS,
     OVERLOADED,
     REFERENCED,
@@ -429,7 +430,7 @@ class NodeFacts:
         """The functions a file of the node calls (its own file too), or uses otherwise
         (``&f``, a virtual method's bases), or may call unseen (``HIDDEN``)."""
         return self.called | {fact[0] for fact in self.facts if fact[1] in (
-            SITE_UNDER, REFERENCED, BASES, HIDDEN, CALLED_VIRTUAL)}
+            SITE_UNDER, REFERENCED, BASES, HIDDEN, CALLED_VIRTUAL, INSTANTIATED)}
 
     @functools.cached_property
     def overloaded(self) -> set[str]:
@@ -440,8 +441,9 @@ class NodeFacts:
         return {fact[0] for fact in self.facts if fact[1] == NAMED_CLASS}
 
     @functools.cached_property
-    def runs_when_called(self) -> set[str]:
-        return {fact[0] for fact in self.facts if fact[1] == RUNS_WHEN_CALLED}
+    def runs_when_called(self) -> dict[str, str]:
+        """USR -> the function's name where its USR does not spell it (a template's)."""
+        return {fact[0]: fact[2] for fact in self.facts if fact[1] == RUNS_WHEN_CALLED}
 
     @functools.cached_property
     def within(self) -> dict[str, str]:
@@ -823,7 +825,8 @@ def never_run(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool
             return False
         if "@F@" in usr and usr.rsplit("@F@", 1)[0] in known.named_classes:
             return False  # a method of a class exported as a plugin, or a global's
-        names = _FUNCTION.findall(usr)
+        names = _FUNCTION.findall(usr) or [
+            name for name in (known.runs_when_called[usr],) if name]
         return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen
     return unrun
 

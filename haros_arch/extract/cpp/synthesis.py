@@ -358,6 +358,27 @@ _DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
 _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
 _NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
 _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
+# an unqualified name in capitals, two letters at least, not called: a macro or a
+# constant of a missing header (robotis_math's ``DEGREE2RADIAN``, ``#define``d there), a
+# value; a member is rarely written so
+_CAPITALS = re.compile(r"[A-Z][A-Z0-9]*[A-Z][A-Z0-9]*")
+# the text before a name, ending with an operator whose operand is a value: ``30 *
+# DEGREE2RADIAN)``, ``x / K``, ``-K``, ``a && K``, ``c ? Vendor::K * 2.0 : 0.1`` (not ``->``:
+# a member; not ``>`` nor ``<``: a template's argument list). A type never follows a
+# ``*`` or ``&`` either: what does in a declaration is the declared name, never looked up
+_OPERATOR_BEFORE = re.compile(rb"(?:[-+*/%^|&!?]|<<)$")
+
+
+def _after_operator(window: bytes) -> bool:
+    """Whether ``window``, the text before a name (its scope left out), ends with an
+    operator that takes a value (``_OPERATOR_BEFORE``), or with the ``:`` of a
+    conditional whose ``?`` is in the same statement."""
+    code = code_only(window).rstrip()
+    if _OPERATOR_BEFORE.search(code) is not None:
+        return True
+    if code.endswith(b":") and not code.endswith(b"::"):
+        return b"?" in re.split(rb"[;{}]", code[:-1])[-1]
+    return False
 # an unqualified name of a C library: a constant in capitals with an underscore
 # (``SDL_INIT_JOYSTICK``) or a function under a capitalised prefix (``SDL_GetError``,
 # ``PhidgetNet_addServer``); members are rarely written so
@@ -1119,6 +1140,13 @@ class Names:
             # an alias declaration names is a type)
             use = "type"
         last = self._last_use(use, rest)
+        if last == "type" and use == "any" and rest.lstrip()[:1] not in (b"(", b"{") and (
+                _after_operator(_SCOPE_BEFORE.sub(b"", window)
+                                if window.rstrip().endswith(b"::") else window)):
+            # ``(30 * DEGREE2RADIAN)``, ``c ? Vendor::K * 2.0 : x``: an operand, a value
+            # (a type there, but a functional cast's, would be a syntax error; one use read
+            # as a type made every other use an error, "does not refer to a value")
+            last = "value"
         if last == "type" and use == "any" and (
             rest.lstrip()[:1] in (b")", b",", b"}") or (
                 rest.lstrip()[:1] == b">" and _template_argument(window.rstrip()))
@@ -1151,6 +1179,8 @@ class Names:
         ):
             called = rest.lstrip()[:1] == b"("
             if not _C_VENDOR.fullmatch(written[-1]) and not (
+                not called and _CAPITALS.fullmatch(written[-1])
+            ) and not (
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):

@@ -1161,6 +1161,20 @@ class Scope:
             return None
         return self.sites.field(decl, self.body, initial)
 
+    def _elsewhere(self, made: Cursor | None) -> str | None:
+        """The placeholder of the parameter that holds the publisher or subscription
+        ``made`` when the calls that give it a value are not this file's
+        (``CallSites.given_elsewhere``)."""
+        from .handles import pointee  # (handles reads values)
+
+        if made is None or self.sites is None:
+            return None
+        held = pointee(made)
+        decl = held.referenced if held.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or not self.is_parameter(decl):
+            return None
+        return self.sites.given_elsewhere(decl)
+
     def is_parameter(self, decl: Cursor) -> bool:
         """A parameter this function never assigns, whose callers may tell its value
         (not a lambda's that a standard algorithm calls with each element of a range:
@@ -1213,7 +1227,12 @@ class Scope:
             # a publisher's or subscription's topic, resolved and remapped: the name the
             # code made it with, where that is known (``TopicOf``)
             made = self._made_topic(_method_object(call), depth + 1)
-            return UNKNOWN if made is None else (TopicOf(made),)
+            if made is None:
+                # the topic of a publisher a parameter holds, given by calls this file
+                # does not hold: the parameter's placeholder (``CallSites.given_elsewhere``)
+                marker = self._elsewhere(_method_object(call))
+                return UNKNOWN if marker is None else (marker,)
+            return (TopicOf(made),)
         if not args and _names_node(target):
             # an rclcpp node's get_name() (or its base interface's): the node's own name
             # (``get_name() + std::string("/manage_nodes")`` is ``<namespace>/<node>/

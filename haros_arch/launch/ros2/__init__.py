@@ -46,9 +46,13 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
         runner.model.diagnostics.extend(found)
         if text is None:
             return None
-        actions, problems = parse_python(text, path, workspace, runner.environment,
+        written: dict[str, str] = {}
+        unsure = set(runner.environment_unsure)
+        actions, problems = parse_python(text, path, workspace, runner.loaded_environment(),
                                          uses=runner.model.package_uses,
-                                         command_line=runner.command_line)
+                                         command_line=runner.command_line,
+                                         written=written, unsure=unsure)
+        runner.wrote(written, unsure)
         runner.model.diagnostics.extend(problems)
         return actions
     front = Frontend(path, workspace)

@@ -1224,10 +1224,15 @@ def parse_python(text: str, path: str, workspace: Workspace,
                  environment: Mapping[str, str] | None = None,
                  uses: list[PackageUse] | None = None,
                  command_line: Mapping[str, str] | None = None,
+                 written: dict[str, str] | None = None,
+                 unsure: set[str] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
     packages whose folders it asks for as it runs are added to ``uses``.
-    ``command_line``: the ``name:=value`` arguments the launch was started with."""
+    ``command_line``: the ``name:=value`` arguments the launch was started with.
+    ``written``: gets what the file writes in ``os.environ`` as it is loaded; ``unsure``:
+    the variables written before under a test not known statically, which gets those
+    this file so writes (and loses those it writes for sure)."""
     where = workspace.location(path)
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
@@ -1235,6 +1240,8 @@ def parse_python(text: str, path: str, workspace: Workspace,
     interp = Interpreter(path, workspace,
                          environment if environment is not None else workspace.environment)
     interp.command_line = command_line or {}
+    if unsure:
+        interp.environment_unsure |= unsure
     try:
         actions = interp.module(tree)
     except Budget as stop:
@@ -1246,6 +1253,11 @@ def parse_python(text: str, path: str, workspace: Workspace,
         actions = None
     if uses is not None:
         uses.extend(interp.uses)
+    if written is not None and isinstance(interp.environment, _Overlay):
+        written.update(interp.environment.own)
+    if unsure is not None:
+        unsure.clear()
+        unsure |= interp.environment_unsure
     return actions, interp.diagnostics
 
 

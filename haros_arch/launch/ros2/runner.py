@@ -13,7 +13,7 @@ import functools
 import os
 import pickle
 import shlex
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -113,6 +113,57 @@ class IncludeFrame:
         return "unused", ""
 
 
+class _Written(Mapping[str, str]):
+    """The launch process's environment: what its Python launch files wrote in
+    ``os.environ`` as they were loaded (``written``) over the configuration's."""
+
+    def __init__(self, base: Mapping[str, str]) -> None:
+        self.base = base
+        self.written: dict[str, str] = {}
+
+    def __getitem__(self, key: str) -> str:
+        return self.written[key] if key in self.written else self.base[key]
+
+    def __contains__(self, key: object) -> bool:
+        return key in self.written or key in self.base
+
+    def __iter__(self) -> Iterator[str]:
+        yield from self.written
+        yield from (key for key in self.base if key not in self.written)
+
+    def __len__(self) -> int:
+        return len(self.written) + sum(1 for key in self.base if key not in self.written)
+
+
+class _Scoped(Mapping[str, str]):
+    """The environment where a file is loaded: the variables ``SetEnvironmentVariable``
+    / ``UnsetEnvironmentVariable`` actions in scope set or unset (``Scope.environment``,
+    an unset one marked ``NAME\0unset``) over the process's."""
+
+    def __init__(self, base: Mapping[str, str], scoped: Mapping[str, str]) -> None:
+        self.base = base
+        self.scoped = scoped
+
+    def __getitem__(self, key: str) -> str:
+        if key in self.scoped:
+            return self.scoped[key]
+        if key + "\0unset" in self.scoped:
+            raise KeyError(key)
+        return self.base[key]
+
+    def __contains__(self, key: object) -> bool:
+        return isinstance(key, str) and (key in self.scoped or (
+            key + "\0unset" not in self.scoped and key in self.base))
+
+    def __iter__(self) -> Iterator[str]:
+        yield from (key for key in self.scoped if "\0" not in key)
+        yield from (key for key in self.base
+                    if key not in self.scoped and key + "\0unset" not in self.scoped)
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
+
 class Runner:
     def __init__(self, workspace: Workspace, environment: Mapping[str, str],
                  parse: Parser) -> None:
@@ -120,9 +171,16 @@ class Runner:
         self.parse = parse
         self.model = LaunchModel()
         # what the launch reads of the machine's environment is noted: a path under it
-        # follows the machine, not a folder the launch file hard-codes
-        self.environment: Mapping[str, str] = RecordedEnvironment(
-            environment, self.model.environment_values)
+        # follows the machine, not a folder the launch file hard-codes; what a Python
+        # launch file writes in ``os.environ`` as it is loaded is the process's from then
+        # on, for the files it includes (loaded after it) and the substitutions
+        # performed after (``wrote``)
+        self._process = _Written(RecordedEnvironment(environment, self.model.environment_values))
+        self.environment: Mapping[str, str] = self._process
+        # the variables a launch file wrote under a test not known statically: not known
+        self.environment_unsure: set[str] = set()
+        # the environment of the scope whose file is being loaded (``run_file``)
+        self.scope_environment: Mapping[str, str] = {}
         self.stack: list[str] = []
         self.performed = 0
         # the arguments of the command line that starts the first file (``name:=value``),
@@ -186,6 +244,21 @@ class Runner:
 
     def evaluator(self, scope: Scope, location: Location) -> Evaluator:
         return Evaluator(self, scope, location)
+
+    def loaded_environment(self) -> Mapping[str, str]:
+        """The environment a launch file being loaded sees (``os.environ`` of a Python
+        one): the process's under the actions in scope that set or unset variables."""
+        return _Scoped(self.environment, self.scope_environment)
+
+    def wrote(self, written: Mapping[str, str], unsure: set[str]) -> None:
+        """A Python launch file, loading, wrote ``written`` in ``os.environ`` and some
+        of ``unsure`` under a test not known statically: the process's environment from
+        here on (``ros2 launch`` loads an included file when the include runs, after
+        its includer was loaded)."""
+        for key, value in written.items():
+            self._process.written[key] = value
+            self.environment_unsure.discard(key)
+        self.environment_unsure |= unsure - written.keys()
 
     def value(self, t: e.Text | None, scope: Scope, location: Location) -> Value | None:
         if t is None:
@@ -278,6 +351,7 @@ class Runner:
             self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
             return
         before = len(self.model.diagnostics)
+        self.scope_environment = scope.environment
         actions = self.parse(path, self, where)
         for said in self.model.diagnostics[before:]:
             if said.code in HIDING_CODES:

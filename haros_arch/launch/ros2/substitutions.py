@@ -288,6 +288,9 @@ class Evaluator:
             return Value.unknown("environment variable with an unknown name")
         if name in self.scope.environment:
             return Value.of(self.scope.environment[name])
+        if name in self.runner.environment_unsure and (
+                name + "\0unset" not in self.scope.environment):
+            return Value.unknown(f"env {name}")  # written by a launch file under a test
         if name in self.runner.environment and name + "\0unset" not in self.scope.environment:
             return Value.of(self.runner.environment[name])
         if s.default is not None:
@@ -371,6 +374,8 @@ class Evaluator:
         """An environment variable as the launch sees it here (set_env / unset_env)."""
         if name in self.scope.environment:
             return self.scope.environment[name]
+        if name in self.runner.environment_unsure:
+            return None
         if name in self.runner.environment and name + "\0unset" not in self.scope.environment:
             return self.runner.environment[name]
         return None
