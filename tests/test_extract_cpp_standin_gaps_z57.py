@@ -58,3 +58,53 @@ def test_complex_tuple_compare_float64_time_point_equality(tmp_path) -> None:
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
                           "CPP_INCLUDE_MISSING")] == []
     assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
+
+
+EIGEN = """#include <rclcpp/rclcpp.hpp>
+#include <geometry_msgs/msg/pose.hpp>
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <tf2_eigen/tf2_eigen.hpp>
+
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("node");
+  Eigen::Matrix2d information = Eigen::Matrix2d::Identity();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(information);
+  const bool solved = solver.info() == Eigen::Success;
+  Eigen::MatrixXd a(4, 4);
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
+  const Eigen::MatrixXd null_space = lu.kernel();
+  const auto rows = a.middleRows(1, 2);
+  Eigen::Matrix3f rotation = Eigen::Matrix3f::Identity();
+  const Eigen::Vector3f angles = rotation.eulerAngles(0, 1, 2);
+  Eigen::Quaterniond quat(1.0, 0.0, 0.0, 0.0);
+  geometry_msgs::msg::Pose pose;
+  pose.orientation = tf2::toMsg(quat);
+  geometry_msgs::msg::Quaternion q = tf2::toMsg(quat);
+  pose.position = tf2::toMsg(Eigen::Vector3d(1.0, 2.0, 3.0));
+  geometry_msgs::msg::Pose other = tf2::toMsg(Eigen::Isometry3d::Identity());
+  if (solved && lu.dimensionOfKernel() > 0 && rows.rows() == 2 && angles(0) == 0.0 &&
+      null_space.cols() > 0 && q.w == 1.0 && other.position.x == 0.0) {
+    auto pub = node->create_publisher<geometry_msgs::msg::Pose>("out", 10);
+  }
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_eigen_solver_info_kernel_euler_angles_and_tf2_eigen_to_msg(tmp_path) -> None:
+    """lidar_localization_ros2 (617756fe): ``solver.info() != Eigen::Success``
+    (localizability_policy.hpp:48), ``lu.kernel()`` / ``dimensionOfKernel()`` and
+    ``middleRows`` (exact_quadratic_coreset.hpp), ``R.eulerAngles(0, 1, 2)``
+    (diagnostic_ndt_omp.hpp:36) and ``tf2::toMsg(quat_eig)`` to a Quaternion
+    (lidar_localization_component.cpp:1673) were C++ errors of the stand-ins."""
+    (tmp_path / "package.xml").write_text(package_xml("node", "ament_cmake"))
+    source = tmp_path / "node.cpp"
+    source.write_text(EIGEN)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="humble")
+    assert [(d.location.line, d.message) for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
+                          "CPP_INCLUDE_MISSING")] == []
+    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
