@@ -750,6 +750,14 @@ class Runner:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"parameter file {path} is not known statically")
             return None
+        if not os.path.isabs(path.literal):
+            # launch_ros opens it from the folder ``ros2 launch`` runs in, which no file
+            # says (nanosaur_control's teleop.launch.py: ``parameters=[config_filepath]``,
+            # its default 'ps3'); not from the folder this tool runs in
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"parameter file {path.literal!r} is a relative path, opened from the "
+                "folder ros2 launch runs in; it is not read"))
+            return None
         file = share_source(self.workspace, path.literal)
         if not self.workspace.readable(file, self.environment):
             # as a ROS 1 <rosparam file> and $(file-content): only the workspace's and the
