@@ -245,6 +245,16 @@ class Runner:
 
     # -- files ---------------------------------------------------------------------
     def run_file(self, path: str, scope: Scope, where: Location) -> None:
+        if self.stack and not os.path.isabs(path):
+            # an include by a relative path: launch opens it from the folder ``ros2
+            # launch`` runs in, which no file says (not the folder this tool runs in);
+            # what it would start stays unknown, not missing
+            scope.item.kind = "include"
+            self.not_seen(scope, where, f"the include of {path}")
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"launch file {path!r} is a relative path, opened from the folder ros2 "
+                "launch runs in; it is not read"))
+            return
         reached = os.path.abspath(path)  # $(dirname) is where the file was found
         path = share_source(self.workspace, reached)  # the source file installed there
         if path in self.stack or len(self.stack) >= MAX_INCLUDE_DEPTH:
