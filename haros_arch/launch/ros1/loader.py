@@ -581,14 +581,14 @@ class Ros1Loader:
         guard = self.take_guard()
         path = self.value(element, "file", scope)
         where = self.where(scope, element)
-        relative = path is not None and path.literal is not None and not os.path.isabs(
-            path.literal)
-        if path is None or path.literal is None or relative:
-            if relative:
+        relative = None if path is None or path.literal is None or os.path.isabs(
+            path.literal) else path.literal
+        if path is None or path.literal is None or relative is not None:
+            if relative is not None:
                 # roslaunch opens it from the folder it runs in, which no file says (not
                 # the folder this tool runs in): what it would start stays unknown
                 self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
-                    f"launch file {path.literal!r} is a relative path, opened from the "
+                    f"launch file {relative!r} is a relative path, opened from the "
                     "folder roslaunch runs in; it is not read"))
             elif path is None or not found_nowhere(path):
                 self.report("LAUNCH_UNSUPPORTED", scope, element, detail=(
