@@ -740,7 +740,8 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "Python code too large to analyse fully ({limit}); calls past it are "
         "not extracted",
         "A bound on the work per file or node was reached, so a generated or hostile "
-        "file cannot stall the run."),
+        "file cannot stall the run. Not said for a program that imports no ROS client "
+        "(nor its package's modules it imports): nothing past the cut is a ROS call."),
     "PY_DYNAMIC_NAME": Entry(
         "info", "the name of this {kind} call is computed at run time; kept as '{name}'",
         "The Python extractor could not resolve every part of the name statically."),

@@ -94,3 +94,33 @@ def test_a_variable_written_as_a_file_loads_is_seen_by_the_files_it_includes(wri
     # scoped variable too) and substitution, MAYBE (written under a test), the XML's
     assert [n.name for n in model.nodes] == [
         "/rover", "/rover_scoped", "/rover", "/?", "/xml_rover"]
+
+UNKNOWN_VALUE = """
+import os
+
+def generate_launch_description():
+    os.environ['SDF_PATH'] = 'known'
+    before = os.environ.get('SDF_PATH')
+    os.environ['SDF_PATH'] = os.environ['SDF_PATH'] + ':' + os.environ['UNSET_FOR_TEST']
+    after = os.environ.get('SDF_PATH', 'default')
+    os.environ['SDF_PATH'] = 'again'
+    again = os.getenv('SDF_PATH')
+    return LaunchDescription([Node(package='p', executable='e', name=before),
+                              Node(package='p', executable='e', name=after),
+                              Node(package='p', executable='e', name=again)])
+"""
+
+
+def test_a_value_not_known_makes_the_variable_not_known(write_tree):
+    """ardupilot_ros's cartographer.launch.py (5c7086e7) appends a variable the
+    configuration does not set to SDF_PATH: the variable is set, to a value not known
+    (its reads after are not known, not the earlier value nor the default); nothing is
+    unsupported there, and a later known value is read again."""
+    model, _ = run(write_tree, UNKNOWN_VALUE, env={})
+    names = [n.name for n in model.nodes]
+    assert names[0] == "/known" and names[2] == "/again", names
+    assert "?" in names[1], names
+    codes = [(d.code, d.message) for d in model.diagnostics
+             if d.code in ("LAUNCH_UNKNOWN_VALUE", "LAUNCH_PY_UNSUPPORTED")]
+    assert [code for code, _ in codes] == ["LAUNCH_UNKNOWN_VALUE"] * 2, codes
+    assert "UNSET_FOR_TEST" in codes[0][1] and "SDF_PATH" in codes[1][1], codes

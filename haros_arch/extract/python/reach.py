@@ -3,7 +3,9 @@ call: a call in its body, or in a function or class of the modules read that a c
 it names (by name alone, any module, transitively), of a name of the API tables
 (``create_publisher``, ``Subscriber``, ``get_param``, ...). Read from the syntax, so it
 errs towards yes: a helper of the same name as an API function counts. A cut of a
-function that cannot reach one loses nothing and is not said."""
+function that cannot reach one loses nothing and is not said. Nor is the cut of a whole
+program (``imports_ros``) that imports no ROS client: a report script installed as a
+program that reads CSV files with pandas (lidar_localization_ros2)."""
 
 from __future__ import annotations
 
@@ -11,7 +13,7 @@ import ast
 from collections.abc import Iterable
 
 from . import rclpy, rospy
-from .modules import ClassInfo, FunctionInfo, Module, last_name
+from .modules import ClassInfo, FunctionInfo, Loader, Module, api_modules, last_name
 
 # the names a call of the API tables ends in: ``rospy.Publisher``, ``node.create_client``
 API_NAMES = frozenset(
@@ -95,3 +97,53 @@ class Reach:
                 if isinstance(other, ClassInfo):
                     found.extend(self._class_bodies(other, seen))
         return found
+
+
+# builtins and modules that import a module named at run time
+_DYNAMIC_NAMES = frozenset({"__import__", "exec", "eval"})
+_DYNAMIC_MODULES = frozenset({"importlib", "imp", "runpy", "pkgutil"})
+# a ROS package's interface modules, which make no call
+_INTERFACES = frozenset({"msg", "srv", "action"})
+
+
+def imports_ros(loader: Loader, unseen: frozenset[str]) -> bool:
+    """Whether the modules read, or one of the package's or workspace's modules they
+    import (transitively, each read here), import a module whose code may make a ROS
+    call: a client library or a module the API tables read (``api_modules``), one of
+    the ROS packages ``unseen`` (not in the workspace; their interface modules,
+    ``std_msgs.msg``, aside), or any module by a name known only at run time
+    (``importlib``, ``__import__``, ``exec``). A module of none of these (the standard
+    library, numpy) is one the walk reads no ROS call in either."""
+    clients = api_modules() | unseen
+    todo = [m for m in loader.modules.values() if m is not None]
+    seen: set[str] = set()
+    while todo:
+        module = todo.pop()
+        if module.path in seen:
+            continue
+        seen.add(module.path)
+        for node in ast.walk(module.tree):
+            if isinstance(node, ast.Name) and node.id in _DYNAMIC_NAMES:
+                return True
+            if isinstance(node, ast.Import):
+                named = [(0, alias.name) for alias in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                named = [(node.level, base), *((node.level, f"{base}.{alias.name}" if base
+                                                else alias.name)
+                                               for alias in node.names if alias.name != "*")]
+            else:
+                continue
+            for level, dotted in named:
+                local = loader.resolve_import(module.path, level, dotted) if dotted else None
+                if local is not None:
+                    found = loader.load(local)
+                    if found is not None:
+                        todo.append(found)
+                    continue
+                parts = dotted.split(".")
+                if level or (len(parts) > 1 and parts[1] in _INTERFACES):
+                    continue  # a name in a module of the package, or a message module
+                if parts[0] in clients or parts[0] in _DYNAMIC_MODULES:
+                    return True
+    return False

@@ -56,7 +56,7 @@ from .objects import (
     text_of,
 )
 from .qos import as_profile, with_policy
-from .reach import Reach
+from .reach import Reach, imports_ros
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
@@ -294,8 +294,9 @@ class Walker:
             if limit is not None:
                 if not self._limit_reported:
                     self._limit_reported = True
-                    self.diagnostics.append(diag.make(
-                        "PY_TOO_COMPLEX", self._where(frame, statement), limit=limit))
+                    if imports_ros(self.loader, self.unseen_packages):
+                        self.diagnostics.append(diag.make(
+                            "PY_TOO_COMPLEX", self._where(frame, statement), limit=limit))
                 return
             handler = getattr(self, "_" + type(statement).__name__, self._statement)
             handler(statement, frame, conds)

@@ -581,8 +581,16 @@ class Ros1Loader:
         guard = self.take_guard()
         path = self.value(element, "file", scope)
         where = self.where(scope, element)
-        if path is None or path.literal is None:
-            if path is None or not found_nowhere(path):
+        relative = None if path is None or path.literal is None or os.path.isabs(
+            path.literal) else path.literal
+        if path is None or path.literal is None or relative is not None:
+            if relative is not None:
+                # roslaunch opens it from the folder it runs in, which no file says (not
+                # the folder this tool runs in): what it would start stays unknown
+                self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
+                    f"launch file {relative!r} is a relative path, opened from the "
+                    "folder roslaunch runs in; it is not read"))
+            elif path is None or not found_nowhere(path):
                 self.report("LAUNCH_UNSUPPORTED", scope, element, detail=(
                     f"include file \"{element.get('file')}\" is not known statically"))
             scope.item.add(LaunchItem("include", element.get("file", ""), where,

@@ -105,6 +105,13 @@ def param_value(loader: Ros1Loader, source: str, text: str, kind: str, scope: Sc
 
 def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Element
                     ) -> bytes | None:
+    if not os.path.isabs(path):
+        # roslaunch opens it from the folder it runs in, which no file says (not the
+        # folder this tool runs in)
+        loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
+            f"{path!r} is a relative path, opened from the folder roslaunch runs in; it is "
+            "not read"))
+        return None
     path = os.path.realpath(path)
     if not loader.workspace.readable(path, loader.environment):
         loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(

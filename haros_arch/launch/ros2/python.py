@@ -744,12 +744,17 @@ class Interpreter(Expressions):
         ``os.environ.get`` / ``os.getenv`` read it after (rslidar_sdk's
         humble_start.py sets RMW_IMPLEMENTATION, then prints it); the configuration's
         own environment is left as it is. Under a test not known statically, reads of it
-        after are not known; a name or value not known is said and not applied."""
-        if not isinstance(key, str) or not isinstance(value, str):
+        after are not known. So are they after a value not known statically
+        (ardupilot_ros's ``os.environ["SDF_PATH"] = sdf_path + ":" + gz_sim_resource_path``,
+        from variables the configuration does not set): the variable is then set, to a
+        value not known. A name not known is said and not applied."""
+        if not isinstance(key, str) or not isinstance(value, (str, Unknown, Lazy)):
             self.unsupported(target, f"{_source(target)} = ...: an environment variable "
                                      "whose name or value is not known statically")
             return
-        if self.guards:
+        if self.guards or not isinstance(value, str):
+            if isinstance(self.environment, _Overlay):
+                self.environment.own.pop(key, None)
             self.environment_unsure.add(key)
             return
         if not isinstance(self.environment, _Overlay):

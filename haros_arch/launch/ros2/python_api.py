@@ -28,6 +28,7 @@ from . import entities as e
 from .naming import yaml_value
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
+from .python_expressions import unsure_variable
 from .python_launch_pal import LAUNCH_PAL
 from .python_methods import METHODS as BASE_METHODS
 from .python_methods import (
@@ -312,8 +313,7 @@ def path_exists(test: Callable[[str], bool]) -> Builder:
 def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     name = arg(a, k, 0, "key")
     if isinstance(name, str) and name in i.environment_unsure:
-        i.unknown_value(n, f"environment variable {name} is set by the launch file under "
-                           "a test not known statically")
+        i.unknown_value(n, unsure_variable(name))
         return Lazy((e.Opaque(f"environment variable {name}", report=False),))
     if isinstance(name, str) and name in i.environment:
         return i.environment[name]

@@ -642,7 +642,7 @@ class _Environ:
         """``name in os.environ``: True when the configuration sets it, else not known
         (as a ``get`` without a default), and said."""
         if isinstance(name, str) and name in interp.environment_unsure:
-            interp.unknown_value(node, _unsure(name))
+            interp.unknown_value(node, unsure_variable(name))
             return None
         if isinstance(name, str) and name in interp.environment:
             return True
@@ -654,7 +654,7 @@ class _Environ:
     def get(self, interp: Expressions, args: list[Any], node: ast.AST) -> Any:
         name = args[0] if args else None
         if isinstance(name, str) and name in interp.environment_unsure:
-            interp.unknown_value(node, _unsure(name))
+            interp.unknown_value(node, unsure_variable(name))
             return Lazy((e.Opaque(f"environment variable {name}", report=False),))
         if isinstance(name, str) and name in interp.environment:
             return interp.environment[name]
@@ -667,6 +667,6 @@ class _Environ:
         return Lazy((e.Opaque(f"environment variable {name}", report=False),))
 
 
-def _unsure(name: str) -> str:
-    return (f"environment variable {name} is set by the launch file under a test not "
-            "known statically")
+def unsure_variable(name: str) -> str:
+    return (f"environment variable {name} is set by the launch file under a test or to "
+            "a value not known statically")

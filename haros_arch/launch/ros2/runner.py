@@ -318,6 +318,16 @@ class Runner:
 
     # -- files ---------------------------------------------------------------------
     def run_file(self, path: str, scope: Scope, where: Location) -> None:
+        if self.stack and not os.path.isabs(path):
+            # an include by a relative path: launch opens it from the folder ``ros2
+            # launch`` runs in, which no file says (not the folder this tool runs in);
+            # what it would start stays unknown, not missing
+            scope.item.kind = "include"
+            self.not_seen(scope, where, f"the include of {path}")
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"launch file {path!r} is a relative path, opened from the folder ros2 "
+                "launch runs in; it is not read"))
+            return
         reached = os.path.abspath(path)  # $(dirname) is where the file was found
         path = share_source(self.workspace, reached)  # the source file installed there
         if path in self.stack or len(self.stack) >= MAX_INCLUDE_DEPTH:
@@ -823,6 +833,14 @@ class Runner:
         if path is None or path.literal is None:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"parameter file {path} is not known statically")
+            return None
+        if not os.path.isabs(path.literal):
+            # launch_ros opens it from the folder ``ros2 launch`` runs in, which no file
+            # says (nanosaur_control's teleop.launch.py: ``parameters=[config_filepath]``,
+            # its default 'ps3'); not from the folder this tool runs in
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
+                f"parameter file {path.literal!r} is a relative path, opened from the "
+                "folder ros2 launch runs in; it is not read"))
             return None
         file = share_source(self.workspace, path.literal)
         if not self.workspace.readable(file, self.environment):

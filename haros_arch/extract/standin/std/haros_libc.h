@@ -24,6 +24,13 @@ typedef unsigned int uid_t;
 typedef unsigned long int ulong;
 typedef unsigned short int ushort;
 typedef unsigned int uint;
+// glibc's <bits/floatn.h> names the TS 18661-3 types as typedefs for a C++ compiler
+// that has none of its own (clang, g++ before 13): consai_ros2's controller takes its
+// gains as ``_Float64``
+typedef float _Float32;
+typedef double _Float64;
+typedef double _Float32x;
+typedef long double _Float64x;
 #define PRId8 "d"
 #define PRId16 "d"
 #define PRId32 "d"

@@ -143,6 +143,42 @@ template<class A, class B, class = typename enable_if<__is_integral(A) && __is_i
 double hypot(A x, B y);
 template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
 double atan2(A y, B x);
+// <complex>: a point as a complex number (consai_ros2's geometry_tools.hpp keeps a
+// frame's center and rotation as std::complex<double> members)
+template<class T> class complex {
+public:
+  typedef T value_type;
+  constexpr complex(const T& re = T(), const T& im = T());
+  template<class U> constexpr complex(const complex<U>& other);
+  constexpr T real() const; constexpr T imag() const;
+  void real(T value); void imag(T value);
+  complex& operator=(const T& x);
+  complex& operator+=(const T& x); complex& operator-=(const T& x);
+  complex& operator*=(const T& x); complex& operator/=(const T& x);
+  template<class U> complex& operator+=(const complex<U>& x);
+  template<class U> complex& operator-=(const complex<U>& x);
+  template<class U> complex& operator*=(const complex<U>& x);
+  template<class U> complex& operator/=(const complex<U>& x);
+};
+#define HAROS_COMPLEX_BINARY(OP) \
+  template<class T> complex<T> operator OP(const complex<T>& a, const complex<T>& b); \
+  template<class T> complex<T> operator OP(const complex<T>& a, const T& b); \
+  template<class T> complex<T> operator OP(const T& a, const complex<T>& b);
+HAROS_COMPLEX_BINARY(+) HAROS_COMPLEX_BINARY(-) HAROS_COMPLEX_BINARY(*) HAROS_COMPLEX_BINARY(/)
+#undef HAROS_COMPLEX_BINARY
+template<class T> complex<T> operator+(const complex<T>& a);
+template<class T> complex<T> operator-(const complex<T>& a);
+template<class T> bool operator==(const complex<T>& a, const complex<T>& b);
+template<class T> bool operator!=(const complex<T>& a, const complex<T>& b);
+template<class T> T real(const complex<T>& z); template<class T> T imag(const complex<T>& z);
+template<class T> T abs(const complex<T>& z); template<class T> T arg(const complex<T>& z);
+template<class T> T norm(const complex<T>& z);
+template<class T> complex<T> conj(const complex<T>& z);
+template<class T> complex<T> polar(const T& r, const T& theta = T());
+template<class T> complex<T> exp(const complex<T>& z);
+template<class T> complex<T> log(const complex<T>& z);
+template<class T> complex<T> sqrt(const complex<T>& z);
+template<class T> complex<T> pow(const complex<T>& z, const T& y);
 // more of <type_traits>, on clang's builtins (robin_hood's hash map asks them of its
 // keys and values)
 template<class T> struct remove_volatile { typedef T type; };
@@ -255,6 +291,14 @@ public:
 };
 template<class... T> tuple<typename decay<T>::type...> make_tuple(T&&... args);
 template<class... T> tuple<T&...> tie(T&... args);
+// tuples compared item by item (consai_ros2's ControlParams::operator==, ``tie() ==
+// other.tie()``)
+template<class... T, class... U> bool operator==(const tuple<T...>& a, const tuple<U...>& b);
+template<class... T, class... U> bool operator!=(const tuple<T...>& a, const tuple<U...>& b);
+template<class... T, class... U> bool operator<(const tuple<T...>& a, const tuple<U...>& b);
+template<class... T, class... U> bool operator<=(const tuple<T...>& a, const tuple<U...>& b);
+template<class... T, class... U> bool operator>(const tuple<T...>& a, const tuple<U...>& b);
+template<class... T, class... U> bool operator>=(const tuple<T...>& a, const tuple<U...>& b);
 // std::ignore: anything is assigned to it (``std::ignore = handle.set_value(0.0);``)
 struct haros_ignore_t { template<class T> const haros_ignore_t& operator=(const T&) const; };
 static const haros_ignore_t ignore = {};
@@ -1725,6 +1769,7 @@ public:
   explicit time_point(const D& d);
   D time_since_epoch() const;
   time_point& operator+=(const D& d);
+  time_point& operator-=(const D& d);
 };
 template<class To, class C, class D>
 constexpr time_point<C, To> time_point_cast(const time_point<C, D>& t);
@@ -1740,6 +1785,16 @@ template<class C, class D1, class D2>
 bool operator>(const time_point<C, D1>& a, const time_point<C, D2>& b);
 template<class C, class D1, class D2>
 bool operator>=(const time_point<C, D1>& a, const time_point<C, D2>& b);
+// equality and the rest (lidar_localization_ros2's ``last_log_time_ !=
+// std::chrono::steady_clock::time_point{}``, a time not set yet)
+template<class C, class D1, class D2>
+bool operator<=(const time_point<C, D1>& a, const time_point<C, D2>& b);
+template<class C, class D1, class D2>
+bool operator==(const time_point<C, D1>& a, const time_point<C, D2>& b);
+template<class C, class D1, class D2>
+bool operator!=(const time_point<C, D1>& a, const time_point<C, D2>& b);
+template<class R, class P, class C, class D>
+time_point<C, D> operator+(const duration<R, P>& d, const time_point<C, D>& a);
 struct system_clock {
   typedef nanoseconds duration;
   typedef chrono::time_point<system_clock> time_point;
