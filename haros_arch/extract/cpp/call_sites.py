@@ -29,7 +29,6 @@ from .values import (
     _plain_value,
     initializer,
     key_of,
-    render,
     written_arguments,
 )
 from .writes import default_constructed, out_argument, parameter_callback, writes_of
@@ -185,31 +184,6 @@ class CallSites:
         if not self.external or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
             return None
         return f"{PLACEHOLDER}{usr}{SEPARATOR}0{PLACEHOLDER}"
-
-    def member_elsewhere(self, field: Cursor) -> str | None:
-        """The placeholder of a string member ``field`` that no function of this unit
-        writes and whose class's constructors are all defined in other files: the value
-        those give it (``links.MEMBER``; navigation2's ``Source::source_name_``, set in
-        source.cpp from the constructor's parameter, read in pointcloud.cpp); None
-        otherwise."""
-        if field.kind != CursorKind.FIELD_DECL or msg_types.param_type(field.type) != "str" or (
-                not constructed_elsewhere(field, self.source)) or self.written(field):
-            return None
-        return self.member_placeholder(field)
-
-    def constructed_text(self, field: Cursor) -> str | None:
-        """The text every constructor of ``field``'s class defined in this unit gives
-        the string member (a constructor's parameters as placeholders), when each writes
-        it and all agree, and no other function writes it (``written``); else None."""
-        if self.written(field):
-            return None
-        options = self._members.get(key_of(field))
-        if options is None:
-            options = self._members[key_of(field)] = constructor_values(field, self.source)
-        texts = {render(self.scope(constructor).string(value)) if value is not None else "?"
-                 for value, constructor in options}
-        text = texts.pop() if len(texts) == 1 else "?"
-        return None if "?" in text else text
 
     def placeholder(self, parm: Cursor) -> str | None:
         """The placeholder part of ``parm`` (None for a parameter of no function)."""

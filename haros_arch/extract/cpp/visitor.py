@@ -466,7 +466,7 @@ class CallFinder:
         self.facts.extend(links.opaque_facts(self.functions, self.tu.spelling,
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
-                                             self._member_value))
+                                             self._member_namespace))
         self.facts.extend(links.global_facts(
             ((usr, render(parts)) for usr, parts in self.namespaces.global_handles(self.tu)),
             self.tu.spelling))
@@ -548,17 +548,13 @@ class CallFinder:
                 if name and name != owner:
                     yield owner, name
 
-    def _member_value(self, field: Cursor) -> str | None:
-        """The namespace of a handle member, or the text of a string member, as the
-        unit's constructors of its class give it (``links.member_facts``; a string's
-        with a constructor's parameters as placeholders, ``CallSites.member_elsewhere``);
-        None for any other member, and for a string no constructor gives a known value
-        or another function writes."""
-        if holds_handle(field) or binds_handle(field):
-            return render(self.namespaces.member(field, None))
-        if msg_types.param_type(field.type) != "str" or self.sites is None:
+    def _member_namespace(self, field: Cursor) -> str | None:
+        """The namespace of a handle member, as the unit's constructors of its class give
+        it (``links.member_facts``); None for a member that holds no handle, by value or
+        as a reference bound by the constructors."""
+        if not holds_handle(field) and not binds_handle(field):
             return None
-        return self.sites.constructed_text(field)
+        return render(self.namespaces.member(field, None))
 
     def unit_cursor(self) -> Any:
         """The unit's cursor as a node (``run``), until ``release``."""
