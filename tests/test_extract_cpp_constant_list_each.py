@@ -117,3 +117,55 @@ def test_a_constant_list_handed_to_a_function(write_tree) -> None:
     subscribed = sorted(c.name for c in result.calls if c.kind == "subscribe")
     assert subscribed == ["/planning/planning_factors/crosswalk",
                           "/planning/planning_factors/stop_line", "?"]
+
+
+MEMBER_NODE = """
+#include <rclcpp/rclcpp.hpp>
+class S : public rclcpp::Node {
+public:
+  S();
+  void configure();
+  void extend() { others_.push_back("late"); }
+  std::vector<std::string> ids_;
+  std::vector<std::string> default_ids_;
+  std::vector<std::string> default_types_;
+  std::vector<std::string> others_;
+};
+S::S()
+: rclcpp::Node("s"),
+  default_ids_{"simple_smoother"},
+  default_types_{"nav2_smoother::SimpleSmoother"},
+  others_{"first"}
+{
+}
+void S::configure() {
+  ids_ = declare_parameter("smoother_plugins", default_ids_);
+  if (ids_ == default_ids_) {
+    for (size_t i = 0; i < default_ids_.size(); ++i) {
+      declare_parameter(default_ids_[i] + ".plugin", default_types_[i]);
+    }
+  }
+  for (const auto & name : others_) {
+    declare_parameter(name + ".other", 1.0);  // extend() changes it: not constant
+  }
+}
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<S>();
+  node->configure();
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_each_element_of_a_member_the_constructor_initialises(write_tree) -> None:
+    """navigation2's smoother and behavior servers keep their default ids in a member
+    the constructor initialises with a braced list (``default_ids_{"simple_smoother"}``)
+    and nothing else writes: its elements, as a constant's (was ``?.plugin``)."""
+    root = write_tree({"cl/package.xml": package_xml("cl", "ament_cmake"),
+                       "cl/src/s.cpp": MEMBER_NODE})
+    result = extract_cpp([str(root / "cl" / "src" / "s.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    declared = sorted(c.name for c in result.calls if c.kind == "declare")
+    assert declared == ["?.other", "simple_smoother.plugin", "smoother_plugins"]

@@ -28,7 +28,15 @@ from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from ...plugins.classes import base_name, loader_bases
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
-from .call_sites import CallSites, base_keys, callee_of, delegation, parameter_places
+from .call_sites import (
+    CallSites,
+    base_keys,
+    callee_of,
+    constructor_values,
+    delegation,
+    parameter_places,
+    value_text,
+)
 from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
@@ -106,7 +114,14 @@ from .values import (
 from .values import _walk as walk_cursors
 from .values import key_of as place_of
 from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
-from .writes import const_array, default_constructed, may_write, searched_key
+from .writes import (
+    const_array,
+    default_constructed,
+    may_write,
+    out_argument,
+    searched_key,
+    writes_of,
+)
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
@@ -2424,11 +2439,21 @@ class CallFinder:
                 decl, lambda arg, at: self._constant_list(arg, at, depth + 1), None)
         if decl.kind not in (CursorKind.VAR_DECL, CursorKind.FIELD_DECL):
             return None
-        if not decl.type.is_const_qualified() and not const_array(decl) and (
-            decl.kind == CursorKind.FIELD_DECL or not _read_only(decl, scope)
+        value: Cursor | None = None
+        if decl.kind == CursorKind.FIELD_DECL and not decl.type.is_const_qualified() and (
+            not const_array(decl)
         ):
-            return None  # (a member that is not constant may change anywhere)
-        value = scope.variable(decl)
+            # a member the constructors initialise alike and nothing here changes
+            # (navigation2's smoother server: ``default_ids_{"simple_smoother"}``)
+            held_member = self._unchanged_member(decl)
+            if held_member is None:
+                return None
+            value, scope = held_member
+        elif not decl.type.is_const_qualified() and not const_array(decl) and (
+            not _read_only(decl, scope)
+        ):
+            return None
+        value = scope.variable(decl) if value is None else value
         items = _elements(value) if value is not None else []
         if not items or len(items) > _MAX_CONSTANT_ELEMENTS or (
                 len(items) == 1 and strip(items[0]) == strip(value)):
@@ -2437,6 +2462,28 @@ class CallFinder:
         if any(not v or "?" in v or PLACEHOLDER in v for v in values):
             return None
         return values
+
+    def _unchanged_member(self, field: Cursor) -> tuple[Cursor, Scope] | None:
+        """The value, and the scope to read it in, that every constructor of ``field``'s
+        class in this unit initialises the member with, alike, when no function of the
+        unit writes it or calls a method that changes it (``_CHANGING``); else None."""
+        if self.sites is None or self.members is None:
+            return None
+        options = constructor_values(field, self.source)
+        if not options or any(value is None for value, _ in options) or len(
+                {value_text(value) for value, _ in options}) != 1:
+            return None
+        key = key_of(field)
+        for function in self.members.naming(field):
+            for node in walk_cursors(function):
+                for write in writes_of(node, self.source):
+                    if write.variable is not None and key_of(write.variable) == key and (
+                        write.whole or out_argument(write) or write.at.spelling in _CHANGING
+                        or write.at.kind != CursorKind.CALL_EXPR
+                    ):
+                        return None
+        value, constructor = options[0]
+        return (value, self.sites.scope(constructor)) if value is not None else None
 
     def _each_element(self, expr: Cursor, scope: Scope, depth: int = 0
                       ) -> tuple[str | None, tuple[int, int] | None, str] | None:
@@ -4122,6 +4169,14 @@ def _unknown_operand(expr: Cursor, scope: Scope) -> Cursor | None:
         CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) or _subscript(
         inner) is not None else _unknown_operands(expr, scope)
     return strip(operands[0]) if len(operands) == 1 else None
+
+
+# the methods of the standard containers and strings that change their object
+_CHANGING = frozenset({
+    "push_back", "emplace_back", "push_front", "emplace_front", "pop_back", "pop_front",
+    "insert", "emplace", "erase", "clear", "resize", "assign", "swap", "append",
+    "replace", "operator=", "operator+=", "reserve", "shrink_to_fit", "splice", "sort",
+    "remove", "remove_if", "unique", "merge", "reverse", "operator>>"})
 
 
 def _read_only(variable: Cursor, scope: Scope) -> bool:
