@@ -363,7 +363,7 @@ def _named_by(call: PrimitiveCall) -> PrimitiveCall:
     more: list[list[str | None]] = [
         [normalise(param), default or None, *([JOINED] if index else [])]
         for run in runs for index, (param, _, default) in enumerate(
-            (*mark[0].partition(DEFAULT_MARK)[::2], mark[1]) for mark in run)]
+            mark[0].partition(DEFAULT_MARK) for mark in run)]
     return dataclasses.replace(call, name=name, name_param=more[0][0],
                                name_default=more[0][1], name_more=more[1:])
 
