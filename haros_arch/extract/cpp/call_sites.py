@@ -881,9 +881,10 @@ def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
     if len(functions) < 2:
         return functions
 
-    def score(function: Cursor) -> tuple[int, int, int, bool]:
+    def score(function: Cursor) -> tuple[bool, int, int, int, bool]:
         params = [p for p in function.get_children() if p.kind == CursorKind.PARM_DECL]
         same = generic = alike = 0
+        viable = True
         for param, arg in zip(params, args, strict=False):
             wanted, given = _bare(param.type), _bare(arg.type)
             if wanted is None:
@@ -893,11 +894,55 @@ def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
             elif given is not None and "<" in wanted and (
                     wanted.split("<", 1)[0] == given.split("<", 1)[0]):
                 alike += 1
-        return same, generic, alike, function.kind != CursorKind.FUNCTION_TEMPLATE
+            if wanted is not None and wanted != given and _unconvertible(param.type, arg.type):
+                viable = False
+        return viable, same, generic, alike, function.kind != CursorKind.FUNCTION_TEMPLATE
 
     scores = [score(f) for f in functions]
     best = max(scores)
     return [f for f, found in zip(functions, scores, strict=True) if found == best]
+
+
+# the smart pointers a pointer to a class converts to only when it points to that class
+# or one derived from it; and those it may come from (a ``unique_ptr`` only as a
+# temporary, which a maker's argument is)
+_POINTERS_TO = frozenset({"std::shared_ptr", "std::weak_ptr", "boost::shared_ptr",
+                          "boost::weak_ptr"})
+_POINTERS_FROM = _POINTERS_TO | {"std::unique_ptr"}
+
+
+def _pointee(ctype: Type, kinds: frozenset[str]) -> Cursor | None:
+    """The class definition a raw pointer or a smart pointer of ``kinds`` (reference
+    and const aside) points to; None for another type, or one not defined here."""
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee()
+    canonical = ctype.get_canonical()
+    if canonical.kind == TypeKind.POINTER:
+        pointee = canonical.get_pointee().get_canonical()
+    elif canonical.kind == TypeKind.RECORD and canonical.get_num_template_arguments() == 1:
+        template = conf.lib.clang_getSpecializedCursorTemplate(canonical.get_declaration())
+        if template is None or qualified_name(template) not in kinds:
+            return None
+        pointee = canonical.get_template_argument_type(0).get_canonical()
+    else:
+        return None
+    if pointee.kind != TypeKind.RECORD:
+        return None
+    return pointee.get_declaration().get_definition()
+
+
+def _unconvertible(wanted: Type, given: Type) -> bool:
+    """Whether an argument of type ``given``, a pointer to a class the parse defines,
+    cannot convert to a parameter of type ``wanted``, a smart pointer to another class
+    that is none of its bases (a ``weak_ptr<rclcpp::Node>`` from a
+    ``shared_ptr<nav2_util::LifecycleNode>``). False where either is not known so."""
+    target = _pointee(wanted, _POINTERS_TO)
+    source = _pointee(given, _POINTERS_FROM)
+    if target is None or source is None:
+        return False
+    if key_of(target.canonical) == key_of(source.canonical):
+        return False
+    return key_of(target.canonical) not in base_keys(source)
 
 
 def _bare(ctype: Type) -> str | None:
