@@ -13,7 +13,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl, shell_words
 from ..launch.ros2.naming import pattern_matches
-from ..model.conditions import EACH_STATEMENT, Condition
+from ..model.conditions import EACH_STATEMENT, ELEMENT_PARAMETER, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
 from ..model.rosname import RosName, clean, namespace_of, remap, resolve
@@ -1106,9 +1106,20 @@ def _element_conditions(conditions: tuple[Condition, ...], listed: str | None, i
     out = []
     for condition in conditions:
         values = [(name, value) for name, lst, field in condition.elements or ()
-                  if lst == listed and (value := _element_value(item, field)) is not None]
-        out.append(condition if not values else replace(
-            condition, constants=(*(condition.constants or ()), *values),
+                  if lst == listed and not field.startswith(ELEMENT_PARAMETER)
+                  and (value := _element_value(item, field)) is not None]
+        # a name holding the parameter the element names (``polygon_name + ".type"``):
+        # that parameter, which the graph decides the condition by as any it holds
+        held = [(name, field[len(ELEMENT_PARAMETER):].replace(UNKNOWN_MARK, item, 1))
+                for name, lst, field in condition.elements or ()
+                if lst == listed and field.startswith(ELEMENT_PARAMETER)
+                and isinstance(item, str) and item]
+        if not values and not held:
+            out.append(condition)
+            continue
+        out.append(replace(
+            condition, constants=(*(condition.constants or ()), *values) or None,
+            parameters=(*(condition.parameters or ()), *held) or None,
             elements=tuple(e for e in condition.elements or () if e[1] != listed) or None))
     return tuple(out)
 

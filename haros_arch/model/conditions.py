@@ -18,6 +18,11 @@ ConditionKind = Literal["launch", "source", "hint"]
 # per element (``PrimitiveCall.name_each``): where the graph knows the elements, each
 # call it makes stands for one turn of the loop, which is then no condition of it
 EACH_STATEMENT = "for each"
+# the start of a ``Condition.elements`` field that says the name holds the value of the
+# parameter its rest names with the element in place of its one ``?``: navigation2's
+# collision monitor reads ``const std::string type = declare_or_get_parameter(
+# polygon_name + ".type")`` and tests ``type == "circle"`` for each ``polygons`` in turn
+ELEMENT_PARAMETER = "parameter:"
 # the statements of an enclosing block that runs at least once, no condition of what it
 # makes: a ``try`` block (it runs unless something before the call throws), the body
 # of a ``do ... while`` (its first turn always runs; robot_localization subscribes each

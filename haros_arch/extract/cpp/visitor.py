@@ -21,7 +21,7 @@ from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.conditions import EACH_STATEMENT, Condition
+from ...model.conditions import EACH_STATEMENT, ELEMENT_PARAMETER, Condition
 from ...model.location import Location
 from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
@@ -2715,10 +2715,48 @@ class CallFinder:
                 self._held_each[key] = (each[0], each[2]) if each is not None and (
                     each[0] is not None and (known_name(each[0]) or _on_passed_handle(
                         each[0])) and each[2] != EACH_WORD) else None
+                if self._held_each[key] is None and decl.kind == CursorKind.VAR_DECL:
+                    self._held_each[key] = self._element_parameter(decl, node, scope)
             held = self._held_each[key]
             if held is not None:
                 found[decl.spelling] = held
         return tuple(sorted((name, listed, field) for name, (listed, field) in found.items()))
+
+    def _element_parameter(self, decl: Cursor, use: Cursor, scope: Scope
+                           ) -> tuple[str, str] | None:
+        """(the list parameter, ``ELEMENT_PARAMETER`` and the parameter's name) for a
+        local ``decl`` written once with the value of a parameter named by each element
+        of a list parameter in turn, with text around it (navigation2's collision
+        monitor: ``const std::string polygon_type = node->declare_or_get_parameter<
+        std::string>(polygon_name + ".type")`` for each ``polygon_name`` of
+        ``polygons``): the graph decides a condition on the local per element, by the
+        parameter that element names (``graph.build._element_conditions``); else None."""
+        held = scope.variable(decl)
+        call = strip(held) if held is not None else None
+        if call is None or call.kind != CursorKind.CALL_EXPR:
+            return None
+        source = self._parameter_source(use, scope, 0, value=True)
+        name = source[0] if source is not None else None
+        if name is None or name.count(UNKNOWN_MARK) != 1 or PLACEHOLDER in name or (
+                PARAMETER in name):
+            return None
+        calls = [call]
+        children = list(call.get_children())
+        if _value_method(call, children):  # ``get_parameter(name).as_string()``
+            objects = [c for c in children[0].get_children() if c.kind.is_expression()]
+            calls += [strip(o) for o in objects[:1] if strip(o).kind == CursorKind.CALL_EXPR]
+        after = name.split(UNKNOWN_MARK, 1)[1]
+        for each_call in calls:
+            for arg in written_arguments(each_call):
+                if msg_types.param_type(arg.type) != "str":
+                    continue
+                written, each = self._name(arg, scope)
+                if each is None or each[3] != EACH or not isinstance(each[0], str) or (
+                    not known_name(each[0]) or str(written).count(UNKNOWN_MARK) != 1
+                ) or str(written).split(UNKNOWN_MARK, 1)[1] != after:
+                    continue
+                return each[0], f"{ELEMENT_PARAMETER}{name}"
+        return None
 
     def _typed_accessor(self, call: Cursor) -> None:
         """``get_parameter("x").as_int()``: the read (visited after this call, its
