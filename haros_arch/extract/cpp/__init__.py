@@ -565,14 +565,37 @@ def _built_under(facts: list[links.Fact], unseen: set[str]) -> dict[str, tuple[C
             at[site] = None
     found: dict[str, tuple[Condition, ...]] = {}
     for usr, at in sites.items():
-        held = list(at.values())
-        if "*" in unseen or links.class_of(usr) in unseen or any(c is None for c in held):
-            continue
-        shared = tuple(c for c in held[0] or () if all(c in other for other in held[1:]
-                                                      if other is not None))
+        shared = _shared_under(list(at.values())) if "*" not in unseen and (
+            links.class_of(usr) not in unseen) else ()
         if shared:
             found[usr] = shared
+    # a class's: what the places that build it with any of its constructors share (a
+    # method runs on an object built there; ``links.CLASS_BUILT``), for a class no loader
+    # or global names (``call_conditions.NAMED_CLASS``: a plugin's export)
+    named = {usr for usr, index, _, _ in facts if index == call_conditions.NAMED_CLASS}
+    classes: dict[str, list[tuple[Condition, ...] | None]] = {}
+    for usr, at in sites.items():
+        if "@F@" in usr and "@ST>" not in usr and "@SP>" not in usr and (
+                links.is_constructor_usr(usr)):
+            classes.setdefault(usr.split("@F@", 1)[0], []).extend(at.values())
+    for cls, held in classes.items():
+        # (not a loop's or a ``try``'s, as ``call_conditions`` carries none: a method of
+        # an object built in a turn of a loop over a list is no call of the loop's)
+        shared = tuple(c for c in _shared_under(held) if c.statement not in (
+            call_conditions.NOT_CARRIED)) if "*" not in unseen and cls not in named and (
+            cls.rsplit("@", 1)[-1] not in unseen) else ()
+        if shared:
+            found[f"{links.CLASS_BUILT}{cls}"] = shared
     return found
+
+
+def _shared_under(held: list[tuple[Condition, ...] | None]) -> tuple[Condition, ...]:
+    """The conditions every one of ``held`` (a construction place's, None for one with
+    none known) has; none when a place has none."""
+    if not held or any(c is None for c in held):
+        return ()
+    return tuple(c for c in held[0] or () if all(c in other for other in held[1:]
+                                                if other is not None))
 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],

@@ -74,7 +74,7 @@ MAX_DEPTH = 8
 # list the loop walks is made once per element, the loop no condition of it: navigation2's
 # collision monitor configures a Polygon per name of ``polygon_names``) and a ``try``
 # block's (its body runs unless something fails)
-_NOT_CARRIED = frozenset({"for", "while", "do", EACH_STATEMENT, "try"})
+NOT_CARRIED = frozenset({"for", "while", "do", EACH_STATEMENT, "try"})
 VIRTUAL = "\x01"  # marks a call that may dispatch to an override, while sites are read
 
 
@@ -342,7 +342,7 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
             if place in wanted and found[place][1] is None:
                 found[place] = (wanted[place], tuple(
                     c for c in conditions
-                    if c.kind == "source" and c.statement not in _NOT_CARRIED))
+                    if c.kind == "source" and c.statement not in NOT_CARRIED))
                 left -= 1
         stack.extend(reader.below(node, conditions))
     return found

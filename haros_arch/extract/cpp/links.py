@@ -98,6 +98,10 @@ DEFINED = -16
 # a global handle (a variable's USR) that the unit's own source writes once
 # (``global_facts``), which another unit declares ``extern`` and never writes
 MEMBER = -17
+# the start of a ``PrimitiveCall.built_in`` that names a class (by its USR), not a
+# constructor: a method's calls exist where objects of the class are built, under the
+# conditions every construction of it in the node's files shares (``_built_under``)
+CLASS_BUILT = "class:"
 # the index of a fact that says the call site (the fact's site) is in the constructor whose
 # USR is the fact's value, which its unit never calls: where no file of the node calls it
 # either, the site passes nothing (``NodeFacts.idle``)
@@ -423,7 +427,7 @@ class NodeFacts:
 
     @functools.cached_property
     def constructed(self) -> set[str | None]:
-        return {class_of(usr) for usr in self.called if _constructor(usr)}
+        return {class_of(usr) for usr in self.called if is_constructor_usr(usr)}
 
     @functools.cached_property
     def run(self) -> set[str]:
@@ -783,7 +787,7 @@ def constructor_unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[
     """Whether a USR is a constructor no file of the node calls, whose class no error may
     hide (``_expand``)."""
     def unbuilt(usr: str) -> bool:
-        return _constructor(usr) and usr not in known.called and "*" not in unseen and (
+        return is_constructor_usr(usr) and usr not in known.called and "*" not in unseen and (
             class_of(usr) not in unseen)
     return unbuilt
 
@@ -792,7 +796,7 @@ def construction_unseen(unseen: Collection[str]) -> Callable[[str], bool]:
     """Whether a USR is a constructor whose class the errors the parse left may construct
     unseen (its name among their words ``unseen``; any, ``*``)."""
     def hidden(usr: str) -> bool:
-        return _constructor(usr) and ("*" in unseen or class_of(usr) in unseen)
+        return is_constructor_usr(usr) and ("*" in unseen or class_of(usr) in unseen)
     return hidden
 
 
@@ -855,12 +859,12 @@ def constructor_marked(text: str) -> str | None:
     constructions name its specialisations) a placeholder in ``text`` names."""
     for found in _MARK.finditer(text):
         usr = found.group(1)
-        if _constructor(usr) and "@ST>" not in usr and "@SP>" not in usr:
+        if is_constructor_usr(usr) and "@ST>" not in usr and "@SP>" not in usr:
             return usr
     return None
 
 
-def _constructor(usr: str) -> bool:
+def is_constructor_usr(usr: str) -> bool:
     """Whether a USR is a constructor's (its function named as its class)."""
     cls, function = class_of(usr), _FUNCTION.findall(usr)
     return cls is not None and bool(function) and function[-1] == cls

@@ -735,6 +735,28 @@ class CallFinder:
                    and opaque_constructor(node, self.owned) is not None
                    for node in (function.walk_preorder() if nodes is None else nodes)))
 
+    def _built_class(self, function: Cursor) -> str | None:
+        """``links.CLASS_BUILT`` and the class's USR for a method (not static) of a class
+        (not a class template) that declares constructors, none of which this unit
+        calls: the method runs on objects built in the node's other files, its calls
+        under what every such construction shares (navigation2's collision monitor
+        builds its ``VelocityPolygon`` only ``if (polygon_type == "velocity_polygon")``,
+        whose ``getParameters`` reads ``velocity_polygons``); else None."""
+        if function.kind != CursorKind.CXX_METHOD or function.is_static_method() or (
+                self.sites is None):
+            return None
+        owner = function.semantic_parent
+        definition = owner.get_definition() if owner is not None and owner.kind in (
+            CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL) else None
+        if definition is None:
+            return None
+        constructors = [c for c in definition.get_children()
+                        if c.kind == CursorKind.CONSTRUCTOR]
+        if not constructors or any(self.sites.callers(c) for c in constructors):
+            return None
+        usr = definition.get_usr()
+        return f"{links.CLASS_BUILT}{usr}" if usr else None
+
     def _scope_of(self, function: Cursor) -> Scope:
         """The scope of ``function``'s body: the unit's one (``CallSites.scope``), whose
         writes are read from the body once, whichever walk asks first."""
@@ -768,7 +790,8 @@ class CallFinder:
         # nowhere leaves them to the node's other files (``built_in``)
         made_under = self._constructed_under(function, 0)
         built_in = self._constructor[0] if self._constructor is not None and (
-            self.sites is not None and not self.sites.callers(function)) else None
+            self.sites is not None and not self.sites.callers(function)) else (
+            self._built_class(function))
         # main(argc, argv): its conditions over them are over the program's arguments (set
         # after the construction sites, whose walk enters their own functions)
         self._enter(function, scope)
