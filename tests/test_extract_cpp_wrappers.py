@@ -376,11 +376,12 @@ def test_an_overload_chain_gives_one_declaration_and_read_per_call(tmp_path) -> 
     result = _with_nav_common(tmp_path, "smoother.cpp", DECLARE_OR_GET)
     found = sorted((c.kind, c.name, c.type, c.default, c.variable) for c in result.calls
                    if c.kind in ("declare", "read"))
+    # (the reads typed as the template returns them: ``ParamType``, bool and string)
     assert found == [
         ("declare", "enable_stamped", "bool", True, "stamped_"),
         ("declare", "feedback", "str", "OPEN_LOOP", None),
-        ("read", "enable_stamped", None, None, "stamped_"),
-        ("read", "feedback", None, None, None),
+        ("read", "enable_stamped", "bool", None, "stamped_"),
+        ("read", "feedback", "str", None, None),
     ]
 
 

@@ -115,3 +115,63 @@ def test_the_graph_decides_each_element_by_its_own_parameter(write_tree) -> None
         ("parameter-read-not-set", ["parameter:/monitor/Stop.radius"]),
         ("parameter-set-not-read", ["parameter:/monitor/Stop.raduis"]),
     ], found
+
+
+WRAPPED = """
+#include <rclcpp/rclcpp.hpp>
+template<typename ParameterT, typename NodeT>
+inline ParameterT declare_or_get(NodeT node, const std::string & parameter_name)
+{
+  if (node->has_parameter(parameter_name)) {
+    return node->get_parameter(parameter_name).template get_value<ParameterT>();
+  }
+  auto param_type = rclcpp::ParameterValue{ParameterT{}}.get_type();
+  auto parameter = node->declare_parameter(parameter_name, param_type);
+  return parameter.template get<ParameterT>();
+}
+class Monitor : public rclcpp::Node {
+public:
+  Monitor() : rclcpp::Node("monitor") {
+    std::vector<std::string> names = declare_parameter<std::vector<std::string>>(
+      "polygons", std::vector<std::string>());
+    for (const std::string & polygon_name : names) {
+      const std::string polygon_type =
+        declare_or_get<std::string>(this, polygon_name + ".type");
+      if (polygon_type == "circle") {
+        declare_parameter<double>(polygon_name + ".radius");
+      } else if (polygon_type == "polygon") {
+        declare_parameter<std::vector<double>>(polygon_name + ".points");
+      }
+    }
+  }
+};
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Monitor>());
+}
+"""
+
+
+def test_a_wrapper_returning_the_value_types_the_read(write_tree) -> None:
+    """navigation2 reads the type through its ``declare_or_get_parameter<std::string>``,
+    which declares by ``rclcpp::ParameterValue{ParameterT{}}.get_type()``: the read is
+    of the type the call returns, so the configured string decides the tests."""
+    root = write_tree({"cm/package.xml": package_xml("cm", "ament_cmake"),
+                       "cm/CMakeLists.txt": CMAKE, "cm/src/monitor.cpp": WRAPPED,
+                       "cm/launch/monitor.launch.py": LAUNCH,
+                       "cm/config/monitor.yaml": PARAMS.replace(
+                           "    Third:\n      points", "    Third:\n      type: polygon\n"
+                           "      points")})
+    result = extract_cpp([str(root / "cm" / "src" / "monitor.cpp")], scan([str(root)]),
+                         cache_dir=None, distro="jazzy")
+    assert {(c.kind, c.type) for c in result.calls if c.name == "?.type"} == {
+        ("read", "str"), ("declare", "str")}
+    out = root / "check.json"
+    main(["check", str(root), "--format", "json", "-o", str(out), "--fail-on", "never"])
+    found = sorted((f["rule"], f["entities"])
+                   for f in json.loads(out.read_text())["findings"]
+                   if f["rule"].startswith("parameter-"))
+    assert found == [
+        ("parameter-read-not-set", ["parameter:/monitor/Stop.radius"]),
+        ("parameter-set-not-read", ["parameter:/monitor/Stop.raduis"]),
+    ], found

@@ -29,6 +29,7 @@ from .values import (
     _plain_value,
     initializer,
     key_of,
+    render,
     written_arguments,
 )
 from .writes import default_constructed, out_argument, parameter_callback, writes_of
@@ -184,6 +185,35 @@ class CallSites:
         if not self.external or not usr or PLACEHOLDER in usr or SEPARATOR in usr:
             return None
         return f"{PLACEHOLDER}{usr}{SEPARATOR}0{PLACEHOLDER}"
+
+    def member_elsewhere(self, field: Cursor) -> str | None:
+        """The placeholder of a string member ``field`` that no function of this unit
+        writes and whose class's constructors are all defined in other files: the value
+        those give it (``links.MEMBER``; navigation2's ``Source::source_name_``, set in
+        source.cpp from the constructor's parameter, read in pointcloud.cpp), when a
+        constructor of the class takes a string; None otherwise: constructors that
+        take none can give it only a constant, and what names it is another method's
+        write (navigation2's ``Layer()`` leaves ``name_`` to ``initialize(..., name,
+        ...)``, which the plugin hosts call with the layer's name)."""
+        if field.kind != CursorKind.FIELD_DECL or msg_types.param_type(field.type) != "str" or (
+                not constructed_elsewhere(field, self.source)) or self.written(field) or (
+                not _takes_string(field.semantic_parent)):
+            return None
+        return self.member_placeholder(field)
+
+    def constructed_text(self, field: Cursor) -> str | None:
+        """The text every constructor of ``field``'s class defined in this unit gives
+        the string member (a constructor's parameters as placeholders), when each writes
+        it and all agree, and no other function writes it (``written``); else None."""
+        if self.written(field):
+            return None
+        options = self._members.get(key_of(field))
+        if options is None:
+            options = self._members[key_of(field)] = constructor_values(field, self.source)
+        texts = {render(self.scope(constructor).string(value)) if value is not None else "?"
+                 for value, constructor in options}
+        text = texts.pop() if len(texts) == 1 else "?"
+        return None if "?" in text else text
 
     def placeholder(self, parm: Cursor) -> str | None:
         """The placeholder part of ``parm`` (None for a parameter of no function)."""
@@ -509,6 +539,16 @@ class CallSites:
                 if not todo:
                     break
         return self._index
+
+
+def _takes_string(cls: Cursor | None) -> bool:
+    """Whether a constructor the class ``cls`` declares takes a string parameter."""
+    definition = cls.get_definition() if cls is not None else None
+    return definition is not None and any(
+        msg_types.param_type(parm.type) == "str"
+        for constructor in definition.get_children()
+        if constructor.kind == CursorKind.CONSTRUCTOR
+        for parm in constructor.get_children() if parm.kind == CursorKind.PARM_DECL)
 
 
 def base_keys(cls: Cursor, depth: int = 0, named: bool = False) -> set[tuple[str, int]]:

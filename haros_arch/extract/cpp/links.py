@@ -602,9 +602,20 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 made = _on_each_node(made, [node_filled], known.within, unbuilt, call)[0]
             out.append(made)
             if "?" in made.name:
-                found.append(diag.make("CPP_DYNAMIC_NAME", made.location, kind=made.kind,
-                                       name=made.name))
+                members = _fields_marked(written)
+                found.append(diag.make(
+                    "CPP_NAME_MEMBER_ELSEWHERE", made.location, kind=made.kind,
+                    name=made.name, member=", ".join(members)) if members else diag.make(
+                    "CPP_DYNAMIC_NAME", made.location, kind=made.kind, name=made.name))
     return out, found
+
+
+def _fields_marked(text: str) -> list[str]:
+    """``Class::member`` for each member placeholder in ``text`` (``CallSites.
+    member_elsewhere``): a member whose class's constructors are in files of the node
+    that give it no value this run can tell."""
+    return [f"{class_of(usr) or '?'}::{usr.rsplit('@FI@', 1)[1]}"
+            for usr in sorted(marked_usrs(text)) if "@FI@" in usr]
 
 
 _PARAM_SPLIT = "\x0e"  # before the name parameter expanded with a call's name
@@ -722,9 +733,13 @@ def _rejoined(namespace: str) -> str:
 
 def _param_text(param: str) -> str:
     """A ``name_param`` whose namespace is a placeholder, split after it for
-    ``_param_joined``."""
+    ``_param_joined``; one that a placeholder starts with no ``/`` after it (a string
+    member's text, ``Layer::name_`` then ``.observation_sources``) is one text."""
     mark = _MARK.match(param)
-    return f"{param[:mark.end()]}{_SPLIT}{param[mark.end():].lstrip('/')}" if mark else param
+    rest = param[mark.end():] if mark else ""
+    if mark is None or (rest and not rest.startswith("/")):
+        return param
+    return f"{param[:mark.end()]}{_SPLIT}{rest.lstrip('/')}"
 
 
 def _param_joined(filled: str) -> str:

@@ -1013,6 +1013,9 @@ class Scope:
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
             found = self.held(cursor, decl, depth)
             if found is None and self.sites is not None:
+                elsewhere = self.sites.member_elsewhere(decl)
+                if elsewhere is not None:  # what the files of its constructors give it
+                    return (elsewhere,)
                 self.sites.unset(decl)  # why the name is unknown (``CallSites.unset``)
             return UNKNOWN if found is None else found[1].string(found[0], depth + 1)
         if _ARGUMENTS[0] and (kind == CursorKind.ARRAY_SUBSCRIPT_EXPR or (

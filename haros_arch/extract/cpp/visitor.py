@@ -17,7 +17,7 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type, TypeKind
+from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type, TypeKind, conf
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -481,7 +481,7 @@ class CallFinder:
         self.facts.extend(links.opaque_facts(self.functions, self.tu.spelling,
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
-                                             self._member_namespace))
+                                             self._member_value))
         self.facts.extend(links.global_facts(
             ((usr, render(parts)) for usr, parts in self.namespaces.global_handles(self.tu)),
             self.tu.spelling))
@@ -563,13 +563,17 @@ class CallFinder:
                 if name and name != owner:
                     yield owner, name
 
-    def _member_namespace(self, field: Cursor) -> str | None:
-        """The namespace of a handle member, as the unit's constructors of its class give
-        it (``links.member_facts``); None for a member that holds no handle, by value or
-        as a reference bound by the constructors."""
-        if not holds_handle(field) and not binds_handle(field):
+    def _member_value(self, field: Cursor) -> str | None:
+        """The namespace of a handle member, or the text of a string member, as the
+        unit's constructors of its class give it (``links.member_facts``; a string's
+        with a constructor's parameters as placeholders, ``CallSites.member_elsewhere``);
+        None for any other member, and for a string no constructor gives a known value
+        or another function writes."""
+        if holds_handle(field) or binds_handle(field):
+            return render(self.namespaces.member(field, None))
+        if msg_types.param_type(field.type) != "str" or self.sites is None:
             return None
-        return render(self.namespaces.member(field, None))
+        return self.sites.constructed_text(field)
 
     def unit_cursor(self) -> Any:
         """The unit's cursor as a node (``run``), until ``release``."""
@@ -1955,6 +1959,15 @@ class CallFinder:
             ctype = self._per_construction_type(function, [n for n, _ in names])
         if ctype is None and spec.kind == "read":
             ctype = self._taken_as.get(place_of(call))
+        if ctype is None and spec.kind in ("read", "declare") and (
+            site.kind == CursorKind.CALL_EXPR and site.spelling in self.wrappers.names
+            and _returns_its_parameter_type(site)
+        ):
+            # a wrapper function template that returns a value of its template parameter
+            # (navigation2's ``declare_or_get_parameter<std::string>(node, name)``, which
+            # declares by ``rclcpp::ParameterValue{ParameterT{}}.get_type()``): the type
+            # its call returns here
+            ctype = msg_types.param_type(site.type)
         qos = None
         queue = scope.integer(arg(spec.queue_arg)) if arg(spec.queue_arg) is not None else None
         if self.ros2 and arg(spec.qos_arg) is not None:
@@ -3573,6 +3586,23 @@ def _literal(expr: Cursor, scope: Scope) -> object:
 MAX_LIST_DEPTH = 12  # the wrappers between an argument and its braced list
 MAX_CHOICE_DEPTH = 4  # the locals between a name argument and its ``?:``
 MAX_CHOICE_NODES = 200  # the expression nodes read for the ``?:`` a name holds
+
+
+def _returns_its_parameter_type(call: Cursor) -> bool:
+    """Whether ``call`` calls a specialisation of a function template whose declared
+    return type is one of the template's type parameters (``template<typename T> T
+    get(node, name)``)."""
+    callee = call.referenced
+    template = conf.lib.clang_getSpecializedCursorTemplate(callee) if callee is not None \
+        else None
+    if template is None or template.kind != CursorKind.FUNCTION_TEMPLATE:
+        return False
+    returned = template.result_type
+    if returned.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        returned = returned.get_pointee()
+    spelled = returned.spelling.removeprefix("const ").strip()
+    return any(c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER and c.spelling == spelled
+               for c in template.get_children())
 
 
 def _scalar(ctype: Type) -> bool:
