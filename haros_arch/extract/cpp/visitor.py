@@ -2544,6 +2544,21 @@ class CallFinder:
             listed = self._parameter_source(over, scope, 0)
             return (listed[0] if listed is not None else None,
                     (walk.location.line, walk.location.column), mark)
+        if expr.kind == CursorKind.MEMBER_REF_EXPR and expr.referenced is not None and (
+            expr.referenced.kind == CursorKind.FIELD_DECL and scope.sites is not None
+        ):
+            # a member its class's constructor in this file keeps from its parameter,
+            # which each construction passes an element (a ``Polygon(node, name)`` per
+            # element of ``polygons``, reading ``name_ + ".points"``)
+            held = scope.field(expr.referenced)
+            if held is None:
+                return None
+            value = strip(held[0])
+            inner = [c for c in value.get_children() if c.kind.is_expression()]
+            if value.kind == CursorKind.CALL_EXPR and value.referenced is not None and (
+                    value.referenced.kind == CursorKind.CONSTRUCTOR and len(inner) == 1):
+                value = inner[0]  # the string's copy: ``name_(name)``
+            return self._each_element(value, held[1], depth + 1)
         decl = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
         if decl is None:
             return None
