@@ -424,8 +424,9 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     facts = [fact for unit in units for fact in unit.facts]
     # where a construction may be missed: the words of the code around the errors the
     # parse left (an error drops its statement), everywhere when a file was not read
-    unseen = {word for unit in units for word in unit.unseen} | links.opaque_unseen(
-        facts) if complete else {"*"}
+    read = {owner for unit in units for owner in unit.defines}
+    unseen = {word for unit in units for word in _unit_unseen(unit, read)} | (
+        links.opaque_unseen(facts)) if complete else {"*"}
     built = _built_under(facts, _building_unseen(units, facts) if complete else unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
     called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen),
@@ -521,6 +522,22 @@ def _members_named(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:
                 name_default=default, default_param=other_param)
         out.append(call)
     return out
+
+
+def _unit_unseen(unit: CppResult, read: set[str]) -> list[str]:
+    """The words where a unit's errors may hide a construction (``CppResult.unseen``);
+    for a unit whose ``*`` comes only from handing its node to classes of another
+    package (``CPP_NODE_PASSED``) whose code a unit of this node holds (``read``: a
+    library it links; navigation2's behavior server gives itself to costmap_2d's
+    ``CostmapSubscriber``, read from costmap_subscriber.cpp), what its errors hide
+    (``CppResult.hidden``): that code's calls are the node's, read, not unseen."""
+    if unit.unseen != ["*"] or not unit.passed or "" in unit.handed or (
+        unit.hidden == ["*"]
+    ) or any(cls not in read for _, cls in unit.passed) or (
+        set(unit.handed) - {owner for owner, _ in unit.passed}
+    ) or any(d.code in ("CPP_NODE_TO_UNKNOWN", "CPP_NODE_UNREAD") for d in unit.diagnostics):
+        return unit.unseen
+    return unit.hidden
 
 
 def _building_unseen(units: list[CppResult], facts: list[links.Fact]) -> set[str]:
