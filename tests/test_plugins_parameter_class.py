@@ -88,7 +88,7 @@ LAUNCH = """
 
 def _analyse(write_tree: Any, params: str = "",
              load_call: str = "loader.createSharedInstance(solver_plugin)",
-             ) -> tuple[Any, Any]:
+             host: str | None = None) -> tuple[Any, Any]:
     manifest = package_xml("demo", "ament_cmake").replace("</package>", "".join(
         f"<depend>{d}</depend>" for d in ("rclcpp", "pluginlib", "std_msgs")) + "</package>")
     root = write_tree({
@@ -108,7 +108,7 @@ def _analyse(write_tree: Any, params: str = "",
         "src/demo/plugins.xml": PLUGINS_XML,
         "src/demo/include/demo/solver.hpp": SOLVER_H,
         "src/demo/src/fast_solver.cpp": FAST,
-        "src/demo/src/host.cpp": HOST.replace("LOAD", load_call),
+        "src/demo/src/host.cpp": (host or HOST).replace("LOAD", load_call),
         "src/demo/launch/demo.launch.xml": LAUNCH.format(params=params),
         "project.yaml": ("project: p\nworkspace: [src]\ndistro: jazzy\nconfigurations:\n"
                          "  c: [demo/launch/demo.launch.xml]\n"),
@@ -135,6 +135,46 @@ def test_the_default_class_makes_its_calls_on_the_node(write_tree: Any) -> None:
     assert ("read", "/host/solver_plugin") in links
     assert ("publish", "/solver_status") in links
     assert ("read", "/host/fast_gain") in links  # a declaration links as a read
+
+
+DECLARED_APART = """
+    #include <memory>
+    #include <string>
+    #include <rclcpp/rclcpp.hpp>
+    #include <pluginlib/class_loader.hpp>
+    #include "demo/solver.hpp"
+
+    void declare_if_not_declared(rclcpp::Node::SharedPtr node, const std::string & name,
+                                 const rclcpp::ParameterValue & value) {
+      if (!node->has_parameter(name)) {
+        node->declare_parameter(name, value);
+      }
+    }
+
+    int main(int argc, char** argv) {
+      rclcpp::init(argc, argv);
+      auto node = std::make_shared<rclcpp::Node>("host");
+      pluginlib::ClassLoader<demo::Solver> loader("demo", "demo::Solver");
+      declare_if_not_declared(node, "solver_plugin",
+                              rclcpp::ParameterValue(std::string("demo::FastSolver")));
+      std::string solver_plugin;
+      node->get_parameter("solver_plugin", solver_plugin);
+      std::shared_ptr<demo::Solver> solver = LOAD;
+      solver->configure(node);
+      rclcpp::spin(node);
+    }
+    """
+
+
+def test_the_default_a_separate_declaration_gives_names_the_class(write_tree: Any) -> None:
+    """navigation2's DWB (2023) declares ``<name>.trajectory_generator_name`` with its
+    default through ``declare_parameter_if_not_declared`` and reads it into a local with
+    ``get_parameter(name, out)``, which has no default of its own: the declaration's is
+    the class loaded (was: partial, "not set and has no default")."""
+    _model, config = _analyse(write_tree, host=DECLARED_APART)
+    instance = next(n for n in config.nodes if n.name == "/host")
+    assert instance.completeness == "complete", instance.completeness_reasons
+    assert ("publish", "/solver_status") in _links(config, "/host")
 
 
 def test_the_class_the_launch_sets_is_loaded_and_one_not_found_is_said(

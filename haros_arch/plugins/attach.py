@@ -959,6 +959,16 @@ def _class_load(instance: NodeInstance, call: PrimitiveCall, full: str, params: 
     if _host_slot_reads(instance, full):
         return []  # the host's row loads it, with the plugin name and placement it knows
     default = call.default if isinstance(call.default, str) and call.default else None
+    if default is None and instance.ros_version == 2:
+        # a ROS 2 read without a default gets what the node's declarations of that
+        # parameter give it (navigation2's ``declare_parameter_if_not_declared(node,
+        # name + ".trajectory_generator_name", ParameterValue(std::string("dwb_plugins::
+        # StandardTrajectoryGenerator")))``, then ``get_parameter(name, out)``)
+        declared = {link.call.default for link in instance.links
+                    if link.call is not None and link.call.kind == "declare"
+                    and link.resource is not None and link.resource.name == full
+                    and isinstance(link.call.default, str) and link.call.default}
+        default = declared.pop() if len(declared) == 1 else None
     # the name the parameter's name is made of (an element of a list, nav2's
     # ``<id>.plugin``; a plugin's name) is the one the class is given
     # (``plugin->configure(node, ids[i])``)
