@@ -837,6 +837,16 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         if filled.strip("/~"):  # an empty value is no name (a ``?`` alone given "")
             call = replace(call, name=filled, name_option=None)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
+        # a parameter named by another one's value (navigation2's route server reads
+        # ``<value of graph_file_loader>.plugin``, default ``GeoJsonGraphFileLoader``):
+        # that value, a name's piece; none known (or a list's elements): the ``?``
+        if call.name_param is not None and call.name_each is None and not call.name_more \
+                and call.name.count(UNKNOWN_MARK) == 1 and not call.name_param.startswith(
+                    ROS_ARGUMENT):
+            value = _parameter_value(call.name_param, call.name_default, instance, resources)
+            if value and UNKNOWN_MARK not in value and "/" not in value and (
+                    value.strip() == value):
+                return _node_scoped(_filled(call.name, value))
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
         return call.name
