@@ -328,3 +328,62 @@ def test_a_host_rows_own_slot_is_left_to_the_row() -> None:
     assert not _host_slot_reads(host, "/move_base_extra/base_local_planner")
     other = NodeInstance("/slam", Node("slam", "slam_node", sources=["a.cpp"]))
     assert not _host_slot_reads(other, "/slam/solver_plugin")
+
+
+NAMED_BY_ID = """
+    #include <memory>
+    #include <string>
+    #include <rclcpp/rclcpp.hpp>
+    #include <pluginlib/class_loader.hpp>
+    #include "demo/solver.hpp"
+
+    std::string get_plugin_type_param(rclcpp::Node::SharedPtr node, const std::string & id) {
+      if (!node->has_parameter(id + ".plugin")) {
+        node->declare_parameter(id + ".plugin", rclcpp::PARAMETER_STRING);
+      }
+      std::string plugin_type;
+      node->get_parameter(id + ".plugin", plugin_type);
+      return plugin_type;
+    }
+
+    class Loader {
+     public:
+      explicit Loader(rclcpp::Node::SharedPtr node)
+      : loader_("demo", "demo::Solver"), default_id_("Fast") {
+        auto id = node->declare_parameter("solver_id", default_id_);
+        if (id == default_id_) {
+          node->declare_parameter(default_id_ + ".plugin", std::string("demo::FastSolver"));
+        }
+        plugin_type_ = get_plugin_type_param(node, id);
+        solver_ = loader_.createSharedInstance(plugin_type_);
+        solver_->configure(node);
+      }
+     private:
+      pluginlib::ClassLoader<demo::Solver> loader_;
+      std::string default_id_;
+      std::string plugin_type_;
+      std::shared_ptr<demo::Solver> solver_;
+    };
+
+    int main(int argc, char** argv) {
+      rclcpp::init(argc, argv);
+      auto node = std::make_shared<rclcpp::Node>("host");
+      Loader loader(node);
+      rclcpp::spin(node);
+    }
+    """
+
+
+def test_a_class_named_by_a_parameter_another_names(write_tree: Any) -> None:
+    """navigation2's route server: ``plugin_type_ = get_plugin_type_param(node, id)``
+    reads ``<id>.plugin``, ``id`` the value of ``graph_file_loader`` (default
+    ``GeoJsonGraphFileLoader``, whose ``.plugin`` the code declares with its class),
+    then ``createSharedInstance(plugin_type_)``: the class that parameter names, in the
+    configuration or by the declaration's default, is loaded (was: partial, "loads
+    plugin classes by name")."""
+    _model, config = _analyse(write_tree, host=NAMED_BY_ID)
+    instance = next(n for n in config.nodes if n.name == "/host")
+    assert instance.completeness == "complete", instance.completeness_reasons
+    links = _links(config, "/host")
+    assert ("read", "/host/Fast.plugin") in links
+    assert ("publish", "/solver_status") in links

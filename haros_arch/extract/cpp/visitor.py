@@ -2201,28 +2201,41 @@ class CallFinder:
                 kind="read", name=source[0], type="str", conditions=conditions,
                 location=location, has_default=source[1] is not None, default=source[1],
                 loads=loads, node_name=self._owner,
-                name_param=each[0] if each else None, name_each=each[1] if each else None))
+                name_param=each[0] if each else None, name_each=each[1] if each else None,
+                name_default=each[3] if each else None))
 
     def _read_element(self, name: str, expr: Cursor | None, scope: Scope | None,
-                      ) -> tuple[str, str, list[Location]] | None:
-        """(the list parameter, ``name_each``, the places of the loops over it) of the
-        read named ``name`` whose value the variable ``expr`` holds, when that read's
+                      ) -> tuple[str, str | None, list[Location], str | None] | None:
+        """(the list parameter, ``name_each``, the places of the loops over it, None) of
+        the read named ``name`` whose value the variable ``expr`` holds, when that read's
         name holds each element of the list in turn: the read this unit emitted where
-        the variable's value is computed."""
+        the variable's value is computed; or (the parameter, None, [], its default) when
+        that read's name holds another parameter's value (navigation2's route server:
+        ``plugin_type_ = get_plugin_type_param(node, graph_file_loader_id)``, a member,
+        reads ``<value of graph_file_loader>.plugin``)."""
         if expr is None or scope is None:
             return None
         expr = strip(expr)
-        decl = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
-        value = scope.variable(decl) if decl is not None else None
+        decl = expr.referenced if expr.kind in (
+            CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+        value = None
+        if decl is not None and decl.kind == CursorKind.VAR_DECL:
+            value = scope.variable(decl)
+        elif decl is not None and decl.kind == CursorKind.FIELD_DECL:
+            value = scope.assigned(decl, expr)
         if value is None:
             return None
         where = self.where(value)
         for call in reversed(self.calls):
             if call.kind == "read" and call.name == name and call.name_param and (
-                    call.name_each == EACH) and call.location.file == where.file and (
-                    call.location.line == where.line):
-                return call.name_param, call.name_each, [
-                    c.location for c in call.conditions if c.statement == EACH_STATEMENT]
+                    call.location.file == where.file and call.location.line == where.line):
+                if call.name_each == EACH:
+                    return call.name_param, call.name_each, [
+                        c.location for c in call.conditions
+                        if c.statement == EACH_STATEMENT], None
+                if call.name_each is None and not call.name_more and (
+                        name.count(UNKNOWN_MARK) == 1):
+                    return call.name_param, None, [], call.name_default
         return None
 
     def _reconfigured(self, call: Cursor, cls: Cursor | None, name: str,
