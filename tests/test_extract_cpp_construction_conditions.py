@@ -83,13 +83,16 @@ def test_a_constructor_s_calls_carry_its_construction_s_conditions(write_tree) -
     root = write_tree({"mapping/package.xml": package_xml("mapping"),
                        "mapping/src/drawings.h": DRAWINGS,
                        "mapping/src/mapping.cpp": NODE,
-                       "mapping/src/alone.cpp": '#include "drawings.h"\n'})
+                       # (it names the class: what a unit does not name is not walked
+                       # there, ``extract.cpp.reach``)
+                       "mapping/src/alone.cpp": '#include "drawings.h"\n'
+                                                'void keep(Drawings * drawings);\n'})
     found = _conditions(root, "mapping.cpp")
     # made under two different conditions: none of them is the constructor's; made
     # under two branches of one loop: the loop's is
     assert found["marker"] == []
     assert found["level"] == ["for int i = 0; i < levels_; ++i"]
-    # a file that constructs the class nowhere: its calls as they are
+    # a file that names the class but constructs it nowhere: its calls as they are
     assert _conditions(root, "alone.cpp") == {"marker": []}
 
 

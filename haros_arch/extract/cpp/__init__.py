@@ -1349,6 +1349,12 @@ def _translation_unit(path: str, text: str, ros2: bool,
                     (setup.generated + os.sep, STANDIN + os.sep)))
         return found
 
+    package = workspace.package_of(path)
+    home = package.root + os.sep if package is not None and package.root else None
+
+    def local(name: str) -> bool:  # a file of the unit's own package (``reach``)
+        return home is None or os.path.abspath(name).startswith(home)
+
     def where(cursor: Cursor) -> Location:
         loc = cursor.location
         if loc.file is None:
@@ -1380,7 +1386,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
         read: list[str] = []  # the workspace files the ROS 1 client test reads
         finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
                             clients=None if ros2 else ros1_clients(
-                                path, workspace, setup.generated, read))
+                                path, workspace, setup.generated, read), local=local)
         finder.run()
         places = _Places(finder, source)
         hidden = _hidden(path, errors, places, fieldless, workspace)
@@ -1525,6 +1531,11 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         functions.setdefault(name, []).append((start.line, end.line, function.spelling))
         if function.kind != CursorKind.FIELD_DECL and finder.wrappers.silent(function):
             silent.setdefault(name, []).append((start.line, end.line))
+    for function in finder.unreached:  # code that does not run in this unit
+        start, end = function.extent.start, function.extent.end
+        if start.file is not None:
+            silent.setdefault(os.path.abspath(start.file.name), []).append(
+                (start.line, end.line))
     for function in finder.wrappers.silent_lambdas():
         start, end = function.extent.start, function.extent.end
         if start.file is not None:

@@ -83,6 +83,7 @@ from .owners import (
     unseen_construction,
 )
 from .qos import qos as qos_of
+from .reach import CLASSES, reachable
 from .tested import Key, TestedCalls, unit_tested
 from .tested import key as key_of
 from .values import (
@@ -254,6 +255,8 @@ _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.H
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 MAX_WRAPPED = 4  # wrappers of wrappers whose returned value is followed (_gives_value)
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
+_ALIASES = frozenset({CursorKind.TYPEDEF_DECL, CursorKind.TYPE_ALIAS_DECL,
+                      CursorKind.TYPE_ALIAS_TEMPLATE_DECL})
 _PREPROCESSED = frozenset({CursorKind.MACRO_INSTANTIATION, CursorKind.INCLUSION_DIRECTIVE})
 _PARAM_KINDS = ("read", "declare")
 CAMERA_INFO = "sensor_msgs/CameraInfo"  # an image_transport camera's sibling topic
@@ -298,8 +301,11 @@ class CallFinder:
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
                  ros2: bool = False, declared: str | None = None,
-                 clients: Callable[[str, str], str | None] | None = None) -> None:
+                 clients: Callable[[str, str], str | None] | None = None,
+                 local: Callable[[str], bool] | None = None) -> None:
         self.tu = tu
+        # whether a file is of the unit's own package (``reachable``; None: every file)
+        self.local = local or (lambda _name: True)
         # ROS 1: whether a class of a package (both by name) may make ROS calls in code
         # of its own, not handed the node (``_unseen_class``); None in ROS 2
         self.clients = clients
@@ -327,10 +333,14 @@ class CallFinder:
         self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
         self.functions: list[Cursor] = []
+        # the definitions of its headers the unit's code does not reach (``reachable``)
+        self.unreached: list[Cursor] = []
         # the variables outside functions whose initialisers may use a function
         # (``std::map<std::string, Handler> handlers = {{"a", &readA}}``): read for
         # ``call_conditions.site_facts``' uses only
         self.globals: list[Cursor] = []
+        # the class and macro definitions of the workspace's files by name (``reachable``)
+        self._texts: dict[bytes, list[Cursor]] = {}
         # (file, line) of the calls of an API function's name that the parse resolved,
         # ROS or not (``set_parameters`` of a parameter client): read, so not hidden
         self.resolved: set[tuple[str, int]] = set()
@@ -422,7 +432,12 @@ class CallFinder:
 
     def run(self) -> None:
         self._root = self.namespaces.unit_root = root(self.tu)
-        self.functions = list(self._definitions(self._root, top=True))
+        # (what the unit's own code cannot reach by name is left to the units that do)
+        every = list(self._definitions(self._root, top=True))
+        self.functions = reachable(every, self.tu.spelling, self.source, self.globals,
+                                   self._texts, self.local)
+        kept = {id(f) for f in self.functions}
+        self.unreached = [f for f in every if id(f) not in kept]
         # an object of namespace scope built with arguments (OpenMower's
         # ``StateSubscriber<Status> status_state_subscriber{"/ll/mower_status"};``) calls
         # its constructor as a function's local does: a site of what it passes
@@ -640,6 +655,7 @@ class CallFinder:
             if kind in _PREPROCESSED:
                 self.opaque.append((where.name, cursor.location.offset))
             elif kind == CursorKind.MACRO_DEFINITION:
+                self._texts.setdefault(cursor.spelling.encode(), []).append(cursor)
                 tokens = [t.spelling for t in cursor.get_tokens()]
                 if len(tokens) == 2:
                     self.macros[tokens[0]] = tokens[1]
@@ -656,7 +672,12 @@ class CallFinder:
                 self.types.specialised(cursor.type, parent)
                 if kind == CursorKind.VAR_DECL:
                     self.globals.append(cursor)
+            elif kind in _ALIASES:  # (``reachable``: what naming the alias names)
+                self._texts.setdefault(cursor.spelling.encode(), []).append(cursor)
             elif kind in CONTAINERS:
+                if kind in CLASSES and cursor.is_definition():
+                    self._texts.setdefault(cursor.spelling.split("<")[0].encode(),
+                                           []).append(cursor)
                 if cursor.spelling in ("TypeAdapter", "ImplicitTypeAdapter"):
                     self.types.adapter(cursor)
                 yield from self._definitions(cursor)
