@@ -130,12 +130,13 @@ def reachable(functions: list[Cursor], main: str, source: Any, roots: Iterable[C
             names |= _words(source, function)
         else:
             pending.append((function, _key(function)))
-    read: set[bytes] = set()  # the names whose definitions' text is in ``names``
+    unread = set(texts)  # the names whose definitions' text is not yet in ``names``
     changed = True
     while changed and pending:
         changed = False
-        for name in [n for n in texts if n in names and n not in read]:
-            read.add(name)
+        named = unread.intersection(names)
+        unread -= named
+        for name in named:
             for definition in texts[name]:
                 names |= _declarations(source, definition)
         left = []
