@@ -12,8 +12,8 @@ body, an alias and a macro the unit writes name what they use in turn. What no s
 chain names is not run by this unit (the units that run it name it, include its header
 and walk it there) and is left out of the walk (``reachable``).
 
-The test errs on the side of walking: any identifier written counts (a comment's, a
-string's, a dead branch's); once its class is named, a constructor, destructor,
+The test errs on the side of walking: any identifier written counts (a string's, a dead
+branch's; not a comment's); once its class is named, a constructor, destructor,
 conversion, operator, field initialiser, static or virtual method counts (code the
 workspace does not hold calls those by convention or through a base: a pluginlib
 host, a BehaviorTree factory's ``providedPorts``), and any other method where its name is
@@ -37,6 +37,31 @@ CLASSES = frozenset({
     CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
 })
 _NAME = re.compile(r"[A-Za-z_]\w*")
+
+
+# a comment (the words of a string literal count: a name may be looked up by it)
+_COMMENTS = re.compile(rb'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//[^\n]*|/\*.*?\*/',
+                       re.DOTALL)
+
+
+class _Code:
+    """The workspace's files by name as the parse read them (``get``), their comments
+    blanked, offsets kept: what a comment names runs nowhere."""
+
+    def __init__(self, source: Any) -> None:
+        self.source = source
+        self.files: dict[str, bytes | None] = {}
+
+    def get(self, name: str) -> bytes | None:
+        if name not in self.files:
+            data = self.source.get(name)
+            self.files[name] = None if data is None else _COMMENTS.sub(_blank, data)
+        return self.files[name]
+
+
+def _blank(match: re.Match[bytes]) -> bytes:
+    text = match.group()
+    return text if text[:1] in (b'"', b"'") else b" " * len(text)
 
 
 def _words(source: Any, cursor: Cursor) -> set[bytes]:
@@ -113,6 +138,7 @@ def reachable(functions: list[Cursor], main: str, source: Any, roots: Iterable[C
     ``source`` gives a file's bytes by name (``get``); ``local``: whether a file is of the
     unit's own package, whose headers are its code (a library source that only includes
     them compiles them), all kept."""
+    source = _Code(source)
     names: set[bytes] = set()
     data = source.get(main)
     if data is not None:

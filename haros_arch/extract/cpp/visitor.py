@@ -673,7 +673,8 @@ class CallFinder:
                 if kind == CursorKind.VAR_DECL:
                     self.globals.append(cursor)
             elif kind in _ALIASES:  # (``reachable``: what naming the alias names)
-                self._texts.setdefault(cursor.spelling.encode(), []).append(cursor)
+                if parent.kind not in CLASSES:  # (a member's is its class's text)
+                    self._texts.setdefault(cursor.spelling.encode(), []).append(cursor)
             elif kind in CONTAINERS:
                 if kind in CLASSES and cursor.is_definition():
                     self._texts.setdefault(cursor.spelling.split("<")[0].encode(),
