@@ -91,6 +91,11 @@ class ConditionReader:
         # the ``try`` conditions whose handlers catch a parameter's failure: a read in the
         # block is prepared for the parameter not being set (``PrimitiveCall.tested``)
         self.handled: set[Condition] = set()
+        # the branches of each control statement read so far, by the statement and the
+        # reading it was read in (``enter``'s ``key``): the walks of a unit read the same
+        # function again (its calls, then each call site's conditions)
+        self._read: dict[tuple[int, int, object], list[Branch]] = {}
+        self._reading: tuple[int, object] | None = None
 
     def below(self, node: Cursor, conditions: tuple[Condition, ...]) -> list[Branch]:
         """The children of ``node``, each with the conditions it runs under inside code
@@ -98,7 +103,15 @@ class ConditionReader:
         its stack to visit them in order."""
         if node.kind not in _CONTROL:
             return [(child, conditions) for child in reversed(list(node.get_children()))]
-        return [(child, conditions + extra) for child, extra in reversed(self.branches(node))]
+        if self._reading is None:
+            branches = self.branches(node)
+        else:
+            key = (id(node), *self._reading)
+            found = self._read.get(key)
+            if found is None:
+                found = self._read[key] = self.branches(node)
+            branches = found
+        return [(child, conditions + extra) for child, extra in reversed(branches)]
 
     def branches(self, node: Cursor) -> list[Branch]:
         kind = node.kind
@@ -370,14 +383,17 @@ class ConditionReader:
     def enter(self, function: Cursor, arguments_left: frozenset[str],
               held: Callable[[Cursor], tuple[tuple[str, str], ...]] | None = None,
               constants: Callable[[Cursor], tuple[tuple[str, int | bool], ...]] | None = None,
-              elements: Callable[[Cursor], tuple[tuple[str, str, str], ...]] | None = None
-              ) -> None:
+              elements: Callable[[Cursor], tuple[tuple[str, str, str], ...]] | None = None,
+              key: object = None) -> None:
         """Read the conditions of ``function`` next: whether it is ``main(argc, argv)``,
         and its local initialised by a call of ``arguments_left`` (rclcpp's
         ``init_and_remove_ros_arguments``), when it has one such local; ``held`` tells
         the locals of a tested expression that hold a parameter's value, ``constants``
         the constants it names with their values, ``elements`` the names that hold each
-        element of a list parameter in turn."""
+        element of a list parameter in turn. ``key``: what ``held``, ``constants`` and
+        ``elements`` answer from (the function's scope of the unit), so that a statement
+        read again in the same reading gives the branches read before; None: read anew."""
+        self._reading = None if key is None else (id(function), key)
         self.held = held
         self.constants = constants
         self.elements = elements

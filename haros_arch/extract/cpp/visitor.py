@@ -622,7 +622,10 @@ class CallFinder:
         self.reader.enter(function, ARGUMENTS_LEFT,
                           functools.partial(self._held_parameters, scope=scope),
                           functools.partial(self._held_constants, scope=scope),
-                          functools.partial(self._held_elements, scope=scope))
+                          functools.partial(self._held_elements, scope=scope),
+                          # (the unit's scope of the function lives as long as the unit)
+                          key=id(scope) if self.sites is not None
+                          and scope is self.sites.scope(function) else None)
 
     def _constants(self, member: Cursor, sites: int, reads: set[Key]) -> list[object] | None:
         """The member's writes in the file besides the reads (``sites`` of them, made at
