@@ -136,3 +136,22 @@ def test_children_of_a_subtree_visit_equal_a_visit_of_each_node():
         for node in top.walk_preorder():
             alone = node._visit_children()  # one visit of this node alone
             assert [bytes(c) for c in node.get_children()] == [bytes(c) for c in alone]
+
+
+def test_a_nodes_writes_are_asked_once_and_are_a_plain_cursors():
+    """``writes.writes_of`` keeps a node's writes on the node (the walks of a unit ask
+    each node again); what it keeps is what a plain cursor of the same place gives."""
+    from haros_arch.extract.cpp.writes import writes_of
+
+    source = {NAME: SOURCE.encode()}
+    tu = _unit()
+    seen = 0
+    for top, plain_top in _main_file_code(tu):
+        for node, plain in _pairs(top, plain_top):
+            found = writes_of(node, source)
+            assert writes_of(node, source) is found  # kept, not read again
+            theirs = writes_of(plain, source)
+            assert [(w.whole, w.target.kind, w.at.kind) for w in found] == [
+                (w.whole, w.target.kind, w.at.kind) for w in theirs]
+            seen += len(found)
+    assert seen >= 6  # total = 0, += v, total = twice(...), total--, box, total = pick

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
+from .cursors import Node
 from .expressions import initializer, qualified_name, strip, written_arguments
 from .synthesis import ANY as ANY_CLASS
 
@@ -54,7 +55,19 @@ class Write:
 
 
 def writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
-    """The writes that ``node`` itself makes (not those of its children)."""
+    """The writes that ``node`` itself makes (not those of its children); a unit's node
+    keeps them (the unit's walks ask each node again: call sites, members, values,
+    conditions), a list not to be changed."""
+    if type(node) is not Node:
+        return _writes_of(node, source)
+    facts = node.__dict__
+    found: list[Write] | None = facts.get("_writes")
+    if found is None:
+        found = facts["_writes"] = _writes_of(node, source)
+    return found
+
+
+def _writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
     kind = node.kind
     if kind == CursorKind.VAR_DECL:
         init = initializer(node)
