@@ -245,10 +245,26 @@ def _analyse(path: str, console: Console, options: Options | None = None
     return analysis
 
 
-def _write(text: str, output: str | None) -> None:
+_RECORDING = [True]  # this command may write to the cache folder (not ``--no-cache``)
+
+
+def _wrote(output: str) -> None:
+    """An output file written: no input of a later run while it is as written (said in
+    the cache folder, which a ``--no-cache`` command leaves alone)."""
+    if _RECORDING[0]:
+        from .runcache import record_output
+
+        record_output(output)
+
+
+def _write(text: str, output: str | None, result: bool = True) -> None:
+    """``text`` into ``output`` (else stdout); ``result``: a command's result, no input
+    of a later run (``_wrote``), as a project file ``init`` writes is."""
     if output:
         with open(output, "w", encoding="utf-8") as handle:
             handle.write(text)
+        if result:
+            _wrote(output)
     else:
         sys.stdout.write(text)
 
@@ -312,6 +328,7 @@ def cmd_check(args: argparse.Namespace, out: Console, err: Console) -> int:
         finally:
             if handle:
                 handle.close()
+                _wrote(args.output)
     return checked.exit_code(args.fail_on)
 
 
@@ -419,7 +436,7 @@ def cmd_init(args: argparse.Namespace, out: Console, err: Console) -> int:
     # the workspace is written relative to the file's folder (stdout: the current one)
     target = os.path.abspath(args.output or "haros-arch.yaml")
     choice.project.path = target
-    _write(project_text(choice), args.output)
+    _write(project_text(choice), args.output, result=False)
     if args.output:
         err.print(f"wrote {escape(args.output)}", highlight=False)
     return EXIT_OK
@@ -531,12 +548,14 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
                 write_page(report_page(analysis.model, findings,
                                        workspace_root(project, args.workspace), project),
                            args.output)
+                _wrote(args.output)
                 out.print(f"wrote {args.output}", highlight=False)
                 return EXIT_OK
             data = model_data(analysis.model)
         live = _live_comparison(data, args.live) if args.live else None
         write_report(data, findings, workspace_root(project, args.workspace), args.output,
                      live)
+        _wrote(args.output)
     except (ProjectError, ReportError) as error:
         err.print(f"haros-arch: {escape(str(error))}", highlight=False)
         return EXIT_USAGE
@@ -696,6 +715,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command != "launch":
         select(getattr(args, "launch", []),
                dict(a.split(":=", 1) for a in getattr(args, "arg", [])))
+    _RECORDING[0] = not getattr(args, "no_cache", False)
     out = make_console()
     err = make_console(stderr=True)
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,

@@ -63,8 +63,54 @@ CPP_FILES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".h", ".hh", ".hpp", ".hxx", "
 TOOL = os.path.dirname(os.path.abspath(__file__))
 
 
+MAX_OUTPUTS = 64  # the files this tool wrote last, remembered (``record_output``)
+
+
+def _outputs_path() -> str | None:
+    """Where the files this tool wrote are remembered: beside the cache folders
+    (``$XDG_CACHE_HOME/haros-arch``); None with no home folder."""
+    xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return None if xdg.startswith("~") else os.path.join(xdg, "haros-arch", "outputs.json")
+
+
+def _outputs() -> dict[str, list[int]]:
+    """Each file this tool wrote (by absolute path): its size and modification time then."""
+    where = _outputs_path()
+    if where is None:
+        return {}
+    try:
+        with open(where, encoding="utf-8") as handle:
+            data = json.load(handle)
+    except (OSError, ValueError):
+        return {}
+    found = data.get("outputs") if isinstance(data, dict) and (
+        data.get("format") == FORMAT) else None
+    return {k: v for k, v in found.items() if isinstance(v, list) and len(v) == 2} if (
+        isinstance(found, dict)) else {}
+
+
+def record_output(path: str) -> None:
+    """Remember that this tool wrote ``path`` (a command's ``-o``): while it is as written,
+    it is no input of a run (``Snapshot.file``). A model, report or SARIF file written
+    beside the project file or in the workspace made every later run a new one."""
+    where = _outputs_path()
+    if where is None:
+        return
+    try:
+        info = os.stat(path)
+    except OSError:
+        return
+    found = _outputs()
+    full = os.path.abspath(path)
+    found.pop(full, None)
+    found[full] = [info.st_size, info.st_mtime_ns]
+    _write_json(where, {"format": FORMAT,
+                        "outputs": dict(list(found.items())[-MAX_OUTPUTS:])})
+
+
 class Snapshot:
-    """Content hashes of files by path, through a stat index kept in ``index_path``."""
+    """Content hashes of files by path, through a stat index kept in ``index_path``; the
+    files this tool wrote (``record_output``), unchanged since, are left out."""
 
     def __init__(self, index_path: str) -> None:
         self.index_path = index_path
@@ -83,8 +129,12 @@ class Snapshot:
         self.outer: list[tuple[str, str]] = []  # the same, C++ ones by name only
         self.complete = True
         self.now = time.time()
+        self.written = _outputs()
 
     def file(self, path: str, info: os.stat_result) -> None:
+        if self.written and self.written.get(os.path.abspath(path)) == [
+                info.st_size, info.st_mtime_ns]:
+            return  # an output of this tool, as it wrote it
         if len(self.seen) >= MAX_FILES:
             self.complete = False
             return

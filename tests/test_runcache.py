@@ -538,3 +538,35 @@ def test_entries_one_copy_and_configuration_wrote_give_another_what_it_gives_col
                                      timings=timings)) == text(str(second), cold)
     assert "C++" in timings  # not the first run's model: its own, from the unit entries
     assert text(launch, cache) == text(launch, cold)
+
+
+def test_an_output_written_beside_the_project_is_no_input(tmp_path: Path, monkeypatch) -> None:
+    """``extract -o model.json`` (``check -o``, ``report -o``) beside the project file or
+    in the workspace: the next run with nothing else changed is the kept one, while a
+    file the tool did not write there, or one changed since it wrote it, is an input."""
+    from haros_arch import pipeline
+    from haros_arch.cli import main
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    project = _copy(tmp_path)
+    ran: list[int] = []
+    analyse_whole = pipeline._analyse
+
+    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
+        ran.append(1)
+        return analyse_whole(*args, **kwargs)
+
+    monkeypatch.setattr(pipeline, "_analyse", counted)
+    model = project.parent / "model.json"
+    for _ in range(2):
+        assert main(["extract", str(project), "-o", str(model)]) == 0
+    main(["check", str(project), "-o", str(project.parent / "findings.txt"),
+          "--fail-on", "never"])
+    main(["report", str(project), "-o", str(project.parent / "src" / "report.html")])
+    assert len(ran) == 1, ran  # the first run only
+    model.write_text(model.read_text() + " ")  # no longer as the tool wrote it
+    main(["extract", str(project), "-o", str(tmp_path / "elsewhere.json")])
+    assert len(ran) == 2
+    (project.parent / "notes.txt").write_text("x")  # a file of someone else's
+    main(["extract", str(project), "-o", str(tmp_path / "elsewhere.json")])
+    assert len(ran) == 3

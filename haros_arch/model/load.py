@@ -182,7 +182,15 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          host_named=c.get("host_named") if isinstance(
                              c.get("host_named"), str) else None,
                          loads=c.get("loads") if isinstance(c.get("loads"), str) else None,
-                         argument=c.get("argument") is True)
+                         argument=c.get("argument") is True,
+                         **{name: c[name] for name in _OPTIONAL_TEXTS
+                            if isinstance(c.get(name), str)})
+
+
+# the calls' optional text fields (written only when set): read back as written, so that
+# a model reads back whole (``runcache.store`` keeps only such a model)
+_OPTIONAL_TEXTS = ("made_in", "built_in", "called_in", "name_member", "stores",
+                   "loads_given", "namespace_param")
 
 
 def node_from_data(data: dict[str, Any], package: str) -> Node:
