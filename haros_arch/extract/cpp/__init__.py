@@ -1531,12 +1531,8 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         functions.setdefault(name, []).append((start.line, end.line, function.spelling))
         if function.kind != CursorKind.FIELD_DECL and finder.wrappers.silent(function):
             silent.setdefault(name, []).append((start.line, end.line))
-    for function in finder.unreached:  # code that does not run in this unit
-        start, end = function.extent.start, function.extent.end
-        if start.file is not None:
-            silent.setdefault(os.path.abspath(start.file.name), []).append(
-                (start.line, end.line))
-    for function in finder.wrappers.silent_lambdas():
+    # (and code that does not run in this unit: ``reach``)
+    for function in [*finder.wrappers.silent_lambdas(), *finder.unreached]:
         start, end = function.extent.start, function.extent.end
         if start.file is not None:
             silent.setdefault(os.path.abspath(start.file.name), []).append(

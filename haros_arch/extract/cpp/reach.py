@@ -29,12 +29,16 @@ from typing import Any
 
 from clang.cindex import Cursor, CursorKind
 
-__all__ = ["CLASSES", "reachable"]
+__all__ = ["CLASSES", "FUNCTIONS", "reachable"]
 
 _WORDS = re.compile(rb"[A-Za-z_]\w*")
 CLASSES = frozenset({
     CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
     CursorKind.CLASS_TEMPLATE, CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
+})
+FUNCTIONS = frozenset({
+    CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
+    CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
 _NAME = re.compile(r"[A-Za-z_]\w*")
 
@@ -64,39 +68,35 @@ def _blank(match: re.Match[bytes]) -> bytes:
     return text if text[:1] in (b'"', b"'") else b" " * len(text)
 
 
+def _text(source: Any, cursor: Cursor) -> tuple[bytes, int, int] | None:
+    """The bytes of ``cursor``'s file and its extent's offsets (None: no file read)."""
+    extent = cursor.extent
+    start = extent.start
+    data = source.get(start.file.name) if start.file is not None else None
+    return None if data is None else (data, start.offset, extent.end.offset)
+
+
 def _words(source: Any, cursor: Cursor) -> set[bytes]:
     """The identifiers written in ``cursor``'s extent (none when its file is not read)."""
-    extent = cursor.extent
-    start, end = extent.start, extent.end
-    if start.file is None:
-        return set()
-    data = source.get(start.file.name)
-    if data is None:
-        return set()
-    return set(_WORDS.findall(data, start.offset, end.offset))
+    text = _text(source, cursor)
+    return set() if text is None else set(_WORDS.findall(*text))
 
 
 def _declarations(source: Any, definition: Cursor) -> set[bytes]:
     """The identifiers of a class's or macro's definition, but those in the bodies of
     the methods it defines inline (each counts where the method runs)."""
-    extent = definition.extent
-    start, end = extent.start, extent.end
-    if start.file is None:
-        return set()
-    data = source.get(start.file.name)
-    if data is None:
-        return set()
-    if definition.kind not in CLASSES:
-        return set(_WORDS.findall(data, start.offset, end.offset))
+    text = _text(source, definition)
+    if text is None or definition.kind not in CLASSES:
+        return set() if text is None else set(_WORDS.findall(*text))
+    data, at, end = text
     bodies = sorted((child.extent.start.offset, child.extent.end.offset)
                     for child in definition.get_children()
-                    if child.kind in _FUNCTIONS and child.is_definition())
+                    if child.kind in FUNCTIONS and child.is_definition())
     found: set[bytes] = set()
-    at = start.offset
     for first, last in bodies:
         found.update(_WORDS.findall(data, at, max(at, first)))
         at = max(at, last)
-    found.update(_WORDS.findall(data, at, end.offset))
+    found.update(_WORDS.findall(data, at, end))
     return found
 
 
@@ -120,10 +120,6 @@ def _key(function: Cursor) -> tuple[bytes | None, bytes | None]:
     return owner, own
 
 
-_FUNCTIONS = frozenset({
-    CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
-    CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
-})
 _METHODS = frozenset({CursorKind.CXX_METHOD, CursorKind.FUNCTION_TEMPLATE})
 
 

@@ -83,7 +83,7 @@ from .owners import (
     unseen_construction,
 )
 from .qos import qos as qos_of
-from .reach import CLASSES, reachable
+from .reach import CLASSES, FUNCTIONS, reachable
 from .tested import Key, TestedCalls, unit_tested
 from .tested import key as key_of
 from .values import (
@@ -130,10 +130,6 @@ CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
     CursorKind.CLASS_TEMPLATE, CursorKind.LINKAGE_SPEC, CursorKind.UNEXPOSED_DECL,
     CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION,
-})
-FUNCTIONS = frozenset({
-    CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
-    CursorKind.DESTRUCTOR, CursorKind.FUNCTION_TEMPLATE, CursorKind.CONVERSION_FUNCTION,
 })
 # the maker of what the initialisers of the unit's variables of namespace scope name
 # (``CallFinder.uses``): it runs where the program runs (``extract.cpp._reached``)
@@ -3536,9 +3532,6 @@ def _default_constructible(cls: Cursor) -> bool:
 
 
 # classes whose VAR_DECL children are static data members
-_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.UNION_DECL,
-                      CursorKind.CLASS_TEMPLATE,
-                      CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
 
 
 def _copy_initialised(var: Cursor) -> bool:
@@ -3576,7 +3569,7 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
     where = scope
     if decl.kind == CursorKind.VAR_DECL:
         definition = decl.get_definition()
-        member = decl.semantic_parent is not None and decl.semantic_parent.kind in _CLASSES
+        member = decl.semantic_parent is not None and decl.semantic_parent.kind in CLASSES
         init = initializer(definition or decl)
         if init is not None and not default_constructed(init):
             value = init
