@@ -103,21 +103,27 @@ def analyse(project: Project, environment: Mapping[str, str] | None = None,
 def _again(project: Project, env: Mapping[str, str], options: Options, folder: str,
            key: str, extraction: dict[str, Any]) -> Model | None:
     """The model of the run ``key`` when the C++ translation units of its nodes (in
-    ``extraction``) give what they gave, and the batch the diagnostics it gave: its C++
-    nodes are then what they were. None otherwise. The other nodes read no C++ file
-    (``_units_tell``): their results stand."""
-    from .extract.cpp import unit_digests
+    ``extraction``, batch by batch) give what they gave, and each batch the diagnostics
+    it gave: its C++ nodes are then what they were. None otherwise. The other nodes
+    read no C++ file (``_units_tell``): their results stand."""
+    from .extract.cpp import CppBatch, unit_digests
 
     with _stage(options, "scan"):
         workspace = scan(project.workspace, env)
-    paths = extraction.get("units")
-    if not isinstance(paths, list) or not all(isinstance(p, str) for p in paths):
+    parts = extraction.get("parts")
+    if not isinstance(parts, list) or not all(
+            isinstance(part, list) and all(isinstance(p, str) for p in part)
+            for part in parts):
         return None
     batch = None
-    if paths:
+    if extraction.get("cpp"):
+        batch = CppBatch()
         with _stage(options, "C++"):
-            batch = unit_digests(paths, workspace, cache_dir=options.cache_dir,
-                                 jobs=options.jobs, **cpp_arguments(project, env))
+            for part in parts:  # as the run read them: deferred plugins after the rest
+                found = unit_digests(part, workspace, cache_dir=options.cache_dir,
+                                     jobs=options.jobs, **cpp_arguments(project, env))
+                batch.units.update(found.units)
+                batch.diagnostics.extend(found.diagnostics)
     if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
@@ -264,7 +270,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
                                       kept if tells else None, others))
     every = without_deferred(model.packages, nodes)
     if record is not None and tells:
-        record.update(units=cpp_sources(every, workspace), gave=_gave(batch), others=others)
+        record.update(cpp=batch is not None, parts=batch.parts if batch is not None else [],
+                      gave=_gave(batch), others=others)
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),

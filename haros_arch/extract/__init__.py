@@ -98,6 +98,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
         if cpp_batch is not None:
             cpp_batch.units.update(batch.units)
             cpp_batch.diagnostics.extend(batch.diagnostics)
+            cpp_batch.parts.extend(batch.parts)
         found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
         macros = _build_macros(cpp, workspace, compile_commands)
         found.extend(d for said in macros for d in said)
@@ -195,8 +196,9 @@ def _cpp_nodes(nodes: Sequence[Node]) -> list[Node]:
 
 
 def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
-    """The C++ translation units ``extract_nodes`` reads for ``nodes``, in its order
-    (``cpp.unit_digests`` of them gives what its C++ batch gave)."""
+    """The C++ translation units ``extract_nodes`` may read for ``nodes`` (it reads
+    those of deferred plugins only when a node loads their base: ``CppBatch.parts``
+    are those it read)."""
     return [path for node in _cpp_nodes(nodes) for path in _paths(node, workspace)]
 
 

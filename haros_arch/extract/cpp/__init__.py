@@ -264,6 +264,10 @@ class CppBatch:
     # each translation unit's path and the digest of what it gave (``cache.digest``): two
     # batches of the same nodes whose units and diagnostics agree give the same results
     units: dict[str, str] = field(default_factory=dict)
+    # the translation units of each batch that made these, in the order it read them
+    # (``extract_nodes`` reads deferred plugins in a batch of their own: the headers
+    # their sources share with the first batch's are prepared, and said missing, again)
+    parts: list[list[str]] = field(default_factory=list)
 
     def all_diagnostics(self) -> list[Diagnostic]:
         """Every diagnostic once (a translation unit shared by nodes reports once)."""
@@ -352,21 +356,28 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
         cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir)
     setup = IncludeSetup(workspace, include_dirs, system_headers, units,
                          [p for sources in nodes for p in sources], distro, kept_in=folder)
-    store = None if folder is None else cache.Cache(folder, setup.generated, setup.written)
+    store = None if folder is None else cache.Cache(folder, setup.generated, setup.written,
+                                                     setup.remade)
     read: list[Diagnostic] = []
+    paths = list(dict.fromkeys(os.path.abspath(p) for sources in nodes for p in sources))
+    batch.parts.append(paths)
     try:
         texts: dict[str, str] = {}
         ros2: dict[str, bool] = {}
-        for path in dict.fromkeys(os.path.abspath(p) for sources in nodes for p in sources):
+        for path in paths:
             text, found = read_text(path, workspace.location(path))
             read.extend(found)
             if text is not None:
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
+        # the batch's own: what preparing the headers said; what a parse adds (a header
+        # clang still missed) is its unit's (``_translation_unit``), said where it was
+        # parsed, in this process or a worker, so not here: the same either way
+        scanned = len(setup.diagnostics)
         results = _units(texts, ros2, setup, store, jobs, batch.units, wanted, meanwhile)
     finally:
         setup.close()
-    batch.diagnostics += [*setup.diagnostics, *read]
+    batch.diagnostics += [*setup.diagnostics[:scanned], *read]
     return batch, results
 
 

@@ -16,7 +16,7 @@ import hashlib
 import json
 import os
 import tempfile
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 from ... import __version__
@@ -120,10 +120,16 @@ class Cache:
     """Entries in ``folder``; ``generated`` is this run's folder of synthesised headers."""
 
     def __init__(self, folder: str, generated: str,
-                 synthesised: Mapping[str, str] | None = None) -> None:
+                 synthesised: Mapping[str, str] | None = None,
+                 remake: Callable[[str], str | None] | None = None) -> None:
         self.folder = os.path.join(folder, "cpp")
         self.generated = generated
         self.synthesised = {} if synthesised is None else synthesised  # path -> text, unwritten
+        # a synthesised header this run has not made (yet): made now, when it is one a
+        # parse makes on demand (a message header a unit uses unincluded), its text or
+        # None. On disk from an earlier run it may be, or not: a run that parses removes
+        # what it did not make (``headers._sync``), and its units would miss for good
+        self.remake = remake
         self._digests: dict[str, str | None] = {}  # a header shared by entries: hashed once
         # the same for the headers of the entries stored: as read from disk after the
         # parse (a header the run synthesised while parsing is there by then)
@@ -132,6 +138,9 @@ class Cache:
     def _fingerprint(self, path: str) -> str | None:
         if path not in self._digests:
             text = self.synthesised.get(path)
+            if text is None and self.remake is not None and path.startswith(
+                    self.generated + os.sep):
+                text = self.remake(path)
             self._digests[path] = fingerprint(path) if text is None else hashlib.sha256(
                 text.encode("utf-8")).hexdigest()
         return self._digests[path]

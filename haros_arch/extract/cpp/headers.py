@@ -1102,6 +1102,19 @@ class IncludeSetup:
             return True
         return self._message(header, spec.group(1), spec.group(2), Location())
 
+    def remade(self, path: str) -> str | None:
+        """The text of the synthesised header at ``path`` when this run makes it, made
+        now if it is a message header that a parse makes on demand (``message_header``):
+        a unit kept in the cache that used one is then as it was, though no scan of this
+        run made it. None for any other (a header repaired after a parse is not made
+        again: where clang would now find it, the repair is what the parse says)."""
+        if path not in self.written:
+            header = os.path.relpath(path, self.generated)
+            if header.startswith((os.pardir, OVERFLOW + os.sep)) or not (
+                    self.message_header(header.replace(os.sep, "/"))):
+                return None
+        return self.written.get(path)
+
     def repair(self, messages: list[tuple[str, Location]]) -> bool:
         """Create what clang reported as not found; True when a new parse may help."""
         changed = False
