@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import os
 import stat
+from collections.abc import Callable, Iterator, MutableMapping
+from contextlib import contextmanager
+from typing import Any, TypeVar
 
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
@@ -11,6 +14,44 @@ from .model.location import Location
 
 MAX_FILE_BYTES = 8 * 1024 * 1024
 _BOM = b"\xef\xbb\xbf"
+K = TypeVar("K")
+V = TypeVar("V")
+_RECORDING: list[set[str]] = []  # the blocks recording the files read (``recording``)
+
+
+@contextmanager
+def recording() -> Iterator[set[str]]:
+    """The paths of the files read within the block (``read_text``, ``read_bytes``,
+    ``note_read``): what a stage's result depends on, beside what it was given."""
+    found: set[str] = set()
+    _RECORDING.append(found)
+    try:
+        yield found
+    finally:
+        _RECORDING.pop()  # blocks nest: this one is the last (two equal sets would be
+        # one to ``remove``)
+
+
+def note_read(path: str) -> None:
+    """``path`` is read (by a reader that opens it itself), for ``recording``."""
+    for found in _RECORDING:
+        found.add(path)
+
+
+def kept_in(memo: MutableMapping[K, Any], key: K, compute: Callable[[], V]) -> V:
+    """``compute()``, kept in ``memo`` under ``key`` with the files it read: asked again,
+    it reads them again for ``recording`` (what a package's build files give depends on
+    the sources another package's made the workspace read first)."""
+    kept = memo.get(key)
+    if kept is None:
+        with recording() as read:
+            value = compute()
+        memo[key] = (value, frozenset(read))
+        return value
+    value, read = kept
+    for path in read if _RECORDING else ():
+        note_read(path)
+    return value
 
 
 def _refuse_special(path: str, location: Location) -> list[Diagnostic]:
@@ -28,6 +69,8 @@ def read_text(
     """Read ``path`` as text. Problems become diagnostics at ``location``; never raises.
     A UTF-8 byte-order mark at the start is an encoding mark, not text: CMake, Python,
     YAML and C++ compilers all skip it, so it is dropped here for every reader."""
+    if _RECORDING:
+        note_read(path)
     try:
         special = _refuse_special(path, location)
         if special:
@@ -56,6 +99,8 @@ def read_bytes(
     path: str, location: Location, limit: int = MAX_FILE_BYTES
 ) -> tuple[bytes | None, list[Diagnostic]]:
     """Read ``path`` as bytes (for XML parsers that honour the declared encoding)."""
+    if _RECORDING:
+        note_read(path)
     try:
         special = _refuse_special(path, location)
         if special:

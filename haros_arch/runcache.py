@@ -108,6 +108,15 @@ def record_output(path: str) -> None:
                         "outputs": dict(list(found.items())[-MAX_OUTPUTS:])})
 
 
+def content_digest(path: str) -> str:
+    """Of a file's content ("unreadable" when it cannot be read)."""
+    try:
+        with open(path, "rb") as handle:
+            return hashlib.sha256(handle.read()).hexdigest()
+    except OSError:
+        return "unreadable"
+
+
 class Snapshot:
     """Content hashes of files by path, through a stat index kept in ``index_path``; the
     files this tool wrote (``record_output``), unchanged since, are left out."""
@@ -144,11 +153,7 @@ class Snapshot:
         elif known is not None and known[0] == info.st_size and known[1] == info.st_mtime_ns:
             digest = known[2]
         else:
-            try:
-                with open(path, "rb") as handle:
-                    digest = hashlib.sha256(handle.read()).hexdigest()
-            except OSError:
-                digest = "unreadable"
+            digest = content_digest(path)
         self.outer.append((path, "c++" if path.endswith(CPP_FILES) else digest))
         self.inner.append((path, digest))
         if self.now - info.st_mtime > RACY_SECONDS:

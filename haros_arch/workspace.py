@@ -51,7 +51,8 @@ class Workspace:
     # source file -> the words it and the package headers it includes hold
     # (``plugins.classes.named_words``: each executable linking a library asks them
     # again), read once per run
-    named_words: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
+    # (each of these memos keeps the files read to make an entry: ``files.kept_in``)
+    named_words: dict[str, object] = field(default_factory=dict, repr=False)
     # what the build-file stage reads off a file, by kind and path
     # (``plugins.classes.remembered``), once per run
     file_facts: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)

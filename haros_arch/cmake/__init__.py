@@ -16,7 +16,7 @@ import re
 from .. import diagnostics as diag
 from .. import plugins, pysetup
 from ..diagnostics import Diagnostic
-from ..files import read_text
+from ..files import kept_in, read_text
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
 from ..workspace import Workspace
@@ -68,11 +68,8 @@ def _interpret(package: Package, workspace: Workspace,
                files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
     """The package's interpreter, run once per run (``Workspace.interpreted``: a package
     whose libraries others link is read for them too)."""
-    key = (package.name, package.root)
-    known = workspace.interpreted.get(key)
-    if known is None:
-        known = workspace.interpreted[key] = _run(package, workspace, files)
-    return known  # type: ignore[return-value]
+    return kept_in(workspace.interpreted, (package.name, package.root),
+                   lambda: _run(package, workspace, files))
 
 
 _BUILD_DEPENDS = ("depend", "build_depend")

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from .. import diagnostics as diag
-from ..files import read_text
+from ..files import note_read, read_text
 from ..model.conditions import Condition
 from ..model.location import NOWHERE
 from . import listops
@@ -330,6 +330,7 @@ def _external_project(it: Interpreter, command: Invocation, args: list[str]) -> 
     listing = os.path.join(folder, "CMakeLists.txt")
     if not it.inside_package(folder) or not os.path.isfile(listing):
         return
+    note_read(listing)
     try:
         with open(listing, "rb") as handle:
             text = handle.read(MAX_MAIN_READ)
@@ -726,6 +727,7 @@ MAX_MAIN_READ = 2_000_000  # bytes of a source read to find main()
 
 
 def _defines_main(path: str) -> bool:
+    note_read(path)
     try:
         with open(path, "rb") as handle:
             return _MAIN.search(handle.read(MAX_MAIN_READ)) is not None

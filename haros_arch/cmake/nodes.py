@@ -15,7 +15,7 @@ from functools import partial
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
-from ..files import read_text
+from ..files import note_read, read_text
 from ..model.conditions import Condition
 from ..model.location import Location
 from ..model.source import Node, Package
@@ -549,6 +549,7 @@ def is_python(path: str) -> bool:
     "${BASH_SOURCE[0]}" $*``, ``exit``, ``fi``, ``'''``), whose program is Python's."""
     if path.endswith(".py"):
         return True
+    note_read(path)
     try:
         with open(path, "rb") as handle:
             head = handle.read(2048)

@@ -210,6 +210,7 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                     data.get("plugin_class"), str) else None,
                 plugin_base=data.get("plugin_base") if isinstance(
                     data.get("plugin_base"), str) else None,
+                deferred=data.get("deferred") is True,
                 aliases=[str(a) for a in data.get("aliases", ()) or () if isinstance(a, str)],
                 plugin_loads=[str(a) for a in data.get("plugin_loads", ()) or ()
                               if isinstance(a, str)],

@@ -25,7 +25,7 @@ from lxml import etree
 from .. import diagnostics as diag
 from ..ctext import code_only
 from ..diagnostics import Diagnostic
-from ..files import read_bytes, read_text
+from ..files import kept_in, read_bytes, read_text
 from ..manifest import xml_parser
 from ..model.conditions import Condition
 from ..model.location import Location
@@ -303,10 +303,7 @@ def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T
     memo: dict[tuple[str, str], Any] | None = getattr(workspace, "file_facts", None)
     if memo is None:
         return compute()
-    key = (kind, source)
-    if key not in memo:
-        memo[key] = compute()
-    return memo[key]
+    return kept_in(memo, (kind, source), compute)
 
 
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
@@ -652,14 +649,12 @@ def named_words(source: str, workspace: Files) -> frozenset[str]:
     not those of comments and string literals (``code_only``: laser_filters'
     scan_to_cloud_filter_chain.cpp names ``ScanShadowsFilter`` only in a comment); a
     ``Workspace``'s read once per run."""
-    memo: dict[str, frozenset[str]] | None = getattr(workspace, "named_words", None)
-    found = memo.get(source) if memo is not None else None
-    if found is None:
-        found = frozenset(set().union(
+    def words() -> frozenset[str]:
+        return frozenset(set().union(
             *(_WORD.findall(code_only(text)) for text in with_headers(source, workspace))))
-        if memo is not None:
-            memo[source] = found
-    return found
+
+    memo: dict[str, Any] | None = getattr(workspace, "named_words", None)
+    return words() if memo is None else kept_in(memo, source, words)
 
 
 def with_headers(source: str, workspace: Files, depth: int = 1) -> list[str]:
