@@ -185,7 +185,8 @@ def _append(path: Path, text: str) -> None:
 def test_a_comment_in_a_host_of_plugins_read_apart_reuses_the_kept_run(
         write_tree: Any, tmp_path: Path, parsed: list[str]) -> None:
     root = _workspace(write_tree)
-    cold, _ = _run(root, tmp_path / "cache")
+    cold, seconds = _run(root, tmp_path / "cache")
+    assert seconds["C++"] > 0  # the stage's seconds are said (were 0 after the last batch)
     assert sorted(parsed) == ["fast_solver.cpp", "host.cpp", "plain.cpp", "stamper.cpp"]
     assert parsed[-1] == "fast_solver.cpp"  # the plugin's batch, after the first one's
     missing = [d for d in cold.all_diagnostics if d.code == "CPP_INCLUDE_MISSING"]
@@ -213,3 +214,33 @@ def test_a_message_header_a_parse_made_keeps_its_unit_in_the_cache(
         parsed.clear()
         _run(root, tmp_path / "cache")
         assert parsed == ["plain.cpp"], count
+
+
+def test_a_changed_source_makes_only_its_nodes_result_again(
+        write_tree: Any, tmp_path: Path, parsed: list[str], monkeypatch: Any) -> None:
+    """The other nodes' results are as their unchanged units made them
+    (``cache.node_key``), and the model is a cold run's."""
+    made: list[list[str]] = []
+    original = cpp._node_result
+
+    def counting(paths_units: Any, *args: Any) -> Any:
+        made.append([os.path.basename(path) for path, _ in paths_units])
+        return original(paths_units, *args)
+
+    monkeypatch.setattr(cpp, "_node_result", counting)
+    root = _workspace(write_tree)
+    _run(root, tmp_path / "cache")
+    assert sorted(made) == [["fast_solver.cpp"], ["host.cpp"], ["plain.cpp"], ["stamper.cpp"]]
+    source = root / "src/demo/src/plain.cpp"
+    source.write_text(source.read_text().replace('"count"', '"counted"'))
+    made.clear()
+    parsed.clear()
+    changed, timings = _run(root, tmp_path / "cache")
+    assert "graph" in timings and parsed == ["plain.cpp"]
+    assert made == [["plain.cpp"]]
+    assert ("publish", "/counted") in {(link.kind, link.name)
+                                       for link in changed.configurations[0].links}
+    made.clear()
+    cold, _ = _run(root, tmp_path / "cold")
+    assert len(made) == 4
+    assert model_to_data(changed) == model_to_data(cold)

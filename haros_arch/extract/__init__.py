@@ -81,6 +81,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
     if not cpp:
         other_nodes()
     meanwhile: Callable[[], None] | None = other_nodes
+    read_cpp = bool(cpp)
     while cpp:
         from .cpp import extract_cpp_nodes  # libclang loads only when there is C++ to parse
 
@@ -113,7 +114,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             node.deferred = False
     found.extend(others)
     if timings is not None:  # with workers, the other nodes' seconds are within C++'s
-        batch_seconds = time.perf_counter() - start if cpp else 0.0
+        batch_seconds = time.perf_counter() - start if read_cpp else 0.0
         timings["C++"] = timings.get("C++", 0.0) + batch_seconds
         timings["Python"] = timings.get("Python", 0.0) + spent[0]
     return found

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import json
 import os
 import re
 import weakref
@@ -321,12 +322,40 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     """
     batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
                             compile_commands, True, meanwhile, distro)
+    folder = _folder(cache_dir, workspace)
+    store = None if folder is None else cache.Cache(folder, "")
     for index, sources in enumerate(nodes):
         paths = list(dict.fromkeys(map(os.path.abspath, sources)))
-        batch.results.append(_node_result([(p, results[p]) for p in paths if p in results],
-                                          all(p in results for p in paths),
-                                          entries[index] if entries is not None else None))
+        complete = all(p in results for p in paths)
+        entry = entries[index] if entries is not None else None
+        batch.results.append(_kept_node(store, paths, results, batch.units, complete, entry))
     return batch
+
+
+def _kept_node(store: cache.Cache | None, paths: list[str], results: dict[str, CppResult],
+               digests: dict[str, str], complete: bool, entry: str | None) -> CppResult:
+    """``_node_result`` of a node's translation units ``paths``, as the cache keeps it
+    when they give what they gave (``cache.node_key``), else made and kept unless it
+    would not read back whole. A run after one changed source made every node of
+    navigation2's bringup again from units that had not changed: 0.6 s of 3.8."""
+    key = cache.node_key(paths, digests, complete, entry) if store is not None else None
+    if store is not None and key is not None:
+        kept = store.load_node(key)
+        found = _result_from_data(kept) if kept is not None else None
+        if found is not None:
+            return found
+    result = _node_result([(p, results[p]) for p in paths if p in results], complete, entry)
+    if store is not None and key is not None:
+        data = _result_data(result)
+        if _result_from_data(json.loads(json.dumps(data))) == result:
+            store.store_node(key, data)
+    return result
+
+
+def _folder(cache_dir: str | None, workspace: Workspace) -> str | None:
+    """The cache folder of a run's ``cache_dir`` option (None: no cache)."""
+    return None if cache_dir is None else (
+        cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir)
 
 
 def unit_digests(paths: Sequence[str], workspace: Workspace, *,
@@ -352,8 +381,7 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
     if compile_commands is None:
         compile_commands = commands.find(workspace)
     units, batch.diagnostics = commands.load(compile_commands, workspace)
-    folder = None if cache_dir is None else (
-        cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir)
+    folder = _folder(cache_dir, workspace)
     setup = IncludeSetup(workspace, include_dirs, system_headers, units,
                          [p for sources in nodes for p in sources], distro, kept_in=folder)
     store = None if folder is None else cache.Cache(folder, setup.generated, setup.written,
@@ -997,17 +1025,10 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
             if kept is not None and not wanted:
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
-                try:
-                    (calls, rosname, found, facts, named, made, unseen, under, uses,
-                     defines, handed, unseen_in, passed, hidden,
-                     registered) = cache.from_data(kept[0])
-                except (ValueError, TypeError, KeyError):
+                result = _result_from_data(kept[0])
+                if result is None:
                     continue
-                done[path] = CppResult(calls, rosname, found, facts, node_names=named,
-                                       constructions=made, unseen=unseen, made_under=under,
-                                       uses=uses, defines=defines, handed=handed,
-                                       unseen_in=unseen_in, passed=passed, hidden=hidden,
-                                       registered=registered)
+                done[path] = result
                 digests[path] = kept[1]
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
@@ -1084,11 +1105,33 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     where the unit was parsed (in a worker: not in the serial part of the run)."""
     with held_back(YOUNG_THRESHOLD):
         unit, headers = _translation_unit(path, text, ros2, setup)
-    data = cache.to_data(unit.calls, unit.rosname, unit.diagnostics, unit.facts,
-                         unit.node_names, unit.constructions, unit.unseen, unit.made_under,
-                         unit.uses, unit.defines, unit.handed, unit.unseen_in,
-                         unit.passed, unit.hidden, unit.registered)
+    data = _result_data(unit)
     return unit, headers, data, cache.digest(data)
+
+
+def _result_data(result: CppResult) -> dict[str, Any]:
+    """A unit's or a node's result as the cache keeps it (``cache.to_data``)."""
+    data = cache.to_data(result.calls, result.rosname, result.diagnostics, result.facts,
+                         result.node_names, result.constructions, result.unseen,
+                         result.made_under, result.uses, result.defines, result.handed,
+                         result.unseen_in, result.passed, result.hidden, result.registered)
+    if result.rosnames:  # a node's
+        data["rosnames"] = list(result.rosnames)
+    return data
+
+
+def _result_from_data(data: dict[str, Any]) -> CppResult | None:
+    """``_result_data`` read back; None for data that is not such."""
+    try:
+        (calls, rosname, found, facts, named, made, unseen, under, uses, defines, handed,
+         unseen_in, passed, hidden, registered) = cache.from_data(data)
+        rosnames = data.get("rosnames", [])
+        if not (isinstance(rosnames, list) and all(isinstance(n, str) for n in rosnames)):
+            return None
+    except (ValueError, TypeError, KeyError):
+        return None
+    return CppResult(calls, rosname, found, facts, rosnames, named, made, uses, defines,
+                     under, unseen, handed, unseen_in, passed, hidden, registered)
 
 
 # pluginlib's ClassLoader (ROS 1 and 2) and class_loader: a plugin class made by name

@@ -16,7 +16,7 @@ import hashlib
 import json
 import os
 import tempfile
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 from ... import __version__
@@ -102,6 +102,16 @@ def _arguments_digest(args: tuple[str, ...], generated: str) -> str:
                                    for arg in args)).hexdigest()
 
 
+def node_key(paths: Sequence[str], digests: Mapping[str, str], complete: bool,
+             entry: str | None) -> str:
+    """The key of what a node's translation units ``paths`` give together (``digests``:
+    what each gave, ``CppBatch.units``), all of them read (``complete``) or not, built
+    as the class ``entry``: the same key, the same node result."""
+    return hashlib.sha256(json.dumps(
+        [tool_version(), [[path, digests.get(path)] for path in paths], complete, entry]
+    ).encode()).hexdigest()
+
+
 def digest(result: dict[str, Any]) -> str:
     """Of a translation unit's result (``to_data``): equal digests, equal results."""
     return hashlib.sha256(json.dumps(result, sort_keys=True).encode()).hexdigest()
@@ -123,6 +133,7 @@ class Cache:
                  synthesised: Mapping[str, str] | None = None,
                  remake: Callable[[str], str | None] | None = None) -> None:
         self.folder = os.path.join(folder, "cpp")
+        self.nodes = os.path.join(folder, "cpp-nodes")  # node results (``store_node``)
         self.generated = generated
         self.synthesised = {} if synthesised is None else synthesised  # path -> text, unwritten
         # a synthesised header this run has not made (yet): made now, when it is one a
@@ -165,6 +176,27 @@ class Cache:
             return result, kept
         except (OSError, ValueError, KeyError, TypeError):
             return None
+
+    def load_node(self, key: str) -> dict[str, Any] | None:
+        """A node's result kept under ``node_key`` (``store_node``), as data."""
+        try:
+            with open(os.path.join(self.nodes, f"{key}.json"), encoding="utf-8") as handle:
+                data = json.load(handle)
+            return data["result"] if isinstance(data.get("result"), dict) else None
+        except (OSError, ValueError, AttributeError):
+            return None
+
+    def store_node(self, key: str, result: dict[str, Any]) -> None:
+        """Keep a node's result (``to_data``) under ``node_key``: made of its units' results
+        alone, it is what they give while they give what they gave."""
+        try:
+            os.makedirs(self.nodes, exist_ok=True)
+            fd, temporary = tempfile.mkstemp(dir=self.nodes, suffix=".tmp")
+            with os.fdopen(fd, "w", encoding="utf-8") as handle:
+                handle.write(json.dumps({"result": result}))
+            os.replace(temporary, os.path.join(self.nodes, f"{key}.json"))
+        except OSError:
+            pass
 
     def store(self, entry: str, headers: Iterable[str], result: dict[str, Any],
               result_digest: str | None = None) -> None:
