@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from . import diagnostics as diag
 from . import runcache
-from .extract import AUTO_CACHE, cpp_sources, extract_nodes
+from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
 from .files import recording
 from .model.location import Location
 from .model.model import Model
@@ -63,7 +63,12 @@ def _stage(options: Options, name: str) -> Iterator[None]:
 def analyse(project: Project, environment: Mapping[str, str] | None = None,
             options: Options | None = None) -> Model:
     """Scan the workspace, read build files and sources, and build every configuration."""
-    options = options or Options()
+    with one_run():  # a C++ batch of the same units again takes their prepared headers
+        return _run(project, environment, options or Options())
+
+
+def _run(project: Project, environment: Mapping[str, str] | None, options: Options
+         ) -> Model:
     env = distro_environment(project, os.environ if environment is None else environment)
     if options.cache_dir is None:
         return _analyse(project, env, options, None)

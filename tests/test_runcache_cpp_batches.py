@@ -244,3 +244,48 @@ def test_a_changed_source_makes_only_its_nodes_result_again(
     cold, _ = _run(root, tmp_path / "cold")
     assert len(made) == 4
     assert model_to_data(changed) == model_to_data(cold)
+
+
+def test_a_changed_source_prepares_each_batchs_headers_once(
+        write_tree: Any, tmp_path: Path, parsed: list[str], monkeypatch: Any) -> None:
+    """The run compares what the units give (``pipeline._again``) and, when that differs,
+    extracts them again: the second pass over the same batches takes the first's
+    prepared headers (``extract.one_run``) instead of scanning every include again."""
+    from haros_arch.extract.cpp import headers
+
+    made: list[int] = []
+    original = headers.IncludeSetup.__init__
+
+    def counting(self: Any, *args: Any, **kwargs: Any) -> None:
+        made.append(1)
+        original(self, *args, **kwargs)
+
+    monkeypatch.setattr(headers.IncludeSetup, "__init__", counting)
+    root = _workspace(write_tree)
+    _run(root, tmp_path / "cache")
+    assert len(made) == 2  # the first batch and the deferred plugins'
+    source = root / "src/demo/src/plain.cpp"
+    source.write_text(source.read_text().replace('"count"', '"counted"'))
+    made.clear()
+    parsed.clear()
+    changed, timings = _run(root, tmp_path / "cache")
+    assert "graph" in timings and parsed == ["plain.cpp"]
+    assert len(made) == 2  # not four
+    made.clear()
+    cold, _ = _run(root, tmp_path / "cold")
+    assert model_to_data(changed) == model_to_data(cold)
+    locks = list((tmp_path / "cache" / "generated").glob("*.lock"))
+    assert locks and all(_unlocked(lock) for lock in locks)  # the run let its folder go
+
+
+def _unlocked(lock: Path) -> bool:
+    import fcntl
+
+    handle = os.open(lock, os.O_RDWR)
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        return True
+    except OSError:
+        return False
+    finally:
+        os.close(handle)

@@ -13,7 +13,8 @@ import json
 import os
 import re
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
@@ -30,6 +31,30 @@ if TYPE_CHECKING:
     from .cpp import CppBatch, CppResult
 
 AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
+_RUNS: list[dict[Any, Any]] = []  # the blocks of ``one_run``, innermost last
+
+
+@contextmanager
+def one_run() -> Iterator[None]:
+    """Within the block (one run of the pipeline: its files do not change meanwhile), a
+    C++ batch of the same sources and options as an earlier batch of the block takes
+    that batch's prepared headers instead of preparing them again (``cpp._batch``): a
+    run after one changed source compares what its units give (``pipeline._again``)
+    and, when that differs, extracts the same units again (navigation2's bringup: 0.3 s
+    of 3.1). The include setups are closed when the block ends."""
+    kept: dict[Any, Any] = {}
+    _RUNS.append(kept)
+    try:
+        yield
+    finally:
+        _RUNS.pop()
+        for prepared in kept.values():
+            prepared[0].close()
+
+
+def this_run() -> dict[Any, Any] | None:
+    """The prepared batches of the innermost ``one_run`` block (None outside any)."""
+    return _RUNS[-1] if _RUNS else None
 
 
 def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,

@@ -40,7 +40,7 @@ from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...processes import raise_if_stopped, worker_pool
 from ...workspace import Workspace, manifest_of
-from .. import NODELET_LOAD
+from .. import NODELET_LOAD, this_run
 from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
 from . import compile_commands as commands
 from .conditions import fewest
@@ -320,36 +320,58 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     batch when there are none): work of the calling process that needs no result of
     the batch runs beside it rather than after it.
     """
-    batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
-                            compile_commands, True, meanwhile, distro)
     folder = _folder(cache_dir, workspace)
     store = None if folder is None else cache.Cache(folder, "")
-    for index, sources in enumerate(nodes):
-        paths = list(dict.fromkeys(map(os.path.abspath, sources)))
-        complete = all(p in results for p in paths)
-        entry = entries[index] if entries is not None else None
-        batch.results.append(_kept_node(store, paths, results, batch.units, complete, entry))
+    every = [list(dict.fromkeys(map(os.path.abspath, sources))) for sources in nodes]
+    said = [entries[index] if entries is not None else None for index in range(len(nodes))]
+    kept: dict[int, CppResult] = {}
+
+    def unkept(digests: dict[str, str]) -> set[str]:
+        """The units of the nodes whose result the cache does not keep (``_kept_nodes``):
+        only theirs are read back."""
+        assert store is not None
+        kept.update(_kept_nodes(store, every, digests, said))
+        return {p for index, paths in enumerate(every) if index not in kept for p in paths}
+
+    batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
+                            compile_commands, True if store is None else unkept, meanwhile,
+                            distro)
+    for index, paths in enumerate(every):
+        found = kept.get(index)
+        if found is None:
+            complete = all(p in results for p in paths)
+            found = _node_result([(p, results[p]) for p in paths if p in results], complete,
+                                 said[index])
+            if store is not None:
+                _keep_node(store, cache.node_key(paths, batch.units, complete, said[index]),
+                           found)
+        batch.results.append(found)
     return batch
 
 
-def _kept_node(store: cache.Cache | None, paths: list[str], results: dict[str, CppResult],
-               digests: dict[str, str], complete: bool, entry: str | None) -> CppResult:
-    """``_node_result`` of a node's translation units ``paths``, as the cache keeps it
-    when they give what they gave (``cache.node_key``), else made and kept unless it
-    would not read back whole. A run after one changed source made every node of
-    navigation2's bringup again from units that had not changed: 0.6 s of 3.8."""
-    key = cache.node_key(paths, digests, complete, entry) if store is not None else None
-    if store is not None and key is not None:
-        kept = store.load_node(key)
-        found = _result_from_data(kept) if kept is not None else None
-        if found is not None:
-            return found
-    result = _node_result([(p, results[p]) for p in paths if p in results], complete, entry)
-    if store is not None and key is not None:
-        data = _result_data(result)
-        if _result_from_data(json.loads(json.dumps(data))) == result:
-            store.store_node(key, data)
-    return result
+def _kept_nodes(store: cache.Cache, every: list[list[str]], digests: dict[str, str],
+                entries: list[str | None]) -> dict[int, CppResult]:
+    """The results of the nodes (each given by its translation units' paths) that the
+    cache keeps, by index: those whose units give what they gave when it was kept
+    (``cache.node_key``). A run after one changed source made every node of
+    navigation2's bringup again from units that had not changed: 0.6 s of 3.8, and read
+    back every unit's result for them."""
+    found: dict[int, CppResult] = {}
+    for index, paths in enumerate(every):
+        complete = all(p in digests for p in paths)
+        data = store.load_node(cache.node_key(paths, digests, complete, entries[index]))
+        result = _result_from_data(data) if data is not None else None
+        if result is not None:
+            found[index] = result
+    return found
+
+
+def _keep_node(store: cache.Cache, key: str, result: CppResult) -> None:
+    """Keep a node's result made from its units (``_node_result``), unless it would not
+    read back whole."""
+    data = _result_data(result)
+    if _result_from_data(json.loads(json.dumps(data))) == result:
+        store.store_node(key, data)
 
 
 def _folder(cache_dir: str | None, workspace: Workspace) -> str | None:
@@ -370,43 +392,79 @@ def unit_digests(paths: Sequence[str], workspace: Workspace, *,
                   distro=distro)[0]
 
 
+# which kept translation units' results a batch reads back: all (True), none (False),
+# or those a function of every unit's digest names (``_units``)
+Wanted = bool | Callable[[dict[str, str]], Collection[str]]
+
+
 def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: Sequence[str],
            system_headers: bool, cache_dir: str | None, jobs: int | None,
-           compile_commands: Sequence[str] | None, wanted: bool,
+           compile_commands: Sequence[str] | None, wanted: Wanted,
            meanwhile: Callable[[], None] | None = None, distro: str | None = None
            ) -> tuple[CppBatch, dict[str, CppResult]]:
     """The batch's diagnostics and unit digests, and each unit's result (without
-    ``wanted``: only those parsed)."""
+    ``wanted``: only those parsed; see ``_units``)."""
     batch = CppBatch()
     if compile_commands is None:
         compile_commands = commands.find(workspace)
     units, batch.diagnostics = commands.load(compile_commands, workspace)
     folder = _folder(cache_dir, workspace)
-    setup = IncludeSetup(workspace, include_dirs, system_headers, units,
-                         [p for sources in nodes for p in sources], distro, kept_in=folder)
-    store = None if folder is None else cache.Cache(folder, setup.generated, setup.written,
-                                                     setup.remade)
-    read: list[Diagnostic] = []
     paths = list(dict.fromkeys(os.path.abspath(p) for sources in nodes for p in sources))
     batch.parts.append(paths)
+    key = (workspace.root, tuple(workspace.roots), tuple(include_dirs), system_headers,
+           tuple(compile_commands), folder, distro, tuple(paths))
+    run = this_run()
+    prepared = run.get(key) if run is not None else None
+    if prepared is not None and not prepared[0].hold():
+        prepared = None  # another run took the kept folder meanwhile: prepared anew
+    if prepared is None:
+        prepared = _prepare(paths, workspace, IncludeSetup(
+            workspace, include_dirs, system_headers, units,
+            [p for sources in nodes for p in sources], distro, kept_in=folder))
+        if run is not None:  # closed with the run (``extract.one_run``)
+            stale = run.pop(key, None)
+            if stale is not None:
+                stale[0].close()
+            run[key] = prepared
+    setup, texts, ros2, read, scanned = prepared
+    store = None if folder is None else cache.Cache(folder, setup.generated, setup.written,
+                                                     setup.remade)
     try:
-        texts: dict[str, str] = {}
-        ros2: dict[str, bool] = {}
+        results = _units(texts, ros2, setup, store, jobs, batch.units, wanted, meanwhile)
+    finally:
+        if run is None:
+            setup.close()
+        else:
+            setup.release()
+    batch.diagnostics += [*setup.diagnostics[:scanned], *read]
+    return batch, results
+
+
+# a batch's include setup with its sources' texts, whether each is ROS 2 code, the
+# diagnostics of reading them and how many the setup said while preparing the headers
+Prepared = tuple[IncludeSetup, dict[str, str], dict[str, bool], list[Diagnostic], int]
+
+
+def _prepare(paths: list[str], workspace: Workspace, setup: IncludeSetup) -> Prepared:
+    """Read the sources and prepare every header they include (closing ``setup`` if
+    that fails)."""
+    read: list[Diagnostic] = []
+    texts: dict[str, str] = {}
+    ros2: dict[str, bool] = {}
+    try:
         for path in paths:
             text, found = read_text(path, workspace.location(path))
             read.extend(found)
             if text is not None:
                 texts[path] = text
                 ros2[path] = _is_ros2(path, setup.scan(path, text), workspace)
-        # the batch's own: what preparing the headers said; what a parse adds (a header
-        # clang still missed) is its unit's (``_translation_unit``), said where it was
-        # parsed, in this process or a worker, so not here: the same either way
-        scanned = len(setup.diagnostics)
-        results = _units(texts, ros2, setup, store, jobs, batch.units, wanted, meanwhile)
-    finally:
+    except BaseException:
         setup.close()
-    batch.diagnostics += [*setup.diagnostics[:scanned], *read]
-    return batch, results
+        raise
+    # the batch's own: what preparing the headers said; what a parse adds (a header
+    # clang still missed) is its unit's (``_translation_unit``), said where it was
+    # parsed, in this process or a worker, so not here: the same either way
+    return setup, texts, ros2, read, len(setup.diagnostics)
 
 
 def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
@@ -1008,12 +1066,14 @@ def _node_of(owner: str | None, owners: dict[str, list[str]],
 
 def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
            store: cache.Cache | None, jobs: int | None, digests: dict[str, str],
-           wanted: bool = True, meanwhile: Callable[[], None] | None = None
+           wanted: Wanted = True, meanwhile: Callable[[], None] | None = None
            ) -> dict[str, CppResult]:
     """Each translation unit's result, from the cache or parsed (in parallel); the
     digest of each in ``digests``. Without ``wanted`` a kept result is not read back
-    (only its digest) and is left out. ``meanwhile`` is called once: while the workers
-    parse, else at the end."""
+    (only its digest) and is left out; a function ``wanted`` is given every unit's
+    digest once they are known and says the units whose kept results to read back (the
+    others are left out). ``meanwhile`` is called once: while the workers parse, else
+    at the end."""
     keys = {path: cache.key(setup.workspace.relpath(path), text,
                             [*setup.arguments(False, path), f"ros2={ros2[path]}"],
                             setup.generated)
@@ -1021,8 +1081,8 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     done: dict[str, CppResult] = {}
     if store is not None:
         for path, entry in keys.items():
-            kept = store.load(entry, wanted)
-            if kept is not None and not wanted:
+            kept = store.load(entry, wanted is True)
+            if kept is not None and wanted is not True:
                 digests[path] = kept[1]
             elif kept is not None and kept[0] is not None:
                 result = _result_from_data(kept[0])
@@ -1065,6 +1125,20 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         digests[path] = digest
     if meanwhile is not None:
         meanwhile()
+    if callable(wanted) and store is not None:
+        for path in wanted(dict(digests)):
+            if path in done or path not in keys:
+                continue
+            kept = store.load(keys[path])
+            result = _result_from_data(kept[0]) if kept is not None and (
+                kept[0] is not None) else None
+            if result is None or kept is None or kept[1] != digests[path]:
+                # gone since (another run pruned it): parsed again, in this process
+                setup.materialise()
+                outcome = _unit_and_data(path, texts[path], ros2[path], setup)
+                _store(store, keys[path], outcome)
+                result = outcome[0]
+            done[path] = result
     return {path: done[path] for path in texts if path in done}
 
 

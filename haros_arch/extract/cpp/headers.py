@@ -45,6 +45,7 @@ from __future__ import annotations
 
 import contextlib
 import fcntl
+import functools
 import hashlib
 import multiprocessing.util
 import os
@@ -335,6 +336,21 @@ def is_ros2_header(header: str) -> bool:
     return header.startswith("rclcpp") or _ROS2_HEADER.fullmatch(header) is not None
 
 
+# ``package::kind::Name``, an interface written in full (spaces allowed around ``::``)
+_INTERFACE_NAME = re.compile(r"\b([A-Za-z_]\w*)\s*::\s*(msg|srv|action)\s*::\s*([A-Za-z_]\w*)")
+
+
+@functools.lru_cache(maxsize=64)
+def _interface_names(text: str) -> dict[tuple[str, str], list[str]]:
+    """The names ``package::kind::Name`` of a file's text write, by package and kind, in
+    order (one scan of a text for every interface header its includes make, not one
+    each: a source of navigation2 includes dozens)."""
+    found: dict[tuple[str, str], list[str]] = {}
+    for match in _INTERFACE_NAME.finditer(text):
+        found.setdefault((match.group(1), match.group(2)), []).append(match.group(3))
+    return found
+
+
 class IncludeSetup:
     """The folders and flags of one extraction; call ``close`` when done."""
 
@@ -353,6 +369,7 @@ class IncludeSetup:
         # ``kept_in``, kept from run to run, when no other run holds it (``_kept``);
         # else a temporary one
         self._lock: int | None = None
+        self._released = False  # the kept folder let go of between two uses (``release``)
         kept = self._kept(workspace.root, kept_in) if kept_in else None
         self.generated = kept or tempfile.mkdtemp(prefix="haros-arch-cpp-")
         self.user_dirs = [os.path.abspath(d) for d in include_dirs]
@@ -535,7 +552,35 @@ class IncludeSetup:
         package = self.workspace.package_of(source)
         return self.own.get(package.name, []) if package is not None else []
 
+    def release(self) -> None:
+        """Let another run take the kept folder (``_kept``) while this setup waits to be
+        used again in this run (``extract.one_run``); ``hold`` takes it back."""
+        if self._lock is not None:
+            os.close(self._lock)
+            self._lock = None
+            self._released = True
+
+    def hold(self) -> bool:
+        """Take the kept folder back after ``release``; False when another run holds it
+        now. Another run may have made the folder hold its own headers meanwhile: they
+        are written again before a parse (``materialise``)."""
+        if not self._released:
+            return True
+        try:
+            lock = os.open(self.generated + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
+        except OSError:
+            return False
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            os.close(lock)
+            return False
+        self._lock, self._released, self._on_disk = lock, False, False
+        return True
+
     def close(self) -> None:
+        if self._released:  # the kept folder, let go of already
+            return
         if self._lock is not None:  # kept for the next run, which makes it what it needs
             os.close(self._lock)
             self._lock = None
@@ -971,9 +1016,8 @@ class IncludeSetup:
         """The names ``package::kind::Name`` that the files including the header being
         synthesised write: a name with capitals together (``GetPositionIK``) has a file
         name (``get_position_ik.hpp``) that capitalising each word would not give back."""
-        pattern = re.compile(rf"\b{re.escape(package)}\s*::\s*{kind}\s*::\s*([A-Za-z_]\w*)")
-        return [m.group(1) for text in reversed(self._including)
-                for m in pattern.finditer(text)]
+        return [name for text in reversed(self._including)
+                for name in _interface_names(text).get((package, kind), ())]
 
     def _resolve(self, header: str) -> str | None:
         system = toolchain.system_include_dirs() if self.system_headers else (STD_STANDIN,)
