@@ -13,7 +13,10 @@ folder (``XDG_CACHE_HOME``), never the user's:
 - ``cold`` an empty cache; ``warm`` nothing changed; ``readback`` nothing changed, the
   kept findings removed first (the kept model read back and checked again, as when the
   findings' entry was dropped or ``extract`` kept the model under other rules)
-- ``--cpp``: a comment appended to that C++ file, then ``cpp-nocache`` / ``cpp-cached``
+- ``--cpp``: a comment appended to that C++ file, then ``cpp-nocache`` / ``cpp-cached``;
+  then a comment line put before its first line (every call of the file moves: the run
+  is made again from the unit, node and build-file caches), ``edit-nocache`` /
+  ``edit-cached``
 - ``--other``: a comment appended to that launch / YAML / Python file, the same pair
 - ``copy-nocache`` / ``copy-cached``: a second copy of the workspace at another path,
   its cached run reading the entries the first copy wrote
@@ -47,6 +50,14 @@ def comment(path: str) -> None:
             "<!-- touched by cache_same.py -->" if ext in XML else "# touched by cache_same.py")
     with open(path, "a", encoding="utf-8") as handle:
         handle.write(f"\n{text}\n")
+
+
+def comment_first(path: str) -> None:
+    """Put a C++ comment line before the file's first line."""
+    with open(path, encoding="utf-8", errors="surrogateescape") as handle:
+        text = handle.read()
+    with open(path, "w", encoding="utf-8", errors="surrogateescape") as handle:
+        handle.write("// edited by cache_same.py\n" + text)
 
 
 def step(name: str, folder: str, target: str, cache: str, out: str,
@@ -128,6 +139,13 @@ def main() -> int:
             runs[f"{kind}-cached"] = step(f"{kind}-cached", one, args.project, cache, out,
                                           "--jobs", "1")
             pairs.append((f"{kind}-nocache", f"{kind}-cached"))
+    if args.cpp:
+        comment_first(os.path.join(one, args.cpp))  # the cached run first: after cpp-cached
+        runs["edit-cached"] = step("edit-cached", one, args.project, cache, out, "--jobs",
+                                   "1")
+        runs["edit-nocache"] = step("edit-nocache", one, args.project, cache, out,
+                                    "--no-cache", "--jobs", "1")
+        pairs.append(("edit-nocache", "edit-cached"))
     different = 0
     for first, second in pairs:
         for command in ("check", "extract"):

@@ -3,6 +3,7 @@ with patterns (the CMake source choice, the plugin scans, the C++ extractor's sp
 
 from __future__ import annotations
 
+import functools
 import re
 from typing import AnyStr
 
@@ -14,6 +15,7 @@ _TEXT_INSIDE = re.compile(r"[^\r\n]")
 _BYTES_INSIDE = re.compile(rb"[^\r\n]")
 
 
+@functools.lru_cache(maxsize=256)  # a file's text is asked again by each reader
 def code_only(text: AnyStr, literals: bool = False) -> AnyStr:
     """``text`` (``str`` or ``bytes``) with its comments blanked and, unless
     ``literals``, the insides of its string and character literals (their quotes kept),

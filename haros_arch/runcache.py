@@ -300,8 +300,11 @@ def store(folder: str, key: str, model: Model) -> None:
     ``KEEP`` entries."""
     with held_back():  # the model's data, and the model it reads back as, live on
         data = model_to_data(model)
-        text = json.dumps(data, sort_keys=True)
-        same = json.dumps(model_to_data(from_data(json.loads(text))), sort_keys=True) == text
+        # in the model's own order: read back, its documents list every field and key
+        # as a run without the cache does (a QoS profile's keys sorted read back in
+        # another order than the extraction made them, and `extract -o` differed)
+        text = json.dumps(data)
+        same = json.dumps(model_to_data(from_data(json.loads(text)))) == text
     if not same:
         return  # a model that does not read back whole is not kept (never a wrong one)
     _KEPT[model] = (folder, key)

@@ -570,3 +570,57 @@ def test_an_output_written_beside_the_project_is_no_input(tmp_path: Path, monkey
     (project.parent / "notes.txt").write_text("x")  # a file of someone else's
     main(["extract", str(project), "-o", str(tmp_path / "elsewhere.json")])
     assert len(ran) == 3
+
+
+QOS_WORKSPACE = {
+    "src/qos_demo/package.xml": package_xml("qos_demo", "ament_cmake").replace(
+        "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"),
+    "src/qos_demo/CMakeLists.txt": """
+        cmake_minimum_required(VERSION 3.8)
+        project(qos_demo)
+        find_package(ament_cmake REQUIRED)
+        find_package(rclcpp REQUIRED)
+        find_package(std_msgs REQUIRED)
+        add_executable(talker src/talker.cpp)
+        ament_target_dependencies(talker rclcpp std_msgs)
+        install(TARGETS talker DESTINATION lib/${PROJECT_NAME})
+        ament_package()
+        """,
+    "src/qos_demo/src/talker.cpp": """
+        #include <rclcpp/rclcpp.hpp>
+        #include <std_msgs/msg/string.hpp>
+        int main(int argc, char** argv) {
+          rclcpp::init(argc, argv);
+          auto node = std::make_shared<rclcpp::Node>("talker");
+          auto latched = node->create_publisher<std_msgs::msg::String>(
+              "status", rclcpp::QoS(1).reliable().transient_local());
+          auto fast = node->create_publisher<std_msgs::msg::String>(
+              "chatter", rclcpp::SensorDataQoS());
+          rclcpp::spin(node);
+        }
+        """,
+    "src/qos_demo/launch/talk.launch.xml": (
+        '<launch><node pkg="qos_demo" exec="talker" name="talker"/></launch>\n'),
+    "project.yaml": ("project: q\nworkspace: [src]\ndistro: jazzy\nconfigurations:\n"
+                     "  c: [qos_demo/launch/talk.launch.xml]\n"),
+}
+
+
+def test_extracts_document_is_the_same_text_with_and_without_the_cache(
+        tmp_path: Path, write_tree) -> None:
+    """Byte for byte, as `extract -o` writes it: a kept model read back listed a QoS
+    profile's keys sorted (the run cache kept its entry with sorted keys), the run
+    without the cache in the order extraction made them (bench/cache_same.py said
+    `DIFFERENT` on ros2_control_demos)."""
+    from haros_arch.query.command import document
+    from haros_arch.report.json import document_json
+
+    root = write_tree(QOS_WORKSPACE)
+    spec = load(str(root / "project.yaml"))
+    cold = document_json(document(analyse(spec, {}, Options(cache_dir=None, jobs=1)), spec))
+    assert '"history": "keep_last"' in cold
+    cache = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    # made, then read back (the document made again from the kept model, as `extract`
+    # does after a `check` kept the run)
+    texts = [document_json(document(analyse(spec, {}, cache), spec)) for _ in range(2)]
+    assert texts == [cold, cold]

@@ -17,6 +17,7 @@ and out-of-line member definitions ``Base::method(`` starting a line.
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections.abc import Callable, Iterable, Sequence
@@ -432,31 +433,39 @@ def built_sources(own: Sequence[str], workspace: Files,
     return [s for s in files if s not in own and uses_ros(s, workspace)]
 
 
+# a class built by a text (code, comments blanked): ``new ns::C(...)``,
+# ``make_shared<ns::C>(...)``, or ``ns::C name;`` / ``ns::C name(args);`` / ``ns::C name =
+# ...;`` starting a line (a member or a local held by value, not ``ns::C* p``,
+# ``ns::C& r``); the class itself, not a type nested in it (``make_shared<SpinAction::
+# Feedback>`` builds a Feedback, whichever SpinAction qualifies it). Any name matches here
+# and ``_built`` keeps the classes asked for: one pattern for every call, where an
+# alternation of the names asked was compiled for each and tried at every line
+_QUALIFIED = r"(?:::)?((?:\w+\s*::\s*)*)([A-Za-z_]\w*)\b(?!\s*::)"
+_BUILT = re.compile(
+    rf"\bnew\s+{_QUALIFIED}|\bmake_(?:shared|unique)\s*<\s*{_QUALIFIED}"
+    rf"|^[ \t]*(?:(?:static|mutable|const)\s+)*{_QUALIFIED}\s*(?:<[^;{{}}()]*>)?\s+"
+    rf"(?!const\b|operator\b)[A-Za-z_]\w*\s*[;({{=\[]", re.MULTILINE)
+
+
 def _built(classes: set[str], texts: list[str]) -> set[tuple[str, str | None]]:
     """The classes of ``classes`` that ``texts`` (code, comments blanked) build, each
     with the namespace it is written with (None when unqualified)."""
     if not classes:
         return set()
-    names = "|".join(re.escape(c) for c in sorted(classes, key=len, reverse=True))
-    # the class itself, not a type nested in it (``make_shared<SpinAction::Feedback>``
-    # builds a Feedback, whichever SpinAction qualifies it)
-    qualified = rf"(?:::)?((?:\w+\s*::\s*)*)({names})\b(?!\s*::)"
-    pattern = re.compile(
-        # ``new ns::C(...)``, ``make_shared<ns::C>(...)``
-        rf"\bnew\s+{qualified}|\bmake_(?:shared|unique)\s*<\s*{qualified}"
-        # ``ns::C name;`` / ``ns::C name(args);`` / ``ns::C name = ...;`` starting a
-        # line: a member or a local held by value (not ``ns::C* p``, ``ns::C& r``)
-        rf"|^[ \t]*(?:(?:static|mutable|const)\s+)*{qualified}\s*(?:<[^;{{}}()]*>)?\s+"
-        rf"(?!const\b|operator\b)[A-Za-z_]\w*\s*[;({{=\[]", re.MULTILINE)
+    return {built for text in texts for built in _built_in(text) if built[0] in classes}
+
+
+@functools.lru_cache(maxsize=256)
+def _built_in(text: str) -> frozenset[tuple[str, str | None]]:
+    """Every name ``_BUILT`` finds built in ``text``, with its namespace (a package's
+    sources are asked again for each class set: once per text)."""
     found: set[tuple[str, str | None]] = set()
-    for text in texts:
-        for match in pattern.finditer(text):
-            groups = match.groups()
-            for index in range(0, len(groups), 2):
-                if groups[index + 1]:
-                    space = _qualifier(groups[index] + groups[index + 1])
-                    found.add((groups[index + 1], space))
-    return found
+    for match in _BUILT.finditer(text):
+        groups = match.groups()
+        for index in range(0, len(groups), 2):
+            if groups[index + 1]:
+                found.add((groups[index + 1], _qualifier(groups[index] + groups[index + 1])))
+    return frozenset(found)
 
 
 # ``C::member(params) const {`` (``C::C(params) : initialisers {`` for a constructor) at
