@@ -369,9 +369,9 @@ def _kept_nodes(store: cache.Cache, every: list[list[str]], digests: dict[str, s
 def _keep_node(store: cache.Cache, key: str, result: CppResult) -> None:
     """Keep a node's result made from its units (``_node_result``), unless it would not
     read back whole."""
-    data = _result_data(result)
-    if _result_from_data(json.loads(json.dumps(data))) == result:
-        store.store_node(key, data)
+    text = json.dumps({"result": _result_data(result)})
+    if _result_from_data(json.loads(text)["result"]) == result:
+        store.store_node(key, text)
 
 
 def _folder(cache_dir: str | None, workspace: Workspace) -> str | None:

@@ -186,14 +186,15 @@ class Cache:
         except (OSError, ValueError, AttributeError):
             return None
 
-    def store_node(self, key: str, result: dict[str, Any]) -> None:
-        """Keep a node's result (``to_data``) under ``node_key``: made of its units' results
-        alone, it is what they give while they give what they gave."""
+    def store_node(self, key: str, text: str) -> None:
+        """Keep a node's result under ``node_key`` (``text``: the JSON of ``{"result":
+        to_data(...)}``): made of its units' results alone, it is what they give while
+        they give what they gave."""
         try:
             os.makedirs(self.nodes, exist_ok=True)
             fd, temporary = tempfile.mkstemp(dir=self.nodes, suffix=".tmp")
             with os.fdopen(fd, "w", encoding="utf-8") as handle:
-                handle.write(json.dumps({"result": result}))
+                handle.write(text)
             os.replace(temporary, os.path.join(self.nodes, f"{key}.json"))
         except OSError:
             pass
@@ -229,6 +230,30 @@ class Cache:
 
 # -- the result as JSON ----------------------------------------------------------------
 
+_SCALARS = frozenset({str, int, float, bool, type(None)})
+_FIELDS: dict[type, tuple[str, ...]] = {}  # a dataclass's field names, by its type
+
+
+def plain(value: Any) -> Any:
+    """``dataclasses.asdict`` of a value made of dataclasses, lists, tuples and dicts,
+    without its deep copies (a tuple becomes a list, as JSON writes either): a unit's or
+    a node's result holds thousands of calls, each with its location and conditions,
+    and ``asdict`` was most of the time a cold run spent keeping node results."""
+    kind = type(value)
+    if kind in _SCALARS:
+        return value
+    names = _FIELDS.get(kind)
+    if names is None and dataclasses.is_dataclass(value) and not isinstance(value, type):
+        names = _FIELDS[kind] = tuple(f.name for f in dataclasses.fields(value))
+    if names is not None:
+        return {name: plain(getattr(value, name)) for name in names}
+    if isinstance(value, (list, tuple)):
+        return [plain(item) for item in value]
+    if isinstance(value, dict):
+        return {key: plain(item) for key, item in value.items()}
+    return value
+
+
 def to_data(calls: list[PrimitiveCall], rosname: str | None,
             diagnostics: list[Diagnostic],
             facts: list[tuple[str, int, str, str]] | None = None,
@@ -243,13 +268,13 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             passed: list[tuple[str, str]] | None = None,
             hidden: list[str] | None = None,
             registered: list[tuple[str, str]] | None = None) -> dict[str, Any]:
-    return {"calls": [dataclasses.asdict(c) for c in calls], "rosname": rosname,
-            "diagnostics": [dataclasses.asdict(d) for d in diagnostics],
+    return {"calls": [plain(c) for c in calls], "rosname": rosname,
+            "diagnostics": [plain(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
             "node_names": [list(n) for n in node_names or ()],
             "constructions": [list(n) for n in constructions or ()],
             "unseen": list(unseen or ()),
-            "made_under": [[made, [dataclasses.asdict(c) for c in under]]
+            "made_under": [[made, [plain(c) for c in under]]
                            for made, under in made_under or ()],
             "uses": [list(n) for n in uses or ()], "defines": list(defines or ()),
             "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()],
@@ -301,7 +326,7 @@ def from_data(data: dict[str, Any]) -> tuple[
 
 def conditions_text(conditions: Iterable[Condition]) -> str:
     """Conditions as one string (a ``links.CONDITIONS`` fact's value)."""
-    return json.dumps([dataclasses.asdict(c) for c in conditions], sort_keys=True)
+    return json.dumps([plain(c) for c in conditions], sort_keys=True)
 
 
 @functools.lru_cache(maxsize=4096)
