@@ -775,6 +775,9 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         result.rosnames = []
     under = _made_under(units, owners, result.rosnames)
     calls: list[PrimitiveCall] = []
+    # the copies made so far by ``_call_key``: equal calls have equal keys, so a copy
+    # is looked for among its few namesakes, not among every call of the node
+    copies: dict[tuple[object, ...], list[PrimitiveCall]] = {}
     nodes: dict[str, str | None] = {}
     for call in result.calls:
         holder, own = links.per_construction(call.node_name)
@@ -793,7 +796,9 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
             extra = tuple(c for c in under.get(each or "", ()) if c not in call.conditions)
             copy = dataclasses.replace(call, node_name=each,
                                        conditions=(*extra, *call.conditions))
-            if copy not in calls:
+            same = copies.setdefault(_call_key(copy), [])
+            if copy not in same:
+                same.append(copy)
                 calls.append(copy)
     result.calls = calls
 
