@@ -76,6 +76,9 @@ def _fieldless(header: str) -> diag.Diagnostic:
 class _Setup:
     def __init__(self) -> None:
         self.diagnostics: list[diag.Diagnostic] = []
+        self.prepared: frozenset[str] | None = None
+        self.prepared_said = 0
+        self.unit_missing: list[diag.Diagnostic] = []
 
 
 def test_header_facts_read_on_are_those_of_the_whole_list() -> None:
@@ -100,3 +103,17 @@ def test_header_facts_read_on_are_those_of_the_whole_list() -> None:
     # what a caller does with the sets it gets is not kept
     facts.fieldless(setup).add("x")  # type: ignore[arg-type]
     assert facts.fieldless(setup) == set()  # type: ignore[arg-type]
+
+
+def test_a_units_missing_libraries_are_the_preparations_and_its_own() -> None:
+    """Once the batch parses, what the parses said of other units (a header one of them
+    stood in for) is none of the next unit's: its process's earlier units made its
+    permissive declarations depend on the worker it went to."""
+    setup = _Setup()
+    facts = _HeaderFacts()
+    setup.diagnostics += [_missing("ogg/ogg.h")]
+    setup.prepared, setup.prepared_said = frozenset(), 1  # the first parse begins
+    setup.diagnostics += [_missing("urg_c/urg_sensor.h")]  # another unit's repair
+    assert facts.libraries(setup) == {"ogg", "libogg"}  # type: ignore[arg-type]
+    setup.unit_missing = [_missing("urg_c/urg_sensor.h")]  # this unit includes it too
+    assert facts.libraries(setup) == {"ogg", "libogg", "urg", "liburg"}  # type: ignore[arg-type]

@@ -101,8 +101,15 @@ class _HeaderFacts:
         return set(self._fieldless)
 
     def libraries(self, setup: IncludeSetup) -> set[str]:
-        self._update(setup.diagnostics)
-        return set(self._libraries)
+        """Of the diagnostics said before the first parse and of the headers the unit
+        being parsed includes that parses stood in for (``IncludeSetup.stood_in``):
+        not of what the parses of the units its process read before said, which made
+        a unit's permissive declarations depend on the worker it went to."""
+        prepared = setup.diagnostics if setup.prepared is None else (
+            setup.diagnostics[:setup.prepared_said])
+        self._update(prepared)
+        return set(self._libraries) | synthesis.library_prefixes(
+            d.message for d in setup.unit_missing)
 
 
 _HEADER_FACTS: weakref.WeakKeyDictionary[IncludeSetup, _HeaderFacts] = (
@@ -1469,6 +1476,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     (empty when the result must not be cached)."""
     workspace = setup.workspace
     before = len(setup.diagnostics)
+    setup.unit_missing = []
     data = text.encode("utf-8")
 
     known: dict[str, bool] = {}  # clang names the same few files for every error
@@ -1543,7 +1551,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
     if library.version(setup.distro) is None and not setup.system_headers:
         result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
                                                    setup.distro))
-    result.diagnostics[:0] = setup.diagnostics[before:]
+    # what the parses added: the headers the unit includes that a parse stood in for,
+    # this unit's or an earlier one's (``stood_in``), not only those it repaired itself
+    result.diagnostics[:0] = [*setup.unit_missing, *(
+        d for d in setup.diagnostics[before:] if d.code != "CPP_INCLUDE_MISSING")]
     result.rosname = finder.rosname if finder.rosname is not None or (
         not finder.rosname_unbuilt) else links.UNBUILT_NAMES.join(finder.rosname_unbuilt)
     result.facts = finder.facts
@@ -2086,6 +2097,11 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
         if not missing or not setup.repair(missing):
             break
     assert tu is not None
+    setup.unit_missing = setup.stood_in(
+        (os.path.abspath(inclusion.include.name), workspace.location(
+            os.path.abspath(inclusion.location.file.name), inclusion.location.line,
+            inclusion.location.column))
+        for inclusion in tu.get_includes() if inclusion.location.file is not None)
     wanted = _unincluded_messages(tu, setup, source)
     if wanted:
         more = [*args, *(word for header in wanted for word in ("-include", header))]

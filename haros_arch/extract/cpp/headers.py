@@ -351,6 +351,9 @@ def _interface_names(text: str) -> dict[tuple[str, str], list[str]]:
     return found
 
 
+_EMPTY_MARK = "// empty stand-in for "  # the first words of a missing header's stand-in
+
+
 class IncludeSetup:
     """The folders and flags of one extraction; call ``close`` when done."""
 
@@ -424,6 +427,15 @@ class IncludeSetup:
                 self.own_extra[package.name] = [f for f in (folder, nested) if os.path.isdir(
                     os.path.join(f, package.name))]
         self.diagnostics: list[Diagnostic] = []
+        # the headers synthesised and the diagnostics said before the first parse
+        # (``materialise``): what a parse adds (a header clang still missed) is the
+        # unit's own, counted for each unit that includes it (``stood_in``), not for
+        # the units its process happens to parse next
+        self.prepared: frozenset[str] | None = None
+        self.prepared_said = 0
+        # the headers the unit being parsed includes that parses stood in for
+        # (``stood_in``), said missing by it
+        self.unit_missing: list[Diagnostic] = []
         self._handled: set[str] = set()
         self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
         # the texts of the files being scanned, the unit's source first, each including the
@@ -1081,7 +1093,7 @@ class IncludeSetup:
                                 "it, created by haros_arch\n" + "".join(
                                     f"#define {name}_{macro}\n" for macro in _EXPORT_MACROS))
             return
-        self._write(header, f"// empty stand-in for {header}, created by haros_arch\n")
+        self._write(header, f"{_EMPTY_MARK}{header}, created by haros_arch\n")
         self.diagnostics.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
 
     def _write(self, header: str, text: str) -> None:
@@ -1107,6 +1119,9 @@ class IncludeSetup:
     def materialise(self) -> None:
         """Write the synthesised headers, before the first parse (until then they are
         only in memory: a run answered from the cache writes none)."""
+        if self.prepared is None:  # what the parses of the batch all start from
+            self.prepared = frozenset(self.written)
+            self.prepared_said = len(self.diagnostics)
         if not self._on_disk:
             self._on_disk = True
             if self._lock is not None:
@@ -1158,6 +1173,31 @@ class IncludeSetup:
                     self.message_header(header.replace(os.sep, "/"))):
                 return None
         return self.written.get(path)
+
+    def stood_in(self, includes: Iterable[tuple[str, Location]]) -> list[Diagnostic]:
+        """``CPP_INCLUDE_MISSING`` of each header a parse included (``includes``: the
+        file and where it is included, in order) that is an empty stand-in a parse made
+        (``repair``), this process's or another's: each unit that includes it says so
+        where it includes it, whichever unit's parse made it first."""
+        found: list[Diagnostic] = []
+        seen: set[str] = set()
+        roots = (self.generated + os.sep, self.overflow + os.sep)
+        for path, where in includes:
+            if path in seen or not path.startswith(roots) or (
+                    self.prepared is not None and path in self.prepared):
+                continue
+            seen.add(path)
+            text = self.written.get(path)
+            if text is None:
+                try:
+                    with open(path, encoding="utf-8", errors="replace") as handle:
+                        text = handle.read(len(_EMPTY_MARK) + 512)
+                except OSError:
+                    continue
+            if text.startswith(_EMPTY_MARK):
+                header = text[len(_EMPTY_MARK):].partition(", created by haros_arch")[0]
+                found.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
+        return found
 
     def repair(self, messages: list[tuple[str, Location]]) -> bool:
         """Create what clang reported as not found; True when a new parse may help."""
@@ -1266,6 +1306,17 @@ def _sync(folder: str, wanted: Mapping[str, str], spared: set[str]) -> None:
 
 
 def _write_file(path: str, text: str) -> None:
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w", encoding="utf-8") as handle:
-        handle.write(text)
+    """Write a synthesised header whole or not at all (a temporary file moved into
+    place): a parse in another worker that includes it (a message header a parse makes
+    again in the shared folder) never reads it truncated."""
+    folder = os.path.dirname(path)
+    os.makedirs(folder, exist_ok=True)
+    fd, temporary = tempfile.mkstemp(dir=folder, prefix=".haros-", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            handle.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.remove(temporary)
+        raise
