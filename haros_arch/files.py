@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import os
 import stat
 from collections.abc import Callable, Iterator, MutableMapping
@@ -52,6 +53,17 @@ def kept_in(memo: MutableMapping[K, Any], key: K, compute: Callable[[], V]) -> V
     for path in read if _RECORDING else ():
         note_read(path)
     return value
+
+
+def content_digest(path: str) -> str | None:
+    """The SHA-256 of a file's content, None when it cannot be read (what the caches
+    compare a file by: the run cache's snapshot, the unit cache's headers, the build
+    files' C++ reads)."""
+    try:
+        with open(path, "rb") as handle:
+            return hashlib.sha256(handle.read()).hexdigest()
+    except OSError:
+        return None
 
 
 def _refuse_special(path: str, location: Location) -> list[Diagnostic]:

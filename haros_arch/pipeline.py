@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 from . import diagnostics as diag
 from . import runcache
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
-from .files import recording
+from .files import content_digest, recording
 from .model.location import Location
 from .model.model import Model
 from .model.serialise import to_data
@@ -127,10 +127,8 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
         batch = CppBatch()
         with _stage(options, "C++"):
             for part in parts:  # as the run read them: deferred plugins after the rest
-                found = unit_digests(part, workspace, cache_dir=options.cache_dir,
-                                     jobs=options.jobs, **cpp_arguments(project, env))
-                batch.units.update(found.units)
-                batch.diagnostics.extend(found.diagnostics)
+                batch.extend(unit_digests(part, workspace, cache_dir=options.cache_dir,
+                                          jobs=options.jobs, **cpp_arguments(project, env)))
     if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
@@ -346,7 +344,7 @@ def _build_files(packages: Sequence[Package], workspace: Workspace,
                        for data, node in zip(nodes, package.nodes, strict=True)) and [
                            diagnostic_from_data(d) for d in diagnostics] == found:
                     entry = {"nodes": nodes, "diagnostics": diagnostics,
-                             "cpp": {path: runcache.content_digest(path)
+                             "cpp": {path: content_digest(path)
                                      for path in sorted(read)
                                      if path.endswith(runcache.CPP_FILES)}}
         if record is not None and entry is not None:
@@ -362,7 +360,7 @@ def _kept_package(entry: Any, name: str
     from .model.load import diagnostic_from_data, node_from_data
 
     try:
-        if any(runcache.content_digest(path) != digest
+        if any(content_digest(path) != digest
                for path, digest in entry["cpp"].items()):
             return None
         return ([node_from_data(n, name) for n in entry["nodes"]],

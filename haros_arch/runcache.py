@@ -41,7 +41,7 @@ from typing import Any, TypeVar
 
 from . import __version__
 from .collector import held_back
-from .files import MAX_FILE_BYTES
+from .files import MAX_FILE_BYTES, content_digest
 from .model.finding import Finding
 from .model.load import from_data
 from .model.model import Model
@@ -108,15 +108,6 @@ def record_output(path: str) -> None:
                         "outputs": dict(list(found.items())[-MAX_OUTPUTS:])})
 
 
-def content_digest(path: str) -> str:
-    """Of a file's content ("unreadable" when it cannot be read)."""
-    try:
-        with open(path, "rb") as handle:
-            return hashlib.sha256(handle.read()).hexdigest()
-    except OSError:
-        return "unreadable"
-
-
 class Snapshot:
     """Content hashes of files by path, through a stat index kept in ``index_path``; the
     files this tool wrote (``record_output``), unchanged since, are left out."""
@@ -153,7 +144,7 @@ class Snapshot:
         elif known is not None and known[0] == info.st_size and known[1] == info.st_mtime_ns:
             digest = known[2]
         else:
-            digest = content_digest(path)
+            digest = content_digest(path) or "unreadable"
         self.outer.append((path, "c++" if path.endswith(CPP_FILES) else digest))
         self.inner.append((path, digest))
         if self.now - info.st_mtime > RACY_SECONDS:

@@ -122,9 +122,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             node.rosname = _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
         if cpp_batch is not None:
-            cpp_batch.units.update(batch.units)
-            cpp_batch.diagnostics.extend(batch.diagnostics)
-            cpp_batch.parts.extend(batch.parts)
+            cpp_batch.extend(batch)
         found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
         macros = _build_macros(cpp, workspace, compile_commands)
         found.extend(d for said in macros for d in said)

@@ -277,6 +277,13 @@ class CppBatch:
     # their sources share with the first batch's are prepared, and said missing, again)
     parts: list[list[str]] = field(default_factory=list)
 
+    def extend(self, other: CppBatch) -> None:
+        """Take in the units, own diagnostics and parts of another batch read after this
+        one (the deferred plugins'), not its node results."""
+        self.units.update(other.units)
+        self.diagnostics.extend(other.diagnostics)
+        self.parts.extend(other.parts)
+
     def all_diagnostics(self) -> list[Diagnostic]:
         """Every diagnostic once (a translation unit shared by nodes reports once)."""
         return list(dict.fromkeys(
@@ -330,7 +337,7 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
     folder = _folder(cache_dir, workspace)
     store = None if folder is None else cache.Cache(folder, "")
     every = [list(dict.fromkeys(map(os.path.abspath, sources))) for sources in nodes]
-    said = [entries[index] if entries is not None else None for index in range(len(nodes))]
+    said: list[str | None] = list(entries) if entries is not None else [None] * len(nodes)
     kept: dict[int, CppResult] = {}
 
     def unkept(digests: dict[str, str]) -> set[str]:
@@ -433,7 +440,7 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
             if stale is not None:
                 stale[0].close()
             run[key] = prepared
-    setup, texts, ros2, read, scanned = prepared
+    setup, texts, ros2, read = prepared
     store = None if folder is None else cache.Cache(folder, setup.generated, setup.written,
                                                      setup.remade)
     try:
@@ -443,13 +450,13 @@ def _batch(nodes: Sequence[Sequence[str]], workspace: Workspace, include_dirs: S
             setup.close()
         else:
             setup.release()
-    batch.diagnostics += [*setup.diagnostics[:scanned], *read]
+    batch.diagnostics += [*setup.diagnostics[:setup.prepared_said], *read]
     return batch, results
 
 
-# a batch's include setup with its sources' texts, whether each is ROS 2 code, the
-# diagnostics of reading them and how many the setup said while preparing the headers
-Prepared = tuple[IncludeSetup, dict[str, str], dict[str, bool], list[Diagnostic], int]
+# a batch's include setup with its sources' texts, whether each is ROS 2 code and the
+# diagnostics of reading them
+Prepared = tuple[IncludeSetup, dict[str, str], dict[str, bool], list[Diagnostic]]
 
 
 def _prepare(paths: list[str], workspace: Workspace, setup: IncludeSetup) -> Prepared:
@@ -471,7 +478,8 @@ def _prepare(paths: list[str], workspace: Workspace, setup: IncludeSetup) -> Pre
     # the batch's own: what preparing the headers said; what a parse adds (a header
     # clang still missed) is its unit's (``_translation_unit``), said where it was
     # parsed, in this process or a worker, so not here: the same either way
-    return setup, texts, ros2, read, len(setup.diagnostics)
+    setup.prepared_now()
+    return setup, texts, ros2, read
 
 
 def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:

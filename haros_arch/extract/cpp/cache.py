@@ -21,6 +21,7 @@ from typing import Any
 
 from ... import __version__
 from ...diagnostics import CATALOGUE, Diagnostic
+from ...files import content_digest
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
@@ -117,15 +118,6 @@ def digest(result: dict[str, Any]) -> str:
     return hashlib.sha256(json.dumps(result, sort_keys=True).encode()).hexdigest()
 
 
-def fingerprint(path: str) -> str | None:
-    """The content hash of a file, None when it cannot be read."""
-    try:
-        with open(path, "rb") as handle:
-            return hashlib.sha256(handle.read()).hexdigest()
-    except OSError:
-        return None
-
-
 class Cache:
     """Entries in ``folder``; ``generated`` is this run's folder of synthesised headers."""
 
@@ -152,7 +144,7 @@ class Cache:
             if text is None and self.remake is not None and path.startswith(
                     self.generated + os.sep):
                 text = self.remake(path)
-            self._digests[path] = fingerprint(path) if text is None else hashlib.sha256(
+            self._digests[path] = content_digest(path) if text is None else hashlib.sha256(
                 text.encode("utf-8")).hexdigest()
         return self._digests[path]
 
@@ -208,7 +200,7 @@ class Cache:
                 continue  # made from the source and the other headers, which are listed
             hashed = self._stored.get(name)
             if hashed is None:
-                hashed = fingerprint(name)
+                hashed = content_digest(name)
                 if hashed is None:
                     return
                 self._stored[name] = hashed

@@ -351,7 +351,8 @@ def _interface_names(text: str) -> dict[tuple[str, str], list[str]]:
     return found
 
 
-_EMPTY_MARK = "// empty stand-in for "  # the first words of a missing header's stand-in
+# a missing header's stand-in: these words around its name (``stood_in`` reads it back)
+_EMPTY_MARK, _EMPTY_END = "// empty stand-in for ", ", created by haros_arch\n"
 
 
 class IncludeSetup:
@@ -427,10 +428,10 @@ class IncludeSetup:
                 self.own_extra[package.name] = [f for f in (folder, nested) if os.path.isdir(
                     os.path.join(f, package.name))]
         self.diagnostics: list[Diagnostic] = []
-        # the headers synthesised and the diagnostics said before the first parse
-        # (``materialise``): what a parse adds (a header clang still missed) is the
-        # unit's own, counted for each unit that includes it (``stood_in``), not for
-        # the units its process happens to parse next
+        # the headers synthesised and the diagnostics said once the sources' headers
+        # are prepared (``prepared_now``), before any parse: what a parse adds (a header
+        # clang still missed) is the unit's own, counted for each unit that includes it
+        # (``stood_in``), not for the units its process happens to parse next
         self.prepared: frozenset[str] | None = None
         self.prepared_said = 0
         # the headers the unit being parsed includes that parses stood in for
@@ -564,6 +565,12 @@ class IncludeSetup:
         package = self.workspace.package_of(source)
         return self.own.get(package.name, []) if package is not None else []
 
+    def prepared_now(self) -> None:
+        """Every source's headers are prepared (``scan``): what the batch's parses all
+        start from, and the batch's own diagnostics (``diagnostics[:prepared_said]``)."""
+        self.prepared = frozenset(self.written)
+        self.prepared_said = len(self.diagnostics)
+
     def release(self) -> None:
         """Let another run take the kept folder (``_kept``) while this setup waits to be
         used again in this run (``extract.one_run``); ``hold`` takes it back."""
@@ -578,14 +585,8 @@ class IncludeSetup:
         are written again before a parse (``materialise``)."""
         if not self._released:
             return True
-        try:
-            lock = os.open(self.generated + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
-        except OSError:
-            return False
-        try:
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            os.close(lock)
+        lock = _locked(self.generated)
+        if lock is None:
             return False
         self._lock, self._released, self._on_disk = lock, False, False
         return True
@@ -611,16 +612,10 @@ class IncludeSetup:
         path = os.path.join(folder, "generated", name)
         try:
             os.makedirs(path, exist_ok=True)
-            lock = os.open(path + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
         except OSError:
             return None
-        try:
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            os.close(lock)
-            return None
-        self._lock = lock
-        return path
+        self._lock = _locked(path)
+        return path if self._lock is not None else None
 
     # -- before parsing ---------------------------------------------------------------
 
@@ -1093,7 +1088,7 @@ class IncludeSetup:
                                 "it, created by haros_arch\n" + "".join(
                                     f"#define {name}_{macro}\n" for macro in _EXPORT_MACROS))
             return
-        self._write(header, f"{_EMPTY_MARK}{header}, created by haros_arch\n")
+        self._write(header, f"{_EMPTY_MARK}{header}{_EMPTY_END}")
         self.diagnostics.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
 
     def _write(self, header: str, text: str) -> None:
@@ -1119,9 +1114,6 @@ class IncludeSetup:
     def materialise(self) -> None:
         """Write the synthesised headers, before the first parse (until then they are
         only in memory: a run answered from the cache writes none)."""
-        if self.prepared is None:  # what the parses of the batch all start from
-            self.prepared = frozenset(self.written)
-            self.prepared_said = len(self.diagnostics)
         if not self._on_disk:
             self._on_disk = True
             if self._lock is not None:
@@ -1195,7 +1187,7 @@ class IncludeSetup:
                 except OSError:
                     continue
             if text.startswith(_EMPTY_MARK):
-                header = text[len(_EMPTY_MARK):].partition(", created by haros_arch")[0]
+                header = text[len(_EMPTY_MARK):].partition(_EMPTY_END)[0]
                 found.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
         return found
 
@@ -1303,6 +1295,21 @@ def _sync(folder: str, wanted: Mapping[str, str], spared: set[str]) -> None:
             if os.path.isdir(path):  # a folder of an earlier run where this one writes a file
                 shutil.rmtree(path, ignore_errors=True)
             _write_file(path, text)
+
+
+def _locked(folder: str) -> int | None:
+    """The lock of a kept folder of synthesised headers (``<folder>.lock``) taken for
+    this run, its descriptor; None when it cannot be opened or another run holds it."""
+    try:
+        lock = os.open(folder + ".lock", os.O_RDWR | os.O_CREAT, 0o644)
+    except OSError:
+        return None
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        os.close(lock)
+        return None
+    return lock
 
 
 def _write_file(path: str, text: str) -> None:
