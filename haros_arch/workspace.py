@@ -48,6 +48,8 @@ class Workspace:
     _index: dict[str, Package] = field(default_factory=dict, repr=False)
     _index_key: tuple[int, int] = field(default=(0, -1), repr=False)
     _relpaths: dict[tuple[str, str], str] = field(default_factory=dict, repr=False)
+    _prefixes_key: tuple[str, tuple[str, ...]] | None = field(default=None, repr=False)
+    _prefixes_of: tuple[str, ...] = field(default=(), repr=False)
     # source file -> the words it and the package headers it includes hold
     # (``plugins.classes.named_words``: each executable linking a library asks them
     # again), read once per run
@@ -62,6 +64,26 @@ class Workspace:
     # package name -> (its ignore marker, its folder): a package under a folder with an
     # IGNORE_MARKERS file, left out as colcon and catkin leave it out, kept to say why
     ignored: dict[str, tuple[str, str]] = field(default_factory=dict, repr=False)
+
+    @property
+    def folders(self) -> list[str]:
+        """The workspace folders: the project's (``roots``), else ``root``."""
+        return self.roots or [self.root]
+
+    def holds(self, path: str) -> bool:
+        """Whether absolute ``path`` lies below one of the workspace folders (its path,
+        as written: not its target when it is a link). Every folder counts, not the
+        first only: a project of several trees (``workspace: [a, b]``) reads b's
+        headers and sources as its own, as it reads a's."""
+        return path.startswith(self._prefixes())
+
+    def _prefixes(self) -> tuple[str, ...]:
+        key = (self.root, tuple(self.roots))
+        if self._prefixes_key != key:
+            self._prefixes_of = tuple(
+                os.path.abspath(folder).rstrip(os.sep) + os.sep for folder in self.folders)
+            self._prefixes_key = key
+        return self._prefixes_of
 
     def relpath(self, path: str) -> str:
         """A path relative to the workspace root when inside it, else absolute (asked

@@ -192,3 +192,19 @@ def test_a_finding_at_two_call_sites_keeps_both_places_in_sarif_and_junit():
     related = log["runs"][0]["results"][0]["relatedLocations"]
     assert related[0]["physicalLocation"]["region"]["startLine"] == 9
     assert "also at: s/safety.cpp:9" in to_junit([found])
+
+
+def test_sarif_gives_a_file_of_a_later_workspace_folder_its_own_uri():
+    """A project of several workspace folders: files beyond the first are absolute in
+    the model, and a URI relative to the first folder would point nowhere."""
+    jsonschema = pytest.importorskip("jsonschema")
+    links = [{"kind": "subscribe", "node": "/safety", "name": "/bumper", "type": "a/B",
+              "queue_size": 1, "location": {"file": "/other/ws/s/safety.cpp", "line": 7}}]
+    model = from_data({"configurations": [{"name": "c", "links": links, "nodes": [
+        {"name": "/safety", "node": "s/safety"}]}]})
+    (found,) = [f for f in run_catalogue(model) if f.rule == "queue-size-one"]
+    log = to_sarif([found], [], {}, "/ws")
+    jsonschema.validate(log, json.loads(SCHEMA.read_text()))
+    artifact = log["runs"][0]["results"][0]["locations"][0]["physicalLocation"][
+        "artifactLocation"]
+    assert artifact == {"uri": "file:///other/ws/s/safety.cpp"}

@@ -64,6 +64,9 @@ class PackageFiles:
             rel = self._relative[path] = self.workspace.relpath(path)
         return rel
 
+    def holds(self, path: str) -> bool:
+        return self.workspace.holds(path)
+
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
         if path.startswith(self.package.root + os.sep):
             return Location(self.package.name, self.relpath(path), line, column)

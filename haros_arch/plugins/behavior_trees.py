@@ -165,7 +165,7 @@ def _registrations(path: str, library: str, workspace: Workspace) -> list[Regist
         return []
     code = code_only(text, literals=True)
     made = {cls.lstrip(":"): name for cls, name in _MADE.findall(code)}
-    headers = with_headers(os.path.relpath(path, workspace.root), workspace)
+    headers = with_headers(workspace.relpath(path), workspace)
     everything = "\n".join(code_only(t, literals=True) for t in headers)
     out: list[Registered] = []
     for pattern in (_BUILDER, _NODE_TYPE):

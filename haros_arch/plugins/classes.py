@@ -53,6 +53,8 @@ class Files(Protocol):
 
     def relpath(self, path: str) -> str: ...
 
+    def holds(self, path: str) -> bool: ...
+
 
 def _nothing() -> list[list[str]]:
     return []
@@ -699,13 +701,13 @@ def included_headers(path: str, text: str, workspace: Files) -> list[str]:
     for ``include/as2_platform_gazebo/as2_platform_gazebo.hpp``, the header that says
     its class derives from as2_core's ``AerialPlatform``."""
     out = []
-    package = _package_root(os.path.dirname(path), workspace.root)
+    package = _package_root(os.path.dirname(path), workspace)
     folders = [os.path.dirname(path), *(_include_folders(package, workspace)
                                         if package else [])]
     for header in INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
         for folder in folders:
             candidate = os.path.normpath(os.path.join(folder, header))
-            if os.path.isfile(candidate) and candidate.startswith(workspace.root + os.sep):
+            if os.path.isfile(candidate) and workspace.holds(candidate):
                 out.append(candidate)
                 break
     return out
@@ -724,9 +726,10 @@ def _include_folders(package: str, workspace: Files) -> list[str]:
     return [include, *(os.path.join(include, name) for name in names)]
 
 
-def _package_root(folder: str, top: str) -> str | None:
-    """The nearest folder at or above ``folder`` (inside ``top``) with a package.xml."""
-    while folder.startswith(top) and len(folder) >= len(top):
+def _package_root(folder: str, workspace: Files) -> str | None:
+    """The nearest folder at or above ``folder``, in a workspace folder, with a
+    package.xml."""
+    while workspace.holds(folder + os.sep):
         if os.path.isfile(os.path.join(folder, "package.xml")):
             return folder
         parent = os.path.dirname(folder)

@@ -1,7 +1,8 @@
 """SARIF 2.1.0: one run, one rule per catalogue id, one result per finding or diagnostic.
 
 Locations are relative to the workspace root, given as ``originalUriBaseIds`` so that
-code-scanning UIs point at the source line.
+code-scanning UIs point at the source line; a file of a later workspace folder (absolute
+in the model) is a ``file:`` URI of its own.
 """
 
 from __future__ import annotations
@@ -22,7 +23,11 @@ ROOT = "WORKSPACE"
 
 
 def _location(where: Location, message: str | None = None) -> dict[str, Any]:
-    physical: dict[str, Any] = {"artifactLocation": {"uri": where.file, "uriBaseId": ROOT}}
+    # a file beyond the first workspace folder is absolute in the model: its own URI
+    file = where.file or ""
+    artifact = ({"uri": Path(file).as_uri()} if Path(file).is_absolute()
+                else {"uri": where.file, "uriBaseId": ROOT})
+    physical: dict[str, Any] = {"artifactLocation": artifact}
     if where.line > 0:
         region: dict[str, Any] = {"startLine": where.line}
         if where.column > 0:

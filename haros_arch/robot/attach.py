@@ -172,14 +172,13 @@ def _unmade(config: Configuration, launch: LaunchModel, workspace: Workspace) ->
     from it said so already."""
     said = {(d.location.file, d.location.line) for d in config.diagnostics
             if d.code == "ROBOT_DESCRIPTION_FILE"}
-    top = os.path.abspath(workspace.root) + os.sep
     for param in launch.params:
         parsed = xacro_command(param.command) if param.command is not None else None
         if parsed is None or UNKNOWN_MARK in parsed.path or not os.path.isabs(parsed.path):
             continue
         path = os.path.abspath(parsed.path)
         where = (param.location.file, param.location.line)
-        if not path.startswith(top) or where in said or os.path.exists(path) or \
+        if not workspace.holds(path) or where in said or os.path.exists(path) or \
                 os.path.exists(share_source(workspace, path)):
             continue
         said.add(where)

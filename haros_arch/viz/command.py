@@ -41,16 +41,18 @@ def model_data(model: Model) -> dict[str, Any]:
     return model_to_data(model)
 
 
-def workspace_root(project: Project | None, given: str | None) -> str:
-    """Where the model's relative file paths start: --workspace, the project's, or here."""
+def workspace_root(project: Project | None, given: str | None) -> list[str]:
+    """The folders whose files the report quotes, the first where the model's relative
+    file paths start: --workspace, the project's (files of its later folders are
+    absolute in the model), or here."""
     if given:
-        return given
+        return [given]
     if project is not None and project.workspace:
-        return project.workspace[0]
-    return os.getcwd()
+        return list(project.workspace)
+    return [os.getcwd()]
 
 
-def report_page(model: Model, findings: list[Any], root: str, project: Project) -> str:
+def report_page(model: Model, findings: list[Any], root: list[str], project: Project) -> str:
     """The report page of an analysed ``model``: read back when the same unchanged run
     rendered it before with the same findings and workspace root (``runcache.page``; the
     model's document is then not even made), else rendered. Only a root inside the
@@ -59,10 +61,12 @@ def report_page(model: Model, findings: list[Any], root: str, project: Project) 
     from .. import runcache
     from .html import render_report
 
-    full = os.path.abspath(root)
+    full = [os.path.abspath(folder) for folder in root]
     tops = [os.path.abspath(os.path.join(project.folder, w)) for w in project.workspace]
-    if not any(full == top or full.startswith(top.rstrip(os.sep) + os.sep) for top in tops):
+    if not all(any(folder == top or folder.startswith(top.rstrip(os.sep) + os.sep)
+                   for top in tops) for folder in full):
         return render_report(model_data(model), findings, root)
-    inputs = json.dumps([full, findings], sort_keys=True, default=str)
+    inputs = json.dumps([full[0] if len(full) == 1 else full, findings], sort_keys=True,
+                        default=str)
     return runcache.page(model, inputs,
                          lambda: render_report(model_data(model), findings, root))

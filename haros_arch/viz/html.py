@@ -14,7 +14,7 @@ import hashlib
 import html
 import os
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -66,7 +66,8 @@ def _needs_escape(text: str) -> bool:
 
 
 def render_report(model_data: dict[str, Any], findings: Iterable[Any],
-                  workspace_root: str, live: dict[str, Any] | None = None) -> str:
+                  workspace_root: str | Sequence[str],
+                  live: dict[str, Any] | None = None) -> str:
     """The whole report page as text; ``live``: a capture's comparison per configuration
     name (``live.compare.compare_all``), shown beside each graph."""
     found = [to_data(item) for item in findings]
@@ -98,8 +99,9 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
     return "".join(parts)
 
 
-def write_report(model_data: dict[str, Any], findings: Iterable[Any], workspace_root: str,
-                 output: str, live: dict[str, Any] | None = None) -> None:
+def write_report(model_data: dict[str, Any], findings: Iterable[Any],
+                 workspace_root: str | Sequence[str], output: str,
+                 live: dict[str, Any] | None = None) -> None:
     """Write the report of ``model_data`` (a ``haros-arch/1`` document) to ``output``."""
     write_page(render_report(model_data, findings, workspace_root, live), output)
 

@@ -1,14 +1,14 @@
 """The lines of source around every location of the model, to embed in the report.
 
-Only files inside the workspace root are read (a saved model could name any path), or in
-a ROS package that a link inside the root leads to (linked checkouts), each through
+Only files inside the workspace folders are read (a saved model could name any path), or
+in a ROS package that a link inside one leads to (linked checkouts), each through
 ``files.read_text`` with a size bound, and the total embedded text is bounded too.
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 from ..files import read_text
@@ -69,15 +69,34 @@ def _linked_package(lexical: str, root: str, real: str) -> bool:
     return False
 
 
-def collect_snippets(data: Any, workspace_root: str) -> dict[str, dict[str, str]]:
-    """``{file: {"line number": text}}`` for the lines around each location in ``data``."""
+def in_folders(folders: Sequence[str], file: str) -> str | None:
+    """``inside`` the first of ``folders`` (where relative paths start) for a relative
+    ``file``; an absolute one (the model's path of a file beyond the first workspace
+    folder) inside the folder of the others that holds it."""
+    if not folders:
+        return None
+    if not os.path.isabs(file):
+        return inside(folders[0], file)
+    lexical = os.path.normpath(file)
+    for folder in folders[1:]:
+        top = os.path.normpath(folder)
+        if lexical.startswith(top + os.sep):
+            return inside(top, lexical[len(top) + 1:])
+    return None
+
+
+def collect_snippets(data: Any, workspace_root: str | Sequence[str]
+                     ) -> dict[str, dict[str, str]]:
+    """``{file: {"line number": text}}`` for the lines around each location in ``data``;
+    ``workspace_root``: the workspace folder, or the project's folders in order."""
+    folders = [workspace_root] if isinstance(workspace_root, str) else list(workspace_root)
     wanted: dict[str, set[int]] = {}
     for file, line in locations(data):
         wanted.setdefault(file, set()).add(line)
     snippets: dict[str, dict[str, str]] = {}
     budget = MAX_TOTAL_CHARS
     for file in sorted(wanted):
-        path = inside(workspace_root, file)
+        path = in_folders(folders, file)
         if path is None:
             continue
         text, _problems = read_text(path, Location(file=file), MAX_FILE_BYTES)

@@ -1494,7 +1494,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
         if found is None:
             full = os.path.abspath(name)
             found = known[name] = full == path or (
-                full.startswith(workspace.root + os.sep) and not full.startswith(
+                workspace.holds(full) and not full.startswith(
                     (setup.generated + os.sep, STANDIN + os.sep)))
         return found
 
@@ -1515,7 +1515,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     wrappers: tuple[frozenset[str], frozenset[str]] | None = None
     while True:
         result = CppResult()
-        source = SourceCache(workspace.root, {path: data})
+        source = SourceCache(workspace.holds, {path: data})
         tu = _parse(path, text, setup, workspace, result, source, owned, ros2, wrappers)
         if tu is None:
             result.unseen = ["*"]
@@ -1609,7 +1609,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     headers = [path, *read]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
-        if name.startswith((workspace.root + os.sep, setup.generated + os.sep)) or (
+        if workspace.holds(name) or name.startswith(setup.generated + os.sep) or (
             setup.system_headers and not name.startswith(STANDIN + os.sep)
         ):
             headers.append(name)
@@ -2389,9 +2389,9 @@ def _located(errors: list[_Error],
 class SourceCache(dict[str, bytes]):
     """The bytes of the workspace files clang positions point into, read on demand."""
 
-    def __init__(self, root: str, initial: dict[str, bytes]) -> None:
+    def __init__(self, readable: Callable[[str], bool], initial: dict[str, bytes]) -> None:
         super().__init__(initial)
-        self.root = root
+        self.readable = readable  # an absolute path of the workspace's folders
         self._texts: dict[str, str | None] = {}
         self._lines: dict[str, list[str] | None] = {}
 
@@ -2413,7 +2413,7 @@ class SourceCache(dict[str, bytes]):
         name = os.path.abspath(name)
         if name in self:
             return self[name]
-        if not name.startswith(self.root + os.sep):
+        if not self.readable(name):
             return default
         try:
             with open(name, "rb") as handle:

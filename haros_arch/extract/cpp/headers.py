@@ -977,7 +977,7 @@ class IncludeSetup:
         ``as2_behavior_tree/action/arm_service.hpp``, a behavior tree node's class; the
         empty action in its place left every tree node's class undeclared)."""
         real = self._resolve(header)
-        if real is None or not real.startswith(self.workspace.root + os.sep):
+        if real is None or not self.workspace.holds(real):
             return None
         package, kind, snake = ros2.group(1), ros2.group(2), ros2.group(3)
         folder = self.workspace.find(package)
@@ -1066,12 +1066,13 @@ class IncludeSetup:
         return found
 
     def _inside(self, path: str) -> bool:
-        """``path`` is under the workspace root or one of the include folders: one of
-        them is ``path`` up to one of its separators (asked once per file)."""
+        """``path`` is under one of the workspace folders or of the include folders: one
+        of them is ``path`` up to one of its separators (asked once per file)."""
         inside = self._inside_of.get(path)
         if inside is None:
             if self._roots is None:
-                self._roots = frozenset((self.workspace.root, *self.user_dirs))
+                self._roots = frozenset((*(os.path.abspath(folder).rstrip(os.sep) for folder
+                                           in self.workspace.folders), *self.user_dirs))
             inside, end = False, path.find(os.sep)
             while end != -1 and not inside:
                 inside = path[:end] in self._roots
