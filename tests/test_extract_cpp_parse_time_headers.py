@@ -62,3 +62,43 @@ def test_each_unit_says_a_header_a_parse_stood_in_for_whatever_the_order(
             "header vendor_lib/device.h not found; an empty stand-in was used"], missing
         assert missing[0].location.line == 5  # the unit's own include
     assert [(c.kind, c.name) for c in two.calls] == [("publish", "second_out")]
+
+
+ROS2_UNIT = """
+#include <rclcpp/rclcpp.hpp>
+#define MESSAGE_HEADER <geometry_msgs/msg/twist.hpp>
+#include MESSAGE_HEADER
+class {name} : public rclcpp::Node {{
+ public:
+  {name}() : rclcpp::Node("{name}") {{
+    pub_ = create_publisher<geometry_msgs::msg::Twist>("{name}_out", 3);
+  }}
+  rclcpp::Publisher<geometry_msgs::msg::Twist>::SharedPtr pub_;
+}};
+"""
+
+
+def test_a_ros2_message_header_only_a_parse_finds_is_the_message(tmp_path: Path) -> None:
+    """A parse's missing ``pkg/msg/name.hpp`` of a known interface is made as the message
+    (it was an empty stand-in, while a unit that named the type unincluded had the same
+    header made as the message: which one a worker's file held depended on the order
+    its units came in)."""
+    package = tmp_path / "src" / "demo"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>demo</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        "<license>BSD</license><depend>rclcpp</depend><depend>geometry_msgs</depend>"
+        "<export><build_type>ament_cmake</build_type></export></package>\n")
+    first, second = package / "src" / "first.cpp", package / "src" / "second.cpp"
+    first.write_text(ROS2_UNIT.format(name="First"))
+    second.write_text(ROS2_UNIT.format(name="Second"))
+    ahead = extract_cpp_nodes([[str(first)], [str(second)]], scan([str(tmp_path)]),
+                              cache_dir=None, jobs=1)
+    behind = extract_cpp_nodes([[str(second)], [str(first)]], scan([str(tmp_path)]),
+                               cache_dir=None, jobs=1)
+    one, two = ahead.results
+    two_first, one_second = behind.results
+    assert _said(one) == _said(one_second) == [] and _said(two) == _said(two_first) == []
+    assert [(c.kind, c.name, c.type, c.queue_size) for c in one.calls] == [
+        ("publish", "First_out", "geometry_msgs/msg/Twist", 3)]

@@ -1200,6 +1200,9 @@ class IncludeSetup:
             if match is None or match.group(1) in self._handled:
                 continue
             header = match.group(1)
+            if _ROS2_HEADER.fullmatch(header) is not None and self.message_header(header):
+                changed = True  # made as a parse asks it on demand (``message_header``):
+                continue  # a header is the same whichever question of which process made it
             self._handled.add(header)
             spec = self._message_header(header)
             if spec is None or not self._message(header, spec.group(1), spec.group(2), where):
