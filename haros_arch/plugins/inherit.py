@@ -298,7 +298,7 @@ def _bases(cls: str, texts: list[str]) -> list[str]:
     head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
                       + r"\s*(?:final\s*)?:(?!:)([^{;]*)\{")
     for text in texts:
-        match = head.search(text)
+        match = head.search(text) if cls in text else None  # (most texts name it nowhere)
         if match:
             out = []
             listed = match.group(1)
