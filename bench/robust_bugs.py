@@ -1,7 +1,7 @@
 """Recall of ``haros-arch check`` on real architecture bugs from the ROBUST dataset.
 
     .venv/bin/python bench/robust_bugs.py [--data FILE] [--mirrors DIR] [--keep DIR]
-                                          [--only ID ...] [-v]
+                                          [--only ID ...] [--folders] [-v]
 
 ``robust_bugs.yaml`` beside this script lists the bugs of ROBUST (github:robust-rosin/robust,
 one ``.bug`` file per bug) whose fault is in the architecture (a name, remap, namespace,
@@ -35,6 +35,11 @@ bug's launch files is written beside, and ``python -m haros_arch check project.y
 same format: ``real_bugs.yaml`` holds bugs we found ourselves in the history of public
 repositories (fix commits whose diff changes a name, remap, namespace or parameter between
 code and launch files), each with its ``source``.
+
+``--folders`` gives the project one workspace folder per repository (``workspace:
+[src/<repository>, src/<dep>, ...]``, as a user with separate checkouts writes it) instead
+of ``src``: a bug with ``deps`` is then found across several folders, and the verdicts
+should be the same.
 
 Recall is found / (bugs in scope that ran). Mirrors are the bare repositories the
 ``fetch`` tool brings (``DIR/owner+name/repo``). Nothing goes to the network.
@@ -103,8 +108,10 @@ def materialize(gitdir: Path, rev: str, dest: Path) -> None:
     _copy_tree(str(gitdir), rev, str(dest))
 
 
-def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, Path]:
-    """Both trees and project files of one bug, or why it is skipped."""
+def prepare(bug: dict[str, Any], mirrors: Path, root: Path, folders: bool = False
+            ) -> str | dict[str, Path]:
+    """Both trees and project files of one bug, or why it is skipped; ``folders``: one
+    workspace folder per repository."""
     main = git_dir(mirrors, bug["repo"])
     if main is None:
         return f"no mirror of {bug['repo']}"
@@ -133,7 +140,9 @@ def prepare(bug: dict[str, Any], mirrors: Path, root: Path) -> str | dict[str, P
         args = bug.get("args", {})
         if side == "fixed":
             args = bug.get("fixed_args", args)
-        project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": "src",
+        workspace: str | list[str] = "src" if not folders else [
+            f"src/{bug['repo'].split('/')[1]}", *(f"src/{name}" for _, _, name in deps)]
+        project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": workspace,
                    "configurations": {"bug": {"launch": launch, "args": args}}}
         if bug.get("environment"):
             project["environment"] = bug["environment"]
@@ -230,6 +239,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--mirrors", default="/work/.mirror", type=Path)
     parser.add_argument("--keep", type=Path, help="write the trees here and keep them")
     parser.add_argument("--only", nargs="*", default=[], help="bug ids (system/id or id)")
+    parser.add_argument("--folders", action="store_true",
+                        help="one workspace folder per repository, not one src folder")
     parser.add_argument("-v", "--verbose", action="store_true")
     args = parser.parse_args(argv)
     data = Path(args.data)
@@ -251,7 +262,8 @@ def main(argv: list[str]) -> int:
                 print(f"{bug['id']:24} missed (no configuration has it: {bug['not_launched']})")
                 counts["missed"] = counts.get("missed", 0) + 1
                 continue
-            trees = prepare(bug, args.mirrors, base / bug["id"].replace("/", "-"))
+            trees = prepare(bug, args.mirrors, base / bug["id"].replace("/", "-"),
+                            args.folders)
             if isinstance(trees, str):
                 result = f"skipped ({trees})"
             else:
