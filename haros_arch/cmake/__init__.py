@@ -12,6 +12,7 @@ from __future__ import annotations
 import functools
 import os
 import re
+from collections.abc import Callable
 
 from .. import diagnostics as diag
 from .. import plugins, pysetup
@@ -20,7 +21,7 @@ from ..files import kept_in, read_text
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
 from ..workspace import Workspace
-from .commands import C_SUFFIXES, effective_standard, newest, on_every_path
+from .commands import C_SUFFIXES, effective_standard, handed_extras, newest, on_every_path
 from .interpreter import Interpreter
 from .lexer import CMakeSyntaxError, Invocation, tokenize
 from .nodes import (
@@ -364,10 +365,15 @@ def _run(package: Package, workspace: Workspace,
         found.extend(problems)
         return commands
 
-    interpreter = Interpreter(package.root, workspace.environment, reader, files.location)
+    interpreter = _interpreter(package, workspace, reader, files)
     path = os.path.join(package.root, "CMakeLists.txt")
     if os.path.isfile(path):
-        interpreter.run_file(reader(path))
+        _EXTRAS_READING.add(package.name)
+        try:
+            interpreter.run_file(reader(path))
+        finally:
+            _EXTRAS_READING.discard(package.name)
+        handed_extras(interpreter, [])
     if interpreter.superbuild is None:
         return interpreter, found + interpreter.diagnostics
     # a superbuild configures the package's own folder again with the cache entries it
@@ -375,12 +381,47 @@ def _run(package: Package, workspace: Workspace,
     where, name, values = interpreter.superbuild
     first = found + interpreter.diagnostics
     found = []
-    again = Interpreter(package.root, workspace.environment, reader, files.location)
+    again = _interpreter(package, workspace, reader, files)
     again.cache.update(values)
     again.run_file(reader(path))
     said = diag.make("CMAKE_SUPERBUILD", where, name=name,
                      values=" ".join(f"-D{k}={v}" for k, v in values.items()))
     return again, list(dict.fromkeys([*first, said, *found, *again.diagnostics]))
+
+
+def _interpreter(package: Package, workspace: Workspace,
+                 reader: Callable[[str], list[Invocation]], files: PackageFiles) -> Interpreter:
+    """An interpreter for the package's CMake files, which finds the config extras of
+    the workspace's other packages (``config_extras``)."""
+    interpreter = Interpreter(package.root, workspace.environment, reader, files.location)
+    interpreter.build_depends = build_depends(package)
+
+    def extras_of(name: str) -> tuple[str, list[str]]:
+        other = workspace.packages.get(name)
+        if name == package.name or other is None or not other.root:
+            return "", []
+        return other.root, config_extras(name, workspace)
+
+    interpreter.extras_of = extras_of
+    return interpreter
+
+
+_EXTRAS_READING: set[str] = set()  # the packages being read now (two that find each other)
+
+
+def config_extras(name: str, workspace: Workspace) -> list[str]:
+    """The CMake files the workspace package ``name`` hands to the packages that find it
+    (ament's ``CONFIG_EXTRAS`` and ``${PROJECT_NAME}_CONFIG_EXTRAS``, catkin's
+    ``CFG_EXTRAS`` of its cmake folder), absolute, from a reading of its CMake files;
+    none for a package being read for this very question (two packages that find each
+    other)."""
+    package = workspace.packages.get(name)
+    if package is None or package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return []
+    if name in _EXTRAS_READING:
+        return []
+    interpreter, _ = _interpret(package, workspace, PackageFiles(package, workspace))
+    return [path for path in interpreter.config_extras if os.path.isfile(path)]
 
 
 def _named_library(name: str, own: str, depends: list[str],

@@ -710,7 +710,7 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
 IGNORED = frozenset({
     "project", "cmake_minimum_required",
     "link_directories", "add_dependencies",
-    "ament_package", "message",
+    "message",
     "add_custom_target", "add_custom_command", "add_test",
     "add_message_files", "add_service_files", "add_action_files", "generate_messages",
     "rosidl_generate_interfaces", "ament_export_dependencies", "ament_export_include_directories",
@@ -837,10 +837,67 @@ def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
     return "FALSE" if name in _ONE_VERSION_ONLY and not required else None
 
 
+def run_extras(it: Interpreter, command: Invocation, name: str) -> None:
+    """Run the CMake files the workspace package ``name`` hands to the packages that find
+    it (``Interpreter.extras_of``: its ament CONFIG_EXTRAS, catkin CFG_EXTRAS), once per
+    reading, with ``<name>_DIR`` their folder as the installed package's config has it:
+    the macros they define are the caller's (Autoware's
+    ``autoware_agnocast_wrapper_register_node(lib PLUGIN ... EXECUTABLE ...)``, from
+    autoware_agnocast_wrapper's extras, registers each node of autoware_core's map
+    loaders through ``rclcpp_components_register_node``)."""
+    if it.extras_of is None or name in it.extras_read:
+        return
+    it.extras_read.add(name)
+    root, files = it.extras_of(name)
+    for path in files:
+        it.set(f"{name}_DIR", os.path.dirname(path))
+        it.foreign_roots.append(root)
+        try:
+            it.include(command, path)
+        finally:
+            it.foreign_roots.pop()
+
+
+@handles("ament_auto_find_build_dependencies", "autoware_package")
+def _ament_auto_find_build_dependencies(it: Interpreter, command: Invocation,
+                                        args: list[str]) -> None:
+    """ament_cmake_auto finds every build dependency of package.xml: what their config
+    extras define is there after it. So does Autoware's ``autoware_package()`` (the
+    macro of autoware_cmake, its compile options apart), when autoware_cmake is not in
+    the workspace to define it."""
+    for name in it.build_depends:
+        run_extras(it, command, name)
+
+
+def handed_extras(it: Interpreter, args: list[str], keyword: str = "CONFIG_EXTRAS") -> None:
+    """``ament_package(CONFIG_EXTRAS a.cmake ...)`` / ``ament_auto_package``, and
+    ``${PROJECT_NAME}_CONFIG_EXTRAS`` for both and at the end of the reading (a wrapper
+    of ament_package that is not known here, Autoware's ``autoware_ament_auto_package``,
+    reads it too): the files handed to the packages that find this one
+    (``Interpreter.config_extras``)."""
+    named: list[str] = []
+    if keyword in args:
+        for arg in args[args.index(keyword) + 1:]:
+            if arg.isupper() and arg.replace("_", "").isalpha():
+                break  # the next keyword
+            named.append(arg)
+    named += split_list(it.get(f"{it.get('PROJECT_NAME') or ''}_CONFIG_EXTRAS") or "")
+    for name in named:
+        path = it.path(name)
+        if path.endswith(".cmake") and path not in it.config_extras:
+            it.config_extras.append(path)
+
+
+@handles("ament_package")
+def _ament_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    handed_extras(it, args)
+
+
 @handles("find_package")
 def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if not args or not _PACKAGE_NAME.fullmatch(args[0]):
         return
+    run_extras(it, command, args[0])
     it.found_packages.add(args[0].lower())
     found = _tool_found(it, args[0], "REQUIRED" in args[1:])
     if found is not None:
@@ -855,6 +912,7 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
                 taking = False  # REQUIRED, QUIET, CONFIG, ...
             elif taking and _PACKAGE_NAME.fullmatch(arg):
                 components.append(arg)
+                run_extras(it, command, arg)
                 it.found_packages.add(arg.lower())  # catkin finds each one
         it.set("catkin_LIBRARIES", ";".join(PACKAGE_MARK.format(c) for c in components))
         return
@@ -912,6 +970,12 @@ def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> No
             names.append(arg)
         elif taking == "CATKIN_DEPENDS" and _PACKAGE_NAME.fullmatch(arg):
             depends.append(arg)
+        elif taking == "CFG_EXTRAS" and arg.endswith(".cmake"):
+            # catkin looks for it in the package's cmake folder (a template, .in or
+            # .em, is made at build time: not read)
+            path = os.path.join(it.package_root, "cmake", arg)
+            if os.path.isfile(path) and path not in it.config_extras:
+                it.config_extras.append(path)
     if not it.sure():
         it.catkin_exports_unsure = True
     it.catkin_exports = list(dict.fromkeys([*(it.catkin_exports or []), *names]))
@@ -1126,6 +1190,7 @@ def _programs(it: Interpreter, command: Invocation, args: list[str],
 @handles("ament_auto_package")
 def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     """``INSTALL_TO_SHARE dir...`` installs those folders into ``share/<project>``."""
+    handed_extras(it, args)
     if "INSTALL_TO_SHARE" not in args:
         return
     folders: list[str] = []

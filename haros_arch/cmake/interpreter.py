@@ -136,6 +136,17 @@ class Interpreter:
         # generate_parameter_library: (target, absolute path of its YAML, PROJECT_NAME)
         self.parameter_libraries: list[tuple[str, str, str]] = []
         self.definitions: dict[str, Definition] = {}
+        # the CMake files a workspace package hands to the packages that find it (its
+        # ament CONFIG_EXTRAS, catkin CFG_EXTRAS), with that package's folder: given by
+        # the reading of the workspace (``cmake.config_extras``), None without one
+        self.extras_of: Callable[[str], tuple[str, list[str]]] | None = None
+        # this package's build dependencies (``ament_auto_find_build_dependencies``)
+        self.build_depends: list[str] = []
+        # what this package hands on so (absolute paths), and the packages whose extras
+        # this reading ran; while one runs, its package folder (an include may read there)
+        self.config_extras: list[str] = []
+        self.extras_read: set[str] = set()
+        self.foreign_roots: list[str] = []
         # the compile definitions of each directory being read, innermost last: a
         # subdirectory starts with a copy of its parent's (``Target.directory_definitions``)
         self.compile_definitions: list[list[CompileDefinition]] = [[]]
@@ -902,8 +913,10 @@ class Interpreter:
                 del self.returns[frame:]
 
     def include(self, command: Invocation, path: str) -> bool:
-        """Run a package-local file in the current scope; False if not read."""
-        if not (os.path.isfile(path) and self.inside_package(path)):
+        """Run a package-local file in the current scope (or one of the folder of the
+        package whose config extras run, ``foreign_roots``); False if not read."""
+        if not (os.path.isfile(path) and (self.inside_package(path) or any(
+                _below(path, root) for root in self.foreign_roots))):
             return False
         if self.depth >= MAX_DEPTH:
             self.limit(command, f"include() nested deeper than {MAX_DEPTH}")
@@ -954,6 +967,11 @@ class Interpreter:
             self.compile_standards.pop()
             self.made_here.pop()
             self.include_directories.pop()
+
+
+def _below(path: str, root: str) -> bool:
+    real, top = os.path.realpath(path), os.path.realpath(root)
+    return real == top or real.startswith(top + os.sep)
 
 
 def _put(table: dict[str, str], name: str, value: str | None) -> None:
