@@ -280,14 +280,28 @@ def _written_references(call: Cursor) -> Iterator[Cursor]:
     owner = target.semantic_parent if target is not None else None
     head = callee(call)
     qualifiers: set[int] | None = None
-    for child in head.get_children():
+    children = list(head.get_children())
+    for index, child in enumerate(children):
         if child.kind == CursorKind.TYPE_REF and (owner is None or child.referenced != owner):
             if qualifiers is None:
                 qualifiers = _qualifiers(head)
-            if child.extent.start.offset not in qualifiers:
+            if child.extent.start.offset not in qualifiers and not _nests(
+                    head, child, children[index + 1:index + 2]):
                 yield child
         elif child.kind == CursorKind.TEMPLATE_REF:
             yield child
+
+
+def _nests(head: Cursor, ref: Cursor, following: list[Cursor]) -> bool:
+    """Whether the type reference ``ref`` only qualifies the type written next, its
+    member (``create_publisher<VectorMap::Message>``, Autoware's interface specs: the
+    type is ``Message``, the message ``VectorMap`` names, not the spec class)."""
+    if not following or following[0].kind != CursorKind.TYPE_REF:
+        return False
+    end, start = ref.extent.end.offset, following[0].extent.start.offset
+    between = [t.spelling for t in head.get_tokens()
+               if end <= t.extent.start.offset < start]
+    return between == ["::"]
 
 
 def _class_template_first(call: Cursor) -> Cursor | None:
