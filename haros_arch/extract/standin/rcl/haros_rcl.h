@@ -48,6 +48,9 @@ typedef int64_t rcl_duration_value_t;
 typedef struct rcl_subscription_s rcl_subscription_t;
 typedef struct rcl_guard_condition_s rcl_guard_condition_t;
 typedef struct rcl_timer_s rcl_timer_t;
+rcl_ret_t rcl_timer_exchange_period(const rcl_timer_t* timer, int64_t new_period,
+                                    int64_t* old_period);
+rcl_ret_t rcl_timer_get_period(const rcl_timer_t* timer, int64_t* period);
 typedef struct rcl_client_s rcl_client_t;
 typedef struct rcl_service_s rcl_service_t;
 typedef struct rcl_event_s rcl_event_t;

@@ -491,6 +491,19 @@ struct TopicStatisticsOptions {
 struct ContentFilterOptions {
   std::string filter_expression; std::vector<std::string> expression_parameters;
 };
+// a client's future with its request's id (rclcpp/client.hpp), which a wrapper's own
+// future may derive from (Autoware's agnocast_wrapper::Client)
+template<class FutureT> struct FutureAndRequestId {
+  FutureT future; int64_t request_id;
+  FutureAndRequestId(FutureT impl, int64_t id);
+  operator FutureT&(); FutureT share() noexcept;
+  decltype(std::declval<FutureT>().get()) get();
+  bool valid() const noexcept; void wait() const;
+  template<class R, class P> std::future_status wait_for(
+      const std::chrono::duration<R, P>& timeout) const;
+  template<class C, class D> std::future_status wait_until(
+      const std::chrono::time_point<C, D>& deadline) const;
+};
 }
 struct PublisherOptionsBase {
   std::shared_ptr<CallbackGroup> callback_group;
@@ -549,6 +562,8 @@ public:
 template<class M, class A = void> class Publisher : public PublisherBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
+  using PublishedType = M;
+  using ROSMessageType = M;  // (an adapted type's ROS message: not followed here)
   void publish(const M& msg);
   void publish(std::unique_ptr<M> msg);
   void publish(const SerializedMessage& msg);
@@ -721,6 +736,7 @@ class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParamet
   // the callback type of the parameter-set callbacks (foxy's name, kept as an alias)
   using OnParametersSetCallbackType = std::function<rcl_interfaces::msg::SetParametersResult(
       const std::vector<rclcpp::Parameter>&)>;
+  using OnSetParametersCallbackType = OnParametersSetCallbackType;  // (rclcpp 28's name)
   template<class C> std::shared_ptr<OnSetParametersCallbackHandle>
       add_on_set_parameters_callback(C callback);
   void remove_on_set_parameters_callback(const OnSetParametersCallbackHandle* handler);
@@ -860,6 +876,10 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
       const std::vector<rclcpp::Parameter>& p); \
   rcl_interfaces::msg::SetParametersResult set_parameters_atomically( \
       const std::vector<rclcpp::Parameter>& p); \
+  rcl_interfaces::msg::ParameterDescriptor describe_parameter(const std::string& name) const; \
+  std::vector<rcl_interfaces::msg::ParameterDescriptor> describe_parameters( \
+      const std::vector<std::string>& names) const; \
+  std::vector<uint8_t> get_parameter_types(const std::vector<std::string>& names) const; \
   template<class C> rclcpp::OnSetParametersCallbackHandle::SharedPtr \
       add_on_set_parameters_callback(C callback); \
   template<class C> rclcpp::node_interfaces::PreSetParametersCallbackHandle::SharedPtr \
