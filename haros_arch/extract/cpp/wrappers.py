@@ -47,6 +47,7 @@ from .call_sites import (
     is_constructor,
     specialised_keys,
 )
+from .call_types import callee as callee_head
 from .call_types import template_argument
 from .cursors import Node, from_standin, overloads
 from .expressions import constructed_name
@@ -782,6 +783,17 @@ class Wrappers:
             return
         if head.kind == CursorKind.MEMBER_REF_EXPR:
             name = _member_name(head)
+            qualifier = _class_qualifier(head)
+            if qualifier is not None:
+                # a static method of a class template of the API on a template parameter
+                # (``InterProcessPollingSubscriber<MessageT>::create_subscription(node,
+                # topic, qos)`` in Autoware's polling wrapper): that class's row
+                template = qualifier[0].referenced
+                spec = api.ALL.get((qualified_name(template), name or _last_name(call))) if (
+                    template is not None) else None
+                if spec is not None and (not spec.standin_only or from_standin(template)):
+                    yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
+                    return
             spec = (DEPENDENT_ROS2 if self.finder.ros2 else DEPENDENT_ROS1).get(name)
             if spec is not None and not own_functions_only(call):
                 yield Wrapper(spec), args, None, None
@@ -1069,6 +1081,11 @@ class Wrappers:
             elif source in ("callback", "service-callback") and (
                     passed(spec.callback_arg) is not None):
                 sources.append(source)
+                continue
+            elif source == "class" and templates and (
+                    (qualifier := _class_qualifier(callee_head(call))) is not None) and (
+                    qualifier[1] is not None and _key(qualifier[1]) == _key(templates[0])):
+                sources.append("template")  # ``Class<T>::f(...)``: T, the wrapper's own
                 continue
             if sources:
                 continue
@@ -1738,6 +1755,41 @@ def _is_this(expr: Cursor) -> bool:
             callee is not None and callee.kind == CursorKind.MEMBER_REF_EXPR) else []
         return not objects or _is_this(objects[0])
     return False
+
+
+def _class_qualifier(head: Cursor) -> tuple[Cursor, Cursor | None] | None:
+    """The class template that qualifies a dependent call's name (``Class<T>::f``: the
+    reference to ``Class``) and the template type parameter its first argument is
+    (``T``; None when another type), when the name is so qualified."""
+    children = list(head.get_children())
+    for index, child in enumerate(children):
+        if child.kind == CursorKind.TEMPLATE_REF and child.referenced is not None and (
+                child.referenced.kind == CursorKind.CLASS_TEMPLATE):
+            after = children[index + 1] if index + 1 < len(children) else None
+            param = after.referenced if after is not None and (
+                after.kind == CursorKind.TYPE_REF) else None
+            return child, param if param is not None and (
+                param.kind == CursorKind.TEMPLATE_TYPE_PARAMETER) else None
+    return None
+
+
+def _last_name(call: Cursor) -> str:
+    """The name a qualified dependent call calls (``Class<T>::create_subscription(...)``:
+    ``create_subscription``), from its tokens: the last name before its arguments."""
+    name, depth = "", 0
+    for token in call.get_tokens():
+        text = token.spelling
+        if text == "<":
+            depth += 1
+        elif text == ">":
+            depth -= 1
+        elif text == ">>":
+            depth -= 2
+        elif text == "(" and depth <= 0:
+            break
+        elif depth <= 0 and text.isidentifier() and text != "template":
+            name = text
+    return name
 
 
 def _member_name(member: Cursor) -> str:
