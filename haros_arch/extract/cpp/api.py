@@ -548,7 +548,20 @@ _POLLING_SUBSCRIBER = RosFunction(
 # unless declared already, then read
 _GET_OR_DECLARE = RosFunction(
     "declare", type_from=("template-value", "result"), on_handle=False, name_arg=1)
+# and two node utilities of the same library (``standin/fallback/autoware_utils/
+# haros_node_utilities.h``): the logger level configurator's service on the node it is
+# built with, and the diagnostics interface's status publisher
+_LOGGER_LEVEL_CONFIGURE = RosFunction(
+    "server", fixed_name="~/config_logger", fixed_type="logging_demo/srv/ConfigLogger",
+    on_handle=False, handle_arg=0, standin_only=True)
+_DIAGNOSTICS_INTERFACE = RosFunction(
+    "publish", fixed_name="/diagnostics", fixed_type="diagnostic_msgs/msg/DiagnosticArray",
+    on_handle=False, handle_arg=0, standin_only=True)
 AUTOWARE: dict[tuple[str, str], RosFunction] = {
+    **{(f"{scope}::BasicLoggerLevelConfigure", "BasicLoggerLevelConfigure"):
+       _LOGGER_LEVEL_CONFIGURE for scope in ("autoware_utils", "autoware_utils_logging")},
+    **{(f"{scope}::BasicDiagnosticsInterface", "BasicDiagnosticsInterface"):
+       _DIAGNOSTICS_INTERFACE for scope in ("autoware_utils", "autoware_utils_diagnostics")},
     **{(f"{scope}::InterProcessPollingSubscriber", name): _POLLING_SUBSCRIBER
        for scope in ("autoware_utils", "autoware_utils_rclcpp")
        for name in ("InterProcessPollingSubscriber", "create_subscription")},
