@@ -249,6 +249,18 @@ _ZEROED: dict[TypeKind, object] = {
 _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
+
+
+def _last_word(head: Cursor) -> str:
+    """The function an unresolved call's head names (``std::make_shared<C<T>>``:
+    ``make_shared``): the last name before its template arguments."""
+    name = ""
+    for token in head.get_tokens():
+        if token.spelling == "<":
+            break
+        if token.spelling.isidentifier():
+            name = token.spelling
+    return name
 MAX_WRAPPED = 4  # wrappers of wrappers whose returned value is followed (_gives_value)
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _ALIASES = frozenset({CursorKind.TYPEDEF_DECL, CursorKind.TYPE_ALIAS_DECL,
@@ -721,6 +733,7 @@ class CallFinder:
             kind = node.kind
             if kind in _MAKES:
                 self._unseen_class(node)  # in every function, walked or not
+                self._dependent_made(node)
             if kind == CursorKind.CALL_EXPR:
                 self._to_unknown(node, function)  # in every function, walked or not
                 spelling = node.spelling
@@ -1345,6 +1358,36 @@ class CallFinder:
             for pair in constructed_bases(call, self.owned):
                 if pair not in self.constructions:
                     self.constructions.append(pair)
+
+    def _dependent_made(self, node: Cursor) -> None:
+        """A construction of a class template of the workspace whose constructor the
+        parse cannot choose, its arguments depending on a template parameter
+        (component_interface_utils' ``make_shared<NodeInterface<NodeT>>(node)`` in
+        NodeAdaptor's constructor template; ``NodeInterface<NodeT> i(node)``, ``new
+        NodeInterface<NodeT>(node)``): no call names the constructor, so any of them may
+        run; its class's name is unseen, as where an error hides a construction
+        (``links.resolve`` keeps the calls of that class's constructors)."""
+        kind = node.kind
+        children = list(node.get_children())
+        if kind == CursorKind.CALL_EXPR:
+            head = children[0] if children and node.referenced is None else None
+            if head is None or _last_word(head) not in FACTORY_NAMES:
+                return
+            refs = list(head.get_children())
+        elif kind == CursorKind.VAR_DECL:
+            init = children[-1] if children else None
+            if init is None or init.kind != CursorKind.UNEXPOSED_EXPR or (
+                    init.referenced is not None):
+                return
+            refs = children
+        else:
+            refs = children
+        for ref in refs:
+            template = ref.referenced if ref.kind == CursorKind.TEMPLATE_REF else None
+            if template is not None and template.kind == CursorKind.CLASS_TEMPLATE and (
+                    (where := template.location.file) is not None and self.owned(where.name)):
+                self.unseen.add(template.spelling.encode())
+                return
 
     def _default_construction(self, variable: Cursor,
                               conditions: tuple[Condition, ...]) -> None:
