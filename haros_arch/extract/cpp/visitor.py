@@ -114,7 +114,7 @@ from .values import (
 )
 from .values import _walk as walk_cursors
 from .values import key_of as place_of
-from .wrappers import FACTORY_NAMES, Wrappers, is_constructor, of_class_template
+from .wrappers import FACTORY_NAMES, Wrappers, called_name, is_constructor, of_class_template
 from .writes import (
     const_array,
     default_constructed,
@@ -250,17 +250,6 @@ _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.H
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 
-
-def _last_word(head: Cursor) -> str:
-    """The function an unresolved call's head names (``std::make_shared<C<T>>``:
-    ``make_shared``): the last name before its template arguments."""
-    name = ""
-    for token in head.get_tokens():
-        if token.spelling == "<":
-            break
-        if token.spelling.isidentifier():
-            name = token.spelling
-    return name
 MAX_WRAPPED = 4  # wrappers of wrappers whose returned value is followed (_gives_value)
 MAX_SITE_DEPTH = 3  # constructors of constructors whose sites' conditions are followed
 _ALIASES = frozenset({CursorKind.TYPEDEF_DECL, CursorKind.TYPE_ALIAS_DECL,
@@ -1371,7 +1360,7 @@ class CallFinder:
         children = list(node.get_children())
         if kind == CursorKind.CALL_EXPR:
             head = children[0] if children and node.referenced is None else None
-            if head is None or _last_word(head) not in FACTORY_NAMES:
+            if head is None or called_name(head) not in FACTORY_NAMES:
                 return
             refs = list(head.get_children())
         elif kind == CursorKind.VAR_DECL:

@@ -789,7 +789,7 @@ class Wrappers:
                 # (``InterProcessPollingSubscriber<MessageT>::create_subscription(node,
                 # topic, qos)`` in Autoware's polling wrapper): that class's row
                 template = qualifier[0].referenced
-                spec = api.ALL.get((qualified_name(template), name or _last_name(call))) if (
+                spec = api.ALL.get((qualified_name(template), name or called_name(call))) if (
                     template is not None) else None
                 if spec is not None and (not spec.standin_only or from_standin(template)):
                     yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
@@ -1773,9 +1773,10 @@ def _class_qualifier(head: Cursor) -> tuple[Cursor, Cursor | None] | None:
     return None
 
 
-def _last_name(call: Cursor) -> str:
-    """The name a qualified dependent call calls (``Class<T>::create_subscription(...)``:
-    ``create_subscription``), from its tokens: the last name before its arguments."""
+def called_name(call: Cursor) -> str:
+    """The name an unresolved call calls, from its tokens (or its head's): the last name
+    before its arguments, outside template arguments (``Class<T>::create_subscription(
+    ...)``: ``create_subscription``; ``std::make_shared<C<T>>``: ``make_shared``)."""
     name, depth = "", 0
     for token in call.get_tokens():
         text = token.spelling
