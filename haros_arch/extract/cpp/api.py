@@ -548,16 +548,22 @@ _POLLING_SUBSCRIBER = RosFunction(
 # unless declared already, then read
 _GET_OR_DECLARE = RosFunction(
     "declare", type_from=("template-value", "result"), on_handle=False, name_arg=1)
-# and two node utilities of the same library (``standin/fallback/autoware_utils/
+# and three node utilities of the same library (``standin/fallback/autoware_utils/
 # haros_node_utilities.h``): the logger level configurator's service on the node it is
-# built with, and the diagnostics interface's status publisher
+# built with, the diagnostics interface's status publisher, and the transform
+# listener's tf2 listener (read as tf2_ros' own: the node listens to /tf, /tf_static)
 _LOGGER_LEVEL_CONFIGURE = RosFunction(
     "server", fixed_name="~/config_logger", fixed_type="logging_demo/srv/ConfigLogger",
     on_handle=False, handle_arg=0, standin_only=True)
 _DIAGNOSTICS_INTERFACE = RosFunction(
     "publish", fixed_name="/diagnostics", fixed_type="diagnostic_msgs/msg/DiagnosticArray",
     on_handle=False, handle_arg=0, standin_only=True)
+_AUTOWARE_TF_LISTENER = RosFunction(
+    "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False, standin_only=True,
+    siblings=(("subscribe", "/tf_static", _TF),))
 AUTOWARE: dict[tuple[str, str], RosFunction] = {
+    **{(f"{scope}::TransformListener", "TransformListener"): _AUTOWARE_TF_LISTENER
+       for scope in ("autoware_utils", "autoware_utils_tf")},
     **{(f"{scope}::BasicLoggerLevelConfigure", "BasicLoggerLevelConfigure"):
        _LOGGER_LEVEL_CONFIGURE for scope in ("autoware_utils", "autoware_utils_logging")},
     **{(f"{scope}::BasicDiagnosticsInterface", "BasicDiagnosticsInterface"):
