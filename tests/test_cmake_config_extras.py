@@ -155,3 +155,30 @@ def test_catkin_cfg_extras_of_a_component(write_tree) -> None:
     })
     # (without the extras, a guess from the unknown command: ``driver``)
     assert _executables(root, "robot") == ["driver_node"]
+
+
+def test_extras_at_the_package_root_include_from_its_cmake_folder(write_tree) -> None:
+    """autoware_cmake keeps its extras at its root and includes
+    ``${autoware_cmake_DIR}/autoware_package.cmake``: installed, both sit in
+    share/autoware_cmake/cmake, so ``<pkg>_DIR`` is the package's cmake folder."""
+    root = write_tree({
+        "builder/package.xml": package_xml("builder", "ament_cmake"),
+        "builder/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.14)
+            project(builder)
+            list(APPEND ${PROJECT_NAME}_CONFIG_EXTRAS "builder-extras.cmake")
+            ament_auto_package(INSTALL_TO_SHARE cmake)
+            """,
+        "builder/builder-extras.cmake": 'include("${builder_DIR}/builder_node.cmake")\n',
+        "builder/cmake/builder_node.cmake": """
+            macro(builder_node target)
+              cmake_parse_arguments(ARGS "" "PLUGIN;EXECUTABLE" "" ${ARGN})
+              rclcpp_components_register_node(${target}
+                PLUGIN ${ARGS_PLUGIN} EXECUTABLE ${ARGS_EXECUTABLE})
+            endmacro()
+            """,
+        **{path.replace("wrapper_register_node", "builder_node"): text.replace(
+            "wrapper_register_node", "builder_node") for path, text in _consumer(
+                "find_package(builder REQUIRED)").items()},
+    })
+    assert "talker_node" in _executables(root)

@@ -840,7 +840,8 @@ def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
 def run_extras(it: Interpreter, command: Invocation, name: str) -> None:
     """Run the CMake files the workspace package ``name`` hands to the packages that find
     it (``Interpreter.extras_of``: its ament CONFIG_EXTRAS, catkin CFG_EXTRAS), once per
-    reading, with ``<name>_DIR`` their folder as the installed package's config has it:
+    reading, with ``<name>_DIR`` its cmake folder (else theirs), as the installed
+    package's config has it:
     the macros they define are the caller's (Autoware's
     ``autoware_agnocast_wrapper_register_node(lib PLUGIN ... EXECUTABLE ...)``, from
     autoware_agnocast_wrapper's extras, registers each node of autoware_core's map
@@ -849,8 +850,12 @@ def run_extras(it: Interpreter, command: Invocation, name: str) -> None:
         return
     it.extras_read.add(name)
     root, files = it.extras_of(name)
+    # the installed package's config folder, share/<name>/cmake, holds its extras and
+    # what it installs there, most often its own cmake/ folder (autoware_cmake's extras,
+    # at its root, include ``${autoware_cmake_DIR}/autoware_package.cmake``)
+    folder = os.path.join(root, "cmake")
     for path in files:
-        it.set(f"{name}_DIR", os.path.dirname(path))
+        it.set(f"{name}_DIR", folder if os.path.isdir(folder) else os.path.dirname(path))
         it.foreign_roots.append(root)
         try:
             it.include(command, path)
