@@ -29,11 +29,11 @@ the analysed workspace); one that does not read back is a miss.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
 import stat
-import tempfile
 import time
 import weakref
 from collections.abc import Callable, Iterable, Mapping
@@ -41,7 +41,7 @@ from typing import Any, TypeVar
 
 from . import __version__
 from .collector import held_back
-from .files import MAX_FILE_BYTES, content_digest
+from .files import MAX_FILE_BYTES, content_digest, write_whole
 from .model.finding import Finding
 from .model.load import from_data
 from .model.model import Model
@@ -425,12 +425,6 @@ def _write_json(path: str, data: object) -> None:
 
 
 def _write_text(path: str, text: str) -> None:
-    """Write a file whole or not at all (a temporary file moved into place)."""
-    try:
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        fd, temporary = tempfile.mkstemp(dir=os.path.dirname(path), suffix=".tmp")
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(text)
-        os.replace(temporary, path)
-    except OSError:
-        pass  # a cache that cannot be written is no cache, not an error
+    """Write a file whole or not at all (``files.write_whole``)."""
+    with contextlib.suppress(OSError):  # a cache not written is no cache, no error
+        write_whole(path, text)

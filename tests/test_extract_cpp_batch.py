@@ -124,8 +124,8 @@ def test_cache_written_by_another_process_is_used(copy: Path, tmp_path: Path,
     subprocess.run([sys.executable, "-c", script, str(copy), main, ticker, str(store)],
                    check=True, cwd=Path(__file__).resolve().parent.parent)
     written: list[str] = []
-    real_write = headers._write_file
-    monkeypatch.setattr(headers, "_write_file", lambda path, text: written.append(path))
+    real_write = headers.write_whole
+    monkeypatch.setattr(headers, "write_whole", lambda path, text: written.append(path))
     workspace = scan([str(copy)])
     batch = cpp.extract_cpp_nodes([[main], [ticker]], workspace, cache_dir=str(store))
     assert counted == []  # nothing parsed: the PCH path of the other process is no key
@@ -133,7 +133,7 @@ def test_cache_written_by_another_process_is_used(copy: Path, tmp_path: Path,
     assert [c.name for c in batch.results[1].calls] == ["tick"]
     (copy / "src" / "relay" / "include" / "relay" / "relay.h").write_text(
         (copy / "src" / "relay" / "include" / "relay" / "relay.h").read_text() + "\n// x\n")
-    monkeypatch.setattr(headers, "_write_file", real_write)
+    monkeypatch.setattr(headers, "write_whole", real_write)
     cpp.extract_cpp_nodes([[main], [ticker]], scan([str(copy)]), cache_dir=str(store))
     assert counted == ["relay_main.cpp"]  # only the unit whose header changed
 

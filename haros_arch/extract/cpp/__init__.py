@@ -1101,15 +1101,14 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     done: dict[str, CppResult] = {}
     if store is not None:
         for path, entry in keys.items():
-            kept = store.load(entry, wanted is True)
-            if kept is not None and wanted is not True:
-                digests[path] = kept[1]
-            elif kept is not None and kept[0] is not None:
-                result = _result_from_data(kept[0])
-                if result is None:
-                    continue
-                done[path] = result
-                digests[path] = kept[1]
+            if wanted is not True:
+                kept = store.load(entry, False)
+                if kept is not None:
+                    digests[path] = kept[1]
+                continue
+            found = _kept_result(store, entry)
+            if found is not None:
+                done[path], digests[path] = found
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
@@ -1149,17 +1148,24 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
         for path in wanted(dict(digests)):
             if path in done or path not in keys:
                 continue
-            kept = store.load(keys[path])
-            result = _result_from_data(kept[0]) if kept is not None and (
-                kept[0] is not None) else None
-            if result is None or kept is None or kept[1] != digests[path]:
-                # gone since (another run pruned it): parsed again, in this process
-                setup.materialise()
-                outcome = _unit_and_data(path, texts[path], ros2[path], setup)
-                _store(store, keys[path], outcome)
-                result = outcome[0]
-            done[path] = result
+            found = _kept_result(store, keys[path])
+            if found is not None and found[1] == digests[path]:
+                done[path] = found[0]
+                continue
+            # gone since (another run pruned it): parsed again, in this process
+            setup.materialise()
+            outcome = _unit_and_data(path, texts[path], ros2[path], setup)
+            _store(store, keys[path], outcome)
+            done[path] = outcome[0]
     return {path: done[path] for path in texts if path in done}
+
+
+def _kept_result(store: cache.Cache, key: str) -> tuple[CppResult, str] | None:
+    """A unit's result the cache keeps under ``key``, read back, and its digest; None
+    when there is none, or it does not read back."""
+    kept = store.load(key)
+    result = _result_from_data(kept[0]) if kept is not None and kept[0] is not None else None
+    return None if result is None or kept is None else (result, kept[1])
 
 
 def _store(store: cache.Cache | None, key: str,

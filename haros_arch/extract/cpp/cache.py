@@ -10,18 +10,18 @@ that does not read back is ignored.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import functools
 import hashlib
 import json
 import os
-import tempfile
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 from ... import __version__
 from ...diagnostics import CATALOGUE, Diagnostic
-from ...files import content_digest
+from ...files import content_digest, write_whole
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
@@ -182,14 +182,8 @@ class Cache:
         """Keep a node's result under ``node_key`` (``text``: the JSON of ``{"result":
         to_data(...)}``): made of its units' results alone, it is what they give while
         they give what they gave."""
-        try:
-            os.makedirs(self.nodes, exist_ok=True)
-            fd, temporary = tempfile.mkstemp(dir=self.nodes, suffix=".tmp")
-            with os.fdopen(fd, "w", encoding="utf-8") as handle:
-                handle.write(text)
-            os.replace(temporary, os.path.join(self.nodes, f"{key}.json"))
-        except OSError:
-            pass
+        with contextlib.suppress(OSError):  # a cache not written is no cache, no error
+            write_whole(os.path.join(self.nodes, f"{key}.json"), text)
 
     def store(self, entry: str, headers: Iterable[str], result: dict[str, Any],
               result_digest: str | None = None) -> None:
@@ -205,19 +199,13 @@ class Cache:
                     return
                 self._stored[name] = hashed
             listed.append([name.replace(self.generated, GENERATED, 1), hashed])
-        try:
-            os.makedirs(self.folder, exist_ok=True)
-            fd, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
-            with os.fdopen(fd, "w", encoding="utf-8") as handle:
-                # two lines: what tells whether the entry holds and its digest, then
-                # the result (``load`` without ``wanted`` reads only the first)
-                handle.write(json.dumps({"headers": listed,
-                                         "digest": result_digest or digest(result)}) + "\n")
-                # ``dumps``: C's encoder (``dump`` to a file always takes Python's)
-                handle.write(json.dumps({"result": result}))
-            os.replace(temporary, os.path.join(self.folder, entry + ".json"))
-        except OSError:
-            pass  # a cache that cannot be written is no cache, not an error
+        # two lines: what tells whether the entry holds and its digest, then the result
+        # (``load`` without ``wanted`` reads only the first); ``dumps``: C's encoder
+        # (``dump`` to a file always takes Python's)
+        text = json.dumps({"headers": listed, "digest": result_digest or digest(result)}) + (
+            "\n" + json.dumps({"result": result}))
+        with contextlib.suppress(OSError):  # a cache not written is no cache, no error
+            write_whole(os.path.join(self.folder, entry + ".json"), text)
 
 
 # -- the result as JSON ----------------------------------------------------------------

@@ -60,7 +60,7 @@ from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 from ... import cmake
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...files import read_text
+from ...files import read_text, write_whole
 from ...manifest import ros_version
 from ...model.location import Location
 from ...workspace import Workspace
@@ -1107,7 +1107,7 @@ class IncludeSetup:
         self.written[path] = text
         self._folders.update(_parents(path, root))
         if self._on_disk:
-            _write_file(path, text)
+            write_whole(path, text)
 
     def _clashes(self, path: str, root: str) -> bool:
         return path in self._folders or any(p in self.written for p in _parents(path, root))
@@ -1121,7 +1121,7 @@ class IncludeSetup:
                 _sync(self.generated, self.written, {os.path.join(self.generated, HEADER_MAP)})
             else:
                 for path, text in self.written.items():
-                    _write_file(path, text)
+                    write_whole(path, text)
             # with the names written with ``..`` the scan resolved through a folder: the
             # map has each file's name below its folder only (naoqi_driver2's
             # ``src/event/audio.hpp`` includes ``"../src/publishers/basic.hpp"``, found
@@ -1298,7 +1298,7 @@ def _sync(folder: str, wanted: Mapping[str, str], spared: set[str]) -> None:
         if not same:
             if os.path.isdir(path):  # a folder of an earlier run where this one writes a file
                 shutil.rmtree(path, ignore_errors=True)
-            _write_file(path, text)
+            write_whole(path, text)
 
 
 def _locked(folder: str) -> int | None:
@@ -1315,19 +1315,3 @@ def _locked(folder: str) -> int | None:
         return None
     return lock
 
-
-def _write_file(path: str, text: str) -> None:
-    """Write a synthesised header whole or not at all (a temporary file moved into
-    place): a parse in another worker that includes it (a message header a parse makes
-    again in the shared folder) never reads it truncated."""
-    folder = os.path.dirname(path)
-    os.makedirs(folder, exist_ok=True)
-    fd, temporary = tempfile.mkstemp(dir=folder, prefix=".haros-", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            handle.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.remove(temporary)
-        raise
