@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from haros_arch.graph import build
 from haros_arch.launch.model import LaunchModel, NodeDecl, ParamDecl
 from haros_arch.model import Configuration, Location, Node, PrimitiveCall
@@ -53,6 +55,14 @@ def no_layers(host: str, *costmaps: str) -> list[ParamDecl]:
     return [ParamDecl(f"{host}/{costmap}/plugins", []) for costmap in costmaps]
 
 
+def recoveries() -> list[Node]:
+    """move_base's default recovery behaviours (loaded without ``recovery_behaviors``)."""
+    return [plugin("clear_costmap_recovery", "clear_costmap_recovery/ClearCostmapRecovery",
+                   "clear_costmap_recovery::ClearCostmapRecovery"),
+            plugin("rotate_recovery", "rotate_recovery/RotateRecovery",
+                   "rotate_recovery::RotateRecovery")]
+
+
 def test_move_base_gets_planner_recovery_and_costmap_layer_calls_under_their_names():
     move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
     navfn = plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS",
@@ -100,7 +110,7 @@ def test_a_plugin_not_in_the_workspace_is_a_diagnostic_and_only_that_instance_is
     move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
     defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
                 plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
-                       "base_local_planner::TrajectoryPlannerROS")]
+                       "base_local_planner::TrajectoryPlannerROS"), *recoveries()]
     params = [ParamDecl("/a/move_base/base_local_planner", "dwa/DWAPlannerROS", "str",
                         location=where(7)),
               *no_layers("/a/move_base", "global_costmap", "local_costmap"),
@@ -128,7 +138,7 @@ def test_a_host_whose_plugin_parameter_a_file_not_read_may_set_is_partial():
     move_base = Node("move_base", "move_base", calls=[call("publish", "~goal")])
     defaults = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
                 plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
-                       "base_local_planner::TrajectoryPlannerROS")]
+                       "base_local_planner::TrajectoryPlannerROS"), *recoveries()]
     unread = [ParamDecl(f"/a/move_base/{UNKNOWN_MARK}", None, location=where(4)),
               ParamDecl(f"/b/move_base/global_costmap/{UNKNOWN_MARK}", None,
                         location=where(5))]
@@ -943,3 +953,65 @@ def test_dwb_critics_are_found_in_the_namespaces_it_is_given_or_not_at_all():
     assert not server.is_complete
     assert [d.code for d in config.diagnostics if "SpeedCritic" in d.message] == [
         "PLUGIN_NOT_FOUND"]
+
+
+@pytest.mark.parametrize("allowed", [None, True, False])
+def test_move_base_without_recovery_behaviors_loads_its_defaults(allowed):
+    # move_base.cpp's loadDefaultRecoveryBehaviors: conservative_reset and aggressive_reset
+    # (ClearCostmapRecovery) and rotate_recovery (RotateRecovery, whose initialize reads
+    # ~TrajectoryPlannerROS/... too), the rotation only with clearing_rotation_allowed
+    move_base = Node("move_base", "move_base", calls=[
+        call("read", "~clearing_rotation_allowed", "bool", line=116, has_default=True,
+             default=True)])
+    clear = plugin("clear_costmap_recovery", "clear_costmap_recovery/ClearCostmapRecovery",
+                   "clear_costmap_recovery::ClearCostmapRecovery",
+                   call("read", "~?/reset_distance", "double"))
+    rotate = plugin("rotate_recovery", "rotate_recovery/RotateRecovery",
+                    "rotate_recovery::RotateRecovery",
+                    call("read", "~?/frequency", "double"),
+                    call("read", "~TrajectoryPlannerROS/yaw_goal_tolerance", "double"))
+    planners = [plugin("navfn", "navfn/NavfnROS", "navfn::NavfnROS"),
+                plugin("base_local_planner", "base_local_planner/TrajectoryPlannerROS",
+                       "base_local_planner::TrajectoryPlannerROS")]
+    params = [*no_layers("/move_base", "global_costmap", "local_costmap")]
+    if allowed is not None:
+        params.append(ParamDecl("/move_base/clearing_rotation_allowed", allowed, "bool"))
+    config = graph([NodeDecl("/move_base", "move_base", "move_base")], params,
+                   [move_base, clear, rotate, *planners])
+    reads = [(name, conditions) for kind, name, conditions in (
+        (link.kind, link.resource.name, link.conditions) for link in config.links)
+        if kind == "read" and name != "/move_base/clearing_rotation_allowed"
+        and "costmap" not in name]
+    rotation = [("/move_base/TrajectoryPlannerROS/yaw_goal_tolerance", ()),
+                ("/move_base/rotate_recovery/frequency", ())]
+    assert sorted(reads) == sorted([
+        ("/move_base/aggressive_reset/reset_distance", ()),
+        ("/move_base/conservative_reset/reset_distance", ()),
+        *(rotation if allowed is not False else [])])
+    dropped = [d for d in config.diagnostics if d.code == "CONDITION_FALSE"]
+    assert len(dropped) == (2 if allowed is False else 0)
+    assert all("clearing_rotation_allowed_" in d.message and "move_base.cpp:1121" in d.message
+               for d in dropped)
+    assert config.node("/move_base").is_complete
+
+
+def test_nav2_behavior_and_smoother_servers_load_their_defaults_when_not_listed():
+    behaviors = [plugin("nav2_behaviors", f"nav2_behaviors/{cls}", f"nav2_behaviors::{cls}",
+                        call("declare", f"?.{cls.lower()}_speed", "double"))
+                 for cls in ("Spin", "BackUp", "DriveOnHeading", "Wait")]
+    for each in behaviors:
+        each.ros_version = 2
+    smoother = plugin("nav2_smoother", "nav2_smoother/SimpleSmoother",
+                      "nav2_smoother::SimpleSmoother", call("declare", "?.tolerance", "double"))
+    config = graph([ros2(NodeDecl("/behavior_server", "nav2_behaviors", "behavior_server")),
+                    ros2(NodeDecl("/smoother_server", "nav2_smoother", "smoother_server"))],
+                   [], [Node("nav2_behaviors", "behavior_server"),
+                        Node("nav2_smoother", "smoother_server"), *behaviors, smoother])
+    declared = sorted(link.resource.name for link in config.links if link.kind == "read"
+                      and not link.resource.name.endswith(".plugin"))
+    assert declared == ["/behavior_server/backup.backup_speed",
+                        "/behavior_server/drive_on_heading.driveonheading_speed",
+                        "/behavior_server/spin.spin_speed",
+                        "/behavior_server/wait.wait_speed",
+                        "/smoother_server/simple_smoother.tolerance"]
+    assert config.node("/behavior_server").is_complete

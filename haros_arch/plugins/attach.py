@@ -740,6 +740,8 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
             continue
         name = _text(entry) or UNKNOWN_MARK
         cls = dict(slot.defaults).get(name)
+        if listed is None:  # a default: under the tests of the host's code, if any
+            conditions = _default_tests(slot, name)
         parameter = base + (slot.type_of or "").format(name=name)
         typed = _parameter(params, parameter) if slot.type_of else None
         if typed is not None:
@@ -747,6 +749,16 @@ def _chosen(instance: NodeInstance, slot: Slot, params: Params,
                          (*conditions, *typed.launch_conditions), (*listing, parameter))
         else:
             yield Choice(name, cls, where, conditions, listing)
+
+
+def _default_tests(slot: Slot, name: str) -> tuple[Condition, ...]:
+    """The source conditions of the host's code a default plugin ``name`` of ``slot``
+    is loaded under (``Slot.default_if``), decided by the graph from the host's
+    parameter (``Condition.parameters``)."""
+    return tuple(
+        Condition(test.text, "source", "if", Location(test.package, test.file, test.line, 0),
+                  parameters=((test.text, test.parameter),))
+        for test in slot.default_if if test.plugin == name)
 
 
 def _typed_entry(entry: Any, key: str) -> bool:

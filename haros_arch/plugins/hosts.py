@@ -126,6 +126,25 @@ class Slot:
     # and theirs the next (``<plugin>.<critic>.scale``); a name of one unknown part is the
     # outer plugin's
     inner: bool = False
+    # defaults the host loads only where a test of its code holds (``Test``): the
+    # plugin's calls carry it as a source condition, which the graph decides from the
+    # host's parameter
+    default_if: tuple[Test, ...] = ()
+
+
+@dataclass(frozen=True)
+class Test:
+    """A test in the host's code that a default plugin ``plugin`` is loaded under:
+    ``text`` as written at ``file``:``line`` of package ``package``, holding the value of
+    the host's private parameter ``parameter`` read before it (move_base initialises its
+    default ``rotate_recovery`` only with ``clearing_rotation_allowed_``)."""
+
+    plugin: str
+    text: str
+    parameter: str
+    package: str
+    file: str
+    line: int
 
 
 @dataclass(frozen=True)
@@ -292,10 +311,17 @@ HOSTS: tuple[Host, ...] = (
              defaults=(("PathHandler", "nav2_controller::FeasiblePathHandler"),),
              since=(1, 5)),),
          (Child("local_costmap", "local_costmap", "nav2_costmap_2d", "nav2_costmap_2d"),)),
+    # the behavior and smoother servers' defaults where their lists are not set
+    # (behavior_server.cpp's and nav2_smoother.cpp's ``default_ids_``, the same from
+    # Humble to 1.5)
     Host("nav2_behaviors", ("behavior_server", "behavior_server::BehaviorServer"), 2, (
-        Slot("behavior_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Behavior")),)),
+        Slot("behavior_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Behavior"),
+             defaults=(("spin", "nav2_behaviors::Spin"), ("backup", "nav2_behaviors::BackUp"),
+                       ("drive_on_heading", "nav2_behaviors::DriveOnHeading"),
+                       ("wait", "nav2_behaviors::Wait"))),)),
     Host("nav2_smoother", ("smoother_server", "nav2_smoother::SmootherServer"), 2, (
-        Slot("smoother_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Smoother")),)),
+        Slot("smoother_plugins", "{name}.plugin", ("nav2_core", "nav2_core::Smoother"),
+             defaults=(("simple_smoother", "nav2_smoother::SimpleSmoother"),)),)),
     Host("nav2_waypoint_follower", ("waypoint_follower",
                                     "nav2_waypoint_follower::WaypointFollower"), 2, (
         # the loader's package is nav2_waypoint_follower from Humble to Jazzy (its
@@ -322,7 +348,16 @@ HOSTS: tuple[Host, ...] = (
         Slot(None, "base_local_planner", ("nav_core", "nav_core::BaseLocalPlanner"),
              defaults=(("", "base_local_planner/TrajectoryPlannerROS"),),
              name_from_class=True),
-        Slot("recovery_behaviors", None, ("nav_core", "nav_core::RecoveryBehavior")),
+        # without ``recovery_behaviors`` (move_base.cpp, loadDefaultRecoveryBehaviors,
+        # noetic-devel 9ad6441): two ClearCostmapRecovery and one RotateRecovery, the
+        # rotation initialised only with ``clearing_rotation_allowed`` (default true)
+        Slot("recovery_behaviors", None, ("nav_core", "nav_core::RecoveryBehavior"),
+             defaults=(("conservative_reset", "clear_costmap_recovery/ClearCostmapRecovery"),
+                       ("rotate_recovery", "rotate_recovery/RotateRecovery"),
+                       ("aggressive_reset", "clear_costmap_recovery/ClearCostmapRecovery")),
+             default_if=(Test("rotate_recovery", "clearing_rotation_allowed_",
+                              "~clearing_rotation_allowed", "move_base",
+                              "move_base/src/move_base.cpp", 1121),)),
         _ros1_costmap("global_costmap/"),
         _ros1_costmap("local_costmap/"))),
     Host("costmap_2d", ("costmap_2d_node",), 1, (_ros1_costmap("costmap/"),)),
