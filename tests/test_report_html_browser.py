@@ -500,3 +500,34 @@ def test_the_report_opens_on_the_first_configuration_that_starts_a_node(
     assert watched.ids("#graph .vertex") == set()
     assert watched.problems == []
     watched.page.close()
+
+
+def test_a_later_workspace_folders_file_is_shown_under_the_folders_name(
+        browser: Any, tmp_path: Path) -> None:
+    first, second = tmp_path / "ws", tmp_path / "deps" / "ros2_controllers"
+    source = second / "ctl" / "src" / "ctl.cpp"
+    source.parent.mkdir(parents=True)
+    (first / "demo").mkdir(parents=True)
+    source.write_text('auto p = create_publisher<Odometry>("odom", 10);\n')
+    where = {"package": "ctl", "file": str(source), "line": 1, "column": 10}
+    config = {
+        "name": "c", "launch": [], "args": {}, "services": [], "actions": [],
+        "parameters": [], "diagnostics": [],
+        "nodes": [{"name": "/ctl", "id": "node:/ctl", "node": "ctl/ctl", "namespace": "/",
+                   "remaps": [], "args": "", "conditions": [], "location": where}],
+        "topics": [{"name": "/odom", "id": "topic:/odom", "types": ["nav_msgs/Odometry"],
+                    "publishers": ["/ctl"], "subscribers": [], "conditions": []}],
+        "links": [{"kind": "publish", "node": "/ctl", "name": "/odom", "given": "odom",
+                   "type": "nav_msgs/Odometry", "queue_size": 10, "qos": None,
+                   "conditions": [], "location": where}]}
+    path = tmp_path / "two.html"
+    write_report({"schema": "haros-arch/1", "project": "two", "packages": [],
+                  "configurations": [config], "diagnostics": []}, [],
+                 [str(first), str(second)], str(path))
+    watched = Watched(browser, path)
+    watched.page.click('#graph .vertex[data-id="node:/ctl"]')
+    panel = watched.page.inner_text("#panel")
+    assert "ros2_controllers/ctl/src/ctl.cpp:1" in panel
+    assert str(tmp_path) not in panel
+    assert "create_publisher<Odometry>" in panel  # the line is quoted
+    assert watched.problems == []

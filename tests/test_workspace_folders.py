@@ -108,3 +108,13 @@ def test_the_report_quotes_the_lines_of_every_workspace_folder(tmp_path) -> None
     assert "create_publisher" in snippets[str(source)]["4"]
     # one folder: an absolute path is never read
     assert sorted(collect_snippets(data, str(first))) == ["other/src/other.cpp"]
+
+
+def test_later_folders_are_labelled_by_their_names(tmp_path) -> None:
+    from haros_arch.viz.sources import folder_labels
+
+    a, b, c = tmp_path / "ws", tmp_path / "x" / "deps", tmp_path / "y" / "deps"
+    assert folder_labels(str(a)) == []
+    assert folder_labels([str(a), str(tmp_path / "tools")]) == [
+        [str(tmp_path / "tools"), "tools"]]
+    assert folder_labels([str(a), str(b), str(c)]) == [[str(b), "x/deps"], [str(c), "y/deps"]]

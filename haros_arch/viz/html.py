@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from ..model.serialise import json_text, to_data
-from .sources import collect_snippets
+from .sources import collect_snippets, folder_labels
 
 STATIC = Path(__file__).resolve().parent / "static"
 VENDORED_D3 = Path(__file__).resolve().parent / "vendor" / "d3.min.js"
@@ -75,6 +75,7 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
         "findings": found,
         "sources": collect_snippets({"model": model_data, "findings": found},
                                     workspace_root),
+        "folders": folder_labels(workspace_root),
         **({"live": live} if live is not None else {}),
     }
     scripts = [_script_text(find_d3()), app_script()]

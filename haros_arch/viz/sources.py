@@ -85,6 +85,18 @@ def in_folders(folders: Sequence[str], file: str) -> str | None:
     return None
 
 
+def folder_labels(workspace_root: str | Sequence[str]) -> list[list[str]]:
+    """``[folder, label]`` for each workspace folder after the first (whose files the
+    model names by absolute path): the report shows such a file as the label, the
+    folder's name (with its parent's where two share it), and its path below it."""
+    folders = [] if isinstance(workspace_root, str) else [
+        os.path.normpath(os.path.abspath(f)) for f in workspace_root[1:]]
+    names = [os.path.basename(f) for f in folders]
+    return [[folder, name if names.count(name) == 1 else os.path.join(
+        os.path.basename(os.path.dirname(folder)), name)]
+        for folder, name in zip(folders, names, strict=True)]
+
+
 def collect_snippets(data: Any, workspace_root: str | Sequence[str]
                      ) -> dict[str, dict[str, str]]:
     """``{file: {"line number": text}}`` for the lines around each location in ``data``;

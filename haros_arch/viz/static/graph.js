@@ -224,7 +224,7 @@ function curveThrough(points, reach) {
 
 function conditionText(conditions) {
   return (conditions || []).map(c => {
-    const where = c.location && c.location.file ? ` (${c.location.file}:${c.location.line})` : '';
+    const where = c.location && c.location.file ? ` (${shownFile(c.location.file)}:${c.location.line})` : '';
     return `${c.statement || c.kind || 'if'} ${c.text}${where}`;
   }).join('\n');
 }

@@ -25,9 +25,18 @@ function wrappable(text) {
 
 const SEVERITIES = ['error', 'warning', 'info'];
 
+// A file of a workspace folder after the first is named in the model by its absolute
+// path; it is shown as that folder's label and its path below it.
+function shownFile(file) {
+  for (const [folder, label] of DATA.folders || []) {
+    if (file.startsWith(folder + '/')) return label + file.slice(folder.length);
+  }
+  return file;
+}
+
 function where(loc) {
   if (!loc || !loc.file) return '';
-  return loc.file + (loc.line ? ':' + loc.line + (loc.column ? ':' + loc.column : '') : '');
+  return shownFile(loc.file) + (loc.line ? ':' + loc.line + (loc.column ? ':' + loc.column : '') : '');
 }
 
 // The lines around a location, from the snippets embedded in the report.
