@@ -1003,15 +1003,23 @@ def test_nav2_behavior_and_smoother_servers_load_their_defaults_when_not_listed(
         each.ros_version = 2
     smoother = plugin("nav2_smoother", "nav2_smoother/SimpleSmoother",
                       "nav2_smoother::SimpleSmoother", call("declare", "?.tolerance", "double"))
+    wait = plugin("nav2_waypoint_follower", "nav2_waypoint_follower/WaitAtWaypoint",
+                  "nav2_waypoint_follower::WaitAtWaypoint",
+                  call("declare", "?.waypoint_pause_duration", "int"))
     config = graph([ros2(NodeDecl("/behavior_server", "nav2_behaviors", "behavior_server")),
-                    ros2(NodeDecl("/smoother_server", "nav2_smoother", "smoother_server"))],
+                    ros2(NodeDecl("/smoother_server", "nav2_smoother", "smoother_server")),
+                    ros2(NodeDecl("/waypoint_follower", "nav2_waypoint_follower",
+                                  "waypoint_follower"))],
                    [], [Node("nav2_behaviors", "behavior_server"),
-                        Node("nav2_smoother", "smoother_server"), *behaviors, smoother])
+                        Node("nav2_smoother", "smoother_server"),
+                        Node("nav2_waypoint_follower", "waypoint_follower"), *behaviors,
+                        smoother, wait])
     declared = sorted(link.resource.name for link in config.links if link.kind == "read"
                       and not link.resource.name.endswith(".plugin"))
     assert declared == ["/behavior_server/backup.backup_speed",
                         "/behavior_server/drive_on_heading.driveonheading_speed",
                         "/behavior_server/spin.spin_speed",
                         "/behavior_server/wait.wait_speed",
-                        "/smoother_server/simple_smoother.tolerance"]
+                        "/smoother_server/simple_smoother.tolerance",
+                        "/waypoint_follower/wait_at_waypoint.waypoint_pause_duration"]
     assert config.node("/behavior_server").is_complete

@@ -326,8 +326,11 @@ HOSTS: tuple[Host, ...] = (
                                     "nav2_waypoint_follower::WaypointFollower"), 2, (
         # the loader's package is nav2_waypoint_follower from Humble to Jazzy (its
         # plugins.xml exported under that tag), nav2_core after
+        # (not set: ``wait_at_waypoint``, WaitAtWaypoint; parameter_handler.cpp, and
+        # waypoint_follower.cpp before it)
         Slot("waypoint_task_executor_plugin", "{name}.plugin",
-             ("nav2_core", "nav2_waypoint_follower", "nav2_core::WaypointTaskExecutor")),)),
+             ("nav2_core", "nav2_waypoint_follower", "nav2_core::WaypointTaskExecutor"),
+             defaults=(("wait_at_waypoint", "nav2_waypoint_follower::WaitAtWaypoint"),)),)),
     Host("nav2_costmap_2d", ("nav2_costmap_2d",), 2, _NAV2_COSTMAP),
     # bt_navigator loads its navigators by id (bt_navigator.cpp: ``navigators``, each
     # class from ``<id>.plugin``; the two defaults when the list is not set); a navigator
