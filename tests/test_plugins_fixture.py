@@ -121,3 +121,36 @@ def test_mavros_loads_every_exported_plugin_its_deny_list_lets_through():
     assert ("/mavros/mavros_router", "/mavros/mavros_router/add_endpoint") in served
     assert not [name for node, name in served if name.endswith("/add_endpoint")
                 and node != "/mavros/mavros_router"]
+
+
+@pytest.mark.parametrize("distro", ["jazzy", "humble"])
+def test_nav2_servers_started_without_plugin_lists_load_their_defaults_from_the_models(
+        tmp_path, distro) -> None:
+    # an installed jazzy waypoint_follower and behavior_server, no parameter file: the
+    # servers load wait_at_waypoint and spin, backup, drive_on_heading, wait (their
+    # code's defaults), from the shipped models; the follower's own read of
+    # ``<id>.plugin`` (an id its parameter names) is the host row's load, not a load
+    # of unknown classes; humble exports DriveOnHeading as the C++ type
+    # ``nav2_behaviors::DriveOnHeading<>``, the same class
+    (tmp_path / "demo" / "launch").mkdir(parents=True)
+    (tmp_path / "demo" / "package.xml").write_text(
+        '<?xml version="1.0"?><package format="3"><name>demo</name><version>0.1.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        "<license>MIT</license><exec_depend>nav2_waypoint_follower</exec_depend>"
+        "<exec_depend>nav2_behaviors</exec_depend></package>")
+    (tmp_path / "demo" / "launch" / "nav.launch.xml").write_text(
+        '<launch>\n  <node pkg="nav2_waypoint_follower" exec="waypoint_follower" '
+        'name="waypoint_follower"/>\n  <node pkg="nav2_behaviors" exec="behavior_server" '
+        'name="behavior_server"/>\n</launch>\n')
+    project = Project("nav", str(tmp_path / "p.yaml"), workspace=[str(tmp_path)],
+                      distro=distro, configurations=[
+                          ConfigurationSpec("c", ["demo/launch/nav.launch.xml"], {})])
+    config = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1)
+                              ).configurations[0]
+    follower, behaviors = config.node("/waypoint_follower"), config.node("/behavior_server")
+    assert follower.completeness == behaviors.completeness == "model"
+    names = {link.resource.name for link in config.links}
+    assert "/waypoint_follower/wait_at_waypoint.waypoint_pause_duration" in names
+    served = {link.resource.name for link in config.links
+              if link.node is behaviors and link.kind == "action-server"}
+    assert {"/spin", "/backup", "/drive_on_heading", "/wait"} <= served

@@ -29,7 +29,7 @@ from ..graph.build import is_container, node_key, nodelet_plugin
 from ..launch.model import LaunchModel
 from ..model.location import Location
 from ..model.source import Node, Package
-from ..plugins.attach import class_packages
+from ..plugins.attach import class_packages, plugin_types
 from ..workspace import Workspace
 from .commands import command_node
 from .format import InterfaceModel
@@ -122,8 +122,8 @@ class Attacher:
             for package in class_packages(cls):
                 model = self._find(package, distro)
                 source = None if model is None else next(
-                    (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and cls in (
-                        n.executable, (n.plugin_class or "").lstrip(":")))), None)
+                    (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and (
+                        cls == n.executable or cls in plugin_types(n)))), None)
                 if model is not None and source is not None:
                     return self._node(model, source.executable)
             return None

@@ -562,9 +562,19 @@ def plugin_index(nodes: Mapping[str, Node]) -> dict[str, Node]:
         if node.kind != "plugin":
             continue
         index.setdefault(node.executable, node)
-        if node.plugin_class:
-            index.setdefault(node.plugin_class.lstrip(":"), node)
+        for each in plugin_types(node):
+            index.setdefault(each, node)
     return index
+
+
+def plugin_types(node: Node) -> tuple[str, ...]:
+    """A plugin node's C++ type, and the class template's name where the type takes its
+    template's defaults (nav2 humble's ``nav2_behaviors::DriveOnHeading<>``: the same
+    class written ``nav2_behaviors::DriveOnHeading``, as later versions export it)."""
+    cls = (node.plugin_class or "").lstrip(":")
+    if not cls:
+        return ()
+    return (cls, cls[:-2]) if cls.endswith("<>") else (cls,)
 
 
 def _lookup(choice: Choice, index: Mapping[str, Node], workspace: Workspace,
@@ -931,6 +941,10 @@ def chains(config: Configuration, nodes: Mapping[str, Node], params: Params,
             if (id(instance), full) in done:
                 continue
             done.add((id(instance), full))
+            if is_class_load(call.loads) and _host_slot_reads(instance, full):
+                # the host's row loads it, with the plugin name it knows (nav2's
+                # waypoint_follower reads ``<id>.plugin`` of the id its parameter names)
+                continue
             if UNKNOWN_MARK in full:  # a chain named at run time: its classes unknown
                 where = call.location
                 own_partial(instance, f"{where.file}:{where.line}: loads the plugin classes "
