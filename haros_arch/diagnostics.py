@@ -510,6 +510,16 @@ CATALOGUE: dict[str, Entry] = {
         "the nodelet class (found as a launch file's 'nodelet standalone' finds it: in "
         "the package that exports it, else the interface models). A class found nowhere "
         "leaves the instance partial."),
+    "CPP_PLUGIN_IN_PROCESS": Entry(
+        "info", "creates the plugin class {cls} by its name written in the code",
+        "The program creates a plugin instance through a pluginlib ClassLoader "
+        "(createSharedInstance, createUniqueInstance, createInstance, ...) of a class "
+        "written as a literal, not under a condition (cyberdog's sensor manager's "
+        "createSharedInstance(\"cyberdog::sensor::GpsCarpo\")): the class is known, so "
+        "each instance of the node makes its calls (the plugin class found by its lookup "
+        "name or C++ type in the package that exports it, else the interface models), and "
+        "the load is no cause of 'partial'. A class found nowhere, or partial, leaves the "
+        "instance partial."),
     "CPP_LIBRARY_LOADED": Entry(
         "info", "{text}: loads a shared library chosen at run time",
         "The code opens a shared library by name (POSIX dlopen, Windows LoadLibrary): "

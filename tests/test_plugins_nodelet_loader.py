@@ -90,7 +90,7 @@ def test_a_node_that_loads_a_nodelet_is_partial_and_does_not_decide(write_tree: 
     instance, found = _run(write_tree, LOAD)
     assert instance.completeness == "partial"
     assert instance.node.nodelets == ["viewer/view"] and not instance.node.plugin_loads
-    assert "runs the nodelet viewer/view" in instance.node.completeness_reasons[0]
+    assert "runs the class viewer/view" in instance.node.completeness_reasons[0]
     assert "parameter-set-not-read" not in found
     assert found["parameter-set-not-read" + UNDECIDED] == [("node:/viewer",)]
 

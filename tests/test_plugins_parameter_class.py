@@ -4,7 +4,8 @@ named by the value of a parameter it reads (slam_toolbox's ``solver_plugin``, de
 then ``solver_->Configure(node)``): the class the configuration sets, or the default,
 makes its calls on the node. It was partial ("loads plugin classes by name whose calls
 are not known here") and the plugin's parameters were read by nobody. A class written
-in the code, or a parameter's value naming a class no package exports, stays partial."""
+in the code makes its calls too (where the load runs whenever the code does); a
+parameter's value naming a class no package exports stays partial."""
 
 from __future__ import annotations
 
@@ -188,16 +189,36 @@ def test_the_class_the_launch_sets_is_loaded_and_one_not_found_is_said(
     assert any(d.code == "PLUGIN_NOT_FOUND" for d in config.diagnostics)
 
 
-def test_a_class_written_in_the_code_stays_partial(write_tree: Any) -> None:
+def test_a_class_written_in_the_code_makes_its_calls_on_the_node(write_tree: Any) -> None:
+    # ``createSharedInstance("demo::FastSolver")``, run whenever the node runs: the class
+    # is known (CPP_PLUGIN_IN_PROCESS), read as a plugin node, and its calls are the
+    # node's; the load is no cause of partial
     model, config = _analyse(
         write_tree, load_call='loader.createSharedInstance("demo::FastSolver")')
     node = next(n for p in model.packages for n in p.nodes if n.name == "demo/host")
-    assert node.plugin_loads
+    assert not node.plugin_loads and node.nodelets == ["demo::FastSolver"]
+    assert [n.name for p in model.packages for n in p.nodes if n.kind == "plugin"] == [
+        "demo/demo::FastSolver"]
+    instance = next(n for n in config.nodes if n.name == "/host")
+    assert instance.completeness == "complete", instance.completeness_reasons
+    assert {("publish", "/solver_status"), ("read", "/host/fast_gain")} <= _links(
+        config, "/host")
+
+
+def test_a_class_written_in_the_code_under_a_condition_or_not_exported_stays_partial(
+        write_tree: Any) -> None:
+    # under an ``if`` the class may not be loaded: a load by name as before
+    model, config = _analyse(write_tree, load_call=(
+        'argc > 1 ? loader.createSharedInstance("demo::FastSolver") : nullptr'))
+    node = next(n for p in model.packages for n in p.nodes if n.name == "demo/host")
+    assert node.plugin_loads and not node.nodelets
     instance = next(n for n in config.nodes if n.name == "/host")
     assert instance.completeness == "partial"
-    # a class only code's ClassLoaders may load, which no parameter names: not read,
-    # no node (``Node.deferred``)
-    assert not [n for p in model.packages for n in p.nodes if n.kind == "plugin"]
+    # a class no package exports: the instance is partial for it
+    _, config = _analyse(write_tree, load_call='loader.createSharedInstance("other::Slow")')
+    instance = next(n for n in config.nodes if n.name == "/host")
+    assert instance.completeness == "partial"
+    assert any("other::Slow" in reason for reason in instance.completeness_reasons)
 
 
 def test_a_modelled_node_loads_the_class_of_its_own_package_from_the_model(

@@ -24,6 +24,7 @@ from ..files import read_text
 from ..model.source import Node, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
 from ..plugins.classes import base_name, exported_classes
+from ..plugins.hosts import host_of
 from ..plugins.inherit import without_other_classes, without_overridden
 from ..workspace import Workspace
 
@@ -131,7 +132,10 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                              *said], workspace))
         bases = {base_name(base) for node in cpp for call in node.calls
                  if (base := class_load_base(call.loads)) is not None}
-        cpp = [node for node in deferred if base_name(node.plugin_base or "") in bases]
+        # and the classes a node creates by a name written in its code
+        named = {name.lstrip(":") for node in cpp for name in node.nodelets}
+        cpp = [node for node in deferred if base_name(node.plugin_base or "") in bases
+               or node.executable in named or (node.plugin_class or "").lstrip(":") in named]
         deferred = [node for node in deferred if node not in cpp]
         for node in cpp:
             node.deferred = False
@@ -248,7 +252,8 @@ _SAID_AT_THE_PLACE = frozenset({"CPP_VERSION_UNKNOWN"})
 # wrapper executables of image_view, stereo_image_proc, ...), with arguments
 NODELET_LOAD = re.compile(r"(?:\.|->)\s*(load)\s*\(\s*[^)\s]")
 # the class of a ``CPP_NODELET_IN_PROCESS`` (its message)
-_IN_PROCESS = re.compile(r"runs the nodelet (\S+) in its own process")
+_IN_PROCESS = re.compile(r"runs the nodelet (\S+) in its own process"
+                         r"|creates the plugin class (\S+) by its name written")
 
 
 def _links_plugin_classes(node: Node, workspace: Workspace | None) -> bool:
@@ -260,6 +265,13 @@ def _links_plugin_classes(node: Node, workspace: Workspace | None) -> bool:
         return False
     return any(exported_classes(os.path.join(workspace.root, source), workspace)
                for source in node.sources)
+
+
+def _hosted(node: Node) -> bool:
+    """Whether ``node`` is a plugin host of the table (``plugins.hosts``), in either
+    ROS."""
+    return any(host_of(node.package, node.executable, version) is not None
+               for version in (1, 2))
 
 
 def completeness(node: Node, found: Sequence[Diagnostic],
@@ -281,8 +293,14 @@ def completeness(node: Node, found: Sequence[Diagnostic],
     loads = [d for d in loads if (d.location.file, d.location.line) not in named]
     # the nodelets run under the node's own name: the graph gives each instance their
     # calls (``CPP_NODELET_IN_PROCESS``, said instead of the load)
-    own = [match.group(1) for d in found if d.code == "CPP_NODELET_IN_PROCESS"
-           and (match := _IN_PROCESS.match(d.message)) is not None]
+    own = [match.group(1) or match.group(2) for d in found
+           if d.code in ("CPP_NODELET_IN_PROCESS", "CPP_PLUGIN_IN_PROCESS")
+           and (match := _IN_PROCESS.match(d.message)) is not None
+           and (d.code == "CPP_NODELET_IN_PROCESS" or not _hosted(node))]
+    # a plugin host of the table (move_base's default recovery behaviours, created by
+    # their names in its code) attaches what it loads itself: a load as before
+    loads += [diag.make("CPP_PLUGINS_LOADED", d.location, text=d.message, loader="pluginlib")
+              for d in found if d.code == "CPP_PLUGIN_IN_PROCESS" and _hosted(node)]
     if (own or any(NODELET_LOAD.search(d.message) for d in loads)) and (
             _links_plugin_classes(node, workspace)):
         loads = [d for d in loads if not NODELET_LOAD.search(d.message)]

@@ -32,7 +32,7 @@ from ..model.source import NUMBERED, ROS_ARGUMENT, WORDS, Node, PrimitiveCall, n
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
-from ..plugins.attach import PluginModels, chains, class_packages, own_partial
+from ..plugins.attach import PluginModels, chains, class_packages, own_partial, plugin_types
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import Transports
 from ..robot.attach import GZSERVER
@@ -707,10 +707,15 @@ def in_process_nodelets(instance: NodeInstance, nodes: Mapping[str, Node],
     owned: set[int] = set()
     for plugin in node.nodelets:
         key = nodelet_key(plugin, nodes)
-        found = nodes.get(key) or (models(key) if models is not None else None)
+        # (a plugin class created by its C++ type, exported under another lookup name)
+        found = nodes.get(key) or next(
+            (n for n in nodes.values() if n.kind in ("plugin", "nodelet")
+             and plugin.lstrip(":") in plugin_types(n)), None) or (
+            models(key) or models(plugin) if models is not None else None)
         if found is None:
-            own_partial(instance, f"runs the nodelet {plugin}, which no package of the "
-                        "workspace nor interface model has", owned)
+            own_partial(instance, f"runs the class {plugin} in its process (a nodelet or "
+                        "plugin), which no package of the workspace nor interface model "
+                        "has", owned)
             continue
         if not found.is_complete:
             reasons = found.completeness_reasons[:1] or [found.completeness]

@@ -847,13 +847,15 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     library: its ``agv::Node`` is made only by the adapter's factory). A class that
     nothing in the executable constructs or calls keeps its calls: a host, a
     registration or a call through its base may run its methods. None when the
-    executable loads plugins or nodelets by name, or components (a factory may build
-    them), nor a class whose name the code around the parse's errors holds (they may
-    hide its construction; a word found only in the code of functions names a class
-    there as C++ looks it up from them, ``scoped``: open-rmf's EasyTrafficLight writes
-    ``Implementation`` for its own, never rmf_task_ros2's ``Dispatcher::Implementation``)."""
+    executable loads plugins or nodelets by name (a name written in its code too), or
+    components (a factory may build them), nor a class whose name the code around the
+    parse's errors holds (they may hide its construction; a word found only in the code
+    of functions names a class there as C++ looks it up from them, ``scoped``: open-rmf's
+    EasyTrafficLight writes ``Implementation`` for its own, never rmf_task_ros2's
+    ``Dispatcher::Implementation``)."""
     if reached is None or "*" in unseen or any(
-            d.code == "CPP_PLUGINS_LOADED" for d in result.diagnostics) or any(
+            d.code in ("CPP_PLUGINS_LOADED", "CPP_PLUGIN_IN_PROCESS")
+            for d in result.diagnostics) or any(
             call.name.endswith("_container/load_node") for call in result.calls):
         return set()  # a component container (ros2_canopen's) loads node classes too
     scoped = scoped or {}
@@ -1551,9 +1553,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
                 finder.release()
                 continue
         break
-    # a nodelet load the walk found run under the node's own name is said so instead
+    # a nodelet load the walk found run under the node's own name, and a plugin class
+    # created by a name written in the code, are said so instead
     own = {(d.location.file, d.location.line) for d in finder.diagnostics
-           if d.code == "CPP_NODELET_IN_PROCESS"}
+           if d.code in ("CPP_NODELET_IN_PROCESS", "CPP_PLUGIN_IN_PROCESS")}
     result.diagnostics.extend(d for d in plugin_loads(path, text, workspace)
                               if (d.location.file, d.location.line) not in own)
     result.diagnostics.extend(library_loads(path, text, workspace, tu))

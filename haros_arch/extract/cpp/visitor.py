@@ -21,7 +21,12 @@ from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...model.conditions import EACH_STATEMENT, ELEMENT_PARAMETER, Condition
+from ...model.conditions import (
+    EACH_STATEMENT,
+    ELEMENT_PARAMETER,
+    RUN_ONCE_STATEMENTS,
+    Condition,
+)
 from ...model.location import Location
 from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
@@ -2238,6 +2243,14 @@ class CallFinder:
         base = held[0] if held else ""
         loads = f"{api.PLUGINLIB_CLASS}:{base}" if base else api.PLUGINLIB_CLASS
         for written, source in names:
+            if source is None and UNKNOWN_MARK not in written and _LOOKUP_NAME.fullmatch(
+                    written) and all(c.statement in RUN_ONCE_STATEMENTS for c in conditions):
+                # a class written in the code, loaded whenever the code runs: the node
+                # runs it (``CPP_PLUGIN_IN_PROCESS``; the graph gives its instances the
+                # class's calls, as a nodelet's it runs under its own name)
+                self.diagnostics.append(diag.make("CPP_PLUGIN_IN_PROCESS", location,
+                                                  cls=written))
+                continue
             if written != UNKNOWN_MARK or source is None or source[3] is not None or (
                     source[5] is not None):
                 continue  # a class written in the code, or not known
