@@ -408,3 +408,50 @@ def test_a_class_named_by_a_parameter_another_names(write_tree: Any) -> None:
     links = _links(config, "/host")
     assert ("read", "/host/Fast.plugin") in links
     assert ("publish", "/solver_status") in links
+
+
+def test_a_class_another_package_creates_by_its_name_is_read_and_run(write_tree: Any) -> None:
+    """cyberdog's sensor_manager creates ``cyberdog::sensor::GpsCarpo`` by name with a
+    ClassLoader of cyberdog_gps's base; the loader is in the package that depends on the
+    plugin's, not in the plugin's or its dependencies: the class is a plugin node all the
+    same (``plugins.classes.named_loads``), and the host runs it."""
+    def manifest(name: str, *depends: str) -> str:
+        return package_xml(name, "ament_cmake").replace("</package>", "".join(
+            f"<depend>{d}</depend>" for d in depends) + "</package>")
+
+    root = write_tree({
+        "src/solvers/package.xml": manifest("solvers", "rclcpp", "pluginlib", "std_msgs"),
+        "src/solvers/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(solvers)\n"
+            "find_package(ament_cmake REQUIRED)\nfind_package(rclcpp REQUIRED)\n"
+            "find_package(pluginlib REQUIRED)\nfind_package(std_msgs REQUIRED)\n"
+            "include_directories(include)\n"
+            "add_library(fast_solver SHARED src/fast_solver.cpp)\n"
+            "ament_target_dependencies(fast_solver rclcpp pluginlib std_msgs)\n"
+            "pluginlib_export_plugin_description_file(solvers plugins.xml)\n"
+            "ament_package()\n"),
+        "src/solvers/plugins.xml": PLUGINS_XML,
+        "src/solvers/include/demo/solver.hpp": SOLVER_H,
+        "src/solvers/src/fast_solver.cpp": FAST,
+        "src/demo/package.xml": manifest("demo", "rclcpp", "pluginlib", "solvers"),
+        "src/demo/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
+            "find_package(ament_cmake REQUIRED)\nfind_package(rclcpp REQUIRED)\n"
+            "find_package(pluginlib REQUIRED)\nfind_package(solvers REQUIRED)\n"
+            "add_executable(host src/host.cpp)\n"
+            "ament_target_dependencies(host rclcpp pluginlib solvers)\n"
+            "ament_package()\n"),
+        "src/demo/src/host.cpp": HOST.replace(
+            "LOAD", 'loader.createSharedInstance("demo::FastSolver")'),
+        "src/demo/launch/demo.launch.xml": LAUNCH.format(params=""),
+        "project.yaml": ("project: p\nworkspace: [src]\ndistro: jazzy\nconfigurations:\n"
+                         "  c: [demo/launch/demo.launch.xml]\n"),
+    })
+    model = analyse(load(str(root / "project.yaml")),
+                    {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    config = model.configurations[0]
+    assert [n.name for p in model.packages for n in p.nodes if n.kind == "plugin"] == [
+        "solvers/demo::FastSolver"]
+    instance = next(n for n in config.nodes if n.name == "/host")
+    assert instance.completeness == "complete", instance.completeness_reasons
+    assert ("publish", "/solver_status") in _links(config, "/host")

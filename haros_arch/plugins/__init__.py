@@ -13,9 +13,10 @@ from .classes import (
     exported_classes,
     library_name,
     loaded_bases,
+    named_loads,
     narrow,
     plugin_classes,
 )
 
-__all__ = ["Files", "Library", "exported_classes", "library_name", "loaded_bases", "narrow",
-           "plugin_classes"]
+__all__ = ["Files", "Library", "exported_classes", "library_name", "loaded_bases",
+           "named_loads", "narrow", "plugin_classes"]

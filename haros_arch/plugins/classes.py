@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol, TypeVar
 
@@ -90,6 +90,31 @@ def library_name(path: str) -> str:
 _CLASS_LOADER = re.compile(r"\bClassLoader\s*<\s*([A-Za-z_][\w:]*)\s*>")
 
 
+# a ClassLoader's creation of a class named by a literal (``createSharedInstance("pkg::C")``)
+_NAMED_LOAD = re.compile(
+    r"\bcreate(?:Shared|Unique|Unmanaged|Class)?Instance\s*\(\s*\"([A-Za-z_][\w/:]*)\"\s*\)")
+
+
+def named_loads(roots: Iterable[str], workspace: Files) -> frozenset[str]:
+    """The plugin classes (lookup names or C++ types) that the C++ files of these package
+    folders (their tests left out) create by a name written in the code: given the
+    packages that depend on a plugin's package, where the code that loads it usually is
+    (cyberdog's sensor_manager creates ``cyberdog::sensor::GpsCarpo``, exported by
+    cyberdog_gps), so that class is a plugin node (``plugin_classes``)."""
+    found: set[str] = set()
+    for root in roots:
+        found.update(remembered("named class loads", root, workspace,
+                                lambda r=root: _named(r, workspace)))  # type: ignore[misc]
+    return frozenset(found)
+
+
+def _named(root: str, workspace: Files) -> frozenset[str]:
+    found: set[str] = set()
+    for _path, text in _loader_texts(root, workspace, literals=True):
+        found.update(m.group(1).lstrip(":") for m in _NAMED_LOAD.finditer(text))
+    return frozenset(found)
+
+
 def loaded_bases(roots: Iterable[str], workspace: Files) -> frozenset[str]:
     """The base classes (the last part of their names) that pluginlib ClassLoaders in the
     C++ files of these package folders load (their tests left out): the packages' code
@@ -109,18 +134,27 @@ _CPP_FILES = (".cpp", ".cc", ".cxx", ".hpp", ".h", ".hh", ".hxx")
 
 def _loaders(root: str, workspace: Files) -> frozenset[str]:
     found: set[str] = set()
+    for _path, text in _loader_texts(root, workspace):
+        found.update(loader_bases(text))
+    return frozenset(found)
+
+
+def _loader_texts(root: str, workspace: Files, literals: bool = False
+                  ) -> Iterator[tuple[str, str]]:
+    """The C++ files of a package folder (tests and build trees left out) that name a
+    ClassLoader, as code without comments (and, unless ``literals``, without the insides
+    of string literals)."""
     for folder, dirs, names in os.walk(root):
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in (
             "test", "tests", "build", "install"))
-        for name in names:
+        for name in sorted(names):
             if not name.endswith(_CPP_FILES):
                 continue
             path = os.path.join(folder, name)
             data, _ = read_bytes(path, workspace.location(path))
             if data is None or b"ClassLoader" not in data:
                 continue
-            found.update(loader_bases(code_only(data.decode("utf-8", "replace"))))
-    return frozenset(found)
+            yield path, code_only(data.decode("utf-8", "replace"), literals)
 
 
 def loader_bases(text: str) -> set[str]:
@@ -136,6 +170,7 @@ def base_name(base: str) -> str:
 
 def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, Library],
                    described: Sequence[Plugin] = (), loaded: frozenset[str] = frozenset(),
+                   named: frozenset[str] = frozenset(),
                    ) -> tuple[list[Node], list[Diagnostic]]:
     """Nodes for the classes of the package's plugin descriptions: package.xml exports
     and ``described`` (ROS 2's ``pluginlib_export_plugin_description_file``).
@@ -144,8 +179,9 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     ``hosts.HOSTS`` loads (its export tag or base class is one the table names) is a
     ``plugin`` node. Each is named by its pluginlib lookup name (``name``, else
     ``type``) and keeps its C++ type in ``plugin_class``; so is a class of a base that
-    ``loaded`` names (``loaded_bases`` of the package's code). Classes nothing loads
-    (rviz, rqt panels) are not nodes.
+    ``loaded`` names (``loaded_bases`` of the package's code), and a class ``named``
+    holds by lookup name or type (``named_loads`` of the code of the packages that
+    depend on it). Classes nothing loads (rviz, rqt panels) are not nodes.
     """
     # they read classes with this module's helpers
     from .inherit import built_sources, inherited_sources
@@ -156,7 +192,7 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
     for plugin in [*package.plugins, *described]:
         # a description of classes some host loads, else read for the loaded bases only
         hosted = plugin.kind in NODE_PLUGIN_KINDS or hosted_tag(plugin.kind)
-        if not hosted and not loaded:
+        if not hosted and not loaded and not named:
             continue
         path = os.path.join(workspace.root, plugin.file)
         roots = _read_description(path, workspace, found)
@@ -178,8 +214,10 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 # its base (navigation2's dwb_plugins exports goal checkers of
                 # nav2_core::GoalChecker under dwb_core, which the controller server's
                 # ClassLoader("nav2_core", ...) never reads); it is a node only as one a
-                # ClassLoader of its package or its dependencies' code may load, by base
-                by_code = bool(base) and base_name(base) in loaded
+                # ClassLoader of its package or its dependencies' code may load, by base,
+                # or one the code of a package depending on it creates by its name
+                by_code = bool(base) and (base_name(base) in loaded or bool(
+                    named & {(name or "").lstrip(":"), (cls.get("type") or "").lstrip(":")}))
                 if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base and (
                         not hosted_class(plugin.kind, base)) and not by_code):
                     continue
