@@ -1384,6 +1384,13 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
     if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
         decl = expr.referenced
         value = scope.variable(decl) if scope is not None and decl is not None else None
+        if value is None and scope is not None and decl is not None and (
+                _of_local(expr, scope)):
+            # a field of a local this function fills before the call (nav2_util's
+            # ``descriptor.name = name; declare_parameter(descriptor.name, ...)``); not
+            # a member of the object, which outlives the call (a plugin's ``name_ =
+            # name`` in ``configure``, whose other methods read it too)
+            value = scope.assigned(decl, expr)
         if value is None and scope is not None and decl is not None:
             # a member that this very constructor initialises (``: name_(name)``, a
             # class template's constructor that keeps its name argument): what it gives
@@ -1410,6 +1417,23 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
     if len(operands) != 2 or scope is None:
         return None
     return _around(operands, scope, lambda part: _name_shape(part, params, scope, depth + 1))
+
+
+def _of_local(expr: Cursor, scope: Scope) -> bool:
+    """Whether ``expr`` is a field of a local variable of the function ``scope`` reads
+    (``descriptor.name``, ``descriptor`` declared in its body)."""
+    if expr.kind != CursorKind.MEMBER_REF_EXPR or scope.body is None:
+        return False
+    inner = [c for c in expr.get_children() if c.kind.is_expression()]
+    base = strip(inner[0]) if inner else None
+    decl = base.referenced if base is not None and base.kind == CursorKind.DECL_REF_EXPR \
+        else None
+    if decl is None or decl.kind != CursorKind.VAR_DECL:
+        return False
+    body, at = scope.body.extent, decl.extent.start
+    return at.file is not None and body.start.file is not None and (
+        at.file.name == body.start.file.name
+        and body.start.offset <= at.offset <= body.end.offset)
 
 
 def _member_shape(expr: Cursor, function: Cursor, scope: Scope | None,
