@@ -26,17 +26,20 @@ int main(int argc, char** argv) {{
 """
 
 
-def _sources(tmp_path: Path) -> tuple[Path, Path]:
+def _sources(tmp_path: Path, manifest: str = "", first_text: str = "",
+             second_text: str = "") -> tuple[Path, Path]:
+    """Package ``demo`` with two units (by default the ROS 1 ones of ``UNIT``)."""
     package = tmp_path / "src" / "demo"
     (package / "src").mkdir(parents=True)
-    (package / "package.xml").write_text(
+    (package / "package.xml").write_text(manifest or (
         '<package format="2"><name>demo</name><version>1.0.0</version>'
         '<description>d</description><maintainer email="a@b.c">a</maintainer>'
         "<license>BSD</license><depend>roscpp</depend><depend>std_msgs</depend>"
-        "</package>\n")
+        "</package>\n"))
     first, second = package / "src" / "first.cpp", package / "src" / "second.cpp"
-    first.write_text("#include <std_msgs/String.h>\n" + UNIT.format(name="first"))
-    second.write_text("#include <std_msgs/String.h>\n" + UNIT.format(name="second"))
+    first.write_text(first_text or "#include <std_msgs/String.h>\n" + UNIT.format(name="first"))
+    second.write_text(second_text
+                      or "#include <std_msgs/String.h>\n" + UNIT.format(name="second"))
     return first, second
 
 
@@ -83,16 +86,13 @@ def test_a_ros2_message_header_only_a_parse_finds_is_the_message(tmp_path: Path)
     (it was an empty stand-in, while a unit that named the type unincluded had the same
     header made as the message: which one a worker's file held depended on the order
     its units came in)."""
-    package = tmp_path / "src" / "demo"
-    (package / "src").mkdir(parents=True)
-    (package / "package.xml").write_text(
+    first, second = _sources(
+        tmp_path,
         '<package format="3"><name>demo</name><version>1.0.0</version>'
         '<description>d</description><maintainer email="a@b.c">a</maintainer>'
         "<license>BSD</license><depend>rclcpp</depend><depend>geometry_msgs</depend>"
-        "<export><build_type>ament_cmake</build_type></export></package>\n")
-    first, second = package / "src" / "first.cpp", package / "src" / "second.cpp"
-    first.write_text(ROS2_UNIT.format(name="First"))
-    second.write_text(ROS2_UNIT.format(name="Second"))
+        "<export><build_type>ament_cmake</build_type></export></package>\n",
+        ROS2_UNIT.format(name="First"), ROS2_UNIT.format(name="Second"))
     ahead = extract_cpp_nodes([[str(first)], [str(second)]], scan([str(tmp_path)]),
                               cache_dir=None, jobs=1)
     behind = extract_cpp_nodes([[str(second)], [str(first)]], scan([str(tmp_path)]),

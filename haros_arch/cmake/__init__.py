@@ -506,14 +506,15 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
                  for base, path in interpreter.plugin_descriptions]
     roots = [package.root, *(workspace.packages[d].root for d in depends
                              if d in workspace.packages and workspace.packages[d].root)]
-    # the code that creates a class by its name is usually in a package that depends on
-    # the class's package
-    dependents = [other.root for other in workspace.packages.values() if other.root and any(
-        d.name == package.name for d in other.dependencies)]
+    named: frozenset[str] = frozenset()
+    if package.plugins or described:
+        # the code that creates a class by its name is usually in a package that depends
+        # on the class's package
+        dependents = [other.root for other in workspace.packages.values() if other.root
+                      and any(d.name == package.name for d in other.dependencies)]
+        named = plugins.named_loads([*roots, *dependents], files)
     classes, problems = plugins.plugin_classes(
-        package, files, libraries, described, plugins.loaded_bases(roots, files),
-        plugins.named_loads([*roots, *dependents], files) if package.plugins or described
-        else frozenset())
+        package, files, libraries, described, plugins.loaded_bases(roots, files), named)
     _standalone_names(classes, interpreter, files)
     nodes.extend(classes)
     found.extend(problems)

@@ -293,14 +293,17 @@ def completeness(node: Node, found: Sequence[Diagnostic],
     loads = [d for d in loads if (d.location.file, d.location.line) not in named]
     # the nodelets run under the node's own name: the graph gives each instance their
     # calls (``CPP_NODELET_IN_PROCESS``, said instead of the load)
+    # (a plugin host of the table attaches what it loads itself, move_base's default
+    # recovery behaviours created by their names in its code: a load as before)
+    hosted = _hosted(node)
     own = [match.group(1) or match.group(2) for d in found
            if d.code in ("CPP_NODELET_IN_PROCESS", "CPP_PLUGIN_IN_PROCESS")
            and (match := _IN_PROCESS.match(d.message)) is not None
-           and (d.code == "CPP_NODELET_IN_PROCESS" or not _hosted(node))]
-    # a plugin host of the table (move_base's default recovery behaviours, created by
-    # their names in its code) attaches what it loads itself: a load as before
-    loads += [diag.make("CPP_PLUGINS_LOADED", d.location, text=d.message, loader="pluginlib")
-              for d in found if d.code == "CPP_PLUGIN_IN_PROCESS" and _hosted(node)]
+           and (d.code == "CPP_NODELET_IN_PROCESS" or not hosted)]
+    if hosted:
+        loads += [diag.make("CPP_PLUGINS_LOADED", d.location, text=d.message,
+                            loader="pluginlib")
+                  for d in found if d.code == "CPP_PLUGIN_IN_PROCESS"]
     if (own or any(NODELET_LOAD.search(d.message) for d in loads)) and (
             _links_plugin_classes(node, workspace)):
         loads = [d for d in loads if not NODELET_LOAD.search(d.message)]
