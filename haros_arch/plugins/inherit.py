@@ -295,21 +295,32 @@ def _class_text(text: str, cls: str) -> str | None:
 def _bases(cls: str, texts: list[str]) -> list[str]:
     """The base classes a declaration ``class cls : ... {`` lists, as written (without
     template arguments)."""
+    for text in texts:
+        found = _bases_in(cls, text) if cls in text else None  # (most texts name it nowhere)
+        if found is not None:
+            return list(found)
+    return []
+
+
+@functools.lru_cache(maxsize=4096)
+def _bases_in(cls: str, text: str) -> tuple[str, ...] | None:
+    """``_bases`` of one text: None when it declares no ``class cls : ... {``. Kept per
+    class and text: every plugin of a family asks its bases' (nav2's costmap layers
+    share ``CostmapLayer`` and ``Layer``)."""
     head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
                       + r"\s*(?:final\s*)?:(?!:)([^{;]*)\{")
-    for text in texts:
-        match = head.search(text) if cls in text else None  # (most texts name it nowhere)
-        if match:
-            out = []
-            listed = match.group(1)
-            for _ in range(MAX_BASE_DEPTH):  # template arguments, innermost first
-                listed = re.sub(r"<[^<>]*>", "", listed)
-            for part in listed.split(","):
-                words = [w for w in part.split() if w not in _ACCESS]
-                if words:
-                    out.append(words[-1])
-            return out
-    return []
+    match = head.search(text)
+    if match is None:
+        return None
+    out = []
+    listed = match.group(1)
+    for _ in range(MAX_BASE_DEPTH):  # template arguments, innermost first
+        listed = re.sub(r"<[^<>]*>", "", listed)
+    for part in listed.split(","):
+        words = [w for w in part.split() if w not in _ACCESS]
+        if words:
+            out.append(words[-1])
+    return tuple(out)
 
 
 # the head of a definition in a class body, up to its ``{``: ``void f(int x) const override``
@@ -320,34 +331,50 @@ MAX_CLASS_BODY = 200_000  # characters of a class body read for its inline metho
 def _inline_methods(cls: str, texts: list[str]) -> set[str]:
     """The methods a class defines in its body (``void onInit() override { ... }``), from
     the first declaration of it in ``texts`` that has a body."""
+    for text in texts:
+        found = _body_methods(cls, text)
+        if found is not None:
+            return set(found)
+    return set()
+
+
+# what changes the reading of a class body (``_body_methods``): braces, the end of a
+# declaration and an access label's colon
+_BODY_MARK = re.compile(r"[{};:]")
+
+
+@functools.lru_cache(maxsize=4096)
+def _body_methods(cls: str, text: str) -> frozenset[str] | None:
+    """``_inline_methods`` of one text: None when it has no declaration of ``cls`` with
+    a body. Kept per class and text (a family's plugins share their bases), and read
+    from brace to brace: only the marks of ``_BODY_MARK`` change what is read."""
     head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
                       + r"\b[^;{]*\{")
-    for text in texts:
-        match = head.search(text)
-        if match is None:
-            continue
-        names: set[str] = set()
-        depth, start = 1, match.end()
-        end = min(len(text), match.end() + MAX_CLASS_BODY)
-        for index in range(match.end(), end):
-            char = text[index]
-            if char == "{":
-                if depth == 1:
-                    found = _METHOD_HEAD.search(text[start:index])
-                    if found:
-                        names.add(found.group(1))
-                depth += 1
-            elif char == "}":
-                depth -= 1
-                if depth == 0:
-                    break
-                if depth == 1:
-                    start = index + 1
-            elif char in ";:" and depth == 1 and text[index:index + 2] != "::" and (
-                    text[index - 1:index + 1] != "::"):
-                start = index + 1  # a declaration ends, or an access label
-        return names
-    return set()
+    match = head.search(text)
+    if match is None:
+        return None
+    names: set[str] = set()
+    depth, start = 1, match.end()
+    end = min(len(text), match.end() + MAX_CLASS_BODY)
+    for mark in _BODY_MARK.finditer(text, match.end(), end):
+        index = mark.start()
+        char = text[index]
+        if char == "{":
+            if depth == 1:
+                found = _METHOD_HEAD.search(text[start:index])
+                if found:
+                    names.add(found.group(1))
+            depth += 1
+        elif char == "}":
+            depth -= 1
+            if depth == 0:
+                break
+            if depth == 1:
+                start = index + 1
+        elif char in ";:" and depth == 1 and text[index:index + 2] != "::" and (
+                text[index - 1:index + 1] != "::"):
+            start = index + 1  # a declaration ends, or an access label
+    return frozenset(names)
 
 
 def _called(cls: str, method: str, texts: Iterable[str]) -> bool:

@@ -44,6 +44,7 @@ from .. import NODELET_LOAD, this_run
 from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
 from . import compile_commands as commands
 from .conditions import fewest
+from .cursors import child_spellings, namespace_blocks
 from .headers import FALLBACK, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
@@ -2115,9 +2116,8 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
             break
     assert tu is not None
     setup.unit_missing = setup.stood_in(
-        (os.path.abspath(inclusion.include.name), workspace.location(
-            os.path.abspath(inclusion.location.file.name), inclusion.location.line,
-            inclusion.location.column))
+        (os.path.abspath(inclusion.include.name), functools.partial(
+            _included_at, workspace, inclusion.location))
         for inclusion in tu.get_includes() if inclusion.location.file is not None)
     wanted = _unincluded_messages(tu, setup, source)
     if wanted:
@@ -2127,6 +2127,12 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
             tu, args = again, more
     return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned,
                        wrappers)
+
+
+def _included_at(workspace: Workspace, where: SourceLocation) -> Location:
+    """Where an ``#include`` is, as a diagnostic says it (asked only of the few
+    inclusions ``IncludeSetup.stood_in`` reports)."""
+    return workspace.location(os.path.abspath(where.file.name), where.line, where.column)
 
 
 # an error naming a namespace clang does not know, or a name missing from one (a ROS 2
@@ -2166,11 +2172,11 @@ def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
     headers: list[str] = []
     for name in sorted(files):
         text = source.get(name)
-        for match in _QUALIFIED.finditer(text or b""):
-            if match.group(1) not in wanted:
+        for outer, inner in _qualified_in(text or b""):
+            if outer not in wanted:
                 continue
-            space = match.group(1).decode()
-            written = match.group(2).decode()
+            space = outer.decode()
+            written = inner.decode()
             base = next((written[: -len(s)] for s in _POINTER_SUFFIXES
                          if written.endswith(s) and len(written) > len(s)), written)
             header = f"{space}/{base}.h"
@@ -2180,15 +2186,27 @@ def _unincluded_messages(tu: TranslationUnit, setup: IncludeSetup,
         # WebotsNode.hpp holds an ``rclcpp::Client<rcl_interfaces::srv::SetParameters>``
         # with no include of its own; the member's type was an error and the node class
         # invalid (``no member named 'srv' in namespace 'rcl_interfaces'``)
-        for match in _QUALIFIED_ROS2.finditer(text or b""):
-            if match.group(1) not in wanted:
+        for outer, kind, written_name in _qualified_ros2_in(text or b""):
+            if outer not in wanted:
                 continue
-            space = match.group(1).decode()
-            header = ros2_interfaces.header(space, match.group(2).decode(),
-                                            match.group(3).decode())
+            space = outer.decode()
+            header = ros2_interfaces.header(space, kind.decode(), written_name.decode())
             if header not in headers and setup.message_header(header):
                 headers.append(header)
     return headers
+
+
+@functools.lru_cache(maxsize=256)
+def _qualified_in(text: bytes) -> list[tuple[bytes, bytes]]:
+    """Every ``a::b`` of ``text`` (``_QUALIFIED``), in order: each header with errors is
+    read by every unit that includes it."""
+    return _QUALIFIED.findall(text)
+
+
+@functools.lru_cache(maxsize=256)
+def _qualified_ros2_in(text: bytes) -> list[tuple[bytes, bytes, bytes]]:
+    """Every ``pkg::msg::Name`` of ``text`` (``_QUALIFIED_ROS2``), in order."""
+    return _QUALIFIED_ROS2.findall(text)
 
 
 def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],
@@ -2281,18 +2299,16 @@ def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
     kept: dict[str, frozenset[str]] | None = getattr(tu, "_haros_declared", None)
     found: dict[str, frozenset[str]] = {} if kept is None else kept
     tu._haros_declared = found
-    blocks: dict[str, list[Cursor]] = {}
+    blocks: dict[str | None, list[Cursor]] = {}
 
     def declared(scope: str) -> frozenset[str]:
         if scope in found:
             return found[scope]
         if not blocks:  # the unit's top-level namespaces, one visit
             blocks[""] = []
-            for block in tu.cursor.get_children():
-                if block.kind == CursorKind.NAMESPACE:
-                    blocks.setdefault(block.spelling, []).append(block)
-        found[scope] = frozenset(child.spelling for block in blocks.get(scope, ())
-                                 for child in block.get_children())
+            blocks.update(namespace_blocks(tu.cursor))
+        found[scope] = frozenset(name for block in blocks.get(scope, ())
+                                 for name in child_spellings(block) if name is not None)
         return found[scope]
 
     return declared

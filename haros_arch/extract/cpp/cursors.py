@@ -46,8 +46,8 @@ from clang.cindex import (
 
 from ...processes import held_signals
 
-__all__ = ["Node", "by_file", "children_in", "line_of", "overloads", "release", "root",
-           "visit_children"]
+__all__ = ["Node", "by_file", "child_spellings", "children_in", "line_of",
+           "namespace_blocks", "overloads", "release", "root", "visit_children"]
 
 _VISIT = callbacks["cursor_visit"]
 Value = TypeVar("Value")
@@ -350,6 +350,39 @@ def children_in(parent: Cursor, wanted: Callable[[str], bool]) -> list[Cursor]:
     made = parent._unit.made
     asked[wanted] = nodes = [made(raw) for raw in found]
     return list(nodes)
+
+
+def namespace_blocks(unit: Cursor) -> dict[str | None, list[Cursor]]:
+    """The unit's top-level ``namespace`` blocks by name, in order: one visit of its
+    children that makes a cursor only for those (most are declarations and
+    preprocessing entities of its headers)."""
+    raw = _raw()
+    namespace = CursorKind.NAMESPACE.value
+    tu = unit._tu
+    blocks: dict[str | None, list[Cursor]] = {}
+
+    def visit(child: Cursor, _parent: Cursor, _data: object) -> int:
+        if child._kind_id == namespace:
+            child._tu = tu
+            blocks.setdefault(raw.spelled(child), []).append(child)
+        return 1  # CXChildVisit_Continue
+
+    visit_children(unit, visit)
+    return blocks
+
+
+def child_spellings(parent: Cursor) -> list[str | None]:
+    """The spellings of ``parent``'s children, in order (what ``child.spelling`` gives
+    for each), with no cursor kept."""
+    raw = _raw()
+    found: list[str | None] = []
+
+    def visit(child: Cursor, _parent: Cursor, _data: object) -> int:
+        found.append(raw.spelled(child))
+        return 1  # CXChildVisit_Continue
+
+    visit_children(parent, visit)
+    return found
 
 
 def overloads(cursor: Cursor) -> list[Cursor | None]:

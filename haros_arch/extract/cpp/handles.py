@@ -22,7 +22,7 @@ from .call_sites import (
     uses_parameter,
     value_text,
 )
-from .cursors import MAX_OVERLOADS, children_in, from_standin, overloads
+from .cursors import MAX_OVERLOADS, Node, children_in, from_standin, overloads
 from .expressions import qualified_name
 from .members import MemberWrites
 from .values import (
@@ -85,7 +85,18 @@ def record_class(cursor: Cursor) -> Cursor | None:
 
 
 def is_ros2_node(decl: Cursor | None, depth: int = 0) -> bool:
-    """True for rclcpp::Node, LifecycleNode and the classes derived from them."""
+    """True for rclcpp::Node, LifecycleNode and the classes derived from them. A node's
+    (``cursors.Node``) answer is kept with it: every handle expression of a unit asks of
+    its class."""
+    if depth == 0 and isinstance(decl, Node):
+        kept: bool | None = decl.__dict__.get("_ros2_node")
+        if kept is None:
+            kept = decl.__dict__["_ros2_node"] = _is_ros2_node(decl, 0)
+        return kept
+    return _is_ros2_node(decl, depth)
+
+
+def _is_ros2_node(decl: Cursor | None, depth: int) -> bool:
     if decl is None or depth > 8:
         return False
     if qualified_name(decl) in api.RCLCPP_NODES:
@@ -95,6 +106,8 @@ def is_ros2_node(decl: Cursor | None, depth: int = 0) -> bool:
     # lists no base of its own where the template is only instantiated: its bases are
     # the template's (perception_pcl's pcl_ros::PCLNode<T> derives from rclcpp::Node)
     template = conf.lib.clang_getSpecializedCursorTemplate(decl)
+    if template is not None and isinstance(decl, Node):
+        template = decl._unit.node(template)  # (its children asked of libclang once)
     for each in (definition, template):
         if each is None:
             continue

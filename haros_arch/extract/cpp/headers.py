@@ -53,7 +53,7 @@ import re
 import shutil
 import tempfile
 import threading
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
@@ -1167,11 +1167,13 @@ class IncludeSetup:
                 return None
         return self.written.get(path)
 
-    def stood_in(self, includes: Iterable[tuple[str, Location]]) -> list[Diagnostic]:
+    def stood_in(self, includes: Iterable[tuple[str, Callable[[], Location]]]
+                 ) -> list[Diagnostic]:
         """``CPP_INCLUDE_MISSING`` of each header a parse included (``includes``: the
-        file and where it is included, in order) that is an empty stand-in a parse made
-        (``repair``), this process's or another's: each unit that includes it says so
-        where it includes it, whichever unit's parse made it first."""
+        file and a function that gives where it is included, in order) that is an
+        empty stand-in a parse made (``repair``), this process's or another's: each unit
+        that includes it says so where it includes it, whichever unit's parse made it
+        first."""
         found: list[Diagnostic] = []
         seen: set[str] = set()
         roots = (self.generated + os.sep, self.overflow + os.sep)
@@ -1189,7 +1191,7 @@ class IncludeSetup:
                     continue
             if text.startswith(_EMPTY_MARK):
                 header = text[len(_EMPTY_MARK):].partition(_EMPTY_END)[0]
-                found.append(diag.make("CPP_INCLUDE_MISSING", where, header=header))
+                found.append(diag.make("CPP_INCLUDE_MISSING", where(), header=header))
         return found
 
     def repair(self, messages: list[tuple[str, Location]]) -> bool:

@@ -561,6 +561,9 @@ class _Name:
     # the argument positions of a declared template that the code gives values
     # (``_VALUE_ARGUMENT``): non-type parameters there
     value_arguments: set[int] = field(default_factory=set)
+    # the files (``Names._texts``, by id) whose uses of it were read for them: a text
+    # read once gives nothing more (``Names._spread_values``)
+    values_read: set[int] = field(default_factory=set)
 
 
 _MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at the macro
@@ -908,8 +911,12 @@ class Names:
                 continue
             # a number, true / false, sizeof: a name in capitals may be a type
             # parameter here (``vendor::Foo<T>``); one an error says is a value counts
+            texts = [text for text in self._texts if id(text) not in node.values_read]
+            if not texts:
+                continue
+            node.values_read.update(id(text) for text in texts)
             pattern = re.compile(rb"(?<![\w.])" + re.escape(name.encode()) + rb"\s*<")
-            for text in self._texts:
+            for text in texts:
                 for found in pattern.finditer(text):
                     for index, offset in _template_arguments(text, found.end()):
                         if index not in node.value_arguments and _VALUE_LITERAL.match(
