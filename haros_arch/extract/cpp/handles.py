@@ -10,6 +10,7 @@ namespace, ``""``, unless it comes from ``create_sub_node("ns")``.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from typing import Any
 
 from clang.cindex import Cursor, CursorKind, TypeKind, conf
@@ -155,6 +156,9 @@ class Namespaces:
         self.root = False
         self._asked = 0  # ``value_namespace`` questions open
         self.unit_root: Any = None  # the unit's root node (``cursors.root``), once known
+        # whether a file is the workspace's, as the visitor asks (the same function: the
+        # children it kept of a node are those ``children_in`` keeps for it)
+        self.owned: Callable[[str], bool] | None = None
 
     def of_call(self, call: Cursor, callee: Cursor, scope: Scope) -> Parts:
         """The namespace of the handle or node a member call is made on."""
@@ -369,11 +373,24 @@ class Namespaces:
             def in_main(name: str) -> bool:
                 return name == main
 
-            stack = children_in(self.unit_root, in_main)
+            owned = self.owned
+            if owned is not None and owned(main):
+                # the visitor's children in the workspace's files (kept with each
+                # node), those in the main file of them: no second visit of the
+                # thousands of children of the unit's headers
+                def of_main(parent: Any) -> list[Cursor]:
+                    return [child for child in children_in(parent, owned)
+                            if (where := child.location.file) is not None
+                            and where.name == main]
+            else:
+                def of_main(parent: Any) -> list[Cursor]:
+                    return children_in(parent, in_main)
+
+            stack = of_main(self.unit_root)
             while stack:
                 node = stack.pop()
                 if node.kind == CursorKind.NAMESPACE:
-                    stack.extend(children_in(node, in_main))
+                    stack.extend(of_main(node))
                 elif node.kind in _FUNCTIONS and node.is_definition():
                     self._global_writes(node)
         return self._globals if self._globals is not None else {}

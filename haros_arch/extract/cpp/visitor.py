@@ -434,6 +434,7 @@ class CallFinder:
 
     def run(self) -> None:
         self._root = self.namespaces.unit_root = root(self.tu)
+        self.namespaces.owned = self.owned
         # (what the unit's own code cannot reach by name is left to the units that do)
         every = list(self._definitions(self._root, top=True))
         self.functions = reachable(every, self.tu.spelling, self.source, self.globals,
