@@ -147,6 +147,23 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
                 ros2: bool | None = None) -> tuple[Site, ...]:
     pattern = site_pattern(extra, ros2)
     found = []
+    for number, shown, code, named in _code_lines(text):
+        if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
+               and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
+               and not _constructor_declared(code, m, extra)
+               for m in pattern.finditer(code)):
+            found.append(Site(number, shown.strip()[:80]))
+    return tuple(found)
+
+
+@functools.lru_cache(maxsize=256)
+def _code_lines(text: str) -> tuple[tuple[int, str, str, int | None], ...]:
+    """The lines of ``text`` that may hold a call site, whatever the unit's wrappers
+    (``_call_sites``: each unit of a package asks of the same headers with its own):
+    (number, the line without its comments, that with its literals masked, where a free
+    function's name it defines starts); not a directive's, nor one that defines or
+    instantiates a function of the API's name."""
+    found = []
     in_comment = False
     for number, line in enumerate(text.splitlines(), 1):
         if in_comment:
@@ -168,12 +185,8 @@ def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
                 _INSTANTIATION.match(code)):
             continue
         declared = _FREE_DEFINITION.match(code)
-        named = declared.start("name") if declared is not None else None
-        if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
-               and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
-               and not _constructor_declared(code, m, extra)
-               for m in pattern.finditer(code)):
-            found.append(Site(number, shown.strip()[:80]))
+        found.append((number, shown, code,
+                      declared.start("name") if declared is not None else None))
     return tuple(found)
 
 

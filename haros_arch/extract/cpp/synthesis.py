@@ -974,36 +974,14 @@ class Names:
         what it returns are kept by their API name (a declared template returns an
         object whose API calls then fail); a name after C++'s ``template`` keyword
         (``bb->template set<T>("node", node_)``) is one (``member_templates``)."""
-        skip = _KEYWORDS | _api_methods()
         for text in texts:
             if text is not None:
-                # in code only: a comment's sentence ends in ``.`` too (a sentence
-                # of OpenMower's xesc headers ended before ``size_t``), and an #include
-                # names ``.hpp``: a member ``size_t`` of the permissive class hid the
-                # type in every class derived from one (``boost::noncopyable``)
-                code = _NOT_CODE.sub(b" ", text)
-                self.members.update(
-                    n for n in (m.decode() for m in _AFTER_MEMBER.findall(code))
-                    if n and n not in skip)
-                # ``x->template get<T>()`` says itself that it names a template
-                self.member_templates.update(
-                    n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(code))
-                    if n not in skip)
-                self.taken.update(_case_literals(text))
-                for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
-                    line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
-                    name = found.group(1).decode()
-                    if name not in skip and not _DECLARING.search(line):
-                        self.members.add(name)
-                        # a member of every declared class: a name in capitals
-                        # only (``std::is_enum<T>::value`` in a static_assert is no
-                        # constant of a vendor's, and ``msg.value`` is assigned)
-                        kind = _constant_at(name, text, found.start(1), found.end(1)) if (
-                            _CONSTANT.fullmatch(name) or _C_VENDOR.fullmatch(name)) else None
-                        if kind is not None:
-                            self.constants.add(name)
-                            if kind == "flag":
-                                self.flags.add(name)
+                members, templates, taken, constants, flags = _members_of(text)
+                self.members |= members
+                self.member_templates |= templates
+                self.taken |= taken
+                self.constants |= constants
+                self.flags |= flags
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
         if _BODY_EXPECTED.match(message):
@@ -1618,6 +1596,46 @@ class Names:
 
     def __bool__(self) -> bool:
         return bool(self.count or self.members or self.fields or self.types)
+
+
+@functools.lru_cache(maxsize=512)
+def _members_of(text: bytes) -> tuple[frozenset[str], frozenset[str], frozenset[int],
+                                      frozenset[str], frozenset[str]]:
+    """What ``Names.read_members`` learns of one file: the members, the member
+    templates, the case labels' integers, the constants and the flags it names. Kept
+    per text: every unit of a package reads the same headers."""
+    skip = _KEYWORDS | _api_methods()
+    members: set[str] = set()
+    templates: set[str] = set()
+    constants: set[str] = set()
+    flags: set[str] = set()
+    # in code only: a comment's sentence ends in ``.`` too (a sentence of OpenMower's
+    # xesc headers ended before ``size_t``), and an #include names ``.hpp``: a member
+    # ``size_t`` of the permissive class hid the type in every class derived from one
+    # (``boost::noncopyable``)
+    code = _NOT_CODE.sub(b" ", text)
+    members.update(n for n in (m.decode() for m in _AFTER_MEMBER.findall(code))
+                   if n and n not in skip)
+    # ``x->template get<T>()`` says itself that it names a template
+    templates.update(n for n in (m.decode() for m in _TEMPLATE_MEMBER.findall(code))
+                     if n not in skip)
+    taken = _case_literals(text)
+    for found in _SCOPED_VALUE.finditer(text):  # not ``using A = ns::A;``
+        line = text[text.rfind(b"\n", 0, found.start()) + 1:found.start()]
+        name = found.group(1).decode()
+        if name not in skip and not _DECLARING.search(line):
+            members.add(name)
+            # a member of every declared class: a name in capitals only
+            # (``std::is_enum<T>::value`` in a static_assert is no constant of a
+            # vendor's, and ``msg.value`` is assigned)
+            kind = _constant_at(name, text, found.start(1), found.end(1)) if (
+                _CONSTANT.fullmatch(name) or _C_VENDOR.fullmatch(name)) else None
+            if kind is not None:
+                constants.add(name)
+                if kind == "flag":
+                    flags.add(name)
+    return (frozenset(members), frozenset(templates), frozenset(taken),
+            frozenset(constants), frozenset(flags))
 
 
 def _merge(into: _Name, other: _Name) -> None:
