@@ -487,6 +487,23 @@ class _Type(Type):
         return str(Type.spelling.fget(self))
 
     @cached
+    def _argument_types(self) -> tuple[Type, ...]:
+        lib = conf.lib
+        found = []
+        for index in range(lib.clang_getNumArgTypes(self)):
+            each = lib.clang_getArgType(self, index)
+            if each.kind == TypeKind.INVALID:
+                break  # (where the binding's container stops too)
+            found.append(each)
+        return tuple(found)
+
+    def argument_types(self) -> tuple[Type, ...]:
+        """The parameter types the binding's container gives, in order, asked once (the
+        binding makes a new container class at every call)."""
+        assert self.kind == TypeKind.FUNCTIONPROTO
+        return self._argument_types
+
+    @cached
     def _canonical(self) -> _Type:
         return _type(Type.get_canonical(self), self._unit)
 

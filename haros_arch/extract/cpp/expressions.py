@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
+from .cursors import Node
+
 # expression kinds that only wrap their operand (implicit conversions, casts, parens, ...)
 WRAPPERS = frozenset({
     CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
@@ -21,7 +23,17 @@ _SCOPES = frozenset({
 
 
 def qualified_name(cursor: Cursor | None) -> str:
-    """``ros::NodeHandle`` for the NodeHandle class declaration, and so on."""
+    """``ros::NodeHandle`` for the NodeHandle class declaration, and so on (a unit's
+    node keeps its own: the analyses ask of the same classes and their parents)."""
+    if isinstance(cursor, Node):
+        kept: str | None = cursor.__dict__.get("_qualified")
+        if kept is None:
+            kept = cursor.__dict__["_qualified"] = _qualified(cursor)
+        return kept
+    return _qualified(cursor)
+
+
+def _qualified(cursor: Cursor | None) -> str:
     parts: list[str] = []
     while cursor is not None and cursor.kind in _SCOPES:
         if cursor.spelling:
