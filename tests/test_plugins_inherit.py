@@ -252,3 +252,37 @@ def test_a_factory_registered_plugin_is_its_registered_class_for_redefinitions(
                 plugin_class="fac::FactoryTemplate<fac::ImuPlugin>")
     # before: [] (the chain was the factory's, FactoryTemplate and Factory)
     assert overridden(node, Workspace(root=str(root))) == [("fac/src/plugin.cpp", 3, 5)]
+
+
+def test_the_methods_a_class_body_defines_are_its_own_inline_definitions() -> None:
+    """A class's inline methods (read to tell a base method its derived class redefines)
+    are the functions its body defines at its own level: not one it only declares, not
+    a nested class's, not a static constant; the first text that declares the class
+    with a body is read, and the same class asked again of the same text (another
+    plugin of the family) gives the same."""
+    from haros_arch.plugins.inherit import _inline_methods
+
+    header = """
+        namespace demo {
+        class Base { public: virtual void onInitialize(); };
+        class Layer : public Base
+        {
+        public:
+          ~Layer() override = default;
+          void onInitialize() override { auto n = ns::make(); if (n) { count_ = 1; } }
+          void reset();
+          int count() const { return count_; }
+          struct Inner { void hidden() {} };
+          std::map<std::string, int> table() const noexcept { return {{"a", 1}}; }
+        private:
+          static constexpr int kMax = 3;
+          int count_;
+        };
+        }
+        """
+    found = _inline_methods("Layer", ["class Unrelated {};", header])
+    assert {"onInitialize", "count", "table"} <= found
+    assert not found & {"reset", "hidden", "kMax", "Inner", "count_"}
+    assert _inline_methods("Layer", [header]) == found
+    assert _inline_methods("Inner", [header]) == {"hidden"}
+    assert _inline_methods("Missing", [header]) == set()
