@@ -286,3 +286,65 @@ def test_the_methods_a_class_body_defines_are_its_own_inline_definitions() -> No
     assert _inline_methods("Layer", [header]) == found
     assert _inline_methods("Inner", [header]) == {"hidden"}
     assert _inline_methods("Missing", [header]) == set()
+
+
+def test_a_constructor_initialising_its_base_redefines_no_base_method(write_tree) -> None:
+    """A plugin class whose inline constructor initialises its base in its list
+    (``Camera() : Sensor("camera"), rate_{30} {}``) defines a constructor, not a method
+    named after the base: the base's own constructor, out of line, still runs (its
+    publisher is the plugin's), while the base method the class redefines does not."""
+    from haros_arch.model.source import Node
+    from haros_arch.plugins.inherit import overridden
+    from haros_arch.workspace import Workspace
+
+    root = write_tree({
+        "cams/package.xml": package_xml("cams", "catkin"),
+        "cams/include/cams/sensor.h": """
+            #include <ros/ros.h>
+            namespace cams {
+            class Sensor {
+            public:
+              explicit Sensor(const std::string& name);
+              virtual void start();
+            protected:
+              ros::Publisher status_;
+            };
+            }
+            """,
+        "cams/src/sensor.cpp": """
+            #include "cams/sensor.h"
+            namespace cams {
+            Sensor::Sensor(const std::string& name) {
+              ros::NodeHandle nh("~");
+              status_ = nh.advertise<std_msgs::String>(name + "/status", 1);
+            }
+            void Sensor::start() {
+              ros::NodeHandle nh("~");
+              nh.advertise<std_msgs::String>("started", 1);
+            }
+            }
+            """,
+        "cams/include/cams/camera.h": """
+            #include "cams/sensor.h"
+            namespace cams {
+            class Camera : public Sensor {
+            public:
+              Camera() : Sensor("camera"), rate_{30} {}
+              void start() override { rate_ = 10; }
+            private:
+              int rate_;
+            };
+            }
+            """,
+        "cams/src/camera.cpp": """
+            #include "cams/camera.h"
+            #include <pluginlib/class_list_macros.h>
+            PLUGINLIB_EXPORT_CLASS(cams::Camera, cams::Sensor)
+            """,
+    })
+    node = Node("cams", "cams::Camera", "plugin",
+                sources=["cams/src/camera.cpp", "cams/src/sensor.cpp"],
+                plugin_class="cams::Camera")
+    # before: Sensor::Sensor's span too (the constructor's list read as a method
+    # ``Sensor`` of Camera), and the plugin lost its status publisher
+    assert overridden(node, Workspace(root=str(root))) == [("cams/src/sensor.cpp", 7, 12)]

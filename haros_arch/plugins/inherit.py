@@ -356,14 +356,23 @@ def _body_methods(cls: str, text: str) -> frozenset[str] | None:
     names: set[str] = set()
     depth, start = 1, match.end()
     end = min(len(text), match.end() + MAX_CLASS_BODY)
+    # in a constructor's initialiser list (``Layer() : Base(), count_{0} {}``): its
+    # name is read at the colon, and a brace there is a member's initialiser until
+    # the one that opens the body (after a ``)``, a ``}`` or nothing)
+    initialising = False
     for mark in _BODY_MARK.finditer(text, match.end(), end):
         index = mark.start()
         char = text[index]
         if char == "{":
             if depth == 1:
-                found = _METHOD_HEAD.search(text[start:index])
-                if found:
-                    names.add(found.group(1))
+                before = text[start:index]
+                if initialising:
+                    written = before.rstrip()
+                    initialising = bool(written) and written[-1] not in ")}"
+                else:
+                    found = _METHOD_HEAD.search(before)
+                    if found:
+                        names.add(found.group(1))
             depth += 1
         elif char == "}":
             depth -= 1
@@ -373,6 +382,13 @@ def _body_methods(cls: str, text: str) -> frozenset[str] | None:
                 start = index + 1
         elif char in ";:" and depth == 1 and text[index:index + 2] != "::" and (
                 text[index - 1:index + 1] != "::"):
+            if char == ":" and not initialising:
+                found = _METHOD_HEAD.search(text[start:index])
+                if found and found.group(1) == cls:  # the constructor's list begins
+                    names.add(cls)
+                    initialising = True
+            elif char == ";":
+                initialising = False
             start = index + 1  # a declaration ends, or an access label
     return frozenset(names)
 
