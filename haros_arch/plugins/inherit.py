@@ -393,13 +393,20 @@ def _body_methods(cls: str, text: str) -> frozenset[str] | None:
     return frozenset(names)
 
 
+@functools.lru_cache(maxsize=4096)
+def _call_pattern(cls: str, method: str) -> re.Pattern[str]:
+    """``cls::method(`` (``_called``), compiled once per pair: a run asks more pairs than
+    the ``re`` module keeps compiled."""
+    return re.compile(r"\b" + re.escape(cls) + r"\s*::\s*" + re.escape(method) + r"\s*\(")
+
+
 def _called(cls: str, method: str, texts: Iterable[str]) -> bool:
     """Whether an indented line of the texts calls ``cls::method(``. Each place the
     class's name is written is found by a plain text search, then the call is matched
     there and its line's indentation looked at: a pattern anchored at every line's start
     costs a backtracking scan of each line, and one that starts with ``\\b`` is tried at
     every character."""
-    call = re.compile(r"\b" + re.escape(cls) + r"\s*::\s*" + re.escape(method) + r"\s*\(")
+    call = _call_pattern(cls, method)
     for text in texts:
         if method not in text:
             continue
