@@ -348,9 +348,7 @@ def _body_methods(cls: str, text: str) -> frozenset[str] | None:
     """``_inline_methods`` of one text: None when it has no declaration of ``cls`` with
     a body. Kept per class and text (a family's plugins share their bases), and read
     from brace to brace: only the marks of ``_BODY_MARK`` change what is read."""
-    head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
-                      + r"\b[^;{]*\{")
-    match = head.search(text)
+    match = _class_head(cls).search(text)
     if match is None:
         return None
     names: set[str] = set()

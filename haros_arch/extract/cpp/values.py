@@ -19,7 +19,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from clang.cindex import Cursor, CursorKind, TypeKind
+from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind
 
 from . import api, formats
 from .cursors import _Place
@@ -598,6 +598,15 @@ class Scope:
             self._members.setdefault(chain, []).append(
                 (write.at.extent.start.offset, value))
 
+    def holds(self, place: SourceLocation) -> bool:
+        """Whether ``place`` is in this scope's body: its file, between its ends."""
+        if self.body is None:
+            return False
+        body = self.body.extent
+        return (body.start.file is not None and place.file is not None
+                and body.start.file.name == place.file.name
+                and body.start.offset <= place.offset <= body.end.offset)
+
     def assigned(self, decl: Cursor, at: Cursor) -> Cursor | None:
         """What this body last assigned to member ``decl`` before ``at`` (``topic_ =
         topic; sub_ = nh.subscribe(topic_, ...)``: base_local_planner's
@@ -681,11 +690,10 @@ class Scope:
         placed = self._placed.get(key_of(decl))
         if not placed or len(placed) < 2 or self.body is None:
             return None
-        where = at.extent.start.offset
-        body, read = self.body.extent, at.extent
-        if not (body.start.offset <= where <= body.end.offset and body.start.file
-                and read.start.file and body.start.file.name == read.start.file.name):
+        if not self.holds(at.extent.start):
             return None  # read elsewhere (a value walked back from another function)
+        where = at.extent.start.offset
+        body = self.body.extent
         before = [w for w in placed if w[1] <= where]
         if not before:
             return None
@@ -976,10 +984,8 @@ class Scope:
         calls = self._passings.get(key, [])
         if at is None or len(calls) < 2 or self.body is None:
             return found
-        body, read = self.body.extent, at.extent
-        if not (body.start.file and read.start.file
-                and body.start.file.name == read.start.file.name
-                and body.start.offset <= read.start.offset <= body.end.offset):
+        read = at.extent
+        if not self.holds(read.start):
             return found
         before = [c for c in calls if c[0].extent.end.offset <= read.start.offset]
         return max(before, key=lambda c: c[0].extent.end.offset) if before else found

@@ -1428,12 +1428,8 @@ def _of_local(expr: Cursor, scope: Scope) -> bool:
     base = strip(inner[0]) if inner else None
     decl = base.referenced if base is not None and base.kind == CursorKind.DECL_REF_EXPR \
         else None
-    if decl is None or decl.kind != CursorKind.VAR_DECL:
-        return False
-    body, at = scope.body.extent, decl.extent.start
-    return at.file is not None and body.start.file is not None and (
-        at.file.name == body.start.file.name
-        and body.start.offset <= at.offset <= body.end.offset)
+    return decl is not None and decl.kind == CursorKind.VAR_DECL and scope.holds(
+        decl.extent.start)
 
 
 def _member_shape(expr: Cursor, function: Cursor, scope: Scope | None,
