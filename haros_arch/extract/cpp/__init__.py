@@ -1115,7 +1115,7 @@ def _units(texts: dict[str, str], ros2: dict[str, bool], setup: IncludeSetup,
     todo = [path for path in texts if path not in done and path not in digests]
     tasks = [(path, texts[path], ros2[path]) for path in todo]
     workers = min(len(todo), jobs or os.cpu_count() or 1)
-    parsed: list[tuple[CppResult, list[str], dict[str, Any], str]]
+    parsed: list[tuple[CppResult, list[str], str, str]]
     if todo:
         setup.materialise()
     for path in todo:  # the PCHs (one per C++ standard), built here, shared by workers
@@ -1172,7 +1172,7 @@ def _kept_result(store: cache.Cache, key: str) -> tuple[CppResult, str] | None:
 
 
 def _store(store: cache.Cache | None, key: str,
-           outcome: tuple[CppResult, list[str], dict[str, Any], str]) -> None:
+           outcome: tuple[CppResult, list[str], str, str]) -> None:
     """Keep a parsed unit's result in the cache (not one that must not be kept: no
     headers)."""
     _unit, headers, data, digest = outcome
@@ -1189,7 +1189,7 @@ def _start_worker(setup: IncludeSetup) -> None:
 
 
 def _worker_unit(task: tuple[str, str, bool]
-                 ) -> tuple[CppResult, list[str], dict[str, Any], str]:
+                 ) -> tuple[CppResult, list[str], str, str]:
     assert _WORKER_SETUP is not None
     return _unit_and_data(*task, _WORKER_SETUP)
 
@@ -1203,13 +1203,14 @@ YOUNG_THRESHOLD = 1_000_000
 
 
 def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
-                   ) -> tuple[CppResult, list[str], dict[str, Any], str]:
-    """``_translation_unit`` with the result as the cache keeps it and its digest, made
-    where the unit was parsed (in a worker: not in the serial part of the run)."""
+                   ) -> tuple[CppResult, list[str], str, str]:
+    """``_translation_unit`` with the result as the cache keeps it (its JSON text) and its
+    digest, made where the unit was parsed (in a worker: not in the serial part of the
+    run, which takes a text back at the cost of a string, not of a tree of objects)."""
     with held_back(YOUNG_THRESHOLD):
         unit, headers = _translation_unit(path, text, ros2, setup)
     data = _result_data(unit)
-    return unit, headers, data, cache.digest(data)
+    return unit, headers, json.dumps(data), cache.digest(data)
 
 
 def _result_data(result: CppResult) -> dict[str, Any]:

@@ -22,8 +22,10 @@ than silently empty.
 
 from __future__ import annotations
 
+import functools
 import os
 import re
+from collections.abc import Container
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -138,7 +140,7 @@ def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
 _DEFINED_TEST = re.compile(r"\bdefined\s*(?:\(\s*\w+\s*\)|\w+)")
 
 
-def skipped_calls(text: str, macros: dict[str, tuple[str, int]],
+def skipped_calls(text: str, macros: Container[str],
                   valued: frozenset[str] = frozenset()) -> list[tuple[int, str, str]]:
     """(line, macro, call text) of the first ROS API call of each conditional block of
     ``text`` whose condition names one of ``macros``, or tests the value of one of
@@ -173,6 +175,14 @@ def skipped_calls(text: str, macros: dict[str, tuple[str, int]],
     return found
 
 
+@functools.lru_cache(maxsize=512)
+def _skipped(text: str, macros: frozenset[str], valued: frozenset[str]
+             ) -> tuple[tuple[int, str, str], ...]:
+    """``skipped_calls`` of a source, asked once per text and macros: the plugin classes
+    of one library are nodes with the same sources."""
+    return tuple(skipped_calls(text, macros, valued))
+
+
 def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
                       workspace: Workspace) -> list[Diagnostic]:
     """``CPP_BUILD_MACRO`` at the first ROS call of each block of the node's sources that
@@ -189,7 +199,7 @@ def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
         text, _ = read_text(source, workspace.location(source))
         if not text:
             continue
-        for line, macro, call in skipped_calls(text, left, frozenset(valued)):
+        for line, macro, call in _skipped(text, frozenset(left), frozenset(valued)):
             where, at = left.get(macro) or valued[macro]
             named = macro if macro in left else f"{macro} (its value not known)"
             found.append(diag.make(
