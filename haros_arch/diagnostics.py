@@ -808,6 +808,16 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node} is not in the workspace; its interface is unknown",
         "A launch file starts an executable that no workspace package builds; the "
         "instance is kept without publishers, subscribers or other links."),
+    "NODE_BUILT_BY_OPTION": Entry(
+        "warning", "node type {node} is built only when the CMake option {option} is "
+        "given a value other than its default {default} ({cmake}); its interface is unknown",
+        "A launch file starts an executable that its package's CMakeLists.txt makes only "
+        "in a branch an option keeps from running while the option has its default "
+        "(cartographer_ros' cartographer_grpc_node under if(${BUILD_GRPC}), off by "
+        "default): a default build has no such program, and the launch file fails there; "
+        "a build with the option (-DBUILD_GRPC=ON) has it. Not a missing node: no "
+        "launch-missing-reference. The instance is kept without publishers, "
+        "subscribers or other links."),
     "NODE_EXECUTABLE_BLANK": Entry(
         "warning", "a node of package {package} is given a blank executable ({given!r}): "
         "no program of the package has that name, so the launch cannot start it; its "

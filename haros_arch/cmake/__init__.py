@@ -18,6 +18,7 @@ from .. import diagnostics as diag
 from .. import plugins, pysetup
 from ..diagnostics import Diagnostic
 from ..files import kept_in, read_text
+from ..model.location import Location
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
 from ..workspace import Workspace
@@ -252,6 +253,19 @@ def absent_definitions(package: Package, workspace: Workspace) -> frozenset[str]
         interpreter, _ = _interpret(package, workspace, PackageFiles(package, workspace))
         return frozenset(interpreter.absent_definitions)
     return remembered("absent definitions", package.root, workspace, read)
+
+
+def option_gated(package: Package, workspace: Workspace
+                 ) -> dict[str, tuple[str, str, Location]]:
+    """The targets (by the first word of the command that would make them) that the
+    package's CMake files make only in a branch not taken because an option has its
+    default, each with the option, that default and where the option is declared: a
+    launch file starting one names a program the default build does not make, not one
+    missing from the workspace."""
+    if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return {}
+    interpreter, _ = _interpret(package, workspace, PackageFiles(package, workspace))
+    return dict(interpreter.option_gated)
 
 
 def _source_definitions(package: Package, workspace: Workspace

@@ -77,6 +77,7 @@ def _unset(it: Interpreter, command: Invocation, args: list[str]) -> None:
 def _option(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if args and args[0] not in it.cache:
         it.cache[args[0]] = args[2] if len(args) > 2 else "OFF"
+        it.options[args[0]] = (it.cache[args[0]], it.where(command))
 
 
 @handles("list")

@@ -170,6 +170,14 @@ class Interpreter:
         # certain, would define (sick_scan_xd's ``if(ROS_VERSION EQUAL 0)
         # add_compile_options(-DROSSIMU)`` in a ROS 2 build): known absent there
         self.absent_definitions: set[str] = set()
+        # the options (``option(NAME doc default)``) this reading gave their default, with
+        # where; and the first word of each command of a branch not taken because an
+        # option has its default (cartographer_ros' ``if (${BUILD_GRPC})
+        # google_binary(cartographer_grpc_node ...)``, off by default): the target it
+        # may make is built with the option given otherwise (``-DBUILD_GRPC=ON``), by
+        # that word: (option, its default, where the option is declared)
+        self.options: dict[str, tuple[str, Location]] = {}
+        self.option_gated: dict[str, tuple[str, str, Location]] = {}
         # variables whose value this reading may have wrong: set from something not set
         # here (``set(V ${found_by_find_package})``), or in a branch chosen by a test
         # that read such a thing (``if("${pkg_VERSION}" VERSION_GREATER 1)``, decided on
@@ -753,9 +761,11 @@ class Interpreter:
                     self.run(commands, start + 1, stop)
                     if not unsure and self._certain(head):
                         self._not_taken(commands, branches[number + 1:], marks[number + 1:])
+                    self._gated(head, commands, branches[number + 1:], marks[number + 1:])
                     break
                 if not unsure and self._certain(head):
                     self._not_taken(commands, [start], [stop])
+                self._gated(head, commands, [start], [stop])
             if paths:
                 # as the branches ran in turn, the one left (taken, or none) last; when
                 # none was taken, the variables as the last branch left them last
@@ -786,6 +796,31 @@ class Interpreter:
         for start, stop in zip(starts, stops, strict=True):
             for command in commands[start + 1:stop]:
                 self.absent_definitions.update(defined_names(command))
+
+    def _gated(self, head: Invocation, commands: list[Invocation], starts: list[int],
+               stops: list[int]) -> None:
+        """Record the first word of each command of the branches [start, stop), not
+        taken because of ``head``'s test, when that test reads an option that has its
+        default (``option_gated``)."""
+        read = [name for name in _test_names(head) if name in self.options
+                and name not in self.assigned and self.cache.get(name) == self.options[
+                    name][0]]
+        if not read:
+            return
+        option = read[0]
+        default, where = self.options[option]
+        for start, stop in zip(starts, stops, strict=True):
+            for command in commands[start + 1:stop]:
+                if command.name.lower() in _NO_TARGET:
+                    continue
+                word = command.args[0].text if command.args else ""
+                if word and "$" not in word:
+                    self.option_gated.setdefault(word, (option, default, where))
+                elif word.startswith("${PROJECT_NAME}"):  # (the usual one)
+                    named = self.get("PROJECT_NAME")
+                    if named:
+                        self.option_gated.setdefault(named + word[len("${PROJECT_NAME}"):],
+                                                     (option, default, where))
 
     def run_foreach(self, commands: list[Invocation], index: int, limit: int) -> int:
         end = self.block_end(commands, index, limit, "foreach", "endforeach")[-1]
@@ -967,6 +1002,28 @@ class Interpreter:
             self.compile_standards.pop()
             self.made_here.pop()
             self.include_directories.pop()
+
+
+# commands whose first word names no target (a variable, a list operation, a file)
+_NO_TARGET = frozenset({
+    "set", "unset", "list", "string", "file", "math", "option", "message", "install",
+    "get_filename_component", "if", "elseif", "else", "endif", "foreach", "endforeach",
+    "while", "endwhile", "function", "endfunction", "macro", "endmacro", "return",
+    "include", "find_package", "add_subdirectory", "configure_file", "cmake_parse_arguments",
+})
+_REFERENCE = re.compile(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}")
+
+
+def _test_names(head: Invocation) -> list[str]:
+    """The variables an ``if()`` / ``elseif()`` test reads: each ``${NAME}`` and each
+    bare word that is no keyword of a test."""
+    found: list[str] = []
+    for arg in head.args:
+        found.extend(_REFERENCE.findall(arg.text))
+        if arg.kind == "unquoted" and _VARIABLE_WORD.fullmatch(arg.text) and (
+                arg.text.upper() not in _TEST_WORDS):
+            found.append(arg.text)
+    return found
 
 
 def _below(path: str, root: str) -> bool:

@@ -556,6 +556,15 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # workspace
         config.diagnostics.append(diag.make("NODE_EXECUTABLE_BLANK", decl.location,
                                             package=decl.package, given=decl.executable))
+    elif node is None and plugin is None and (
+        gated := _option_gated(workspace, decl.package, decl.executable)
+    ) is not None:
+        # its package's CMake files make it only with an option given otherwise than its
+        # default (cartographer_ros' grpc launch files: ``-DBUILD_GRPC=ON``)
+        option, default, where = gated
+        config.diagnostics.append(diag.make(
+            "NODE_BUILT_BY_OPTION", decl.location, node=key, option=option, default=default,
+            cmake=f"{where.file}:{where.line}" if where.file else "its CMake files"))
     elif node is None:
         config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
                                             node=plugin or key))
@@ -570,6 +579,19 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=decl.ros_version, test=decl.is_test)
+
+
+def _option_gated(workspace: Workspace, package: str, executable: str
+                  ) -> tuple[str, str, Location] | None:
+    """The option, its default and where it is declared, when the workspace package
+    ``package``'s CMake files make a target ``executable`` only in a branch an option
+    keeps from running while it has its default (``cmake.option_gated``)."""
+    from ..cmake import option_gated
+
+    found = workspace.packages.get(package)
+    if found is None or not executable or UNKNOWN_MARK in executable:
+        return None
+    return option_gated(found, workspace).get(executable)
 
 
 def _program_file(workspace: Workspace, package: str, name: str,
