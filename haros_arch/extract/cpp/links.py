@@ -841,11 +841,15 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
     one value the node's files pass, else ``?`` where they pass none or several. A value
     passed on from a parameter of a constructor that no file of the node calls gives
     nothing (a header's delegating ``Router(name) : Router(NodeOptions(), name)`` beside
-    the ``Router(options, "mavros_router")`` that mavros_node builds)."""
+    the ``Router(options, "mavros_router")`` that mavros_node builds); nor does a value
+    passed in code the node never runs (``NodeFacts.idle``), unless every site is:
+    rtabmap_odom's delegating ``OdometryROS(options) : OdometryROS("odometry", options)``
+    beside the ``OdometryROS("rgbd_odometry", options)`` of the RGBDOdometry main builds."""
     if PLACEHOLDER not in name:
         return name
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
-    found = _expand(name, known.passed, 0, constructor_unbuilt(known, unseen))
+    found = _expand(name, known.passed, 0, constructor_unbuilt(known, unseen),
+                    idle=known.idle(unseen))
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))

@@ -276,6 +276,14 @@ _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", 
 
 
 
+def _declared_constructors(cls: Cursor) -> list[str]:
+    """The USRs of the constructors ``cls`` declares (none when one has no USR, or it
+    declares none: its implicit ones have no code anywhere to read)."""
+    found = [child.canonical.get_usr() for child in (cls.get_definition() or cls).get_children()
+             if child.kind == CursorKind.CONSTRUCTOR]
+    return found if all(found) else []
+
+
 def _value_method(call: Cursor, children: list[Cursor]) -> bool:
     """Whether ``call`` is a method that gives its object's value: ``_VALUE_METHODS``,
     or rclcpp's ``ParameterValue::get<T>()`` (``declare_parameter(name,
@@ -1325,10 +1333,16 @@ class CallFinder:
                 # constructor (read where it is defined) does not construct again
                 words = set(WORDS.findall(
                     data[extent.start.offset:extent.end.offset])) - {opaque.spelling.encode()}
-                if usr:
+                # made through a factory (``std::make_shared<C>(options)``), which may
+                # call any of the class's declared constructors: unseen until another
+                # unit of the node has the code of each (rtabmap_odom's main builds
+                # RGBDOdometry, whose one constructor rgbd_odometry.cpp defines)
+                every = [usr] if usr else _declared_constructors(opaque)
+                if every:
                     # unseen here only: another unit of the node may have the
                     # constructor's code (``links.OPAQUE``)
-                    self.opaque_words.setdefault(usr, set()).update(words)
+                    for each in every:
+                        self.opaque_words.setdefault(each, set()).update(words)
                 else:
                     self.unseen.update(words)
                     for word in words:
