@@ -97,3 +97,45 @@ def test_a_base_class_main_builds_itself_is_one_node(write_tree) -> None:
     assert result.rosnames == []
     assert [(c.kind, c.name, c.node_name) for c in result.calls] == [
         ("publish", "odom", None)]
+
+
+# rtabmap_odom's shape whole: the base class also derives from a class of a library not
+# here (rtabmap's UThread), the derived class's method gives the node to that library's
+# code (CPP_NODE_TO_UNKNOWN: code not read, which may construct what it names), and the
+# base class is exported as a component; neither builds a second node in the
+# executable, whose main builds the derived class
+HEADER_ALL = HEADER.replace('#include <string>\n', '#include <string>\n'
+                            '#include <rtabmap/utilite/UThread.h>\n').replace(
+    "class OdometryROS : public rclcpp::Node {",
+    "class OdometryROS : public rclcpp::Node, public UThread {").replace(
+    "  explicit RGBDOdometry(const rclcpp::NodeOptions & options);",
+    "  explicit RGBDOdometry(const rclcpp::NodeOptions & options);\n"
+    "  void update(ParametersMap & parameters);")
+BASE_ALL = BASE + ('#include "rclcpp_components/register_node_macro.hpp"\n'
+                   "RCLCPP_COMPONENTS_REGISTER_NODE(odom::OdometryROS)\n")
+DERIVED_ALL = DERIVED.replace('#include "odom/odometry.hpp"\n', '#include "odom/odometry.hpp"\n'
+                              "#include <rtabmap/core/Parameters.h>\n").replace(
+    "}  // namespace odom", """\
+void RGBDOdometry::update(ParametersMap & parameters)
+{
+  rtabmap::Parameters::parse(this, parameters);
+}
+}  // namespace odom""")
+
+
+def test_not_with_a_base_of_a_library_not_here_nor_the_base_exported(write_tree) -> None:
+    root: Path = write_tree({
+        "odom/package.xml": package_xml("odom", "ament_cmake"),
+        "odom/include/odom/odometry.hpp": HEADER_ALL,
+        "odom/src/odometry.cpp": BASE_ALL,
+        "odom/src/rgbd.cpp": DERIVED_ALL,
+        "odom/src/main.cpp": MAIN % "RGBDOdometry",
+    })
+    result = extract_cpp([str(root / "odom/src" / name) for name in
+                          ("main.cpp", "rgbd.cpp", "odometry.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert "CPP_NODE_TO_UNKNOWN" in {d.code for d in result.diagnostics}
+    assert result.rosname == "rgbd_odometry"
+    assert result.rosnames == []
+    assert [(c.kind, c.name, c.node_name) for c in result.calls] == [
+        ("publish", "odom", None)]

@@ -454,21 +454,33 @@ class NodeFacts:
         """Call site -> the constructor it is in, which its unit never calls (``WITHIN``)."""
         return {site: caller for _usr, index, caller, site in self.facts if index == WITHIN}
 
-    def idle(self, unseen: Collection[str]) -> Callable[[str], bool]:
+    def idle(self, unseen: Collection[str], naming: bool = False) -> Callable[[str], bool]:
         """Whether a call site is in code the node never runs: a constructor no file of
         the node calls, of a class its files construct by another one (no loader builds
         it by that one then), where no parse error may hide a call of it and no variable
         outside functions names its class (a plugin's export). f1tenth_simulator's mux:
         ``Channel::Channel() { Channel("", "", -1, nullptr); }``, a default constructor
         nothing calls, passed "" to the constructor that subscribes (mux.cpp:242-251): a
-        subscription to the node's own name."""
-        unbuilt = constructor_unbuilt(self, unseen)
+        subscription to the node's own name.
+
+        With ``naming``, for the name a node is given (``resolve_name``): the node
+        handed to code the parse does not read (``*``) and a loader's export of the
+        class do not keep the site: that code is another package's, which builds no
+        class of this one unless it names it (a word of ``unseen``), and a loader builds
+        a plugin or component as a node of its own, not this process's (rtabmap_odom's
+        OdometryROS, exported as a component and built by rgbd_odometry's main through
+        ``RGBDOdometry``, whose base initialiser names the node ``rgbd_odometry``: its
+        delegating ``OdometryROS(options) : OdometryROS("odometry", options)`` made
+        every rtabmap odometry executable two nodes)."""
+        unbuilt = constructor_unbuilt(self, unseen) if not naming else (
+            lambda usr: is_constructor_usr(usr) and usr not in self.called and (
+                class_of(usr) not in unseen))
 
         def idle(site: str) -> bool:
             caller = self.within.get(site)
             return caller is not None and unbuilt(caller) and (
                 class_of(caller) in self.constructed) and (
-                caller.rsplit("@F@", 1)[0] not in self.named_classes)
+                naming or caller.rsplit("@F@", 1)[0] not in self.named_classes)
         return idle
 
     @functools.cached_property
@@ -849,7 +861,7 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
         return name
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
     found = _expand(name, known.passed, 0, constructor_unbuilt(known, unseen),
-                    idle=known.idle(unseen))
+                    idle=known.idle(unseen, naming=True))
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))
