@@ -475,21 +475,27 @@ class Evaluator:
         return Value.of(str(isinstance(document, dict) and s.node in document))
 
     def s_PathJoin(self, s: e.PathJoin) -> Value:
-        parts: list[str | Value] = []
+        """The parts joined as ``os.path.join`` joins them (launch's
+        ``PathJoinSubstitution.perform``): an absolute part starts the path again, a
+        separator goes between two parts unless the path so far is empty or ends with
+        one (clearpath's ``PathJoinSubstitution(['/', namespace, 'platform',
+        'joint_states'])`` with no namespace is ``/platform/joint_states``, was
+        ``///platform/joint_states``); after a part not known, one goes in."""
+        joined = Value()
         dropped = None  # the absolute part that started the path again
-        for index, piece in enumerate(s.parts):
+        for piece in s.parts:
             value = self.value(piece)
             if value.literal is not None and value.literal.startswith("/"):
-                if any(not isinstance(p, Value) or p.text for p in parts):
+                if joined.parts:
                     dropped = value.literal
-                parts = []
-            elif index and parts:
-                parts.append("/")
-            parts.append(value)
-        result = Value.of(*parts)
+                joined = value
+                continue
+            last = joined.parts[-1] if joined.parts else ""
+            joined = Value.of(joined, value) if isinstance(last, str) and (
+                not last or last.endswith("/")) else Value.of(joined, "/", value)
         if dropped is not None:
-            self.report("LAUNCH_PATH_JOIN_ABSOLUTE", part=dropped, path=result.text)
-        return result
+            self.report("LAUNCH_PATH_JOIN_ABSOLUTE", part=dropped, path=joined.text)
+        return joined
 
     def s_FileContent(self, s: e.FileContent) -> Value:
         path = self.value(s.path).literal
