@@ -480,11 +480,14 @@ class Evaluator:
         separator goes between two parts unless the path so far is empty or ends with
         one (clearpath's ``PathJoinSubstitution(['/', namespace, 'platform',
         'joint_states'])`` with no namespace is ``/platform/joint_states``, was
-        ``///platform/joint_states``); after a part not known, one goes in."""
+        ``///platform/joint_states``); after a part not known, one goes in. A ``pathlib``
+        path's empty part adds nothing."""
         joined = Value()
         dropped = None  # the absolute part that started the path again
         for piece in s.parts:
             value = self.value(piece)
+            if value.literal == "" and s.python == e.PATHLIB:
+                continue  # a pathlib path drops an empty part: no trailing separator
             if value.literal is not None and value.literal.startswith("/"):
                 if joined.parts:
                     dropped = value.literal
