@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import yaml
 
 from .project import ConfigurationSpec, Project, ProjectError
-from .workspace import IGNORE_MARKERS, SKIP_FOLDERS, Workspace, scan
+from .workspace import IGNORE_MARKERS, MANIFEST_VARIANT, SKIP_FOLDERS, Workspace, scan
 
 # file names that are launch files wherever they are
 LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.py", ".launch.yaml", ".launch.yml",
@@ -243,7 +243,8 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
             os.path.join(top, "package.xml")) else top
     workspace = scan([folder], env)
     if not workspace.packages:
-        raise ProjectError(path, 0, 0, f"no ROS package (package.xml) under {folder}")
+        raise ProjectError(path, 0, 0, f"no ROS package (package.xml) under {folder}"
+                           + _manifest_variants(folder if os.path.isdir(path) else path))
     named = os.path.abspath(path if os.path.isdir(path) else folder)
     if os.path.basename(named) == "src":  # a workspace is known by the folder above src/
         named = os.path.dirname(named)
@@ -284,6 +285,25 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
     if not project.configurations:
         choice.notes.append("no launch file found: only the packages' nodes are analysed")
     return choice
+
+
+def _manifest_variants(folder: str) -> str:
+    """What to say when ``folder`` (or the folder above a workspace's ``src/``) holds
+    package manifests under other names than package.xml: none is read, and which one
+    the build copies is the user's choice."""
+    found: list[str] = []
+    for place in dict.fromkeys((folder, os.path.dirname(folder.rstrip(os.sep)))):
+        try:
+            names = sorted(os.listdir(place))
+        except OSError:
+            continue
+        found += [os.path.join(place, n) for n in names if MANIFEST_VARIANT.fullmatch(n)
+                  and os.path.isfile(os.path.join(place, n))]
+    if not found:
+        return ""
+    return (f"; {', '.join(found)} {'is' if len(found) == 1 else 'are'} there, a "
+            "manifest the build copies to package.xml: copy the one for your ROS there "
+            "to analyse the package")
 
 
 def project_text(choice: Choice) -> str:

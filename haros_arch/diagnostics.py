@@ -59,6 +59,13 @@ CATALOGUE: dict[str, Entry] = {
         "error", "package.xml is not a package manifest: {detail}",
         "The manifest lacks a required element (such as <name>) or its root is not "
         "<package>; the package is skipped."),
+    "PACKAGE_MANIFEST_VARIANT": Entry(
+        "warning", "folder {folder} has {names} but no package.xml: a manifest its build "
+        "copies to package.xml; the package is not read (copy the one for your ROS there)",
+        "A package that keeps one manifest per ROS version (livox_ros_driver2's "
+        "package_ROS1.xml and package_ROS2.xml; its build.sh copies one to package.xml "
+        "before building) is no package until one is copied: its nodes, and those launch "
+        "files name from it, are not in the workspace."),
     "PACKAGE_DUPLICATE": Entry(
         "error", "package {name} is defined twice (also at {other})",
         "Two folders of the workspace declare the same package name; the first one "

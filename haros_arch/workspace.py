@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
@@ -225,11 +226,12 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
     ws = Workspace(root=roots[0] if roots else os.getcwd(), roots=roots, environment=env)
     seen: set[str] = set()
     skipped: list[tuple[str, str]] = []
+    variants: list[tuple[str, list[str]]] = []
     for top in roots:
         if not os.path.isdir(top):
             ws.diagnostics.append(diag.make("WORKSPACE_MISSING", Location(file=top), path=top))
             continue
-        for folder in _package_folders(top, skipped=skipped):
+        for folder in _package_folders(top, skipped=skipped, variants=variants):
             real = os.path.realpath(folder)
             if real in seen:
                 continue
@@ -256,6 +258,10 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
             ) and os.path.exists(os.path.join(folder, "setup.py")):
                 package.build_type = "ament_python"
             ws.packages[package.name] = package
+    for folder, names in variants:
+        ws.diagnostics.append(diag.make(
+            "PACKAGE_MANIFEST_VARIANT", Location(file=ws.relpath(os.path.join(folder, names[0]))),
+            folder=ws.relpath(folder) or ".", names=", ".join(names)))
     _note_ignored(ws, skipped)
     return ws
 
@@ -274,10 +280,14 @@ def _note_ignored(ws: Workspace, skipped: list[tuple[str, str]]) -> None:
 def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
                      skip: frozenset[str] = SKIP_FOLDERS,
                      budget: list[int] | None = None,
-                     skipped: list[tuple[str, str]] | None = None) -> Iterable[str]:
+                     skipped: list[tuple[str, str]] | None = None,
+                     variants: list[tuple[str, list[str]]] | None = None) -> Iterable[str]:
     """Folders holding a package.xml or a rosbuild manifest.xml, honouring the ``ignore``
     markers (each folder one leaves out added to ``skipped`` with its marker) and
-    leaving out the ``skip`` folders; packages do not nest.
+    leaving out the ``skip`` folders; packages do not nest. A folder with manifests
+    under other names only (livox_ros_driver2's package_ROS1.xml and package_ROS2.xml,
+    one of which its build.sh copies to package.xml) is no package: added to
+    ``variants`` with their names.
 
     Symbolic links to folders are followed, as catkin, colcon and rospkg do (a
     workspace's src/ often links checkouts kept elsewhere); each real folder is visited
@@ -309,6 +319,10 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
         if "package.xml" in entries or "manifest.xml" in entries:
             yield folder
             continue
+        if variants is not None and (found := [
+                e for e in entries if MANIFEST_VARIANT.fullmatch(e)
+                and os.path.isfile(os.path.join(folder, e))]):
+            variants.append((folder, found))
         if depth >= MAX_DEPTH or "rospack_nosubdirs" in entries:
             continue
         for entry in reversed(entries):
@@ -319,6 +333,10 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
                 continue  # a link to "/" or to a folder above would walk it all again
             if os.path.isdir(path):
                 stack.append((path, depth + 1))
+
+
+# a package manifest under another name, one a build chooses from (``package_ROS2.xml``)
+MANIFEST_VARIANT = re.compile(r"package[_.-]\w+\.xml")
 
 
 def _is_ancestor(target: str, real: str) -> bool:

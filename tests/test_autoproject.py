@@ -174,8 +174,25 @@ def test_a_python_module_of_a_launch_folder_is_a_launch_file_only_if_it_defines_
 
 
 def test_not_a_workspace(tmp_path: Path) -> None:
-    with pytest.raises(ProjectError, match="no ROS package"):
+    with pytest.raises(ProjectError, match="no ROS package") as raised:
         choose(str(tmp_path), environment={})
+    assert "manifest" not in str(raised.value)
+
+
+def test_a_package_whose_build_chooses_its_manifest_is_said(tmp_path: Path) -> None:
+    """livox_ros_driver2 13eb05e: package_ROS1.xml and package_ROS2.xml at the top, which
+    its build.sh copies to package.xml, and sources in src/: no package is read, and the
+    error names the two manifests and what to do."""
+    for name in ("package_ROS1.xml", "package_ROS2.xml"):
+        (tmp_path / name).write_text('<?xml version="1.0"?>\n<package format="2"/>\n')
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "driver_node.cpp").write_text("int main() { return 0; }\n")
+    with pytest.raises(ProjectError, match="no ROS package") as raised:
+        choose(str(tmp_path), environment={})
+    said = str(raised.value)
+    assert str(tmp_path / "package_ROS1.xml") in said
+    assert str(tmp_path / "package_ROS2.xml") in said
+    assert "copies to package.xml" in said
 
 
 def test_check_and_extract_take_a_folder(ws: Path, tmp_path: Path, capsys) -> None:
