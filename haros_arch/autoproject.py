@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import yaml
 
 from .project import ConfigurationSpec, Project, ProjectError
-from .workspace import IGNORE_MARKERS, MANIFEST_VARIANT, SKIP_FOLDERS, Workspace, scan
+from .workspace import IGNORE_MARKERS, SKIP_FOLDERS, Workspace, manifest_variants, scan
 
 # file names that are launch files wherever they are
 LAUNCH_SUFFIXES = (".launch", ".launch.xml", ".launch.py", ".launch.yaml", ".launch.yml",
@@ -293,12 +293,7 @@ def _manifest_variants(folder: str) -> str:
     the build copies is the user's choice."""
     found: list[str] = []
     for place in dict.fromkeys((folder, os.path.dirname(folder.rstrip(os.sep)))):
-        try:
-            names = sorted(os.listdir(place))
-        except OSError:
-            continue
-        found += [os.path.join(place, n) for n in names if MANIFEST_VARIANT.fullmatch(n)
-                  and os.path.isfile(os.path.join(place, n))]
+        found += [os.path.join(place, n) for n in manifest_variants(place)]
     if not found:
         return ""
     return (f"; {', '.join(found)} {'is' if len(found) == 1 else 'are'} there, a "

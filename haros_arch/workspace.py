@@ -319,9 +319,7 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
         if "package.xml" in entries or "manifest.xml" in entries:
             yield folder
             continue
-        if variants is not None and (found := [
-                e for e in entries if MANIFEST_VARIANT.fullmatch(e)
-                and os.path.isfile(os.path.join(folder, e))]):
+        if variants is not None and (found := manifest_variants(folder, entries)):
             variants.append((folder, found))
         if depth >= MAX_DEPTH or "rospack_nosubdirs" in entries:
             continue
@@ -336,7 +334,20 @@ def _package_folders(top: str, ignore: tuple[str, ...] = IGNORE_MARKERS,
 
 
 # a package manifest under another name, one a build chooses from (``package_ROS2.xml``)
-MANIFEST_VARIANT = re.compile(r"package[_.-]\w+\.xml")
+_MANIFEST_VARIANT = re.compile(r"package[_.-]\w+\.xml")
+
+
+def manifest_variants(folder: str, entries: Iterable[str] | None = None) -> list[str]:
+    """The names of the package manifests under other names than package.xml that
+    ``folder`` holds (``entries``: its listing, when made already), in order; none when
+    it cannot be listed."""
+    if entries is None:
+        try:
+            entries = sorted(os.listdir(folder))
+        except OSError:
+            return []
+    return [e for e in entries if _MANIFEST_VARIANT.fullmatch(e)
+            and os.path.isfile(os.path.join(folder, e))]
 
 
 def _is_ancestor(target: str, real: str) -> bool:

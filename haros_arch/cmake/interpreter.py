@@ -802,7 +802,7 @@ class Interpreter:
         """Record the first word of each command of the branches [start, stop), not
         taken because of ``head``'s test, when that test reads an option that has its
         default (``option_gated``)."""
-        read = [name for name in _test_names(head) if name in self.options
+        read = [name for name in self._names_read(head.args) if name in self.options
                 and name not in self.assigned and self.cache.get(name) == self.options[
                     name][0]]
         if not read:
@@ -1011,19 +1011,6 @@ _NO_TARGET = frozenset({
     "while", "endwhile", "function", "endfunction", "macro", "endmacro", "return",
     "include", "find_package", "add_subdirectory", "configure_file", "cmake_parse_arguments",
 })
-_REFERENCE = re.compile(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}")
-
-
-def _test_names(head: Invocation) -> list[str]:
-    """The variables an ``if()`` / ``elseif()`` test reads: each ``${NAME}`` and each
-    bare word that is no keyword of a test."""
-    found: list[str] = []
-    for arg in head.args:
-        found.extend(_REFERENCE.findall(arg.text))
-        if arg.kind == "unquoted" and _VARIABLE_WORD.fullmatch(arg.text) and (
-                arg.text.upper() not in _TEST_WORDS):
-            found.append(arg.text)
-    return found
 
 
 def _below(path: str, root: str) -> bool:

@@ -185,10 +185,10 @@ class Cache:
         with contextlib.suppress(OSError):  # a cache not written is no cache, no error
             write_whole(os.path.join(self.nodes, f"{key}.json"), text)
 
-    def store(self, entry: str, headers: Iterable[str], result: dict[str, Any] | str,
-              result_digest: str | None = None) -> None:
-        """Keep a unit's ``result`` (``to_data``, or its JSON text with its digest) under
-        ``entry``, with the digests of the headers it read."""
+    def store(self, entry: str, headers: Iterable[str], result: str, result_digest: str
+              ) -> None:
+        """Keep a unit's result (the JSON text of its ``to_data``, and the ``digest`` of
+        that data) under ``entry``, with the digests of the headers it read."""
         listed = []
         derived = os.path.join(self.generated, HEADER_NAME)
         for name in headers:
@@ -204,13 +204,8 @@ class Cache:
         # two lines: what tells whether the entry holds and its digest, then the result
         # (``load`` without ``wanted`` reads only the first); ``dumps``: C's encoder
         # (``dump`` to a file always takes Python's)
-        if isinstance(result, str):
-            assert result_digest is not None  # (the digest is of the data, not its text)
-            kept = result
-        else:
-            kept, result_digest = json.dumps(result), result_digest or digest(result)
         text = json.dumps({"headers": listed, "digest": result_digest}) + (
-            '\n{"result": ' + kept + "}")
+            '\n{"result": ' + result + "}")
         with contextlib.suppress(OSError):  # a cache not written is no cache, no error
             write_whole(os.path.join(self.folder, entry + ".json"), text)
 

@@ -472,9 +472,7 @@ class NodeFacts:
         ``RGBDOdometry``, whose base initialiser names the node ``rgbd_odometry``: its
         delegating ``OdometryROS(options) : OdometryROS("odometry", options)`` made
         every rtabmap odometry executable two nodes)."""
-        unbuilt = constructor_unbuilt(self, unseen) if not naming else (
-            lambda usr: is_constructor_usr(usr) and usr not in self.called and (
-                class_of(usr) not in unseen))
+        unbuilt = constructor_unbuilt(self, set(unseen) - {"*"} if naming else unseen)
 
         def idle(site: str) -> bool:
             caller = self.within.get(site)
