@@ -295,6 +295,28 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_MISSING_ATTRIBUTE": Entry(
         "error", "<{tag}> needs attribute {attribute}=; the element is skipped",
         "A required attribute of a launch tag is missing."),
+    "LAUNCH_DASHING_KEYWORD": Entry(
+        "warning", "{action} is given {words} of Dashing's launch_ros that "
+        "Foxy deprecated and Galactic removed: from Galactic on the launch file does "
+        "not load (TypeError); the distribution here is {distro}; read as the newer "
+        "keyword",
+        "A Python launch file gives launch_ros' Node, ComposableNodeContainer or "
+        "ComposableNode a keyword of its Dashing API (node_executable, node_name, "
+        "node_namespace, node_plugin). Foxy accepts them with a deprecation warning; "
+        "Galactic and every later distribution raise TypeError (unexpected keyword "
+        "argument) and the whole launch file fails to load (urg_node 369ee4d's "
+        "urg_node_launch.py). The tool reads them as the newer keywords, as Dashing to "
+        "Foxy do; with the project's distro: (ROS_DISTRO) Galactic or later this is "
+        "LAUNCH_DASHING_KEYWORD_REMOVED, an error; Dashing or Eloquent, nothing."),
+    "LAUNCH_DASHING_KEYWORD_REMOVED": Entry(
+        "error", "{action} is given {words} of Dashing's launch_ros that "
+        "{distro}'s does not take: the launch file does not load there (TypeError: "
+        "unexpected keyword argument); read as the newer keyword",
+        "A Python launch file gives launch_ros' Node, ComposableNodeContainer or "
+        "ComposableNode a keyword of its Dashing API that the configuration's "
+        "distribution (ROS_DISTRO, a project's distro:) no longer has: Galactic removed "
+        "them, so the launch file fails to load there. The tool reads them as the newer "
+        "keywords, to show what the file means."),
     "LAUNCH_BAD_VALUE": Entry(
         "error", "{detail}",
         "An attribute value of a launch tag cannot be used as written."),
@@ -812,9 +834,12 @@ CATALOGUE: dict[str, Entry] = {
         "statically, or the argument differs before and after ros::init (a ':=' word "
         "among the args). Give the node its args where it is launched."),
     "NODE_NOT_FOUND": Entry(
-        "warning", "node type {node} is not in the workspace; its interface is unknown",
+        "warning", "node type {node} is not in the workspace; its interface is unknown{hint}",
         "A launch file starts an executable that no workspace package builds; the "
-        "instance is kept without publishers, subscribers or other links."),
+        "instance is kept without publishers, subscribers or other links. When the "
+        "package is in the workspace, the message lists the programs it does build "
+        "(urg_node 369ee4d: its launch file runs urg_node, a name its CMakeLists.txt "
+        "gave up for urg_node_driver), the nearest first."),
     "NODE_BUILT_BY_OPTION": Entry(
         "warning", "node type {node} is built only when the CMake option {option} is "
         "given a value other than its default {default} ({cmake}); its interface is unknown",

@@ -90,4 +90,6 @@ def test_a_program_a_foreign_function_makes_of_a_nodelet_runs_it(write_tree):
     assert ("NODE_STANDALONE_NODELET", 2) in said
     assert ("NODE_NOT_FOUND", 3) in said
     missing = [f.message for f in run_catalogue(model) if f.rule == "launch-missing-reference"]
-    assert missing == ["node type pkg/helper is not in the workspace; its interface is unknown"]
+    assert missing == ["node type pkg/helper is not in the workspace; its interface is unknown"
+                       "; package pkg is in the workspace, with no program found in its "
+                       "build files"]

@@ -457,7 +457,9 @@ def generate_launch_description():
         ("/joy_container", "rclcpp_components", "component_container", None),
         ("/pad/joy_node", "joy", "joy::Joy", "/joy_container")]
     assert [p.name for p in model.params] == ["/pad/joy_node/device_id"]
-    assert codes(model) == []
+    # said, where each is given them: Galactic and later refuse them (TypeError)
+    assert [(d.code, d.location.line) for d in model.diagnostics] == [
+        ("LAUNCH_DASHING_KEYWORD", 19), ("LAUNCH_DASHING_KEYWORD", 16)]
 
 
 def test_str_and_repr_of_literal_containers(write_tree):

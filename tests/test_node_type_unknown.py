@@ -43,8 +43,10 @@ def test_an_executable_not_known_is_no_missing_one(write_tree):
         "NODE_TYPE_UNKNOWN": "node type ex/? is not known statically; its interface "
                              "is unknown",
         "NODE_NOT_FOUND": "node type ex/missing_node is not in the workspace; its "
-                          "interface is unknown"}
+                          "interface is unknown; package ex is in the workspace, with "
+                          "no program found in its build files"}
     missing = [f.message for f in run_catalogue(model)
                if f.rule == "launch-missing-reference"]
     assert missing == ["node type ex/missing_node is not in the workspace; its "
-                       "interface is unknown"]
+                       "interface is unknown; package ex is in the workspace, with no "
+                       "program found in its build files"]

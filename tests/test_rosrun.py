@@ -104,7 +104,8 @@ def test_a_launched_executable_that_is_not_python_is_there_but_not_read(write_tr
                                    "but not executable, so roslaunch cannot start it; its "
                                    "interface is not read"),
         ("NODE_NOT_FOUND", 4, "node type pkg/missing_node is not in the workspace; its "
-                              "interface is unknown")]
+                              "interface is unknown; package pkg is in the workspace, with "
+                              "no program found in its build files")]
     from haros_arch.query.catalogue import run_catalogue
     findings = [(f.rule, f.location.line) for f in run_catalogue(model)
                 if f.rule == "launch-missing-reference"]

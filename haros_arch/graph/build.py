@@ -526,7 +526,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # is not known, not missing (crazyswarm2's example launch file)
         config.diagnostics.append(diag.make("NODE_TYPE_UNKNOWN", decl.location, node=key))
     elif node is None and plugin is not None and key == plugin and _bare(plugin):
-        config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location, node=plugin))
+        config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location, node=plugin,
+                                            hint=""))
     elif node is None and workspace.find(key.partition("/")[0]) is None:
         # the package's interface model was found without this node: said there
         if not any(d.code == "MODEL_NODE_MISSING" and d.location == decl.location
@@ -566,8 +567,9 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
             "NODE_BUILT_BY_OPTION", decl.location, node=key, option=option, default=default,
             cmake=f"{where.file}:{where.line}" if where.file else "its CMake files"))
     elif node is None:
-        config.diagnostics.append(diag.make("NODE_NOT_FOUND", decl.location,
-                                            node=plugin or key))
+        config.diagnostics.append(diag.make(
+            "NODE_NOT_FOUND", decl.location, node=plugin or key,
+            hint="" if plugin else _programs_hint(decl, nodes, workspace)))
     # a ROS 1 node takes ``from:=to`` anywhere on its command line; rcl reads remaps only
     # after ``--ros-args`` (the launch reader has them in ``decl.remaps``): a ROS 2
     # node's plain argument (a spawner's ``--controller-ros-args "-r a:=b"``, meant for
@@ -579,6 +581,38 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
                         ros_version=decl.ros_version, test=decl.is_test)
+
+
+def _programs_hint(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace) -> str:
+    """The rest of NODE_NOT_FOUND's sentence when ``decl``'s package is in the workspace:
+    the programs it builds (executables and scripts, the nearest to the name given
+    first: one name holding the other, then by edit distance), a launch file's
+    executable renamed in CMakeLists.txt and not in the launch file being the usual
+    cause; nothing when the package is not here."""
+    from ..query.absence import distance, masks
+
+    if decl.package not in workspace.packages:
+        return ""
+    programs = sorted({node.executable for node in nodes.values()
+                       if node.package == decl.package and node.kind in PROGRAM_KINDS
+                       and node.executable})
+    if not programs:
+        return (f"; package {decl.package} is in the workspace, with no program found in "
+                "its build files")
+    given, pattern = decl.executable, masks(decl.executable)
+    # one name holding the other (a suffix added: ``urg_node`` -> ``urg_node_driver``)
+    # before the edit distance, which ranks ``getID`` nearer
+    programs.sort(key=lambda name: (given not in name and name not in given,
+                                    distance(given, name, pattern), name))
+    shown = ", ".join(programs[:MAX_PROGRAMS_SHOWN])
+    more = len(programs) - MAX_PROGRAMS_SHOWN
+    tail = f" and {more} more" if more > 0 else ""
+    return f"; package {decl.package} is in the workspace and builds {shown}{tail}"
+
+
+# the kinds of node a launch file's ``executable=`` / ``type=`` may name
+PROGRAM_KINDS = frozenset({"executable", "script"})
+MAX_PROGRAMS_SHOWN = 6
 
 
 def _option_gated(workspace: Workspace, package: str, executable: str

@@ -470,8 +470,43 @@ def words(value: Any) -> list[e.Text]:
     return [to_text(value)]
 
 
+# launch_ros' Dashing keywords, each with the one that replaced it: deprecated in Foxy
+# (a UserWarning), removed in Galactic (launch_ros PR 140 and 122), where ``Node`` and
+# ``ComposableNode`` raise TypeError for them and the launch file does not load
+DASHING_KEYWORDS = {"node_executable": "executable", "node_name": "name",
+                    "node_namespace": "namespace", "node_plugin": "plugin"}
+# the distributions whose launch_ros takes them: Dashing and Eloquent as they are, Foxy
+# with a deprecation warning
+_DASHING_READ = frozenset({"dashing", "eloquent"})
+_DASHING_DEPRECATED = frozenset({"foxy"})
+
+
+def dashing_keywords(i: Interpreter, k: Kwargs, n: ast.AST, action: str) -> None:
+    """Said of a ``Node`` / ``ComposableNode`` given a Dashing keyword (urg_node
+    369ee4d's ``node_executable='urg_node'``): read as the newer keyword, as Dashing to
+    Foxy read it, and said: an error where the configuration's ROS_DISTRO is one whose
+    launch_ros refuses it, a warning where it is Foxy's or not known."""
+    given = [word for word in k if word in DASHING_KEYWORDS]  # as the call writes them
+    if not given:
+        return
+    distro = i.environment.get("ROS_DISTRO", "").strip().lower()
+    if distro in _DASHING_READ:
+        return
+    words = ", ".join(f"{word}= (now {DASHING_KEYWORDS[word]}=)" for word in given)
+    words += ", a keyword" if len(given) == 1 else ", keywords"
+    if distro in _DASHING_DEPRECATED or not distro:
+        i.diagnostics.append(diag.make(
+            "LAUNCH_DASHING_KEYWORD", i.where(n), action=action, words=words,
+            distro=distro.capitalize() or "not known (no ROS_DISTRO)"))
+    else:
+        i.diagnostics.append(diag.make(
+            "LAUNCH_DASHING_KEYWORD_REMOVED", i.where(n), action=action, words=words,
+            distro=distro.capitalize()))
+
+
 def node(container: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        dashing_keywords(i, k, n, "ComposableNodeContainer" if container else "Node")
         action = e.NodeAction(
             text_or_none(k.get("package", k.get("node_package"))),
             text_or_none(k.get("executable", k.get("node_executable"))),
@@ -561,6 +596,7 @@ def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     # node_plugin/node_name/node_namespace: the Dashing spelling, read as node() reads its own
+    dashing_keywords(i, k, n, "ComposableNode")
     return e.ComposableNode(
         text_or_none(k.get("package")), text_or_none(k.get("plugin", k.get("node_plugin"))),
         text_or_none(k.get("name", k.get("node_name"))),
