@@ -141,3 +141,46 @@ def test_the_old_parameters_are_moved_only_when_no_plugins_are_given(write_tree)
                 and link.kind == "read" and link.name.endswith("/global_costmap/laser")}
     assert moves("") == {"/move_base/global_costmap/laser": ()}
     assert moves("plugins: [{name: obstacles, type: 'costmap_2d::ObstacleLayer'}]") == {}
+
+
+def test_the_moved_sources_are_read_whole_and_not_where_they_were(write_tree):
+    """navigation_tutorials 115e46e's navigation_stage sets a pre-Hydro costmap's source
+    in the costmap's namespace (``base_scan: {data_type: LaserScan, marking: true, ...}``
+    with no ``topic``). loadOldParameters' move_parameter reads the source's namespace
+    whole (``getParam(name, XmlRpcValue)`` after ``hasParam(name)``) and the obstacle
+    layer reads each setting where the move put it. Every setting was "set but never
+    read" (the move's presence test, which reads the keys alone, stood for both reads)
+    and ``global_costmap/laser/topic`` "read but never set" (the source's own reads were
+    made where the launch file sets it, with no default, beside the layer's)."""
+    from haros_arch.query import run_catalogue
+
+    launch = """<launch>
+      <node pkg="move_base" type="move_base" name="move_base">
+        <rosparam ns="global_costmap">
+          observation_sources: laser
+          laser: {data_type: LaserScan, marking: true, expected_update_rate: 0.4}
+        </rosparam>
+      </node>
+    </launch>"""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/nav.launch": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/nav.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    for key in ("data_type", "marking", "expected_update_rate"):
+        param = config.parameter(f"/move_base/global_costmap/laser/{key}")
+        assert param is not None and param.read_as_part_of is not None, key
+    assert config.parameter("/move_base/global_costmap/laser/topic") is None
+    found = {(f.rule, f.entities[0]) for f in run_catalogue(model)
+             if f.rule in ("parameter-set-not-read", "parameter-read-not-set")}
+    assert not {entity for _rule, entity in found if "/global_costmap/laser/" in entity}
+    # the layer reads them where they were moved, with the topic's default its name
+    moved = {link.name for link in config.links if link.node.name == "/move_base"
+             and link.kind == "read" and "/obstacle_layer/laser/" in link.name}
+    assert {"/move_base/global_costmap/obstacle_layer/laser/topic",
+            "/move_base/global_costmap/obstacle_layer/laser/data_type"} <= moved
+    assert any(link.kind == "subscribe" and link.name == "/laser" for link in config.links
+               if link.node.name == "/move_base")

@@ -1403,9 +1403,12 @@ def _per_source(calls: list[PrimitiveCall], row: Sources, plugin: str, choice: C
             location=given.launch_location,
             conditions=(*conditions, *(topic_param.launch_conditions if topic_param else ())),
             origin="plugin"))
-        for read in (topic_key, type_key):
-            key = read[len(base):]
-            name = key if instance.ros_version == 2 else "~" + key
+        # the plugin reads them where it is, after a pre-Hydro costmap moved them there
+        # (the host's read of the source's namespace whole is what reads them where the
+        # launch files set them)
+        for read in (row.topic.format(plugin=plugin, source=source),
+                     row.data_type.format(plugin=plugin, source=source)):
+            name = read if instance.ros_version == 2 else "~" + read
             if not any(c.kind == "read" and c.name == name for c in out):
                 out.append(PrimitiveCall("read", name, location=given.launch_location,
                                          conditions=conditions, origin="plugin"))

@@ -494,17 +494,22 @@ def _is_ros2(path: str, included: bool, workspace: Workspace) -> bool:
 
 
 def _made_under_fewest(calls: list[PrimitiveCall],
-                       seen: dict[tuple[object, ...], list[PrimitiveCall]]
-                       ) -> list[PrimitiveCall]:
+                       seen: dict[tuple[object, ...], list[PrimitiveCall]],
+                       whole: set[tuple[object, ...]]) -> list[PrimitiveCall]:
     """``calls`` (the first of each kind, name and place), each once per set of
     conditions it is made under that no other one covers (``conditions.fewest``): nav2's
     ``declare_or_get_parameter`` reads the parameter ``if (param_interface->
     has_parameter(name))`` and, after that branch returns, reads it again, so its call
     site reads it either way; a wrapper that makes one publisher in an ``if`` and the
-    same in its ``else`` makes it under neither."""
+    same in its ``else`` makes it under neither. A read one of whose copies reads the
+    values (its key in ``whole``) is no read of the keys alone."""
     out: list[PrimitiveCall] = []
     for call in calls:
-        made = seen[_call_key(call)]
+        key = _call_key(call)
+        made = seen[key]
+        if call.keys_only and key in whole:  # ``whole``: a copy reads the values
+            made = [dataclasses.replace(c, keys_only=False) for c in made]
+            call = made[0]
         if len(made) < 2:
             out.append(call)
             continue
@@ -534,6 +539,10 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # each call by kind, name and place: one of them, and the conditions the others
     # are made under (a wrapper's call site makes the calls of its branches)
     seen: dict[tuple[object, ...], list[PrimitiveCall]] = {}
+    # the calls of which one copy reads values (a ROS 1 presence test, ``hasParam``,
+    # reads the keys alone; a ``getParam`` of the same name at the same place, both in
+    # one wrapper, costmap_2d's move_parameter, reads the values: so does the call)
+    whole: set[tuple[object, ...]] = set()
     facts = [fact for unit in units for fact in unit.facts]
     # where a construction may be missed: the words of the code around the errors the
     # parse left (an error drops its statement), everywhere when a file was not read
@@ -580,12 +589,14 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
             # (two calls named '?' by different parameters are two: nav2's
             # CostmapSubscriber, built with the local and the global costmap's topic)
             key = _call_key(call)
+            if not call.keys_only:
+                whole.add(key)
             if key not in seen:
                 seen[key] = [call]
                 result.calls.append(call)
             elif call.conditions not in (c.conditions for c in seen[key]):
                 seen[key].append(call)
-    result.calls = _made_under_fewest(result.calls, seen)
+    result.calls = _made_under_fewest(result.calls, seen, whole)
     # a copy named by no parameter beside one that is (a header's function that another
     # unit reads without its caller: opennav_docking's parseDockParams) is that one
     named = {(c.kind, c.name, c.location) for c in result.calls if c.name_param is not None}

@@ -23,7 +23,12 @@ from .values import emptiness_test, strip
 
 Key = tuple[str, int, int]
 _WRAPPERS = (CursorKind.UNEXPOSED_EXPR, CursorKind.PAREN_EXPR)
-_SHORT_CIRCUIT = re.compile(r"^\s*(&&|\|\||\band\b|\bor\b)\s*$")
+# a logical operator of a test: for the value a missing parameter gives it, ``&`` and
+# ``|`` of two truth values are ``&&`` and ``||`` (they only evaluate both sides:
+# base_local_planner's ``if (nh.hasParam("pdist_scale") & !nh.hasParam("path_distance_
+# bias"))``); conditions.py's own pattern keeps to the short-circuiting ones
+_LOGICAL = re.compile(r"^\s*(&&|\|\||&|\||\band\b|\bor\b|\bbitand\b|\bbitor\b)\s*$")
+_OR = frozenset({"||", "or", "|", "bitor"})
 _ASSIGN = re.compile(r"^\s*=\s*$")
 _EQUALS = re.compile(r"^\s*(==|!=)\s*$")
 _NOT = re.compile(r"^\s*(!|\bnot\b)")
@@ -84,7 +89,7 @@ class TestedCalls:
         elif kind == CursorKind.BINARY_OPERATOR:
             children = list(node.get_children())
             if len(children) == 2:
-                if self.reader._between(children[0], children[1], _SHORT_CIRCUIT):
+                if self.reader._between(children[0], children[1], _LOGICAL):
                     self._condition(children[0])
                     self._condition(children[1])
                 elif self.reader._between(children[0], children[1], _ASSIGN):
@@ -108,9 +113,9 @@ class TestedCalls:
             sides = list(expr.get_children())
             if len(sides) != 2:
                 return {}
-            operator = self.reader._between(sides[0], sides[1], _SHORT_CIRCUIT)
+            operator = self.reader._between(sides[0], sides[1], _LOGICAL)
             if operator:
-                decided = operator in ("||", "or")  # the value an operand decides
+                decided = operator in _OR  # the value an operand decides
                 return {k: v for side in sides for k, v in self._when_absent(side).items()
                         if v == decided}
             literals = [s for s in sides if _strip(s).kind == CursorKind.CXX_BOOL_LITERAL_EXPR]
