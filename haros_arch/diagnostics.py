@@ -90,6 +90,15 @@ CATALOGUE: dict[str, Entry] = {
         "A build target names a source file that is not in the package (nor one a "
         "configure_file writes by that name in the build folder, where CMake looks "
         "next)."),
+    "CMAKE_SOURCE_IN_SUBMODULE": Entry(
+        "warning", "sources of target {target} lie in the git submodule {submodule} "
+        "(declared at {declared}), which is not checked out here (git submodule update "
+        "--init); their code is not read",
+        "A build target names source files under a folder a .gitmodules file declares "
+        "as a git submodule, and that folder is missing or empty, as a clone without "
+        "--recursive leaves it (microstrain_inertial's driver compiles its "
+        "microstrain_inertial_driver_common submodule). Not a missing file: the code is "
+        "elsewhere. What it does stays unknown; check out the submodules to read it."),
     "CMAKE_PROGRAM_NOT_IN_SOURCES": Entry(
         "info", "program {path} installed here is not in the sources; the package's "
         "{command} ({where}) may make it at build time",

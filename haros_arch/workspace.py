@@ -65,6 +65,8 @@ class Workspace:
     # package name -> (its ignore marker, its folder): a package under a folder with an
     # IGNORE_MARKERS file, left out as colcon and catkin leave it out, kept to say why
     ignored: dict[str, tuple[str, str]] = field(default_factory=dict, repr=False)
+    # folder -> the submodules its .gitmodules declares, (absolute path, line), read once
+    _gitmodules: dict[str, list[tuple[str, int]]] = field(default_factory=dict, repr=False)
 
     @property
     def folders(self) -> list[str]:
@@ -166,6 +168,46 @@ class Workspace:
                                                     self._path_index)
         return self._installed[name]
 
+    def submodule_of(self, path: str) -> tuple[str, str] | None:
+        """The git submodule ``path`` lies in when that submodule is not checked out
+        here (its folder missing or empty, as ``git clone`` without ``--recursive``
+        leaves it): its folder and the ``.gitmodules`` line declaring it, both relative
+        to the workspace; None otherwise. ``.gitmodules`` files are looked for in the
+        folders from ``path`` up to the workspace's roots (microstrain_inertial's
+        driver launch files read ``microstrain_inertial_driver_common/config/params.yml``
+        from such a submodule: not a missing file, a file not here)."""
+        real = os.path.abspath(path)
+        tops = [os.path.abspath(r) for r in (self.roots or [self.root]) if r]
+        folder = os.path.dirname(real)
+        while True:
+            for sub, line in self._submodules(folder):
+                if (real == sub or real.startswith(sub + os.sep)) and not _has_entries(sub):
+                    where = os.path.join(folder, ".gitmodules")
+                    return self.relpath(sub), f"{self.relpath(where)}:{line}"
+            if any(folder == top for top in tops) or not any(
+                    folder.startswith(top + os.sep) for top in tops):
+                return None
+            parent = os.path.dirname(folder)
+            if parent == folder:
+                return None
+            folder = parent
+
+    def _submodules(self, folder: str) -> list[tuple[str, int]]:
+        found = self._gitmodules.get(folder)
+        if found is None:
+            found = []
+            listed = os.path.join(folder, ".gitmodules")
+            data = read_bytes(listed, self.location(listed), MAX_GITMODULES)[0] if (
+                os.path.isfile(listed)) else None
+            for number, text in enumerate((data or b"").decode("utf-8", "replace")
+                                          .splitlines(), start=1):
+                match = _GITMODULE_PATH.match(text)
+                if match:
+                    found.append((os.path.normpath(os.path.join(folder, match.group(1))),
+                                  number))
+            self._gitmodules[folder] = found
+        return found
+
     def absence(self, name: str) -> str:
         """Why ``find(name)`` found nothing, the rest of a sentence "package NAME ...":
         a package of the workspace left out by its ignore marker (named, the place to
@@ -203,6 +245,27 @@ class Workspace:
                   if abs(len(other) - len(name)) <= limit]
         best = min((score for score, _other in scored), default=limit + 1)
         return [other for score, other in scored if score == best <= limit][:MAX_NEAR]
+
+
+# a submodule's ``path = <folder>`` line of a .gitmodules file (git's config syntax)
+_GITMODULE_PATH = re.compile(r"^\s*path\s*=\s*(\S(?:.*\S)?)\s*$")
+MAX_GITMODULES = 1 << 20
+
+
+def submodule_detail(path: str, submodule: tuple[str, str]) -> str:
+    """What a launch diagnostic says of a file ``path`` in a submodule not checked out
+    (``Workspace.submodule_of``)."""
+    folder, declared = submodule
+    return (f"{path} lies in the git submodule {folder} (declared at {declared}), which "
+            "is not checked out here (git submodule update --init); it is not read")
+
+
+def _has_entries(folder: str) -> bool:
+    try:
+        with os.scandir(folder) as entries:
+            return any(True for _ in entries)
+    except OSError:
+        return False
 
 
 def ament_index_packages(env: Mapping[str, str]) -> list[str]:

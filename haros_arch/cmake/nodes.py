@@ -67,6 +67,9 @@ class PackageFiles:
     def holds(self, path: str) -> bool:
         return self.workspace.holds(path)
 
+    def submodule_of(self, path: str) -> tuple[str, str] | None:
+        return self.workspace.submodule_of(path)
+
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:
         if path.startswith(self.package.root + os.sep):
             return Location(self.package.name, self.relpath(path), line, column)
@@ -120,6 +123,8 @@ class SourceMap:
         self.workspace = workspace
         self.diagnostics: list[Diagnostic] = []
         self._own: dict[str, list[str]] = {}
+        # target -> why its code is not all here (sources in a submodule not checked out)
+        self.unread: dict[str, str] = {}
         self._elsewhere = elsewhere
         self._build_depends = list(build_depends)
         self._package = package  # its own libraries are ``linked``'s
@@ -152,6 +157,19 @@ class SourceMap:
                 source = found or source
             if source.startswith(BINARY_ROOT):
                 continue  # generated at build time
+            if not os.path.isfile(source) and (
+                    sub := self.workspace.submodule_of(source)) is not None:
+                # a git submodule not checked out: said once per target and submodule
+                said = diag.make(
+                    "CMAKE_SOURCE_IN_SUBMODULE",
+                    self.workspace.location(target.file, target.line, target.column),
+                    target=target.name, submodule=sub[0], declared=sub[1])
+                if said not in self.diagnostics:
+                    self.diagnostics.append(said)
+                self.unread.setdefault(target.name, (
+                    f"{said.location.file}:{said.location.line}: sources in the git "
+                    f"submodule {sub[0]}, not checked out, are not read"))
+                continue
             if not os.path.isfile(source):
                 self.diagnostics.append(diag.make(
                     "CMAKE_SOURCE_MISSING",
@@ -161,6 +179,15 @@ class SourceMap:
             out.append(self.workspace.relpath(source))
         self._own[target.name] = out = list(dict.fromkeys(out))
         return out
+
+    def unread_reason(self, target: Target) -> str | None:
+        """Why some code ``target`` runs is not here: sources of it or of a package
+        library it links lie in a git submodule not checked out; None when all is."""
+        for each in self.closure(target):
+            self.own(each)
+            if each.name in self.unread:
+                return self.unread[each.name]
+        return None
 
     def closure(self, target: Target) -> list[Target]:
         """``target`` and the package libraries it links, transitively, in order."""
@@ -261,11 +288,24 @@ class SourceMap:
 
 def executables(it: Interpreter, package: Package, workspace: Files,
                 sources: SourceMap) -> list[Node]:
-    return [Node(package=package.name, executable=t.output_name or t.name,
-                 kind="executable", language="cpp", sources=_run(t, sources, workspace),
-                 conditions=t.conditions,
-                 location=workspace.location(t.file, t.line, t.column))
-            for t in it.targets.values() if t.kind == "executable"]
+    nodes = []
+    for t in it.targets.values():
+        if t.kind != "executable":
+            continue
+        node = Node(package=package.name, executable=t.output_name or t.name,
+                    kind="executable", language="cpp", sources=_run(t, sources, workspace),
+                    conditions=t.conditions,
+                    location=workspace.location(t.file, t.line, t.column))
+        _unread(node, t, sources)
+        nodes.append(node)
+    return nodes
+
+
+def _unread(node: Node, target: Target, sources: SourceMap) -> None:
+    """``node`` partial when code its target runs is in a submodule not checked out."""
+    why = sources.unread_reason(target)
+    if why is not None:
+        node.mark_partial(why)
 
 
 # words of code that loads plugins by name: such an executable hosts classes its own
@@ -414,11 +454,15 @@ def components(it: Interpreter, package: Package, workspace: Files,
             c for c in reg.conditions if target is None or c not in target.conditions)
         where = workspace.location(reg.file, reg.line, reg.column)
         registered.add(reg.plugin)
-        nodes.append(Node(package.name, reg.plugin, "component", "cpp", list(files),
-                          conditions=conditions, location=where))
+        made = [Node(package.name, reg.plugin, "component", "cpp", list(files),
+                     conditions=conditions, location=where)]
         if reg.executable:
-            nodes.append(Node(package.name, reg.executable, "executable", "cpp", list(files),
-                              conditions=conditions, location=where))
+            made.append(Node(package.name, reg.executable, "executable", "cpp", list(files),
+                             conditions=conditions, location=where))
+        for node in made:
+            if target is not None:
+                _unread(node, target, sources)
+        nodes.extend(made)
     for target in it.targets.values():
         if target.kind != "library":
             continue

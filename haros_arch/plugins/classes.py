@@ -55,6 +55,8 @@ class Files(Protocol):
 
     def holds(self, path: str) -> bool: ...
 
+    def submodule_of(self, path: str) -> tuple[str, str] | None: ...
+
 
 def _nothing() -> list[list[str]]:
     return []
