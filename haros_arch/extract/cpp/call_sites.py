@@ -95,7 +95,8 @@ class CallSites:
             return unknown
         strings = self.external and isinstance(unknown, tuple)
         if strings and (not self._sites().get(self._function_key(parm))
-                        or self._shared(parm.semantic_parent)):
+                        or self._shared(parm.semantic_parent)
+                        or _overriding(parm.semantic_parent)):
             marker = self.placeholder(parm)
             if marker is not None:
                 return (marker,)  # type: ignore[return-value]
@@ -237,10 +238,21 @@ class CallSites:
         hold it with a placeholder: turtlebot3's ``TwistSubscriber``, built in one
         file, its header included by others) and of those given a placeholder, except
         the functions in ``done``."""
+        from .handles import is_handle
+
         defined = {key_of(f.canonical) for f in self.functions
                    if self.main is None or _defined_in(f) == self.main}
+        # a virtual method given a handle: a method of another unit that overrides it
+        # takes that handle where it is called (``links.OVERRIDES``: costmap_2d's
+        # ObstacleLayer::onInitialize calls its ``setupDynamicReconfigure(nh)``, which
+        # voxel_layer.cpp's VoxelLayer overrides)
+        dispatching = {key_of(f.canonical) for f in self.functions
+                       if f.kind == CursorKind.CXX_METHOD and f.is_virtual_method()
+                       and any(c.kind == CursorKind.PARM_DECL and is_handle(c)
+                               for c in f.get_children())}
         for key, sites in list(self._sites().items()):
-            if key in done or (key in defined and key not in self.marked):
+            if key in done or (key in defined and key not in self.marked
+                               and key not in dispatching):
                 continue
             for call, caller in sites:
                 callee = self._implicit.get((key_of(call), key)) if call.kind in (
@@ -576,6 +588,34 @@ def base_keys(cls: Cursor, depth: int = 0, named: bool = False) -> set[tuple[str
         if definition is not None:
             found |= base_keys(definition, depth + 1, named)
     return found
+
+
+def _overriding(function: Cursor | None) -> bool:
+    """Whether ``function`` is a virtual method overriding one of a base class, with one
+    string parameter: a host may call it through that base with a value none of this
+    unit's calls gives (navfn's ``NavfnROS::initialize(name, costmap_ros)``, which its
+    own constructor calls too): its values are the node's calls' and the host's
+    (``links.HOST_NAMED``), not this unit's alone."""
+    if function is None or function.kind != CursorKind.CXX_METHOD or (
+            not function.is_virtual_method()):
+        return False
+    strings = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL
+               and msg_types.param_type(c.type) == "str"]
+    return len(strings) == 1 and bool(overridden(function))
+
+
+def virtual_call(call: Cursor) -> bool:
+    """Whether ``call`` of a method is dispatched virtually: not one that names the
+    method's class (``Base::setup(nh)``, which calls that one alone)."""
+    if call.kind != CursorKind.CALL_EXPR:
+        return False
+    head = next(iter(call.get_children()), None)
+    while head is not None and head.kind == CursorKind.UNEXPOSED_EXPR:
+        head = next(iter(head.get_children()), None)
+    if head is None or head.kind not in (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR):
+        return False
+    spelled = "".join(t.spelling for t in head.get_tokens())
+    return "::" not in spelled.rsplit(".", 1)[-1].rsplit("->", 1)[-1]
 
 
 def overridden(method: Cursor, depth: int = 0) -> list[Cursor]:

@@ -42,7 +42,7 @@ from .call_conditions import (
     RUNS_WHEN_CALLED,
     SITE_UNDER,
 )
-from .call_sites import CallSites, argument
+from .call_sites import CallSites, argument, virtual_call
 from .handles import Namespaces, is_handle, join_name, normalise
 from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
 
@@ -98,6 +98,10 @@ DEFINED = -16
 # a global handle (a variable's USR) that the unit's own source writes once
 # (``global_facts``), which another unit declares ``extern`` and never writes
 MEMBER = -17
+# the index of a fact that says the call site (the fact's site) calls the virtual method
+# (the fact's USR) by its class's name, ``Base::setup(nh)``: it runs that method alone,
+# not the methods overriding it (no site of theirs for ``OVERRIDES``)
+QUALIFIED = -19
 # the start of a ``PrimitiveCall.built_in`` that names a class (by its USR), not a
 # constructor: a method's calls exist where objects of the class are built, under the
 # conditions every construction of it in the node's files shares (``_built_under``)
@@ -113,7 +117,7 @@ WITHIN = -18
 TYPE_ARGUMENT = 1000
 # facts that say no call of their function
 NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
-                       OPAQUE, DEFINED, MEMBER, WITHIN})
+                       OPAQUE, DEFINED, MEMBER, WITHIN, QUALIFIED})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 # realsense2_camera's setParam is called with ~30 names in its files, OrbbecSDK_ROS2's
@@ -167,6 +171,9 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                         facts.append((usr, LITERAL, str(index), site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
+            if callee.kind == CursorKind.CXX_METHOD and callee.is_virtual_method() and (
+                    call.kind == CursorKind.CALL_EXPR and not virtual_call(call)):
+                facts.append((usr, QUALIFIED, "", site))
             within = caller.canonical.get_usr() if (
                 caller.kind == CursorKind.CONSTRUCTOR and not sites.callers(caller)) else ""
             if within:
@@ -482,6 +489,14 @@ class NodeFacts:
         return idle
 
     @functools.cached_property
+    def host_callable(self) -> frozenset[str]:
+        """The virtual methods a host may call through a base class they override, with
+        the one string they take (``HOST_NAMED``), whether the node's code calls them or
+        not (``hosted`` keeps those it does not)."""
+        return frozenset(usr for usr, index, bases, _site in self.facts
+                         if index == HOST_NAMED and bases)
+
+    @functools.cached_property
     def hosted(self) -> dict[tuple[str, int], str]:
         calling = self.called | {fact[0] for fact in self.facts if fact[1] == CALLED_VIRTUAL}
         return {(usr, int(site)): " ".join(dict.fromkeys(
@@ -513,6 +528,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     unbuilt = constructor_unbuilt(known, unseen)
     unrun = never_run(known, unseen)
     idle = known.idle(unseen)
+    host_called = known.host_callable
     for call in calls:
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
@@ -568,7 +584,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
-        for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle):
+        for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle, host_called):
             filled, _, camera_filled = filled.partition(_CAMERA_SPLIT)
             filled, _, type_filled = filled.partition(_TYPE_SPLIT)
             filled, _, node_filled = filled.partition(_NODE_SPLIT)
@@ -908,14 +924,16 @@ def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
             passed.setdefault(usr, {}).setdefault(site, {})[index] = value
         elif index == MEMBER:  # a member's value where its constructors are
             passed.setdefault(usr, {}).setdefault(site, {})[0] = value
+    qualified = {(usr, site) for usr, index, _value, site in facts if index == QUALIFIED}
     for usr, index, base, parameter in facts:
         if index == OVERRIDES and base in passed and parameter.isdigit():
             # the calls of the base method: sites of the override too, for that
             # parameter (a site that passes the override's own placeholder back, a
-            # recursive group of analyzers, is a chain of any length: ``_expand``)
+            # recursive group of analyzers, is a chain of any length: ``_expand``), but
+            # a call that names the base method's class, which runs that one alone
             mine = passed.setdefault(usr, {})
             for site, values in passed[base].items():
-                if int(parameter) in values:
+                if int(parameter) in values and (base, site) not in qualified:
                     mine.setdefault(site, {})[int(parameter)] = values[int(parameter)]
     literal = {(usr, site, value) for usr, index, value, site in facts if index == LITERAL}
     for usr, index, base, parameter in facts:
@@ -936,7 +954,8 @@ def marked_usrs(text: str) -> set[str]:
 def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             depth: int, unbuilt: Callable[[str], bool] | None = None,
             unrun: Callable[[str], bool] | None = None,
-            idle: Callable[[str], bool] | None = None) -> list[str]:
+            idle: Callable[[str], bool] | None = None,
+            hosted: Collection[str] = ()) -> list[str]:
     """``text`` with its placeholders filled: the placeholders of one function take the
     values of the same call site together (``attach(n, "left")``, ``attach(base,
     "right")`` never give ``base/left``). A value that a caller takes from a parameter of
@@ -945,7 +964,12 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     of a class the nodelet does not build); nor does one of a function ``unrun`` says
     nothing in the node calls or uses (``never_run``), at any depth: the call itself, or
     the value a caller passes on, is never made; nor does a call site ``idle`` says is
-    in code the node never runs (``NodeFacts.idle``), unless every site is."""
+    in code the node never runs (``NodeFacts.idle``), unless every site is. A virtual
+    method of ``hosted`` (one a host may call through a base class it overrides,
+    ``NodeFacts.host_callable``) whose calls in the node give nothing is the host's to
+    call, with a value not known here: navfn's plugin ``NavfnROS::initialize(name,
+    costmap_ros)``, called in its own file only by a constructor the host never runs,
+    hands its ``name`` to the overload that makes every call (``~<name>/plan``)."""
     match = _MARK.search(text)
     if match is None:
         return [choose(text)]
@@ -959,9 +983,22 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
         return []
     if not sites and depth < MAX_DEPTH and unrun is not None and unrun(usr):
         return []
+    out = _at_sites(text, usr, items or [("", {})], passed, depth, unbuilt, unrun, idle,
+                    hosted)
+    if not out and items and usr in hosted and depth < MAX_DEPTH:
+        out = _at_sites(text, usr, [("", {})], passed, depth, unbuilt, unrun, idle, hosted)
+    return out
+
+
+def _at_sites(text: str, usr: str, items: list[tuple[str, dict[int, str]]],
+              passed: dict[str, dict[str, dict[int, str]]], depth: int,
+              unbuilt: Callable[[str], bool] | None, unrun: Callable[[str], bool] | None,
+              idle: Callable[[str], bool] | None, hosted: Collection[str]) -> list[str]:
+    """``_expand``'s values of ``text`` with ``usr``'s placeholders filled at each of
+    the call sites ``items`` (site, values by parameter index), then the rest."""
     out: list[str] = []
     mark = f"{_SITE_OF}{usr}{_SITE_OF}"  # the site of this function's call, asked for
-    for site, values in items or [("", {})]:
+    for site, values in items:
         here = text.replace(mark, f"{_SITE_AT}{site}{_SITE_OF}") if mark in text else text
         def fill(found: re.Match[str], values: dict[int, str] = values) -> str:
             if found.group(1) != usr:
@@ -972,7 +1009,7 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in marked_usrs(value) else value
         for filled in _expand(_MARK.sub(fill, here), passed, depth + 1, unbuilt, unrun,
-                              idle):
+                              idle, hosted):
             if filled not in out:
                 out.append(filled)
             if len(out) > MAX_VALUES:  # no more work: the values of placeholders
