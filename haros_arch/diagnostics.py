@@ -683,13 +683,16 @@ CATALOGUE: dict[str, Entry] = {
         "the node is 'partial' and checks that claim something is absent do not decide "
         "on it, rather than take a robot's whole base for a node with no interface."),
     "PY_RUNS_ROS_TOOL": Entry(
-        "info", "{call} runs rosrun or roslaunch at run time; the nodes it starts are "
-        "not read",
-        "A Python program runs a command that starts ROS nodes (``subprocess.call(["
-        "'rosrun', 'rviz', 'rviz', '-d', path])``, ``os.system('roslaunch ...')``): "
-        "Doosan's dmodel.py writes an rviz configuration and starts rviz so. The nodes "
-        "it starts are decided at run time, so the node is 'partial' and checks that "
-        "claim something is absent do not decide on it."),
+        "info", "{call} runs rosrun, roslaunch, rosbag, rqt_bag or ros2 at run time; "
+        "the nodes it starts, or the topics a bag it plays holds, are not read",
+        "A Python program runs a command that starts ROS nodes or plays a bag "
+        "(``subprocess.call(['rosrun', 'rviz', 'rviz', '-d', path])``, "
+        "``os.system('roslaunch ...')``, ``rosbag play`` with the remaps the program was "
+        "given): Doosan's dmodel.py writes an rviz configuration and starts rviz so, "
+        "spencer_bagfile_tools' play.py plays the recorded bags. What it starts or "
+        "publishes is decided at run time, so the node is 'partial' and checks that "
+        "claim something is absent (a remap that changes no name too) do not decide on "
+        "it."),
     "PY_DYNAMIC_IMPORT": Entry(
         "info", "{call} imports a module whose name is computed at run time ({name}); "
         "its code is not read",

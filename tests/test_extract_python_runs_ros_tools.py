@@ -41,3 +41,30 @@ def test_rosparam_imported_from_ros_is_rosparam(tmp_path) -> None:
     result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
     assert [(c.kind, c.name) for c in result.calls] == [
         ("read", "?"), ("write", "/model/ready")]
+
+
+PLAYER = """#!/usr/bin/env python
+import subprocess, sys
+import rospy
+
+rospy.init_node('player')
+bag = rospy.get_param('~bag')
+remaps = [a for a in sys.argv[1:] if ':=' in a]
+subprocess.call(['rosbag', 'info', '--yaml', bag])
+subprocess.call(['rosbag', 'record', '-a'])
+subprocess.call(' '.join(['rosbag play', '--clock', bag] + remaps), shell=True)
+subprocess.Popen(['ros2', 'bag', 'play', bag])
+subprocess.Popen(['ros2', 'bag', 'info', bag])
+subprocess.Popen(['ros2', 'run', 'demo_nodes_cpp', 'talker'])
+subprocess.Popen(['rqt_bag', bag])
+"""
+
+
+def test_a_command_that_plays_a_bag_is_said_and_one_that_reads_it_is_not(tmp_path) -> None:
+    # spencer_bagfile_tools' play.py runs ``rosbag play`` with the remaps it is given:
+    # what it publishes is the bag's; ``rosbag info`` and ``record`` publish nothing
+    source = tmp_path / "player.py"
+    source.write_text(PLAYER)
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    said = [d.location.line for d in result.diagnostics if d.code == "PY_RUNS_ROS_TOOL"]
+    assert said == [10, 11, 13, 14]

@@ -219,6 +219,13 @@ class Evaluator(Instances, QoSProfiles, Walker):
                 return Value.of(text_of(left), text_of(right))
             if isinstance(left, Seq) and isinstance(right, Seq):
                 return Seq(left.items + right.items)
+            # a list grown by one not known: its known items, then what is not known,
+            # one item standing for the rest (``['rosbag play', bag] + remaps`` keeps
+            # its first words: spencer_bagfile_tools' play.py)
+            if isinstance(left, Seq) and isinstance(right, Unknown):
+                return Seq((*left.items, right))
+            if isinstance(left, Unknown) and isinstance(right, Seq):
+                return Seq((left, *right.items))
         if isinstance(expr.op, ast.Mod) and isinstance(left, Value):
             items = right.items if isinstance(right, Seq) else (right,)
             return percent(left, items)

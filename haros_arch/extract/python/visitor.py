@@ -1174,19 +1174,22 @@ class Walker:
         self._classes_said[target.qualname] = self._where(frame, call)
 
     def _runs_ros_tool(self, call: ast.Call, frame: Frame) -> bool:
-        """Whether a subprocess call's command (a list's first word, or a string's)
-        is roslaunch or rosrun, which start nodes (Doosan's dmodel.py writes an rviz
-        configuration and runs ``['rosrun', 'rviz', 'rviz', '-d', path]``)."""
+        """Whether a subprocess call's command (a list's words, or a string's) starts
+        nodes or plays a bag (``_starts_nodes``: Doosan's dmodel.py writes an rviz
+        configuration and runs ``['rosrun', 'rviz', 'rviz', '-d', path]``;
+        spencer_bagfile_tools' play.py runs ``rosbag play`` with the remaps it was
+        given)."""
         given = call.args[0] if call.args else next(
             (k.value for k in call.keywords if k.arg == "args"), None)
         if given is None or isinstance(given, ast.Starred):
             return False
         value = self.evaluator.eval(given, frame)
         if isinstance(value, Seq):
-            value = value.items[0] if value.items else None
-        text = text_of(value).text.strip() if value is not None else ""
-        word = text.split()[0] if text else ""
-        return word.rsplit("/", 1)[-1] in _ROS_TOOLS
+            words = [text_of(item).text.strip() for item in value.items[:3]]
+        else:
+            words = (text_of(value).text.strip() if value is not None else "").split()[:3]
+        return _starts_nodes([w.rsplit("/", 1)[-1] if i == 0 else w
+                              for i, w in enumerate(" ".join(words).split()[:3])])
 
     def _dynamic_import(self, function: str, call: ast.Call, frame: Frame) -> None:
         """Say where the program imports a module whose name it computes at run time
@@ -1243,7 +1246,23 @@ class Walker:
 # the functions that run a command, and the commands that start ROS nodes
 _SUBPROCESSES = frozenset({"subprocess.call", "subprocess.check_call", "subprocess.run",
                            "subprocess.Popen", "subprocess.check_output", "os.system"})
-_ROS_TOOLS = frozenset({"rosrun", "roslaunch"})
+_ROS_TOOLS = frozenset({"rosrun", "roslaunch", "rqt_bag"})
+
+
+def _starts_nodes(words: list[str]) -> bool:
+    """Whether a command line's first words start ROS nodes or publish: rosrun,
+    roslaunch, rqt_bag, ``rosbag play`` (not ``rosbag info`` or ``record``, which
+    publish nothing), ``ros2 run``, ``ros2 launch``, ``ros2 bag play``."""
+    first = words[0] if words else ""
+    second = words[1] if len(words) > 1 else ""
+    if first in _ROS_TOOLS:
+        return True
+    if first == "rosbag":
+        return second == "play"
+    if first == "ros2":
+        return second in ("run", "launch") or (
+            second == "bag" and len(words) > 2 and words[2] == "play")
+    return False
 
 
 # a module's attributes that tell where it is
