@@ -238,7 +238,7 @@ class CallSites:
         hold it with a placeholder: turtlebot3's ``TwistSubscriber``, built in one
         file, its header included by others) and of those given a placeholder, except
         the functions in ``done``."""
-        from .handles import is_handle
+        from .handles import is_handle  # (handles imports this module)
 
         defined = {key_of(f.canonical) for f in self.functions
                    if self.main is None or _defined_in(f) == self.main}
