@@ -634,3 +634,37 @@ def generate_launch_description():
                "callable" in m for m in said), said
     assert not any("not known statically" in m and "image_color" in m for m in said)
     assert [n.name for n in model.nodes] == ["/handled"]
+
+
+def test_eval_of_a_known_text_is_its_value_never_run(write_tree):
+    # yolo_ros 2553d0a: ``use_tracking = eval(context.perform_substitution(use_tracking))``
+    # in an OpaqueFunction, then ``IfCondition(PythonExpression([str(use_tracking)]))``
+    model, _ = run(write_tree, """
+def setup(context, use_tracking, use_3d):
+    use_tracking = eval(context.perform_substitution(use_tracking))
+    use_3d = eval(context.perform_substitution(use_3d))
+    size = eval("2 * 3")
+    return [
+        Node(package='p', executable='tracker', name='tracker',
+             parameters=[{'size': size}],
+             condition=IfCondition(PythonExpression([str(use_tracking)]))),
+        Node(package='p', executable='detect', name='detect',
+             condition=IfCondition(PythonExpression([str(use_3d)]))),
+        Node(package='p', executable='odd', name='odd',
+             parameters=[{'v': eval(os.environ.get('NOT_SET', '__import__("os")'))}]),
+    ]
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('use_tracking', default_value='True'),
+        DeclareLaunchArgument('use_3d', default_value='False'),
+        OpaqueFunction(function=setup, args=[LaunchConfiguration('use_tracking'),
+                                             LaunchConfiguration('use_3d')]),
+    ])
+""")
+    assert sorted(n.name for n in model.nodes) == ["/odd", "/tracker"]
+    params = {p.name: p.value for p in model.params}
+    assert params["/tracker/size"] == 6
+    # a text that is no expression of the subset (a call of __import__) stays unknown
+    assert "/odd/v" not in params or params["/odd/v"] is None
+    assert "LAUNCH_PY_UNSUPPORTED" in codes(model)

@@ -24,6 +24,7 @@ from ...model.conditions import exit_event
 from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown, Value
 from ...share import install_prefix
+from .. import expression
 from . import entities as e
 from .naming import yaml_value
 from .python import Interpreter
@@ -334,6 +335,21 @@ def executable_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any
 
 def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return e.Eval(to_text(arg(a, k, 0, "expression", default=[])))
+
+
+def eval_text(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """Python's ``eval`` of a text known here, with no names of the file's own: the
+    value the one expression evaluator gives it, as ``PythonExpression`` (yolo_ros' launch
+    file reads its boolean arguments with ``eval(context.perform_substitution(...))``);
+    never run as code. Any other (a text not known, globals or locals given) is not
+    known."""
+    source = a[0] if a else k.get("source")
+    if len(a) > 1 or set(k) - {"source"} or not isinstance(source, str):
+        return i.unsupported(n, "eval of a value not known statically")
+    result = expression.evaluate(source, None, {**expression.BUILTINS, **expression.MATH})
+    if isinstance(result, expression.Unknown):
+        return i.unsupported(n, f"eval of {source!r}: {result.reason}")
+    return result
 
 
 def logic(op: str, count: int) -> Builder:
@@ -972,6 +988,7 @@ API: dict[str, Builder] = {
     "process_file": xacro_process_file, "process": xacro_process,
     "xacro.parse": xacro_parse, "xacro.process_doc": xacro_process_doc,
     "load_python_launch_file_as_module": module_of_file, "getattr": get_attribute,
+    "eval": eval_text,
 }
 # methods of the values the interpreter knows, by name (``python_methods``), nav2's,
 # robotnik_common's and moveit_configs_utils'
@@ -979,6 +996,6 @@ METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS
                               **MOVEIT_METHODS}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open", "getattr", "type"))
+                      "isinstance", "all", "any", "open", "getattr", "type", "eval"))
 
 
