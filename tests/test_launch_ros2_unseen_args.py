@@ -188,7 +188,7 @@ def generate_launch_description():
         (line_of(body, "with open(urdf)"), "open(urdf): open() other than for reading a "
                                            "known path is not run"),
         (line_of(body, "where_is_it"), "name where_is_it is not defined here"),
-        (line_of(body, "eval("), "name eval is not defined here")]
+        (line_of(body, "eval("), "eval of 'make_node': name 'make_node' is not defined")]
     assert found(model, "LAUNCH_UNSUPPORTED") == []
     # never run, as a ROS 1 command= is not: an unknown value, not a construct not read
     assert (line_of(body, "name='b'"), 'command "xacro /nowhere/r.xacro" is not run; what '
