@@ -680,6 +680,27 @@ class Scope:
             value = self._agreed(before, where, depth)
         return value
 
+    def held_before(self, decl: Cursor, at: Cursor) -> tuple[bool, Cursor | None]:
+        """Whether local ``decl`` is written with a value (an assignment, not an
+        argument passed by reference) before ``at`` reads it, by a write that runs
+        whenever the read does (``double v; v = -0.1; ... getParam("x", v);``), and that
+        value when no other write of it (a reference passed to a call, a branch's) may
+        come between them."""
+        _ = self.writes  # read from the body together
+        placed = self._placed.get(key_of(decl))
+        if not placed or self.body is None or not self.holds(at.extent.start):
+            return False, None
+        where = at.extent.start.offset
+        sure = [(start, end, value) for start, end, value in placed
+                if end <= where and value is not None and not self._may_skip(start, where)]
+        if not sure:
+            return False, None
+        _start, end, value = max(sure, key=lambda write: write[1])
+        # any other use of it between (a write, or a reference a call may write)
+        between = any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced == decl
+                      and end < node.extent.start.offset < where for node in _walk(self.body))
+        return True, None if between else value
+
     def _reaching(self, decl: Cursor, at: Cursor
                 ) -> tuple[list[tuple[int, int, Cursor | None]], int] | None:
         """The writes of local ``decl`` that end before ``at`` reads it, and where it

@@ -3647,6 +3647,14 @@ def _kept_value(out: Cursor, scope: Scope) -> tuple[bool, object]:
         ):
             zero = _ZEROED[decl.type.get_canonical().kind]
             return True, zero
+        elif init is None and not member and (held := scope.held_before(decl, target))[0]:
+            # a local declared bare and written before the read, whatever runs
+            # (base_local_planner's ``backup_vel = -0.1;`` then ``getParam("backup_vel",
+            # backup_vel)`` and ``getParam("escape_vel", backup_vel)``): the value of the
+            # last write when nothing else may write it between
+            if held[1] is None:
+                return True, None
+            value = held[1]
     elif decl.kind == CursorKind.FIELD_DECL:
         found = scope.field(decl, initial=True)  # what it holds before the read
         if found is not None:
