@@ -29,7 +29,7 @@ def test_defaults_and_searches(tmp_path):
     source.write_text(SOURCE)
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     got = [(c.name, c.has_default, c.default, c.searched) for c in result.calls]
-    assert got == [("~rate", True, None, False), ("~n", True, 3, False),
+    assert got == [("~rate", True, 0.5, False), ("~n", True, 3, False),
                    ("~frame", True, "base_link", False), ("~on", True, True, False),
                    ("~plain", False, None, False), ("~robot_model", False, None, True)]
 
@@ -193,7 +193,7 @@ def test_a_read_into_a_variable_that_holds_a_value_has_that_default(tmp_path):
     got = {c.name: (c.has_default, c.default) for c in result.calls}
     assert got == {"~lazy": (True, False), "~unreliable": (True, False),
                    "~count": (False, None), "~name": (False, None),
-                   "~rate": (True, None), "~frame": (False, None)}
+                   "~rate": (True, 2.0), "~frame": (False, None)}
 
 
 STATIC_MEMBERS = """
@@ -275,7 +275,7 @@ def test_a_template_argument_written_is_the_type_read(tmp_path):
     the string literal converted to bool, a pointer that is not null: true. The literal's
     own type (str) made a false parameter-type-mismatch with the launch file's bool;
     ``param<double>("rate", 10)`` reads a double whose default is 10.0 (a double literal
-    keeps no default value, as before)."""
+    is its value: ``param<int>("count", 2.5)``'s default is 2, as C++ converts it)."""
     source = tmp_path / "n.cpp"
     source.write_text(
         "#include <ros/ros.h>\n#include <string>\n"
@@ -290,8 +290,8 @@ def test_a_template_argument_written_is_the_type_read(tmp_path):
         "  return 0;\n}\n")
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     got = [(c.name, c.type, c.default) for c in result.calls]
-    assert got == [("~tool", "bool", True), ("~rate", "double", 10.0), ("~count", "int", None),
-                   ("~frame", "str", "map"), ("~gain", "double", None), ("/on", "bool", False)]
+    assert got == [("~tool", "bool", True), ("~rate", "double", 10.0), ("~count", "int", 2),
+                   ("~frame", "str", "map"), ("~gain", "double", 1.5), ("/on", "bool", False)]
     assert [type(c.default) for c in result.calls[:2]] == [bool, float]
 
 
@@ -382,3 +382,40 @@ def test_a_variable_written_twice_given_to_a_wrapper_that_adds_text(tmp_path):
     result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
     assert [(c.location.line, c.kind, c.name) for c in result.calls] == [
         (16, "publish", "robot/state")]
+
+
+NUMBERS = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+const double kRate = 2.5;
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "n");
+  ros::NodeHandle nh("~");
+  double a, b, c, d, e;
+  int f;
+  nh.param("a", a, 0.5);
+  nh.param("b", b, -0.1);
+  nh.param("c", c, 1e-3);
+  nh.param("d", d, kRate);
+  nh.param("e", e, 2.0f);
+  nh.param("f", f, -3);
+  ros::Publisher p;
+  if (b < 0.0)
+    p = nh.advertise<std_msgs::String>("negative", 1);
+  ros::spin();
+  return 0;
+}
+"""
+
+
+def test_a_floating_or_signed_default_is_its_value(tmp_path):
+    """A default written as a floating literal (``0.5``, ``1e-3``, ``2.0f``), signed
+    (``-0.1``, ``-3``) or held by a constant (``kRate``) is its value: a condition on the
+    parameter (``if (b < 0.0)``) is decided by it where nothing sets it. They were kept
+    with no value (only booleans, unsigned integers, strings and lists were read)."""
+    source = tmp_path / "n.cpp"
+    source.write_text(NUMBERS)
+    result = extract_cpp([str(source)], Workspace(root=str(tmp_path)), cache_dir=None)
+    got = {c.name: c.default for c in result.calls if c.kind == "read"}
+    assert got == {"~a": 0.5, "~b": -0.1, "~c": 0.001, "~d": 2.5, "~e": 2.0, "~f": -3}
+    assert [type(got[k]) for k in ("~a", "~f")] == [float, int]

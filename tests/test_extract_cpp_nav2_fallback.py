@@ -307,7 +307,7 @@ class N : public rclcpp::Node {
 };
 """)
     assert [(c.name, c.type, c.has_default, c.default) for c in result.calls] == [
-        ("gain", "double", True, None), ("frame", "str", True, "odom"),
+        ("gain", "double", True, 0.5), ("frame", "str", True, "odom"),
         ("enabled", "bool", True, True), ("ids", "int[]", False, None),
         ("rate", "double", False, None)]
 

@@ -65,7 +65,7 @@ def test_base_class_member_templates_are_calls_at_the_call_site(radar: CppResult
 def test_parameter_wrapper_with_a_default(radar: CppResult) -> None:
     declared = {c.name: (c.type, c.has_default, c.default, c.location.line)
                 for c in radar.calls if c.kind == "declare"}
-    assert declared["range"] == ("double", True, None, 46)  # 40.0: a float, not read
+    assert declared["range"] == ("double", True, 40.0, 46)
     assert declared["frame_id"] == ("str", True, "radar_link", 47)
     reads = {c.name for c in radar.calls if c.kind == "read"}
     assert {"range", "frame_id"} <= reads  # has_parameter / get_parameter in the wrapper

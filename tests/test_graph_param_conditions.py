@@ -446,7 +446,7 @@ def test_a_default_assigned_when_the_read_fails_is_no_other_write(write_tree):
                          cache_dir=None)
     assert {c.name: (c.variable, c.default) for c in result.calls if c.kind == "read"} == {
         "~use_mag": ("use_mag_", True), "~publish_debug": ("debug_", False),
-        "~gain": (None, None)}
+        "~gain": (None, 0.1)}
     config = _config(root)
     links = {(link.node.name, link.kind, link.rosname.full): [c.text for c in link.conditions]
              for link in config.links if link.kind in ("publish", "subscribe")}

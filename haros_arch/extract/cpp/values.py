@@ -244,6 +244,8 @@ _RESOLVERS: dict[tuple[str, str], int] = {
     ("NodeTopicsInterface", "resolve_topic_name"): 1}
 _ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
 _TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
+# a floating literal as written, its suffix (``f``, ``L``) left out
+_FLOAT = re.compile(r"((?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?)[fFlL]?")
 _INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
 
 
@@ -1480,6 +1482,48 @@ class Scope:
             return self._int_token(self.macros[token], depth + 1)
         match = _INT.fullmatch(token)
         return int(match.group(1), 0) if match else None
+
+    def number(self, cursor: Cursor, depth: int = 0) -> int | float | None:
+        """A number written as a literal (an integer's as ``integer``, a floating one's
+        text, ``2.5``, ``1e-3``, ``0.5f``), signed (``-0.1``), or held by a variable or
+        member that holds one; None otherwise."""
+        if depth > MAX_DEPTH:
+            return None
+        cursor = strip(cursor)
+        kind = cursor.kind
+        if kind == CursorKind.INTEGER_LITERAL:
+            return self.integer(cursor)
+        if kind == CursorKind.FLOATING_LITERAL:
+            where = cursor.extent
+            text = self.source.get(where.start.file.name) if where.start.file else None
+            if text is None or where.end.file is None or (
+                    where.end.file.name != where.start.file.name):
+                return None
+            written = text[where.start.offset:where.end.offset].decode("ascii", "replace")
+            match = _FLOAT.fullmatch(written.strip())
+            return float(match.group(1)) if match else None
+        if kind == CursorKind.UNARY_OPERATOR:
+            children = list(cursor.get_children())
+            if len(children) != 1:
+                return None
+            where = cursor.location.file
+            head = self.source.get(where.name, b"")[
+                cursor.extent.start.offset:children[0].extent.start.offset].strip() if (
+                where is not None) else b""
+            value = self.number(children[0], depth + 1)
+            if value is None or head not in (b"-", b"+"):
+                return None
+            return -value if head == b"-" else value
+        if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
+            decl = cursor.referenced
+            if decl is None or self.is_parameter(decl):
+                return None
+            value = self.variable(decl)
+            if value is None:
+                found = self.field(decl)
+                return None if found is None else found[1].number(found[0], depth + 1)
+            return self.number(value, depth + 1)
+        return None
 
     def boolean(self, cursor: Cursor) -> bool | None:
         cursor = strip(cursor)

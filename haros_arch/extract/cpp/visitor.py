@@ -3685,9 +3685,9 @@ def _converted(value: object, ptype: str | None) -> object:
 
 
 def _literal(expr: Cursor, scope: Scope) -> object:
-    """A default's value when it is a literal (a boolean, an integer, a known string, a
-    braced list of them), else None."""
-    for read in (scope.boolean, scope.integer):
+    """A default's value when it is a literal (a boolean, a number, signed or not, a
+    known string, a braced list of them), else None."""
+    for read in (scope.boolean, scope.integer, scope.number):
         value = read(expr)
         if value is not None:
             return value
