@@ -180,7 +180,7 @@ def definition_walk(folder: str) -> dict[str, str]:
         dirs[:] = [] if depth >= 2 else sorted(
             d for d in dirs if not d.startswith(".") and d not in ("test", "build"))
         for file in sorted(files):
-            if file.endswith((".msg", ".srv", ".action")):
+            if file.endswith((".msg", ".srv", ".action", ".idl")):
                 found.setdefault(file, os.path.join(here, file))
     return found
 
@@ -193,6 +193,12 @@ def definition_files(folder: str, kind: str,
     extension = "." + kind
     found = definition_walk(folder) if walked is None else walked
     chosen = {f: p for f, p in found.items() if f.endswith(extension)}
+    # an IDL file in the folder of its kind (``msg/Name.idl``) where no definition file
+    # of the name is: read as one (``parse_definition``)
+    for file, path in found.items():
+        named = file[:-len(".idl")] + extension
+        if file.endswith(".idl") and os.path.basename(os.path.dirname(path)) == kind:
+            chosen.setdefault(named, path)
     own = os.path.join(folder, kind)
     if os.path.isdir(own):
         chosen.update((f, os.path.join(own, f)) for f in os.listdir(own)
@@ -316,7 +322,10 @@ class Interface:
 
 
 def parse_definition(package: str, name: str, text: str) -> Interface:
-    """Fields of a .msg / .srv text; lines that are not fields are ignored."""
+    """Fields of a .msg / .srv text (or of the ROS 2 IDL a package may write instead,
+    ``idl_definition``); lines that are not fields are ignored."""
+    if _IDL_MODULE.search(text):
+        text = idl_definition(text, name)
     sections: list[list[Field]] = [[]]
     for raw in text.splitlines():
         line = raw.strip()
@@ -332,6 +341,66 @@ def parse_definition(package: str, name: str, text: str) -> Interface:
         sections[-1].append(Field(kind, fname, None if not array else "" if bounded else size,
                                   value.strip() if value is not None else None))
     return Interface(package, name, sections[:3])
+
+
+# the ROS 2 IDL a package may write its interfaces in (``msg/Name.idl``: rosidl's OMG IDL
+# subset; reference-system's reference_interfaces), read for the same fields
+_IDL_MODULE = re.compile(r"^\s*module\s+\w+\s*\{", re.MULTILINE)
+_IDL_COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.DOTALL)
+_IDL_ANNOTATION = re.compile(r"@\w+(?:\s*\((?:[^()]|\([^()]*\))*\))?")
+_IDL_STRUCT = re.compile(r"\bstruct\s+(\w+)\s*\{(.*?)\}\s*;", re.DOTALL)
+_IDL_CONSTANTS = re.compile(r"\bmodule\s+(\w+)_Constants\s*\{(.*?)\}\s*;", re.DOTALL)
+_IDL_CONSTANT = re.compile(r"const\s+(.+?)\s+(\w+)\s*=\s*(.+?)\s*;", re.DOTALL)
+_IDL_MEMBER = re.compile(r"(.+?)\s+(\w+)\s*(?:\[\s*(\d+)\s*\])?\s*;", re.DOTALL)
+_IDL_TYPES = {
+    "boolean": "bool", "octet": "byte", "char": "char", "wchar": "wchar",
+    "float": "float32", "double": "float64", "long double": "float64",
+    "short": "int16", "unsigned short": "uint16", "long": "int32",
+    "unsigned long": "uint32", "long long": "int64", "unsigned long long": "uint64",
+    "string": "string", "wstring": "wstring",
+}
+# the structs of a service's and an action's sections, in order
+_IDL_SECTIONS = (("",), ("_Request", "_Response"), ("_Goal", "_Result", "_Feedback"))
+
+
+def idl_definition(text: str, name: str) -> str:
+    """The .msg / .srv / .action text of the interface ``name`` that a ROS 2 IDL file
+    defines: the fields of ``struct Name`` (of ``Name_Request`` and ``Name_Response``,
+    or ``Name_Goal``, ``Name_Result`` and ``Name_Feedback``, as sections), each IDL type
+    as the definition writes it (``double`` float64, ``sequence<T, N>`` ``T[<=N]``,
+    ``string<N>`` ``string<=N``, ``pkg::msg::T`` ``pkg/T``, ``T x[N]`` ``T[N] x``),
+    and the constants of ``module Name_Constants``; annotations and comments left out."""
+    text = _IDL_ANNOTATION.sub(" ", _IDL_COMMENT.sub(" ", text))
+    structs = {m.group(1): m.group(2) for m in _IDL_STRUCT.finditer(text)}
+    constants = {m.group(1): m.group(2) for m in _IDL_CONSTANTS.finditer(text)}
+    suffixes = next((found for found in _IDL_SECTIONS[::-1]
+                     if all(name + suffix in structs for suffix in found)), ("",))
+    sections: list[str] = []
+    for suffix in suffixes:
+        lines = [f"{_idl_type(kind)} {const}={value}" for kind, const, value in
+                 _IDL_CONSTANT.findall(constants.get(name + suffix, ""))]
+        for kind, member, size in _IDL_MEMBER.findall(structs.get(name + suffix, "")):
+            written = _idl_type(kind)
+            if size:
+                written = f"{written}[{size}]"
+            lines.append(f"{written} {member}")
+        sections.append("\n".join(lines))
+    return "\n---\n".join(sections)
+
+
+def _idl_type(kind: str) -> str:
+    kind = " ".join(kind.split())
+    match = re.fullmatch(r"sequence\s*<\s*(.+?)\s*(?:,\s*(\d+)\s*)?>", kind)
+    if match:
+        inner = _idl_type(match.group(1))
+        return f"{inner}[<={match.group(2)}]" if match.group(2) else f"{inner}[]"
+    match = re.fullmatch(r"(w?string)\s*<\s*(\d+)\s*>", kind)
+    if match:
+        return f"{match.group(1)}<={match.group(2)}"
+    if "::" in kind:
+        parts = kind.split("::")
+        return f"{parts[0]}/{parts[-1]}"
+    return _IDL_TYPES.get(kind, kind)
 
 
 def dependencies(interface: Interface) -> list[str]:
