@@ -177,7 +177,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 place = _place(node)
                 # a virtual method called unqualified may run an override instead
                 virtual = callee.kind == CursorKind.CXX_METHOD and (
-                    callee.is_virtual_method()) and not _qualified(node)
+                    callee.is_virtual_method()) and not qualified_call(node)
                 by_caller.setdefault(_place(function), (function, {}))[1][place] = (
                     usr + (VIRTUAL if virtual else ""))
     for function, wanted in by_caller.values():
@@ -305,7 +305,7 @@ def hidden_facts(root: Cursor, owned: Callable[[str], bool],
                               if usr and name in words))
 
 
-def _qualified(call: Cursor) -> bool:
+def qualified_call(call: Cursor) -> bool:
     """Whether the call names its method with a class (``Base::init(...)``): no
     virtual dispatch then."""
     for child in call.get_children():

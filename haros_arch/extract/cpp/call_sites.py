@@ -317,8 +317,7 @@ class CallSites:
             if callee is None or callee.kind != CursorKind.CXX_METHOD or (
                     not callee.is_virtual_method()):
                 continue
-            params = [c for c in callee.get_children() if c.kind == CursorKind.PARM_DECL]
-            if sum(1 for p in params if msg_types.param_type(p.type) == "str") == 1:
+            if len(string_parameters(callee)) == 1:
                 found.add(callee.canonical.get_usr())
         return found
 
@@ -590,6 +589,13 @@ def base_keys(cls: Cursor, depth: int = 0, named: bool = False) -> set[tuple[str
     return found
 
 
+def string_parameters(function: Cursor) -> list[int]:
+    """The indices of ``function``'s string parameters."""
+    params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
+    return [index for index, parm in enumerate(params)
+            if msg_types.param_type(parm.type) == "str"]
+
+
 def _overriding(function: Cursor | None) -> bool:
     """Whether ``function`` is a virtual method overriding one of a base class, with one
     string parameter: a host may call it through that base with a value none of this
@@ -599,23 +605,7 @@ def _overriding(function: Cursor | None) -> bool:
     if function is None or function.kind != CursorKind.CXX_METHOD or (
             not function.is_virtual_method()):
         return False
-    strings = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL
-               and msg_types.param_type(c.type) == "str"]
-    return len(strings) == 1 and bool(overridden(function))
-
-
-def virtual_call(call: Cursor) -> bool:
-    """Whether ``call`` of a method is dispatched virtually: not one that names the
-    method's class (``Base::setup(nh)``, which calls that one alone)."""
-    if call.kind != CursorKind.CALL_EXPR:
-        return False
-    head = next(iter(call.get_children()), None)
-    while head is not None and head.kind == CursorKind.UNEXPOSED_EXPR:
-        head = next(iter(head.get_children()), None)
-    if head is None or head.kind not in (CursorKind.MEMBER_REF_EXPR, CursorKind.DECL_REF_EXPR):
-        return False
-    spelled = "".join(t.spelling for t in head.get_tokens())
-    return "::" not in spelled.rsplit(".", 1)[-1].rsplit("->", 1)[-1]
+    return len(string_parameters(function)) == 1 and bool(overridden(function))
 
 
 def overridden(method: Cursor, depth: int = 0) -> list[Cursor]:

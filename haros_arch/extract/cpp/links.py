@@ -41,8 +41,9 @@ from .call_conditions import (
     REFERENCED,
     RUNS_WHEN_CALLED,
     SITE_UNDER,
+    qualified_call,
 )
-from .call_sites import CallSites, argument, virtual_call
+from .call_sites import CallSites, argument, string_parameters
 from .handles import Namespaces, is_handle, join_name, normalise
 from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
 
@@ -172,7 +173,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
             if callee.kind == CursorKind.CXX_METHOD and callee.is_virtual_method() and (
-                    call.kind == CursorKind.CALL_EXPR and not virtual_call(call)):
+                    call.kind == CursorKind.CALL_EXPR and qualified_call(call)):
                 facts.append((usr, QUALIFIED, "", site))
             within = caller.canonical.get_usr() if (
                 caller.kind == CursorKind.CONSTRUCTOR and not sites.callers(caller)) else ""
@@ -204,8 +205,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
         params = [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
         facts.extend((usr, OVERRIDES, base, str(index)) for base in bases if base
                      for index, parm in enumerate(params) if is_handle(parm))
-        strings = [index for index, parm in enumerate(params)
-                   if msg_types.param_type(parm.type) == "str"]
+        strings = string_parameters(function)
         facts.extend((usr, STRING_OVERRIDES, base, str(index)) for base in bases if base
                      for index in strings)
         if len(strings) == 1 and function.is_virtual_method():
