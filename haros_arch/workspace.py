@@ -192,6 +192,17 @@ class Workspace:
                 return None
             folder = parent
 
+    def submodule_note(self, path: str) -> str | None:
+        """What a launch diagnostic says of ``path`` when it lies in a git submodule not
+        checked out here (``submodule_of``); None when it does not."""
+        sub = self.submodule_of(path)
+        if sub is None:
+            return None
+        folder, declared = sub
+        return (f"{self.relpath(path)} lies in the git submodule {folder} (declared at "
+                f"{declared}), which is not checked out here (git submodule update "
+                "--init); it is not read")
+
     def _submodules(self, folder: str) -> list[tuple[str, int]]:
         found = self._gitmodules.get(folder)
         if found is None:
@@ -250,14 +261,6 @@ class Workspace:
 # a submodule's ``path = <folder>`` line of a .gitmodules file (git's config syntax)
 _GITMODULE_PATH = re.compile(r"^\s*path\s*=\s*(\S(?:.*\S)?)\s*$")
 MAX_GITMODULES = 1 << 20
-
-
-def submodule_detail(path: str, submodule: tuple[str, str]) -> str:
-    """What a launch diagnostic says of a file ``path`` in a submodule not checked out
-    (``Workspace.submodule_of``)."""
-    folder, declared = submodule
-    return (f"{path} lies in the git submodule {folder} (declared at {declared}), which "
-            "is not checked out here (git submodule update --init); it is not read")
 
 
 def _has_entries(folder: str) -> bool:

@@ -24,7 +24,7 @@ from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchIt
 from ...model.location import Location
 from ...model.rosname import is_legal_name
 from ...model.values import Unknown, Value
-from ...workspace import Workspace, submodule_detail
+from ...workspace import Workspace
 from ..model import (
     LaunchModel,
     NodeDecl,
@@ -717,10 +717,9 @@ class Ros1Loader:
             return False
         location = self.where(parent, element) if parent else self.workspace.location(path)
         if parent is not None and element is not None and not os.path.isfile(path) and (
-                sub := self.workspace.submodule_of(path)) is not None:
+                note := self.workspace.submodule_note(path)) is not None:
             # in a git submodule not checked out: what it would start stays unknown
-            self.report("LAUNCH_UNKNOWN_VALUE", parent, element,
-                        detail=submodule_detail(self.workspace.relpath(path), sub))
+            self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=note)
             scope.item.kind = "include"  # the include that reached it, not read
             return False
         root = self.parse(path, location)

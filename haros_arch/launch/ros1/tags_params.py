@@ -19,7 +19,6 @@ from ...files import read_bytes
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.values import Value
-from ...workspace import submodule_detail
 from ..model import ParamDecl
 from ..partial_yaml import MARK, marked_text, unknown_parts
 from .params import Binary, ParamError, convert_value, flatten, join, load_yaml, type_name
@@ -119,9 +118,8 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
             f"{path} is outside the workspace and installed packages; it is not read"))
         return None
     if not os.path.isfile(path) and (
-            sub := loader.workspace.submodule_of(path)) is not None:
-        loader.report("LAUNCH_UNKNOWN_VALUE", scope, element,
-                      detail=submodule_detail(loader.workspace.relpath(path), sub))
+            note := loader.workspace.submodule_note(path)) is not None:
+        loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=note)
         return None
     if not os.path.isfile(path):
         loader.fail(scope, element, f"file does not exist: {loader.workspace.relpath(path)}")

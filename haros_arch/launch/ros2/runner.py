@@ -36,7 +36,7 @@ from ...model.launch_tree import (
 from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Unknown, Value
 from ...share import generated_at, share_source
-from ...workspace import Workspace, submodule_detail
+from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment, found_nowhere
 from ..partial_yaml import MARK, marked_text, unknown_parts
 from ..tree import node_items
@@ -358,11 +358,10 @@ class Runner:
                     f"(installed from the build folder at {self.workspace.relpath(made[0])}"
                     f":{made[1]}); it is not read"))
                 return
-            if (sub := self.workspace.submodule_of(path)) is not None:
+            if (note := self.workspace.submodule_note(path)) is not None:
                 scope.item.kind = "include"
                 self.not_seen(scope, where, f"the include of {self.workspace.relpath(path)}")
-                self.report("LAUNCH_UNKNOWN_VALUE", where,
-                            detail=submodule_detail(self.workspace.relpath(path), sub))
+                self.report("LAUNCH_UNKNOWN_VALUE", where, detail=note)
                 return
             self.report("LAUNCH_FILE_MISSING", where, path=self.workspace.relpath(path))
             return
@@ -857,9 +856,9 @@ class Runner:
                 f"parameter file {file} is outside the workspace and installed packages; "
                 "it is not read"))
             return None
-        if not os.path.lexists(file) and (sub := self.workspace.submodule_of(file)) is not None:
-            self.report("LAUNCH_UNKNOWN_VALUE", where,
-                        detail=submodule_detail(self.workspace.relpath(file), sub))
+        if not os.path.lexists(file) and (
+                note := self.workspace.submodule_note(file)) is not None:
+            self.report("LAUNCH_UNKNOWN_VALUE", where, detail=note)
             return None
         if not os.path.lexists(file):
             # said where the launch file gives it (not at a file that is not there):
