@@ -9,6 +9,8 @@ public:
   typedef T value_type;
   typedef T* iterator;
   typedef const T* const_iterator;
+  typedef T* reverse_iterator;  // a pointer, as the stand-in vector's (direction aside)
+  typedef const T* const_reverse_iterator;
   typedef T& reference;
   typedef const T& const_reference;
   typedef std::size_t size_type;
@@ -21,6 +23,10 @@ public:
   const_iterator begin() const;
   iterator end();
   const_iterator end() const;
+  reverse_iterator rbegin();
+  const_reverse_iterator rbegin() const;
+  reverse_iterator rend();
+  const_reverse_iterator rend() const;
   reference operator[](size_type i);
   const_reference operator[](size_type i) const;
   reference at(size_type i);

@@ -1636,6 +1636,9 @@ struct haros_manip {};
 haros_manip setprecision(int n);
 haros_manip setw(int n);
 haros_manip setfill(char c);
+haros_manip setiosflags(ios_base::fmtflags mask);
+haros_manip resetiosflags(ios_base::fmtflags mask);
+haros_manip setbase(int base);
 haros_manip put_time(const tm* t, const char* format);
 // C++14: a string written between delimiters (MoveIt's ``<< std::quoted(group)``)
 template<class S> haros_manip quoted(const S& s, char delim = '"', char escape = '\\');

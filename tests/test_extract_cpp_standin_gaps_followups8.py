@@ -1,0 +1,57 @@
+"""Stand-in gaps seen on robot_localization 1cb9533 (fiftieth session): ``std::setiosflags``
+(filter_utilities.cpp), a ``boost::circular_buffer`` walked backwards
+(robot_localization_estimator.cpp), ``Eigen::Translation3d`` times a quaternion
+(ros_robot_localization_listener.cpp: Translation3d is ``Translation<double, 3>``) and
+``applyOnTheLeft`` (ukf.cpp). Each left a C++ error in a function of the node, so a
+call after it could be missed."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+HEAD = "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+
+CASES = {
+    "setiosflags": (
+        "#include <iomanip>\n#include <sstream>\n",
+        "  std::stringstream out;\n"
+        "  out << std::setiosflags(std::ios::fixed) << std::setprecision(3) << 1.5\n"
+        "      << std::resetiosflags(std::ios::fixed) << std::setbase(16) << 10;\n"),
+    "circular_buffer_reverse": (
+        "#include <boost/circular_buffer.hpp>\n",
+        "  boost::circular_buffer<double> states(10);\n"
+        "  for (boost::circular_buffer<double>::const_reverse_iterator it = states.rbegin();\n"
+        "       it != states.rend(); ++it) ROS_INFO(\"%f\", *it);\n"),
+    "translation_times_quaternion": (
+        "#include <Eigen/Dense>\n#include <Eigen/Geometry>\n",
+        "  Eigen::Vector3d position(1.0, 2.0, 3.0);\n"
+        "  Eigen::Quaterniond orientation(1.0, 0.0, 0.0, 0.0);\n"
+        "  Eigen::Affine3d pose(Eigen::Translation3d(position) * orientation);\n"
+        "  Eigen::Translation3d shift(1.0, 0.0, 0.0);\n"),
+    "apply_on_the_left": (
+        "#include <Eigen/Dense>\n",
+        "  Eigen::MatrixXd transfer(3, 3);\n"
+        "  Eigen::VectorXd point(3);\n"
+        "  point.applyOnTheLeft(transfer);\n"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
+    include, body = CASES[case]
+    (tmp_path / "package.xml").write_text(package_xml("node"))
+    source = tmp_path / "node.cpp"
+    source.write_text(
+        HEAD + include + "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"node\");\n  ros::NodeHandle nh;\n" + body +
+        "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [(d.location.line, d.message) for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
+                          "CPP_INCLUDE_MISSING")] == []
+    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
