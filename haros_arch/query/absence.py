@@ -43,6 +43,13 @@ class Known:
         self.unread: list[LaunchItem] = [
             item for tree in config.launch_tree for item in tree.walk()
             if item.kind == "include" and not item.skipped]
+        # a configuration that starts no node (a ROS 1 launch file that only sets
+        # parameters, run beside the one that starts their nodes: m-explore's
+        # ``experiments/3-robots.ttt.launch``): what reads its parameters is elsewhere
+        # (a <test> that roslaunch leaves out is a node its file starts, under rostest)
+        self.elsewhere: list[LaunchItem] = [] if config.nodes else [
+            tree for tree in config.launch_tree if tree.kind == "file"
+            and not any(item.kind == "node" for item in tree.walk())]
         # ROS 1 dynamic_reconfigure servers: each reads and sets every field of its .cfg
         # under the namespace of the handle it is given (``N/set_parameters``,
         # ``N/parameter_updates``), names we do not read. Namespace -> serving nodes;
@@ -272,6 +279,7 @@ def _unknown_users(charge: Charge, config: Any, resource: Any, side: str | None 
     found: list[NodeInstance | Parameter | LaunchItem] = list(known.incomplete)
     found.extend(known.unread)
     if isinstance(resource, Parameter):
+        found.extend(known.elsewhere)
         owner = owner_of(config, resource)
         if owner is not None:
             found = [] if owner.is_complete else [owner]

@@ -402,7 +402,7 @@ def _undecided_finding(rule: Rule, undecided: list[tuple[Any, list[Any]]],
     why = rule.undecided_why or (
         "these could be the missing side unseen (nodes of partial or unknown interface, "
         "names with '?', dynamic_reconfigure servers, launch parameters not known "
-        "statically)")
+        "statically, nodes started beside a launch file that starts none)")
     reasons = ([f"{why}: {_named(nodes, counts)}"] if nodes else []) + (
         [f"{UNDECIDED_CONDITIONS}: {_named(conditions, counts)}"] if conditions else [])
     where = best_location(entities(undecided[0][0]))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from typing import Any
 
 from ..model.conditions import Condition
@@ -136,6 +137,8 @@ def label(item: Any) -> str:
         return f"executable {item.name}"
     if isinstance(item, Condition):  # where it is written: two alike are two places
         return f"{item} at {item.location}" if item.location.file else str(item)
+    if isinstance(item, LaunchItem) and item.kind == "file":  # absence.Known.elsewhere
+        return f"nodes started elsewhere ({os.path.basename(item.name)} starts none)"
     if isinstance(item, LaunchItem) and item.kind == "include":
         if item.detail == "action":
             return f"action not interpreted ({item.name})"
