@@ -55,3 +55,25 @@ def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
                           "CPP_INCLUDE_MISSING")] == []
     assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
+
+
+def test_a_logger_level_set_before_the_node_s_calls_leaves_no_error(tmp_path) -> None:
+    # m-explore 712bdd4's map_merge.cpp: ``ros::console::set_logger_level(
+    # ROSCONSOLE_DEFAULT_NAME, ros::console::levels::Debug)`` then
+    # ``ros::console::notifyLoggerLevelsChanged()`` at the top of main
+    (tmp_path / "package.xml").write_text(package_xml("node"))
+    source = tmp_path / "node.cpp"
+    source.write_text(
+        HEAD + "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"node\");\n"
+        "  if (ros::console::set_logger_level(ROSCONSOLE_DEFAULT_NAME,\n"
+        "                                     ros::console::levels::Debug)) {\n"
+        "    ros::console::notifyLoggerLevelsChanged();\n  }\n"
+        "  ros::console::Level level = ros::console::Warn;\n"
+        "  ros::NodeHandle nh;\n"
+        "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [(d.location.line, d.message) for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]

@@ -4,8 +4,14 @@
 #include <sstream>
 namespace ros { namespace console {
 void haros_log(const char* fmt, ...);
-enum Level { Debug, Info, Warn, Error, Fatal };
+// rosconsole's levels live in ros::console::levels (``levels::Debug``; m-explore's
+// map_merge), the enum also named ros::console::Level
+namespace levels { enum Level { Debug, Info, Warn, Error, Fatal, Count }; }
+typedef levels::Level Level;
+using levels::Debug; using levels::Info; using levels::Warn; using levels::Error;
+using levels::Fatal;
 bool set_logger_level(const std::string& name, Level level);
+void notifyLoggerLevelsChanged();
 } }
 // rosconsole's logger names (ROS_PACKAGE_NAME when the build defines it)
 #define ROSCONSOLE_ROOT_LOGGER_NAME "ros"
