@@ -456,6 +456,42 @@ def test_a_ros1_spawner_given_a_yaml_file_loads_it_and_spawns_its_controllers(tm
     assert rate.launch_location.line == 3
 
 
+def test_ros1_sensor_and_gripper_controllers_take_ros_controllers_models(tmp_path):
+    # ros_controllers' force_torque_sensor_controller, imu_sensor_controller and
+    # gripper_action_controller (UR's and Kinova's arms): not modelled, each was
+    # PLUGIN_NOT_FOUND and its host partial
+    root = tmp_path / "ros1"
+    shutil.copytree(ROS1, root)
+    (root / "bot_control" / "config" / "sensors.yaml").write_text(
+        "ft_controller:\n  type: force_torque_sensor_controller/ForceTorqueSensorController\n"
+        "  publish_rate: 100\n"
+        "imu_controller:\n  type: imu_sensor_controller/ImuSensorController\n"
+        "  publish_rate: 50\n"
+        "gripper_controller:\n  type: position_controllers/GripperActionController\n"
+        "  joint: finger\n")
+    (root / "bot_control" / "launch" / "sensors.launch").write_text(
+        '<launch>\n'
+        '  <param name="robot_description"'
+        ' command="xacro \'$(find bot_control)/urdf/arm.urdf.xacro\'"/>\n'
+        '  <node name="spawn_arm" pkg="gazebo_ros" type="spawn_model"\n'
+        '        args="-urdf -param robot_description -model arm"/>\n'
+        '  <rosparam file="$(find bot_control)/config/sensors.yaml" command="load"/>\n'
+        '  <node name="controller_spawner" pkg="controller_manager" type="spawner"\n'
+        '        args="ft_controller imu_controller gripper_controller"/>\n'
+        '</launch>\n')
+    config = configuration(str(root), "bot_control/launch/sensors.launch")
+    assert not [d for d in config.diagnostics if d.code.startswith("PLUGIN")]
+    gazebo = {(link.kind, link.resource.name) for link in config.links
+              if link.node.name == "/gazebo"}
+    assert {("read", "/ft_controller/publish_rate"), ("read", "/imu_controller/publish_rate"),
+            ("read", "/gripper_controller/joint"),
+            ("action-server", "/gripper_controller/gripper_cmd")} <= gazebo
+    for name in ("/ft_controller/publish_rate", "/gripper_controller/joint"):
+        parameter = config.parameter(name)
+        assert parameter is not None and [r.node.name for r in parameter.readers] == [
+            "/gazebo"]
+
+
 def test_a_gazebo_camera_publishes_the_topics_of_the_image_transport_plugins():
     config = configuration(ROS1, "bot_gazebo/launch/sim.launch", {"BOT_CAMERA": "1"})
     transports = sorted((link.node.name, link.resource.name, link.type,

@@ -105,6 +105,10 @@ LAUNCH = """<launch>
 
 
 def _config(write_tree: Any) -> Any:
+    return _model(write_tree, LAUNCH).configurations[0]
+
+
+def _model(write_tree: Any, launch: str) -> Any:
     xml = package_xml("quad", None).replace("</package>", "".join(
         f"<depend>{d}</depend>" for d in ("roscpp", "controller_manager", "controller_interface",
                                           "hardware_interface", "pluginlib", "std_msgs"))
@@ -123,12 +127,35 @@ def _config(write_tree: Any) -> Any:
             'base_class_type="controller_interface::ControllerBase"/></library>'),
         "src/quad/src/controller.cpp": CONTROLLER,
         "src/quad/src/base.cpp": HARDWARE,
-        "src/quad/launch/sim.launch": LAUNCH,
+        "src/quad/launch/sim.launch": launch,
         "project.yaml": ("project: p\nworkspace: [src]\ndistro: noetic\nconfigurations:\n"
                          "  c: {launch: [quad/launch/sim.launch]}\n")})
     model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
                     Options(cache_dir=None))
-    return model.configurations[0]
+    return model
+
+
+def test_the_type_of_a_controller_not_found_is_read_on_the_managers_handle(
+        write_tree: Any) -> None:
+    """UR's ROS 1 driver loads scaled_controllers, which are not in its workspace: the
+    manager's read of ``<controller>/type`` was written with the global name
+    (``/speed_scaling_state_controller/type``), a global-names info for a name the code
+    never writes. It is the manager's handle's relative name, as for a class found."""
+    from haros_arch.query import run_catalogue
+
+    launch = LAUNCH.replace(
+        '<node name="spawner" pkg="controller_manager" type="spawner" args="pose"/>',
+        '<param name="missing/type" value="vendor_controllers/Missing"/>\n'
+        '    <node name="spawner" pkg="controller_manager" type="spawner" '
+        'args="pose missing"/>')
+    model = _model(write_tree, launch)
+    config = model.configurations[0]
+    reads = [link for link in config.links if link.kind == "read"
+             and link.node.name == "/base" and link.resource.name.endswith("/type")]
+    assert sorted((link.resource.name, link.call.name) for link in reads) == [
+        ("/uav1/missing/type", "uav1/missing/type"), ("/uav1/pose/type", "uav1/pose/type")]
+    assert any(d.code == "PLUGIN_NOT_FOUND" for d in config.diagnostics)
+    assert [f.message for f in run_catalogue(model) if f.rule == "global-names"] == []
 
 
 def test_a_controllers_root_handle_is_its_managers_namespace(write_tree: Any) -> None:

@@ -1524,7 +1524,12 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
             reader = host
             if node is None and host is not None:
                 _missing(config, host, choice, owned)
-            elif node is None:
+                if typed is not None:  # the manager reads the class below its namespace,
+                    # on its root handle, as for a class found (UR's driver, whose
+                    # scaled_controllers are not in the workspace: no global name)
+                    out.append((host, [_class_read(typed, host, choice)]))
+                continue
+            if node is None:
                 config.diagnostics.append(_not_found(choice, spawner.name))
                 # a type named but not found: its own instance all the same, of unknown
                 # interface, as the controller runs and reads its parameters (unknown
@@ -1538,10 +1543,7 @@ def ros1_controllers(config: Configuration, started: Sequence[tuple[NodeDecl, No
                 out.append((host, [_under(_on_root(c, manager, host), _relative(
                     full, host.namespace), choice.conditions) for c in node.calls]))
                 if typed is not None:  # the manager reads the class, below its namespace
-                    out.append((host, [PrimitiveCall(
-                        "read", _relative(typed.name, host.namespace),
-                        location=choice.location,
-                        conditions=choice.conditions, origin="plugin")]))
+                    out.append((host, [_class_read(typed, host, choice)]))
                 continue
             else:
                 reader = _controller_instance(config, full, node, manager, choice)
@@ -1618,6 +1620,13 @@ def _on_root(call: PrimitiveCall, manager: str, host: NodeInstance) -> Primitive
         return call
     prefix = _relative(manager or "/", host.namespace)
     return replace(call, name=prefix.rstrip("/") + "/" + call.name)
+
+
+def _class_read(typed: Parameter, host: NodeInstance, choice: Choice) -> PrimitiveCall:
+    """A controller manager's read of a controller's ``type``, on its root handle."""
+    return PrimitiveCall("read", _relative(typed.name, host.namespace),
+                         location=choice.location, conditions=choice.conditions,
+                         origin="plugin")
 
 
 def _relative(full: str, namespace: str) -> str:
