@@ -77,3 +77,20 @@ def test_a_logger_level_set_before_the_node_s_calls_leaves_no_error(tmp_path) ->
     assert [(d.location.line, d.message) for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
     assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
+
+
+def test_glibc_s_sincos_leaves_no_error(tmp_path) -> None:
+    # hector_quadrotor 9ba4441's attitude_controller.cpp: ``sincos(yaw, &sin_yaw,
+    # &cos_yaw)`` (a GNU extension of <math.h>) beside its controller's calls
+    (tmp_path / "package.xml").write_text(package_xml("node"))
+    source = tmp_path / "node.cpp"
+    source.write_text(
+        HEAD + "#include <cmath>\nint main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"node\");\n  ros::NodeHandle nh;\n"
+        "  double s, c;\n  sincos(0.5, &s, &c);\n  float sf, cf;\n  sincosf(0.5f, &sf, &cf);\n"
+        "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
+    assert [(d.location.line, d.message) for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]

@@ -338,6 +338,9 @@ double trunc(double x);
 double fmod(double x, double y);
 double hypot(double x, double y);
 float hypotf(float x, float y);
+// glibc's GNU extension (hector_quadrotor's attitude controller: ``sincos(yaw, &s, &c)``)
+void sincos(double x, double* s, double* c);
+void sincosf(float x, float* s, float* c);
 double nan(const char* tag);
 float nanf(const char* tag);
 double copysign(double x, double y);
