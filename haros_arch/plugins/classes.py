@@ -256,6 +256,14 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                         sources += [s for s in built_sources(
                             sources, workspace, _with_linked(library))
                             if s not in sources]
+                    if kind == "plugin" and library.with_elsewhere is not None:
+                        # and the free functions of other packages' libraries it links
+                        # that its code calls: they take its handle as an argument
+                        # (abb_robot_driver's ``utilities::getParameter(controller_nh,
+                        # "publish_rate", ...)``); not a class's members, whose object
+                        # the host may give it with handles of its own
+                        sources += free_function_sources(sources, library.with_elsewhere,
+                                                         workspace)
                     if kind == "nodelet" and library.with_elsewhere is not None:
                         # and what it names of other packages' libraries it links:
                         # mrs_uav_managers' nodelets build mrs_lib's ParamLoader, whose
@@ -567,11 +575,45 @@ def defined_in(sources: Iterable[str], workspace: Files) -> set[str]:
 
 
 def _read_defined(source: str, workspace: Files) -> set[str]:
-    path = os.path.join(workspace.root, source)
-    text = at_namespace_scope(_text(path, workspace) or "")
-    functions = {name for name, rest in _FUNCTION.findall(text)
-                 if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
-    return {match.group(1) for match in _MEMBER.finditer(text)} | functions
+    return _members(source, workspace) | _free_functions(source, workspace)
+
+
+def _members(source: str, workspace: Files) -> set[str]:
+    """The classes whose members a source file defines."""
+    def compute() -> set[str]:
+        return {match.group(1) for match in _MEMBER.finditer(_scoped(source, workspace))}
+
+    return remembered("members", source, workspace, compute)
+
+
+def _free_functions(source: str, workspace: Files) -> set[str]:
+    """The free functions a source file defines."""
+    def compute() -> set[str]:
+        return {name for name, rest in _FUNCTION.findall(_scoped(source, workspace))
+                if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
+
+    return remembered("free functions", source, workspace, compute)
+
+
+def _scoped(source: str, workspace: Files) -> str:
+    return remembered("at namespace scope", source, workspace, lambda: at_namespace_scope(
+        _text(os.path.join(workspace.root, source), workspace) or ""))
+
+
+def free_function_sources(sources: list[str],
+                          with_elsewhere: Callable[[list[str]], list[str]],
+                          workspace: Files) -> list[str]:
+    """The files of other packages' libraries (``with_elsewhere``) that define a free
+    function the code of ``sources`` names and no member of a class it names."""
+    words = code_words(sources, workspace)
+    out: list[str] = []
+    for source in with_elsewhere(sources):
+        if source in sources:
+            continue
+        named = _defined(source, workspace) & words
+        if named and not named & _members(source, workspace):
+            out.append(source)
+    return out
 
 
 _BRACE = re.compile(r"[{};]")

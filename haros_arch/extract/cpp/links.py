@@ -290,10 +290,19 @@ def _literal(arg: Cursor, value: str) -> bool:
                    for node in arg.walk_preorder())
 
 
+# before a handle's namespace passed to another file's function: the handle is a ROS 1
+# controller's root handle (``handles.controller_root``), whose names its host's plugin
+# stage puts in its manager's namespace (hector_quadrotor's controllers hand ``root_nh``
+# to ``getMassAndInertia(nh, ...)`` of hector_quadrotor_interface's library, which reads
+# ``robot_description`` on it); only ``resolve`` keeps it, as ``root_handle``
+ROOT_MARK = "\x17"
+
+
 def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
            named: Callable[[Cursor, Scope], str | None] | None) -> str | None:
     if is_handle(arg):
-        return render(namespaces.of(arg, scope))
+        text = render(namespaces.of(arg, scope))
+        return ROOT_MARK + text if namespaces.root else text
     if msg_types.param_type(arg.type) == "str":
         parts = scope.string(arg)
         # only a string with one unknown run can hold a parameter's value with a mark
@@ -561,8 +570,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             if node_text is None:
                 out.append(filled_lists)
                 continue
-            out.extend(_on_each_node(filled_lists, _expand(
-                node_text, known.passed, 0, unbuilt, unrun, idle), known.within, unbuilt))
+            out.extend(_on_each_node(filled_lists, _rootless(_expand(
+                node_text, known.passed, 0, unbuilt, unrun, idle)), known.within, unbuilt))
             continue
         namespace = call.handle_namespace
         written = call.name
@@ -591,6 +600,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             filled, *lists_text = filled.split(_LIST_SPLIT)
             filled, _, param_text = filled.partition(_PARAM_SPLIT)
             ns, _, name = filled.partition(_SPLIT)
+            root = ROOT_MARK in ns
+            ns, name = ns.replace(ROOT_MARK, ""), name.replace(ROOT_MARK, "")
+            node_filled = node_filled.replace(ROOT_MARK, "")
+            param_text = param_text.replace(ROOT_MARK, "")
+            lists_text = [text.replace(ROOT_MARK, "") for text in lists_text]
+            type_filled = type_filled.replace(ROOT_MARK, "")
+            camera_filled = camera_filled.replace(ROOT_MARK, "")
             # (a parameter's mark in the namespace names the call, as one in the name
             # does: costmap_2d's ``ros::NodeHandle target_layer(nh, plugin_name)``)
             ns = _rejoined(ns) if ns else ""
@@ -600,6 +616,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 name = "~" + name[2:]
             made = dataclasses.replace(
                 call, name=join_name(marked, name) if ns else name,
+                root_handle=call.root_handle or (root and not name.startswith(("/", "~"))),
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
                 camera_of=call.camera_of if call.camera_of is None or (
                     PLACEHOLDER not in call.camera_of) else (
@@ -781,7 +798,8 @@ def _parameter_filled(param: str, passed: dict[str, dict[str, dict[int, str]]]) 
     namespace joined to the name, as the read's own name is (``~costmap_topic``); ``?``
     in its place when the callers pass several handles or none (``~?/plan_topic`` of a
     plugin's ``initialize(name)``, which its host names)."""
-    found = {_param_joined(filled) for filled in _expand(_param_text(param), passed, 0)}
+    found = {_param_joined(filled)
+             for filled in _rootless(_expand(_param_text(param), passed, 0))}
     value = found.pop() if len(found) == 1 else ""
     if value and PLACEHOLDER not in value:
         return value
@@ -874,8 +892,8 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
     if PLACEHOLDER not in name:
         return name
     known = facts if isinstance(facts, NodeFacts) else NodeFacts(facts)
-    found = _expand(name, known.passed, 0, constructor_unbuilt(known, unseen),
-                    idle=known.idle(unseen, naming=True))
+    found = _rootless(_expand(name, known.passed, 0, constructor_unbuilt(known, unseen),
+                              idle=known.idle(unseen, naming=True)))
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))
@@ -988,6 +1006,12 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     if not out and items and usr in hosted and depth < MAX_DEPTH:
         out = _at_sites(text, usr, [("", {})], passed, depth, unbuilt, unrun, idle, hosted)
     return out
+
+
+def _rootless(texts: list[str]) -> list[str]:
+    """``_expand``'s values without the root handle's mark (``ROOT_MARK``), for what is
+    no call's namespace."""
+    return [text.replace(ROOT_MARK, "") for text in texts]
 
 
 def _at_sites(text: str, usr: str, items: list[tuple[str, dict[int, str]]],
