@@ -125,13 +125,11 @@ def _parse_cmp(t: list[str]) -> tuple[bool, list[str]]:
     if op in ops:
         return ops[op], t[3:]
     if op in (">", "<", ">=", "<="):
-        a, b = _num(left), _num(right)
+        # as catkin_pkg (colcon, rosdep, bloom) compares: the texts, not numbers, and a
+        # variable not set is empty (tiago_2dnav's ``$PAL_DISTRO > 0``: false)
+        a, b = left, right
         return {">": a > b, "<": a < b, ">=": a >= b, "<=": a <= b}[op], t[3:]
     raise ValueError(op)
-
-
-def _num(text: str) -> tuple[int | str, ...]:
-    return tuple(int(p) if p.isdigit() else p for p in text.split("."))
 
 
 def _read_root(path: str, location: Location) -> tuple[Any, list[Diagnostic]]:

@@ -92,6 +92,12 @@ def test_rep149_conditions():
     assert condition_holds("($ROS_VERSION == 1 or $ROS_DISTRO == humble)", env) is True
     assert condition_holds("$ROS_VERSION >= 2", env) is True
     assert condition_holds("$ROS_VERSION ==", env) is None
+    # compared as texts, as catkin_pkg does; a variable not set is empty (tiago_2dnav
+    # 0959772's ``<exec_depend condition="$PAL_DISTRO > 0">``: an internal error before)
+    assert condition_holds("$PAL_DISTRO > 0", env) is False
+    assert condition_holds("$PAL_DISTRO > 0", {"PAL_DISTRO": "alum"}) is True
+    assert condition_holds("$ROS_DISTRO >= galactic", env) is True
+    assert condition_holds("$V < 9", {"V": "10"}) is True  # "10" < "9" as texts
 
 
 def test_symlinked_checkouts_are_followed_once_and_cycles_end(write_tree):
