@@ -371,3 +371,50 @@ def test_a_library_of_function_nodes_only_is_found(tmp_path):
     codes = [d.code for d in config.diagnostics if d.code.startswith("BT_")]
     assert codes == []
     assert ("publish", "/nav/watch_state", "std_msgs/msg/String") in _links(config)
+
+
+def _modelled_navigator(tmp_path, distro, libraries=None):
+    from haros_arch.models.attach import Attacher
+    from haros_arch.models.library import Library
+
+    (tmp_path / "empty").mkdir(parents=True)
+    where = Location("bringup", "bringup/params.yaml", 4, 0)
+    params = [] if libraries is None else [
+        ParamDecl("/bt_navigator/plugin_lib_names", list(libraries), location=where)]
+    launch = LaunchModel(nodes=[NodeDecl("/bt_navigator", "nav2_bt_navigator",
+                                         "bt_navigator", ros_version=2)], params=params)
+    workspace = scan([str(tmp_path)])
+    attacher = Attacher(Library(), distro, [])
+    nodes = attacher.nodes_for(launch, workspace, {}, {}, [])
+    return build(Configuration("c"), launch, workspace, nodes,
+                 attacher.plugin_models(launch, {}))
+
+
+def test_a_modelled_navigator_runs_the_modelled_tree_nodes_of_its_default_trees(tmp_path):
+    # navigation2 installed, not in the workspace (every robot on a binary nav2): the
+    # models of nav2_behavior_tree (its BT libraries) and nav2_bt_navigator (its default
+    # trees) stand for their sources; the libraries a parameter file lists (Humble's
+    # plugin_lib_names, kept by many robots) are nav2_behavior_tree's, no
+    # BT_LIBRARY_NOT_FOUND per library (stretch_ros2 said 40)
+    for distro in ("jazzy", "humble"):
+        config = _modelled_navigator(
+            tmp_path / distro, distro, ["nav2_compute_path_to_pose_action_bt_node",
+                                        "nav2_spin_action_bt_node"])
+        assert not [d for d in config.diagnostics if d.code.startswith("BT_")], distro
+        made = {(link.kind, link.resource.name, link.call.type) for link in config.links
+                if link.node.name == "/bt_navigator" and link.call.origin == "plugin"}
+        assert {("action-client", "/compute_path_to_pose",
+                 "nav2_msgs/action/ComputePathToPose"),
+                ("action-client", "/follow_path", "nav2_msgs/action/FollowPath"),
+                ("action-client", "/spin", "nav2_msgs/action/Spin"),
+                ("client", "/global_costmap/clear_entirely_global_costmap",
+                 "nav2_msgs/srv/ClearEntireCostmap")} <= made, distro
+        reasons = " ".join(config.node("/bt_navigator").completeness_reasons)
+        assert "nav2_behavior_tree" not in reasons and "bt_xml" not in reasons, distro
+
+
+def test_a_library_no_model_holds_is_still_not_found(tmp_path):
+    config = _modelled_navigator(tmp_path, "jazzy", ["vendor_custom_bt_node"])
+    assert [d.code for d in config.diagnostics if d.code.startswith("BT_")] == [
+        "BT_LIBRARY_NOT_FOUND"]
+    assert config.node("/bt_navigator").completeness == "partial"

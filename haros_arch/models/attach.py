@@ -20,7 +20,7 @@ another name its releases install (``Node.aliases``).
 from __future__ import annotations
 
 import copy
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import replace
 
 from .. import diagnostics as diag
@@ -111,23 +111,13 @@ class Attacher:
         return result
 
     def plugin_models(self, launch: LaunchModel, environment: Mapping[str, str]
-                      ) -> Callable[[str], Node | None]:
+                      ) -> PluginFinder:
         """For plugin attachment (``plugins.attach``): a plugin class of a package without
         source to its node in that package's model (kind ``plugin``, by lookup name or
         C++ type; or any node by ``pkg/exec``, for the nodes hosts make), for the
         configuration's distribution."""
         distro = choose_distro(self.distro, environment, launch)[0]
-
-        def find(cls: str) -> Node | None:
-            for package in class_packages(cls):
-                model = self._find(package, distro)
-                source = None if model is None else next(
-                    (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and (
-                        cls == n.executable or cls in plugin_types(n)))), None)
-                if model is not None and source is not None:
-                    return self._node(model, source.executable)
-            return None
-        return find
+        return PluginFinder(self, distro)
 
     def _find(self, package: str, distro: str) -> InterfaceModel | None:
         """The package's model for ``distro``, else for the distribution whose models
@@ -164,3 +154,26 @@ class Attacher:
         owner.nodes.append(node)
         return node
 
+
+class PluginFinder:
+    """A plugin class of a package without source to its node in that package's model
+    (``Attacher.plugin_models``), and a package's model itself (``package``: a tree
+    host's BT libraries and default trees, ``plugins.behavior_trees``), for one
+    distribution."""
+
+    def __init__(self, attacher: Attacher, distro: str) -> None:
+        self.attacher = attacher
+        self.distro = distro
+
+    def __call__(self, cls: str) -> Node | None:
+        for package in class_packages(cls):
+            model = self.attacher._find(package, self.distro)
+            source = None if model is None else next(
+                (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and (
+                    cls == n.executable or cls in plugin_types(n)))), None)
+            if model is not None and source is not None:
+                return self.attacher._node(model, source.executable)
+        return None
+
+    def package(self, name: str) -> InterfaceModel | None:
+        return self.attacher._find(name, self.distro)

@@ -76,6 +76,11 @@ class InterfaceModel:
     generator: dict[str, str] = field(default_factory=dict)
     override: str | None = None
     path: str = ""  # the file it was read from (not written)
+    # BehaviorTree.CPP: the BT libraries the package builds (library -> registrations)
+    # and a tree host's default trees (share path -> tree), as
+    # ``plugins.behavior_trees.package_model_data`` writes them
+    bt_libraries: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
+    bt_trees: dict[str, dict[str, Any]] = field(default_factory=dict)
 
     @property
     def label(self) -> str:
@@ -102,6 +107,10 @@ def to_document(model: InterfaceModel) -> dict[str, Any]:
     if model.override:
         data["override"] = model.override
     data["nodes"] = [to_data(node) for node in model.nodes]
+    if model.bt_libraries:
+        data["bt_libraries"] = model.bt_libraries
+    if model.bt_trees:
+        data["bt_trees"] = model.bt_trees
     return data
 
 
@@ -150,10 +159,17 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
     for node in built:  # models written when a namespace passed as "" left "//name"
         node.rosname = node_name_joined(node.rosname) if node.rosname else node.rosname
         node.rosnames = [node_name_joined(n) for n in node.rosnames]
+    libraries, trees = data.get("bt_libraries", {}), data.get("bt_trees", {})
+    if not isinstance(libraries, dict) or not all(
+            isinstance(k, str) and isinstance(v, list) for k, v in libraries.items()):
+        raise ModelFileError("'bt_libraries' must map library names to lists")
+    if not isinstance(trees, dict) or not all(
+            isinstance(k, str) and isinstance(v, dict) for k, v in trees.items()):
+        raise ModelFileError("'bt_trees' must map share paths to trees")
     return InterfaceModel(package, distro, built, str(data.get("version") or ""),
                           _strings(data.get("source")), _strings(data.get("generator")),
                           data.get("override") if isinstance(data.get("override"), str)
-                          else None, path)
+                          else None, path, libraries, trees)
 
 
 def _list(value: Any) -> Sequence[Any]:

@@ -45,6 +45,7 @@ from ..model.location import Location
 from ..model.source import NUMBERED, Node, PrimitiveCall, declared_defaults
 from ..model.values import UNKNOWN_MARK
 from ..pipeline import distro_variables, read_build_files, without_deferred
+from ..plugins.behavior_trees import package_model_data
 from ..processes import worker_pool
 from ..workspace import scan
 from .format import InterfaceModel, dumps
@@ -216,6 +217,10 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
          **({"with": ", ".join(f"{r}@{c}" for r, c in task.entry.context)}
             if task.entry.context else {})},
         {"name": "haros-arch", "version": __version__}, override)
+    # the BT libraries it builds and, for a tree host, its default trees: a tree host
+    # of another package without source runs them (nav2's bt_navigator and
+    # nav2_behavior_tree's nodes)
+    model.bt_libraries, model.bt_trees = package_model_data(task.package, workspace)
     outcome.text = _tree_relative(dumps(model), (task.tree, *task.context))
     outcome.nodes = [n.executable for n in package.nodes]
     outcome.calls = sum(len(n.calls) for n in package.nodes)

@@ -187,7 +187,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
     out.extend(behavior_trees.attach(config, started, params, workspace,
                                      lambda instance, reason: own_partial(
-                                         instance, reason, owned, first=True)))
+                                         instance, reason, owned, first=True),
+                                     getattr(models, "package", None)))
     return out
 
 

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -44,7 +44,7 @@ from ..model.values import UNKNOWN_MARK
 from ..share import share_map, share_source
 from ..workspace import Workspace
 from .classes import code_only, remembered, with_headers
-from .hosts import TreeHost, tree_host_of
+from .hosts import TREE_HOSTS, TreeHost, tree_host_of
 
 BT_PACKAGES = ("behaviortree_cpp", "behaviortree_cpp_v3")
 MAX_TREE_ELEMENTS = 20_000  # per tree file
@@ -105,6 +105,98 @@ class Libraries:
 
     by_library: dict[str, dict[str, Registered]] = field(default_factory=dict)
     by_package: dict[str, list[str]] = field(default_factory=dict)  # package → libraries
+
+
+# -- as interface model data (``models.format``: a package without source) -----------------
+
+
+def registered_data(each: Registered) -> dict[str, Any]:
+    """A registration as a model document holds it (its library is the key above it)."""
+    return {"id": each.id, "class": each.cls,
+            "location": {"file": each.location.file, "line": each.location.line},
+            "default": each.default, "base": each.base, "type": each.type,
+            "calls": [[kind, type_, list(source) if source is not None else None]
+                      for kind, type_, source in each.calls],
+            "ports": dict(each.ports)}
+
+
+def registered_from_data(data: Any, library: str, package: str) -> Registered | None:
+    """A registration of a model document; None for an entry that is not one."""
+    if not isinstance(data, dict) or not isinstance(data.get("id"), str):
+        return None
+    calls: list[tuple[str, str | None, tuple[str, ...] | None]] = []
+    for entry in _listed(data.get("calls")):
+        if isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], str):
+            source = tuple("" if p is None else str(p) for p in entry[2]) if isinstance(
+                entry[2], list) else None
+            calls.append((entry[0], entry[1] if isinstance(entry[1], str) else None, source))
+    text = {key: value if isinstance(value := data.get(key), str) else None
+            for key in ("class", "default", "base", "type")}
+    return Registered(data["id"], text["class"] or "", library,
+                      _located(data.get("location"), package), text["default"],
+                      text["base"], text["type"], calls,
+                      {str(k): str(v) for k, v in _mapping(data.get("ports")).items()})
+
+
+def tree_data(tree: Tree) -> dict[str, Any]:
+    """A tree file as a model document holds it: its tags, the trees it defines, the
+    subtrees it runs and what was not read."""
+    def tag(each: Tag) -> dict[str, Any]:
+        return {"id": each.id, "attributes": dict(each.attributes),
+                "location": {"file": each.location.file, "line": each.location.line}}
+    return {"tags": [tag(t) for t in tree.tags], "defined": sorted(tree.defined),
+            "subtrees": [tag(t) for t in tree.subtrees], "reasons": list(tree.reasons)}
+
+
+def tree_from_data(data: Any, package: str) -> Tree | None:
+    """A tree of a model document; None for an entry that is not one."""
+    if not isinstance(data, dict):
+        return None
+
+    def tags(entries: Any) -> list[Tag]:
+        return [Tag(entry["id"], {str(k): str(v) for k, v in _mapping(
+                    entry.get("attributes")).items()},
+                    _located(entry.get("location"), package))
+                for entry in _listed(entries)
+                if isinstance(entry, dict) and isinstance(entry.get("id"), str)]
+    return Tree(tags(data.get("tags")), {str(d) for d in _listed(data.get("defined"))},
+                tags(data.get("subtrees")), [str(r) for r in _listed(data.get("reasons"))])
+
+
+def _mapping(value: Any) -> dict[Any, Any]:
+    return value if isinstance(value, dict) else {}
+
+
+def _listed(value: Any) -> list[Any]:
+    return value if isinstance(value, list) else []
+
+
+def _located(value: Any, package: str) -> Location:
+    where = _mapping(value)
+    line = where.get("line")
+    return Location(package=package, file=str(where.get("file") or "") or None,
+                    line=line if isinstance(line, int) and not isinstance(line, bool) else 0)
+
+
+def package_model_data(package: str, workspace: Workspace) -> tuple[
+        dict[str, list[dict[str, Any]]], dict[str, dict[str, Any]]]:
+    """What an interface model of ``package`` holds of behavior trees: the BT libraries it
+    builds (library -> registrations) and, for a tree host's package, the default trees
+    in its share folder (share path -> tree), read as the graph reads them."""
+    known = libraries(workspace)
+    found_libraries = {name: [registered_data(each) for each in known.by_library[name].values()]
+                       for name in known.by_package.get(package, [])}
+    trees: dict[str, dict[str, Any]] = {}
+    owner = workspace.packages.get(package)
+    for host in TREE_HOSTS:
+        for _parameter, share, relative in host.trees:
+            if share != package or owner is None or relative in trees:
+                continue
+            path = share_map(owner, workspace).get(relative)
+            read = read_tree(path, workspace, []) if path else None
+            if read is not None:
+                trees[relative] = tree_data(read)
+    return found_libraries, trees
 
 
 def interface_name(cpp: str) -> str | None:
@@ -365,15 +457,20 @@ def _elements(root: etree._Element) -> Iterator[etree._Element]:
 
 def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance]],
            params: Any, workspace: Workspace, partial: Any,
+           models: Callable[[str], Any] | None = None,
            ) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
     """The calls of the tree nodes each tree host instance runs; ``partial(instance,
-    reason)`` marks an instance whose trees are not wholly known."""
+    reason)`` marks an instance whose trees are not wholly known. ``models``: a package
+    without source to its interface model (``models.format.InterfaceModel``), whose BT
+    libraries and default trees stand for its source (nav2_behavior_tree's nodes and
+    nav2_bt_navigator's trees where navigation2 is installed, not in the workspace)."""
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     for decl, instance in started:
         host = tree_host_of(decl.package, decl.executable, decl.ros_version)
         if host is None:
             continue
-        calls, reasons = _host_calls(host, instance, params, workspace, config.diagnostics)
+        calls, reasons = _host_calls(host, instance, params, workspace, config.diagnostics,
+                                     models)
         for reason in reversed(reasons[:5]):  # each goes first: the first stays first
             partial(instance, reason)
         out.append((instance, calls))
@@ -386,15 +483,23 @@ def _param(params: Any, name: str) -> Parameter | None:
 
 
 def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: Workspace,
-                found: list[Diagnostic]) -> tuple[list[PrimitiveCall], list[str]]:
+                found: list[Diagnostic], models: Callable[[str], Any] | None = None,
+                ) -> tuple[list[PrimitiveCall], list[str]]:
     base = instance.name.rstrip("/") + "/"
     reasons: list[str] = []
     known = libraries(workspace)
     registered: dict[str, Registered] = {}
+    modelled: dict[str, dict[str, Registered]] = {}  # the builtin packages' models' libraries
     for package in host.builtin:
         if package not in workspace.packages:
-            reasons.append(f"behavior tree nodes of {package}: no source in the workspace, "
-                           "their calls are not known")
+            from_model = _model_libraries(package, models)
+            if from_model is None:
+                reasons.append(f"behavior tree nodes of {package}: no source in the "
+                               "workspace, their calls are not known")
+            modelled.update(from_model or {})
+            for library_ids in (from_model or {}).values():
+                for ident, each in library_ids.items():
+                    registered.setdefault(ident, each)
         for built in known.by_library.keys() & set(known.by_package.get(package, [])):
             for ident, each in known.by_library[built].items():
                 registered.setdefault(ident, each)
@@ -405,7 +510,7 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
             if not isinstance(entry, str) or UNKNOWN_MARK in entry:
                 reasons.append(f"{host.libraries}: a library not known statically")
                 continue
-            library = known.by_library.get(entry)
+            library = known.by_library.get(entry) or modelled.get(entry)
             if library is None:
                 found.append(diag.make("BT_LIBRARY_NOT_FOUND", listed.launch_location,
                                        library=entry, host=instance.name))
@@ -421,7 +526,10 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
     for parameter, package, relative in host.trees:
         given = _param(params, base + parameter)
         path = _tree_path(given, package, relative, workspace)
-        if path is None:
+        read: Tree | None = None
+        if path is None and given is None and package not in workspace.packages:
+            read = _model_tree(package, relative, models)  # the default, as modelled
+        if path is None and read is None:
             what = given.value if given is not None else f"{package}/{relative}"
             reasons.append(f"behavior tree {parameter} ({what}) not found or not known"
                            if given is not None or package else
@@ -431,9 +539,11 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
                 found.append(diag.make("BT_TREE_NOT_FOUND", given.launch_location,
                                        path=given.value, host=instance.name))
             continue
-        read = read_tree(path, workspace, found)
+        if read is None and path is not None:
+            read = read_tree(path, workspace, found)
+            if read is None:
+                reasons.append(f"behavior tree {workspace.relpath(path)} cannot be read")
         if read is None:
-            reasons.append(f"behavior tree {workspace.relpath(path)} cannot be read")
             continue
         reasons.extend(read.reasons)
         for subtree in read.subtrees:
@@ -455,6 +565,32 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
                     seen.add(key)
                     calls.append(call)
     return calls, list(dict.fromkeys(reasons))
+
+
+def _model_libraries(package: str, models: Callable[[str], Any] | None
+                     ) -> dict[str, dict[str, Registered]] | None:
+    """The BT libraries of a package's interface model (library -> ID -> class); None
+    when it has no model, or one without them."""
+    model = models(package) if models is not None else None
+    data = getattr(model, "bt_libraries", None)
+    if not data:
+        return None
+    out: dict[str, dict[str, Registered]] = {}
+    for library, entries in data.items():
+        for entry in entries:
+            each = registered_from_data(entry, library, package)
+            if each is not None:
+                out.setdefault(library, {}).setdefault(each.id, each)
+    return out
+
+
+def _model_tree(package: str, relative: str, models: Callable[[str], Any] | None
+                ) -> Tree | None:
+    """A tree host's default tree ``relative`` in the share folder of ``package``, as its
+    interface model holds it; None when it holds none."""
+    model = models(package) if models is not None else None
+    data = getattr(model, "bt_trees", None) or {}
+    return tree_from_data(data.get(relative), package) if relative in data else None
 
 
 def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
