@@ -1470,3 +1470,16 @@ def test_a_vendor_member_template_tested_as_a_condition_is_declared_a_template()
                             ("publish", "motion", "std_msgs/msg/String", 14)]
     assert "CPP_PARSE_ERROR" not in codes(result)
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_an_unqualified_call_of_a_library_base_that_is_no_ros_package_s_keeps_the_node(
+) -> None:
+    """realsense2_camera 1cbd81be's RosSensor derives from librealsense's ``rs2::sensor``
+    (its headers missing) and calls its ``get_info``: each such call was "the node (this)
+    is given to get_info" (35 places, the node partial). A base of a namespace that names
+    no package of the workspace or the package's dependencies is no ROS code; one that
+    does (``vendor::Layer``, the package depends on ``vendor``) still may be."""
+    result = extract("library_base_adl.cpp")
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 21)]
+    assert "CPP_NODE_TO_UNKNOWN" not in codes(result)
+    assert "CPP_PARSE_ERROR" not in codes(result)

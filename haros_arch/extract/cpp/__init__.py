@@ -1556,7 +1556,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
         read: list[str] = []  # the workspace files the ROS 1 client test reads
         finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
                             clients=None if ros2 else ros1_clients(
-                                path, workspace, setup.generated, read), local=local)
+                                path, workspace, setup.generated, read), local=local,
+                            ros_class=ros_classes(path, workspace, read))
         finder.run()
         places = _Places(finder, source)
         hidden = _hidden(path, errors, places, fieldless, workspace)
@@ -1802,6 +1803,28 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
 # the dependencies of a package whose headers the packages depending on it see (REP 140:
 # ``depend`` and ``build_export_depend``; format 1's ``run_depend`` is both)
 _EXPORTED = frozenset({"depend", "build_export_depend", "run_depend"})
+
+
+def ros_classes(path: str, workspace: Workspace, read: list[str]) -> Callable[[str], bool]:
+    """Whether a class the parse knows only by its (qualified) name may be a ROS
+    package's, whose code may make ROS calls on an object of it: one in the global
+    namespace (not known), or whose namespace's first part is a workspace package, a
+    package the unit's package may include (``_visible``) or the beginning of one's name
+    (MoveIt's ``moveit::`` of moveit_ros_planning_interface). Not another library's:
+    librealsense's ``rs2::sensor``, which realsense2_camera's RosSensor derives from, is
+    of no package the unit depends on by that name. The manifests read go to ``read``."""
+    package = workspace.package_of(path)
+    if package is not None and package.root:
+        read.append(manifest_of(package.root))
+    visible = _visible(package, workspace, read) if package is not None else set()
+
+    def ros(cls: str) -> bool:
+        first = cls.lstrip(":").split("::", 1)[0]
+        if "::" not in cls.lstrip(":") or not first:
+            return True
+        return first in workspace.packages or first in visible or any(
+            name.startswith(first + "_") for name in visible)
+    return ros
 
 
 def _visible(package: Package, workspace: Workspace, read: list[str]) -> set[str]:

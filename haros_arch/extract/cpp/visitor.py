@@ -312,8 +312,13 @@ class CallFinder:
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
                  ros2: bool = False, declared: str | None = None,
                  clients: Callable[[str, str], str | None] | None = None,
-                 local: Callable[[str], bool] | None = None) -> None:
+                 local: Callable[[str], bool] | None = None,
+                 ros_class: Callable[[str], bool] | None = None) -> None:
         self.tu = tu
+        # whether a class the parse knows only as a name declared permissively
+        # (qualified) may be a ROS package's, whose code may make ROS calls
+        # (``extract.cpp.ros_classes``); None: any may
+        self.ros_class = ros_class
         # whether a file is of the unit's own package (``reachable``; None: every file)
         self.local = local or (lambda _name: True)
         # ROS 1: whether a class of a package (both by name) may make ROS calls in code
@@ -1689,8 +1694,33 @@ class CallFinder:
                 semantic is not None and semantic.spelling == synthesis.ANY):
             return False  # not declared in the class as a friend: its member
         owner = function.semantic_parent
-        return owner is not None and self.declared is not None and any(
-            where == self.declared for where, _ in base_keys(owner, named=True))
+        if owner is None or self.declared is None or not any(
+                where == self.declared for where, _ in base_keys(owner, named=True)):
+            return False
+        # a base of a library that is no ROS package's runs no ROS call: realsense2_camera's
+        # RosSensor calls librealsense's ``get_info`` of its base ``rs2::sensor``
+        return self.ros_class is None or any(
+            self.ros_class(name) for name in self._permissive_bases(owner))
+
+    def _permissive_bases(self, cls: Cursor, depth: int = 0) -> list[str]:
+        """The qualified names of ``cls``'s bases declared permissively, transitively
+        through the workspace's classes (those an unqualified name may find)."""
+        found: list[str] = []
+        if depth > 8:
+            return found
+        for base in cls.get_children():
+            if base.kind != CursorKind.CXX_BASE_SPECIFIER or (
+                    base.type.get_canonical().kind != TypeKind.RECORD):
+                continue
+            decl = base.type.get_canonical().get_declaration()
+            where = decl.location.file
+            if where is not None and where.name == self.declared:
+                found.append(qualified_name(decl))
+                continue
+            definition = decl.get_definition()
+            if definition is not None:
+                found.extend(self._permissive_bases(definition, depth + 1))
+        return found
 
     def _unknown_callee(self, call: Cursor) -> Cursor | None:
         """What ``call`` runs whose code the parse does not have: a function or class
