@@ -189,3 +189,59 @@ def test_a_managers_dictionary_value_is_one_setting_for_its_controllers(write_tr
     undecided = [f.message for f in findings if f.rule == "parameter-set-not-read-undecided"]
     assert len(undecided) == 1 and "/robot/controller_manager/nobody" in undecided[0]
     assert "gate" not in undecided[0]
+
+
+MANAGER_FILE = """controller_manager:
+  ros__parameters:
+    follower:
+      type: ros2_ctrl/Follower
+
+/**/follower:
+  ros__parameters:
+    mode: track
+    stale_setting: true
+"""
+
+MANAGER_FILE_LAUNCH = """
+import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    config = os.path.join(get_package_share_directory('ros2_bringup'), 'config',
+                          'manager.yaml')
+    return LaunchDescription([
+        Node(package='controller_manager', executable='ros2_control_node',
+             parameters=[{'robot_description': '<robot/>'}, config]),
+        Node(package='controller_manager', executable='spawner', arguments=['follower']),
+    ])
+"""
+
+
+def test_a_controllers_setting_in_the_managers_file_is_placed_at_its_line(write_tree):
+    # rosbot_ros 5b024d7 gives ros2_control_node one file with a section per controller
+    # (``/**/imu_broadcaster:``); its settings the controller never reads were all said
+    # at the launch file's line, not at theirs in the file
+    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
+             for name in ("CMakeLists.txt", "package.xml", "ros2_ctrl.xml")}
+    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
+                  for name in ("CMakeLists.txt", "package.xml")})
+    files["src/ros2_bringup/config/manager.yaml"] = MANAGER_FILE
+    files["src/ros2_ctrl/src/follower.cpp"] = CONTROLLER
+    files["src/ros2_bringup/launch/c.launch.py"] = MANAGER_FILE_LAUNCH
+    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
+                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    root = write_tree(files)
+    model = analyse(load(os.path.join(root, "project.yaml")), {},
+                    Options(cache_dir=None, jobs=1))
+    config = model.configuration("c")
+    stale = config.parameter("/follower/stale_setting")
+    assert stale is not None and stale.set_by_launch
+    assert (stale.launch_location.file, stale.launch_location.line) == (
+        "ros2_bringup/config/manager.yaml", 9)
+    unread = [(f.location.file, f.location.line) for f in run_catalogue(model)
+              if f.rule == "parameter-set-not-read"]
+    assert unread == [("ros2_bringup/config/manager.yaml", 9)]

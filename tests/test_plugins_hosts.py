@@ -412,7 +412,7 @@ def _costmap_graph(version: str = ""):
                        call("read", "?.inflation_radius", "double", 4))
     decl = ros2(NodeDecl("/planner_server", "nav2_planner", "planner_server",
                          remaps=[("/tf", "tf")]))
-    decl.param_files.append((_COSTMAP_FILE, where(2)))
+    decl.param_files.append((_COSTMAP_FILE, where(2), {}))
     workspace = Workspace(root="/nowhere")
     if version:
         workspace.packages["nav2_costmap_2d"] = Package("nav2_costmap_2d", "/nowhere/c",
@@ -862,7 +862,8 @@ def test_a_controllers_section_of_the_managers_parameter_file_is_the_controllers
                                                    "hand": {"type": "my/Arm"}}},
         "arm": {"ros__parameters": {"gain": 3.0, "arm_id": "panda"}},
         "hand": {"ros__parameters": {"gain": 4.0}},
-        "other": {"ros__parameters": {"gain": 1.0}}}, where(3))]
+        "other": {"ros__parameters": {"gain": 1.0}}}, where(3),
+        {("/arm", "gain"): where(6)})]
     own = tmp_path / "hand.yaml"
     own.write_text("hand:\n  ros__parameters:\n    gain: 5.0\n")
     arm = plugin("my", "my/Arm", "my::Arm", call("read", "gain", "double"),
@@ -879,6 +880,10 @@ def test_a_controllers_section_of_the_managers_parameter_file_is_the_controllers
     assert all(p is not None and p.set_by_launch and p.is_read for p in values.values())
     assert [values[name].value for name in values] == [3.0, "panda", 5.0]
     assert config.parameter("/other/gain") is None  # no node of the process is named so
+    # each at its entry's line where the file's places are known (rosbot_ros' imu
+    # broadcaster's settings were all at the launch file's line), else the file's
+    assert [values[name].launch_location.line for name in ("/arm/gain", "/arm/arm_id")] \
+        == [6, 3]
 
 
 def _dwb_config(critics: list[str], *more: ParamDecl):

@@ -61,7 +61,10 @@ class NodeDecl:
     container: str | None = None  # ROS 2: full name of the container it is loaded into
     # ROS 2: the parameter files given to the process, as read (rewritten), with where:
     # they apply by node name to every node the process makes (a nav2 server's costmap)
-    param_files: list[tuple[Any, Location]] = field(default_factory=list, repr=False)
+    # and where each entry is written, by (section pattern, name) (none for a file
+    # launch_ros writes of the node's dictionaries)
+    param_files: list[tuple[Any, Location, dict[tuple[str, str], Location]]] = field(
+        default_factory=list, repr=False)
     # ROS 2: parameter files given to a node whose name is not known, as launch_ros passes
     # them (``--params-file``): the running node applies the sections for its name, of
     # which only the /** entries are applied here

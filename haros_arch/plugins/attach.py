@@ -428,9 +428,10 @@ def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params,
     A ``/**`` value reaches the host and each of its controllers alike: a setting for
     several nodes (``Parameter.setting``), unread only when none of them reads it (UR's
     driver gives its manager ``verify_payload_on_set``, which one controller reads)."""
-    for document, where in decl.param_files:
+    for document, where, keys in decl.param_files:
         values: dict[str, Any] = {}
         shared: dict[str, str] = {}
+        placed: dict[str, Location] = {}  # at the entry's own line in the file
         for pattern, entries in node_patterns(document):
             if pattern == "/**" and host is None:
                 continue
@@ -438,12 +439,17 @@ def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params,
                 continue
             for name, value in flatten(entries):
                 values[name] = value
+                at = keys.get((pattern, name))
+                if at is not None:
+                    placed[f"{instance.name.rstrip('/')}/{name}"] = at
+                else:
+                    placed.pop(f"{instance.name.rstrip('/')}/{name}", None)
                 if pattern == "/**":
                     shared[name] = _host_setting(params, host, name, where)
                 else:
                     shared.pop(name, None)
         _set_params(params, instance.name, values, where, instance.conditions,
-                    settings=shared)
+                    placed=placed, settings=shared)
 
 
 def _host_setting(params: Params, host: NodeInstance | None, name: str,

@@ -133,7 +133,8 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         if composable:
             document = naming.as_component_file(document)
         keys = _key_places(runner, placed, composable, node)
-        runner.model.nodes[-1].param_files.append((document, location))
+        runner.model.nodes[-1].param_files.append(
+            (document, location, _key_places(runner, placed, composable, UNKNOWN_MARK)))
         outside = naming.values_outside(document)
         path = runner.value(entry.path, scope, location) if not (
             len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)) else None
@@ -206,7 +207,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         # parameter file of the process, which reaches a node the process makes that
         # takes every override (``plugins.attach``: ros2_control's controllers)
         runner.model.nodes[-1].param_files.append(
-            ({"/**": {naming.PARAMS_KEY: given}}, where))
+            ({"/**": {naming.PARAMS_KEY: given}}, where, {}))
     owner = len(runner.model.nodes) - 1  # the declaration just appended
     for name, (leaf, location, setting) in found.items():
         param = make_param(node, name, leaf, scope.conditions, location)
