@@ -395,6 +395,10 @@ def test_gazebo_ros2_control_starts_a_controller_manager_that_hosts_the_spawned_
         ("subscribe", "/base/cmd_vel"), ("publish", "/base/odom"), ("publish", "/tf")}
     (separation,) = [p for p in config.parameters if p.name == "/base/wheel_separation"]
     assert separation.value == 0.3 and separation.set_by_launch
+    # at its key's line in the plugin's <parameters> file (was the file's first line)
+    place = separation.launch_location
+    with open(os.path.join(ROS2, place.file)) as lines:
+        assert "wheel_separation:" in lines.read().splitlines()[place.line - 1]
     assert [r.node.name for r in separation.readers] == ["/base"]  # declared by the model
     assert config.node("/gazebo_ros2_control").completeness == "partial"
 

@@ -926,17 +926,22 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
     for file in element.iterfind("parameters"):
-        document = _yaml_file((file.text or "").strip(), where, workspace, config)
-        if document is None:
+        read = _yaml_file_lines((file.text or "").strip(), where, workspace, config)
+        if read is None or read[0] is None:
             continue
+        document, lines = read
+        source = share_source(workspace, (file.text or "").strip())
         for node in _node_names(document, namespace):
+            # each at its key's line (rosbot_ros' gazebo controllers' settings were all
+            # at line 1 of their file)
+            at = {key: line for key, line in params_for_node(lines, node)
+                  if isinstance(line, int)} if isinstance(lines, dict) else {}
             for key, value in params_for_node(document, node):
                 parameter = params.get(Parameter, f"{node}/{key}")
                 assert isinstance(parameter, Parameter)
                 if not parameter.set_by_launch:
                     parameter.value, parameter.set_by_launch = value, True
-                    parameter.launch_location = workspace.location(
-                        share_source(workspace, (file.text or "").strip()), 1)
+                    parameter.launch_location = workspace.location(source, at.get(key, 1))
                     parameter.launch_conditions = decl.conditions
     return decl, instance
 
@@ -962,9 +967,10 @@ def _node_names(document: Any, namespace: str) -> list[str]:
     return names
 
 
-def _yaml_file(path: str, where: Location, workspace: Workspace,
-               config: Configuration) -> Any:
-    """A YAML file a plugin element names, read with the safe loader (None if not)."""
+def _yaml_file_lines(path: str, where: Location, workspace: Workspace,
+                     config: Configuration) -> tuple[Any, Any] | None:
+    """``_yaml_file``'s document and where each of its keys is written
+    (``safe_yaml.load_with_lines``); None if not read."""
     if not path or UNKNOWN_MARK in path or not os.path.isabs(path):
         return None
     path = path if os.path.isfile(path) else share_source(workspace, path)
@@ -976,7 +982,7 @@ def _yaml_file(path: str, where: Location, workspace: Workspace,
     text, found = read_text(path, workspace.location(path, 1))
     config.diagnostics.extend(found)
     try:
-        return safe_yaml.load(text) if text is not None else None
+        return safe_yaml.load_with_lines(text) if text is not None else None
     except yaml.YAMLError:
         config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", where,
                                             path=workspace.relpath(path),
