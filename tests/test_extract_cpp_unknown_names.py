@@ -1483,3 +1483,14 @@ def test_an_unqualified_call_of_a_library_base_that_is_no_ros_package_s_keeps_th
     assert rows(result) == [("publish", "out", "std_msgs/msg/String", 21)]
     assert "CPP_NODE_TO_UNKNOWN" not in codes(result)
     assert "CPP_PARSE_ERROR" not in codes(result)
+
+
+def test_a_member_template_named_with_its_class_is_no_type_of_that_class() -> None:
+    """realsense2_camera 1cbd81be: ``sensor->rs2::sensor::is<rs2::depth_sensor>()`` and
+    its RosSensor's ``rs2::sensor::is<T>()`` made ``is`` a type of the permissive
+    ``rs2::sensor``, and every ``sensor.is<T>()`` an error (startPublishers, which makes
+    the camera's publishers, among them); and std::pair had no ``!=``."""
+    result = extract("qualified_member_template.cpp")
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 22)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)

@@ -179,6 +179,32 @@ _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
 
 
+def _template_called(text: bytes, end: int) -> bool:
+    """Whether the template arguments at ``end`` (``<...>``) are followed by ``(``: a
+    function template's call."""
+    depth = 0
+    for at in range(end, min(len(text), end + 400)):
+        char = text[at:at + 1]
+        if char == b"<":
+            depth += 1
+        elif char == b">":
+            depth -= 1
+            if depth == 0:
+                return text[at + 1:at + 40].lstrip()[:1] == b"("
+        elif char in b";{}" or (depth == 0 and not char.isspace()):
+            return False
+    return False
+
+
+def _member_named(text: bytes, offset: int) -> bool:
+    """Whether the name at ``offset``, with the scope written before it, follows ``.`` or
+    ``->``: a member access naming the member with its class (``obj.Base::m``)."""
+    window = text[max(0, offset - 200):offset]
+    before = _SCOPE_BEFORE.search(window) if window.rstrip().endswith(b"::") else None
+    start = len(window) - len(before.group(0)) if before is not None else len(window)
+    return window[:start].rstrip().endswith((b".", b"->"))
+
+
 def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
     """Whether the member template ``name`` at ``offset`` is called as a whole statement,
     ``obj.name<T>(args);``, its result unused, or as a whole condition, ``if
@@ -1116,6 +1142,20 @@ class Names:
         if any(p in _KEYWORDS for p in written) or any(p in _KEYWORDS for p in scope):
             return
         rest = text[found.end():found.end() + 2]
+        owner = [*scope, *written[:-1]]
+        if owner and rest.lstrip()[:1] == b"<" and (_member_named(text, offset) or (
+                _template_called(text, found.end())
+                and self._class_path("::".join(owner)) is not None)):
+            # a member named with its class and given template arguments, ``sensor->
+            # rs2::sensor::is<rs2::depth_sensor>()`` (realsense2_camera's
+            # rs_node_setup.cpp) or ``rs2::sensor::is<T>()`` in a method of a class
+            # derived from it (its ros_sensor.h): a member template of the permissive
+            # class, not a type in that scope (which made every ``sensor.is<T>()`` an
+            # error)
+            if written[-1] not in self.member_templates:
+                self.member_templates.add(written[-1])
+                self.count += 1
+            return
         window = text[max(0, offset - 200):offset]
         if use == "any" and ((written[-1][:1].isupper() and _aliased(window)) or (
                 (b"using" in window or b"typedef" in window)

@@ -284,6 +284,11 @@ template<class A, class B> struct pair {
 template<class A, class B> pair<typename decay<A>::type, typename decay<B>::type> make_pair(A&& a, B&& b);
 template<class A, class B> bool operator==(const pair<A, B>& x, const pair<A, B>& y);
 template<class A, class B> bool operator<(const pair<A, B>& x, const pair<A, B>& y);
+// and the other comparisons (realsense2_camera's ``sip != DEPTH`` of its stream pairs)
+template<class A, class B> bool operator!=(const pair<A, B>& x, const pair<A, B>& y);
+template<class A, class B> bool operator>(const pair<A, B>& x, const pair<A, B>& y);
+template<class A, class B> bool operator<=(const pair<A, B>& x, const pair<A, B>& y);
+template<class A, class B> bool operator>=(const pair<A, B>& x, const pair<A, B>& y);
 template<class... T> class tuple {
 public:
   tuple();
