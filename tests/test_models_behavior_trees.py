@@ -69,3 +69,4 @@ def test_the_shipped_nav2_models_hold_the_libraries_and_default_trees() -> None:
         assert "behavior_trees/navigate_to_pose_w_replanning_and_recovery.xml" in (
             navigator.bt_trees)
         assert not library.diagnostics
+
