@@ -1494,3 +1494,17 @@ def test_a_member_template_named_with_its_class_is_no_type_of_that_class() -> No
     assert rows(result) == [("publish", "out", "std_msgs/msg/String", 22)]
     assert "CPP_PARSE_ERROR" not in codes(result)
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_which_classes_known_only_by_name_may_be_a_ros_package_s() -> None:
+    """``extract.cpp.ros_classes``: a base class known only by name makes "the node
+    given to unknown code" only where it may be a ROS package's: its namespace a
+    dependency (``vendor``, which vendor_node depends on) or a workspace package, or the
+    global namespace, but for Qt's classes (rviz's PropertyTreeModel calls
+    QAbstractItemModel's ``createIndex``: rviz's test programs were partial for it)."""
+    from haros_arch.extract.cpp import ros_classes
+
+    ros = ros_classes(os.path.join(SOURCES, "vendor_base_adl.cpp"), scan([ROOT]), [])
+    assert ros("vendor::Layer") and ros("::vendor::detail::Base") and ros("Helper")
+    assert not ros("rs2::sensor") and not ros("QAbstractItemModel")
+    assert ros("vendor_node::Base")  # the workspace's own package

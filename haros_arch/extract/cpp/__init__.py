@@ -1805,6 +1805,9 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
 _EXPORTED = frozenset({"depend", "build_export_depend", "run_depend"})
 
 
+_QT_CLASS = re.compile(r"Q[A-Z]\w*")
+
+
 def ros_classes(path: str, workspace: Workspace, read: list[str]) -> Callable[[str], bool]:
     """Whether a class the parse knows only by its (qualified) name may be a ROS
     package's, whose code may make ROS calls on an object of it: one in the global
@@ -1821,7 +1824,9 @@ def ros_classes(path: str, workspace: Workspace, read: list[str]) -> Callable[[s
     def ros(cls: str) -> bool:
         first = cls.lstrip(":").split("::", 1)[0]
         if "::" not in cls.lstrip(":") or not first:
-            return True
+            # in the global namespace: not known, but for Qt's classes (``Q`` and a
+            # capital: rviz's PropertyTreeModel calls QAbstractItemModel's createIndex)
+            return _QT_CLASS.fullmatch(first) is None
         return first in workspace.packages or first in visible or any(
             name.startswith(first + "_") for name in visible)
     return ros
