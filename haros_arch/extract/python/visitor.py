@@ -1208,7 +1208,8 @@ class Walker:
             return
         name = text_of(self.evaluator.eval(first, frame))
         if name.is_known or name.text.endswith((".msg", ".srv", ".action")) or (
-                _loaded_module(first, frame.module.tree)):
+                _loaded_module(first, frame.module.tree)) or (
+                _interface_module(first, frame.module.tree)):
             return
         where = self._where(frame, call)
         if where not in self._imports_said:  # a function walked twice: once
@@ -1267,6 +1268,37 @@ def _starts_nodes(words: list[str]) -> bool:
 
 # a module's attributes that tell where it is
 _MODULE_PLACE = frozenset({"__path__", "__file__"})
+
+
+_INTERFACE_KINDS = frozenset({"msg", "srv", "action"})
+
+
+def _interface_module(expr: ast.expr, tree: ast.Module) -> bool:
+    """Whether the module name ``expr`` computes ends with a parameter of its function
+    that every call of that function in the module gives as ``"msg"``, ``"srv"`` or
+    ``"action"`` (joy_teleop's ``get_interface_type(type_name, interface_type)``, which
+    imports ``package + "." + interface_type`` and is called with each): a module of
+    interfaces, which runs no ROS call."""
+    last = expr
+    while isinstance(last, ast.BinOp) and isinstance(last.op, ast.Add):
+        last = last.right
+    if not isinstance(last, ast.Name):
+        return False
+    for function in ast.walk(tree):
+        if not isinstance(function, ast.FunctionDef | ast.AsyncFunctionDef) or not any(
+                node is expr for node in ast.walk(function)):
+            continue
+        names = [a.arg for a in function.args.args]
+        if last.id not in names:
+            return False
+        index = names.index(last.id)
+        given = [call for call in ast.walk(tree) if isinstance(call, ast.Call)
+                 and isinstance(call.func, ast.Name) and call.func.id == function.name]
+        values = [call.args[index] if index < len(call.args) else next(
+            (k.value for k in call.keywords if k.arg == last.id), None) for call in given]
+        return bool(values) and all(
+            isinstance(v, ast.Constant) and v.value in _INTERFACE_KINDS for v in values)
+    return False
 
 
 def _loaded_module(expr: ast.expr, tree: ast.Module) -> bool:
