@@ -1168,3 +1168,79 @@ def test_what_a_linked_package_names_of_a_package_it_links_comes_along(write_tre
     assert "unlinked/src/other.cpp" not in node.sources
     calls = {(c.kind, c.name) for c in node.calls}
     assert {("publish", "~global_costmap/probe"), ("publish", "~local_costmap/probe")} <= calls
+
+
+def test_a_wrapper_runs_the_nodelets_it_loads_by_lookup_name(write_tree) -> None:
+    """image_proc's ROS 1 wrapper loads ``"image_proc/debayer"`` and
+    ``"image_proc/rectify"`` with ``nodelet::Loader`` in its process, by their lookup
+    names: since the loader rule kept only the exported classes its code names, a
+    rebuild of the image_proc model dropped both nodelets' files (and their calls) and
+    called the node complete. A lookup name the package's description maps to a class
+    names that class; a nodelet it does not load (resize) stays out."""
+    files = {
+        "improc/package.xml": package_xml("improc", None).replace(
+            "</package>", "<depend>roscpp</depend><depend>nodelet</depend>"
+            '<export><nodelet plugin="${prefix}/nodelet_plugins.xml"/></export></package>'),
+        "improc/nodelet_plugins.xml": (
+            '<library path="lib/libimproc">'
+            '<class name="improc/debayer" type="improc::DebayerNodelet" '
+            'base_class_type="nodelet::Nodelet"/>'
+            '<class name="improc/resize" type="improc::ResizeNodelet" '
+            'base_class_type="nodelet::Nodelet"/></library>'),
+        "improc/CMakeLists.txt": """
+            cmake_minimum_required(VERSION 3.0.2)
+            project(improc)
+            find_package(catkin REQUIRED COMPONENTS roscpp nodelet)
+            catkin_package(LIBRARIES improc)
+            add_library(improc src/debayer.cpp src/resize.cpp)
+            add_executable(improc_node src/main.cpp)
+            target_link_libraries(improc_node improc ${catkin_LIBRARIES})
+            """,
+        "improc/src/debayer.cpp": """
+            #include <ros/ros.h>
+            #include <nodelet/nodelet.h>
+            #include <std_msgs/String.h>
+            #include <pluginlib/class_list_macros.h>
+            namespace improc {
+            class DebayerNodelet : public nodelet::Nodelet {
+              void onInit() {
+                pub_ = getNodeHandle().advertise<std_msgs::String>("image_mono", 1);
+              }
+              ros::Publisher pub_;
+            };
+            }
+            PLUGINLIB_EXPORT_CLASS(improc::DebayerNodelet, nodelet::Nodelet)
+            """,
+        "improc/src/resize.cpp": """
+            #include <ros/ros.h>
+            #include <nodelet/nodelet.h>
+            #include <std_msgs/String.h>
+            #include <pluginlib/class_list_macros.h>
+            namespace improc {
+            class ResizeNodelet : public nodelet::Nodelet {
+              void onInit() {
+                pub_ = getPrivateNodeHandle().advertise<std_msgs::String>("image", 1);
+              }
+              ros::Publisher pub_;
+            };
+            }
+            PLUGINLIB_EXPORT_CLASS(improc::ResizeNodelet, nodelet::Nodelet)
+            """,
+        "improc/src/main.cpp": """
+            #include <ros/ros.h>
+            #include <nodelet/loader.h>
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "improc");
+              nodelet::Loader manager(false);
+              nodelet::M_string remappings;
+              nodelet::V_string my_argv;
+              manager.load(ros::this_node::getName() + "_debayer", "improc/debayer",
+                           remappings, my_argv);
+              ros::spin();
+              return 0;
+            }
+            """,
+    }
+    node, _ = _node(write_tree, files, "improc", "improc_node")
+    assert node.sources == ["improc/src/main.cpp", "improc/src/debayer.cpp"]
+    assert "image_mono" in {c.name for c in node.calls}

@@ -27,6 +27,7 @@ from ..plugins.classes import (
     derives_from,
     exported_classes,
     included_headers,
+    lookup_types,
     main_words,
     named_closure,
     named_helpers,
@@ -411,12 +412,36 @@ def _run_here(target: Target, own: list[str], sources: SourceMap,
     words = set().union(*(named_words(s, workspace) for s in own),
                         *(named_words(s, workspace) for s in named if not exported[s]))
     if words & _LOADS_PLUGINS:
+        # a class its code names by its lookup name, written as text (image_proc's
+        # wrapper loads ``"image_proc/debayer"`` and ``"image_proc/rectify"`` in its
+        # process): named as its C++ type is
+        words |= _looked_up(own, workspace)
         # all it links but the files that export plugin classes its code never names:
         # a plugin's calls reach its host when a parameter chooses it
         # (``plugins.attach``), not by linking (nav2's costmap node published the voxel
         # layer's ``voxel_grid`` with only an obstacle and an inflation layer loaded)
         return [*own, *(s for s in linked if not _exports_other(s, words, workspace))]
     return [*own, *(s for s in named if not exported[s] or exported[s] & words)]
+
+
+_LOOKUP_NAME = re.compile(r'"([A-Za-z_]\w*/[A-Za-z_]\w*)"')
+
+
+def _looked_up(own: list[str], workspace: Files) -> set[str]:
+    """The class names of the plugins of the package's descriptions whose lookup names
+    ``own``'s code writes as string literals."""
+    package = getattr(workspace, "package", None)
+    if package is None or not package.plugins:
+        return set()
+    written = set()
+    for source in own:
+        text = read_text(os.path.join(workspace.root, source),
+                         workspace.location(os.path.join(workspace.root, source)))[0] or ""
+        written.update(_LOOKUP_NAME.findall(text))
+    if not written:
+        return set()
+    types = lookup_types(package, workspace)
+    return {types[name].rsplit("::", 1)[-1] for name in written if name in types}
 
 
 def _exports_other(source: str, words: set[str], workspace: Files) -> bool:

@@ -309,6 +309,25 @@ def _escaped_attributes(data: bytes) -> bytes:
     return _TAG.sub(tag, data)
 
 
+def lookup_types(package: Package, workspace: Files) -> dict[str, str]:
+    """pluginlib lookup name -> C++ type of the classes the package's plugin
+    descriptions export (``<class name="image_proc/debayer" type="image_proc::
+    DebayerNodelet">``)."""
+    def compute() -> dict[str, str]:
+        out: dict[str, str] = {}
+        for plugin in package.plugins:
+            roots = _read_description(os.path.join(workspace.root, plugin.file), workspace,
+                                      [])
+            for root in roots or ():
+                for cls in root.iter("class"):
+                    name, type_ = cls.get("name"), cls.get("type")
+                    if name and type_:
+                        out.setdefault(name, type_.lstrip(":"))
+        return out
+
+    return remembered("lookup types", package.name, workspace, compute)
+
+
 def _read_description(path: str, workspace: Files,
                       found: list[Diagnostic]) -> list[etree._Element]:
     """The top-level elements of a plugin description: one, or several where the file
