@@ -32,6 +32,15 @@ CASES = {
         "  Eigen::Quaterniond orientation(1.0, 0.0, 0.0, 0.0);\n"
         "  Eigen::Affine3d pose(Eigen::Translation3d(position) * orientation);\n"
         "  Eigen::Translation3d shift(1.0, 0.0, 0.0);\n"),
+    # ros_controllers' trajectory_interface.h: ``typename std::iterator_traits<It>::
+    # value_type`` (every member of joint_trajectory_controller's class template after
+    # it was an error)
+    "iterator_traits": (
+        "#include <iterator>\n#include <vector>\n",
+        "  std::vector<double> values(3, 1.0);\n"
+        "  typedef std::iterator_traits<std::vector<double>::iterator>::value_type Value;\n"
+        "  typedef std::iterator_traits<const double*>::difference_type Distance;\n"
+        "  Value first = values[0];\n  Distance d = 2;\n"),
     "apply_on_the_left": (
         "#include <Eigen/Dense>\n",
         "  Eigen::MatrixXd transfer(3, 3);\n"

@@ -388,6 +388,32 @@ template<class C> struct char_traits { typedef C char_type; };
 struct input_iterator_tag {};
 struct forward_iterator_tag : input_iterator_tag {};
 struct random_access_iterator_tag : forward_iterator_tag {};
+struct output_iterator_tag {};
+struct bidirectional_iterator_tag : forward_iterator_tag {};
+// what an iterator type holds (ros_controllers' trajectory_interface: ``typename
+// std::iterator_traits<It>::value_type``, without which joint_trajectory_controller's
+// class template lost its members' calls): a class's own types, a pointer's pointee
+template<class It> struct iterator_traits {
+  typedef typename It::value_type value_type;
+  typedef long difference_type;
+  typedef value_type* pointer;
+  typedef value_type& reference;
+  typedef random_access_iterator_tag iterator_category;
+};
+template<class T> struct iterator_traits<T*> {
+  typedef T value_type;
+  typedef long difference_type;
+  typedef T* pointer;
+  typedef T& reference;
+  typedef random_access_iterator_tag iterator_category;
+};
+template<class T> struct iterator_traits<const T*> {
+  typedef T value_type;
+  typedef long difference_type;
+  typedef const T* pointer;
+  typedef const T& reference;
+  typedef random_access_iterator_tag iterator_category;
+};
 
 // <string>
 template<class C, class Tr = char_traits<C>, class A = allocator<C>> class basic_string {
