@@ -197,6 +197,14 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
         if not hosted and not loaded and not named:
             continue
         path = os.path.join(workspace.root, plugin.file)
+        if plugin in package.plugins and package.build_type in (
+                "ament_cmake", "ament_python") and not os.path.isfile(path):
+            # an ament package's package.xml export that names no file: ROS 2's
+            # pluginlib reads the descriptions the CMake files export
+            # (``pluginlib_export_plugin_description_file``), never this one
+            # (moveit2_tutorials keeps ROS 1's ``<moveit_core plugin=...>`` to a file of
+            # a folder its CMakeLists.txt no longer adds): nothing to read, no error
+            continue
         roots = _read_description(path, workspace, found)
         if not roots:
             continue
