@@ -1508,3 +1508,14 @@ def test_which_classes_known_only_by_name_may_be_a_ros_package_s() -> None:
     assert ros("vendor::Layer") and ros("::vendor::detail::Base") and ros("Helper")
     assert not ros("rs2::sensor") and not ros("QAbstractItemModel")
     assert ros("vendor_node::Base")  # the workspace's own package
+
+
+def test_a_standard_container_s_first_argument_in_capitals_is_a_type() -> None:
+    """zed-ros2-wrapper 33dfefa's ZedCamera holds ``std::unordered_set<sl::MODULE>`` (the
+    SDK missing): ``MODULE`` was declared a constant, as a capitals name ending a template's
+    arguments is (``std::array<T, N>``), so the class was invalid and every call in it an
+    error (86 places partial; 38 after)."""
+    result = extract("container_of_vendor_enum.cpp")
+    assert rows(result) == [("publish", "out", "std_msgs/msg/String", 12)]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)

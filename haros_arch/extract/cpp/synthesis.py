@@ -345,6 +345,15 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
     return kind if _in_enum_body(text, offset) else None
 
 
+# the standard's templates whose first argument is a type, right before a name: the name
+# is that type (zed's ``std::unordered_set<sl::MODULE>``, the SDK's enum, which a
+# constant made an error that left ZedCamera invalid), not a constant
+_TYPE_FIRST = re.compile(
+    rb"\bstd\s*::\s*(?:vector|set|unordered_set|multiset|unordered_multiset|map|"
+    rb"unordered_map|multimap|unordered_multimap|list|forward_list|deque|queue|"
+    rb"priority_queue|stack|shared_ptr|unique_ptr|weak_ptr|optional|atomic)\s*<\s*$")
+
+
 def _template_argument(window: bytes) -> bool:
     """Whether ``window`` (the text before a name, ending with ``<`` or ``,``) ends in
     a template's argument list: back to an unmatched ``<`` after a name, through
@@ -1174,7 +1183,8 @@ class Names:
             last = "value"
         if last == "type" and use == "any" and (
             rest.lstrip()[:1] in (b")", b",", b"}") or (
-                rest.lstrip()[:1] == b">" and _template_argument(window.rstrip()))
+                rest.lstrip()[:1] == b">" and _template_argument(window.rstrip())
+                and _TYPE_FIRST.search(window) is None)
         ) and (
             _CONSTANT.fullmatch(written[-1])
             or text[max(0, offset - 8):offset].rstrip().endswith(b"=")
