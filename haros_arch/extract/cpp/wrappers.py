@@ -419,13 +419,16 @@ class Wrappers:
         # named by a spec only (``Client<SpecT>``, ``create_service_handle<SpecT>``):
         # a node calls them through another wrapper, and their spelling is also a type
         # (``rclcpp::Client<S>::SharedFuture``, ``decltype(create_service_handle<S>(...))``)
+        # and not those wrapping only rows that are no call site (an SDF element's value:
+        # uuv_simulator's ``GetSDFParam<T>(sdf, name, ...)``, a Gazebo plugin's reader of
+        # its <plugin> element, makes no ROS call)
         by_name: dict[str, bool] = {}  # spelling -> whether all its wrappers are a spec's
         for f in functions:
             summary = self.summaries.get(_key(f.canonical))
             if summary and f.kind != CursorKind.LAMBDA_EXPR:
                 name = f.spelling.split("<")[0]
                 by_name[name] = by_name.get(name, True) and all(
-                    w.spec_param is not None for w in summary)
+                    w.spec_param is not None or not w.row.call_site for w in summary)
         self.site_names = self.names - {name for name, spec in by_name.items() if spec}
         # those a call with no argument at all may be (``get()``): a wrapper with no
         # template parameter and a default for each parameter it has; a call ``get()``
