@@ -348,3 +348,46 @@ def test_a_value_set_under_a_test_not_decided_is_unknown(write_tree) -> None:
     ws = scan([str(root / "src")], {"HAROS_TEST_UNSET_BACKEND": "x"})
     assert cmake_flags(str(root / "src/either/src/n.cpp"), ws) == [
         "-DBACKEND=1", "-DBASE"]
+
+
+GUARDED = r"""
+cmake_minimum_required(VERSION 3.8)
+project(guarded)
+find_package(CUDA)
+if(CUDA_FOUND)
+  add_executable(model_a src/a.cpp)
+  target_compile_definitions(model_a PRIVATE USE_MODEL_A)
+  add_definitions(-DWITH_GPU)
+  add_executable(model_b src/b.cpp)
+  if(WITH_EXTRA)
+    target_compile_definitions(model_b PRIVATE EXTRA)
+  endif()
+endif()
+add_executable(plain src/plain.cpp)
+if(CUDA_FOUND)
+  target_compile_definitions(plain PRIVATE ONLY_WITH_CUDA)
+endif()
+"""
+
+
+def test_a_macro_under_the_test_its_target_is_made_under_is_given(write_tree) -> None:
+    """autorally's ``if(CUDA_FOUND)`` (not decided: no CUDA here) around both
+    ``cuda_add_executable(path_integral_bf ...)`` and its ``target_compile_definitions(
+    ... USE_BASIS_FUNC_MODEL__)``: where the target exists the macro is defined, and its
+    model's constants with it. A macro under a further test not decided, or under a test
+    its target is not made under, is still not applied."""
+    root = write_tree({
+        "src/guarded/package.xml": package_xml("guarded", "ament_cmake"),
+        "src/guarded/CMakeLists.txt": GUARDED,
+        "src/guarded/src/a.cpp": "int main() { return 0; }\n",
+        "src/guarded/src/b.cpp": "int main() { return 0; }\n",
+        "src/guarded/src/plain.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")])
+    src = root / "src" / "guarded" / "src"
+    # add_definitions: every target of the directory, those made before it too
+    assert cmake_flags(str(src / "a.cpp"), ws) == ["-DWITH_GPU", "-DUSE_MODEL_A"]
+    # EXTRA: under a test of its own
+    assert cmake_flags(str(src / "b.cpp"), ws) == ["-DWITH_GPU"]
+    # plain is made on every path: WITH_GPU and ONLY_WITH_CUDA may not be given it
+    assert cmake_flags(str(src / "plain.cpp"), ws) == []

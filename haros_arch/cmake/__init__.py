@@ -9,6 +9,7 @@ and Python scripts.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import os
 import re
@@ -277,9 +278,10 @@ def _source_definitions(package: Package, workspace: Workspace
     sources = SourceMap(interpreter, files)
     found: dict[str, list[dict[str, CompileDefinition]]] = {}
     for target in interpreter.targets.values():
-        given = [*target.directory_definitions,
-                 *(each for keyword, each in target.definitions if keyword != "INTERFACE"),
-                 *(each for linked in sources.closure(target)[1:]
+        given = [*(_given_where_made(each, target) for each in target.directory_definitions),
+                 *(_given_where_made(each, target)
+                   for keyword, each in target.definitions if keyword != "INTERFACE"),
+                 *(_given_where_made(each, linked) for linked in sources.closure(target)[1:]
                    for keyword, each in linked.definitions if keyword != "PRIVATE")]
         defined: dict[str, CompileDefinition] = {}
         for each in given:
@@ -288,6 +290,20 @@ def _source_definitions(package: Package, workspace: Workspace
         for source in sources.own(target):
             found.setdefault(source, []).append(defined)
     return found
+
+
+def _given_where_made(each: CompileDefinition, target: Target) -> CompileDefinition:
+    """``each`` for ``target``: the if()s not decided around both it and the command
+    that makes the target do not guard it there, as a target exists only where they
+    hold (autorally's ``if(CUDA_FOUND)`` around ``cuda_add_executable(path_integral_bf
+    ...)`` and its ``target_compile_definitions(... USE_BASIS_FUNC_MODEL__)``, which
+    chooses the dynamics model and its constants: undefined, every line using them was an
+    error)."""
+    if not each.conditions or not target.conditions:
+        return each
+    rest = tuple(c for c in each.conditions if c not in target.conditions)
+    return each if len(rest) == len(each.conditions) else dataclasses.replace(
+        each, conditions=rest)
 
 
 # the C++ standard the parse uses unless told another (``toolchain.base_arguments``);
