@@ -1035,3 +1035,14 @@ def test_a_conditional_between_arithmetic_on_a_permissive_value_and_a_number(
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("write", "limit"), ("publish", "velocity")]
+
+
+def test_qt_members_the_stand_in_lacks(write_tree) -> None:
+    """mapviz's window and autorally's console call Qt members our stand-in does not
+    declare (``setMaximumSize``, ``QList::front``, ``QPainter::drawRect``): each is given
+    to the stand-in's classes from the unit's errors (``synthesis.QT_MORE``), and the
+    constructor that makes the node's calls parses."""
+    result = _extract(write_tree, _source("ros2_qt_members.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "config"), ("publish", "status"), ("subscribe", "command")]

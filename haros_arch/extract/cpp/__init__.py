@@ -26,6 +26,7 @@ from clang.cindex import (
     SourceRange,
     TranslationUnit,
     TranslationUnitLoadError,
+    conf,
 )
 from clang.cindex import Diagnostic as ClangDiagnostic
 
@@ -45,7 +46,7 @@ from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis,
 from . import compile_commands as commands
 from .conditions import fewest
 from .cursors import child_spellings, namespace_blocks
-from .headers import FALLBACK, STANDIN, IncludeSetup
+from .headers import FALLBACK, QT, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names, owner_of
@@ -2278,7 +2279,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     before = len(first)
     facts = _header_facts(setup)
     fieldless = facts.fieldless(setup)
-    names = synthesis.Names(fieldless, _declared_in(tu), facts.libraries(setup))
+    names = synthesis.Names(fieldless, _declared_in(tu), facts.libraries(setup),
+                            qt=_reads(tu, os.path.join(STANDIN, QT)))
     header = os.path.join(setup.generated, synthesis.HEADER_NAME)
     # the functions of each file, by line, and its API call sites (the same text in
     # every parse of the unit: each file is read once, not once per parse)
@@ -2329,6 +2331,11 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         names=", ".join(names.first()) or "none", before=before, after=len(mine(again)),
         included=f"; {', '.join(included)} from the stand-ins' headers" if included else ""))
     return again
+
+
+def _reads(tu: TranslationUnit, path: str) -> bool:
+    """Whether the parse ``tu`` read the file ``path``."""
+    return bool(conf.lib.clang_getFile(tu, path))
 
 
 def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:

@@ -25,6 +25,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import itertools
+import os
 import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
@@ -43,6 +44,11 @@ FULL_PARSES = 2
 MAX_NAMES = 400  # names declared for one unit
 HEADER_NAME = "haros_synthesised_names.h"
 ANY = "haros_any"  # the permissive class every declared name is or derives from
+# the members a unit uses on the classes of the Qt stand-in (haros_qt.h) that it does not
+# declare: a base of its classes, defined with them here (mapviz's ``QWidget::
+# setMaximumSize``, autorally's ``QPainter::drawRect``: a GUI node's constructor, where
+# it makes its ROS calls, was an error at each; the stand-in cannot list all of Qt)
+QT_MORE = "haros_qt_more"
 
 _IDENT = re.compile(rb"[A-Za-z_]\w*")
 _NAME_AT = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*(?:template\s+)?[A-Za-z_]\w*)*")
@@ -177,6 +183,20 @@ _SCOPED_VALUE = re.compile(rb"::\s*([A-Za-z_]\w*)\s*(?=[);,\]}]|:(?!:))")
 # the name written next is what an alias, a typedef or a using-declaration names
 _ALIASED = re.compile(rb"(?:\busing\s+\w+\s*=|\btypedef|\busing)\s*(?:typename\s+)?(?:::\s*)?"
                       rb"(?:[A-Za-z_]\w*\s*::\s*)*$")
+
+
+@functools.cache
+def _qt_text() -> str:
+    from .headers import QT, STANDIN
+
+    with open(os.path.join(STANDIN, QT), encoding="utf-8") as handle:
+        return code_only(handle.read())
+
+
+@functools.cache
+def _qt_classes() -> frozenset[str]:
+    """The classes the Qt stand-in defines (``QT_MORE`` is a base of each)."""
+    return frozenset(re.findall(r"\bclass (Q\w+)(?= :| \{)", _qt_text()))
 
 
 def _template_called(text: bytes, end: int) -> bool:
@@ -823,19 +843,22 @@ class Names:
 
     def __init__(self, packages: Iterable[str] = (),
                  declared: Callable[[str], frozenset[str]] | None = None,
-                 libraries: Iterable[str] = ()) -> None:
+                 libraries: Iterable[str] = (), qt: bool = False) -> None:
         """``packages``: those whose messages are known only by name (any package's
         ``pkg::msg::Name`` and ``*_msgs::Name`` count as well). ``declared``: the names
         the parse already has in a top-level namespace (a stand-in's class in a vendor
         namespace whose other names are unknown), never declared again. ``libraries``:
         the prefixes of the C libraries whose headers are missing (``library_prefixes``):
         an unqualified function under one (``ogg_stream_init(...)``) is the library's;
-        so is one of OpenMP's runtime (``COMPILER_LIBRARIES``)."""
+        so is one of OpenMP's runtime (``COMPILER_LIBRARIES``). ``qt``: whether the unit
+        reads the Qt stand-in (``QT_MORE``)."""
+        self.qt = qt
         self.packages = frozenset(packages)
         self.libraries = frozenset(libraries) | COMPILER_LIBRARIES
         self.declared = declared
         self.root = _Name(known=True)
         self.members: set[str] = set()
+        self.qt_members: set[str] = set()  # members of the Qt stand-in's classes (QT_MORE)
         # the members written after C++'s ``template`` keyword: member templates (any
         # template arguments, any call arguments), not static members
         self.member_templates: set[str] = set()
@@ -1100,7 +1123,14 @@ class Names:
         member = _MEMBER.match(message)
         if member is not None and "namespace" not in message:
             name, record = member.group(1), member.group(2)
-            if name in _KEYWORDS or (member.group(3) and not self._synthesised(record)):
+            if name in _KEYWORDS:
+                return
+            if record in _qt_classes():
+                if name not in self.qt_members:
+                    self.qt_members.add(name)
+                    self.count += 1
+                return
+            if member.group(3) and not self._synthesised(record):
                 return
             if self._synthesised(record) and record != "haros_any" and text is not None \
                     and _names_a_declared_type(name, text, offset):
@@ -1225,6 +1255,11 @@ class Names:
                     # resolve is kept by that name, the friend would take it)
                     self.friends.add(written[-1])
                     self.count += 1
+                    if self.qt:
+                        # in a unit with the Qt stand-in, a method of a class derived
+                        # from one of its classes (mapviz's ``adjustSize()``, multires'
+                        # ``centralWidget()`` in a QMainWindow) may be the base's
+                        self.qt_members.add(written[-1])
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
@@ -1509,6 +1544,9 @@ class Names:
         members += "".join(f"  template <class... A> friend haros_any &{f}(const A &...);\n"
                            for f in sorted(self.friends - self.members - self.member_templates))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
+        if self.qt_members:
+            lines += [f"#define {QT_MORE.upper()}_DEFINED", f"struct {QT_MORE} {{",
+                      *(f"  static haros_any {m};" for m in sorted(self.qt_members)), "};"]
         lines += [f"#define {name}" for name in sorted(self.macros)]
         lines += [f"#define {name}(...)" for name in sorted(self.declaration_macros)]
         # static: a field reads as ``msg.f`` and a constant as ``Msg::F``, and the

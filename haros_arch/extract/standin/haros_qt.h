@@ -28,14 +28,23 @@ inline int qBlue(QRgb rgb) { return rgb & 0xff; }
 namespace Qt {
 enum WindowType { Widget = 0, Window = 1, Dialog = 3, Tool = 11, FramelessWindowHint = 0x800 };
 typedef int WindowFlags;
-enum GlobalColor { black = 2, white = 3, red = 7, green = 8, blue = 9 };
+enum GlobalColor { color0, color1, black, white, darkGray, gray, lightGray, red, green, blue,
+                   cyan, magenta, yellow, darkRed, darkGreen, darkBlue, darkCyan, darkMagenta,
+                   darkYellow, transparent };
 enum Key { Key_Escape = 0x01000000, Key_Left = 0x01000012, Key_Up, Key_Right, Key_Down,
            Key_Space = 0x20 };
 enum FocusPolicy { NoFocus = 0, TabFocus = 1, ClickFocus = 2, StrongFocus = 11 };
 enum AlignmentFlag { AlignLeft = 1, AlignRight = 2, AlignHCenter = 4, AlignCenter = 0x84 };
 }
+// the members a unit uses that this file does not declare (``QWidget::setMaximumSize``):
+// the synthesised names' header (read first) defines this class with each of them as a
+// static member of its permissive class (``synthesis.QT_MORE``); each class here finds
+// it through one base (QWidget through QObject), so a member of a class here hides it
+#ifndef HAROS_QT_MORE_DEFINED
+struct haros_qt_more {};
+#endif
 class QStringList;
-class QString {
+class QString : public haros_qt_more {
 public:
   QString();
   QString(const char* text);
@@ -58,7 +67,7 @@ public:
   bool endsWith(const QString& text) const;
   bool contains(const QString& text) const;
 };
-template<class T> class QList {
+template<class T> class QList : public haros_qt_more {
 public:
   QList();
   void append(const T& value);
@@ -76,7 +85,7 @@ public:
 };
 template<class T> class QVector : public QList<T> {};
 class QStringList : public QList<QString> {};
-class QVariant {
+class QVariant : public haros_qt_more {
 public:
   QVariant();
   template<class T> QVariant(const T& value);
@@ -85,7 +94,7 @@ public:
   double toDouble(bool* ok = nullptr) const;
   bool toBool() const;
 };
-class QObject {
+class QObject : public haros_qt_more {
 public:
   explicit QObject(QObject* parent = nullptr);
   virtual ~QObject();
@@ -99,12 +108,13 @@ public:
                          const char* method);
   void setObjectName(const QString& name);
   QString objectName() const;
+  static QString tr(const char* text, const char* disambiguation = nullptr, int n = -1);
   QObject* parent() const;
   void deleteLater();
   bool blockSignals(bool block);
   void installEventFilter(QObject* filter);
 };
-class QEvent { public: virtual ~QEvent(); int type() const; void accept(); void ignore(); };
+class QEvent : public haros_qt_more { public: virtual ~QEvent(); int type() const; void accept(); void ignore(); };
 class QTimerEvent : public QEvent {};
 class QCloseEvent : public QEvent {};
 class QShowEvent : public QEvent {};
@@ -139,10 +149,10 @@ public:
 protected:
   virtual void run();
 };
-class QMutex { public: QMutex(); void lock(); void unlock(); bool tryLock(int timeout = 0); };
-class QMutexLocker { public: explicit QMutexLocker(QMutex* mutex); ~QMutexLocker(); };
-class QPoint { public: QPoint(); QPoint(int x, int y); int x() const; int y() const; };
-class QPointF {
+class QMutex : public haros_qt_more { public: QMutex(); void lock(); void unlock(); bool tryLock(int timeout = 0); };
+class QMutexLocker : public haros_qt_more { public: explicit QMutexLocker(QMutex* mutex); ~QMutexLocker(); };
+class QPoint : public haros_qt_more { public: QPoint(); QPoint(int x, int y); int x() const; int y() const; };
+class QPointF : public haros_qt_more {
 public:
   QPointF();
   QPointF(double x, double y);
@@ -163,18 +173,18 @@ QPointF operator-(const QPointF& a, const QPointF& b);
 QPointF operator*(const QPointF& p, double c);
 QPointF operator*(double c, const QPointF& p);
 QPointF operator/(const QPointF& p, double c);
-class QTransform {
+class QTransform : public haros_qt_more {
 public:
   QTransform();
   QTransform& rotate(double angle);
   QTransform& translate(double dx, double dy);
   QTransform& scale(double sx, double sy);
 };
-class QSize { public: QSize(); QSize(int w, int h); int width() const; int height() const; };
-class QRect { public: QRect(); QRect(int x, int y, int w, int h); int width() const; int height() const; };
-class QColor { public: QColor(); QColor(int r, int g, int b, int a = 255); QColor(const char* name); };
-class QPaintDevice { public: virtual ~QPaintDevice(); };
-class QImage : public QPaintDevice {
+class QSize : public haros_qt_more { public: QSize(); QSize(int w, int h); int width() const; int height() const; };
+class QRect : public haros_qt_more { public: QRect(); QRect(int x, int y, int w, int h); int width() const; int height() const; };
+class QColor : public haros_qt_more { public: QColor(); QColor(Qt::GlobalColor color); QColor(int r, int g, int b, int a = 255); QColor(const char* name); };
+class QPaintDevice { public: virtual ~QPaintDevice(); };  // (QWidget has it through QObject)
+class QImage : public QPaintDevice, public haros_qt_more {
 public:
   enum Format { Format_RGB888, Format_RGB32, Format_ARGB32, Format_Grayscale8, Format_Indexed8 };
   QImage();
@@ -195,10 +205,10 @@ public:
   QImage transformed(const QTransform& matrix) const;
   QSize size() const;
 };
-class QPixmap { public: QPixmap(); static QPixmap fromImage(const QImage& image); };
-class QPen { public: QPen(); QPen(const QColor& color); void setWidth(int width); };
-class QBrush { public: QBrush(); QBrush(const QColor& color); };
-class QPainter {
+class QPixmap : public haros_qt_more { public: QPixmap(); static QPixmap fromImage(const QImage& image); };
+class QPen : public haros_qt_more { public: QPen(); QPen(const QColor& color); void setWidth(int width); };
+class QBrush : public haros_qt_more { public: QBrush(); QBrush(const QColor& color); QBrush(Qt::GlobalColor color); };
+class QPainter : public haros_qt_more {
 public:
   QPainter();
   explicit QPainter(QPaintDevice* device);
@@ -220,7 +230,7 @@ public:
 class QLayout : public QObject { public: void addWidget(class QWidget* widget); };
 class QWidget : public QObject, public QPaintDevice {
 public:
-  explicit QWidget(QWidget* parent = nullptr);
+  explicit QWidget(QWidget* parent = nullptr, Qt::WindowFlags f = Qt::Widget);
   void show();
   void hide();
   void close();
@@ -255,7 +265,7 @@ public:
 };
 class QMainWindow : public QWidget {
 public:
-  explicit QMainWindow(QWidget* parent = nullptr);
+  explicit QMainWindow(QWidget* parent = nullptr, Qt::WindowFlags flags = Qt::Widget);
   void setCentralWidget(QWidget* widget);
 };
 class QDialog : public QWidget { public: explicit QDialog(QWidget* parent = nullptr); int exec(); };
