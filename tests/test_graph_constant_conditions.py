@@ -128,3 +128,88 @@ def test_the_compatibility_level_decides_the_names(write_tree) -> None:
     assert published("new") == [fixed, ("/map", ()), moving]
     # the launch file sets 0, or nothing (getCompat's default, default_level: 0)
     assert published("old") == published("unset") == [fixed, moving, ("/node/map", ())]
+
+
+SWITCHES = r"""
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <string>
+bool PUB_EACH_LINE = false;
+bool VERBOSE = false;
+int N_SCANS = 16;
+static int STEPPED = 0;
+void set_verbose();
+int main(int argc, char** argv)
+{
+  ros::init(argc, argv, "scans");
+  ros::NodeHandle nh;
+  nh.param<int>("scan_line", N_SCANS, 16);
+  std::vector<ros::Publisher> lines;
+  ros::Publisher verbose, stepped, scans;
+  if (PUB_EACH_LINE)
+  {
+    for (int i = 0; i < 4; i++)
+      lines.push_back(nh.advertise<std_msgs::String>("/laser_scanid_" + std::to_string(i), 1));
+  }
+  set_verbose();
+  if (VERBOSE)
+    verbose = nh.advertise<std_msgs::String>("verbose", 1);
+  STEPPED++;
+  if (STEPPED == 0)
+    stepped = nh.advertise<std_msgs::String>("stepped", 1);
+  if (N_SCANS == 16)
+    scans = nh.advertise<std_msgs::String>("scans", 1);
+  ros::spin();
+}
+"""
+
+SETTER = r"""
+extern bool VERBOSE;
+void set_verbose() { VERBOSE = true; }
+"""
+
+
+def test_a_global_no_source_writes_after_its_literal_is_a_constant(write_tree) -> None:
+    """A-LOAM's ``bool PUB_EACH_LINE = false;``, a switch no code writes, kept its per-line
+    publishers as ``/laser_scanid_?`` under an undecided ``if (PUB_EACH_LINE)``; a global
+    of a number or bool that no source of the package writes after its literal is now a
+    constant of the condition. One another file assigns, one stepped, one read into by
+    a call (``nh.param(..., N_SCANS, ...)``) is none."""
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex"),
+        "src/ex/CMakeLists.txt": "project(ex)\n"
+                                 "add_executable(scans src/scans.cpp src/setter.cpp)\n",
+        "src/ex/src/scans.cpp": SWITCHES,
+        "src/ex/src/setter.cpp": SETTER,
+    })
+    found = extract_cpp([str(root / "src/ex/src/scans.cpp")], scan([str(root / "src")]),
+                        cache_dir=None)
+    held = {c.name: [k.constants for k in c.conditions]
+            for c in found.calls if c.kind == "publish"}
+    assert held["/laser_scanid_?"][0] == (("PUB_EACH_LINE", False),)
+    assert held["verbose"] == [None]
+    assert held["stepped"] == [None]
+    assert held["scans"] == [None]
+
+
+def test_a_cached_unit_is_read_again_when_another_file_writes_the_global(
+        write_tree, tmp_path) -> None:
+    """The unit's cache entry lists the package's sources looked through: once another
+    file assigns the switch, the condition is undecided again, not the cached constant."""
+    root = write_tree({
+        "src/ex/package.xml": package_xml("ex"),
+        "src/ex/CMakeLists.txt": "project(ex)\n"
+                                 "add_executable(scans src/scans.cpp src/setter.cpp)\n",
+        "src/ex/src/scans.cpp": SWITCHES,
+        "src/ex/src/setter.cpp": "void set_verbose() {}\n",
+    })
+    cache = str(tmp_path / "cache")
+
+    def held():
+        found = extract_cpp([str(root / "src/ex/src/scans.cpp")],
+                            scan([str(root / "src")]), cache_dir=cache)
+        return {c.name: [k.constants for k in c.conditions]
+                for c in found.calls if c.kind == "publish"}["verbose"]
+    assert held() == [(("VERBOSE", False),)]
+    (root / "src/ex/src/setter.cpp").write_text(SETTER)
+    assert held() == [None]

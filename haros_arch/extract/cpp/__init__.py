@@ -42,7 +42,17 @@ from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...processes import raise_if_stopped, worker_pool
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD, this_run
-from . import cache, call_conditions, links, recall, ros2_interfaces, synthesis, toolchain, versions
+from . import (
+    cache,
+    call_conditions,
+    links,
+    recall,
+    ros2_interfaces,
+    synthesis,
+    toolchain,
+    values,
+    versions,
+)
 from . import compile_commands as commands
 from .conditions import fewest
 from .cursors import child_spellings, namespace_blocks
@@ -1507,6 +1517,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     workspace = setup.workspace
     before = len(setup.diagnostics)
     setup.unit_missing = []
+    values.forget_globals()
     data = text.encode("utf-8")
 
     known: dict[str, bool] = {}  # clang names the same few files for every error
@@ -1630,7 +1641,9 @@ def _translation_unit(path: str, text: str, ros2: bool,
         result.facts = [*result.facts, *call_conditions.hidden_facts(
             finder.unit_cursor(), finder.owned, _error_words(errors, places))]
     finder.release()
-    headers = [path, *read]
+    # and the sources of the packages read for a global's writes (``unwritten_global``)
+    headers = [path, *read, *(f for root in sorted(values.CONSULTED)
+                              for f in values.package_sources(root))]
     for include in tu.get_includes():
         name = os.path.abspath(include.include.name)
         if workspace.holds(name) or name.startswith(setup.generated + os.sep) or (

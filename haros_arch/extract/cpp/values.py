@@ -14,6 +14,8 @@ constructor initialises it with. Anything else is unknown.
 
 from __future__ import annotations
 
+import functools
+import os
 import re
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -1023,6 +1025,8 @@ class Scope:
         if decl.type.is_const_qualified() or _string_constant(decl) or const_array(decl):
             definition = decl.get_definition() or decl
             return initializer(definition)
+        if unwritten_global(decl):
+            return initializer(decl.get_definition() or decl)
         return None
 
     def string(self, cursor: Cursor, depth: int = 0) -> Parts:
@@ -1673,6 +1677,123 @@ def _leaves(statement: Cursor) -> bool:
     if statement.kind == CursorKind.RETURN_STMT:
         return True
     return strip(statement).kind == CursorKind.CXX_THROW_EXPR
+
+
+_SCALARS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.UINT, TypeKind.LONG,
+                      TypeKind.ULONG, TypeKind.SHORT, TypeKind.USHORT, TypeKind.DOUBLE,
+                      TypeKind.FLOAT, TypeKind.LONGLONG, TypeKind.ULONGLONG})
+_SOURCE_SUFFIXES = (".c", ".cc", ".cpp", ".cxx", ".cu", ".h", ".hh", ".hpp", ".hxx", ".cuh")
+MAX_PACKAGE_SOURCES = 400  # files of a package looked through for a global's writes
+_WRITTEN_AFTER = re.compile(r"\s*(?:(?:[-+*/%&|^]|<<|>>)?=(?!=)|\+\+|--)")
+_WRITTEN_BEFORE = re.compile(r"(?:\+\+|--|(?<!&)&|>>|,|\[|\{)\s*$")
+# a parenthesis that opens no call: a test's, or an expression's after an operator
+_READ_CALL = re.compile(
+    r"(?:\b(?:if|while|switch|return|sizeof|decltype)\s*|[-+*/%<>=!&|^?:(]\s*)\($")
+
+
+def unwritten_global(decl: Cursor) -> bool:
+    """Whether ``decl`` is a variable of a namespace (not ``const``: a constant is one
+    already) of a number or ``bool``, given a literal, that no source of its package
+    writes after: every use of its name there is read as a value (not assigned, stepped,
+    taken the address of, read into, nor given to a call, which may take it by
+    reference). A debug switch of a research node (A-LOAM's ``bool PUB_EACH_LINE =
+    false``, tested before its per-line publishers) is then decided, as a ``const`` one."""
+    if decl.kind != CursorKind.VAR_DECL or decl.type.kind not in _SCALARS:
+        return False
+    parent = decl.semantic_parent
+    if parent is None or parent.kind not in (CursorKind.TRANSLATION_UNIT,
+                                             CursorKind.NAMESPACE):
+        return False
+    definition = decl.get_definition()
+    if definition is None or definition.location.file is None:
+        return False
+    value = initializer(definition)
+    if value is None or strip(value).kind not in (
+            CursorKind.CXX_BOOL_LITERAL_EXPR, CursorKind.INTEGER_LITERAL,
+            CursorKind.FLOATING_LITERAL):
+        return False
+    path = os.path.abspath(definition.location.file.name)
+    root = _package_root(os.path.dirname(path))
+    if root is None:
+        return False
+    CONSULTED.add(root)
+    key = (path, definition.spelling, definition.location.offset)
+    if key not in _UNWRITTEN:
+        _UNWRITTEN[key] = _unwritten(path, definition.spelling, definition.location.offset,
+                                     root)
+    return _UNWRITTEN[key]
+
+
+# the package folders ``unwritten_global`` looked through for the unit being read: its
+# result depends on their sources, which its cache entry lists (``package_sources``);
+# and its answers, both forgotten when the next unit is read (``forget_globals``: a
+# file may have changed since)
+CONSULTED: set[str] = set()
+_UNWRITTEN: dict[tuple[str, str, int], bool] = {}
+_SOURCES: dict[str, tuple[str, ...]] = {}
+
+
+def forget_globals() -> None:
+    CONSULTED.clear()
+    _UNWRITTEN.clear()
+    _SOURCES.clear()
+
+
+def _unwritten(path: str, name: str, offset: int, root: str) -> bool:
+    from ...ctext import code_only
+
+    sources = package_sources(root)
+    if path not in sources:
+        return False  # (a package too large to look through, or a file not in it)
+    word = re.compile(r"(?<![\w.:>])" + re.escape(name) + r"\b")
+    for source in sources:
+        try:
+            with open(source, encoding="utf-8", errors="replace") as handle:
+                text = code_only(handle.read())
+        except OSError:
+            return False
+        own = os.path.abspath(source) == os.path.abspath(path)
+        for found in word.finditer(text):
+            if own and found.start() == offset:
+                continue  # the definition
+            before = text[max(0, found.start() - 80):found.start()]
+            if (_WRITTEN_AFTER.match(text, found.end()) or _WRITTEN_BEFORE.search(before)
+                    or (before.rstrip().endswith("(")
+                        and not _READ_CALL.search(before.rstrip()))
+                    or text[found.end():found.end() + 1] == "("):
+                return False
+    return True
+
+
+@functools.lru_cache(maxsize=64)
+def _package_root(folder: str) -> str | None:
+    """The nearest folder at or above ``folder`` with a package.xml."""
+    while True:
+        if os.path.isfile(os.path.join(folder, "package.xml")):
+            return folder
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            return None
+        folder = parent
+
+
+def package_sources(root: str) -> tuple[str, ...]:
+    """The C, C++ and CUDA files under a package's folder (not hidden, build or install
+    ones); none when there are more than ``MAX_PACKAGE_SOURCES``."""
+    if root not in _SOURCES:
+        _SOURCES[root] = _package_sources(root)
+    return _SOURCES[root]
+
+
+def _package_sources(root: str) -> tuple[str, ...]:
+    found: list[str] = []
+    for folder, dirs, names in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
+        found.extend(os.path.abspath(os.path.join(folder, n)) for n in sorted(names)
+                     if n.endswith(_SOURCE_SUFFIXES))
+        if len(found) > MAX_PACKAGE_SOURCES:
+            return ()
+    return tuple(found)
 
 
 def _string_constant(decl: Cursor) -> bool:

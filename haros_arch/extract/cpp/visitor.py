@@ -115,6 +115,7 @@ from .values import (
     render,
     strip,
     topic_base,
+    unwritten_global,
     written_arguments,
 )
 from .values import _walk as walk_cursors
@@ -2850,12 +2851,14 @@ class CallFinder:
                         ) -> tuple[tuple[str, int | bool], ...]:
         """The constants ``tested`` names, each with its value: a ``const`` variable of
         integer or bool type whose one value is a literal (neonavigation_common's
-        ``const int current_level = 1;`` at namespace scope)."""
+        ``const int current_level = 1;`` at namespace scope), or a variable of a
+        namespace that no source of its package writes after its literal
+        (``values.unwritten_global``)."""
         found: dict[str, int | bool] = {}
         for node in tested.walk_preorder():
             decl = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
             if decl is None or decl.kind != CursorKind.VAR_DECL or (
-                not decl.type.is_const_qualified()
+                not decl.type.is_const_qualified() and not unwritten_global(decl)
             ):
                 continue
             kind = decl.type.get_canonical().kind
