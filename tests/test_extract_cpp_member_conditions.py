@@ -112,7 +112,7 @@ def test_a_member_read_on_a_handle_another_file_passes(write_tree) -> None:
     assert held == {"~axis_vertical": [("pimpl_->is_3D", (("pimpl_->is_3D", "~is_3D"),))]}
 
 
-def _findings(write_tree, is_3d: str) -> list[tuple[str, list[str]]]:
+def _findings(write_tree, is_3d: str, messages: bool = False) -> list:
     import json
 
     from haros_arch.cli import main
@@ -129,7 +129,8 @@ def _findings(write_tree, is_3d: str) -> list[tuple[str, list[str]]]:
             "</node></launch>")})
     out = root / "check.json"
     main(["check", str(root), "--format", "json", "-o", str(out), "--fail-on", "never"])
-    return sorted((f["rule"], f["entities"]) for f in json.loads(out.read_text())["findings"]
+    return sorted((f["rule"], f["message"] if messages else f["entities"])
+                  for f in json.loads(out.read_text())["findings"]
                   if f["rule"].startswith("parameter-set-not-read"))
 
 
@@ -138,3 +139,16 @@ def test_the_graph_decides_the_condition_from_the_launch_value(write_tree) -> No
     assert _findings(write_tree, "true") == []
     assert _findings(write_tree, "false") == [
         ("parameter-set-not-read", ["parameter:/teleop/axis_vertical"])]
+
+
+def test_the_finding_names_the_read_its_condition_dropped(write_tree) -> None:
+    """"No node reads it" sent the user to code that reads it, under a test the launch
+    file makes false (hdl_graph_slam's statistical filter settings with
+    ``outlier_removal_method`` NONE, A-LOAM's ``output_bag_file`` with ``to_bag``
+    false): the message names that read, its condition and where it is."""
+    assert _findings(write_tree, "false", messages=True) == [(
+        "parameter-set-not-read",
+        "/teleop/axis_vertical is set by the launch file but no node reads it in this "
+        "configuration: /teleop reads it only under if (pimpl_->is_3D) "
+        "(tj/src/teleop.cpp:13), which does not hold here; similar names that are read: "
+        "none")]

@@ -148,7 +148,7 @@ def _known(config: Configuration) -> Known:
     return _per_configuration(_KNOWN, config, (len(config.nodes), len(config.links)), Known)
 
 
-Built = TypeVar("Built", "Known", "_Settings")
+Built = TypeVar("Built", "Known", "_Settings", "_Dropped")
 
 
 def _per_configuration(cache: WeakKeyDictionary[Configuration, Built], config: Configuration,
@@ -433,3 +433,50 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
     return [items[place] for place in sorted(places)
             if len(letters[place] ^ mine) <= 2 * MAX_DISTANCE
             and distance(word, owns[place], pattern) <= MAX_DISTANCE]
+
+
+# CONDITION_FALSE about a read (``diagnostics.CATALOGUE``'s template, filled)
+_READ_DROPPED = re.compile(
+    r"(?P<node>\S+): no read (?P<name>\S+) in this configuration: the code makes it under "
+    r"(?P<condition>.*) \((?P<where>[^()]*)\), which does not hold here")
+MAX_DROPPED_SAID = 2
+
+
+class _Dropped:
+    """The reads each configuration's code makes under a condition false there, by the
+    parameter's full name: (node, condition, where)."""
+
+    def __init__(self, config: Configuration) -> None:
+        self.size = (len(config.diagnostics), 0)
+        self.by_name: dict[str, list[tuple[str, str, str]]] = {}
+        for found in config.diagnostics:
+            if found.code != "CONDITION_FALSE":
+                continue
+            read = _READ_DROPPED.fullmatch(found.message)
+            if read is not None:
+                self.by_name.setdefault(read["name"], []).append(
+                    (read["node"], read["condition"], read["where"]))
+
+
+_DROPPED: WeakKeyDictionary[Configuration, _Dropped] = WeakKeyDictionary()
+
+
+def reads_dropped(charge: Charge, config: Any, parameter: Any) -> str:
+    """Why no node reads ``parameter`` though one's code names it: the reads of it that
+    the configuration dropped, their condition false there (CONDITION_FALSE), as a
+    clause (`` in this configuration: /n reads it only under if (x) (a.cpp:7), which
+    does not hold here``); empty when there is none. A finding that says "no node reads
+    it" sends the user to code that reads it, under a test the launch file decides."""
+    if not isinstance(config, Configuration) or not isinstance(parameter, Parameter):
+        raise QueryTypeError("reads_dropped() takes a configuration and a parameter")
+    charge(1)
+    index = _per_configuration(_DROPPED, config, (len(config.diagnostics), 0), _Dropped)
+    found = index.by_name.get(parameter.name, [])
+    if not found:
+        return ""
+    said = [f"{node} reads it only under {condition} ({where})"
+            for node, condition, where in found[:MAX_DROPPED_SAID]]
+    more = f" and {len(found) - MAX_DROPPED_SAID} more" if len(found) > MAX_DROPPED_SAID \
+        else ""
+    verb = "does" if len(found) == 1 else "do"
+    return f" in this configuration: {', '.join(said)}{more}, which {verb} not hold here"

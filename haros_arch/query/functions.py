@@ -19,7 +19,7 @@ from ..model.runtime import Link, NodeInstance, Parameter, Resource
 from ..model.source import Package
 from ..model.values import UNKNOWN_MARK
 from ..plugins.hosts import TRANSPORTS
-from .absence import distance, same_setting, similar_to, unknown_users
+from .absence import distance, reads_dropped, same_setting, similar_to, unknown_users
 from .access import readers_of
 from .errors import QueryLimitError, QueryTypeError
 
@@ -356,6 +356,7 @@ FUNCTIONS["is_own_service"] = Function("is_own_service", is_own_service, charged
 FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 3, charged=True)
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
 FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged=True)
+FUNCTIONS["reads_dropped"] = Function("reads_dropped", reads_dropped, 2, 2, charged=True)
 
 
 # topics that rviz's tools publish when an operator clicks: 2D Pose Estimate, 2D Nav Goal
