@@ -82,3 +82,38 @@ def test_a_using_declaration_of_a_constant_the_code_reads_as_a_value(tmp_path) -
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "limited")]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
+
+
+INHERITED = """\
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+#include <vendor/fiber_driver.hpp>
+class Bridge : public FiberDriver {
+ public:
+  using FiberDriver::FiberDriver;
+  void start(rclcpp::Node::SharedPtr node) {
+    pub_ = node->create_publisher<std_msgs::msg::String>("state", 10);
+  }
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+int main(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("bridge");
+  Bridge bridge(nullptr, 1);
+  bridge.start(node);
+}
+"""
+
+
+def test_an_inherited_constructor_of_an_unknown_base_ends(tmp_path) -> None:
+    """ros2_canopen's ``using FiberDriver::FiberDriver;`` (the base's constructors, the
+    base a vendor class whose header is missing) was taken for a name brought from a
+    namespace ``FiberDriver``: the class was merged into itself and the names' tree
+    became a cycle that every later round walked for ever."""
+    (tmp_path / "package.xml").write_text(package_xml("pkg").replace(
+        "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"))
+    source = tmp_path / "bridge.cpp"
+    source.write_text(INHERITED)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "state")]
+    assert "CPP_ERROR_NEAR_CALL" not in [d.code for d in result.diagnostics]

@@ -913,8 +913,10 @@ class Names:
                 self._texts.append(code_only(text))
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
-                self.brought.update(re.sub(r"\s+", "", m.decode())
-                                    for m in _USING_ONE.findall(text))
+                # not ``using Base::Base;``: a class's inherited constructors
+                self.brought.update(one for one in (re.sub(r"\s+", "", m.decode())
+                                                    for m in _USING_ONE.findall(text))
+                                    if one.split("::")[-2:-1] != one.split("::")[-1:])
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
                 self.taken.update(_case_literals(text))
         for message, text, offset in errors:
@@ -1604,7 +1606,9 @@ class Names:
             for name, child in node.children.items():
                 top = self.root.children.get(name)
                 if (only is not None and name != only) or child.known or top is None or \
-                        top.known or name in found:
+                        top.known or name in found or _holds(top, child):
+                    # merging a name into one under it would make the names a cycle
+                    # that every later walk of them follows for ever
                     continue
                 if only is not None and top.uses and top.uses <= _VALUE_USES:
                     # a name the code reads only as a value: not the type that the
@@ -1724,6 +1728,20 @@ def _members_of(text: bytes) -> tuple[frozenset[str], frozenset[str], frozenset[
                     flags.add(name)
     return (frozenset(members), frozenset(templates), frozenset(taken),
             frozenset(constants), frozenset(flags))
+
+
+def _holds(node: _Name, other: _Name) -> bool:
+    """Whether ``other`` is ``node`` or a name under it."""
+    seen: set[int] = set()
+    stack = [node]
+    while stack:
+        one = stack.pop()
+        if one is other:
+            return True
+        if id(one) not in seen:
+            seen.add(id(one))
+            stack.extend(one.children.values())
+    return False
 
 
 def _merge(into: _Name, other: _Name) -> None:
