@@ -507,6 +507,12 @@ CATALOGUE: dict[str, Entry] = {
     "CPP_PARSE_FAILED": Entry(
         "error", "C++ file could not be parsed: {detail}",
         "libclang could not produce a translation unit; the file gives no calls."),
+    "CPP_TIME_LIMIT": Entry(
+        "error", "C++ file not analysed: its analysis passed {detail}",
+        "The parses and the walk of this translation unit used more processor time "
+        "than one unit may (real units take a few seconds), so it was stopped and gives "
+        "no calls: the nodes built from it are partial. Most likely a case the analysis "
+        "loops on; please report it with the file. The run goes on with the other units."),
     "CPP_CALL_MISSED": Entry(
         "info", "{text} calls the ROS API, but no call was extracted there",
         "A grep finds a call of a ROS API function (or of one of the unit's own wrappers "

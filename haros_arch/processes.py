@@ -60,7 +60,8 @@ def _stopped(signum: int, _frame: Any) -> None:
         # once: a second SIGTERM (``timeout`` signals the whole process group, a worker
         # may pass one on) must not interrupt the unwinding the first one started
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    held_signals.requested = held_signals.requested or error
+    if held_signals.requested is None or isinstance(held_signals.requested, OverTime):
+        held_signals.requested = error  # a stop of the run over a unit's time limit
     if not held_signals.depth:
         raise error
 
@@ -101,3 +102,42 @@ def worker_pool(workers: int | None, **options: Any) -> Iterator[ProcessPoolExec
         except BaseException:
             pool.shutdown(cancel_futures=True)
             raise
+
+
+class OverTime(BaseException):
+    """``cpu_limit``'s: the block used more processor time than it may. Not an
+    ``Exception``: a handler of errors the block has must not take it for one of them
+    and go on."""
+
+    def __init__(self, seconds: float) -> None:
+        super().__init__(f"{seconds:g} s of processor time")
+        self.seconds = seconds
+
+
+@contextlib.contextmanager
+def cpu_limit(seconds: float) -> Iterator[None]:
+    """Within the block, ``OverTime`` is raised once the process has used ``seconds``
+    of processor time in it: a bound on work whose length the input decides (one C++
+    unit's analysis), so that a case the analysis loops on, or a hostile file, ends
+    with a diagnostic instead of stalling the run. Raised where the interpreter is, or,
+    in a callback of a call into C, when that call ends (``held_signals``). Off the main
+    thread, where Python runs no handler, there is no limit."""
+    if threading.current_thread() is not threading.main_thread() or seconds <= 0:
+        yield
+        return
+
+    def over(_signum: int, _frame: Any) -> None:
+        error = OverTime(seconds)
+        held_signals.requested = held_signals.requested or error
+        if not held_signals.depth:
+            raise error
+
+    previous = signal.signal(signal.SIGPROF, over)
+    signal.setitimer(signal.ITIMER_PROF, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, previous)
+        if isinstance(held_signals.requested, OverTime):
+            held_signals.requested = None  # this limit's: not a stop of the run

@@ -234,7 +234,8 @@ def cpp_sources(nodes: Sequence[Node], workspace: Workspace) -> list[str]:
 # each cause (a C++ error that can hide a call, ``cpp.recall``; a file that could not be
 # read or parsed)
 _PARTIAL_CAUSES = {
-    "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "FILE_UNREADABLE",
+    "cpp": ("CPP_CALL_MISSED", "CPP_ERROR_NEAR_CALL", "CPP_PARSE_FAILED", "CPP_TIME_LIMIT",
+            "FILE_UNREADABLE",
             "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_NODE_UNREAD", "CPP_CLASS_UNSEEN",
             "CPP_BUILD_MACRO",
             "CPP_VERSION_UNKNOWN", "CPP_LIBRARY_LOADED"),

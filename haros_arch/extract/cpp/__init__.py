@@ -39,7 +39,7 @@ from ...manifest import parse_manifest, ros_version
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
-from ...processes import raise_if_stopped, worker_pool
+from ...processes import OverTime, cpu_limit, raise_if_stopped, worker_pool
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD, this_run
 from . import (
@@ -72,6 +72,10 @@ SKIP_FUNCTION_BODIES = 0x40  # CXTranslationUnit_SkipFunctionBodies
 # (HAROS_UNIT_ROS) and, in ROS 1, boost::bind's placeholders in the global namespace
 UNIT_ROS = {1: os.path.join(STANDIN, "haros_ros1.h"), 2: os.path.join(STANDIN, "haros_ros2.h")}
 MAX_ERRORS_PER_FILE = 50
+# the processor time one unit's parses and walks may take (``processes.cpu_limit``): the
+# largest units of real workspaces take a few seconds (Autoware's, navigation2's); past
+# this the unit gives no calls and says so (CPP_TIME_LIMIT), and the run goes on
+UNIT_CPU_SECONDS = 120.0
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
 
@@ -1229,8 +1233,14 @@ def _unit_and_data(path: str, text: str, ros2: bool, setup: IncludeSetup
     """``_translation_unit`` with the result as the cache keeps it (its JSON text) and its
     digest, made where the unit was parsed (in a worker: not in the serial part of the
     run, which takes a text back at the cost of a string, not of a tree of objects)."""
-    with held_back(YOUNG_THRESHOLD):
-        unit, headers = _translation_unit(path, text, ros2, setup)
+    try:
+        with held_back(YOUNG_THRESHOLD), cpu_limit(UNIT_CPU_SECONDS):
+            unit, headers = _translation_unit(path, text, ros2, setup)
+    except OverTime as over:
+        unit, headers = CppResult(), []  # not kept: a later run tries again
+        unit.unseen = ["*"]
+        unit.diagnostics.append(diag.make(
+            "CPP_TIME_LIMIT", setup.workspace.location(path), detail=str(over)))
     data = _result_data(unit)
     return unit, headers, json.dumps(data), cache.digest(data)
 
