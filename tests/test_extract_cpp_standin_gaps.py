@@ -1046,3 +1046,15 @@ def test_qt_members_the_stand_in_lacks(write_tree) -> None:
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "config"), ("publish", "status"), ("subscribe", "command")]
+
+
+def test_std_abs_named_globally_and_utf_conversions(write_tree) -> None:
+    """navigation2_tutorials: ``using std::abs;`` at namespace scope was an error (the
+    stand-in's ``std::abs(int)`` a second function beside the C library's), and its SMS
+    behaviour's ``std::wstring_convert<std::codecvt_utf8<char16_t>, char16_t>`` and
+    ``std::u16string`` were not declared."""
+    result = _extract(write_tree, _source("ros2_abs_codecvt.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("declare", "lookahead"), ("declare", "message"),
+        ("publish", "long_messages"), ("publish", "short_messages")]

@@ -276,7 +276,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
                      for call in calls]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
-            node.plugin_class or "", instance.ros_version)
+            node.plugin_class or "", instance.ros_version) or _base_sources(
+                node, instance.ros_version, workspace)
         if row is not None:
             calls = _per_source(calls, row, plugin, choice, instance, node, params,
                                 workspace)
@@ -290,6 +291,19 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if kept:
             out.append((own, kept))
     return out
+
+
+def _base_sources(node: Node, ros_version: int, workspace: Workspace) -> Sources | None:
+    """The ``Sources`` row of the class a workspace plugin class derives from, whose
+    code it runs (rtabmap's ``VoxelLayer : public nav2_costmap_2d::ObstacleLayer`` calls
+    ``ObstacleLayer::onInitialize()``, which subscribes to each observation source)."""
+    if not node.plugin_class or not node.sources:
+        return None
+    for base in direct_bases(node.plugin_class, node.sources, workspace):
+        row = sources_of(base, ros_version)
+        if row is not None:
+            return row
+    return None
 
 
 def _uncovered(loads: list[str], sites: set[str]) -> bool:

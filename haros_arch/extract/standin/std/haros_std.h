@@ -53,7 +53,9 @@ float fabs(float x);
 float abs(float x);
 double abs(double x);
 long abs(long x);
-int abs(int x);
+// the C library's: ``using std::abs;`` at namespace scope names the same function
+// (pure_pursuit_controller's), not a second one of that signature
+using ::abs;
 float atan2(float y, float x);
 float sin(float x);
 float cos(float x);
@@ -521,6 +523,8 @@ public:
 };
 typedef basic_string<char> string;
 typedef basic_string<wchar_t> wstring;
+typedef basic_string<char16_t> u16string;
+typedef basic_string<char32_t> u32string;
 template<class C> basic_string<C> operator+(const basic_string<C>& a, const basic_string<C>& b);
 template<class C> basic_string<C> operator+(const basic_string<C>& a, const C* b);
 template<class C> basic_string<C> operator+(const C* a, const basic_string<C>& b);
@@ -1506,6 +1510,32 @@ public:
   static const locale& classic();
   static locale global(const locale& loc);
   string name() const;
+};
+// <codecvt> and <locale>'s conversion between UTF-8 and wide strings (deprecated, still
+// used: navigation2_tutorials' SMS behaviour)
+enum codecvt_mode { consume_header = 4, generate_header = 2, little_endian = 1 };
+template<class Elem, unsigned long Maxcode = 0x10ffff, codecvt_mode Mode = (codecvt_mode)0>
+class codecvt_utf8 : public locale::facet {};
+template<class Elem, unsigned long Maxcode = 0x10ffff, codecvt_mode Mode = (codecvt_mode)0>
+class codecvt_utf16 : public locale::facet {};
+template<class Elem, unsigned long Maxcode = 0x10ffff, codecvt_mode Mode = (codecvt_mode)0>
+class codecvt_utf8_utf16 : public locale::facet {};
+template<class Codecvt, class Elem = wchar_t> class wstring_convert {
+public:
+  typedef basic_string<char> byte_string;
+  typedef basic_string<Elem> wide_string;
+  wstring_convert();
+  explicit wstring_convert(Codecvt* pcvt);
+  wstring_convert(const byte_string& byte_err, const wide_string& wide_err = wide_string());
+  wide_string from_bytes(char byte);
+  wide_string from_bytes(const char* ptr);
+  wide_string from_bytes(const byte_string& str);
+  wide_string from_bytes(const char* first, const char* last);
+  byte_string to_bytes(Elem wchar);
+  byte_string to_bytes(const Elem* wptr);
+  byte_string to_bytes(const wide_string& wstr);
+  byte_string to_bytes(const Elem* first, const Elem* last);
+  size_t converted() const noexcept;
 };
 // <iostream>, <sstream>, <fstream>, <iomanip>
 class ios_base {

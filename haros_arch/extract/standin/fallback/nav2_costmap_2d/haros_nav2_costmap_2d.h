@@ -22,6 +22,10 @@
 #include <tf2_ros/buffer.h>
 #include <nav2_util/lifecycle_node.hpp>
 #include <nav2_ros_common/lifecycle_node.hpp>
+#include <list>
+#include <laser_geometry/laser_geometry.hpp>
+#include <message_filters/subscriber.h>
+#include <tf2_ros/message_filter.h>
 #include <geometry_msgs/msg/point.hpp>
 #include <geometry_msgs/msg/point32.hpp>
 #include <geometry_msgs/msg/polygon.hpp>
@@ -29,6 +33,8 @@
 #include <geometry_msgs/msg/pose2_d.hpp>
 #include <geometry_msgs/msg/pose_stamped.hpp>
 #include <nav_msgs/msg/occupancy_grid.hpp>
+#include <sensor_msgs/msg/laser_scan.hpp>
+#include <sensor_msgs/msg/point_cloud2.hpp>
 #include <std_msgs/msg/header.hpp>
 #ifndef HAROS_UNREAD
 #define HAROS_UNREAD __attribute__((annotate("haros_unread")))
@@ -224,6 +230,125 @@ protected:
   void useExtraBounds(double* min_x, double* min_y, double* max_x, double* max_y);
   bool has_extra_bounds_;
   CombinationMethod combination_method_from_int(const int value);
+};
+
+// observation.hpp: a sensor's points and where they were seen from (no ROS call). Its
+// cloud is a pointer until Jazzy and a value from Kilted on: one that reads as either
+// (``obs.cloud_->width``, ``*obs.cloud_``, ``obs.cloud_.width``)
+struct haros_observed_cloud : sensor_msgs::msg::PointCloud2 {
+  haros_observed_cloud();
+  haros_observed_cloud(const sensor_msgs::msg::PointCloud2& cloud);
+  haros_observed_cloud(sensor_msgs::msg::PointCloud2* cloud);
+  const sensor_msgs::msg::PointCloud2* operator->() const;
+  sensor_msgs::msg::PointCloud2* operator->();
+  const sensor_msgs::msg::PointCloud2& operator*() const;
+  sensor_msgs::msg::PointCloud2& operator*();
+};
+class Observation {
+public:
+  using SharedPtr = std::shared_ptr<Observation>;
+  using ConstSharedPtr = std::shared_ptr<const Observation>;
+  Observation();
+  Observation(geometry_msgs::msg::Point origin, sensor_msgs::msg::PointCloud2 cloud,
+              double obstacle_max_range, double obstacle_min_range,
+              double raytrace_max_range, double raytrace_min_range);
+  Observation(const sensor_msgs::msg::PointCloud2& cloud, double obstacle_max_range,
+              double obstacle_min_range);
+  geometry_msgs::msg::Point origin_;
+  haros_observed_cloud cloud_;
+  double obstacle_max_range_;
+  double obstacle_min_range_;
+  double raytrace_max_range_;
+  double raytrace_min_range_;
+};
+
+// observation_buffer.hpp: a sensor's recent observations, in the global frame; its node
+// gives it a clock and a logger only (the buffer type and the node's differ between
+// releases: any)
+class ObservationBuffer {
+public:
+  template<class NodeT, class BufferT>
+  ObservationBuffer(const NodeT& parent, std::string topic_name, double observation_keep_time,
+                    double expected_update_rate, double min_obstacle_height,
+                    double max_obstacle_height, double obstacle_max_range,
+                    double obstacle_min_range, double raytrace_max_range,
+                    double raytrace_min_range, BufferT& tf2_buffer, std::string global_frame,
+                    std::string sensor_frame, tf2::Duration tf_tolerance);
+  void bufferCloud(const sensor_msgs::msg::PointCloud2& cloud);
+  // the observations as values until Jazzy, as shared pointers from Kilted on
+  void getObservations(std::vector<Observation>& observations);
+  void getObservations(std::vector<Observation::ConstSharedPtr>& observations);
+  bool isCurrent() const;
+  void lock();
+  void unlock();
+  void resetLastUpdated();
+};
+
+// obstacle_layer.hpp: the layer that marks and clears from its observation sources; a
+// plugin derived from it (rtabmap's VoxelLayer) runs its onInitialize, whose
+// subscriptions the plugin attachment describes (plugins.hosts.SOURCES)
+class ObstacleLayer : public CostmapLayer {
+public:
+  ObstacleLayer();
+  virtual ~ObstacleLayer();
+  virtual void onInitialize();
+  virtual void updateBounds(double robot_x, double robot_y, double robot_yaw, double* min_x,
+                            double* min_y, double* max_x, double* max_y);
+  virtual void updateCosts(Costmap2D& master_grid, int min_i, int min_j, int max_i,
+                           int max_j);
+  virtual void deactivate();
+  virtual void activate();
+  virtual void reset();
+  virtual bool isClearable();
+  rcl_interfaces::msg::SetParametersResult dynamicParametersCallback(
+    std::vector<rclcpp::Parameter> parameters);
+  rcl_interfaces::msg::SetParametersResult validateParameterUpdatesCallback(
+    const std::vector<rclcpp::Parameter>& parameters);
+  void updateParametersCallback(const std::vector<rclcpp::Parameter>& parameters);
+  void resetBuffersLastUpdated();
+  void laserScanCallback(sensor_msgs::msg::LaserScan::ConstSharedPtr message,
+                         const std::shared_ptr<ObservationBuffer>& buffer);
+  void laserScanValidInfCallback(sensor_msgs::msg::LaserScan::ConstSharedPtr message,
+                                 const std::shared_ptr<ObservationBuffer>& buffer);
+  void pointCloud2Callback(sensor_msgs::msg::PointCloud2::ConstSharedPtr message,
+                           const std::shared_ptr<ObservationBuffer>& buffer);
+  void addStaticObservation(Observation obs, bool marking, bool clearing);
+  void clearStaticObservations(bool marking, bool clearing);
+protected:
+  bool getMarkingObservations(std::vector<Observation>& marking_observations) const;
+  bool getMarkingObservations(
+    std::vector<Observation::ConstSharedPtr>& marking_observations) const;
+  bool getClearingObservations(std::vector<Observation>& clearing_observations) const;
+  bool getClearingObservations(
+    std::vector<Observation::ConstSharedPtr>& clearing_observations) const;
+  virtual void raytraceFreespace(const Observation& clearing_observation, double* min_x,
+                                 double* min_y, double* max_x, double* max_y);
+  void updateRaytraceBounds(double ox, double oy, double wx, double wy, double max_range,
+                            double min_range, double* min_x, double* min_y, double* max_x,
+                            double* max_y);
+  void updateFootprint(double robot_x, double robot_y, double robot_yaw, double* min_x,
+                       double* min_y, double* max_x, double* max_y);
+  std::vector<geometry_msgs::msg::Point> transformed_footprint_;
+  bool footprint_clearing_enabled_;
+  std::string global_frame_;
+  double min_obstacle_height_;
+  double max_obstacle_height_;
+  laser_geometry::LaserProjection projector_;
+  std::vector<std::shared_ptr<message_filters::haros_subscriber_base>> observation_subscribers_;
+  std::vector<std::shared_ptr<tf2_ros::MessageFilterBase>> observation_notifiers_;
+  std::vector<std::shared_ptr<ObservationBuffer>> observation_buffers_;
+  std::vector<std::shared_ptr<ObservationBuffer>> marking_buffers_;
+  std::vector<std::shared_ptr<ObservationBuffer>> clearing_buffers_;
+  // Humble's and Jazzy's handler, then Kilted's two
+  rclcpp::node_interfaces::OnSetParametersCallbackHandle::SharedPtr dyn_params_handler_;
+  rclcpp::node_interfaces::PostSetParametersCallbackHandle::SharedPtr post_set_params_handler_;
+  rclcpp::node_interfaces::OnSetParametersCallbackHandle::SharedPtr on_set_params_handler_;
+  std::vector<Observation::ConstSharedPtr> static_clearing_observations_;
+  std::vector<Observation::ConstSharedPtr> static_marking_observations_;
+  bool rolling_window_;
+  bool was_reset_;
+  CombinationMethod combination_method_;
+  bool allow_parameter_qos_overrides_;
 };
 
 // footprint.hpp
