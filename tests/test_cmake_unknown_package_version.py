@@ -113,3 +113,22 @@ def test_a_value_computed_from_an_unknown_version_leaves_its_test_undecided():
     assert found["older"] == ["else (ROS2_MAJOR_VERSION GREATER_EQUAL 28)"]
     assert len(found["either"]) == 1
     assert found["known"] == []
+
+
+def test_a_text_test_of_what_catkin_found_is_undecided():
+    """MoveIt 1's planning_components_tools: ``catkin_LIBRARIES`` holds the libraries
+    of the components catkin found (moveit_core's bullet collision library when it was
+    built); the reading knows only which packages they are, so the test is not decided
+    and the comparison tool may be built (was decided false: its launch file's node
+    "not in the workspace")."""
+    it = run("""
+        find_package(catkin REQUIRED COMPONENTS moveit_core roscpp)
+        if("${catkin_LIBRARIES}" MATCHES "moveit_collision_detection_bullet")
+          add_executable(compare a.cpp)
+        endif()
+        if(catkin_LIBRARIES)
+          add_executable(linked a.cpp)
+        endif()
+        """)
+    assert list(conditions(it)) == ["compare", "linked"]
+    assert len(conditions(it)["compare"]) == 1 and conditions(it)["linked"] == []

@@ -18,7 +18,7 @@ from ..files import note_read, read_text
 from ..model.conditions import Condition
 from ..model.location import NOWHERE
 from . import listops
-from .conditions import FALSE_WORDS, TRUE_WORDS
+from .conditions import FALSE_WORDS, PACKAGE_MARK_START, TRUE_WORDS
 from .lexer import Argument, Invocation
 from .listops import RegexLimit, run_list, run_math, run_string, split_list
 from .targets import CompileDefinition, Configured, Install, Program, Registration, Target
@@ -807,7 +807,7 @@ def _listed(args: list[str]) -> list[str]:
 # ``catkin_LIBRARIES`` for each of its components): a mark that names the package,
 # which a target that links it records (``Target.packages``); a generator expression's
 # form, which every other use of a source or target name leaves alone
-PACKAGE_MARK = "$<HAROS_PACKAGE:{}>"
+PACKAGE_MARK = PACKAGE_MARK_START + "{}>"
 _PACKAGE_MARK = re.compile(r"\$<HAROS_PACKAGE:([^>]+)>")
 _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "SYSTEM", "LINK_PUBLIC",
                             "LINK_PRIVATE", "LINK_INTERFACE_LIBRARIES", "debug",

@@ -14,6 +14,13 @@ from collections.abc import Callable, Collection, Mapping
 
 from .listops import RegexLimit, cmake_regex
 
+# how what ``find_package(pkg)`` leaves in ``pkg_LIBRARIES`` (and catkin in
+# ``catkin_LIBRARIES``) begins (``commands.PACKAGE_MARK``): a mark of the package, not
+# the paths of its libraries that a build has there, so a test of the text of a value
+# holding one is not decided (MoveIt's ``if("${catkin_LIBRARIES}" MATCHES
+# "moveit_collision_detection_bullet")``: the bullet library, when moveit_core built it)
+PACKAGE_MARK_START = "$<HAROS_PACKAGE:"
+
 Truth = bool | None
 
 _TRUE = {"1", "ON", "YES", "TRUE", "Y"}
@@ -160,6 +167,8 @@ class Evaluator:
                 return None
             return left in items.split(";")
         if left is None or right is None:
+            return None
+        if PACKAGE_MARK_START in left or PACKAGE_MARK_START in right:
             return None
         if op == "STREQUAL":
             return left == right
