@@ -57,6 +57,15 @@ def kept_in(memo: MutableMapping[K, Any], key: K, compute: Callable[[], V]) -> V
     return value
 
 
+def package_files(root: str) -> Iterator[str]:
+    """The files under a package's folder, in a stable order, not in hidden, build or
+    install folders (a caller that needs only the first few stops the walk there)."""
+    for folder, dirs, names in os.walk(root):
+        dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
+        for name in sorted(names):
+            yield os.path.join(folder, name)
+
+
 def write_whole(path: str, text: str) -> None:
     """Write ``text`` to ``path`` whole or not at all: a temporary file beside it, moved
     into place (a reader in another process never sees it half written). Raises

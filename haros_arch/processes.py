@@ -60,8 +60,16 @@ def _stopped(signum: int, _frame: Any) -> None:
         # once: a second SIGTERM (``timeout`` signals the whole process group, a worker
         # may pass one on) must not interrupt the unwinding the first one started
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    if held_signals.requested is None or isinstance(held_signals.requested, OverTime):
-        held_signals.requested = error  # a stop of the run over a unit's time limit
+    _request(error)
+
+
+def _request(error: BaseException) -> None:
+    """Keep ``error`` as the one the run was asked for (a stop of the run over a unit's
+    time limit, not the other way round) and raise it, unless a call into C runs our
+    callbacks (``_Held``): then it is raised when that call ends."""
+    held = held_signals.requested
+    if held is None or (isinstance(held, OverTime) and not isinstance(error, OverTime)):
+        held_signals.requested = error
     if not held_signals.depth:
         raise error
 
@@ -127,10 +135,7 @@ def cpu_limit(seconds: float) -> Iterator[None]:
         return
 
     def over(_signum: int, _frame: Any) -> None:
-        error = OverTime(seconds)
-        held_signals.requested = held_signals.requested or error
-        if not held_signals.depth:
-            raise error
+        _request(OverTime(seconds))
 
     previous = signal.signal(signal.SIGPROF, over)
     signal.setitimer(signal.ITIMER_PROF, seconds)

@@ -56,6 +56,15 @@ def test_a_using_declaration_names_the_qualified_vendor_class(tmp_path) -> None:
     assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
 
 
+def _one_source(tmp_path, client: str, name: str, text: str):
+    """What a package of one source file, depending on ``client`` and std_msgs, gives."""
+    (tmp_path / "package.xml").write_text(package_xml("pkg").replace(
+        "</package>", f"<depend>{client}</depend><depend>std_msgs</depend></package>"))
+    source = tmp_path / name
+    source.write_text(text)
+    return extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+
+
 CONSTANT = """\
 #include <ros/ros.h>
 #include <std_msgs/String.h>
@@ -74,11 +83,7 @@ int main(int argc, char** argv) {
 def test_a_using_declaration_of_a_constant_the_code_reads_as_a_value(tmp_path) -> None:
     """nav2's gradient_layer tutorial: ``using nav2_costmap_2d::LETHAL_OBSTACLE;`` then
     ``(LETHAL_OBSTACLE - gradient_index * GRADIENT_FACTOR)``: a value, not a type."""
-    (tmp_path / "package.xml").write_text(package_xml("pkg").replace(
-        "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"))
-    source = tmp_path / "limiter.cpp"
-    source.write_text(CONSTANT)
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    result = _one_source(tmp_path, "roscpp", "limiter.cpp", CONSTANT)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "limited")]
     codes = [d.code for d in result.diagnostics]
     assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
@@ -110,10 +115,6 @@ def test_an_inherited_constructor_of_an_unknown_base_ends(tmp_path) -> None:
     base a vendor class whose header is missing) was taken for a name brought from a
     namespace ``FiberDriver``: the class was merged into itself and the names' tree
     became a cycle that every later round walked for ever."""
-    (tmp_path / "package.xml").write_text(package_xml("pkg").replace(
-        "</package>", "<depend>rclcpp</depend><depend>std_msgs</depend></package>"))
-    source = tmp_path / "bridge.cpp"
-    source.write_text(INHERITED)
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    result = _one_source(tmp_path, "rclcpp", "bridge.cpp", INHERITED)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "state")]
     assert "CPP_ERROR_NEAR_CALL" not in [d.code for d in result.diagnostics]

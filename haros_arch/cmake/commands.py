@@ -808,7 +808,7 @@ def _listed(args: list[str]) -> list[str]:
 # which a target that links it records (``Target.packages``); a generator expression's
 # form, which every other use of a source or target name leaves alone
 PACKAGE_MARK = PACKAGE_MARK_START + "{}>"
-_PACKAGE_MARK = re.compile(r"\$<HAROS_PACKAGE:([^>]+)>")
+_PACKAGE_MARK = re.compile(re.escape(PACKAGE_MARK_START) + r"([^>]+)>")
 _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "SYSTEM", "LINK_PUBLIC",
                             "LINK_PRIVATE", "LINK_INTERFACE_LIBRARIES", "debug",
                             "optimized", "general"})

@@ -34,6 +34,7 @@ from ..plugins.classes import (
     named_words,
     node_classes,
     uses_ros,
+    with_headers,
 )
 from ..plugins.inherit import inherited_sources
 from ..workspace import Workspace
@@ -434,10 +435,8 @@ def _looked_up(own: list[str], workspace: Files) -> set[str]:
     if package is None or not package.plugins:
         return set()
     written = set()
-    for source in own:
-        text = read_text(os.path.join(workspace.root, source),
-                         workspace.location(os.path.join(workspace.root, source)))[0] or ""
-        written.update(_LOOKUP_NAME.findall(text))
+    for source in own:  # read once per run (``named_words`` read them already)
+        written.update(_LOOKUP_NAME.findall(with_headers(source, workspace, 0)[0]))
     if not written:
         return set()
     types = lookup_types(package, workspace)

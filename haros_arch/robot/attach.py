@@ -926,11 +926,12 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
     for file in element.iterfind("parameters"):
-        read = _yaml_file_lines((file.text or "").strip(), where, workspace, config)
+        named = (file.text or "").strip()
+        read = _yaml_file_lines(named, where, workspace, config)
         if read is None or read[0] is None:
             continue
         document, lines = read
-        source = share_source(workspace, (file.text or "").strip())
+        source = share_source(workspace, named)
         for node in _node_names(document, namespace):
             # each at its key's line (rosbot_ros' gazebo controllers' settings were all
             # at line 1 of their file)
@@ -969,8 +970,8 @@ def _node_names(document: Any, namespace: str) -> list[str]:
 
 def _yaml_file_lines(path: str, where: Location, workspace: Workspace,
                      config: Configuration) -> tuple[Any, Any] | None:
-    """``_yaml_file``'s document and where each of its keys is written
-    (``safe_yaml.load_with_lines``); None if not read."""
+    """A YAML file a plugin element names, read with the safe loader: its document and
+    where each of its keys is written (``safe_yaml.load_with_lines``); None if not read."""
     if not path or UNKNOWN_MARK in path or not os.path.isabs(path):
         return None
     path = path if os.path.isfile(path) else share_source(workspace, path)

@@ -29,7 +29,7 @@ from collections.abc import Container
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
-from ...files import read_text
+from ...files import package_files, read_text
 from ...workspace import Workspace
 from . import recall
 from .compile_commands import valid_macro
@@ -105,13 +105,13 @@ def cmake_files(root: str) -> list[str]:
     """A package's CMake files (``CMakeLists.txt``, ``*.cmake``) under ``root``, in a
     stable order, not in hidden, build or install folders; at most ``MAX_CMAKE_FILES``."""
     files: list[str] = []
-    for folder, dirs, names in os.walk(root):
-        dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
-        files.extend(os.path.join(folder, n) for n in sorted(names)
-                     if n == "CMakeLists.txt" or n.endswith(".cmake"))
-        if len(files) >= MAX_CMAKE_FILES:
-            break
-    return files[:MAX_CMAKE_FILES]
+    for path in package_files(root):
+        name = os.path.basename(path)
+        if name == "CMakeLists.txt" or name.endswith(".cmake"):
+            files.append(path)
+            if len(files) >= MAX_CMAKE_FILES:
+                break
+    return files
 
 
 def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:

@@ -53,6 +53,19 @@ QT_MORE = "haros_qt_more"
 _IDENT = re.compile(rb"[A-Za-z_]\w*")
 _NAME_AT = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*(?:template\s+)?[A-Za-z_]\w*)*")
 _SCOPE_BEFORE = re.compile(rb"(?:[A-Za-z_]\w*\s*::\s*)+$")
+
+
+def _scope_before(window: bytes) -> re.Match[bytes] | None:
+    """The scope (``a::b::``) ``window`` ends with, if any: only a window ending in
+    ``::`` can match (a search of the pattern alone tries every position of it)."""
+    return _SCOPE_BEFORE.search(window) if window.rstrip().endswith(b"::") else None
+
+
+def _unscoped(window: bytes) -> bytes:
+    """``window`` without the scope it ends with (``_scope_before``)."""
+    before = _scope_before(window)
+    return window[:before.start()] if before is not None else window
+
 _KEYWORDS = frozenset({
     "const", "volatile", "unsigned", "signed", "int", "long", "short", "char", "bool",
     "double", "float", "void", "auto", "struct", "class", "typename", "template",
@@ -219,10 +232,7 @@ def _template_called(text: bytes, end: int) -> bool:
 def _member_named(text: bytes, offset: int) -> bool:
     """Whether the name at ``offset``, with the scope written before it, follows ``.`` or
     ``->``: a member access naming the member with its class (``obj.Base::m``)."""
-    window = text[max(0, offset - 200):offset]
-    before = _SCOPE_BEFORE.search(window) if window.rstrip().endswith(b"::") else None
-    start = len(window) - len(before.group(0)) if before is not None else len(window)
-    return window[:start].rstrip().endswith((b".", b"->"))
+    return _unscoped(text[max(0, offset - 200):offset]).rstrip().endswith((b".", b"->"))
 
 
 def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
@@ -338,12 +348,8 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
     the value of a third), "size" for an array's bound or a template's argument (a
     value above the small ones: an initialiser may list more elements), "constant"
     else, None when it is not such a place."""
-    window = text[max(0, offset - _CONSTANT_SPAN):offset]
-    if window.rstrip().endswith(b"::"):  # the scope written before the name
-        before = _SCOPE_BEFORE.search(window)
-        if before is not None:
-            window = window[:before.start()]
-    window = window.rstrip()
+    # not the scope written before the name
+    window = _unscoped(text[max(0, offset - _CONSTANT_SPAN):offset]).rstrip()
     after = text[end:end + 8].lstrip()[:2]
     kind = "flag" if window[-1:] in _COMBINING or (
         after[:1] in _COMBINING and after not in (b"->", b"||", b"&&")) else "constant"
@@ -1173,9 +1179,7 @@ class Names:
                    for p in found.group(0).split(b"::")]
         if not scope:  # the known scope written before the name: ``known::``
             window = text[max(0, offset - 200):offset]
-            # only a window ending in ``::`` can match (a search of the pattern alone
-            # tries every position of the window)
-            before = _SCOPE_BEFORE.search(window) if window.rstrip().endswith(b"::") else None
+            before = _scope_before(window)
             if before is not None:
                 scope = [p.strip().decode() for p in before.group(0).split(b"::") if p.strip()]
                 if "std" in scope:
@@ -1207,8 +1211,7 @@ class Names:
             use = "type"
         last = self._last_use(use, rest)
         if last == "type" and use == "any" and rest.lstrip()[:1] not in (b"(", b"{") and (
-                _after_operator(_SCOPE_BEFORE.sub(b"", window)
-                                if window.rstrip().endswith(b"::") else window)):
+                _after_operator(_unscoped(window))):
             # ``(30 * DEGREE2RADIAN)``, ``c ? Vendor::K * 2.0 : x``: an operand, a value
             # (a type there, but a functional cast's, would be a syntax error; one use read
             # as a type made every other use an error, "does not refer to a value")

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind
 
+from ...files import package_files
 from . import api, formats
 from .cursors import _Place
 from .expressions import (
@@ -1787,12 +1788,11 @@ def package_sources(root: str) -> tuple[str, ...]:
 
 def _package_sources(root: str) -> tuple[str, ...]:
     found: list[str] = []
-    for folder, dirs, names in os.walk(root):
-        dirs[:] = sorted(d for d in dirs if not d.startswith((".", "build", "install")))
-        found.extend(os.path.abspath(os.path.join(folder, n)) for n in sorted(names)
-                     if n.endswith(_SOURCE_SUFFIXES))
-        if len(found) > MAX_PACKAGE_SOURCES:
-            return ()
+    for path in package_files(root):
+        if path.endswith(_SOURCE_SUFFIXES):
+            found.append(os.path.abspath(path))
+            if len(found) > MAX_PACKAGE_SOURCES:
+                return ()
     return tuple(found)
 
 
