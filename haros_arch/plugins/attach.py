@@ -57,6 +57,7 @@ from ..models.commands import cli_load
 from ..share import share_source
 from ..workspace import Workspace
 from . import behavior_trees
+from .classes import _untemplated, with_headers
 from .hosts import (
     CHAINS,
     DESCRIBED,
@@ -65,16 +66,18 @@ from .hosts import (
     KEYED,
     LOOKUP_PACKAGES,
     PLUGIN_SLOTS,
+    RUNS_AS,
     SPAWNER,
     Child,
     Host,
+    RunsAs,
     Slot,
     Sources,
     host_of,
     sources_of,
     tree_host_of,
 )
-from .inherit import direct_bases
+from .inherit import HEADER_DEPTH, base_argument, direct_bases
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -378,34 +381,105 @@ def _completed(cls: str | None, slot: Slot, instance: NodeInstance, params: Para
 def _with_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
                models: PluginModels | None) -> list[PrimitiveCall]:
     """A plugin's calls and those of the exported class whose code it runs (``EXTENDS``),
-    or of an exported base class of a package without source here that an interface
-    model describes (``_modelled_base``)."""
+    or of a base class of a package without source here that an interface model
+    describes (``_modelled_base``)."""
     base = EXTENDS.get((node.plugin_class or "").lstrip(":")) or EXTENDS.get(node.executable)
     found = _lookup(Choice("", base, node.location), index, workspace, models) if base else None
-    if found is None:
-        found = _modelled_base(node, index, workspace, models)
-    if found is None or found is node:
+    if found is node:
         return list(node.calls)
+    inherited = (list(found.calls) if found is not None
+                 else _modelled_base(node, index, workspace, models))
     own = {_key(c) for c in node.calls}
-    return [*node.calls, *(c for c in found.calls if _key(c) not in own)]
+    return [*node.calls, *(c for c in inherited if _key(c) not in own)]
 
 
 def _modelled_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
-                   models: PluginModels | None) -> Node | None:
-    """The interface model of the exported plugin class a workspace plugin class derives
-    from, when the base's package has no source here: its code runs in the derived
-    class's node (UR's ``ScaledJointTrajectoryController : public joint_trajectory_
-    controller::JointTrajectoryController`` calls the base's ``on_init``,
-    ``on_configure``, ...: the action server and topics are the base's). A base of the
-    workspace is read from its source (``inherit.inherited_sources``)."""
+                   models: PluginModels | None) -> list[PrimitiveCall]:
+    """The calls of the base class a workspace plugin class derives from, when the base's
+    package has no source here, as an interface model shows them: the model of the
+    exported base class itself, whose code runs in the derived class's node (UR's
+    ``ScaledJointTrajectoryController : public joint_trajectory_controller::
+    JointTrajectoryController`` calls the base's ``on_init``, ``on_configure``, ...: the
+    action server and topics are the base's); or, for a base no package exports
+    (``RUNS_AS``: nav2's ``TimedBehavior<ActionT>``), what the model of an exported class
+    that runs only the base's code shows of it. A base of the workspace is read from its
+    source (``inherit.inherited_sources``)."""
     if node.model is not None or not node.plugin_class or not node.sources:
-        return None
+        return []
     for base in direct_bases(node.plugin_class, node.sources, workspace):
-        if "::" not in base.strip(":") or UNKNOWN_MARK in base:
+        if UNKNOWN_MARK in base:
+            continue
+        runs = _runs_as(base, node, workspace)
+        if runs is not None:
+            found = _lookup(Choice("", runs.model_class, node.location), index, workspace,
+                            models)
+            if found is not None and found.model is not None:
+                return _base_code(found, runs, base, node, workspace)
+            continue
+        if "::" not in base.strip(":"):
             continue
         found = _lookup(Choice("", base, node.location), index, workspace, models)
         if found is not None and found is not node and found.model is not None:
-            return found
+            return list(found.calls)
+    return []
+
+
+def _runs_as(base: str, node: Node, workspace: Workspace) -> RunsAs | None:
+    """The ``RUNS_AS`` row of a base class as the derived class's declaration writes it:
+    qualified, or by its own name where the class's files name the row's namespace
+    (``using namespace nav2_behaviors;``, the namespace the class is declared in)."""
+    name = _untemplated(base).strip().lstrip(":")
+    if name in RUNS_AS:
+        return RUNS_AS[name]
+    if "::" in name:
+        return None
+    for key, row in RUNS_AS.items():
+        space, own = key.rsplit("::", 1)
+        if own == name and any(re.search(rf"\bnamespace\s+{re.escape(space)}\b", text)
+                               for text in _class_texts(node, workspace)):
+            return row
+    return None
+
+
+def _class_texts(node: Node, workspace: Workspace) -> list[str]:
+    """The texts of a plugin class's sources and the headers they include (as
+    ``direct_bases`` reads them)."""
+    return [text for source in node.sources
+            for text in with_headers(source, workspace, HEADER_DEPTH)]
+
+
+MAX_ALIASES = 4  # aliases followed from a base's template argument to its type
+
+
+def _base_code(model: Node, runs: RunsAs, base: str, node: Node,
+               workspace: Workspace) -> list[PrimitiveCall]:
+    """The calls ``model`` makes outside its class's own files (the base's code), those
+    of the kinds ``runs`` types by the base's template argument typed by the derived
+    class's (unknown when the text does not tell it)."""
+    typed = _argument_type(base, node, workspace) if runs.typed else None
+    return [replace(call, type=typed) if call.kind in runs.typed else call
+            for call in model.calls if call.location.file not in model.sources]
+
+
+def _argument_type(base: str, node: Node, workspace: Workspace) -> str | None:
+    """The ROS 2 interface a base class's template argument names (``TimedBehavior<
+    Action>`` with ``using Action = nav2_msgs::action::Wait;``: ``nav2_msgs/action/Wait``),
+    through the aliases the class's files declare."""
+    argument = base_argument(node.plugin_class or "", base, node.sources, workspace)
+    texts: list[str] | None = None
+    for _ in range(MAX_ALIASES):
+        if argument is None:
+            return None
+        parts = re.sub(r"^typename\s+", "", argument.strip()).lstrip(":").split("::")
+        if len(parts) >= 3 and parts[-2] in ("msg", "srv", "action"):
+            return "/".join(parts[-3:])
+        if texts is None:
+            texts = _class_texts(node, workspace)
+        alias = re.escape(parts[-1])
+        pattern = re.compile(rf"\busing\s+{alias}\s*=\s*(?:typename\s+)?([\w:]+)\s*;"
+                             rf"|\btypedef\s+(?:typename\s+)?([\w:]+)\s+{alias}\s*;")
+        found = next((m for m in map(pattern.search, texts) if m is not None), None)
+        argument = (found.group(1) or found.group(2)) if found is not None else None
     return None
 
 

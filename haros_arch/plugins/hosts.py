@@ -447,6 +447,25 @@ EXTENDS: dict[str, str] = {
 }
 
 
+@dataclass(frozen=True)
+class RunsAs:
+    """A base class no package exports, whose code an exported class of its package runs
+    and adds no ROS call to: ``model_class``, whose interface model shows what the base
+    does (its calls made outside that class's own files); the calls of a kind in
+    ``typed`` are typed by the base's template argument."""
+    model_class: str
+    typed: tuple[str, ...] = ()
+
+
+# a workspace class derived from one of these, its package without source here, runs the
+# base's code: nav2_behaviors' TimedBehavior<ActionT>::configure serves ActionT under the
+# plugin's name, makes the cmd_vel publisher and reads the behavior server's frames and
+# rates (timed_behavior.hpp), and Wait adds only its onRun / onCycleUpdate
+RUNS_AS: dict[str, RunsAs] = {
+    "nav2_behaviors::TimedBehavior": RunsAs("nav2_behaviors::Wait", ("action-server",)),
+}
+
+
 # lookup-name prefixes that are not the package exporting the class (pluginlib's
 # convention is ``pkg/Name``), with the packages that do: MoveIt's capabilities are
 # ``move_group/...``, exported by moveit_ros_move_group

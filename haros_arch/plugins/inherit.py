@@ -307,9 +307,7 @@ def _bases_in(cls: str, text: str) -> tuple[str, ...] | None:
     """``_bases`` of one text: None when it declares no ``class cls : ... {``. Kept per
     class and text: every plugin of a family asks its bases' (nav2's costmap layers
     share ``CostmapLayer`` and ``Layer``)."""
-    head = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
-                      + r"\s*(?:final\s*)?:(?!:)([^{;]*)\{")
-    match = head.search(text)
+    match = _head(cls).search(text)
     if match is None:
         return None
     out = []
@@ -321,6 +319,40 @@ def _bases_in(cls: str, text: str) -> tuple[str, ...] | None:
         if words:
             out.append(words[-1])
     return tuple(out)
+
+
+def base_argument(cls: str, base: str, sources: Sequence[str], workspace: Files) -> str | None:
+    """The first template argument the declaration of ``cls`` in ``sources`` (or the
+    headers they include) gives its base class ``base`` (``class Announce : public
+    TimedBehavior<Action>``: ``Action``), as written; None when it gives none."""
+    name = _plain(cls)
+    for text in (text for source in sources
+                 for text in with_headers(source, workspace, HEADER_DEPTH)):
+        match = _head(name).search(text) if name in text else None
+        if match is None:
+            continue
+        listed = match.group(1)
+        written = re.search(rf"(?<![\w:]){re.escape(base.strip().lstrip(':'))}\s*<", listed)
+        if written is None:
+            return None
+        depth, start = 0, written.end()
+        for index in range(start, len(listed)):
+            char = listed[index]
+            if char in "<([":
+                depth += 1
+            elif char in ">)]" and depth:
+                depth -= 1
+            elif char in ">," and not depth:
+                return listed[start:index].strip() or None
+        return None
+    return None
+
+
+@functools.lru_cache(maxsize=256)
+def _head(cls: str) -> re.Pattern[str]:
+    """A declaration ``class cls : ... {``, its base list the group."""
+    return re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)*?" + re.escape(cls)
+                      + r"\s*(?:final\s*)?:(?!:)([^{;]*)\{")
 
 
 # the head of a definition in a class body, up to its ``{``: ``void f(int x) const override``

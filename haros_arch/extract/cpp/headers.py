@@ -96,7 +96,8 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "laser_proc/": "laser_proc/LaserTransport.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
-                          "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d")},
+                          "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d",
+                          "nav2_behaviors")},
                       # Gazebo classic's plugin bases and SDFormat's Element, for the
                       # Gazebo plugins a workspace builds (ROS 2 gazebo_ros' node.hpp
                       # is a file of its own there: not every gazebo_ros header, which
