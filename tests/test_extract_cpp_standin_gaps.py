@@ -1058,3 +1058,13 @@ def test_std_abs_named_globally_and_utf_conversions(write_tree) -> None:
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("declare", "lookahead"), ("declare", "message"),
         ("publish", "long_messages"), ("publish", "short_messages")]
+
+
+def test_cxx17_traits_addressof_and_distribution_parameters(write_tree) -> None:
+    """beluga: ``std::is_const_v``, ``is_lvalue_reference_v``, ``is_invocable_r_v``,
+    ``result_of_t``, ``std::addressof`` and ``normal_distribution<>::param_type`` were not
+    declared (98 errors in beluga_amcl's units, the AMCL node's class among them)."""
+    result = _extract(write_tree, _source("ros2_type_traits_random.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("declare", "sigma"), ("publish", "negative"), ("publish", "positive")]

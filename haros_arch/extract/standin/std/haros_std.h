@@ -206,6 +206,14 @@ template<class T> struct is_reference<T&&> : true_type {};
 template<class T> constexpr bool is_reference_v = is_reference<T>::value;
 template<class T> struct is_lvalue_reference : false_type {};
 template<class T> struct is_lvalue_reference<T&> : true_type {};
+template<class T> struct is_rvalue_reference : false_type {};
+template<class T> struct is_rvalue_reference<T&&> : true_type {};
+template<class T> struct is_volatile : false_type {};
+template<class T> struct is_volatile<volatile T> : true_type {};
+template<class T> constexpr bool is_const_v = is_const<T>::value;
+template<class T> constexpr bool is_volatile_v = is_volatile<T>::value;
+template<class T> constexpr bool is_lvalue_reference_v = is_lvalue_reference<T>::value;
+template<class T> constexpr bool is_rvalue_reference_v = is_rvalue_reference<T>::value;
 template<class T> struct is_array : false_type {};
 template<class T> struct is_array<T[]> : true_type {};
 template<class T, size_t N> struct is_array<T[N]> : true_type {};
@@ -361,6 +369,20 @@ template<class F, class... A> struct is_invocable {
   static constexpr bool value = decltype(test<F>(0))::value;
 };
 template<class F, class... A> constexpr bool is_invocable_v = is_invocable<F, A...>::value;
+// is_invocable_r (C++17), result_of (C++11 to 17), addressof
+template<class R, class F, class... A> struct is_invocable_r {
+  template<class G> static auto test(int) -> decltype(
+      static_cast<R>(declval<G>()(declval<A>()...)), true_type());
+  template<class G> static false_type test(...);
+  static constexpr bool value = decltype(test<F>(0))::value;
+};
+template<class R, class F, class... A> constexpr bool is_invocable_r_v =
+    is_invocable_r<R, F, A...>::value;
+template<class S> struct result_of;
+template<class F, class... A> struct result_of<F(A...)> : invoke_result<F, A...> {};
+template<class S> using result_of_t = typename result_of<S>::type;
+template<class T> constexpr T* addressof(T& value) noexcept;
+template<class T> const T* addressof(const T&&) = delete;
 // std::invoke (C++17): a callable with its arguments (Autoware's ``const auto x =
 // std::invoke([&]() { ... });``), or a member function on an object; std::exchange (C++14)
 template<class F, class... A> auto invoke(F&& f, A&&... a) -> decltype(declval<F>()(declval<A>()...));
@@ -2134,7 +2156,18 @@ public: uniform_real_distribution(T a = 0, T b = 1); template<class G> T operato
 template<class T = int> class uniform_int_distribution {
 public: uniform_int_distribution(T a = 0, T b = 2147483647); template<class G> T operator()(G& g); };
 template<class T = double> class normal_distribution {
-public: normal_distribution(T mean = 0, T stddev = 1); template<class G> T operator()(G& g); };
+public:
+  typedef T result_type;
+  struct param_type { param_type(T mean = 0, T stddev = 1); T mean() const; T stddev() const; };
+  normal_distribution(T mean = 0, T stddev = 1);
+  explicit normal_distribution(const param_type& params);
+  template<class G> T operator()(G& g);
+  template<class G> T operator()(G& g, const param_type& params);
+  param_type param() const;
+  void param(const param_type& params);
+  T mean() const;
+  T stddev() const;
+};
 class bernoulli_distribution { public: bernoulli_distribution(double p = 0.5); template<class G> bool operator()(G& g); };
 namespace pmr {  // <memory_resource>
 class memory_resource {
