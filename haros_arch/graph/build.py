@@ -904,14 +904,16 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         if call.name_param is not None and call.name_each is None and not call.name_more \
                 and call.name.count(UNKNOWN_MARK) == 1 and not call.name_param.startswith(
                     ROS_ARGUMENT):
-            value = _parameter_value(call.name_param, call.name_default, instance, resources)
+            value = _parameter_value(call.name_param, _name_default(call, instance),
+                                     instance, resources)
             if value and UNKNOWN_MARK not in value and "/" not in value and (
                     value.strip() == value):
                 return _node_scoped(_filled(call.name, value))
         return _node_scoped(call.name)
     if call.name_param is None or UNKNOWN_MARK not in call.name:
         return call.name
-    value = _parameter_value(call.name_param, call.name_default, instance, resources)
+    value = _parameter_value(call.name_param, _name_default(call, instance), instance,
+                             resources)
     if value is not None and UNKNOWN_MARK in value and call.default_param is not None:
         # the default holds another parameter's value (topic_tools' relay: the input
         # topic and "_relay"); that one's value, or its own default: known only when it is
@@ -988,6 +990,26 @@ def _filled(name: str, value: str) -> str:
         # handle's ``~`` takes no slash: ``~?``)
         return value
     return name.replace(UNKNOWN_MARK, value, 1)
+
+
+def _name_default(call: PrimitiveCall, instance: NodeInstance) -> str | None:
+    """The value the code gives the parameter that names ``call`` when nothing sets it:
+    the default the call's own reading wrote (``name_default``), else the one string
+    default of the node's declarations of it (nav2's behavior server declares
+    ``local_costmap_topic`` with ``local_costmap/costmap_raw``, reads it with
+    ``get_parameter(name, value)`` and hands the value to the costmap subscriber, whose
+    subscription the name is; a declared parameter nothing overrides holds its
+    default). ROS 2 only, and its declarations only: a ROS 1 read without a default
+    leaves the variable as it was, whatever another read's default."""
+    if call.name_default is not None or call.name_param is None or (
+            instance.ros_version != 2 or instance.node is None):
+        return call.name_default
+    found = [c.default for c in instance.node.calls
+             if c.kind == "declare" and c.name == call.name_param and c.has_default
+             and c.node_name == call.node_name]
+    if not found or not isinstance(found[0], str) or any(d != found[0] for d in found):
+        return None
+    return found[0]
 
 
 def _parameter_value(written: str, default: str | None, instance: NodeInstance,
@@ -1269,7 +1291,7 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
     """Why a name taken from a parameter stays unknown: the configuration sets none (of
     a name of several parameters, those it does not set)."""
     param = call.name_param
-    named = [(param or "", call.name_default), *((p or "", d) for p, d, *_ in (
+    named = [(param or "", _name_default(call, instance)), *((p or "", d) for p, d, *_ in (
         call.name_more or []))]
     unset = [p for p, d in named if _parameter_value(p, d, instance, resources) is None]
     if len(named) > 1 and unset:
