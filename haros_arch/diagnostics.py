@@ -577,6 +577,15 @@ CATALOGUE: dict[str, Entry] = {
         "handle), and that class's constructor is defined in a source of the other "
         "package: the ROS calls it makes on the node are not read. The node is "
         "'partial', so checks that claim something is absent do not decide on it."),
+    "CPP_MACRO_DEMANDED": Entry(
+        "info", "{macro} is defined for this unit's parse: the #error at {where} says every "
+        "build that compiles it defines {macro}",
+        "A header the unit includes stops the compiler unless a macro is defined "
+        "(#ifndef X / #error, or #ifdef X ... #else / #error: beluga's NDT sensor model "
+        "needs BELUGA_HAS_HDF5, which its CMake gives only where HDF5 is found). Any "
+        "build that makes the node defines it, so the unit is parsed with it; without it "
+        "the header declared nothing and the code built on it was read wrongly. Nothing "
+        "to do, unless the macro is never meant to be defined."),
     "CPP_BUILD_MACRO": Entry(
         "warning", "{text}: under a condition on {macro}, which the package's CMake defines "
         "({cmake}) and the extraction does not apply",

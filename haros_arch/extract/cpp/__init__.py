@@ -33,6 +33,7 @@ from clang.cindex import Diagnostic as ClangDiagnostic
 from ... import diagnostics as diag
 from ... import safe_yaml
 from ...collector import held_back
+from ...ctext import code_only
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import parse_manifest, ros_version
@@ -55,7 +56,7 @@ from . import (
 )
 from . import compile_commands as commands
 from .conditions import fewest
-from .cursors import child_spellings, namespace_blocks
+from .cursors import child_spellings, in_standin, namespace_blocks
 from .headers import FALLBACK, QT, STANDIN, IncludeSetup
 from .interfaces import interface_package
 from .interfaces import known as known_interface
@@ -2189,8 +2190,83 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
         again = _parse_once(path, more, unsaved, workspace, result)
         if again is not None and len(_errors(again)) < len(_errors(tu)):
             tu, args = again, more
+    demanded = _demanded_macros(tu, source)
+    if demanded:
+        more = [*args, *(f"-D{name}" for name, _where in demanded)]
+        again = _parse_once(path, more, unsaved, workspace, result)
+        if again is not None:  # (the code the header now declares may show more errors)
+            tu, args = again, more
+            for name, (file, line) in demanded:
+                result.diagnostics.append(diag.make(
+                    "CPP_MACRO_DEMANDED", workspace.location(path), macro=name,
+                    where=f"{workspace.relpath(file)}:{line}"))
     return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned,
                        wrappers)
+
+
+MAX_DEMANDED = 8  # macros defined for one unit because an #error demands them
+# an ``#error`` directive, and the conditional directives around it
+_ERROR_LINE = re.compile(r"\s*#\s*error\b")
+_DIRECTIVE = re.compile(r"\s*#\s*(if|ifdef|ifndef|elif|else|endif)\b(.*)")
+_NOT_DEFINED = re.compile(r"!\s*defined\s*(?:\(\s*(\w+)\s*\)|(\w+))\s*$")
+_DEFINED = re.compile(r"defined\s*(?:\(\s*(\w+)\s*\)|(\w+))\s*$")
+MAX_DIRECTIVE_SCAN = 2000  # lines read back from an #error to its #if
+
+
+def _demanded_macros(tu: TranslationUnit, source: SourceCache
+                     ) -> list[tuple[str, tuple[str, int]]]:
+    """The macros a workspace header's ``#error`` says a build defines: the error is the
+    branch of ``#ifndef X`` (``#if !defined(X)``), or the ``#else`` of ``#ifdef X``
+    (``#if defined(X)``), so every build that compiles the unit defines X (beluga's
+    ndt_sensor_model.hpp, ``#ifndef BELUGA_HAS_HDF5 #error ...``, its macro an
+    INTERFACE definition of another package's target under ``if(HDF5_FOUND)``: without
+    it the header declares nothing and the node's class, built on it, is invalid). Each
+    with the ``#error``'s file and line; none of our stand-ins'."""
+    out: dict[str, tuple[str, int]] = {}
+    for error in _errors(tu):
+        if error.path is None or in_standin(error.path) or len(out) >= MAX_DEMANDED:
+            continue
+        lines = source.lines(error.path)
+        if lines is None or not 0 < error.line <= len(lines) or not _ERROR_LINE.match(
+                lines[error.line - 1]):
+            continue
+        name = _guard_of(lines, error.line - 1)
+        if name is not None and name not in out:
+            out[name] = (error.path, error.line)
+    return list(out.items())
+
+
+def _guard_of(lines: list[str], index: int) -> str | None:
+    """The macro the conditional around line ``index`` needs defined for that line not
+    to be reached: its ``#ifndef X`` / ``#if !defined(X)`` when the line is in its first
+    branch, its ``#ifdef X`` / ``#if defined(X)`` when in its ``#else``; None for any
+    other test, or an ``#elif`` between."""
+    depth = 0
+    in_else = False
+    for line in reversed(lines[max(0, index - MAX_DIRECTIVE_SCAN):index]):
+        found = _DIRECTIVE.match(line)
+        if found is None:
+            continue
+        word, rest = found.group(1), code_only(found.group(2)).strip()
+        if word == "endif":
+            depth += 1
+        elif word in ("if", "ifdef", "ifndef"):
+            if depth:
+                depth -= 1
+                continue
+            if word == "ifndef" and not in_else:
+                return rest.split()[0] if rest.split() else None
+            if word == "ifdef" and in_else:
+                return rest.split()[0] if rest.split() else None
+            test = (_DEFINED if in_else else _NOT_DEFINED).fullmatch(rest)
+            if word == "if" and test is not None and (in_else or rest.startswith("!")):
+                return test.group(1) or test.group(2)
+            return None
+        elif not depth:
+            if word == "elif":
+                return None
+            in_else = True
+    return None
 
 
 def _included_at(workspace: Workspace, where: SourceLocation) -> Location:

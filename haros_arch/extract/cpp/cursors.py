@@ -789,5 +789,11 @@ def from_standin(target: Cursor | None) -> bool:
 
 
 @functools.lru_cache(maxsize=1024)
+def in_standin(path: str) -> bool:
+    """Whether the file ``path`` is one of our stand-ins."""
+    return _in_standin(path)
+
+
+@functools.lru_cache(maxsize=1024)
 def _in_standin(path: str) -> bool:
     return os.path.realpath(path).startswith(os.path.realpath(_STANDIN) + os.sep)
