@@ -276,9 +276,11 @@ class CallSites:
         parameters) may run, whose one statement returns the expression: its own
         definition unless it is pure, and for a virtual one each of this unit's
         definitions that override it (a base class's ``getName()``, pure, that each
-        navigator defines as ``return std::string("navigate_to_pose");``). None when one
-        of them is not such a body, or none is known."""
-        if method.kind != CursorKind.CXX_METHOD or any(
+        navigator defines as ``return std::string("navigate_to_pose");``); a function
+        without parameters likewise, by its definition (``inline std::string
+        imu_topic() { return "imu/data"; }``, a header's constant of a library). None when
+        one of them is not such a body, or none is known."""
+        if method.kind not in (CursorKind.CXX_METHOD, CursorKind.FUNCTION_DECL) or any(
                 c.kind == CursorKind.PARM_DECL for c in method.get_children()):
             return None
         bodies: list[Cursor] = []
@@ -286,7 +288,8 @@ class CallSites:
         if definition is not None and not method.is_pure_virtual_method():
             bodies.append(definition)
         owner = method.semantic_parent
-        if method.is_virtual_method() and owner is not None:
+        if method.kind == CursorKind.CXX_METHOD and method.is_virtual_method() and (
+                owner is not None):
             target = key_of(owner.canonical)
             bodies.extend(
                 function for function in self.functions

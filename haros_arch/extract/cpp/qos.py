@@ -17,7 +17,7 @@ from typing import Any
 
 from clang.cindex import Cursor, CursorKind
 
-from .values import Scope, operand, strip, written_arguments
+from .values import Scope, _integral, operand, strip, written_arguments
 
 QoS = dict[str, Any]
 MAX_DEPTH = 16
@@ -123,6 +123,10 @@ def _constructed(cls: str, args: list[Cursor], scope: Scope, depth: int) -> QoS:
             return {}
         base = _qos(args[1], scope, depth + 1) if len(args) > 1 else dict(PROFILES["default"])
         init = _qos(args[0], scope, depth + 1)
+        if cls == "QoS" and len(args) == 1 and not init and _integral(args[0]):
+            # a depth the parse does not know (``QoS(node_depth())``, the size_t a
+            # factory converts): the default profile's policies, the depth unknown
+            return {**PROFILES["default"], "depth": None}
         if cls == "QoS" and len(args) == 1 and "reliability" not in init:
             init = {**PROFILES["default"], **init}
         found = {**base, **init}

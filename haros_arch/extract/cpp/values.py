@@ -1471,6 +1471,14 @@ class Scope:
                 found = self.field(decl)
                 return None if found is None else found[1].integer(found[0], depth + 1)
             return self.integer(value, depth + 1)
+        if cursor.kind == CursorKind.CALL_EXPR and cursor.referenced is not None and (
+                not written_arguments(cursor)) and self.sites is not None:
+            # a getter (``RangeSource::depth()``): what its one ``return`` gives, in each
+            # body the call may run, as for a string (``_string_call``)
+            bodies = self.sites.returns(cursor.referenced)
+            values = {self.sites.scope(method).integer(value, depth + 1)
+                      for value, method in bodies or ()}
+            return values.pop() if len(values) == 1 else None
         return None
 
     def token(self, cursor: Cursor) -> str | None:
