@@ -255,6 +255,41 @@ def test_a_navigator_of_another_class_runs_trees_not_read(tmp_path):
     assert not any("navigate_to_pose" in r for r in reasons)
 
 
+def test_a_navigator_left_out_of_the_list_runs_none_of_its_trees(tmp_path):
+    """opennav_coverage's demo lists only its coverage navigator: bt_navigator builds
+    neither NavigateToPose nor NavigateThroughPoses, so their default trees (their
+    clients of spin, backup, compute_path_to_pose, ...) are not the node's; a navigator
+    the list names runs its own (the lookup name ``pkg/Class`` as the class)."""
+    path = _workspace(tmp_path)
+    through = tmp_path / "my_bt" / "trees" / "through.xml"
+    through.write_text(TREE.replace("other_go", "through_go"))
+    navigator = Node("nav2_bt_navigator", "bt_navigator")
+
+    def links(listed: list[str], plugins: dict[str, str]) -> set[str]:
+        launch = LaunchModel(
+            nodes=[NodeDecl("/bt_navigator", "nav2_bt_navigator", "bt_navigator",
+                            ros_version=2)],
+            params=[ParamDecl("/bt_navigator/plugin_lib_names", ["my_bt_nodes"]),
+                    ParamDecl("/bt_navigator/default_nav_to_pose_bt_xml", str(path)),
+                    ParamDecl("/bt_navigator/default_nav_through_poses_bt_xml",
+                              str(through)),
+                    ParamDecl("/bt_navigator/navigators", listed),
+                    *(ParamDecl(f"/bt_navigator/{ident}.plugin", cls)
+                      for ident, cls in plugins.items())])
+        config = build(Configuration("c"), launch, scan([str(tmp_path)]),
+                       {navigator.name: navigator})
+        return {link.resource.name for link in config.links
+                if link.node.name == "/bt_navigator" and link.kind == "action-client"}
+
+    both = links(["navigate_to_pose", "navigate_through_poses"], {})
+    assert {"/other_go", "/through_go"} <= both
+    only = links(["navigate_to_pose", "cover"], {
+        "navigate_to_pose": "nav2_bt_navigator/NavigateToPoseNavigator",
+        "cover": "opennav_coverage_navigator/CoverageNavigator"})
+    assert "/other_go" in only and "/through_go" not in only
+    assert not links(["cover"], {"cover": "opennav_coverage_navigator/CoverageNavigator"})
+
+
 def test_included_files_are_read_and_an_undefined_subtree_is_said(tmp_path):
     tree = """<root BTCPP_format="4" main_tree_to_execute="Main">
   <include path="../more/recovery.xml"/>

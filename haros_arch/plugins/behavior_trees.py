@@ -521,9 +521,13 @@ def _host_calls(host: TreeHost, instance: NodeInstance, params: Any, workspace: 
             for ident, each in library.items():
                 registered.setdefault(ident, each)
     reasons.extend(_other_navigators(host, base, params))
+    running = _listed_navigators(host, base, params)
     calls: list[PrimitiveCall] = []
     seen: set[tuple[str, str, str | None, str | None]] = set()
-    for parameter, package, relative in host.trees:
+    for index, (parameter, package, relative) in enumerate(host.trees):
+        runner = host.tree_navigators[index] if index < len(host.tree_navigators) else ""
+        if runner and running is not None and runner not in running:
+            continue  # its navigator is not in the host's list: the tree is not run
         given = _param(params, base + parameter)
         path = _tree_path(given, package, relative, workspace)
         read: Tree | None = None
@@ -593,6 +597,29 @@ def _model_tree(package: str, relative: str, models: Callable[[str], Any] | None
     return tree_from_data(data.get(relative), package) if relative in data else None
 
 
+def _listed_navigators(host: TreeHost, base: str, params: Any) -> set[str] | None:
+    """The classes of the navigators the host's list names (``<id>.plugin``, the default
+    class for a default id); None when the list is not set (the host's defaults run)
+    or names one not known statically (any may)."""
+    if host.navigators is None:
+        return None
+    parameter, known = host.navigators
+    listed = _param(params, base + parameter)
+    if listed is None:
+        return None
+    ids = listed.value if isinstance(listed.value, list) else [listed.value]
+    out: set[str] = set()
+    for ident in ids[:200]:
+        if not isinstance(ident, str) or UNKNOWN_MARK in ident:
+            return None
+        typed = _param(params, f"{base}{ident}.plugin")
+        cls = typed.value if typed is not None else dict(known).get(ident)
+        if not isinstance(cls, str) or UNKNOWN_MARK in cls:
+            return None
+        out.add(cls.replace("/", "::"))
+    return out
+
+
 def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
     """Why the host runs trees not read: a navigator of its list (``<id>.plugin``, the
     default class for a default id) that is not one whose trees the row names."""
@@ -610,6 +637,8 @@ def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
             continue
         typed = _param(params, f"{base}{ident}.plugin")
         cls = typed.value if typed is not None else dict(known).get(ident)
+        if isinstance(cls, str):
+            cls = cls.replace("/", "::")  # a lookup name, ``pkg/Class``
         if (ident, cls) not in known and cls not in dict(known).values():
             where = (typed or listed).launch_location
             out.append(f"navigator {ident} ({cls or '?'}) runs behavior trees not read "

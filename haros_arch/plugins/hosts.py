@@ -690,6 +690,9 @@ class TreeHost:
     # the parameter listing the host's navigators, and the navigators (id, class) whose
     # trees ``trees`` names: another navigator runs trees of its own, not read
     navigators: tuple[str, tuple[tuple[str, str], ...]] | None = None
+    # the class of the navigator that runs each tree of ``trees`` (in order; "" for a
+    # tree the host runs itself): a navigator the list leaves out runs none of its trees
+    tree_navigators: tuple[str, ...] = ()
 
 
 # nav2_bt_navigator (bt_navigator.cpp: BT_BUILTIN_PLUGINS, the libraries of
@@ -705,7 +708,9 @@ TREE_HOSTS: tuple[TreeHost, ...] = (
                   "behavior_trees/navigate_through_poses_w_replanning_and_recovery.xml")),
              ("navigators", (("navigate_to_pose", "nav2_bt_navigator::NavigateToPoseNavigator"),
                              ("navigate_through_poses",
-                              "nav2_bt_navigator::NavigateThroughPosesNavigator")))),
+                              "nav2_bt_navigator::NavigateThroughPosesNavigator"))),
+             ("nav2_bt_navigator::NavigateToPoseNavigator",
+              "nav2_bt_navigator::NavigateThroughPosesNavigator")),
     # PlanSys2's BT action executor (plansys2_bt_actions/src/plansys2_bt_actions/
     # BTAction.cpp): the libraries of ``plugins``, the tree of ``bt_xml_file`` (no
     # default), the node itself on the blackboard
