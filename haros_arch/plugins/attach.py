@@ -457,8 +457,31 @@ def _base_code(model: Node, runs: RunsAs, base: str, node: Node,
     of the kinds ``runs`` types by the base's template argument typed by the derived
     class's (unknown when the text does not tell it)."""
     typed = _argument_type(base, node, workspace) if runs.typed else None
-    return [replace(call, type=typed) if call.kind in runs.typed else call
-            for call in model.calls if call.location.file not in model.sources]
+    named = (_returned_name(node, workspace) or UNKNOWN_MARK) if runs.named else None
+    out = []
+    for call in model.calls:
+        if call.location.file in model.sources:
+            continue
+        if call.kind in runs.typed:
+            call = replace(call, type=typed)
+        if named is not None and call.name == runs.named:
+            call = replace(call, name=named)
+        out.append(call)
+    return out
+
+
+# ``getName()`` defined to return a literal: ``std::string getName() override {return
+# std::string("navigate_complete_coverage");}``, in the class body or out of it
+_GET_NAME = re.compile(r"\bgetName\s*\(\s*\)[^{;]*\{\s*return\s+(?:std::string\s*[({]\s*)?"
+                       r"\"([^\"\\]*)\"")
+
+
+def _returned_name(node: Node, workspace: Workspace) -> str | None:
+    """The literal the plugin class's ``getName()`` returns, from its files' text; None
+    when they define none or several."""
+    found = {match.group(1) for text in _class_texts(node, workspace)
+             for match in _GET_NAME.finditer(text)}
+    return found.pop() if len(found) == 1 else None
 
 
 def _argument_type(base: str, node: Node, workspace: Workspace) -> str | None:

@@ -455,6 +455,10 @@ class RunsAs:
     ``typed`` are typed by the base's template argument."""
     model_class: str
     typed: tuple[str, ...] = ()
+    # the name the model's class gives the calls its ``getName()`` names (nav2's
+    # NavigateToPoseNavigator serves ``navigate_to_pose``): a derived class's own
+    # ``getName()`` names them (``?`` when its text does not tell it)
+    named: str | None = None
 
 
 # a workspace class derived from one of these, its package without source here, runs the
@@ -463,6 +467,12 @@ class RunsAs:
 # rates (timed_behavior.hpp), and Wait adds only its onRun / onCycleUpdate
 RUNS_AS: dict[str, RunsAs] = {
     "nav2_behaviors::TimedBehavior": RunsAs("nav2_behaviors::Wait", ("action-server",)),
+    # nav2_core's BehaviorTreeNavigator<ActionT>::on_configure builds the behaviour tree
+    # action server (nav2_behavior_tree's BtActionServer: ActionT served as getName(),
+    # the tree server's parameters, the tree log publisher); NavigateToPoseNavigator's
+    # own files add its goal subscription and parameters, left out
+    "nav2_core::BehaviorTreeNavigator": RunsAs(
+        "nav2_bt_navigator::NavigateToPoseNavigator", ("action-server",), "navigate_to_pose"),
 }
 
 
