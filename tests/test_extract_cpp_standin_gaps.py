@@ -1068,3 +1068,13 @@ def test_cxx17_traits_addressof_and_distribution_parameters(write_tree) -> None:
     assert _errors(result) == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("declare", "sigma"), ("publish", "negative"), ("publish", "positive")]
+
+
+def test_ros2_code_including_cv_bridge_h_gets_the_ros2_api(write_tree) -> None:
+    """apriltag_ros, depthai-ros: ``#include <cv_bridge/cv_bridge.h>`` in a ROS 2 unit
+    was ROS 1's stand-in (``toCvShare(sensor_msgs::ImageConstPtr)``), so every
+    conversion of a ROS 2 image was an error near the node's calls."""
+    result = _extract(write_tree, _source("ros2_cv_bridge_h.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("publish", "image_mono"), ("subscribe", "image")]

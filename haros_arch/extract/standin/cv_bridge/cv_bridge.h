@@ -1,4 +1,9 @@
-// haros_arch stand-in: cv_bridge for ROS 1 (declarations only)
+// haros_arch stand-in: cv_bridge for ROS 1 (declarations only); in a ROS 2 unit the
+// header of ROS 2's cv_bridge, which includes cv_bridge.hpp (Foxy's only header; Humble's
+// deprecated one): ROS 2 code including <cv_bridge/cv_bridge.h> gets the ROS 2 API
+#if defined(HAROS_UNIT_ROS) && HAROS_UNIT_ROS == 2
+#include <cv_bridge/cv_bridge.hpp>
+#else
 #ifndef HAROS_STANDIN_CV_BRIDGE_H
 #define HAROS_STANDIN_CV_BRIDGE_H
 #include <string>
@@ -35,3 +40,4 @@ CvImagePtr cvtColor(const CvImageConstPtr& source, const std::string& encoding);
 int getCvType(const std::string& encoding);
 }  // namespace cv_bridge
 #endif
+#endif  // HAROS_UNIT_ROS
