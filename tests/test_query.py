@@ -182,16 +182,27 @@ def test_a_sub_expression_without_bound_variables_is_evaluated_once():
 def test_similar_to_finds_what_comparing_every_pair_finds():
     import random
 
-    from haros_arch.query.absence import similar_to
+    from haros_arch.query.absence import similar_to, spelling
     from haros_arch.query.functions import edit_distance
 
     rng = random.Random(7)
-    words = ["".join(rng.choice("ab_") for _ in range(rng.randint(0, 9))) for _ in range(300)]
+    words = ["".join(rng.choice("aB_") for _ in range(rng.randint(0, 9))) for _ in range(300)]
     words.append("x" * 70)  # too long to index: compared one by one
     for word in [*words[:60], "x" * 69]:
         found = similar_to(lambda _n: None, word, words)
-        expected = [w for w in words if edit_distance(lambda _n: None, word, w) <= 2]
+        expected = [w for w in words if edit_distance(lambda _n: None, word, w) <= 2
+                    or spelling(w) == spelling(word)]
         assert found == expected, word
+
+
+def test_similar_to_takes_the_same_words_spelt_another_way():
+    """grid_map_pcl's launch file sets ``configFilePath_``; its node reads
+    ``config_file_path``: five edits apart, the same words."""
+    from haros_arch.query.absence import similar_to
+
+    names = ["config_file_path", "folder_path", "config-file-path", "configuration"]
+    assert similar_to(lambda _n: None, "configFilePath_", names) == [
+        "config_file_path", "config-file-path"]
 
 
 def test_unknown_users_takes_readers_alone_as_its_side(model):

@@ -332,6 +332,8 @@ _PARTS = MAX_DISTANCE + 1
 _Index = tuple[dict[tuple[int, int, str], list[int]], list[str], list[frozenset[str]]]
 _INDEXES: OrderedDict[int, tuple[Any, _Index]] = OrderedDict()
 _KEEP_INDEXES = 16
+# items' places by their names' spelling (``similar_to``), kept as the indexes are
+_SPELLINGS: OrderedDict[int, tuple[Any, dict[str, list[int]]]] = OrderedDict()
 
 
 def _own(item: Any) -> str | None:
@@ -411,12 +413,31 @@ def masks(word: str) -> dict[str, int]:
     return found
 
 
+def spelling(name: str) -> str:
+    """A name as its words are, whatever their spelling: lower case, without ``_`` and
+    ``-`` (``configFilePath_``, ``config_file_path`` and ``config-file-path`` alike)."""
+    return name.lower().replace("_", "").replace("-", "")
+
+
 def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
-    """The items whose own name equals ``word``'s or is within edit distance 2 of it."""
+    """The items whose own name equals ``word``'s or is within edit distance 2 of it, or
+    is spelt with the same words another way (``spelling``: grid_map_pcl's launch file
+    sets ``configFilePath_``, its node reads ``config_file_path``)."""
     word = _own(word)
     if word is None or not isinstance(items, list):
         raise QueryTypeError("similar_to() takes a name (or a resource or link) and a list")
     index, owns, letters = _index(items, charge)
+    spelt = _SPELLINGS.get(id(items))
+    if spelt is None or spelt[0] is not items:
+        by_spelling: dict[str, list[int]] = {}
+        for place, own in enumerate(owns):
+            by_spelling.setdefault(spelling(own), []).append(place)
+        charge(len(owns))
+        spelt = (items, by_spelling)
+        _SPELLINGS[id(items)] = spelt
+        while len(_SPELLINGS) > _KEEP_INDEXES:
+            _SPELLINGS.popitem(last=False)
+    alike = set(spelt[1].get(spelling(word), ()))
     places: set[int] = set()
     for length in range(max(0, len(word) - MAX_DISTANCE), len(word) + MAX_DISTANCE + 1):
         cut = _bounds(length)
@@ -430,9 +451,9 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
     pattern, mine = masks(word), frozenset(word)
     # an edit adds or takes away at most two letters of the set of letters used: a
     # cheap test before the distance
-    return [items[place] for place in sorted(places)
-            if len(letters[place] ^ mine) <= 2 * MAX_DISTANCE
-            and distance(word, owns[place], pattern) <= MAX_DISTANCE]
+    return [items[place] for place in sorted(places | alike)
+            if place in alike or (len(letters[place] ^ mine) <= 2 * MAX_DISTANCE
+                                  and distance(word, owns[place], pattern) <= MAX_DISTANCE)]
 
 
 # CONDITION_FALSE about a read (``diagnostics.CATALOGUE``'s template, filled)
