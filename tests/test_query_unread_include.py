@@ -191,16 +191,16 @@ def test_a_ros2_unread_include_sets_no_parameter_of_a_node_before_it(
 
 
 @pytest.mark.parametrize(("tag", "undecided"), [
-    ("<ros_gz_bridge bridge_name='b' config_file='c.yaml'/>", True),
-    ("<ros_gz_bridge bridge_name='b' if='false'/>", False),
+    ("<vendor_bridge bridge_name='b' config_file='c.yaml'/>", True),
+    ("<vendor_bridge bridge_name='b' if='false'/>", False),
     ("", False),
 ], ids=["extension-tag", "extension-tag-off", "none"])
 def test_a_ros2_xml_tag_of_a_launch_extension_leaves_them_undecided(
         write_tree: Any, tag: str, undecided: bool) -> None:
-    """ros_gz's XML launch files start the bridge and gz sim through tags that ros_gz's
-    Python packages expose as launch extensions (``<ros_gz_bridge>``, ``<gz_server>``):
-    ros2 launch runs them (or fails without the package); they were dropped with a
-    warning, so every absence beside them was decided."""
+    """A package's Python can expose launch actions as XML tags (ros_gz's
+    ``<ros_gz_bridge>``, which ``launch.ros2.package_actions`` knows; a vendor's that it
+    does not): ros2 launch runs one (or fails without the package); an unknown one was
+    dropped with a warning, so every absence beside it was decided."""
     launch = f"<launch>\n  {tag}\n  <node pkg='conv' exec='scan' name='scan'/>\n</launch>\n"
     root: Path = write_tree({
         "src/conv/package.xml": package_xml("conv", "ament_python"),
@@ -220,7 +220,7 @@ def test_a_ros2_xml_tag_of_a_launch_extension_leaves_them_undecided(
     if undecided:
         assert "subscriber-without-publisher" not in found
         (said,) = found["subscriber-without-publisher-undecided"]
-        assert "action not interpreted (<ros_gz_bridge>)" in said
+        assert "action not interpreted (<vendor_bridge>)" in said
     else:
         assert len(found["subscriber-without-publisher"]) == 1
     if tag:

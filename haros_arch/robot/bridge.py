@@ -39,8 +39,11 @@ from ..plugins.attach import own_partial
 from ..share import share_source
 from ..workspace import Workspace
 
+# (bridge_node: the RosGzBridge component as a program, ros_gz_bridge.cpp, which reads
+# the same config_file; what the package's launch file and its <ros_gz_bridge> action run)
 PARAMETER_BRIDGES = (("ros_gz_bridge", "parameter_bridge"),
-                     ("ros_ign_bridge", "parameter_bridge"))
+                     ("ros_ign_bridge", "parameter_bridge"),
+                     ("ros_gz_bridge", "bridge_node"))
 IMAGE_BRIDGES = (("ros_gz_image", "image_bridge"), ("ros_ign_image", "image_bridge"))
 MAX_ENTRIES = 1_000
 _DIRECTIONS = {"BIDIRECTIONAL": ("publish", "subscribe"), "GZ_TO_ROS": ("publish",),
@@ -78,9 +81,11 @@ def bridges(config: Configuration, launch: LaunchModel,
                 node.calls.extend(_from_file(path, decl, node, workspace, config))
         if not known:
             instance.node = node
-        elif node.completeness == "partial" and instance.node is not None and (
-                instance.node.model is None):
-            for reason in node.completeness_reasons:  # a config file not read
+        elif node.completeness == "partial" and instance.node is not None:
+            # a config file not read: the bridged topics are not known, whether the
+            # program's interface is from its source or from a model (which says
+            # complete: its topics come from the file at run time)
+            for reason in node.completeness_reasons:
                 own_partial(instance, reason, owned)
         out.append((instance, list(node.calls)))
     return out

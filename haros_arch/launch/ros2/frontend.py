@@ -22,6 +22,7 @@ from ...manifest import start_lines, xml_parser
 from ...model.location import Location
 from ...workspace import Workspace
 from . import entities as e
+from .package_actions import BY_TAG
 from .substitutions import SubstitutionSyntax, parse
 
 COMMON = ("if", "unless")
@@ -54,6 +55,8 @@ class Frontend:
             # the launch process's own ROS node and log folder: nothing in the graph
             "set_use_sim_time": self.ignored, "set_ros_log_dir": self.ignored,
             "reset": self.reset,
+            # actions installed packages expose (ros_gz's ``<ros_gz_bridge>``, ...)
+            **{tag: self.package_action for tag in BY_TAG},
         }
 
     # -- helpers -------------------------------------------------------------------
@@ -310,6 +313,27 @@ class Frontend:
             elif child.tag not in ("param", "remap", "env"):
                 self.report("LAUNCH_UNKNOWN_TAG", child, tag=child.tag)
         return action
+
+    def package_action(self, ent: Entity) -> e.Action | None:
+        """A launch action of an installed package (``package_actions``): the node its
+        launch file starts, named and given parameters by the tag's attributes."""
+        row = BY_TAG[ent.tag]
+        for key in row.others:
+            ent.read.add(key)
+        missing = [key for key in row.required if key not in ent.attrs]
+        for key in missing:
+            self.report("LAUNCH_MISSING_ATTRIBUTE", ent, tag=ent.tag, attribute=key)
+        if missing:
+            return None
+        params: list[e.ParamEntry] = []
+        for parameter, argument in row.params:
+            value = self.text(ent, argument)
+            if value is not None:
+                params.append(((parameter,), value))
+        return e.NodeAction(
+            (row.package,), (row.executable,),
+            self.text(ent, row.name_arg) if row.name_arg else None,
+            self.text(ent, row.namespace_arg) if row.namespace_arg else None, params)
 
     def composable(self, ent: Entity) -> e.ComposableNode | None:
         node = e.ComposableNode(

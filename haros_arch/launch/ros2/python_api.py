@@ -27,6 +27,7 @@ from ...share import install_prefix
 from .. import expression
 from . import entities as e
 from .naming import yaml_value
+from .package_actions import PACKAGE_ACTIONS, PackageAction
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
 from .python_expressions import unsure_variable
@@ -540,6 +541,24 @@ def node(container: bool) -> Builder:
     return build
 
 
+def package_action(row: PackageAction) -> Builder:
+    """A launch action of an installed package (``package_actions``: ros_gz's
+    ``RosGzBridge(bridge_name=..., config_file=...)``): the node its launch file starts,
+    named and given parameters by the action's keywords."""
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        params: list[e.ParamEntry] = []
+        for parameter, argument in row.params:
+            value = k.get(argument)
+            if value is not None:
+                params.append(((parameter,), to_text(value)))
+        action = e.NodeAction(
+            (row.package,), (row.executable,),
+            text_or_none(k.get(row.name_arg)) if row.name_arg else None,
+            text_or_none(k.get(row.namespace_arg)) if row.namespace_arg else None, params)
+        return finish(i, action, k, n)
+    return build
+
+
 def then_on_exit(i: Interpreter, process: e.Action, k: Kwargs, n: ast.AST) -> e.Action:
     """A process (``Node``, ``ExecuteProcess``) and what its ``on_exit`` starts: launch
     registers those actions as an ``OnProcessExit`` handler of that process when the
@@ -969,6 +988,7 @@ API: dict[str, Builder] = {
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
+    **{row.cls: package_action(row) for row in PACKAGE_ACTIONS},
     **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON, **MOVEIT_CONFIGS_UTILS,
     "len": builtin(len, str, list, tuple, dict),
     "str": text_of(False), "repr": text_of(True),
