@@ -354,3 +354,57 @@ def test_a_chain_named_at_run_time_makes_the_instance_partial(write_tree: Any) -
     assert instance.completeness == "partial"
     assert any("whose name is not known statically" in r
                for r in instance.completeness_reasons)
+
+
+ROS2_ARRAY_FILTER = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <sensor_msgs/msg/laser_scan.hpp>
+    #include <filters/filter_base.hpp>
+    #include <filters/filter_chain.hpp>
+    #include <pluginlib/class_list_macros.hpp>
+
+    namespace demo {
+    class Clip : public filters::FilterBase<sensor_msgs::msg::LaserScan> {
+     public:
+      bool configure() override {
+        inner_ = new filters::MultiChannelFilterChain<float>("float");
+        return inner_->configure(3, param_prefix_ + "inner_chain", logging_interface_,
+                                 params_interface_);
+      }
+      bool update(const sensor_msgs::msg::LaserScan& in,
+                  sensor_msgs::msg::LaserScan& out) override {
+        out = in;
+        return true;
+      }
+     private:
+      filters::MultiChannelFilterChain<float>* inner_;
+    };
+    }  // namespace demo
+    PLUGINLIB_EXPORT_CLASS(demo::Clip, filters::FilterBase<sensor_msgs::msg::LaserScan>)
+    """
+
+
+def test_ros2_filter_names_a_chain_of_its_own_under_its_prefix(write_tree: Any) -> None:
+    """laser_filters' ROS 2 LaserArrayFilter configures chains under its own parameter
+    prefix (``param_prefix_ + "range_filter_chain"``): the chain gives the filter
+    ``<prefix>.filterN.params.``, so its chain reads ``filter1.params.inner_chain...``
+    (they were ``?inner_chain...``, names not known)."""
+    _, config, _ = _analyse(write_tree, {
+        "src/demo/package.xml": _manifest("demo", "rclcpp", "filters", "sensor_msgs",
+                                          build_type="ament_cmake"),
+        "src/demo/demo_filters.xml": PLUGINS_XML.replace("sensor_msgs::LaserScan",
+                                                         "sensor_msgs::msg::LaserScan"),
+        "src/demo/CMakeLists.txt": (
+            "project(demo)\nfind_package(ament_cmake REQUIRED)\n"
+            "add_library(clip src/clip.cpp)\n"
+            "pluginlib_export_plugin_description_file(filters demo_filters.xml)\n"
+            "add_executable(chain_node src/chain_node.cpp)\n"
+            "install(TARGETS chain_node DESTINATION lib/${PROJECT_NAME})\n"),
+        "src/demo/src/chain_node.cpp": ROS2_NODE,
+        "src/demo/src/clip.cpp": ROS2_ARRAY_FILTER,
+        "src/demo/launch/demo.launch.xml": ROS2_LAUNCH.format(
+            params=ROS2_CHAIN.format(cls="demo/Clip")),
+    }, "demo/launch/demo.launch.xml")
+    names = {name for _kind, name in _links(config, "/chain")}
+    assert "/chain/scan_filter_chain.filter1.params.inner_chain.filter1.type" in names
+    assert not any("?" in name for name in names)

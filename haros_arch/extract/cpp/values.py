@@ -21,7 +21,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind
+from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind, conf
 
 from ...files import package_files
 from . import api, formats
@@ -1025,7 +1025,7 @@ class Scope:
             return writes[0] if len(writes) == 1 else None
         if decl.type.is_const_qualified() or _string_constant(decl) or const_array(decl):
             definition = decl.get_definition() or decl
-            return initializer(definition)
+            return initializer(definition) or _template_initializer(decl)
         if unwritten_global(decl):
             return initializer(decl.get_definition() or decl)
         return None
@@ -1802,6 +1802,23 @@ def _package_sources(root: str) -> tuple[str, ...]:
             if len(found) > MAX_PACKAGE_SOURCES:
                 return ()
     return tuple(found)
+
+
+def _template_initializer(decl: Cursor) -> Cursor | None:
+    """The default member initialiser of a const member of a class template's
+    specialisation, which the parse does not instantiate where nothing builds the class:
+    the template's own member's (filters' ``FilterBase<T>::param_prefix_``, a base of a
+    workspace filter)."""
+    parent = decl.semantic_parent
+    if decl.kind != CursorKind.FIELD_DECL or parent is None:
+        return None
+    template = conf.lib.clang_getSpecializedCursorTemplate(parent)
+    if template is None or template.kind == CursorKind.NO_DECL_FOUND:
+        return None
+    owner = template.get_definition() or template
+    field = next((c for c in owner.get_children()
+                  if c.kind == CursorKind.FIELD_DECL and c.spelling == decl.spelling), None)
+    return initializer(field) if field is not None else None
 
 
 def _string_constant(decl: Cursor) -> bool:

@@ -49,7 +49,11 @@ class FilterBase {
   std::string filter_type_;
   bool configured_;
   std::map<std::string, XmlRpc::XmlRpcValue> params_;  // ROS 1
-  std::string param_prefix_;  // ROS 2
+  // ROS 2: the chain gives each filter ``<prefix>.filterN.params.``, which the getParam
+  // rows write as ``?.`` and the graph fills per filter; a filter naming parameters or
+  // chains of its own with it (laser_filters' LaserArrayFilter: ``param_prefix_ +
+  // "range_filter_chain"``) gets the same mark (const: read as its initialiser)
+  const std::string param_prefix_ = "?.";
 #ifdef HAROS_STANDIN_RCLCPP_HPP
   // ROS 2 (rclcpp is in the precompiled stand-ins; not included here, which would make
   // every unit that includes this header ROS 2 code)
