@@ -1078,3 +1078,11 @@ def test_ros2_code_including_cv_bridge_h_gets_the_ros2_api(write_tree) -> None:
     assert _errors(result) == []
     assert sorted((c.kind, c.name) for c in result.calls) == [
         ("publish", "image_mono"), ("subscribe", "image")]
+
+
+def test_posix_descriptors_and_processes(write_tree) -> None:
+    """urg_node's getID: ``dup``, ``dup2`` and ``pipe`` were undeclared (and ``fork``,
+    ``exec*``, ``waitpid``, which drivers running a helper program use)."""
+    result = _extract(write_tree, _source("ros2_posix_processes.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "probe_status")]

@@ -427,6 +427,24 @@ int unlink(const char* path);
 #define W_OK 2
 #define X_OK 1
 int close(int fd);
+// <unistd.h>'s descriptors and processes (urg_node's getID redirects its output)
+int dup(int fd);
+int dup2(int fd, int fd2);
+int pipe(int fds[2]);
+pid_t fork(void);
+pid_t setsid(void);
+int chdir(const char* path);
+int fsync(int fd);
+int execv(const char* path, char* const argv[]);
+int execvp(const char* file, char* const argv[]);
+int execl(const char* path, const char* arg, ...);
+int execlp(const char* file, const char* arg, ...);
+// <sys/wait.h>
+pid_t wait(int* status);
+pid_t waitpid(pid_t pid, int* status, int options);
+#define WNOHANG 1
+#define WEXITSTATUS(status) (((status) & 0xff00) >> 8)
+#define WIFEXITED(status) (((status) & 0x7f) == 0)
 ssize_t read(int fd, void* buf, size_t count);
 ssize_t write(int fd, const void* buf, size_t count);
 int open(const char* path, int flags, ...);
