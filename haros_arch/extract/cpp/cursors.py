@@ -785,15 +785,10 @@ def from_standin(target: Cursor | None) -> bool:
     of the workspace."""
     if target is None or target.location.file is None:
         return False
-    return _in_standin(target.location.file.name)
+    return in_standin(target.location.file.name)
 
 
 @functools.lru_cache(maxsize=1024)
 def in_standin(path: str) -> bool:
     """Whether the file ``path`` is one of our stand-ins."""
-    return _in_standin(path)
-
-
-@functools.lru_cache(maxsize=1024)
-def _in_standin(path: str) -> bool:
     return os.path.realpath(path).startswith(os.path.realpath(_STANDIN) + os.sep)
