@@ -1086,3 +1086,14 @@ def test_posix_descriptors_and_processes(write_tree) -> None:
     result = _extract(write_tree, _source("ros2_posix_processes.cpp"), "ament_cmake")
     assert _errors(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "probe_status")]
+
+
+def test_fill_image_and_every_image_encoding(write_tree) -> None:
+    """flir_camera_driver: ``sensor_msgs::fillImage`` (fill_image.hpp) and the 16-bit
+    Bayer encodings were not declared (declared permissively, the parse's errors near
+    the driver's calls)."""
+    result = _extract(write_tree, _source("ros2_fill_image.cpp"), "ament_cmake")
+    assert _errors(result) == []
+    assert not {d.code for d in result.diagnostics} & {"CPP_NAMES_DECLARED",
+                                                        "CPP_INCLUDE_MISSING"}
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "image_raw")]

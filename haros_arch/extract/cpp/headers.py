@@ -204,7 +204,8 @@ _ROS_PREFIXES = ("ros/", "boost/", "tf/", "rclcpp", "rmw/", "tf2", "image_transp
 _LIBRARY_UMBRELLAS = frozenset({"opencv2/opencv.hpp", "cv_bridge/cv_bridge.h", "Eigen/Dense",
                                 QT})
 _LIBRARY_HEADERS = ("sensor_msgs/image_encodings.", "sensor_msgs/point_cloud2_iterator.",
-                    "sensor_msgs/distortion_models.", "sensor_msgs/point_cloud_conversion.")
+                    "sensor_msgs/distortion_models.", "sensor_msgs/point_cloud_conversion.",
+                    "sensor_msgs/fill_image.")
 
 
 # a class or struct defined (not only declared): ``class VISIBILITY Name final : ...{``
