@@ -1,0 +1,71 @@
+"""navigation2's controller, planner and smoother plugins have interface models (jazzy
+and humble, built from their pinned commits): a controller server loading regulated
+pure pursuit, navigation2 installed, reads its parameters under the plugin's name, so
+a setting the plugin does not read is said (opennav_coverage's demo sets Humble's
+``use_interpolation``, gone from Jazzy's controller), where before the plugin was not
+found and every setting under it undecided."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+
+PARAMS = """
+controller_server:
+  ros__parameters:
+    controller_plugins: ["FollowPath"]
+    FollowPath:
+      plugin: "nav2_regulated_pure_pursuit_controller::RegulatedPurePursuitController"
+      desired_linear_vel: 0.5
+      use_interpolation: false
+planner_server:
+  ros__parameters:
+    planner_plugins: ["GridBased"]
+    GridBased:
+      plugin: "nav2_navfn_planner::NavfnPlanner"
+      tolerance: 0.5
+"""
+
+LAUNCH = """
+<launch>
+  <node pkg="nav2_controller" exec="controller_server" name="controller_server">
+    <param from="$(find-pkg-share demo)/config/nav.yaml"/>
+  </node>
+  <node pkg="nav2_planner" exec="planner_server" name="planner_server">
+    <param from="$(find-pkg-share demo)/config/nav.yaml"/>
+  </node>
+</launch>
+"""
+
+
+def test_a_modelled_controller_plugin_reads_its_settings(write_tree) -> None:
+    root = write_tree({
+        "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
+            "</package>", "<exec_depend>nav2_controller</exec_depend>"
+            "<exec_depend>nav2_planner</exec_depend></package>"),
+        "src/demo/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
+            "find_package(ament_cmake REQUIRED)\n"
+            "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
+            "ament_package()\n"),
+        "src/demo/config/nav.yaml": PARAMS,
+        "src/demo/launch/nav.launch.xml": LAUNCH,
+        "project.yaml": ("project: p\ndistro: jazzy\nworkspace: [src]\nconfigurations:\n"
+                         "  c: [demo/launch/nav.launch.xml]\n")})
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    (config,) = model.configurations
+    assert not any(d.code == "PLUGIN_NOT_FOUND" for d in config.diagnostics)
+    reads = {link.resource.name for link in config.links if link.kind == "read"}
+    assert {"/controller_server/FollowPath.desired_linear_vel",
+            "/planner_server/GridBased.tolerance"} <= reads
+    unread = [f.message for f in run_catalogue(model, project)
+              if f.rule == "parameter-set-not-read"]
+    assert any("FollowPath.use_interpolation" in message for message in unread)
+    assert not any("desired_linear_vel" in message or "tolerance" in message
+                   for message in unread)
