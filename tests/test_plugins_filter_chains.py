@@ -282,7 +282,8 @@ ROS2_LAUNCH = """
     """
 
 
-def _ros2(write_tree: Any, params: str) -> tuple[Any, Any, Any]:
+def _ros2(write_tree: Any, params: str, filter_source: str = ROS2_FILTER
+          ) -> tuple[Any, Any, Any]:
     return _analyse(write_tree, {
         "src/demo/package.xml": _manifest("demo", "rclcpp", "filters", "sensor_msgs",
                                           build_type="ament_cmake"),
@@ -295,7 +296,7 @@ def _ros2(write_tree: Any, params: str) -> tuple[Any, Any, Any]:
             "add_executable(chain_node src/chain_node.cpp)\n"
             "install(TARGETS chain_node DESTINATION lib/${PROJECT_NAME})\n"),
         "src/demo/src/chain_node.cpp": ROS2_NODE,
-        "src/demo/src/clip.cpp": ROS2_FILTER,
+        "src/demo/src/clip.cpp": filter_source,
         "src/demo/launch/demo.launch.xml": ROS2_LAUNCH.format(params=params),
     }, "demo/launch/demo.launch.xml")
 
@@ -389,22 +390,7 @@ def test_ros2_filter_names_a_chain_of_its_own_under_its_prefix(write_tree: Any) 
     prefix (``param_prefix_ + "range_filter_chain"``): the chain gives the filter
     ``<prefix>.filterN.params.``, so its chain reads ``filter1.params.inner_chain...``
     (they were ``?inner_chain...``, names not known)."""
-    _, config, _ = _analyse(write_tree, {
-        "src/demo/package.xml": _manifest("demo", "rclcpp", "filters", "sensor_msgs",
-                                          build_type="ament_cmake"),
-        "src/demo/demo_filters.xml": PLUGINS_XML.replace("sensor_msgs::LaserScan",
-                                                         "sensor_msgs::msg::LaserScan"),
-        "src/demo/CMakeLists.txt": (
-            "project(demo)\nfind_package(ament_cmake REQUIRED)\n"
-            "add_library(clip src/clip.cpp)\n"
-            "pluginlib_export_plugin_description_file(filters demo_filters.xml)\n"
-            "add_executable(chain_node src/chain_node.cpp)\n"
-            "install(TARGETS chain_node DESTINATION lib/${PROJECT_NAME})\n"),
-        "src/demo/src/chain_node.cpp": ROS2_NODE,
-        "src/demo/src/clip.cpp": ROS2_ARRAY_FILTER,
-        "src/demo/launch/demo.launch.xml": ROS2_LAUNCH.format(
-            params=ROS2_CHAIN.format(cls="demo/Clip")),
-    }, "demo/launch/demo.launch.xml")
+    _, config, _ = _ros2(write_tree, ROS2_CHAIN.format(cls="demo/Clip"), ROS2_ARRAY_FILTER)
     names = {name for _kind, name in _links(config, "/chain")}
     assert "/chain/scan_filter_chain.filter1.params.inner_chain.filter1.type" in names
     assert not any("?" in name for name in names)

@@ -597,10 +597,12 @@ def _model_tree(package: str, relative: str, models: Callable[[str], Any] | None
     return tree_from_data(data.get(relative), package) if relative in data else None
 
 
-def _listed_navigators(host: TreeHost, base: str, params: Any) -> set[str] | None:
-    """The classes of the navigators the host's list names (``<id>.plugin``, the default
-    class for a default id); None when the list is not set (the host's defaults run)
-    or names one not known statically (any may)."""
+def _navigators(host: TreeHost, base: str, params: Any
+                ) -> list[tuple[str | None, Any, Location]] | None:
+    """The navigators the host's list names, each with its id (None when not known
+    statically), its class (``<id>.plugin``, the default class for a default id; a
+    lookup name ``pkg/Class`` as the class) and where the launch files give it; None
+    when the list is not set (the host's defaults run)."""
     if host.navigators is None:
         return None
     parameter, known = host.navigators
@@ -608,39 +610,45 @@ def _listed_navigators(host: TreeHost, base: str, params: Any) -> set[str] | Non
     if listed is None:
         return None
     ids = listed.value if isinstance(listed.value, list) else [listed.value]
-    out: set[str] = set()
+    out: list[tuple[str | None, Any, Location]] = []
     for ident in ids[:200]:
         if not isinstance(ident, str) or UNKNOWN_MARK in ident:
-            return None
-        typed = _param(params, f"{base}{ident}.plugin")
-        cls = typed.value if typed is not None else dict(known).get(ident)
-        if not isinstance(cls, str) or UNKNOWN_MARK in cls:
-            return None
-        out.add(cls.replace("/", "::"))
-    return out
-
-
-def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
-    """Why the host runs trees not read: a navigator of its list (``<id>.plugin``, the
-    default class for a default id) that is not one whose trees the row names."""
-    if host.navigators is None:
-        return []
-    parameter, known = host.navigators
-    listed = _param(params, base + parameter)
-    if listed is None:
-        return []
-    ids = listed.value if isinstance(listed.value, list) else [listed.value]
-    out = []
-    for ident in ids[:200]:
-        if not isinstance(ident, str) or UNKNOWN_MARK in ident:
-            out.append(f"{parameter}: a navigator not known statically")
+            out.append((None, None, listed.launch_location))
             continue
         typed = _param(params, f"{base}{ident}.plugin")
         cls = typed.value if typed is not None else dict(known).get(ident)
         if isinstance(cls, str):
-            cls = cls.replace("/", "::")  # a lookup name, ``pkg/Class``
-        if (ident, cls) not in known and cls not in dict(known).values():
-            where = (typed or listed).launch_location
+            cls = cls.replace("/", "::")
+        out.append((ident, cls, (typed or listed).launch_location))
+    return out
+
+
+def _listed_navigators(host: TreeHost, base: str, params: Any) -> set[str] | None:
+    """The classes of the navigators the host's list names; None when the list is not
+    set (the host's defaults run) or names one not known statically (any may)."""
+    listed = _navigators(host, base, params)
+    if listed is None:
+        return None
+    out: set[str] = set()
+    for ident, cls, _where in listed:
+        if ident is None or not isinstance(cls, str) or UNKNOWN_MARK in cls:
+            return None
+        out.add(cls)
+    return out
+
+
+def _other_navigators(host: TreeHost, base: str, params: Any) -> list[str]:
+    """Why the host runs trees not read: a navigator of its list that is not one whose
+    trees the row names."""
+    listed = _navigators(host, base, params)
+    if listed is None or host.navigators is None:
+        return []
+    parameter, known = host.navigators
+    out = []
+    for ident, cls, where in listed:
+        if ident is None:
+            out.append(f"{parameter}: a navigator not known statically")
+        elif (ident, cls) not in known and cls not in dict(known).values():
             out.append(f"navigator {ident} ({cls or '?'}) runs behavior trees not read "
                        f"({where.file}:{where.line})")
     return out

@@ -2205,9 +2205,8 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
 
 
 MAX_DEMANDED = 8  # macros defined for one unit because an #error demands them
-# an ``#error`` directive, and the conditional directives around it
+# an ``#error`` directive (the conditional directives around it: ``recall.DIRECTIVE``)
 _ERROR_LINE = re.compile(r"\s*#\s*error\b")
-_DIRECTIVE = re.compile(r"\s*#\s*(if|ifdef|ifndef|elif|else|endif)\b(.*)")
 _NOT_DEFINED = re.compile(r"!\s*defined\s*(?:\(\s*(\w+)\s*\)|(\w+))\s*$")
 _DEFINED = re.compile(r"defined\s*(?:\(\s*(\w+)\s*\)|(\w+))\s*$")
 MAX_DIRECTIVE_SCAN = 2000  # lines read back from an #error to its #if
@@ -2244,7 +2243,7 @@ def _guard_of(lines: list[str], index: int) -> str | None:
     depth = 0
     in_else = False
     for line in reversed(lines[max(0, index - MAX_DIRECTIVE_SCAN):index]):
-        found = _DIRECTIVE.match(line)
+        found = recall.DIRECTIVE.match(line)
         if found is None:
             continue
         word, rest = found.group(1), code_only(found.group(2)).strip()

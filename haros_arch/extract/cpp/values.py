@@ -1306,15 +1306,21 @@ class Scope:
         formatted = self._string_format(call, target, args, depth)
         if formatted is not None:
             return formatted
-        if not args and self.sites is not None:
-            # a getter: what its one ``return`` gives, in each body the call may run
-            # (read in that method, its members as its class's constructors set them)
-            bodies = self.sites.returns(target)
-            values = {self.sites.scope(method).string(value, depth + 1)
-                      for value, method in bodies or ()}
-            if len(values) == 1:
-                return values.pop()
+        if not args:
+            found = self._returned(target, lambda scope, value: scope.string(value, depth + 1))
+            if found is not None:
+                return found
         return UNKNOWN
+
+    def _returned(self, target: Cursor, read: Callable[[Scope, Cursor], Value]) -> Value | None:
+        """What a getter without parameters gives (``read`` of its one ``return``'s
+        expression, in each body a call of it may run: read in that method, its members
+        as its class's constructors set them), when every body agrees; else None."""
+        if self.sites is None:
+            return None
+        values = {read(self.sites.scope(method), value)
+                  for value, method in self.sites.returns(target) or ()}
+        return values.pop() if len(values) == 1 else None
 
     def _handle_resolved(self, call: Cursor, name: Cursor, depth: int) -> Parts:
         """``handle.resolveName(name)``: ``name`` in the namespace of the handle
@@ -1472,13 +1478,10 @@ class Scope:
                 return None if found is None else found[1].integer(found[0], depth + 1)
             return self.integer(value, depth + 1)
         if cursor.kind == CursorKind.CALL_EXPR and cursor.referenced is not None and (
-                not written_arguments(cursor)) and self.sites is not None:
-            # a getter (``RangeSource::depth()``): what its one ``return`` gives, in each
-            # body the call may run, as for a string (``_string_call``)
-            bodies = self.sites.returns(cursor.referenced)
-            values = {self.sites.scope(method).integer(value, depth + 1)
-                      for value, method in bodies or ()}
-            return values.pop() if len(values) == 1 else None
+                not written_arguments(cursor)):
+            # a getter (``RangeSource::depth()``), as for a string
+            return self._returned(cursor.referenced,
+                                  lambda scope, value: scope.integer(value, depth + 1))
         return None
 
     def token(self, cursor: Cursor) -> str | None:

@@ -22,7 +22,7 @@ from ...manifest import start_lines, xml_parser
 from ...model.location import Location
 from ...workspace import Workspace
 from . import entities as e
-from .package_actions import BY_TAG
+from .package_actions import BY_TAG, node_action
 from .substitutions import SubstitutionSyntax, parse
 
 COMMON = ("if", "unless")
@@ -325,15 +325,7 @@ class Frontend:
             self.report("LAUNCH_MISSING_ATTRIBUTE", ent, tag=ent.tag, attribute=key)
         if missing:
             return None
-        params: list[e.ParamEntry] = []
-        for parameter, argument in row.params:
-            value = self.text(ent, argument)
-            if value is not None:
-                params.append(((parameter,), value))
-        return e.NodeAction(
-            (row.package,), (row.executable,),
-            self.text(ent, row.name_arg) if row.name_arg else None,
-            self.text(ent, row.namespace_arg) if row.namespace_arg else None, params)
+        return node_action(row, lambda argument: self.text(ent, argument))
 
     def composable(self, ent: Entity) -> e.ComposableNode | None:
         node = e.ComposableNode(

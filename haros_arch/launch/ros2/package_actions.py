@@ -14,7 +14,10 @@ in a container (another process, the same interface), read as the node.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+
+from . import entities as e
 
 
 @dataclass(frozen=True)
@@ -50,3 +53,17 @@ PACKAGE_ACTIONS: tuple[PackageAction, ...] = (
 )
 BY_TAG = {row.tag: row for row in PACKAGE_ACTIONS}
 BY_CLASS = {row.cls: row for row in PACKAGE_ACTIONS}
+
+
+def node_action(row: PackageAction, value: Callable[[str], e.Text | None]) -> e.NodeAction:
+    """The node the action of ``row`` starts, given the text of each of its arguments
+    (``value``: None when the action is not given it), as the frontend and the Python
+    reader read them."""
+    params: list[e.ParamEntry] = []
+    for parameter, argument in row.params:
+        given = value(argument)
+        if given is not None:
+            params.append(((parameter,), given))
+    return e.NodeAction((row.package,), (row.executable,),
+                        value(row.name_arg) if row.name_arg else None,
+                        value(row.namespace_arg) if row.namespace_arg else None, params)

@@ -27,7 +27,7 @@ from ...share import install_prefix
 from .. import expression
 from . import entities as e
 from .naming import yaml_value
-from .package_actions import PACKAGE_ACTIONS, PackageAction
+from .package_actions import PACKAGE_ACTIONS, PackageAction, node_action
 from .python import Interpreter
 from .python_controller_manager import CONTROLLER_MANAGER
 from .python_expressions import unsure_variable
@@ -546,15 +546,7 @@ def package_action(row: PackageAction) -> Builder:
     ``RosGzBridge(bridge_name=..., config_file=...)``): the node its launch file starts,
     named and given parameters by the action's keywords."""
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        params: list[e.ParamEntry] = []
-        for parameter, argument in row.params:
-            value = k.get(argument)
-            if value is not None:
-                params.append(((parameter,), to_text(value)))
-        action = e.NodeAction(
-            (row.package,), (row.executable,),
-            text_or_none(k.get(row.name_arg)) if row.name_arg else None,
-            text_or_none(k.get(row.namespace_arg)) if row.namespace_arg else None, params)
+        action = node_action(row, lambda argument: text_or_none(k.get(argument)))
         return finish(i, action, k, n)
     return build
 
