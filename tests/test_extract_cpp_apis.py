@@ -53,6 +53,13 @@ def libraries(ros1_ws: Workspace) -> CppResult:
 
 
 @pytest.fixture(scope="module")
+def camera(ros1_ws: Workspace) -> CppResult:
+    """The nodelet libraries.cpp exports, as its manager runs it."""
+    return extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws, cache_dir=None,
+                       entry="demo::Camera")
+
+
+@pytest.fixture(scope="module")
 def talker(ros2_ws: Workspace) -> CppResult:
     return extract_cpp([os.path.join(ROS2_SRC, "talker.cpp")], ros2_ws, cache_dir=None)
 
@@ -64,7 +71,7 @@ def mover(ros2_ws: Workspace) -> CppResult:
 
 # -- ROS 1 libraries -------------------------------------------------------------------
 
-LIBRARIES = [
+CAMERA = [
     ("read", "~input_topic", "str", None, False, 27),            # nodelet private handle
     ("subscribe", "?", "std_msgs/String", 1, False, 28),          # name from a parameter
     ("publish", "~status", "std_msgs/String", 1, False, 29),
@@ -72,6 +79,8 @@ LIBRARIES = [
     ("read", "output_topic", "str", None, False, 31),
     ("publish", "?", "std_msgs/String", 1, False, 32),
     ("publish", "/tf", "tf2_msgs/TFMessage", None, False, 43),    # a broadcaster member
+]
+LIBRARIES = [
     ("action-server", "do", "demo/Do", None, False, 59),
     ("action-client", "delegate", "demo/Do", None, False, 60),
     ("publish", "vision/raw", "sensor_msgs/Image", 1, False, 63),
@@ -88,21 +97,32 @@ LIBRARIES = [
 ]
 
 
-def test_ros1_libraries(libraries: CppResult) -> None:
+def test_ros1_libraries(libraries: CppResult, camera: CppResult) -> None:
     assert [row(c) for c in libraries.calls] == LIBRARIES
     assert libraries.rosname == "libraries"
     assert "CPP_PARSE_ERROR" not in codes(libraries)
     assert "CPP_INCLUDE_MISSING" not in codes(libraries)
+    # (the file's main() too: a library holds no main(), this fixture's file both)
+    assert [row(c) for c in camera.calls if c.location.line < 45] == CAMERA
 
 
-def test_names_from_parameters(libraries: CppResult) -> None:
-    params = [(c.name, c.name_param, c.name_default) for c in libraries.calls
+def test_an_exported_class_main_never_builds_runs_in_its_host_only(
+        libraries: CppResult, camera: CppResult) -> None:
+    """The file's main() never builds the nodelet it exports: a manager that loads it
+    runs its onInit(), in the manager's process, not this executable."""
+    assert not [c for c in libraries.calls if c.location.line < 45]
+    assert {c.location.line for c in camera.calls if c.location.line < 45} == {
+        27, 28, 29, 30, 31, 32, 43}
+
+
+def test_names_from_parameters(camera: CppResult) -> None:
+    params = [(c.name, c.name_param, c.name_default) for c in camera.calls
               if c.name_param is not None]
     assert params == [("?", "~input_topic", "scan"), ("?", "output_topic", "out")]
 
 
-def test_callbacks_of_library_calls(libraries: CppResult) -> None:
-    by_line = {(c.location.line, c.kind): c for c in libraries.calls}
+def test_callbacks_of_library_calls(libraries: CppResult, camera: CppResult) -> None:
+    by_line = {(c.location.line, c.kind): c for c in [*libraries.calls, *camera.calls]}
     assert by_line[(28, "subscribe")].callback == "Camera::onString"
     assert by_line[(65, "subscribe")].callback == "onImage"
 
@@ -118,12 +138,12 @@ MISSING_HEADERS = [h for h in LIBRARY_HEADERS if not os.path.isfile(f"/usr/inclu
 
 @pytest.mark.skipif(bool(MISSING_HEADERS),
                     reason=f"needs the ROS 1 headers in /usr/include: {MISSING_HEADERS}")
-def test_ros1_libraries_with_system_headers(ros1_ws: Workspace, libraries: CppResult) -> None:
+def test_ros1_libraries_with_system_headers(ros1_ws: Workspace, camera: CppResult) -> None:
     real = extract_cpp([os.path.join(ROS1_SRC, "libraries.cpp")], ros1_ws,
-                       system_headers=True, cache_dir=None)
-    assert [row(c) for c in real.calls] == [row(c) for c in libraries.calls]
+                       system_headers=True, cache_dir=None, entry="demo::Camera")
+    assert [row(c) for c in real.calls] == [row(c) for c in camera.calls]
     assert [(c.name_param, c.name_default) for c in real.calls] == [
-        (c.name_param, c.name_default) for c in libraries.calls]
+        (c.name_param, c.name_default) for c in camera.calls]
 
 
 # -- rclcpp ----------------------------------------------------------------------------

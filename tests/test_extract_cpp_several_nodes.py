@@ -119,7 +119,8 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
                    ["main()", "rover::spin_all()"], ["rover::spin_all()"],
                    [("vendor", "rover::spin_all()")],
                    [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"],
-                   [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")])
+                   [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")],
+                   ["rover::Odometry", ""])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
@@ -127,9 +128,12 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
         ["main()", "rover::spin_all()"], ["rover::spin_all()"],
         [("vendor", "rover::spin_all()")],
         [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"],
-        [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")])
+        [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")],
+        ["rover::Odometry", ""])
     with pytest.raises(TypeError):
         from_data({**data, "registered": [["rover::Odometry", None]]})
+    with pytest.raises(TypeError):
+        from_data({**data, "loads_in": [None]})
     with pytest.raises(TypeError):
         from_data({**data, "unseen_in": [["vendor", None]]})
     with pytest.raises(TypeError):

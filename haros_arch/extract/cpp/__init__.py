@@ -276,6 +276,13 @@ class CppResult:
     # (``CallFinder.registered``): where a node is such a class, what runs starts there
     # (``_reached``)
     registered: list[tuple[str, str]] = field(default_factory=list)
+    # in a translation unit's result: the owners whose code creates plugin classes or
+    # nodelets by name (``CPP_PLUGINS_LOADED``; "": a load outside any function) or a
+    # plugin class it names (``CPP_PLUGIN_IN_PROCESS``): such a load runs where its
+    # owner runs (``_unbuilt``: a class a loader may build is not left out). Not a
+    # nodelet it runs as itself (``CPP_NODELET_IN_PROCESS``: the graph gives the node
+    # that class's calls)
+    loads_in: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -565,6 +572,13 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     read = {owner for unit in units for owner in unit.defines}
     unseen = {word for unit in units for word in _unit_unseen(unit, read)} | (
         links.opaque_unseen(facts)) if complete else {"*"}
+    ordered = sorted(paths_units, key=lambda pair: pair[0])
+    reaching = _reached(ordered, unseen, entry)
+    loaded = _exported_unbuilt(reaching, units)
+    if loaded:  # what code the process never runs passes is passed nowhere
+        away = {site for usr, index, _, site in facts
+                if index == links.EXPORTED_AT and usr in loaded}
+        facts = [fact for fact in facts if fact[3] not in away]
     built = _built_under(facts, _building_unseen(units, facts) if complete else unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
     called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen),
@@ -620,8 +634,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                     or (c.kind, c.name, c.location) not in named]
     result.calls = _members_named(result.calls)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, sorted(paths_units, key=lambda pair: pair[0]), known, unseen, given,
-                entry)
+    _name_nodes(result, ordered, known, unseen, given, entry, (reaching, loaded))
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -757,12 +770,15 @@ def _shared_under(held: list[tuple[Condition, ...] | None]) -> tuple[Condition, 
 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                 facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"}),
-                given: Sequence[str] = (), entry: str | None = None) -> None:
+                given: Sequence[str] = (), entry: str | None = None,
+                reaching: tuple[Any, set[str]] = (None, set())) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
     no one node can be told (the graph gives those calls to the first node). The calls
     of a node class the executable's ``main()`` (or the registered class ``entry``)
-    never builds are left out (``_unbuilt``)."""
+    never builds are left out (``_unbuilt``), and those of the classes it exports for a
+    host and never builds (``reaching``: ``_reached``'s answer and
+    ``_exported_unbuilt``'s)."""
     owners: dict[str, list[str]] = {}
     made_by: dict[str, list[str]] = {}
     for _, unit in units:
@@ -775,9 +791,9 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
             # the node of what constructs it
             if used.endswith("()") and caller != used and caller not in made_by.get(used, ()):
                 made_by.setdefault(used, []).append(caller)
-    found = _reached(units, unseen, entry)
-    reached, hiding, entered, named, scoped = found if found is not None else (
-        None, unseen, set(), set(), {})
+    found, loaded = reaching
+    reached, hiding, entered, named, scoped, _exported = found if found is not None else (
+        None, unseen, set(), set(), {}, [])
     unbuilt_constructor = links.constructor_unbuilt(facts, unseen)
     idle_names: set[tuple[str, str]] = set()
     for _, unit in units:
@@ -808,7 +824,9 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                                   result.rosnames[0])
         elif any(result.rosname in names for names in owners.values()):
             result.rosname = "?"
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped)
+    loads = {owner for _, unit in units for owner in unit.loads_in}
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped, loads) | (
+        loaded)
     for call in result.calls:  # a class's nodes, one per construction (``links.resolve``)
         holder, own = links.per_construction(call.node_name)
         if own is not None and holder not in unbuilt and own not in result.rosnames and (
@@ -864,7 +882,8 @@ def _makers_nodes(owner: str | None, owners: dict[str, list[str]],
 
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
              unseen: Collection[str], entered: set[str], named: set[str],
-             scoped: dict[str, set[str]] | None = None) -> set[str]:
+             scoped: dict[str, set[str]] | None = None,
+             loads: Collection[str] = ("",)) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
@@ -874,16 +893,17 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     (``named``, the words there) (open-rmf's door_supervisor links the fleet adapter's
     library: its ``agv::Node`` is made only by the adapter's factory). A class that
     nothing in the executable constructs or calls keeps its calls: a host, a
-    registration or a call through its base may run its methods. None when the
-    executable loads plugins or nodelets by name (a name written in its code too), or
-    components (a factory may build them), nor a class whose name the code around the
-    parse's errors holds (they may hide its construction; a word found only in the code
-    of functions names a class there as C++ looks it up from them, ``scoped``: open-rmf's
+    registration or a call through its base may run its methods (but see
+    ``_exported_unbuilt``). None when the executable loads plugins or nodelets by name
+    (a name written in its code too) in code that runs (``loads``, the owners holding
+    such a load; "": anywhere), or components (a factory may build them), nor a class
+    whose name the code around the parse's errors holds (they may hide its
+    construction; a word found only in the code of functions names a class there as
+    C++ looks it up from them, ``scoped``: open-rmf's
     EasyTrafficLight writes ``Implementation`` for its own, never rmf_task_ros2's
     ``Dispatcher::Implementation``)."""
     if reached is None or "*" in unseen or any(
-            d.code in ("CPP_PLUGINS_LOADED", "CPP_PLUGIN_IN_PROCESS")
-            for d in result.diagnostics) or any(
+            owner == "" or owner in reached for owner in loads) or any(
             call.name.endswith("_container/load_node") for call in result.calls):
         return set()  # a component container (ros2_canopen's) loads node classes too
     scoped = scoped or {}
@@ -897,6 +917,33 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                       and owner not in reached and (owner.endswith("()") or (
                           (owner in entered or owner.rsplit("::", 1)[-1] in named)
                           and not _named_in(owner, unseen, scoped)))}
+
+
+def _exported_unbuilt(found: tuple[Any, ...] | None, units: Iterable[CppResult]) -> set[str]:
+    """The classes an executable's files export for a host (a plugin's registration)
+    that its code never builds or calls a method of, with the bases they give them,
+    where ``_reached`` (``found``) tells what runs, no code that runs loads plugins by
+    name (``CppResult.loads_in``) and no error may hide a construction: that host
+    builds them, in its own process, and their code runs nowhere in this one.
+    teb_local_planner's test_optim_node links the planner's library and calls only a
+    static method of TebLocalPlannerROS: the subscriptions and reads its
+    ``initialize(name, ...)`` makes under the plugin's name are move_base's."""
+    if found is None:
+        return set()
+    reached, hiding, _entered, _named, scoped, exported = found
+    units = list(units)
+    # (a nodelet the executable runs as itself, ``CPP_NODELET_IN_PROCESS``, may be one
+    # of them: pointcloud_to_laserscan_node links its nodelet's library and loads it)
+    if not exported or "*" in hiding or any(
+            owner == "" or owner in reached for unit in units for owner in unit.loads_in
+    ) or any(call.name.endswith("_container/load_node") for unit in units
+             for call in unit.calls) or any(
+            d.code == "CPP_NODELET_IN_PROCESS" for unit in units for d in unit.diagnostics):
+        return set()
+    loaded = {cls for cls, base in exported if cls == base and cls not in reached
+              and not _named_in(cls, hiding, scoped)}
+    return loaded | {base for cls, base in exported if cls in loaded and (
+        base not in reached) and not _named_in(base, hiding, scoped)}
 
 
 def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> bool:
@@ -929,7 +976,8 @@ def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> 
 
 def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
              entry: str | None = None
-             ) -> tuple[set[str], set[str], set[str], set[str], dict[str, set[str]]] | None:
+             ) -> tuple[set[str], set[str], set[str], set[str], dict[str, set[str]],
+                        list[tuple[str, str]]] | None:
     """The owners whose code the executable runs, when its files hold a ``main()`` or
     register the class ``entry`` (a component's, nodelet's or plugin's, which its
     container or host constructs and calls the methods of: that class and its bases
@@ -994,6 +1042,11 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
     # node's (two nodelets of one file)
     hosted = {cls for _, unit in units for cls, base in unit.registered
               if cls == base} if registered else set()
+    # with a main(): the classes registered for a loader or container elsewhere (a
+    # plugin's export), and their bases: built by that host, as a node or plugin of
+    # its own, not by this process unless its code builds them (``_unbuilt``)
+    exported = [] if registered else list(dict.fromkeys(
+        pair for _, unit in units for pair in unit.registered))
     if not starts:
         return None
     starts.add(STATIC)
@@ -1038,7 +1091,7 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
         starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
     scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
     return (reached, words, {made for targets in edges.values() for made in targets} | hosted,
-            named, scoped)
+            named, scoped, exported)
 
 
 def _registered(units: list[tuple[str, CppResult]], entry: str | None
@@ -1251,7 +1304,8 @@ def _result_data(result: CppResult) -> dict[str, Any]:
     data = cache.to_data(result.calls, result.rosname, result.diagnostics, result.facts,
                          result.node_names, result.constructions, result.unseen,
                          result.made_under, result.uses, result.defines, result.handed,
-                         result.unseen_in, result.passed, result.hidden, result.registered)
+                         result.unseen_in, result.passed, result.hidden, result.registered,
+                         result.loads_in)
     if result.rosnames:  # a node's
         data["rosnames"] = list(result.rosnames)
     return data
@@ -1261,14 +1315,14 @@ def _result_from_data(data: dict[str, Any]) -> CppResult | None:
     """``_result_data`` read back; None for data that is not such."""
     try:
         (calls, rosname, found, facts, named, made, unseen, under, uses, defines, handed,
-         unseen_in, passed, hidden, registered) = cache.from_data(data)
+         unseen_in, passed, hidden, registered, loads_in) = cache.from_data(data)
         rosnames = data.get("rosnames", [])
         if not (isinstance(rosnames, list) and all(isinstance(n, str) for n in rosnames)):
             return None
     except (ValueError, TypeError, KeyError):
         return None
     return CppResult(calls, rosname, found, facts, rosnames, named, made, uses, defines,
-                     under, unseen, handed, unseen_in, passed, hidden, registered)
+                     under, unseen, handed, unseen_in, passed, hidden, registered, loads_in)
 
 
 # pluginlib's ClassLoader (ROS 1 and 2) and class_loader: a plugin class made by name
@@ -1594,8 +1648,12 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # created by a name written in the code, are said so instead
     own = {(d.location.file, d.location.line) for d in finder.diagnostics
            if d.code in ("CPP_NODELET_IN_PROCESS", "CPP_PLUGIN_IN_PROCESS")}
-    result.diagnostics.extend(d for d in plugin_loads(path, text, workspace)
-                              if (d.location.file, d.location.line) not in own)
+    loads = [d for d in plugin_loads(path, text, workspace)
+             if (d.location.file, d.location.line) not in own]
+    result.diagnostics.extend(loads)
+    result.loads_in = sorted({owner_of(function) if (function := places.innermost(
+        os.path.abspath(path), d.location.line)) is not None else "" for d in loads} | (
+        finder.loads_in))
     result.diagnostics.extend(library_loads(path, text, workspace, tu))
     result.calls = sorted(finder.calls, key=lambda c: (
         c.location.file or "", c.location.line, c.location.column))

@@ -249,7 +249,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             unseen_in: list[tuple[str, str]] | None = None,
             passed: list[tuple[str, str]] | None = None,
             hidden: list[str] | None = None,
-            registered: list[tuple[str, str]] | None = None) -> dict[str, Any]:
+            registered: list[tuple[str, str]] | None = None,
+            loads_in: list[str] | None = None) -> dict[str, Any]:
     return {"calls": [plain(c) for c in calls], "rosname": rosname,
             "diagnostics": [plain(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -261,14 +262,16 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "uses": [list(n) for n in uses or ()], "defines": list(defines or ()),
             "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()],
             "passed": [list(n) for n in passed or ()], "hidden": list(hidden or ()),
-            "registered": [list(n) for n in registered or ()]}
+            "registered": [list(n) for n in registered or ()],
+            "loads_in": list(loads_in or ())}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
         list[PrimitiveCall], str | None, list[Diagnostic], list[tuple[str, int, str, str]],
         list[tuple[str, str]], list[tuple[str, str]], list[str],
         list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str],
-        list[tuple[str, str]], list[tuple[str, str]], list[str], list[tuple[str, str]]]:
+        list[tuple[str, str]], list[tuple[str, str]], list[str], list[tuple[str, str]],
+        list[str]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -296,14 +299,15 @@ def from_data(data: dict[str, Any]) -> tuple[
         facts.append((usr, index, value, site))
     unseen, defines = data.get("unseen", []), data.get("defines", [])
     handed, hidden = data.get("handed", []), data.get("hidden", [])
+    loads_in = data.get("loads_in", [])
     for key, words in (("unseen", unseen), ("defines", defines), ("handed", handed),
-                       ("hidden", hidden)):
+                       ("hidden", hidden), ("loads_in", loads_in)):
         if not (isinstance(words, list) and all(isinstance(word, str) for word in words)):
             raise TypeError(key)
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
             _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
             handed, _pairs(data, "unseen_in"), _pairs(data, "passed"), hidden,
-            _pairs(data, "registered"))
+            _pairs(data, "registered"), loads_in)
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

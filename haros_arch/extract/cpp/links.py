@@ -45,6 +45,7 @@ from .call_conditions import (
 )
 from .call_sites import CallSites, argument, string_parameters
 from .handles import Namespaces, is_handle, join_name, normalise
+from .owners import owner_of
 from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
@@ -102,7 +103,12 @@ MEMBER = -17
 # the index of a fact that says the call site (the fact's site) calls the virtual method
 # (the fact's USR) by its class's name, ``Base::setup(nh)``: it runs that method alone,
 # not the methods overriding it (no site of theirs for ``OVERRIDES``)
-QUALIFIED = -19
+QUALIFIED = -20
+# the index of a fact that says the call site (the fact's site) is in the code of a class
+# (the fact's USR: its qualified name) that the unit exports for a host to build (a
+# plugin's registration): where the node's code never builds it, the site is in code
+# the process never runs and passes nothing (``extract.cpp._exported_unbuilt``)
+EXPORTED_AT = -21
 # the start of a ``PrimitiveCall.built_in`` that names a class (by its USR), not a
 # constructor: a method's calls exist where objects of the class are built, under the
 # conditions every construction of it in the node's files shares (``_built_under``)
@@ -118,7 +124,7 @@ WITHIN = -18
 TYPE_ARGUMENT = 1000
 # facts that say no call of their function
 NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
-                       OPAQUE, DEFINED, MEMBER, WITHIN, QUALIFIED})
+                       OPAQUE, DEFINED, MEMBER, WITHIN, QUALIFIED, EXPORTED_AT})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 # realsense2_camera's setParam is called with ~30 names in its files, OrbbecSDK_ROS2's
@@ -134,8 +140,8 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                    named: Callable[[Cursor, Scope], str | None] | None = None,
                    conditioned: Callable[[Cursor, Cursor], tuple[Condition, ...]] | None = None,
                    struct: Callable[[Cursor, Scope], str | None] | None = None,
-                   typed: Callable[[Type], str | None] | None = None
-                   ) -> list[Fact]:
+                   typed: Callable[[Type], str | None] | None = None,
+                   exported: Collection[str] = ()) -> list[Fact]:
     """What this file passes, as handles' namespaces or strings, to the workspace
     functions it calls but does not define; ``named`` gives a string that is (or holds)
     a parameter's value with that parameter marked (``parameter_mark``); ``conditioned``
@@ -143,7 +149,8 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
     (``CONDITIONS``); ``struct`` the name of the parameter a ROS 1 ``XmlRpcValue``
     holds (a struct parameter's member handed to a constructor that reads its keys);
     ``typed`` the ROS type of a class template's argument at a construction
-    (``TYPE_ARGUMENT``)."""
+    (``TYPE_ARGUMENT``); ``exported`` the classes the unit registers for a host, whose
+    code's sites are said (``EXPORTED_AT``)."""
     facts: list[Fact] = []
     done: set[tuple[str, int]] = set()
     for _round in range(MAX_DEPTH):  # reading a value may give another function a mark
@@ -172,6 +179,8 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                         facts.append((usr, LITERAL, str(index), site))
             if len(facts) == given:  # called, with nothing read: called all the same
                 facts.append((usr, CALLED, "", site))
+            if exported and (holder := owner_of(caller)) in exported:
+                facts.append((holder, EXPORTED_AT, "", site))
             if callee.kind == CursorKind.CXX_METHOD and callee.is_virtual_method() and (
                     call.kind == CursorKind.CALL_EXPR and qualified_call(call)):
                 facts.append((usr, QUALIFIED, "", site))

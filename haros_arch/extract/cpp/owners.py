@@ -1,9 +1,10 @@
 """Whose ROS 2 node a C++ call is made on, when one executable creates several.
 
 Every function's calls have an owner (``owner_of``): the class of a method, else the free
-function itself. A node construction (``: Node("name")``, ``make_shared<rclcpp::Node>``)
-names its owner's node; a class of the workspace that names none takes the node of the
-owners that construct it (``constructed_class``), as a device object given the node.
+function (or static method) itself. A node construction (``: Node("name")``,
+``make_shared<rclcpp::Node>``) names its owner's node; a class of the workspace that names
+none takes the node of the owners that construct it (``constructed_class``), as a device
+object given the node.
 """
 
 from __future__ import annotations
@@ -31,10 +32,16 @@ _CLASSES = frozenset({
 def owner_of(function: Cursor) -> str:
     """Whose node a function's calls are made on, as far as the file tells: its class
     (``ns::Driver`` for a method, a default member initialiser), else the free function
-    itself (``main()``). In a translation unit's result a call's ``node_name`` is its
-    owner; the node's result turns it into the name that owner's constructor gives."""
+    or static method itself (``main()``, ``ns::Driver::footprint()``). In a translation
+    unit's result a call's ``node_name`` is its owner; the node's result turns it into
+    the name that owner's constructor gives."""
     parent = function.semantic_parent
     if parent is not None and parent.kind in _CLASSES:
+        # a static method runs on no object of its class: it is a function of its own,
+        # whose calls are made where it is called (a call of it builds nothing)
+        if function.kind in (CursorKind.CXX_METHOD, CursorKind.FUNCTION_TEMPLATE) and (
+                function.is_static_method()):
+            return f"{qualified_name(parent)}::{function.spelling}()"
         return qualified_name(parent)
     scope = qualified_name(parent)
     return f"{scope}::{function.spelling}()" if scope else f"{function.spelling}()"

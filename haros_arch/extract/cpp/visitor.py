@@ -402,6 +402,8 @@ class CallFinder:
         # construct (``owners.registered_class``): (class, class) for each, then
         # (class, base) for its bases of the workspace, transitively
         self.registered: list[tuple[str, str]] = []
+        # the owners whose code creates a plugin class it names (``CppResult.loads_in``)
+        self.loads_in: set[str] = set()
         # the owners whose code hands the node to code the parse does not read
         # (CPP_NODE_PASSED, CPP_NODE_TO_UNKNOWN); "" where no owner is known
         self.handed: set[str] = set()
@@ -504,9 +506,11 @@ class CallFinder:
                     if also is not None:
                         read.variable = member.spelling
                         read.also = also or None
+        self.registered = self._registered()
         self.facts = argument_facts(self.sites, self.namespaces, self.owned, self._marked,
                                     self._site_conditions, self._struct_text,
-                                    self.types.message)
+                                    self.types.message,
+                                    {cls for cls, base in self.registered if cls == base})
         self.facts.extend(call_conditions.site_facts(
             self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
             self.globals, self.declared))
@@ -518,7 +522,6 @@ class CallFinder:
             ((usr, render(parts)) for usr, parts in self.namespaces.global_handles(self.tu)),
             self.tu.spelling))
         self.uses.extend(self._uses())
-        self.registered = self._registered()
         # the owners the unit's code defines, not a workspace header's: a header's
         # function is every including unit's, and runs in none of them by being reached
         # in another (a stand-in's macro, gtest's TEST, defines the unit's own)
@@ -585,8 +588,11 @@ class CallFinder:
         for target in targets:
             if target is None or target.kind not in FUNCTIONS:
                 continue
+            # the template arguments written after the name, not the class before it
+            # (``Planner::footprint(nh)`` runs a static method: it builds no Planner)
+            at = reference.location.offset
             given = [child.referenced for child in reference.get_children()
-                     if child.kind == CursorKind.TYPE_REF]
+                     if child.kind == CursorKind.TYPE_REF and child.location.offset > at]
             for used in (target, *given):
                 where = used.location.file if used is not None else None
                 if where is None or not self.owned(where.name):
@@ -2296,6 +2302,7 @@ class CallFinder:
                 # class's calls, as a nodelet's it runs under its own name)
                 self.diagnostics.append(diag.make("CPP_PLUGIN_IN_PROCESS", location,
                                                   cls=written))
+                self.loads_in.add(self._owner or "")
                 continue
             if written != UNKNOWN_MARK or source is None or source[3] is not None or (
                     source[5] is not None):
@@ -3550,7 +3557,14 @@ class CallFinder:
             return
         if _initialised(field):
             return  # each constructor builds it with its initialiser: that call is it
-        self._emit(spec, field, [], decl, (), Scope(None, self.macros, self.source, self.sites))
+        # made with each object of the class: the class's call (none where nothing
+        # builds one, ``extract.cpp._unbuilt``)
+        held, self._owner = self._owner, owner_of(field)
+        try:
+            self._emit(spec, field, [], decl, (),
+                       Scope(None, self.macros, self.source, self.sites))
+        finally:
+            self._owner = held
 
 
 def _shown_type(ctype: str | None) -> str:
