@@ -337,6 +337,9 @@ class Process(Action):
 
     cmd: Text
     words: list[Text] | None = None
+    # the attributes the Python object has that the launch file reads (WebotsLauncher's
+    # ``_supervisor``, a node it makes for the file to add: ``python_webots``)
+    members: dict[str, Any] = field(default_factory=dict)
 
 
 @dataclass

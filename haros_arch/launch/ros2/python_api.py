@@ -74,6 +74,7 @@ from .python_values import (
     printable,
     to_text,
 )
+from .python_webots import WEBOTS
 
 
 def finish(interp: Interpreter, action: e.Action, kwargs: Kwargs, node: ast.AST) -> e.Action:
@@ -981,7 +982,7 @@ API: dict[str, Builder] = {
     "SetUseSimTime": ignored,
     "ParameterFile": param_file, "ParameterValue": parameter_value, **NAV2_COMMON,
     **{row.cls: package_action(row) for row in PACKAGE_ACTIONS},
-    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON, **MOVEIT_CONFIGS_UTILS,
+    **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON, **MOVEIT_CONFIGS_UTILS, **WEBOTS,
     "len": builtin(len, str, list, tuple, dict),
     "str": text_of(False), "repr": text_of(True),
     "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),

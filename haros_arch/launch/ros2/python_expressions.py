@@ -428,6 +428,8 @@ class Expressions(Walker):
                 return self.unsupported(node, f"{_source(node)} is not set before it is "
                                               "read")
             owner = owner.built
+        if isinstance(owner, e.Process) and node.attr in owner.members:
+            return owner.members[node.attr]  # WebotsLauncher's _supervisor
         if isinstance(owner, e.DeclareArg) and node.attr == "name":
             return owner.name  # DeclareLaunchArgument.name, a property
         if isinstance(owner, e.Literal) and node.attr == "text":

@@ -267,10 +267,16 @@ _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "amen
                 "launch_param_builder", "itertools", "collections",
                 # their launch actions (package_actions)
                 "ros_gz_bridge", "ros_gz_sim")
+# the modules of a package whose launch actions the API's rows are (python_webots); the
+# package's other modules are read where the workspace holds them
+_KNOWN_MODULES = ("webots_ros2_driver.webots_launcher",
+                  "webots_ros2_driver.webots_controller",
+                  "webots_ros2_driver.wait_for_controller_connection")
 
 
 def _known_module(qualified: str) -> bool:
-    return qualified.split(".")[0] in _KNOWN_ROOTS
+    return qualified.split(".")[0] in _KNOWN_ROOTS or any(
+        qualified == module or qualified.startswith(module + ".") for module in _KNOWN_MODULES)
 
 
 def _source(node: ast.AST) -> str:
