@@ -69,3 +69,51 @@ def test_a_modelled_controller_plugin_reads_its_settings(write_tree) -> None:
     assert any("FollowPath.use_interpolation" in message for message in unread)
     assert not any("desired_linear_vel" in message or "tolerance" in message
                    for message in unread)
+
+
+DWB = """
+controller_server:
+  ros__parameters:
+    controller_plugins: ["FollowPath"]
+    FollowPath:
+      plugin: "dwb_core::DWBLocalPlanner"
+      critics: ["RotateToGoal"]
+      trajectory_generator_name: "dwb_plugins::StandardTrajectoryGenerator"
+      sim_time: 1.7
+      vx_samples: 20
+      max_vel_x: 0.26
+      sim_tme: 1.5
+"""
+
+
+def test_dwb_s_trajectory_generator_is_modelled(write_tree) -> None:
+    """DWB's trajectory generators (dwb_plugins, exported under dwb_core's tag with a
+    base only dwb_core's code loads) have models too: a DWB controller with navigation2
+    installed reads its generator's settings under the controller's name, and one it
+    does not read (``sim_tme``) is said, where before the generator was not found and
+    every setting under the controller undecided."""
+    root = write_tree({
+        "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
+            "</package>", "<exec_depend>nav2_controller</exec_depend></package>"),
+        "src/demo/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
+            "find_package(ament_cmake REQUIRED)\n"
+            "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
+            "ament_package()\n"),
+        "src/demo/config/nav.yaml": DWB,
+        "src/demo/launch/nav.launch.xml": LAUNCH.split("  <node pkg=\"nav2_planner\"")[0]
+        + "</launch>\n",
+        "project.yaml": ("project: p\ndistro: humble\nworkspace: [src]\nconfigurations:\n"
+                         "  c: [demo/launch/nav.launch.xml]\n")})
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    (config,) = model.configurations
+    assert not any(d.code == "PLUGIN_NOT_FOUND" for d in config.diagnostics), [
+        d.message for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+    reads = {link.resource.name for link in config.links if link.kind == "read"}
+    assert {"/controller_server/FollowPath.sim_time",
+            "/controller_server/FollowPath.vx_samples",
+            "/controller_server/FollowPath.max_vel_x"} <= reads, sorted(reads)
+    unread = [f.message for f in run_catalogue(model, project)
+              if f.rule == "parameter-set-not-read"]
+    assert any("FollowPath.sim_tme" in message for message in unread), unread

@@ -204,6 +204,11 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
         outcome.problem = f"no package {task.package} in {task.entry.repository}"
         return outcome
     found = read_build_files(package, workspace)
+    # its plugin classes that only a ClassLoader of code loads (``Node.deferred``): a
+    # host elsewhere does (dwb_plugins' trajectory generators, which dwb_core's
+    # DWBLocalPlanner loads by a parameter's value), so the model has them all
+    for node in package.nodes:
+        node.deferred = False
     found += extract_nodes(package.nodes, workspace, cache_dir=task.cache_dir, jobs=1,
                            distro=task.entry.distro)  # the code of that release's rclcpp
     without_deferred([package])
