@@ -117,3 +117,58 @@ def test_dwb_s_trajectory_generator_is_modelled(write_tree) -> None:
     unread = [f.message for f in run_catalogue(model, project)
               if f.rule == "parameter-set-not-read"]
     assert any("FollowPath.sim_tme" in message for message in unread), unread
+
+
+MPPI = """
+controller_server:
+  ros__parameters:
+    controller_plugins: ["FollowPath"]
+    FollowPath:
+      plugin: "nav2_mppi_controller::MPPIController"
+      time_steps: 56
+      critics: ["GoalCritic", "PathAlignCritic"]
+      GoalCritic:
+        enabled: true
+        cost_weight: 5.0
+        threshold_to_consider: 1.4
+      PathAlignCritic:
+        cost_weight: 14.0
+        offset_from_furthest: 20
+        use_path_orientations: false
+      PreferForwardCritic:
+        cost_weight: 5.0
+"""
+
+
+def test_mppi_s_critics_are_loaded_under_the_controller(write_tree) -> None:
+    """MPPI's critics (classes the controller's critic manager loads from
+    ``<plugin>.critics``, ``mppi::critics::<name>``, each named ``<plugin>.<name>``) have
+    models and are attached: their settings are read, a critic the list does not name
+    reads none (``PreferForwardCritic``), where before the controller loaded them unseen
+    and every critic setting was undecided."""
+    root = write_tree({
+        "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
+            "</package>", "<exec_depend>nav2_controller</exec_depend></package>"),
+        "src/demo/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
+            "find_package(ament_cmake REQUIRED)\n"
+            "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
+            "ament_package()\n"),
+        "src/demo/config/nav.yaml": MPPI,
+        "src/demo/launch/nav.launch.xml": LAUNCH.split("  <node pkg=\"nav2_planner\"")[0]
+        + "</launch>\n",
+        "project.yaml": ("project: p\ndistro: jazzy\nworkspace: [src]\nconfigurations:\n"
+                         "  c: [demo/launch/nav.launch.xml]\n")})
+    project = load(str(root / "project.yaml"))
+    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    (config,) = model.configurations
+    reads = {link.resource.name for link in config.links if link.kind == "read"}
+    assert {"/controller_server/FollowPath.GoalCritic.cost_weight",
+            "/controller_server/FollowPath.GoalCritic.threshold_to_consider",
+            "/controller_server/FollowPath.PathAlignCritic.offset_from_furthest",
+            "/controller_server/FollowPath.time_steps"} <= reads, sorted(
+        r for r in reads if "FollowPath" in r)
+    unread = [f.message for f in run_catalogue(model, project)
+              if f.rule == "parameter-set-not-read"]
+    assert any("FollowPath.PreferForwardCritic.cost_weight" in m for m in unread), unread
+    assert not any("GoalCritic" in m or "PathAlignCritic" in m for m in unread), unread

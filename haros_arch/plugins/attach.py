@@ -274,7 +274,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             if inner_slots and _per_inner(call):
                 each_inner.append(call)
             else:
-                calls.append(_under(call, plugin, choice.conditions, slot.bases, slot.inner))
+                calls.append(_under(call, plugin, choice.conditions, slot.bases,
+                                    slot.inner and not slot.joined))
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
                      for call in calls]

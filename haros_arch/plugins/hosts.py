@@ -126,6 +126,10 @@ class Slot:
     # and theirs the next (``<plugin>.<critic>.scale``); a name of one unknown part is the
     # outer plugin's
     inner: bool = False
+    # INNER: each plugin is given ``<outer>.<own>`` as its one name, so a name of one
+    # unknown part is that whole (MPPI's critics: ``on_configure(parent, name_, name_ +
+    # "." + name, ...)``, ``FollowPath.GoalCritic.cost_weight``)
+    joined: bool = False
     # defaults the host loads only where a test of its code holds (``Test``): the
     # plugin's calls carry it as a source condition, which the graph decides from the
     # host's parameter
@@ -514,6 +518,8 @@ LOOKUP_PACKAGES: dict[str, tuple[str, ...]] = {
     "mock_components": ("hardware_interface",),
     "fake_components": ("hardware_interface",),
     "parallel_gripper_action_controller": ("parallel_gripper_controller",),
+    "mppi": ("nav2_mppi_controller",),  # its critics, mppi::critics::GoalCritic
+    "solver_plugins": ("slam_toolbox",),  # its solvers, solver_plugins::CeresSolver
     **{kind: _TRAJECTORY for kind in ("velocity_controllers", "pos_vel_controllers",
                                       "pos_vel_acc_controllers")},
     **{kind: _TRAJECTORY + _GRIPPER for kind in ("position_controllers",
@@ -569,7 +575,10 @@ def node_name_patterns() -> dict[str, str]:
 # ``loadCritics``): ``<plugin>.critics`` lists the critics, each's class is
 # ``<plugin>.<critic>.class`` or the critic's name, completed by
 # ``resolveCriticClassName``; ``TrajectoryCritic::initialize(node, critic, plugin, ...)``
-# names their parameters ``<plugin>.<critic>.<key>``
+# names their parameters ``<plugin>.<critic>.<key>``. nav2_mppi_controller's
+# MPPIController (critic_manager.cpp ``loadCritics``, humble to main): ``<plugin>.critics``
+# lists the critics, each's class ``mppi::critics::<critic>`` (``getFullName``), configured
+# with ``<plugin>.<critic>`` as its name, under which it reads its parameters
 PLUGIN_SLOTS: dict[str, tuple[Slot, ...]] = {
     "dwb_core::DWBLocalPlanner": (
         # (the base alone: dwb_plugins exports other classes under dwb_core's tag too,
@@ -578,6 +587,12 @@ PLUGIN_SLOTS: dict[str, tuple[Slot, ...]] = {
              ("dwb_core::TrajectoryCritic",), class_is_name=True,
              resolve=("Critic", "{plugin}.default_critic_namespaces", ("dwb_critics",)),
              site="dwb_core/src/dwb_local_planner.cpp", inner=True),),
+    "nav2_mppi_controller::MPPIController": (
+        # (its ClassLoader's export tag, the package's own: ``ClassLoader<CriticFunction>(
+        # "nav2_mppi_controller", "mppi::critics::CriticFunction")``)
+        Slot("{plugin}.critics", None, ("nav2_mppi_controller", "mppi::critics::CriticFunction"),
+             class_is_name=True, resolve=("", "", ("mppi::critics",)),
+             site="nav2_mppi_controller/src/critic_manager.cpp", inner=True, joined=True),),
 }
 
 

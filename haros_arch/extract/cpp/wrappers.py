@@ -1720,12 +1720,34 @@ def _parameters(function: Cursor) -> list[Cursor]:
     return [c for c in function.get_children() if c.kind == CursorKind.PARM_DECL]
 
 
+def _unmoved(expr: Cursor) -> Cursor:
+    """``expr`` without ``std::move(x)`` / ``std::forward<T>(x)`` around it, which hand on
+    ``x`` itself (MPPI's ``getParamGetter`` lambda passes ``std::move(default_value)``
+    to ``getParam``: the default its callers give); a call of them in a template, which
+    clang leaves unresolved, too."""
+    for _ in range(3):
+        stripped = strip(expr)
+        if stripped.kind != CursorKind.CALL_EXPR:
+            return expr
+        inner = [c for c in stripped.get_children() if c.kind.is_expression()]
+        callee = stripped.spelling or next(
+            (c.spelling for c in inner[0].walk_preorder()
+             if c.kind == CursorKind.OVERLOADED_DECL_REF), "") if inner else ""
+        target = stripped.referenced
+        if callee not in ("move", "forward") or len(inner) < 2 or (
+                target is not None and qualified_name(target.semantic_parent) != "std"):
+            return expr
+        expr = inner[-1]
+    return expr
+
+
 def _parameter_index(expr: Cursor | None, params: list[Cursor]) -> int | None:
     """The index of the wrapper's parameter ``expr`` is (as it is, or dereferenced,
-    also through a smart pointer: ``node->``, ``*node``, ``node.get()``)."""
+    also through a smart pointer: ``node->``, ``*node``, ``node.get()``; moved or
+    forwarded, ``std::move(node)``)."""
     if expr is None:
         return None
-    expr = pointee(expr)
+    expr = pointee(_unmoved(expr))
     if expr.kind == CursorKind.UNARY_OPERATOR:  # *node
         inner = [c for c in expr.get_children() if c.kind.is_expression()]
         expr = pointee(inner[0]) if len(inner) == 1 else expr
@@ -1758,7 +1780,7 @@ def _converted(expr: Cursor | None, depth: int = 0) -> Cursor | None:
     inner = [c for c in expr.get_children() if c.kind.is_expression()]
     if len(inner) != 1:
         return None
-    found = strip(inner[0])
+    found = strip(_unmoved(inner[0]))
     if found.kind == CursorKind.DECL_REF_EXPR:
         return found
     return _converted(found, depth + 1)
