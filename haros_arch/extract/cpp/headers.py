@@ -161,6 +161,9 @@ UMBRELLAS = {
     "boost/ptr_container/": "boost/ptr_container/ptr_vector.hpp",
     "boost/circular_buffer/": "boost/circular_buffer.hpp",
     "boost/optional/": "boost/optional.hpp",
+    "boost/uuid/": "boost/uuid/uuid.hpp", "boost/type_index/": "boost/type_index.hpp",
+    "boost/functional/hash/": "boost/functional/hash.hpp",
+    "boost/container_hash/": "boost/functional/hash.hpp",
     "boost/program_options/": "boost/program_options.hpp",
     "boost/random/": "boost/random.hpp",  # Boost.Random, the engines of <random>
     "boost/algorithm/string/": "boost/algorithm/string.hpp",
