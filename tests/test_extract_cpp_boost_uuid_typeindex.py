@@ -59,3 +59,41 @@ def test_boost_uuid_type_index_and_hash_parse(write_tree) -> None:
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_INCLUDE_MISSING",
         "CPP_NAMES_DECLARED")]
     assert {c.kind for c in result.calls} == {"publish"}
+
+
+REVERSE = """
+    #include <map>
+    #include <string>
+    #include <vector>
+    #include <iterator>
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "last");
+      ros::NodeHandle nh;
+      std::map<int, std::string> topics{{1, "a"}, {2, "b"}};
+      auto last = topics.rbegin();
+      std::vector<int> ids{1, 2};
+      int newest = *std::make_reverse_iterator(ids.end());
+      if (last != topics.rend() && newest > 0) {
+        ros::Publisher pub = nh.advertise<std_msgs::String>(last->second, 1);
+      }
+      ros::spin();
+    }
+    """
+
+
+def test_a_map_walked_backwards_parses(write_tree) -> None:
+    """``m.rbegin()->first`` of a map (fuse's transaction queues, rtabmap's, mrpt's):
+    the stand-in map had no reverse iterators, and ``std::reverse_iterator``'s ``*`` a
+    deduced type without a body, so each use was a parse error."""
+    root = write_tree({
+        "last/package.xml": package_xml("last", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"),
+        "last/src/last.cpp": REVERSE})
+    result = extract_cpp([str(root / "last" / "src" / "last.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert not [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "?")]

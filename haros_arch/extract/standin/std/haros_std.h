@@ -397,9 +397,14 @@ template<class F, class T> decltype(auto) apply(F&& f, T&& t);
 template<class T> const T& as_const(T& t) noexcept;
 template<class It> struct reverse_iterator {
   reverse_iterator(); explicit reverse_iterator(It it);
-  decltype(auto) operator*() const; reverse_iterator& operator++(); reverse_iterator operator++(int);
+  // the element before the one the iterator it holds points at (defined here: a
+  // deduced type is known only from a body)
+  decltype(auto) operator*() const { It before = current; --before; return *before; }
+  auto operator->() const { return &**this; }
+  reverse_iterator& operator++(); reverse_iterator operator++(int);
   reverse_iterator& operator--(); It base() const;
   bool operator==(const reverse_iterator& o) const; bool operator!=(const reverse_iterator& o) const;
+  It current;
 };
 template<class It> reverse_iterator<It> make_reverse_iterator(It it);
 template<class T> class allocator {
@@ -841,6 +846,13 @@ public:
   const_iterator end() const;
   const_iterator cbegin() const;
   const_iterator cend() const;
+  // walked backwards (a map's last key: ``m.rbegin()->first``)
+  typedef std::reverse_iterator<iterator> reverse_iterator;
+  typedef std::reverse_iterator<const_iterator> const_reverse_iterator;
+  reverse_iterator rbegin();
+  reverse_iterator rend();
+  const_reverse_iterator rbegin() const;
+  const_reverse_iterator rend() const;
 };
 template<class K, class V, class C, class A>
 bool operator==(const map<K, V, C, A>& a, const map<K, V, C, A>& b);
