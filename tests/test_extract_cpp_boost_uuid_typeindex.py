@@ -97,3 +97,39 @@ def test_a_map_walked_backwards_parses(write_tree) -> None:
     assert not [d.message for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "?")]
+
+
+LOCKS = """
+    #include <map>
+    #include <mutex>
+    #include <string>
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "queue");
+      ros::NodeHandle nh;
+      std::multimap<double, std::string> queue;
+      auto first = queue.emplace(0.5, "scan");
+      std::mutex mutex;
+      std::unique_lock<std::mutex> lock(mutex, std::try_to_lock);
+      if (lock && first->second == "scan") {
+        ros::Publisher pub = nh.advertise<std_msgs::String>("queued", 1);
+      }
+      ros::spin();
+    }
+    """
+
+
+def test_a_multimap_insertion_and_a_lock_test_parse(write_tree) -> None:
+    """A multimap's ``emplace`` gives an iterator (fuse's transaction queues; the
+    stand-in gave map's pair) and a ``unique_lock`` tests as a bool (``if (lock)``)."""
+    root = write_tree({
+        "queue/package.xml": package_xml("queue", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"),
+        "queue/src/queue.cpp": LOCKS})
+    result = extract_cpp([str(root / "queue" / "src" / "queue.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert not [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "queued")]

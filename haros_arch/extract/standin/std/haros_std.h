@@ -864,7 +864,15 @@ class unordered_map : public map<K, V> {
 public:
   using map<K, V>::map;
 };
-template<class K, class V, class C = less<K>> class multimap : public map<K, V, C> {};
+template<class K, class V, class C = less<K>> class multimap : public map<K, V, C> {
+public:
+  // every key kept: an insertion gives the element's iterator, not a pair
+  typedef typename map<K, V, C>::iterator iterator;
+  typedef typename map<K, V, C>::value_type value_type;
+  iterator insert(const value_type& v);
+  template<class... Args> iterator emplace(Args&&... args);
+  pair<iterator, iterator> equal_range(const K& k);
+};
 template<class K, class C = less<K>, class A = allocator<K>> class set {
 public:
   typedef K key_type;
@@ -1977,7 +1985,11 @@ public:
   unique_lock(M& m, adopt_lock_t t);
   void lock();
   void unlock();
+  bool try_lock();
   bool owns_lock() const;
+  explicit operator bool() const noexcept;
+  M* mutex() const noexcept;
+  M* release() noexcept;
 };
 template<class M> class shared_lock {
 public:
