@@ -133,3 +133,39 @@ def test_a_multimap_insertion_and_a_lock_test_parse(write_tree) -> None:
     assert not [d.message for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "queued")]
+
+
+STRUCT = """
+    #include <string>
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+
+    void advertiseFrom(ros::NodeHandle& nh, const XmlRpc::XmlRpcValue& config) {
+      std::string topic = static_cast<std::string>(config["topic"]);
+      ros::Publisher pub = nh.advertise<std_msgs::String>("configured", 1);
+    }
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "structs");
+      ros::NodeHandle nh;
+      XmlRpc::XmlRpcValue config;
+      nh.getParam("config", config);
+      advertiseFrom(nh, config);
+      ros::spin();
+    }
+    """
+
+
+def test_a_const_struct_parameter_is_read_by_key(write_tree) -> None:
+    """``config["topic"]`` of a ``const XmlRpcValue&`` (noetic's xmlrpcpp has the const
+    overloads; fuse's sensor configurations): the stand-in had none, an error near the
+    node's calls that left fuse's nodes partial."""
+    root = write_tree({
+        "structs/package.xml": package_xml("structs", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"),
+        "structs/src/structs.cpp": STRUCT})
+    result = extract_cpp([str(root / "structs" / "src" / "structs.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert not [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert ("publish", "configured") in [(c.kind, c.name) for c in result.calls]

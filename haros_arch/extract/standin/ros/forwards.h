@@ -91,6 +91,10 @@ public:
   XmlRpcValue& operator[](int i);
   XmlRpcValue& operator[](const std::string& k);
   XmlRpcValue& operator[](const char* k);
+  // of a const value too, as noetic's xmlrpcpp has them (a const reference's members:
+  // fuse's ``config["name"]``)
+  XmlRpcValue& operator[](const std::string& k) const;
+  XmlRpcValue& operator[](const char* k) const;
   iterator begin();
   iterator end();
   const_iterator begin() const;
