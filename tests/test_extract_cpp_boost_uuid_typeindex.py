@@ -169,3 +169,35 @@ def test_a_const_struct_parameter_is_read_by_key(write_tree) -> None:
     assert not [d.message for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
     assert ("publish", "configured") in [(c.kind, c.name) for c in result.calls]
+
+
+PURGE = """
+    #include <map>
+    #include <string>
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "purge");
+      ros::NodeHandle nh;
+      std::map<double, std::string> pending;
+      auto until = pending.lower_bound(1.0);
+      pending.erase(pending.begin(), until);
+      ros::Publisher pub = nh.advertise<std_msgs::String>("purged", 1);
+      ros::spin();
+    }
+    """
+
+
+def test_a_map_range_erase_parses(write_tree) -> None:
+    """``m.erase(first, last)`` of a map (fuse's batch optimizer purges its pending
+    transactions so)."""
+    root = write_tree({
+        "purge/package.xml": package_xml("purge", "catkin").replace(
+            "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"),
+        "purge/src/purge.cpp": PURGE})
+    result = extract_cpp([str(root / "purge" / "src" / "purge.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert not [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "purged")]

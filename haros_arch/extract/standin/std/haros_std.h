@@ -840,6 +840,7 @@ public:
   iterator upper_bound(const K& k);
   size_t erase(const K& k);
   iterator erase(iterator pos);
+  iterator erase(iterator first, iterator last);
   iterator begin();
   iterator end();
   const_iterator begin() const;
