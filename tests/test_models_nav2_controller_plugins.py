@@ -43,23 +43,36 @@ LAUNCH = """
 """
 
 
-def test_a_modelled_controller_plugin_reads_its_settings(write_tree) -> None:
+def _analysed(write_tree, params: str, launch: str, distro: str, depends: str):
+    """A workspace of one package launching navigation2's servers (installed: their
+    interface models) with ``params``: the project, its model and its one
+    configuration."""
     root = write_tree({
         "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
-            "</package>", "<exec_depend>nav2_controller</exec_depend>"
-            "<exec_depend>nav2_planner</exec_depend></package>"),
+            "</package>", depends + "</package>"),
         "src/demo/CMakeLists.txt": (
             "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
             "find_package(ament_cmake REQUIRED)\n"
             "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
             "ament_package()\n"),
-        "src/demo/config/nav.yaml": PARAMS,
-        "src/demo/launch/nav.launch.xml": LAUNCH,
-        "project.yaml": ("project: p\ndistro: jazzy\nworkspace: [src]\nconfigurations:\n"
-                         "  c: [demo/launch/nav.launch.xml]\n")})
+        "src/demo/config/nav.yaml": params,
+        "src/demo/launch/nav.launch.xml": launch,
+        "project.yaml": (f"project: p\ndistro: {distro}\nworkspace: [src]\n"
+                         "configurations:\n  c: [demo/launch/nav.launch.xml]\n")})
     project = load(str(root / "project.yaml"))
     model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
     (config,) = model.configurations
+    return project, model, config
+
+
+# the controller server alone
+CONTROLLER = LAUNCH.split("  <node pkg=\"nav2_planner\"")[0] + "</launch>\n"
+
+
+def test_a_modelled_controller_plugin_reads_its_settings(write_tree) -> None:
+    project, model, config = _analysed(
+        write_tree, PARAMS, LAUNCH, "jazzy", "<exec_depend>nav2_controller</exec_depend>"
+        "<exec_depend>nav2_planner</exec_depend>")
     assert not any(d.code == "PLUGIN_NOT_FOUND" for d in config.diagnostics)
     reads = {link.resource.name for link in config.links if link.kind == "read"}
     assert {"/controller_server/FollowPath.desired_linear_vel",
@@ -92,22 +105,8 @@ def test_dwb_s_trajectory_generator_is_modelled(write_tree) -> None:
     installed reads its generator's settings under the controller's name, and one it
     does not read (``sim_tme``) is said, where before the generator was not found and
     every setting under the controller undecided."""
-    root = write_tree({
-        "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
-            "</package>", "<exec_depend>nav2_controller</exec_depend></package>"),
-        "src/demo/CMakeLists.txt": (
-            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
-            "find_package(ament_cmake REQUIRED)\n"
-            "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
-            "ament_package()\n"),
-        "src/demo/config/nav.yaml": DWB,
-        "src/demo/launch/nav.launch.xml": LAUNCH.split("  <node pkg=\"nav2_planner\"")[0]
-        + "</launch>\n",
-        "project.yaml": ("project: p\ndistro: humble\nworkspace: [src]\nconfigurations:\n"
-                         "  c: [demo/launch/nav.launch.xml]\n")})
-    project = load(str(root / "project.yaml"))
-    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
-    (config,) = model.configurations
+    project, model, config = _analysed(
+        write_tree, DWB, CONTROLLER, "humble", "<exec_depend>nav2_controller</exec_depend>")
     assert not any(d.code == "PLUGIN_NOT_FOUND" for d in config.diagnostics), [
         d.message for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
     reads = {link.resource.name for link in config.links if link.kind == "read"}
@@ -146,22 +145,8 @@ def test_mppi_s_critics_are_loaded_under_the_controller(write_tree) -> None:
     models and are attached: their settings are read, a critic the list does not name
     reads none (``PreferForwardCritic``), where before the controller loaded them unseen
     and every critic setting was undecided."""
-    root = write_tree({
-        "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
-            "</package>", "<exec_depend>nav2_controller</exec_depend></package>"),
-        "src/demo/CMakeLists.txt": (
-            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
-            "find_package(ament_cmake REQUIRED)\n"
-            "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
-            "ament_package()\n"),
-        "src/demo/config/nav.yaml": MPPI,
-        "src/demo/launch/nav.launch.xml": LAUNCH.split("  <node pkg=\"nav2_planner\"")[0]
-        + "</launch>\n",
-        "project.yaml": ("project: p\ndistro: jazzy\nworkspace: [src]\nconfigurations:\n"
-                         "  c: [demo/launch/nav.launch.xml]\n")})
-    project = load(str(root / "project.yaml"))
-    model = analyse(project, {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
-    (config,) = model.configurations
+    project, model, config = _analysed(
+        write_tree, MPPI, CONTROLLER, "jazzy", "<exec_depend>nav2_controller</exec_depend>")
     reads = {link.resource.name for link in config.links if link.kind == "read"}
     assert {"/controller_server/FollowPath.GoalCritic.cost_weight",
             "/controller_server/FollowPath.GoalCritic.threshold_to_consider",

@@ -902,10 +902,9 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     C++ looks it up from them, ``scoped``: open-rmf's
     EasyTrafficLight writes ``Implementation`` for its own, never rmf_task_ros2's
     ``Dispatcher::Implementation``)."""
-    if reached is None or "*" in unseen or any(
-            owner == "" or owner in reached for owner in loads) or any(
-            call.name.endswith("_container/load_node") for call in result.calls):
-        return set()  # a component container (ros2_canopen's) loads node classes too
+    if reached is None or "*" in unseen or _loads_by_name(
+            reached, loads, (call.name for call in result.calls)):
+        return set()
     scoped = scoped or {}
     classes = {owner for owner, names in owners.items()
                if names and owner not in reached and not owner.endswith("()")
@@ -917,6 +916,14 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                       and owner not in reached and (owner.endswith("()") or (
                           (owner in entered or owner.rsplit("::", 1)[-1] in named)
                           and not _named_in(owner, unseen, scoped)))}
+
+
+def _loads_by_name(reached: set[str], loads: Iterable[str], names: Iterable[str]) -> bool:
+    """Whether code of the executable that runs creates classes by name: a plugin or
+    nodelet load whose owner runs (``CppResult.loads_in``; "": anywhere), or a call of a
+    component container's load service (ros2_canopen's loads node classes so)."""
+    return any(owner == "" or owner in reached for owner in loads) or any(
+        name.endswith("_container/load_node") for name in names)
 
 
 def _exported_unbuilt(found: tuple[Any, ...] | None, units: Iterable[CppResult]) -> set[str]:
@@ -934,10 +941,9 @@ def _exported_unbuilt(found: tuple[Any, ...] | None, units: Iterable[CppResult])
     units = list(units)
     # (a nodelet the executable runs as itself, ``CPP_NODELET_IN_PROCESS``, may be one
     # of them: pointcloud_to_laserscan_node links its nodelet's library and loads it)
-    if not exported or "*" in hiding or any(
-            owner == "" or owner in reached for unit in units for owner in unit.loads_in
-    ) or any(call.name.endswith("_container/load_node") for unit in units
-             for call in unit.calls) or any(
+    if not exported or "*" in hiding or _loads_by_name(
+            reached, (owner for unit in units for owner in unit.loads_in),
+            (call.name for unit in units for call in unit.calls)) or any(
             d.code == "CPP_NODELET_IN_PROCESS" for unit in units for d in unit.diagnostics):
         return set()
     loaded = {cls for cls, base in exported if cls == base and cls not in reached

@@ -35,36 +35,34 @@ PACKAGE = "webots_ros2_driver"
 _NOT_IN_NAMES = " -.)("  # what Driver.cpp turns into ``_`` in the robot's name
 
 
-def _node(i: Interpreter, k: Kwargs, n: ast.AST, **given: Any) -> Any:
-    """A ``Node`` built by the interpreter's own row, with the keywords ``given`` and the
-    action's ``condition``."""
+def _built(i: Interpreter, k: Kwargs, n: ast.AST, row: str = "Node", **given: Any) -> Any:
+    """The action the interpreter's own row ``row`` builds, with the keywords ``given``
+    and the action's ``condition``."""
     kwargs = {key: value for key, value in given.items() if value is not None}
     if k.get("condition") is not None:
         kwargs["condition"] = k["condition"]
-    return i.api["Node"](i, [], kwargs, n)
+    return i.api[row](i, [], kwargs, n)
 
 
 def webots_controller(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     robot = k.get("robot_name")
     if isinstance(robot, str):
         robot = "".join("_" if c in _NOT_IN_NAMES else c for c in robot) or None
-    return _node(i, k, n, package=PACKAGE, executable="driver", name=robot,
+    return _built(i, k, n, package=PACKAGE, executable="driver", name=robot,
                  namespace=k.get("namespace") or None, parameters=k.get("parameters"),
                  remappings=k.get("remappings"))
 
 
 def supervisor(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    return _node(i, k, n, package=PACKAGE, executable="ros2_supervisor.py",
+    return _built(i, k, n, package=PACKAGE, executable="ros2_supervisor.py",
                  name="Ros2Supervisor", namespace="Ros2Supervisor",
                  remappings=[("/Ros2Supervisor/clock", "/clock")])
 
 
 def webots_launcher(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     world = k.get("world")
-    process = i.api["ExecuteProcess"](
-        i, [], {"cmd": ["webots", *([world] if world is not None else [])],
-                **({"condition": k["condition"]} if k.get("condition") is not None else {})},
-        n)
+    process = _built(i, k, n, "ExecuteProcess",
+                     cmd=["webots", *([world] if world is not None else [])])
     wanted = k.get("ros2_supervisor", False)
     if isinstance(process, e.Process) and wanted not in (False, None, 0, ""):
         process.members["_supervisor"] = supervisor(i, [], {}, n)
