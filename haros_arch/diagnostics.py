@@ -66,6 +66,16 @@ CATALOGUE: dict[str, Entry] = {
         "package_ROS1.xml and package_ROS2.xml; its build.sh copies one to package.xml "
         "before building) is no package until one is copied: its nodes, and those launch "
         "files name from it, are not in the workspace."),
+    "PACKAGE_BUILD_BY_ROS_VERSION": Entry(
+        "info", "package {name} builds with {builds} (package.xml's build_type conditions "
+        "over $ROS_VERSION) and this run names no ROS version: the executables and share "
+        "folder of each build are read (give distro: in a project file, or run in a "
+        "sourced ROS shell, to read one)",
+        "A package kept for both ROS versions (CARLA's ros-bridge: a catkin CMakeLists.txt "
+        "for ROS 1, setup.py's entry points for ROS 2) is built by the one the "
+        "distribution's ROS_VERSION selects. With none given, the nodes of both builds "
+        "are read, so that the ROS 1 and the ROS 2 launch files each find theirs, and a "
+        "share folder (ROS 2's) is what the ROS 2 build installs."),
     "PACKAGE_DUPLICATE": Entry(
         "error", "package {name} is defined twice (also at {other})",
         "Two folders of the workspace declare the same package name; the first one "

@@ -6,7 +6,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable, Mapping
-from typing import Any, cast
+from typing import Any
 
 from lxml import etree
 
@@ -183,19 +183,49 @@ def parse_manifest(
             if text:
                 package.dependencies.append(
                     Dependency(text, tag, element.get("condition"), active(element)))
-    build_type: BuildType = "catkin"
     export = root.find("export")
-    if export is not None:
-        for element in export:
-            if not isinstance(element.tag, str):
-                continue
-            if element.tag == "build_type":
-                text = (element.text or "").strip()
-                if active(element) and text in BUILD_TYPES:
-                    build_type = cast(BuildType, text)
+    chosen = [e for e in export if e.tag == "build_type"] if export is not None else []
+    package.build_type = _build_type(chosen, env)
+    if not env.get("ROS_VERSION", "").strip():
+        by_version = {version: _build_type(chosen, {**env, **variables})
+                      for version, variables in ROS_VERSIONS.items()}
+        if len(set(by_version.values())) > 1:
+            package.builds_by_version = by_version
+            package.builds_at = _line(chosen[0])
     package.plugins.extend(_plugins(root, rel_folder, active))
-    package.build_type = build_type
     return package, found
+
+
+# what a distribution's setup script sets that REP 149 conditions test, per ROS version
+ROS_VERSIONS: dict[str, dict[str, str]] = {
+    "1": {"ROS_VERSION": "1", "ROS_PYTHON_VERSION": "3"},
+    "2": {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3"}}
+
+
+def other_builds(package: Package) -> list[tuple[BuildType, dict[str, str]]]:
+    """What a run that gives no ROS version reads beside the package's own build: the
+    build type of each ROS version its package.xml chooses by ``$ROS_VERSION``
+    (``builds_by_version``) that setup.py gives where the package's own reads
+    CMakeLists.txt, with that version's variables to read it in (ros-bridge's setup.py
+    runs its ``setup()`` under ``if ROS_VERSION == 2``)."""
+    if package.build_type == "ament_python":
+        return []
+    return [(build_type, ROS_VERSIONS[version])
+            for version, build_type in sorted(package.builds_by_version.items())
+            if build_type == "ament_python"]
+
+
+def _build_type(elements: list[etree._Element], env: Mapping[str, str]) -> BuildType:
+    """The build type the ``<export><build_type>`` elements give in ``env`` (the last
+    whose condition holds; catkin when none says)."""
+    build_type: BuildType = "catkin"
+    for element in elements:
+        text = (element.text or "").strip()
+        condition = element.get("condition")
+        if text in BUILD_TYPES and (
+                condition is None or condition_holds(condition, env) is not False):
+            build_type = text
+    return build_type
 
 
 def _format(text: str) -> int:

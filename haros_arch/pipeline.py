@@ -17,6 +17,7 @@ from . import diagnostics as diag
 from . import runcache
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
 from .files import content_digest, recording
+from .manifest import other_builds
 from .model.location import Location
 from .model.model import Model
 from .model.serialise import to_data
@@ -390,6 +391,21 @@ def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagn
         package.nodes, found = pysetup.parse_package(package, workspace)
     elif package.build_type in cmake.CMAKE_BUILD_TYPES:
         package.nodes, found = cmake.parse_package(package, workspace)
+    others = other_builds(package)
+    if others:  # each ROS version's setup.py, the run giving none
+        own = {version for version, build_type in package.builds_by_version.items()
+               if build_type == package.build_type}
+        if len(own) == 1:
+            version = own.pop()
+            package.node_versions = {node.executable: version for node in package.nodes}
+    for _, variables in others:
+        more, said = pysetup.parse_package(package, workspace,
+                                           {**workspace.environment, **variables})
+        taken = {node.executable for node in package.nodes}
+        package.nodes.extend(node for node in more if node.executable not in taken)
+        package.node_versions.update((node.executable, variables["ROS_VERSION"])
+                                     for node in more if node.executable not in taken)
+        found.extend(said)
     return found
 
 

@@ -42,14 +42,19 @@ class EntryPoint:
     location: Location
 
 
-def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], list[Diagnostic]]:
-    """The runnable Python nodes of an ament_python package, with their module files."""
+def parse_package(package: Package, workspace: Workspace,
+                  environment: Mapping[str, str] | None = None
+                  ) -> tuple[list[Node], list[Diagnostic]]:
+    """The runnable Python nodes of an ament_python package, with their module files;
+    setup.py read in ``environment`` (default: the workspace's)."""
     found: list[Diagnostic] = []
     entries: list[EntryPoint] = []
     package_dir: dict[str, str] = {}
     setup_py = os.path.join(package.root, "setup.py")
     if os.path.isfile(setup_py):
-        more, package_dir = _from_setup_py(setup_py, workspace, found)
+        more, package_dir = _from_setup_py(
+            setup_py, workspace, found,
+            workspace.environment if environment is None else environment)
         entries.extend(more)
     setup_cfg = os.path.join(package.root, "setup.cfg")
     if os.path.isfile(setup_cfg):
@@ -192,7 +197,8 @@ def setup_module(tree: ast.Module, root: str,
 
 
 def _from_setup_py(path: str, workspace: Workspace,
-                   found: list[Diagnostic]) -> tuple[list[EntryPoint], dict[str, str]]:
+                   found: list[Diagnostic], environment: Mapping[str, str]
+                   ) -> tuple[list[EntryPoint], dict[str, str]]:
     text, problems = read_text(path, workspace.location(path))
     found.extend(problems)
     if text is None:
@@ -205,7 +211,7 @@ def _from_setup_py(path: str, workspace: Workspace,
         found.append(diag.make("PYSETUP_SYNTAX", workspace.location(path, line, column),
                                detail=getattr(err, "msg", str(err))))
         return [], {}
-    module = setup_module(tree, os.path.dirname(path), workspace.environment)
+    module = setup_module(tree, os.path.dirname(path), environment)
     entries, package_dir = _from_setup_call(module, tree, path, workspace, found)
     if module.limited is not None:  # what came after the bound is unknown: said once
         unknown, node = module.limited
@@ -281,7 +287,7 @@ def python_folders(root: str) -> tuple[str, ...]:
 @functools.lru_cache(maxsize=256)
 def _python_folders(path: str, _mtime: int, _size: int) -> tuple[str, ...]:
     workspace = Workspace(os.path.dirname(path))
-    _, package_dir = _from_setup_py(path, workspace, [])
+    _, package_dir = _from_setup_py(path, workspace, [], workspace.environment)
     root = os.path.dirname(path)
     folders = []
     for name, folder in package_dir.items():

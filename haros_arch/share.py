@@ -32,7 +32,7 @@ from __future__ import annotations
 import os
 import posixpath
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 
 from . import pysetup
@@ -42,6 +42,7 @@ from .cmake.interpreter import BINARY_ROOT
 from .cmake.targets import Configured, Install
 from .evaluate import syntax
 from .files import read_text
+from .manifest import other_builds
 from .model.source import Package
 from .workspace import Workspace
 
@@ -63,15 +64,20 @@ def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
     generated: dict[str, tuple[str, int]] = {}
     workspace.generated_shares[package.name] = generated
     setup_py = os.path.join(package.root, "setup.py")
+    # a share folder is ROS 2's: with no ROS version given, a package whose manifest
+    # builds it with setup.py under ROS 2 shares what that setup.py installs
+    ros2 = [variables for build_type, variables in other_builds(package)
+            if variables.get("ROS_VERSION") == "2"]
     if os.path.isfile(os.path.join(package.root, "CMakeLists.txt")) and not (
-            package.build_type == "ament_python" and os.path.isfile(setup_py)):
+            (package.build_type == "ament_python" or ros2) and os.path.isfile(setup_py)):
         _from_cmake(package, workspace, found, generated)
         # ament_package() / catkin_package() install the manifest
         found.setdefault("package.xml", os.path.join(package.root, "package.xml"))
     elif os.path.isfile(setup_py):
         # an ament_python package (its manifest's build type, for this ROS version:
         # ros-bridge's packages keep a catkin CMakeLists.txt beside their setup.py)
-        _from_setup_py(package, workspace, setup_py, found)
+        _from_setup_py(package, workspace, setup_py, found,
+                       {**workspace.environment, **ros2[0]} if ros2 else workspace.environment)
     workspace.share_maps[package.name] = found
     return found
 
@@ -109,6 +115,10 @@ def lib_executables(package: Package, workspace: Workspace) -> frozenset[str]:
         nodes, _ = cmake_nodes(package, workspace)
     else:
         nodes = []
+    for _, variables in other_builds(package):
+        more, _ = pysetup.parse_package(package, workspace,
+                                        {**workspace.environment, **variables})
+        nodes = [*nodes, *more]
     found = frozenset(n.executable for n in nodes if n.kind in ("executable", "script"))
     workspace.lib_executables[package.name] = found
     return found
@@ -318,7 +328,7 @@ def _directory(folder: str, base: str, options: _Options,
 
 # -- ament_python setup.py ----------------------------------------------------------------
 def _from_setup_py(package: Package, workspace: Workspace, path: str,
-                   found: dict[str, str]) -> None:
+                   found: dict[str, str], environment: Mapping[str, str]) -> None:
     text, _ = read_text(path, workspace.location(path))
     if text is None:
         return
@@ -326,7 +336,7 @@ def _from_setup_py(package: Package, workspace: Workspace, path: str,
         tree = syntax.parse(text, path)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return  # pysetup reports it
-    module = pysetup.setup_module(tree, package.root, workspace.environment)
+    module = pysetup.setup_module(tree, package.root, environment)
     data_files: object = None
     for call in module.calls:
         for keyword in call.keywords:

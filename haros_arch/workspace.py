@@ -323,6 +323,13 @@ def scan(roots: Iterable[str], environment: Mapping[str, str] | None = None) -> 
                 os.path.join(folder, "CMakeLists.txt")
             ) and os.path.exists(os.path.join(folder, "setup.py")):
                 package.build_type = "ament_python"
+            if package.builds_by_version:
+                ws.diagnostics.append(diag.make(
+                    "PACKAGE_BUILD_BY_ROS_VERSION",
+                    Location(package.name, where.file, package.builds_at),
+                    name=package.name, builds=", ".join(
+                        f"{kind} for ROS {version}"
+                        for version, kind in sorted(package.builds_by_version.items()))))
             ws.packages[package.name] = package
     for folder, names in variants:
         ws.diagnostics.append(diag.make(

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..files import read_text
+from ..manifest import ROS_VERSIONS
 from ..model.source import Node, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
 from ..plugins.classes import base_name, exported_classes
@@ -203,6 +204,17 @@ def _build_macros(nodes: Sequence[Node], workspace: Workspace,
             macros[root] = build_macros.cmake_macros(root, workspace)
         found.append(build_macros.build_macro_calls(paths, macros.get(root, {}), workspace))
     return found
+
+
+def _build_environment(node: Node, workspace: Workspace) -> dict[str, str] | None:
+    """The environment a node's Python code is read in: the run's, but for a node of a
+    package built per ROS version in a run that names none (``Package.node_versions``),
+    where it is that version's (ros_compatibility's ``ROS_VERSION`` tests)."""
+    package = workspace.packages.get(node.package)
+    version = package.node_versions.get(node.executable) if package is not None else None
+    if version is None:
+        return None
+    return {**workspace.environment, **ROS_VERSIONS[version]}
 
 
 def _entries(nodes: Sequence[Node]) -> list[str | None]:
@@ -402,7 +414,8 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
     if node.language == "python" and sources:
         from .python import extract_python
 
-        found = extract_python(sources, workspace, package=node.package)
+        found = extract_python(sources, workspace, package=node.package,
+                               environment=_build_environment(node, workspace))
         node.calls = found.calls
         node.rosname = found.rosname
         if found.rosname and found.namespace and found.namespace.strip("/"):

@@ -439,6 +439,15 @@ class Package:
     location: Location = NOWHERE
     # absolute folder on disk; not part of the JSON model
     root: str = field(default="", metadata={"json": False})
+    # the build type under each ROS version ("1", "2") when package.xml chooses it by
+    # $ROS_VERSION and the run gives none (ros-bridge's catkin for ROS 1, ament_python
+    # for ROS 2), with the line of its first build_type; empty otherwise
+    builds_by_version: dict[str, BuildType] = field(default_factory=dict,
+                                                    metadata={"json": False})
+    builds_at: int = field(default=0, metadata={"json": False})
+    # then, the ROS version ("1", "2") whose build makes each executable of ``nodes``
+    # (its Python code is read with that version's ROS_VERSION)
+    node_versions: dict[str, str] = field(default_factory=dict, metadata={"json": False})
 
     def __repr__(self) -> str:
         return f"Package({self.name})"

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from ... import diagnostics as diag
@@ -45,11 +46,15 @@ class PythonResult:
 
 
 def extract_python(sources: list[str], workspace: Workspace, *,
-                   package: str | None = None) -> PythonResult:
-    """The rospy / rclpy calls in the modules ``sources`` (absolute paths) of one node."""
+                   package: str | None = None,
+                   environment: Mapping[str, str] | None = None) -> PythonResult:
+    """The rospy / rclpy calls in the modules ``sources`` (absolute paths) of one node;
+    ``environment``: the one its process runs in, when not the workspace's."""
     result = PythonResult()
     root = _package_root(sources, workspace, package)
     loader = Loader(workspace, root)
+    if environment is not None:
+        loader.environment = environment
     modules: list[Module] = []
     for path in sources:
         module = loader.load(os.path.abspath(path))

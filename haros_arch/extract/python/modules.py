@@ -15,6 +15,7 @@ import ast
 import functools
 import os
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -124,6 +125,9 @@ class Loader:
         self.modules: dict[str, Module | None] = {}
         self.diagnostics: list[Diagnostic] = []
         self.node_version = 1  # each module's ``node_version``
+        # the environment of the node's process as far as it is known here (the run's;
+        # a ROS version's where its package builds the node for that one alone)
+        self.environment: Mapping[str, str] = getattr(workspace, "environment", {})
         # top-level Python package name -> folder holding it, in other workspace packages
 
     def location(self, path: str, line: int = 0, column: int = 0) -> Location:

@@ -461,7 +461,7 @@ class Evaluator(Instances, QoSProfiles, Walker):
         0)``), from the run's environment; any other is not known here (the robot's
         shell sets it), nor is one the run does not set (not its default)."""
         name = key.literal if isinstance(key, Value) else None
-        environment = getattr(self.loader.workspace, "environment", {})
+        environment = self.loader.environment
         if name in DISTRO_VARIABLES and name in environment:
             return Value.of(environment[name])
         return Unknown(f"environment variable {name or '?'}")
