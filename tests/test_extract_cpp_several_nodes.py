@@ -16,7 +16,7 @@ from haros_arch.extract.cpp.cache import from_data, to_data
 from haros_arch.model.conditions import Condition
 from haros_arch.model.location import Location
 from haros_arch.model.model import Model
-from haros_arch.pipeline import Options, analyse
+from haros_arch.pipeline import Options, analyse, read_build_files
 from haros_arch.project import load
 from haros_arch.workspace import scan
 
@@ -364,7 +364,11 @@ def test_the_calls_of_a_node_class_main_never_builds_are_not_the_process_s(
     """plansys2's domain_expert_node links DomainExpertClient, a class that makes a node
     of its own, and never builds it: the client's 14 calls were given to the process's
     node. A node class the executable's main() never builds makes no call there; with
-    a main() that loads plugins by name (a factory may build it), its calls stay."""
+    a main() that loads plugins by name, its calls stay when a package declares the
+    class for a loader (its plugin description: the loader may build it), and not when
+    none does (plansys2's executor_node loads its behaviour-tree builders by name and
+    links ComputeBT, whose lifecycle services and 13 parameters it was given: 10 false
+    multiple-service-servers and 2 multiple-publishers warnings)."""
     root = write_tree({
         "pkg/package.xml": PACKAGE,
         "pkg/include/pkg/lib.hpp": UNBUILT,
@@ -385,6 +389,19 @@ def test_the_calls_of_a_node_class_main_never_builds_are_not_the_process_s(
     built = extract_cpp([str(root / "pkg/src/lib.cpp"), str(root / "pkg/src/main.cpp")],
                         workspace, cache_dir=None)
     assert (built.rosname, rows(built)) == ("executor", {("publish", "plan", None)})
+    loading = extract_cpp([str(root / "pkg/src/lib.cpp"), str(root / "pkg/src/loader.cpp")],
+                          workspace, cache_dir=None)
+    assert ("subscribe", "plan") not in {(kind, name) for kind, name, _ in rows(loading)}
+    # declared for a loader: a plugin description names it
+    (root / "pkg/package.xml").write_text(PACKAGE.replace(
+        "</export>", '<pkg plugin="${prefix}/plugins.xml"/></export>'))
+    (root / "pkg/plugins.xml").write_text(
+        '<library path="monitor"><class type="plan::Monitor" base_class_type="rclcpp::Node">'
+        "</class></library>\n")
+    workspace = scan([str(root)])
+    package = workspace.packages["pkg"]
+    read_build_files(package, workspace)
+    assert [n.plugin_class for n in package.nodes] == ["plan::Monitor"]
     loading = extract_cpp([str(root / "pkg/src/lib.cpp"), str(root / "pkg/src/loader.cpp")],
                           workspace, cache_dir=None)
     assert ("subscribe", "plan") in {(kind, name) for kind, name, _ in rows(loading)}

@@ -368,9 +368,10 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
         """The units of the nodes whose result the cache does not keep (``_kept_nodes``):
         only theirs are read back."""
         assert store is not None
-        kept.update(_kept_nodes(store, every, digests, said))
+        kept.update(_kept_nodes(store, every, digests, said, loadable))
         return {p for index, paths in enumerate(every) if index not in kept for p in paths}
 
+    loadable = _loadable(workspace)
     batch, results = _batch(nodes, workspace, include_dirs, system_headers, cache_dir, jobs,
                             compile_commands, True if store is None else unkept, meanwhile,
                             distro)
@@ -379,16 +380,26 @@ def extract_cpp_nodes(nodes: Sequence[Sequence[str]], workspace: Workspace, *,
         if found is None:
             complete = all(p in results for p in paths)
             found = _node_result([(p, results[p]) for p in paths if p in results], complete,
-                                 said[index])
+                                 said[index], loadable)
             if store is not None:
-                _keep_node(store, cache.node_key(paths, batch.units, complete, said[index]),
-                           found)
+                _keep_node(store, cache.node_key(paths, batch.units, complete, said[index],
+                                                 loadable), found)
         batch.results.append(found)
     return batch
 
 
+def _loadable(workspace: Workspace) -> frozenset[str]:
+    """The classes the workspace's packages declare for a loader (the plugin, nodelet
+    and component classes of their build files and plugin descriptions), without
+    template arguments: what a load by name may build."""
+    return frozenset(
+        node.plugin_class.lstrip(":").partition("<")[0]
+        for package in workspace.packages.values() for node in package.nodes
+        if node.plugin_class)
+
+
 def _kept_nodes(store: cache.Cache, every: list[list[str]], digests: dict[str, str],
-                entries: list[str | None]) -> dict[int, CppResult]:
+                entries: list[str | None], loadable: frozenset[str]) -> dict[int, CppResult]:
     """The results of the nodes (each given by its translation units' paths) that the
     cache keeps, by index: those whose units give what they gave when it was kept
     (``cache.node_key``). A run after one changed source made every node of
@@ -397,7 +408,8 @@ def _kept_nodes(store: cache.Cache, every: list[list[str]], digests: dict[str, s
     found: dict[int, CppResult] = {}
     for index, paths in enumerate(every):
         complete = all(p in digests for p in paths)
-        data = store.load_node(cache.node_key(paths, digests, complete, entries[index]))
+        data = store.load_node(cache.node_key(paths, digests, complete, entries[index],
+                                              loadable))
         result = _result_from_data(data) if data is not None else None
         if result is not None:
             found[index] = result
@@ -556,7 +568,7 @@ _OF_A_CALL = frozenset({"CPP_CALL_UNRESOLVED"})
 
 
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True,
-                 entry: str | None = None) -> CppResult:
+                 entry: str | None = None, loadable: Collection[str] = ()) -> CppResult:
     result = CppResult()
     units = [unit for _, unit in paths_units]
     # each call by kind, name and place: one of them, and the conditions the others
@@ -634,7 +646,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                     or (c.kind, c.name, c.location) not in named]
     result.calls = _members_named(result.calls)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
-    _name_nodes(result, ordered, known, unseen, given, entry, (reaching, loaded))
+    _name_nodes(result, ordered, known, unseen, given, entry, (reaching, loaded), loadable)
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -771,7 +783,8 @@ def _shared_under(held: list[tuple[Condition, ...] | None]) -> tuple[Condition, 
 def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
                 facts: links.NodeFacts, unseen: Collection[str] = frozenset({"*"}),
                 given: Sequence[str] = (), entry: str | None = None,
-                reaching: tuple[Any, set[str]] = (None, set())) -> None:
+                reaching: tuple[Any, set[str]] = (None, set()),
+                loadable: Collection[str] = ()) -> None:
     """The executable's nodes when its files construct several with fully known names
     (in the order met, files by path), and each call's node (``_node_of``); None where
     no one node can be told (the graph gives those calls to the first node). The calls
@@ -825,8 +838,8 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         elif any(result.rosname in names for names in owners.values()):
             result.rosname = "?"
     loads = {owner for _, unit in units for owner in unit.loads_in}
-    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped, loads) | (
-        loaded)
+    unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped, loads,
+                       {cls for pair in _exported for cls in pair} | set(loadable)) | loaded
     for call in result.calls:  # a class's nodes, one per construction (``links.resolve``)
         holder, own = links.per_construction(call.node_name)
         if own is not None and holder not in unbuilt and own not in result.rosnames and (
@@ -883,7 +896,8 @@ def _makers_nodes(owner: str | None, owners: dict[str, list[str]],
 def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: CppResult,
              unseen: Collection[str], entered: set[str], named: set[str],
              scoped: dict[str, set[str]] | None = None,
-             loads: Collection[str] = ("",)) -> set[str]:
+             loads: Collection[str] = ("",),
+             loadable: Collection[str] = ()) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
@@ -894,23 +908,34 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     library: its ``agv::Node`` is made only by the adapter's factory). A class that
     nothing in the executable constructs or calls keeps its calls: a host, a
     registration or a call through its base may run its methods (but see
-    ``_exported_unbuilt``). None when the executable loads plugins or nodelets by name
+    ``_exported_unbuilt``). When the executable loads plugins or nodelets by name
     (a name written in its code too) in code that runs (``loads``, the owners holding
-    such a load; "": anywhere), or components (a factory may build them), nor a class
+    such a load; "": anywhere), or components (a factory may build them), only a node
+    class that no file of it registers for a loader and no package of the workspace
+    declares for one (``loadable``: the classes registered in its files, with the bases
+    registered with them, and every plugin, nodelet and component class of the
+    workspace's build files and plugin descriptions), and no code of it constructs or
+    calls (``entered``): a loader builds declared classes alone (plansys2's
+    executor_node loads its behaviour-tree builders by name and links ComputeBT, which
+    only compute_bt builds), nor a class
     whose name the code around the parse's errors holds (they may hide its
     construction; a word found only in the code of functions names a class there as
     C++ looks it up from them, ``scoped``: open-rmf's
     EasyTrafficLight writes ``Implementation`` for its own, never rmf_task_ros2's
     ``Dispatcher::Implementation``)."""
-    if reached is None or "*" in unseen or _loads_by_name(
-            reached, loads, (call.name for call in result.calls)):
+    if reached is None or "*" in unseen:
         return set()
     scoped = scoped or {}
+    by_name = _loads_by_name(reached, loads, (call.name for call in result.calls))
     classes = {owner for owner, names in owners.items()
                if names and owner not in reached and not owner.endswith("()")
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
-               and ("@" in owner or not _named_in(owner, unseen, scoped))}
+               and ("@" in owner or not _named_in(owner, unseen, scoped))
+               and not (by_name and ("@" in owner or owner in entered
+                                     or owner in loadable))}
+    if by_name:
+        return classes
     return classes | {owner for call in result.calls
                       if (owner := links.per_construction(call.node_name)[0]) is not None
                       and owner not in reached and (owner.endswith("()") or (

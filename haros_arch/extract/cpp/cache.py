@@ -16,7 +16,7 @@ import functools
 import hashlib
 import json
 import os
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 from typing import Any
 
 from ... import __version__
@@ -104,12 +104,14 @@ def _arguments_digest(args: tuple[str, ...], generated: str) -> str:
 
 
 def node_key(paths: Sequence[str], digests: Mapping[str, str], complete: bool,
-             entry: str | None) -> str:
+             entry: str | None, loadable: Collection[str] = ()) -> str:
     """The key of what a node's translation units ``paths`` give together (``digests``:
     what each gave, ``CppBatch.units``), all of them read (``complete``) or not, built
-    as the class ``entry``: the same key, the same node result."""
+    as the class ``entry``, with the classes the workspace declares for a loader
+    (``loadable``): the same key, the same node result."""
     return hashlib.sha256(json.dumps(
-        [tool_version(), [[path, digests.get(path)] for path in paths], complete, entry]
+        [tool_version(), [[path, digests.get(path)] for path in paths], complete, entry,
+         sorted(loadable)]
     ).encode()).hexdigest()
 
 
