@@ -451,9 +451,16 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
     pattern, mine = masks(word), frozenset(word)
     # an edit adds or takes away at most two letters of the set of letters used: a
     # cheap test before the distance
-    return [items[place] for place in sorted(places | alike)
-            if place in alike or (len(letters[place] ^ mine) <= 2 * MAX_DISTANCE
-                                  and distance(word, owns[place], pattern) <= MAX_DISTANCE)]
+    # by full name: the same names in the same order in every configuration (one
+    # finding for a parameter file several launch files load, not one per order)
+    return sorted((items[place] for place in places | alike
+                   if place in alike or (len(letters[place] ^ mine) <= 2 * MAX_DISTANCE
+                                         and distance(word, owns[place], pattern)
+                                         <= MAX_DISTANCE)), key=_full_name)
+
+
+def _full_name(item: Any) -> str:
+    return item if isinstance(item, str) else str(getattr(item, "name", ""))
 
 
 # CONDITION_FALSE about a read (``diagnostics.CATALOGUE``'s template, filled)
