@@ -159,10 +159,16 @@ def setup_functions(root: str, environment: Mapping[str, str] | None = None
         "glob.glob": globbed,
     }
     if environment is not None:
-        known = _Environment({k: v for k, v in environment.items() if k in DISTRO_VARIABLES})
-        table["os.environ"] = known
-        table["os.getenv"] = lambda name, default=None: known.get(name, default)
+        table.update(environment_functions(environment))
     return table
+
+
+def environment_functions(environment: Mapping[str, str]) -> dict[str, Any]:
+    """``os.environ`` and ``os.getenv`` over the distribution's variables of
+    ``environment`` (``DISTRO_VARIABLES``); any other variable is not known."""
+    known = _Environment({k: v for k, v in environment.items() if k in DISTRO_VARIABLES})
+    return {"os.environ": known,
+            "os.getenv": lambda name, default=None: known.get(name, default)}
 
 
 # the variables a ROS distribution's setup script sets, which a build has as the run

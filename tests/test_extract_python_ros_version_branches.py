@@ -111,3 +111,56 @@ def test_an_environment_variable_the_distribution_does_not_set_is_not_known(
                                    **distro_variables("humble")})
     result = extract_python([str(root / "talker/talker.py")], workspace, package="talker")
     assert [c.name for c in result.calls] == ["?/out", "humble/out"]
+
+
+SHIM = """\
+import rclpy
+
+_node = None
+
+
+def init_node(name):
+    global _node
+    _node = rclpy.create_node(name)
+
+
+def get_param(name, default=None):
+    name = name.strip("~")
+    _node.declare_parameter(name, default)
+    return _node.get_parameter(name).value
+"""
+BOARD = """\
+import os
+
+if os.environ.get("ROS_VERSION") == "1":
+    import rospy
+elif os.environ.get("ROS_VERSION") == "2":
+    import board.shim as rospy
+else:
+    raise SystemExit(1)
+
+
+def main():
+    rospy.init_node("board")
+    port = rospy.get_param("~port", 8888)
+"""
+
+
+@pytest.mark.parametrize("distro", ["noetic", "humble"])
+def test_an_import_chosen_by_the_environment_is_the_branch_s(write_tree, distro) -> None:
+    """rosboard imports rospy as ``rospy`` under ``os.environ.get("ROS_VERSION") ==
+    "1"`` and its own rclpy shim as ``rospy`` under ``== "2"``: the shim, imported last,
+    was taken for rospy in ROS 1 too, and its ``declare_parameter(name.strip("~"))``
+    read ``/port`` where rospy reads ``~port`` (a false parameter-set-not-read of the
+    launch file's ``port``). A module-level branch whose test over the distribution's
+    variables does not hold imports nothing."""
+    root = write_tree({"board/package.xml": package_xml("board"),
+                       "board/src/board/__init__.py": "",
+                       "board/src/board/shim.py": SHIM,
+                       "board/src/board/board.py": BOARD})
+    workspace = scan([str(root)], {"ROS_DISTRO": distro, **distro_variables(distro)})
+    result = extract_python([str(root / "board/src/board/board.py")], workspace,
+                            package="board")
+    calls = [(c.kind, c.name) for c in result.calls]
+    assert calls == ([("read", "~port")] if distro == "noetic"
+                     else [("declare", "port"), ("read", "port")])

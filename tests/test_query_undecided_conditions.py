@@ -293,7 +293,9 @@ def test_a_call_in_a_loop_over_the_node_running_is_not_conditional() -> None:
         return f"{{text: '{text}', kind: source, statement: while}}"
 
     running = ["ros::ok()", "!ros::isShuttingDown()", "rclcpp::ok()",
-               "not rospy.is_shutdown()", "rclpy.ok() and not rospy.is_shutdown()"]
+               "not rospy.is_shutdown()", "rclpy.ok() and not rospy.is_shutdown()",
+               # a literal truth: rosboard's ``while True:`` around its subscriptions
+               "True", "true", "(1)"]
     for text in running:
         model = f"""
 links:
@@ -305,7 +307,7 @@ links:
         assert findings("conditional-communication", model) == {}, text
         found = findings("subscriber-without-publisher", model)
         assert list(found) == ["subscriber-without-publisher"], (text, found)
-    for text in ("running_", "ros::ok() && running_", "nh.ok()"):
+    for text in ("running_", "ros::ok() && running_", "nh.ok()", "True_", "10"):
         model = f"""
 links:
   - {{kind: publish, node: /driver, name: /joint_angles, type: a/JointAngles,

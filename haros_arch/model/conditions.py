@@ -35,9 +35,12 @@ RUN_ONCE_STATEMENTS = frozenset({"try", "do", "timer"})
 # ``&&`` / ``and``). The first turn of ``while`` over it runs whenever the node does, so
 # it is no condition of existing either (kinova_arm_driver builds its arm, which
 # advertises every topic, in the body of ``while (ros::ok())``, to rebuild it after a
-# failure)
+# failure); nor is a loop over a literal truth (``while True:``, ``while (true)``,
+# ``while (1)``: rosboard subscribes in the body of ``while True:``, once per topic a
+# browser asks for)
 _RUNNING = re.compile(
-    r"(?:(?:::\s*)?(?:ros|rclcpp)\s*::\s*ok\s*\(\s*\)"
+    r"(?:True|true|1"
+    r"|(?:::\s*)?(?:ros|rclcpp)\s*::\s*ok\s*\(\s*\)"
     r"|!\s*(?:::\s*)?ros\s*::\s*isShuttingDown\s*\(\s*\)"
     r"|not\s+rospy\s*\.\s*(?:core\s*\.\s*)?is_shutdown\s*\(\s*\)"
     r"|rclpy\s*\.\s*ok\s*\(\s*\))")

@@ -22,9 +22,10 @@ from typing import Any
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...evaluate import syntax
+from ...evaluate.python import BUILTINS, evaluate_node
 from ...files import read_text
 from ...model.location import Location
-from ...pysetup import python_folders
+from ...pysetup import environment_functions, python_folders
 from ...workspace import Workspace
 
 MAX_PY_BYTES = 512 * 1024
@@ -316,12 +317,28 @@ def _index_guarded_imports(module: Module, loader: Loader, statement: ast.If | a
     ``elif``s and nested ``if``s of a module-level ``if`` (ros_compatibility imports
     rospy under ``if ROS_VERSION == 1:`` and rclpy's ``Node`` under ``elif ROS_VERSION
     == 2:``; a module that so imports both is of the node's ROS version,
-    ``Module.client_version``)."""
-    for child in (*statement.body, *getattr(statement, "orelse", ())):
+    ``Module.client_version``). A branch whose test, over the distribution's variables
+    of the node's process (``Loader.environment``) and literals alone, does not hold
+    imports nothing: rosboard imports rospy as ``rospy`` under ``os.environ.get(
+    "ROS_VERSION") == "1"`` and its own rclpy shim as ``rospy`` under ``== "2"``, and
+    the shim, last, was taken for ROS 1's rospy."""
+    holds = _test_holds(statement.test, loader.environment) if isinstance(
+        statement, ast.If) else None
+    branches = (statement.body if holds else statement.orelse if holds is False
+                else (*statement.body, *statement.orelse))
+    for child in branches:
         if isinstance(child, ast.Import | ast.ImportFrom):
             add_import(module, loader, child, module.imports, module.local_imports)
         elif isinstance(child, ast.If) and isinstance(statement, ast.If):
             _index_guarded_imports(module, loader, child)
+
+
+def _test_holds(test: ast.expr, environment: Mapping[str, str]) -> bool | None:
+    """Whether a module-level ``if``'s test holds, when it reads nothing but literals
+    and the distribution's variables (``os.environ``, ``os.getenv``); None when that is
+    not known."""
+    value = evaluate_node(test, None, {**BUILTINS, **environment_functions(environment)})
+    return value if isinstance(value, bool) else None
 
 
 def _index_guarded(module: Module, statement: ast.If,
