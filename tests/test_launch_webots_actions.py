@@ -81,3 +81,152 @@ def test_webots_actions_start_their_nodes(write_tree: Any) -> None:
     # started once the driver connects: an event's condition
     spawn = nodes["/spawn"]
     assert [c.statement for c in spawn.conditions] == ["event"]
+
+
+CONTROL_LAUNCH = """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from ament_index_python.packages import get_package_share_directory
+from webots_ros2_driver.webots_controller import WebotsController
+from webots_ros2_driver.wait_for_controller_connection import WaitForControllerConnection
+
+
+def generate_launch_description():
+    package_dir = get_package_share_directory('demo')
+    driver = WebotsController(
+        robot_name='bot',
+        namespace='r1',
+        parameters=[{'robot_description': os.path.join(package_dir, 'resource', 'bot.urdf')},
+                    os.path.join(package_dir, 'resource', 'control.yaml')],
+        remappings=[('diffdrive_controller/odom', 'odom')])
+    spawners = [Node(package='controller_manager', executable='spawner',
+                     arguments=[name, '-c', 'r1/controller_manager'])
+                for name in ('diffdrive_controller', 'joint_state_broadcaster')]
+    waiting = WaitForControllerConnection(target_driver=driver, nodes_to_start=spawners)
+    return LaunchDescription([driver, waiting])
+"""
+BOT = """<?xml version="1.0"?>
+<robot name="bot">
+  <link name="base_link"/>
+  <webots>
+    <plugin type="webots_ros2_control::Ros2Control"/>
+  </webots>
+  <ros2_control name="WebotsControl" type="system">
+    <hardware><plugin>webots_ros2_control::Ros2ControlSystem</plugin></hardware>
+    <joint name="left_wheel_joint"><command_interface name="velocity"/></joint>
+  </ros2_control>
+</robot>
+"""
+CONTROL = """r1/controller_manager:
+  ros__parameters:
+    update_rate: 50
+    diffdrive_controller:
+      type: diff_drive_controller/DiffDriveController
+    joint_state_broadcaster:
+      type: joint_state_broadcaster/JointStateBroadcaster
+r1/diffdrive_controller:
+  ros__parameters:
+    left_wheel_names: ["left_wheel_joint"]
+"""
+
+
+def test_a_webots_driver_runs_the_controller_manager_its_description_loads(
+        write_tree: Any) -> None:
+    """A robot description whose ``<webots>`` loads webots_ros2_control's
+    ``Ros2Control`` makes the driver's process run a controller manager,
+    ``<namespace>/controller_manager``, with the process's parameter files and remapping
+    rules (webots_ros2's TurtleBot3, e-puck, TIAGo, ROSbot and UR5e). There was none: the
+    spawners' clients had no server (seven client-without-server-undecided on
+    webots_ros2 f442d2f7) and no controller, so no /odom, /joint_states or cmd_vel."""
+    root = write_tree({
+        "demo/package.xml": package_xml("demo", "ament_python").replace(
+            "</package>", "<exec_depend>webots_ros2_driver</exec_depend></package>"),
+        "demo/setup.py": (
+            "import os\nfrom glob import glob\nfrom setuptools import setup\n"
+            "setup(name='demo', packages=['demo'], data_files=["
+            "(os.path.join('share', 'demo', 'resource'), glob('resource/*'))])\n"),
+        "demo/demo/__init__.py": "",
+        "demo/resource/bot.urdf": BOT,
+        "demo/resource/control.yaml": CONTROL,
+        "demo/launch/robot_launch.py": CONTROL_LAUNCH,
+        "project.yaml": "project: p\ndistro: jazzy\n"
+                        "configurations:\n  c: [demo/launch/robot_launch.py]\n"})
+    analysis = analyse_path(str(root / "project.yaml"), Options(cache_dir=None, jobs=1))
+    assert analysis.model is not None
+    (config,) = analysis.model.configurations
+    nodes = {instance.name: instance for instance in config.nodes}
+    manager = nodes["/r1/controller_manager"]
+    assert manager.completeness == "partial"
+    served = {link.resource.name for link in config.links
+              if link.node is manager and link.kind == "server"}
+    assert "/r1/controller_manager/load_controller" in served
+    links = {(link.node.name, link.kind, link.resource.name) for link in config.links}
+    asked = {name for _, kind, name in links if kind == "client"
+             and name.startswith("/r1/controller_manager/")}
+    assert asked and asked <= served, asked - served
+    # the process's remapping rule reaches the controller it loads
+    assert ("/r1/diffdrive_controller", "publish", "/r1/odom") in links
+    assert ("/r1/joint_state_broadcaster", "publish", "/r1/joint_states") in links
+    # the manager's own entry of the process's file
+    update = next(p for p in config.parameters if p.name == "/r1/controller_manager/update_rate")
+    assert update.value == 50
+
+
+HANDLER_LAUNCH = """
+import launch
+from launch import LaunchDescription
+from launch.actions import ExecuteProcess
+from launch_ros.actions import Node
+
+
+def started_again():
+    return [Node(package='demo', executable='spawn', name='again')]
+
+
+def driver_when_spawned(event, driver):
+    if 'success=True' in event.text.decode():
+        return driver
+    return None
+
+
+def generate_launch_description():
+    spawner = ExecuteProcess(cmd=['ros2', 'service', 'call', '/spawn'])
+    driver = Node(package='demo', executable='spawn', name='driver')
+    return LaunchDescription([
+        spawner,
+        launch.actions.RegisterEventHandler(event_handler=launch.event_handlers.OnProcessIO(
+            target_action=spawner,
+            on_stdout=lambda event: driver_when_spawned(event, driver))),
+        launch.actions.RegisterEventHandler(event_handler=launch.event_handlers.OnProcessExit(
+            target_action=spawner, on_exit=started_again)),
+    ])
+"""
+
+
+def test_an_output_handler_s_callable_starts_what_it_returns(write_tree: Any) -> None:
+    """webots_ros2's URDF robots start their driver from an ``OnProcessIO`` handler,
+    ``on_stdout=lambda event: get_webots_driver_node(event, driver)``: the callable was
+    not called, so the driver (and the controller manager its description loads) was
+    missing. It is called with the event, not known here, and what it may return runs
+    under the event. A callable run on a process's exit is not: there it starts again
+    what the file started (webots_ros2_husarion's reset handler)."""
+    root = write_tree({
+        "demo/package.xml": package_xml("demo", "ament_python"),
+        "demo/setup.py": (
+            "from setuptools import setup\n"
+            "setup(name='demo', packages=['demo'], entry_points={'console_scripts': "
+            "['spawn = demo.spawn:main']})\n"),
+        "demo/demo/__init__.py": "",
+        "demo/demo/spawn.py": "def main():\n    pass\n",
+        "demo/launch/robot_launch.py": HANDLER_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [demo/launch/robot_launch.py]\n"})
+    analysis = analyse_path(str(root / "project.yaml"), Options(cache_dir=None, jobs=1))
+    assert analysis.model is not None
+    (config,) = analysis.model.configurations
+    nodes = {instance.name: instance for instance in config.nodes}
+    assert "/again" not in nodes
+    driver = nodes["/driver"]
+    assert [c.statement for c in driver.conditions] == ["event"]
+    said = [d.message for d in config.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert any("OnProcessExit with a callable" in message for message in said), said

@@ -237,7 +237,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         reader = _plugin_instance(instance, replace(
             choice, name=node.rosname.strip("/"), remaps=()), node, config)
         if decl is not None:
-            _process_params(decl, reader, params)
+            process_file_params(decl, reader, params)
         _unhosted(reader, owned)
         out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
@@ -246,7 +246,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             # a node the process makes: its files apply by name (a controller's section
             # of the file given to ros2_control_node, after its spawner's file, whose
             # values win: rcl's global arguments reach every node of the process)
-            _process_params(decl, reader, params,
+            process_file_params(decl, reader, params,
                             host=instance if slot.names == SPAWNER else None)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(_with_base(node, index, workspace, models),
@@ -524,11 +524,11 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
     taken = sum(1 for n in config.nodes if n.name == name)
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
-    _process_params(decl, instance, params)
+    process_file_params(decl, instance, params)
     return instance, node
 
 
-def _process_params(decl: NodeDecl, instance: NodeInstance, params: Params,
+def process_file_params(decl: NodeDecl, instance: NodeInstance, params: Params,
                     host: NodeInstance | None = None) -> None:
     """The entries of the process's parameter files that name a node it makes; the
     ``/**`` ones too when the node declares every override it is given (a ``host``:

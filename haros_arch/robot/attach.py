@@ -46,7 +46,7 @@ from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import SDF_ELEMENT, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
 from ..models.commands import split_options
-from ..plugins.attach import Choice, Params, own_partial
+from ..plugins.attach import Choice, Params, own_partial, process_file_params
 from ..plugins.classes import INCLUDE, remembered
 from ..share import share_source
 from ..workspace import Workspace
@@ -155,6 +155,11 @@ def attach(config: Configuration, launch: LaunchModel,
                     out.managers, (gzserver, made)), []))
     out.calls[:0] = [(instance, list(instance.node.calls)) for instance in made
                      if instance.node is not None]
+    for decl, instance in started:
+        if (decl.package, decl.executable) == WEBOTS_DRIVER and decl.ros_version == 2:
+            diag.per_file(decl.location, decl.location.file or "", config.diagnostics,
+                          partial(_webots, decl, instance, given, workspace, config,
+                                  params, out.managers), None)
     out.calls.extend((instance, list(instance.node.calls)) for _, instance in out.managers
                      if instance.node is not None)
     out.calls.extend(bridges(config, launch, started, workspace))
@@ -909,22 +914,9 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
         found = split_rule((rule.text or "").strip())
         if found is not None and found[0] is None:
             remaps.append((found[1], found[2]))
-    decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
-                    conditions=(*spawn.decl.conditions, *conditions), location=where,
-                    ros_version=2, remaps=list(remaps))
-    served = Node("controller_manager", "ControllerManager", kind="plugin", location=where,
-                  calls=[PrimitiveCall("server", service, kind, conditions=decl.conditions,
-                                       location=where)
-                         for service, kind in CONTROLLER_MANAGER_SERVICES])
-    served.mark_partial(f"the controller manager {_base(element.get('filename') or '')} "
-                        "starts: its services are known, not the rest it makes "
-                        f"({where.file}:{where.line})")
-    instance = NodeInstance(name, served, namespace=namespace, conditions=decl.conditions,
-                            location=where, origin="description", ros_version=2,
-                            remaps=list(remaps))
-    taken = sum(1 for n in config.nodes if n.name == name)
-    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
-    config.nodes.append(instance)
+    decl, instance = _made_manager(name, namespace, (*spawn.decl.conditions, *conditions),
+                                   where, remaps, _base(element.get("filename") or ""),
+                                   config)
     for file in element.iterfind("parameters"):
         named = (file.text or "").strip()
         read = _yaml_file_lines(named, where, workspace, config)
@@ -945,6 +937,84 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
                     parameter.launch_location = workspace.location(source, at.get(key, 1))
                     parameter.launch_conditions = decl.conditions
     return decl, instance
+
+
+def _made_manager(name: str, namespace: str, conditions: tuple[Condition, ...],
+                  where: Location, remaps: list[tuple[str, str]], starter: str,
+                  config: Configuration) -> tuple[NodeDecl, NodeInstance]:
+    """A controller manager a simulator's plugin starts in its own process (``starter``
+    names the plugin), as a launch file's ``ros2_control_node`` would be: it serves the
+    manager's services; the rest it makes is not described (the node is partial). Its
+    instance is added to the configuration."""
+    decl = NodeDecl(name, "controller_manager", "ros2_control_node", namespace=namespace,
+                    conditions=conditions, location=where, ros_version=2,
+                    remaps=list(remaps))
+    served = Node("controller_manager", "ControllerManager", kind="plugin", location=where,
+                  calls=[PrimitiveCall("server", service, kind, conditions=decl.conditions,
+                                       location=where)
+                         for service, kind in CONTROLLER_MANAGER_SERVICES])
+    served.mark_partial(f"the controller manager {starter} starts: its services are "
+                        f"known, not the rest it makes ({where.file}:{where.line})")
+    instance = NodeInstance(name, served, namespace=namespace, conditions=decl.conditions,
+                            location=where, origin="description", ros_version=2,
+                            remaps=list(remaps))
+    taken = sum(1 for n in config.nodes if n.name == name)
+    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    return decl, instance
+
+
+# webots_ros2_driver's driver and the plugin of a robot description's ``<webots>`` that
+# runs ros2_control in it (webots_ros2_control's Ros2Control.cpp)
+WEBOTS_DRIVER = ("webots_ros2_driver", "driver")
+WEBOTS_ROS2_CONTROL = "webots_ros2_control::Ros2Control"
+
+
+def _webots(decl: NodeDecl, driver: NodeInstance, given: Sequence[ParamDecl],
+            workspace: Workspace, config: Configuration, params: Params,
+            managers: list[tuple[NodeDecl, NodeInstance]]) -> None:
+    """The controller manager a Webots robot's driver runs: the driver reads its robot
+    description from its ``robot_description`` parameter (a ``.urdf`` file it loads, a
+    ``.xacro`` file it runs xacro on, or the text itself; WebotsNode.cpp) and loads the
+    plugins of its ``<webots>`` element; webots_ros2_control's ``Ros2Control`` makes
+    ``ControllerManager(..., "controller_manager", <driver's namespace>)`` in the
+    driver's process, whose parameter files and remapping rules (the launch's, given to
+    the process) are its own and its controllers' (webots_ros2_turtlebot's
+    ``ros2control.yml``, the driver's remaps of ``/diffdrive_controller/cmd_vel_unstamped``
+    to ``/cmd_vel``)."""
+    param = _last_param(given, driver.name.rstrip("/") + "/" + DESCRIPTION_KEY)
+    if param is None:
+        return
+    value = param.value.text if isinstance(param.value, Value) else param.value
+    made = None
+    if param.command is not None:
+        made = _from_param(param, workspace, config)
+    elif isinstance(value, str) and value.strip().endswith((".urdf", ".xacro")) and (
+            UNKNOWN_MARK not in value):
+        path = value.strip()
+        if not os.path.isfile(path):
+            path = share_source(workspace, path)
+        made = _expanded(path, {}, param.name, param.location, workspace, config,
+                         by_xacro=path.endswith(".xacro"))
+    if made is None or made[1].root is None:
+        return
+    record, expanded = made
+    config.robot_descriptions.append(record)
+    assert expanded.root is not None
+    for element in expanded.root.iter("plugin"):
+        if (element.get("type") or "").strip() != WEBOTS_ROS2_CONTROL or not any(
+                parent.tag == "webots" for parent in element.iterancestors()):
+            continue
+        where = _where(element, workspace)
+        namespace = as_namespace(driver.namespace or "/")
+        made_decl, instance = _made_manager(
+            clean(namespace + MANAGER), namespace,
+            (*decl.conditions, *_conditions(element, where)), where, list(decl.remaps),
+            WEBOTS_ROS2_CONTROL, config)
+        made_decl.param_files = decl.param_files
+        process_file_params(made_decl, instance, params)
+        managers.append((made_decl, instance))
+        return
 
 
 def _node_names(document: Any, namespace: str) -> list[str]:

@@ -66,6 +66,7 @@ from .python_values import (
     PLAIN,
     Budget,
     Context,
+    Func,
     LaunchDescription,
     Lazy,
     Ref,
@@ -747,7 +748,20 @@ def event_handler(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     found = [v for key, v in k.items() if key.startswith("on_")]
     label = ast.unparse(n.func) if isinstance(n, ast.Call) else "event"
     contents: list[e.Action] = []
+    exit_handler = label.rsplit(".", 1)[-1] == "OnProcessExit"
     for value in found:
+        if isinstance(value, Func) and not exit_handler:
+            # called with the event when it comes: what it returns is run (webots_ros2's
+            # ``on_stdout=lambda event: get_webots_driver_node(event, driver)`` starts
+            # the driver once the URDF spawner's output says the robot is spawned). Not
+            # a callable run when a process ends: there it starts again what the file
+            # started (webots_ros2_husarion's reset handler, ``on_exit=get_ros2_nodes``
+            # on the supervisor's exit, after a simulation reset), not more of it
+            value = i.call_function(value, [Unknown("the event")], {}, n)
+            if value is None or isinstance(value, Unknown):
+                i.unsupported(n, f"{label}: what its callable returns is not known "
+                                 "statically")
+                continue
         if isinstance(value, (e.Action, list, tuple, LaunchDescription)):
             contents.extend(actions(i, value, n))
         elif value is not None:
