@@ -48,21 +48,34 @@ def generate_launch_description():
 """
 
 
-def test_webots_actions_start_their_nodes(write_tree: Any) -> None:
+SPAWN_SETUP = ("from setuptools import setup\n"
+               "setup(name='demo', packages=['demo'], entry_points={'console_scripts': "
+               "['spawn = demo.spawn:main']})\n")
+
+
+def _configuration(write_tree: Any, launch: str, files: dict[str, str] | None = None,
+                   distro: str | None = None) -> Any:
+    """The one configuration of a package ``demo`` (ament_python, depending on
+    webots_ros2_driver, with a ``spawn`` entry point unless ``files`` gives another
+    setup.py) whose launch file is ``launch``."""
     root = write_tree({
         "demo/package.xml": package_xml("demo", "ament_python").replace(
             "</package>", "<exec_depend>webots_ros2_driver</exec_depend></package>"),
-        "demo/setup.py": (
-            "from setuptools import setup\n"
-            "setup(name='demo', packages=['demo'], entry_points={'console_scripts': "
-            "['spawn = demo.spawn:main']})\n"),
+        "demo/setup.py": SPAWN_SETUP,
         "demo/demo/__init__.py": "",
         "demo/demo/spawn.py": "def main():\n    pass\n",
-        "demo/launch/robot_launch.py": LAUNCH,
-        "project.yaml": "project: p\nconfigurations:\n  c: [demo/launch/robot_launch.py]\n"})
+        "demo/launch/robot_launch.py": launch,
+        "project.yaml": "project: p\n" + (f"distro: {distro}\n" if distro else "")
+                        + "configurations:\n  c: [demo/launch/robot_launch.py]\n",
+        **(files or {})})
     analysis = analyse_path(str(root / "project.yaml"), Options(cache_dir=None, jobs=1))
     assert analysis.model is not None
     (config,) = analysis.model.configurations
+    return config
+
+
+def test_webots_actions_start_their_nodes(write_tree: Any) -> None:
+    config = _configuration(write_tree, LAUNCH)
     nodes = {instance.name: instance for instance in config.nodes}
     assert not any(d.code == "LAUNCH_PY_UNSUPPORTED" for d in config.diagnostics), [
         d.message for d in config.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
@@ -139,22 +152,13 @@ def test_a_webots_driver_runs_the_controller_manager_its_description_loads(
     rules (webots_ros2's TurtleBot3, e-puck, TIAGo, ROSbot and UR5e). There was none: the
     spawners' clients had no server (seven client-without-server-undecided on
     webots_ros2 f442d2f7) and no controller, so no /odom, /joint_states or cmd_vel."""
-    root = write_tree({
-        "demo/package.xml": package_xml("demo", "ament_python").replace(
-            "</package>", "<exec_depend>webots_ros2_driver</exec_depend></package>"),
+    config = _configuration(write_tree, CONTROL_LAUNCH, {
         "demo/setup.py": (
             "import os\nfrom glob import glob\nfrom setuptools import setup\n"
             "setup(name='demo', packages=['demo'], data_files=["
             "(os.path.join('share', 'demo', 'resource'), glob('resource/*'))])\n"),
-        "demo/demo/__init__.py": "",
         "demo/resource/bot.urdf": BOT,
-        "demo/resource/control.yaml": CONTROL,
-        "demo/launch/robot_launch.py": CONTROL_LAUNCH,
-        "project.yaml": "project: p\ndistro: jazzy\n"
-                        "configurations:\n  c: [demo/launch/robot_launch.py]\n"})
-    analysis = analyse_path(str(root / "project.yaml"), Options(cache_dir=None, jobs=1))
-    assert analysis.model is not None
-    (config,) = analysis.model.configurations
+        "demo/resource/control.yaml": CONTROL}, distro="jazzy")
     nodes = {instance.name: instance for instance in config.nodes}
     manager = nodes["/r1/controller_manager"]
     assert manager.completeness == "partial"
@@ -211,19 +215,7 @@ def test_an_output_handler_s_callable_starts_what_it_returns(write_tree: Any) ->
     missing. It is called with the event, not known here, and what it may return runs
     under the event. A callable run on a process's exit is not: there it starts again
     what the file started (webots_ros2_husarion's reset handler)."""
-    root = write_tree({
-        "demo/package.xml": package_xml("demo", "ament_python"),
-        "demo/setup.py": (
-            "from setuptools import setup\n"
-            "setup(name='demo', packages=['demo'], entry_points={'console_scripts': "
-            "['spawn = demo.spawn:main']})\n"),
-        "demo/demo/__init__.py": "",
-        "demo/demo/spawn.py": "def main():\n    pass\n",
-        "demo/launch/robot_launch.py": HANDLER_LAUNCH,
-        "project.yaml": "project: p\nconfigurations:\n  c: [demo/launch/robot_launch.py]\n"})
-    analysis = analyse_path(str(root / "project.yaml"), Options(cache_dir=None, jobs=1))
-    assert analysis.model is not None
-    (config,) = analysis.model.configurations
+    config = _configuration(write_tree, HANDLER_LAUNCH)
     nodes = {instance.name: instance for instance in config.nodes}
     assert "/again" not in nodes
     driver = nodes["/driver"]
