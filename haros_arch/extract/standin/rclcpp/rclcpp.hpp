@@ -505,6 +505,8 @@ template<class FutureT> struct FutureAndRequestId {
       const std::chrono::time_point<C, D>& deadline) const;
 };
 }
+// rclcpp/subscription_content_filter_options.hpp names it in rclcpp itself
+using detail::ContentFilterOptions;
 struct PublisherOptionsBase {
   std::shared_ptr<CallbackGroup> callback_group;
   IntraProcessSetting use_intra_process_comm;

@@ -404,7 +404,8 @@ typedef long clock_t;
 #define CLOCKS_PER_SEC ((clock_t)1000000)
 clock_t clock(void);
 double difftime(time_t end, time_t begin);
-int clock_gettime(int clock, struct timespec* ts);
+typedef int clockid_t;
+int clock_gettime(clockid_t clock, struct timespec* ts);
 int gettimeofday(struct timeval* tv, void* tz);
 int nanosleep(const struct timespec* req, struct timespec* rem);
 #define TIMER_ABSTIME 1
@@ -629,7 +630,9 @@ int pthread_attr_setschedparam(pthread_attr_t* attr, const struct sched_param* p
 int pthread_attr_setschedpolicy(pthread_attr_t* attr, int policy);
 int pthread_attr_setinheritsched(pthread_attr_t* attr, int inherit);
 int pthread_setschedparam(pthread_t thread, int policy, const struct sched_param* param);
+int pthread_getschedparam(pthread_t thread, int* policy, struct sched_param* param);
 pthread_t pthread_self(void);
+int pthread_getcpuclockid(pthread_t thread, clockid_t* clock);
 // <sched.h>'s CPU sets (glibc's macros, as functions) and the affinity calls
 typedef struct { unsigned long haros_bits[16]; } cpu_set_t;
 void CPU_ZERO(cpu_set_t* set);

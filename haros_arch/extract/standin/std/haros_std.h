@@ -1938,6 +1938,10 @@ public:
   void join();
   void detach();
   id get_id() const noexcept;
+  // the platform's handle (a pthread_t here): examples_rclcpp_cbg_executor sets a
+  // thread's priority and affinity through it
+  typedef unsigned long native_handle_type;
+  native_handle_type native_handle();
   static unsigned hardware_concurrency() noexcept;
 };
 namespace this_thread {
