@@ -838,8 +838,12 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
         elif any(result.rosname in names for names in owners.values()):
             result.rosname = "?"
     loads = {owner for _, unit in units for owner in unit.loads_in}
+    # what code of another owner than the class itself constructs or calls
+    elsewhere = {made for _, unit in units for maker, made in (*unit.constructions, *unit.uses)
+                 if maker != made and not maker.startswith(made + "::")}
     unbuilt = _unbuilt(owners, reached, result, hiding, entered, named, scoped, loads,
-                       {cls for pair in _exported for cls in pair} | set(loadable)) | loaded
+                       {cls for pair in _exported for cls in pair} | set(loadable),
+                       elsewhere) | loaded
     for call in result.calls:  # a class's nodes, one per construction (``links.resolve``)
         holder, own = links.per_construction(call.node_name)
         if own is not None and holder not in unbuilt and own not in result.rosnames and (
@@ -897,7 +901,8 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
              unseen: Collection[str], entered: set[str], named: set[str],
              scoped: dict[str, set[str]] | None = None,
              loads: Collection[str] = ("",),
-             loadable: Collection[str] = ()) -> set[str]:
+             loadable: Collection[str] = (),
+             built_elsewhere: Collection[str] | None = None) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
@@ -914,8 +919,10 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     class that no file of it registers for a loader and no package of the workspace
     declares for one (``loadable``: the classes registered in its files, with the bases
     registered with them, and every plugin, nodelet and component class of the
-    workspace's build files and plugin descriptions), and no code of it constructs or
-    calls (``entered``): a loader builds declared classes alone (plansys2's
+    workspace's build files and plugin descriptions), and no code of it but the class's
+    own constructs or calls (``built_elsewhere``; ``entered`` when not given: a class's
+    factory that nothing calls builds nothing): a loader builds declared classes alone
+    (plansys2's
     executor_node loads its behaviour-tree builders by name and links ComputeBT, which
     only compute_bt builds), nor a class
     whose name the code around the parse's errors holds (they may hide its
@@ -932,8 +939,8 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
                and ("@" in owner or not _named_in(owner, unseen, scoped))
-               and not (by_name and ("@" in owner or owner in entered
-                                     or owner in loadable))}
+               and not (by_name and ("@" in owner or owner in loadable or owner in (
+                   entered if built_elsewhere is None else built_elsewhere)))}
     if by_name:
         return classes
     return classes | {owner for call in result.calls
@@ -1063,6 +1070,9 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
         named.update(unit.unseen)
         named.update(within)
     starts = {owner for owner in functions if owner == "main()" or owner.endswith("::main()")}
+    # the classes the executable's code names as owners (a static method's scope is one)
+    classes = {owner for owner in (*read, *edges, *(t for ts in edges.values() for t in ts))
+               if not owner.endswith("()")}
     registered = _registered(units, entry)
     for cls, base in registered:
         if base == cls:
@@ -1119,7 +1129,8 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
                 elif not within[word].isdisjoint(reached):
                     scoped.setdefault(word, set()).update(within[word] & reached)
         words = anywhere | set(scoped)
-        starts = {f for f in functions - reached if "*" in words or _simple(f) in words}
+        starts = {f for f in functions - reached
+                  if "*" in words or _named(f, words, classes)}
     scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
     return (reached, words, {made for targets in edges.values() for made in targets} | hosted,
             named, scoped, exported)
@@ -1145,6 +1156,18 @@ def _registered(units: list[tuple[str, CppResult]], entry: str | None
     classes = [(cls, base) for cls, base in pairs if cls == base and (
         cls == name or cls.endswith("::" + name) or name.endswith("::" + cls))]
     return [*classes, *(pair for pair in pairs if pair[0] != pair[1])] if classes else []
+
+
+def _named(function: str, words: Collection[str], classes: Collection[str]) -> bool:
+    """Whether code that may hide a call (``words``) can call ``function``: its own name
+    is one of them, and for a static method (``ns::C::m()``, of a class the executable's
+    files define) its class's too, as C++ calls one from outside its class
+    (``C::make_shared(...)``): ``std::make_shared`` near an error calls no
+    ``ActionExecutorClient::make_shared`` (plansys2's compute_bt)."""
+    if _simple(function) not in words:
+        return False
+    scope = function.removesuffix("()").rpartition("::")[0]
+    return scope not in classes or scope.rpartition("::")[2] in words
 
 
 def _simple(function: str) -> str:

@@ -827,8 +827,20 @@ _CONTROLLER_MANAGER_2 = RosFunction(
     fixed_type=CONTROLLER_MANAGER_SERVICES[0][1], on_handle=False,
     call_site=False, siblings=tuple(
         ("server", name, kind) for name, kind in CONTROLLER_MANAGER_SERVICES[1:]))
+# rclcpp_cascade_lifecycle's node (its stand-in: the package not in the workspace) is a
+# lifecycle node whose constructor also publishes and subscribes to the activations
+# (transient local) and states of the cascade (rclcpp_cascade_lifecycle.cpp)
+_CASCADE = "cascade_lifecycle_msgs/msg/"
+_CASCADE_LIFECYCLE = RosFunction(
+    "publish", fixed_name="cascade_lifecycle_activations", fixed_type=f"{_CASCADE}Activation",
+    on_handle=False, siblings=(
+        ("publish", "cascade_lifecycle_states", f"{_CASCADE}State"),
+        ("subscribe", "cascade_lifecycle_activations", f"{_CASCADE}Activation"),
+        ("subscribe", "cascade_lifecycle_states", f"{_CASCADE}State")))
 IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
     ("rclcpp_lifecycle::LifecycleNode", "LifecycleNode"): (_LIFECYCLE,),
+    ("rclcpp_cascade_lifecycle::CascadeLifecycleNode", "CascadeLifecycleNode"): (
+        _LIFECYCLE, _CASCADE_LIFECYCLE),
     ("controller_manager::ControllerManager", "ControllerManager"): (_CONTROLLER_MANAGER_2,),
     **{(f"{scope}::LifecycleNode", "LifecycleNode"): (_LIFECYCLE, _NAV2_LIFECYCLE_PARAMETERS)
        for scope in ("nav2_util", "nav2")},
@@ -841,6 +853,8 @@ IMPLICIT: dict[tuple[str, str], tuple[RosFunction, ...]] = {
 STANDIN_NODE_NAME: dict[tuple[str, str], tuple[str, str]] = {
     **{(f"{scope}::LifecycleNode", "LifecycleNode"): ("node_name", "ns")
        for scope in ("nav2_util", "nav2")},
+    ("rclcpp_cascade_lifecycle::CascadeLifecycleNode", "CascadeLifecycleNode"): (
+        "node_name", "namespace_"),
     # ros2_control's manager: ControllerManager([resource_manager,] executor, [urdf,
     # activate_all_hw_components,] manager_node_name, node_namespace)
     ("controller_manager::ControllerManager", "ControllerManager"): (
