@@ -188,3 +188,28 @@ def test_a_map_range_erase_parses(write_tree) -> None:
     result = _parsed(write_tree, "purge", PURGE)
     assert not _said(result)
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "purged")]
+
+
+def test_a_multiset_parses(write_tree) -> None:
+    """``std::multiset`` (plansys2's PDDL parser prints one): a stand-in beside ``set``,
+    whose insertions give the element's iterator (one parse error fewer on plansys2,
+    calls identical)."""
+    result = _parsed(write_tree, "counts", """
+        #include <set>
+        #include <ros/ros.h>
+        #include <std_msgs/String.h>
+
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "counts");
+          ros::NodeHandle nh;
+          std::multiset<int> seen{1, 1, 2};
+          std::multiset<int>::iterator at = seen.insert(2);
+          auto range = seen.equal_range(1);
+          if (at != seen.end() && range.first != range.second) {
+            ros::Publisher pub = nh.advertise<std_msgs::String>("counts", 1);
+          }
+          ros::spin();
+        }
+        """)
+    assert _said(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "counts")]

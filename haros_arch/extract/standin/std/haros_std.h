@@ -897,6 +897,16 @@ public:
 };
 template<class K, class C, class A> bool operator==(const set<K, C, A>& a, const set<K, C, A>& b);
 template<class K, class C, class A> bool operator!=(const set<K, C, A>& a, const set<K, C, A>& b);
+template<class K, class C = less<K>, class A = allocator<K>>
+class multiset : public set<K, C, A> {
+public:
+  using set<K, C, A>::set;
+  // every key kept: an insertion gives the element's iterator, not a pair
+  typedef typename set<K, C, A>::iterator iterator;
+  iterator insert(const K& k);
+  template<class... Args> iterator emplace(Args&&... args);
+  pair<iterator, iterator> equal_range(const K& k) const;
+};
 template<class K, class H = hash<K>, class E = equal_to<K>, class A = allocator<K>>
 class unordered_set : public set<K> {
 public:
