@@ -213,3 +213,54 @@ def test_a_multiset_parses(write_tree) -> None:
         """)
     assert _said(result) == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "counts")]
+
+
+def test_boost_accumulators_parse(write_tree) -> None:
+    """Boost.Accumulators (ROS 1 diff_drive_controller's rolling means of its velocities,
+    novatel_gps_driver's offset statistics): a class whose member is an
+    ``accumulator_set`` was invalid without it, and every call of its node's members an
+    error near a call (novatel_gps_driver: 77 clang errors -> 48, 20 CPP_ERROR_NEAR_CALL
+    -> 0; ros_controllers 22 parse errors fewer, calls identical)."""
+    result = _parsed(write_tree, "odom", """
+        #include <boost/accumulators/accumulators.hpp>
+        #include <boost/accumulators/statistics/stats.hpp>
+        #include <boost/accumulators/statistics/rolling_mean.hpp>
+        #include <boost/accumulators/statistics/mean.hpp>
+        #include <boost/accumulators/statistics/variance.hpp>
+        #include <ros/ros.h>
+        #include <std_msgs/Float64.h>
+
+        namespace bacc = boost::accumulators;
+
+        class Odometry {
+        public:
+          typedef bacc::accumulator_set<double, bacc::stats<bacc::tag::rolling_mean>> RollingMean;
+          typedef bacc::tag::rolling_window RollingWindow;
+          explicit Odometry(ros::NodeHandle& nh, size_t window)
+            : linear_(RollingWindow::window_size = window) {
+            pub_ = nh.advertise<std_msgs::Float64>("speed", 10);
+          }
+          void update(double v) {
+            linear_(v);
+            stats_(static_cast<float>(v));
+            std_msgs::Float64 msg;
+            msg.data = bacc::rolling_mean(linear_) + bacc::variance(stats_) + bacc::max(stats_);
+            pub_.publish(msg);
+          }
+        private:
+          RollingMean linear_;
+          bacc::accumulator_set<float, bacc::stats<bacc::tag::max, bacc::tag::mean,
+                                                   bacc::tag::variance>> stats_;
+          ros::Publisher pub_;
+        };
+
+        int main(int argc, char** argv) {
+          ros::init(argc, argv, "odom");
+          ros::NodeHandle nh;
+          Odometry odometry(nh, 10);
+          odometry.update(1.0);
+          ros::spin();
+        }
+        """)
+    assert _said(result, strict=True) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "speed")]

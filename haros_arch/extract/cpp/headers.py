@@ -166,6 +166,7 @@ UMBRELLAS = {
     "boost/container_hash/": "boost/functional/hash.hpp",
     "boost/program_options/": "boost/program_options.hpp",
     "boost/random/": "boost/random.hpp",  # Boost.Random, the engines of <random>
+    "boost/accumulators/": "boost/accumulators/accumulators.hpp",  # sample statistics
     "boost/algorithm/string/": "boost/algorithm/string.hpp",
     **{f"Qt{m}/": QT for m in ("Core", "Gui", "Widgets", "Network", "Concurrent", "Test")},
 }
