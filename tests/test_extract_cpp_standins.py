@@ -259,7 +259,10 @@ def test_ros_1_asserts_shared_ptr_null_tokenizer_and_angles_parse(tmp_path) -> N
         "    sum += i->size(); }\n"
         "  ros::NodeHandle nh;\n"
         "  ros::Publisher p = nh.advertise<std_msgs::Empty>(\"out\", 1);\n"
-        "  return sum + std::fabs(angles::shortest_angular_distance(a, b));\n"
+        "  double wrapped = 0;\n"
+        "  // joint_trajectory_controller's continuous joints: limits wider than a turn\n"
+        "  angles::shortest_angular_distance_with_large_limits(a, b, -10, 10, wrapped);\n"
+        "  return sum + wrapped + std::fabs(angles::shortest_angular_distance(a, b));\n"
         "}\n")
     result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
     assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []

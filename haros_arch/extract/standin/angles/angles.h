@@ -12,5 +12,8 @@ bool find_min_max_delta(double from, double left_limit, double right_limit,
                         double &result_min_delta, double &result_max_delta);
 bool shortest_angular_distance_with_limits(double from, double to, double left_limit,
                                            double right_limit, double &shortest_angle);
+// limits wider than a turn (joint_trajectory_controller's wrapping of continuous joints)
+bool shortest_angular_distance_with_large_limits(double from, double to, double left_limit,
+                                                 double right_limit, double &shortest_angle);
 }  // namespace angles
 #endif
