@@ -907,3 +907,33 @@ int main(int argc, char** argv) {
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")]
     assert errors == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_eigen_scalars_array_factories_and_transform_coefficients_parse(tmp_path) -> None:
+    """A matrix's ``Scalar`` (grid_map's ``using DataType = Matrix::Scalar``), an array's
+    ``Zero()`` without sizes (its ``Index::Zero()`` defaults) and a transform's
+    coefficients (LIO-SAM's ``transBt(0, 3)``, 36 errors): grid_map 86 clang errors ->
+    78, LIO-SAM 49 -> 13, calls identical."""
+    result = _extract(tmp_path, package_xml("demo", "catkin"), """
+#include <ros/ros.h>
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <std_msgs/Float32.h>
+using Matrix = Eigen::MatrixXf;
+using DataType = Matrix::Scalar;
+using Index = Eigen::Array2i;
+DataType corner(const Eigen::Affine3f& t, const Index& start = Index::Zero()) {
+  return t(0, 3) + t(1, 3) * start(0) + Eigen::Array3f::Ones()(0);
+}
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "demo");
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<std_msgs::Float32>("corner", 1);
+  std_msgs::Float32 msg;
+  msg.data = corner(Eigen::Affine3f::Identity());
+  pub.publish(msg);
+}
+""")
+    assert [d.message for d in result.diagnostics if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "corner")]
