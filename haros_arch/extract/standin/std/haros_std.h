@@ -1198,6 +1198,8 @@ public:
   shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   T* operator->() const noexcept;
   T& operator*() const noexcept;
+  // an array's element (C++17 ``shared_ptr<T[]>``: usb_cam's ``m_buffers[i].start``)
+  typename remove_extent<T>::type& operator[](ptrdiff_t i) const;
   T* get() const noexcept;
   void reset() noexcept;
   template<class Y> void reset(Y* p);
