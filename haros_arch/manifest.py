@@ -167,8 +167,7 @@ def parse_manifest(
                                         detail="no <name>")]
 
     def active(element: etree._Element) -> bool:
-        condition = element.get("condition")
-        return condition is None or condition_holds(condition, env) is not False
+        return holds(element, env)
 
     package = Package(
         name=name,
@@ -221,11 +220,16 @@ def _build_type(elements: list[etree._Element], env: Mapping[str, str]) -> Build
     build_type: BuildType = "catkin"
     for element in elements:
         text = (element.text or "").strip()
-        condition = element.get("condition")
-        if text in BUILD_TYPES and (
-                condition is None or condition_holds(condition, env) is not False):
+        if text in BUILD_TYPES and holds(element, env):
             build_type = text
     return build_type
+
+
+def holds(element: etree._Element, env: Mapping[str, str]) -> bool:
+    """Whether an element's REP 149 ``condition`` holds in ``env`` (one that is
+    malformed, or none, does)."""
+    condition = element.get("condition")
+    return condition is None or condition_holds(condition, env) is not False
 
 
 def _format(text: str) -> int:
