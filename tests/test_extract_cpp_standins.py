@@ -913,7 +913,11 @@ def test_eigen_scalars_array_factories_and_transform_coefficients_parse(tmp_path
     """A matrix's ``Scalar`` (grid_map's ``using DataType = Matrix::Scalar``), an array's
     ``Zero()`` without sizes (its ``Index::Zero()`` defaults) and a transform's
     coefficients (LIO-SAM's ``transBt(0, 3)``, 36 errors): grid_map 86 clang errors ->
-    78, LIO-SAM 49 -> 13, calls identical."""
+    78, LIO-SAM 49 -> 13, calls identical. A matrix's ``Index`` and ``RealScalar`` too:
+    without them EigenLab's parser, a member of grid_map's math expression filters, left
+    those classes invalid and their ``FilterBase::getParam`` calls unresolved, kept by
+    name as nine reads of ``?/expression`` and the like (ROS 1's filters read their
+    configuration from the chain's entry, no ROS call)."""
     result = _extract(tmp_path, package_xml("demo", "catkin"), """
 #include <ros/ros.h>
 #include <Eigen/Dense>
@@ -921,6 +925,9 @@ def test_eigen_scalars_array_factories_and_transform_coefficients_parse(tmp_path
 #include <std_msgs/Float32.h>
 using Matrix = Eigen::MatrixXf;
 using DataType = Matrix::Scalar;
+// EigenLab's (grid_map's math expression filters) ``typename Derived::Index``
+using Size = Matrix::Index;
+using Real = Matrix::RealScalar;
 using Index = Eigen::Array2i;
 DataType corner(const Eigen::Affine3f& t, const Index& start = Index::Zero()) {
   return t(0, 3) + t(1, 3) * start(0) + Eigen::Array3f::Ones()(0);
