@@ -186,8 +186,8 @@ def parse_manifest(
     chosen = [e for e in export if e.tag == "build_type"] if export is not None else []
     package.build_type = _build_type(chosen, env)
     if not env.get("ROS_VERSION", "").strip():
-        by_version = {version: _build_type(chosen, {**env, **variables})
-                      for version, variables in ROS_VERSIONS.items()}
+        by_version = {version: _build_type(chosen, version_environment(env, version))
+                      for version in ROS_VERSIONS}
         if len(set(by_version.values())) > 1:
             package.builds_by_version = by_version
             package.builds_at = _line(chosen[0])
@@ -201,15 +201,21 @@ ROS_VERSIONS: dict[str, dict[str, str]] = {
     "2": {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3"}}
 
 
-def other_builds(package: Package) -> list[tuple[BuildType, dict[str, str]]]:
-    """What a run that gives no ROS version reads beside the package's own build: the
-    build type of each ROS version its package.xml chooses by ``$ROS_VERSION``
-    (``builds_by_version``) that setup.py gives where the package's own reads
-    CMakeLists.txt, with that version's variables to read it in (ros-bridge's setup.py
-    runs its ``setup()`` under ``if ROS_VERSION == 2``)."""
+def version_environment(environment: Mapping[str, str], version: str) -> dict[str, str]:
+    """``environment`` with what the setup of a distribution of ROS ``version`` sets."""
+    return {**environment, **ROS_VERSIONS[version]}
+
+
+def other_builds(package: Package, environment: Mapping[str, str]
+                 ) -> list[tuple[str, dict[str, str]]]:
+    """What a run that gives no ROS version reads beside the package's own build: each
+    ROS version whose build type, as the package.xml chooses it by ``$ROS_VERSION``
+    (``builds_by_version``), is setup.py's where the package's own reads CMakeLists.txt,
+    with the run's ``environment`` as that version's setup makes it, to read setup.py in
+    (ros-bridge's runs its ``setup()`` under ``if ROS_VERSION == 2``)."""
     if package.build_type == "ament_python":
         return []
-    return [(build_type, ROS_VERSIONS[version])
+    return [(version, version_environment(environment, version))
             for version, build_type in sorted(package.builds_by_version.items())
             if build_type == "ament_python"]
 

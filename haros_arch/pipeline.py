@@ -391,20 +391,19 @@ def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagn
         package.nodes, found = pysetup.parse_package(package, workspace)
     elif package.build_type in cmake.CMAKE_BUILD_TYPES:
         package.nodes, found = cmake.parse_package(package, workspace)
-    others = other_builds(package)
+    others = other_builds(package, workspace.environment)
     if others:  # each ROS version's setup.py, the run giving none
         own = {version for version, build_type in package.builds_by_version.items()
                if build_type == package.build_type}
         if len(own) == 1:
             version = own.pop()
             package.node_versions = {node.executable: version for node in package.nodes}
-    for _, variables in others:
-        more, said = pysetup.parse_package(package, workspace,
-                                           {**workspace.environment, **variables})
+    for version, environment in others:
+        more, said = pysetup.parse_package(package, workspace, environment)
         taken = {node.executable for node in package.nodes}
-        package.nodes.extend(node for node in more if node.executable not in taken)
-        package.node_versions.update((node.executable, variables["ROS_VERSION"])
-                                     for node in more if node.executable not in taken)
+        added = [node for node in more if node.executable not in taken]
+        package.nodes.extend(added)
+        package.node_versions.update((node.executable, version) for node in added)
         found.extend(said)
     return found
 

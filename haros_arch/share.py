@@ -66,8 +66,8 @@ def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
     setup_py = os.path.join(package.root, "setup.py")
     # a share folder is ROS 2's: with no ROS version given, a package whose manifest
     # builds it with setup.py under ROS 2 shares what that setup.py installs
-    ros2 = [variables for build_type, variables in other_builds(package)
-            if variables.get("ROS_VERSION") == "2"]
+    ros2 = [environment for version, environment
+            in other_builds(package, workspace.environment) if version == "2"]
     if os.path.isfile(os.path.join(package.root, "CMakeLists.txt")) and not (
             (package.build_type == "ament_python" or ros2) and os.path.isfile(setup_py)):
         _from_cmake(package, workspace, found, generated)
@@ -77,7 +77,7 @@ def share_map(package: Package, workspace: Workspace) -> dict[str, str]:
         # an ament_python package (its manifest's build type, for this ROS version:
         # ros-bridge's packages keep a catkin CMakeLists.txt beside their setup.py)
         _from_setup_py(package, workspace, setup_py, found,
-                       {**workspace.environment, **ros2[0]} if ros2 else workspace.environment)
+                       ros2[0] if ros2 else workspace.environment)
     workspace.share_maps[package.name] = found
     return found
 
@@ -115,9 +115,8 @@ def lib_executables(package: Package, workspace: Workspace) -> frozenset[str]:
         nodes, _ = cmake_nodes(package, workspace)
     else:
         nodes = []
-    for _, variables in other_builds(package):
-        more, _ = pysetup.parse_package(package, workspace,
-                                        {**workspace.environment, **variables})
+    for _, environment in other_builds(package, workspace.environment):
+        more, _ = pysetup.parse_package(package, workspace, environment)
         nodes = [*nodes, *more]
     found = frozenset(n.executable for n in nodes if n.kind in ("executable", "script"))
     workspace.lib_executables[package.name] = found

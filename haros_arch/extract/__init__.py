@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..files import read_text
-from ..manifest import ROS_VERSIONS
+from ..manifest import version_environment
 from ..model.source import Node, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
 from ..plugins.classes import base_name, exported_classes
@@ -212,9 +212,7 @@ def _build_environment(node: Node, workspace: Workspace) -> dict[str, str] | Non
     where it is that version's (ros_compatibility's ``ROS_VERSION`` tests)."""
     package = workspace.packages.get(node.package)
     version = package.node_versions.get(node.executable) if package is not None else None
-    if version is None:
-        return None
-    return {**workspace.environment, **ROS_VERSIONS[version]}
+    return None if version is None else version_environment(workspace.environment, version)
 
 
 def _entries(nodes: Sequence[Node]) -> list[str | None]:

@@ -247,7 +247,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             # of the file given to ros2_control_node, after its spawner's file, whose
             # values win: rcl's global arguments reach every node of the process)
             process_file_params(decl, reader, params,
-                            host=instance if slot.names == SPAWNER else None)
+                                host=instance if slot.names == SPAWNER else None)
         _unhosted(reader, owned)  # a controller that loads plugins of its own
         out.append((reader, _not_hosts(_with_base(node, index, workspace, models),
                                        instance)))
@@ -529,7 +529,7 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
 
 
 def process_file_params(decl: NodeDecl, instance: NodeInstance, params: Params,
-                    host: NodeInstance | None = None) -> None:
+                        host: NodeInstance | None = None) -> None:
     """The entries of the process's parameter files that name a node it makes; the
     ``/**`` ones too when the node declares every override it is given (a ``host``:
     ros2_control's controllers, made with ``automatically_declare_parameters_from_

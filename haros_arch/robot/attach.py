@@ -301,11 +301,9 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
         if UNKNOWN_MARK in path or not os.path.isabs(path):
             _note(config, decl.location, f"file {path} of the spawner is not known")
             return None
-        if not os.path.isfile(path):
-            path = share_source(workspace, path)
         # the simulator reads the file itself, not through xacro
-        return _expanded(path, {}, workspace.relpath(path), decl.location, workspace,
-                         config, by_xacro=False)
+        return _file_description(path, None, decl.location, workspace, config,
+                                 by_xacro=False)
     if spawn.param is not None:
         name = resolve(spawn.param, decl.namespace)
         param = _last_param(launch.params, name)
@@ -514,6 +512,18 @@ def _from_command(command: str | None, name: str, where: Location, workspace: Wo
               for key, value in parsed.args.items()}
     return _expanded(parsed.path, values, name, where, workspace, config,
                      by_xacro=parsed.by_xacro)
+
+
+def _file_description(path: str, name: str | None, where: Location, workspace: Workspace,
+                      config: Configuration, by_xacro: bool,
+                      ) -> tuple[RobotDescription, xacro.Description]:
+    """The description a file gives as it is named (an installed path: the source file
+    installed there), read as its reader reads it (xacro or not); named ``name``, else
+    by the file's path."""
+    if not os.path.isfile(path):
+        path = share_source(workspace, path)
+    return _expanded(path, {}, name if name is not None else workspace.relpath(path), where,
+                     workspace, config, by_xacro=by_xacro)
 
 
 def _expanded(path: str, args: Mapping[str, str | Value], name: str, where: Location,
@@ -992,10 +1002,8 @@ def _webots(decl: NodeDecl, driver: NodeInstance, given: Sequence[ParamDecl],
     elif isinstance(value, str) and value.strip().endswith((".urdf", ".xacro")) and (
             UNKNOWN_MARK not in value):
         path = value.strip()
-        if not os.path.isfile(path):
-            path = share_source(workspace, path)
-        made = _expanded(path, {}, param.name, param.location, workspace, config,
-                         by_xacro=path.endswith(".xacro"))
+        made = _file_description(path, param.name, param.location, workspace, config,
+                                 by_xacro=path.endswith(".xacro"))
     if made is None or made[1].root is None:
         return
     record, expanded = made

@@ -902,7 +902,7 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
              scoped: dict[str, set[str]] | None = None,
              loads: Collection[str] = ("",),
              loadable: Collection[str] = (),
-             built_elsewhere: Collection[str] | None = None) -> set[str]:
+             built_elsewhere: Collection[str] = ()) -> set[str]:
     """The owners of the executable's files that its ``main()`` never runs
     (``_reached``): they make no node and no call in this process. A node class (one
     whose constructor names a node) it never builds (plansys2's compute_bt links
@@ -920,9 +920,8 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
     declares for one (``loadable``: the classes registered in its files, with the bases
     registered with them, and every plugin, nodelet and component class of the
     workspace's build files and plugin descriptions), and no code of it but the class's
-    own constructs or calls (``built_elsewhere``; ``entered`` when not given: a class's
-    factory that nothing calls builds nothing): a loader builds declared classes alone
-    (plansys2's
+    own constructs or calls (``built_elsewhere``: a class's factory that nothing calls
+    builds nothing): a loader builds declared classes alone (plansys2's
     executor_node loads its behaviour-tree builders by name and links ComputeBT, which
     only compute_bt builds), nor a class
     whose name the code around the parse's errors holds (they may hide its
@@ -939,8 +938,8 @@ def _unbuilt(owners: dict[str, list[str]], reached: set[str] | None, result: Cpp
                # a class, or a function's local node handle (its USR: ``_reached`` has
                # the function that holds it)
                and ("@" in owner or not _named_in(owner, unseen, scoped))
-               and not (by_name and ("@" in owner or owner in loadable or owner in (
-                   entered if built_elsewhere is None else built_elsewhere)))}
+               and not (by_name and ("@" in owner or owner in loadable
+                                     or owner in built_elsewhere))}
     if by_name:
         return classes
     return classes | {owner for call in result.calls
