@@ -102,3 +102,55 @@ def test_a_dotted_import_binds_its_top_package(write_tree):
     assert sorted(n.name for n in model.nodes) == ["/boat/bridge", "/relay", "/relay"]
     assert not [d for d in model.diagnostics if d.code in (
         "LAUNCH_PY_UNSUPPORTED", "LAUNCH_UNKNOWN_VALUE")]
+
+
+# py_trees_ros_tutorials 15c9060: the package's __init__.py imports each tutorial with
+# ``from . import one``; a tutorial says ``from . import mock`` and builds its launch
+# description from ``mock.launch.generate_launch_nodes()``, while mock/__init__.py says
+# ``from . import launch``. Python hands the package, still being initialised, to each
+# submodule that imports it again: no cycle, and the mock robot's nodes are launched.
+PARTIAL_PACKAGE = {
+    "src/tutorials/package.xml": package_xml("tutorials", "ament_python"),
+    "src/tutorials/setup.py": "from setuptools import setup\nsetup(name='tutorials')\n",
+    "src/tutorials/tutorials/__init__.py":
+        "from . import behaviours\nfrom . import mock\nfrom . import one\n",
+    "src/tutorials/tutorials/behaviours.py": "TOPIC = '/led_strip/command'\n",
+    "src/tutorials/tutorials/mock/__init__.py": "from . import launch\n",
+    "src/tutorials/tutorials/mock/launch.py": """
+import launch
+import launch_ros.actions
+
+def generate_launch_nodes():
+    return [launch_ros.actions.Node(package='tutorials', executable='mock-' + name,
+                                    name=name) for name in ('battery', 'dashboard')]
+""",
+    "src/tutorials/tutorials/one.py": """
+import launch
+import launch_ros
+from . import behaviours
+from . import mock
+from . import later
+
+def generate_launch_description():
+    return launch.LaunchDescription(mock.launch.generate_launch_nodes() + [
+        launch_ros.actions.Node(package='tutorials', executable='tree-one', name='tree',
+                                remappings=[('led', behaviours.TOPIC)])])
+""",
+    "src/tutorials/tutorials/later.py": "from tutorials.one import NOT_YET\n",
+    "src/tutorials/launch/one_launch.py":
+        "import tutorials.one as tutorial\n\n"
+        "def generate_launch_description():\n"
+        "    return tutorial.generate_launch_description()\n",
+}
+
+
+def test_a_package_imported_again_while_it_is_read_is_no_cycle(write_tree):
+    root = write_tree(PARTIAL_PACKAGE)
+    model = load(str(root / "src/tutorials/launch/one_launch.py"),
+                 scan([str(root / "src")], {}), {}, {})
+    assert [n.name for n in model.nodes] == ["/battery", "/dashboard", "/tree"]
+    messages = [d.message for d in model.diagnostics]
+    assert not any("imports itself" in m for m in messages), messages
+    # a name the module being read has not bound yet is not there, as at run time
+    assert any("NOT_YET is not defined in tutorials.one as read here" in m
+               for m in messages), messages

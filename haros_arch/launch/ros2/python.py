@@ -557,15 +557,20 @@ class Interpreter(Expressions):
 
     def module_file(self, name: str, source: str, node: ast.AST) -> Module | None:
         """The module of the Python file ``source`` (a real path we may read),
-        interpreted once however often it is imported."""
+        interpreted once however often it is imported. A module imported again while it
+        is still being read is the module as read so far, as Python hands out the partly
+        initialised module it keeps in ``sys.modules``: a package's ``__init__.py`` that
+        says ``from . import mock`` while its submodules say ``from . import behaviours``
+        (py_trees_ros_tutorials) is no cycle. A name not bound yet then is not defined
+        there, as at run time. A file that could not be read is no module (it was said
+        once)."""
         if source in self.modules:
-            found = self.modules[source]
-            if found is None:
-                self.unsupported(node, f"module {name} imports itself (cycle)")
-            return found
-        self.modules[source] = None
-        module = self.load_module(name, source, node)
+            return self.modules[source]
+        module = Module(name, source, {"__file__": source, "__name__": name})
         self.modules[source] = module
+        if not self.load_module(module, node):
+            self.modules[source] = None
+            return None
         return module
 
     def _module_files(self, level: int, parts: list[str]) -> list[str]:
@@ -585,27 +590,29 @@ class Interpreter(Expressions):
         found = workspace_module(self.workspace, parts)
         return [*out, found] if found is not None else out
 
-    def load_module(self, name: str, source: str, node: ast.AST) -> Module | None:
+    def load_module(self, module: Module, node: ast.AST) -> bool:
+        """Interprets the file of ``module`` into its names; False when it cannot be
+        read."""
         from ...files import read_text
 
+        source = module.path
         text, found = read_text(source, self.workspace.location(source), MAX_SOURCE)
         self.diagnostics.extend(found)
         if text is None:
-            return None
+            return False
         tree, problem = checked_tree(text, source, self.workspace)
         if tree is None:
             if problem is not None:
                 self.diagnostics.append(problem)
-            self.unsupported(node, f"module {name} could not be read")
-            return None
-        module = Module(name, source, {"__file__": source, "__name__": name})
+            self.unsupported(node, f"module {module.name} could not be read")
+            return False
         outer = self.path
         self.path = source
         try:
             self.module_body(tree, module.names)
         finally:
             self.path = outer
-        return module
+        return True
 
     # -- statements --------------------------------------------------------------------
     def block(self, body: list[ast.stmt], env: dict[str, Any]) -> None:
