@@ -224,6 +224,10 @@ class Namespaces:
             if decl is None or decl.kind != CursorKind.VAR_DECL:
                 return UNKNOWN
             value = scope.variable(decl)
+            if value is None and not _is_global(decl):
+                # written several times: the last write before this use (darknet_ros'
+                # nodelet: ``ros::NodeHandle nh("~"); nh = getPrivateNodeHandle();``)
+                value = scope.written_before(decl, expr, depth)
             if value is None and _is_global(decl):
                 value = self._global_value(decl)
                 if value is not None:  # written in another function: its own scope
