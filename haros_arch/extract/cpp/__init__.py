@@ -1829,6 +1829,7 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
     errors = [e for e in errors if not (_names_fieldless_type(e.spelling, fieldless)
                                         or _std_by_adl(e, source, std))
               or _in_ros_call(e, source, near)]
+    errors = [e for e in errors if not _of_kept_call(e, finder.kept_unresolved)]
     if not errors:
         return []
     files = dict.fromkeys([path, *(e.path for e in errors if e.path is not None)])
@@ -1880,6 +1881,20 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
                     detail=error.spelling))
     found.extend(_node_given(errors, places, workspace))
     return found[:recall.MAX_REASONS]
+
+
+# what clang says of a call no overload takes or several take equally
+_CALL_ERROR = re.compile(r"call to (?:member function |function )?'([^']+)'")
+
+
+def _of_kept_call(error: _Error, kept: set[tuple[str, int, str]]) -> bool:
+    """Whether ``error`` is clang's about a call the walk kept by its name all the same
+    (cob_linear_nav's ``private_nh.setParam("global_frame", req.data)``, ``data`` of a
+    service whose package is not in the workspace: "call to member function 'setParam'
+    is ambiguous"): that call is in the model, so the error hides none."""
+    found = _CALL_ERROR.search(error.spelling)
+    return found is not None and error.name is not None and (
+        error.name, error.line, found.group(1)) in kept
 
 
 ROSCPP = "roscpp"

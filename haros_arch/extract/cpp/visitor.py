@@ -360,6 +360,10 @@ class CallFinder:
         # (file, line) of the calls of an API function's name that the parse resolved,
         # ROS or not (``set_parameters`` of a parameter client): read, so not hidden
         self.resolved: set[tuple[str, int]] = set()
+        # (file, line, function) of the calls the parse could not resolve and the walk
+        # keeps by their name (``CPP_CALL_UNRESOLVED``): clang's error about such a call
+        # itself hides no other (``recall``)
+        self.kept_unresolved: set[tuple[str, int, str]] = set()
         self.sites: CallSites | None = None
         self._scope: Scope | None = None  # of the function being walked
         self.rosname: str | None = None
@@ -1288,6 +1292,8 @@ class CallFinder:
         self.diagnostics.append(diag.make(
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
             type=_shown_type(self.calls[before].type)))
+        if call.location.file is not None:
+            self.kept_unresolved.add((call.location.file.name, call.location.line, function))
 
     def _lost_initialiser(self, init: Cursor, spec: api.RosFunction, made: Cursor,
                           conditions: tuple[Condition, ...], scope: Scope) -> None:
