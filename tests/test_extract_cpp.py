@@ -167,7 +167,8 @@ def test_parameters(names: CppResult, name: str, kind: str, type_: str | None) -
     ("always", ()),
     ("then", (("if", "mode > 1"),)),
     ("otherwise", (("else", "mode > 1"),)),
-    ("looped", (("for", "int i = 0; i < 2; ++i"),)),
+    # a counting loop over literal bounds runs its body: no condition
+    ("looped", ()),
     ("nested", (("while", "ros::ok()"), ("if", "mode == 3"))),
     ("one", (("switch", "mode == 1"),)),
     ("other", (("switch", "mode != 1"),)),

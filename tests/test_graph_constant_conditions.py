@@ -186,7 +186,9 @@ def test_a_global_no_source_writes_after_its_literal_is_a_constant(write_tree) -
                         cache_dir=None)
     held = {c.name: [k.constants for k in c.conditions]
             for c in found.calls if c.kind == "publish"}
-    assert held["/laser_scanid_?"][0] == (("PUB_EACH_LINE", False),)
+    # (a counting loop over literal bounds: one publisher per turn, the loop no condition)
+    for line in range(4):
+        assert held[f"/laser_scanid_{line}"] == [(("PUB_EACH_LINE", False),)]
     assert held["verbose"] == [None]
     assert held["stepped"] == [None]
     assert held["scans"] == [None]

@@ -57,6 +57,15 @@ _FAILED = re.compile(
     r"^(?:false|-\s*\d+|nullptr|NULL|\w*(?:::)?\w*EXIT_FAILURE)$|\b(?:ERROR|FAILURE|Error"
     r"|Failure|FAILED|Failed)\b")
 _SPACE = re.compile(r"\s+")
+# a counting loop's header over literal bounds, as ``_parens`` reads it: ``int i = 1; i <
+# 10; i++`` (a variable declared with a literal start, ``<``, ``<=`` or ``!=`` a literal
+# end, a step of one up)
+_COUNTING = re.compile(
+    r"^(?:[\w:]+\s+)+(?P<var>[A-Za-z_]\w*)\s*=\s*(?P<start>\d+)[uUlL]*\s*;"
+    r"\s*(?P=var)\s*(?P<op><=|<|!=)\s*(?P<end>\d+)[uUlL]*\s*;"
+    r"\s*(?:\+\+\s*(?P=var)|(?P=var)\s*\+\+|(?P=var)\s*\+=\s*1)$")
+# the most turns of a counting loop read one by one (``CallFinder._emit_one``)
+MAX_TURNS = 16
 # ``!node->has_parameter(name)``, ``!this->has_parameter("x")``, ``!has_parameter(x)``
 _NOT_DECLARED = re.compile(
     r"!\s*(?:[A-Za-z_][\w:]*\s*(?:\(\s*\))?\s*(?:->|\.)\s*)*has_parameter\s*\(\s*(.+?)\s*\)")
@@ -95,6 +104,9 @@ class ConditionReader:
         # reading it was read in (``enter``'s ``key``): the walks of a unit read the same
         # function again (its calls, then each call site's conditions)
         self._read: dict[tuple[int, int, object], list[Branch]] = {}
+        # the counting loops over literal bounds read (``_counting``): each one's
+        # variable and the values it takes in turn
+        self.counted: dict[Condition, tuple[tuple[str, int], tuple[int, ...]]] = {}
         self._reading: tuple[int, object] | None = None
 
     def below(self, node: Cursor, conditions: tuple[Condition, ...]) -> list[Branch]:
@@ -120,6 +132,8 @@ class ConditionReader:
             return self._if(node, children)
         if kind in _LOOPS and children:
             loop = self._condition(node, _LOOPS[kind], self._parens(node.extent.start))
+            if kind == CursorKind.FOR_STMT:
+                self._counting(loop, children)
             return [(c, ()) for c in children[:-1]] + [(children[-1], (loop,))]
         if kind == CursorKind.DO_STMT and children:
             text = self._parens(children[0].extent.end)
@@ -153,6 +167,26 @@ class ConditionReader:
         if kind == CursorKind.COMPOUND_STMT:
             return self._block(children)
         return [(c, ()) for c in children]
+
+    def _counting(self, loop: Condition, children: list[Cursor]) -> None:
+        """Note ``loop`` in ``counted`` when it is a counting loop over literal bounds
+        that runs its body at least once (``for (int i = 1; i < 10; i++)``): its
+        variable and each value it takes, none when it takes more than ``MAX_TURNS``.
+        Such a loop is no condition of what its body makes."""
+        found = _COUNTING.match(loop.text)
+        if found is None or not children or children[0].kind != CursorKind.DECL_STMT:
+            return
+        declared = [c for c in children[0].get_children() if c.kind == CursorKind.VAR_DECL]
+        if len(declared) != 1 or declared[0].spelling != found.group("var"):
+            return
+        start, end = int(found.group("start")), int(found.group("end"))
+        end += 1 if found.group("op") == "<=" else 0
+        if end <= start:
+            return  # never runs, or (``!=`` from above) never stops
+        from .values import key_of  # (values reads no conditions)
+
+        turns = tuple(range(start, end)) if end - start <= MAX_TURNS else ()
+        self.counted[loop] = (key_of(declared[0]), turns)
 
     def _block(self, children: list[Cursor]) -> list[Branch]:
         """The statements of a block, each under what the ones before it decided: after

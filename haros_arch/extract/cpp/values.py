@@ -507,6 +507,9 @@ class Scope:
         # ``test ? a : b`` (by its place) -> the side taken, while a name made of its
         # value is read once per side (``CallFinder._name_choice``)
         self.chosen: dict[tuple[str, int], bool] = {}
+        # a counting loop's variable (``for (int i = 1; i < 10; i++)``) -> the value of the
+        # turn a call made in its body is read for (``CallFinder._emit_one``)
+        self.bound: dict[tuple[str, int], int] = {}
         # a lambda's parameter -> the standard algorithm and range it is each element of
         # (``algorithm_range``)
         self._ranges: dict[tuple[str, int], tuple[Cursor, Cursor] | None] = {}
@@ -1469,6 +1472,8 @@ class Scope:
             decl = cursor.referenced
             if decl is None:
                 return None
+            if self.bound and key_of(decl) in self.bound:
+                return self.bound[key_of(decl)]
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.integer(arg, depth + 1), None)
@@ -1482,6 +1487,16 @@ class Scope:
             # a getter (``RangeSource::depth()``), as for a string
             return self._returned(cursor.referenced,
                                   lambda scope, value: scope.integer(value, depth + 1))
+        if cursor.kind == CursorKind.BINARY_OPERATOR:  # ``i + 1`` of known integers
+            sides = [c for c in cursor.get_children() if c.kind.is_expression()]
+            if len(sides) != 2:
+                return None
+            operator = _ARITHMETIC.get(binary_operator(cursor, sides) or "")
+            if operator is None:
+                return None
+            left = self.integer(sides[0], depth + 1)
+            right = self.integer(sides[1], depth + 1) if left is not None else None
+            return None if left is None or right is None else operator(left, right)
         return None
 
     def token(self, cursor: Cursor) -> str | None:
@@ -1532,6 +1547,8 @@ class Scope:
             return -value if head == b"-" else value
         if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
+            if decl is not None and self.bound and key_of(decl) in self.bound:
+                return self.bound[key_of(decl)]
             if decl is None or self.is_parameter(decl):
                 return None
             value = self.variable(decl)
@@ -1865,6 +1882,11 @@ _REPEATED = frozenset({CursorKind.FOR_STMT, CursorKind.CXX_FOR_RANGE_STMT,
 
 _WHOLE_REGIONS = frozenset({CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT,
                             CursorKind.CXX_CATCH_STMT, CursorKind.LAMBDA_EXPR})
+
+
+# the integer operators ``integer`` reads (``to_string(i + 1)``)
+_ARITHMETIC: dict[str, Callable[[int, int], int]] = {
+    "+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b}
 
 
 def key_of(decl: Cursor) -> tuple[str, int]:

@@ -1943,6 +1943,20 @@ class CallFinder:
         return place, [(True, self.reader.choice(node, "if", children[0])),
                        (False, self.reader.choice(node, "else", children[0]))]
 
+    @staticmethod
+    def _named_by_turn(name: Cursor, scope: Scope, key: tuple[str, int], turn: int) -> bool:
+        """Whether the name ``name`` holds, not known in full, is another with a
+        counting loop's variable ``key`` at ``turn``: it is made of that variable
+        (VINS-Mono's ``"path_" + to_string(i)``)."""
+        before = scope.string(name)
+        if _known(before):
+            return False
+        scope.bound[key] = turn
+        try:
+            return scope.string(name) != before
+        finally:
+            del scope.bound[key]
+
     def _emit_one(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
                   cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
                   at: Cursor | None = None, at_scope: Scope | None = None) -> None:
@@ -1968,6 +1982,23 @@ class CallFinder:
                 return None
             return args[index + shift]
 
+        counted = [c for c in conditions if c in self.reader.counted]
+        if counted:  # a counting loop over literal bounds runs its body: no condition
+            name = arg(spec.name_arg) if spec.fixed_name is None else None
+            for loop in counted:
+                variable, turns = self.reader.counted[loop]
+                if name is None or not turns or variable in scope.bound or not (
+                        self._named_by_turn(name, scope, variable, turns[0])):
+                    continue
+                rest = tuple(c for c in conditions if c is not loop)
+                for turn in turns:  # a name made of its variable: one call per turn
+                    scope.bound[variable] = turn
+                    try:
+                        self._emit_one(given, call, args, cls, rest, scope, at, at_scope)
+                    finally:
+                        del scope.bound[variable]
+                return
+            conditions = tuple(c for c in conditions if c not in self.reader.counted)
         choice = self._name_choice(arg(spec.name_arg), scope) if (
             spec.fixed_name is None) else None
         if choice is not None:  # one call per side, each under its side of the test
