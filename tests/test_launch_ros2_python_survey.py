@@ -445,6 +445,32 @@ def generate_launch_description():
     assert "LAUNCH_UNSUPPORTED" not in codes(model)
 
 
+def test_a_launch_configuration_default_that_is_an_action_is_its_object_text(write_tree):
+    """limo_ros2's voice_control.launch.py: ``LaunchConfiguration("speaker_index",
+    default=declare_speaker_index)``, the default a ``DeclareLaunchArgument`` (whose
+    name, ``speakcer_index``, is misspelt, so the default is used). launch keeps
+    ``str()`` of it, the object's text: no TypeError, the parameter gets that text
+    (``<launch.actions...DeclareLaunchArgument object at 0x...>``, its address not known
+    here). A configuration that is set never reads its default."""
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    declared = DeclareLaunchArgument(name='mic_index', default_value='11')
+    misspelt = DeclareLaunchArgument(name='speakcer_index', default_value='11')
+    mic = LaunchConfiguration('mic_index', default=declared)
+    speaker = LaunchConfiguration('speaker_index', default=misspelt)
+    return LaunchDescription([declared, misspelt, Node(
+        package='p', executable='e', name='voice',
+        parameters=[{'mic_index': mic, 'speaker_index': speaker}])])
+""")
+    values = {p.name: p.value for p in model.params}
+    assert "TypeError" not in " ".join(d.message for d in model.diagnostics)
+    assert "LAUNCH_BAD_VALUE" not in codes(model)
+    assert str(values["/voice/mic_index"]) == "11"
+    # its text holds the object's address, not known here: the value is not known
+    assert values["/voice/speaker_index"] is None
+    assert any("object text" in d.message for d in model.diagnostics)
+
+
 def test_a_process_is_said_only_where_it_is_performed(write_tree):
     """px4_ros_com's sensor_combined_listener.launch.py makes an ``ExecuteProcess`` of
     the micro-ROS agent and leaves it out of the description (``#micro_ros_agent,``):

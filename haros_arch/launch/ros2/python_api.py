@@ -97,13 +97,17 @@ def launch_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def configuration_default(value: Any) -> e.Text | None:
     """``LaunchConfiguration``'s ``default`` as launch keeps it: a str as it is, else each
     item of it (the value itself when it is not iterable), a str or substitution as it
-    is and any other plain value as Python's ``str`` of it (``default=True`` is "True",
-    which a ``PythonExpression`` over it reads as Python's ``True``)."""
+    is and any other value as Python's ``str`` of it (``default=True`` is "True", which a
+    ``PythonExpression`` over it reads as Python's ``True``; an action or condition is
+    its object text, ``<launch.actions...DeclareLaunchArgument object at 0x...>``:
+    limo_ros2's ``LaunchConfiguration("speaker_index", default=declare_speaker_index)``,
+    no TypeError)."""
     if value is None or isinstance(value, str):
         return text_or_none(value)
     items = value if isinstance(value, (list, tuple)) else [value]
-    return e.text(*(to_text(str(item)) if isinstance(item, PLAIN) else to_text(item)
-                    for item in items))
+    return e.text(*(to_text(str(item)) if isinstance(item, PLAIN) else
+                    to_text(object_text(item)) if isinstance(item, (e.Action, e.Cond))
+                    else to_text(item) for item in items))
 
 
 def perform_substitutions(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

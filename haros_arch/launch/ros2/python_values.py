@@ -338,6 +338,7 @@ _PYTHON_CLASS: dict[type, str] = {
     e.Command: "launch.substitutions.command.Command",
     e.Eval: "launch.substitutions.python_expression.PythonExpression",
     e.Literal: "launch.substitutions.text_substitution.TextSubstitution",
+    e.DeclareArg: "launch.actions.declare_launch_argument.DeclareLaunchArgument",
 }
 
 
