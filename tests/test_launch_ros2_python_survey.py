@@ -471,6 +471,35 @@ def generate_launch_description():
     assert any("object text" in d.message for d in model.diagnostics)
 
 
+def test_logging_the_module_name_and_isabs(write_tree):
+    """OrbbecSDK_ROS2's orbbec_camera.launch.py and utils_yaml.py: ``logger =
+    logging.getLogger(__name__)`` at module level (launch loads the file as the module
+    ``python_launch_file``), ``logger.info(...)`` in helpers, and ``if not
+    os.path.isabs(path): path = os.path.join(share, 'config', path)``. Logging writes
+    messages only; the test of a known path is decided, so the absolute path is not
+    joined to the share folder (a false LAUNCH_PATH_JOIN_ABSOLUTE)."""
+    model, _ = run(write_tree, """
+import logging
+logging.basicConfig(level=logging.INFO)
+logger = logging.getLogger(__name__)
+
+def absolute(path):
+    if not os.path.isabs(path):
+        logger.info(f"not absolute: {path}")
+        return os.path.join(get_package_share_directory('pkg'), 'config', path)
+    logger.warning("absolute")
+    return path
+
+def generate_launch_description():
+    common = absolute(os.path.join(get_package_share_directory('pkg'), 'config', 'a.yaml'))
+    name = 'main' if __name__ == '__main__' else __name__
+    return LaunchDescription([Node(package='p', executable='e', name=name,
+                                   parameters=[{'file': common}])])
+""")
+    assert [n.name for n in model.nodes] == ["/python_launch_file"]
+    assert codes(model) == [], model.diagnostics
+
+
 def test_a_process_is_said_only_where_it_is_performed(write_tree):
     """px4_ros_com's sensor_combined_listener.launch.py makes an ``ExecuteProcess`` of
     the micro-ROS agent and leaves it out of the description (``#micro_ros_agent,``):

@@ -115,7 +115,8 @@ class Interpreter(Expressions):
         # packages whose folders the file asks for now (get_package_share_directory)
         self.uses: list[PackageUse] = []
         # launch imports the file from its path: __file__ is that path, as given
-        self.globals: dict[str, Any] = {"__file__": path}
+        # (and its module's name, the one launch's loader gives every launch file)
+        self.globals: dict[str, Any] = {"__file__": path, "__name__": "python_launch_file"}
         self.steps = 0
         self.limits = LIMITS
         self.depth = 0
@@ -1132,6 +1133,11 @@ class Interpreter(Expressions):
                             for a in args):  # math.sin(x) of numbers known statically
                 return self.operation(
                     lambda: ops.call_builtin(ops.MATH[short], args, None, LIMITS), node)
+            if name.split(".", 1)[0] == "logging":
+                # Python's logging writes messages, nothing launch reads: a logger, a
+                # configuration, a message (OrbbecSDK_ROS2's ``logger =
+                # logging.getLogger(__name__)``, then ``logger.info(...)``)
+                return Ref("logging.Logger") if short == "getLogger" else None
             handler = self.api.get(name) or self.api.get(short)  # xacro.parse: by module
             if handler is not None and (_known_module(name) or short in self.builtins):
                 self.charge_arguments([*args, *kwargs.values()])

@@ -947,7 +947,7 @@ API: dict[str, Builder] = {
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "split": os_path(os.path.split),
-    "splitext": os_path(os.path.splitext),
+    "splitext": os_path(os.path.splitext), "isabs": os_path(os.path.isabs),
     "exists": path_exists(os.path.exists), "isfile": path_exists(os.path.isfile),
     "isdir": path_exists(os.path.isdir),
     "getenv": getenv,
