@@ -686,6 +686,19 @@ CATALOGUE: dict[str, Entry] = {
         "that calls the API): calls there may be missing. The node model is "
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
+    "PY_NODE_UNSEEN": Entry(
+        "warning", "{cls} of {module}, a Python package not in the workspace, is built "
+        "here and this program makes no node itself: that class makes it, its calls not "
+        "read",
+        "A Python program that imports rospy or rclpy makes no node in the code read "
+        "(no init_node, no Node), yet builds an object of a class of a Python package "
+        "the workspace does not hold and its package.xml does not name as a ROS package "
+        "(pepper_sensors_py's camera.py builds PepperCam, a NaoqiCam of naoqi_sensors_py, "
+        "whose module is naoqi_sensors; duckietown's DTROS). That class makes the node "
+        "and may communicate and read parameters under any name: the node is 'partial' "
+        "and checks that claim something is absent do not decide on it. Where the "
+        "program makes its node itself, such classes are taken for libraries that make "
+        "no ROS call."),
     "PY_CLASS_UNSEEN": Entry(
         "info", "{cls} of ROS package {package} is built here and its code is not read",
         "A Python node builds an object of a class of a ROS package its package depends "

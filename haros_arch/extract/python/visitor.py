@@ -27,7 +27,7 @@ from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
 from .conditions import condition, is_main_guard, source_text
-from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import, last_name
+from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import, api_modules, last_name
 from .msg_types import ros_type
 from .objects import (
     ELEMENT_OF,
@@ -126,6 +126,9 @@ class Walker:
         # the classes of them said built (``_unseen_class``)
         self.unseen_packages: frozenset[str] = frozenset()
         self._classes_said: dict[str, Location] = {}
+        # classes built of Python packages neither the workspace holds nor a dependency
+        # names (``_unseen_class``): ROS code when the program makes no node itself
+        self._classes_elsewhere: dict[str, Location] = {}
         self._ros_init = False  # rclpy.init() is called
         self._gui_plugin = False  # rqt_gui runs a plugin alone (``_standalone_plugin``)
         self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
@@ -854,7 +857,7 @@ class Walker:
             for used in ev.mro(target):
                 for base in ev.bases(used):
                     if isinstance(base, Ref):
-                        self._unseen_class(base, call, frame)
+                        self._unseen_class(base, call, frame, base=True)
             # its methods and those it inherits (rosserial_arduino's SerialClient runs
             # rosserial_python's, whose run() sets up the device's topics)
             for used in ev.mro(target):
@@ -1156,22 +1159,28 @@ class Walker:
             return expr.attr
         return None
 
-    def _unseen_class(self, target: Ref, call: ast.Call, frame: Frame) -> None:
+    def _unseen_class(self, target: Ref, call: ast.Call, frame: Frame,
+                      base: bool = False) -> None:
         """Say where the node builds an object of a class of a ROS package its own
         package depends on whose code is not read (an installed package:
         nav2_simple_commander's ``BasicNavigator()``, a node with a dozen action
         clients; ``smach_ros.IntrospectionServer``): it may communicate under names we
         cannot see (``PY_CLASS_UNSEEN``), so the node is partial. Not a message,
         service or action, nor a class of a module the API tables model or of a
-        package known to make no ROS call (``NOT_CLIENTS``)."""
+        package known to make no ROS call (``NOT_CLIENTS``). A base of a class of ours
+        (``base``) from a Python package that neither the workspace holds nor a
+        dependency names is kept for ``PY_NODE_UNSEEN``."""
         if target.key == ("rclpy", "init"):
             self._ros_init = True
         parts = target.qualname.split(".")
-        if len(parts) < 2 or parts[0] not in self.unseen_packages or not parts[-1][:1].isupper() \
+        if len(parts) < 2 or not parts[-1][:1].isupper() \
                 or parts[0] in _MODELLED or target.qualname in self._classes_said \
                 or any(part in ("msg", "srv", "action") for part in parts[1:-1]):
             return
-        self._classes_said[target.qualname] = self._where(frame, call)
+        if parts[0] in self.unseen_packages:
+            self._classes_said[target.qualname] = self._where(frame, call)
+        elif base and target.qualname not in self._classes_elsewhere and _foreign(parts[0]):
+            self._classes_elsewhere[target.qualname] = self._where(frame, call)
 
     def _runs_ros_tool(self, call: ast.Call, frame: Frame) -> bool:
         """Whether a subprocess call's command (a list's words, or a string's) starts
@@ -1222,7 +1231,17 @@ class Walker:
         rclpy (``rclpy.init()``, then ``BasicNavigator()``, a node) or makes ROS calls
         (on a node the unseen class made: Interbotix's xsarm_robot.py subscribes on
         ``self.core.get_node()``): a script that does none of these (a generator of
-        launch files, an installer) runs no such class as part of a ROS program."""
+        launch files, an installer) runs no such class as part of a ROS program.
+        ``PY_NODE_UNSEEN`` where a program of the client library makes no node in the
+        code read yet builds a class of a Python package not in the workspace: that
+        class makes the node (pepper_sensors_py's camera.py builds PepperCam, a NaoqiCam
+        of naoqi_sensors_py's module ``naoqi_sensors``, which calls init_node and reads
+        the camera's parameters)."""
+        if self.rosname is None and not self.names and any(
+                m is not None and m.client_version for m in self.loader.modules.values()):
+            for cls, where in self._classes_elsewhere.items():
+                self.diagnostics.append(diag.make("PY_NODE_UNSEEN", where, cls=cls,
+                                                  module=cls.split(".", 1)[0]))
         if self.rosname is None and not self.names and not self._ros_init \
                 and not self._gui_plugin \
                 and not self.calls:
@@ -1681,5 +1700,17 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
 
 
 # the packages whose classes the API tables model (by their first module name)
+def _foreign(module: str) -> bool:
+    """Whether the top-level module ``module``, which the workspace does not hold, may be
+    ROS code: not the standard library's, a client library or module the API tables
+    read, nor a package known to make no ROS call (``NOT_CLIENTS``)."""
+    import sys
+
+    from . import NOT_CLIENTS  # (the package reads this module)
+
+    return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
+        module not in api_modules())
+
+
 _MODELLED = frozenset(key[0] for table in (rospy.ROWS, rclpy.ROWS, rospy.NODE_NAMES,
                                            rclpy.NODE_NAMES) for key in table)
