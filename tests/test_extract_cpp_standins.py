@@ -970,3 +970,27 @@ int main(int argc, char ** argv) {
     assert [d.message for d in result.diagnostics if d.code in (
         "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "?/image")]
+
+
+def test_tf_conversions_eigen_functions_parse(tmp_path) -> None:
+    """tf_conversions' ``tf_eigen.h`` (industrial_training's perception exercises,
+    spencer_people_tracking, kinova-ros, franka_ros): its conversions between tf, Eigen
+    and geometry_msgs were errors (the header missing, ``tf::transformTFToEigen`` no
+    member of our tf) beside the node's calls; a fallback stand-in declares them."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <tf/transform_listener.h>\n"
+        "#include <tf_conversions/tf_eigen.h>\n#include <geometry_msgs/PoseStamped.h>\n"
+        "void f(const tf::StampedTransform& t, const geometry_msgs::PoseStamped& p) {\n"
+        "  Eigen::Affine3d a; Eigen::Isometry3d i; Eigen::Vector3d v;\n"
+        "  tf::transformTFToEigen(t, a);\n  tf::poseMsgToEigen(p.pose, i);\n"
+        "  tf::vectorTFToEigen(t.getOrigin(), v);\n"
+        "  geometry_msgs::Pose back; tf::poseEigenToMsg(i, back);\n"
+        "  ros::NodeHandle nh;\n"
+        "  ros::Publisher out = nh.advertise<geometry_msgs::PoseStamped>(\"out\", 1);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

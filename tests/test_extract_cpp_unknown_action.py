@@ -55,3 +55,65 @@ def test_an_unknown_installed_action_keeps_its_server_and_client(write_tree) -> 
     assert unknown == [
         "no definition found for dock_msgs/DockAction.h; it was synthesised without fields",
         "no definition found for dock_msgs/Status.h; it was synthesised without fields"]
+
+
+GRASP = """
+#include <ros/ros.h>
+#include <actionlib/server/action_server.h>
+#include <grasp_msgs/GraspAction.h>
+#include "grasp_msgs/GraspGoal.h"
+using namespace grasp_msgs;
+using namespace actionlib;
+class Grasp {
+  typedef ActionServer<GraspAction> Server;
+  typedef Server::GoalHandle GoalHandle;
+public:
+  explicit Grasp(ros::NodeHandle& n) : node_(n),
+      server_(node_, "grasp_execution_action",
+              boost::bind(&Grasp::goal, this, _1), boost::bind(&Grasp::cancel, this, _1),
+              false) { server_.start(); }
+private:
+  void goal(GoalHandle gh) {
+    if (gh.getGoal()->goal == GraspGoal::PRE_GRASP) gh.setAccepted();
+    gh.setSucceeded();
+  }
+  void cancel(GoalHandle gh) {}
+  ros::NodeHandle node_;
+  Server server_;
+};
+int main(int argc, char ** argv)
+{
+  ros::init(argc, argv, "grasp");
+  ros::NodeHandle node;
+  Grasp grasp(node);
+  ros::spin();
+}
+"""
+
+
+def test_an_action_of_the_workspace_wins_over_stale_copies_of_its_messages(
+        write_tree) -> None:
+    """industrial_training's object_manipulation_msgs keeps the .msg files genaction made
+    from GraspHandPostureExecution.action in ``msg/`` beside the action, outside
+    add_message_files: ``GraspHandPostureExecutionAction.h`` was read from the stale
+    .msg, a plain message without actionlib's nested types, and the node's action server
+    (and every call of the unit) was lost to the errors."""
+    root = write_tree({
+        "grasp_msgs/package.xml": package_xml("grasp_msgs", "catkin"),
+        "grasp_msgs/action/Grasp.action":
+            "uint8 PRE_GRASP=1\nuint8 goal\n---\nbool ok\n---\nfloat32 progress\n",
+        "grasp_msgs/msg/GraspAction.msg":
+            "GraspActionGoal action_goal\nGraspActionResult action_result\n"
+            "GraspActionFeedback action_feedback\n",
+        "grasp_msgs/msg/GraspGoal.msg": "uint8 PRE_GRASP=1\nuint8 goal\n",
+        "grasp_msgs/msg/GraspActionGoal.msg": "Header header\nGraspGoal goal\n",
+        "grasp_msgs/msg/GraspActionResult.msg": "Header header\n",
+        "grasp_msgs/msg/GraspActionFeedback.msg": "Header header\n",
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/node.cpp": GRASP})
+    result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                         cache_dir=None)
+    assert [(c.kind, c.name, c.type) for c in result.calls] == [
+        ("action-server", "grasp_execution_action", "grasp_msgs/Grasp")]
+    assert not [d for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"], \
+        result.diagnostics

@@ -876,8 +876,17 @@ class IncludeSetup:
         """Synthesise a message / service header when that is what ``header`` is."""
         if name.endswith("Config") and self._reconfigure(header, package, name, where):
             return True
-        definition = self._definition(package, name)
         real = self._resolve(header)
+        if real is None and self._action_file(package, name) and (
+            self._action(package, name, where)
+        ):
+            # an action of the package's ``action/`` folder: genaction makes its parts'
+            # headers, whatever stale copies of its generated .msg files ``msg/`` holds
+            # (industrial_training's object_manipulation_msgs keeps
+            # GraspHandPostureExecutionAction.msg there, outside add_message_files: read
+            # as a plain message, the action had none of actionlib's nested types)
+            return True
+        definition = self._definition(package, name)
         if definition is None and (real is None or not self.system_headers) and (
             self._action(package, name, where)
         ):
@@ -936,6 +945,18 @@ class IncludeSetup:
         if found is None:
             found = self._defined[folder] = interfaces.definition_walk(folder)
         return interfaces.definition_files(folder, kind, found)
+
+    def _action_file(self, package: str, name: str) -> bool:
+        """Whether ``name`` is a part of an action whose ``action/<base>.action`` the
+        workspace's package ``package`` holds."""
+        folder = self.workspace.find(package)
+        if folder is None:
+            return False
+        return any(
+            name != name.removesuffix(part) and name.removesuffix(part)
+            and os.path.isfile(os.path.join(folder, "action", name.removesuffix(part)
+                                            + ".action"))
+            for part in interfaces.ACTION_PARTS)
 
     def _action(self, package: str, name: str, where: Location) -> bool:
         """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``.
