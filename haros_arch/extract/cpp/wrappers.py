@@ -1419,7 +1419,19 @@ def _name_shape(expr: Cursor, params: list[Cursor], scope: Scope | None,
         return _name_shape(inner, params, scope, depth + 1)
     if len(operands) != 2 or scope is None:
         return None
+    if all(_names_parameter(operand, params) for operand in operands):
+        # ``prefix + param`` of two of the wrapper's parameters: the shape holds one, and
+        # the other's value here would be the one every call site agrees on, else a
+        # placeholder filled from every site, not this one's (convex_plane_decomposition's
+        # ``loadParameter(nh, prefix, "epsilon", v)`` read each prefix with each name):
+        # none, so the call is read where it is made, its placeholders per site
+        return None
     return _around(operands, scope, lambda part: _name_shape(part, params, scope, depth + 1))
+
+
+def _names_parameter(expr: Cursor, params: list[Cursor]) -> bool:
+    """Whether ``expr`` names one of the wrapper's parameters ``params`` anywhere."""
+    return any(_parameter_index(node, params) is not None for node in expr.walk_preorder())
 
 
 def _of_local(expr: Cursor, scope: Scope) -> bool:
