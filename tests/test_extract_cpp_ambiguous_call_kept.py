@@ -74,3 +74,47 @@ def test_another_error_beside_it_still_may_hide_a_call(tmp_path: Path) -> None:
     near = [d for d in result.diagnostics if d.code == "CPP_ERROR_NEAR_CALL"]
     assert [d.location.line for d in near] == [NAV.splitlines().index(
         "    undeclared_helper(private_nh);") + 1], near
+
+
+# scan_tools 219c319's laser_scan_matcher: ``getParam("epsilon_xy", input_.epsilon_xy)``
+# into the fields of ``sm_params``, a struct of csm, whose header the workspace lacks
+MATCHER = """
+#include <ros/ros.h>
+#include <csm/csm_all.h>
+
+class Matcher {
+ public:
+  explicit Matcher(ros::NodeHandle nh_private) : nh_private_(nh_private) {
+    if (!nh_private_.getParam("max_iterations", input_.max_iterations))
+      input_.max_iterations = 10;
+    if (!nh_private_.getParam("epsilon_xy", input_.epsilon_xy))
+      input_.epsilon_xy = 0.000001;
+    nh_private_.param("publish_tf", publish_tf_, true);
+  }
+ private:
+  ros::NodeHandle nh_private_;
+  sm_params input_;
+  sm_result output_;
+  bool publish_tf_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "matcher");
+  Matcher matcher(ros::NodeHandle("~"));
+  ros::spin();
+}
+"""
+
+
+def test_the_parse_that_keeps_calls_by_name_is_chosen(tmp_path: Path) -> None:
+    """Declared permissively, ``sm_params``' fields make each ``getParam`` ambiguous to
+    clang (more errors than the parse without them, where ``sm_params`` is an unknown
+    type and every such statement is lost): the walk keeps those calls by name, so
+    that parse is the better one."""
+    result = _extract(tmp_path, MATCHER)
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("read", "~epsilon_xy"), ("read", "~max_iterations"), ("read", "~publish_tf")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_NAMES_DECLARED" in codes
+    assert "CPP_CALL_MISSED" not in codes and "CPP_ERROR_NEAR_CALL" not in codes, \
+        result.diagnostics

@@ -44,6 +44,7 @@ from ...processes import OverTime, cpu_limit, raise_if_stopped, worker_pool
 from ...workspace import Workspace, manifest_of
 from .. import NODELET_LOAD, this_run
 from . import (
+    api,
     cache,
     call_conditions,
     links,
@@ -2532,7 +2533,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                             [*unsaved, (header, names.header())], workspace, result)
         if again is None:
             break
-        if len(_errors(again)) < len(_errors(best)):
+        if _cost(again) < _cost(best):
             best = again
         # parsed again only when a name learnt here can matter: from an error that can
         # cost a call (the other errors' names are declared too, but never cost a parse)
@@ -2555,6 +2556,24 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         names=", ".join(names.first()) or "none", before=before, after=len(mine(again)),
         included=f"; {', '.join(included)} from the stand-ins' headers" if included else ""))
     return again
+
+
+@functools.lru_cache(maxsize=1)
+def _api_names() -> frozenset[str]:
+    """The names of the API's functions (``api.ALL``'s rows)."""
+    return frozenset(name for _owner, name in api.ALL)
+
+
+def _cost(tu: TranslationUnit) -> int:
+    """How bad a parse is, to choose between parses of a unit: its errors, but for
+    clang's "call to ... 'X' is ambiguous" of an API function ``X``, a call the walk
+    keeps by its name (``_of_kept_call``): laser_scan_matcher's ``getParam("epsilon_xy",
+    input_.epsilon_xy)`` into a field of a struct of csm (not in the workspace) is such a
+    call once ``sm_params`` is declared, where without it the statement, and the call,
+    is lost."""
+    return sum(1 for e in _errors(tu) if not (
+        "is ambiguous" in e.spelling and (found := _CALL_ERROR.search(e.spelling)) is not None
+        and found.group(1) in _api_names()))
 
 
 def _reads(tu: TranslationUnit, path: str) -> bool:
