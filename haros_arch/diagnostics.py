@@ -687,7 +687,7 @@ CATALOGUE: dict[str, Entry] = {
         "'partial' (completeness, with the first reasons); checks that claim something "
         "is absent do not trust it."),
     "PY_NODE_UNSEEN": Entry(
-        "warning", "{cls} of {module}, a Python package not in the workspace, is built "
+        "info", "{cls} of {module}, a Python package not in the workspace, is built "
         "here and this program makes no node itself: that class makes it, its calls not "
         "read",
         "A Python program that imports rospy or rclpy makes no node in the code read "

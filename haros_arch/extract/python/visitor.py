@@ -1699,7 +1699,6 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
     return joined
 
 
-# the packages whose classes the API tables model (by their first module name)
 def _foreign(module: str) -> bool:
     """Whether the top-level module ``module``, which the workspace does not hold, may be
     ROS code: not the standard library's, a client library or module the API tables
@@ -1712,5 +1711,6 @@ def _foreign(module: str) -> bool:
         module not in api_modules())
 
 
+# the packages whose classes the API tables model (by their first module name)
 _MODELLED = frozenset(key[0] for table in (rospy.ROWS, rclpy.ROWS, rospy.NODE_NAMES,
                                            rclpy.NODE_NAMES) for key in table)
