@@ -53,7 +53,7 @@ import re
 import shutil
 import tempfile
 import threading
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
@@ -950,13 +950,8 @@ class IncludeSetup:
         """Whether ``name`` is a part of an action whose ``action/<base>.action`` the
         workspace's package ``package`` holds."""
         folder = self.workspace.find(package)
-        if folder is None:
-            return False
-        return any(
-            name != name.removesuffix(part) and name.removesuffix(part)
-            and os.path.isfile(os.path.join(folder, "action", name.removesuffix(part)
-                                            + ".action"))
-            for part in interfaces.ACTION_PARTS)
+        return folder is not None and any(
+            os.path.isfile(_action_path(folder, base)) for _part, base in _action_bases(name))
 
     def _action(self, package: str, name: str, where: Location) -> bool:
         """``pkg/DoAction.h``, ``pkg/DoGoal.h``, ...: the headers of ``action/Do.action``.
@@ -967,11 +962,8 @@ class IncludeSetup:
         is still a call (kobuki_auto_docking's ``as_(nh_, name_ + "_action", false)``
         was lost with kobuki_msgs absent, and its node said complete)."""
         folder = self.workspace.find(package)
-        for part in interfaces.ACTION_PARTS:
-            base = name.removesuffix(part)
-            if base == name or not base:
-                continue
-            path = "" if folder is None else os.path.join(folder, "action", base + ".action")
+        for part, base in _action_bases(name):
+            path = "" if folder is None else _action_path(folder, base)
             if path and os.path.isfile(path):
                 text, found = read_text(path, self.workspace.location(path))
                 self.diagnostics.extend(found)
@@ -1344,3 +1336,16 @@ def _locked(folder: str) -> int | None:
         return None
     return lock
 
+
+def _action_bases(name: str) -> Iterator[tuple[str, str]]:
+    """Each (part, action) ``name`` may be the header of a part of (``DoActionGoal``:
+    ``("ActionGoal", "Do")``, and ``("Goal", "DoAction")``)."""
+    for part in interfaces.ACTION_PARTS:
+        base = name.removesuffix(part)
+        if base != name and base:
+            yield part, base
+
+
+def _action_path(folder: str, base: str) -> str:
+    """Where the package in ``folder`` defines action ``base``."""
+    return os.path.join(folder, "action", base + ".action")

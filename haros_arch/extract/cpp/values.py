@@ -1472,8 +1472,9 @@ class Scope:
             decl = cursor.referenced
             if decl is None:
                 return None
-            if self.bound and key_of(decl) in self.bound:
-                return self.bound[key_of(decl)]
+            turn = self._turn(decl)
+            if turn is not None:
+                return turn
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.integer(arg, depth + 1), None)
@@ -1498,6 +1499,11 @@ class Scope:
             right = self.integer(sides[1], depth + 1) if left is not None else None
             return None if left is None or right is None else operator(left, right)
         return None
+
+    def _turn(self, decl: Cursor) -> int | None:
+        """The value of the counting loop's variable ``decl`` for the turn being read
+        (``bound``); None for any other variable."""
+        return self.bound.get(key_of(decl)) if self.bound else None
 
     def token(self, cursor: Cursor) -> str | None:
         """The source token where ``cursor`` is (a literal, or the macro expanding to it)."""
@@ -1547,8 +1553,9 @@ class Scope:
             return -value if head == b"-" else value
         if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
-            if decl is not None and self.bound and key_of(decl) in self.bound:
-                return self.bound[key_of(decl)]
+            turn = None if decl is None else self._turn(decl)
+            if turn is not None:
+                return turn
             if decl is None or self.is_parameter(decl):
                 return None
             value = self.variable(decl)

@@ -16,6 +16,7 @@ from __future__ import annotations
 import ast
 import dataclasses
 import re
+import sys
 from collections.abc import Callable
 
 from ... import diagnostics as diag
@@ -1237,14 +1238,13 @@ class Walker:
         class makes the node (pepper_sensors_py's camera.py builds PepperCam, a NaoqiCam
         of naoqi_sensors_py's module ``naoqi_sensors``, which calls init_node and reads
         the camera's parameters)."""
-        if self.rosname is None and not self.names and any(
+        no_node = self.rosname is None and not self.names
+        if no_node and any(
                 m is not None and m.client_version for m in self.loader.modules.values()):
             for cls, where in self._classes_elsewhere.items():
                 self.diagnostics.append(diag.make("PY_NODE_UNSEEN", where, cls=cls,
                                                   module=cls.split(".", 1)[0]))
-        if self.rosname is None and not self.names and not self._ros_init \
-                and not self._gui_plugin \
-                and not self.calls:
+        if no_node and not self._ros_init and not self._gui_plugin and not self.calls:
             return
         for cls, where in self._classes_said.items():
             self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,
@@ -1703,8 +1703,6 @@ def _foreign(module: str) -> bool:
     """Whether the top-level module ``module``, which the workspace does not hold, may be
     ROS code: not the standard library's, a client library or module the API tables
     read, nor a package known to make no ROS call (``NOT_CLIENTS``)."""
-    import sys
-
     from . import NOT_CLIENTS  # (the package reads this module)
 
     return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
