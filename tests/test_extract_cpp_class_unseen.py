@@ -597,12 +597,15 @@ SMOOTHER = """
     """
 
 
-def _smoother(write_tree: Any, library: str, *deps: str) -> Any:
+def _smoother(write_tree: Any, library: str, *deps: str, header: str = "") -> Any:
+    code = SMOOTHER.replace("LIBRARY_OBJECT", library)
+    if header:  # in place of slam_lib's, so that the lines stay where they are
+        code = code.replace("#include <slam_lib/graph.h>", f"#include <{header}>")
     model = _model(write_tree, {
         "src/smoother/package.xml": _depends("smoother", "roscpp", *deps),
         "src/smoother/CMakeLists.txt":
             "project(smoother)\nadd_executable(smoother src/smoother.cpp)\n",
-        "src/smoother/src/smoother.cpp": SMOOTHER.replace("LIBRARY_OBJECT", library),
+        "src/smoother/src/smoother.cpp": code,
     })
     node = next(n for p in model.packages for n in p.nodes if n.name == "smoother/smoother")
     node.said = [d for d in model.diagnostics if d.code == "CPP_CLASS_UNSEEN"]
@@ -789,9 +792,11 @@ def test_a_class_of_a_ros_package_known_to_make_no_calls_leaves_it_complete(
                      "gtsam", "octomap", "costmap_2d", "joint_limits_interface")
     assert node.completeness == "complete", node.completeness_reasons
     assert node.said == []
+    # (as the code includes its header: our stand-in of ROS 1 costmap_2d declares it,
+    # its code not read)
     node = _smoother(write_tree, "costmap_2d::Costmap2D grid;\n"
                      "costmap_2d::Costmap2DROS map(\"costmap\", grid);",
-                     "gtsam", "octomap", "costmap_2d")
+                     "gtsam", "octomap", "costmap_2d", header="costmap_2d/costmap_2d_ros.h")
     assert node.completeness == "partial"
     assert [d.location.line for d in node.said] == [14], node.said
     assert any("costmap_2d::Costmap2DROS of ROS package costmap_2d" in r

@@ -994,3 +994,40 @@ def test_tf_conversions_eigen_functions_parse(tmp_path) -> None:
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING", "CPP_NAMES_DECLARED")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_numeric_limits_are_constant_expressions(tmp_path) -> None:
+    """igvc-software's UnrollingLayer keeps ``std::array<uint8_t,
+    std::numeric_limits<char>::max()>``: the limits were declared constexpr without a
+    value, so the member was an error, the class invalid, and every call of a base
+    method (``matchSize()`` beside its ROS calls) 'cannot initialize object parameter'."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <array>\n#include <cstdint>\n#include <limits>\n#include <ros/ros.h>\n"
+        "#include <std_msgs/Int8.h>\n"
+        "static_assert(std::numeric_limits<char>::max() == 127, \"char\");\n"
+        "static_assert(std::numeric_limits<int>::min() < 0, \"int\");\n"
+        "static_assert(std::numeric_limits<uint16_t>::max() == 65535, \"u16\");\n"
+        "static_assert(std::numeric_limits<double>::max() > 1e300, \"double\");\n"
+        "static_assert(std::numeric_limits<float>::infinity() > 1e38f, \"inf\");\n"
+        "struct Base { void size(); };\n"
+        "struct Table : Base {\n"
+        "  std::array<uint8_t, std::numeric_limits<char>::max()> translator;\n"
+        "  ros::Publisher pub;\n"
+        "  void start(ros::NodeHandle& nh);\n"
+        "};\n"
+        "void Table::start(ros::NodeHandle& nh) {\n"
+        "  size();\n"
+        "  pub = nh.advertise<std_msgs::Int8>(\"cost\", 1);\n"
+        "}\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"table\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  Table t;\n"
+        "  t.start(nh);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "cost")]

@@ -70,9 +70,10 @@ int main(int argc, char** argv) {
 """
 
 
-def test_a_resolved_name_appended_holds_the_namespace(write_tree):
-    # resolveName gives a global name: after other text, the node's namespace comes
-    # with it (/robot/stereo/left/robot/image at run time), not known here
+def test_a_resolved_name_appended_is_unknown(write_tree):
+    # resolveName gives a global name, remapped: after other text, the node's namespace
+    # comes with it (/robot/stereo/left/robot/image at run time without a remap), and the
+    # instance's remap of image its own: the piece is not known here
     root = write_tree({
         "src/view/package.xml": package_xml("view"),
         "src/view/CMakeLists.txt": CMAKE,
@@ -84,4 +85,4 @@ def test_a_resolved_name_appended_holds_the_namespace(write_tree):
     })
     model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
     (node,) = model.nodes
-    assert [c.name for c in node.calls if c.kind == "subscribe"] == ["stereo/left/?/image"]
+    assert [c.name for c in node.calls if c.kind == "subscribe"] == ["stereo/left/?"]

@@ -257,7 +257,9 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
         if each.transport is not None:
             images.setdefault(each.location, []).append(each)
     for call in calls:
-        if call.argument:  # a command-line word the code reads, no ROS resource
+        if call.argument or call.resolved:
+            # a command-line word the code reads, a name roscpp resolves for it: no
+            # ROS resource
             continue
         for each in element_calls(call, instance, resources):  # list parameters
             if each.camera_of is not None:

@@ -183,6 +183,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                              c.get("host_named"), str) else None,
                          loads=c.get("loads") if isinstance(c.get("loads"), str) else None,
                          argument=c.get("argument") is True,
+                         resolved=c.get("resolved") is True,
                          **{name: c[name] for name in _OPTIONAL_TEXTS
                             if isinstance(c.get(name), str)})
 

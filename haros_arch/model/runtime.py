@@ -637,12 +637,16 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
         # the ``key:=value`` words its code reads as arguments (``PrimitiveCall.argument``)
         read = {c.name for c in instance.node.calls if c.argument} if (
             instance.node is not None) else set()
+        # the names its code has roscpp resolve and remap (``PrimitiveCall.resolved``)
+        resolves = {resolve(c.name, instance.namespace, instance.name)
+                    for c in instance.node.calls if c.resolved and UNKNOWN_MARK not in c.name
+                    } if instance.node is not None else set()
         for source, target in dict.fromkeys(instance.remaps):
             if not source or source.startswith("__"):
                 continue
             name = resolve(source, instance.namespace, instance.name)
             used = name in instance.remaps_applied or rules.get(name) in reached or (
-                source in read)
+                source in read) or name in resolves
             if instance.origin != "launch":
                 # a node a host makes in its process (nav2's costmaps) takes the
                 # process's remaps, given for the host: a use counts, a non-use does not

@@ -298,6 +298,12 @@ class PrimitiveCall:
     # literally): it makes no link; a launch file's ``name:=value`` (which roscpp also
     # takes for a remap) is given to the node for it, so it is a remap the node uses
     argument: bool = field(default=False, metadata={"optional": True})
+    # a ``read`` of no parameter but a name roscpp resolves and remaps for the code
+    # (a NodeHandle's ``resolveName(name)``, ``ros::names::resolve(name)``), which the code
+    # may make pieces of other names of: it makes no link; a launch file's remap of that
+    # name is one the node uses (people's face_detector remaps ``camera``, ``rgb_ns`` and
+    # ``image_topic``, each resolved and joined into one topic)
+    resolved: bool = field(default=False, metadata={"optional": True})
 
 
 def declared_defaults(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:

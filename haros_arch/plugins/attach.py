@@ -304,10 +304,34 @@ def _base_sources(node: Node, ros_version: int, workspace: Workspace) -> Sources
     if not node.plugin_class or not node.sources:
         return None
     for base in direct_bases(node.plugin_class, node.sources, workspace):
-        row = sources_of(base, ros_version)
-        if row is not None:
-            return row
+        for name in dict.fromkeys([base, *_qualified(base, node, workspace)]):
+            row = sources_of(name, ros_version)
+            if row is not None:
+                return row
     return None
+
+
+def _qualified(base: str, node: Node, workspace: Workspace) -> list[str]:
+    """The names a base class written in a workspace plugin class's declaration may
+    have: itself when written with a namespace, else itself under each namespace C++
+    looks it up in, those that enclose the class innermost first (fetch's
+    ``costmap_2d::FetchDepthLayer : public VoxelLayer`` derives from
+    ``costmap_2d::VoxelLayer``), then those the class's files bring in with ``using
+    namespace``."""
+    if "::" in _untemplated(base).strip().lstrip(":"):
+        return [base]
+    parts = _untemplated(node.plugin_class or "").strip().lstrip(":").split("::")[:-1]
+    spaces = ["::".join(parts[:depth]) for depth in range(len(parts), 0, -1)]
+    for text in _class_texts(node, workspace):
+        for found in _USING_NAMESPACE.finditer(text):
+            space = re.sub(r"\s+", "", found.group(1)).lstrip(":")
+            if space not in spaces:
+                spaces.append(space)
+    return [f"{space}::{base.strip()}" for space in spaces]
+
+
+# ``using namespace a::b;`` (the namespace's name, spaces and all)
+_USING_NAMESPACE = re.compile(r"\busing\s+namespace\s+((?:::)?\s*\w+(?:\s*::\s*\w+)*)\s*;")
 
 
 def _uncovered(loads: list[str], sites: set[str]) -> bool:
@@ -417,11 +441,10 @@ def _modelled_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
             if found is not None and found.model is not None:
                 return _base_code(found, runs, base, node, workspace)
             continue
-        if "::" not in base.strip(":"):
-            continue
-        found = _lookup(Choice("", base, node.location), index, workspace, models)
-        if found is not None and found is not node and found.model is not None:
-            return list(found.calls)
+        for name in _qualified(base, node, workspace):
+            found = _lookup(Choice("", name, node.location), index, workspace, models)
+            if found is not None and found is not node and found.model is not None:
+                return list(found.calls)
     return []
 
 

@@ -1906,7 +1906,7 @@ MAX_CLIENT_FILES = 400  # files of a package read to find where a class is defin
 
 
 def ros1_clients(path: str, workspace: Workspace, generated: str,
-                 read: list[str]) -> Callable[[str, str], str | None]:
+                 read: list[str]) -> Callable[..., str | None]:
     """The package, if any, whose class (qualified) may make ROS calls of its own in
     code a ROS 1 unit builds without reading it (``CallFinder._unseen_class``), for a
     class and the package named by its namespace's first part; when that part is no
@@ -1940,7 +1940,11 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
                                                  read)
         return found
 
-    def client(name: str, cls: str) -> str | None:
+    def client(name: str, cls: str, unread: bool = False) -> str | None:
+        if unread:
+            # a class our stand-ins declare without reading its code (HAROS_UNREAD:
+            # costmap_2d's Costmap2DROS): the package's, when the unit may include it
+            return name if name in declared else None
         if name in declared or name in workspace.packages:
             return name if one(name, cls) else None
         parts = cls.split("::")

@@ -161,6 +161,8 @@ class RosFunction:
     # (``PrimitiveCall.argument``); a name that holds it takes ``ROS_ARGUMENT`` + the
     # word's name as its ``name_param``
     argument: bool = False
+    # a name roscpp resolves and remaps for the code, no call (``PrimitiveCall.resolved``)
+    resolved: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -189,6 +191,13 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     # getROSArg(argc, argv, "robot"): the value of the program's ``robot:=...`` word
     ("ros", "getROSArg"): RosFunction("read", name_arg=2, on_handle=False,
                                       fixed_type="str", name_required=True, argument=True),
+    # a name resolved and remapped for the code (``handle.resolveName(name)`` in the
+    # handle's namespace, ``ros::names::resolve(name)`` in the node's): no call, but the
+    # remap of that name is one the node uses
+    (NODE_HANDLE, "resolveName"): RosFunction(
+        "read", name_required=True, call_site=False, resolved=True),
+    ("ros::names", "resolve"): RosFunction(
+        "read", on_handle=False, name_required=True, call_site=False, resolved=True),
     # parameters through a NodeHandle
     (NODE_HANDLE, "getParam"): _PARAM_READ,
     (NODE_HANDLE, "getParamCached"): _PARAM_READ,

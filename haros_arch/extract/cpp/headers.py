@@ -94,6 +94,10 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "filters/": "filters/filter_chain.h",
                       # ROS 1 laser_proc (its publisher of multi-echo scans)
                       "laser_proc/": "laser_proc/LaserTransport.h",
+                      # ROS 1 navigation's costmap and plugin interfaces, for the
+                      # layers, planners and recoveries outside the navigation stack
+                      "costmap_2d/": "costmap_2d/haros_costmap_2d.h",
+                      "nav_core/": "nav_core/haros_nav_core.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
                           "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d",

@@ -101,6 +101,24 @@ class SearchedName(str):
     call whose whole name it is reads the parameter searched for, ``searched``)."""
 
 
+class RemappedName(str):
+    """A name roscpp resolved and remapped (``ros::names::resolve(name)``, a handle's
+    ``resolveName(name)``, remapping as they do by default), written as resolved from
+    the handle: the graph resolves and remaps a whole name, and one it begins (the
+    call's prefix, ``names_prefix``), with the instance's remaps; a piece appended to
+    other text is the piece as remapped, which only the instance knows: unknown there
+    (``_appended``; people's face_detector builds ``camera + "/" + rgb_ns + "/" +
+    image_topic`` of three resolved names its launch file remaps)."""
+
+
+def _remapped(parts: Parts) -> Parts:
+    """``parts`` of a name roscpp resolved and remapped, as one ``RemappedName`` when
+    the text is known."""
+    if parts and all(type(p) is str for p in parts):
+        return (RemappedName("".join(parts)),)  # type: ignore[arg-type]
+    return parts
+
+
 class ProgramArgument(str):
     """A part that is the process's ``position``-th command-line argument (``argv[1]`` of
     ``main``): unknown to ``render``; a call whose name has it as its one unknown run
@@ -1133,6 +1151,10 @@ class Scope:
         nh.resolveName("image")``, ``stereo/left/?/image``); it is taken as written only
         where it begins a call's name (``names_prefix``)."""
         value = self.string(cursor, depth + 1)
+        if any(isinstance(part, RemappedName) for part in value):
+            # a name roscpp resolved and remapped, appended to other text: the piece
+            # the instance's remaps give it, not known here
+            return tuple(None if isinstance(part, RemappedName) else part for part in value)
         held = strip(cursor)
         if held.kind == CursorKind.DECL_REF_EXPR and held.referenced is not None:
             held = strip(self.variable(held.referenced) or held)
@@ -1280,6 +1302,8 @@ class Scope:
             # ``suffix_(std::move(suffix))``: the value moved (autoware_utils'
             # PublishedTimePublisher keeps its topic suffix so)
             return self.string(args[0], depth + 1)
+        if args and _ros_names(target, "resolve") and not self._unremapped(args):
+            return _remapped(self.string(args[0], depth + 1))
         if args and (_resolver(target) is not None or _ros_names(target, "resolve")
                      or _ros_names(target, "remap")):
             return self.string(args[0], depth + 1)
@@ -1288,7 +1312,8 @@ class Scope:
         if len(args) == 1 and _ros_names(target, "clean"):
             return _cleaned(self.string(args[0], depth + 1))
         if args and _handle_resolve(target):
-            return self._handle_resolved(call, args[0], depth)
+            resolved = self._handle_resolved(call, args[0], depth)
+            return resolved if self._unremapped(args) else _remapped(resolved)
         if (target.spelling == "getCameraInfoTopic" and len(args) == 1
                 and target.semantic_parent is not None
                 and target.semantic_parent.spelling == "image_transport"):
@@ -1324,6 +1349,11 @@ class Scope:
         values = {read(self.sites.scope(method), value)
                   for value, method in self.sites.returns(target) or ()}
         return values.pop() if len(values) == 1 else None
+
+    def _unremapped(self, args: list[Cursor]) -> bool:
+        """Whether roscpp's ``resolve(name, remap)`` / ``resolveName(name, remap)`` is
+        told not to remap (its second argument false)."""
+        return len(args) > 1 and self.boolean(args[1]) is False
 
     def _handle_resolved(self, call: Cursor, name: Cursor, depth: int) -> Parts:
         """``handle.resolveName(name)``: ``name`` in the namespace of the handle
@@ -1440,6 +1470,15 @@ class Scope:
         if cursor.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
             value = None if decl is None else self.variable(decl)
+            if value is None and depth == 0:
+                # a member or a variable written more than once: the name it holds,
+                # when that begins with a name roscpp resolved and remapped
+                # (face_detector's ``camera_ = nh_.resolveName("camera")``)
+                parts = self.string(cursor)
+                written = str(parts[0]) if parts and isinstance(
+                    parts[0], RemappedName) else ""
+                return None if not written or written.startswith(("/", "~")) else (
+                    written.rstrip("/"))
             return None if value is None else self.names_prefix(value, depth + 1)
         if cursor.kind != CursorKind.CALL_EXPR:
             return None

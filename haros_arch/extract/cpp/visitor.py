@@ -312,7 +312,7 @@ class CallFinder:
     def __init__(self, tu: TranslationUnit, source: dict[str, bytes],
                  owned: Callable[[str], bool], where: Callable[[Cursor], Location],
                  ros2: bool = False, declared: str | None = None,
-                 clients: Callable[[str, str], str | None] | None = None,
+                 clients: Callable[..., str | None] | None = None,
                  local: Callable[[str], bool] | None = None,
                  ros_class: Callable[[str], bool] | None = None) -> None:
         self.tu = tu
@@ -1522,6 +1522,13 @@ class CallFinder:
                 child.kind == CursorKind.CONSTRUCTOR for child in definition.get_children()
             ):
                 return None  # a class without constructors of its own runs no code
+        elif _unread(cls):
+            # a class our stand-ins declare only so that code using it parses, whose
+            # calls no row says (ROS 1 costmap_2d's Costmap2DROS): its package is the
+            # stand-in's, whose code is not read, when the unit may include it
+            package = name.split("::", 1)[0]
+            found = None if name in _API_CLASSES else self.clients(package, name, True)
+            return (name, found) if found else None
         else:
             return None
         if name in _API_CLASSES or qualified_name(row_class(cls)) in _API_CLASSES:
@@ -2190,6 +2197,8 @@ class CallFinder:
         sdf_parts = self._sdf_parts(namespace, unknown_parts) if (
             held is None and not self.ros2) else None
         for written, source in names:
+            if spec.resolved and "?" in written:
+                continue  # a name resolved for the code that is not known: nothing to tell
             # getName() is "~": only as the start of a name is it the node's own name
             name = _private(written[:1] + written[1:].replace("~", "?"))
             handle_namespace = None
@@ -2256,7 +2265,7 @@ class CallFinder:
                 name_self=isinstance(written, SelfName) and name.count("?") == 1,
                 name_below=written.base if isinstance(written, BelowName) else None,
                 loads=spec.loads, namespace_param=namespace_param,
-                argument=spec.argument))
+                argument=spec.argument, resolved=spec.resolved))
             if status is not None:
                 self._status_reads.append((status, self.calls[-1]))
             filled = strip(arg(spec.out_arg)) if spec.kind == "read" and not self.ros2 and (

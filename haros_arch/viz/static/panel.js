@@ -212,7 +212,9 @@ function packageView(model, app) {
         el('table', {class: 'calls'},
           el('tr', {}, el('th', {}, 'interface'), el('th', {}, 'name'), el('th', {}, 'type'), el('th', {}, 'where')),
           (node.calls || []).map(call => el('tr', {class: (call.conditions || []).length ? 'conditional' : ''},
-            el('td', {}, call.kind), el('td', {}, el('code', {}, wrappable(call.name))),
+            // a name roscpp resolves for the code, a command-line word it reads: no parameter
+            el('td', {}, call.resolved ? 'resolves' : call.argument ? 'argument' : call.kind),
+            el('td', {}, el('code', {}, wrappable(call.name))),
             el('td', {}, wrappable(call.type || '?')),
             el('td', {}, el('a', {href: '#', onclick: event => {
               event.preventDefault();

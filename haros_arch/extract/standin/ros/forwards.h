@@ -72,6 +72,10 @@ public:
   XmlRpcValue(double value);
   XmlRpcValue(const std::string& value);
   XmlRpcValue(const char* value);
+  XmlRpcValue(struct tm* value);
+  XmlRpcValue(void* value, int nBytes);
+  // a value parsed from XML text at *offset (range_sensor_layer's default topic list)
+  XmlRpcValue(const std::string& xml, int* offset);
   XmlRpcValue(const XmlRpcValue& rhs);
   ~XmlRpcValue();
   void clear();

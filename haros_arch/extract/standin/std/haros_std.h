@@ -1125,17 +1125,61 @@ template<class C> struct insert_iterator {
   template<class V> insert_iterator& operator=(const V& v);
 };
 template<class C, class I> insert_iterator<C> inserter(C& c, I it);
+// the limits' values as constants (an array sized by one: igvc's
+// ``std::array<uint8_t, std::numeric_limits<char>::max()>`` member), from the type's size
+// and signedness, or the compiler's floating-point macros
+template<class T, bool = __is_integral(T), bool = __is_floating_point(T)>
+struct haros_limits {
+  static constexpr T max() noexcept { return T(); }
+  static constexpr T min() noexcept { return T(); }
+  static constexpr T lowest() noexcept { return T(); }
+  static constexpr T epsilon() noexcept { return T(); }
+  static constexpr T infinity() noexcept { return T(); }
+  static constexpr T quiet_NaN() noexcept { return T(); }
+  static constexpr T denorm_min() noexcept { return T(); }
+};
+template<class T> struct haros_limits<T, true, false> {
+  static constexpr T max() noexcept {
+    return __is_signed(T) ? T((((unsigned long long)1) << (sizeof(T) * 8 - 1)) - 1)
+                          : T(~T(0));
+  }
+  static constexpr T min() noexcept { return __is_signed(T) ? T(-max() - 1) : T(0); }
+  static constexpr T lowest() noexcept { return min(); }
+  static constexpr T epsilon() noexcept { return T(0); }
+  static constexpr T infinity() noexcept { return T(0); }
+  static constexpr T quiet_NaN() noexcept { return T(0); }
+  static constexpr T denorm_min() noexcept { return T(0); }
+};
+template<class T> struct haros_limits<T, false, true> {
+  static constexpr bool single = sizeof(T) == sizeof(float);
+  static constexpr bool dual = sizeof(T) == sizeof(double);
+  static constexpr T max() noexcept {
+    return single ? __FLT_MAX__ : dual ? __DBL_MAX__ : __LDBL_MAX__;
+  }
+  static constexpr T min() noexcept {
+    return single ? __FLT_MIN__ : dual ? __DBL_MIN__ : __LDBL_MIN__;
+  }
+  static constexpr T lowest() noexcept { return -max(); }
+  static constexpr T epsilon() noexcept {
+    return single ? __FLT_EPSILON__ : dual ? __DBL_EPSILON__ : __LDBL_EPSILON__;
+  }
+  static constexpr T infinity() noexcept { return __builtin_huge_vall(); }
+  static constexpr T quiet_NaN() noexcept { return __builtin_nanl(""); }
+  static constexpr T denorm_min() noexcept {
+    return single ? __FLT_DENORM_MIN__ : dual ? __DBL_DENORM_MIN__ : __LDBL_DENORM_MIN__;
+  }
+};
 template<class T> struct numeric_limits {
   static constexpr bool is_specialized = true;
-  static constexpr T min() noexcept;
-  static constexpr T max() noexcept;
-  static constexpr T lowest() noexcept;
-  static constexpr T epsilon() noexcept;
-  static constexpr T infinity() noexcept;
-  static constexpr T quiet_NaN() noexcept;
-  static constexpr T signaling_NaN() noexcept;
-  static constexpr T denorm_min() noexcept;
-  static constexpr T round_error() noexcept;
+  static constexpr T min() noexcept { return haros_limits<T>::min(); }
+  static constexpr T max() noexcept { return haros_limits<T>::max(); }
+  static constexpr T lowest() noexcept { return haros_limits<T>::lowest(); }
+  static constexpr T epsilon() noexcept { return haros_limits<T>::epsilon(); }
+  static constexpr T infinity() noexcept { return haros_limits<T>::infinity(); }
+  static constexpr T quiet_NaN() noexcept { return haros_limits<T>::quiet_NaN(); }
+  static constexpr T signaling_NaN() noexcept { return haros_limits<T>::quiet_NaN(); }
+  static constexpr T denorm_min() noexcept { return haros_limits<T>::denorm_min(); }
+  static constexpr T round_error() noexcept { return T(); }
   static constexpr bool is_signed = true;
   static constexpr bool is_integer = false;
   static constexpr bool is_exact = false;
