@@ -1031,3 +1031,47 @@ def test_numeric_limits_are_constant_expressions(tmp_path) -> None:
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "cost")]
+
+
+def test_a_set_erases_by_position(tmp_path) -> None:
+    """people's leg_detector erases a multiset's element by its iterator
+    (``matches.erase(matched_iter)``): the stand-in's set erased only by key."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <set>\n"
+        "void f(std::multiset<int>& s, std::set<double>& d) {\n"
+        "  std::multiset<int>::iterator it = s.find(3);\n"
+        "  s.erase(it);\n  s.erase(s.begin(), s.end());\n  s.erase(4);\n"
+        "  std::set<double>::iterator low = d.lower_bound(1.0);\n"
+        "  d.erase(low, d.upper_bound(2.0));\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
+
+
+def test_a_roscpp_header_without_a_file_of_ours_stands_in_as_ros_h(tmp_path) -> None:
+    """gazebo_plugins, fuse, amcl, VINS-Mono include roscpp headers our stand-ins have no
+    file for (``ros/advertise_options.h``, ``ros/assert.h``,
+    ``ros/callback_queue_interface.h``): each was an empty stand-in and said missing;
+    it now brings the API our ``ros/ros.h`` declares."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/node_handle.h>\n#include <ros/advertise_options.h>\n"
+        "#include <ros/assert.h>\n#include <ros/callback_queue_interface.h>\n"
+        "#include <std_msgs/Int8.h>\n"
+        "#include <ros/init.h>\n#include <ros/callback_queue.h>\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"level\");\n  ros::NodeHandle nh;\n"
+        "  ros::CallbackQueueInterface* queue = nh.getCallbackQueue();\n"
+        "  ROS_ASSERT(queue != nullptr);\n"
+        "  ros::AdvertiseOptions ops = ros::AdvertiseOptions::create<std_msgs::Int8>(\n"
+        "      \"level\", 1, ros::SubscriberStatusCallback(), ros::SubscriberStatusCallback(),\n"
+        "      ros::VoidConstPtr(), queue);\n"
+        "  ros::Publisher pub = nh.advertise(ops);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "level")]

@@ -217,3 +217,22 @@ def test_unknown_users_takes_readers_alone_as_its_side(model):
     for side in ("'setters'", "'writers'"):
         with pytest.raises(query.QueryTypeError, match="can only be 'readers'"):
             query.search(text.format(side=", " + side), scope)
+
+
+def test_similar_to_takes_a_nested_key_as_one_name_of_the_same_words():
+    """YOLOX-ROS' launch file sets ``onnxruntime/use_cuda`` (a key nested in a
+    namespace); its node declares ``onnxruntime_use_cuda``. The last segments alone
+    (``use_cuda``) are far apart; the last two, spelt as words, are the same. ROS 2's
+    dotted ``onnxruntime.use_cuda`` is the same words too."""
+    from haros_arch.model.runtime import Parameter
+    from haros_arch.query.absence import similar_to
+
+    read = [Parameter(name=n) for n in ("/yolox/onnxruntime_use_cuda", "/yolox/model_path",
+                                        "/yolox/onnxruntime.use_cuda", "/yolox/use_gpu")]
+    found = similar_to(lambda _n: None, Parameter(name="/yolox/onnxruntime/use_cuda"), read)
+    assert [p.name for p in found] == ["/yolox/onnxruntime.use_cuda",
+                                       "/yolox/onnxruntime_use_cuda"]
+    # and the other way round: the flat key set, the nested one read
+    nested = [Parameter(name="/yolox/onnxruntime/use_cuda"), Parameter(name="/yolox/x/y")]
+    found = similar_to(lambda _n: None, Parameter(name="/yolox/onnxruntime_use_cuda"), nested)
+    assert [p.name for p in found] == ["/yolox/onnxruntime/use_cuda"]

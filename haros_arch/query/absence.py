@@ -333,7 +333,8 @@ _Index = tuple[dict[tuple[int, int, str], list[int]], list[str], list[frozenset[
 _INDEXES: OrderedDict[int, tuple[Any, _Index]] = OrderedDict()
 _KEEP_INDEXES = 16
 # items' places by their names' spelling (``similar_to``), kept as the indexes are
-_SPELLINGS: OrderedDict[int, tuple[Any, dict[str, list[int]]]] = OrderedDict()
+_SPELLINGS: OrderedDict[int, tuple[Any, dict[str, list[int]], dict[str, list[int]]]] = (
+    OrderedDict())
 
 
 def _own(item: Any) -> str | None:
@@ -414,15 +415,30 @@ def masks(word: str) -> dict[str, int]:
 
 
 def spelling(name: str) -> str:
-    """A name as its words are, whatever their spelling: lower case, without ``_`` and
-    ``-`` (``configFilePath_``, ``config_file_path`` and ``config-file-path`` alike)."""
-    return name.lower().replace("_", "").replace("-", "")
+    """A name as its words are, whatever their spelling: lower case, without ``_``,
+    ``-`` and ``.`` (``configFilePath_``, ``config_file_path`` and ``config-file-path``
+    alike; ROS 2's ``onnxruntime.use_cuda`` beside ``onnxruntime_use_cuda``)."""
+    return name.lower().replace("_", "").replace("-", "").replace(".", "")
+
+
+def _tail(item: Any) -> str | None:
+    """A resource's or link's last two name segments as one word (``/yolox/onnxruntime/
+    use_cuda``: ``onnxruntimeuse_cuda``), spelt as ``spelling`` does: a key nested in a
+    namespace where the code reads one flat key of the same words; None for a plain
+    name or one of one segment."""
+    if not isinstance(item, Link | Resource):
+        return None
+    parts = [p for p in item.rosname.full.split("/") if p]
+    return spelling("".join(parts[-2:])) if len(parts) >= 3 else None
 
 
 def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
     """The items whose own name equals ``word``'s or is within edit distance 2 of it, or
     is spelt with the same words another way (``spelling``: grid_map_pcl's launch file
-    sets ``configFilePath_``, its node reads ``config_file_path``)."""
+    sets ``configFilePath_``, its node reads ``config_file_path``), or whose last two
+    segments are one's own name spelt so (YOLOX-ROS' launch file sets
+    ``onnxruntime/use_cuda``, its node declares ``onnxruntime_use_cuda``)."""
+    tail = _tail(word)
     word = _own(word)
     if word is None or not isinstance(items, list):
         raise QueryTypeError("similar_to() takes a name (or a resource or link) and a list")
@@ -430,14 +446,20 @@ def similar_to(charge: Charge, word: Any, items: Any) -> list[Any]:
     spelt = _SPELLINGS.get(id(items))
     if spelt is None or spelt[0] is not items:
         by_spelling: dict[str, list[int]] = {}
+        by_tail: dict[str, list[int]] = {}
         for place, own in enumerate(owns):
             by_spelling.setdefault(spelling(own), []).append(place)
+            two = _tail(items[place])
+            if two is not None:
+                by_tail.setdefault(two, []).append(place)
         charge(len(owns))
-        spelt = (items, by_spelling)
+        spelt = (items, by_spelling, by_tail)
         _SPELLINGS[id(items)] = spelt
         while len(_SPELLINGS) > _KEEP_INDEXES:
             _SPELLINGS.popitem(last=False)
-    alike = set(spelt[1].get(spelling(word), ()))
+    alike = set(spelt[1].get(spelling(word), ())) | set(spelt[2].get(spelling(word), ()))
+    if tail is not None:
+        alike.update(spelt[1].get(tail, ()))
     places: set[int] = set()
     for length in range(max(0, len(word) - MAX_DISTANCE), len(word) + MAX_DISTANCE + 1):
         cut = _bounds(length)

@@ -141,6 +141,9 @@ UMBRELLAS = {
     "diagnostic_updater/": "diagnostic_updater/diagnostic_updater.h",
     "camera_info_manager/": "camera_info_manager/camera_info_manager.h",
     "bondcpp/": "bondcpp/bond.hpp",
+    # roscpp's headers we have no file for (``ros/assert.h``, ``ros/advertise_options.h``,
+    # ``ros/transport_hints.h``, ...): the API our ``ros/ros.h`` declares
+    "ros/": "ros/ros.h",
     "xmlrpcpp/": "xmlrpcpp/XmlRpc.h",  # roscpp's XmlRpcValue, XmlRpcException
     # and its headers by their bare names, <XmlRpcValue.h>, <XmlRpc.h>: xmlrpcpp exports
     # its include/xmlrpcpp folder too (cob_bms_driver, cob_scan_unifier)

@@ -104,6 +104,7 @@ public:
   bool ok() const;
   void shutdown();
   void setCallbackQueue(CallbackQueueInterface* queue);
+  CallbackQueueInterface* getCallbackQueue() const;
 
   // topics
   template<class M>

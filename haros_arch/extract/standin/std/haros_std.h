@@ -892,8 +892,18 @@ public:
   template<class It> void insert(It first, It last);
   template<class... Args> pair<iterator, bool> emplace(Args&&... args);
   size_t erase(const K& k);
+  // by position too (leg_detector's ``matches.erase(matched_iter)`` of a multiset), for
+  // an iterator alone: a value the parse declared permissively (``haros_any``, which
+  // converts to anything) is a key, as before (fuse's ``set.erase(uuid)``)
+  template<class It, class = typename enable_if<is_same<It, const_iterator>::value>::type>
+  iterator erase(It position);
+  iterator erase(const_iterator first, const_iterator last);
+  iterator lower_bound(const K& k) const;
+  iterator upper_bound(const K& k) const;
   iterator begin() const;
   iterator end() const;
+  iterator cbegin() const;
+  iterator cend() const;
 };
 template<class K, class C, class A> bool operator==(const set<K, C, A>& a, const set<K, C, A>& b);
 template<class K, class C, class A> bool operator!=(const set<K, C, A>& a, const set<K, C, A>& b);
