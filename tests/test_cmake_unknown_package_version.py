@@ -132,3 +132,29 @@ def test_a_text_test_of_what_catkin_found_is_undecided():
         """)
     assert list(conditions(it)) == ["compare", "linked"]
     assert len(conditions(it)["compare"]) == 1 and conditions(it)["linked"] == []
+
+
+def test_the_compiler_s_version_and_identity_are_not_known():
+    """jsk_perception builds its DualFisheyeToPanorama nodelet only under a test of the
+    compiler's version, OpenCV's and CMake's major version: the compiler's version read
+    as empty decided it false, the nodelet's source was left out of the library, and the
+    exported class had no code: 'complete' with no call, 13 false parameter-set-not-read
+    warnings. CMake's major version is 3 in every ROS distribution."""
+    it = run("""
+        find_package(OpenCV REQUIRED)
+        if("${CMAKE_CXX_COMPILER_VERSION}" VERSION_GREATER "7.0" AND
+           "${OpenCV_VERSION}" VERSION_GREATER "2.9.9" AND
+           "${CMAKE_MAJOR_VERSION}" VERSION_GREATER "2")
+          add_executable(stitcher a.cpp)
+        endif()
+        if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+          add_executable(clang_only a.cpp)
+        endif()
+        if("${CMAKE_MAJOR_VERSION}" VERSION_LESS "3")
+          add_executable(cmake2 a.cpp)
+        endif()
+        """)
+    found = conditions(it)
+    assert sorted(found) == ["clang_only", "stitcher"]
+    assert "CMAKE_CXX_COMPILER_VERSION" in found["stitcher"][0]
+    assert "CMAKE_CXX_COMPILER_ID" in found["clang_only"][0]

@@ -491,6 +491,13 @@ def _standalone_names(classes: list[Node], it: Interpreter, files: PackageFiles)
             continue
         for args, code in it.foreign_calls:
             if node.executable not in args:
+                # a call that names the class otherwise (a lookup name the plugin
+                # description has since changed: jsk_pcl_ros_utils' ``"jsk_pcl/
+                # CloudOnPlane"``, described as ``jsk_pcl_utils/CloudOnPlane``) still
+                # builds the file that exports it into the library
+                node.sources.extend(relative for relative in map(files.relpath, code)
+                                    if relative not in node.sources
+                                    and _exports(relative, node.plugin_class, files))
                 continue
             node.aliases.extend(
                 a for a in dict.fromkeys(args) if a != node.executable
@@ -498,6 +505,14 @@ def _standalone_names(classes: list[Node], it: Interpreter, files: PackageFiles)
                 and a not in it.targets and a not in node.aliases)
             node.sources.extend(relative for relative in map(files.relpath, code)
                                 if relative not in node.sources)
+
+
+def _exports(source: str, cls: str | None, files: PackageFiles) -> bool:
+    """Whether the package's file ``source`` exports the plugin class ``cls``."""
+    if not cls:
+        return False
+    return cls.lstrip(":") in {name for name, _ in plugins.exported_classes(
+        os.path.join(files.root, source), files)}
 
 
 # a word that may name a program: no path, no ``::`` (C/C++ files left out by suffix)

@@ -64,6 +64,11 @@ Allowed = dict[str, set[str | None]]
 Locator = Callable[[str, int, int], Location]
 
 
+# CMake's variables of the compiler it finds at configure time: not known here
+_TOOLCHAIN = frozenset({
+    f"CMAKE_{lang}_COMPILER_{what}" for lang in ("C", "CXX") for what in ("VERSION", "ID")})
+
+
 @dataclass
 class Definition:
     kind: str  # "macro" | "function"
@@ -189,7 +194,11 @@ class Interpreter:
         # variables computed from such a value (``string(REGEX MATCH "^[0-9]+" MAJOR
         # "${rclcpp_VERSION}")``, or from another of them): not known either, so a test
         # that reads one is not decided (``test_arguments``)
-        self.from_found: set[str] = set()
+        # ... and so are the compiler's version and identity, which CMake finds at
+        # configure time (jsk_perception builds DualFisheyeToPanorama only under
+        # ``if("${CMAKE_CXX_COMPILER_VERSION}" VERSION_GREATER "7.0" AND ...)``: read as
+        # empty, the test was decided false and the nodelet's code left out)
+        self.from_found: set[str] = set(_TOOLCHAIN)
         self._deriving = 0  # > 0: what is set now is computed from such a value
         # variables written on some paths through if()s the reading cannot decide and not
         # on others, or to different values: each path's value (None: not set), the
@@ -231,7 +240,9 @@ class Interpreter:
                       "CMAKE_BINARY_DIR": BINARY_ROOT, "PROJECT_BINARY_DIR": BINARY_ROOT,
                       # a Linux build, as ROS's tier-1 platforms
                       "UNIX": "1", "WIN32": "", "APPLE": "", "MSVC": "", "ANDROID": "",
-                      "CMAKE_SYSTEM_NAME": "Linux", "CMAKE_HOST_UNIX": "1"})
+                      "CMAKE_SYSTEM_NAME": "Linux", "CMAKE_HOST_UNIX": "1",
+                      # CMake 3, as every ROS distribution's (kinetic's 3.5 on)
+                      "CMAKE_MAJOR_VERSION": "3"})
 
     # -- scopes ---------------------------------------------------------------
     def get(self, name: str) -> str | None:

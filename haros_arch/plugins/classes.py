@@ -452,8 +452,10 @@ def narrow(sources: list[str], cls: str, workspace: Files) -> list[str]:
             # built there (ouster_ros's OusterPcap, whose source only BUILD_PCAP adds):
             # no source, the class's interface unknown (not the helpers' calls)
             return []
-        kept = helpers
-        return kept if kept else sources
+        # (a list of its own: each class's node extends its sources, ``cmake.
+        # _standalone_names``; the library's list shared by its nodelets gave every one
+        # of jsk_pcl_ros_utils' 49 nodelets each other's code)
+        return list(helpers or sources)
     used = set(named_helpers(own, helpers, workspace))
     return [s for s in sources if s in own or s in used]
 

@@ -666,6 +666,49 @@ NAV2: dict[tuple[str, str], RosFunction] = {
 # ``getParam(name, value)`` declares ``<prefix>.filterN.params.<name>`` with its type's
 # default (``?.`` until the chain names the filter). MultiChannelFilterChain's take the
 # number of channels first.
+# jsk_common's jsk_topic_tools as its stand-in (``standin/fallback/jsk_topic_tools``:
+# installed, not in the workspace) describes it (jsk_common bfa8d0db): a nodelet's
+# ``ConnectionBasedNodelet::onInit()`` reads three private parameters (and
+# ``~use_multithread_callback`` through ros::param); ``DiagnosticNodelet::onInit()`` runs
+# it, then reads ``~vital_rate``, ``~use_warn`` and ``/diagnostic_nodelet/use_warn`` and
+# publishes diagnostics on ``/diagnostics`` through its updater. ``readVectorParameter(nh,
+# name, result)`` reads ``name`` on the handle given, typed by ``result``. Its
+# ``advertise<T>(nh, topic, queue[, latch])``, ``advertiseImage(nh, topic, queue)`` and
+# ``advertiseCamera(nh, topic, queue)`` advertise on the handle given (an image through
+# image_transport), having read ``latch`` there.
+_JSK_CONNECTION: tuple[Sibling, ...] = (
+    ("read", "verbose_connection", "bool"), ("read", "no_warn_on_init_post_process", "bool"),
+    ("read", "use_multithread_callback", "bool"))
+_JSK_LATCH: tuple[Sibling, ...] = (("read", "latch", "bool"),)
+JSK: dict[tuple[str, str], RosFunction] = {
+    ("jsk_topic_tools::ConnectionBasedNodelet", "onInit"): RosFunction(
+        "read", fixed_name="always_subscribe", fixed_type="bool", on_handle=False,
+        handle_default="~", call_site=False, library_default=True, standin_only=True,
+        siblings=_JSK_CONNECTION),
+    ("jsk_topic_tools::DiagnosticNodelet", "onInit"): RosFunction(
+        "read", fixed_name="always_subscribe", fixed_type="bool", on_handle=False,
+        handle_default="~", call_site=False, library_default=True, standin_only=True,
+        siblings=(*_JSK_CONNECTION, ("read", "vital_rate", "double"),
+                  ("read", "use_warn", "bool"),
+                  ("read", "/diagnostic_nodelet/use_warn", "bool"),
+                  ("publish", "/diagnostics", "diagnostic_msgs/DiagnosticArray"))),
+    ("jsk_topic_tools::ConnectionBasedNodelet", "advertise"): RosFunction(
+        "publish", type_from=("template",), name_arg=1, queue_arg=2, latch_arg=3,
+        on_handle=False, handle_arg=0, library_default=True, standin_only=True,
+        siblings=_JSK_LATCH),
+    ("jsk_topic_tools::ConnectionBasedNodelet", "advertiseImage"): RosFunction(
+        "publish", fixed_type=_IMAGE, name_arg=1, name_candidates=(1, 2), queue_arg=2,
+        on_handle=False, handle_arg=0, transport="*", library_default=True,
+        standin_only=True, siblings=_JSK_LATCH),
+    ("jsk_topic_tools::ConnectionBasedNodelet", "advertiseCamera"): RosFunction(
+        "publish", fixed_type=_IMAGE, name_arg=1, name_candidates=(1, 2), queue_arg=2,
+        on_handle=False, handle_arg=0, transport="*", library_default=True,
+        standin_only=True, siblings=(*_CAMERA_INFO, *_JSK_LATCH)),
+    # (it reads the parameter only when it is set: an optional read)
+    ("jsk_topic_tools", "readVectorParameter"): RosFunction(
+        "read", name_arg=1, type_from=("value",), type_arg=2, out_arg=2, on_handle=False,
+        handle_arg=0, name_required=True, library_default=True, standin_only=True),
+}
 FILTERS_TAG = "filters"
 
 
@@ -900,7 +943,7 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
-                                            **JOINT_LIMITS_INTERFACE, **PLUGINLIB}
+                                            **JOINT_LIMITS_INTERFACE, **PLUGINLIB, **JSK}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

@@ -3911,12 +3911,39 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
     cls = _dependent_class(call)
     if cls is None:
-        return None
+        # a class template of the API whose arguments depend on the template's parameters
+        # (jsk_pcl_ros' ColorFilter<Comparison, Config> builds
+        # ``make_shared<dynamic_reconfigure::Server<Config>>(*pnh_)``): its row, the
+        # arguments not known
+        template = _dependent_template(call)
+        spec = api.ALL.get((qualified_name(template), template.spelling)) if (
+            template is not None) else None
+        return (spec, template) if template is not None and spec is not None and (
+            spec.fixed_name is not None) else None
     made = row_class(cls)
     spec = api.ALL.get((qualified_name(made), made.spelling))
     if spec is None or spec.fixed_name is None:
         return None
     return spec, made
+
+
+def _dependent_template(call: Cursor) -> Cursor | None:
+    """The class template ``T`` of ``make_shared<T<A...>>(args)`` (std's or boost's) left
+    unresolved in a template, its arguments depending on the template's parameters."""
+    children = list(call.get_children())
+    head = children[0] if children else None
+    if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
+        _recovered_name(call) not in FACTORY_NAMES
+    ):
+        return None
+    refs = list(head.get_children())
+    if not any(r.kind == CursorKind.NAMESPACE_REF and r.spelling in ("std", "boost")
+               for r in refs):
+        return None
+    templates = [r.referenced for r in refs if r.kind == CursorKind.TEMPLATE_REF
+                 and r.referenced is not None
+                 and r.referenced.kind == CursorKind.CLASS_TEMPLATE]
+    return templates[0] if len(templates) == 1 else None
 
 
 def _lost_initialisers(constructor: Cursor

@@ -48,6 +48,9 @@ public:
   template<class E> void signalMessage(const E& message);
   template<class C> Connection registerCallback(const C& callback);
   template<class C, class T> Connection registerCallback(const C& callback, T* object);
+  // a member function of one parameter, picked among overloads by that form (jsk's
+  // ``sub_input_.registerCallback(&Filter::filter, this)`` beside a two-input filter)
+  template<class T, class P> Connection registerCallback(void (T::*callback)(P), T* object);
   const std::string& getName() const;
   void setName(const std::string& name);
 };
@@ -74,6 +77,9 @@ public:
   const haros_filter_subscription& getSubscriber() const;
   template<class C> Connection registerCallback(const C& callback);
   template<class C, class T> Connection registerCallback(const C& callback, T* object);
+  // a member function of one parameter, picked among overloads by that form (jsk's
+  // ``sub_input_.registerCallback(&Filter::filter, this)`` beside a two-input filter)
+  template<class T, class P> Connection registerCallback(void (T::*callback)(P), T* object);
 };
 struct NullType {};
 template<class P> class Synchronizer;
