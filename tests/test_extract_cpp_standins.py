@@ -1075,3 +1075,31 @@ def test_a_roscpp_header_without_a_file_of_ours_stands_in_as_ros_h(tmp_path) -> 
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "level")]
+
+
+def test_vikit_get_param_reads_through_ros_param(tmp_path) -> None:
+    """uzh-rpg's SVO reads every parameter with rpg_vikit's ``vk::getParam<T>(name,
+    default)`` (another repository): its header was missing, the reads unseen and the
+    camera topic, a parameter's value, unknown."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        "#include <vikit/params_helper.h>\n"
+        "void cb(const std_msgs::String::ConstPtr& m) {}\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"svo\");\n  ros::NodeHandle nh;\n"
+        "  std::string topic(vk::getParam<std::string>(\"svo/cam_topic\", \"camera/image\"));\n"
+        "  bool markers = vk::getParam<bool>(\"svo/publish_markers\", true);\n"
+        "  double rx = vk::getParam<double>(\"svo/init_rx\");\n"
+        "  ros::Subscriber sub = nh.subscribe(topic, 5, cb);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_INCLUDE_MISSING")] == []
+    calls = {(c.kind, c.name, c.type, c.default, c.name_param) for c in result.calls}
+    assert ("read", "svo/cam_topic", "str", "camera/image", None) in calls
+    assert ("read", "svo/publish_markers", "bool", True, None) in calls
+    assert ("subscribe", "?", "std_msgs/String", None, "svo/cam_topic") in calls
+    (required,) = [c for c in result.calls if c.name == "svo/init_rx"]
+    assert (required.type, required.has_default) == ("double", False)

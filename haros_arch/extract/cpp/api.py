@@ -709,6 +709,16 @@ JSK: dict[tuple[str, str], RosFunction] = {
         "read", name_arg=1, type_from=("value",), type_arg=2, out_arg=2, on_handle=False,
         handle_arg=0, name_required=True, library_default=True, standin_only=True),
 }
+# rpg_vikit's params_helper.h (its stand-in, ``standin/fallback/vikit``): ``getParam<T>(name,
+# default)`` is ``ros::param::get(name, v)`` with that default, ``getParam<T>(name)``
+# without one, ``hasParam(name)`` ``ros::param::has``
+VIKIT: dict[tuple[str, str], RosFunction] = {
+    ("vk", "getParam"): RosFunction(
+        "read", type_from=("template-value", "value", "result"), type_arg=1, default_arg=1,
+        on_handle=False, name_required=True, standin_only=True),
+    ("vk", "hasParam"): RosFunction(
+        "read", on_handle=False, presence=True, name_required=True, standin_only=True),
+}
 FILTERS_TAG = "filters"
 
 
@@ -943,7 +953,8 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
-                                            **JOINT_LIMITS_INTERFACE, **PLUGINLIB, **JSK}
+                                            **JOINT_LIMITS_INTERFACE, **PLUGINLIB, **JSK,
+                                            **VIKIT}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

@@ -100,6 +100,8 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "nav_core/": "nav_core/haros_nav_core.h",
                       # jsk_common's nodelet bases (jsk_recognition's nodelets)
                       "jsk_topic_tools/": "jsk_topic_tools/haros_jsk_topic_tools.h",
+                      # rpg_vikit's parameter helpers (uzh-rpg's SVO)
+                      "vikit/": "vikit/haros_vikit.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
                           "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d",
