@@ -450,19 +450,11 @@ def _modelled_base(node: Node, index: Mapping[str, Node], workspace: Workspace,
 
 def _runs_as(base: str, node: Node, workspace: Workspace) -> RunsAs | None:
     """The ``RUNS_AS`` row of a base class as the derived class's declaration writes it:
-    qualified, or by its own name where the class's files name the row's namespace
-    (``using namespace nav2_behaviors;``, the namespace the class is declared in)."""
+    qualified, or by its own name in a namespace C++ looks it up in (``_qualified``:
+    ``using namespace nav2_behaviors;``, the namespace the class is declared in)."""
     name = _untemplated(base).strip().lstrip(":")
-    if name in RUNS_AS:
-        return RUNS_AS[name]
-    if "::" in name:
-        return None
-    for key, row in RUNS_AS.items():
-        space, own = key.rsplit("::", 1)
-        if own == name and any(re.search(rf"\bnamespace\s+{re.escape(space)}\b", text)
-                               for text in _class_texts(node, workspace)):
-            return row
-    return None
+    return next((RUNS_AS[each] for each in (name, *_qualified(name, node, workspace))
+                 if each in RUNS_AS), None)
 
 
 def _class_texts(node: Node, workspace: Workspace) -> list[str]:

@@ -1144,12 +1144,14 @@ class Scope:
         return left + right
 
     def _appended(self, cursor: Cursor, depth: int) -> Parts:
-        """The value of a string appended to another: a name roscpp resolved
-        (``NodeHandle::resolveName``, ``ros::names::resolve``, as written or held in a
-        local) is a global name there, the node's namespace (not known here) before it
-        (``_expanded``; image_view's stereo_view: ``stereo_ns + "/left/" +
-        nh.resolveName("image")``, ``stereo/left/?/image``); it is taken as written only
-        where it begins a call's name (``names_prefix``)."""
+        """The value of a string appended to another: a name roscpp resolved and remapped
+        (``NodeHandle::resolveName``, ``ros::names::resolve``: ``RemappedName``) is the
+        piece the instance's remaps give it, not known here (image_view's stereo_view:
+        ``stereo_ns + "/left/" + nh.resolveName("image")``, ``stereo/left/?``); one
+        resolved without remapping (``resolveName(name, false)``, as written or held in
+        a local) is a global name there, the node's namespace (not known here) before
+        it (``_expanded``). A resolved name is taken as written only where it begins a
+        call's name (``names_prefix``)."""
         value = self.string(cursor, depth + 1)
         if any(isinstance(part, RemappedName) for part in value):
             # a name roscpp resolved and remapped, appended to other text: the piece
