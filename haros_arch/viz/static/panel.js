@@ -215,7 +215,7 @@ function packageView(model, app) {
             // a name roscpp resolves for the code, a command-line word it reads: no parameter
             el('td', {}, call.resolved ? 'resolves' : call.argument ? 'argument' : call.kind),
             el('td', {}, el('code', {}, wrappable(call.name))),
-            el('td', {}, wrappable(call.type || '?')),
+            el('td', {}, call.resolved ? '' : wrappable(call.type || '?')),
             el('td', {}, el('a', {href: '#', onclick: event => {
               event.preventDefault();
               app.showPanel([el('div', {class: 'panel-kind'}, call.kind + ' call'), el('h2', {class: 'panel-title'}, call.name),
