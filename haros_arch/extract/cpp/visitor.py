@@ -3871,10 +3871,10 @@ def _status_read(spec: api.RosFunction, site: Cursor, count: int) -> Key | None:
     return key_of(site)
 
 
-def _dependent_class(call: Cursor) -> Cursor | None:
-    """The class ``C`` of ``std::make_shared<C>(args)`` (a factory of ``FACTORY_NAMES``,
-    of std or boost) that a template leaves unresolved because an argument depends on
-    its parameters, when ``C`` is a class, not a template."""
+def _factory_refs(call: Cursor) -> list[Cursor] | None:
+    """The references written in the name of ``std::make_shared<...>(args)`` (a factory
+    of ``FACTORY_NAMES``, of std or boost) that a template leaves unresolved because an
+    argument depends on its parameters; None for another call."""
     children = list(call.get_children())
     head = children[0] if children else None
     if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
@@ -3884,6 +3884,15 @@ def _dependent_class(call: Cursor) -> Cursor | None:
     refs = list(head.get_children())
     if not any(r.kind == CursorKind.NAMESPACE_REF and r.spelling in ("std", "boost")
                for r in refs):
+        return None
+    return refs
+
+
+def _dependent_class(call: Cursor) -> Cursor | None:
+    """The class ``C`` of such a ``make_shared<C>(args)`` (``_factory_refs``), when ``C``
+    is a class, not a template."""
+    refs = _factory_refs(call)
+    if refs is None:
         return None
     classes = [r.referenced for r in refs if r.kind == CursorKind.TYPE_REF
                and r.referenced is not None]
@@ -3910,17 +3919,13 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
     ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
     cls = _dependent_class(call)
-    if cls is None:
-        # a class template of the API whose arguments depend on the template's parameters
-        # (jsk_pcl_ros' ColorFilter<Comparison, Config> builds
-        # ``make_shared<dynamic_reconfigure::Server<Config>>(*pnh_)``): its row, the
-        # arguments not known
-        template = _dependent_template(call)
-        spec = api.ALL.get((qualified_name(template), template.spelling)) if (
-            template is not None) else None
-        return (spec, template) if template is not None and spec is not None and (
-            spec.fixed_name is not None) else None
-    made = row_class(cls)
+    # else a class template of the API whose arguments depend on the template's
+    # parameters (jsk_pcl_ros' ColorFilter<Comparison, Config> builds
+    # ``make_shared<dynamic_reconfigure::Server<Config>>(*pnh_)``): its row, the
+    # arguments not known
+    made = row_class(cls) if cls is not None else _dependent_template(call)
+    if made is None:
+        return None
     spec = api.ALL.get((qualified_name(made), made.spelling))
     if spec is None or spec.fixed_name is None:
         return None
@@ -3928,17 +3933,10 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
 
 
 def _dependent_template(call: Cursor) -> Cursor | None:
-    """The class template ``T`` of ``make_shared<T<A...>>(args)`` (std's or boost's) left
-    unresolved in a template, its arguments depending on the template's parameters."""
-    children = list(call.get_children())
-    head = children[0] if children else None
-    if head is None or head.kind != CursorKind.DECL_REF_EXPR or (
-        _recovered_name(call) not in FACTORY_NAMES
-    ):
-        return None
-    refs = list(head.get_children())
-    if not any(r.kind == CursorKind.NAMESPACE_REF and r.spelling in ("std", "boost")
-               for r in refs):
+    """The class template ``T`` of such a ``make_shared<T<A...>>(args)``
+    (``_factory_refs``), its arguments depending on the template's parameters."""
+    refs = _factory_refs(call)
+    if refs is None:
         return None
     templates = [r.referenced for r in refs if r.kind == CursorKind.TEMPLATE_REF
                  and r.referenced is not None
