@@ -1103,3 +1103,30 @@ def test_vikit_get_param_reads_through_ros_param(tmp_path) -> None:
     assert ("subscribe", "?", "std_msgs/String", None, "svo/cam_topic") in calls
     (required,) = [c for c in result.calls if c.name == "svo/init_rx"]
     assert (required.type, required.has_default) == ("double", False)
+
+
+def test_two_argument_math_of_mixed_types_is_not_ambiguous(tmp_path) -> None:
+    """autonomous_exploration_development_environment's terrainAnalysis takes
+    ``atan2(pointZ1 - minDyObsRelZ, dis1)`` of a double and a float: the stand-in had the
+    float and the double overloads and a template for integers only, so the call was
+    ambiguous and main, which makes every ROS call of the node, partial. The library
+    computes a mix of arithmetic types in the promoted type."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <math.h>\n#include <cmath>\n#include <ros/ros.h>\n"
+        "#include <std_msgs/Float32.h>\n"
+        "using namespace std;\n"
+        "double d = 1.0; float f = 2.0f; int i = 3;\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"m\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  float a = atan2(d - f, f);\n"
+        "  double b = std::atan2(f, i) + atan2(i, d) + atan2(f, f) + atan2(d, d);\n"
+        "  double c = atan2(i, i) + pow(f, 2) + hypot(f, d) + fmin(f, d);\n"
+        "  ros::Publisher p = nh.advertise<std_msgs::Float32>(\"out\", 1);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

@@ -143,7 +143,11 @@ template<class A, class B, class = typename enable_if<__is_integral(A) && __is_i
 double pow(A x, B y);
 template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
 double hypot(A x, B y);
-template<class A, class B, class = typename enable_if<__is_integral(A) && __is_integral(B)>::type>
+// and of two arithmetic types that are not both the same floating type: computed in the
+// promoted type, as the library's template (terrain_analysis' ``atan2(z - minZ, dis)`` of a
+// double and a float is no ambiguity between the float and the double overloads)
+template<class A, class B, class = typename enable_if<__is_arithmetic(A) && __is_arithmetic(B)
+  && !(__is_same(A, B) && __is_floating_point(A))>::type>
 double atan2(A y, B x);
 // <complex>: a point as a complex number (consai_ros2's geometry_tools.hpp keeps a
 // frame's center and rotation as std::complex<double> members)
