@@ -1519,3 +1519,36 @@ def test_a_standard_container_s_first_argument_in_capitals_is_a_type() -> None:
     assert rows(result) == [("publish", "out", "std_msgs/msg/String", 12)]
     assert "CPP_PARSE_ERROR" not in codes(result)
     assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
+def test_a_base_member_of_a_class_derived_from_a_declared_one(tmp_path) -> None:
+    """hector_quadrotor's pose estimation node derives from hector_pose_estimation's
+    PoseEstimationNode (its header missing) and reads the base's ``pose_estimation_``
+    and ``height_subscriber_`` in its methods; ROBOTIS-OP3's modules set their
+    framework base's ``module_name_``. Such a name is the base's: a member of the
+    permissive class, which a class derived from a declared one finds; the class that
+    derives from nothing declared still reads it as an error (no global of that name
+    shadows anything)."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        "#include <vendor_estimation/node.h>\n"
+        "class Node : public vendor::EstimationNode {\n"
+        " public:\n  bool init();\n  void cb(const std_msgs::String::ConstPtr& m);\n"
+        "  ros::Publisher pub_;\n};\n"
+        "bool Node::init() {\n"
+        "  ros::NodeHandle nh;\n"
+        "  height_subscriber_ = nh.subscribe(\"height\", 10, &Node::cb, this);\n"
+        "  pose_estimation_->reset();\n"
+        "  pub_ = nh.advertise<std_msgs::String>(\"pose\", 1);\n"
+        "  return true;\n}\n"
+        "struct Plain {\n  void run();\n};\n"
+        "void Plain::run() {\n  ros::NodeHandle nh;\n  counter_ = 2;\n"
+        "  nh.advertise<std_msgs::String>(\"plain\", 1);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    errors = [(d.location.line, d.message) for d in result.diagnostics
+              if d.code == "CPP_PARSE_ERROR"]
+    assert errors == [(22, "C++ error: use of undeclared identifier 'counter_'")]
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("subscribe", "height"), ("publish", "pose"), ("publish", "plain")]

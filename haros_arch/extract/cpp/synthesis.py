@@ -323,6 +323,39 @@ _ENUM_HEAD = re.compile(rb"\benum\b(?:\s+(?:class|struct)\b)?(?:\s+[A-Za-z_]\w*)
 _CASE_LITERAL = re.compile(rb"\bcase\s*\(?\s*(0[xX][0-9a-fA-F]+|\d+)[uUlL]*\s*\)?\s*:(?!:)")
 
 
+# a class's head up to its body: the name (after any export macro) and its base list
+_CLASS_HEAD = re.compile(
+    rb"\b(?:class|struct)\s+(?:[A-Za-z_]\w*\s+)*?([A-Za-z_]\w*)\s*(?:final\s*)?:(?!:)([^{;]*)\{")
+_ACCESS = re.compile(r"\b(?:public|protected|private|virtual)\b")
+
+
+def _class_heads(code: bytes) -> list[tuple[str, list[str]]]:
+    """The classes ``code`` defines with a base list, each with its bases' names as
+    written, without their template arguments (``Singleton<OpenCRModule>``:
+    ``Singleton``) or a leading ``::``."""
+    heads = []
+    for found in _CLASS_HEAD.finditer(code):
+        written = found.group(2).decode(errors="replace")
+        depth = 0
+        part: list[str] = []
+        parts: list[str] = []
+        for char in written:  # the commas between bases, not within template arguments
+            if char == "<":
+                depth += 1
+            elif char == ">":
+                depth -= 1
+            elif char == "," and depth == 0:
+                parts.append("".join(part))
+                part = []
+                continue
+            if depth == 0 and char != ">":
+                part.append(char)
+        parts.append("".join(part))
+        bases = [re.sub(r"\s+", "", _ACCESS.sub("", p)).removeprefix("::") for p in parts]
+        heads.append((found.group(1).decode(), [b for b in bases if b]))
+    return heads
+
+
 def _case_literals(text: bytes) -> set[int]:
     """The integers ``text`` writes in case labels (``_CASE_LITERAL``; a leading 0 is
     octal, as in C, and a number that is none is left out)."""
@@ -902,6 +935,8 @@ class Names:
         self.declaration_macros: set[str] = set()
         self._read: set[int] = set()  # the files whose using-directives were read
         self._texts: list[bytes] = []  # those files, code only (``code_only``)
+        # the classes they define with the bases written in their heads (``_CLASS_HEAD``)
+        self._heads: list[tuple[str, list[str]]] = []
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
         self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
@@ -917,6 +952,7 @@ class Names:
             if text is not None and id(text) not in self._read:
                 self._read.add(id(text))
                 self._texts.append(code_only(text))
+                self._heads.extend(_class_heads(self._texts[-1]))
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 # not ``using Base::Base;``: a class's inherited constructors
@@ -1151,6 +1187,12 @@ class Names:
             elif self._message(record) and name not in self.fields.get(record, ()):
                 self.fields.setdefault(record, set()).add(name)
                 self.count += 1
+            elif self._derives_from_declared(record.split("::")[-1]):
+                # a class of the code derived from a declared one, asked for a member it
+                # does not declare (ROBOTIS-OP3's ``OpenCRModule::getInstance()``, the
+                # static of its framework's ``Singleton<OpenCRModule>`` base): the
+                # base's, a member of the permissive class it derives from
+                self.members.add(name)
             return
         for pattern, use in _MESSAGES:
             match = pattern.match(message)
@@ -1265,6 +1307,12 @@ class Names:
                         # from one of its classes (mapviz's ``adjustSize()``, multires'
                         # ``centralWidget()`` in a QMainWindow) may be the base's
                         self.qt_members.add(written[-1])
+                if not called and self._derives_from_declared(None):
+                    # a variable a class derived from a declared one reads is often the
+                    # base's (ROBOTIS-OP3's modules set their framework base's
+                    # ``module_name_``): a member of the permissive class, which only
+                    # such a class (or a permissive value) finds, so nothing is shadowed
+                    self.members.add(written[-1])
                 return  # an unqualified function or variable: in a class, often a member
                 # clang could not find (an invalid base); declaring it would shadow it
             # but a C library's constant or prefixed function, whose header is missing
@@ -1398,6 +1446,15 @@ class Names:
         for part in qualified.split("::"):
             node = node.children[part]
         return node
+
+    def _derives_from_declared(self, name: str | None) -> bool:
+        """Whether a class the files read define (named ``name``; any when None) has a
+        base the parse did not know (a declared name, or the permissive class)."""
+        return any(
+            (name is None or head == name) and any(
+                self._synthesised(base) or self._class_path(base) is not None
+                for base in bases)
+            for head, bases in self._heads)
 
     def _synthesised(self, qualified: str) -> bool:
         if qualified == "haros_any":

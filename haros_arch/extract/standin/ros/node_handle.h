@@ -95,6 +95,13 @@ public:
   NodeHandle(const NodeHandle& parent, const std::string& ns);
   NodeHandle(const NodeHandle& parent, const std::string& ns, const M_string& remappings);
   NodeHandle(const NodeHandle& rhs);
+  // a namespace the parse knows only as a permissive value (``"~/" + name_``, name_ a
+  // member of a layer's base whose header is missing): the namespace, not a copy of a
+  // handle, which the value converts to as well (the construction was ambiguous); only
+  // for such a value (anything converts to the permissive class)
+  template <class T, class = typename std::enable_if<
+    __is_base_of(haros_any, typename std::decay<T>::type)>::type>
+  NodeHandle(T&& ns, const M_string& remappings = M_string());
   ~NodeHandle();
   NodeHandle& operator=(const NodeHandle& rhs);
 
