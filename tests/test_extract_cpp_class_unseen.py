@@ -843,3 +843,66 @@ def test_joint_limits_rosparam_reads_are_known(write_tree: Any) -> None:
         + [(limits + name, "bool") for name in (
             "has_position_limits", "angle_wraparound", "has_velocity_limits",
             "has_acceleration_limits", "has_jerk_limits", "has_effort_limits")])
+
+
+MANAGER = """
+    #include <ros/ros.h>
+    #include <std_msgs/String.h>
+    #include "robotis_controller/robotis_controller.h"
+    #include "robotis_framework_common/motion_module.h"
+    using namespace robotis_framework;
+
+    class WalkingModule : public robotis_framework::MotionModule,
+                          public robotis_framework::Singleton<WalkingModule> {
+     public:
+      void initialize(int cycle);
+      ros::Publisher status_;
+    };
+
+    void WalkingModule::initialize(int cycle) {
+      ros::NodeHandle nh;
+      module_name_ = "walking_module";
+      enable_ = false;
+      status_ = nh.advertise<std_msgs::String>("/robotis/status", 1);
+    }
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "op3_manager");
+      ros::NodeHandle nh;
+      RobotisController *controller = RobotisController::getInstance();
+      ros::Publisher pose = nh.advertise<std_msgs::String>("/robotis/base/ini_pose", 1);
+      controller->addMotionModule((MotionModule*) WalkingModule::getInstance());
+      WalkingModule::getInstance()->initialize(8);
+      ros::spin();
+    }
+    """
+
+
+def test_a_singleton_of_a_missing_ros_package_makes_it_partial(write_tree: Any) -> None:
+    """ROBOTIS-OP3's op3_manager reaches robotis_controller's RobotisController (its
+    header missing, in namespace robotis_framework) through the static
+    ``RobotisController::getInstance()``: that class's code, which serves
+    ``/robotis/set_present_ctrl_modules`` in the manager's process, is not read, so the
+    node is partial, said at the call (the package named after the class). Its own
+    modules derive from the framework's declared ``MotionModule`` and ``Singleton<T>``:
+    the base's ``module_name_`` and static ``getInstance()`` are members of the
+    permissive class, so the module's calls parse (they were errors in main and in the
+    module's method, the node partial for them instead)."""
+    model = _model(write_tree, {
+        "src/op3_manager/package.xml": _depends(
+            "op3_manager", "roscpp", "std_msgs", "robotis_controller",
+            "robotis_framework_common"),
+        "src/op3_manager/CMakeLists.txt": (
+            "project(op3_manager)\nadd_executable(op3_manager src/op3_manager.cpp)\n"),
+        "src/op3_manager/src/op3_manager.cpp": MANAGER,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "op3_manager/op3_manager")
+    assert node.completeness == "partial"
+    assert [r.split(": ", 1)[1] for r in node.completeness_reasons] == [
+        "RobotisController of ROS package robotis_controller is built here and its code "
+        "is not read"]
+    assert sorted(c.name for c in node.calls if c.kind == "publish") == [
+        "/robotis/base/ini_pose", "/robotis/status"]
+    errors = [d.message for d in model.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert errors == []

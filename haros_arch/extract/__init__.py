@@ -19,6 +19,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from .. import diagnostics as diag
+from ..ctext import code_only
 from ..diagnostics import Diagnostic
 from ..files import read_text
 from ..manifest import version_environment
@@ -369,10 +370,14 @@ def _constructed_here(said: Diagnostic, node: Node, workspace: Workspace) -> boo
     if not cls.isidentifier():
         return False
     member = cls if said.code == "CPP_NODE_PASSED" else r"~?\w+"
-    defines = re.compile(rf"\b{cls}\s*::\s*{member}\s*\(")
+    # a definition, its body or its initialisers after the parameters, not a call of a
+    # static member (ROBOTIS-OP3's ``RobotisController::getInstance();`` in main)
+    defines = re.compile(rf"\b{cls}\s*::\s*{member}\s*\([^;{{}}]*\)\s*"
+                         r"(?:(?:const|noexcept|override|final)\b\s*)*"
+                         r"(?:[{:]|=\s*(?:default|delete)\b)")
     for source in _paths(node, workspace):
         text, _ = read_text(source, workspace.location(source))
-        if text and defines.search(text):
+        if text and defines.search(code_only(text)):  # (not a comment's words)
             return True
     return False
 

@@ -1948,9 +1948,14 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
         if name in declared or name in workspace.packages:
             return name if one(name, cls) else None
         parts = cls.split("::")
-        if len(parts) < 3:
-            return None
-        named = sorted(d for d in declared if d.startswith(name + "_") and parts[1] in d)
+        named = sorted(d for d in declared if d.startswith(name + "_") and parts[1] in d) if (
+            len(parts) >= 3) else []
+        # or a dependency named after one of the class's names, as ROS packages often are
+        # after their main class (ROBOTIS-OP3's ``RobotisController``, of
+        # robotis_controller, in namespace robotis_framework: its singleton reached
+        # through ``RobotisController::getInstance()``, its header missing)
+        named += [snake for snake in (_snake(part) for part in parts)
+                  if snake in declared and snake != name and snake not in named]
         return next((d for d in named if one(d, cls)), None)
 
     return client
@@ -2011,6 +2016,11 @@ def _visible(package: Package, workspace: Workspace, read: list[str]) -> set[str
                 found.add(dep.name)
                 todo.append(dep.name)
     return found
+
+
+def _snake(name: str) -> str:
+    """``RobotisController``: ``robotis_controller``."""
+    return re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", name).lower()
 
 
 def _client(name: str, cls: str, declared: set[str], workspace: Workspace,

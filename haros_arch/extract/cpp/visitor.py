@@ -1454,7 +1454,20 @@ class CallFinder:
             if target is None:
                 return
             if target.kind == CursorKind.CONSTRUCTOR:
-                self._say_unseen(target.semantic_parent, node, False)
+                made = target.semantic_parent
+                outer = made.semantic_parent if made is not None else None
+                if outer is not None and outer.kind in (
+                    CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL
+                ) and made.location.file is not None and (
+                        made.location.file.name == self.declared) and (
+                        made.spelling[:1].islower()):
+                    # ``C::getInstance()`` of a class declared permissively: its static
+                    # member, which the parse reads as a nested class, gives an object
+                    # of C (a singleton, a factory): C's code runs here (a nested
+                    # class's own, ``MoveGroupInterface::Plan plan;``, is data)
+                    self._say_unseen(outer, node, True)
+                else:
+                    self._say_unseen(made, node, False)
             elif (qualified_name(target.semantic_parent), target.spelling) in api.FACTORIES:
                 made_cls = factory_made(node)
                 if made_cls is not None:
@@ -1506,7 +1519,8 @@ class CallFinder:
         if where is None:
             return None
         name = qualified_name(cls)
-        if not name or name in self._classes_said or "::" not in name:
+        if not name or name in self._classes_said or (
+                "::" not in name and where.name != self.declared):
             return None
         if where.name == self.declared:
             if not declared or cls.spelling == synthesis.ANY or cls.spelling.endswith("Ptr"):
