@@ -43,11 +43,15 @@ def test_a_lazy_nodelet_s_handles_and_publishers(write_tree) -> None:
     result = extract_cpp([str(root / "ex" / "src" / "filter.cpp")], scan([str(root)]),
                          cache_dir=None)
     # ``max_queue_size_`` is 3 until onInit reads ``~max_queue_size`` into it: the queue
-    # of ``~output`` is that parameter's value, not known here
+    # of ``~output`` is that parameter's value, not known here; NodeletLazy::onInit()
+    # reads its own three parameters (an API row: nodelet_core's nodelet_lazy.h)
     assert sorted((c.kind, c.name, c.type, c.queue_size, c.latch) for c in result.calls) == [
         ("publish", "status", "std_msgs/String", 1, True),
         ("publish", "~output", "sensor_msgs/PointCloud2", None, False),
+        ("read", "~lazy", "bool", None, False),
         ("read", "~max_queue_size", "int", None, False),
+        ("read", "~use_multithread_callback", "bool", None, False),
+        ("read", "~verbose_connection", "bool", None, False),
         ("subscribe", "~input", "sensor_msgs/PointCloud2", 1, False),
     ]
     assert [d for d in result.diagnostics if d.code in (

@@ -719,6 +719,25 @@ VIKIT: dict[tuple[str, str], RosFunction] = {
     ("vk", "hasParam"): RosFunction(
         "read", on_handle=False, presence=True, name_required=True, standin_only=True),
 }
+# nodelet_topic_tools' NodeletLazy::onInit() (nodelet_core c86c2cd0's nodelet_lazy.h): it
+# reads ``~use_multithread_callback`` through ros::param, then ``~lazy`` and
+# ``~verbose_connection`` on the private handle it makes; perception_pcl's
+# PCLNodelet::onInit() (2f70209f's pcl_nodelet.h) runs it and reads four private
+# parameters more. A nodelet that runs either (``PCLNodelet::onInit();``) reads them.
+_LAZY_INIT: tuple[Sibling, ...] = (("read", "lazy", "bool"),
+                                   ("read", "verbose_connection", "bool"))
+PCL_ROS: dict[tuple[str, str], RosFunction] = {
+    ("nodelet_topic_tools::NodeletLazy", "onInit"): RosFunction(
+        "read", fixed_name="use_multithread_callback", fixed_type="bool", on_handle=False,
+        handle_default="~", call_site=False, library_default=True, standin_only=True,
+        siblings=_LAZY_INIT),
+    ("pcl_ros::PCLNodelet", "onInit"): RosFunction(
+        "read", fixed_name="use_multithread_callback", fixed_type="bool", on_handle=False,
+        handle_default="~", call_site=False, library_default=True, standin_only=True,
+        siblings=(*_LAZY_INIT, ("read", "max_queue_size", "int"),
+                  ("read", "use_indices", "bool"), ("read", "latched_indices", "bool"),
+                  ("read", "approximate_sync", "bool"))),
+}
 FILTERS_TAG = "filters"
 
 
@@ -954,7 +973,7 @@ ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
                                             **JOINT_LIMITS_INTERFACE, **PLUGINLIB, **JSK,
-                                            **VIKIT}
+                                            **VIKIT, **PCL_ROS}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the
