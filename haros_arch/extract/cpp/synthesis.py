@@ -937,6 +937,9 @@ class Names:
         self._texts: list[bytes] = []  # those files, code only (``code_only``)
         # the classes they define with the bases written in their heads (``_CLASS_HEAD``)
         self._heads: list[tuple[str, list[str]]] = []
+        self._heads_read = 0  # the texts whose heads are in ``_heads``
+        # those of them derived from a declared base, as of (count, heads read)
+        self._derived_heads: tuple[tuple[int, int], frozenset[str]] = ((-1, -1), frozenset())
         self._defined: set[str] = set()  # the names they define (see ``_spread``)
         self._spread_done: set[tuple[int, str]] = set()  # (file, name) looked for
         self.count = 0
@@ -952,7 +955,6 @@ class Names:
             if text is not None and id(text) not in self._read:
                 self._read.add(id(text))
                 self._texts.append(code_only(text))
-                self._heads.extend(_class_heads(self._texts[-1]))
                 self._defined.update(m.decode() for m in _DEFINED.findall(text))
                 self.using.update(m.decode() for m in _USING.findall(text))
                 # not ``using Base::Base;``: a class's inherited constructors
@@ -1450,11 +1452,19 @@ class Names:
     def _derives_from_declared(self, name: str | None) -> bool:
         """Whether a class the files read define (named ``name``; any when None) has a
         base the parse did not know (a declared name, or the permissive class)."""
-        return any(
-            (name is None or head == name) and any(
-                self._synthesised(base) or self._class_path(base) is not None
-                for base in bases)
-            for head, bases in self._heads)
+        for text in self._texts[self._heads_read:]:  # (read only when asked)
+            self._heads.extend(_class_heads(text))
+        self._heads_read = len(self._texts)
+        if not self._heads:
+            return False
+        key = (self.count, len(self._heads))
+        if self._derived_heads[0] != key:  # (again only once a name or a file was learnt)
+            self._derived_heads = (key, frozenset(
+                head for head, bases in self._heads if any(
+                    self._synthesised(base) or self._class_path(base) is not None
+                    for base in bases)))
+        derived = self._derived_heads[1]
+        return bool(derived) if name is None else name in derived
 
     def _synthesised(self, qualified: str) -> bool:
         if qualified == "haros_any":
