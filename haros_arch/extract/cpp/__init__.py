@@ -1954,7 +1954,7 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
         # after their main class (ROBOTIS-OP3's ``RobotisController``, of
         # robotis_controller, in namespace robotis_framework: its singleton reached
         # through ``RobotisController::getInstance()``, its header missing)
-        named += [snake for snake in (_snake(part) for part in parts)
+        named += [snake for snake in (ros2_interfaces.snake_case(part) for part in parts)
                   if snake in declared and snake != name and snake not in named]
         return next((d for d in named if one(d, cls)), None)
 
@@ -2016,11 +2016,6 @@ def _visible(package: Package, workspace: Workspace, read: list[str]) -> set[str
                 found.add(dep.name)
                 todo.append(dep.name)
     return found
-
-
-def _snake(name: str) -> str:
-    """``RobotisController``: ``robotis_controller``."""
-    return re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", name).lower()
 
 
 def _client(name: str, cls: str, declared: set[str], workspace: Workspace,

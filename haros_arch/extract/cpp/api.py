@@ -245,6 +245,22 @@ _REALTIME_PUBLISHER = RosFunction(
     queue_arg=2, latch_arg=3)
 
 # Libraries on top of roscpp / rclcpp: actionlib, image_transport, message_filters, tf2_ros
+
+
+def _base_init(first: str, siblings: tuple[Sibling, ...]) -> RosFunction:
+    """The row of a stand-in nodelet base's ``onInit()`` that a nodelet runs
+    (``Base::onInit();``): it reads ``~first`` (as roscpp's ``ros::param``, named with
+    ``~``) and makes ``siblings``, none at a call site of its own."""
+    return RosFunction("read", fixed_name=first, fixed_type="bool", on_handle=False,
+                       handle_default="~", call_site=False, library_default=True,
+                       standin_only=True, siblings=siblings)
+
+
+# nodelet_topic_tools' NodeletLazy::onInit() (nodelet_core c86c2cd0's nodelet_lazy.h): it
+# reads ``~use_multithread_callback`` through ros::param, then ``~lazy`` and
+# ``~verbose_connection`` on the private handle it makes
+_LAZY_INIT: tuple[Sibling, ...] = (("read", "lazy", "bool"),
+                                   ("read", "verbose_connection", "bool"))
 LIBRARIES: dict[tuple[str, str], RosFunction] = {
     # interactive_markers: a server made for the namespace given (argument 0) publishes
     # its updates on ``<ns>/update`` and takes feedback on ``<ns>/feedback``; ROS 1 on a
@@ -324,6 +340,8 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("nodelet_topic_tools::NodeletLazy", "advertise"): RosFunction(
         "publish", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1,
         queue_arg=2, latch_arg=3),
+    ("nodelet_topic_tools::NodeletLazy", "onInit"): _base_init(
+        "use_multithread_callback", _LAZY_INIT),
     ("message_filters::Subscriber", "Subscriber"): _FILTER_SUBSCRIBER,
     ("message_filters::Subscriber", "subscribe"): _FILTER_SUBSCRIBER,
     ("image_transport::SubscriberFilter", "SubscriberFilter"): _IMAGE_FILTER_SUBSCRIBER,
@@ -681,17 +699,13 @@ _JSK_CONNECTION: tuple[Sibling, ...] = (
     ("read", "use_multithread_callback", "bool"))
 _JSK_LATCH: tuple[Sibling, ...] = (("read", "latch", "bool"),)
 JSK: dict[tuple[str, str], RosFunction] = {
-    ("jsk_topic_tools::ConnectionBasedNodelet", "onInit"): RosFunction(
-        "read", fixed_name="always_subscribe", fixed_type="bool", on_handle=False,
-        handle_default="~", call_site=False, library_default=True, standin_only=True,
-        siblings=_JSK_CONNECTION),
-    ("jsk_topic_tools::DiagnosticNodelet", "onInit"): RosFunction(
-        "read", fixed_name="always_subscribe", fixed_type="bool", on_handle=False,
-        handle_default="~", call_site=False, library_default=True, standin_only=True,
-        siblings=(*_JSK_CONNECTION, ("read", "vital_rate", "double"),
-                  ("read", "use_warn", "bool"),
-                  ("read", "/diagnostic_nodelet/use_warn", "bool"),
-                  ("publish", "/diagnostics", "diagnostic_msgs/DiagnosticArray"))),
+    ("jsk_topic_tools::ConnectionBasedNodelet", "onInit"): _base_init(
+        "always_subscribe", _JSK_CONNECTION),
+    ("jsk_topic_tools::DiagnosticNodelet", "onInit"): _base_init(
+        "always_subscribe", (*_JSK_CONNECTION, ("read", "vital_rate", "double"),
+                             ("read", "use_warn", "bool"),
+                             ("read", "/diagnostic_nodelet/use_warn", "bool"),
+                             ("publish", "/diagnostics", "diagnostic_msgs/DiagnosticArray"))),
     ("jsk_topic_tools::ConnectionBasedNodelet", "advertise"): RosFunction(
         "publish", type_from=("template",), name_arg=1, queue_arg=2, latch_arg=3,
         on_handle=False, handle_arg=0, library_default=True, standin_only=True,
@@ -719,24 +733,14 @@ VIKIT: dict[tuple[str, str], RosFunction] = {
     ("vk", "hasParam"): RosFunction(
         "read", on_handle=False, presence=True, name_required=True, standin_only=True),
 }
-# nodelet_topic_tools' NodeletLazy::onInit() (nodelet_core c86c2cd0's nodelet_lazy.h): it
-# reads ``~use_multithread_callback`` through ros::param, then ``~lazy`` and
-# ``~verbose_connection`` on the private handle it makes; perception_pcl's
-# PCLNodelet::onInit() (2f70209f's pcl_nodelet.h) runs it and reads four private
-# parameters more. A nodelet that runs either (``PCLNodelet::onInit();``) reads them.
-_LAZY_INIT: tuple[Sibling, ...] = (("read", "lazy", "bool"),
-                                   ("read", "verbose_connection", "bool"))
+# perception_pcl's PCLNodelet::onInit() (2f70209f's pcl_nodelet.h) runs NodeletLazy's
+# (``_LAZY_INIT``) and reads four private parameters more
 PCL_ROS: dict[tuple[str, str], RosFunction] = {
-    ("nodelet_topic_tools::NodeletLazy", "onInit"): RosFunction(
-        "read", fixed_name="use_multithread_callback", fixed_type="bool", on_handle=False,
-        handle_default="~", call_site=False, library_default=True, standin_only=True,
-        siblings=_LAZY_INIT),
-    ("pcl_ros::PCLNodelet", "onInit"): RosFunction(
-        "read", fixed_name="use_multithread_callback", fixed_type="bool", on_handle=False,
-        handle_default="~", call_site=False, library_default=True, standin_only=True,
-        siblings=(*_LAZY_INIT, ("read", "max_queue_size", "int"),
-                  ("read", "use_indices", "bool"), ("read", "latched_indices", "bool"),
-                  ("read", "approximate_sync", "bool"))),
+    ("pcl_ros::PCLNodelet", "onInit"): _base_init(
+        "use_multithread_callback", (*_LAZY_INIT, ("read", "max_queue_size", "int"),
+                                     ("read", "use_indices", "bool"),
+                                     ("read", "latched_indices", "bool"),
+                                     ("read", "approximate_sync", "bool"))),
 }
 FILTERS_TAG = "filters"
 
