@@ -1130,3 +1130,35 @@ def test_two_argument_math_of_mixed_types_is_not_ambiguous(tmp_path) -> None:
     assert [d.message for d in result.diagnostics
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+
+
+def test_adaptable_function_bases_and_container_adaptor_swap(tmp_path) -> None:
+    """ego-planner's grid_map.h (a header of every planner unit) hashes voxels with
+    ``struct matrix_hash : std::unary_function<T, size_t>``, and its A* clears a
+    ``std::priority_queue`` with ``swap``: libstdc++ declares both in C++14 (the
+    package's standard) and later, the stand-in did not."""
+    (tmp_path / "package.xml").write_text(package_xml("p"))
+    source = tmp_path / "a.cpp"
+    source.write_text(
+        "#include <functional>\n#include <queue>\n#include <vector>\n"
+        "#include <ros/ros.h>\n#include <std_msgs/Int32.h>\n"
+        "template <typename T> struct matrix_hash : std::unary_function<T, size_t> {\n"
+        "  size_t operator()(T const& m) const { return 0; }\n};\n"
+        "struct closer : std::binary_function<int, int, bool> {\n"
+        "  bool operator()(int a, int b) const { return a > b; }\n};\n"
+        "int main(int argc, char** argv) {\n"
+        "  ros::init(argc, argv, \"m\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  matrix_hash<int>::result_type h = matrix_hash<int>()(1);\n"
+        "  closer::first_argument_type a = 1;\n"
+        "  std::priority_queue<int, std::vector<int>, closer> open, empty;\n"
+        "  open.emplace(a);\n"
+        "  open.swap(empty);\n"
+        "  std::queue<int> q, r;\n"
+        "  q.swap(r);\n"
+        "  ros::Publisher p = nh.advertise<std_msgs::Int32>(\"out\", 1);\n"
+        "}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [d.message for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]

@@ -328,6 +328,16 @@ class CallSites:
         """(call, calling function) for the calls of ``function`` in this file."""
         return self._sites().get(self._key(function), [])
 
+    def called_elsewhere(self, function: Cursor) -> bool:
+        """Whether the arguments of ``function``, a non-virtual function or method no
+        call of this file calls, are placeholders the node's other files fill
+        (``external``): ego-planner's ``GridMap::initMap(nh)`` stores ``node_ = nh``,
+        called from planner_manager.cpp. A virtual method's are its host's (``uses_parameter``)."""
+        return self.external and function.kind in (
+            CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD) and not (
+            function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()) and (
+            not _overriding(function)) and not self.callers(function)
+
     def field(self, field: Cursor, function: Cursor | None = None, initial: bool = False
               ) -> tuple[Cursor, Scope] | None:
         """What a member holds, read in ``function``: the value a constructor of its

@@ -339,13 +339,15 @@ class Namespaces:
         multithreaded nodelet, ``getMTNodeHandle()``), and the function that writes it;
         None when there is none (the default). ``_UNSURE`` when the writes differ, or
         the value reads a parameter of a method that no call of the file passes (a
-        plugin's ``initialize(name)``: its host's value)."""
+        plugin's ``initialize(name)``: its host's value), unless the node's other files
+        pass it (``CallSites.called_elsewhere``: a placeholder they fill)."""
         found = self.members.assignments(field) if self.members is not None else []
         if not found:
             return None
         value, function = found[0]
         if function.kind != CursorKind.CONSTRUCTOR and uses_parameter(value) and (
-            self.sites is None or not self.sites.callers(function)
+            self.sites is None or not (self.sites.callers(function)
+                                       or self.sites.called_elsewhere(function))
         ):
             return _UNSURE
         if len({value_text(v) for v, _ in found}) > 1:

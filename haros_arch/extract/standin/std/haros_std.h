@@ -354,6 +354,12 @@ template<class T> struct hash { size_t operator()(const T& v) const; };
 template<class T> struct less { bool operator()(const T& a, const T& b) const; };
 template<class T> struct greater { bool operator()(const T& a, const T& b) const; };
 template<class T> struct equal_to { bool operator()(const T& a, const T& b) const; };
+// the adaptable function bases (deprecated in C++11, still declared by libstdc++ in
+// every mode): ``struct matrix_hash : std::unary_function<T, size_t>``
+template<class A, class R> struct unary_function {
+  typedef A argument_type; typedef R result_type; };
+template<class A1, class A2, class R> struct binary_function {
+  typedef A1 first_argument_type; typedef A2 second_argument_type; typedef R result_type; };
 // arithmetic function objects (``std::plus<>{}`` as a reduction), invoke_result,
 // apply, as_const, and reverse_iterator as a class template (C++14 / 17)
 template<class T = void> struct plus {
@@ -936,15 +942,19 @@ public:
   void pop();
   size_t size() const;
   bool empty() const;
+  void swap(queue& other);
 };
 template<class T, class S = vector<T>, class C = less<T>> class priority_queue {
 public:
   priority_queue();
+  explicit priority_queue(const C& compare, const S& container = S());
   const T& top() const;
   void push(const T& v);
+  template<class... A> void emplace(A&&... args);
   void pop();
   size_t size() const;
   bool empty() const;
+  void swap(priority_queue& other);
 };
 template<class T, class S = deque<T>> class stack {
 public:
