@@ -16,6 +16,7 @@ from haros_arch.models.format import dumps, from_document
 from haros_arch.models.library import Library
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
+from haros_arch.query import run_catalogue
 
 FIXTURE = os.path.join(os.path.dirname(__file__), "..", "fixtures", "models", "installed_only")
 INSTALLED = os.path.join(FIXTURE, "opt", "ros", "noetic", "share")
@@ -137,6 +138,52 @@ def test_rosservice_call_is_a_client_of_its_service(write_tree):
     assert [(link.kind, link.name) for link in reset.links] == [
         ("client", "/prbt/driver/recover")]
     assert _instance(config, "/lister").completeness == "unknown"
+
+
+def test_dynparam_is_a_client_of_the_reconfigure_server_it_names(write_tree):
+    """PX4-Avoidance's safe_landing_planner.launch starts ``dynparam load
+    safe_landing_planner_node FILE`` to give the planner its settings: a client of that
+    node's reconfigure server (``set_parameters`` and its two topics), not a node of
+    unknown interface that could be the missing side of every absence; and a
+    ``set_from_parameters`` reads the parameters the launch file gives it."""
+    root = write_tree({
+        "src/p/package.xml": package_xml("p"),
+        "src/p/CMakeLists.txt": "project(p)\n",
+        "src/p/launch/p.launch": """
+            <launch>
+              <node pkg="dynamic_reconfigure" type="dynparam" name="loader"
+                    args="load planner_node $(find p)/cfg/planner.yaml"/>
+              <group ns="cam">
+                <node pkg="dynamic_reconfigure" type="dynparam" name="setter"
+                      args="set --timeout=5 driver exposure -3"/>
+                <node pkg="dynamic_reconfigure" type="dynparam" name="copier"
+                      args="set_from_parameters driver">
+                  <param name="brightness" value="58"/>
+                </node>
+              </group>
+              <node pkg="dynamic_reconfigure" type="dynparam" name="lister" args="list"/>
+              <node pkg="dynamic_reconfigure" type="dynparam" name="refused"
+                    args="set driver"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [p/launch/p.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    loader = _instance(config, "/loader")
+    assert loader.completeness == "model"
+    assert [(link.kind, link.name, link.type) for link in loader.links] == [
+        ("client", "/planner_node/set_parameters", "dynamic_reconfigure/Reconfigure"),
+        ("subscribe", "/planner_node/parameter_descriptions",
+         "dynamic_reconfigure/ConfigDescription"),
+        ("subscribe", "/planner_node/parameter_updates", "dynamic_reconfigure/Config")]
+    assert [link.name for link in _instance(config, "/cam/setter").links
+            if link.kind == "client"] == ["/cam/driver/set_parameters"]
+    # the copier reads what it is given: no parameter set and never read
+    assert [f.entities for f in run_catalogue(model)
+            if f.rule.startswith("parameter-set-not-read")] == []
+    assert _instance(config, "/lister").completeness == "unknown"
+    assert _instance(config, "/refused").completeness == "unknown"
 
 
 def test_rostopic_pub_with_a_rate_does_not_latch():

@@ -1,5 +1,5 @@
 """Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
-``rosservice call``,
+``rosservice call``, dynamic_reconfigure's ``dynparam``,
 ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, ROS 1
 controller_manager's ``spawner`` and gazebo_ros' ``spawn_model``.
 
@@ -30,6 +30,15 @@ way round under ``demux/`` (demux.cpp:247-295); ``throttle messages IN RATE [OUT
 bytes IN RATE WINDOW [OUT]`` (default ``IN_throttle``, throttle.cpp:181-246); ``drop IN X
 Y [OUT]`` (default ``IN_drop``, drop.cpp:65-90). Their messages are of any type
 (``ShapeShifter``): the calls have none.
+
+dynamic_reconfigure's ``dynparam`` (``scripts/dynparam`` and ``src/dynamic_reconfigure/
+client.py``, noetic-devel): ``set NODE PARAM VALUE`` / ``set NODE YAML``, ``load NODE
+FILE``, ``set_from_parameters NODE``, ``get NODE`` and ``dump NODE FILE`` each build a
+``Client(NODE)``, which makes a proxy of ``NODE/set_parameters`` (dynamic_reconfigure
+``Reconfigure``) and subscribes ``NODE/parameter_updates`` (``Config``) and
+``NODE/parameter_descriptions`` (``ConfigDescription``); ``set_from_parameters`` reads
+``rospy.get_param("~")``, the values it copies. Options: ``-t`` / ``--timeout`` with a
+value; ``set`` takes a word of a dash and a digit as a value.
 
 controller_manager's ROS 1 ``spawner`` (ros_control ``controller_manager/scripts/spawner``,
 noetic-devel): the services are NS + ``controller_manager/load_controller``,
@@ -114,6 +123,9 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _ros2_control_load(decl)
     if decl.package == "topic_tools" and decl.ros_version == 1:
         return _topic_tools(decl, words)
+    if (decl.package, decl.executable) == ("dynamic_reconfigure", "dynparam") and (
+            decl.ros_version == 1):
+        return _dynparam(decl, words)
     if (decl.package, decl.executable) == ("controller_manager", "spawner") and (
             decl.ros_version == 1):
         return _spawner(decl, words)
@@ -446,6 +458,47 @@ def _rosservice(decl: NodeDecl, words: list[str]) -> Node | None:
     call = PrimitiveCall("client", positional[0], None, location=decl.location,
                          origin="arguments")
     return _node(decl, "rosservice", call, "python")
+
+
+# dynparam's verbs that make a dynamic_reconfigure client of the node they name, and how
+# many words each takes after its options (the node, then a file or values)
+_DYNPARAM_VERBS = {"set": (2, 3), "set_from_parameters": (1, 1), "get": (1, 1),
+                   "load": (2, 2), "dump": (2, 2)}
+
+
+def _dynparam(decl: NodeDecl, words: list[str]) -> Node | None:
+    """dynamic_reconfigure's ``dynparam VERB [-t T] NODE ...``: a client of NODE's
+    reconfigure server (``dynamic_reconfigure.client.Client(NODE)``: the service
+    ``NODE/set_parameters`` and the topics ``NODE/parameter_descriptions`` and
+    ``NODE/parameter_updates``, NODE resolved in the node's namespace); with
+    ``set_from_parameters`` it also reads its private namespace whole (the values it
+    copies, ``rospy.get_param("~")``). ``list`` asks the master only. None when the
+    verb or the words are not known, or optparse refuses them."""
+    if not words or words[0] not in _DYNPARAM_VERBS or any("?" in w for w in words):
+        return None
+    low, high = _DYNPARAM_VERBS[words[0]]
+    if words[0] == "set":  # a word starting with "-" and a digit is a value
+        positional = [w for w in words[1:] if not w.startswith("-") or w[1:2].isdigit()]
+    else:
+        positional, _values, _flags = split_options(words[1:], {"-t", "--timeout"})
+    if not low <= len(positional) <= high:
+        return None
+    server = positional[0].rstrip("/")
+    calls = [PrimitiveCall("client", f"{server}/set_parameters",
+                           "dynamic_reconfigure/Reconfigure", location=decl.location,
+                           origin="arguments"),
+             PrimitiveCall("subscribe", f"{server}/parameter_descriptions",
+                           "dynamic_reconfigure/ConfigDescription", location=decl.location,
+                           origin="arguments"),
+             PrimitiveCall("subscribe", f"{server}/parameter_updates",
+                           "dynamic_reconfigure/Config", location=decl.location,
+                           origin="arguments")]
+    if words[0] == "set_from_parameters":
+        calls.append(PrimitiveCall("read", "~", None, location=decl.location,
+                                   origin="arguments"))
+    node = _node(decl, "dynamic_reconfigure", calls[0], "python")
+    node.calls = calls
+    return node
 
 
 def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:
