@@ -2256,6 +2256,12 @@ def _node_given(errors: list[_Error], places: _Places, workspace: Workspace
             said.add((error.path, error.line))
             places.finder.handed.add(owner_of(function))
             name = match.group("name") or match.group("scope")
+            # as written there: ``quadrotor_common::getParam``, not its namespace alone
+            text = lines[error.line - 1] if 0 < error.line <= len(lines) else ""
+            written = re.match(re.escape(name) + r"(?:\s*::\s*\w+)+",
+                               text[max(error.column - 1, 0):])
+            if written is not None:
+                name = re.sub(r"\s+", "", written.group(0))
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
                 given=given, name=name))

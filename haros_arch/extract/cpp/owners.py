@@ -285,13 +285,21 @@ def node_names(function: Cursor) -> frozenset[str]:
     of a node type (a node, NodeHandle, node interface, or a pointer to one: a main's
     ``auto node = rclcpp::Node::make_shared(..)``, which moveit2_tutorials' mains hand
     to ``MoveGroupInterface`` of a header not found), and ``this`` / ``shared_from_this``
-    in a method of a class derived from a node."""
+    in a method of a class derived from a node; in a method, its class's members of a
+    node type (rpg_quadrotor_control's sbus_bridge reads every parameter with
+    ``quadrotor_common::getParam(name, value, pnh_)`` of a missing header)."""
     found: set[str] = set()
     parent = function.semantic_parent
     if function.kind != CursorKind.FUNCTION_DECL and parent is not None and (
         _derives_from_node(parent, 0)
     ):
         found |= {"this", "shared_from_this"}
+    if function.kind != CursorKind.FUNCTION_DECL and parent is not None and (
+            parent.kind in (CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
+                            CursorKind.CLASS_TEMPLATE)):
+        found |= {c.spelling for c in parent.get_children()
+                  if c.kind == CursorKind.FIELD_DECL and c.spelling
+                  and _NODE_TYPE.search(c.type.get_canonical().spelling)}
     for c in function.walk_preorder():
         if c.kind not in (CursorKind.PARM_DECL, CursorKind.VAR_DECL) or not c.spelling:
             continue

@@ -378,7 +378,28 @@ def node_given(lines: Sequence[str], line: int, names: Iterable[str]) -> str | N
     if end >= 0:
         statement = statement[:end]
     found = _given(tuple(words)).search(statement)
+    if found is None:  # a macro of the file the statement invokes: what it expands to
+        macro = re.match(r"\s*(?:if\s*\(\s*!?\s*)?(\w+)\s*\(", statement)
+        body = _macro_body(lines, macro.group(1)) if macro is not None else None
+        found = _given(tuple(words)).search(body) if body is not None else None
     return found.group(1) if found is not None else None
+
+
+def _macro_body(lines: Sequence[str], name: str) -> str | None:
+    """The text a function-like macro ``name`` defined in the file of ``lines`` expands
+    to, its continued lines joined (sbus_bridge's ``#define GET_PARAM(name) if
+    (!quadrotor_common::getParam(#name, name##_, pnh_)) return false``), or None."""
+    start = re.compile(r"\s*#\s*define\s+" + re.escape(name) + r"\(")
+    for index, text in enumerate(lines):
+        if start.match(text) is None:
+            continue
+        body = [text[text.index(")") + 1:] if ")" in text else ""]
+        while body[-1].rstrip().endswith("\\") and index + 1 < len(lines):
+            body[-1] = body[-1].rstrip()[:-1]
+            index += 1
+            body.append(lines[index])
+        return "\n".join(body)
+    return None
 
 
 @functools.lru_cache(maxsize=256)
