@@ -53,7 +53,7 @@ def test_a_local_node_given_to_an_unknown_class_makes_the_node_partial(
         write_tree: Any) -> None:
     node = _node(write_tree, "move_group_node")
     assert node.completeness == "partial", node.completeness_reasons
-    assert any("the node (move_group_node) is given to vendor," in r
+    assert any("the node (move_group_node) is given to vendor::planning::MoveGroupInterface," in r
                for r in node.completeness_reasons), node.completeness_reasons
 
 

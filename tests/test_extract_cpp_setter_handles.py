@@ -30,6 +30,7 @@ def test_a_wrapper_reads_on_the_handle_its_setter_was_given() -> None:
 
 
 def test_a_handle_another_file_sets_is_not_the_nodes_own() -> None:
-    # tracker_setup.cpp holds the parser whose handle tracker.cpp sets: not known there
-    # (it was read as the node's own ``camera_topic``)
-    assert _reads("tracker.cpp", "tracker_setup.cpp") == [("?/camera_topic", "?")]
+    # tracker_setup.cpp holds the parser whose handle tracker.cpp sets through the
+    # header's ``set_node_handler(nh)``: what tracker.cpp passes, its private handle (it
+    # was read as the node's own ``camera_topic``, then as not known there)
+    assert _reads("tracker.cpp", "tracker_setup.cpp") == [("~camera_topic", "~")]

@@ -66,7 +66,7 @@ def test_an_unknown_class_built_with_node_options_makes_the_node_partial(
     # no name is declared, the statement that passes the options is read from its text
     node = _node(write_tree, "driver")
     assert node.completeness == "partial", node.completeness_reasons
-    assert any("the node (options) is given to mouse," in r
+    assert any("the node (options) is given to mouse::Mouse," in r
                for r in node.completeness_reasons), node.completeness_reasons
     assert any(c.kind == "subscribe" and c.name == "switches" for c in node.calls)
 
@@ -74,7 +74,7 @@ def test_an_unknown_class_built_with_node_options_makes_the_node_partial(
 def test_a_variable_named_after_the_namespace_does_not_hide_it(write_tree: Any) -> None:
     node = _node(write_tree, "mouse")
     assert node.completeness == "partial", node.completeness_reasons
-    assert any("the node (options) is given to mouse," in r
+    assert any("the node (options) is given to mouse::Mouse," in r
                for r in node.completeness_reasons), node.completeness_reasons
 
 

@@ -331,12 +331,18 @@ class CallSites:
     def called_elsewhere(self, function: Cursor) -> bool:
         """Whether the arguments of ``function``, a non-virtual function or method no
         call of this file calls, are placeholders the node's other files fill
-        (``external``): ego-planner's ``GridMap::initMap(nh)`` stores ``node_ = nh``,
-        called from planner_manager.cpp. A virtual method's are its host's (``uses_parameter``)."""
-        return self.external and function.kind in (
-            CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD) and not (
-            function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()) and (
-            not _overriding(function)) and not self.callers(function)
+        (``external``), declared in a header: ego-planner's ``GridMap::initMap(nh)``
+        stores ``node_ = nh``, called from planner_manager.cpp. A virtual method's are its
+        host's (``uses_parameter``)."""
+        if not self.external or function.kind not in (
+                CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD) or (
+                function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()) or (
+                _overriding(function)) or self.callers(function):
+            return False
+        # declared in a header: the unit's own source alone cannot call it otherwise
+        canonical = function.canonical
+        where = canonical.location.file if canonical is not None else None
+        return where is not None and self.main is not None and where.name != self.main
 
     def field(self, field: Cursor, function: Cursor | None = None, initial: bool = False
               ) -> tuple[Cursor, Scope] | None:
