@@ -1094,6 +1094,15 @@ def test_an_unqualified_call_that_may_be_an_unknown_bases_method_keeps_the_node_
     assert "CPP_PARSE_ERROR" not in codes(result)
 
 
+def test_a_macro_of_the_vendor_is_no_method_of_its_base() -> None:
+    """Onboard-SDK-ROS b7aa9f3's VehicleWrapper derives from the DJI SDK's ``Setup`` and
+    logs with its ``DSTATUS(...)`` / ``DERROR(...)`` macros (78 places, "the node (this)
+    is given to DSTATUS"): a name in capitals is a macro, not the base's method."""
+    result = extract("vendor_base_macro.cpp")
+    assert "CPP_PARSE_ERROR" not in codes(result)  # DSTATUS found, as a function
+    assert "CPP_NODE_TO_UNKNOWN" not in codes(result)
+
+
 def test_a_member_a_real_base_has_is_not_the_permissive_classes_too() -> None:
     """rtabmap's ``OdometryROS : public rclcpp::Node, public UThread``: with ``get_logger``
     declared on the permissive class (the code reads it on a vendor object), the class

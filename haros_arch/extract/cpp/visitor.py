@@ -131,6 +131,8 @@ from .writes import (
 )
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
+# a name written in capitals alone: a macro, by C and C++ custom
+_MACRO_NAME = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
 CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -1722,6 +1724,10 @@ class CallFinder:
         if function is None or function.kind not in (
                 CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR,
                 CursorKind.FUNCTION_TEMPLATE):
+            return False
+        if _MACRO_NAME.fullmatch(callee.spelling):
+            # a macro of a missing header (the DJI SDK's ``DSTATUS(...)`` logging in
+            # Onboard-SDK-ROS's VehicleWrapper, derived from its ``Setup``): no method
             return False
         lexical, semantic = callee.lexical_parent, callee.semantic_parent
         if lexical is None or lexical.spelling != synthesis.ANY or (
