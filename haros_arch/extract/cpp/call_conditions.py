@@ -335,6 +335,17 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
         (child, ()) for child in reversed(list(function.get_children()))
         if child.kind != CursorKind.PARM_DECL]
     left = len(found)  # the wanted calls not met yet: the walk ends when none is left
+    # the wanted calls' offsets in each file: a statement or expression of the
+    # function's file whose text holds none is not walked into (mav_control_rw's CVXGEN
+    # check_factorization: 6,500 lines of assignments and ifs before its one call, each
+    # if's condition read)
+    offsets: dict[str, list[int]] = {}
+    for name, offset in wanted:
+        offsets.setdefault(name, []).append(offset)
+    start = function.extent.start
+    own = start.file.name if start.file is not None else None
+    mine = offsets.get(own, []) if own is not None else []
+    whole = own is None or len(mine) != len(wanted)  # a call in another file: walk all
     while stack and left:
         node, conditions = stack.pop()
         if node.kind == CursorKind.CALL_EXPR:
@@ -344,8 +355,22 @@ def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
                     c for c in conditions
                     if c.kind == "source" and c.statement not in NOT_CARRIED))
                 left -= 1
+        if not whole and not _holds(node, own, mine):
+            continue
         stack.extend(reader.below(node, conditions))
     return found
+
+
+def _holds(node: Cursor, name: str | None, offsets: list[int]) -> bool:
+    """Whether the text of ``node`` holds one of ``offsets`` of the file
+    ``name`` (sorted or not); True when its text is not all in that file (a macro's)."""
+    extent = node.extent
+    start, end = extent.start, extent.end
+    if start.file is None or end.file is None or start.file.name != name or (
+            end.file.name != name):
+        return True
+    low, high = start.offset, end.offset
+    return any(low <= offset <= high for offset in offsets)
 
 
 def _overridden(method: Cursor, owned: Callable[[str], bool],

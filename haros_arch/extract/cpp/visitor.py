@@ -133,6 +133,28 @@ from .writes import (
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 # a name written in capitals alone: a macro, by C and C++ custom
 _MACRO_NAME = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
+# a call in C code: a name and its parenthesis, but a statement's keyword's
+_C_CALL = re.compile(rb"\b(?!(?:if|for|while|switch|return|sizeof)\b)[A-Za-z_]\w*\s*\(")
+
+
+def _c_without_calls(function: Cursor, main: str, source: Any) -> bool:
+    """Whether ``function`` is a function of a C source ``main`` (a ``.c`` file, written
+    in C: no class, template or constructor) whose text calls nothing: it makes no ROS
+    call and no call site, and the fields it writes are of C structs, which hold no
+    handle. mav_control_rw's CVXGEN solver (ldl.c) has a 27,000-line ``ldl_factor`` of
+    assignments and ifs alone, whose walks (conditions, members, wrappers) took 30 s of
+    CPU and 1.8 GB for nothing."""
+    start, end = function.extent.start, function.extent.end
+    if start.file is None or end.file is None or start.file.name != main or (
+            end.file.name != main):
+        return False
+    data = source.get(main)
+    if data is None:
+        return False
+    body = data[start.offset:end.offset]
+    opening = body.find(b"{")
+    return opening >= 0 and _C_CALL.search(body, opening) is None
+
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
 CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -461,6 +483,9 @@ class CallFinder:
         every = list(self._definitions(self._root, top=True))
         self.functions = reachable(every, self.tu.spelling, self.source, self.globals,
                                    self._texts, self.local)
+        if self.tu.spelling.endswith(".c"):
+            self.functions = [f for f in self.functions
+                              if not _c_without_calls(f, self.tu.spelling, self.source)]
         kept = {id(f) for f in self.functions}
         self.unreached = [f for f in every if id(f) not in kept]
         # an object of namespace scope built with arguments (OpenMower's
@@ -524,9 +549,13 @@ class CallFinder:
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_value))
-        self.facts.extend(links.global_facts(
-            ((usr, render(parts)) for usr, parts in self.namespaces.global_handles(self.tu)),
-            self.tu.spelling))
+        if any(is_handle(variable) for variable in self.globals):
+            # (a unit with no global handle has none to give: its functions are not
+            # walked for global writes)
+            self.facts.extend(links.global_facts(
+                ((usr, render(parts))
+                 for usr, parts in self.namespaces.global_handles(self.tu)),
+                self.tu.spelling))
         self.uses.extend(self._uses())
         # the owners the unit's code defines, not a workspace header's: a header's
         # function is every including unit's, and runs in none of them by being reached
