@@ -664,11 +664,17 @@ _MACRO_SPAN = 4000  # bytes of a macro call searched for a name clang placed at 
 _MACRO_NAME = re.compile(r"[A-Z][A-Z0-9_]*[A-Z0-9]")
 
 
+def is_macro_name(name: str) -> bool:
+    """Whether ``name`` is written as C and C++ write a macro's: capitals (two at least),
+    digits and underscores."""
+    return _MACRO_NAME.fullmatch(name) is not None
+
+
 def _bare_macro(name: str, text: bytes, offset: int) -> bool:
     """Whether the unknown ``name`` at ``offset`` is a macro that stands for
     declarations: written in capitals, alone on its line (nothing after it but a
     comment), where a type would be followed by what it declares."""
-    if _MACRO_NAME.fullmatch(name) is None or text[offset:offset + len(name)] != (
+    if not is_macro_name(name) or text[offset:offset + len(name)] != (
             name.encode()):
         return False
     start = text.rfind(b"\n", 0, offset) + 1

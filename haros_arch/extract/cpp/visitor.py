@@ -131,8 +131,6 @@ from .writes import (
 )
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
-# a name written in capitals alone: a macro, by C and C++ custom
-_MACRO_NAME = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
 # a call in C code: a name and its parenthesis, but a statement's keyword's
 _C_CALL = re.compile(rb"\b(?!(?:if|for|while|switch|return|sizeof)\b)[A-Za-z_]\w*\s*\(")
 
@@ -1754,7 +1752,7 @@ class CallFinder:
                 CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR,
                 CursorKind.FUNCTION_TEMPLATE):
             return False
-        if _MACRO_NAME.fullmatch(callee.spelling):
+        if synthesis.is_macro_name(callee.spelling):
             # a macro of a missing header (the DJI SDK's ``DSTATUS(...)`` logging in
             # Onboard-SDK-ROS's VehicleWrapper, derived from its ``Setup``): no method
             return False
