@@ -47,6 +47,14 @@ CallKind = Literal[
     "read", "write", "declare",
 ]
 
+# a ROS 1 dynamic_reconfigure server's service and its two latched topics, below the
+# server's namespace (dynamic_reconfigure's server.h and server.py); a client (client.py,
+# dynparam) calls the service and subscribes to the topics
+RECONFIGURE_SERVICE = ("set_parameters", "dynamic_reconfigure/Reconfigure")
+RECONFIGURE_TOPICS: tuple[tuple[str, str], ...] = (
+    ("parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
+    ("parameter_updates", "dynamic_reconfigure/Config"))
+
 # what a ROS 2 managed (lifecycle) node makes by itself, under its own name, in rclcpp
 # (rclcpp_lifecycle's LifecycleNode) and rclpy (rclpy.lifecycle's Node) alike: its
 # transitions' topic, and its state machine's services

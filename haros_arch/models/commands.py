@@ -80,7 +80,7 @@ from typing import Any
 
 from ..launch.model import NodeDecl, shell_words
 from ..launch.ros2.naming import split_arguments
-from ..model.source import CallKind, Node, PrimitiveCall
+from ..model.source import RECONFIGURE_SERVICE, RECONFIGURE_TOPICS, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 
 ROS1_VALUE_OPTIONS = {"-r", "--rate", "-f", "--file"}
@@ -484,15 +484,11 @@ def _dynparam(decl: NodeDecl, words: list[str]) -> Node | None:
     if not low <= len(positional) <= high:
         return None
     server = positional[0].rstrip("/")
-    calls = [PrimitiveCall("client", f"{server}/set_parameters",
-                           "dynamic_reconfigure/Reconfigure", location=decl.location,
+    service, kind = RECONFIGURE_SERVICE
+    calls = [PrimitiveCall("client", f"{server}/{service}", kind, location=decl.location,
                            origin="arguments"),
-             PrimitiveCall("subscribe", f"{server}/parameter_descriptions",
-                           "dynamic_reconfigure/ConfigDescription", location=decl.location,
-                           origin="arguments"),
-             PrimitiveCall("subscribe", f"{server}/parameter_updates",
-                           "dynamic_reconfigure/Config", location=decl.location,
-                           origin="arguments")]
+             *(PrimitiveCall("subscribe", f"{server}/{topic}", type_, location=decl.location,
+                             origin="arguments") for topic, type_ in RECONFIGURE_TOPICS)]
     if words[0] == "set_from_parameters":
         calls.append(PrimitiveCall("read", "~", None, location=decl.location,
                                    origin="arguments"))

@@ -21,7 +21,7 @@ from typing import Protocol
 
 from ..model.conditions import Condition
 from ..model.runtime import NodeInstance, Parameter, Resource
-from ..model.source import CallKind, PrimitiveCall
+from ..model.source import RECONFIGURE_SERVICE, RECONFIGURE_TOPICS, CallKind, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..workspace import Workspace
 from .hosts import (
@@ -35,9 +35,8 @@ from .hosts import (
 RAW = "raw"
 # a ROS 1 dynamic_reconfigure server's service and topics, below its handle's namespace
 _RECONFIGURE: tuple[tuple[CallKind, str, str], ...] = (
-    ("server", "set_parameters", "dynamic_reconfigure/Reconfigure"),
-    ("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
-    ("publish", "parameter_updates", "dynamic_reconfigure/Config"))
+    ("server", *RECONFIGURE_SERVICE),
+    *(("publish", topic, type_) for topic, type_ in RECONFIGURE_TOPICS))
 
 
 class Params(Protocol):

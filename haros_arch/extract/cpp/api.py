@@ -42,6 +42,8 @@ from ...model.source import (
     LIFECYCLE_EVENTS,
     LIFECYCLE_SERVICES,
     PLUGINLIB_CLASS,
+    RECONFIGURE_SERVICE,
+    RECONFIGURE_TOPICS,
     SDF_ELEMENT,
     CallKind,
 )
@@ -49,6 +51,9 @@ from ...model.source import (
 # (kind, name relative to the call's name's namespace or global, or "" for the call's
 # own name, ROS 1 type)
 Sibling = tuple[CallKind, str, str]
+# what a dynamic_reconfigure server publishes beside its service
+_RECONFIGURE_TOPICS: tuple[Sibling, ...] = tuple(
+    ("publish", topic, type_) for topic, type_ in RECONFIGURE_TOPICS)
 
 
 @dataclass(frozen=True)
@@ -366,10 +371,8 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     # dynamic_reconfigure's server lives in the namespace of the handle it is given (a
     # controller's own controller_nh), by default the node's private one
     ("dynamic_reconfigure::Server", "Server"): RosFunction(
-        "server", fixed_name="set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
-        on_handle=False, handle_default="~", reconfigure=True,
-        siblings=(("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
-                  ("publish", "parameter_updates", "dynamic_reconfigure/Config"))),
+        "server", fixed_name=RECONFIGURE_SERVICE[0], fixed_type=RECONFIGURE_SERVICE[1],
+        on_handle=False, handle_default="~", reconfigure=True, siblings=_RECONFIGURE_TOPICS),
     # camera_info_manager (image_common): the calibration service, in ROS 1 in the
     # namespace of the handle given, in ROS 2 the node's own (as from Jazzy on, the
     # rclcpp the stand-ins are: Humble's is relative, "set_camera_info")
@@ -786,15 +789,12 @@ PLUGINLIB: dict[tuple[str, str], RosFunction] = {
 # reads as every server does (no write said, as for the servers above); initParam(prefix)
 # does the same in NodeHandle(prefix). Not said: ``<ns>/state``, the PidState publisher
 # init makes only when ``publish_state`` is true.
-_RECONFIGURE_SERVICES: tuple[Sibling, ...] = (
-    ("publish", "parameter_descriptions", "dynamic_reconfigure/ConfigDescription"),
-    ("publish", "parameter_updates", "dynamic_reconfigure/Config"))
 _PID_CONFIG: tuple[Sibling, ...] = (
     ("read", "i", "double"), ("read", "d", "double"), ("read", "i_clamp_min", "double"),
     ("read", "i_clamp_max", "double"), ("read", "antiwindup", "bool"))
 _PID_SIBLINGS: tuple[Sibling, ...] = (
     *_PID_CONFIG, ("read", "i_clamp", "double"), ("read", "publish_state", "bool"),
-    ("server", "set_parameters", "dynamic_reconfigure/Reconfigure"), *_RECONFIGURE_SERVICES)
+    ("server", *RECONFIGURE_SERVICE), *_RECONFIGURE_TOPICS)
 CONTROL_TOOLBOX: dict[tuple[str, str], RosFunction] = {
     ("control_toolbox::Pid", "init"): RosFunction(
         "read", fixed_name="p", fixed_type="double", on_handle=False, handle_default="",
@@ -803,9 +803,9 @@ CONTROL_TOOLBOX: dict[tuple[str, str], RosFunction] = {
         "read", name_arg=0, name_suffix="p", fixed_type="double", on_handle=False,
         name_required=True, standin_only=True, siblings=_PID_SIBLINGS),
     ("control_toolbox::Pid", "initDynamicReconfig"): RosFunction(
-        "server", fixed_name="set_parameters", fixed_type="dynamic_reconfigure/Reconfigure",
+        "server", fixed_name=RECONFIGURE_SERVICE[0], fixed_type=RECONFIGURE_SERVICE[1],
         on_handle=False, handle_default="", standin_only=True,
-        siblings=(*_RECONFIGURE_SERVICES, ("read", "p", "double"), *_PID_CONFIG)),
+        siblings=(*_RECONFIGURE_TOPICS, ("read", "p", "double"), *_PID_CONFIG)),
 }
 # ROS 1 ros_control's joint_limits_rosparam.h (ros_control 136adb6): getJointLimits(joint,
 # nh, limits) reads, under ``joint_limits/<joint>`` of the handle given, each limit's

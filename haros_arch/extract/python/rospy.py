@@ -9,6 +9,7 @@ queue_size)`` and ``Subscriber(name, data_class, callback, callback_args, queue_
 
 from __future__ import annotations
 
+from ...model.source import RECONFIGURE_SERVICE
 from .api import Arg, NodeName, PyFunction
 
 _PARAM_NAME = Arg(0, "param_name")
@@ -92,11 +93,11 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     # namespace given), a read of each parameter of the config (its package's
     # cfg/*.cfg), two latched topics and its service
     ("dynamic_reconfigure", "Server"): PyFunction(
-        "server", name=None, fixed_type="dynamic_reconfigure/Reconfigure",
+        "server", name=None, fixed_type=RECONFIGURE_SERVICE[1],
         callback=Arg(1, "callback"), special="reconfigure-server"),
     # dynamic_reconfigure.client.Client(name, ...): the server's service and topics
     ("dynamic_reconfigure", "Client"): PyFunction(
-        "client", fixed_type="dynamic_reconfigure/Reconfigure",
+        "client", fixed_type=RECONFIGURE_SERVICE[1],
         special="reconfigure-client"),
     # bondpy.Bond(topic, id, ...): the bond's heartbeat on the topic given, of bond's
     # Status, both ways (bondpy.py; as bondcpp's)

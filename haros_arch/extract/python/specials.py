@@ -7,7 +7,7 @@ from __future__ import annotations
 import ast
 from dataclasses import replace
 
-from ...model.source import PrimitiveCall
+from ...model.source import RECONFIGURE_SERVICE, RECONFIGURE_TOPICS, PrimitiveCall
 from ...model.values import Value
 from . import rclpy
 from .api import Arg, PyFunction
@@ -54,11 +54,9 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
         return _reconfigure_server(ev, call, frame, base)
     if spec.special == "reconfigure-client":
         server = _under(ev, argument(call, Arg(0, "name")), frame)
-        return [replace(base, name=f"{server}set_parameters"),
-                replace(base, kind="subscribe", name=f"{server}parameter_descriptions",
-                        type="dynamic_reconfigure/ConfigDescription"),
-                replace(base, kind="subscribe", name=f"{server}parameter_updates",
-                        type="dynamic_reconfigure/Config")]
+        return [replace(base, name=server + RECONFIGURE_SERVICE[0]),
+                *(replace(base, kind="subscribe", name=server + topic, type=type_)
+                  for topic, type_ in RECONFIGURE_TOPICS)]
     made: list[PrimitiveCall] = []
     if spec.special == "declare-parameters":
         prefix = text_of(evaluate(ev, call.args[0] if call.args else argument(
@@ -150,11 +148,10 @@ def _reconfigure_server(ev: Evaluator, call: ast.Call, frame: Frame,
                             has_default=True, default=default))
     if partial:
         made.append(replace(plain, kind="read", name=namespace + "?", type=None))
-    for topic, kind in (("parameter_descriptions", "ConfigDescription"),
-                        ("parameter_updates", "Config")):
-        made.append(replace(plain, kind="publish", name=namespace + topic,
-                            type=f"dynamic_reconfigure/{kind}", latch=True, queue_size=10))
-    made.append(replace(base, name=namespace + "set_parameters"))
+    for topic, type_ in RECONFIGURE_TOPICS:
+        made.append(replace(plain, kind="publish", name=namespace + topic, type=type_,
+                            latch=True, queue_size=10))
+    made.append(replace(base, name=namespace + RECONFIGURE_SERVICE[0]))
     return made
 
 
