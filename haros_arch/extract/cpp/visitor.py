@@ -131,28 +131,6 @@ from .writes import (
 )
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
-# a call in C code: a name and its parenthesis, but a statement's keyword's
-_C_CALL = re.compile(rb"\b(?!(?:if|for|while|switch|return|sizeof)\b)[A-Za-z_]\w*\s*\(")
-
-
-def _c_without_calls(function: Cursor, main: str, source: Any) -> bool:
-    """Whether ``function`` is a function of a C source ``main`` (a ``.c`` file, written
-    in C: no class, template or constructor) whose text calls nothing: it makes no ROS
-    call and no call site, and the fields it writes are of C structs, which hold no
-    handle. mav_control_rw's CVXGEN solver (ldl.c) has a 27,000-line ``ldl_factor`` of
-    assignments and ifs alone, whose walks (conditions, members, wrappers) took 30 s of
-    CPU and 1.8 GB for nothing."""
-    start, end = function.extent.start, function.extent.end
-    if start.file is None or end.file is None or start.file.name != main or (
-            end.file.name != main):
-        return False
-    data = source.get(main)
-    if data is None:
-        return False
-    body = data[start.offset:end.offset]
-    opening = body.find(b"{")
-    return opening >= 0 and _C_CALL.search(body, opening) is None
-
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
 CONTAINERS = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,
@@ -191,6 +169,29 @@ _OBJECTS = (CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL)
 _HOLDERS = frozenset({"std::shared_ptr", "std::unique_ptr", "boost::shared_ptr", "const",
                       "volatile", "std::weak_ptr", "Ptr", "SharedPtr", "UniquePtr",
                       "pluginlib::UniquePtr", "std::function", "void"})
+
+
+# a call in C code: a name and its parenthesis, but a statement's keyword's
+_C_CALL = re.compile(rb"\b(?!(?:if|for|while|switch|return|sizeof)\b)[A-Za-z_]\w*\s*\(")
+
+
+def _c_without_calls(function: Cursor, main: str, source: Any) -> bool:
+    """Whether ``function`` is a function of a C source ``main`` (a ``.c`` file, written
+    in C: no class, template or constructor) whose text calls nothing: it makes no ROS
+    call and no call site, and the fields it writes are of C structs, which hold no
+    handle. mav_control_rw's CVXGEN solver (ldl.c) has a 27,000-line ``ldl_factor`` of
+    assignments and ifs alone, whose walks (conditions, members, wrappers) took 30 s of
+    CPU and 1.8 GB for nothing."""
+    start, end = function.extent.start, function.extent.end
+    if start.file is None or end.file is None or start.file.name != main or (
+            end.file.name != main):
+        return False
+    data = source.get(main)
+    if data is None:
+        return False
+    body = data[start.offset:end.offset]
+    opening = body.find(b"{")
+    return opening >= 0 and _C_CALL.search(body, opening) is None
 
 
 def _held_classes(ctype: Type) -> list[str]:
