@@ -2283,7 +2283,7 @@ class CallFinder:
                 and held[0].startswith(SDF_ELEMENT) and name.count("?") == 2) else (
                 sdf_parts if handle_namespace == namespace else None)
             made_in = self._made_in(name, handle_namespace)
-            name_member = self._run_member(name_expr, scope, name) if (
+            name_member = self._run_member(name_expr, scope, name, placed=True) if (
                 source is None and spec.fixed_name is None
                 and not isinstance(written, BelowName)) else None
             self.calls.append(PrimitiveCall(
@@ -2854,12 +2854,17 @@ class CallFinder:
             return None
         return field.get_usr() or None
 
-    def _run_member(self, expr: Cursor | None, scope: Scope, name: str) -> str | None:
+    def _run_member(self, expr: Cursor | None, scope: Scope, name: str,
+                    placed: bool = False) -> str | None:
         """The USR of the member that is the one unknown run of ``name`` (the value of
         ``expr``), when no function of this unit writes it (``_name_member``): nav2's
         controller server publishes on ``params_->odom_topic + ...``, a field of a struct
-        that its ParameterHandler fills from a parameter in another file."""
-        if expr is None or name.count("?") != 1 or PLACEHOLDER in name:
+        that its ParameterHandler fills from a parameter in another file. ``placed``: a
+        call's own name, where what the callers of this function pass (a handle given to
+        the constructor: the handle's namespace) may stand before that run (Weston
+        Robot's messengers advertise ``odom_frame_`` on the handle their constructor
+        takes; main reads the parameter into ``messenger.odom_frame_``)."""
+        if expr is None or name.count("?") != 1 or (PLACEHOLDER in name and not placed):
             return None
         return self._member_of(expr, scope, 0)
 
