@@ -575,6 +575,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     # each call by kind, name and place: one of them, and the conditions the others
     # are made under (a wrapper's call site makes the calls of its branches)
     seen: dict[tuple[object, ...], list[PrimitiveCall]] = {}
+    placed: dict[tuple[object, ...], int] = {}  # each key's index in result.calls
     # the calls of which one copy reads values (a ROS 1 presence test, ``hasParam``,
     # reads the keys alone; a ``getParam`` of the same name at the same place, both in
     # one wrapper, costmap_2d's move_parameter, reads the values: so does the call)
@@ -636,8 +637,16 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 whole.add(key)
             if key not in seen:
                 seen[key] = [call]
+                placed[key] = len(result.calls)
                 result.calls.append(call)
-            elif call.conditions not in (c.conditions for c in seen[key]):
+                continue
+            kept = seen[key][0]
+            if kept.type is None and call.type is not None:
+                # a wrapper that checks a parameter (``hasParam``) before it reads it:
+                # both are made where the wrapper is called; the read gives the type
+                kept = seen[key][0] = result.calls[placed[key]] = dataclasses.replace(
+                    kept, type=call.type)
+            if call.conditions not in (c.conditions for c in seen[key]):
                 seen[key].append(call)
     result.calls = _made_under_fewest(result.calls, seen, whole)
     # a copy named by no parameter beside one that is (a header's function that another

@@ -513,6 +513,9 @@ class CallSites:
             for function in self.functions:
                 for node in function.walk_preorder():
                     callee = callee_of(node) if node.kind == CursorKind.CALL_EXPR else None
+                    if callee is None and node.kind == CursorKind.CALL_EXPR and (
+                            node.referenced is not None):
+                        callee = held_lambda(node.referenced)
                     if node.kind == CursorKind.VAR_DECL:
                         # a variable whose default construction the parse dropped: a
                         # call of the default constructor that passes nothing
@@ -652,6 +655,19 @@ def overridden(method: Cursor, depth: int = 0) -> list[Cursor]:
             continue
         found.extend(overridden(found[-1], depth + 1))
     return found
+
+
+def held_lambda(decl: Cursor) -> Cursor | None:
+    """The lambda variable ``decl`` was made with, when a call names the variable: in a
+    template, where the parse leaves the call of the lambda's ``operator()`` dependent
+    and the call refers to the variable (kr_mav_control's simulator base, a class
+    template, reads each parameter with ``get_param("mass")``, ``auto get_param =
+    [&n](const std::string &name) {...}``)."""
+    if decl.kind != CursorKind.VAR_DECL:
+        return None
+    made = initializer(decl)
+    made = strip(made) if made is not None else None
+    return made if made is not None and made.kind == CursorKind.LAMBDA_EXPR else None
 
 
 def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:

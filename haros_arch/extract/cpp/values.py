@@ -36,6 +36,7 @@ from .expressions import (
     unresolved_operator,
     written_arguments,
 )
+from .reach import FUNCTIONS
 from .synthesis import ANY
 from .writes import Write, by_operator, const_array, emptied, searched_key, writes_of
 
@@ -624,6 +625,21 @@ class Scope:
             self._members.setdefault(chain, []).append(
                 (write.at.extent.start.offset, value))
 
+    def _captured(self, decl: Cursor) -> Scope | None:
+        """The scope of the function around this lambda that declares ``decl``, a local
+        the lambda captures (kr_mav_control's simulator reads each of its parameters
+        through ``auto get_param = [&n](const std::string &name) { ... n.getParam(name,
+        p) ... }``, ``n`` the constructor's handle): what it holds is written there."""
+        if self.body is None or self.body.kind != CursorKind.LAMBDA_EXPR or (
+            self.sites is None or decl.kind != CursorKind.VAR_DECL
+        ) or self.holds(decl.location):
+            return None
+        outer = decl.semantic_parent
+        if outer is None or outer.kind not in FUNCTIONS or outer.kind == CursorKind.LAMBDA_EXPR:
+            return None
+        scope = self.sites.scope(outer)
+        return scope if scope.holds(decl.location) else None
+
     def holds(self, place: SourceLocation) -> bool:
         """Whether ``place`` is in this scope's body: its file, between its ends."""
         if self.body is None:
@@ -1044,6 +1060,9 @@ class Scope:
         writes = self.writes.get(key_of(decl))
         if writes is not None:
             return writes[0] if len(writes) == 1 else None
+        outer = self._captured(decl)
+        if outer is not None:
+            return outer.variable(decl)
         if decl.type.is_const_qualified() or _string_constant(decl) or const_array(decl):
             definition = decl.get_definition() or decl
             return initializer(definition) or _template_initializer(decl)

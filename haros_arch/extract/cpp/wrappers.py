@@ -44,6 +44,7 @@ from .call_sites import (
     closest,
     default_argument,
     delegation,
+    held_lambda,
     is_constructor,
     specialised_keys,
 )
@@ -405,6 +406,11 @@ class Wrappers:
         self.names = frozenset(
             "operator()" if f.kind == CursorKind.LAMBDA_EXPR else f.spelling.split("<")[0]
             for f in functions if _key(f.canonical) in self.summaries)
+        # and a variable holding such a lambda, by which a template calls it (``held_lambda``)
+        self.names |= {node.spelling for nodes in self.preorder.values() for node in nodes
+                       if node.kind == CursorKind.VAR_DECL
+                       and (made := held_lambda(node)) is not None
+                       and _key(made.canonical) in self.summaries}
         self._methods = {}
         for f in functions:
             if _key(f.canonical) in self.summaries and f.kind in (
@@ -1295,6 +1301,9 @@ class Wrappers:
     def _called_keys(self, call: Cursor) -> list[Key]:
         """The keys of the wrapper functions ``call`` calls (``_called``)."""
         target = call.referenced
+        held = held_lambda(target) if target is not None else None
+        if held is not None:
+            return [_key(held.canonical)]
         if target is not None:
             return self._constructed(call, _arguments(call)) or specialised_keys(target)
         # a construction through a factory that depends on a template parameter
