@@ -80,6 +80,13 @@ def bridges(config: Configuration, launch: LaunchModel,
             if path:
                 node.calls.extend(_from_file(path, decl, node, workspace, config))
         if not known:
+            # the program is neither in the workspace nor modelled: its topics are its
+            # arguments and config file, but which parameters of its own it reads
+            # depends on its release (``config_file``, ``lazy``, ...; galactic's
+            # ros_ign_bridge reads none): a read of a private name not known, so a
+            # parameter the launch file gives it is neither read nor unread
+            node.calls.append(PrimitiveCall("read", f"~{UNKNOWN_MARK}", location=decl.location,
+                                            origin="description"))
             instance.node = node
         elif node.completeness == "partial" and instance.node is not None:
             # a config file not read: the bridged topics are not known, whether the
