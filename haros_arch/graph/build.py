@@ -28,7 +28,16 @@ from ..model.runtime import (
     Service,
     Topic,
 )
-from ..model.source import NUMBERED, ROS_ARGUMENT, WORDS, Node, PrimitiveCall, name_runs
+from ..model.source import (
+    COUNTED,
+    NUMBERED,
+    ROS_ARGUMENT,
+    WORDS,
+    Node,
+    PrimitiveCall,
+    counted_turns,
+    name_runs,
+)
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
@@ -1108,6 +1117,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
     if call.name_each == WORDS:
         return _word_calls(call, instance, param, value)
+    if call.name_each.startswith(COUNTED):
+        return _counted_calls(call, param, value)
     elements = _list_elements(call, instance, resources, full)
     if elements is None:
         return [call]
@@ -1131,6 +1142,23 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                     loads_given=name if call.loads is not None else None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
+
+
+def _counted_calls(call: PrimitiveCall, param: Resource | None, value: Any
+                   ) -> list[PrimitiveCall]:
+    """A call made in each turn of a counting loop up to an integer parameter's value
+    (``COUNTED``): one per turn, its ``?`` the turn's number, when the launch files give
+    the parameter a value unconditionally (ego-planner's ``fsm/waypoint_num`` 4:
+    ``~fsm/waypoint0_x`` to ``~fsm/waypoint3_x``); none for a count that makes no turn;
+    the call as it is otherwise (its name keeps its ``?``)."""
+    turns = counted_turns(call.name_each or "", value, _NUMBERED_LIMIT) if (
+        isinstance(param, Parameter) and not param.launch_conditions
+        and call.name.count(UNKNOWN_MARK) == 1) else None
+    if turns is None:
+        return [call]
+    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
+    return [replace(call, name=_filled(call.name, str(turn)), name_param=None,
+                    name_default=None, name_each=None, conditions=kept) for turn in turns]
 
 
 def _member_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resources

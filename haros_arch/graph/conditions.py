@@ -47,7 +47,7 @@ from ..model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ..model.location import Location
 from ..model.rosname import RosName, pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
-from ..model.source import NUMBERED, WORDS
+from ..model.source import COUNTED, NUMBERED, WORDS
 from ..model.values import UNKNOWN_MARK, Unknown
 
 DECIDED_STATEMENTS = ("if", "else", "switch")
@@ -766,6 +766,7 @@ def _list_unset(config: Configuration, instance: NodeInstance, link: Link,
     call = link.call
     if instance.ros_version != 1 or call is None or call.name_each is None or (
         call.name_param is None or call.name_each in (NUMBERED, WORDS)
+        or call.name_each.startswith(COUNTED)
         or UNKNOWN_MARK in call.name_param or not link.rosname.is_unresolved
     ):
         return None

@@ -72,6 +72,25 @@ NUMBERED = "#"
 # ``PrimitiveCall.name_each`` of a call named by each word of a string parameter (costmap_2d's
 # ``observation_sources``, read word by word with ``while (stream >> source)``)
 WORDS = " "
+# the start of a ``PrimitiveCall.name_each`` of a call named by each value of a counting
+# loop whose bound is an integer parameter (``name_param``), its ``?`` the loop variable
+# as decimal text: COUNTED, the first value, and "=" when the last is the bound itself
+# (``i <= n``); ego-planner's ``for (int i = 0; i < waypoint_num_; i++)
+# nh.param("fsm/waypoint" + to_string(i) + "_x", ...)`` is "<0" on ``fsm/waypoint_num``
+COUNTED = "<"
+
+
+def counted_turns(each: str, bound: object, limit: int) -> range | None:
+    """The values a counting loop (``COUNTED``) takes for the bound ``bound``; None when
+    ``each`` is no such mark, the bound is no integer, or there are more than
+    ``limit``."""
+    if not each.startswith(COUNTED) or isinstance(bound, bool) or not isinstance(bound, int):
+        return None
+    start, inclusive = each[len(COUNTED):].rstrip("="), each.endswith("=")
+    if not start.isdigit():
+        return None
+    turns = range(int(start), bound + 1 if inclusive else bound)
+    return turns if len(turns) <= limit else None
 # the start of a ``PrimitiveCall.name_param`` that is no ROS parameter but a child element
 # of a Gazebo classic plugin's SDF (``sdf:topicName``), which robot.attach fills in from
 # the robot description

@@ -66,6 +66,11 @@ _COUNTING = re.compile(
     r"\s*(?:\+\+\s*(?P=var)|(?P=var)\s*\+\+|(?P=var)\s*\+=\s*1)$")
 # the most turns of a counting loop read one by one (``CallFinder._emit_one``)
 MAX_TURNS = 16
+# a counting loop up to a variable or member (``for (int i = 0; i < waypoint_num_; ++i)``)
+_COUNTING_TO = re.compile(
+    r"^(?:[\w:]+\s+)+(?P<var>[A-Za-z_]\w*)\s*=\s*(?P<start>\d+)[uUlL]*\s*;"
+    r"\s*(?P=var)\s*(?P<op><=|<)\s*(?P<end>[A-Za-z_][\w.]*(?:->[A-Za-z_]\w*)*)\s*;"
+    r"\s*(?:\+\+\s*(?P=var)|(?P=var)\s*\+\+|(?P=var)\s*\+=\s*1)$")
 # ``!node->has_parameter(name)``, ``!this->has_parameter("x")``, ``!has_parameter(x)``
 _NOT_DECLARED = re.compile(
     r"!\s*(?:[A-Za-z_][\w:]*\s*(?:\(\s*\))?\s*(?:->|\.)\s*)*has_parameter\s*\(\s*(.+?)\s*\)")
@@ -107,6 +112,9 @@ class ConditionReader:
         # the counting loops over literal bounds read (``_counting``): each one's
         # variable and the values it takes in turn
         self.counted: dict[Condition, tuple[tuple[str, int], tuple[int, ...]]] = {}
+        # and those up to a variable or member (``_counting``): each one's variable, its
+        # first value, whether the bound is its last, and the bound's expression
+        self.counted_to: dict[Condition, tuple[tuple[str, int], int, bool, Cursor]] = {}
         self._reading: tuple[int, object] | None = None
 
     def below(self, node: Cursor, conditions: tuple[Condition, ...]) -> list[Branch]:
@@ -174,7 +182,10 @@ class ConditionReader:
         variable and each value it takes, none when it takes more than ``MAX_TURNS``.
         Such a loop is no condition of what its body makes."""
         found = _COUNTING.match(loop.text)
-        if found is None or not children or children[0].kind != CursorKind.DECL_STMT:
+        if found is None:
+            self._counting_to(loop, children)
+            return
+        if not children or children[0].kind != CursorKind.DECL_STMT:
             return
         declared = [c for c in children[0].get_children() if c.kind == CursorKind.VAR_DECL]
         if len(declared) != 1 or declared[0].spelling != found.group("var"):
@@ -187,6 +198,23 @@ class ConditionReader:
 
         turns = tuple(range(start, end)) if end - start <= MAX_TURNS else ()
         self.counted[loop] = (key_of(declared[0]), turns)
+
+    def _counting_to(self, loop: Condition, children: list[Cursor]) -> None:
+        """Note ``loop`` in ``counted_to`` when it counts up by one from a literal to a
+        variable or member (``for (int i = 0; i < waypoint_num_; i++)``), its bound's
+        expression the right side of its test."""
+        found = _COUNTING_TO.match(loop.text)
+        if found is None or len(children) < 3 or children[0].kind != CursorKind.DECL_STMT:
+            return
+        declared = [c for c in children[0].get_children() if c.kind == CursorKind.VAR_DECL]
+        test = children[1]
+        sides = list(test.get_children()) if test.kind == CursorKind.BINARY_OPERATOR else []
+        if len(declared) != 1 or declared[0].spelling != found.group("var") or len(sides) != 2:
+            return
+        from .values import key_of  # (values reads no conditions)
+
+        self.counted_to[loop] = (key_of(declared[0]), int(found.group("start")),
+                                 found.group("op") == "<=", sides[1])
 
     def _block(self, children: list[Cursor]) -> list[Branch]:
         """The statements of a block, each under what the ones before it decided: after

@@ -28,7 +28,7 @@ from ...model.conditions import (
     Condition,
 )
 from ...model.location import Location
-from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
+from ...model.source import COUNTED, JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from ...plugins.classes import base_name, loader_bases
@@ -1998,6 +1998,49 @@ class CallFinder:
         return place, [(True, self.reader.choice(node, "if", children[0])),
                        (False, self.reader.choice(node, "else", children[0]))]
 
+    def _emit_counted(self, spec: api.RosFunction, call: Cursor, args: list[Cursor],
+                      cls: Cursor | None, conditions: tuple[Condition, ...], scope: Scope,
+                      at: Cursor | None, at_scope: Scope | None, name: Cursor) -> bool:
+        """Emit ``call``, made in a counting loop up to a parameter's value (``for (int
+        i = 0; i < waypoint_num_; i++)`` after ``nh.param("fsm/waypoint_num",
+        waypoint_num_, -1)``) with a name whose one unknown run is the loop's variable
+        (``"fsm/waypoint" + to_string(i) + "_x"``), named by each turn of the loop
+        (``PrimitiveCall.name_each`` ``COUNTED``, the bound's parameter its
+        ``name_param``; the graph fills the turns from the value the configuration gives
+        it); the loop is then the condition of each turn (``EACH_STATEMENT``). False
+        when no loop of ``conditions`` is such a loop for this name."""
+        for loop in conditions:
+            found = self.reader.counted_to.get(loop)
+            if found is None:
+                continue
+            variable, start, inclusive, bound = found
+            if variable in scope.bound or not self._named_by_turn(name, scope, variable, start):
+                continue
+            scope.bound[variable] = start
+            try:
+                whole = _known(scope.string(name))
+            finally:
+                del scope.bound[variable]
+            source = self._parameter_source(bound, scope, 0, value=True)
+            param = _held_name(source)
+            if not whole or param is None:
+                continue
+            each = dataclasses.replace(loop, statement=EACH_STATEMENT)
+            made = len(self.calls)
+            self._emit_one(spec, call, args, cls,
+                           tuple(each if c is loop else c for c in conditions), scope,
+                           at, at_scope)
+            mark = f"{COUNTED}{start}{'=' if inclusive else ''}"
+            for index in range(made, len(self.calls)):
+                done = self.calls[index]
+                if done.name.count("?") == 1 and done.name_param is None:
+                    # (a handle's namespace another file passes, and the parameter read
+                    # on it, are filled together: ``links.resolve``)
+                    self.calls[index] = dataclasses.replace(done, name_param=param,
+                                                            name_each=mark)
+            return True
+        return False
+
     @staticmethod
     def _named_by_turn(name: Cursor, scope: Scope, key: tuple[str, int], turn: int) -> bool:
         """Whether the name ``name`` holds, not known in full, is another with a
@@ -2054,6 +2097,11 @@ class CallFinder:
                         del scope.bound[variable]
                 return
             conditions = tuple(c for c in conditions if c not in self.reader.counted)
+        named = arg(spec.name_arg) if spec.fixed_name is None else None
+        if named is not None and any(c in self.reader.counted_to for c in conditions) and (
+                self._emit_counted(given, call, args, cls, conditions, scope, at, at_scope,
+                                   named)):
+            return
         choice = self._name_choice(arg(spec.name_arg), scope) if (
             spec.fixed_name is None) else None
         if choice is not None:  # one call per side, each under its side of the test
