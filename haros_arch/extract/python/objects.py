@@ -99,6 +99,21 @@ class ParamElement:
     field: str = "."
 
 
+TURN_OF = "a turn of a loop up to parameter "  # the origin of a ``ParamTurn``'s text
+TURN_FROM = ", from "  # after it, the loop's first value
+
+
+@dataclass(frozen=True)
+class ParamTurn:
+    """The variable of a counting loop up to an integer parameter's value (``for i in
+    range(rospy.get_param('~waypoint_num'))``): a call named by it is one call per turn
+    of the value the configuration gives ``name`` (``PrimitiveCall.name_each``
+    ``COUNTED``), from ``start``."""
+
+    name: str
+    start: int = 0
+
+
 @dataclass(frozen=True)
 class ParamObject:
     """An rclpy ``Parameter`` object (from ``get_parameter`` / ``declare_parameter``)."""
@@ -253,6 +268,8 @@ def text_of(value: object) -> Value:
     if isinstance(value, ParamElement):
         field = "" if value.field == "." else f"{FIELD_OF}{value.field}"
         return Value.unknown(f"{ELEMENT_OF}{value.name}{field}")
+    if isinstance(value, ParamTurn):
+        return Value.unknown(f"{TURN_OF}{value.name}{TURN_FROM}{value.start}")
     return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
 
 

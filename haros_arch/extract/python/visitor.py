@@ -23,7 +23,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ...model.location import Location
-from ...model.source import JOINED, PrimitiveCall
+from ...model.source import COUNTED, JOINED, PrimitiveCall
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
@@ -36,6 +36,8 @@ from .objects import (
     MAX_ALTERNATIVES,
     PROGRAM_ARGUMENT,
     PROGRAM_OPTION,
+    TURN_FROM,
+    TURN_OF,
     Alternatives,
     BoundMethod,
     Frame,
@@ -43,6 +45,7 @@ from .objects import (
     NodeHandle,
     NodeMethod,
     ParamElement,
+    ParamTurn,
     ParamValue,
     QoS,
     Record,
@@ -569,6 +572,9 @@ class Walker:
         ``ParamElement`` (``for x in p``, ``for x in p.values()``), a key unknown and
         the element (``for k, x in p.items()``); else None."""
         ev = self.evaluator
+        turn = self._turn_loop(target, over, frame)
+        if turn is not None:
+            return turn
         walked = ev.eval(over, frame)
         if isinstance(walked, ParamValue):
             return ParamElement(walked.name) if isinstance(target, ast.Name) else None
@@ -584,6 +590,24 @@ class Walker:
                 target.elts[1], ast.Name):
             return Seq((Unknown("loop variable"), ParamElement(owner.name)))
         return None
+
+    def _turn_loop(self, target: ast.expr, over: ast.expr, frame: Frame) -> ParamTurn | None:
+        """``ParamTurn`` of a loop ``for i in range(n)`` (or ``range(k, n)``, ``k`` a
+        literal integer) where ``n`` holds a parameter's value; else None."""
+        if not (isinstance(target, ast.Name) and isinstance(over, ast.Call)
+                and isinstance(over.func, ast.Name) and over.func.id == "range"
+                and 1 <= len(over.args) <= 2 and not over.keywords
+                and not any(isinstance(a, ast.Starred) for a in over.args)):
+            return None
+        start = 0
+        if len(over.args) == 2:
+            first = over.args[0]
+            if not (isinstance(first, ast.Constant) and type(first.value) is int
+                    and first.value >= 0):
+                return None
+            start = first.value
+        bound = self.evaluator.eval(over.args[-1], frame)
+        return ParamTurn(bound.name, start) if isinstance(bound, ParamValue) else None
 
     _AsyncFor = _For
 
@@ -1092,6 +1116,12 @@ class Walker:
                 name, _, field = params[0].removeprefix(ELEMENT_OF).partition(FIELD_OF)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
                 call.name_each = field or "."
+            elif len(params) == 1 and params[0].startswith(TURN_OF):
+                # a counting loop's variable up to a parameter (``'~waypoint%d_x' % i``):
+                # one call per turn of the value the configuration gives it
+                name, _, start = params[0].removeprefix(TURN_OF).partition(TURN_FROM)
+                call.name_param = param_name(Value.of(name)) if version == 2 else name
+                call.name_each = f"{COUNTED}{start}"
             elif len(params) == 1 and params[0].startswith(PROGRAM_ARGUMENT):
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``
