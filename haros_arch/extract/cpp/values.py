@@ -634,8 +634,8 @@ class Scope:
             self.sites is None or decl.kind != CursorKind.VAR_DECL
         ) or self.holds(decl.location):
             return None
-        outer = decl.semantic_parent
-        if outer is None or outer.kind not in FUNCTIONS or outer.kind == CursorKind.LAMBDA_EXPR:
+        outer = decl.semantic_parent  # (a lambda's own locals are in its body)
+        if outer is None or outer.kind not in FUNCTIONS:
             return None
         scope = self.sites.scope(outer)
         return scope if scope.holds(decl.location) else None
