@@ -2535,10 +2535,11 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     # every parse of the unit: each file is read once, not once per parse)
     functions: dict[str, list[recall.Function]] = {}
     sites = _Sites(wrappers)
-    if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites) or (
-        not names.learn(_located(first, source))
-    ):
-        return tu  # nothing to declare, or no error where it could cost a call
+    if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites):
+        return tu  # no error where it could cost a call
+    names.in_main = _in_main(first, functions, source)
+    if not names.learn(_located(first, source)):
+        return tu  # nothing to declare
     # Errors come in waves: a class made valid shows its other members. With more than
     # one round, the next waves are looked for without function bodies (the names that
     # make a class invalid are in declarations); then the unit is parsed in full with
@@ -2563,6 +2564,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         # cost a call (the other errors' names are declared too, but never cost a parse)
         left = mine(again)
         hiding = _hiding(again, left, source, fieldless, functions, sites)
+        names.in_main = _in_main(left, functions, source)
         learnt = bool(hiding) and names.learn(_located(hiding, source))
         rest = names.learn(_located([e for e in left if e not in hiding], source))
         # or when this parse is not the best and the other errors name more (members
@@ -2716,6 +2718,20 @@ def _sites(name: str, source: SourceCache, sites: dict[str, list[recall.Site]]
         extra, bare = sites.wrappers if isinstance(sites, _Sites) else ((), ())
         sites[name] = recall.call_sites(text, extra, bare) if text else []
     return sites[name]
+
+
+def _in_main(errors: list[_Error], functions: dict[str, list[recall.Function]],
+             source: SourceCache) -> set[tuple[int, int]]:
+    """The errors in a function named ``main`` (``synthesis.Names.in_main``), by their
+    file's bytes and offset; ``functions``: the files' functions ``_hiding`` read."""
+    found = set()
+    for error in errors:
+        if error.name is None or error.path is None:
+            continue
+        around = [f for f in functions.get(error.path, ()) if f[0] <= error.line <= f[1]]
+        if around and min(around, key=lambda f: f[1] - f[0])[2] == "main":
+            found.add((id(source.get(error.name)), error.offset))
+    return found
 
 
 def _located(errors: list[_Error],

@@ -915,6 +915,13 @@ class Names:
         # in a method of a class derived from a declared class may be that base's
         # method, which the visitor says (``CallFinder._of_unknown_base``)
         self.friends: set[str] = set()
+        # those called in ``main`` (no class's method: no member is hidden), declared at
+        # namespace scope, which ordinary lookup finds whatever the arguments
+        # (lsd_slam's ``XInitThreads()`` of the missing <X11/Xlib.h>: a friend takes no
+        # call without a permissive argument); ``in_main``: the (file bytes' id, offset)
+        # of the errors of the parse being read that are in a function named ``main``
+        self.free: set[str] = set()
+        self.in_main: set[tuple[int, int]] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
         self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
@@ -1304,7 +1311,11 @@ class Names:
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
-                if called and written[-1] not in self.friends and (
+                if called and (id(text), offset) in self.in_main and (
+                        written[-1] not in self.free | _api_methods()):
+                    self.free.add(written[-1])
+                    self.count += 1
+                elif called and written[-1] not in self.friends and (
                         written[-1] not in _api_methods()):
                     # (an API method's name stays an error: a call the parse cannot
                     # resolve is kept by that name, the friend would take it)
@@ -1622,6 +1633,8 @@ class Names:
         members += "".join(f"  template <class... A> friend haros_any &{f}(const A &...);\n"
                            for f in sorted(self.friends - self.members - self.member_templates))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
+        lines += [f"template <class... A> haros_any &{f}(const A &...);"
+                  for f in sorted(self.free - self.friends)]
         if self.qt_members:
             lines += [f"#define {QT_MORE.upper()}_DEFINED", f"struct {QT_MORE} {{",
                       *(f"  static haros_any {m};" for m in sorted(self.qt_members)), "};"]
@@ -1759,7 +1772,8 @@ class Names:
             for member in sorted(self.fields[record]):
                 if len(found) < limit:
                     found.append(f"{record}::{member}")
-        found.extend(f"{f}()" for f in sorted(self.friends)[:max(0, limit - len(found))])
+        found.extend(f"{f}()" for f in sorted(self.friends | self.free)[
+            :max(0, limit - len(found))])
         return found
 
     def __bool__(self) -> bool:
