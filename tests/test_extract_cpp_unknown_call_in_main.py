@@ -4,7 +4,8 @@ names were declared as friends of the permissive class, which only argument-depe
 lookup finds, so that a method's call of an invalid base's member is not hidden; a call
 with no permissive argument found none, the statement stayed an error in the function
 that makes the node's calls, and the node was partial (CPP_ERROR_NEAR_CALL). ``main`` is no
-method: its unknown calls are declared at namespace scope. In a method the friend stays."""
+method, nor is a helper function: their unknown calls are declared at namespace scope. In
+a method the friend stays."""
 
 from __future__ import annotations
 
@@ -23,6 +24,22 @@ int main(int argc, char **argv) {
   ros::init(argc, argv, "viewer");
   ros::NodeHandle nh;
   ros::Publisher pub = nh.advertise<std_msgs::String>("status", 1);
+  ros::spin();
+}
+"""
+
+HELPER = """
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <X11/Xlib.h>
+static ros::Publisher open_display(ros::NodeHandle &nh) {
+  XOpenDisplay(0);
+  return nh.advertise<std_msgs::String>("display", 1);
+}
+int main(int argc, char **argv) {
+  ros::init(argc, argv, "viewer");
+  ros::NodeHandle nh;
+  ros::Publisher pub = open_display(nh);
   ros::spin();
 }
 """
@@ -62,6 +79,13 @@ def test_an_unknown_call_in_main_is_declared_at_namespace_scope(write_tree) -> N
     assert "CPP_ERROR_NEAR_CALL" not in codes and "CPP_PARSE_ERROR" not in codes
     declared = [d.message for d in result.diagnostics if d.code == "CPP_NAMES_DECLARED"]
     assert declared and "XInitThreads()" in declared[0] and "glutInit()" in declared[0]
+
+
+def test_so_is_one_in_a_free_helper_function(write_tree) -> None:
+    result = _extract(write_tree, HELPER)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "display")]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")]
 
 
 def test_an_unknown_call_in_a_method_stays_a_friend(write_tree) -> None:

@@ -1850,7 +1850,8 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         if start.file is None:
             continue
         name = os.path.abspath(start.file.name)
-        functions.setdefault(name, []).append((start.line, end.line, function.spelling))
+        functions.setdefault(name, []).append((start.line, end.line, function.spelling,
+                                               function.kind == CursorKind.FUNCTION_DECL))
         if function.kind != CursorKind.FIELD_DECL and finder.wrappers.silent(function):
             silent.setdefault(name, []).append((start.line, end.line))
     # (and code that does not run in this unit: ``reach``)
@@ -2537,7 +2538,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     sites = _Sites(wrappers)
     if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites):
         return tu  # no error where it could cost a call
-    names.in_main = _in_main(first, functions, source)
+    names.in_free = _in_free(first, functions, source)
     if not names.learn(_located(first, source)):
         return tu  # nothing to declare
     # Errors come in waves: a class made valid shows its other members. With more than
@@ -2564,7 +2565,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         # cost a call (the other errors' names are declared too, but never cost a parse)
         left = mine(again)
         hiding = _hiding(again, left, source, fieldless, functions, sites)
-        names.in_main = _in_main(left, functions, source)
+        names.in_free = _in_free(left, functions, source)
         learnt = bool(hiding) and names.learn(_located(hiding, source))
         rest = names.learn(_located([e for e in left if e not in hiding], source))
         # or when this parse is not the best and the other errors name more (members
@@ -2720,16 +2721,17 @@ def _sites(name: str, source: SourceCache, sites: dict[str, list[recall.Site]]
     return sites[name]
 
 
-def _in_main(errors: list[_Error], functions: dict[str, list[recall.Function]],
+def _in_free(errors: list[_Error], functions: dict[str, list[recall.Function]],
              source: SourceCache) -> set[tuple[int, int]]:
-    """The errors in a function named ``main`` (``synthesis.Names.in_main``), by their
-    file's bytes and offset; ``functions``: the files' functions ``_hiding`` read."""
+    """The errors in a free function (``main``, a helper: a function, no class's
+    method; ``synthesis.Names.in_free``), by their file's bytes and offset;
+    ``functions``: the files' functions ``_hiding`` read."""
     found = set()
     for error in errors:
         if error.name is None or error.path is None:
             continue
         around = [f for f in functions.get(error.path, ()) if f[0] <= error.line <= f[1]]
-        if around and min(around, key=lambda f: f[1] - f[0])[2] == "main":
+        if around and min(around, key=lambda f: f[1] - f[0])[3]:
             found.add((id(source.get(error.name)), error.offset))
     return found
 

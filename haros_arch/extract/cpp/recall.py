@@ -35,6 +35,7 @@ from dataclasses import dataclass
 
 from clang.cindex import (
     Cursor,
+    CursorKind,
     LibclangError,
     SourceRange,
     TranslationUnit,
@@ -320,7 +321,10 @@ def missed(sites: Sequence[Site], lines: set[int], silent: Sequence[tuple[int, i
             and not any(start <= site.line <= end for start, end in silent)]
 
 
-Function = tuple[int, int, str]  # first line, last line, name
+# first line, last line, name, and whether it is a free function (a function, not a
+# class's method, so none of its unqualified names is a member of a base)
+Function = tuple[int, int, str, bool]
+_FREE = CursorKind.FUNCTION_DECL.value
 
 
 def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
@@ -439,7 +443,7 @@ def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function
                 extent = lib.clang_getCursorExtent(cursor)
                 found.setdefault(name, []).append(
                     (line_of(lib.clang_getRangeStart(extent)),
-                     line_of(lib.clang_getRangeEnd(extent)), cursor.spelling))
+                     line_of(lib.clang_getRangeEnd(extent)), cursor.spelling, kind == _FREE))
             return 1
         return 2 if kind in containers else 1  # CXChildVisit_Recurse into a container
 

@@ -915,13 +915,14 @@ class Names:
         # in a method of a class derived from a declared class may be that base's
         # method, which the visitor says (``CallFinder._of_unknown_base``)
         self.friends: set[str] = set()
-        # those called in ``main`` (no class's method: no member is hidden), declared at
-        # namespace scope, which ordinary lookup finds whatever the arguments
-        # (lsd_slam's ``XInitThreads()`` of the missing <X11/Xlib.h>: a friend takes no
-        # call without a permissive argument); ``in_main``: the (file bytes' id, offset)
-        # of the errors of the parse being read that are in a function named ``main``
+        # those called in a free function (``main``, a helper: a function, no class's
+        # method, so no member is hidden), declared at namespace scope, which
+        # ordinary lookup finds whatever the arguments (lsd_slam's ``XInitThreads()`` of
+        # the missing <X11/Xlib.h>: a friend takes no call without a permissive
+        # argument); ``in_free``: the (file bytes' id, offset) of the errors of the
+        # parse being read that are in a free function
         self.free: set[str] = set()
-        self.in_main: set[tuple[int, int]] = set()
+        self.in_free: set[tuple[int, int]] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
         self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
@@ -1311,7 +1312,7 @@ class Names:
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
-                if called and (id(text), offset) in self.in_main and (
+                if called and (id(text), offset) in self.in_free and (
                         written[-1] not in self.free | _api_methods()):
                     self.free.add(written[-1])
                     self.count += 1
@@ -1633,8 +1634,11 @@ class Names:
         members += "".join(f"  template <class... A> friend haros_any &{f}(const A &...);\n"
                            for f in sorted(self.friends - self.members - self.member_templates))
         lines = [_PRELUDE % (_COMPOUND_MEMBERS, members, _OPERATORS)]
+        # (not a name also declared as a type, scope or template: a function of its name
+        # would hide it, ``struct`` needed wherever it is named; moveit_setup_assistant's
+        # ``TiXmlElement(...)``, a construction, beside ``TiXmlElement *``)
         lines += [f"template <class... A> haros_any &{f}(const A &...);"
-                  for f in sorted(self.free - self.friends)]
+                  for f in sorted(self.free - self.friends - self.root.children.keys())]
         if self.qt_members:
             lines += [f"#define {QT_MORE.upper()}_DEFINED", f"struct {QT_MORE} {{",
                       *(f"  static haros_any {m};" for m in sorted(self.qt_members)), "};"]
