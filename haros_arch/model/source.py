@@ -80,6 +80,12 @@ WORDS = " "
 COUNTED = "<"
 
 
+def counted_mark(start: int, inclusive: bool) -> str:
+    """``PrimitiveCall.name_each`` of a counting loop from ``start`` (``COUNTED``), up to
+    its bound, that value too when ``inclusive`` (``i <= n``)."""
+    return f"{COUNTED}{start}{'=' if inclusive else ''}"
+
+
 def counted_turns(each: str, bound: object, limit: int) -> range | None:
     """The values a counting loop (``COUNTED``) takes for the bound ``bound``; None when
     ``each`` is no such mark, the bound is no integer, or there are more than

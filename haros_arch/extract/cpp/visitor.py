@@ -28,7 +28,7 @@ from ...model.conditions import (
     Condition,
 )
 from ...model.location import Location
-from ...model.source import COUNTED, JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall
+from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall, counted_mark
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from ...plugins.classes import base_name, loader_bases
@@ -2030,7 +2030,7 @@ class CallFinder:
             self._emit_one(spec, call, args, cls,
                            tuple(each if c is loop else c for c in conditions), scope,
                            at, at_scope)
-            mark = f"{COUNTED}{start}{'=' if inclusive else ''}"
+            mark = counted_mark(start, inclusive)
             for index in range(made, len(self.calls)):
                 done = self.calls[index]
                 if done.name.count("?") == 1 and done.name_param is None:

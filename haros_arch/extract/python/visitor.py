@@ -23,7 +23,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ...model.location import Location
-from ...model.source import COUNTED, JOINED, PrimitiveCall
+from ...model.source import JOINED, PrimitiveCall, counted_mark
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
@@ -1121,7 +1121,7 @@ class Walker:
                 # one call per turn of the value the configuration gives it
                 name, _, start = params[0].removeprefix(TURN_OF).partition(TURN_FROM)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
-                call.name_each = f"{COUNTED}{start}"
+                call.name_each = counted_mark(int(start), False)
             elif len(params) == 1 and params[0].startswith(PROGRAM_ARGUMENT):
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``
