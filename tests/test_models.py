@@ -209,7 +209,9 @@ def test_the_distribution_comes_from_the_project_then_the_environment_then_the_l
     assert choose_distro(None, {}, ros1)[0] == "noetic"
     assert choose_distro(None, {}, ros2)[0] == "jazzy"
     _model, config = _analyse(distro="melodic", shipped=False)
-    assert _instance(config, "/amcl").completeness == "unknown"  # the user's is noetic
+    # the user's model is noetic's: it stands for melodic's, the node partial
+    amcl = _instance(config, "/amcl")
+    assert amcl.completeness == "partial" and amcl.node.model.startswith("noetic/")
 
 
 def test_a_bad_model_file_is_a_diagnostic(tmp_path):

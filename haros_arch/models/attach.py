@@ -11,7 +11,11 @@ The distribution is the project file's ``distro:``, else ``ROS_DISTRO`` in the
 configuration's environment, else guessed from its launch files (ROS 1: noetic, ROS 2:
 jazzy); humble and iron take jazzy's model of a package they have none of (models for
 them are made only where their packages differ: humble's ship for 50 packages, iron's for
-none). A ``MODEL_DISTRO`` diagnostic says
+none). Another distribution of a known ROS (melodic, kinetic; foxy, kilted, rolling)
+takes the model of the nearest release of its ROS that has one (noetic's for a ROS 1
+one), as evidence of what its node does, not of what it lacks: such a node is
+``partial`` (its release may read or name what that model's does not), so checks that
+claim something absent do not decide on it. A ``MODEL_DISTRO`` diagnostic says
 which, and ``MODEL_USED`` which model each node took (its label starts with the
 distribution it is for), and under which name when the launch file starts it by
 another name its releases install (``Node.aliases``).
@@ -38,6 +42,25 @@ from .library import Library
 DEFAULT_DISTRO = {1: "noetic", 2: "jazzy"}
 # a distribution whose models are made only where its packages differ from another's
 FALLBACK = {"humble": "jazzy", "iron": "jazzy"}
+# each ROS's distributions, oldest first (the names ROS_DISTRO takes)
+RELEASES = (
+    ("boxturtle", "cturtle", "diamondback", "electric", "fuerte", "groovy", "hydro",
+     "indigo", "jade", "kinetic", "lunar", "melodic", "noetic"),
+    ("ardent", "bouncy", "crystal", "dashing", "eloquent", "foxy", "galactic", "humble",
+     "iron", "jazzy", "kilted", "rolling"),
+)
+
+
+def stand_ins(distro: str) -> tuple[str, ...]:
+    """The other distributions of ``distro``'s ROS whose models may stand for its own,
+    nearest release first (the newer of two as near): none for a name of no ROS."""
+    for releases in RELEASES:
+        if distro in releases:
+            at = releases.index(distro)
+            return tuple(sorted((r for r in releases if r != distro),
+                                key=lambda r: (abs(releases.index(r) - at),
+                                               releases.index(r) < at)))
+    return ()
 
 
 def choose_distro(setting: str | None, environment: Mapping[str, str],
@@ -60,7 +83,7 @@ class Attacher:
         self.library = library
         self.distro = distro
         self.packages = packages
-        self._made: dict[tuple[str, str, str], Node] = {}
+        self._made: dict[tuple[str, str, str, bool], Node] = {}
 
     def nodes_for(self, launch: LaunchModel, workspace: Workspace, nodes: Mapping[str, Node],
                   environment: Mapping[str, str], found: list[Diagnostic]
@@ -79,7 +102,7 @@ class Attacher:
             if chosen is None:
                 chosen = choose_distro(self.distro, environment, launch)
                 found.append(diag.make("MODEL_DISTRO", decl.location, distro=chosen[0],
-                                       why=chosen[1]))
+                                       why=chosen[1] + self._standing(chosen[0])))
             plugin = nodelet_plugin(decl)
             if plugin is not None and self._find(package, chosen[0]) is None:
                 # a lookup name whose first part is not the exporting package
@@ -91,7 +114,7 @@ class Attacher:
             if model is None:
                 continue
             executable = key.partition("/")[2]
-            node = self._node(model, executable)
+            node = self._node(model, executable, chosen[0])
             if node is None:
                 found.append(diag.make("MODEL_NODE_MISSING", decl.location, node=key,
                                        model=model.label,
@@ -122,26 +145,55 @@ class Attacher:
     def _find(self, package: str, distro: str) -> InterfaceModel | None:
         """The package's model for ``distro``, else for the distribution whose models
         stand for it (``FALLBACK``: models are made for humble only where it differs
-        from jazzy); the model's label names the distribution it is for."""
+        from jazzy), else for the nearest release of its ROS that has one
+        (``stand_ins``); the model's label names the distribution it is for."""
         model = self.library.find(package, distro)
         if model is None and distro in FALLBACK:
             model = self.library.find(package, FALLBACK[distro])
+        for other in () if model is not None else stand_ins(distro):
+            model = self.library.find(package, other)
+            if model is not None:
+                break
         return model
 
-    def _node(self, model: InterfaceModel, executable: str) -> Node | None:
+    def _standing(self, distro: str) -> str:
+        """What the ``MODEL_DISTRO`` note adds on the models ``distro`` takes when it has
+        none of a package: the distributions with models that stand for it."""
+        if distro in FALLBACK:
+            return f"; {FALLBACK[distro]}'s stand for a package it has none of"
+        if not any(distro in releases for releases in RELEASES):
+            return "; no ROS distribution of that name is known: no interface model is used"
+        having = self.library.distributions()
+        others = [d for d in stand_ins(distro) if d in having]
+        if distro in having or not others:
+            return ""
+        names = " else ".join(d + "'s" for d in others)
+        return f"; {distro} has none here: {names} stand for it, each node that takes one partial"
+
+    def _node(self, model: InterfaceModel, executable: str, distro: str) -> Node | None:
+        """The node of ``model`` run as ``executable`` in a configuration of ``distro``:
+        ``partial`` when the model is another release's that does not stand for it
+        whole (``FALLBACK`` does)."""
         source = model.node(executable)
         if source is None:
             return None
-        key = (model.distro or "", model.package, source.executable)
+        other = model.distro not in (None, distro, FALLBACK.get(distro))
+        key = (model.distro or "", model.package, source.executable, other)
         if key in self._made:
             return self._made[key]
         node = copy.deepcopy(source)
         node.model = model.label
-        if node.completeness == "complete":
+        if node.completeness == "complete" and not other:
             node.completeness = "model"
-        elif node.completeness == "partial":
+        elif node.completeness in ("complete", "partial"):
             node.completeness_reasons = [f"interface model {model.label}: {r}"
                                          for r in node.completeness_reasons]
+            if other:
+                node.completeness = "partial"
+                node.completeness_reasons.append(
+                    f"interface model {model.label} is {model.distro}'s, standing for "
+                    f"another release that has none of {model.package} here: what that "
+                    f"release reads or names may differ")
         node.calls = [replace(c, origin="model") if c.origin != "action" else c
                       for c in node.calls]
         node.location = Location(file=model.path) if model.path else node.location
@@ -172,7 +224,7 @@ class PluginFinder:
                 (n for n in model.nodes if n.name == cls or (n.kind == "plugin" and (
                     cls == n.executable or cls in plugin_types(n)))), None)
             if model is not None and source is not None:
-                return self.attacher._node(model, source.executable)
+                return self.attacher._node(model, source.executable, self.distro)
         return None
 
     def package(self, name: str) -> InterfaceModel | None:

@@ -47,6 +47,15 @@ class Library:
             self._shipped[key] = self._read_shipped(distro, package)
         return self._shipped[key]
 
+    def distributions(self) -> set[str]:
+        """The distributions some model is for: the user's and the shipped ones."""
+        found = {d for d, _ in self.user if d is not None}
+        try:
+            shipped = os.listdir(self.shipped) if self.shipped is not None else []
+        except OSError:
+            shipped = []
+        return found | {d for d in shipped if os.path.isdir(os.path.join(self.shipped or "", d))}
+
     def _read_shipped(self, distro: str, package: str) -> InterfaceModel | None:
         if self.shipped is None or "/" in distro + package or package.startswith("."):
             return None
