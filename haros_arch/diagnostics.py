@@ -961,7 +961,10 @@ CATALOGUE: dict[str, Entry] = {
         "Nodes of packages without source in the workspace take the interface model of "
         "this ROS distribution: the project file's 'distro', else ROS_DISTRO in the "
         "configuration's environment, else noetic for ROS 1 launch files and jazzy for "
-        "ROS 2 ones."),
+        "ROS 2 ones. humble and iron take jazzy's model of a package they have none of; "
+        "another distribution of a known ROS (melodic, foxy, rolling, ...) takes the "
+        "nearest release's of its ROS, and the node is then partial: its own release may "
+        "read or name what that model's does not."),
     "MODEL_USED": Entry(
         "info", "node {node} ({where}) takes the interface model {model}",
         "The node's package has no source in the workspace; its interface comes from a "
