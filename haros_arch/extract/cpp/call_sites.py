@@ -74,6 +74,8 @@ class CallSites:
         self.forks: list[Fork] | None = None
         self._members: dict[tuple[str, int], list[tuple[Cursor | None, Cursor]]] = {}
         self._written: dict[tuple[str, int], bool] = {}  # ``written``, by member
+        self._read_into: dict[tuple[str, int], bool] = {}  # ``read_into``, by member
+        self._loaded: dict[tuple[str, int], bool] = {}  # ``loaded_elsewhere``, by class
         # the classes some function of the unit assigns an object of as a whole
         # (``whole_records``), read once when first asked
         self._whole: set[tuple[str, int]] | None = None
@@ -355,13 +357,74 @@ class CallSites:
         if found is not None:
             value, constructor = found
             if value is not None:
-                if not initial and _filled(field, constructor, self.source):
+                if not initial and (_filled(field, constructor, self.source)
+                                    or self.read_into(field)
+                                    or self.loaded_elsewhere(field)):
                     return None  # (``initial``: the default of the read that fills it)
                 return value, self.scope(constructor)
         value = initializer(field)
         if value is None or (not initial and self.written(field)):
             return None
         return value, Scope(None, self.macros, self.source, self)
+
+    def read_into(self, field: Cursor) -> bool:
+        """Whether a method of this unit but a constructor, a destructor or a parameter
+        callback passes the string or number member ``field`` as the out argument of a
+        ROS parameter read (``_reads_parameter``), as an initialisation method does
+        (teb_local_planner's ``nh.param("odom_topic", odom_topic, odom_topic)`` in
+        ``loadRosParamFromNodeHandle`` after its constructor's ``odom_topic = "odom"``):
+        then what the constructor gives it is the read's default, not what it holds when
+        the node runs (``_filled``, for a read in the constructor itself)."""
+        found = key_of(field)
+        cached = self._read_into.get(found)
+        if cached is not None:
+            return cached
+        spelling = field.spelling.encode("utf-8")
+        result = _plain_value(field) and any(
+            write.variable is not None and key_of(write.variable) == found
+            and out_argument(write) and _reads_parameter(write.at)
+            for function in self.functions
+            if function.kind not in (CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR)
+            and _may_name(function, spelling, self.source) and not parameter_callback(function)
+            for node in function.walk_preorder() for write in writes_of(node, self.source))
+        self._read_into[found] = result
+        return result
+
+    def loaded_elsewhere(self, field: Cursor) -> bool:
+        """Whether this unit hands a ROS handle to a method of the string member
+        ``field``'s class that is defined in no file of the unit and may write its
+        object (not ``const``): a settings class whose loader reads parameters into its
+        members in another source (teb_local_planner's ``cfg_.loadRosParamFromNodeHandle
+        (nh)``, defined in teb_config.cpp, after ``odom_topic = "odom"`` in the
+        constructor its header defines); what the constructor gives the member is then
+        not known to be what it holds."""
+        from .handles import is_handle  # (handles imports this module)
+
+        owner = field.semantic_parent
+        if owner is None or msg_types.param_type(field.type) != "str":
+            return False  # (a number's or a flag's default stays the declaration's)
+        key = key_of(owner.canonical)
+        cached = self._loaded.get(key)
+        if cached is not None:
+            return cached
+        result = False
+        for function in self.functions:
+            for node in function.walk_preorder():
+                target = node.referenced if node.kind == CursorKind.CALL_EXPR else None
+                if target is None or target.kind != CursorKind.CXX_METHOD or (
+                        target.is_const_method() or target.is_static_method()):
+                    continue
+                parent = target.semantic_parent
+                if parent is None or key_of(parent.canonical) != key or (
+                        target.get_definition() is not None):
+                    continue
+                if any(is_handle(arg) for arg in node.get_arguments()):
+                    result = True
+                    break
+            if result:
+                break
+        self._loaded[key] = result
+        return result
 
     def written(self, field: Cursor) -> bool:
         """Whether a function of this unit but a destructor writes ``field`` (on any
@@ -1213,6 +1276,26 @@ def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
     return any(write.variable is not None and write.variable == field
                and out_argument(write)
                for node in body.walk_preorder() for write in writes_of(node, source))
+
+
+# the ROS API's reads of a parameter into a variable given by reference (roscpp's handle
+# and ``ros::param``, rclcpp's node): (the owner's qualified name, the function's)
+_READS_INTO = frozenset({
+    ("ros::NodeHandle", "param"), ("ros::NodeHandle", "getParam"),
+    ("ros::NodeHandle", "getParamCached"), ("ros::param", "param"), ("ros::param", "get"),
+    ("ros::param", "getCached"), ("rclcpp::Node", "get_parameter"),
+    ("rclcpp::Node", "get_parameter_or"), ("rclcpp_lifecycle::LifecycleNode", "get_parameter"),
+    ("rclcpp_lifecycle::LifecycleNode", "get_parameter_or")})
+
+
+def _reads_parameter(call: Cursor) -> bool:
+    """Whether ``call`` is a read of a ROS parameter into a variable (``_READS_INTO``); a
+    run-time helper that takes a member by reference (rtabmap's ``util3d`` functions given
+    ``decimation_``) is not."""
+    target = call.referenced if call.kind == CursorKind.CALL_EXPR else None
+    if target is None or target.semantic_parent is None:
+        return False
+    return (qualified_name(target.semantic_parent), target.spelling) in _READS_INTO
 
 
 def uses_parameter(expr: Cursor) -> bool:
