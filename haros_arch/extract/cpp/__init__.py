@@ -993,6 +993,30 @@ def _exported_unbuilt(found: tuple[Any, ...] | None, units: Iterable[CppResult])
         base not in reached) and not _named_in(base, hiding, scoped)}
 
 
+_IN_PROCESS_CLASS = re.compile(r"runs the nodelet (\S+) in its own process")
+
+
+def _in_process(units: list[tuple[str, CppResult]], exported: list[tuple[str, str]]
+                ) -> set[str]:
+    """The exported classes (``exported``: the units' registrations, a class paired
+    with itself and with each base) that a ``nodelet::Loader`` load of the executable
+    runs in its own process (``CPP_NODELET_IN_PROCESS``, by lookup name): the class
+    whose qualified name the lookup name spells with ``/``
+    (``apriltag_ros/ContinuousDetector``), else whose last name is the lookup name's,
+    else the one class exported when there is one."""
+    names = [match.group(1) for _, unit in units for d in unit.diagnostics
+             if d.code == "CPP_NODELET_IN_PROCESS"
+             and (match := _IN_PROCESS_CLASS.match(d.message)) is not None]
+    classes = list(dict.fromkeys(cls for cls, base in exported if cls == base))
+    found: set[str] = set()
+    for name in names:
+        same = [c for c in classes if c.replace("::", "/") == name] or [
+            c for c in classes if c.rpartition("::")[2] == name.rpartition("/")[2]] or (
+            classes if len(classes) == 1 else [])
+        found.update(same)
+    return found
+
+
 def _named_in(cls: str, words: Collection[str], scoped: dict[str, set[str]]) -> bool:
     """Whether the code that may hide a construction (``words``) can name the class
     ``cls``: its own name is one of them, anywhere, or written in a function or a class
@@ -1099,6 +1123,10 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
         pair for _, unit in units for pair in unit.registered))
     if not starts:
         return None
+    # a nodelet main() loads under the node's own name (``CPP_NODELET_IN_PROCESS``):
+    # the exported class it names runs here as an entry does, with what it builds
+    # (apriltag_ros' continuous node: ContinuousDetector's TagDetector, in another source)
+    starts.update(_in_process(units, exported))
     starts.add(STATIC)
     reached: set[str] = set()
     words = outside = set(unseen) - named
