@@ -561,7 +561,9 @@ public:
   size_t get_intra_process_subscription_count() const;
   const rmw_gid_t& get_gid() const;
 };
-template<class M, class A = void> class Publisher : public PublisherBase {
+// the allocator's default is rclcpp's, so a workspace wrapper's
+// ``shared_ptr<Publisher<M, std::allocator<void>>>`` is a ``Publisher<M>::SharedPtr``
+template<class M, class A = std::allocator<void>> class Publisher : public PublisherBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
   using PublishedType = M;
@@ -615,7 +617,7 @@ public:
   MessagePoolMemoryStrategy();
 };
 } }
-template<class M, class A = void> class Subscription : public SubscriptionBase {
+template<class M, class A = std::allocator<void>> class Subscription : public SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
   bool take(M& message_out, MessageInfo& message_info_out);
