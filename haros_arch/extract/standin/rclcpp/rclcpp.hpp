@@ -1096,6 +1096,18 @@ public:
   static std::vector<Parameter> get_parameters_from_event(
       const rcl_interfaces::msg::ParameterEvent& event);
 };
+// rclcpp/parameter_events_filter.hpp: the parameters of an event of the names and kinds
+// asked (metavision_driver's onParameterEvent); a filter of a message, no ROS call
+class ParameterEventsFilter {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(ParameterEventsFilter)
+  enum class EventType { NEW, DELETED, CHANGED };
+  using EventPair = std::pair<EventType, rcl_interfaces::msg::Parameter*>;
+  ParameterEventsFilter(std::shared_ptr<const rcl_interfaces::msg::ParameterEvent> event,
+                        const std::vector<std::string>& names,
+                        const std::vector<EventType>& types);
+  const std::vector<EventPair>& get_events() const;
+};
 // rclcpp/guard_condition.hpp, wait_result_kind.hpp, wait_result.hpp, wait_set_template.hpp
 // and wait_set.hpp: a wait set over the node's entities (waits, takes; makes no ROS name)
 class GuardCondition {
