@@ -1033,6 +1033,38 @@ def test_the_node_bound_with_its_own_member_function_is_a_callback_binding(
                 if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 13)]
 
 
+def test_the_node_given_with_its_classs_static_function_is_a_callback_binding(
+        write_tree) -> None:
+    """camera_aravis2 a4fb0c1 connects a GLib signal of its camera (aravis' headers
+    missing) with ``g_signal_connect(p_device_, "control-lost",
+    (GCallback)CameraAravisNodeBase::handleControlLostSignal, this)``: the node is the
+    user data handed back to its own class's static function, whose calls are read where
+    it is defined, so no CPP_NODE_TO_UNKNOWN (every driver node was partial for it). With
+    a free function or another class's static function the node stays partial."""
+    source = (
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <arv.h>\n"
+        "void lost(ArvDevice * d, gpointer p);\n"
+        "class Other { public: static void lost(ArvDevice * d, gpointer p); };\n"
+        "class Camera : public rclcpp::Node {\n public:\n"
+        "  Camera() : Node(\"camera\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"lost\", 1);\n"
+        "    device_ = arv_camera_get_device(camera_);\n"
+        "    g_signal_connect(device_, \"control-lost\", (GCallback)CALLBACK, this);\n"
+        "  }\n"
+        "  static void onLost(ArvDevice * device, gpointer data);\n"
+        "  ArvCamera * camera_;\n  ArvDevice * device_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    for callback in ("Camera::onLost", "&Camera::onLost"):
+        bound = _server(write_tree, source.replace("CALLBACK", callback))
+        assert [(c.kind, c.name) for c in bound.calls] == [("publish", "lost")]
+        assert "CPP_NODE_TO_UNKNOWN" not in codes(bound)
+    for callback in ("lost", "Other::lost"):
+        given = _server(write_tree, source.replace("CALLBACK", callback))
+        assert [(d.code, d.location.line) for d in given.diagnostics
+                if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 11)]
+
+
 def test_an_explicit_template_instantiation_is_no_call_site() -> None:
     """OrbbecSDK_ROS2's dynamic_params.cpp instantiates its wrapper for each type
     (``template void Parameters::setParamT<bool>(std::string param_name, ...);``): a
