@@ -1065,6 +1065,37 @@ def test_the_node_given_with_its_classs_static_function_is_a_callback_binding(
                 if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 11)]
 
 
+def test_a_vendor_constant_given_to_an_objects_method_in_main_is_a_value(
+        write_tree) -> None:
+    """ydlidar_ros2_driver 6b9f249's main configures the SDK's ``CYdLidar laser`` (its
+    header missing) with ``laser.setlidaropt(LidarPropSerialPort, value, size)``: a
+    whole argument of a call of an object's method is an expression, so the CamelCase
+    enumerator is a value (it was declared a type: "does not refer to a value", twenty
+    errors in the function that declares the parameters and publishes the scan, the
+    node partial), and in a free function it is declared at namespace scope, where no
+    class member can be shadowed."""
+    source = (
+        "#include <memory>\n#include <string>\n#include \"src/CYdLidar.h\"\n"
+        "#include <rclcpp/rclcpp.hpp>\n#include <sensor_msgs/msg/laser_scan.hpp>\n"
+        "int main(int argc, char * argv[]) {\n"
+        "  rclcpp::init(argc, argv);\n"
+        "  auto node = rclcpp::Node::make_shared(\"lidar\");\n"
+        "  CYdLidar laser;\n"
+        "  std::string port = \"/dev/ydlidar\";\n"
+        "  node->declare_parameter(\"port\", port);\n"
+        "  node->get_parameter(\"port\", port);\n"
+        "  laser.setlidaropt(LidarPropSerialPort, port.c_str(), port.size());\n"
+        "  int baud = 230400;\n"
+        "  laser.setlidaropt(LidarPropSerialBaudrate, &baud, sizeof(int));\n"
+        "  auto pub = node->create_publisher<sensor_msgs::msg::LaserScan>(\"scan\", 10);\n"
+        "  rclcpp::spin(node);\n}\n")
+    result = _server(write_tree, source)
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "port"), ("read", "port"), ("publish", "scan")]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
 def test_an_explicit_template_instantiation_is_no_call_site() -> None:
     """OrbbecSDK_ROS2's dynamic_params.cpp instantiates its wrapper for each type
     (``template void Parameters::setParamT<bool>(std::string param_name, ...);``): a
