@@ -1033,6 +1033,69 @@ def test_the_node_bound_with_its_own_member_function_is_a_callback_binding(
                 if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 13)]
 
 
+def test_the_node_given_with_its_classs_static_function_is_a_callback_binding(
+        write_tree) -> None:
+    """camera_aravis2 a4fb0c1 connects a GLib signal of its camera (aravis' headers
+    missing) with ``g_signal_connect(p_device_, "control-lost",
+    (GCallback)CameraAravisNodeBase::handleControlLostSignal, this)``: the node is the
+    user data handed back to its own class's static function, whose calls are read where
+    it is defined, so no CPP_NODE_TO_UNKNOWN (every driver node was partial for it). With
+    a free function or another class's static function the node stays partial."""
+    source = (
+        "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+        "#include <arv.h>\n"
+        "void lost(ArvDevice * d, gpointer p);\n"
+        "class Other { public: static void lost(ArvDevice * d, gpointer p); };\n"
+        "class Camera : public rclcpp::Node {\n public:\n"
+        "  Camera() : Node(\"camera\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::String>(\"lost\", 1);\n"
+        "    device_ = arv_camera_get_device(camera_);\n"
+        "    g_signal_connect(device_, \"control-lost\", (GCallback)CALLBACK, this);\n"
+        "  }\n"
+        "  static void onLost(ArvDevice * device, gpointer data);\n"
+        "  ArvCamera * camera_;\n  ArvDevice * device_;\n"
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
+    for callback in ("Camera::onLost", "&Camera::onLost"):
+        bound = _server(write_tree, source.replace("CALLBACK", callback))
+        assert [(c.kind, c.name) for c in bound.calls] == [("publish", "lost")]
+        assert "CPP_NODE_TO_UNKNOWN" not in codes(bound)
+    for callback in ("lost", "Other::lost"):
+        given = _server(write_tree, source.replace("CALLBACK", callback))
+        assert [(d.code, d.location.line) for d in given.diagnostics
+                if d.code == "CPP_NODE_TO_UNKNOWN"] == [("CPP_NODE_TO_UNKNOWN", 11)]
+
+
+def test_a_vendor_constant_given_to_an_objects_method_in_main_is_a_value(
+        write_tree) -> None:
+    """ydlidar_ros2_driver 6b9f249's main configures the SDK's ``CYdLidar laser`` (its
+    header missing) with ``laser.setlidaropt(LidarPropSerialPort, value, size)``: a
+    whole argument of a call of an object's method is an expression, so the CamelCase
+    enumerator is a value (it was declared a type: "does not refer to a value", twenty
+    errors in the function that declares the parameters and publishes the scan, the
+    node partial), and in a free function it is declared at namespace scope, where no
+    class member can be shadowed."""
+    source = (
+        "#include <memory>\n#include <string>\n#include \"src/CYdLidar.h\"\n"
+        "#include <rclcpp/rclcpp.hpp>\n#include <sensor_msgs/msg/laser_scan.hpp>\n"
+        "int main(int argc, char * argv[]) {\n"
+        "  rclcpp::init(argc, argv);\n"
+        "  auto node = rclcpp::Node::make_shared(\"lidar\");\n"
+        "  CYdLidar laser;\n"
+        "  std::string port = \"/dev/ydlidar\";\n"
+        "  node->declare_parameter(\"port\", port);\n"
+        "  node->get_parameter(\"port\", port);\n"
+        "  laser.setlidaropt(LidarPropSerialPort, port.c_str(), port.size());\n"
+        "  int baud = 230400;\n"
+        "  laser.setlidaropt(LidarPropSerialBaudrate, &baud, sizeof(int));\n"
+        "  auto pub = node->create_publisher<sensor_msgs::msg::LaserScan>(\"scan\", 10);\n"
+        "  rclcpp::spin(node);\n}\n")
+    result = _server(write_tree, source)
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("declare", "port"), ("read", "port"), ("publish", "scan")]
+    assert "CPP_PARSE_ERROR" not in codes(result)
+    assert "CPP_ERROR_NEAR_CALL" not in codes(result)
+
+
 def test_an_explicit_template_instantiation_is_no_call_site() -> None:
     """OrbbecSDK_ROS2's dynamic_params.cpp instantiates its wrapper for each type
     (``template void Parameters::setParamT<bool>(std::string param_name, ...);``): a

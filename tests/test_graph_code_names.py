@@ -72,8 +72,16 @@ def test_unnamed_node_takes_its_code_name_in_the_launch_namespace(write_tree):
 
 
 def test_code_namespace_holds_unless_the_launch_gives_one(write_tree):
+    """jetbot_ros d8e5ee1's nav_model: ``super().__init__('nav_model',
+    namespace='jetbot')``, launched with no namespace, subscribes ``camera/image_raw``,
+    which is ``/jetbot/camera/image_raw``: the node's relative names resolve in the
+    namespace its code gives, as its own name does (they resolved in ``/``)."""
     config = build(workspace(write_tree, LAUNCH.format(extra=""), ", namespace='arm'"))
-    assert [n.name for n in config.nodes] == ["/arm/talker"]
+    assert [(n.name, n.namespace) for n in config.nodes] == [("/arm/talker", "/arm/")]
+    assert sorted((link.kind, link.name) for link in config.links) == [
+        ("publish", "/arm/chatter"), ("publish", "/arm/talker/status"),
+        ("read", "/arm/talker/rate")]
+    assert config.parameter("/arm/talker/rate").set_by_launch
     config = build(workspace(write_tree, LAUNCH.format(extra="namespace='robot',"),
                              ", namespace='arm'"))
     assert [n.name for n in config.nodes] == ["/robot/talker"]

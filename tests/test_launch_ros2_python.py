@@ -337,6 +337,32 @@ def generate_launch_description():
     assert "outside the workspace" in messages and "open() other than for reading" in messages
 
 
+def test_open_takes_a_pathlib_path(write_tree):
+    """roverrobotics_ros2 a90640a's accessories.launch.py opens ``Path(share,
+    'config/accessories.yaml')`` and starts each accessory whose ``active`` is true:
+    ``open`` takes any path-like, so the file is read as for a text path and the
+    accessories it turns off are not started (they were undecided: the file unread)."""
+    model, _ = run(write_tree, """
+from pathlib import Path
+import yaml
+
+def generate_launch_description():
+    ld = LaunchDescription()
+    config_path = Path(get_package_share_directory('pkg'), 'config/accessories.yaml')
+    with open(config_path, 'r') as f:
+        config = yaml.load(f, Loader=yaml.FullLoader)
+    for name in ('lidar', 'imu'):
+        if config.get(name, {}).get('ros__parameters', {}).get('active', False):
+            ld.add_action(Node(package='drv', executable=name, name=name,
+                               parameters=[config_path]))
+    return ld
+""", extra={"src/pkg/config/accessories.yaml":
+            "lidar:\n  ros__parameters:\n    active: true\n"
+            "imu:\n  ros__parameters:\n    active: false\n"})
+    assert [(n.name, n.conditions) for n in model.nodes] == [("/lidar", ())]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
 def test_path_substitution_grows_with_slash(write_tree):
     model, root = run(write_tree, """
 from launch.substitutions import PathSubstitution

@@ -302,3 +302,30 @@ def test_a_ros2_command_not_interpreted_may_be_the_missing_side(
     assert "subscriber-without-publisher" not in found
     undecided = found["subscriber-without-publisher-undecided"]
     assert len(undecided) == 1 and "process ros2 bag play" in undecided[0]
+
+
+@pytest.mark.parametrize(("command", "process"), [
+    ("ExecuteProcess(cmd=['gazebo', '--verbose', '-s', 'libgazebo_ros_init.so', "
+     "'-s', 'libgazebo_ros_factory.so', 'empty.world'])",
+     "gazebo -s libgazebo_ros_init.so -s libgazebo_ros_factory.so"),
+    ("ExecuteProcess(cmd=['/usr/bin/gzserver', '--server-plugin=libgazebo_ros_factory.so'])",
+     "gzserver -s libgazebo_ros_factory.so"),
+    ("ExecuteProcess(cmd=['gazebo -s libgazebo_ros_factory.so'], shell=True)",
+     "gazebo -s libgazebo_ros_factory.so"),
+    ("ExecuteProcess(cmd=['gazebo', '--verbose', 'empty.world'])", None),
+], ids=["gazebo-ros-plugins", "gzserver-option", "shell-line", "gazebo-alone"])
+def test_gazebo_with_gazebo_ros_system_plugins_may_be_the_missing_side(
+        write_tree: Any, command: str, process: str | None) -> None:
+    """tello_ros d961961's simple_launch.py runs ``gazebo --verbose -s
+    libgazebo_ros_init.so -s libgazebo_ros_factory.so world`` as a process: the factory
+    plugin serves ``/spawn_entity``, which its inject_entity.py calls, and the drone it
+    spawns loads a plugin serving ``/drone1/tello_action``. Neither is read here, so the
+    absences they may fill are undecided; a Gazebo given no gazebo_ros plugin starts no
+    ROS node of its own."""
+    found = _ros2_findings(write_tree, command)
+    if process is None:
+        assert len(found.get("subscriber-without-publisher", [])) == 1
+        return
+    assert "subscriber-without-publisher" not in found
+    undecided = found["subscriber-without-publisher-undecided"]
+    assert len(undecided) == 1 and f"process {process} (" in undecided[0]

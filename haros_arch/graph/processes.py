@@ -31,6 +31,7 @@ from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl
 from ..launch.ros2.naming import pattern_matches
+from ..model.rosname import namespace_of
 from ..model.source import Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import by_arguments, command_node
@@ -62,8 +63,16 @@ def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
         guessed = code_node(decl, nodes) is None  # named after its executable
         for own in owns:
             name = _renamed(decl, own)
-            yield (decl if name == decl.name else replace(
-                decl, name=name, name_guessed=guessed)), own
+            if name == decl.name:
+                yield decl, own
+                continue
+            named = replace(decl, name=name, name_guessed=guessed)
+            if not decl.namespace.rstrip("/") and name.startswith("/"):
+                # the namespace the code gives holds where the launch gives none
+                # (jetbot_ros' ``Node('nav_model', namespace='jetbot')``): the node's
+                # relative names resolve in it, as its own name does
+                named = replace(named, namespace=namespace_of(name))
+            yield named, own
 
 
 def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[ParamDecl]:

@@ -318,8 +318,11 @@ def node_names(function: Cursor) -> frozenset[str]:
 def binds_own_member(call: Cursor, given: list[Cursor]) -> bool:
     """Whether ``call`` is given, beside the node object, a pointer to a member function
     of that object's class or of one of its bases (kobuki_ros' ``ecl::Slot<...>(
-    &KobukiRos::publishVersionInfo, *this)``, a signal's slot): a callback binding, which
-    calls that member on the object, whose calls are read where it is defined."""
+    &KobukiRos::publishVersionInfo, *this)``, a signal's slot), or such a class's static
+    member function, cast or not (camera_aravis2's ``g_signal_connect(device,
+    "control-lost", (GCallback)CameraAravisNodeBase::handleControlLostSignal, this)``,
+    a C library's callback and its user data): a callback binding, which calls that
+    member with the object, whose calls are read where it is defined."""
     classes: set[str] = set()
     for arg in given:
         kind = arg.type.get_canonical()
@@ -338,10 +341,36 @@ def binds_own_member(call: Cursor, given: list[Cursor]) -> bool:
     for arg in call.get_arguments():
         kind = arg.type.get_canonical()
         if kind.kind != TypeKind.MEMBERPOINTER:
+            if _static_member_of(arg, classes):
+                return True
             continue
         owner = kind.get_class_type().get_declaration()
         if owner is not None and owner.get_usr() in classes:
             return True
+    return False
+
+
+def _static_member_of(arg: Cursor, classes: set[str]) -> bool:
+    """Whether ``arg`` names, through casts and ``&``, a static member function of one of
+    ``classes`` (their USRs). A cast to a type of a missing header (``GCallback``) is a
+    conversion the parse makes by a constructor of the permissive class: gone through."""
+    expr = arg
+    for _ in range(2 * MAX_DEPTH):  # each cast is a few implicit levels
+        if expr.kind == CursorKind.DECL_REF_EXPR:
+            method = expr.referenced
+            return method is not None and method.kind == CursorKind.CXX_METHOD and \
+                method.is_static_method() and method.semantic_parent is not None and \
+                method.semantic_parent.get_usr() in classes
+        if expr.kind not in (CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
+                             CursorKind.CXX_REINTERPRET_CAST_EXPR, CursorKind.UNEXPOSED_EXPR,
+                             CursorKind.PAREN_EXPR, CursorKind.UNARY_OPERATOR) and not (
+                expr.kind == CursorKind.CALL_EXPR and expr.referenced is not None
+                and expr.referenced.kind == CursorKind.CONSTRUCTOR):
+            return False
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        if len(inner) != 1:
+            return False
+        expr = inner[0]
     return False
 
 

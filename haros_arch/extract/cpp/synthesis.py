@@ -794,6 +794,37 @@ def _called_statement(text: bytes, start: int, end: int) -> bool:
     return close is not None and text[close + 1:close + 64].lstrip()[:1] == b";"
 
 
+_MEMBER_CALLED = re.compile(rb"(?:\.|->)\s*[A-Za-z_]\w*\s*$")
+_ARGUMENT_SPAN = 400
+
+
+def _member_call_argument(text: bytes, offset: int) -> bool:
+    """Whether the name at ``offset`` begins an argument of a call of an object's member
+    function, ``obj.f(a, NAME, b)`` / ``p->f(NAME)``: an expression there, so a value (a
+    type as a whole argument is no C++), unlike a parameter of a declaration, ``void
+    f(Type, int)``. ydlidar_ros2_driver's ``laser.setlidaropt(LidarPropSerialPort,
+    value, size)``, its SDK's header missing."""
+    before = text[max(0, offset - _ARGUMENT_SPAN):offset]
+    if not before.rstrip().endswith((b"(", b",")):
+        return False
+    depth = 0
+    for index in range(len(before) - 1, -1, -1):
+        char = before[index:index + 1]
+        if char in (b")", b"]", b"}"):
+            depth += 1
+        elif char in (b"[", b"{"):
+            if depth == 0:
+                return False
+            depth -= 1
+        elif char == b"(":
+            if depth == 0:
+                return _MEMBER_CALLED.search(before[:index]) is not None
+            depth -= 1
+        elif char == b";" and depth == 0:
+            return False
+    return False
+
+
 def _closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
     """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes);
     ``backwards``: of the ``(`` that the ``)`` at ``at`` closes."""
@@ -1281,6 +1312,7 @@ class Names:
         ) and (
             _CONSTANT.fullmatch(written[-1])
             or text[max(0, offset - 8):offset].rstrip().endswith(b"=")
+            or (len(written) == 1 and _member_call_argument(text, offset))
             or (rest.lstrip()[:1] == b")" and _CASE_OPEN.search(
                 text[max(0, offset - _CONSTANT_SPAN):offset]) is not None)
         ):
@@ -1327,14 +1359,25 @@ class Names:
                         # from one of its classes (mapviz's ``adjustSize()``, multires'
                         # ``centralWidget()`` in a QMainWindow) may be the base's
                         self.qt_members.add(written[-1])
-                if not called and self._derives_from_declared(None):
+                # a value given as a whole argument of an object's method in a free
+                # function (``main``), where no class member can be shadowed: a constant
+                # of a missing header, declared at namespace scope as a qualified one is
+                # (ydlidar_ros2_driver's main passes the SDK's ``LidarPropSerialPort`` to
+                # ``laser.setlidaropt(...)``); not an object whose method is called
+                # (``unknown.load()`` stays an error where a wrapper's call may hide)
+                free_value = not called and last == "value" and (
+                    (id(text), offset) in self.in_free) and _member_call_argument(
+                        text, offset)
+                if not called and not free_value and self._derives_from_declared(None):
                     # a variable a class derived from a declared one reads is often the
                     # base's (ROBOTIS-OP3's modules set their framework base's
                     # ``module_name_``): a member of the permissive class, which only
                     # such a class (or a permissive value) finds, so nothing is shadowed
                     self.members.add(written[-1])
-                return  # an unqualified function or variable: in a class, often a member
-                # clang could not find (an invalid base); declaring it would shadow it
+                if not free_value:
+                    return  # an unqualified function or variable: in a class, often a
+                    # member clang could not find (an invalid base); declaring it would
+                    # shadow it
             # but a C library's constant or prefixed function, whose header is missing
             # (``SDL_Init(SDL_INIT_JOYSTICK | SDL_INIT_HAPTIC)``, ``SDL_GetError()``; a
             # lowercase one named after the missing header: ``ogg_stream_init(...)`` of

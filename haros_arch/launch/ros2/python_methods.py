@@ -98,8 +98,12 @@ def builtin(function: Callable[..., Any], *types: type,
 
 
 def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``open(path)`` / ``open(path, 'r')``: read-only; any other mode is refused."""
+    """``open(path)`` / ``open(path, 'r')``: read-only; any other mode is refused. The
+    path is a text or a ``pathlib`` path known here (``open`` takes any path-like:
+    roverrobotics_driver's accessories.launch.py opens ``Path(share, 'config/...')``)."""
     mode = arg(a, k, 1, "mode", default="r")
+    if a and isinstance(a[0], PurePosixPath):
+        a = [str(a[0]), *a[1:]]
     if mode not in ("r", "rt") or not a or not isinstance(a[0], str):
         if mode in ("r", "rt") and a and isinstance(a[0], Unknown) \
                 and a[0].kind == "unsupported":  # its path was said where it was made

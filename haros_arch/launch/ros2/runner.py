@@ -638,7 +638,10 @@ class Runner:
         if action.words is not None:  # known to be no node when it was made
             head = e.command_head(action.words)
             self.report("LAUNCH_PROCESS", action.location, command=head)
-            self._ros_command(head, scope, action.location)
+            self._ros_command(head, scope, action.location, [
+                "".join(p for p in word if isinstance(p, str))
+                if all(isinstance(p, str) for p in word) else None
+                for word in action.words])
             return
         value = self.value(action.cmd, scope, action.location)
         words: list[str] = []
@@ -657,16 +660,26 @@ class Runner:
                         command=e.command_head([(w,) for w in words]))
             text = str(value.literal if value is not None and value.literal is not None
                        else value.text if value is not None else "")
-            self._ros_command(" ".join(text.split()[:3]), scope, action.location)
+            self._ros_command(" ".join(text.split()[:3]), scope, action.location,
+                              list(words))
             return
         node.location = action.location
         self.do_NodeAction(node, scope)
 
-    def _ros_command(self, head: str, scope: Scope, where: Location) -> None:
+    def _ros_command(self, head: str, scope: Scope, where: Location,
+                     line: list[str | None] | None = None) -> None:
         """A ROS 2 command a process runs that is not interpreted here (``ros2 bag play``,
         which publishes the recorded topics: ouster's replay launch) starts a node whose
         topics and parameters are not seen: it may be the missing side of anything, as
-        an include not read is."""
+        an include not read is. So does Gazebo classic run with a system plugin of
+        gazebo_ros (``gazebo -s libgazebo_ros_factory.so``, ``line`` the command's words,
+        None where not known): those plugins are ROS nodes (``/spawn_entity``,
+        ``/clock``), and the models spawned into it load their own ROS plugins
+        (tello_ros' simulation: its TelloPlugin serves ``tello_action``)."""
+        gazebo = gazebo_ros_command(line or [])
+        if gazebo is not None:
+            self.unread(gazebo, scope, where, detail="process")
+            return
         words = head.split()
         if words[:1] == ["ros2"]:
             verb = ROS2CLI_VERBS.get(words[1]) if len(words) > 1 else None
@@ -1086,6 +1099,29 @@ def _rewrite(node: Any, rewrites: dict[str, Any], path: tuple[str, ...]) -> Any:
 # the ros2cli verbs and the package that adds each to ``ros2`` (its setup.py's
 # ``ros2cli.command`` entry point): a process running ``ros2 bag play ...`` needs ros2bag
 # installed, as one running ``ros2 run`` needs the node's package
+# Gazebo classic's programs and the option that loads a system plugin into the server
+GAZEBO_PROGRAMS = ("gazebo", "gzserver")
+_SERVER_PLUGIN = ("-s", "--server-plugin")
+
+
+def gazebo_ros_command(words: list[str | None]) -> str | None:
+    """``gazebo`` / ``gzserver`` given a system plugin of gazebo_ros (``-s
+    libgazebo_ros_init.so``, ``--server-plugin=libgazebo_ros_factory.so``): the program
+    and those plugins, as said of the process; else None (a Gazebo without them starts
+    no ROS node of its own)."""
+    if not words or words[0] is None or os.path.basename(words[0]) not in GAZEBO_PROGRAMS:
+        return None
+    plugins: list[str] = []
+    for index, word in enumerate(words[1:], 1):
+        if word is None:
+            continue
+        value = words[index + 1] if word in _SERVER_PLUGIN and index + 1 < len(words) \
+            else word.split("=", 1)[1] if word.startswith("--server-plugin=") else None
+        if value is not None and os.path.basename(value).startswith("libgazebo_ros"):
+            plugins += ["-s", os.path.basename(value)]
+    return " ".join([os.path.basename(words[0]), *plugins]) if plugins else None
+
+
 ROS2CLI_VERBS = {
     "action": "ros2action", "bag": "ros2bag", "component": "ros2component",
     "control": "ros2controlcli", "doctor": "ros2doctor", "interface": "ros2interface",

@@ -561,7 +561,9 @@ public:
   size_t get_intra_process_subscription_count() const;
   const rmw_gid_t& get_gid() const;
 };
-template<class M, class A = void> class Publisher : public PublisherBase {
+// the allocator's default is rclcpp's, so a workspace wrapper's
+// ``shared_ptr<Publisher<M, std::allocator<void>>>`` is a ``Publisher<M>::SharedPtr``
+template<class M, class A = std::allocator<void>> class Publisher : public PublisherBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Publisher)
   using PublishedType = M;
@@ -615,7 +617,7 @@ public:
   MessagePoolMemoryStrategy();
 };
 } }
-template<class M, class A = void> class Subscription : public SubscriptionBase {
+template<class M, class A = std::allocator<void>> class Subscription : public SubscriptionBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Subscription)
   bool take(M& message_out, MessageInfo& message_info_out);
@@ -1093,6 +1095,18 @@ public:
       const std::string& parameter_name, const std::string& node_name = "");
   static std::vector<Parameter> get_parameters_from_event(
       const rcl_interfaces::msg::ParameterEvent& event);
+};
+// rclcpp/parameter_events_filter.hpp: the parameters of an event of the names and kinds
+// asked (metavision_driver's onParameterEvent); a filter of a message, no ROS call
+class ParameterEventsFilter {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(ParameterEventsFilter)
+  enum class EventType { NEW, DELETED, CHANGED };
+  using EventPair = std::pair<EventType, rcl_interfaces::msg::Parameter*>;
+  ParameterEventsFilter(std::shared_ptr<const rcl_interfaces::msg::ParameterEvent> event,
+                        const std::vector<std::string>& names,
+                        const std::vector<EventType>& types);
+  const std::vector<EventPair>& get_events() const;
 };
 // rclcpp/guard_condition.hpp, wait_result_kind.hpp, wait_result.hpp, wait_set_template.hpp
 // and wait_set.hpp: a wait set over the node's entities (waits, takes; makes no ROS name)

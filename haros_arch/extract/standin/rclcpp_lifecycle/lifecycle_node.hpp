@@ -22,14 +22,21 @@ public:
   virtual void on_activate();
   virtual void on_deactivate();
 };
-template<class M, class A = void> class LifecyclePublisher : public rclcpp::Publisher<M>,
-                                                             public ManagedEntityInterface {
+// rclcpp's allocator default: a wrapper's ``shared_ptr<LifecyclePublisher<M, A>>`` with
+// ``A = std::allocator<void>`` (mocap4r2's ControlledLifecycleNode) is the member's type
+template<class M, class A = std::allocator<void>> class LifecyclePublisher
+    : public rclcpp::Publisher<M, A>, public ManagedEntityInterface {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(LifecyclePublisher)
   void on_activate();
   void on_deactivate();
   bool is_activated() const;
 };
+// the options lifecycle_node.hpp makes for its create_publisher / create_subscription
+template<class A = std::allocator<void>>
+rclcpp::PublisherOptionsWithAllocator<A> create_default_publisher_options();
+template<class A = std::allocator<void>>
+rclcpp::SubscriptionOptionsWithAllocator<A> create_default_subscription_options();
 // the transitions' callbacks: ros2_control's controllers and hardware components derive
 // from this interface, not from the node
 namespace node_interfaces { class LifecycleNodeInterface {
