@@ -131,8 +131,13 @@ def workspace_of(path: str) -> str:
 
 
 def find_launch_files(workspace: Workspace) -> list[str]:
-    """Every launch file inside the workspace's packages, in a stable order."""
+    """Every launch file inside the workspace's packages, in a stable order: not in the
+    folder of another package, nor one an ignore marker leaves out; in a folder with a
+    package.xml of its own that is no package (packages do not nest: catkin and the
+    workspace scan stop at the outer one, and roslaunch finds a package's launch file
+    anywhere below it: ros_control_boilerplate's ``rrbot_control/launch``) too."""
     found: list[str] = []
+    roots = {os.path.abspath(p.root) for p in workspace.packages.values() if p.root}
     for name in sorted(workspace.packages):
         root = workspace.packages[name].root
         if not root:
@@ -144,7 +149,7 @@ def find_launch_files(workspace: Workspace) -> list[str]:
                 entries = sorted(os.listdir(folder))
             except OSError:
                 continue
-            if folder != root and ("package.xml" in entries or any(
+            if folder != root and (os.path.abspath(folder) in roots or any(
                     m in entries for m in IGNORE_MARKERS)):
                 continue
             for entry in reversed(entries):

@@ -674,13 +674,14 @@ def defined_names(command: Invocation) -> list[str]:
 
 
 def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...],
-                 flag: str) -> list[tuple[str, CompileDefinition]]:
+                 flag: str, listed: bool = False) -> list[tuple[str, CompileDefinition]]:
     """The definitions ``raw`` (a command's arguments, not expanded) give, each with the
     keyword before it (PRIVATE when none); ``flag``: only words that start with it
     count, without it (``-D``), else a leading ``-D`` is dropped as CMake does. A word
     whose name is not written in the file (a list variable's items, a generator
     expression) is left out; one whose value reads something not set here is defined
-    with that value unknown."""
+    with that value unknown. ``listed``: each argument is a CMake list of definitions (a
+    property's value, ``"A;B=1"``)."""
     found: list[tuple[str, CompileDefinition]] = []
     keyword = "PRIVATE"
     # (a test decided on what is not known may have chosen wrongly: as not decided)
@@ -688,7 +689,8 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
     for arg in raw:
         unknown = arg.kind != "bracket" and it.unknown_reference(arg.text)
         written = arg.text.strip()
-        for item in it.arguments((arg,)):
+        items = it.arguments((arg,))
+        for item in [part for i in items for part in i.split(";")] if listed else items:
             if item in _DEFINITION_KEYWORDS:
                 keyword = item
                 continue
@@ -988,11 +990,40 @@ def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> No
     it.catkin_depends = list(dict.fromkeys([*it.catkin_depends, *depends]))
 
 
+def _property_definitions(it: Interpreter, command: Invocation, names: list[str],
+                          raw: tuple[Argument, ...], append: bool) -> None:
+    """A target's ``COMPILE_DEFINITIONS`` property set to ``raw`` (``set_property(TARGET
+    t PROPERTY COMPILE_DEFINITIONS X)``, ``set_target_properties(t PROPERTIES
+    COMPILE_DEFINITIONS "X;Y=1")``): the macros its own sources are compiled with, as
+    ``target_compile_definitions(t PRIVATE ...)`` gives them (those of its directory are
+    another property); set anew, unless appended, it replaces the private ones given
+    before. ethzasl_sensor_fusion's ssf_updates builds pose_sensor and position_sensor
+    from one main.cpp, each with its own ``POSE_MEAS`` / ``POSITION_MEAS``."""
+    found = [("PRIVATE", definition)
+             for _keyword, definition in _definitions(it, command, raw, "", listed=True)]
+    for name in names:
+        target = it.targets.get(it.aliases.get(name, name))
+        if target is None:
+            continue  # an imported target, or one this reading did not make
+        if not append:
+            target.definitions = [("INTERFACE" if keyword == "PUBLIC" else keyword, d)
+                                  for keyword, d in target.definitions if keyword != "PRIVATE"]
+        target.definitions.extend(found)
+
+
 @handles("set_target_properties")
 def _set_target_properties(it: Interpreter, command: Invocation, args: list[str]) -> None:
     if "PROPERTIES" not in args:
         return
     split = args.index("PROPERTIES")
+    raw = command.args
+    written = [arg.text.strip() for arg in raw]
+    if "PROPERTIES" in written:
+        # the raw arguments: a value is a list, whose items the expansion would split
+        at = written.index("PROPERTIES")
+        for named, given in zip(raw[at + 1::2], raw[at + 2::2], strict=False):
+            if named.text.strip() == "COMPILE_DEFINITIONS":
+                _property_definitions(it, command, args[:split], (given,), append=False)
     props = args[split + 1:]
     for key, value in zip(props[::2], props[1::2], strict=False):
         if key in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME", "LIBRARY_OUTPUT_NAME") and (
@@ -1010,6 +1041,13 @@ def _set_property(it: Interpreter, command: Invocation, args: list[str]) -> None
     if args[:1] != ["TARGET"] or "PROPERTY" not in args:
         return
     at = args.index("PROPERTY")
+    if args[at + 1:at + 2] == ["COMPILE_DEFINITIONS"]:
+        written = [arg.text.strip() for arg in command.args]
+        if "COMPILE_DEFINITIONS" in written:
+            names = [name for name in args[1:at] if name not in ("APPEND", "APPEND_STRING")]
+            _property_definitions(
+                it, command, names, command.args[written.index("COMPILE_DEFINITIONS") + 1:],
+                append="APPEND" in args[1:at] or "APPEND_STRING" in args[1:at])
     if args[at + 1:at + 2] in (["OUTPUT_NAME"], ["RUNTIME_OUTPUT_NAME"]) and len(
             args) > at + 2 and "$<" not in args[at + 2]:
         for name in args[1:at]:

@@ -22,10 +22,9 @@ than silently empty.
 
 from __future__ import annotations
 
-import functools
 import os
 import re
-from collections.abc import Container
+from collections.abc import Callable, Container
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -114,11 +113,31 @@ def cmake_files(root: str) -> list[str]:
     return files
 
 
+# a target's COMPILE_DEFINITIONS property (``set_property(TARGET t PROPERTY
+# COMPILE_DEFINITIONS X Y)``, ``set_target_properties(t PROPERTIES COMPILE_DEFINITIONS
+# "X;Y=1" ...)``): the values after the property's name (of set_target_properties the
+# one argument)
+_PROPERTY = re.compile(r"\b(set_property|set_target_properties)\s*\(([^)]*)\)", re.IGNORECASE)
+_PROPERTY_VALUES = re.compile(r"\bCOMPILE_DEFINITIONS\s+(\"[^\"]*\"|\S+)((?:\s+\S+)*)")
+
+
 def cmake_macros(root: str, workspace: Workspace) -> dict[str, tuple[str, int]]:
     """The macros a package's CMake files define, each with where (file, line)."""
     found: dict[str, tuple[str, int]] = {}
     for path in cmake_files(root):
         text, _ = read_text(path, workspace.location(path))
+        for match in _PROPERTY.finditer(text or ""):
+            values = _PROPERTY_VALUES.search(match.group(2))
+            if values is None:
+                continue
+            line = text.count("\n", 0, match.start()) + 1 if text else 0
+            words = values.group(1).strip('"').split(";")
+            if match.group(1).lower() == "set_property":
+                words += values.group(2).split()
+            for word in words:
+                named = _DEFINED.fullmatch(word.strip())
+                if named is not None and "$" not in word:
+                    found.setdefault(named.group(1), (path, line))
         for match in _COMMAND.finditer(text or ""):
             line = text.count("\n", 0, match.start()) + 1 if text else 0
             words = match.group(2).split()
@@ -141,12 +160,18 @@ _DEFINED_TEST = re.compile(r"\bdefined\s*(?:\(\s*\w+\s*\)|\w+)")
 
 
 def skipped_calls(text: str, macros: Container[str],
-                  valued: frozenset[str] = frozenset()) -> list[tuple[int, str, str]]:
+                  valued: frozenset[str] = frozenset(),
+                  included: Callable[[str], str | None] | None = None
+                  ) -> list[tuple[int, str, str]]:
     """(line, macro, call text) of the first ROS API call of each conditional block of
     ``text`` whose condition names one of ``macros``, or tests the value of one of
-    ``valued`` (``#if X >= 2``; not ``#ifdef X`` nor ``defined(X)``)."""
+    ``valued`` (``#if X >= 2``; not ``#ifdef X`` nor ``defined(X)``). ``included``: the
+    first ROS API call of a header an ``#include`` of the block names (None where it
+    has none or is not found), which counts as the block's where the block has none of
+    its own (ethzasl_sensor_fusion's ``#ifdef POSE_MEAS`` / ``#include
+    "pose_measurements.h"``, whose class reads the filter's parameters)."""
     sites = recall.call_sites(text)
-    if not sites:
+    if not sites and included is None:
         return []
     lines = text.splitlines()
     found: list[tuple[int, str, str]] = []
@@ -172,15 +197,57 @@ def skipped_calls(text: str, macros: Container[str],
         site = recall.first_site(sites, first, last)
         if site is not None:
             found.append((site.line, macro, site.text))
+            continue
+        for number in range(first + 1, last) if included is not None else ():
+            written = _INCLUDE.match(lines[number - 1])
+            call = included(written.group(1)) if written is not None and (
+                included is not None) else None
+            if call is not None:
+                found.append((number, macro, f"{lines[number - 1].strip()} ({call})"))
+                break
     return found
 
 
-@functools.lru_cache(maxsize=512)
-def _skipped(text: str, macros: frozenset[str], valued: frozenset[str]
-             ) -> tuple[tuple[int, str, str], ...]:
+_INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]')
+
+
+def _header_call(source: str, workspace: Workspace) -> Callable[[str], str | None]:
+    """The first ROS API call of the workspace header an ``#include`` of ``source``
+    names: beside the source, or in the ``include`` folder of its package or of another
+    workspace package; None where there is none or the header is not found."""
+    package = workspace.package_of(source)
+    folders = [os.path.dirname(source)]
+    if package is not None:
+        folders.append(os.path.join(package.root, "include"))
+    folders += [os.path.join(p.root, "include") for p in workspace.packages.values()
+                if package is None or p.root != package.root]
+
+    def first_call(name: str) -> str | None:
+        for folder in folders:
+            path = os.path.normpath(os.path.join(folder, name))
+            if os.path.isfile(path):
+                text, _ = read_text(path, workspace.location(path))
+                sites = recall.call_sites(text or "")
+                return sites[0].text.strip() if sites else None
+        return None
+    return first_call
+
+
+_SKIPPED: dict[tuple[str, str, frozenset[str], frozenset[str]],
+               tuple[tuple[int, str, str], ...]] = {}
+
+
+def _skipped(source: str, text: str, macros: frozenset[str], valued: frozenset[str],
+             workspace: Workspace) -> tuple[tuple[int, str, str], ...]:
     """``skipped_calls`` of a source, asked once per text and macros: the plugin classes
     of one library are nodes with the same sources."""
-    return tuple(skipped_calls(text, macros, valued))
+    key = (source, text, macros, valued)
+    if key not in _SKIPPED:
+        if len(_SKIPPED) > 512:
+            _SKIPPED.clear()
+        _SKIPPED[key] = tuple(skipped_calls(text, macros, valued,
+                                            _header_call(source, workspace)))
+    return _SKIPPED[key]
 
 
 def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
@@ -199,7 +266,8 @@ def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
         text, _ = read_text(source, workspace.location(source))
         if not text:
             continue
-        for line, macro, call in _skipped(text, frozenset(left), frozenset(valued)):
+        for line, macro, call in _skipped(source, text, frozenset(left), frozenset(valued),
+                                          workspace):
             where, at = left.get(macro) or valued[macro]
             named = macro if macro in left else f"{macro} (its value not known)"
             found.append(diag.make(

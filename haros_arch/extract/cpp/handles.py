@@ -265,6 +265,14 @@ class Namespaces:
         elif target.kind != CursorKind.CONSTRUCTOR or owner not in api.HANDLE_CLASSES:
             if target.kind == CursorKind.CONSTRUCTOR and len(inner) == 1:  # a copy
                 return self.of(inner[0], scope, depth + 1)
+            if target.kind == CursorKind.CXX_METHOD and not written_arguments(expr) and (
+                    scope.sites is not None):
+                # a getter of a handle (hector_pose_estimation's ``ros::NodeHandle&
+                # getPrivateNodeHandle() { return private_nh_; }``): the namespace of
+                # what each body a call may run returns, when they agree
+                found = {self.of(value, scope.sites.scope(method), depth + 1)
+                         for value, method in scope.sites.returns(target) or ()}
+                return found.pop() if len(found) == 1 else UNKNOWN
             return UNKNOWN
         args = written_arguments(expr)
         if not args:

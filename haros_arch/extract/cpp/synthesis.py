@@ -641,6 +641,21 @@ _PROVIDED: dict[str, dict[str, str]] = {
 }
 
 
+# names of the C++ standard library that code writes unqualified only where a
+# ``using namespace std;`` (or ``using std::x;``) brings them: one the parse does not
+# know, used unqualified, was brought by a header it lacks (youbot_driver's headers,
+# which youbot_driver_ros_interface's ``stringstream topicName;`` and ``vector<string>``
+# rely on), so it is std's, not a permissive name (a stream's writes are then read:
+# ``values.Scope._stream_text``); names as common as a vendor's own (``set``, ``list``,
+# ``function``, ``array``) are left to the permissive declaration
+_STD_UNQUALIFIED = frozenset({
+    "string", "wstring", "vector", "map", "multimap", "multiset", "deque", "pair",
+    "unordered_map", "unordered_set", "priority_queue", "stringstream", "ostringstream",
+    "istringstream", "ifstream", "ofstream", "fstream", "ostream", "istream", "cout",
+    "cerr", "clog", "cin", "endl", "shared_ptr", "unique_ptr", "weak_ptr",
+    "runtime_error", "invalid_argument", "out_of_range", "logic_error", "numeric_limits"})
+
+
 @dataclass
 class _Name:
     """One unknown name (or a known namespace enclosing some) and its uses."""
@@ -1699,8 +1714,10 @@ class Names:
             for record in sorted({*self.fields, *self.types})]
         hidden = self._found_by_using()
         included = self._included(hidden)
+        from_std = self._from_std(hidden)
+        lines += [f"using std::{name};" for name in sorted(from_std)]
         for name, node in sorted(self.root.children.items()):
-            if name in hidden:
+            if name in hidden or name in from_std:
                 continue
             if name in included:  # included, not declared again (in ``boost`` reopened too)
                 provided = included[name]
@@ -1755,6 +1772,15 @@ class Names:
                 found.add(name)
         return found
 
+    def _from_std(self, hidden: set[str]) -> set[str]:
+        """The unknown top-level names that are the standard library's, brought by a
+        ``using`` the parse did not see (``_STD_UNQUALIFIED``): not one the code
+        defines or aliases itself, nor one a ``using`` of a namespace declared here
+        gives (``hidden``)."""
+        return {name for name, node in self.root.children.items()
+                if name in _STD_UNQUALIFIED and not node.known and name not in hidden
+                and name not in self._defined and name not in self.aliases}
+
     def _included(self, hidden: set[str]) -> dict[str, set[str]]:
         """The names the stand-ins provide (``_PROVIDED``) that ``header`` includes
         instead of declaring, by their top-level namespace (not one ``hidden``, declared
@@ -1771,7 +1797,13 @@ class Names:
         stand-ins provide, with what was learnt under them, and a namespace not known
         that holds nothing else."""
         skipped: set[int] = set()
-        for name, provided in self._included(self._found_by_using()).items():
+        hidden = self._found_by_using()
+        stack = [self.root.children[name] for name in self._from_std(hidden)]
+        while stack:
+            node = stack.pop()
+            skipped.add(id(node))
+            stack.extend(node.children.values())
+        for name, provided in self._included(hidden).items():
             top = self.root.children[name]
             stack = [top.children[n] for n in provided]
             while stack:

@@ -1350,6 +1350,9 @@ class Scope:
             children = list(call.get_children())
             if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
                 objects = list(children[0].get_children())
+                stream = _string_stream(objects[0]) if objects else None
+                if stream is not None:
+                    return self._stream_text(stream, call, depth)
                 if objects:
                     return self.string(objects[0], depth + 1)
         formatted = self._string_format(call, target, args, depth)
@@ -1360,6 +1363,111 @@ class Scope:
             if found is not None:
                 return found
         return UNKNOWN
+
+    def _stream_text(self, decl: Cursor, at: Cursor, depth: int) -> Parts:
+        """What ``ss.str()`` at ``at`` gives of the local string stream ``decl``, made
+        empty and written in this body with ``ss << a << b`` (youbot_driver_ros_interface's
+        ``topicName.str(""); topicName << armTopic << "arm_controller/position_command";
+        node.subscribe(topicName.str(), ...)``): the text of what was written since its
+        last emptying (``ss.str("")``), each string and integer written as its value, any
+        other value (a float, a manipulator's formatting) an unknown run. Unknown as a
+        whole where a write may not run before ``at`` (a branch it is outside of), where
+        ``at`` is in a loop (or lambda) that writes the stream without emptying it before
+        ``at`` in the same turn, or writes it after ``at`` (the next turn reads that),
+        where the stream is made with a text (later writes overwrite it from its start)
+        or emptied with one, and where the body uses it otherwise (passed to a
+        function)."""
+        if self.body is None or any(
+                child.kind.is_expression() and (strip(child).kind != CursorKind.CALL_EXPR
+                                                or written_arguments(strip(child)))
+                for child in decl.get_children()):
+            return UNKNOWN
+        _ = self.writes  # the regions are read with the writes
+        key, where = key_of(decl), at.extent.start.offset
+        start = decl.extent.start.offset
+        uses: set[int] = set()  # the places the body names the stream
+        known: set[int] = set()  # those that are a write, an emptying or a read of it
+        inner: set[tuple[int, int]] = set()  # the ``<<`` of a chain already taken
+        events: list[tuple[int, Parts | None]] = []  # (place, written) or an emptying
+        loops: list[tuple[int, int]] = []  # the loops and lambdas ``at`` is in, not decl
+        for node in _walk(self.body):
+            offset = node.extent.start.offset
+            if node.kind in _REPEATED and offset <= where <= node.extent.end.offset and not (
+                    offset <= start <= node.extent.end.offset):
+                loops.append((offset, node.extent.end.offset))
+            if offset < start:
+                continue
+            if node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None and (
+                    key_of(node.referenced) == key):
+                uses.add(offset)
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling == "operator<<":
+                span = (offset, node.extent.end.offset)
+                if span in inner:
+                    continue
+                operands: list[Cursor] = []
+                chain = node
+                while True:
+                    args = written_arguments(chain)
+                    if len(args) != 2:
+                        break
+                    operands.insert(0, args[1])
+                    left = strip(args[0])
+                    if left.kind == CursorKind.CALL_EXPR and left.spelling == "operator<<":
+                        inner.add((left.extent.start.offset, left.extent.end.offset))
+                        chain = left
+                        continue
+                    if left.kind == CursorKind.DECL_REF_EXPR and left.referenced is not None \
+                            and key_of(left.referenced) == key:
+                        known.add(left.extent.start.offset)
+                        events.append((offset, self._streamed(operands, depth)
+                                       if offset < where else ()))
+                    break
+            elif node.kind == CursorKind.CALL_EXPR and node.spelling in ("str", "clear"):
+                callee = next(iter(node.get_children()), None)
+                target = first_operand(callee) if callee is not None and (
+                    callee.kind == CursorKind.MEMBER_REF_EXPR) else None
+                target = strip(target) if target is not None else None
+                if target is None or target.kind != CursorKind.DECL_REF_EXPR or (
+                        target.referenced is None or key_of(target.referenced) != key):
+                    continue
+                known.add(target.extent.start.offset)
+                args = written_arguments(node)
+                if node.spelling == "str" and args:
+                    if self.string(args[0], depth + 1) != ("",):
+                        return UNKNOWN  # a text that later writes overwrite
+                    events.append((offset, None))
+        if uses - known:
+            return UNKNOWN  # given away, or changed otherwise (``ss.precision(3)``)
+        for first, last in loops:
+            inside = [offset for offset, _written in events if first <= offset <= last]
+            if any(offset > where for offset in inside):
+                return UNKNOWN  # written after ``at`` in the loop: read in the next turn
+            if inside and not any(first <= offset < where for offset, written in events
+                                  if written is None):
+                return UNKNOWN  # what earlier turns wrote is still there
+        events = sorted(event for event in events if event[0] < where)
+        if any(first <= offset <= last and not first <= where <= last
+               for offset, _written in events for first, last in self._regions):
+            return UNKNOWN  # a write or an emptying that may not run before ``at``
+        parts: Parts = ()
+        for _offset, written in events:
+            parts = () if written is None else parts + written
+        return parts if parts else ("",)
+
+    def _streamed(self, operands: list[Cursor], depth: int) -> Parts:
+        """The text of values written to a string stream: a string's, an integer's
+        digits; an unknown run for any other (a float, a manipulator)."""
+        parts: Parts = ()
+        for operand_ in operands:
+            kind = operand_.type.get_canonical().kind
+            if kind in _INTEGER_KINDS:
+                number = self.integer(operand_, depth + 1)
+                parts += (None,) if number is None else (str(number),)
+            elif _textual(operand_):
+                parts += self.string(operand_, depth + 1)
+            else:
+                parts += (None,)
+        return parts
 
     def _returned(self, target: Cursor, read: Callable[[Scope, Cursor], Value]) -> Value | None:
         """What a getter without parameters gives (``read`` of its one ``return``'s
@@ -2002,6 +2110,28 @@ def _named(expr: Cursor) -> tuple[tuple[str, int], ...] | None:
             return tuple(found)  # a variable, or a member of ``this``
         expr = strip(inner[0])
     return tuple(found) if found and expr.kind == CursorKind.CXX_THIS_EXPR else None
+
+
+# the integer types whose value a stream writes as its digits (not bool, nor the
+# character types)
+_INTEGER_KINDS = frozenset({TypeKind.SHORT, TypeKind.USHORT, TypeKind.INT, TypeKind.UINT,
+                            TypeKind.LONG, TypeKind.ULONG, TypeKind.LONGLONG,
+                            TypeKind.ULONGLONG})
+_STRING_STREAMS = frozenset({"stringstream", "ostringstream", "basic_stringstream",
+                             "basic_ostringstream"})
+
+
+def _string_stream(cursor: Cursor) -> Cursor | None:
+    """The local variable ``cursor`` names when it is a standard string stream that can
+    be written (``std::stringstream``, ``std::ostringstream``)."""
+    cursor = strip(cursor)
+    decl = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else None
+    if decl is None or decl.kind != CursorKind.VAR_DECL:
+        return None
+    declared = decl.type.get_canonical().get_declaration()
+    if declared.spelling not in _STRING_STREAMS or _namespace_of(declared) != "std":
+        return None
+    return decl
 
 
 def _walk(cursor: Cursor) -> Iterator[Cursor]:

@@ -2396,8 +2396,13 @@ class CallFinder:
                 # same handle's namespace, filled from the call sites as the server is
                 # and a camera's camera_info, in the image topic's namespace, on its handle
                 camera = stype == CAMERA_INFO and bool(spec.transport)
-                on_handle = (spec.handle_default is not None or camera or not sibling) and (
-                    not sibling.startswith("/"))
+                # a name beside the call's (``name_suffix``) is made from it, its handle's
+                # namespace too: on that handle, whose namespace the call sites may give
+                # (joint_limits_interface's ``getJointLimits(joint, nh_, limits)`` on the
+                # handle a constructor of another file took: ``<ns>/joint_limits/?/...``)
+                on_handle = (spec.handle_default is not None or camera or not sibling or (
+                    spec.name_suffix is not None and handle_namespace is not None
+                    and name.startswith(handle_namespace))) and not sibling.startswith("/")
                 sibling_namespace = handle_namespace if on_handle else None
                 self.calls.append(PrimitiveCall(
                     kind=kind, name=full, type=self.types.ros_type(stype), queue_size=queue,
