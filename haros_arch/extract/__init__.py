@@ -265,8 +265,8 @@ _SAID_AT_THE_PLACE = frozenset({"CPP_VERSION_UNKNOWN"})
 # wrapper executables of image_view, stereo_image_proc, ...), with arguments
 NODELET_LOAD = re.compile(r"(?:\.|->)\s*(load)\s*\(\s*[^)\s]")
 # the class of a ``CPP_NODELET_IN_PROCESS`` (its message)
-_IN_PROCESS = re.compile(r"runs the nodelet (\S+) in its own process"
-                         r"|creates the plugin class (\S+) by its name written")
+IN_PROCESS = re.compile(r"runs the nodelet (\S+) in its own process"
+                        r"|creates the plugin class (\S+) by its name written")
 
 
 def _links_plugin_classes(node: Node, workspace: Workspace | None) -> bool:
@@ -311,7 +311,7 @@ def completeness(node: Node, found: Sequence[Diagnostic],
     hosted = _hosted(node)
     own = [match.group(1) or match.group(2) for d in found
            if d.code in ("CPP_NODELET_IN_PROCESS", "CPP_PLUGIN_IN_PROCESS")
-           and (match := _IN_PROCESS.match(d.message)) is not None
+           and (match := IN_PROCESS.match(d.message)) is not None
            and (d.code == "CPP_NODELET_IN_PROCESS" or not hosted)]
     if hosted:
         loads += [diag.make("CPP_PLUGINS_LOADED", d.location, text=d.message,

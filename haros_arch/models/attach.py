@@ -147,14 +147,12 @@ class Attacher:
         stand for it (``FALLBACK``: models are made for humble only where it differs
         from jazzy), else for the nearest release of its ROS that has one
         (``stand_ins``); the model's label names the distribution it is for."""
-        model = self.library.find(package, distro)
-        if model is None and distro in FALLBACK:
-            model = self.library.find(package, FALLBACK[distro])
-        for other in () if model is not None else stand_ins(distro):
-            model = self.library.find(package, other)
+        fallback = (FALLBACK[distro],) if distro in FALLBACK else ()
+        for candidate in (distro, *fallback, *stand_ins(distro)):
+            model = self.library.find(package, candidate)
             if model is not None:
-                break
-        return model
+                return model
+        return None
 
     def _standing(self, distro: str) -> str:
         """What the ``MODEL_DISTRO`` note adds on the models ``distro`` takes when it has

@@ -49,12 +49,7 @@ class Library:
 
     def distributions(self) -> set[str]:
         """The distributions some model is for: the user's and the shipped ones."""
-        found = {d for d, _ in self.user if d is not None}
-        try:
-            shipped = os.listdir(self.shipped) if self.shipped is not None else []
-        except OSError:
-            shipped = []
-        return found | {d for d in shipped if os.path.isdir(os.path.join(self.shipped or "", d))}
+        return {d for d, _ in self.user if d is not None} | set(_folders(self.shipped))
 
     def _read_shipped(self, distro: str, package: str) -> InterfaceModel | None:
         if self.shipped is None or "/" in distro + package or package.startswith("."):
@@ -70,17 +65,22 @@ def shipped_packages() -> frozenset[str]:
     """The packages a shipped interface model exists for, in any distribution: ROS
     packages the tool knows by name (sound_play, mavros, rosserial_python, ...)."""
     found: set[str] = set()
-    try:
-        distros = os.listdir(DATA)
-    except OSError:
-        return frozenset()
-    for distro in distros:
+    for distro in _folders(DATA):
         try:
             files = os.listdir(os.path.join(DATA, distro))
         except OSError:
             continue
         found.update(f.removesuffix(".json") for f in files if f.endswith(".json"))
     return frozenset(found)
+
+
+def _folders(path: str | None) -> list[str]:
+    """The distribution folders of a model data folder (none where it cannot be read)."""
+    try:
+        names = os.listdir(path) if path is not None else []
+    except OSError:
+        return []
+    return [n for n in names if os.path.isdir(os.path.join(path or "", n))]
 
 
 def _model_files(path: str, found: list[Diagnostic]) -> list[str]:

@@ -42,7 +42,7 @@ from ...model.location import Location
 from ...model.source import Package, PrimitiveCall, declared_defaults
 from ...processes import OverTime, cpu_limit, raise_if_stopped, worker_pool
 from ...workspace import Workspace, manifest_of
-from .. import NODELET_LOAD, this_run
+from .. import IN_PROCESS, NODELET_LOAD, this_run
 from . import (
     api,
     cache,
@@ -993,9 +993,6 @@ def _exported_unbuilt(found: tuple[Any, ...] | None, units: Iterable[CppResult])
         base not in reached) and not _named_in(base, hiding, scoped)}
 
 
-_IN_PROCESS_CLASS = re.compile(r"runs the nodelet (\S+) in its own process")
-
-
 def _in_process(units: list[tuple[str, CppResult]], exported: list[tuple[str, str]]
                 ) -> set[str]:
     """The exported classes (``exported``: the units' registrations, a class paired
@@ -1006,7 +1003,7 @@ def _in_process(units: list[tuple[str, CppResult]], exported: list[tuple[str, st
     else the one class exported when there is one."""
     names = [match.group(1) for _, unit in units for d in unit.diagnostics
              if d.code == "CPP_NODELET_IN_PROCESS"
-             and (match := _IN_PROCESS_CLASS.match(d.message)) is not None]
+             and (match := IN_PROCESS.match(d.message)) is not None]
     classes = list(dict.fromkeys(cls for cls, base in exported if cls == base))
     found: set[str] = set()
     for name in names:

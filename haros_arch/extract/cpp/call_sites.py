@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
-from . import msg_types
+from . import api, msg_types
 from .expressions import is_default_argument, lost_class, qualified_name, strip
 from .values import (
     PLACEHOLDER,
@@ -32,7 +32,7 @@ from .values import (
     render,
     written_arguments,
 )
-from .writes import default_constructed, out_argument, parameter_callback, writes_of
+from .writes import Write, default_constructed, out_argument, parameter_callback, writes_of
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -379,14 +379,9 @@ class CallSites:
         cached = self._read_into.get(found)
         if cached is not None:
             return cached
-        spelling = field.spelling.encode("utf-8")
         result = _plain_value(field) and any(
-            write.variable is not None and key_of(write.variable) == found
-            and out_argument(write) and _reads_parameter(write.at)
-            for function in self.functions
-            if function.kind not in (CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR)
-            and _may_name(function, spelling, self.source) and not parameter_callback(function)
-            for node in function.walk_preorder() for write in writes_of(node, self.source))
+            out_argument(write) and _reads_parameter(write.at) for write in self._writes_to(
+                field, (CursorKind.CONSTRUCTOR, CursorKind.DESTRUCTOR)))
         self._read_into[found] = result
         return result
 
@@ -437,22 +432,27 @@ class CallSites:
         cached = self._written.get(found)
         if cached is not None:
             return cached
-        spelling = field.spelling.encode("utf-8")
-        result = False
-        for function in self.functions:
-            if function.kind == CursorKind.DESTRUCTOR or not _may_name(
-                    function, spelling, self.source) or parameter_callback(function):
-                continue
-            if any(write.variable is not None and key_of(write.variable) == found
-                   for node in function.walk_preorder()
-                   for write in writes_of(node, self.source)):
-                result = True
-                break
+        result = any(True for _ in self._writes_to(field, (CursorKind.DESTRUCTOR,)))
         if not result and field.kind == CursorKind.FIELD_DECL:
             owner = field.semantic_parent
             result = owner is not None and key_of(owner.canonical) in self.whole_records()
         self._written[found] = result
         return result
+
+    def _writes_to(self, field: Cursor, skipped: tuple[CursorKind, ...]) -> Iterator[Write]:
+        """The writes of ``field`` (on any object) in the unit's functions, in order, but
+        in functions of the kinds ``skipped``, in parameter callbacks (their writes come
+        after start-up) and in functions whose text cannot name it."""
+        found = key_of(field)
+        spelling = field.spelling.encode("utf-8")
+        for function in self.functions:
+            if function.kind in skipped or not _may_name(
+                    function, spelling, self.source) or parameter_callback(function):
+                continue
+            for node in function.walk_preorder():
+                for write in writes_of(node, self.source):
+                    if write.variable is not None and key_of(write.variable) == found:
+                        yield write
 
     def whole_records(self) -> set[tuple[str, int]]:
         """The classes (their canonical declarations' places) of which a function of this
@@ -1279,13 +1279,9 @@ def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
 
 
 # the ROS API's reads of a parameter into a variable given by reference (roscpp's handle
-# and ``ros::param``, rclcpp's node): (the owner's qualified name, the function's)
-_READS_INTO = frozenset({
-    ("ros::NodeHandle", "param"), ("ros::NodeHandle", "getParam"),
-    ("ros::NodeHandle", "getParamCached"), ("ros::param", "param"), ("ros::param", "get"),
-    ("ros::param", "getCached"), ("rclcpp::Node", "get_parameter"),
-    ("rclcpp::Node", "get_parameter_or"), ("rclcpp_lifecycle::LifecycleNode", "get_parameter"),
-    ("rclcpp_lifecycle::LifecycleNode", "get_parameter_or")})
+# and ``ros::param``, rclcpp's node): the rows of a read with an out argument
+_READS_INTO = frozenset(key for table in (api.ROSCPP, api.RCLCPP) for key, row in table.items()
+                        if row.kind == "read" and row.out_arg is not None)
 
 
 def _reads_parameter(call: Cursor) -> bool:
