@@ -87,6 +87,29 @@ def test_code_namespace_holds_unless_the_launch_gives_one(write_tree):
     assert [n.name for n in config.nodes] == ["/robot/talker"]
 
 
+def test_launch_name_keeps_the_code_namespace_unless_one_is_given(write_tree):
+    """``Node(name='speaker')`` with no namespace of a node whose code says
+    ``namespace='arm'``: launch_ros passes ``__node:=speaker`` and no ``__ns``, so rcl
+    names it ``/arm/speaker`` and its relative names resolve in ``/arm`` (it was
+    ``/speaker``, its topics in ``/``). A namespace the launch gives, even ``/``, is
+    passed as ``__ns`` and replaces the code's."""
+    config = build(workspace(write_tree, LAUNCH.format(extra="name='speaker',"),
+                             ", namespace='arm'"))
+    assert [(n.name, n.namespace) for n in config.nodes] == [("/arm/speaker", "/arm/")]
+    assert sorted((link.kind, link.name) for link in config.links) == [
+        ("publish", "/arm/chatter"), ("publish", "/arm/speaker/status"),
+        ("read", "/arm/speaker/rate")]
+    assert config.parameter("/arm/speaker/rate").set_by_launch
+    config = build(workspace(write_tree, LAUNCH.format(extra="name='speaker', namespace='/',"),
+                             ", namespace='arm'"))
+    assert [(n.name, n.namespace) for n in config.nodes] == [("/speaker", "/")]
+    assert sorted(link.name for link in config.links) == [
+        "/chatter", "/speaker/rate", "/speaker/status"]
+    config = build(workspace(write_tree, LAUNCH.format(extra="namespace='/',"),
+                             ", namespace='arm'"))
+    assert [n.name for n in config.nodes] == ["/talker"]
+
+
 def test_launch_name_wins_over_the_code_name(write_tree):
     config = build(workspace(write_tree, LAUNCH.format(extra="name='speaker',")))
     assert [n.name for n in config.nodes] == ["/speaker"]

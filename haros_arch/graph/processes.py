@@ -67,7 +67,7 @@ def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
                 yield decl, own
                 continue
             named = replace(decl, name=name, name_guessed=guessed)
-            if not decl.namespace.rstrip("/") and name.startswith("/"):
+            if _code_namespace(decl, own):
                 # the namespace the code gives holds where the launch gives none
                 # (jetbot_ros' ``Node('nav_model', namespace='jetbot')``): the node's
                 # relative names resolve in it, as its own name does
@@ -155,6 +155,9 @@ def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
     if _unnamed(decl) and node.rosname and node.rosname.rsplit("/", 1)[-1].strip(
             UNKNOWN_MARK):
         return [node.rosname]
+    if not _unnamed(decl) and node.rosname and _code_namespace(decl, node.rosname):
+        # named by the launch, in the namespace its code gives (``__node:=`` alone)
+        return [node.rosname]
     return []
 
 
@@ -183,8 +186,19 @@ def _renamed(decl: NodeDecl, own: str) -> str:
     unless the launch file gives one (``namespace=``, ``PushRosNamespace``), which
     replaces it, as ``__ns:=`` does."""
     if not _unnamed(decl):
+        if _code_namespace(decl, own):
+            return namespace_of(own).rstrip("/") + "/" + decl.name.rsplit("/", 1)[-1]
         return decl.name
     namespace = decl.namespace.rstrip("/")
-    if not namespace and own.startswith("/"):
+    if not namespace and own.startswith("/") and not decl.namespace_given:
         return own
     return namespace + "/" + own.rsplit("/", 1)[-1]
+
+
+def _code_namespace(decl: NodeDecl, own: str) -> bool:
+    """Whether the namespace the code gives its node ``own`` (``rclcpp::Node("x",
+    "ns")``: ``/ns/x``) is the node's: the launch gives none (no ``namespace=``, no
+    ``PushRosNamespace``, no ``__ns:=``), so launch_ros passes no ``__ns`` to replace
+    it, whatever name it passes."""
+    return (not decl.namespace_given and not decl.namespace.rstrip("/")
+            and own.startswith("/") and bool(namespace_of(own).strip("/")))

@@ -58,6 +58,10 @@ class NodeDecl:
     # ROS 2: the launch names the node (``name=``, ``__node:=``), with a value that may
     # not be known statically: a ``?`` there is that value, not a name left to the code
     name_given: bool = False
+    # ROS 2: the launch gives the node a namespace (``namespace=``, a
+    # ``PushRosNamespace`` around it, ``__ns:=``), which launch_ros passes as ``__ns``
+    # and which replaces one the code gives; without one, the code's holds
+    namespace_given: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
     # ROS 2: the parameter files given to the process, as read (rewritten), with where:
     # they apply by node name to every node the process makes (a nav2 server's costmap)
