@@ -42,3 +42,31 @@ def test_a_file_a_package_of_the_workspace_holds_exists(write_tree):
     assert [p.name for p in model.params] == ["/joy_f710/axis", "/joy_dualshock3/?"]
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
     assert "LAUNCH_UNKNOWN_VALUE" in codes(model)
+
+
+PATHLIB = """
+from pathlib import Path
+from ament_index_python.packages import get_package_share_directory, get_package_share_path
+
+def generate_launch_description():
+    config = Path(get_package_share_directory('pkg'), 'config', 'joy_f710.yml')
+    assert config.is_file()
+    assert config.parent.is_dir() and config.exists()
+    nodes = [Node(package='pkg', executable='teleop', name='teleop', parameters=[config])]
+    if (get_package_share_path('pkg') / 'config' / 'extra.yml').is_file():
+        nodes.append(Node(package='pkg', executable='extra', name='extra'))
+    return LaunchDescription(nodes)
+"""
+
+
+def test_pathlib_tests_of_a_path_the_workspace_holds(write_tree):
+    """roverrobotics_driver's launch files ``assert hardware_config.is_file()`` of a
+    ``pathlib.Path`` of a file of the package: true here, as ``os.path.isfile`` of its
+    text (it was LAUNCH_PY_UNSUPPORTED); a file the package does not hold is not known,
+    the ``if`` taking both branches."""
+    model, _ = run(write_tree, PATHLIB, extra={
+        "src/pkg/config/joy_f710.yml": "teleop:\n  ros__parameters:\n    axis: 1\n"})
+    assert [n.name for n in model.nodes] == ["/teleop", "/extra"]
+    assert [p.name for p in model.params] == ["/teleop/axis"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+    assert "LAUNCH_PY_FAILED" not in codes(model)

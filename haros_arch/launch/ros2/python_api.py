@@ -318,6 +318,19 @@ def path_exists(test: Callable[[str], bool]) -> Builder:
     return build
 
 
+def path_tested(test: Callable[[str], bool]) -> Method:
+    """``Path.exists()`` / ``is_file()`` / ``is_dir()`` of a pathlib path, as
+    ``os.path``'s tests of its text (``path_exists``): roverrobotics_driver's launch
+    files ``assert hardware_config.is_file()`` of a file of the package."""
+    tested = path_exists(test)
+
+    def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if a or k:
+            return i.unsupported(n, "a path test with arguments")
+        return tested(i, [owner], {}, n)
+    return call
+
+
 def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     name = arg(a, k, 0, "key")
     if isinstance(name, str) and name in i.environment_unsure:
@@ -1024,7 +1037,9 @@ API: dict[str, Builder] = {
 # methods of the values the interpreter knows, by name (``python_methods``), nav2's,
 # robotnik_common's and moveit_configs_utils'
 METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS,
-                              **MOVEIT_METHODS}
+                              **MOVEIT_METHODS, "exists": path_tested(os.path.exists),
+                              "is_file": path_tested(os.path.isfile),
+                              "is_dir": path_tested(os.path.isdir)}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open", "getattr", "type", "eval"))
