@@ -77,11 +77,19 @@ struct ParameterDescriptor {
 #endif
 #ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_SETPARAMETERSRESULT_HPP
 #define HAROS_SYNTH2_RCL_INTERFACES_MSG_SETPARAMETERSRESULT_HPP
-struct SetParametersResult { bool successful; std::string reason; };
+struct SetParametersResult {
+  bool successful; using _successful_type = bool; SetParametersResult& set__successful(const bool& _arg);
+  std::string reason; using _reason_type = std::string; SetParametersResult& set__reason(const std::string& _arg);
+  RCLCPP_SMART_PTR_ALIASES_ONLY(SetParametersResult)
+};
 #endif
 #ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_LISTPARAMETERSRESULT_HPP
 #define HAROS_SYNTH2_RCL_INTERFACES_MSG_LISTPARAMETERSRESULT_HPP
-struct ListParametersResult { std::vector<std::string> names; std::vector<std::string> prefixes; };
+struct ListParametersResult {
+  std::vector<std::string> names; using _names_type = std::vector<std::string>; ListParametersResult& set__names(const std::vector<std::string>& _arg);
+  std::vector<std::string> prefixes; using _prefixes_type = std::vector<std::string>; ListParametersResult& set__prefixes(const std::vector<std::string>& _arg);
+  RCLCPP_SMART_PTR_ALIASES_ONLY(ListParametersResult)
+};
 #endif
 #ifndef HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERTYPE_HPP
 #define HAROS_SYNTH2_RCL_INTERFACES_MSG_PARAMETERTYPE_HPP
@@ -96,11 +104,13 @@ struct ParameterType {
 namespace builtin_interfaces { namespace msg {
 #ifndef HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_TIME_HPP
 #define HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_TIME_HPP
-struct Time { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
+struct Time { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t;
+  Time& set__sec(const int32_t& _arg); Time& set__nanosec(const uint32_t& _arg); RCLCPP_SMART_PTR_ALIASES_ONLY(Time) };
 #endif
 #ifndef HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_DURATION_HPP
 #define HAROS_SYNTH2_BUILTIN_INTERFACES_MSG_DURATION_HPP
-struct Duration { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t; };
+struct Duration { int32_t sec; uint32_t nanosec; using _sec_type = int32_t; using _nanosec_type = uint32_t;
+  Duration& set__sec(const int32_t& _arg); Duration& set__nanosec(const uint32_t& _arg); RCLCPP_SMART_PTR_ALIASES_ONLY(Duration) };
 #endif
 } }
 // the parameter event messages, as rosidl generates them: rclcpp's headers include them

@@ -423,6 +423,23 @@ public:
   allocator();
   template<class U> allocator(const allocator<U>& other);
 };
+// what an allocator type gives (metavision_driver's ``typename
+// std::allocator_traits<A>::template rebind_alloc<U>``)
+template<class A> struct allocator_traits {
+  typedef A allocator_type;
+  typedef typename A::value_type value_type;
+  typedef value_type* pointer;
+  typedef const value_type* const_pointer;
+  typedef unsigned long size_type;
+  typedef long difference_type;
+  template<class U> using rebind_alloc = allocator<U>;
+  template<class U> using rebind_traits = allocator_traits<allocator<U>>;
+  static pointer allocate(A& a, size_type n);
+  static void deallocate(A& a, pointer p, size_type n);
+  template<class T, class... Args> static void construct(A& a, T* p, Args&&... args);
+  template<class T> static void destroy(A& a, T* p);
+  static size_type max_size(const A& a) noexcept;
+};
 template<class C> struct char_traits { typedef C char_type; };
 struct input_iterator_tag {};
 struct forward_iterator_tag : input_iterator_tag {};
@@ -682,6 +699,7 @@ template<size_t N> bitset<N> operator^(const bitset<N>& a, const bitset<N>& b);
 template<class T, class A = allocator<T>> class vector {
 public:
   typedef T value_type;
+  typedef A allocator_type;
   typedef size_t size_type;
   typedef T& reference;
   typedef const T& const_reference;
