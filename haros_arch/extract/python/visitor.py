@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import ast
 import dataclasses
+import functools
 import re
 import sys
 from collections.abc import Callable
@@ -111,6 +112,10 @@ class Walker:
         # the ``if`` statement walked last, with its two conditions (``_block``)
         self._tested_if: tuple[ast.If, Condition, Condition] | None = None
         self._unrolled = 0  # unrolled loops the walk is in
+        # inlined calls the walk is in whose function cannot reach a ROS call (``Reach``):
+        # their loops are walked once, not unrolled (``_loop``)
+        self._plain = 0
+        self._inlining: list[ast.AST | None] = [None]  # the functions inlined, innermost last
         # the variables of the unrolled loops the walk is in, by frame: each holds one
         # known item per walk of the body (``_decided``)
         self._loop_names: list[tuple[int, frozenset[str]]] = []
@@ -525,22 +530,32 @@ class Walker:
         self._expr(statement.iter, frame, conds)
         self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
                    lambda loop: self._block(statement.body, frame, (*conds, *loop)),
-                   whole=not _leaves_early(statement.body))
+                   whole=not _leaves_early(statement.body),
+                   builds=bool(self._plain) and _builds(statement, self._inlining[-1]))
         self._block(statement.orelse, frame, conds)
 
     def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
-              body: Callable[[tuple[Condition, ...]], None], whole: bool = True) -> None:
+              body: Callable[[tuple[Condition, ...]], None], whole: bool = True,
+              builds: bool = False) -> None:
         """Walk a loop's body (``body(loop conditions)``) once per item of a known, short
         sequence (unrolled), else once with the variable unknown; over a list
         parameter's value, or a dict parameter's ``values()`` / ``items()``, once with
         the variable its element (``ParamElement``; an entry's key is unknown). An
         unrolled loop over items that are there, whose body runs ``whole`` (no
         ``break``, ``return`` or ``raise`` of its own), runs it for each for sure: no
-        condition (as a C++ loop over a list parameter's elements)."""
+        condition (as a C++ loop over a list parameter's elements).
+
+        In a function that cannot reach a ROS call (``_plain``) a loop is walked once,
+        unless it ``builds`` a container item by item (``_builds``: a list of topic
+        names a helper appends to): a loop there names no call, and walking it once per
+        item, in each call of the function, made a driver's device code (probing each
+        baud rate of each port, reading each message) exhaust the walk before the
+        node's own code (ethzasl_xsens_driver's MTDevice: 4 of its 23 calls found)."""
         ev = self.evaluator
         text = f"{self._text(frame, target)} in {self._text(frame, over)}"
         loop: tuple[Condition, ...] = (condition("for", text, where),)
-        items = ev.iteration(over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
+        items = None if self._plain and not builds else ev.iteration(
+            over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
         if items and whole:
             loop = ()
         if items is None:
@@ -966,10 +981,15 @@ class Walker:
         inner = self.evaluator.call_frame(func, call, frame)
         self._inlined.add(id(info.node))
         self._active.add(id(info.node))
+        plain = not self._reach.may_call_ros(info, self.loader.modules.values())
+        self._plain += plain
+        self._inlining.append(info.node)
         try:
             self._block(info.node.body, inner, conds)
         finally:
             self._active.discard(id(info.node))
+            self._plain -= plain
+            self._inlining.pop()
 
     def _cut(self, info: FunctionInfo, call: ast.Call, frame: Frame) -> None:
         """A call ``MAX_CALL_DEPTH`` calls deep is not followed: its function is walked
@@ -1609,23 +1629,113 @@ def _guards_first_time(test: ast.expr, rest: list[ast.stmt], module: ast.AST) ->
     for C++). A member the module may set to a value of its own (uuv_simulator's
     thruster manager: ``self.configuration_matrix = numpy.array(tam)`` when ``~tam`` is
     given, then ``update_tam`` returns before its transform listener) is no such flag."""
-    members = {_self_member(node) for node in ast.walk(test) if isinstance(node, ast.Attribute)}
-    members.discard(None)
+    return _first_time_guard(test, tuple(rest), module)
+
+
+@functools.lru_cache(maxsize=4096)
+def _first_time_guard(test: ast.expr, rest: tuple[ast.stmt, ...], module: ast.AST) -> bool:
+    """``_guards_first_time``, once per ``if`` (a loop or a method inlined at each call
+    walks the same one again: ethzasl_xsens_driver's MTDevice, whose every read tests
+    ``self`` flags, asked it 16,871 times, each walking the whole module)."""
+    members = {member for node in ast.walk(test) if isinstance(node, ast.Attribute)
+               and (member := _self_member(node)) is not None}
     if not members:
+        return False
+    writes = [write for member in members for write in _self_writes(module).get(member, ())]
+    if not writes:
         return False
     inside = {id(node) for statement in rest for node in ast.walk(statement)}
     assigned = False
+    for node, constant in writes:
+        if id(node) in inside:
+            assigned = True
+        elif not constant:
+            return False
+    return assigned
+
+
+@functools.lru_cache(maxsize=64)
+def _self_writes(module: ast.AST) -> dict[str, list[tuple[ast.AST, bool]]]:
+    """Each member of ``self`` a module's tree assigns, also in part (``self.x = ...``,
+    ``self.x += ...``, ``self.x, y = ...``, ``self.x[k] = ...``: ``_member_writes``
+    counts the whole ones) -> the assignments, each with whether its value is a
+    literal."""
+    writes: dict[str, list[tuple[ast.AST, bool]]] = {}
     for node in ast.walk(module):
         targets = node.targets if isinstance(node, ast.Assign) else [node.target] if (
             isinstance(node, ast.AnnAssign | ast.AugAssign)) else []
-        if not any(_self_member(t) in members for target in targets for t in ast.walk(target)
-                   if isinstance(t, ast.Attribute)):
+        members = {member for target in targets for t in ast.walk(target)
+                   if isinstance(t, ast.Attribute) and (member := _self_member(t)) is not None}
+        constant = isinstance(getattr(node, "value", None), ast.Constant)
+        for member in members:
+            writes.setdefault(member, []).append((node, constant))
+    return writes
+
+
+@functools.lru_cache(maxsize=4096)
+def _builds(loop: ast.For | ast.AsyncFor, function: ast.AST | None) -> bool:
+    """Whether a loop of ``function`` (None: none inlined) builds, item by item, a value
+    that outlives the call: its body (not a function or class it defines) changes a
+    container in place (``names.append(x)``, ``_IN_PLACE``), assigns an item (``d[k] =
+    v``) or augments a value (``text += x``) of an object's attribute
+    (``self.topics.append``), or of a name the function is given, declares global or
+    nonlocal, or stores in an object (``self.topics = names``). A local the function
+    only returns is not: what a call returns is evaluated on its own (``values``)."""
+    roots: list[ast.expr] = []
+    stack: list[ast.AST] = [*loop.body, *loop.orelse]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef | ast.Lambda):
             continue
-        if id(node) in inside:
-            assigned = True
-        elif not isinstance(getattr(node, "value", None), ast.Constant):
-            return False
-    return assigned
+        if isinstance(node, ast.AugAssign):
+            roots.append(node.target)
+        elif isinstance(node, ast.Assign | ast.AnnAssign):
+            roots += [t.value for target in (
+                node.targets if isinstance(node, ast.Assign) else [node.target])
+                for t in ast.walk(target) if isinstance(t, ast.Subscript)]
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and (
+                node.func.attr in _IN_PLACE):
+            roots.append(node.func.value)
+        stack.extend(ast.iter_child_nodes(node))
+    if not roots:
+        return False
+    names: set[str] = set()
+    for root in roots:
+        while isinstance(root, ast.Subscript):
+            root = root.value
+        if not isinstance(root, ast.Name):
+            return True  # an attribute, or a value not told
+        names.add(root.id)
+    return function is None or bool(names & _kept_names(function))
+
+
+@functools.lru_cache(maxsize=1024)
+def _kept_names(function: ast.AST) -> frozenset[str]:
+    """The names whose values outlive a call of ``function``: its parameters, those it
+    declares global or nonlocal, and those it reads in a value it stores in an object
+    (an assignment to an attribute or an item, a container of an attribute changed in
+    place)."""
+    kept: set[str] = set()
+    args = getattr(function, "args", None)
+    if isinstance(args, ast.arguments):
+        kept.update(a.arg for a in (*args.posonlyargs, *args.args, *args.kwonlyargs))
+        kept.update(a.arg for a in (args.vararg, args.kwarg) if a is not None)
+    for node in ast.walk(function):
+        if isinstance(node, ast.Global | ast.Nonlocal):
+            kept.update(node.names)
+        stored: list[ast.AST] = []
+        if isinstance(node, ast.Assign | ast.AnnAssign | ast.AugAssign):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            if node.value is not None and any(
+                    isinstance(t, ast.Attribute | ast.Subscript)
+                    for target in targets for t in ast.walk(target)):
+                stored.append(node.value)
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and (
+                node.func.attr in _IN_PLACE) and not isinstance(node.func.value, ast.Name):
+            stored += [*node.args, *(k.value for k in node.keywords)]
+        kept.update(n.id for value in stored for n in ast.walk(value)
+                    if isinstance(n, ast.Name))
+    return frozenset(kept)
 
 
 def _leaves_early(body: list[ast.stmt]) -> bool:
