@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from collections.abc import Callable, Collection, Iterable
 
 from clang.cindex import Cursor, CursorKind, conf
@@ -41,9 +42,9 @@ BASES = -8
 # call of it may be hidden there
 HIDDEN = -9
 # the function (of the workspace's files, a free function or a non-virtual method that
-# ``eligible`` takes, no ``main``) holds a string or handle parameter the unit made a
-# placeholder of: its code runs only where the node's files call or use it
-# (``links.NodeFacts.never_run``)
+# ``eligible`` takes, no ``main``: ``runs_when_called``) holds a string or handle
+# parameter the unit made a placeholder of, or one of the unit's ROS calls: its code runs
+# only where the node's files call or use it (``links.never_run``)
 RUNS_WHEN_CALLED = -12
 # the fact's USR is a name the unit's code writes where clang keeps only the overloads
 # it may be (``OVERLOADED_DECL_REF``: a call in a template that depends on its parameters,
@@ -93,7 +94,8 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                owned: Callable[[str], bool], enter: Callable[[Cursor], None],
                walked: Callable[[Cursor], tuple[list[Cursor], list[Cursor]] | None]
                = lambda function: None, variables: Iterable[Cursor] = (),
-               declared: str | None = None) -> list[Fact]:
+               declared: str | None = None, holding: Iterable[Cursor] = (),
+               source_of: Callable[[str], bytes | None] | None = None) -> list[Fact]:
     """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
     functions of the workspace's files it calls or defines; ``enter`` readies
     ``reader`` for a function's body; ``walked`` gives a function's calls (among other
@@ -102,7 +104,9 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     outside functions, use each function they name (a call there runs before ``main``,
     a function's address in a table runs anywhere: ``REFERENCED``); ``declared``, the
     header of the names the unit declared permissively (a base class there may hide a
-    virtual method its subclass's method overrides)."""
+    virtual method its subclass's method overrides); ``holding``, the functions whose
+    bodies hold the unit's ROS calls (``RUNS_WHEN_CALLED`` where ``runs_when_called``);
+    ``source_of``, a file's bytes by name (``_meta_named``)."""
     # whether a declaration is an eligible function of the workspace's files, by the
     # node (one per cursor of the unit, kept with its answer: many references and
     # calls name the same declaration)
@@ -217,12 +221,23 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             continue
         if function.kind == CursorKind.FUNCTION_TEMPLATE and _free_template(function):
             facts.append((usr, RUNS_WHEN_CALLED, function.spelling, ""))
-        elif eligible(function) and (
-            function.spelling != "main") and (
-                function.kind != CursorKind.CXX_METHOD or (
-                    not function.is_virtual_method()
-                    and _bases_read(function.semantic_parent, declared))):
+        elif runs_when_called(function, declared):
             facts.append((usr, RUNS_WHEN_CALLED, "", ""))
+    # so does a function that holds one of the unit's ROS calls (``holding``): where
+    # nothing of the node calls or uses it, those calls are never made
+    # (``links.NodeFacts.never_run``: Fast-Planner's ``ObjPredictor::init()``)
+    for function in holding:
+        where = function.location.file
+        usr = function.canonical.get_usr()
+        if usr and where is not None and owned(where.name) and (
+                runs_when_called(function, declared)):
+            facts.append((usr, RUNS_WHEN_CALLED, "", ""))
+    # a name the code writes where Qt's meta-object system calls it by its text
+    # (``SLOT(updateTopic())``, ``invokeMethod(obj, "refresh")``): any function of that
+    # name may run there, as an overloaded name's may
+    facts.extend((name, OVERLOADED, "", "") for name in sorted(_meta_named(
+        {function.location.file.name for function in functions
+         if function.location.file is not None}, source_of)) if name not in overloaded)
     for function in functions:
         if function.kind != CursorKind.CXX_METHOD or not function.is_virtual_method() or (
             not eligible(function)
@@ -234,6 +249,40 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
                          else (usr, REFERENCED, "", ""))
     return list(dict.fromkeys(facts))
+
+
+def runs_when_called(function: Cursor, declared: str | None) -> bool:
+    """Whether ``function``'s code runs only where something calls it or names it: a
+    free function or a non-virtual method that ``eligible`` takes (no ``main``, no C
+    function, which a loader may find by its symbol), of a class whose bases are all
+    read (a method that looks non-virtual may override a virtual one of a base the
+    parse could not read)."""
+    if not eligible(function) or function.spelling == "main":
+        return False
+    if function.kind == CursorKind.FUNCTION_DECL:
+        return "#" in (function.canonical.get_usr() or "")  # a C function's has no types
+    return not function.is_virtual_method() and _bases_read(function.semantic_parent, declared)
+
+
+# the functions a string names for Qt's meta-object system to call by name
+_META = re.compile(rb"\b(?:SLOT|SIGNAL|Q_SLOT|Q_SIGNAL)\s*\(\s*([A-Za-z_]\w*)"
+                   rb"|\binvokeMethod\s*\([^;]*?\"([A-Za-z_]\w*)\"")
+
+
+def _meta_named(files: Iterable[str], source_of: Callable[[str], bytes | None] | None
+                ) -> set[str]:
+    """The names ``files`` hand Qt's meta-object system as text (``_META``)."""
+    found: set[str] = set()
+    if source_of is None:
+        return found
+    for name in files:
+        data = source_of(name)
+        if data is None or (b"SLOT" not in data and b"SIGNAL" not in data
+                            and b"invokeMethod" not in data):
+            continue
+        for match in _META.finditer(data):
+            found.add((match.group(1) or match.group(2)).decode())
+    return found
 
 
 def _template_usr(function: Cursor) -> str:
