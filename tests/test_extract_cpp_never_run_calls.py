@@ -24,6 +24,8 @@ class Predictor {
   explicit Predictor(ros::NodeHandle& node);
   void init();
   void setup();
+  void relay();
+  void deep();
   void used();
   virtual void hook();
   void callback(const std_msgs::String::ConstPtr& msg);
@@ -48,6 +50,8 @@ void Predictor::init() {
   setup();
 }
 void Predictor::setup() { pub_ = nh_.advertise<std_msgs::String>("/dynamic/setup", 1); }
+void Predictor::relay() { deep(); }
+void Predictor::deep() { pub_ = nh_.advertise<std_msgs::String>("/dynamic/deep", 1); }
 void Predictor::used() { pub_ = nh_.advertise<std_msgs::String>("/pred/used", 1); }
 void Predictor::hook() { pub_ = nh_.advertise<std_msgs::String>("/pred/hook", 1); }
 void Predictor::callback(const std_msgs::String::ConstPtr& msg) {
@@ -104,8 +108,9 @@ def _names(write_tree, node: str = NODE, library: str = LIBRARY,
 def test_calls_of_functions_the_node_never_runs_are_not_its(write_tree) -> None:
     names = _names(write_tree)
     assert {"/pred/used", "/free/used", "/pred/hook", "/pred/from_callback"} <= names, names
+    # (``deep`` is called by ``relay`` alone, which makes no call and nothing calls)
     assert not {"/prediction/obj_num", "/dynamic/obj", "/dynamic/setup", "/free/dead",
-                "/free/chain"} & names, names
+                "/free/chain", "/dynamic/deep"} & names, names
 
 
 CHAIN_HEADER = HEADER.replace("}  // namespace p\n", """
@@ -171,3 +176,35 @@ def test_a_class_exported_for_a_loader_keeps_its_methods(write_tree) -> None:
     # nothing calls is not
     assert {"/exported/setup", "/pred/used", "/pred/hook"} <= names, names
     assert not {"/free/dead", "/free/chain"} & names, names
+
+
+SHARED = LIBRARY.replace("void free_used() {", """void shared_sub() {
+  ros::NodeHandle n;
+  n.advertise<std_msgs::String>("/shared/out", 1);
+}
+void free_conditional(bool on) {
+  if (on) shared_sub();
+}
+void free_unconditional() { shared_sub(); }
+void free_used() {""")
+SHARED_NODE = NODE.replace("p::free_used();", """p::free_used();
+  bool on = false;
+  nh.param("on", on, false);
+  p::free_conditional(on);""")
+SHARED_HEADER = HEADER.replace("void free_used();", """void free_used();
+void free_conditional(bool on);
+void free_unconditional();""")
+
+
+def test_a_site_in_code_never_run_gives_no_condition(write_tree) -> None:
+    root = write_tree({"p/package.xml": package_xml("p", "catkin"),
+                       "p/CMakeLists.txt": CMAKE,
+                       "p/include/p/pred.h": SHARED_HEADER,
+                       "p/src/pred.cpp": SHARED,
+                       "p/src/node.cpp": SHARED_NODE})
+    sources = [str(root / "p" / "src" / name) for name in ("node.cpp", "pred.cpp")]
+    result = extract_cpp(sources, scan([str(root)]), cache_dir=None, jobs=1)
+    # shared_sub runs only under ``if (on)``: the unconditional site is in a function
+    # nothing calls
+    made = [c for c in result.calls if c.name == "/shared/out"]
+    assert len(made) == 1 and made[0].conditions, made

@@ -596,7 +596,8 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     built = _built_under(facts, _building_unseen(units, facts) if complete else unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
     called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen),
-                                    links.construction_unseen(unseen))
+                                    links.construction_unseen(unseen),
+                                    links.never_run(known, unseen))
     given = links.node_rosnames([unit.rosname for unit in units], known, unseen)
     # the one name the units agree on; else unknown (``links.node_rosnames``), or a
     # process of several nodes named as before from its first file (``_name_nodes``)

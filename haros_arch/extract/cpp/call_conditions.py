@@ -225,8 +225,9 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, RUNS_WHEN_CALLED, "", ""))
     # so does a function that holds one of the unit's ROS calls (``holding``): where
     # nothing of the node calls or uses it, those calls are never made
-    # (``links.NodeFacts.never_run``: Fast-Planner's ``ObjPredictor::init()``)
-    for function in holding:
+    # (``links.NodeFacts.never_run``: Fast-Planner's ``ObjPredictor::init()``),
+    # and one that calls such functions: what it calls runs where it does
+    for function in (*holding, *(function for function, _ in by_caller.values())):
         where = function.location.file
         usr = function.canonical.get_usr()
         if usr and where is not None and owned(where.name) and (
@@ -476,6 +477,7 @@ def _overridden_in(cls: Cursor, name: str, types: list[str], owned: Callable[[st
 def shared(facts: Iterable[Fact], unseen: Collection[str],
            unbuilt: Callable[[str], bool] = lambda usr: False,
            unseen_construction: Callable[[str], bool] = lambda usr: False,
+           never: Callable[[str], bool] = lambda usr: False,
            ) -> dict[str, tuple[Condition, ...]]:
     """Function USR -> the source conditions every call of it in the node's files is
     made under, with those its calling function is called under in turn (a base
@@ -491,7 +493,8 @@ def shared(facts: Iterable[Fact], unseen: Collection[str],
     ``SITE_UNDER`` facts too; none when ``unseen_construction`` says the parse may hide
     one): OrbbecSDK_ROS2's driver builds its ``OBLidarNode`` only ``if (device_type_ ==
     "lidar")``, and the lidar's publishers are made by ``setupTopics()``, which its
-    constructor calls."""
+    constructor calls. Nor is a site in a function the node never runs (``never``,
+    ``links.never_run``)."""
     sites: dict[str, dict[str, tuple[tuple[Condition, ...] | None, str, bool]]] = {}
     referenced: set[str] = set()
     bases: dict[str, list[str]] = {}
@@ -527,7 +530,8 @@ def shared(facts: Iterable[Fact], unseen: Collection[str],
         found_sites = [(under, caller) for u in every
                        for under, caller, virtual in sites.get(u, {}).values()
                        if (u == usr or virtual) and not (
-                           caller and unbuilt(caller) and not sites.get(caller))]
+                           caller and unbuilt(caller) and not sites.get(caller))
+                       and not (caller and never(caller))]
         if not found_sites:
             return ()
         result: tuple[Condition, ...] | None = None
