@@ -936,9 +936,14 @@ def _idle_constructor(known: NodeFacts, usr: str, unseen: Collection[str],
     """Whether ``usr`` is a constructor that never runs, for the functions it calls
     (``never_run``): no file of the node calls it (``constructor_unbuilt``, no site of it
     either), nor may a loader or C++ unwritten (it takes arguments and is no copy or
-    move: C++ calls a default or copy constructor where no code writes the call), and
-    its class is no plugin's export."""
-    if not is_constructor_usr(usr) or usr in sited or not constructor_unbuilt(known, unseen)(usr):
+    move: C++ calls a default or copy constructor where no code writes the call), nor
+    a library's template given the class (BehaviorTree.CPP's ``registerNodeType<C>``
+    builds ``C(name, config)``, ``emplace_back(args)`` builds an element): the node's
+    files build the class by another constructor; it is no class template's, and its
+    class no plugin's export."""
+    if not is_constructor_usr(usr) or usr in sited or "@ST>" in usr or "@SP>" in usr or (
+            class_of(usr) not in known.constructed) or not constructor_unbuilt(
+            known, unseen)(usr):
         return False
     cls, _, function = usr.rpartition("@F@")
     if cls in known.named_classes:
