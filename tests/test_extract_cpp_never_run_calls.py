@@ -217,3 +217,16 @@ def test_a_site_in_code_never_run_gives_no_condition(write_tree) -> None:
     # nothing calls
     made = [c for c in result.calls if c.name == "/shared/out"]
     assert len(made) == 1 and made[0].conditions, made
+
+
+def test_a_process_that_loads_plugins_keeps_the_calls(write_tree) -> None:
+    # a plugin loaded into the process may call any method of an object it is handed
+    # (move_group's capabilities call PlanExecution::planAndExecute, which nothing of
+    # move_group's own files calls)
+    node = NODE.replace('#include "p/pred.h"', '#include "p/pred.h"\n'
+                        "#include <pluginlib/class_loader.h>").replace(
+        "pred.used();", """pred.used();
+  pluginlib::ClassLoader<p::Predictor> loader("p", "p::Predictor");
+  boost::shared_ptr<p::Predictor> plugin = loader.createInstance("p/Plugin");""")
+    names = _names(write_tree, node)
+    assert {"/dynamic/obj", "/dynamic/setup", "/prediction/obj_num"} <= names, names

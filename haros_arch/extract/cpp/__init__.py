@@ -566,6 +566,20 @@ def _call_key(call: PrimitiveCall) -> tuple[object, ...]:
 
 # the diagnostics the visitor makes at a call it keeps, which say something of that call
 _OF_A_CALL = frozenset({"CPP_CALL_UNRESOLVED"})
+# what says a unit's code loads code by name into its process: a plugin, a nodelet it runs
+# as itself, a shared library (``_hosting``)
+_LOADS = frozenset({"CPP_PLUGINS_LOADED", "CPP_NODELET_IN_PROCESS", "CPP_LIBRARY_LOADED"})
+
+
+def _hosting(units: Iterable[CppResult]) -> bool:
+    """Whether the node's code loads code by name into its process (``loads_in``,
+    ``_LOADS``): that code may call any function of the node's files it is handed an
+    object of, so a function no file of the node calls may still run (move_group's
+    capabilities, loaded by pluginlib, call ``PlanExecution::planAndExecute``, which
+    nothing of move_group's own files calls): its calls stay (``links.never_run`` is
+    not applied to them)."""
+    return any(unit.loads_in or any(d.code in _LOADS for d in unit.diagnostics)
+               for unit in units)
 
 
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True,
@@ -595,9 +609,11 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
         facts = [fact for fact in facts if fact[3] not in away]
     built = _built_under(facts, _building_unseen(units, facts) if complete else unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
+    hosting = _hosting(units)
     called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen),
                                     links.construction_unseen(unseen),
-                                    links.never_run(known, unseen))
+                                    links.never_run(known, unseen) if not hosting else (
+                                        lambda usr: False))
     given = links.node_rosnames([unit.rosname for unit in units], known, unseen)
     # the one name the units agree on; else unknown (``links.node_rosnames``), or a
     # process of several nodes named as before from its first file (``_name_nodes``)
@@ -613,7 +629,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 if len(names) == 1 and PLACEHOLDER in next(iter(names))
                 and "?" in links.resolve_name(next(iter(names)), known, unseen)}
     for unit in units:
-        calls, found = links.resolve(unit.calls, known, unseen, per_site)
+        calls, found = links.resolve(unit.calls, known, unseen, per_site, hosting)
         # a diagnostic of a call the node does not make (one a header's template or a
         # constructor no file of the node calls makes) is none of the node's
         dropped = {call.location for call in unit.calls} - {call.location for call in calls}

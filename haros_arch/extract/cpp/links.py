@@ -554,13 +554,14 @@ class NodeFacts:
 
 
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
-            unseen: Collection[str] = ("*",), named: dict[str, str] | None = None
-            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+            unseen: Collection[str] = ("*",), named: dict[str, str] | None = None,
+            hosting: bool = False) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
     call a constructor makes with a name from its parameters (``made_in``) is left out
     when no file of the node calls that constructor and the class's name is not among
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere); so is
-    a call made in a function the node never runs (``called_in``, ``never_run``).
+    a call made in a function the node never runs (``called_in``, ``never_run``), unless
+    the node loads code by name into its process (``hosting``), which may call it.
 
     ``named``: owner -> the node name its constructor writes from its parameters, where
     the node's files pass it several values (``Node(node_name)`` of a class built
@@ -578,7 +579,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     idle = known.idle(unseen)
     host_called = known.host_callable
     for call in calls:
-        if call.called_in is not None and unrun(call.called_in):
+        if call.called_in is not None and not hosting and unrun(call.called_in):
             continue  # made in a function the node never runs (``never_run``)
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
