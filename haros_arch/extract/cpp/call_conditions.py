@@ -182,18 +182,24 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 # a virtual method called unqualified may run an override instead
                 virtual = callee.kind == CursorKind.CXX_METHOD and (
                     callee.is_virtual_method()) and not qualified_call(node)
-                by_caller.setdefault(_place(function), (function, {}))[1][place] = (
-                    usr + (VIRTUAL if virtual else ""))
+                # (two calls may start at one place, ``Driver().start(nh)``: the
+                # constructor's and the method's, one per line)
+                at = by_caller.setdefault(_place(function), (function, {}))[1]
+                marked = usr + (VIRTUAL if virtual else "")
+                held = at.get(place)
+                at[place] = marked if held is None or held == marked else (
+                    f"{held}\n{marked}" if marked not in held.split("\n") else held)
     for function, wanted in by_caller.values():
         # the function holding the calls; a constructor too, whose sites are none where
         # no file of the node builds it (``shared``)
         caller = function.canonical.get_usr() if eligible(function) or (
             function.kind == CursorKind.CONSTRUCTOR) else ""
-        for place, (usr, under) in _conditions(function, wanted, reader, enter).items():
+        for place, (usrs, under) in _conditions(function, wanted, reader, enter).items():
             text = conditions_text(under) if under is not None else ""
-            called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
-            facts.append((called, SITE_UNDER, text,
-                          f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
+            for usr in usrs.split("\n"):
+                called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
+                facts.append((called, SITE_UNDER, text,
+                              f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
     used: set[str] = set()  # named in a variable's initialiser outside functions
     classes: set[str] = set()  # named in a variable's type or initialiser there
     for variable in variables:
@@ -376,8 +382,9 @@ def _place(cursor: Cursor) -> tuple[str, int]:
 def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
                 reader: ConditionReader, enter: Callable[[Cursor], None]
                 ) -> dict[tuple[str, int], tuple[str, tuple[Condition, ...] | None]]:
-    """The callee's USR and the source conditions of each wanted call in ``function``
-    (None: not met in the walk, so unknown)."""
+    """The callee's USR (the callees', one per line, of calls that start at one place)
+    and the source conditions of each wanted call in ``function`` (None: not met in the
+    walk, so unknown)."""
     enter(function)
     found: dict[tuple[str, int], tuple[str, tuple[Condition, ...] | None]] = {
         place: (usr, None) for place, usr in wanted.items()}
