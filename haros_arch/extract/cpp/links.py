@@ -561,7 +561,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     when no file of the node calls that constructor and the class's name is not among
     the words ``unseen`` of the code where the parse left errors (``*``: anywhere); so is
     a call made in a function the node never runs (``called_in``, ``never_run``), unless
-    the node loads code by name into its process (``hosting``), which may call it.
+    code the node's files do not show may call any of their functions (``hosting``: no
+    ``main()`` read, a plugin's class, or a load of code by name into the process,
+    ``extract.cpp._runs_any``).
 
     ``named``: owner -> the node name its constructor writes from its parameters, where
     the node's files pass it several values (``Node(node_name)`` of a class built
