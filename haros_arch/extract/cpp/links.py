@@ -931,7 +931,13 @@ def _runs_when_called(known: NodeFacts, usr: str, unseen: Collection[str]) -> bo
         return False  # a method of a class exported as a plugin, or a global's
     names = _FUNCTION.findall(usr) or [
         name for name in (known.runs_when_called[usr],) if name]
-    return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen
+    return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen and (
+        names[-1] not in _UNWRITTEN)
+
+
+# the functions C++ calls where no call is written: a range-based ``for`` over an object
+# calls its ``begin()`` and ``end()``
+_UNWRITTEN = frozenset({"begin", "end"})
 
 
 def _idle_constructor(known: NodeFacts, usr: str, unseen: Collection[str],
