@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
   t.move(a, b, "x");
   t.lazy();
   t.modes("a");
+  t.each(std::vector<std::string>{"x"});
   ros::spin();
 }
 """

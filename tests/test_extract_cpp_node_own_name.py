@@ -54,6 +54,8 @@ int main(int argc, char ** argv)
 {
   rclcpp::init(argc, argv);
   auto node = std::make_shared<Manager>();
+  auto handed = &Manager::plugin;  // (handed on: what plugin() makes may be made)
+  (void)handed;
   rclcpp::spin(node->get_node_base_interface());
 }
 """

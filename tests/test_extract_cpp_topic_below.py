@@ -44,6 +44,7 @@ public:
     path_pub_ = create_publisher<std_msgs::msg::Bool>("~/output/path", 1);
     other_ = create_publisher<std_msgs::msg::Bool>(std::string("~/") + get_name(), 1);
     stamps_ = std::make_unique<Stamps>(this);
+    timer_ = create_wall_timer(std::chrono::milliseconds(100), std::bind(&Smoother::tick, this));
   }
   void tick()
   {
@@ -52,6 +53,7 @@ public:
   }
   rclcpp::Publisher<std_msgs::msg::Bool>::SharedPtr path_pub_, other_;
   std::unique_ptr<Stamps> stamps_;
+  rclcpp::TimerBase::SharedPtr timer_;
 };
 int main(int argc, char ** argv)
 {

@@ -47,6 +47,7 @@ int main(int argc, char ** argv) {
   ros::init(argc, argv, "relay");
   Relay relay;
   relay.start();
+  relay.restart();
 }
 """
 

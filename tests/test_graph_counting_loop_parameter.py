@@ -3,8 +3,8 @@ loop's variable: ego-planner (and Fast-Planner, ego-planner-swarm) reads its way
 with ``nh.param("fsm/waypoint_num", waypoint_num_, -1); for (int i = 0; i <
 waypoint_num_; i++) nh.param("fsm/waypoint" + to_string(i) + "_x", ...)``. The reads were
 ``~fsm/waypoint?_x`` whatever the launch file gives (every waypoint parameter undecided);
-now they are one read per turn of the value the configuration gives the count, so a
-waypoint beyond it is set but never read, and a count with no value keeps the ``?``."""
+now they are one read per turn of the value the configuration gives the count (else of
+the code's default), so a waypoint beyond it is set but never read."""
 
 from __future__ import annotations
 
@@ -90,9 +90,13 @@ def test_each_turn_of_the_loop_reads_its_parameter(write_tree) -> None:
     assert unread == ["parameter:/fsm/fsm/waypoint2_x"]
 
 
-def test_a_count_the_configuration_does_not_give_keeps_the_unknown_run(write_tree) -> None:
+def test_a_count_the_configuration_does_not_give_takes_the_code_default(write_tree) -> None:
+    # nh.param("count", count, 2) with nothing setting ~count: two turns, as in ROS
+    # (a count with no default keeps the ``?``: test_graph_counting_loop_default.py)
     model = _analysed(write_tree, "")
-    assert "/fsm/item_?" in _reads(model)
+    reads = _reads(model)
+    assert "/fsm/item_1" in reads and "/fsm/item_2" in reads
+    assert "/fsm/item_?" not in reads
     unread = sorted(e for f in run_catalogue(model) if f.rule == "parameter-set-not-read"
                     for e in f.entities if e.startswith("parameter:"))
     assert unread == ["parameter:/fsm/fsm/waypoint2_x"]

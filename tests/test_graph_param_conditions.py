@@ -78,6 +78,8 @@ NODE = """
       ros::init(argc, argv, "gated");
       Gated gated;
       gated.init();
+      auto on_reset = &Gated::reset;  // (a callback: what reset() reads may be read)
+      (void)on_reset;
       Filter<Ok> filter;
       filter.load();
       filter.start();

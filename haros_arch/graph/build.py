@@ -1118,7 +1118,7 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     if call.name_each == WORDS:
         return _word_calls(call, instance, param, value)
     if call.name_each.startswith(COUNTED):
-        return _counted_calls(call, param, value)
+        return _counted_calls(call, instance, param, value)
     elements = _list_elements(call, instance, resources, full)
     if elements is None:
         return [call]
@@ -1144,15 +1144,21 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
             for name, item in named]
 
 
-def _counted_calls(call: PrimitiveCall, param: Resource | None, value: Any
-                   ) -> list[PrimitiveCall]:
+def _counted_calls(call: PrimitiveCall, instance: NodeInstance, param: Resource | None,
+                   value: Any) -> list[PrimitiveCall]:
     """A call made in each turn of a counting loop up to an integer parameter's value
     (``COUNTED``): one per turn, its ``?`` the turn's number, when the launch files give
     the parameter a value unconditionally (ego-planner's ``fsm/waypoint_num`` 4:
-    ``~fsm/waypoint0_x`` to ``~fsm/waypoint3_x``); none for a count that makes no turn;
-    the call as it is otherwise (its name keeps its ``?``)."""
+    ``~fsm/waypoint0_x`` to ``~fsm/waypoint3_x``) or, when nothing sets it, of the one
+    integer default the node's code reads it with (mavros_controllers' trajectory_publisher
+    ``nh_private_.param<int>("number_of_primitives", num_primitives_, 7)``: seven turns);
+    none for a count that makes no turn; the call as it is otherwise (its name keeps its
+    ``?``)."""
+    if value is None and not (isinstance(param, Parameter) and param.is_set):
+        value = _code_default(call, instance, int)
+        param = None  # a default: no launch conditions
     turns = counted_turns(call.name_each or "", value, _NUMBERED_LIMIT) if (
-        isinstance(param, Parameter) and not param.launch_conditions
+        (param is None or (isinstance(param, Parameter) and not param.launch_conditions))
         and call.name.count(UNKNOWN_MARK) == 1) else None
     if turns is None:
         return [call]
@@ -1329,7 +1335,9 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
     what = {None: f"parameter{'s' if len(unset) > 1 else ''} {param}",
             NUMBERED: f"parameters {param}0, {param}1, ...",
             WORDS: f"words of the parameter {param}"
-            }.get(call.name_each, f"elements of the list parameter {param}")
+            }.get(call.name_each, f"counter of the loop up to the parameter {param}"
+                  if (call.name_each or "").startswith(COUNTED)
+                  else f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
                      kind=call.kind, what=what)
 

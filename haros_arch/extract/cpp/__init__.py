@@ -566,6 +566,25 @@ def _call_key(call: PrimitiveCall) -> tuple[object, ...]:
 
 # the diagnostics the visitor makes at a call it keeps, which say something of that call
 _OF_A_CALL = frozenset({"CPP_CALL_UNRESOLVED"})
+# what says a unit's code loads code by name into its process: a plugin, a nodelet it runs
+# as itself, a shared library (``_runs_any``)
+_LOADS = frozenset({"CPP_PLUGINS_LOADED", "CPP_NODELET_IN_PROCESS", "CPP_LIBRARY_LOADED"})
+
+
+def _runs_any(units: Iterable[CppResult], reaching: object, entry: str | None) -> bool:
+    """Whether code the node's files do not show may call any of their functions, so a
+    function no file of the node calls may still run and its calls stay
+    (``links.never_run`` is not applied to them): the node starts from no ``main()``
+    read (``_reached``'s answer ``reaching`` is None: what starts it is not known, a
+    library's functions are its users'), or is a plugin, nodelet or component class
+    (``entry``), whose host may call any method of it and of its bases, virtual or not
+    (nav2's costmap calls a layer's non-virtual ``Layer::initialize``), or its code
+    loads code by name into its process (``loads_in``, ``_LOADS``), which may call any
+    function it is handed an object of (move_group's capabilities, loaded by pluginlib,
+    call ``PlanExecution::planAndExecute``, which nothing of move_group's own files
+    calls)."""
+    return reaching is None or entry is not None or any(
+        unit.loads_in or any(d.code in _LOADS for d in unit.diagnostics) for unit in units)
 
 
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True,
@@ -595,8 +614,11 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
         facts = [fact for fact in facts if fact[3] not in away]
     built = _built_under(facts, _building_unseen(units, facts) if complete else unseen)
     known = links.NodeFacts(facts)  # read once for every unit's calls
+    hosting = _runs_any(units, reaching, entry)
     called = call_conditions.shared(facts, unseen, links.constructor_unbuilt(known, unseen),
-                                    links.construction_unseen(unseen))
+                                    links.construction_unseen(unseen),
+                                    links.never_run(known, unseen) if not hosting else (
+                                        lambda usr: False))
     given = links.node_rosnames([unit.rosname for unit in units], known, unseen)
     # the one name the units agree on; else unknown (``links.node_rosnames``), or a
     # process of several nodes named as before from its first file (``_name_nodes``)
@@ -612,7 +634,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 if len(names) == 1 and PLACEHOLDER in next(iter(names))
                 and "?" in links.resolve_name(next(iter(names)), known, unseen)}
     for unit in units:
-        calls, found = links.resolve(unit.calls, known, unseen, per_site)
+        calls, found = links.resolve(unit.calls, known, unseen, per_site, hosting)
         # a diagnostic of a call the node does not make (one a header's template or a
         # constructor no file of the node calls makes) is none of the node's
         dropped = {call.location for call in unit.calls} - {call.location for call in calls}

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from collections.abc import Callable, Collection, Iterable
 
 from clang.cindex import Cursor, CursorKind, conf
@@ -41,9 +42,9 @@ BASES = -8
 # call of it may be hidden there
 HIDDEN = -9
 # the function (of the workspace's files, a free function or a non-virtual method that
-# ``eligible`` takes, no ``main``) holds a string or handle parameter the unit made a
-# placeholder of: its code runs only where the node's files call or use it
-# (``links.NodeFacts.never_run``)
+# ``eligible`` takes, no ``main``: ``runs_when_called``) holds a string or handle
+# parameter the unit made a placeholder of, or one of the unit's ROS calls: its code runs
+# only where the node's files call or use it (``links.never_run``)
 RUNS_WHEN_CALLED = -12
 # the fact's USR is a name the unit's code writes where clang keeps only the overloads
 # it may be (``OVERLOADED_DECL_REF``: a call in a template that depends on its parameters,
@@ -93,7 +94,8 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                owned: Callable[[str], bool], enter: Callable[[Cursor], None],
                walked: Callable[[Cursor], tuple[list[Cursor], list[Cursor]] | None]
                = lambda function: None, variables: Iterable[Cursor] = (),
-               declared: str | None = None) -> list[Fact]:
+               declared: str | None = None, holding: Iterable[Cursor] = (),
+               source_of: Callable[[str], bytes | None] | None = None) -> list[Fact]:
     """The unit's facts (``SITE_UNDER``, ``REFERENCED``, ``BASES``) over the eligible
     functions of the workspace's files it calls or defines; ``enter`` readies
     ``reader`` for a function's body; ``walked`` gives a function's calls (among other
@@ -102,7 +104,9 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     outside functions, use each function they name (a call there runs before ``main``,
     a function's address in a table runs anywhere: ``REFERENCED``); ``declared``, the
     header of the names the unit declared permissively (a base class there may hide a
-    virtual method its subclass's method overrides)."""
+    virtual method its subclass's method overrides); ``holding``, the functions whose
+    bodies hold the unit's ROS calls (``RUNS_WHEN_CALLED`` where ``runs_when_called``);
+    ``source_of``, a file's bytes by name (``_meta_named``)."""
     # whether a declaration is an eligible function of the workspace's files, by the
     # node (one per cursor of the unit, kept with its answer: many references and
     # calls name the same declaration)
@@ -178,18 +182,24 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 # a virtual method called unqualified may run an override instead
                 virtual = callee.kind == CursorKind.CXX_METHOD and (
                     callee.is_virtual_method()) and not qualified_call(node)
-                by_caller.setdefault(_place(function), (function, {}))[1][place] = (
-                    usr + (VIRTUAL if virtual else ""))
+                # (two calls may start at one place, ``Driver().start(nh)``: the
+                # constructor's and the method's, one per line)
+                at = by_caller.setdefault(_place(function), (function, {}))[1]
+                marked = usr + (VIRTUAL if virtual else "")
+                held = at.get(place)
+                at[place] = marked if held is None or held == marked else (
+                    f"{held}\n{marked}" if marked not in held.split("\n") else held)
     for function, wanted in by_caller.values():
         # the function holding the calls; a constructor too, whose sites are none where
         # no file of the node builds it (``shared``)
         caller = function.canonical.get_usr() if eligible(function) or (
             function.kind == CursorKind.CONSTRUCTOR) else ""
-        for place, (usr, under) in _conditions(function, wanted, reader, enter).items():
+        for place, (usrs, under) in _conditions(function, wanted, reader, enter).items():
             text = conditions_text(under) if under is not None else ""
-            called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
-            facts.append((called, SITE_UNDER, text,
-                          f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
+            for usr in usrs.split("\n"):
+                called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
+                facts.append((called, SITE_UNDER, text,
+                              f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
     used: set[str] = set()  # named in a variable's initialiser outside functions
     classes: set[str] = set()  # named in a variable's type or initialiser there
     for variable in variables:
@@ -217,12 +227,24 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             continue
         if function.kind == CursorKind.FUNCTION_TEMPLATE and _free_template(function):
             facts.append((usr, RUNS_WHEN_CALLED, function.spelling, ""))
-        elif eligible(function) and (
-            function.spelling != "main") and (
-                function.kind != CursorKind.CXX_METHOD or (
-                    not function.is_virtual_method()
-                    and _bases_read(function.semantic_parent, declared))):
+        elif runs_when_called(function, declared):
             facts.append((usr, RUNS_WHEN_CALLED, "", ""))
+    # so does a function that holds one of the unit's ROS calls (``holding``): where
+    # nothing of the node calls or uses it, those calls are never made
+    # (``links.NodeFacts.never_run``: Fast-Planner's ``ObjPredictor::init()``),
+    # and one that calls such functions: what it calls runs where it does
+    for function in (*holding, *(function for function, _ in by_caller.values())):
+        where = function.location.file
+        usr = function.canonical.get_usr()
+        if usr and where is not None and owned(where.name) and (
+                runs_when_called(function, declared)):
+            facts.append((usr, RUNS_WHEN_CALLED, "", ""))
+    # a name the code writes where Qt's meta-object system calls it by its text
+    # (``SLOT(updateTopic())``, ``invokeMethod(obj, "refresh")``): any function of that
+    # name may run there, as an overloaded name's may
+    facts.extend((name, OVERLOADED, "", "") for name in sorted(_meta_named(
+        {function.location.file.name for function in functions
+         if function.location.file is not None}, source_of)) if name not in overloaded)
     for function in functions:
         if function.kind != CursorKind.CXX_METHOD or not function.is_virtual_method() or (
             not eligible(function)
@@ -234,6 +256,40 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             facts.append((usr, BASES, "\n".join(bases), "") if bases is not None
                          else (usr, REFERENCED, "", ""))
     return list(dict.fromkeys(facts))
+
+
+def runs_when_called(function: Cursor, declared: str | None) -> bool:
+    """Whether ``function``'s code runs only where something calls it or names it: a
+    free function or a non-virtual method that ``eligible`` takes (no ``main``, no C
+    function, which a loader may find by its symbol), of a class whose bases are all
+    read (a method that looks non-virtual may override a virtual one of a base the
+    parse could not read)."""
+    if not eligible(function) or function.spelling == "main":
+        return False
+    if function.kind == CursorKind.FUNCTION_DECL:
+        return "#" in (function.canonical.get_usr() or "")  # a C function's has no types
+    return not function.is_virtual_method() and _bases_read(function.semantic_parent, declared)
+
+
+# the functions a string names for Qt's meta-object system to call by name
+_META = re.compile(rb"\b(?:SLOT|SIGNAL|Q_SLOT|Q_SIGNAL)\s*\(\s*([A-Za-z_]\w*)"
+                   rb"|\binvokeMethod\s*\([^;]*?\"([A-Za-z_]\w*)\"")
+
+
+def _meta_named(files: Iterable[str], source_of: Callable[[str], bytes | None] | None
+                ) -> set[str]:
+    """The names ``files`` hand Qt's meta-object system as text (``_META``)."""
+    found: set[str] = set()
+    if source_of is None:
+        return found
+    for name in files:
+        data = source_of(name)
+        if data is None or (b"SLOT" not in data and b"SIGNAL" not in data
+                            and b"invokeMethod" not in data):
+            continue
+        for match in _META.finditer(data):
+            found.add((match.group(1) or match.group(2)).decode())
+    return found
 
 
 def _template_usr(function: Cursor) -> str:
@@ -326,8 +382,9 @@ def _place(cursor: Cursor) -> tuple[str, int]:
 def _conditions(function: Cursor, wanted: dict[tuple[str, int], str],
                 reader: ConditionReader, enter: Callable[[Cursor], None]
                 ) -> dict[tuple[str, int], tuple[str, tuple[Condition, ...] | None]]:
-    """The callee's USR and the source conditions of each wanted call in ``function``
-    (None: not met in the walk, so unknown)."""
+    """The callee's USR (the callees', one per line, of calls that start at one place)
+    and the source conditions of each wanted call in ``function`` (None: not met in the
+    walk, so unknown)."""
     enter(function)
     found: dict[tuple[str, int], tuple[str, tuple[Condition, ...] | None]] = {
         place: (usr, None) for place, usr in wanted.items()}
@@ -427,6 +484,7 @@ def _overridden_in(cls: Cursor, name: str, types: list[str], owned: Callable[[st
 def shared(facts: Iterable[Fact], unseen: Collection[str],
            unbuilt: Callable[[str], bool] = lambda usr: False,
            unseen_construction: Callable[[str], bool] = lambda usr: False,
+           never: Callable[[str], bool] = lambda usr: False,
            ) -> dict[str, tuple[Condition, ...]]:
     """Function USR -> the source conditions every call of it in the node's files is
     made under, with those its calling function is called under in turn (a base
@@ -442,7 +500,8 @@ def shared(facts: Iterable[Fact], unseen: Collection[str],
     ``SITE_UNDER`` facts too; none when ``unseen_construction`` says the parse may hide
     one): OrbbecSDK_ROS2's driver builds its ``OBLidarNode`` only ``if (device_type_ ==
     "lidar")``, and the lidar's publishers are made by ``setupTopics()``, which its
-    constructor calls."""
+    constructor calls. Nor is a site in a function the node never runs (``never``,
+    ``links.never_run``)."""
     sites: dict[str, dict[str, tuple[tuple[Condition, ...] | None, str, bool]]] = {}
     referenced: set[str] = set()
     bases: dict[str, list[str]] = {}
@@ -478,7 +537,8 @@ def shared(facts: Iterable[Fact], unseen: Collection[str],
         found_sites = [(under, caller) for u in every
                        for under, caller, virtual in sites.get(u, {}).values()
                        if (u == usr or virtual) and not (
-                           caller and unbuilt(caller) and not sites.get(caller))]
+                           caller and unbuilt(caller) and not sites.get(caller))
+                       and not (caller and never(caller))]
         if not found_sites:
             return ()
         result: tuple[Condition, ...] | None = None

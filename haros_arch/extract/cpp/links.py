@@ -506,6 +506,35 @@ class NodeFacts:
                 naming or caller.rsplit("@F@", 1)[0] not in self.named_classes)
         return idle
 
+    @functools.lru_cache(maxsize=4)  # noqa: B019 (one NodeFacts per node, dropped with it)
+    def never_run(self, unseen: frozenset[str]) -> frozenset[str]:
+        """The functions ``links.never_run`` says never run, for the words ``unseen``
+        (no ``*``): those that run only when called, that nothing calls but at sites in
+        functions of this set or in constructors that never run (the largest such set:
+        functions that call only each other are in it)."""
+        sited: dict[str, dict[str, str]] = {}  # function -> call site -> its caller
+        for usr, index, _value, site in self.facts:
+            if index == SITE_UNDER:
+                place, _, rest = site.partition("\n")
+                sited.setdefault(usr, {})[place] = rest.partition("\n")[0]
+        # used where no site says who calls it: anywhere
+        used = {usr for usr, index, _value, site in self.facts
+                if index in (REFERENCED, BASES, HIDDEN, CALLED_VIRTUAL, INSTANTIATED) or (
+                    index not in NOT_CALLS | INDICES and site not in sited.get(usr, {}))}
+        dead = {usr for usr in self.runs_when_called
+                if usr not in used and _runs_when_called(self, usr, unseen)}
+        idle = functools.lru_cache(maxsize=None)(
+            lambda caller: _idle_constructor(self, caller, unseen, sited))
+        changed = True
+        while changed:
+            changed = False
+            for usr in list(dead):
+                if any(caller != usr and caller not in dead and not idle(caller)
+                       for caller in sited.get(usr, {}).values()):
+                    dead.discard(usr)
+                    changed = True
+        return frozenset(dead)
+
     @functools.cached_property
     def host_callable(self) -> frozenset[str]:
         """The virtual methods a host may call through a base class they override, with
@@ -525,12 +554,16 @@ class NodeFacts:
 
 
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
-            unseen: Collection[str] = ("*",), named: dict[str, str] | None = None
-            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+            unseen: Collection[str] = ("*",), named: dict[str, str] | None = None,
+            hosting: bool = False) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
     call a constructor makes with a name from its parameters (``made_in``) is left out
     when no file of the node calls that constructor and the class's name is not among
-    the words ``unseen`` of the code where the parse left errors (``*``: anywhere).
+    the words ``unseen`` of the code where the parse left errors (``*``: anywhere); so is
+    a call made in a function the node never runs (``called_in``, ``never_run``), unless
+    code the node's files do not show may call any of their functions (``hosting``: no
+    ``main()`` read, a plugin's class, or a load of code by name into the process,
+    ``extract.cpp._runs_any``).
 
     ``named``: owner -> the node name its constructor writes from its parameters, where
     the node's files pass it several values (``Node(node_name)`` of a class built
@@ -548,6 +581,8 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     idle = known.idle(unseen)
     host_called = known.host_callable
     for call in calls:
+        if call.called_in is not None and not hosting and unrun(call.called_in):
+            continue  # made in a function the node never runs (``never_run``)
         if call.made_in is not None:
             if not _made(call.made_in, known.called, known.constructed, unseen):
                 continue  # no file of the node constructs the class so: not made
@@ -872,20 +907,60 @@ def never_run(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool
     """Whether a USR is a function whose code runs only when called or used
     (``call_conditions.RUNS_WHEN_CALLED``: a free function, a non-virtual method) that no
     file of the node calls, uses otherwise (``&f``, a callback, a name a template's
-    dependent call or an overloaded ``&f`` may mean) or may call where the parse left
-    errors, nor a method of a class a variable outside functions names (a plugin's
-    export): a value taken from one of its parameters is never made (msckf_vio's
-    ``getTransformEigen(nh, field)``, in utils.cpp that the image processor compiles
-    and never calls, passes ``field`` on to the ``getTransformCV`` it does call)."""
-    def unrun(usr: str) -> bool:
-        if "*" in unseen or usr not in known.runs_when_called or usr in known.run:
-            return False
-        if "@F@" in usr and usr.rsplit("@F@", 1)[0] in known.named_classes:
-            return False  # a method of a class exported as a plugin, or a global's
-        names = _FUNCTION.findall(usr) or [
-            name for name in (known.runs_when_called[usr],) if name]
-        return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen
-    return unrun
+    dependent call, an overloaded ``&f`` or Qt's ``SLOT(f())`` may mean) or may call
+    where the parse left errors, nor a method of a class a variable outside functions
+    names (a plugin's export); or, at any depth, one whose every call site is in such a
+    function or in a constructor that never runs (``_idle_constructor``). Its calls are
+    never made (Fast-Planner's plan_env library, which fast_planner_node links, defines
+    ``ObjPredictor::init()``, subscribing to ``/dynamic/pose_<i>``; nothing in the node
+    calls it, nor constructs an ObjPredictor), nor is a value taken from one of its
+    parameters (msckf_vio's ``getTransformEigen(nh, field)``, in utils.cpp that the image
+    processor compiles and never calls, passes ``field`` on to the ``getTransformCV`` it
+    does call). Nothing is when the parse may hide a call anywhere (``*``)."""
+    if "*" in unseen:
+        return lambda usr: False
+    return known.never_run(frozenset(unseen)).__contains__
+
+
+def _runs_when_called(known: NodeFacts, usr: str, unseen: Collection[str]) -> bool:
+    """Whether ``usr`` runs only where the node's code calls or names it (``never_run``'s
+    first test, before its calls and uses are looked at)."""
+    if usr not in known.runs_when_called:
+        return False
+    if "@F@" in usr and usr.rsplit("@F@", 1)[0] in known.named_classes:
+        return False  # a method of a class exported as a plugin, or a global's
+    names = _FUNCTION.findall(usr) or [
+        name for name in (known.runs_when_called[usr],) if name]
+    return bool(names) and names[-1] not in known.overloaded and names[-1] not in unseen and (
+        names[-1] not in _UNWRITTEN)
+
+
+# the functions C++ calls where no call is written: a range-based ``for`` over an object
+# calls its ``begin()`` and ``end()``
+_UNWRITTEN = frozenset({"begin", "end"})
+
+
+def _idle_constructor(known: NodeFacts, usr: str, unseen: Collection[str],
+                      sited: Collection[str]) -> bool:
+    """Whether ``usr`` is a constructor that never runs, for the functions it calls
+    (``never_run``): no file of the node calls it (``constructor_unbuilt``, no site of it
+    either), nor may a loader or C++ unwritten (it takes arguments and is no copy or
+    move: C++ calls a default or copy constructor where no code writes the call), nor
+    a library's template given the class (BehaviorTree.CPP's ``registerNodeType<C>``
+    builds ``C(name, config)``, ``emplace_back(args)`` builds an element): the node's
+    files build the class by another constructor; it is no class template's, and its
+    class no plugin's export."""
+    if not is_constructor_usr(usr) or usr in sited or "@ST>" in usr or "@SP>" in usr or (
+            class_of(usr) not in known.constructed) or not constructor_unbuilt(
+            known, unseen)(usr):
+        return False
+    cls, _, function = usr.rpartition("@F@")
+    if cls in known.named_classes:
+        return False
+    params = function.partition("#")[2]
+    # (a copy's or move's one parameter: ``&1$@N@p@S@C#``, ``&&$@N@p@S@C#``)
+    return bool(params) and re.fullmatch(
+        r"&{1,2}\d*\$" + re.escape(cls.removeprefix("c:")) + "#?", params) is None
 
 
 def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,

@@ -474,6 +474,9 @@ class CallFinder:
         # (file, offset) of the macro expansions and #includes of the workspace's files:
         # a function's text that holds one does not show all its code
         self.opaque: list[tuple[str, int]] = []
+        # the functions whose bodies hold calls the unit makes, by USR
+        # (``call_conditions.site_facts``' ``holding``)
+        self._holding: dict[str, Cursor] = {}
 
     def run(self) -> None:
         self._root = self.namespaces.unit_root = root(self.tu)
@@ -543,7 +546,7 @@ class CallFinder:
                                     {cls for cls, base in self.registered if cls == base})
         self.facts.extend(call_conditions.site_facts(
             self.functions, self.sites, self.reader, self.owned, self._enter, self._walked,
-            self.globals, self.declared))
+            self.globals, self.declared, self._holding.values(), self.source.get))
         self.facts.extend(links.opaque_facts(self.functions, self.tu.spelling,
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
@@ -659,6 +662,7 @@ class CallFinder:
             self._root = None
         self.functions = []
         self.globals = []
+        self._holding = {}
 
     def _walked(self, function: Cursor) -> tuple[list[Cursor], list[Cursor]] | None:
         """The function's calls (among other nodes) and references to declarations,
@@ -939,6 +943,8 @@ class CallFinder:
         # a function's calls exist where it is called: under the conditions its call
         # sites in the node's files share (``call_conditions``), joined per node
         called_in = function.canonical.get_usr() if call_conditions.eligible(function) else None
+        if called_in and len(self.calls) > first:
+            self._holding.setdefault(called_in, function)
         for call in self.calls[first:]:
             call.built_in = call.built_in or built_in
             call.called_in = call.called_in or called_in or None
