@@ -99,7 +99,8 @@ class Condition:
         default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
-        return f"{self.statement} ({self.text})"
+        # (a ``try`` block has no text: ``try``, not ``try ()``)
+        return f"{self.statement} ({self.text})" if self.text else self.statement
 
 
 # ``$(eval x == 'a')``, ``$(eval arg('x') != "a")``, ``$(eval 'a' == x)``: a launch
