@@ -653,7 +653,17 @@ _STD_UNQUALIFIED = frozenset({
     "unordered_map", "unordered_set", "priority_queue", "stringstream", "ostringstream",
     "istringstream", "ifstream", "ofstream", "fstream", "ostream", "istream", "cout",
     "cerr", "clog", "cin", "endl", "shared_ptr", "unique_ptr", "weak_ptr",
-    "runtime_error", "invalid_argument", "out_of_range", "logic_error", "numeric_limits"})
+    "runtime_error", "invalid_argument", "out_of_range", "logic_error", "numeric_limits",
+    "queue", "boolalpha", "noboolalpha", "setprecision", "setw", "setfill"})
+# the values and functions among them (streams, manipulators): written unqualified in a
+# class's method, they are not declared as an unknown member would be (a declaration
+# there could shadow one of a base the parse lacks, ``_from_source``), but a
+# ``using std::cerr;`` at namespace scope shadows no member: the class's own and its
+# bases' are found first (ORB_SLAM3_ROS2's nodes write ``ss >> boolalpha >> flag`` and
+# ``cerr << ... << endl`` in their constructors, ORB_SLAM3's headers missing)
+_STD_VALUES = frozenset({
+    "cout", "cerr", "clog", "cin", "endl", "boolalpha", "noboolalpha", "setprecision",
+    "setw", "setfill"})
 
 
 @dataclass
@@ -1351,7 +1361,7 @@ class Names:
             last = "value"
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
-        ):
+        ) and not (written[-1] in _STD_VALUES and written[-1] not in self._defined):
             called = rest.lstrip()[:1] == b"("
             if not _C_VENDOR.fullmatch(written[-1]) and not (
                 not called and _CAPITALS.fullmatch(written[-1])
