@@ -74,3 +74,56 @@ def test_a_relative_remap_reaches_only_an_include_above_its_namespace(write_tree
     findings = _findings(write_tree, remap.replace("</group>", "") + "<node pkg=\"robot\" "
                          "type=\"panel.py\" name=\"p2\"/></group>", include)
     assert [f.rule for f in findings] == ["remap-unused"]
+
+
+ROS2_NODE = """import rclpy
+from std_msgs.msg import String
+rclpy.init()
+node = rclpy.create_node('panel')
+pub = node.create_publisher(String, 'engage', 10)
+rclpy.spin(node)
+"""
+
+ROS2_LAUNCH = """
+from launch import LaunchDescription
+from launch.actions import GroupAction, IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node, SetRemap
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    platform = IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution(
+        [FindPackageShare('vehicle_platform'), 'launch', 'platform.launch.py'])))
+    return LaunchDescription([GroupAction([
+        SetRemap('/radar_fc/vehicle_motion', '/localization/current_velocity'),
+        INCLUDE
+        Node(package='robot', executable='panel', name='panel'),
+    ])])
+"""
+
+
+def _ros2_findings(write_tree, include: str):
+    root = write_tree({
+        "src/robot/package.xml": package_xml("robot", build_type="ament_python"),
+        "src/robot/setup.py": ("from setuptools import setup\nsetup(name='robot', "
+                               "entry_points={'console_scripts': "
+                               "['panel = robot.panel:main']})\n"),
+        "src/robot/robot/__init__.py": "",
+        "src/robot/robot/panel.py": ROS2_NODE,
+        "src/robot/launch/car.launch.py": ROS2_LAUNCH.replace("INCLUDE", include),
+        "project.yaml": "project: p\nconfigurations:\n  c: [robot/launch/car.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    return [f for f in run_catalogue(model) if f.rule.startswith("remap-unused")]
+
+
+def test_a_ros2_set_remap_an_unread_include_takes_is_undecided(write_tree) -> None:
+    # launch_ros gives a SetRemap to every node launched after it in its group, those
+    # of an included file too
+    findings = _ros2_findings(write_tree, "platform,")
+    assert [f.rule for f in findings] == ["remap-unused-undecided"]
+    assert "platform.launch.py" in findings[0].message
+    findings = _ros2_findings(write_tree, "")
+    assert [f.rule for f in findings] == ["remap-unused"]
