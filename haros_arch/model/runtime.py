@@ -494,7 +494,8 @@ class Remap:
     target: str
     nodes: list[NodeInstance] = field(default_factory=list)
     users: list[NodeInstance] = field(default_factory=list)
-    unseen: list[NodeInstance] = field(default_factory=list)
+    # (and the includes not read that take it: ``Configuration.remaps``)
+    unseen: list[NodeInstance | LaunchItem] = field(default_factory=list)
     # the conditions not decided for the configuration under which alone a node given
     # it makes the links it renames (``_conditional_use``): not a user for certain
     conditional: list[Condition] = field(default_factory=list)
@@ -612,6 +613,19 @@ def _near(instance: NodeInstance, name: str) -> list[str]:
     return sorted(found)
 
 
+def unread_users(remap: Remap, includes: list[LaunchItem]) -> list[LaunchItem]:
+    """The includes not read (``includes``) whose nodes may use ``remap``: those given
+    its text (roslaunch gives an include the remaps written before it in its scope)
+    whose nodes may resolve its source to the name it remaps for its own nodes: any, for
+    a global source; for a relative one, an include in that namespace or above it (its
+    file may push groups down to it); never for a private ``~name``, another node's."""
+    if remap.source.startswith("~"):
+        return []
+    at = remap.node.namespace.rstrip("/") + "/"
+    return [item for item in includes if (remap.source, remap.target) in item.remaps and (
+        remap.source.startswith("/") or at.startswith(item.namespace.rstrip("/") + "/"))]
+
+
 def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     """The remaps given to ``nodes``, one per ``from:=to`` pair as written and name it
     remaps (a pair given to several instances in one namespace is one remap: a list of
@@ -719,8 +733,17 @@ class Configuration:
 
     @property
     def remaps(self) -> list[Remap]:
-        """The remaps the launch files give its node instances (``remaps_of``)."""
-        return remaps_of(self.nodes)
+        """The remaps the launch files give its node instances (``remaps_of``). One no
+        node uses that an include the launch stage could not read takes too (a package
+        not found) may be used by what that file starts: the include is among its
+        ``unseen`` (``unread_users``)."""
+        found = remaps_of(self.nodes)
+        unread = [item for tree in self.launch_tree for item in tree.walk()
+                  if item.kind == "include" and not item.skipped and item.remaps]
+        for remap in found if unread else ():
+            if not remap.users:
+                remap.unseen.extend(unread_users(remap, unread))
+        return found
 
     @property
     def include_args(self) -> list[IncludeArg]:

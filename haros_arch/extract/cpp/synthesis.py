@@ -392,7 +392,8 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
         return "size" if kind == "constant" else kind
     if _CONSTEXPR.search(statement):
         return kind
-    if window[-1:] in (b"<", b",") and _CONSTANT.fullmatch(name) and _template_argument(window):
+    if window[-1:] in (b"<", b",") and _CONSTANT.fullmatch(name) and _template_argument(
+            window) and _TYPE_FIRST.search(window) is None:
         # a template's argument in capitals (``std::array<std::string,
         # KUKA::FRI::LBRState::NUMBER_OF_JOINTS>``, the robot SDK's header missing): a
         # non-type argument needs a constant, as an array's bound does, and is often a
@@ -406,11 +407,15 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
 
 # the standard's templates whose first argument is a type, right before a name: the name
 # is that type (zed's ``std::unordered_set<sl::MODULE>``, the SDK's enum, which a
-# constant made an error that left ZedCamera invalid), not a constant
+# constant made an error that left ZedCamera invalid), not a constant; so are boost's
+# of those names and OpenCV's smart pointer (ORB_SLAM3_ROS2's ``cv::Ptr<cv::CLAHE>``
+# member, an acronym's class: read as a constant, the class was invalid and every
+# subscription of its constructor unresolved)
 _TYPE_FIRST = re.compile(
-    rb"\bstd\s*::\s*(?:vector|set|unordered_set|multiset|unordered_multiset|map|"
-    rb"unordered_map|multimap|unordered_multimap|list|forward_list|deque|queue|"
-    rb"priority_queue|stack|shared_ptr|unique_ptr|weak_ptr|optional|atomic)\s*<\s*$")
+    rb"(?:\b(?:std|boost)\s*::\s*(?:vector|set|unordered_set|multiset|unordered_multiset|"
+    rb"map|unordered_map|multimap|unordered_multimap|list|forward_list|deque|queue|"
+    rb"priority_queue|stack|shared_ptr|unique_ptr|weak_ptr|optional|atomic)"
+    rb"|\bcv\s*::\s*Ptr)\s*<\s*$")
 
 
 def _template_argument(window: bytes) -> bool:
@@ -653,7 +658,17 @@ _STD_UNQUALIFIED = frozenset({
     "unordered_map", "unordered_set", "priority_queue", "stringstream", "ostringstream",
     "istringstream", "ifstream", "ofstream", "fstream", "ostream", "istream", "cout",
     "cerr", "clog", "cin", "endl", "shared_ptr", "unique_ptr", "weak_ptr",
-    "runtime_error", "invalid_argument", "out_of_range", "logic_error", "numeric_limits"})
+    "runtime_error", "invalid_argument", "out_of_range", "logic_error", "numeric_limits",
+    "queue", "boolalpha", "noboolalpha", "setprecision", "setw", "setfill"})
+# the values and functions among them (streams, manipulators): written unqualified in a
+# class's method, they are not declared as an unknown member would be (a declaration
+# there could shadow one of a base the parse lacks, ``_from_source``), but a
+# ``using std::cerr;`` at namespace scope shadows no member: the class's own and its
+# bases' are found first (ORB_SLAM3_ROS2's nodes write ``ss >> boolalpha >> flag`` and
+# ``cerr << ... << endl`` in their constructors, ORB_SLAM3's headers missing)
+_STD_VALUES = frozenset({
+    "cout", "cerr", "clog", "cin", "endl", "boolalpha", "noboolalpha", "setprecision",
+    "setw", "setfill"})
 
 
 @dataclass
@@ -1323,7 +1338,7 @@ class Names:
         if last == "type" and use == "any" and (
             rest.lstrip()[:1] in (b")", b",", b"}") or (
                 rest.lstrip()[:1] == b">" and _template_argument(window.rstrip())
-                and _TYPE_FIRST.search(window) is None)
+                and _TYPE_FIRST.search(_unscoped(window)) is None)
         ) and (
             _CONSTANT.fullmatch(written[-1])
             or text[max(0, offset - 8):offset].rstrip().endswith(b"=")
@@ -1351,7 +1366,7 @@ class Names:
             last = "value"
         if use == "any" and not scope and len(written) == 1 and (
             last == "value" or rest.lstrip()[:1] == b"("
-        ):
+        ) and not (written[-1] in _STD_VALUES and written[-1] not in self._defined):
             called = rest.lstrip()[:1] == b"("
             if not _C_VENDOR.fullmatch(written[-1]) and not (
                 not called and _CAPITALS.fullmatch(written[-1])

@@ -1097,6 +1097,8 @@ class Scope:
             index = program_argument(cursor, self)
             if index is not None:
                 return (ProgramArgument(index),)
+        if kind == CursorKind.ARRAY_SUBSCRIPT_EXPR:
+            return self._string_element(cursor, depth)
         if kind == CursorKind.CALL_EXPR:
             return self._string_call(cursor, depth)
         if kind == CursorKind.BINARY_OPERATOR:
@@ -1104,6 +1106,58 @@ class Scope:
         if kind == CursorKind.CONDITIONAL_OPERATOR:
             return self._string_choice(cursor, depth)
         return UNKNOWN
+
+    def _string_element(self, cursor: Cursor, depth: int) -> Parts:
+        """``names[i]`` of a local array this body initialises with a list
+        (``std::string angle_names[3] = {"roll", "pitch", "yaw"};``, orb_slam3_ros_wrapper's
+        nodes) at an index known here: a literal, or a counting loop's variable at the
+        turn being read (``CallFinder._emit_one`` reads the loop turn by turn when a name
+        is made of it). Unknown when the body writes an element (``names[1] = ...``) or
+        names the array otherwise than by an element (handed to a function that may fill
+        it)."""
+        parts = [c for c in cursor.get_children() if c.kind.is_expression()]
+        if len(parts) != 2:
+            return UNKNOWN
+        base = strip(parts[0])
+        decl = base.referenced if base.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.VAR_DECL or (
+                decl.type.get_canonical().kind != TypeKind.CONSTANTARRAY) or not (
+                self.holds(decl.extent.start)):
+            return UNKNOWN
+        items = initializer(decl)
+        if items is None or items.kind != CursorKind.INIT_LIST_EXPR:
+            return UNKNOWN
+        index = self.integer(parts[1])
+        elements = [c for c in items.get_children() if c.kind.is_expression()]
+        if index is None or not 0 <= index < len(elements) or self._element_written(decl):
+            return UNKNOWN
+        return self.string(elements[index], depth + 1)
+
+    def _element_written(self, decl: Cursor) -> bool:
+        """Whether this body may change an element of the array ``decl`` after its
+        declaration: an element assigned (``names[i] = x``, ``+=``), or the array named
+        otherwise than by an element (passed whole, to a function that may write it)."""
+        assert self.body is not None
+        body = self.body.extent
+        text = self.source.get(body.start.file.name) if body.start.file is not None else None
+        if text is None:
+            return True
+        code = text[decl.extent.end.offset:body.end.offset]
+        name = re.escape(decl.spelling.encode())
+        for found in re.finditer(rb"(?<![\w.>:])" + name + rb"\b", code):
+            before = code[max(0, found.start() - 8):found.start()].rstrip()
+            if before.endswith(b">>") or (before.endswith(b"&") and not before.endswith(
+                    b"&&")):
+                return True  # ``fs["x"] >> names[i]``, ``&names[i]``
+            rest = code[found.end():found.end() + 200]
+            subscript = re.match(rb"\s*\[[^\]\[;]*\]", rest)
+            if subscript is None:
+                return True
+            after = rest[subscript.end():].lstrip()
+            if (after[:1] == b"=" and after[:2] != b"==") or after[:2] in (
+                    b"+=", b"-=", b"++", b"--"):
+                return True
+        return False
 
     def _string_choice(self, cursor: Cursor, depth: int) -> Parts:
         """``test ? a : b``: the side the test picks when it is decided here (a boolean,

@@ -155,12 +155,22 @@ NOT_CLIENTS = frozenset({
     "pykdl_utils", "angles", "smach", "rospy_message_converter", "ros2cli", "ros2topic",
     "rosunit", "rostest", "launch_testing", "launch_testing_ros", "ament_copyright",
     "ament_flake8", "ament_pep257", "pytest", "catkin_pkg",
+    # a map library released into ROS whose Python binding reads, projects and routes
+    # maps (``lanelet2.io.Origin``, ``lanelet2.projection.UtmProjector``,
+    # ``lanelet2.routing.RoutingGraph``: autoware_mini's planners and detectors)
+    "lanelet2",
     # not ROS packages at all: rosdep keys a package.xml may write that name a Python
     # library by the module it imports (rosdep/python.yaml of github:ros/rosdistro
     # 8468e88c: its keys that are modules; pyquaternion, PyPI's, which jsk_fetch_startup
     # names so through a rosdep rule of its own)
     "paramiko", "pika", "rpy2", "yapf", "black", "gunicorn", "virtualenv", "pydocstyle",
     "epydoc", "nuitka", "platformio", "pyquaternion",
+    # and the import names of common Python libraries, which package.xml files write
+    # for their rosdep keys (navigation2_dynamic's kf_hungarian_tracker depends on
+    # ``cv2`` and builds ``cv2.KalmanFilter``: OpenCV, numerical and learning libraries,
+    # serial ports and file formats make no ROS call)
+    "cv2", "numpy", "scipy", "sklearn", "torch", "matplotlib", "pandas", "PIL", "shapely",
+    "pyproj", "open3d", "transforms3d", "serial", "yaml",
 })
 
 

@@ -593,9 +593,12 @@ class Ros1Loader:
             elif path is None or not found_nowhere(path):
                 self.report("LAUNCH_UNSUPPORTED", scope, element, detail=(
                     f"include file \"{element.get('file')}\" is not known statically"))
-            scope.item.add(LaunchItem("include", element.get("file", ""), where,
-                                      condition=guard))
             ns = self.text(element, "ns", scope)
+            # what it would start is in that namespace and takes the remaps written
+            # before it (``Configuration.remaps``: a remap it takes may be used there)
+            scope.item.add(LaunchItem("include", element.get("file", ""), where,
+                                      namespace=scope.child(ns).ns, condition=guard,
+                                      remaps=list(scope.remaps)))
             self.model.unread_includes.append(UnreadInclude(
                 element.get("file", ""), scope.child(ns).ns, list(scope.remaps),
                 scope.conditions, where))

@@ -723,7 +723,7 @@ class Runner:
         path = self._launched_file(positional, where)
         if path is None:
             if len(positional) == 2 and self.workspace.find(positional[0]) is None:
-                self.unread(" ".join(positional), scope, where)
+                self.unread(" ".join(positional), scope, where, process=True)
             return
         inner = Scope({name: value for name, value in arguments},
                       conditions=scope.conditions, environment=dict(scope.environment))
@@ -734,14 +734,21 @@ class Runner:
         inner.item = scope.item.add(item)
         self.run_file(path, inner, where)
 
-    def unread(self, name: str, scope: Scope, where: Location, detail: str = "") -> None:
+    def unread(self, name: str, scope: Scope, where: Location, detail: str = "",
+               process: bool = False) -> None:
         """A launch file included (or run by ``ros2 launch``) that cannot be read: its
         path not known statically, its package not here; or an action not interpreted
         (``detail`` "action"). What it starts or sets is not seen, so it may be the
         missing side of anything (``query.absence``); ROS 1's ``<include>`` of a file
-        not known is kept so too."""
+        not known is kept so too. An included file or an action (a ``Node`` of a class
+        not known) takes the scope's ``SetRemap`` rules, as launch_ros gives them to
+        every node launched after them (``Configuration.remaps``: a remap such an item
+        takes may be used there); a process (``process``, or ``detail`` "process") does
+        not: ``ros2 launch`` runs another launch with its own rules."""
         scope.item.add(LaunchItem("include", name, where, namespace=scope.namespace or "/",
-                                  detail=detail, condition=self.take_guard()))
+                                  detail=detail, condition=self.take_guard(),
+                                  remaps=[] if process or detail == "process"
+                                  else list(scope.remaps)))
 
     def not_seen(self, scope: Scope, where: Location, what: str) -> None:
         """Actions performed in ``scope`` at ``where`` that the reader cannot see: they
