@@ -457,6 +457,8 @@ class Walker:
         required = None if _PRESENCE.search(text) is None else (
             "if" if _leaves(statement.orelse) == "failed" else
             "else" if _leaves(statement.body) == "failed" else None)
+        if required is None and _first_time_if(statement, frame.module.tree):
+            required = "if"  # a lazy initialisation: its block runs the first time
         # the locals, and the attributes of ``self`` (interbotix_xs_modules' core: ``if
         # self.robot_name is None: self.robot_name = robot_model``, with ``robot_name`` an
         # option argparse parses), each path sets: both, joined after
@@ -1670,6 +1672,43 @@ def _self_writes(module: ast.AST) -> dict[str, list[tuple[ast.AST, bool]]]:
         for member in members:
             writes.setdefault(member, []).append((node, constant))
     return writes
+
+
+@functools.lru_cache(maxsize=4096)
+def _first_time_if(statement: ast.If, module: ast.AST) -> bool:
+    """Whether an ``if`` without ``else`` tests a member of ``self`` for being unset
+    (``self.pub is None``, ``self.pub == None``, ``not self.ready``) that the module
+    sets, outside the block, only to ``None``, ``False``, ``0`` or ``''`` (its first
+    value, in ``__init__``), on ``self`` alone: the block runs the first time the code
+    reaches it, a lazy initialisation (ethzasl_xsens_driver's ``if self.imu_pub is
+    None: self.imu_pub = rospy.Publisher(...)``), so what it makes is made there, as
+    C++'s ``if (!initialized_)`` (``ConditionReader._first_time``)."""
+    if statement.orelse:
+        return False
+    test = statement.test
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+        member = _self_member(test.operand)
+    elif isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(
+            test.ops[0], ast.Is | ast.Eq) and isinstance(test.comparators[0], ast.Constant) \
+            and test.comparators[0].value is None:
+        member = _self_member(test.left)
+    else:
+        return False
+    if member is None:
+        return False
+    inside = {id(node) for statement_ in statement.body for node in ast.walk(statement_)}
+    outside = [node for node, _ in _self_writes(module).get(member, ())
+               if id(node) not in inside]
+    if not outside or any(
+            not isinstance(node, ast.Assign) or not isinstance(node.value, ast.Constant)
+            or node.value.value not in (None, False, 0, "") for node in outside):
+        return False
+    # (another object's ``x.<member> = ...`` may set it too: not told here)
+    return not any(
+        isinstance(t, ast.Attribute) and t.attr == member and _self_member(t) is None
+        for node in ast.walk(module) if isinstance(node, ast.Assign | ast.AnnAssign)
+        for target in (node.targets if isinstance(node, ast.Assign) else [node.target])
+        for t in ast.walk(target))
 
 
 @functools.lru_cache(maxsize=4096)
