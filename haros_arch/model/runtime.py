@@ -387,6 +387,12 @@ class Link:
     def name(self) -> str:
         return self.rosname.full
 
+    @property
+    def undecided_conditions(self) -> tuple[Condition, ...]:
+        """Its conditions under which it may not exist (``conditions.undecided``: not a
+        ``try`` block, nor the first turn of a ``while`` over the node's running)."""
+        return undecided(self.conditions)
+
     def __repr__(self) -> str:
         return f"{type(self).__name__}({self.node.name} -> {self.rosname.full})"
 

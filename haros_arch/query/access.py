@@ -50,7 +50,7 @@ class Pair:
 
 
 _LINK = ("kind", "node", "rosname", "name", "type", "queue_size", "qos", "latch",
-         "conditions", "location", "call", "resource", "origin")
+         "conditions", "undecided_conditions", "location", "call", "resource", "origin")
 _RESOURCE = ("name", "id", "rosname", "types", "conditions", "is_unresolved", "links",
              "candidates")
 
