@@ -160,6 +160,10 @@ PLUGINS: tuple[Plugin, ...] = (
         Entity("publish", "{topicName}", "geometry_msgs/WrenchStamped"),)),
     _ros1("gazebo_ros_f3d", entities=(
         Entity("publish", "{topicName}", "geometry_msgs/WrenchStamped"),)),
+    # force needs <bodyName> and <topicName> (no default): a handle on <robotNamespace>
+    # subscribes to the wrench it applies to the body
+    _ros1("gazebo_ros_force", entities=(
+        Entity("subscribe", "{topicName}", "geometry_msgs/Wrench"),)),
     _ros1("gazebo_ros_range", entities=(Entity("publish", "{topicName}", "sensor_msgs/Range"),),
           defaults=(("topicName", "/range"),)),
     _ros1("gazebo_ros_block_laser", entities=(
@@ -254,6 +258,8 @@ PLUGINS: tuple[Plugin, ...] = (
     _ros2("gazebo_ros_joint_state_publisher", entities=(
         Entity("publish", "joint_states", "sensor_msgs/msg/JointState"),)),
     _ros2("gazebo_ros_p3d", entities=(Entity("publish", "odom", "nav_msgs/msg/Odometry"),)),
+    _ros2("gazebo_ros_force", entities=(
+        Entity("subscribe", "gazebo_ros_force", "geometry_msgs/msg/Wrench"),)),
     _ros2("gazebo_ros_bumper", entities=(
         Entity("publish", "bumper_states", "gazebo_msgs/msg/ContactsState"),)),
     # gazebo_ros2_control: a controller manager node (controller_manager in the plugin's

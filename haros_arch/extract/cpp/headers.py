@@ -54,6 +54,7 @@ import shutil
 import tempfile
 import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
@@ -353,6 +354,68 @@ def is_ros2_header(header: str) -> bool:
     return header.startswith("rclcpp") or _ROS2_HEADER.fullmatch(header) is not None
 
 
+def is_ros1_header(header: str) -> bool:
+    """roscpp's headers (``ros/ros.h``, ``ros/node_handle.h``, ...): ROS 2 has none."""
+    return header.startswith("ros/")
+
+
+@dataclass(frozen=True)
+class Evidence:
+    """What a file's includes (and the workspace headers they include) say of its ROS:
+    a ROS 2 header included under no preprocessor condition (include guards aside), one
+    included only under a condition, a ROS 1 header under none."""
+    ros2_firm: bool = False
+    ros2_conditional: bool = False
+    ros1_firm: bool = False
+
+    @property
+    def ros2(self) -> bool:
+        return self.ros2_firm or (self.ros2_conditional and not self.ros1_firm)
+
+    def join(self, other: Evidence) -> Evidence:
+        return Evidence(self.ros2_firm or other.ros2_firm,
+                        self.ros2_conditional or other.ros2_conditional,
+                        self.ros1_firm or other.ros1_firm)
+
+    def conditional(self) -> Evidence:
+        """As seen through an include made under a condition: nothing firm."""
+        return Evidence(ros2_conditional=self.ros2_firm or self.ros2_conditional)
+
+
+NO_EVIDENCE = Evidence()
+_DIRECTIVE = re.compile(r"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif|else|endif|define)\b[ \t]*(\w*)",
+                        re.MULTILINE)
+
+
+def _conditional_spans(text: str) -> list[tuple[int, int]]:
+    """The spans of ``text`` inside ``#if``/``#ifdef``/``#ifndef`` blocks, an include
+    guard's (``#ifndef X`` at the top level followed by ``#define X``) not counted; an
+    unclosed block runs to the end."""
+    spans: list[tuple[int, int]] = []
+    stack: list[tuple[int, bool]] = []  # (start, is a guard)
+    pending: tuple[int, str] | None = None  # an ``#ifndef`` at the top level: a guard?
+    for match in _DIRECTIVE.finditer(text):
+        word, name = match.group(1), match.group(2)
+        if pending is not None:
+            stack.append((pending[0], word == "define" and name == pending[1]))
+            pending = None
+        if word in ("if", "ifdef"):
+            stack.append((match.start(), False))
+        elif word == "ifndef":
+            if not stack:
+                pending = (match.start(), name)
+            else:
+                stack.append((match.start(), False))
+        elif word == "endif" and stack:
+            start, is_guard = stack.pop()
+            if not is_guard:
+                spans.append((start, match.end()))
+    if pending is not None:
+        stack.append((pending[0], False))
+    spans.extend((start, len(text)) for start, is_guard in stack if not is_guard)
+    return spans
+
+
 # ``package::kind::Name``, an interface written in full (spaces allowed around ``::``)
 _INTERFACE_NAME = re.compile(r"\b([A-Za-z_]\w*)\s*::\s*(msg|srv|action)\s*::\s*([A-Za-z_]\w*)")
 
@@ -455,7 +518,7 @@ class IncludeSetup:
         # (``stood_in``), said missing by it
         self.unit_missing: list[Diagnostic] = []
         self._handled: set[str] = set()
-        self._scanned: dict[str, bool] = {}  # file -> ROS 2 code (see ``scan``)
+        self._scanned: dict[str, Evidence] = {}  # file -> its ROS (see ``scan``)
         # the texts of the files being scanned, the unit's source first, each including the
         # next: where a ROS 2 interface header is included, they write its type's name
         self._including: list[str] = []
@@ -639,39 +702,48 @@ class IncludeSetup:
     def scan(self, path: str, text: str) -> bool:
         """Prepare every header that ``path`` (with contents ``text``) includes; True when
         it or a workspace header it includes is ROS 2 code (includes rclcpp or a ROS 2
-        message header)."""
+        message header). Code kept for both ROS versions includes each one's headers
+        under a preprocessor condition (open_vins' ``#if ROS_AVAILABLE == 1`` roscpp's,
+        ``#elif ROS_AVAILABLE == 2`` rclcpp's): a ROS 2 header included only under a
+        condition does not make ROS 2 code of a unit that includes a ROS 1 header
+        (``ros/...``) under none (``Evidence``)."""
+        return self._scan(path, text).ros2
+
+    def _scan(self, path: str, text: str) -> Evidence:
         if path in self._scanned:
             return self._scanned[path]
-        self._scanned[path] = False  # a header that includes itself back
+        self._scanned[path] = NO_EVIDENCE  # a header that includes itself back
         self._including.append(text)
         try:
-            ros2 = self._scan_includes(text, self.workspace.location(path),
-                                       os.path.dirname(path))
+            found = self._scan_includes(text, self.workspace.location(path),
+                                        os.path.dirname(path))
         finally:
             self._including.pop()
-        self._scanned[path] = ros2
-        return ros2
+        self._scanned[path] = found
+        return found
 
-    def _scan_includes(self, text: str, file: Location, folder: str) -> bool:
-        ros2 = False
+    def _scan_includes(self, text: str, file: Location, folder: str) -> Evidence:
+        found = NO_EVIDENCE
+        conditional = _conditional_spans(text)
         line, counted = 1, 0  # the line of the include, counted on from the last one
         for match in _INCLUDE.finditer(text):
             header = match.group(2).strip()
-            ros2 = ros2 or is_ros2_header(header)
+            under = any(start <= match.start() < end for start, end in conditional)
             line += text.count("\n", counted, match.start())
             counted = match.start()
             where = Location(file.package, file.file, line, match.start(2) - match.start() + 1)
-            found = self._prepare(header, folder, match.group(1) == '"', where)
-            ros2 = ros2 or self._fallbacks.get(header, False)  # a stand-in that includes rclcpp
-            if not found or not self._inside(found):
-                continue
-            if found in self._scanned:  # a header scanned before: not read again
-                ros2 = self._scanned[found] or ros2
-            else:
-                more, _ = read_text(found, self.workspace.location(found))
-                if more is not None:
-                    ros2 = self.scan(found, more) or ros2
-        return ros2
+            real = self._prepare(header, folder, match.group(1) == '"', where)
+            here = Evidence(ros2_firm=is_ros2_header(header) or self._fallbacks.get(
+                header, False), ros1_firm=is_ros1_header(header))
+            if real and self._inside(real):
+                if real in self._scanned:  # a header scanned before: not read again
+                    here = here.join(self._scanned[real])
+                else:
+                    more, _ = read_text(real, self.workspace.location(real))
+                    if more is not None:
+                        here = here.join(self._scan(real, more))
+            found = found.join(here.conditional() if under else here)
+        return found
 
     def _prepare(self, header: str, folder: str, quoted: bool, where: Location) -> str | None:
         """Make ``header`` resolvable; return the real file it resolves to, if any. An
@@ -844,7 +916,7 @@ class IncludeSetup:
         self._write(header, f"// haros_arch: the stand-in of {header}, which the workspace "
                             f'does not have\n#include "{path}"\n')
         self._scan_standin(path)  # what it includes, from the workspace or FALLBACK
-        self._fallbacks[header] = self._scanned.get(path, False)
+        self._fallbacks[header] = self._scanned.get(path, NO_EVIDENCE).ros2
 
     def _scan_standin(self, path: str) -> None:
         """Prepare what a library stand-in includes (cv_bridge: ``sensor_msgs/Image.h``)."""

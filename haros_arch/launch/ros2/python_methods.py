@@ -485,6 +485,20 @@ def m_dict(name: str) -> Method:
             return None
         if name == "copy":
             return dict(owner)
+        if name == "setdefault" and 1 <= len(a) <= 2 and not k:
+            # the item when the dict has it, else the default, set (mini_pupper_ros'
+            # ``sensors_config.setdefault('lidar', False)`` over a YAML file's dict); a
+            # key not among the known ones of a dict with a key not known statically may
+            # be that one: its value is not known, nor the default's being set
+            key = _hashable(a[0])
+            if isinstance(key, Unknown):
+                return i.unsupported(n, "dict.setdefault of a key not known statically")
+            if key not in owner:
+                owner[key] = Unknown(f".setdefault({a[0]!r}) of a dict with a key not "
+                                     "known statically") if open_keys(owner) else (
+                    a[1] if len(a) > 1 else None)
+                i.sized(owner)
+            return owner[key]
         return i.unsupported(n, f"dict.{name} with these arguments")
     return call
 
@@ -571,7 +585,7 @@ METHODS: dict[str, Method] = {
     "insert": m_list("insert"), "remove": m_list("remove"), "pop": m_list("pop"),
     "items": m_dict("items"), "keys": m_dict("keys"),
     "values": m_dict("values"), "get": m_dict("get"), "update": m_dict("update"),
-    "copy": m_dict("copy"), "perform": m_str("perform"),
+    "copy": m_dict("copy"), "setdefault": m_dict("setdefault"), "perform": m_str("perform"),
     "perform_substitution": m_perform_substitution,
     **{name: m_path(name) for name in ("as_posix", "joinpath", "with_name", "with_suffix")},
     "absolute": m_absolute, "resolve": m_absolute,

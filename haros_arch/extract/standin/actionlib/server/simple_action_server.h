@@ -155,6 +155,7 @@ public:
   SimpleClientGoalState getState() const;
   void cancelGoal();
   void cancelAllGoals();
+  void cancelGoalsAtAndBeforeTime(const ros::Time& time);
   void stopTrackingGoal();
 };
 template<class A> class ActionClient {
