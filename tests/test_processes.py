@@ -14,6 +14,23 @@ from haros_arch import processes
 from haros_arch.extract.cpp import cursors
 
 
+@pytest.fixture(autouse=True)
+def _default_dispositions():
+    """Each test starts from the default dispositions of SIGINT and SIGTERM, as a run
+    from a terminal has them: a shell that starts the suite in the background (``cmd
+    &`` without job control) has SIGINT ignored, which ``stop_signals`` rightly keeps
+    as the program's own choice, and these tests would fail there."""
+    before = {signum: signal.getsignal(signum) for signum in (signal.SIGINT, signal.SIGTERM)}
+    for signum in before:
+        signal.signal(signum, signal.SIG_DFL if signum == signal.SIGTERM
+                      else signal.default_int_handler)
+    try:
+        yield
+    finally:
+        for signum, handler in before.items():
+            signal.signal(signum, handler)
+
+
 def _signalled(signum: int, monkeypatch) -> list[str]:
     """Visit a unit's children with ``signum`` sent to this process at the first one;
     the names of the files asked about (the visit goes on to its end)."""
