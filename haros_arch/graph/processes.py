@@ -185,14 +185,12 @@ def _renamed(decl: NodeDecl, own: str) -> str:
     The code may give a namespace too (``rclcpp::Node("talker", "ns")``): it holds
     unless the launch file gives one (``namespace=``, ``PushRosNamespace``), which
     replaces it, as ``__ns:=`` does."""
-    if not _unnamed(decl):
-        if _code_namespace(decl, own):
-            return namespace_of(own).rstrip("/") + "/" + decl.name.rsplit("/", 1)[-1]
+    unnamed = _unnamed(decl)
+    if _code_namespace(decl, own):  # the code's namespace holds: its name, or the launch's
+        return own if unnamed else namespace_of(own) + decl.name.rsplit("/", 1)[-1]
+    if not unnamed:
         return decl.name
-    namespace = decl.namespace.rstrip("/")
-    if not namespace and own.startswith("/") and not decl.namespace_given:
-        return own
-    return namespace + "/" + own.rsplit("/", 1)[-1]
+    return decl.namespace.rstrip("/") + "/" + own.rsplit("/", 1)[-1]
 
 
 def _code_namespace(decl: NodeDecl, own: str) -> bool:

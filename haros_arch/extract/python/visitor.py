@@ -112,10 +112,10 @@ class Walker:
         # the ``if`` statement walked last, with its two conditions (``_block``)
         self._tested_if: tuple[ast.If, Condition, Condition] | None = None
         self._unrolled = 0  # unrolled loops the walk is in
-        # inlined calls the walk is in whose function cannot reach a ROS call (``Reach``):
-        # their loops are walked once, not unrolled (``_loop``)
-        self._plain = 0
-        self._inlining: list[ast.AST | None] = [None]  # the functions inlined, innermost last
+        # the functions inlined, innermost last, each with whether it cannot reach a ROS
+        # call (``Reach``; nor, then, can what it calls): the loops of such a function
+        # are walked once, not unrolled (``_loop``)
+        self._inlining: list[tuple[ast.AST | None, bool]] = [(None, False)]
         # the variables of the unrolled loops the walk is in, by frame: each holds one
         # known item per walk of the body (``_decided``)
         self._loop_names: list[tuple[int, frozenset[str]]] = []
@@ -342,7 +342,7 @@ class Walker:
         self._stored(statement, frame, self.calls[before:])
         self.evaluator.assign(statement, frame)
         self._choice_assigned(statement, frame)
-        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+        targets = _targets(statement)
         for target in targets:
             self._qos_assigned(target, frame, conds)
 
@@ -404,7 +404,7 @@ class Walker:
         (``PrimitiveCall.variable``), as the C++ extraction does, so a condition over
         ``self.x`` is decided from the parameter, when this is the member's one
         assignment in its file and the statement's one read, written in it."""
-        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+        targets = _targets(statement)
         if isinstance(statement, ast.AugAssign) or len(targets) != 1:
             return
         member = _self_member(targets[0])
@@ -533,7 +533,7 @@ class Walker:
         self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
                    lambda loop: self._block(statement.body, frame, (*conds, *loop)),
                    whole=not _leaves_early(statement.body),
-                   builds=bool(self._plain) and _builds(statement, self._inlining[-1]))
+                   builds=self._inlining[-1][1] and _builds(statement, self._inlining[-1][0]))
         self._block(statement.orelse, frame, conds)
 
     def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
@@ -547,7 +547,7 @@ class Walker:
         ``break``, ``return`` or ``raise`` of its own), runs it for each for sure: no
         condition (as a C++ loop over a list parameter's elements).
 
-        In a function that cannot reach a ROS call (``_plain``) a loop is walked once,
+        In a function that cannot reach a ROS call (``_inlining``) a loop is walked once,
         unless it ``builds`` a container item by item (``_builds``: a list of topic
         names a helper appends to): a loop there names no call, and walking it once per
         item, in each call of the function, made a driver's device code (probing each
@@ -556,7 +556,7 @@ class Walker:
         ev = self.evaluator
         text = f"{self._text(frame, target)} in {self._text(frame, over)}"
         loop: tuple[Condition, ...] = (condition("for", text, where),)
-        items = None if self._plain and not builds else ev.iteration(
+        items = None if self._inlining[-1][1] and not builds else ev.iteration(
             over, frame, MAX_UNROLL if self._unrolled else MAX_UNROLL_OUTER)
         if items and whole:
             loop = ()
@@ -983,14 +983,12 @@ class Walker:
         inner = self.evaluator.call_frame(func, call, frame)
         self._inlined.add(id(info.node))
         self._active.add(id(info.node))
-        plain = not self._reach.may_call_ros(info, self.loader.modules.values())
-        self._plain += plain
-        self._inlining.append(info.node)
+        self._inlining.append((info.node, not self._reach.may_call_ros(
+            info, self.loader.modules.values())))
         try:
             self._block(info.node.body, inner, conds)
         finally:
             self._active.discard(id(info.node))
-            self._plain -= plain
             self._inlining.pop()
 
     def _cut(self, info: FunctionInfo, call: ast.Call, frame: Frame) -> None:
@@ -1429,6 +1427,14 @@ def _attribute_names(tree: ast.AST, skipped: set[int]) -> set[str]:
     return found
 
 
+def _targets(node: ast.AST) -> list[ast.expr]:
+    """The targets of an assignment (``=``, annotated, augmented); none of any other
+    node."""
+    if isinstance(node, ast.Assign):
+        return node.targets
+    return [node.target] if isinstance(node, ast.AnnAssign | ast.AugAssign) else []
+
+
 def _self_member(target: ast.expr) -> str | None:
     """``x`` of the assignment target ``self.x``."""
     if (isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)
@@ -1664,9 +1670,7 @@ def _self_writes(module: ast.AST) -> dict[str, list[tuple[ast.AST, bool]]]:
     literal."""
     writes: dict[str, list[tuple[ast.AST, bool]]] = {}
     for node in ast.walk(module):
-        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if (
-            isinstance(node, ast.AnnAssign | ast.AugAssign)) else []
-        members = {member for target in targets for t in ast.walk(target)
+        members = {member for target in _targets(node) for t in ast.walk(target)
                    if isinstance(t, ast.Attribute) and (member := _self_member(t)) is not None}
         constant = isinstance(getattr(node, "value", None), ast.Constant)
         for member in members:
@@ -1707,8 +1711,7 @@ def _first_time_if(statement: ast.If, module: ast.AST) -> bool:
     return not any(
         isinstance(t, ast.Attribute) and t.attr == member and _self_member(t) is None
         for node in ast.walk(module) if isinstance(node, ast.Assign | ast.AnnAssign)
-        for target in (node.targets if isinstance(node, ast.Assign) else [node.target])
-        for t in ast.walk(target))
+        for target in _targets(node) for t in ast.walk(target))
 
 
 @functools.lru_cache(maxsize=4096)
@@ -1729,9 +1732,8 @@ def _builds(loop: ast.For | ast.AsyncFor, function: ast.AST | None) -> bool:
         if isinstance(node, ast.AugAssign):
             roots.append(node.target)
         elif isinstance(node, ast.Assign | ast.AnnAssign):
-            roots += [t.value for target in (
-                node.targets if isinstance(node, ast.Assign) else [node.target])
-                for t in ast.walk(target) if isinstance(t, ast.Subscript)]
+            roots += [t.value for target in _targets(node)
+                      for t in ast.walk(target) if isinstance(t, ast.Subscript)]
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and (
                 node.func.attr in _IN_PLACE):
             roots.append(node.func.value)
@@ -1764,10 +1766,9 @@ def _kept_names(function: ast.AST) -> frozenset[str]:
             kept.update(node.names)
         stored: list[ast.AST] = []
         if isinstance(node, ast.Assign | ast.AnnAssign | ast.AugAssign):
-            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
             if node.value is not None and any(
                     isinstance(t, ast.Attribute | ast.Subscript)
-                    for target in targets for t in ast.walk(target)):
+                    for target in _targets(node) for t in ast.walk(target)):
                 stored.append(node.value)
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and (
                 node.func.attr in _IN_PLACE) and not isinstance(node.func.value, ast.Name):
