@@ -591,7 +591,9 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         list(decl.remaps)
     return NodeInstance(decl.name, node, namespace=decl.namespace, remaps=remaps,
                         args=decl.args, conditions=decl.conditions, location=decl.location,
-                        ros_version=decl.ros_version, test=decl.is_test)
+                        ros_version=decl.ros_version, test=decl.is_test,
+                        remap_places={f"{a}:={b}": where
+                                      for (a, b), where in decl.remap_places.items()})
 
 
 def _programs_hint(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace) -> str:

@@ -80,6 +80,9 @@ class NodeDecl:
     # ROS 2: the command line of each argument that is a ``Command``'s output (``ros_gz_sim
     # create -string <xacro ...>``), by its index among the words of ``args``
     arg_commands: dict[int, str] = field(default_factory=dict, repr=False)
+    # ROS 1: where each of ``remaps`` is written (the ``<remap>`` element, in the node or
+    # in a scope around it), by its pair
+    remap_places: dict[tuple[str, str], Location] = field(default_factory=dict, repr=False)
 
 
 @dataclass

@@ -60,6 +60,11 @@ class NodeInstance:
     # a host row loaded its plugins (``plugins.attach``): what its code loads by name is
     # in its links or in the instances it made, and a plugin not found made it partial
     hosted: bool = field(default=False, metadata={"optional": True})
+    # ROS 1: where each remap of ``remaps`` is written (its ``<remap>`` element), by its
+    # text ``from:=to``: one element a group gives nodes of several namespaces is one
+    # remap (``remaps_of``)
+    remap_places: dict[str, Location] = field(default_factory=dict,
+                                              metadata={"optional": True})
     links: list[Link] = field(default_factory=list, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
@@ -508,6 +513,8 @@ class Remap:
     # what the nodes use beside the name: their names in its namespace or ending as it
     # does (``cmd_vel_mux/output`` for ``cmd_vel_mux/mux_cmd_vel``)
     near: list[str] = field(default_factory=list)
+    # where it is written (ROS 1's ``<remap>`` element), when known
+    place: Location | None = None
 
     @property
     def node(self) -> NodeInstance:
@@ -515,7 +522,8 @@ class Remap:
 
     @property
     def location(self) -> Location:
-        return self.nodes[0].location
+        """Its ``<remap>`` element when known, else the first node it is given to."""
+        return self.place or self.nodes[0].location
 
     @property
     def text(self) -> str:
@@ -635,10 +643,13 @@ def unread_users(remap: Remap, includes: list[LaunchItem]) -> list[LaunchItem]:
 def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     """The remaps given to ``nodes``, one per ``from:=to`` pair as written and name it
     remaps (a pair given to several instances in one namespace is one remap: a list of
-    remappings shared by a launch file's nodes, a ``<remap>`` of a group; the same text
-    given in two namespaces remaps two names, each its own remap: jackal's teleop.launch
-    gives ``cmd_vel:=/cmd_vel`` to teleop_twist_joy in ``/bluetooth_teleop``, which uses
-    it, and to the marker server in ``/``, which does not). Special keys (``__name``,
+    remappings shared by a launch file's nodes; the same text given in two namespaces
+    remaps two names, each its own remap), but a ROS 1 ``<remap>`` element is one remap
+    whichever namespaces its nodes resolve it in (``NodeInstance.remap_places``: a
+    group's element that a nested group's nodes do not use is still used), and two
+    elements of one text are two (jackal's teleop.launch gives ``cmd_vel:=/cmd_vel`` to
+    teleop_twist_joy in ``/bluetooth_teleop``, which uses it, and to the marker server
+    in ``/``, which does not). Special keys (``__name``,
     ``__ns``) are left out. A remap of a name to itself (``imu/data:=imu/data``;
     ``cmd_vel:=/cmd_vel`` in the root namespace) is kept: it changes nothing here, but it
     says the author took the name to be one the node uses, and when no node it is given
@@ -646,7 +657,7 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
     subscribes ``imu``; interactive_marker_twist_server publishes ``~cmd_vel``). A
     ``key:=value`` word that the node's code reads as an argument (roscpp's
     ``getROSArg``: tiago_tutorials' run_loop_node given ``robot:=steel``) is used."""
-    found: dict[tuple[str, str, str], Remap] = {}
+    found: dict[tuple[str, str, Location | str], Remap] = {}
     # the launch's nodes first: the remaps are theirs; the nodes hosts make can only use
     for instance in sorted(nodes, key=lambda n: n.origin != "launch"):
         rules = instance.remap_rules()
@@ -688,7 +699,13 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
                         remap.near.extend(n for n in _near(instance, name)
                                           if n not in remap.near)
                 continue
-            remap = found.setdefault((source, target, name), Remap(source, target))
+            # one ``<remap>`` element is one remap, whichever namespaces the nodes it
+            # reaches resolve it in (autoware_mini's ``detected_objects:=...`` of a group
+            # whose nested group's nodes do not use the name); without an element, one
+            # per name it remaps
+            place = instance.remap_places.get(f"{source}:={target}")
+            remap = found.setdefault((source, target, place or name),
+                                     Remap(source, target, place=place))
             remap.nodes.append(instance)
             maybe = _conditional_use(instance, name, rules.get(name)) if used else ()
             if maybe:

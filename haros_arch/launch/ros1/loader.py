@@ -433,7 +433,7 @@ class Ros1Loader:
         """A <remap> outside <node> applies to the nodes after it in the same scope."""
         pair = self.remap_pair(element, scope)
         if pair is not None:
-            scope.add_remap(pair)
+            scope.add_remap(pair, self.where(scope, element))
             scope.item.remaps.append(pair)
 
     def remap_pair(self, element: Element, scope: Scope) -> tuple[str, str] | None:
@@ -537,7 +537,7 @@ class Ros1Loader:
             if tag == "remap":
                 pair = self.remap_pair(child, inner_child)
                 if pair is not None:
-                    remaps.add_remap(pair)
+                    remaps.add_remap(pair, self.where(scope, child))
             elif tag == "param":
                 self.tag_param(child, inner_child, local=True)
             elif tag == "rosparam":
@@ -575,7 +575,7 @@ class Ros1Loader:
             scope.conditions, location, anonymous="$(anon" in element.get("name", ""),
             machine=machine, respawn=bool(respawn), required=bool(required),
             respawn_delay=respawn_delay, output=output, cwd=cwd, launch_prefix=prefix or None,
-            env=list(env.env), is_test=is_test))
+            env=list(env.env), is_test=is_test, remap_places=dict(remaps.remap_places)))
 
     def tag_include(self, element: Element, scope: Scope) -> None:
         guard = self.take_guard()

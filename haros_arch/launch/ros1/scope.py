@@ -66,6 +66,8 @@ class Scope:
     include_args: dict[str, Value] | None = None
     pass_all_args: bool = False
     remaps: tuple[tuple[str, str], ...] = ()
+    # where each of ``remaps`` is written (its ``<remap>`` element), by its pair
+    remap_places: tuple[tuple[tuple[str, str], Location], ...] = ()
     private: list[PrivateParam] = field(default_factory=list)
     env: list[tuple[str, str]] = field(default_factory=list)
     anon: dict[str, Unknown] = field(default_factory=dict)
@@ -121,8 +123,10 @@ class Scope:
         cond = Condition(text, "launch", statement, where)
         return replace(self, conditions=(*self.conditions, cond))
 
-    def add_remap(self, pair: tuple[str, str]) -> None:
+    def add_remap(self, pair: tuple[str, str], where: Location | None = None) -> None:
         self.remaps = (*(r for r in self.remaps if r[0] != pair[0]), pair)
+        kept = tuple(p for p in self.remap_places if p[0][0] != pair[0])
+        self.remap_places = (*kept, (pair, where)) if where is not None else kept
 
     def add_private(self, param: PrivateParam) -> None:
         for index in range(len(self.private) - 1, -1, -1):
