@@ -52,7 +52,14 @@ from ..share import share_source
 from ..workspace import Workspace
 from . import xacro
 from .bridge import bridges
-from .gazebo_plugins import MULTICAMERA_SIDES, Entity, Plugin, gz_system, plugin_row
+from .gazebo_plugins import (
+    MULTICAMERA_SIDES,
+    Entity,
+    Plugin,
+    classic_builtin,
+    gz_system,
+    plugin_row,
+)
 
 FILE = xacro.FILE
 SPAWNERS = {("gazebo_ros", "spawn_model"): 1, ("gazebo_ros", "spawn_entity.py"): 2,
@@ -651,6 +658,8 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
     if built is not None:
         return _built(element, built, spawn, host, record, described, where, conditions,
                       config, workspace, owned)
+    if row is None and classic_builtin(filename):
+        return []  # Gazebo classic's own: Gazebo transport only, no ROS interface
     if row is None:
         found = diag.make("GAZEBO_PLUGIN_UNKNOWN", where, filename=filename, host=host.name)
         config.diagnostics.append(found)

@@ -270,6 +270,48 @@ PLUGINS: tuple[Plugin, ...] = (
 )
 
 
+# The plugins Gazebo classic (version 11) ships in its own ``plugins`` folder, each the
+# library ``lib<Name>.so``: model, world, sensor, visual, GUI and system plugins that talk
+# Gazebo transport only, never ROS (Gazebo classic does not depend on ROS): a robot
+# description loading one (unitree_ros' ``libLinkPlot3DPlugin.so``, a fixed wing's
+# ``libLiftDragPlugin.so``) adds nothing to the graph and leaves nothing unknown. Names
+# from gz-sim's comparison of Gazebo-classic 11's features, its plugin tables.
+GAZEBO_CLASSIC = frozenset({
+    # model plugins
+    "ActorPlugin", "ActorCollisionsPlugin", "ActuatorPlugin", "ArduCopterPlugin",
+    "AttachLightPlugin", "BuoyancyPlugin", "CartDemoPlugin", "CessnaPlugin",
+    "DiffDrivePlugin", "ElevatorPlugin", "FlashLightPlugin", "FollowerPlugin",
+    "GimbalSmall2dPlugin", "GravityCompensationPlugin", "HarnessPlugin", "HydraDemoPlugin",
+    "InitialVelocityPlugin", "JointControlPlugin", "JointTrajectoryPlugin",
+    "KeysToCmdVelPlugin", "KeysToJointsPlugin", "LedPlugin", "LiftDragPlugin",
+    "LinearBatteryConsumerPlugin", "LinearBatteryPlugin", "LinkPlot3DPlugin", "MudPlugin",
+    "PlaneDemoPlugin", "RandomVelocityPlugin", "RegionEventBoxPlugin",
+    "SimpleTrackedVehiclePlugin", "SkidSteerDrivePlugin", "SphereAtlasDemoPlugin",
+    "TouchPlugin", "TrackedVehiclePlugin", "VariableGearboxPlugin", "VehiclePlugin",
+    "WheelSlipPlugin", "WheelTrackedVehiclePlugin",
+    # world plugins
+    "ArrangePlugin", "ContainPlugin", "HydraPlugin", "JoyPlugin", "MisalignmentPlugin",
+    "RubblePlugin", "StaticMapPlugin", "TransporterPlugin", "WindPlugin",
+    # sensor plugins
+    "BreakableJointPlugin", "CameraPlugin", "ContactPlugin", "DepthCameraPlugin",
+    "FiducialCameraPlugin", "ForceTorquePlugin", "GpuRayPlugin", "ImuSensorPlugin",
+    "LensFlareSensorPlugin", "PressurePlugin", "RayPlugin", "RaySensorNoisePlugin",
+    "SonarPlugin",
+    # visual, GUI and system plugins
+    "AmbientOcclusionVisualPlugin", "BlinkVisualPlugin", "HeightmapLODPlugin",
+    "ShaderParamVisualPlugin", "CessnaGUIPlugin", "KeyboardGUIPlugin", "LookAtDemoPlugin",
+    "TimerGUIPlugin", "ModelPropShop", "RestUiPlugin", "RestWebPlugin", "StopWorldPlugin",
+})
+
+
+def classic_builtin(filename: str) -> bool:
+    """Whether ``filename`` (``libLiftDragPlugin.so``) is one of Gazebo classic's own
+    plugins, which have no ROS interface (``GAZEBO_CLASSIC``)."""
+    base = filename.rsplit("/", 1)[-1]
+    base = base[3:] if base.startswith("lib") else base
+    return (base[:-3] if base.endswith(".so") else base) in GAZEBO_CLASSIC
+
+
 GZ_PREFIXES = ("gz-sim", "ignition-gazebo", "gz_ros2_control", "ign_ros2_control")
 # gz sim systems that are ROS nodes after all (gz_ros2_control starts a controller
 # manager, robot/attach.py); the others talk gz transport only
