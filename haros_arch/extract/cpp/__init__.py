@@ -1884,7 +1884,8 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
     near: dict[str, list[recall.Site]] = {}
     std = _declared_in(finder.tu)
     errors = [e for e in errors if not (_names_fieldless_type(e.spelling, fieldless)
-                                        or _std_by_adl(e, source, std))
+                                        or _std_by_adl(e, source, std)
+                                        or _DECLARATION_ONLY.match(e.spelling))
               or _in_ros_call(e, source, near)]
     errors = [e for e in errors if not _of_kept_call(e, finder.kept_unresolved)]
     if not errors:
@@ -2714,6 +2715,15 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
 
 
 _UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'$")
+
+
+# clang's errors about a declaration's default arguments, which GCC builds without a
+# word (clearpath_platform's constructor defined ``(std::string node_name = "...")``
+# after a declaration without one): the function and its body are read as written, so
+# they hide no call
+_DECLARATION_ONLY = re.compile(
+    r"^(?:addition of default argument on redeclaration makes this \w+ a"
+    r"|redefinition of default argument$)")
 
 
 def _std_by_adl(error: _Error, source: SourceCache,
