@@ -496,6 +496,29 @@ def one_process(charge: Charge, first: Any, second: Any = None) -> str:
             + "; ".join(clauses))
 
 
+def more_unknown_names(charge: Charge, links: Any) -> str:
+    """For the links one call of one node instance makes whose names hold ``?`` (a
+    parameter client's services, the parameters a wrapper reads under a prefix not known),
+    reported once: a clause naming the others than the first, at most a few; else
+    nothing."""
+    if not isinstance(links, list) or not all(isinstance(link, Link) for link in links):
+        raise QueryTypeError("more_unknown_names() takes a list of links")
+    charge(1 + min(len(links), _MORE_SHOWN))
+    others = links[1:]
+    if not others:
+        return ""
+    shown = ", ".join(f"{link.kind} {link.rosname.given}" for link in others[:_MORE_SHOWN])
+    rest = len(others) - _MORE_SHOWN
+    return (f"; the same call makes {len(others)} more such name"
+            f"{'s' if len(others) > 1 else ''}: {shown}"
+            + (f" and {rest} more" if rest > 0 else ""))
+
+
+_MORE_SHOWN = 4
+FUNCTIONS["more_unknown_names"] = Function("more_unknown_names", more_unknown_names,
+                                           charged=True)
+
+
 # two node instances of one name: a duplicate only when both can start
 FUNCTIONS["one_process"] = Function("one_process", one_process, 1, 2, charged=True)
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
