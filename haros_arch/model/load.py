@@ -308,8 +308,8 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             remaps_applied=[str(n) for n in item.get("remaps_applied") or ()
                             if isinstance(n, str)],
             code_name=code if isinstance(code := item.get("code_name"), str) else None,
-            remap_places={str(k): location(v) for k, v in places.items()} if isinstance(
-                places := item.get("remap_places"), dict) else {})
+            remap_places={str(k): location(v) for k, v in written.items()} if isinstance(
+                written := item.get("remap_places"), dict) else {})
         config.nodes.append(instance)
         by_name.setdefault(name, instance)
         by_id.setdefault(instance.id, instance)
