@@ -62,6 +62,7 @@ from .python_values import (
     FieldFactory,
     Func,
     Guard,
+    InstalledPackages,
     Instance,
     LaunchDescription,
     Lazy,
@@ -184,6 +185,18 @@ class Interpreter(Expressions):
         if found not in self.diagnostics:
             self.diagnostics.append(found)
         return Unknown(detail, "unsupported", where=where)
+
+    def compare_values(self, op: ast.cmpop, left: object, right: object,
+                       node: ast.Compare) -> Any:
+        """One comparison of a chain; ``name in get_packages_with_prefixes()`` asks
+        whether that package is installed, as ``has_resource`` does."""
+        if isinstance(right, InstalledPackages) and isinstance(op, ast.In | ast.NotIn) and (
+                isinstance(left, str)):
+            from .python_api import package_installed
+
+            found = package_installed(self, left, node, f"{left!r} in {right.origin}")
+            return found if isinstance(found, Unknown) else isinstance(op, ast.In)
+        return super().compare_values(op, left, right, node)
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),

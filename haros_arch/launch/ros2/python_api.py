@@ -67,6 +67,7 @@ from .python_values import (
     Budget,
     Context,
     Func,
+    InstalledPackages,
     LaunchDescription,
     Lazy,
     Ref,
@@ -208,18 +209,32 @@ def package_directory(share: bool) -> Builder:
 
 def has_resource(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """ament_index_python's ``has_resource('packages', name)``: whether a package is
-    installed (camera_ros adds image_view's viewer only then): True when the workspace
-    has it or it is installed here; else not known (it may be on the robot), an info,
-    and an ``if`` on it takes both branches, each under its test."""
+    installed (camera_ros adds image_view's viewer only then): ``package_installed``."""
     kind, name = arg(a, k, 0, "resource_type"), arg(a, k, 1, "resource_name")
     if kind != "packages" or not isinstance(name, str):
         return i.unsupported(n, "has_resource() of a resource other than a package named "
                              "statically")
+    return package_installed(i, name, n, f"has_resource('packages', '{name}')")
+
+
+def package_installed(i: Interpreter, name: str, n: ast.AST, asked: str) -> Any:
+    """Whether package ``name`` is installed where the launch file runs (``asked``: the
+    expression that asks): True when the workspace has it or it is installed here; else
+    not known (it may be on the robot), an info, and an ``if`` on it takes both
+    branches, each under its test."""
     if i.workspace.find(name) is not None:
         return True
     i.unknown_value(n, f"whether package {name} is installed where the launch file runs "
                        "is not known here")
-    return Unknown(f"has_resource('packages', '{name}')")
+    return Unknown(asked)
+
+
+def packages_with_prefixes(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """ament_index_python's ``get_packages_with_prefixes()``: the packages installed
+    where the launch file runs; ``'nav2_bringup' in get_packages_with_prefixes()``
+    (webots_ros2's robot launch files start navigation only then) asks as
+    ``has_resource`` does, anything else of it is not known."""
+    return InstalledPackages("get_packages_with_prefixes()")
 
 
 _DICT = builtin(dict, list, tuple, dict)
@@ -956,6 +971,7 @@ API: dict[str, Builder] = {
     "get_package_share_directory": package_directory(True),
     "get_package_share_path": package_share_path,
     "has_resource": has_resource,
+    "get_packages_with_prefixes": packages_with_prefixes,
     "get_package_prefix": package_directory(False),
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),

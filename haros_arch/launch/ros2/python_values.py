@@ -78,6 +78,13 @@ class Guard(str):
 
 
 @dataclass(frozen=True)
+class InstalledPackages(Unknown):
+    """ament_index_python's ``get_packages_with_prefixes()``: every package installed
+    where the launch file runs, by name, with its prefix. Not known here, but ``name in
+    it`` is ``has_resource('packages', name)`` (``Interpreter.compare_values``)."""
+
+
+@dataclass(frozen=True)
 class Lazy:
     """A string with substitutions or unknown parts, computed when the action runs."""
 
