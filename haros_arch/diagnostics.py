@@ -367,6 +367,16 @@ CATALOGUE: dict[str, Entry] = {
         "error", "include cycle: {path} is already being included",
         "A launch file includes itself, directly or through other files; roslaunch would "
         "recurse until it fails. The repeated include is skipped."),
+    "LAUNCH_REMAP_ILLEGAL": Entry(
+        "error", "remap {rule} given to {node}: {side} is not a legal ROS 2 name ({why}); "
+                 "rcl refuses the rule, so the node does not start",
+        "A ROS 2 launch file gives a node (or a component) a remap rule whose source or "
+        "target, as the launch values make it, is not a name rcl accepts: a character "
+        "other than letters, digits, '_', '/', '~' and {substitutions} (a '-', a "
+        "backquote), a part starting with a digit, '//', a '/' at the end. rcl fails to "
+        "parse the node's arguments, and the node exits at start (a container refuses to "
+        "load the component). Rules with parts not known statically are judged on what "
+        "is known."),
     "LAUNCH_NODE_DUPLICATE": Entry(
         "error", "launch starts two nodes named {name} (also at {other})",
         "roslaunch refuses a launch whose node names collide (two $(anon x) of one "

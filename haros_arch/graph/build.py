@@ -16,7 +16,7 @@ from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, ELEMENT_PARAMETER, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
-from ..model.rosname import RosName, clean, namespace_of, remap, resolve
+from ..model.rosname import RosName, clean, namespace_of, remap, resolve, ros2_name_problem
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -581,6 +581,8 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         config.diagnostics.append(diag.make(
             "NODE_NOT_FOUND", decl.location, node=plugin or key,
             hint="" if plugin else _programs_hint(decl, nodes, workspace)))
+    if decl.ros_version == 2:
+        _illegal_remaps(decl, config)
     # a ROS 1 node takes ``from:=to`` anywhere on its command line; rcl reads remaps only
     # after ``--ros-args`` (the launch reader has them in ``decl.remaps``): a ROS 2
     # node's plain argument (a spawner's ``--controller-ros-args "-r a:=b"``, meant for
@@ -594,6 +596,24 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
                         ros_version=decl.ros_version, test=decl.is_test,
                         remap_places={f"{a}:={b}": where
                                       for (a, b), where in decl.remap_places.items()})
+
+
+def _illegal_remaps(decl: NodeDecl, config: Configuration) -> None:
+    """ROS 2: a remap rule of ``decl`` whose source or target rcl refuses as a name
+    (clearpath_sensors' image_rectify.launch.py gives the rectify node
+    ``rectify:=`rectif`y/image``, a backquoted default of its ``output_ns`` argument):
+    LAUNCH_REMAP_ILLEGAL, once per rule."""
+    for source, target in dict.fromkeys(decl.remaps):
+        if not source or source.startswith("__"):
+            continue  # __node, __ns, __log_level: not names
+        for side, name, is_source in (("its source", source, True),
+                                      ("its target", target, False)):
+            why = ros2_name_problem(name, source=is_source)
+            if why is not None:
+                config.diagnostics.append(diag.make(
+                    "LAUNCH_REMAP_ILLEGAL", decl.location, rule=f"{source}:={target}",
+                    node=decl.name, side=f"{side} {name!r}", why=why))
+                break
 
 
 def _programs_hint(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace) -> str:

@@ -38,6 +38,49 @@ def is_legal_name(name: str) -> bool:
     return not name or (_LEGAL.match(name) is not None and "//" not in name)
 
 
+# a token of a ROS 2 name (rcl's rmw_validate_full_topic_name / rcl_validate_topic_name):
+# letters, digits and "_", not starting with a digit; a "{substitution}" of such
+# characters; in a remap rule's source, a wildcard "*" or "**" (rcl_remap); "?" stands
+# for an unknown part
+_ROS2_TOKEN = re.compile(r"(?:[A-Za-z_?][\w?]*|\{[\w?]+\}|\?[\w?]*)+")
+
+
+def ros2_name_problem(name: str, source: bool = False) -> str | None:
+    """Why rcl refuses ``name`` as a topic or service name in a remap rule (``source``:
+    the rule's left side, which may be written ``node:name`` and hold ``*`` / ``**``
+    tokens), or None when it takes it: not empty; ``~`` only first, then ``/``; tokens of
+    letters, digits and ``_`` not starting with a digit, or ``{substitutions}``; no
+    ``//`` and no ``/`` at the end."""
+    if source and ":" in name:
+        node, _, name = name.partition(":")
+        if not _ROS2_TOKEN.fullmatch(node):
+            return f"the node name {node!r} before ':' is not a legal ROS 2 name"
+    if not name:
+        return "it is empty"
+    rest = name
+    if rest.startswith("~"):
+        rest = rest[1:]
+        if rest and not rest.startswith(SEP):
+            return "'~' must be followed by '/'"
+    if rest.startswith(SEP):
+        rest = rest[1:]
+    if not rest:
+        return None if name in ("/", "~") else "it ends with '/'"
+    if rest.endswith(SEP):
+        return "it ends with '/'"
+    for token in rest.split(SEP):
+        if not token:
+            return "it holds '//'"
+        if source and token in ("*", "**"):
+            continue
+        if not _ROS2_TOKEN.fullmatch(token):
+            bad = next((c for c in token if not (c.isalnum() or c in "_{}?")), None)
+            if bad is not None:
+                return f"it holds {bad!r}, which a ROS 2 name may not"
+            return f"its part {token!r} starts with a digit or is not a name"
+    return None
+
+
 def clean(name: str) -> str:
     """Collapse repeated slashes and drop a trailing one (except for the root)."""
     name = re.sub(r"/+", "/", name)
