@@ -168,16 +168,21 @@ WELL_KNOWN: dict[str, str] = {
                                       "StatisticDataPoint[] statistics",
 }
 
+MAX_DEFINITION_DEPTH = 3  # folders below a package's that may hold its definitions
+
+
 def definition_walk(folder: str) -> dict[str, str]:
     """Every message, service and action definition file of a package folder, by file
-    name, a few levels down, not in hidden, test or build folders (rosidl takes them from
-    the folders its CMakeLists lists: slam_toolbox's ``srvs/``, tier4_perception_msgs'
-    ``msg/traffic_light/``, autoware_adapi_v1_msgs' ``planning/msg/``); a name found
-    twice is the first, in sorted order."""
+    name, a few levels down, not in hidden, test or build folders (rosidl and genmsg take
+    them from the folders its CMakeLists lists: slam_toolbox's ``srvs/``,
+    tier4_perception_msgs' ``msg/traffic_light/``, autoware_adapi_v1_msgs'
+    ``planning/msg/``, kortex_driver's ``msg/generated/actuator_config/``, one
+    ``add_message_files(DIRECTORY ...)`` per folder); a name found twice is the first,
+    in sorted order."""
     found: dict[str, str] = {}
     for here, dirs, files in os.walk(folder):
         depth = here[len(folder):].count(os.sep)
-        dirs[:] = [] if depth >= 2 else sorted(
+        dirs[:] = [] if depth >= MAX_DEFINITION_DEPTH else sorted(
             d for d in dirs if not d.startswith(".") and d not in ("test", "build"))
         for file in sorted(files):
             if file.endswith((".msg", ".srv", ".action", ".idl")):

@@ -9,8 +9,6 @@ Fibonacci`` for ``FibonacciAction``).
 
 from __future__ import annotations
 
-import os
-
 from ...workspace import Workspace
 
 INTERFACE_MODULES = ("msg", "srv", "action")
@@ -33,10 +31,19 @@ def ros_type(qualname: str, version: int, action: bool = False) -> str | None:
 
 def interface_names(workspace: Workspace, package: str, module: str) -> set[str] | None:
     """The class names ``from package.module import *`` brings in, from the package's
-    ``msg/``, ``srv/`` and ``action/`` folders; None when the package cannot be found."""
+    message, service and action definitions (``interfaces.definition_files``: its
+    ``msg/``, ``srv/`` and ``action/`` folders and the others its build lists); None when
+    the package cannot be found."""
     root = workspace.find(package)
     if root is None:
         return None
+    from ...plugins.classes import remembered
+
+    return remembered("interface names", f"{root}\n{module}", workspace,
+                      lambda: _names(root, module))
+
+
+def _names(root: str, module: str) -> set[str]:
     names: set[str] = set()
     if module == "msg":
         names |= _stems(root, "msg", ".msg")
@@ -51,8 +58,7 @@ def interface_names(workspace: Workspace, package: str, module: str) -> set[str]
 
 
 def _stems(root: str, folder: str, suffix: str) -> set[str]:
-    try:
-        entries = os.listdir(os.path.join(root, folder))
-    except OSError:
-        return set()
-    return {e[: -len(suffix)] for e in entries if e.endswith(suffix)}
+    from ..cpp.interfaces import definition_files
+
+    return {name[: -len(suffix)] for name in definition_files(root, folder)
+            if name.endswith(suffix)}
