@@ -377,6 +377,13 @@ CATALOGUE: dict[str, Entry] = {
         "parse the node's arguments, and the node exits at start (a container refuses to "
         "load the component). Rules with parts not known statically are judged on what "
         "is known."),
+    "LAUNCH_NODE_NAME_ILLEGAL": Entry(
+        "warning", "node name {name} is not a legal ROS name: roslaunch warns, a roscpp "
+                   "node refuses it when it starts, rospy warns",
+        "A ROS 1 <node> is named with a character a ROS name may not hold (a '-' of a "
+        "host name an argument gives, a '.'): roslaunch starts it with a warning, "
+        "roscpp's ros::init throws InvalidNameException and the node exits, rospy warns "
+        "and runs. Tools that list the graph may not find it by name."),
     "LAUNCH_NODE_DUPLICATE": Entry(
         "error", "launch starts two nodes named {name} (also at {other})",
         "roslaunch refuses a launch whose node names collide (two $(anon x) of one "

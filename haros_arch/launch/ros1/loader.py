@@ -492,6 +492,10 @@ class Ros1Loader:
         if "/" in name:
             self.fail(scope, element, f"node name {name!r} cannot contain a namespace")
             return
+        if name and not is_legal_name(name):
+            # roslaunch only warns (xmlloader: "illegal <node> name"); roscpp's init
+            # refuses the name, rospy warns and runs
+            self.report("LAUNCH_NODE_NAME_ILLEGAL", scope, element, name=name)
         inner = self.ns_clear_params(element, scope, node_name=name)
         if inner is None:
             return
