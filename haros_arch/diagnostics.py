@@ -384,6 +384,12 @@ CATALOGUE: dict[str, Entry] = {
         "host name an argument gives, a '.'): roslaunch starts it with a warning, "
         "roscpp's ros::init throws InvalidNameException and the node exits, rospy warns "
         "and runs. Tools that list the graph may not find it by name."),
+    "LAUNCH_NODE_NAME_REFUSED": Entry(
+        "error", "node name {name} is not one rmw takes (letters, digits and '_', not "
+                 "starting with a digit): the node does not start",
+        "A ROS 2 launch file names a node (name=, __node:=) with a character a node name "
+        "may not hold, a '-' or a '.' most often: rcl_node_init fails with an invalid "
+        "node name and the process exits; a container refuses to load the component."),
     "LAUNCH_NODE_DUPLICATE": Entry(
         "error", "launch starts two nodes named {name} (also at {other})",
         "roslaunch refuses a launch whose node names collide (two $(anon x) of one "

@@ -45,3 +45,20 @@ def test_the_rules_of_a_ros2_name() -> None:
     assert ros2_name_problem("") == "it is empty"
     assert ros2_name_problem("/") is None and ros2_name_problem("~/a_1/b2") is None
     assert ros2_name_problem("a/1b") == "its part '1b' starts with a digit or is not a name"
+
+
+def _named(name: str, given: bool = True) -> list[str]:
+    config = build(Configuration("c"), LaunchModel(nodes=[NodeDecl(
+        f"/cam/{name}", "image_proc", "rectify", namespace="/cam", ros_version=2,
+        name_given=given)]), Workspace(root="/nowhere"), {})
+    return [d.message for d in config.diagnostics if d.code == "LAUNCH_NODE_NAME_REFUSED"]
+
+
+def test_a_node_name_rmw_refuses_is_an_error() -> None:
+    # a host name's dash, a dotted name, a leading digit: rcl_node_init fails
+    assert _named("rectify-left") == [
+        "node name rectify-left is not one rmw takes (letters, digits and '_', not "
+        "starting with a digit): the node does not start"]
+    assert _named("cam.rectify") and _named("2nd_rectify")
+    assert _named("rectify_left") == [] and _named("rectify_?") == []
+    assert _named("rectify-left", given=False) == []  # the code's name: its own reading

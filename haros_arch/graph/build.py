@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import bisect
 import os
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -583,6 +584,7 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
             hint="" if plugin else _programs_hint(decl, nodes, workspace)))
     if decl.ros_version == 2:
         _illegal_remaps(decl, config)
+        _illegal_node_name(decl, config)
     # a ROS 1 node takes ``from:=to`` anywhere on its command line; rcl reads remaps only
     # after ``--ros-args`` (the launch reader has them in ``decl.remaps``): a ROS 2
     # node's plain argument (a spawner's ``--controller-ros-args "-r a:=b"``, meant for
@@ -614,6 +616,18 @@ def _illegal_remaps(decl: NodeDecl, config: Configuration) -> None:
                     "LAUNCH_REMAP_ILLEGAL", decl.location, rule=f"{source}:={target}",
                     node=decl.name, side=f"{side} {name!r}", why=why))
                 break
+
+
+def _illegal_node_name(decl: NodeDecl, config: Configuration) -> None:
+    """ROS 2: a node name the launch file gives that rmw refuses (letters, digits and
+    ``_``, not starting with a digit: rmw_validate_node_name): rcl_node_init fails and
+    the process exits (a container refuses the component). LAUNCH_NODE_NAME_REFUSED."""
+    own = decl.name.rpartition("/")[2]
+    if not decl.name_given or not own or UNKNOWN_MARK in own:
+        return
+    if re.fullmatch(r"[A-Za-z_]\w*", own, re.ASCII) is None:
+        config.diagnostics.append(diag.make("LAUNCH_NODE_NAME_REFUSED", decl.location,
+                                            name=own))
 
 
 def _programs_hint(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace) -> str:
