@@ -716,7 +716,12 @@ class Interpreter(Expressions):
         elif isinstance(target, (ast.Tuple, ast.List)):
             items = list(value) if isinstance(value, (list, tuple)) else None
             if items is None or len(items) != len(target.elts):
-                items = [Unknown("unpacking")] * len(target.elts)
+                # each name of the target takes what is not known of the value, said
+                # where it is used as what it is (autoware's vehicle_info.launch.py:
+                # ``for (k, v) in vehicle_param.items()`` of a file not read)
+                unknown = value if isinstance(value, Unknown) else Unknown(
+                    f"unpacking {_source(target)} from a value not known statically")
+                items = [unknown] * len(target.elts)
             for sub, item in zip(target.elts, items, strict=False):
                 self.assign(sub, item, env)
         elif isinstance(target, ast.Subscript):
@@ -1077,7 +1082,10 @@ class Interpreter(Expressions):
             # the loop may run any number of times: its body once, on an item not
             # known, under that loop (what it makes may run, named '?' where it is
             # named after the item), rather than never
-            self.assign(stmt.target, Unknown(f"an item of {_source(stmt.iter)}"), env)
+            # (said where the value was made, or by ``iterable``: its uses say no more)
+            self.assign(stmt.target, Unknown(f"an item of {_source(stmt.iter)}",
+                                             "unsupported", where=self.where(stmt.iter)),
+                        env)
             try:
                 returned = self.branch(stmt.body, env, f"for {_source(stmt.target)} in "
                                                        f"{_source(stmt.iter)}")

@@ -520,7 +520,9 @@ class Expressions(Walker):
             guard = None
             if items is None:
                 guard = f"for {_source(gen.target)} in {_source(gen.iter)}"
-                items = [Unknown(f"an item of {_source(gen.iter)}")]
+                # (said where the value was made, or by ``iterable``)
+                items = [Unknown(f"an item of {_source(gen.iter)}", "unsupported",
+                                 where=self.where(gen.iter))]
                 self.guards.append(self.guard(guard))
             try:
                 for item in items:
