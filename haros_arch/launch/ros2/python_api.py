@@ -311,6 +311,27 @@ def os_path(function: Callable[[str], Any]) -> Builder:
     return build
 
 
+def temporary_name(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``tempfile.mktemp(suffix, prefix, dir)``: a path of a file not made yet, in
+    ``dir`` (the system's, ``/tmp``, by default) named ``prefix`` + a part chosen when
+    the launch file runs + ``suffix`` (navigation2's simulation launch files have xacro
+    write the world there); nothing is made here."""
+    suffix = arg(a, k, 0, "suffix", default="")
+    prefix = arg(a, k, 1, "prefix", default="tmp")
+    folder = arg(a, k, 2, "dir", default=None)
+    chosen = e.Opaque("the name tempfile.mktemp chooses when the launch file runs",
+                      report=False)
+    return Lazy(e.text(to_text(folder) if folder is not None else ("/tmp",), ("/",),
+                       to_text(prefix), (chosen,), to_text(suffix)))
+
+
+def file_removal(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``os.remove(path)`` / ``os.unlink(path)``: the file is removed when the launch
+    code runs (navigation2's simulation launch files remove their temporary world on
+    shutdown); nothing is removed here, and it returns None as it does."""
+    return None
+
+
 def path_exists(test: Callable[[str], bool]) -> Builder:
     """``os.path.exists`` / ``isfile`` / ``isdir`` of a path in a package folder of the
     workspace (``os.path.join(get_package_share_directory(pkg), 'config', name)``: the
@@ -973,6 +994,7 @@ API: dict[str, Builder] = {
     "has_resource": has_resource,
     "get_packages_with_prefixes": packages_with_prefixes,
     "get_package_prefix": package_directory(False),
+    "mktemp": temporary_name, "remove": file_removal, "unlink": file_removal,
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
     "realpath": os_path(os.path.normpath), "split": os_path(os.path.split),
