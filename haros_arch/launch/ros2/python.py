@@ -798,12 +798,19 @@ class Interpreter(Expressions):
     def failed(self, node: ast.AST | None, detail: str, reason: str) -> Unknown:
         """A Python error of the interpreted code (``reason``: "ValueError: ..."): raised
         to the ``try`` around it whose handler catches it (no test not known in
-        between), else said and unknown (``unsupported``)."""
+        between), else said and unknown (``unsupported``). Under a test not known, the
+        values that fail may be those the test rules out (zed_multi_camera's
+        ``serials_arr[cam_idx]`` of an empty list, run only where the list has one item
+        per camera): said so, not as an error the code makes."""
         name = reason.partition(":")[0].strip()
         if name in _EXCEPTIONS and any(
                 guards == len(self.guards) and any(_catches(c, name) for c in handlers)
                 for handlers, guards in self.catching):
             raise Raised(name)
+        if self.guards:
+            detail = (f"{detail}, with the values known here; it runs under "
+                      f"{self.guards[-1]}, a test not known statically, which may rule "
+                      "them out")
         return self.unsupported(node, detail)
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
