@@ -125,6 +125,9 @@ class Interpreter(Expressions):
         # how many values were given before the call's own arguments (a method's self)
         self.call_sites: list[tuple[ast.AST, Func, str, int]] = []
         self.guards: list[Guard] = []  # the unknown Python `if` tests we are under
+        # the absolute paths of the files the file opens for writing (not run): made
+        # on the machine that runs the launch, so not hard-coded paths of the author's
+        self.made_paths: list[str] = []
         self.guard_runs = 0
         self.decided: dict[int, ast.AST] = {}
         # the enclosing ``try`` statements: the exception classes their handlers name
@@ -1251,13 +1254,15 @@ def parse_python(text: str, path: str, workspace: Workspace,
                  command_line: Mapping[str, str] | None = None,
                  written: dict[str, str] | None = None,
                  unsure: set[str] | None = None,
+                 made: list[str] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
     packages whose folders it asks for as it runs are added to ``uses``.
     ``command_line``: the ``name:=value`` arguments the launch was started with.
     ``written``: gets what the file writes in ``os.environ`` as it is loaded; ``unsure``:
     the variables written before under a test not known statically, which gets those
-    this file so writes (and loses those it writes for sure)."""
+    this file so writes (and loses those it writes for sure). ``made``: gets the paths
+    of the files it opens for writing."""
     where = workspace.location(path)
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
@@ -1278,6 +1283,8 @@ def parse_python(text: str, path: str, workspace: Workspace,
         actions = None
     if uses is not None:
         uses.extend(interp.uses)
+    if made is not None:
+        made.extend(p for p in interp.made_paths if p not in made)
     if written is not None and isinstance(interp.environment, _Overlay):
         written.update(interp.environment.own)
     if unsure is not None:
