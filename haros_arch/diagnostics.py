@@ -633,6 +633,16 @@ CATALOGUE: dict[str, Entry] = {
         "the other branch's read instead. The node is 'partial'; give the analysis the "
         "workspace's compile_commands.json (colcon build "
         "--cmake-args -DCMAKE_EXPORT_COMPILE_COMMANDS=ON) to read the build's code."),
+    "CPP_TARGET_UNKNOWN": Entry(
+        "warning", "{text}: under '#if {condition}', which this parse leaves out: it reads "
+        "the code for the processor of the machine that runs the analysis",
+        "The code chooses ROS calls by the processor it is compiled for (__arm__, "
+        "__aarch64__, __x86_64__, ...: a camera driver for a Raspberry Pi builds its node "
+        "only for ARM and a stub that exits on a PC). The C++ parse reads the code for the "
+        "processor of the machine that runs the analysis, and which processor the robot "
+        "has is not known, so this call, which the code makes on another processor, is "
+        "not read. The node is 'partial', so checks that claim something is absent do "
+        "not decide on it."),
     "CPP_VERSION_UNKNOWN": Entry(
         "warning", "{text}: under '#if {condition}', which this parse leaves out as it "
         "takes {library} to be {version}",

@@ -155,3 +155,44 @@ def test_a_macos_home_folder_is_an_absolute_path(write_tree):
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
     (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
     assert [f.entities for f in run_rule(rule, model)] == [("parameter:/map_file",)]
+
+
+WRITING_LAUNCH = """
+import yaml
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def bridge_config(robot):
+    path = f"/tmp/{robot}_bridge.yaml"
+    with open(path, 'w') as out:
+        yaml.dump([{'ros_topic_name': robot + '/scan'}], out)
+    return path
+
+
+def generate_launch_description():
+    nodes = []
+    for robot in ['tb1', 'tb3']:
+        nodes.append(Node(package='nav', executable='bridge', name=robot + '_bridge',
+                          parameters=[{'config_file': bridge_config(robot),
+                                       'calibration': '/tmp/calib/camera.yaml'}]))
+    return LaunchDescription(nodes)
+"""
+
+
+def test_a_file_the_launch_file_writes_is_not_hard_coded(write_tree):
+    """tb3_multi_robot's tb3_world.launch.py writes each robot's bridge configuration to
+    ``/tmp/<robot>_bridge.yaml`` (``open(path, 'w')``, not run) and gives the bridge that
+    path: a file made on the machine that runs the launch, not one of the author's
+    (survey F). A path it only reads stays hard-coded, in /tmp too."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/bridges.launch.py": WRITING_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/bridges.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    found = sorted(f.entities for f in run_rule(rule, model))
+    assert found == [("parameter:/tb1_bridge/calibration",),
+                     ("parameter:/tb3_bridge/calibration",)]

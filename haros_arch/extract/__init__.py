@@ -249,7 +249,7 @@ _PARTIAL_CAUSES = {
             "FILE_UNREADABLE",
             "CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_NODE_UNREAD", "CPP_CLASS_UNSEEN",
             "CPP_BUILD_MACRO",
-            "CPP_VERSION_UNKNOWN", "CPP_LIBRARY_LOADED"),
+            "CPP_VERSION_UNKNOWN", "CPP_TARGET_UNKNOWN", "CPP_LIBRARY_LOADED"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN",
                "PY_NODE_UNSEEN",
                "PY_LAUNCHES", "PY_DYNAMIC_IMPORT", "PY_RUNS_ROS_TOOL", "PY_CALL_DEPTH"),
@@ -258,7 +258,7 @@ _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
 # causes whose own warning (one per place) says all there is to say: a version branch
 # that no known distribution decides is in a header nearly every node of a workspace
 # includes (navigation2's node_utils.hpp), which made a node warning of each of 116 nodes
-_SAID_AT_THE_PLACE = frozenset({"CPP_VERSION_UNKNOWN"})
+_SAID_AT_THE_PLACE = frozenset({"CPP_VERSION_UNKNOWN", "CPP_TARGET_UNKNOWN"})
 
 
 # nodelet::Loader's load(name, type, ...): a nodelet made by name in this process (the

@@ -176,7 +176,8 @@ class LaunchModel:
     # ``$(optenv ROBOT_CONFIG /opt/robot)`` when set): paths under them follow the
     # machine that runs the launch file, not a folder the file hard-codes
     # (and, per configuration, the values it gives the launch arguments: they come
-    # from its command line too)
+    # from its command line too; and the files a Python launch file opens for writing,
+    # made on that machine as it runs: tb3_multi_robot's /tmp/<robot>_bridge.yaml)
     environment_values: list[str] = field(default_factory=list)
     unread_includes: list[UnreadInclude] = field(default_factory=list)
     foreign_sections: list[ForeignSections] = field(default_factory=list)

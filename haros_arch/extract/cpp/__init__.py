@@ -51,6 +51,7 @@ from . import (
     recall,
     ros2_interfaces,
     synthesis,
+    targets,
     toolchain,
     values,
     versions,
@@ -1773,6 +1774,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     if library.version(setup.distro) is None and not setup.system_headers:
         result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
                                                    setup.distro))
+    result.diagnostics.extend(_target_unknown(tu, source, owned, workspace))
     # what the parses added: the headers the unit includes that a parse stood in for,
     # this unit's or an earlier one's (``stood_in``), not only those it repaired itself
     result.diagnostics[:0] = [*setup.unit_missing, *(
@@ -1852,6 +1854,21 @@ def _again_for(tu: TranslationUnit, errors: list[_Error], finder: CallFinder,
     plain = _hiding(tu, errors, source, fieldless, functions, _Sites())
     more = _hiding(tu, errors, source, fieldless, functions, _Sites(wrappers))
     return wrappers if len(more) > len(plain) else None
+
+
+def _target_unknown(tu: TranslationUnit, source: SourceCache,
+                    owned: Callable[[str], bool], workspace: Workspace) -> list[Diagnostic]:
+    """``CPP_TARGET_UNKNOWN`` at the first ROS call of each branch of a condition on
+    the processor that the parse left out, in the unit's workspace files (``targets``)."""
+    found: list[Diagnostic] = []
+    for name, skipped in sorted(recall.skipped_lines(tu).items()):
+        text = source.text(name) if owned(name) else None
+        if not text:
+            continue
+        for line, call, condition in targets.unknown_target_calls(text, skipped):
+            found.append(diag.make("CPP_TARGET_UNKNOWN", workspace.location(name, line),
+                                   text=call.strip()[:80], condition=condition))
+    return found
 
 
 def _version_unknown(tu: TranslationUnit, source: SourceCache,

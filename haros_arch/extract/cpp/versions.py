@@ -102,11 +102,17 @@ def _names(library: Library) -> re.Pattern[str]:
 def version_blocks(text: str, library: Library
                    ) -> list[tuple[int, int, str, frozenset[int]]]:
     """(first line, last line, condition, the chain's directive lines) of each branch of
-    each ``#if`` chain of ``text`` whose conditions name a version macro of ``library``:
-    a branch runs from its directive to the chain's next one (1-based, both included)."""
-    names = _names(library)
+    each ``#if`` chain of ``text`` whose conditions name a version macro of ``library``."""
+    return blocks_naming(text, _names(library))
+
+
+def blocks_naming(text: str, names: re.Pattern[str]
+                  ) -> list[tuple[int, int, str, frozenset[int]]]:
+    """(first line, last line, condition, the chain's directive lines) of each branch of
+    each ``#if`` chain of ``text`` whose conditions name a macro ``names`` finds: a
+    branch runs from its directive to the chain's next one (1-based, both included)."""
     found: list[tuple[int, int, str, frozenset[int]]] = []
-    # per open chain: its directive lines and the conditions that name the version
+    # per open chain: its directive lines and the conditions that name such a macro
     stack: list[tuple[list[int], list[str]]] = []
     for number, line in enumerate(text.splitlines(), 1):
         match = recall.DIRECTIVE.match(line)
@@ -138,9 +144,17 @@ def unknown_version_calls(text: str, skipped: list[tuple[int, int]], library: Li
     condition (``skipped``: the preprocessor's skipped line ranges of the file, each from
     the directive that began skipping; not a branch inside code skipped for another
     reason, ``#ifdef _WIN32`` around it)."""
+    return skipped_calls(text, skipped, _names(library))
+
+
+def skipped_calls(text: str, skipped: list[tuple[int, int]], names: re.Pattern[str]
+                  ) -> list[tuple[int, str, str]]:
+    """(line, call text, condition) of the first ROS API call of each branch of an
+    ``#if`` chain whose conditions name a macro ``names`` finds, where the parse skipped
+    that branch for that chain (``unknown_version_calls``)."""
     if not skipped:
         return []
-    blocks = version_blocks(text, library)
+    blocks = blocks_naming(text, names)
     if not blocks:
         return []
     sites = recall.call_sites(text)

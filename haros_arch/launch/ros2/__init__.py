@@ -51,7 +51,8 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
         actions, problems = parse_python(text, path, workspace, runner.loaded_environment(),
                                          uses=runner.model.package_uses,
                                          command_line=runner.command_line,
-                                         written=written, unsure=unsure)
+                                         written=written, unsure=unsure,
+                                         made=runner.model.environment_values)
         runner.wrote(written, unsure)
         runner.model.diagnostics.extend(problems)
         return actions

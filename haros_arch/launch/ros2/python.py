@@ -126,6 +126,9 @@ class Interpreter(Expressions):
         # how many values were given before the call's own arguments (a method's self)
         self.call_sites: list[tuple[ast.AST, Func, str, int]] = []
         self.guards: list[Guard] = []  # the unknown Python `if` tests we are under
+        # the absolute paths of the files the file opens for writing (not run): made
+        # on the machine that runs the launch, so not hard-coded paths of the author's
+        self.made_paths: list[str] = []
         self.guard_runs = 0
         self.decided: dict[int, ast.AST] = {}
         # the enclosing ``try`` statements: the exception classes their handlers name
@@ -816,12 +819,19 @@ class Interpreter(Expressions):
     def failed(self, node: ast.AST | None, detail: str, reason: str) -> Unknown:
         """A Python error of the interpreted code (``reason``: "ValueError: ..."): raised
         to the ``try`` around it whose handler catches it (no test not known in
-        between), else said and unknown (``unsupported``)."""
+        between), else said and unknown (``unsupported``). Under a test not known, the
+        values that fail may be those the test rules out (zed_multi_camera's
+        ``serials_arr[cam_idx]`` of an empty list, run only where the list has one item
+        per camera): said so, not as an error the code makes."""
         name = reason.partition(":")[0].strip()
         if name in _EXCEPTIONS and any(
                 guards == len(self.guards) and any(_catches(c, name) for c in handlers)
                 for handlers, guards in self.catching):
             raise Raised(name)
+        if self.guards:
+            detail = (f"{detail}, with the values known here; it runs under "
+                      f"{self.guards[-1]}, a test not known statically, which may rule "
+                      "them out")
         return self.unsupported(node, detail)
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
@@ -1265,13 +1275,15 @@ def parse_python(text: str, path: str, workspace: Workspace,
                  command_line: Mapping[str, str] | None = None,
                  written: dict[str, str] | None = None,
                  unsure: set[str] | None = None,
+                 made: list[str] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
     packages whose folders it asks for as it runs are added to ``uses``.
     ``command_line``: the ``name:=value`` arguments the launch was started with.
     ``written``: gets what the file writes in ``os.environ`` as it is loaded; ``unsure``:
     the variables written before under a test not known statically, which gets those
-    this file so writes (and loses those it writes for sure)."""
+    this file so writes (and loses those it writes for sure). ``made``: gets the paths
+    of the files it opens for writing."""
     where = workspace.location(path)
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
@@ -1292,6 +1304,8 @@ def parse_python(text: str, path: str, workspace: Workspace,
         actions = None
     if uses is not None:
         uses.extend(interp.uses)
+    if made is not None:
+        made.extend(p for p in interp.made_paths if p not in made)
     if written is not None and isinstance(interp.environment, _Overlay):
         written.update(interp.environment.own)
     if unsure is not None:

@@ -104,6 +104,9 @@ def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     mode = arg(a, k, 1, "mode", default="r")
     if a and isinstance(a[0], PurePosixPath):
         a = [str(a[0]), *a[1:]]
+    if isinstance(mode, str) and mode.strip("bt+") in ("w", "a", "x") and a and isinstance(
+            a[0], str) and a[0].startswith("/"):
+        i.made_paths.append(a[0])  # a file the launch makes as it runs (not run here)
     if mode not in ("r", "rt") or not a or not isinstance(a[0], str):
         if mode in ("r", "rt") and a and isinstance(a[0], Unknown) \
                 and a[0].kind == "unsupported":  # its path was said where it was made

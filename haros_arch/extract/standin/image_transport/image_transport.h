@@ -22,6 +22,8 @@ class Subscriber {
 public:
   Subscriber();
   std::string getTopic() const;
+  uint32_t getNumPublishers() const;
+  std::string getTransport() const;
   void shutdown();
   operator void*() const;
 };
@@ -46,6 +48,9 @@ public:
   // ROS 2: (node, base_topic, callback, transport, qos)
   template<class N, class C, class... A> CameraSubscriber(N&& node,
       const std::string& base_topic, const C& callback, A&&... more);
+  std::string getTopic() const;
+  std::string getInfoTopic() const;
+  uint32_t getNumPublishers() const;
   void shutdown();
   operator void*() const;
 };
