@@ -11,9 +11,9 @@ parameter events, ros2_controllers' Duration == and std::optional{value}; wiimot
 ROS 1 publisher compared with nullptr, ros::master's topic list; MoveIt 1's
 kinematics plugin loader's std::stringstream state and std::ws; mqtt_client's
 std::optional compared with std::nullopt; book_ros2's lifecycle trigger_transition and a
-constant divided into a permissive value).
+constant divided into a permissive value; ros_whill's long double math).
 Each parses with no error and keeps its calls. The sources are
-fixtures/cpp/standin_gaps."""
+fixtures/cpp/standin_gaps (the short ones here)."""
 
 from __future__ import annotations
 
@@ -1097,3 +1097,27 @@ def test_fill_image_and_every_image_encoding(write_tree) -> None:
     assert not {d.code for d in result.diagnostics} & {"CPP_NAMES_DECLARED",
                                                         "CPP_INCLUDE_MISSING"}
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "image_raw")]
+
+
+LONG_DOUBLE = """#include <ros/ros.h>
+#include <std_msgs/Float64.h>
+#include <math.h>
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "odom");
+  ros::NodeHandle nh("~");
+  long double theta = 0.5L, d = 1.0L;
+  long double x = d * cosl(theta), y = d * sinl(theta);
+  long double r = sqrtl(x * x + y * y) + fabsl(atan2l(y, x)) + powl(r, 2.0L);
+  ros::Publisher pub = nh.advertise<std_msgs::Float64>("odom", 100);
+  ros::spin();
+}
+"""
+
+
+def test_long_double_math(write_tree) -> None:
+    # ros_whill a03988c's odom.cpp:84 (``cosl``, ``sinl`` of <math.h>)
+    result = _extract(write_tree, LONG_DOUBLE, "catkin")
+    # declared by the stand-in, not taken as names the parse does not know
+    assert _errors(result) == [] and not [
+        d for d in result.diagnostics if d.code == "CPP_NAMES_DECLARED"]
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "~odom")]

@@ -315,3 +315,39 @@ links:
 """
         assert list(findings("conditional-communication", model)) == [
             "conditional-communication"], text
+
+
+def test_a_call_after_leaving_when_the_node_stops_is_not_conditional() -> None:
+    """ros_whill a03988c opens its serial port in ``while (ros::ok())``, leaves the outer
+    loop ``if(!ros::ok())break;`` and then reads its nine ``init_speed/*`` parameters:
+    they exist under ``else (!ros::ok())``, which holds whenever the node runs, yet the
+    parameters its launch file sets were "not decided". So is an ``if`` over the node's
+    running. The ``else`` of any other test stays a condition, and so does a test that
+    holds only while the node runs (``else (ros::ok())``)."""
+    def side(statement: str, text: str) -> str:
+        return f"{{text: '{text}', kind: source, statement: {statement}}}"
+
+    running = [side("else", t) for t in (
+        "!ros::ok()", "! ::ros::ok()", "ros::isShuttingDown()", "!rclcpp::ok()",
+        "rospy.is_shutdown()", "rospy.core.is_shutdown()", "not rclpy.ok()",
+        "(!ros::ok() || ros::isShuttingDown())")] + [
+        side("if", t) for t in ("ros::ok()", "rclcpp::ok() && ros::ok()")]
+    for condition in running:
+        model = f"""
+links:
+  - {{kind: subscribe, node: /whill, name: /whill/controller/joy, type: sensor_msgs/Joy,
+     conditions: [{condition}]}}
+"""
+        assert findings("conditional-communication", model) == {}, condition
+        found = findings("subscriber-without-publisher", model)
+        assert list(found) == ["subscriber-without-publisher"], (condition, found)
+    for condition in (side("else", "ros::ok()"), side("else", "!ros::ok() && ready_"),
+                      side("else", "!running_"), side("if", "!ros::ok()"),
+                      side("else", "!nh.ok()"), side("if", "ros::ok() || other")):
+        model = f"""
+links:
+  - {{kind: subscribe, node: /whill, name: /whill/controller/joy, type: sensor_msgs/Joy,
+     conditions: [{condition}]}}
+"""
+        assert list(findings("conditional-communication", model)) == [
+            "conditional-communication"], condition

@@ -151,6 +151,12 @@ class _Grammar:
             return self._parameter()
         if value in _PRESENCE_FUNCTIONS and self._peek() == ("op", "("):
             return self._presence(_PRESENCE_FUNCTIONS[value])
+        if value == "len" and self._peek() == ("op", "("):  # Python's len(x)
+            self.at += 1
+            inner = self._binary(0)
+            self._take(")")
+            return f"len({inner})"
+        value = self._program_arguments(value)
         if self._peek() in (("op", "."), ("op", "->")):
             presence = self._handle_presence()
             if presence is not None:
@@ -182,6 +188,20 @@ class _Grammar:
             number = self._number()
             self._take("]")
             return f"{value}[{number}]"
+        return value
+
+    def _program_arguments(self, value: str) -> str:
+        """Python's ``sys.argv`` and rospy's ``rospy.myargv()`` as names of their own
+        (``PYTHON_ARGV``, ``PYTHON_MYARGV``); any other name as it is."""
+        if value == "sys" and self._peek() == ("op", ".") and self._ahead(1) == (
+                "name", "argv"):
+            self.at += 2
+            return PYTHON_ARGV
+        if value == "rospy" and self._peek() == ("op", ".") and self._ahead(1) == (
+                "name", "myargv") and self._ahead(2) == ("op", "(") and self._ahead(3) == (
+                "op", ")"):
+            self.at += 4
+            return PYTHON_MYARGV
         return value
 
     def _number(self) -> str:
@@ -251,6 +271,14 @@ class _Grammar:
         name = _encoded(PARAMETER_PREFIX, text)
         self.names.add(name)
         return name
+
+
+# a Python program's ``sys.argv`` (every word it was started with: roslaunch's ``:=`` words
+# too, as rospy leaves them there) and what ``rospy.myargv()`` leaves of it, anywhere in
+# its code (fetchit_challenge's schunk_machine_server serves its action only ``if
+# len(sys.argv) > 1``, and its launch file gives it ``args="simulated"``)
+PYTHON_ARGV = "haros_sys_argv"
+PYTHON_MYARGV = "haros_myargv"
 
 
 # the typed values of an rclcpp Parameter a condition reads
@@ -357,16 +385,26 @@ def decide(condition: Condition, values: Callable[[str], object],
     uses_left = left is not None and left in names
     if (uses_argv or uses_left) and (not condition.program_args or not views):
         return None
+    # Python's arguments, the same list wherever the code reads them: ``sys.argv`` as
+    # the program was started (no client library takes words off it), ``rospy.myargv()``
+    # what rospy leaves
+    python = bool(names & {PYTHON_ARGV, PYTHON_MYARGV})
+    if python and (not views or (PYTHON_ARGV in names and views[0][0] is None)):
+        return None  # not known (a ROS 2 instance's argv: launch_ros adds its words)
+    started = views[0][0] if python and views else None
     constants = dict(condition.constants or ())
     answers = set()
-    for argv, kept in (views if views and (uses_argv or uses_left) else [(None, [])]):
+    for argv, kept in (views if views and (uses_argv or uses_left or python)
+                       else [(None, [])]):
         if uses_argv and argv is None:
             return None  # argc / argv themselves are not known (a ROS 2 instance's)
 
         def value(name: str, argv: list[str] | None = argv, kept: list[str] = kept
                   ) -> object:
-            if uses_left and name == left:
+            if (uses_left and name == left) or name == PYTHON_MYARGV:
                 return kept
+            if name == PYTHON_ARGV:
+                return started
             if uses_argv and argv is not None and name == "argv":
                 return argv
             if uses_argv and argv is not None and name == "argc":

@@ -37,7 +37,7 @@ RUN_ONCE_STATEMENTS = frozenset({"try", "do", "timer"})
 # advertises every topic, in the body of ``while (ros::ok())``, to rebuild it after a
 # failure); nor is a loop over a literal truth (``while True:``, ``while (true)``,
 # ``while (1)``: rosboard subscribes in the body of ``while True:``, once per topic a
-# browser asks for)
+# browser asks for), nor an ``if`` over it
 _RUNNING = re.compile(
     r"(?:True|true|1"
     r"|(?:::\s*)?(?:ros|rclcpp)\s*::\s*ok\s*\(\s*\)"
@@ -45,6 +45,17 @@ _RUNNING = re.compile(
     r"|not\s+rospy\s*\.\s*(?:core\s*\.\s*)?is_shutdown\s*\(\s*\)"
     r"|rclpy\s*\.\s*ok\s*\(\s*\))")
 _AND = re.compile(r"&&|\band\b")
+# a test that holds once the node is shutting down: the negation of one of ``_RUNNING``'s
+# (``!ros::ok()``, ``ros::isShuttingDown()``, ``rospy.is_shutdown()``, ``not
+# rclpy.ok()``). What follows ``if (!ros::ok()) break;`` in its block runs under its
+# ``else`` (ros_whill opens its port in ``while (ros::ok())``, leaves the loop ``if
+# (!ros::ok())`` and reads its speed profile after that): no condition of existing
+_STOPPED = re.compile(
+    r"(?:!\s*(?:::\s*)?(?:ros|rclcpp)\s*::\s*ok\s*\(\s*\)"
+    r"|(?:::\s*)?ros\s*::\s*isShuttingDown\s*\(\s*\)"
+    r"|rospy\s*\.\s*(?:core\s*\.\s*)?is_shutdown\s*\(\s*\)"
+    r"|not\s+(?:rclpy\s*\.\s*ok|rclcpp\s*::\s*ok)\s*\(\s*\))")
+_OR = re.compile(r"\|\||\bor\b")
 # the end of a ``PrimitiveCall.variable`` that holds a parameter object, not its value:
 # rclpy's ``self.origin_param = self.declare_parameter(..)``, read by a condition as
 # ``self.origin_param.value``
@@ -233,18 +244,26 @@ def undecided(conditions: tuple[Condition, ...]) -> tuple[Condition, ...]:
     entity keeps is what the configuration could not decide (the graph takes off the
     conditions it decides true and drops the entity under one decided false); of these,
     a block that runs at least once is no condition of existing (``RUN_ONCE_STATEMENTS``,
-    a ``while`` loop over the node's running: ``runs_while_node_runs``)."""
+    a ``while`` or ``if`` over the node's running or the ``else`` of its stopping:
+    ``runs_while_node_runs``)."""
     return tuple(c for c in conditions
                  if c.statement not in RUN_ONCE_STATEMENTS and not runs_while_node_runs(c))
 
 
 def runs_while_node_runs(condition: Condition) -> bool:
-    """Whether ``condition`` is a ``while`` loop of the code whose test holds as long as
-    the node runs (``_RUNNING``): its first turn runs whenever the node does."""
-    if condition.kind != "source" or condition.statement != "while":
+    """Whether ``condition`` holds as long as the node runs: a ``while`` loop or an ``if``
+    of the code whose test does (``_RUNNING``; a loop's first turn runs whenever the node
+    does), or the ``else`` of a test that holds only once it stops (``_STOPPED``)."""
+    if condition.kind != "source":
         return False
-    return all(_RUNNING.fullmatch(_unwrapped(part)) is not None
-               for part in _AND.split(_unwrapped(condition.text)))
+    text = _unwrapped(condition.text)
+    if condition.statement in ("while", "if"):
+        return all(_RUNNING.fullmatch(_unwrapped(part)) is not None
+                   for part in _AND.split(text))
+    if condition.statement == "else":
+        return all(_STOPPED.fullmatch(_unwrapped(part)) is not None
+                   for part in _OR.split(text))
+    return False
 
 
 def _unwrapped(text: str) -> str:

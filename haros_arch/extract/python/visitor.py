@@ -119,6 +119,9 @@ class Walker:
         # the variables of the unrolled loops the walk is in, by frame: each holds one
         # known item per walk of the body (``_decided``)
         self._loop_names: list[tuple[int, frozenset[str]]] = []
+        # the parameters of each function inlined at a call, by its frame, that its body
+        # never assigns: each holds the call's argument all through it (``_decided``)
+        self._fixed: dict[int, frozenset[str]] = {}
         # the ``if`` walked last whose test the walk decided, and the side it took
         self._decided_if: tuple[ast.If, list[ast.stmt]] | None = None
         self.rosname: str | None = None
@@ -483,9 +486,15 @@ class Walker:
         """The value of an ``if``'s test over the variables of the unrolled loops the walk
         is in, which hold one known item per walk of the body, and literals alone
         (``for side in ['left', 'right']: if side == 'skip': continue``): decided for
-        that item, as a C++ test over constants is (``Condition.constants``). None for
-        any other test, or one whose value is not known."""
+        that item, as a C++ test over constants is (``Condition.constants``); so is one
+        over the parameters of a function inlined at a call that its body never assigns
+        and that the call gives a literal (fetchit_challenge's ``SchunkMachineServer(
+        is_simulated=True)``, whose ``__init__`` makes the simulation's publishers ``if
+        is_simulated:`` and the real machine's otherwise). None for any other test, or
+        one whose value is not known."""
         names = {name for at, given in self._loop_names if at == id(frame) for name in given}
+        names |= {name for name in self._fixed.get(id(frame), ())
+                  if name in frame.locals and _literal(frame.locals[name])}
         if not names:
             return None
         for node in ast.walk(test):
@@ -985,11 +994,13 @@ class Walker:
         self._active.add(id(info.node))
         self._inlining.append((info.node, not self._reach.may_call_ros(
             info, self.loader.modules.values())))
+        self._fixed[id(inner)] = _unassigned_parameters(info.node)
         try:
             self._block(info.node.body, inner, conds)
         finally:
             self._active.discard(id(info.node))
             self._inlining.pop()
+            self._fixed.pop(id(inner), None)
 
     def _cut(self, info: FunctionInfo, call: ast.Call, frame: Frame) -> None:
         """A call ``MAX_CALL_DEPTH`` calls deep is not followed: its function is walked
@@ -1892,3 +1903,33 @@ def _foreign(module: str) -> bool:
 # the packages whose classes the API tables model (by their first module name)
 _MODELLED = frozenset(key[0] for table in (rospy.ROWS, rclpy.ROWS, rospy.NODE_NAMES,
                                            rclpy.NODE_NAMES) for key in table)
+
+
+def _literal(value: object) -> bool:
+    """Whether a walked value is a literal the walk knows: a number, a bool, None or a
+    fully known string."""
+    return value is None or isinstance(value, bool | int | float) or (
+        isinstance(value, Value) and value.literal is not None)
+
+
+def _unassigned_parameters(function: ast.AST) -> frozenset[str]:
+    """The named parameters of ``function`` (not ``*args`` / ``**kwargs``) that nothing
+    in its body assigns, deletes or declares ``global`` / ``nonlocal`` (a nested
+    function's too: kept out to be safe)."""
+    args = getattr(function, "args", None)
+    if not isinstance(args, ast.arguments):
+        return frozenset()
+    names = {a.arg for a in (*args.posonlyargs, *args.args, *args.kwonlyargs)}
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store | ast.Del):
+            names.discard(node.id)
+        elif isinstance(node, ast.Global | ast.Nonlocal):
+            names.difference_update(node.names)
+        elif isinstance(node, ast.ExceptHandler) and node.name:
+            names.discard(node.name)
+        elif isinstance(node, ast.alias):
+            names.discard((node.asname or node.name).partition(".")[0])
+        elif isinstance(node, ast.arg) and node not in (
+                *args.posonlyargs, *args.args, *args.kwonlyargs):
+            names.discard(node.arg)  # a nested function's or lambda's own parameter
+    return frozenset(names)
