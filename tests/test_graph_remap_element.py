@@ -92,3 +92,26 @@ def test_two_elements_of_one_text_are_two_remaps(write_tree) -> None:
     (finding,) = [f for f in run_catalogue(model) if f.rule == "remap-unused"]
     assert "/lidar/ground" in finding.message
     assert (finding.location.file, finding.location.line) == ("robot/launch/detection.launch", 7)
+
+
+def test_an_unread_include_near_any_node_of_the_element_may_use_it(write_tree) -> None:
+    # the element reaches /lidar/center/ground first and /lidar/other; an include not
+    # read in /lidar/other may start the node that uses the name: undecided, not reported
+    model = _analyse(write_tree, """<launch>
+  <group ns="lidar">
+    <remap from="detected_objects" to="/detection/detected_objects"/>
+    <group ns="center">
+      <node pkg="robot" type="ground.py" name="ground"/>
+    </group>
+    <group ns="other">
+      <node pkg="robot" type="ground.py" name="ground2"/>
+      <include file="$(find missing_detector)/launch/detector.launch"/>
+    </group>
+  </group>
+</launch>
+""")
+    (remap,) = model.configurations[0].remaps
+    assert [n.name for n in remap.nodes] == ["/lidar/center/ground", "/lidar/other/ground2"]
+    assert remap.users == [] and remap.unseen
+    rules = [f.rule for f in run_catalogue(model) if f.rule.startswith("remap-unused")]
+    assert rules == ["remap-unused-undecided"]

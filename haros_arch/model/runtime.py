@@ -632,12 +632,15 @@ def unread_users(remap: Remap, includes: list[LaunchItem]) -> list[LaunchItem]:
     its text (roslaunch gives an include the remaps written before it in its scope)
     whose nodes may resolve its source to the name it remaps for its own nodes: any, for
     a global source; for a relative one, an include in that namespace or above it (its
-    file may push groups down to it); never for a private ``~name``, another node's."""
+    file may push groups down to it, for the namespace of any node given the remap: one
+    ``<remap>`` element reaches nodes of nested groups); never for a private ``~name``,
+    another node's."""
     if remap.source.startswith("~"):
         return []
-    at = remap.node.namespace.rstrip("/") + "/"
+    spaces = {node.namespace.rstrip("/") + "/" for node in remap.nodes}
     return [item for item in includes if (remap.source, remap.target) in item.remaps and (
-        remap.source.startswith("/") or at.startswith(item.namespace.rstrip("/") + "/"))]
+        remap.source.startswith("/") or any(
+            at.startswith(item.namespace.rstrip("/") + "/") for at in spaces))]
 
 
 def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
