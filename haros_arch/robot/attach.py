@@ -58,6 +58,7 @@ from .gazebo_plugins import (
     Plugin,
     classic_builtin,
     gz_system,
+    library_base,
     plugin_row,
 )
 
@@ -247,7 +248,7 @@ def _gz(spawn: Spawn, launch: LaunchModel, workspace: Workspace, config: Configu
         reason = gz_system(filename)
         if reason is None:
             reason = workspace_gz_system(filename, workspace)
-        if reason is not None and _base(filename) in GZ_MANAGERS:
+        if reason is not None and library_base(filename) in GZ_MANAGERS:
             managers.append(_manager(element, spawn, where, _conditions(element, where),
                                      workspace, config, params, gz=True))
         if reason is None:
@@ -270,8 +271,8 @@ def workspace_gz_system(filename: str, workspace: Workspace) -> str | None:
     "" when no source of it uses rclcpp (it talks gz transport only, as the systems gz
     sim ships: leo_gz_plugins' differential system), else why its ROS interface is not
     known; None when no workspace package builds it so."""
-    return remembered("gz system", _base(filename), workspace,
-                      lambda: _workspace_gz_system(_base(filename), workspace))
+    return remembered("gz system", library_base(filename), workspace,
+                      lambda: _workspace_gz_system(library_base(filename), workspace))
 
 
 def _workspace_gz_system(base: str, workspace: Workspace) -> str | None:
@@ -683,7 +684,7 @@ def _plugin(element: etree._Element, spawn: Spawn, host: NodeInstance,
     instance, unknown = _ros2_instance(element, name, spawn, host, where, conditions,
                                        workspace, config)
     calls = list(_calls(element, row, where, conditions, None))
-    instance.node = Node("gazebo_plugins", _base(filename), kind="plugin", calls=calls,
+    instance.node = Node("gazebo_plugins", library_base(filename), kind="plugin", calls=calls,
                          location=where)
     if row.partial:
         instance.node.mark_partial(f"{row.partial} ({where.file}:{where.line})")
@@ -701,7 +702,7 @@ def workspace_plugin(filename: str, workspace: Workspace) -> Node | None:
     """The Gazebo classic plugin a workspace package builds as the library ``filename``
     (``cmake.nodes.gazebo_plugins``: registered with ``GZ_REGISTER_<KIND>_PLUGIN``), its
     calls read from its C++ like any node's; None when no package read builds it."""
-    base = _base(filename)
+    base = library_base(filename)
     for package in workspace.packages.values():
         for node in package.nodes:
             if node.kind == "plugin" and node.executable == base and (
@@ -934,7 +935,7 @@ def _manager(element: etree._Element, spawn: Spawn, where: Location,
         if found is not None and found[0] is None:
             remaps.append((found[1], found[2]))
     decl, instance = _made_manager(name, namespace, (*spawn.decl.conditions, *conditions),
-                                   where, remaps, _base(element.get("filename") or ""),
+                                   where, remaps, library_base(element.get("filename") or ""),
                                    config)
     for file in element.iterfind("parameters"):
         named = (file.text or "").strip()
@@ -1426,7 +1427,3 @@ class _PluginArguments:
                 if left not in ("__ns", "__node", "__name") and node in (None, final)]
 
 
-def _base(filename: str) -> str:
-    base = filename.rsplit("/", 1)[-1]
-    base = base[:-3] if base.endswith(".so") else base
-    return base[3:] if base.startswith("lib") else base

@@ -307,9 +307,15 @@ GAZEBO_CLASSIC = frozenset({
 def classic_builtin(filename: str) -> bool:
     """Whether ``filename`` (``libLiftDragPlugin.so``) is one of Gazebo classic's own
     plugins, which have no ROS interface (``GAZEBO_CLASSIC``)."""
+    return library_base(filename) in GAZEBO_CLASSIC
+
+
+def library_base(filename: str) -> str:
+    """A plugin library's name without its folder, ``lib`` and ``.so``
+    (``/opt/x/libgazebo_ros_imu.so`` -> ``gazebo_ros_imu``): how a description may name it."""
     base = filename.rsplit("/", 1)[-1]
-    base = base[3:] if base.startswith("lib") else base
-    return (base[:-3] if base.endswith(".so") else base) in GAZEBO_CLASSIC
+    base = base[:-3] if base.endswith(".so") else base
+    return base[3:] if base.startswith("lib") else base
 
 
 GZ_PREFIXES = ("gz-sim", "ignition-gazebo", "gz_ros2_control", "ign_ros2_control")
@@ -321,9 +327,7 @@ GZ_ROS: dict[str, str] = {}
 def gz_system(filename: str) -> str | None:
     """For a gz sim system library: "" (no ROS interface: ros_gz bridges make its gz
     topics ROS topics) or why its ROS interface is not known; None for any other."""
-    base = filename.rsplit("/", 1)[-1]
-    base = base[3:] if base.startswith("lib") else base
-    base = base[:-3] if base.endswith(".so") else base
+    base = library_base(filename)
     if not base.startswith(GZ_PREFIXES):
         return None
     return GZ_ROS.get(base, "")
@@ -331,11 +335,7 @@ def gz_system(filename: str) -> str | None:
 
 def plugin_row(filename: str, ros_version: int) -> Plugin | None:
     """The row of a ``<plugin filename=...>`` (``libgazebo_ros_imu.so`` or ``gazebo_ros_imu``)."""
-    base = filename.rsplit("/", 1)[-1]
-    if base.endswith(".so"):
-        base = base[:-3]
-    if base.startswith("lib"):
-        base = base[3:]
+    base = library_base(filename)
     for row in PLUGINS:
         if row.ros_version == ros_version and base in row.filenames:
             return row
