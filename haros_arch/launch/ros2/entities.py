@@ -44,6 +44,16 @@ class Var(Subst):  # $(var name [default]) / LaunchConfiguration
 
 
 @dataclass(frozen=True)
+class LoopVar(Subst):
+    """``$(for-var name [default])`` / ``ForEachVar``: a value of the ``ForEach``
+    iteration being performed; ``$(index name)`` / ``ForLoopIndex``: a ``ForLoop``'s
+    index (launch keeps both as the context's locals, as text)."""
+
+    name: Text
+    default: Text | None = None
+
+
+@dataclass(frozen=True)
 class Env(Subst):  # $(env NAME [default]) / EnvironmentVariable
     name: Text
     default: Text | None = None
@@ -308,6 +318,25 @@ class Delayed(Action):
     actions: list[Action]
     why: str
     statement: str = "timer"  # the condition's statement: "timer" or "event"
+
+
+@dataclass
+class ForEach(Action):
+    """launch's ``ForEach`` (``<for_each values=...>``) and ``ForLoop`` (``<for len=...
+    name=...>``), Kilted's: ``values`` performed when the action runs is a
+    ``;``-separated list of YAML mappings, one iteration each (``ForLoop``: ``length``,
+    the text of a number N, is iterations ``{index: 0}`` to ``{index: N-1}``). A front
+    end's loop runs its ``children`` once per iteration, its values read by
+    ``$(for-var)`` / ``$(index)``; a Python one calls ``make`` with the iteration's
+    values as keyword arguments (None: values not known statically) and runs the
+    actions it gives, with the diagnostics the call gave."""
+
+    values: Text
+    length: bool = False  # ForLoop: ``values`` is the number of iterations
+    index: str | None = None  # ForLoop: the name of its index
+    children: list[Action] = field(default_factory=list)
+    make: Callable[[dict[str, Any] | None], tuple[list[Action], list[Diagnostic]]] | None \
+        = None
 
 
 @dataclass

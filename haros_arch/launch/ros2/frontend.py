@@ -54,7 +54,7 @@ class Frontend:
             "ros_timer": self.timer, "shutdown": self.ignored, "append_env": self.ignored,
             # the launch process's own ROS node and log folder: nothing in the graph
             "set_use_sim_time": self.ignored, "set_ros_log_dir": self.ignored,
-            "reset": self.reset,
+            "reset": self.reset, "for_each": self.for_each, "for": self.for_loop,
             # actions installed packages expose (ros_gz's ``<ros_gz_bridge>``, ...)
             **{tag: self.package_action for tag in BY_TAG},
         }
@@ -187,6 +187,23 @@ class Frontend:
         actions = self.actions(others)
         return e.Group(actions, self.flag(ent, "scoped", True),
                        self.flag(ent, "forwarding", True), keeps)
+
+    def for_each(self, ent: Entity) -> e.Action | None:
+        """``<for_each values="...">``: its children once per iteration (launch reads
+        ``values`` only; without it, ForEach is not built and the file fails)."""
+        values = self.text(ent, "values", True)
+        children = self.actions(ent.children)
+        return None if values is None else e.ForEach(values, children=children)
+
+    def for_loop(self, ent: Entity) -> e.Action | None:
+        """``<for len="N" name="i">``: its children N times, ``$(index i)`` 0 to N-1."""
+        length = self.text(ent, "len", True)
+        ent.read.add("name")  # taken as written (launch reads no substitution there)
+        raw = ent.attrs.get("name")
+        index = None if raw is None else str(raw)
+        children = self.actions(ent.children)
+        return None if length is None else e.ForEach(length, length=True, index=index,
+                                                     children=children)
 
     def include(self, ent: Entity) -> e.Action | None:
         path = self.text(ent, "file", True)

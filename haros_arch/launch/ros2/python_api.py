@@ -76,6 +76,7 @@ from .python_values import (
     printable,
     to_text,
 )
+from .python_values import Method as BoundMethod
 from .python_webots import WEBOTS
 
 
@@ -917,6 +918,58 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return finish(i, action, k, n)
 
 
+def for_each(length: bool) -> Builder:
+    """``ForEach(input_values, function=f)`` / ``ForLoop(length, function=f)``
+    (launch 3.8, Kilted): ``f`` called when the loop runs, once per iteration, with the
+    iteration's values as keyword arguments (``ForLoop``: ``i``); values not known
+    statically: once, each of its named parameters a value not known."""
+    what = "ForLoop" if length else "ForEach"
+
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        values = arg(a, k, 0, "length" if length else "input_values")
+        function = k.get("function")
+        if not isinstance(function, (Func, BoundMethod)):
+            return finish(i, e.Unsupported(f"{what} of an unknown function"), k, n)
+        where = i.where(n)
+        code = function.func if isinstance(function, BoundMethod) else function
+
+        def make(item: dict[str, Any] | None) -> tuple[list[e.Action], list[Diagnostic]]:
+            before = len(i.diagnostics)
+            if item is None:
+                spec = code.node.args
+                names = [p.arg for p in (*spec.posonlyargs, *spec.args, *spec.kwonlyargs)]
+                if isinstance(function, BoundMethod):
+                    names = names[1:]  # its instance (or class)
+                given: dict[str, Any] = {name: Unknown(f"a {what} value {name}", "unsupported",
+                                                       where=where) for name in names}
+            else:
+                given = dict(item)
+            try:
+                result = i.call(function, [], given, n)
+                made = actions(i, result, n) if result is not None else []
+            except Budget as stop:
+                i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where, detail=str(stop)))
+                made = []
+            except (RecursionError, _Flow):
+                i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
+                                               detail="interpretation nested too deeply"))
+                made = []
+            return made, i.diagnostics[before:]
+
+        return finish(i, e.ForEach(to_text(values), length=length,
+                                   index="i" if length else None, make=make), k, n)
+    return build
+
+
+def loop_var(index: bool) -> Builder:
+    """``ForEachVar(name, default_value=None)`` / ``ForLoopIndex(name)``."""
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        default = None if index else arg(a, k, 1, "default_value")
+        return e.LoopVar(to_text(arg(a, k, 0, "name")),
+                         None if default is None else to_text(default))
+    return build
+
+
 def ignored(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return None  # no effect on the Computation Graph (LogInfo, ExecuteProcess, ...)
 
@@ -1046,6 +1099,8 @@ API: dict[str, Builder] = {
     "OnStateTransition": state_handler, "ChangeState": lifecycle,
     "matches_node_name": lifecycle, "matches_action": lifecycle,
     "OpaqueFunction": opaque_function,
+    "ForEach": for_each(False), "ForLoop": for_each(True),
+    "ForEachVar": loop_var(False), "ForLoopIndex": loop_var(True),
     "LogInfo": ignored, "ExecuteProcess": execute_process, "Shutdown": ignored,
     "EmitEvent": ignored, "AppendEnvironmentVariable": ignored, "SetROSLogDir": ignored,
     "SetUseSimTime": ignored,

@@ -48,6 +48,7 @@ MAX_INCLUDE_DEPTH = 24
 MAX_ACTIONS = 20_000
 MAX_PARAM_FILE = 1024 * 1024
 MAX_WALKED = 50_000  # files and folders of a package looked through for ros2 launch's file
+MAX_ITERATIONS = 1_000  # of one ForEach / ForLoop
 
 # diagnostics that say part of a launch file was not read as launch would run it: what
 # that part would have declared or read of the launch configurations is not seen
@@ -203,6 +204,10 @@ class Runner:
         # output, which robot descriptions read (``nodes.command_line``)
         self.command_outputs: list[tuple[Unknown, str]] = []
         self.includes: list[IncludeFrame] = []  # the includes being performed, innermost last
+        # the values of the ForEach / ForLoop iterations being performed, innermost last
+        # (launch's context locals, which ``$(for-var)`` / ``$(index)`` read); None for
+        # an iteration whose values are not known statically
+        self.loop_values: list[dict[str, str] | None] = []
 
     # -- diagnostics and values --------------------------------------------------
     def report(self, code: str, location: Location, **params: object) -> None:
@@ -578,6 +583,91 @@ class Runner:
                             Condition(action.why, "launch", action.statement,
                                       action.location))
         self.run(action.actions, inner)
+
+    def do_ForEach(self, action: e.ForEach, scope: Scope) -> None:
+        """``ForEach`` / ``ForLoop``: the iterations its values give, each in the scope
+        (launch runs the entities an iteration makes where the loop is: what they set of
+        the launch configurations stays), its values in ``loop_values`` while they run.
+        Values not known statically: the loop may run any number of times; its entities
+        once, under that loop (names made of its values keep '?'), not never."""
+        value = self.value(action.values, scope, action.location) or Value.unknown()
+        items = self._iterations(action, value.literal, action.location) \
+            if value.literal is not None else None
+        if items is None and value.literal is not None:
+            return  # launch fails there (said): nothing of the loop runs
+        if items is None:
+            what = "ForLoop of a length" if action.length else "ForEach over values"
+            cond = Condition(f"{what} not known statically: {value.text}", "launch",
+                             "for", action.location)
+            saved = scope.conditions
+            scope.conditions = (*saved, cond)
+            try:
+                self._iteration(action, None, scope)
+            finally:
+                scope.conditions = saved
+            return
+        for item in items:
+            self._iteration(action, item, scope)
+
+    def _iteration(self, action: e.ForEach, item: dict[str, Any] | None,
+                   scope: Scope) -> None:
+        self.loop_values.append(None if item is None else {
+            str(key): str(value) for key, value in item.items()})
+        try:
+            if action.make is None:
+                self.run(action.children, scope)
+                return
+            made, found = action.make(item)
+            for said in found:
+                if said.code in HIDING_CODES:
+                    self.hidden(said)
+                if said not in self.model.diagnostics:
+                    self.model.diagnostics.append(said)
+            self.run(made, scope)
+        finally:
+            self.loop_values.pop()
+
+    def _iterations(self, action: e.ForEach, text: str, where: Location
+                    ) -> list[dict[str, Any]] | None:
+        """The values of each iteration, as launch makes them of the performed text:
+        ``ForLoop``, ``int(text)`` iterations ``{index: i}``; ``ForEach``, each non-empty
+        part between ``;`` read as YAML (an empty document no iteration), which must be
+        a mapping (launch calls the function with it as keyword arguments). None, said,
+        where launch raises."""
+        if action.length:
+            try:
+                count = int(text.strip())
+            except ValueError:
+                self.report("LAUNCH_BAD_VALUE", where, detail=f"ForLoop length {text!r} is "
+                            "not an integer: launch raises ValueError")
+                return None
+            if count > MAX_ITERATIONS:
+                self.report("LAUNCH_PY_BUDGET", where,
+                            detail=f"a ForLoop of more than {MAX_ITERATIONS} iterations")
+                count = MAX_ITERATIONS
+            return [{str(action.index): index} for index in range(count)]
+        out: list[dict[str, Any]] = []
+        for part in filter(None, text.strip().split(";")):
+            try:
+                loaded = safe_yaml.load(part.strip())
+            except yaml.YAMLError as err:
+                mark = getattr(err, "problem", None) or type(err).__name__
+                self.report("LAUNCH_BAD_VALUE", where, detail=f"ForEach values {part.strip()!r}"
+                            f" are not valid YAML ({mark}): launch raises")
+                return None
+            if loaded is None:
+                continue
+            if not isinstance(loaded, dict):
+                self.report("LAUNCH_BAD_VALUE", where, detail=f"ForEach values "
+                            f"{part.strip()!r} are not a YAML mapping: launch raises "
+                            "TypeError calling the iteration's function")
+                return None
+            if len(out) == MAX_ITERATIONS:
+                self.report("LAUNCH_PY_BUDGET", where,
+                            detail=f"a ForEach of more than {MAX_ITERATIONS} iterations")
+                break
+            out.append(loaded)
+        return out
 
     def do_Callback(self, action: e.Callback, scope: Scope) -> None:
         ev = self.evaluator(scope, action.location)

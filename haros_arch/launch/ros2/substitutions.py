@@ -169,6 +169,12 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
         default = args[1] if len(args) > 1 else (("",) if name == "optenv" else None)
         cls = e.Var if name == "var" else e.Env
         return cls(args[0], default)
+    if name == "for-var":
+        arity(1, 2)
+        return e.LoopVar(args[0], args[1] if len(args) > 1 else None)
+    if name == "index":
+        arity(1, 1)
+        return e.LoopVar(args[0])
     if name in ("find-pkg-share", "find-pkg-prefix", "find"):
         arity(1, 1)
         return e.FindPackage(args[0], share=name != "find-pkg-prefix")
@@ -281,6 +287,25 @@ class Evaluator:
             return Value.unknown(f"var {name}")
         self.report("LAUNCH_ARG_UNSET", name=name)
         return Value.unknown(f"var {name}")
+
+    def s_LoopVar(self, s: e.LoopVar) -> Value:
+        """A value of the iteration being performed (launch's locals: the innermost
+        iteration's over those around it); its default when no iteration has it; else
+        launch raises (SubstitutionFailure)."""
+        name = self.known(s.name)
+        if name is None:
+            return Value.unknown("ForEach value with an unknown name")
+        for values in reversed(self.runner.loop_values):
+            if values is None:
+                return Value.unknown(f"for-var {name}")  # an iteration not known
+            if name in values:
+                return Value.of(values[name])
+        if s.default is not None:
+            return self.value(s.default)
+        self.report("LAUNCH_BAD_VALUE", detail=f"for-var / index {name} is not a value of "
+                    "a ForEach or ForLoop iteration here: launch raises "
+                    "SubstitutionFailure")
+        return Value.unknown(f"for-var {name}")
 
     def s_Env(self, s: e.Env) -> Value:
         name = self.known(s.name)
