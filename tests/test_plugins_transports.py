@@ -164,6 +164,35 @@ def test_ros2_transport_topics_are_named_below_a_base_the_code_remapped():
         ("subscribe", "/left/image/compressed")]
 
 
+def test_transports_below_a_remapped_base_are_remapped_from_their_own_name():
+    # clearpath_sensors' flir_blackfly gives image_proc's debayer (which resolves its
+    # base itself, "=") image_color:=color/image and, ROS 1 style, a rule per transport,
+    # image_color/compressed:=color/compressed: the plugin names its topic below the
+    # remapped base, /cam/color/image/compressed, and that is what rcl remaps, so the
+    # per-transport rule is unused and the node is shown to use color/image/compressed,
+    # not image_color/compressed
+    debayer = Node("cam", "debayer", calls=[
+        call("publish", "image_color", "sensor_msgs/msg/Image", "*=")])
+    decl = NodeDecl("/cam/debayer", "cam", "debayer", "/cam/", ros_version=2,
+                    remaps=[("image_color", "color/image"),
+                            ("image_color/compressed", "color/compressed")])
+    config = graph([decl], nodes=[debayer], packages=["compressed_image_transport"])
+    links = {link.resource.name: link.rosname.given for link in config.links
+             if link.kind == "publish"}
+    assert links["/cam/color/image/compressed"] == "color/image/compressed"
+    assert "/cam/color/compressed" not in links
+    unused = {r.text: r for r in config.remaps}["image_color/compressed:=color/compressed"]
+    assert not unused.users
+    assert "/cam/color/image/compressed" in unused.near
+    assert "/cam/image_color/compressed" not in unused.near
+    # a base no remap changed: the transport stays named below the code's base
+    config = graph([replace(decl, remaps=[("image_color/compressed", "color/compressed")])],
+                   nodes=[debayer], packages=["compressed_image_transport"])
+    links = {link.resource.name: link.rosname.given for link in config.links
+             if link.kind == "publish"}
+    assert links["/cam/color/compressed"] == "image_color/compressed"
+
+
 def test_transport_plugins_read_their_parameters():
     # ROS 1: each publisher plugin's dynamic_reconfigure config, under its topic
     config = graph([NodeDecl("/cam/driver", "cam", "driver", "/cam/")],

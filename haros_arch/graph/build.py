@@ -301,10 +301,12 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             # resolved and remapped itself (``=`` mark: image_pipeline)
             remapped = each.transport.endswith("=") or (
                 instance.ros_version == 1 and not each.transport.endswith("/"))
-            expanded = base if remapped else resolved_name(instance, each, {}, resources)
+            plain = resolved_name(instance, each, {}, resources)
+            expanded = base if remapped else plain
             for one in transports.calls(each, expanded.full, instance):
                 link(instance, one, remaps, resources, config, base if one is each else
-                     _below_base(resolved_name(instance, one, remaps, resources), expanded))
+                     _below_base(resolved_name(instance, one, remaps, resources), expanded,
+                                 plain.full, instance.namespace))
 
 
 def _drop_base_copies(config: Configuration,
@@ -367,13 +369,22 @@ def _camera_info(instance: NodeInstance, info: PrimitiveCall, images: list[Primi
     return replace(named, given=info.name)
 
 
-def _below_base(rosname: RosName, base: RosName) -> RosName:
+def _below_base(rosname: RosName, base: RosName, plain: str, namespace: str) -> RosName:
     """A name an image_transport plugin makes below the base topic, resolved from it
     (``/cam/image/compressed``), given as the code wrote the base (``image/compressed``):
-    global only when the base was. The resolved name stays as the plugin resolves it."""
+    global only when the base was. A base a remap changed before the plugin named
+    below it (``plain``: the base without remaps; roscpp's resolveName, a ROS 2 base the
+    code resolved) is what the plugin's name is remapped from in turn, not the code's
+    base: given relative to the node's namespace when inside it (flir_blackfly's
+    debayer, ``image_color:=color/image``: ``color/image/compressed``, which a rule
+    ``image_color/compressed:=...`` does not remap). The resolved name stays as the
+    plugin resolves it."""
     prefix = base.full.rstrip("/") + "/"
     if base.is_global or not rosname.given.startswith(prefix):
         return rosname
+    inside = namespace.rstrip("/") + "/"
+    if base.full != plain and rosname.given.startswith(inside):
+        return replace(rosname, given=rosname.given[len(inside):])
     return replace(rosname, given=f"{base.given.rstrip('/')}/{rosname.given[len(prefix):]}")
 
 
