@@ -368,8 +368,8 @@ CATALOGUE: dict[str, Entry] = {
         "A launch file includes itself, directly or through other files; roslaunch would "
         "recurse until it fails. The repeated include is skipped."),
     "LAUNCH_REMAP_ILLEGAL": Entry(
-        "error", "remap {rule} given to {node}: {side} is not a legal ROS 2 name ({why}); "
-                 "rcl refuses the rule, so the node does not start",
+        "error", "remap {rule} given to {node}: {side} is not a legal ROS 2 name "
+                 "({why}){more}; rcl refuses the rule, so the node does not start",
         "A ROS 2 launch file gives a node (or a component) a remap rule whose source or "
         "target, as the launch values make it, is not a name rcl accepts: a character "
         "other than letters, digits, '_', '/', '~' and {substitutions} (a '-', a "

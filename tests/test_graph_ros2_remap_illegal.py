@@ -29,6 +29,12 @@ def test_an_illegal_target_is_an_error() -> None:
     assert said.startswith("remap rectify:=`rectif`y/image given to /cam/rectify: its "
                            "target '`rectif`y/image' is not a legal ROS 2 name (it holds '`'")
     assert _said([("cmd-vel", "cmd_vel")]) and _said([("scan", "scan/")])
+    # one error per node: the other rules that one bad value spoils are named in it
+    (said,) = _said([("rectify", "`rectif`y/image"), ("rectify/compressed",
+                                                      "`rectif`y/compressed"),
+                     ("rectify/theora", "`rectif`y/theora"), ("image", "color/image")])
+    assert "; so are 2 more of its rules (rectify/compressed:=`rectif`y/compressed, " \
+        "rectify/theora:=`rectif`y/theora); rcl refuses" in said
     assert _said([("image", "2d/image")]) and _said([("image", "a//b")])
 
 

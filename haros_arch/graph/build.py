@@ -612,10 +612,12 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
 
 
 def _illegal_remaps(decl: NodeDecl, config: Configuration) -> None:
-    """ROS 2: a remap rule of ``decl`` whose source or target rcl refuses as a name
+    """ROS 2: the remap rules of ``decl`` whose source or target rcl refuses as a name
     (clearpath_sensors' image_rectify.launch.py gives the rectify node
-    ``rectify:=`rectif`y/image``, a backquoted default of its ``output_ns`` argument):
-    LAUNCH_REMAP_ILLEGAL, once per rule."""
+    ``rectify:=`rectif`y/image``, a backquoted default of its ``output_ns`` argument, and
+    the same for three transports): LAUNCH_REMAP_ILLEGAL, once per node, the first rule
+    told and the others named."""
+    found: list[tuple[str, str, str]] = []
     for source, target in dict.fromkeys(decl.remaps):
         if not source or source.startswith("__"):
             continue  # __node, __ns, __log_level: not names
@@ -623,10 +625,20 @@ def _illegal_remaps(decl: NodeDecl, config: Configuration) -> None:
                                       ("its target", target, False)):
             why = ros2_name_problem(name, source=is_source)
             if why is not None:
-                config.diagnostics.append(diag.make(
-                    "LAUNCH_REMAP_ILLEGAL", decl.location, rule=f"{source}:={target}",
-                    node=decl.name, side=f"{side} {name!r}", why=why))
+                found.append((f"{source}:={target}", f"{side} {name!r}", why))
                 break
+    if not found:
+        return
+    rule, side, why = found[0]
+    others = [other for other, _, _ in found[1:]]
+    shown = ", ".join(others[:MAX_RULES_NAMED]) + (
+        f" and {len(others) - MAX_RULES_NAMED} more" if len(others) > MAX_RULES_NAMED else "")
+    more = f"; so are {len(others)} more of its rules ({shown})" if others else ""
+    config.diagnostics.append(diag.make("LAUNCH_REMAP_ILLEGAL", decl.location, rule=rule,
+                                        node=decl.name, side=side, why=why, more=more))
+
+
+MAX_RULES_NAMED = 4  # illegal remap rules of a node named beside the first
 
 
 def _illegal_node_name(decl: NodeDecl, config: Configuration) -> None:
