@@ -39,6 +39,7 @@ from .substitution import ArgUndefined, Context, SubstitutionError, substitute, 
 
 Element = etree._Element
 MAX_INCLUDE_DEPTH = 32
+MIN_HINTED_DEFAULT = 3  # characters of an $(optenv) default a missing path is tested for
 # an include's ``$(arg x)``, and what stands for any value of it (``include_pattern``)
 _ARG_SUBSTITUTION = re.compile(r"\$\(arg\s+[^()\s]+\s*\)")
 _ANY_MARK = "@haros-any-value@"
@@ -84,6 +85,9 @@ class Ros1Loader:
         # each ``$(anon x)`` unknown met in a node name, by identity, with its number
         self.anon_parts: dict[int, tuple[Unknown, int]] = {}
         self.includes = 0
+        # $(optenv NAME default) of variables not set here, by the default they took
+        # (``unset_hint``)
+        self.optenv_defaults: dict[str, str] = {}
         # the first <param> tag of each name per parent element (LAUNCH_PARAM_SET_TWICE)
         self.param_tags: dict[tuple[int, str, str, tuple[str, ...]], Element] = {}
         # the if/unless of the element being handled, for the launch tree
@@ -119,6 +123,22 @@ class Ros1Loader:
     def report(self, code: str, scope: Scope | str, element: Element | None,
                **params: object) -> None:
         self.model.diagnostics.append(diag.make(code, self.where(scope, element), **params))
+
+    def unset_hint(self, path: str) -> str:
+        """Why a missing file's path may be as it is: it holds the default of an
+        ``$(optenv NAME default)`` whose variable is not set here (cob_bringup's robot
+        files under ``$(optenv ROBOT !!NO_ROBOT_SET!!)``: the launch wants ROBOT set)."""
+        if not self.optenv_defaults:
+            return ""
+        # the first part of the path that is not there: the one that makes it missing
+        parts = os.path.normpath(os.path.abspath(path)).split(os.sep)
+        missing = next((part for at, part in enumerate(parts) if at and not os.path.exists(
+            os.sep.join(parts[:at + 1]) or os.sep)), None)
+        for default, name in self.optenv_defaults.items():
+            if missing is not None and default in missing:
+                return (f" (the path holds {default!r}, the default of $(optenv {name}): "
+                        f"{name} is not set here)")
+        return ""
 
     def fail(self, scope: Scope, element: Element, detail: str) -> None:
         """Something roslaunch refuses: an error, and the element is skipped."""
@@ -166,6 +186,9 @@ class Ros1Loader:
                 self.report("LAUNCH_ARG_UNSET", scope, element, name=name)
         for detail in dict.fromkeys(ctx.unknown):
             self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=detail)
+        for name, default in ctx.defaults_taken:
+            if len(default.strip()) >= MIN_HINTED_DEFAULT:
+                self.optenv_defaults.setdefault(default.strip(), name)
         for name in dict.fromkeys(ctx.misspelt_packages):
             self.report("PACKAGE_NOT_FOUND", scope, element, name=name,
                         why=self.workspace.absence(name))
@@ -264,7 +287,8 @@ class Ros1Loader:
     def parse(self, path: str, location: Location) -> Element | None:
         if not os.path.isfile(path):
             self.model.diagnostics.append(diag.make(
-                "LAUNCH_FILE_MISSING", location, path=self.workspace.relpath(path)))
+                "LAUNCH_FILE_MISSING", location,
+                path=self.workspace.relpath(path) + self.unset_hint(path)))
             return None
         data, found = read_bytes(path, self.workspace.location(path))
         self.model.diagnostics.extend(found)

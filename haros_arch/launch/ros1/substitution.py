@@ -62,6 +62,9 @@ class Context:
     # (Workspace.misspelt), and the packages so named in a $(find)
     misspelt: Callable[[str], list[str]] = lambda name: []
     misspelt_packages: list[str] = field(default_factory=list)
+    # the $(optenv NAME default) of a variable not set here that took a default: (NAME,
+    # default), so that a file missing at a path holding it can say why
+    defaults_taken: list[tuple[str, str]] = field(default_factory=list)
 
 
 def collect(text: str) -> list[str]:
@@ -177,6 +180,8 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
     if command == "optenv":
         if not args:
             raise SubstitutionError(f"$({raw}) needs a variable name")
+        if args[0] not in ctx.environment and len(args) > 1:
+            ctx.defaults_taken.append((args[0], " ".join(args[1:])))
         return Value.of(ctx.environment.get(args[0], " ".join(args[1:])))
     if command == "find":
         _arity(raw, args, 1)

@@ -122,7 +122,8 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
         loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=note)
         return None
     if not os.path.isfile(path):
-        loader.fail(scope, element, f"file does not exist: {loader.workspace.relpath(path)}")
+        loader.fail(scope, element, f"file does not exist: {loader.workspace.relpath(path)}"
+                                    f"{loader.unset_hint(path)}")
         return None
     data, found = read_bytes(path, loader.where(scope, element), MAX_PARAM_FILE)
     loader.model.diagnostics.extend(found)
