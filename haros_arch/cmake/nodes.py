@@ -345,7 +345,8 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     tests (the route handler names test utilities its tests link). Never one that
     names nothing we can tell,
     nor one that exports plugin or node classes (a plugin's calls reach its host
-    through ``plugins.hosts``, not by linking), nor a class that is a node of its own,
+    through ``plugins.hosts``, not by linking) other than classes the program's
+    ``main()`` builds itself (``_built_or_unexported``), nor a class that is a node of its own,
     which makes its calls on that node (nav2's Costmap2DROS in the planner server: its
     host makes it an instance) unless it is this node's own base class (nav2_util's
     LifecycleNode) or a node the program's ``main()`` builds itself, one of the nodes of
