@@ -1710,7 +1710,6 @@ def _self_writes(module: ast.AST) -> dict[str, list[tuple[ast.AST, bool]]]:
     return writes
 
 
-@functools.lru_cache(maxsize=4096)
 @functools.lru_cache(maxsize=256)
 def _rebound_globals(tree: ast.Module) -> frozenset[str]:
     """The names a module's functions declare ``global`` (and so may rebind), and those
@@ -1737,6 +1736,7 @@ def _rebound_globals(tree: ast.Module) -> frozenset[str]:
     return frozenset(found)
 
 
+@functools.lru_cache(maxsize=4096)
 def _first_time_if(statement: ast.If, module: ast.AST) -> bool:
     """Whether an ``if`` without ``else`` tests a member of ``self`` for being unset
     (``self.pub is None``, ``self.pub == None``, ``not self.ready``) that the module
