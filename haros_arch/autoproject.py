@@ -249,6 +249,7 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
     workspace = scan([folder], env)
     if not workspace.packages:
         raise ProjectError(path, 0, 0, f"no ROS package (package.xml) under {folder}"
+                           + _ignored(workspace)
                            + _manifest_variants(folder if os.path.isdir(path) else path))
     named = os.path.abspath(path if os.path.isdir(path) else folder)
     if os.path.basename(named) == "src":  # a workspace is known by the folder above src/
@@ -290,6 +291,27 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
     if not project.configurations:
         choice.notes.append("no launch file found: only the packages' nodes are analysed")
     return choice
+
+
+MAX_IGNORED_SAID = 5  # markers named when none of a folder's packages is read
+
+
+def _ignored(workspace: Workspace) -> str:
+    """What to say when the folder's packages are all under folders an ignore marker
+    leaves out (interbotix_ros_manipulators' ROS 1 branch: ``CATKIN_IGNORE`` in each
+    robot family's folder): the markers, and how many packages each hides."""
+    if not workspace.ignored:
+        return ""
+    hidden: dict[str, list[str]] = {}
+    for name, (marker, _) in sorted(workspace.ignored.items()):
+        hidden.setdefault(marker, []).append(name)
+    said = [f"{workspace.relpath(marker)} ({len(names)}: {', '.join(names[:3])}"
+            f"{', ...' if len(names) > 3 else ''})"
+            for marker, names in sorted(hidden.items())[:MAX_IGNORED_SAID]]
+    more = len(hidden) - len(said)
+    return (f"; {len(workspace.ignored)} package(s) there are in folders an ignore marker "
+            f"keeps colcon and catkin out of, as this analysis: {'; '.join(said)}"
+            f"{f' and {more} more' if more > 0 else ''}")
 
 
 def _manifest_variants(folder: str) -> str:

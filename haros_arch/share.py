@@ -32,7 +32,7 @@ from __future__ import annotations
 import os
 import posixpath
 import re
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 from . import pysetup
@@ -41,7 +41,7 @@ from .cmake import parse_package as cmake_nodes
 from .cmake.interpreter import BINARY_ROOT
 from .cmake.targets import Configured, Install
 from .evaluate import syntax
-from .files import read_text
+from .files import kept_in, read_text
 from .manifest import other_builds
 from .model.source import Package
 from .workspace import Workspace
@@ -194,11 +194,50 @@ def _from_cmake(package: Package, workspace: Workspace, found: dict[str, str],
             found[relative] = source  # a later rule overwrites, as ``cmake --install``
 
 
-def installed_files(install: Install, package: Package) -> Iterator[tuple[str, str]]:
+def include_map(package: Package, workspace: Workspace) -> dict[str, str]:
+    """Include-relative path -> absolute source file, for the headers a CMake package
+    installs under its prefix's ``include`` folder (``install(DIRECTORY|FILES ...
+    DESTINATION include[/sub])``), cached per package: the names other packages include
+    them by, which the source folders need not hold (zed_components installs
+    ``src/zed_camera/include/`` and ``src/tools/include/`` into
+    ``include/zed_components/``, and zed_debug includes
+    ``<zed_components/zed_camera_component.hpp>``). Empty for a package CMake does not
+    build."""
+    def compute() -> dict[str, str]:
+        found: dict[str, str] = {}
+        if not package.root or not os.path.isfile(
+                os.path.join(package.root, "CMakeLists.txt")):
+            return found
+        interpreter, _ = interpret(package, workspace)  # the build stage reports problems
+        for install in interpreter.installs:
+            for relative, source in installed_files(install, package, _include_sub):
+                if len(found) >= MAX_FILES:
+                    return found
+                found[relative] = source  # a later rule overwrites, as ``cmake --install``
+        return found
+
+    return kept_in(workspace.file_facts, ("include map", package.root), compute)
+
+
+def _include_sub(destination: str, _name: str) -> str | None:
+    """``include/sub`` -> ``sub`` (``""`` for the include folder itself), else None."""
+    text = destination.replace("\\", "/")
+    if text.startswith("/include"):  # ${CMAKE_INSTALL_PREFIX}/include, the prefix unknown
+        text = text[1:]
+    text = posixpath.normpath(text) if text else ""
+    if text == "include":
+        return ""
+    return text[len("include/"):] if text.startswith("include/") else None
+
+
+def installed_files(install: Install, package: Package,
+                    where: Callable[[str, str], str | None] | None = None
+                    ) -> Iterator[tuple[str, str]]:
     """(share-relative path, source file) for each file one install rule puts into the
-    package's share folder."""
+    package's share folder (or, with ``where``, into the folder it maps a destination
+    to a path under: ``_include_sub``)."""
     items, options = _split(install.args)
-    sub = _share_sub(options.destination, package.name)
+    sub = (where or _share_sub)(options.destination, package.name)
     if sub is None:
         return
     root = os.path.realpath(package.root)

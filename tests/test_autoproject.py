@@ -179,6 +179,24 @@ def test_not_a_workspace(tmp_path: Path) -> None:
     assert "manifest" not in str(raised.value)
 
 
+def test_packages_an_ignore_marker_leaves_out_are_said(tmp_path: Path) -> None:
+    """interbotix_ros_manipulators 0bb2b0e (its ROS 1 main branch): ten package.xml files,
+    every robot family's folder with a CATKIN_IGNORE: "no ROS package (package.xml)"
+    said nothing of them. Now the markers are named with the packages they leave out."""
+    for family, names in (("arms_a", ["a_control", "a_gazebo"]), ("arms_b", ["b_control"])):
+        (tmp_path / family).mkdir()
+        (tmp_path / family / "CATKIN_IGNORE").write_text("")
+        for name in names:
+            (tmp_path / family / name).mkdir()
+            (tmp_path / family / name / "package.xml").write_text(ROS1_PKG.format(name=name))
+    with pytest.raises(ProjectError, match="no ROS package") as raised:
+        choose(str(tmp_path), environment={})
+    said = str(raised.value)
+    assert "3 package(s)" in said
+    assert "arms_a/CATKIN_IGNORE (2: a_control, a_gazebo)" in said
+    assert "arms_b/CATKIN_IGNORE (1: b_control)" in said
+
+
 def test_a_package_whose_build_chooses_its_manifest_is_said(tmp_path: Path) -> None:
     """livox_ros_driver2 13eb05e: package_ROS1.xml and package_ROS2.xml at the top, which
     its build.sh copies to package.xml, and sources in src/: no package is read, and the

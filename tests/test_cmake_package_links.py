@@ -610,6 +610,41 @@ def test_a_linked_node_class_main_builds_is_a_node_of_the_process(write_tree) ->
     assert "resolution" in {c.name for c in node.calls if c.kind == "declare"}
 
 
+def test_a_component_class_main_builds_is_run_with_its_registering_file(write_tree) -> None:
+    """zed_debug's ``zed_debug_proc``: ``main()`` makes ``std::make_shared<stereolabs::
+    ZedCamera>(options)`` of zed_components' library, whose constructor is in the file
+    that also registers the class as a component (``RCLCPP_COMPONENTS_REGISTER_NODE``).
+    A file that exports a class was left out of every program that links it (a loader
+    runs it, not the link), so the node had the camera's other files' calls and none
+    of its constructor's (264 calls of 728). A class the program's own ``main()`` builds
+    runs in it by construction, whatever else its file registers."""
+    files = dict(NODES)
+    files["util/src/costmap_ros.cpp"] = NODES["util/src/costmap_ros.cpp"].replace(
+        'declare_parameter("resolution", 0.05);',
+        'declare_parameter("resolution", 0.05);\n          '
+        'RCLCPP_INFO(rclcpp::get_logger("costmap"), "made");') + """
+        #include "rclcpp_components/register_node_macro.hpp"
+        RCLCPP_COMPONENTS_REGISTER_NODE(util::CostmapROS)
+        """
+    files["server/src/server.cpp"] = """
+        #include "util/costmap_ros.hpp"
+        int main(int argc, char ** argv)
+        {
+          rclcpp::init(argc, argv);
+          auto costmap = std::make_shared<util::CostmapROS>("global_costmap");
+          rclcpp::spin(costmap->get_node_base_interface());
+        }
+        """
+    node, _ = _node(write_tree, files, "server", "server")
+    assert "util/src/costmap_ros.cpp" in node.sources
+    assert "resolution" in {c.name for c in node.calls if c.kind == "declare"}
+    # a component main() does not build stays its loader's business
+    files["server/src/server.cpp"] = files["server/src/server.cpp"].replace(
+        "std::make_shared<util::CostmapROS>", "std::make_shared<util::LifecycleNode>")
+    node, _ = _node(write_tree, files, "server", "server")
+    assert "util/src/costmap_ros.cpp" not in node.sources
+
+
 def test_a_nodelet_runs_the_named_files_of_another_package_it_links(write_tree) -> None:
     # mrs_uav_managers' nodelets (plugin classes of a library target linking
     # catkin_LIBRARIES) build mrs_lib's Profiler, which advertises "profiler": the

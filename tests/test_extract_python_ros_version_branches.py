@@ -164,3 +164,60 @@ def test_an_import_chosen_by_the_environment_is_the_branch_s(write_tree, distro)
     calls = [(c.kind, c.name) for c in result.calls]
     assert calls == ([("read", "~port")] if distro == "noetic"
                      else [("declare", "port"), ("read", "port")])
+
+
+TALKER_BY_VERSION = """\
+from std_msgs.msg import String
+from compat.core import get_ros_version
+from compat.node import CompatibleNode
+
+ROS_VERSION = get_ros_version()
+DEBUG = False
+
+
+class Talker(CompatibleNode):
+    def __init__(self):
+        super(Talker, self).__init__("talker")
+        self.pub = self.new_publisher(String, "chatter", 10)
+        if ROS_VERSION == 1:
+            self.descriptions = self.new_publisher(String, "descriptions", 1)
+        if ROS_VERSION == 2:
+            self.events = self.new_publisher(String, "events", 1)
+        if DEBUG:
+            self.debug = self.new_publisher(String, "debug", 1)
+
+
+def main():
+    Talker()
+
+
+if __name__ == "__main__":
+    main()
+"""
+
+
+@pytest.mark.parametrize("distro", ["noetic", "humble"])
+def test_a_method_s_branch_on_a_module_global_of_the_ros_version(write_tree, distro) -> None:
+    """carla ros-bridge's ackermann controller: ``ROS_VERSION =
+    roscomp.get_ros_version()`` at module level, then in ``__init__`` ``if ROS_VERSION ==
+    1:`` a dynamic_reconfigure server (its ``parameter_descriptions`` and
+    ``parameter_updates`` publishers) and ``if ROS_VERSION == 2:`` rclpy's parameter
+    callback. The test was kept as a condition of the calls, never decided: the ROS 2
+    node had the ROS 1 server's publishers "only under if (ROS_VERSION == 1)". A global
+    the module computes once (not a literal written there, which is the code's own
+    switch) is known in its functions as at module level."""
+    root = write_tree({"compat/package.xml": _manifest("compat"),
+                       "compat/src/compat/__init__.py": "",
+                       "compat/src/compat/core.py": CORE,
+                       "compat/src/compat/node.py": NODE,
+                       "talker/package.xml": _manifest("talker"),
+                       "talker/src/talker/__init__.py": "",
+                       "talker/src/talker/talker.py": TALKER_BY_VERSION})
+    workspace = scan([str(root)], {"ROS_DISTRO": distro, **distro_variables(distro)})
+    result = extract_python([str(root / "talker/src/talker/talker.py")], workspace,
+                            package="talker")
+    found = [(c.name, [k.text for k in c.conditions]) for c in result.calls
+             if c.kind == "publish"]
+    assert found == [("chatter", []),
+                     ("descriptions" if distro == "noetic" else "events", []),
+                     ("debug", ["DEBUG"])]

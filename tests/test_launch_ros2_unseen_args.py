@@ -220,3 +220,28 @@ def generate_launch_description():
         model = run(write_tree, f"{shape.replace(' ', '_')}.launch.py", body)
         assert [d.code for d in model.diagnostics] == [
             "LAUNCH_PY_UNSUPPORTED", "LAUNCH_UNKNOWN_VALUE"], shape
+
+
+def test_a_name_of_a_star_import_not_found_says_the_module(write_tree):
+    """isaac_ros_nvblox's example launch files: ``from isaac_ros_launch_utils.all_types
+    import *`` (isaac_ros_common, not in the workspace), then ``IfCondition(...)``,
+    ``SetParameter(...)``, ``LaunchDescription(...)``: each "name IfCondition is not
+    defined here", as though the file were wrong. Now the message names the star import
+    it may come from; a name with none still says only that."""
+    body = """
+from launch import LaunchDescription
+from vendor_launch_utils.all_types import *
+
+def generate_launch_description():
+    actions = [SetParameter('use_sim_time', True)]
+    return LaunchDescription(actions + [where_is_it()])
+"""
+    model = run(write_tree, "main.launch.py", body)
+    said = found(model, "LAUNCH_PY_UNSUPPORTED")
+    assert (line_of(body, "SetParameter("), "name SetParameter is not defined here; it may "
+            "be one of 'from vendor_launch_utils.all_types import *', a module not "
+            "found") in said
+    plain = run(write_tree, "plain.launch.py", body.replace(
+        "from vendor_launch_utils.all_types import *\n", ""))
+    assert (line_of(body, "SetParameter(") - 1, "name SetParameter is not defined here") in \
+        found(plain, "LAUNCH_PY_UNSUPPORTED")

@@ -345,7 +345,8 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     tests (the route handler names test utilities its tests link). Never one that
     names nothing we can tell,
     nor one that exports plugin or node classes (a plugin's calls reach its host
-    through ``plugins.hosts``, not by linking), nor a class that is a node of its own,
+    through ``plugins.hosts``, not by linking) other than classes the program's
+    ``main()`` builds itself (``_built_or_unexported``), nor a class that is a node of its own,
     which makes its calls on that node (nav2's Costmap2DROS in the planner server: its
     host makes it an instance) unless it is this node's own base class (nav2_util's
     LifecycleNode) or a node the program's ``main()`` builds itself, one of the nodes of
@@ -362,7 +363,7 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
 
     def usable(group: list[str]) -> list[str]:
         return [s for s in group if s not in kept
-                and not exported_classes(os.path.join(workspace.root, s), workspace)
+                and _built_or_unexported(s, built, workspace)
                 and all(cls in built or derives_from(cls, kept, workspace)
                         for cls in node_classes(s, workspace))]
 
@@ -398,6 +399,16 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     # a file that names no ROS client library makes no call of the node (its parse
     # errors would only make the node look partial): what it names still counts
     return [*kept, *(s for s in found if uses_ros(s, workspace))]
+
+
+def _built_or_unexported(source: str, built: frozenset[str], workspace: Files) -> bool:
+    """Whether linked ``source`` exports no plugin or component class, or only classes
+    the program's ``main()`` builds itself: those run in its process by construction,
+    not by a loader (zed_debug's ``zed_debug_proc`` makes ``stereolabs::ZedCamera`` of
+    zed_components' library, whose constructor is in the file that registers it as a
+    component)."""
+    exported = exported_classes(os.path.join(workspace.root, source), workspace)
+    return all(name.split("<", 1)[0].rsplit("::", 1)[-1] in built for name, _ in exported)
 
 
 def _run_here(target: Target, own: list[str], sources: SourceMap,

@@ -58,7 +58,7 @@ from dataclasses import dataclass
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
-from ... import cmake
+from ... import cmake, share
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import read_text, write_whole
@@ -484,9 +484,18 @@ class IncludeSetup:
                                if inc not in self.user_dirs]
         # then what the workspace packages they build on export to catkin
         # (``${catkin_INCLUDE_DIRS}``), after their own folders as CMake orders them
-        for root in _depended_roots(roots, workspace):
+        depended = _depended_roots(roots, workspace)
+        for root in depended:
             self.user_dirs += [inc for inc in cmake_includes.exported_include_dirs(
                 root, workspace) if inc not in self.user_dirs]
+        # the headers those packages install under names their folders do not hold
+        # (``_installed_header``), the first package's where two install one name
+        self._installed: dict[str, str] = {}
+        for root in (*roots, *depended):
+            package = workspace.package_of(root)
+            if package is not None and package.root == root:
+                for name, path in share.include_map(package, workspace).items():
+                    self._installed.setdefault(name, path)
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         # the packages being extracted that our stand-ins also provide, with their
@@ -827,9 +836,26 @@ class IncludeSetup:
             self._handled.add(header)
             self._write(header, f'#include "{os.path.join(STANDIN, header)}"\n')
             return None
+        if found is None and (installed := self._installed_header(header)) is not None:
+            return installed
         if found is None and not self._parameter_header(header, where):
             self._empty(header, where)
         return found
+
+    def _installed_header(self, header: str) -> str | None:
+        """The workspace file a package being extracted, or one it builds on, installs
+        as ``header`` under its prefix's ``include`` folder, when no include folder holds
+        that name: a synthesised header that includes it, first on the include path
+        (zed_debug's ``<zed_components/zed_camera_component.hpp>``, installed from
+        zed_components' ``src/zed_camera/include/``; the stand-in left ``stereolabs::
+        ZedCamera`` unknown where the program builds it). None otherwise."""
+        path = self._installed.get(header.replace("\\", "/"))
+        if path is None or not os.path.isfile(path):
+            return None
+        self._handled.add(header)
+        self._write(header, f"// haros_arch: {header} as its package installs it\n"
+                            f'#include "{path}"\n')
+        return path
 
     def _reconfigure(self, header: str, package: str, name: str, where: Location) -> bool:
         """Synthesise the ``<Name>Config.h`` a ``cfg/<file>.cfg`` of the package makes

@@ -495,6 +495,9 @@ class Walker:
         names = {name for at, given in self._loop_names if at == id(frame) for name in given}
         names |= {name for name in self._fixed.get(id(frame), ())
                   if name in frame.locals and _literal(frame.locals[name])}
+        names |= {node.id for node in ast.walk(test) if isinstance(node, ast.Name)
+                  and node.id not in frame.locals and node.id not in names
+                  and self._computed_global(node.id, frame.module)}
         if not names:
             return None
         for node in ast.walk(test):
@@ -508,6 +511,24 @@ class Walker:
         value = self.evaluator.eval(test, frame)
         plain = value.literal if isinstance(value, Value) else value
         return bool(plain) if isinstance(plain, bool | int | float | str) else None
+
+    def _computed_global(self, name: str, module: Module) -> bool:
+        """Whether ``name`` is a global the module computes once at its top level, to a
+        known literal, and no function rebinds (``global``): carla ros-bridge's
+        ``ROS_VERSION = roscomp.get_ros_version()``, from the distribution's
+        ROS_VERSION, tested in its nodes' methods (``if ROS_VERSION == 1:``), which
+        hold the same value there. Not one written as a literal (``DEBUG = False``: the
+        code's own switch, kept as a condition), nor one assigned again
+        (``_rebound_globals``); the caller leaves out the frame's locals."""
+        written = module.constants.get(name)
+        if written is None or isinstance(written, ast.Constant | ast.UnaryOp):
+            return False
+        rebound = _rebound_globals(module.tree)
+        if name in rebound:
+            return False
+        value = self.evaluator.eval(ast.Name(id=name, ctx=ast.Load()), Frame(module))
+        plain = value.literal if isinstance(value, Value) else value
+        return isinstance(plain, bool | int | float | str)
 
     def _held(self, test: ast.expr, frame: Frame) -> tuple[tuple[str, str], ...] | None:
         """What ``test`` reads that holds a parameter's value, as the graph decides a
@@ -1687,6 +1708,32 @@ def _self_writes(module: ast.AST) -> dict[str, list[tuple[ast.AST, bool]]]:
         for member in members:
             writes.setdefault(member, []).append((node, constant))
     return writes
+
+
+@functools.lru_cache(maxsize=256)
+def _rebound_globals(tree: ast.Module) -> frozenset[str]:
+    """The names a module's functions declare ``global`` (and so may rebind), and those
+    its top level assigns more than once or other than by a plain assignment."""
+    found: set[str] = set()
+    assigned: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Global):
+            found.update(node.names)
+    for statement in tree.body:
+        targets: list[ast.expr] = []
+        if isinstance(statement, ast.Assign):
+            targets = list(statement.targets)
+        elif isinstance(statement, ast.AnnAssign | ast.AugAssign):
+            targets = [statement.target]
+            if isinstance(statement, ast.AugAssign) and isinstance(statement.target, ast.Name):
+                found.add(statement.target.id)
+        for target in targets:
+            for node in ast.walk(target):
+                if isinstance(node, ast.Name):
+                    if node.id in assigned:
+                        found.add(node.id)
+                    assigned.add(node.id)
+    return frozenset(found)
 
 
 @functools.lru_cache(maxsize=4096)

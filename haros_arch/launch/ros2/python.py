@@ -39,6 +39,7 @@ from ...workspace import Workspace
 from . import entities as e
 from .python_expressions import (
     UNBOUND,
+    UNFOUND_STARS,
     Expressions,
     _Bound,
     _Environ,
@@ -506,6 +507,10 @@ class Interpreter(Expressions):
                 env[alias.asname or alias.name] = ops.MATH[alias.name]  # from math import pi
             elif found is None and os_value(module, alias.name) is not None:
                 env[alias.asname or alias.name] = os_value(module, alias.name)
+            elif found is None and alias.name == "*":
+                # a module not found: the names it binds are not known here (said where
+                # one is used: ``lookup``)
+                env[UNFOUND_STARS] = [*env.get(UNFOUND_STARS, []), module]
             elif found is None:
                 env[alias.asname or alias.name] = Ref(f"{module}.{alias.name}")
             elif alias.name in found.names:

@@ -57,6 +57,10 @@ from .python_values import (
 
 # what ``Expressions.bound`` gives for a name no scope defines
 UNBOUND = object()
+# the modules not found that a scope star-imports (``from isaac_ros_launch_utils.all_types
+# import *``, of a package not in the workspace): a name not defined there may be one
+# of theirs, which the message of its use says
+UNFOUND_STARS = "__unfound_stars__"
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -153,6 +157,12 @@ class Expressions(Walker):
             return Ref(name)
         if name in ("True", "False", "None"):
             return {"True": True, "False": False, "None": None}[name]
+        stars = self.bound(UNFOUND_STARS, env)
+        if isinstance(stars, list) and stars:
+            return self.unsupported(node, f"name {name} is not defined here; it may be one of "
+                                          + ", ".join(f"'from {m} import *'" for m in stars)
+                                          + (", a module" if len(stars) == 1 else ", modules")
+                                          + " not found")
         return self.unsupported(node, f"name {name} is not defined here")
 
     # -- this configuration of the one evaluator's walk (``Walker``) -------------------
