@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from . import diagnostics as diag
 from . import runcache
+from .distro_guess import guessed_distro
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
 from .files import content_digest, recording
 from .manifest import other_builds
@@ -202,6 +203,9 @@ def source_distro(project: Project, env: Mapping[str, str]) -> str | None:
         return project.distro
     said = {spec.environment.get("ROS_DISTRO", env.get("ROS_DISTRO", ""))
             for spec in project.configurations} or {env.get("ROS_DISTRO", "")}
+    if len(said) == 1 and "" in said:
+        guessed = guessed_distro(project, env)
+        return guessed[0] if guessed is not None else None
     return (said.pop() or None) if len(said) == 1 else None
 
 
@@ -280,7 +284,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
-                      project.distro, model.packages)
+                      project.distro, model.packages, guessed_distro(project, env))
     if project.nodes:
         model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
 
