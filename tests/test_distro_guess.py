@@ -108,3 +108,17 @@ def test_without_a_sign_or_with_ros_distro_set_no_guess(write_tree) -> None:
                                      env={"ROS_DISTRO": "jazzy"})
     assert _said(config, "PLUGIN_NOT_FOUND")
     assert "ROS_DISTRO" in _said(config, "MODEL_DISTRO")[0]
+
+
+def test_init_says_the_guess_without_setting_it(write_tree, tmp_path) -> None:
+    from haros_arch.cli import main
+
+    root = write_tree({
+        "ws/src/demo/package.xml": package_xml("demo", "ament_cmake"),
+        "ws/src/demo/launch/a.launch.xml": "<launch><node pkg='demo' exec='a'/></launch>\n",
+        "ws/src/demo/Dockerfile": "FROM ros:humble-ros-base\n"})
+    target = tmp_path / "project.yaml"
+    assert main(["init", str(root / "ws"), "-o", str(target)]) == 0
+    text = target.read_text()
+    assert "# distro: humble  # guessed from its build and CI files" in text
+    assert load(str(target)).distro is None
