@@ -10,10 +10,11 @@ is on (``humble``, ``ros2-humble``, ``jazzy-devel``); the build and CI files
 (Dockerfiles, ``.github`` workflows, ``.repos`` files, devcontainers: ``ROS_DISTRO:
 humble``, ``FROM ros:humble``); the README's ``ROS 2 Humble``. The first of these that
 names a ROS 2 distribution decides: the default (Jazzy) when it is among those named
-(the tree is built for it too), else Humble when named (the other release whose models
-ship), else the one named most (the newest of a tie). Only files, never a command: the
-branch is read from ``.git/HEAD``. Bounded: folders four levels down, a few thousand
-entries, 256 KiB of a file.
+(the tree is built for it too), else Humble (the other release whose models ship), else
+Iron (which takes Jazzy's); a tree that names only other releases (Foxy, Galactic,
+Rolling) keeps the default, as a guess should not make every modelled node partial.
+Only files, never a command: the branch is read from ``.git/HEAD``. Bounded: folders
+four levels down, a few thousand entries, 256 KiB of a file.
 """
 
 from __future__ import annotations
@@ -30,8 +31,9 @@ if TYPE_CHECKING:
 
 ROS2 = ("dashing", "eloquent", "foxy", "galactic", "humble", "iron", "jazzy", "kilted",
         "rolling")
-DEFAULT = "jazzy"
-PREFERRED = "humble"  # the other ROS 2 release whose interface models ship
+# the releases a guess may choose, in order: the default, the other release whose
+# interface models ship, and one that takes the default's models as its own
+MODELLED = ("jazzy", "humble", "iron")
 MAX_DEPTH = 4
 MAX_ENTRIES = 5_000
 MAX_READ = 256 * 1024
@@ -60,16 +62,22 @@ def guess(roots: list[str]) -> tuple[str, str] | None:
     """(distribution, why) for ROS 2, or None when the files name none."""
     for level, names in (("its git branch", _branches(roots)), *_files(roots)):
         if names:
-            return _choose(names), f"guessed from {level}, which name {_said(names)}"
+            chosen = _choose(names)
+            if chosen is None:
+                return None  # names only releases without models of their own
+            return chosen, f"guessed from {level}, which name {_said(names)}"
     return None
 
 
-def _choose(names: Counter[str]) -> str:
-    if DEFAULT in names:
-        return DEFAULT
-    if PREFERRED in names:
-        return PREFERRED
-    return max(names, key=lambda n: (names[n], ROS2.index(n)))
+def _choose(names: Counter[str]) -> str | None:
+    """The release to read the tree as, of those named: only one whose interface models
+    ship (or that takes another's as its own: iron), as a guess should not make every
+    modelled node partial (an end-of-life or rolling release takes a nearer release's
+    models as stand-ins, each node that takes one partial: a ``distro:`` says so)."""
+    for name in MODELLED:
+        if name in names:
+            return name
+    return None
 
 
 def _said(names: Counter[str]) -> str:

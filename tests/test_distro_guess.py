@@ -39,8 +39,12 @@ def test_build_files_then_readme_and_what_several_names_give(write_tree) -> None
     assert guess([str(root / "a")])[0] == "jazzy"  # the default, named among others
     root = write_tree({"b/.github/workflows/ci.yml": "distro: [humble, iron, rolling]\n"})
     assert guess([str(root / "b")])[0] == "humble"  # the other release with models
+    # a release without models of its own is no guess (its stand-ins would make every
+    # modelled node partial): rosbot_xl_ros of 2022, galactic's, keeps the default
     root = write_tree({"c/ci.repos": "version: foxy\n", "c/docker/Dockerfile": "FROM ros:foxy\n"})
-    assert guess([str(root / "c")])[0] == "foxy"
+    assert guess([str(root / "c")]) is None
+    root = write_tree({"f/.github/workflows/ci.yml": "distro: [iron, rolling]\n"})
+    assert guess([str(root / "f")])[0] == "iron"
     root = write_tree({"d/README.md": "This ROS2 Humble package ... (not for ROS 1 Noetic)\n"})
     distro, why = guess([str(root / "d")])
     assert distro == "humble" and "README" in why
