@@ -46,7 +46,21 @@ _SKIPPED = frozenset({"build", "install", "log", "devel", "node_modules", "__pyc
 def guessed_distro(project: Project, env: Mapping[str, str]) -> tuple[str, str] | None:
     """The ROS 2 distribution the workspace's own files name, with why, when neither the
     project file's ``distro:`` nor a ROS_DISTRO (the run's, a configuration's) says
-    one; read once per set of workspace folders in a process."""
+    one; read once per set of workspace folders in a process. For interface models."""
+    found = _said_for(project, env)
+    return None if found is None else (found[0], found[1])
+
+
+def sole_distro(project: Project, env: Mapping[str, str]) -> str | None:
+    """The same, only when the files name that one ROS 2 release and no other: the
+    rclcpp the C++ sources are read against. A tree built for several (navigation2's CI
+    names Rolling, Kilted, Jazzy and Humble) keeps its version tests undecided
+    (``CPP_VERSION_UNKNOWN``) rather than read as the release the models take."""
+    found = _said_for(project, env)
+    return found[0] if found is not None and found[2] else None
+
+
+def _said_for(project: Project, env: Mapping[str, str]) -> tuple[str, str, bool] | None:
     if project.distro or env.get("ROS_DISTRO") or any(
             spec.environment.get("ROS_DISTRO") for spec in project.configurations):
         return None
@@ -54,18 +68,20 @@ def guessed_distro(project: Project, env: Mapping[str, str]) -> tuple[str, str] 
 
 
 @functools.lru_cache(maxsize=8)
-def _guess(roots: tuple[str, ...]) -> tuple[str, str] | None:
+def _guess(roots: tuple[str, ...]) -> tuple[str, str, bool] | None:
     return guess(list(roots))
 
 
-def guess(roots: list[str]) -> tuple[str, str] | None:
-    """(distribution, why) for ROS 2, or None when the files name none."""
+def guess(roots: list[str]) -> tuple[str, str, bool] | None:
+    """(distribution, why, whether it is the one release named) for ROS 2, or None when
+    the files name none with models of its own."""
     for level, names in (("its git branch", _branches(roots)), *_files(roots)):
         if names:
             chosen = _choose(names)
             if chosen is None:
                 return None  # names only releases without models of their own
-            return chosen, f"guessed from {level}, which name {_said(names)}"
+            return (chosen, f"guessed from {level}, which name {_said(names)}",
+                    len(names) == 1)
     return None
 
 

@@ -25,18 +25,18 @@ def test_the_git_branch_decides_first(write_tree) -> None:
                        "main/.git/HEAD": "ref: refs/heads/main\n",
                        "main/.github/workflows/ci.yml": "env:\n  ROS_DISTRO: humble\n"})
     assert guess([str(root / "wt")])[0] == "jazzy"
-    distro, why = guess([str(root / "main")])
+    distro, why, _ = guess([str(root / "main")])
     assert distro == "humble" and ".github/workflows/ci.yml" in why
     # a workspace whose src/<repo> is the checkout
     root = write_tree({"ws/src/repo/.git/HEAD": "ref: refs/heads/humble-devel\n",
                        "ws/src/repo/pkg/package.xml": "<package/>"})
-    assert guess([str(root / "ws")])[0] == "humble"
+    assert guess([str(root / "ws")])[:3:2] == ("humble", True)
 
 
 def test_build_files_then_readme_and_what_several_names_give(write_tree) -> None:
     root = write_tree({"a/.github/workflows/ci.yml": "matrix:\n  distro: [humble, jazzy]\n",
                        "a/README.md": "Works on ROS 2 Foxy.\n"})
-    assert guess([str(root / "a")])[0] == "jazzy"  # the default, named among others
+    assert guess([str(root / "a")])[:3:2] == ("jazzy", False)  # the default, among others
     root = write_tree({"b/.github/workflows/ci.yml": "distro: [humble, iron, rolling]\n"})
     assert guess([str(root / "b")])[0] == "humble"  # the other release with models
     # a release without models of its own is no guess (its stand-ins would make every
@@ -46,7 +46,7 @@ def test_build_files_then_readme_and_what_several_names_give(write_tree) -> None
     root = write_tree({"f/.github/workflows/ci.yml": "distro: [iron, rolling]\n"})
     assert guess([str(root / "f")])[0] == "iron"
     root = write_tree({"d/README.md": "This ROS2 Humble package ... (not for ROS 1 Noetic)\n"})
-    distro, why = guess([str(root / "d")])
+    distro, why, _ = guess([str(root / "d")])
     assert distro == "humble" and "README" in why
     root = write_tree({"e/README.md": "A humble little robot.\n", "e/pkg/package.xml": "x"})
     assert guess([str(root / "e")]) is None  # prose without "ROS 2 <name>": no guess
@@ -126,3 +126,9 @@ def test_init_says_the_guess_without_setting_it(write_tree, tmp_path) -> None:
     text = target.read_text()
     assert "# distro: humble  # guessed from its build and CI files" in text
     assert load(str(target)).distro is None
+
+
+def test_the_c_plus_plus_is_read_for_a_release_only_when_it_is_the_one_named(write_tree):
+    project, _config, env = _analysed(write_tree, {
+        "src/demo/.github/workflows/ci.yml": "matrix: {distro: [humble, rolling]}\n"})
+    assert source_distro(project, env) is None  # models humble's, version tests undecided
