@@ -345,7 +345,14 @@ def project_text(choice: Choice) -> str:
     head = ("# haros-arch project file, written by 'haros-arch init'. One configuration per\n"
             "# launch file that no other launch file includes, arguments at their defaults;\n"
             "# edit freely (see README.md, 'Project file').\n%YAML 1.1\n---\n")
-    return head + yaml.safe_dump(data, sort_keys=False, default_flow_style=False)
+    text = head + yaml.safe_dump(data, sort_keys=False, default_flow_style=False)
+    from .distro_guess import guessed_distro
+
+    guessed = guessed_distro(project, {})
+    if guessed is not None:  # said, not set: a ROS_DISTRO of the shell still wins
+        text += (f"# distro: {guessed[0]}  # {guessed[1]}; set it to fix the interface "
+                 "models and rclcpp the analysis reads for\n")
+    return text
 
 
 # what the command line chose for paths that are not project files (--launch, --arg)

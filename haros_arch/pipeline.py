@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from . import diagnostics as diag
 from . import runcache
+from .distro_guess import guessed_distro, sole_distro
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
 from .files import content_digest, recording
 from .manifest import other_builds
@@ -197,11 +198,14 @@ def source_distro(project: Project, env: Mapping[str, str]) -> str | None:
     """The ROS distribution the sources are read for (the rclcpp version the C++
     stand-ins announce): the project file's ``distro:``, else ``ROS_DISTRO`` of the
     configurations' environments when they agree (the sources are read once for all of
-    them), else of the run's; None when none is said or they differ."""
+    them), else of the run's, else the one ROS 2 release the workspace's files name
+    (``distro_guess.sole_distro``); None when none is said or they differ."""
     if project.distro:
         return project.distro
     said = {spec.environment.get("ROS_DISTRO", env.get("ROS_DISTRO", ""))
             for spec in project.configurations} or {env.get("ROS_DISTRO", "")}
+    if len(said) == 1 and "" in said:
+        return sole_distro(project, env)
     return (said.pop() or None) if len(said) == 1 else None
 
 
@@ -280,7 +284,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
 
     project_file = Location(file=os.path.relpath(project.path))
     models = Attacher(Library(project.models, DATA if options.models else None),
-                      project.distro, model.packages)
+                      project.distro, model.packages, guessed_distro(project, env))
     if project.nodes:
         model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
 

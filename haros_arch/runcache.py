@@ -41,6 +41,7 @@ from typing import Any, TypeVar
 
 from . import __version__
 from .collector import held_back
+from .distro_guess import guessed_distro
 from .files import MAX_FILE_BYTES, content_digest, write_whole
 from .model.finding import Finding
 from .model.load import from_data
@@ -251,8 +252,10 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
         return None
     snap.save()
     # locations are written relative to the current folder: it is an input too
+    # (the distribution the workspace's files name: its git branch is no file snapshotted)
     head = [FORMAT, __version__, os.getcwd(), repr(project),
-            sorted(kv for kv in env.items() if kv[0] not in SHELL_BOOKKEEPING), models]
+            sorted(kv for kv in env.items() if kv[0] not in SHELL_BOOKKEEPING), models,
+            guessed_distro(project, env)]
     return (_digest(json.dumps([*head, snap.digest()])),
             _digest(json.dumps([*head, snap.digest(outer=True)])))
 

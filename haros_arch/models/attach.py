@@ -64,13 +64,18 @@ def stand_ins(distro: str) -> tuple[str, ...]:
 
 
 def choose_distro(setting: str | None, environment: Mapping[str, str],
-                  launch: LaunchModel) -> tuple[str, str]:
-    """The distribution whose models a configuration uses, and why that one."""
+                  launch: LaunchModel, guessed: tuple[str, str] | None = None
+                  ) -> tuple[str, str]:
+    """The distribution whose models a configuration uses, and why that one: the
+    project file's, the environment's, for ROS 2 launch files the one the workspace's
+    own files name (``guessed``: ``distro_guess``), else the default of their ROS."""
     if setting:
         return setting, "the project file's 'distro'"
     if environment.get("ROS_DISTRO"):
         return environment["ROS_DISTRO"], "ROS_DISTRO in the configuration's environment"
     version = 2 if any(d.ros_version == 2 for d in launch.nodes) else 1
+    if version == 2 and guessed is not None:
+        return guessed
     return DEFAULT_DISTRO[version], f"guessed: its launch files are ROS {version}"
 
 
@@ -79,9 +84,10 @@ class Attacher:
     made once and listed in ``packages`` (so the JSON model shows it)."""
 
     def __init__(self, library: Library, distro: str | None,
-                 packages: list[Package]) -> None:
+                 packages: list[Package], guessed: tuple[str, str] | None = None) -> None:
         self.library = library
         self.distro = distro
+        self.guessed = guessed  # the ROS 2 distribution the workspace's files name
         self.packages = packages
         self._made: dict[tuple[str, str, str, bool], Node] = {}
 
@@ -100,7 +106,7 @@ class Attacher:
                     or (nodelet_plugin(decl) is None and is_container(decl))):
                 continue
             if chosen is None:
-                chosen = choose_distro(self.distro, environment, launch)
+                chosen = choose_distro(self.distro, environment, launch, self.guessed)
                 found.append(diag.make("MODEL_DISTRO", decl.location, distro=chosen[0],
                                        why=chosen[1] + self._standing(chosen[0])))
             plugin = nodelet_plugin(decl)
@@ -139,7 +145,7 @@ class Attacher:
         source to its node in that package's model (kind ``plugin``, by lookup name or
         C++ type; or any node by ``pkg/exec``, for the nodes hosts make), for the
         configuration's distribution."""
-        distro = choose_distro(self.distro, environment, launch)[0]
+        distro = choose_distro(self.distro, environment, launch, self.guessed)[0]
         return PluginFinder(self, distro)
 
     def _find(self, package: str, distro: str) -> InterfaceModel | None:

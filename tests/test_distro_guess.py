@@ -1,0 +1,134 @@
+"""The ROS 2 distribution a workspace's own files name (``distro_guess``), used for its
+interface models and the rclcpp its C++ is read against when neither a project
+``distro:`` nor ROS_DISTRO says one: vector_pursuit_controller (its README: "ROS2
+Humble") sets nav2's Humble lookup names, ``nav2_navfn_planner/NavfnPlanner``, which
+Jazzy's models do not export: 6 PLUGIN_NOT_FOUND under the Jazzy default, none under
+Humble's."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.distro_guess import guess
+from haros_arch.pipeline import Options, analyse, source_distro
+from haros_arch.project import load
+
+
+def test_the_git_branch_decides_first(write_tree) -> None:
+    root = write_tree({"repo/.git/HEAD": "ref: refs/heads/ros2-humble\n",
+                       "repo/Dockerfile": "FROM ros:jazzy\n"})
+    assert guess([str(root / "repo")])[0] == "humble"
+    # a worktree's .git file; a branch naming no distribution leaves it to the files
+    root = write_tree({"wt/.git": "gitdir: ../gitdir\n", "gitdir/HEAD": "ref: refs/heads/jazzy\n",
+                       "main/.git/HEAD": "ref: refs/heads/main\n",
+                       "main/.github/workflows/ci.yml": "env:\n  ROS_DISTRO: humble\n"})
+    assert guess([str(root / "wt")])[0] == "jazzy"
+    distro, why, _ = guess([str(root / "main")])
+    assert distro == "humble" and ".github/workflows/ci.yml" in why
+    # a workspace whose src/<repo> is the checkout
+    root = write_tree({"ws/src/repo/.git/HEAD": "ref: refs/heads/humble-devel\n",
+                       "ws/src/repo/pkg/package.xml": "<package/>"})
+    assert guess([str(root / "ws")])[:3:2] == ("humble", True)
+
+
+def test_build_files_then_readme_and_what_several_names_give(write_tree) -> None:
+    root = write_tree({"a/.github/workflows/ci.yml": "matrix:\n  distro: [humble, jazzy]\n",
+                       "a/README.md": "Works on ROS 2 Foxy.\n"})
+    assert guess([str(root / "a")])[:3:2] == ("jazzy", False)  # the default, among others
+    root = write_tree({"b/.github/workflows/ci.yml": "distro: [humble, iron, rolling]\n"})
+    assert guess([str(root / "b")])[0] == "humble"  # the other release with models
+    # a release without models of its own is no guess (its stand-ins would make every
+    # modelled node partial): rosbot_xl_ros of 2022, galactic's, keeps the default
+    root = write_tree({"c/ci.repos": "version: foxy\n", "c/docker/Dockerfile": "FROM ros:foxy\n"})
+    assert guess([str(root / "c")]) is None
+    root = write_tree({"f/.github/workflows/ci.yml": "distro: [iron, rolling]\n"})
+    assert guess([str(root / "f")])[0] == "iron"
+    root = write_tree({"d/README.md": "This ROS2 Humble package ... (not for ROS 1 Noetic)\n"})
+    distro, why, _ = guess([str(root / "d")])
+    assert distro == "humble" and "README" in why
+    root = write_tree({"e/README.md": "A humble little robot.\n", "e/pkg/package.xml": "x"})
+    assert guess([str(root / "e")]) is None  # prose without "ROS 2 <name>": no guess
+
+
+PARAMS = """
+planner_server:
+  ros__parameters:
+    planner_plugins: ["GridBased"]
+    GridBased:
+      plugin: "nav2_navfn_planner/NavfnPlanner"
+      tolerance: 0.5
+"""
+
+LAUNCH = """
+<launch>
+  <node pkg="nav2_planner" exec="planner_server" name="planner_server">
+    <param from="$(find-pkg-share demo)/config/nav.yaml"/>
+  </node>
+</launch>
+"""
+
+
+def _analysed(write_tree, extra: dict[str, str], env: dict[str, str] | None = None):
+    root = write_tree({
+        "src/demo/package.xml": package_xml("demo", "ament_cmake").replace(
+            "</package>", "<exec_depend>nav2_planner</exec_depend></package>"),
+        "src/demo/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.8)\nproject(demo)\n"
+            "find_package(ament_cmake REQUIRED)\n"
+            "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})\n"
+            "ament_package()\n"),
+        "src/demo/config/nav.yaml": PARAMS,
+        "src/demo/launch/nav.launch.xml": LAUNCH,
+        "project.yaml": ("project: p\nworkspace: [src]\n"
+                         "configurations:\n  c: [demo/launch/nav.launch.xml]\n"),
+        **extra})
+    project = load(str(root / "project.yaml"))
+    run_env = {"PATH": os.environ.get("PATH", ""), **(env or {})}
+    model = analyse(project, run_env, Options(cache_dir=None))
+    (config,) = model.configurations
+    return project, config, run_env
+
+
+def _said(config, code: str) -> list[str]:
+    return [d.message for d in config.diagnostics if d.code == code]
+
+
+def test_a_humble_tree_takes_humble_s_models(write_tree) -> None:
+    project, config, env = _analysed(write_tree, {"src/demo/README.md": "For ROS 2 Humble.\n"})
+    assert not _said(config, "PLUGIN_NOT_FOUND")
+    (note,) = _said(config, "MODEL_DISTRO")
+    assert "humble" in note and "README" in note
+    assert source_distro(project, env) == "humble"
+
+
+def test_without_a_sign_or_with_ros_distro_set_no_guess(write_tree) -> None:
+    project, config, env = _analysed(write_tree, {})
+    assert _said(config, "PLUGIN_NOT_FOUND")  # Jazzy's nav2 exports no such lookup name
+    assert "jazzy" in _said(config, "MODEL_DISTRO")[0]
+    assert source_distro(project, env) is None
+    project, config, env = _analysed(write_tree, {"src/demo/README.md": "For ROS 2 Humble.\n"},
+                                     env={"ROS_DISTRO": "jazzy"})
+    assert _said(config, "PLUGIN_NOT_FOUND")
+    assert "ROS_DISTRO" in _said(config, "MODEL_DISTRO")[0]
+
+
+def test_init_says_the_guess_without_setting_it(write_tree, tmp_path) -> None:
+    from haros_arch.cli import main
+
+    root = write_tree({
+        "ws/src/demo/package.xml": package_xml("demo", "ament_cmake"),
+        "ws/src/demo/launch/a.launch.xml": "<launch><node pkg='demo' exec='a'/></launch>\n",
+        "ws/src/demo/Dockerfile": "FROM ros:humble-ros-base\n"})
+    target = tmp_path / "project.yaml"
+    assert main(["init", str(root / "ws"), "-o", str(target)]) == 0
+    text = target.read_text()
+    assert "# distro: humble  # guessed from its build and CI files" in text
+    assert load(str(target)).distro is None
+
+
+def test_the_c_plus_plus_is_read_for_a_release_only_when_it_is_the_one_named(write_tree):
+    project, _config, env = _analysed(write_tree, {
+        "src/demo/.github/workflows/ci.yml": "matrix: {distro: [humble, rolling]}\n"})
+    assert source_distro(project, env) is None  # models humble's, version tests undecided
