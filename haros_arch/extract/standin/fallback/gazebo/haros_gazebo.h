@@ -21,6 +21,23 @@
 
 #define override
 
+// gazebo/util/system.hh: the symbol visibility of Gazebo's libraries and of plugins,
+// written between ``class`` and the name (``class GZ_PLUGIN_VISIBLE MyPlugin :
+// public ModelPlugin``); attributes only, empty here as in a static build
+#define GAZEBO_VISIBLE
+#define GAZEBO_HIDDEN
+#define GZ_COMMON_VISIBLE
+#define GZ_MATH_VISIBLE
+#define GZ_TRANSPORT_VISIBLE
+#define GZ_MSGS_VISIBLE
+#define GZ_RENDERING_VISIBLE
+#define GZ_UTIL_VISIBLE
+#define GZ_PLUGIN_VISIBLE
+#define GZ_PLUGIN_HIDDEN
+#define GZ_PHYSICS_VISIBLE
+#define GZ_SENSORS_VISIBLE
+#define GZ_GUI_VISIBLE
+
 // gazebo/gazebo_config.h: Gazebo 11 (the version of ROS Noetic, Foxy and Humble)
 #define GAZEBO_MAJOR_VERSION 11
 #define GAZEBO_MINOR_VERSION 0
