@@ -65,6 +65,17 @@ template <class T, class U> shared_ptr<T> dynamic_pointer_cast(const U &_value);
 
 namespace gazebo
 {
+// Gazebo's libraries, by namespace: what a plugin uses of them (``common::Time``,
+// ``physics::ModelPtr``) is declared permissively there, Gazebo's, not a ROS
+// package's of that name (a workspace package ``common``)
+namespace common {}
+namespace physics {}
+namespace sensors {}
+namespace rendering {}
+namespace event {}
+namespace msgs {}
+namespace util {}
+namespace gui {}
 // gazebo/transport: Gazebo's own topics (not ROS): a plugin advertises and subscribes
 // gz messages there, which makes no ROS call; declared so that its code parses
 namespace transport
