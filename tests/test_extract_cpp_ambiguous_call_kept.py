@@ -71,7 +71,10 @@ def test_an_ambiguous_call_kept_by_its_name_hides_nothing(tmp_path: Path) -> Non
 
 def test_another_error_beside_it_still_may_hide_a_call(tmp_path: Path) -> None:
     result = _extract(tmp_path, NAV)
-    near = [d for d in result.diagnostics if d.code == "CPP_ERROR_NEAR_CALL"]
+    # (the unknown helper, called in a method of a class without bases, is declared
+    # at namespace scope: the parse reads the call, and says the node is given to it)
+    near = [d for d in result.diagnostics
+            if d.code in ("CPP_ERROR_NEAR_CALL", "CPP_NODE_TO_UNKNOWN")]
     assert [d.location.line for d in near] == [NAV.splitlines().index(
         "    undeclared_helper(private_nh);") + 1], near
 

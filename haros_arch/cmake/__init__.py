@@ -433,6 +433,9 @@ def _interpreter(package: Package, workspace: Workspace,
         return other.root, config_extras(name, workspace)
 
     interpreter.extras_of = extras_of
+    interpreter.workspace_holds = lambda path: workspace.holds(path) or path in [
+        os.path.abspath(folder).rstrip(os.sep) for folder in workspace.folders]
+    interpreter.submodule_of = workspace.submodule_of
     return interpreter
 
 

@@ -214,6 +214,71 @@ def _file(it: Interpreter, command: Invocation, args: list[str]) -> None:
         it.unset(args[2] if sub in ("REAL_PATH",) and len(args) > 2 else args[-1])
 
 
+# the keywords of find_path / find_file that end a list of names or folders
+_FIND_KEYWORDS = frozenset({
+    "NAMES", "HINTS", "PATHS", "PATH_SUFFIXES", "DOC", "NO_CACHE", "REQUIRED",
+    "OPTIONAL", "REGISTRY_VIEW", "VALIDATOR", "NAMES_PER_DIR", "NO_DEFAULT_PATH",
+    "NO_PACKAGE_ROOT_PATH", "NO_CMAKE_PATH", "NO_CMAKE_ENVIRONMENT_PATH",
+    "NO_SYSTEM_ENVIRONMENT_PATH", "NO_CMAKE_SYSTEM_PATH", "NO_CMAKE_INSTALL_PREFIX",
+    "CMAKE_FIND_ROOT_PATH_BOTH", "ONLY_CMAKE_FIND_ROOT_PATH", "NO_CMAKE_FIND_ROOT_PATH"})
+
+
+@handles("find_path", "find_file")
+def _find_path(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``find_path(VAR NAMES n... HINTS dir... PATHS dir... PATH_SUFFIXES s...)`` (and
+    the short form ``find_path(VAR n dir...)``): the first folder given, with each
+    suffix, that lies in the workspace and holds one of the names; ``find_file`` the file
+    itself. A folder of a git submodule not checked out here is the value the build
+    finds once it is (darknet_ros' ``find_path(DARKNET_PATH NAMES README.md HINTS
+    ${CMAKE_CURRENT_SOURCE_DIR}/../darknet/)``, whose sources lie there); anything
+    else (CMake's default search of the build machine's system folders) is not known
+    here: the variable is left so. A value in the cache already is kept, as CMake
+    searches no more."""
+    if len(args) < 2 or it.workspace_holds is None:
+        return
+    var, rest = args[0], args[1:]
+    cached = it.cache.get(var)
+    if cached and not cached.upper().endswith("NOTFOUND"):
+        return
+    lists: dict[str, list[str]] = {"NAMES": [], "HINTS": [], "PATHS": [],
+                                   "PATH_SUFFIXES": []}
+    if rest[0] not in _FIND_KEYWORDS:  # the short form: a name, then folders
+        lists["NAMES"].append(rest[0])
+        rest = ["PATHS", *rest[1:]]
+    current: list[str] | None = None
+    skip = False
+    for word in rest:
+        if skip:
+            skip = False
+        elif word in _FIND_KEYWORDS:
+            current = lists.get(word)
+        elif word == "ENV" and current is not None and current is not lists["NAMES"]:
+            skip = True  # a folder from the environment of the build machine
+        elif current is not None:
+            current.append(word)
+    names = [n for n in lists["NAMES"] if n]
+    suffixes = ["", *lists["PATH_SUFFIXES"]]
+    folders = [os.path.normpath(os.path.join(it.path(folder), suffix))
+               for folder in [*lists["HINTS"], *lists["PATHS"]] if folder
+               for suffix in suffixes]
+    folders = [f for f in dict.fromkeys(folders) if it.workspace_holds(f)]
+    value = next((folder if command.name.lower() == "find_path"
+                  else os.path.join(folder, name)
+                  for folder in folders for name in names
+                  if os.path.exists(os.path.join(folder, name))), None)
+    if value is None and names and it.submodule_of is not None:
+        value = next((folder if command.name.lower() == "find_path"
+                      else os.path.join(folder, names[0])
+                      for folder in folders if it.submodule_of(folder) is not None), None)
+    if value is None:
+        return
+    if "NO_CACHE" in rest:
+        it.set(var, value)
+    else:
+        it.cache[var] = value
+        it.assigned.add(var)
+
+
 def _glob(it: Interpreter, args: list[str], recurse: bool) -> list[str]:
     relative: str | None = None
     patterns: list[str] = []

@@ -145,6 +145,11 @@ class Interpreter:
         # ament CONFIG_EXTRAS, catkin CFG_EXTRAS), with that package's folder: given by
         # the reading of the workspace (``cmake.config_extras``), None without one
         self.extras_of: Callable[[str], tuple[str, list[str]]] | None = None
+        # whether an absolute path lies in the workspace, and the git submodule not
+        # checked out that it lies in (``Workspace.holds``, ``Workspace.submodule_of``):
+        # given by the reading of the workspace, for ``find_path``; None without one
+        self.workspace_holds: Callable[[str], bool] | None = None
+        self.submodule_of: Callable[[str], tuple[str, str] | None] | None = None
         # this package's build dependencies (``ament_auto_find_build_dependencies``)
         self.build_depends: list[str] = []
         # what this package hands on so (absolute paths), and the packages whose extras

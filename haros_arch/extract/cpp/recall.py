@@ -321,10 +321,46 @@ def missed(sites: Sequence[Site], lines: set[int], silent: Sequence[tuple[int, i
             and not any(start <= site.line <= end for start, end in silent)]
 
 
-# first line, last line, name, and whether it is a free function (a function, not a
-# class's method, so none of its unqualified names is a member of a base)
+# first line, last line, name, and whether none of its unqualified names can be a member
+# of a base class: a free function, or a method of a class (not a template) that, like
+# every class around it, derives from nothing (darknet_ros' YoloObjectDetector calls
+# ``XOpenDisplay(NULL)`` of the missing <X11/Xlib.h> in a method: no base can hold it)
 Function = tuple[int, int, str, bool]
 _FREE = CursorKind.FUNCTION_DECL.value
+_PLAIN_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL})
+
+
+def _in(cursor: Cursor, tu: TranslationUnit) -> Cursor:
+    """A cursor a visit of ``visit_children`` gives, with its unit (for its parents)."""
+    cursor._tu = tu
+    return cursor
+
+
+def _derives(cls: Cursor) -> bool:
+    """Whether class ``cls`` names a base: a base specifier, or a ``:`` before its body
+    in its text (a base the parse does not know, ``class Gradient : public
+    vendor::Layer`` of a missing header, is no base specifier of the parse's class)."""
+    if any(child.kind == CursorKind.CXX_BASE_SPECIFIER for child in cls.get_children()):
+        return True
+    for token in cls.get_tokens():
+        if token.spelling in ("{", ";"):
+            return False
+        if token.spelling == ":":
+            return True
+    return False
+
+
+def _without_bases(function: Cursor) -> bool:
+    """Whether ``function`` is a method of a class that is no template and, as every
+    class it is nested in, has no base class."""
+    owner = function.semantic_parent
+    if owner is None or owner.kind not in _PLAIN_CLASSES:
+        return False
+    while owner is not None and owner.kind in _PLAIN_CLASSES:
+        if _derives(owner.get_definition() or owner):
+            return False
+        owner = owner.semantic_parent
+    return owner is None or owner.kind in (CursorKind.NAMESPACE, CursorKind.TRANSLATION_UNIT)
 
 
 def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
@@ -443,7 +479,8 @@ def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function
                 extent = lib.clang_getCursorExtent(cursor)
                 found.setdefault(name, []).append(
                     (line_of(lib.clang_getRangeStart(extent)),
-                     line_of(lib.clang_getRangeEnd(extent)), cursor.spelling, kind == _FREE))
+                     line_of(lib.clang_getRangeEnd(extent)), cursor.spelling,
+                     kind == _FREE or _without_bases(_in(cursor, tu))))
             return 1
         return 2 if kind in containers else 1  # CXChildVisit_Recurse into a container
 

@@ -240,6 +240,8 @@ def own_name(parts: Parts) -> Parts:
             skip = False
             if part == "/":
                 continue
+            if type(part) is str and part.startswith("/"):
+                part = part[1:]  # ``ns + "/events"``: the name relative to it
         if isinstance(part, NodeNamespace):
             skip = not any(p != "" for p in parts[:index])
             if not skip:
@@ -668,6 +670,35 @@ class Scope:
                for start, end in self._regions):
             return None  # the assignment may not run before the read (amcl's map_topic_)
         return value
+
+    def _overridden(self, decl: Cursor, at: Cursor, depth: int
+                    ) -> tuple[bool, Cursor | None]:
+        """Whether this body writes member ``decl`` before ``at`` reads it with a write
+        that always runs and, after that one, in a branch the read is outside of (the
+        DAVIS driver of rpg_dvs_ros: ``ns = ros::this_node::getNamespace(); if (ns ==
+        "/") ns = "/dvs";`` then ``advertise(ns + "/events", ...)``): the read sees
+        one of those writes, not what a constructor gives the member. With the value
+        they all agree on, None when they do not (not known); (False, None) when this
+        body writes it otherwise."""
+        _ = self.writes  # read from the body together
+        chain = _named(at) if at.kind == CursorKind.MEMBER_REF_EXPR else None
+        found = self._members.get(chain if chain is not None and len(chain) > 1
+                                  else key_of(decl))
+        where = at.extent.start.offset
+        if not found or any(offset > where for offset, _value in found):
+            return False, None
+        ordered = sorted(found, key=lambda write: write[0])
+        always = [index for index, (offset, _value) in enumerate(ordered)
+                  if not self._may_skip(offset, where)]
+        if not always or always[-1] == len(ordered) - 1:
+            return False, None
+        reaching = [value for _offset, value in ordered[always[-1]:]]
+        if any(value is None for value in reaching):
+            return True, None
+        texts = [self.string(value, depth + 1) for value in reaching]
+        if None in texts[0] or any(text != texts[0] for text in texts[1:]):
+            return True, None
+        return True, reaching[0]
 
     def values_written(self, decl: Cursor, at: Cursor) -> list[Cursor | None]:
         """Every value this body writes to local ``decl``, or to member ``decl`` before
@@ -1248,6 +1279,10 @@ class Scope:
             decl.kind == CursorKind.FIELD_DECL
         ):
             value = self.assigned(decl, cursor)
+            if value is None:
+                overridden, value = self._overridden(decl, cursor, depth)
+                if overridden:
+                    return None if value is None else (value, self)
         elif value is None and decl.kind == CursorKind.VAR_DECL:
             value = self.written_before(decl, cursor, depth)
         return (value, self) if value is not None else self.field(decl)
@@ -1355,6 +1390,11 @@ class Scope:
             # getName() is its own, which its private handle's namespace is too
             # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics")
             return ("~",)
+        if not args and target.spelling == "getNamespace" and target.semantic_parent is not None \
+                and qualified_name(target.semantic_parent) == "ros::this_node":
+            # ros::this_node::getNamespace(): the node's namespace (rpg_dvs_ros' DAVIS
+            # driver advertises ``ns + "/events"``), known per instance
+            return (NODE_NAMESPACE,)
         if not args and _ARGUMENTS[0] and target.spelling == "get_topic_name" and (
                 target.semantic_parent is not None
                 and qualified_name(target.semantic_parent) in _TOPIC_HOLDERS):

@@ -730,7 +730,14 @@ class Ros1Loader:
     def load_file(self, path: str, scope: Scope, element: Element | None = None,
                   parent: Scope | None = None) -> bool:
         path = os.path.abspath(path)
-        if path in scope.stack or len(scope.stack) > MAX_INCLUDE_DEPTH \
+        # a file being read again with the arguments it is being read with now recurses
+        # for ever; with others, it may end (talos_controller_configuration's
+        # send_joint_commands.launch includes itself with subtree "arms", which includes
+        # it with "right_arm" and "left_arm", which include nothing): roslaunch keeps no
+        # list of the files it reads, so only the depth bounds that
+        key = (path, tuple(sorted((name, value.text if value is not None else None)
+                                  for name, value in scope.args.items())))
+        if key in scope.stack or len(scope.stack) > MAX_INCLUDE_DEPTH \
                 or self.includes > MAX_INCLUDES:
             assert parent is not None and element is not None
             self.report("LAUNCH_INCLUDE_CYCLE", parent, element,
@@ -757,7 +764,7 @@ class Ros1Loader:
         if root is None:
             return False
         scope.path = path
-        scope.stack = (*scope.stack, path)
+        scope.stack = (*scope.stack, key)
         self.children(root, scope)
         return True
 

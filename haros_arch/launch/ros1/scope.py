@@ -81,7 +81,8 @@ class Scope:
     # the command line gives too); an argument it declares without a value is the
     # command line's to give (LAUNCH_ARG_UNSET), not one the include forgot to pass
     command_line: bool = True
-    stack: tuple[str, ...] = ()
+    # the files being read, outermost first, each with the arguments it was given
+    stack: tuple[tuple[str, tuple[tuple[str, str | None], ...]], ...] = ()
     # the launch tree's file or group being read (shared by the scopes made from it)
     item: LaunchItem = field(default_factory=lambda: LaunchItem("file", ""))
 

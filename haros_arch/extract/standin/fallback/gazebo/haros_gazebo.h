@@ -21,6 +21,23 @@
 
 #define override
 
+// gazebo/util/system.hh: the symbol visibility of Gazebo's libraries and of plugins,
+// written between ``class`` and the name (``class GZ_PLUGIN_VISIBLE MyPlugin :
+// public ModelPlugin``); attributes only, empty here as in a static build
+#define GAZEBO_VISIBLE
+#define GAZEBO_HIDDEN
+#define GZ_COMMON_VISIBLE
+#define GZ_MATH_VISIBLE
+#define GZ_TRANSPORT_VISIBLE
+#define GZ_MSGS_VISIBLE
+#define GZ_RENDERING_VISIBLE
+#define GZ_UTIL_VISIBLE
+#define GZ_PLUGIN_VISIBLE
+#define GZ_PLUGIN_HIDDEN
+#define GZ_PHYSICS_VISIBLE
+#define GZ_SENSORS_VISIBLE
+#define GZ_GUI_VISIBLE
+
 // gazebo/gazebo_config.h: Gazebo 11 (the version of ROS Noetic, Foxy and Humble)
 #define GAZEBO_MAJOR_VERSION 11
 #define GAZEBO_MINOR_VERSION 0
@@ -48,6 +65,17 @@ template <class T, class U> shared_ptr<T> dynamic_pointer_cast(const U &_value);
 
 namespace gazebo
 {
+// Gazebo's libraries, by namespace: what a plugin uses of them (``common::Time``,
+// ``physics::ModelPtr``) is declared permissively there, Gazebo's, not a ROS
+// package's of that name (a workspace package ``common``)
+namespace common {}
+namespace physics {}
+namespace sensors {}
+namespace rendering {}
+namespace event {}
+namespace msgs {}
+namespace util {}
+namespace gui {}
 // gazebo/transport: Gazebo's own topics (not ROS): a plugin advertises and subscribes
 // gz messages there, which makes no ROS call; declared so that its code parses
 namespace transport
