@@ -290,6 +290,12 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
         project.configurations.append(spec)
     if not project.configurations:
         choice.notes.append("no launch file found: only the packages' nodes are analysed")
+    from .distro_guess import guessed_distro
+
+    guessed = guessed_distro(project, env)
+    if guessed is not None:
+        choice.notes.append(f"ROS 2 release {guessed[0]}, {guessed[1]} (ROS_DISTRO or a "
+                            "project file's distro: chooses another)")
     return choice
 
 

@@ -132,3 +132,16 @@ def test_the_c_plus_plus_is_read_for_a_release_only_when_it_is_the_one_named(wri
     project, _config, env = _analysed(write_tree, {
         "src/demo/.github/workflows/ci.yml": "matrix: {distro: [humble, rolling]}\n"})
     assert source_distro(project, env) is None  # models humble's, version tests undecided
+
+
+def test_a_folder_s_notes_say_the_guess(write_tree) -> None:
+    from haros_arch.autoproject import choose
+
+    root = write_tree({
+        "ws/src/demo/package.xml": package_xml("demo", "ament_cmake"),
+        "ws/src/demo/launch/a.launch.xml": "<launch><node pkg='demo' exec='a'/></launch>\n",
+        "ws/src/demo/README.md": "A ROS2 Humble package.\n"})
+    notes = choose(str(root / "ws"), environment={}).notes
+    assert any(n.startswith("ROS 2 release humble, guessed from its README") for n in notes)
+    notes = choose(str(root / "ws"), environment={"ROS_DISTRO": "jazzy"}).notes
+    assert not any("ROS 2 release" in n for n in notes)
