@@ -22,9 +22,9 @@ import ast
 import builtins
 import functools
 import os
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import PurePosixPath
-from typing import Any
+from typing import Any, TypeVar
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -84,6 +84,8 @@ from .python_values import (
     _source,
     launch_object,
 )
+
+T = TypeVar("T")
 
 
 class _Overlay(Mapping[str, str]):
@@ -179,6 +181,19 @@ class Interpreter(Expressions):
         line = getattr(node, "lineno", 0) or 0
         col = getattr(node, "col_offset", -1) + 1
         return self.workspace.location(self.path, line, col)
+
+    def bounded(self, where: Location, run: Callable[[], T], failed: T) -> T:
+        """``run()``, or ``failed`` when it passes the interpreter's budget or nests too
+        deeply (said at ``where``, LAUNCH_PY_BUDGET): a file's module, a function launch
+        calls when it runs (``OpaqueFunction``, ``ForEach``)."""
+        try:
+            return run()
+        except Budget as stop:
+            self.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where, detail=str(stop)))
+        except (RecursionError, _Flow):
+            self.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
+                                              detail="interpretation nested too deeply"))
+        return failed
 
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         """Said here, once: the value is unknown, of kind ``unsupported`` and made at
@@ -1298,15 +1313,7 @@ def parse_python(text: str, path: str, workspace: Workspace,
     interp.command_line = command_line or {}
     if unsure:
         interp.environment_unsure |= unsure
-    try:
-        actions = interp.module(tree)
-    except Budget as stop:
-        interp.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where, detail=str(stop)))
-        actions = None
-    except (RecursionError, _Flow):
-        interp.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
-                                            detail="interpretation nested too deeply"))
-        actions = None
+    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if uses is not None:
         uses.extend(interp.uses)
     if made is not None:

@@ -64,14 +64,12 @@ from .python_robotnik import ROBOTNIK_COMMON, ROBOTNIK_METHODS
 from .python_values import (
     MAX_DEPTH,
     PLAIN,
-    Budget,
     Context,
     Func,
     InstalledPackages,
     LaunchDescription,
     Lazy,
     Ref,
-    _Flow,
     object_text,
     printable,
     to_text,
@@ -889,7 +887,8 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         added: list[Any] = []
         elsewhere: list[Any] = []
         context = Context(py, configuration=configuration)
-        try:
+
+        def called() -> list[e.Action]:
             try:
                 result = i.call(function, [context, *extra], extra_kwargs, n)
             finally:
@@ -905,13 +904,9 @@ def opaque_function(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             if elsewhere:
                 i.unsupported(n, "actions an OpaqueFunction adds to a launch description "
                                  "that does not hold it are not read")
-        except Budget as stop:
-            i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", i.where(n), detail=str(stop)))
-            made = []
-        except (RecursionError, _Flow):
-            i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", i.where(n),
-                                           detail="interpretation nested too deeply"))
-            made = []
+            return made
+
+        made: list[e.Action] = i.bounded(i.where(n), called, [])
         return made, i.diagnostics[before:]
 
     action = e.Callback(run)
@@ -944,16 +939,8 @@ def for_each(length: bool) -> Builder:
                                                        where=where) for name in names}
             else:
                 given = dict(item)
-            try:
-                result = i.call(function, [], given, n)
-                made = actions(i, result, n) if result is not None else []
-            except Budget as stop:
-                i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where, detail=str(stop)))
-                made = []
-            except (RecursionError, _Flow):
-                i.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
-                                               detail="interpretation nested too deeply"))
-                made = []
+            made: list[e.Action] = i.bounded(
+                where, lambda: actions(i, i.call(function, [], given, n), n), [])
             return made, i.diagnostics[before:]
 
         return finish(i, e.ForEach(to_text(values), length=length,

@@ -211,11 +211,17 @@ class Runner:
 
     # -- diagnostics and values --------------------------------------------------
     def report(self, code: str, location: Location, **params: object) -> None:
-        found = diag.make(code, location, **params)
-        if code in HIDING_CODES:
-            self.hidden(found)
-        if found not in self.model.diagnostics:
-            self.model.diagnostics.append(found)
+        self.take_said([diag.make(code, location, **params)])
+
+    def take_said(self, found: list[diag.Diagnostic]) -> None:
+        """Diagnostics said here (``report``) or by a Python function launch called
+        when it ran (an OpaqueFunction's, a ForEach iteration's), once each, those that
+        hide part of the launch noted as such."""
+        for said in found:
+            if said.code in HIDING_CODES:
+                self.hidden(said)
+            if said not in self.model.diagnostics:
+                self.model.diagnostics.append(said)
 
     # -- what the includes being performed declare and read -------------------------
     def config_read(self, name: str) -> None:
@@ -618,11 +624,7 @@ class Runner:
                 self.run(action.children, scope)
                 return
             made, found = action.make(item)
-            for said in found:
-                if said.code in HIDING_CODES:
-                    self.hidden(said)
-                if said not in self.model.diagnostics:
-                    self.model.diagnostics.append(said)
+            self.take_said(found)
             self.run(made, scope)
         finally:
             self.loop_values.pop()
@@ -672,11 +674,7 @@ class Runner:
     def do_Callback(self, action: e.Callback, scope: Scope) -> None:
         ev = self.evaluator(scope, action.location)
         made, found = action.run(ev.value, functools.partial(self.configuration, scope, ev))
-        for item in found:
-            if item.code in HIDING_CODES:
-                self.hidden(item)
-            if item not in self.model.diagnostics:
-                self.model.diagnostics.append(item)
+        self.take_said(found)
         # what it added to the launch description that holds it runs after the rest of
         # that description, as launch visits the list that grew
         if action.later and action.condition is not None:
