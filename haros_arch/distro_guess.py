@@ -14,7 +14,7 @@ names a ROS 2 distribution decides: the default (Jazzy) when it is among those n
 Iron (which takes Jazzy's); a tree that names only other releases (Foxy, Galactic,
 Rolling) keeps the default, as a guess should not make every modelled node partial.
 Only files, never a command: the branch is read from ``.git/HEAD``. Bounded: folders
-four levels down, a few thousand entries, 256 KiB of a file.
+four levels down, a few thousand entries, files of at most 256 KiB.
 """
 
 from __future__ import annotations
@@ -25,6 +25,9 @@ import re
 from collections import Counter
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
+
+from .files import read_text
+from .model.location import NOWHERE
 
 if TYPE_CHECKING:
     from .project import Project
@@ -210,8 +213,7 @@ def _kind(folder: str, name: str) -> str | None:
 
 
 def _read(path: str, limit: int) -> str | None:
-    try:
-        with open(path, "rb") as handle:
-            return handle.read(limit).decode("utf-8", "replace")
-    except OSError:
-        return None
+    """The text of ``path`` as every reader of the project has it (``files.read_text``:
+    regular files only, a FIFO or device never opened), None when it cannot be read or
+    is over ``limit`` bytes."""
+    return read_text(path, NOWHERE, limit)[0]

@@ -145,3 +145,12 @@ def test_a_folder_s_notes_say_the_guess(write_tree) -> None:
     assert any(n.startswith("ROS 2 release humble, guessed from its README") for n in notes)
     notes = choose(str(root / "ws"), environment={"ROS_DISTRO": "jazzy"}).notes
     assert not any("ROS 2 release" in n for n in notes)
+
+
+def test_a_fifo_among_the_files_read_is_not_opened(tmp_path) -> None:
+    # a hostile tree: a FIFO named Dockerfile (or README) would block an open() forever
+    (tmp_path / "ws" / "pkg").mkdir(parents=True)
+    os.mkfifo(tmp_path / "ws" / "Dockerfile")
+    (tmp_path / "ws" / "README.md").write_text("Built for ROS 2 Humble.\n")
+    distro, why, _ = guess([str(tmp_path / "ws")])
+    assert distro == "humble" and "README" in why
