@@ -68,3 +68,20 @@ def test_a_node_name_rmw_refuses_is_an_error() -> None:
     assert _named("cam.rectify") and _named("2nd_rectify")
     assert _named("rectify_left") == [] and _named("rectify_?") == []
     assert _named("rectify-left", given=False) == []  # the code's name: its own reading
+
+
+def test_names_are_ascii_to_rcl() -> None:
+    # rcl's lexer and rmw's validators take ASCII letters and digits only, where
+    # Python's \w takes any letter: one definition of a node name serves every reader
+    from haros_arch.model.rosname import is_ros2_node_name
+    from haros_arch.robot.attach import _PluginArguments
+
+    assert ros2_name_problem("cámara/image") == "it holds 'á', which a ROS 2 name may not"
+    assert ros2_name_problem("camera_2/image") is None
+    assert _said([("image", "cámara/image")]) and _named("cámara")
+    assert is_ros2_node_name("cam_2") and not is_ros2_node_name("cámara")
+    assert not is_ros2_node_name("2cam") and not is_ros2_node_name("cam-2")
+    rules = _PluginArguments("p", Workspace(root="/nowhere"), Configuration("c"))
+    assert rules._rule("__node:=cámara") == "no" and rules._rule("cámara:a:=b") == "no"
+    assert rules._rule("ímage:=b") == "no" and rules._rule("__node:=cam_2") == "rule"
+    assert rules.rules == [(None, "__node", "cam_2")]

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import bisect
 import os
-import re
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -17,7 +16,15 @@ from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, ELEMENT_PARAMETER, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
 from ..model.location import Location
-from ..model.rosname import RosName, clean, namespace_of, remap, resolve, ros2_name_problem
+from ..model.rosname import (
+    RosName,
+    clean,
+    is_ros2_node_name,
+    namespace_of,
+    remap,
+    resolve,
+    ros2_name_problem,
+)
 from ..model.runtime import (
     LINK_CLASSES,
     Action,
@@ -648,7 +655,7 @@ def _illegal_node_name(decl: NodeDecl, config: Configuration) -> None:
     own = decl.name.rpartition("/")[2]
     if not decl.name_given or not own or UNKNOWN_MARK in own:
         return
-    if re.fullmatch(r"[A-Za-z_]\w*", own, re.ASCII) is None:
+    if not is_ros2_node_name(own):
         config.diagnostics.append(diag.make("LAUNCH_NODE_NAME_REFUSED", decl.location,
                                             name=own))
 

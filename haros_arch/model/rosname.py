@@ -42,7 +42,15 @@ def is_legal_name(name: str) -> bool:
 # letters, digits and "_", not starting with a digit; a "{substitution}" of such
 # characters; in a remap rule's source, a wildcard "*" or "**" (rcl_remap); "?" stands
 # for an unknown part
-_ROS2_TOKEN = re.compile(r"(?:[A-Za-z_?][\w?]*|\{[\w?]+\}|\?[\w?]*)+")
+_ROS2_TOKEN = re.compile(r"(?:[A-Za-z_?][\w?]*|\{[\w?]+\}|\?[\w?]*)+", re.ASCII)
+# a ROS 2 node name's own part (rmw_validate_node_name): ASCII letters, digits and "_",
+# not starting with a digit
+_ROS2_NODE_NAME = re.compile(r"[A-Za-z_]\w*", re.ASCII)
+
+
+def is_ros2_node_name(name: str) -> bool:
+    """Whether rcl takes ``name`` as a node's own name (no namespace, no unknown)."""
+    return _ROS2_NODE_NAME.fullmatch(name) is not None
 
 
 def ros2_name_problem(name: str, source: bool = False) -> str | None:
@@ -74,7 +82,8 @@ def ros2_name_problem(name: str, source: bool = False) -> str | None:
         if source and token in ("*", "**"):
             continue
         if not _ROS2_TOKEN.fullmatch(token):
-            bad = next((c for c in token if not (c.isalnum() or c in "_{}?")), None)
+            bad = next((c for c in token if not ((c.isascii() and c.isalnum()) or c in "_{}?")),
+                       None)
             if bad is not None:
                 return f"it holds {bad!r}, which a ROS 2 name may not"
             return f"its part {token!r} starts with a digit or is not a name"

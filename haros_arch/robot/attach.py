@@ -41,7 +41,7 @@ from ..launch.ros2.naming import params_for_node, pattern_matches, split_rule
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
-from ..model.rosname import as_namespace, clean, namespace_of, resolve
+from ..model.rosname import as_namespace, clean, is_ros2_node_name, namespace_of, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter
 from ..model.source import SDF_ELEMENT, CallKind, Node, PrimitiveCall
 from ..model.values import UNKNOWN_MARK, Value
@@ -1298,7 +1298,7 @@ _ROS_VALUE_FLAGS = {"-r", "--remap", "-p", "--param", "--params-file", "-e", "--
                     "--log-level", "--log-config-file", "--log-file-name"}
 _ROS_FLAGS = {f"--{way}-{what}-logs" for way in ("enable", "disable")
               for what in ("stdout", "rosout", "external-lib")}
-_RULE_NAME = re.compile(r"~?/?[A-Za-z_][\w/]*|~|/|__ns|__node|__name")
+_RULE_NAME = re.compile(r"~?/?[A-Za-z_][\w/]*|~|/|__ns|__node|__name", re.ASCII)
 
 
 class _PluginArguments:
@@ -1403,11 +1403,11 @@ class _PluginArguments:
                 right.startswith("__") or (left.startswith("__") and left not in (
                     "__ns", "__node", "__name")):
             return "no"  # ROS 1 / dashing's __log_level:=, __params:= are not rules
-        if node is not None and not re.fullmatch(r"[A-Za-z_]\w*", node):
+        if node is not None and not is_ros2_node_name(node):
             return "no"
         if left == "__ns" and not right.startswith("/"):
             return "no"  # rcl wants a fully qualified namespace
-        if left in ("__node", "__name") and not re.fullmatch(r"[A-Za-z_]\w*", right):
+        if left in ("__node", "__name") and not is_ros2_node_name(right):
             return "no"
         self.rules.append((node, left, right))
         return "rule"
