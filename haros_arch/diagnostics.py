@@ -432,6 +432,14 @@ CATALOGUE: dict[str, Entry] = {
         "workspace's own modules, ...). It is not run: its result is unknown, and what "
         "depends on it keeps '?' parts or a condition. Said once, where the construct "
         "is, not again where its value is used."),
+    "LAUNCH_PY_FILE_UNKNOWN": Entry(
+        "warning", "{detail}",
+        "A Python launch file reads a file (open(), yaml.safe_load, a pathlib path's "
+        "read_text) that is not in the workspace, lies outside it, or whose path is not "
+        "known statically. Its content is unknown, and what the code makes of it keeps "
+        "'?' parts. A file's content reads no launch configuration by itself, so the "
+        "arguments an include passes are still judged on the rest of the included "
+        "files."),
     "LAUNCH_PROCESS": Entry(
         "info", "process {command} started here is no node the reader can name",
         "A launch file runs a process (ExecuteProcess, <executable>) whose command line is "

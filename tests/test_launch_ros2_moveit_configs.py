@@ -167,7 +167,7 @@ def generate_launch_description():
 """)
     params = params_of(model, "move_group")
     assert "robot_description_planning.?" in params  # not absent: not known
-    said = [d for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"
+    said = [d for d in model.diagnostics if d.code == "LAUNCH_PY_FILE_UNKNOWN"
             and "missing_limits.yaml" in d.message]
     assert said and said[0].location.line == 5  # the statement that asks for it
     model, _ = run(write_tree, """

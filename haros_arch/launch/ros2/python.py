@@ -205,6 +205,21 @@ class Interpreter(Expressions):
             self.diagnostics.append(found)
         return Unknown(detail, "unsupported", where=where)
 
+    def unknown_file(self, node: ast.AST | None, detail: str) -> Unknown:
+        """A file the code reads whose content is not known (not there, outside the
+        workspace, its path not known): said once here, as ``unsupported`` says a
+        construct, but as ``LAUNCH_PY_FILE_UNKNOWN``, which hides no launch
+        configuration: a file's content is data, it reads none by itself (what the code
+        then does with it, a configuration named by it or an include of a path in it,
+        says so where it happens). The arguments an include passes are judged on the
+        rest (husky's accessories launch passes ``baud`` to microstrain's launch file,
+        whose default parameters file sits in a submodule not checked out)."""
+        where = self.where(node)
+        found = diag.make("LAUNCH_PY_FILE_UNKNOWN", where, detail=detail)
+        if found not in self.diagnostics:
+            self.diagnostics.append(found)
+        return Unknown(detail, "unsupported", where=where)
+
     def compare_values(self, op: ast.cmpop, left: object, right: object,
                        node: ast.Compare) -> Any:
         """One comparison of a chain; ``name in get_packages_with_prefixes()`` asks
@@ -1088,19 +1103,19 @@ class Interpreter(Expressions):
         from ...share import share_source
 
         if not isinstance(path, str):
-            self.unsupported(node, "a file whose path is not known statically")
+            self.unknown_file(node, "a file whose path is not known statically")
             return None
         full = os.path.realpath(share_source(self.workspace, path))
         if not self.workspace.readable(full, self.environment):
-            self.unsupported(node, f"{path} is outside the workspace; not read")
+            self.unknown_file(node, f"{path} is outside the workspace; not read")
             return None
         if not os.path.lexists(full):
             # said where it is read, not at a file that is not there: a build step or
             # the launch code itself may make it (vrx_gz's spawn reads the model.urdf its
             # Model.generate wrote), so its content is unknown, as a parameter file's
-            self.unsupported(node, f"{self.workspace.relpath(full)} does not exist in the "
-                                   "workspace (a build or launch step may make it); its "
-                                   "content is not known")
+            self.unknown_file(node, f"{self.workspace.relpath(full)} does not exist in "
+                                    "the workspace (a build or launch step may make it); "
+                                    "its content is not known")
             return None
         text, found = read_text(full, self.workspace.location(full), MAX_READ)
         self.diagnostics.extend(found)

@@ -493,6 +493,10 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
             # a file's path, also a ``pathlib.Path`` (launch_ros takes one: carla's
             # ``Path(get_package_share_directory(pkg), "settings.yaml")``)
             out.append(e.ParamFile(to_text(item), location=i.where(n)))
+        elif isinstance(item, Unknown) and item.kind == "unsupported" and (
+                item.where is not None):
+            # said where it was made (a call not run, a file not read): not again here
+            out.append(e.UnknownParams(item.origin, item.where))
         else:
             i.unsupported(n, "a node parameter entry not known statically")
             out.append(e.UnknownParams("a node parameter entry not known statically",

@@ -122,6 +122,8 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     source = a[0] if a else None
     text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
         source if isinstance(source, str) else None)
+    if text is None and isinstance(source, ReadOnlyFile):  # said by read(): not again
+        return Unknown(f"{source.path} not read", "unsupported", where=i.where(n))
     if text is None:
         return Unknown("YAML not known statically")
     try:
