@@ -2611,8 +2611,9 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     # make a class invalid are in declarations); then the unit is parsed in full with
     # all the names, and once more when that shows more (a wave, or members of declared
     # classes used in function bodies); the parse with the fewest errors is kept.
+    args = _with_names(args, header)
     for _round in range(synthesis.MAX_ROUNDS - 1):
-        probe = _parse_once(path, [*args, "-include", header],
+        probe = _parse_once(path, args,
                             [*unsaved, (header, names.header())], workspace, result,
                             PARSE_OPTIONS | SKIP_FUNCTION_BODIES)
         if probe is None or not names.learn(_located(mine(probe), source)):
@@ -2620,8 +2621,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     names.read_members(source.values())  # the files with errors: members come next
     best = tu
     for _full in range(synthesis.FULL_PARSES):  # more: again when one shows more names
-        again = _parse_once(path, [*args, "-include", header],
-                            [*unsaved, (header, names.header())], workspace, result)
+        again = _parse_once(path, args, [*unsaved, (header, names.header())], workspace,
+                            result)
         if again is None:
             break
         if _cost(again) < _cost(best):
@@ -2648,6 +2649,21 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         names=", ".join(names.first()) or "none", before=before, after=len(mine(again)),
         included=f"; {', '.join(included)} from the stand-ins' headers" if included else ""))
     return again
+
+
+def _with_names(args: list[str], header: str) -> list[str]:
+    """``args`` with the synthesised names' header included before the messages a unit
+    uses without including them (``_unincluded_messages``, given as ``-include`` after
+    the unit's ROS stand-in): its definitions must come first, as they do for headers
+    the unit's own file includes. A message known only by name takes the members it is
+    asked for through a macro its struct expands (``interfaces.fields_macro``), which a
+    struct read before the macro is defined never sees: Autoware's multi_object_tracker
+    (autoware_auto_perception_msgs missing) kept ``Label::CAR`` an error, and the seven
+    ``declare_parameter`` calls beside it were lost."""
+    for at in range(len(args) - 1):
+        if args[at] == "-include" and args[at + 1] in UNIT_ROS.values():
+            return [*args[:at + 2], "-include", header, *args[at + 2:]]
+    return [*args, "-include", header]
 
 
 @functools.lru_cache(maxsize=1)
