@@ -245,6 +245,54 @@ int main(int argc, char ** argv)
     assert found.rosnames == []
 
 
+def test_a_node_renamed_by_a_list_its_function_fills(tmp_path) -> None:
+    """Eloquent's and Foxy's nav2_util::LifecycleNode: the rule is pushed into a local
+    list the options are then given (``new_args.push_back(std::string("__node:=") +
+    this->get_name() + "_rclcpp_node")``). The helper node was a second node of every
+    nav2 server's process: with the launch file's ``name=`` a false duplicate name, and
+    without it the server named ``?`` (two nodes, which one is the launch's)."""
+    source = tmp_path / "server.cpp"
+    source.write_text("""
+#include <memory>
+#include <string>
+#include <vector>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+
+class Server : public rclcpp::Node
+{
+public:
+  Server(const rclcpp::NodeOptions & options = rclcpp::NodeOptions())
+  : Node("controller_server", "", options)
+  {
+    std::vector<std::string> new_args = options.arguments();
+    new_args.push_back("--ros-args");
+    new_args.push_back("-r");
+    new_args.push_back(std::string("__node:=") + this->get_name() + "_rclcpp_node");
+    new_args.push_back("--");
+    helper_ = std::make_shared<rclcpp::Node>(
+      "_", "", rclcpp::NodeOptions(options).arguments(new_args));
+    declare_parameter("controller_frequency", 20.0);
+    pub_ = create_publisher<std_msgs::msg::String>("cmd_vel", 10);
+  }
+  rclcpp::Node::SharedPtr helper_;
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Server>());
+  return 0;
+}
+""")
+    found = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert found.rosname == "controller_server"
+    assert found.rosnames == []
+    assert {(c.kind, c.name, c.node_name) for c in found.calls} == {
+        ("declare", "controller_frequency", None), ("publish", "cmd_vel", None)}
+
+
 
 # the ament_cmake package ``pkg`` of the tests below that write their own sources
 PACKAGE = ('<?xml version="1.0"?>\n<package format="2"><name>pkg</name>'

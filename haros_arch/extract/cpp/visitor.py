@@ -4513,8 +4513,29 @@ def _renames_itself(arg: Cursor) -> bool:
         return False
     target = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
     source = target if target is not None and target.kind == CursorKind.VAR_DECL else expr
-    for count, token in enumerate(source.get_tokens()):
-        if count > 400:
+    if _names_node_rule(source, 400):
+        return True
+    # the options' arguments a local list the function fills: eloquent's and foxy's
+    # nav2_util::LifecycleNode pushes ``"__node:=" + get_name() + "_rclcpp_node"`` into
+    # ``new_args``, then builds ``rclcpp::Node("_", ns, NodeOptions(options).arguments(
+    # new_args))``: a rule of that function's, where the list is written
+    for node in source.walk_preorder():
+        local = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+        if local is None or local.kind != CursorKind.VAR_DECL or local.semantic_parent is None \
+                or local.semantic_parent.kind not in FUNCTIONS:
+            continue
+        if _names_node_rule(local.semantic_parent, MAX_RULE_TOKENS):
+            return True
+    return False
+
+
+MAX_RULE_TOKENS = 4000  # of a function looked through for a ``__node:=`` rule
+
+
+def _names_node_rule(cursor: Cursor, limit: int) -> bool:
+    """Whether the first ``limit`` tokens of ``cursor`` hold a ``__node:=`` rule."""
+    for count, token in enumerate(cursor.get_tokens()):
+        if count > limit:
             return False
         if "__node:=" in token.spelling:
             return True
