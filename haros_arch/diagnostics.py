@@ -348,6 +348,17 @@ CATALOGUE: dict[str, Entry] = {
         "part. A ROS 2 configuration not seen declared after an action the reader "
         "could not see (a value not known among a launch description's entities, an "
         "include not read) may be declared there: LAUNCH_UNKNOWN_VALUE, undecided."),
+    "LAUNCH_CONDITION_UNSET": Entry(
+        "warning", "a condition tests launch configuration {name}, which nothing "
+        "declares or sets here: launch takes it as unequal to any value, so what "
+        "LaunchConfigurationEquals guards never runs (and what NotEquals guards always "
+        "does)",
+        "LaunchConfigurationEquals / LaunchConfigurationNotEquals of a configuration "
+        "that no DeclareLaunchArgument, SetLaunchConfiguration or include argument gives "
+        "a value: launch raises no error, it compares as unequal. Usually the name "
+        "differs from the one declared (slam_toolbox_mode for slam_mode). Where an "
+        "action the reader could not see may declare it, the condition is undecided "
+        "instead (LAUNCH_UNKNOWN_VALUE)."),
     "LAUNCH_PATH_JOIN_ABSOLUTE": Entry(
         "warning", "path join part {part} starts with '/': it drops the parts before it, "
         "the path is {path}",

@@ -41,6 +41,9 @@ def text(*parts: str | Subst | Text) -> Text:
 class Var(Subst):  # $(var name [default]) / LaunchConfiguration
     name: Text
     default: Text | None = None
+    # the configuration a ``LaunchConfigurationEquals`` / ``NotEquals`` tests: launch
+    # takes one nobody set as unequal to any value, with no error (its KeyError path)
+    tested: bool = False
 
 
 @dataclass(frozen=True)

@@ -449,7 +449,8 @@ def config_equals(negate: bool) -> Builder:
         name = arg(a, k, 0, "launch_configuration_name")
         expected = arg(a, k, 1, "expected_value")
         text = ast.unparse(n) if isinstance(n, ast.Call) else "?"
-        return e.Cond((e.Var(to_text(name), ("",)),), negate, text, to_text(expected or ""))
+        return e.Cond((e.Var(to_text(name), ("",), tested=True),), negate, text,
+                      to_text(expected or ""))
     return build
 
 
