@@ -623,3 +623,21 @@ def test_similar_disconnected_topics_a_name_not_known_may_be_the_subscribers_par
     assert run("publish") == ["similar-disconnected-topics" + UNDECIDED]
     # a subscriber of one is no publisher: the pair stands
     assert run("subscribe") == ["similar-disconnected-topics"]
+
+
+def test_an_int_read_as_a_double_is_a_mismatch_only_in_ros_2():
+    # ROS 1 takes an integer where a double is read; ROS 2's statically typed
+    # parameters refuse it (leo_robot-ros2 8014e18c^ gave rosbridge_websocket
+    # unregister_timeout 86400, which it declares as 10.0: the node does not start)
+    def reader(node: str) -> dict:
+        return {"kind": "declare", "node": node, "name": f"{node}/timeout", "type": "double",
+                "location": {"file": "a/n.py", "line": 3}}
+
+    doc = {"parameters": [{"name": f"{n}/timeout", "type": "int", "value": 86400,
+                           "writers": ["<launch>"]} for n in ("/one", "/two")],
+           "nodes": [{"name": "/one", "node": "a/one"},
+                     {"name": "/two", "node": "a/two", "ros_version": 2}],
+           "links": [reader("/one"), reader("/two")]}
+    (found,) = run_rule(RULES["parameter-type-mismatch"], configuration(doc))
+    assert found.entities[0] == "parameter:/two/timeout"
+    assert found.message == "/two/timeout is set as int (86400) but /two reads it as double"
