@@ -247,6 +247,13 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
         folder = src if os.path.isdir(src) and not os.path.isfile(
             os.path.join(top, "package.xml")) else top
     workspace = scan([folder], env)
+    if not workspace.packages and folder != os.path.abspath(path) and os.path.isdir(path):
+        # a repository whose src/ holds code, not packages, and keeps its packages beside
+        # it (pyrobot: its Python library in src/, the ROS packages in robots/ and
+        # pyrobot_bridge/): the folder given is the one to read
+        whole = scan([os.path.abspath(path)], env)
+        if whole.packages:
+            folder, workspace = os.path.abspath(path), whole
     if not workspace.packages:
         raise ProjectError(path, 0, 0, f"no ROS package (package.xml) under {folder}"
                            + _ignored(workspace)

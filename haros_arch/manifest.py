@@ -35,6 +35,23 @@ def xml_parser(recover: bool = False) -> etree.XMLParser:
                            recover=recover)
 
 
+# the version an XML declaration names: libxml2 refuses one that does not start with
+# "1." ("Unsupported version '0.1'"), expat (xml.dom.minidom, which catkin_pkg and
+# roslaunch read with) takes any
+_DECLARED_VERSION = re.compile(
+    rb"\A(\xef\xbb\xbf)?(\s*<\?xml\s+version\s*=\s*)([\"'])([^\"'<>]*)\3")
+
+
+def as_expat_reads(data: bytes) -> bytes:
+    """``data`` with the version of its XML declaration "1.0" when libxml2 would refuse
+    it and expat reads it: pyrobot's ``<?xml version="0.1"?>`` package.xml files build
+    with catkin, and were each "not well-formed XML" here, their packages left out."""
+    match = _DECLARED_VERSION.match(data)
+    if match is None or match.group(4).startswith(b"1."):
+        return data
+    return data[:match.start(4)] + b"1.0" + data[match.end(4):]
+
+
 _HIDDEN = re.compile(r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE[^\[>]*(\[.*?\])?\s*>",
                      re.S)
 _START_TAG = re.compile(r"<([A-Za-z_][\w.\-:]*)")
@@ -139,7 +156,7 @@ def _read_root(path: str, location: Location) -> tuple[Any, list[Diagnostic]]:
     if data is None:
         return None, found
     try:
-        return etree.fromstring(data, xml_parser()), found
+        return etree.fromstring(as_expat_reads(data), xml_parser()), found
     except etree.XMLSyntaxError as err:
         line, col = err.position if err.position else (0, 0)
         where = Location(None, location.file, line, col)

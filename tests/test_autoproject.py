@@ -309,3 +309,19 @@ def test_a_module_named_like_a_launch_file_is_no_configuration(ws: Path) -> None
     assert configs == {"bringup/robot": ["bringup/launch/robot.launch"],
                        "bringup/sim": ["bringup/launch/sim.launch"],
                        "rover/rover": ["rover/launch/rover.launch.py"]}
+
+
+def test_a_src_folder_of_code_beside_the_packages(tmp_path: Path) -> None:
+    """pyrobot 03af552: its Python library in src/ (no package.xml), its ROS packages in
+    robots/ and pyrobot_bridge/. The folder's src/ was taken for a workspace's package
+    folder: "no ROS package (package.xml) under .../src", nothing analysed. Now a src/
+    without packages leaves the folder given to be read."""
+    write(tmp_path / "src" / "robotlib" / "__init__.py", "VERSION = 1\n")
+    write(tmp_path / "robots" / "arm_control" / "package.xml",
+          ROS1_PKG.format(name="arm_control"))
+    write(tmp_path / "robots" / "arm_control" / "launch" / "arm.launch", """\
+        <launch><node pkg="arm_control" type="arm_node" name="arm"/></launch>""")
+    choice = choose(str(tmp_path), environment={})
+    assert choice.project.workspace == [str(tmp_path)]
+    assert [c.launch for c in choice.project.configurations] == [
+        ["arm_control/launch/arm.launch"]]

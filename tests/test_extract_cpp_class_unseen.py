@@ -906,3 +906,25 @@ def test_a_singleton_of_a_missing_ros_package_makes_it_partial(write_tree: Any) 
     errors = [d.message for d in model.diagnostics
               if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
     assert errors == []
+
+
+def test_a_package_the_build_finds_and_the_manifest_does_not_name(write_tree: Any) -> None:
+    """vizzy f151bb2: vizzy_control's package.xml names no moveit package, its CMake
+    finds moveit_ros_planning_interface among catkin's components, and gaze_sim builds
+    a MoveGroupInterface (which subscribes joint_states): the node was complete, and
+    gaze.launch's ``joint_states`` remap "unused". The packages the build finds count as
+    the node's dependencies."""
+    files = {
+        "src/teleop/package.xml": _depends("teleop", "roscpp"),
+        "src/teleop/CMakeLists.txt": (
+            "project(teleop)\nfind_package(catkin REQUIRED COMPONENTS roscpp\n"
+            "  moveit_ros_planning_interface)\ncatkin_package()\n"
+            "add_executable(teleop src/teleop.cpp)\n"),
+        "src/teleop/src/teleop.cpp": GUI,
+    }
+    model = _model(write_tree, files)
+    node = next(n for p in model.packages for n in p.nodes if n.name == "teleop/teleop")
+    assert node.completeness == "partial"
+    assert any("moveit::planning_interface::MoveGroupInterface of ROS package "
+               "moveit_ros_planning_interface is built here" in r
+               for r in node.completeness_reasons), node.completeness_reasons

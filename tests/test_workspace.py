@@ -272,3 +272,25 @@ def test_ros_version_reads_the_dependencies_whose_conditions_hold(write_tree):
     data = to_data(ros2)
     assert [d.get("active", True) for d in data["dependencies"]] == [False, True, False, True]
     assert ros_version(_package(data)) == 2
+
+
+def test_an_xml_declaration_expat_reads_is_read(write_tree):
+    """pyrobot 03af552: five package.xml files begin ``<?xml version="0.1"?>``, which
+    catkin_pkg's and roslaunch's parser (expat) reads and libxml2 refuses ("Unsupported
+    version"): the packages were left out, each with an error. A launch file so
+    declared is read too; one not well-formed stays an error."""
+    root = write_tree({
+        "src/locobot_control/package.xml":
+            package_xml("locobot_control").replace('"1.0"', '"0.1"'),
+        "src/locobot_control/launch/main.launch":
+            "<?xml version='2.0'?>\n<launch><node pkg='locobot_control' type='ctl' "
+            "name='ctl'/></launch>\n",
+        "src/broken/package.xml": '<?xml version="0.1"?>\n<package><name>broken</name>',
+    })
+    ws = scan([str(root / "src")], {})
+    assert "locobot_control" in ws.packages
+    assert codes(ws) == [("PACKAGE_XML_SYNTAX", "broken/package.xml")]
+    from haros_arch.launch import load
+    loaded = load(str(root / "src/locobot_control/launch/main.launch"), ws, {}, {})
+    assert [d.code for d in loaded.diagnostics if d.code == "LAUNCH_XML_SYNTAX"] == []
+    assert len(loaded.nodes) == 1

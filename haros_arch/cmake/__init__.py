@@ -138,6 +138,16 @@ def _own_libraries_of(name: str, workspace: Workspace
             [d for d in interpreter.catkin_depends if d != name])
 
 
+def catkin_components(package: Package, workspace: Workspace) -> list[str]:
+    """The packages the catkin package's CMake files find as catkin's components
+    (``find_package(catkin REQUIRED COMPONENTS roscpp moveit_ros_planning_interface)``),
+    in order: the ROS packages its build uses, declared in its package.xml or not."""
+    if package.build_type != "catkin" or not package.root:
+        return []
+    return remembered("catkin components", package.root, workspace, lambda: list(
+        _interpret(package, workspace, PackageFiles(package, workspace))[0].catkin_components))
+
+
 def libraries_handed(name: str, workspace: Workspace) -> list[tuple[str, list[str]]]:
     """What a target that links the workspace package ``name`` gets of the workspace's
     libraries, a (package, sources) pair per package: its own libraries

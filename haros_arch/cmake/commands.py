@@ -979,12 +979,16 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
         components: list[str] = []
         taking = False
         for arg in args[1:]:
-            if arg in ("COMPONENTS", "OPTIONAL_COMPONENTS"):
+            if arg in ("COMPONENTS", "OPTIONAL_COMPONENTS", "REQUIRED"):
+                # (CMake's ``REQUIRED [[COMPONENTS] components...]``: the keyword may be
+                # left out, vizzy_demos' ``find_package(catkin REQUIRED roscpp ...)``)
                 taking = True
             elif arg.isupper():
-                taking = False  # REQUIRED, QUIET, CONFIG, ...
+                taking = False  # QUIET, CONFIG, ...
             elif taking and _PACKAGE_NAME.fullmatch(arg):
                 components.append(arg)
+                if arg not in it.catkin_components:
+                    it.catkin_components.append(arg)
                 run_extras(it, command, arg)
                 it.found_packages.add(arg.lower())  # catkin finds each one
         it.set("catkin_LIBRARIES", ";".join(PACKAGE_MARK.format(c) for c in components))

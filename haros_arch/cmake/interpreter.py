@@ -45,6 +45,10 @@ _VARIABLE_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 # the words of an if() test that are no variable: operators and constants
 _TEST_WORDS = frozenset({"NOT", "AND", "OR", *UNARY, *BINARY, *TRUE_WORDS, *FALSE_WORDS})
 _VAR_REF = re.compile(r"\$(ENV|CACHE)?\{([^${}]*)\}")
+# what a ROS distribution's setup script sets, which every build of a package has: not
+# set in the run's environment (no ``distro:``, no ROS_DISTRO), its value is not known,
+# not the empty text CMake gives an unset one (``_reads_found``)
+_DISTRO_ENV = re.compile(r"\$ENV\{(ROS_DISTRO|ROS_VERSION|ROS_PYTHON_VERSION)\}")
 MAX_STEPS = 50_000  # commands and if / elseif tests; real packages take under 1,000
 MAX_LOOP = 10_000
 MAX_RANGE_DIGITS = 18  # foreach RANGE bounds: CMake reads them as 64-bit integers
@@ -230,6 +234,10 @@ class Interpreter:
         # catkin_package(CATKIN_DEPENDS ...): the packages whose exported libraries
         # catkin's generated config adds to this one's (``<pkg>_LIBRARIES``)
         self.catkin_depends: list[str] = []
+        # find_package(catkin COMPONENTS ...): the ROS packages the build finds, which
+        # its package.xml may not name (vizzy_control builds with moveit's
+        # MoveGroupInterface and declares no moveit package)
+        self.catkin_components: list[str] = []
         self.diagnostics: list[Diagnostic] = []
         self.steps = 0
         self.expanded = 0  # characters of arguments expanded, against MAX_EXPANDED
@@ -607,10 +615,16 @@ class Interpreter:
     def _reads_found(self, args: tuple[Argument, ...]) -> bool:
         """Whether the arguments read, through a reference, what a ``find_package`` of
         this reading sets that is not set here, or a variable computed from such a
-        value (``from_found``)."""
+        value (``from_found``); or a setting of the distribution's setup script the
+        run's environment lacks (``_DISTRO_ENV``: aubo_demo builds each executable under
+        ``if("$ENV{ROS_DISTRO}" STREQUAL "noetic")``, ``"melodic"``, ...; read as empty,
+        no test held and the package had no program)."""
         for arg in args:
             read: list[str] = []
             if arg.kind != "bracket":
+                if any(name not in self.environment
+                       for name in _DISTRO_ENV.findall(arg.text)):
+                    return True
                 self._expanded(arg.text, read=read)
             if any(name in self.from_found or (
                     self.get(name) is None and name not in self.assigned

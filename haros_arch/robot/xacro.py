@@ -468,7 +468,15 @@ class _Expander:
             if of_args:
                 return argument(name)
             if scope.owner(name) is None:
-                raise KeyError(name)
+                source = self._unread_source(name)
+                if source is None:
+                    raise KeyError(name)
+                # no fault of the file: an include not read may define it (legged_control's
+                # ``urdf/$(arg robot_type)/const.xacro`` of an argument not known: each of
+                # its 95 properties was a warning "name ... is not defined")
+                reasons.append(f"property {name} is not defined here; it may be one of "
+                               f"{source}, which is not read")
+                return expression.Unknown(f"property {name} is not known")
             value = self.lookup(element, name, scope)
             if isinstance(value, Value):
                 reasons.extend(value.origins)

@@ -2075,7 +2075,16 @@ def _visible(package: Package, workspace: Workspace, read: list[str]) -> set[str
     (hector_exploration_node builds costmap_2d's Costmap2DROS through
     hector_exploration_planner, which depends on costmap_2d; it declares only the
     planner). The manifests read go to ``read``."""
+    from ... import cmake  # the C++ extractor is imported by the pipeline, after cmake
+
     found = {d.name for d in package.dependencies}
+    if package.root and package.build_type == "catkin":
+        # and the ROS packages its build finds that its package.xml does not name: the
+        # build has their headers (vizzy_control's gaze_sim builds moveit's
+        # MoveGroupInterface, which subscribes joint_states; no moveit package declared,
+        # the node was complete and the launch file's joint_states remap "unused")
+        read.append(os.path.join(package.root, "CMakeLists.txt"))
+        found.update(cmake.catkin_components(package, workspace))
     todo = sorted(found)
     seen = {package.name}
     while todo:

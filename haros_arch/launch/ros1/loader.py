@@ -18,7 +18,7 @@ from lxml import etree
 
 from ... import diagnostics as diag
 from ...files import read_bytes
-from ...manifest import start_lines, xml_parser
+from ...manifest import as_expat_reads, start_lines, xml_parser
 from ...model.conditions import Condition, exclusive, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
@@ -295,7 +295,7 @@ class Ros1Loader:
         if data is None:
             return None
         try:
-            root = etree.fromstring(data, xml_parser())
+            root = etree.fromstring(as_expat_reads(data), xml_parser())
             start_lines(root, data)
         except etree.XMLSyntaxError as err:
             line, col = err.position if err.position else (0, 0)
