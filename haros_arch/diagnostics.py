@@ -454,7 +454,8 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_PROCESS": Entry(
         "info", "process {command} started here is no node the reader can name",
         "A launch file runs a process (ExecuteProcess, <executable>) whose command line is "
-        "not 'ros2 run PKG EXE ...' nor 'ros2 topic pub ...', the two read as nodes, nor "
+        "not 'ros2 run PKG EXE ...', 'ros2 topic pub ...', 'ros2 service call ...' nor "
+        "'ros2 control load_controller ...', read as nodes, nor "
         "'ros2 launch PKG FILE ...', read as that launch file: a "
         "simulator, a converter, a test binary, a script. If it starts ROS nodes, they "
         "are not in the graph: a finding that claims an absence (nobody publishes, "

@@ -115,3 +115,25 @@ def test_the_model_round_trips_and_single_node_json_is_unchanged(model: Model) -
     single = json.loads(json.dumps(model_to_data(old)))
     assert all("rosnames" not in n and all("node_name" not in c for c in n["calls"])
                for p in single["packages"] for n in p["nodes"])
+
+
+def test_launch_name_that_is_one_nodes_own_name_still_says_one_process(tmp_path) -> None:
+    """doosan-robot2's dsr_control_node2: the launch names the process after the node its
+    code names so (``name='dsr_control_node2'``), and the code makes a second node,
+    ``stop_subscriber_node``, which the launch name renames too. Only the second
+    instance has a code name of its own; the message still says why the two clash."""
+    import shutil
+
+    shutil.copytree(CASE, tmp_path / "case")
+    launch = tmp_path / "case" / "src" / "pair_bringup" / "launch" / "pair.launch.py"
+    launch.write_text(launch.read_text().replace("name='wheels'", "name='left_wheel'"))
+    model = analyse(load(str(tmp_path / "case" / "project.yaml")),
+                    {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    config = model.configuration("pair")
+    wheels = [n for n in config.nodes if n.name == "/left_wheel"]
+    assert [n.code_name for n in wheels] == [None, "right_wheel"]
+    (rule,) = [r for r in load_catalogue() if r.id == "duplicate-node-names"]
+    (found,) = [f for f in run_rule(rule, model) if f.configuration == "pair"]
+    assert found.message.endswith(
+        "; one process: the launch file's name renames every node its code makes, "
+        "left_wheel and right_wheel")

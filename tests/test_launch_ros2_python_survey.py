@@ -793,3 +793,48 @@ def generate_launch_description():
                                                 "PREFIX = 'overwritten'\n"})
     assert [n.name for n in model.nodes] == ["/cam_front", "/rig"]
     assert not any("not defined" in d.message for d in model.diagnostics), model.diagnostics
+
+
+def test_execute_process_of_ros2_service_call_is_a_client_named_by_its_type(write_tree):
+    """space-ros demos' curiosity_gazebo.launch.py activates the hardware with
+    ``ExecuteProcess(cmd=['ros2', 'service', 'call', 'controller_manager/
+    set_hardware_component_state', 'controller_manager_msgs/srv/SetHardwareComponentState',
+    '{...}'])``: ros2service's requester node, ``_ros2cli_requester_<pkg>_<Service>``,
+    a client of that service (``models.commands``), not a process nothing is known of."""
+    from haros_arch.launch.model import NodeDecl
+    from haros_arch.models.commands import command_node
+
+    model, _ = run(write_tree, """
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2', 'service', 'call',
+                            'controller_manager/set_hardware_component_state',
+                            'controller_manager_msgs/srv/SetHardwareComponentState',
+                            '{name: "IgnitionSystem"}']),
+        ExecuteProcess(cmd=['ros2', 'service', 'call', '-r', '2', '/reset',
+                            'std_srvs/Empty']),
+        ExecuteProcess(cmd=['ros2', 'service', 'call', '/reset',
+                            LaunchConfiguration('kind', default='std_srvs/srv/Trigger')]),
+        ExecuteProcess(cmd=['ros2', 'service', 'list']),
+    ])
+""")
+    assert [(n.name, n.package, n.executable) for n in model.nodes] == [
+        ("/_ros2cli_requester_controller_manager_msgs_SetHardwareComponentState",
+         "ros2service", "ros2"),
+        ("/_ros2cli_requester_std_srvs_Empty", "ros2service", "ros2"),
+        ("/_ros2cli_requester_?", "ros2service", "ros2")]
+    # the verbs that make no client stay processes, said
+    assert [d.message.split(" started")[0] for d in model.diagnostics
+            if d.code == "LAUNCH_PROCESS"] == ["process ros2 service list"]
+    calls = [(c.kind, c.name, c.type) for n in model.nodes
+             for c in command_node(n).calls]
+    assert calls == [
+        ("client", "controller_manager/set_hardware_component_state",
+         "controller_manager_msgs/srv/SetHardwareComponentState"),
+        ("client", "/reset", "std_srvs/srv/Empty"),
+        ("client", "/reset", "std_srvs/srv/Trigger")]
+    # argparse wants the service and its type: without the type, no client is made up
+    assert command_node(NodeDecl("/r", "ros2service", "ros2", args="service call /reset")) \
+        is None

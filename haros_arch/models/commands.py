@@ -1,5 +1,5 @@
 """Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
-``rosservice call``, dynamic_reconfigure's ``dynparam``,
+``rosservice call`` / ``ros2 service call``, dynamic_reconfigure's ``dynparam``,
 ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, ROS 1
 controller_manager's ``spawner`` and gazebo_ros' ``spawn_model``.
 
@@ -18,7 +18,11 @@ and ``--wait`` (which waits for the service), then the service, resolved in the 
 namespace (``script_resolve_name``), and YAML arguments; it calls it through
 ``rospy.ServiceProxy`` with the type the master gives. For ros2 topic pub the QoS is
 what its ``--qos-*`` options say (unknown, ``None``, when they say nothing: its defaults
-changed between releases).
+changed between releases). ros2 service call (ros2cli ``ros2service/verb/call.py``)
+takes the service and its type, both required, optional YAML values or ``--stdin``, and
+``-r`` / ``--rate`` with a value; ``requester`` makes the node
+``_ros2cli_requester_<package>_<Service>`` of the type's words and a client of the
+service with that type.
 
 topic_tools (ros_comm ``tools/topic_tools/src``, noetic-devel): ``relay IN [OUT]``
 subscribes IN and advertises OUT (default ``IN_relay``), reading ``~unreliable``,
@@ -119,6 +123,8 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _rosservice(decl, words)
     if decl.executable == "ros2" and words[:2] == ["topic", "pub"]:
         return _ros2_topic(decl, words[1:])
+    if decl.executable == "ros2" and words[:2] == ["service", "call"]:
+        return _ros2_service(decl, words[2:])
     if decl.executable == "ros2" and words[:2] == ["control", "load_controller"]:
         return _ros2_control_load(decl)
     if decl.package == "topic_tools" and decl.ros_version == 1:
@@ -511,6 +517,20 @@ def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:
                          location=decl.location,
                          origin="arguments")
     return _node(decl, decl.package or "ros2topic", call, "python")
+
+
+def _ros2_service(decl: NodeDecl, words: list[str]) -> Node | None:
+    """``ros2 service call SERVICE TYPE [VALUES] [--stdin] [-r RATE]``: a client of
+    SERVICE of TYPE (``pkg/Name`` is ``pkg/srv/Name``, as the verb imports it); None
+    when argparse would refuse the words (the two are required)."""
+    positional, _values, _flags = split_options(words, {"-r", "--rate"})
+    if len(positional) < 2:
+        return None
+    parts = positional[1].split("/")
+    type_ = f"{parts[0]}/srv/{parts[1]}" if len(parts) == 2 else positional[1]
+    call = PrimitiveCall("client", positional[0], type_, location=decl.location,
+                         origin="arguments")
+    return _node(decl, decl.package or "ros2service", call, "python")
 
 
 def _node(decl: NodeDecl, package: str, call: PrimitiveCall, language: Any) -> Node:

@@ -482,14 +482,21 @@ def one_process(charge: Charge, first: Any, second: Any = None) -> str:
             isinstance(value, NodeInstance) for value in values):
         raise QueryTypeError("one_process() takes two node instances or a list of them")
     charge(1 + len(values))
-    # the instances of one launch action, each made by the code under its own name
+    # the instances of one launch action, each made by the code under its own name; one
+    # without a code name is the node whose code name is the launch name (doosan's
+    # dsr_control_node2 beside the stop_subscriber_node its code makes too)
     processes: dict[Any, list[str]] = {}
+    renamed: set[Any] = set()
     for value in values:
+        own = value.code_name if value.code_name is not None else (
+            value.name.rsplit("/", 1)[-1])
         if value.code_name is not None:
-            names = processes.setdefault(value.location, [])
-            if value.code_name not in names:
-                names.append(value.code_name)
-    clauses = [" and ".join(names) for names in processes.values() if len(names) > 1]
+            renamed.add(value.location)
+        names = processes.setdefault(value.location, [])
+        if own not in names:
+            names.append(own)
+    clauses = [" and ".join(names) for where, names in processes.items()
+               if len(names) > 1 and where in renamed]
     if not clauses:
         return ""
     return ("; one process: the launch file's name renames every node its code makes, "

@@ -403,8 +403,9 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
     """The node a process's command line starts, when it is ``ros2 run PKG EXE ...``
     (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``), ``ros2
     topic pub ...`` (a publisher that ``models.commands`` reads from its arguments,
-    named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``)
-    or ``ros2 control load_controller ...`` (its DirectNode, which loads a controller);
+    named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``),
+    ``ros2 service call ...`` (a client, named after the service type) or ``ros2
+    control load_controller ...`` (its DirectNode, which loads a controller);
     None for any other process (a simulator, xacro), or when those words are not known.
     """
     def plain(word: Text) -> str | None:
@@ -424,6 +425,11 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
             if plain(word) in ("-n", "--node-name"):
                 name = words[index + 1]
         return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
+    if head[1:] == ["service", "call"]:
+        # ros2service's call verb: a node ``_ros2cli_requester_<package>_<Service>`` of
+        # the service type's words (``verb/call.py``, ``requester``) calls the service
+        return NodeAction(("ros2service",), ("ros2",), _requester_name(words[3:]),
+                          arguments=list(words[1:]))
     if head[1:] == ["control", "load_controller"]:
         # ros2controlcli's verb: its DirectNode (``_ros2cli_<pid>``) asks the controller
         # manager to load the controller (``models.commands``; the graph attaches the
@@ -431,6 +437,30 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
         name = ("_ros2cli_", Opaque("the process id of ros2 control", report=False))
         return NodeAction(("ros2controlcli",), ("ros2",), name, arguments=list(words[1:]))
     return None
+
+
+def _requester_name(words: list[Text]) -> Text:
+    """The name ``ros2 service call`` gives its node: ``_ros2cli_requester_`` with the
+    package and the service of its type, the second positional word (``pkg/srv/Name``
+    or ``pkg/Name``); ``?`` for those parts when the word is not known statically."""
+    positional: list[Text] = []
+    skip = False
+    for word in words:
+        text = word[0] if len(word) == 1 and isinstance(word[0], str) else None
+        if skip:
+            skip = False
+        elif text in ("-r", "--rate"):
+            skip = True  # the option's value
+        elif text is None or not text.startswith("-"):
+            positional.append(word)
+    kind = positional[1] if len(positional) > 1 else None
+    text = kind[0] if kind is not None and len(kind) == 1 and isinstance(kind[0], str) \
+        else None
+    parts = text.split("/") if text is not None else []
+    if len(parts) in (2, 3) and all(parts):
+        return (f"_ros2cli_requester_{parts[0]}_{parts[-1]}",)
+    return ("_ros2cli_requester_", Opaque("the service type of ros2 service call",
+                                          report=False))
 
 
 def installed_executable(program: str | None) -> tuple[str, str] | None:

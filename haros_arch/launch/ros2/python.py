@@ -134,6 +134,9 @@ class Interpreter(Expressions):
         self.made_paths: list[str] = []
         self.guard_runs = 0
         self.decided: dict[int, ast.AST] = {}
+        # the ``if`` tests not known statically that nothing said why of, by id: said
+        # once at the test when an action is first made under one (``guarding``)
+        self.tests_unsaid: dict[int, Diagnostic] = {}
         # the enclosing ``try`` statements: the exception classes their handlers name
         # (None: one not known) and how many guards there were when each began
         self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
@@ -871,7 +874,15 @@ class Interpreter(Expressions):
 
     def if_(self, stmt: ast.If, env: dict[str, Any]) -> None:
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
+        said = len(self.diagnostics)
         value, test = self.test_of(stmt.test, env)
+        if test is None and len(self.diagnostics) == said:
+            # a test not known whose value said nothing of why where it was made (an
+            # environment variable not set, a call not run: said there) is said once,
+            # at the test, if it guards an action (``guarding``)
+            self.tests_unsaid.setdefault(id(stmt.test), diag.make(
+                "LAUNCH_UNSUPPORTED", self.where(stmt.test),
+                detail=f"Python test {_source(stmt.test)}"))
         if launch_object(value) or id(stmt.test) in self.decided:
             # ``if LaunchConfigurationEquals(...):`` never tests it, nor does
             # ``if LaunchConfiguration('sim') == 'true':`` (always false) or ``not`` of one
@@ -889,14 +900,14 @@ class Interpreter(Expressions):
             # goes on set (the other returns), else either's
             before = dict(env)
             held = [(d, dict(d)) for d in self.dicts_held(env)]
-            taken = self.branch(stmt.body, env, text)
+            taken = self.branch(stmt.body, env, text, id(stmt.test))
             after_body = dict(env)
             body_items = [dict(d) for d, _ in held]
             for d, items in held:
                 _refill(d, items)
             env.clear()
             env.update(before)
-            left = self.branch(stmt.orelse, env, f"not ({text})")
+            left = self.branch(stmt.orelse, env, f"not ({text})", id(stmt.test))
             if taken is not None and left is not None:  # both return: so does the if
                 raise _Return(self.either([taken.value, left.value]))
             if left is not None:
@@ -915,7 +926,15 @@ class Interpreter(Expressions):
                 if not self.returns:
                     raise returned
                 self.returns[-1].append(returned.value)
-                self.guards.append(self.guard(text if taken is None else f"not ({text})"))
+                self.guards.append(self.guard(text if taken is None else f"not ({text})",
+                                              id(stmt.test)))
+
+    def guarding(self) -> None:
+        for guard in self.guards:
+            found = self.tests_unsaid.pop(guard.test, None) if guard.test is not None \
+                else None
+            if found is not None and found not in self.diagnostics:
+                self.diagnostics.append(found)
 
     def test_of(self, node: ast.expr, env: dict[str, Any]) -> tuple[Any, bool | None]:
         """The value of an ``if``'s test and its truth (None: not known). An ``and``
@@ -1008,11 +1027,11 @@ class Interpreter(Expressions):
             items[key] = value
         _refill(held, items)
 
-    def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str
-               ) -> _Return | None:
-        """One branch of an ``if`` whose test is not known, under that test; its
-        ``return``, if it returns."""
-        self.guards.append(self.guard(guard))
+    def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str,
+               test: int | None = None) -> _Return | None:
+        """One branch of an ``if`` whose test is not known, under that test (``test``:
+        its node, by id); its ``return``, if it returns."""
+        self.guards.append(self.guard(guard, test))
         try:
             self.block(body, env)
         except _Return as ret:

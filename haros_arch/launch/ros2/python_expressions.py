@@ -99,10 +99,14 @@ class Expressions(Walker):
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
 
-    def guard(self, text: str) -> Guard:
-        """A run of a test not known statically, to push on ``guards``."""
+    def guard(self, text: str, test: int | None = None) -> Guard:
+        """A run of a test not known statically, to push on ``guards`` (``test``: the
+        ``if`` test's node it comes from, by id)."""
         self.guard_runs += 1
-        return Guard(text, self.guard_runs)
+        return Guard(text, self.guard_runs, test)
+
+    def guarding(self) -> None:
+        """An action is made under ``guards``: the tests not said yet are said."""
 
     def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
         raise NotImplementedError
@@ -476,9 +480,12 @@ class Expressions(Walker):
         """An action (or a composable node's description) made under a Python ``if``
         whose test is unknown: conditional. A description that has a condition of its
         own keeps it alone (no group to put it in: it may then be taken when the test
-        would not hold, never left out)."""
+        would not hold, never left out). The test is said once, where it is, for the
+        first action it guards (``guarding``), or its value where it was made (a loop's
+        items, a filter): not again at each action."""
+        self.guarding()
         text = " and ".join(self.guards)
-        cond = e.Cond((e.Opaque(f"Python test {text}"),), source=text,
+        cond = e.Cond((e.Opaque(f"Python test {text}", report=False),), source=text,
                       runs=tuple(guard.run for guard in self.guards))
         if action.condition is None:
             action.condition = cond

@@ -70,10 +70,12 @@ class Guard(str):
     the same."""
 
     run: int
+    test: int | None  # the ``if`` test it comes from (``id`` of its node), if one
 
-    def __new__(cls, text: str, run: int) -> Guard:
+    def __new__(cls, text: str, run: int, test: int | None = None) -> Guard:
         made = super().__new__(cls, text)
         made.run = run
+        made.test = test
         return made
 
 
