@@ -515,6 +515,16 @@ CATALOGUE: dict[str, Entry] = {
         "(\"Cannot have a value before ros__parameters\"), so a node given it on its "
         "command line does not start. Fix: put the values under the node's "
         "ros__parameters."),
+    "LAUNCH_PARAMS_MIXED_SEQUENCE": Entry(
+        "error", "parameter file {file}: {keys}: a sequence of elements of more than one "
+        "type, which rcl refuses",
+        "rcl reads a ROS 2 parameter file's sequence as an array of one type (bool, "
+        "integer, double or string), taken from its first element; an element of "
+        "another type (0 among doubles: write 0.0) makes it refuse the whole file "
+        "(\"Sequence should be of same type\"), so a node given it on its command line "
+        "does not start. launch_ros promotes such a list to doubles only in a launch "
+        "file's own dictionaries. clearpath_sensors' microstrain_imu.yaml (a0f07cfb^) "
+        "wrote imu_orientation_cov: [0.01, 0, 0, ...]."),
     "LAUNCH_SUBST_UNCLOSED": Entry(
         "warning", "the substitution \"{text}\" is never closed: roslaunch keeps it as "
         "plain text",

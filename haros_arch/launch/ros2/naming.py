@@ -271,6 +271,52 @@ def values_outside(document: Any, depth: int = 0, path: tuple[str, ...] = ()) ->
     return found
 
 
+_RCL_INTEGER = re.compile(r"[-+]?(?:0|[1-9][0-9]*)")
+_RCL_DOUBLE = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
+                         r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN)")
+
+
+def _rcl_scalar(value: Any) -> str | None:
+    """The type rcl's YAML parser gives a sequence element (bool, integer, double,
+    string); None for what it is not sure of (a text our YAML reader kept that rcl may
+    read as a number, ``1e3``; a nested value)."""
+    if isinstance(value, bool):
+        return "bool"
+    if isinstance(value, int):
+        return "integer"
+    if isinstance(value, float):
+        return "double"
+    if isinstance(value, str):
+        if _RCL_INTEGER.fullmatch(value) or _RCL_DOUBLE.fullmatch(value):
+            return None  # a number to rcl, a text to the YAML reader here
+        return "string"
+    return None
+
+
+def mixed_sequences(document: Any, depth: int = 0,
+                    path: tuple[str, ...] = ()) -> list[tuple[str, str]]:
+    """The values of a parameter file that are sequences of elements of more than one
+    type to rcl (``[0.01, 0, 0]``: a double, then integers), as ``(key path, the types
+    in order of appearance)``: rcl refuses the whole file ("Sequence should be of same
+    type"); launch_ros promotes such a list to doubles only in a launch file's own
+    dictionaries, not in a file it hands rcl."""
+    if not isinstance(document, dict) or depth > MAX_PARAM_DEPTH:
+        return []
+    found: list[tuple[str, str]] = []
+    for key, value in document.items():
+        where = (*path, str(key))
+        if isinstance(value, dict):
+            found.extend(mixed_sequences(value, depth + 1, where))
+        elif isinstance(value, list) and len(value) > 1:
+            kinds = [_rcl_scalar(item) for item in value]
+            seen = [k for k in dict.fromkeys(kinds) if k is not None]
+            if len(seen) < len(dict.fromkeys(kinds)):
+                continue
+            if len(seen) > 1:
+                found.append(("/".join(where), " then ".join(seen)))
+    return found
+
+
 def as_component_file(document: Any) -> Any:
     """A parameter file as launch_ros gives it to a composable node: one with no
     ``ros__parameters`` anywhere is the node's parameters whole, its mappings joined by

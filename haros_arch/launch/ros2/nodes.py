@@ -150,6 +150,14 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             runner.report("LAUNCH_PARAMS_OUTSIDE", location, file=file,
                           keys=", ".join(outside[:5]) + (
                               f" and {len(outside) - 5} more" if len(outside) > 5 else ""))
+        mixed = naming.mixed_sequences(document) if not composable else []
+        if mixed and said not in runner.mixed_said:
+            runner.mixed_said.add(said)
+            file = runner.workspace.relpath(share_source(runner.workspace, shared)) if (
+                shared) else "a rewritten parameter file"
+            runner.report("LAUNCH_PARAMS_MIXED_SEQUENCE", location, file=file,
+                          keys=", ".join(f"{k} ({kinds})" for k, kinds in mixed[:3]) + (
+                              f" and {len(mixed) - 3} more" if len(mixed) > 3 else ""))
         # what the file's ``/**`` entries give every node it is given to (an entry for
         # this node's name is this node's own): a setting for each of them (``shared``)
         if shared:

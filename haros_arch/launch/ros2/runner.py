@@ -196,6 +196,7 @@ class Runner:
         self.file_uses: dict[str, list[tuple[Any, str, Location,
                                              tuple[Condition, ...]]]] = {}
         self.outside_said: set[str] = set()  # files LAUNCH_PARAMS_OUTSIDE named
+        self.mixed_said: set[str] = set()  # files LAUNCH_PARAMS_MIXED_SEQUENCE named
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
         # the unknown output of each Command evaluated, with its command line: a value
