@@ -179,3 +179,22 @@ def test_the_use_survives_a_saved_model(write_tree: Any) -> None:
     assert {a.name: a.use for a in include_args(i for i in again if i is not None)} == {
         a.name: a.use for a in include_args(model.tree)}
     assert {a.use for a in include_args(model.tree)} == {"declared", "read", "unused"}
+
+
+def test_an_argument_read_by_an_action_its_condition_skips_is_read(write_tree: Any) -> None:
+    # webots_ros2_epuck's robot_tools_launch.py reads fill_map in its mapper's parameters,
+    # the mapper under IfCondition(use_mapper), false by default: the includer's
+    # fill_map:=True is used when the mapper runs, not ignored
+    inner = HEAD + """
+from launch.conditions import IfCondition
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='nav', executable='mapper', name='mapper',
+             parameters=[{'fill_map': LaunchConfiguration('rviz', default='true')}],
+             condition=IfCondition(LaunchConfiguration('mapper', default='false'))),
+    ])
+"""
+    uses = _uses(_tree(write_tree, inner=inner))
+    assert uses["rviz"] == ("read", "nav/launch/bringup.launch.py")
+    assert uses["params"] == ("unused", "nav/launch/bringup.launch.py")

@@ -14,7 +14,7 @@ import os
 import pickle
 import shlex
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, is_dataclass, replace
 from typing import Any
 
 import yaml
@@ -52,6 +52,8 @@ MAX_ITERATIONS = 1_000  # of one ForEach / ForLoop
 
 # diagnostics that say part of a launch file was not read as launch would run it: what
 # that part would have declared or read of the launch configurations is not seen
+MAX_SKIPPED_VISITS = 20_000  # values of a skipped action looked through for names
+MAX_SKIPPED_DEPTH = 24
 HIDING_CODES = frozenset({
     "LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED", "LAUNCH_PY_BUDGET", "LAUNCH_PY_SYNTAX",
     "LAUNCH_XML_SYNTAX", "LAUNCH_YAML_SYNTAX", "LAUNCH_UNKNOWN_TAG", "LAUNCH_FILE_MISSING",
@@ -230,6 +232,28 @@ class Runner:
         ``context.launch_configurations``): the includes being performed use it."""
         for frame in self.includes:
             frame.read.add(name)
+
+    def read_skipped(self, action: Any) -> None:
+        """The launch configurations an action its condition skips names by name (its
+        LaunchConfiguration / ``$(var)`` substitutions): read there when the condition
+        holds, so an include's argument of that name is used, not ignored
+        (webots_ros2_epuck's robot_tools_launch.py reads ``fill_map`` in its mapper's
+        parameters, the mapper under ``IfCondition(use_mapper)``, false by default)."""
+        stack: list[tuple[Any, int]] = [(action, 0)]
+        seen = 0
+        while stack and seen < MAX_SKIPPED_VISITS:
+            value, depth = stack.pop()
+            seen += 1
+            if depth > MAX_SKIPPED_DEPTH:
+                continue
+            if isinstance(value, e.Var) and all(isinstance(p, str) for p in value.name):
+                self.config_read("".join(str(p) for p in value.name))
+            if isinstance(value, (list, tuple)):
+                stack.extend((item, depth + 1) for item in value)
+            elif isinstance(value, dict):
+                stack.extend((item, depth + 1) for item in value.values())
+            elif is_dataclass(value) and not isinstance(value, type):
+                stack.extend((getattr(value, f.name), depth + 1) for f in fields(value))
 
     def config_declared(self, name: str) -> None:
         for frame in self.includes:
@@ -415,6 +439,7 @@ class Runner:
             self.guard = None
             inner = self.condition(action.condition, scope, action.location)
             if inner is None:
+                self.read_skipped(action)
                 left_out = recording.skipped(action, self.guard) if self.guard else None
                 if left_out is not None:
                     if left_out.kind == "include" and os.path.isabs(left_out.name):
