@@ -1992,9 +1992,14 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
         head = "template <" + ", ".join(
             f"long long V{i} = 0" if i in node.value_arguments else f"class T{i} = haros_any"
             for i in range(max(node.value_arguments) + 1)) + ", class... T> "
+    # the address of an object of a declared type is a pointer to it, not the
+    # permissive address a permissive value's is: a template's ``T *`` deduces it
+    # (RoboRTS' ``ReadProtoFromTextFile(path, &config)``, its protobuf class declared)
     return [f"{indent}{head}struct {name} : haros_any {{",
             f"{indent}  using haros_any::haros_any;",
             f"{indent}  using haros_any::operator=;",
+            f"{indent}  {name} *operator&();",
+            f"{indent}  const {name} *operator&() const;",
             *([f"{indent}  virtual ~{name}();"] if node.polymorphic else []),
             *inner, f"{indent}}};"]
 
