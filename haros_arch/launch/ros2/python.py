@@ -86,6 +86,7 @@ from .python_values import (
 )
 
 T = TypeVar("T")
+FILE_UNKNOWN = "LAUNCH_PY_FILE_UNKNOWN"  # a file read whose content is not known
 
 
 class _Overlay(Mapping[str, str]):
@@ -198,27 +199,15 @@ class Interpreter(Expressions):
                                               detail="interpretation nested too deeply"))
         return failed
 
-    def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
+    def unsupported(self, node: ast.AST | None, detail: str,
+                    code: str = "LAUNCH_PY_UNSUPPORTED") -> Unknown:
         """Said here, once: the value is unknown, of kind ``unsupported`` and made at
         this place, so that what uses it later says no more (``python_values.to_text``)
-        and an action list it lands in names the place (``actions_of``)."""
+        and an action list it lands in names the place (``actions_of``). ``code``:
+        LAUNCH_PY_FILE_UNKNOWN for a file's content not known (``read``), which hides
+        no launch configuration as a construct not run does."""
         where = self.where(node)
-        found = diag.make("LAUNCH_PY_UNSUPPORTED", where, detail=detail)
-        if found not in self.diagnostics:
-            self.diagnostics.append(found)
-        return Unknown(detail, "unsupported", where=where)
-
-    def unknown_file(self, node: ast.AST | None, detail: str) -> Unknown:
-        """A file the code reads whose content is not known (not there, outside the
-        workspace, its path not known): said once here, as ``unsupported`` says a
-        construct, but as ``LAUNCH_PY_FILE_UNKNOWN``, which hides no launch
-        configuration: a file's content is data, it reads none by itself (what the code
-        then does with it, a configuration named by it or an include of a path in it,
-        says so where it happens). The arguments an include passes are judged on the
-        rest (husky's accessories launch passes ``baud`` to microstrain's launch file,
-        whose default parameters file sits in a submodule not checked out)."""
-        where = self.where(node)
-        found = diag.make("LAUNCH_PY_FILE_UNKNOWN", where, detail=detail)
+        found = diag.make(code, where, detail=detail)
         if found not in self.diagnostics:
             self.diagnostics.append(found)
         return Unknown(detail, "unsupported", where=where)
@@ -1117,24 +1106,31 @@ class Interpreter(Expressions):
             self.returns[-1].append(unknown)
 
     def read(self, path: Any, node: ast.AST) -> str | None:
-        """The text of a file of the workspace or an installed package (bounded)."""
+        """The text of a file of the workspace or an installed package (bounded). One
+        not known (not there, outside the workspace, its path not known) is said here,
+        LAUNCH_PY_FILE_UNKNOWN: a file's content is data and reads no launch
+        configuration by itself (what the code then does with it, a configuration named
+        by it or an include of a path in it, says so where it happens), so the arguments
+        an include passes are judged on the rest (husky's accessories launch passes
+        ``baud`` to microstrain's launch file, whose default parameters file sits in a
+        submodule not checked out)."""
         from ...files import read_text
         from ...share import share_source
 
         if not isinstance(path, str):
-            self.unknown_file(node, "a file whose path is not known statically")
+            self.unsupported(node, "a file whose path is not known statically", FILE_UNKNOWN)
             return None
         full = os.path.realpath(share_source(self.workspace, path))
         if not self.workspace.readable(full, self.environment):
-            self.unknown_file(node, f"{path} is outside the workspace; not read")
+            self.unsupported(node, f"{path} is outside the workspace; not read", FILE_UNKNOWN)
             return None
         if not os.path.lexists(full):
             # said where it is read, not at a file that is not there: a build step or
             # the launch code itself may make it (vrx_gz's spawn reads the model.urdf its
             # Model.generate wrote), so its content is unknown, as a parameter file's
-            self.unknown_file(node, f"{self.workspace.relpath(full)} does not exist in "
-                                    "the workspace (a build or launch step may make it); "
-                                    "its content is not known")
+            self.unsupported(node, f"{self.workspace.relpath(full)} does not exist in the "
+                                   "workspace (a build or launch step may make it); its "
+                                   "content is not known", FILE_UNKNOWN)
             return None
         text, found = read_text(full, self.workspace.location(full), MAX_READ)
         self.diagnostics.extend(found)

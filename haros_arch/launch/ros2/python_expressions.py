@@ -108,7 +108,8 @@ class Expressions(Walker):
     def guarding(self) -> None:
         """An action is made under ``guards``: the tests not said yet are said."""
 
-    def unsupported(self, node: ast.AST | None, detail: str) -> Unknown:
+    def unsupported(self, node: ast.AST | None, detail: str,
+                    code: str = "LAUNCH_PY_UNSUPPORTED") -> Unknown:
         raise NotImplementedError
 
     def where(self, node: ast.AST | None) -> Location:
