@@ -276,21 +276,17 @@ _RCL_DOUBLE = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?
                          r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN)")
 
 
+_RCL_TYPE_NAMES = {"int": "integer", "str": "string"}  # rcl's words for scalar_type's
+
+
 def _rcl_scalar(value: Any) -> str | None:
     """The type rcl's YAML parser gives a sequence element (bool, integer, double,
     string); None for what it is not sure of (a text our YAML reader kept that rcl may
     read as a number, ``1e3``; a nested value)."""
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, int):
-        return "integer"
-    if isinstance(value, float):
-        return "double"
-    if isinstance(value, str):
-        if _RCL_INTEGER.fullmatch(value) or _RCL_DOUBLE.fullmatch(value):
-            return None  # a number to rcl, a text to the YAML reader here
-        return "string"
-    return None
+    kind = scalar_type(value)
+    if kind == "str" and (_RCL_INTEGER.fullmatch(value) or _RCL_DOUBLE.fullmatch(value)):
+        return None  # a number to rcl, a text to the YAML reader here
+    return _RCL_TYPE_NAMES.get(kind, kind) if kind is not None else None
 
 
 def mixed_sequences(document: Any, depth: int = 0,

@@ -143,21 +143,21 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)) else None
         shared = path.literal if path is not None else None
         said = shared or f"{location.file}:{location.line}:{location.column}"
-        if outside and said not in runner.outside_said:
-            runner.outside_said.add(said)
+
+        def file_said(code: str, keys: list[str], listed: int) -> None:
+            """What is wrong with the file, said once per file, its first keys named."""
+            if not keys or (code, said) in runner.files_said:
+                return
+            runner.files_said.add((code, said))
             file = runner.workspace.relpath(share_source(runner.workspace, shared)) if (
                 shared) else "a rewritten parameter file"
-            runner.report("LAUNCH_PARAMS_OUTSIDE", location, file=file,
-                          keys=", ".join(outside[:5]) + (
-                              f" and {len(outside) - 5} more" if len(outside) > 5 else ""))
-        mixed = naming.mixed_sequences(document) if not composable else []
-        if mixed and said not in runner.mixed_said:
-            runner.mixed_said.add(said)
-            file = runner.workspace.relpath(share_source(runner.workspace, shared)) if (
-                shared) else "a rewritten parameter file"
-            runner.report("LAUNCH_PARAMS_MIXED_SEQUENCE", location, file=file,
-                          keys=", ".join(f"{k} ({kinds})" for k, kinds in mixed[:3]) + (
-                              f" and {len(mixed) - 3} more" if len(mixed) > 3 else ""))
+            runner.report(code, location, file=file, keys=", ".join(keys[:listed]) + (
+                f" and {len(keys) - listed} more" if len(keys) > listed else ""))
+
+        file_said("LAUNCH_PARAMS_OUTSIDE", outside, 5)
+        file_said("LAUNCH_PARAMS_MIXED_SEQUENCE", [
+            f"{key} ({kinds})" for key, kinds in naming.mixed_sequences(document)]
+            if not composable else [], 3)
         # what the file's ``/**`` entries give every node it is given to (an entry for
         # this node's name is this node's own): a setting for each of them (``shared``)
         if shared:

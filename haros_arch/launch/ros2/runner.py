@@ -197,8 +197,8 @@ class Runner:
         # (``nodes.sections_for_no_node``)
         self.file_uses: dict[str, list[tuple[Any, str, Location,
                                              tuple[Condition, ...]]]] = {}
-        self.outside_said: set[str] = set()  # files LAUNCH_PARAMS_OUTSIDE named
-        self.mixed_said: set[str] = set()  # files LAUNCH_PARAMS_MIXED_SEQUENCE named
+        # (code, parameter file) of what was said of a file (LAUNCH_PARAMS_OUTSIDE, ...)
+        self.files_said: set[tuple[str, str]] = set()
         self.anon: dict[str, Unknown] = {}
         self.guard: LaunchCondition | None = None  # the condition of the action at hand
         # the unknown output of each Command evaluated, with its command line: a value
@@ -247,7 +247,7 @@ class Runner:
             if depth > MAX_SKIPPED_DEPTH:
                 continue
             if isinstance(value, e.Var) and all(isinstance(p, str) for p in value.name):
-                self.config_read("".join(str(p) for p in value.name))
+                self.config_read(recording.written(value.name))
             if isinstance(value, (list, tuple)):
                 stack.extend((item, depth + 1) for item in value)
             elif isinstance(value, dict):
