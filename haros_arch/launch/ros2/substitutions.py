@@ -278,15 +278,14 @@ class Evaluator:
                 self.report("LAUNCH_ARG_UNSET", name=name)
                 return Value.unknown(f"var {name}")
             return found
-        if s.tested and self.scope.unseen:  # perhaps declared where it is not seen
-            self.report("LAUNCH_UNKNOWN_VALUE", detail=unseen_declaration(
-                name, self.scope.unseen, self.location))
-            return Value.unknown(f"var {name}")
         if s.tested:
-            # nothing declares or sets it: launch's test is unequal, silently
-            # (interbotix_xslocobot_nav tested slam_toolbox_mode, declared slam_mode)
-            self.report("LAUNCH_CONDITION_UNSET", name=name)
-        if s.default is not None:
+            # launch's test of a configuration nothing set is unequal, silently
+            # (interbotix_xslocobot_nav tested slam_toolbox_mode, declared slam_mode);
+            # one an action not seen may set is not known (below)
+            if not self.scope.unseen:
+                self.report("LAUNCH_CONDITION_UNSET", name=name)
+                return self.value(s.default or ("",))
+        elif s.default is not None:
             return self.value(s.default)
         if self.scope.unseen:
             # declared, maybe, by what the reader could not see: undecided, not unset
