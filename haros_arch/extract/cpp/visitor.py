@@ -4519,12 +4519,15 @@ def _renames_itself(arg: Cursor) -> bool:
     # nav2_util::LifecycleNode pushes ``"__node:=" + get_name() + "_rclcpp_node"`` into
     # ``new_args``, then builds ``rclcpp::Node("_", ns, NodeOptions(options).arguments(
     # new_args))``: a rule of that function's, where the list is written
+    looked: set[int] = set()  # the functions looked through (each local's own)
     for node in source.walk_preorder():
         local = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
-        if local is None or local.kind != CursorKind.VAR_DECL or local.semantic_parent is None \
-                or local.semantic_parent.kind not in FUNCTIONS:
+        function = local.semantic_parent if local is not None and (
+            local.kind == CursorKind.VAR_DECL) else None
+        if function is None or function.kind not in FUNCTIONS or function.hash in looked:
             continue
-        if _names_node_rule(local.semantic_parent, MAX_RULE_TOKENS):
+        looked.add(function.hash)
+        if _names_node_rule(function, MAX_RULE_TOKENS):
             return True
     return False
 
