@@ -2336,6 +2336,9 @@ def _node_given(errors: list[_Error], places: _Places, workspace: Workspace
         if function is None or lines is None:
             continue
         given = recall.node_given(lines, error.line, places.node_names(function))
+        if given is not None and recall.assigns_to(lines, error.line, match.group("name")
+                                                   or match.group("scope")):
+            given = None  # the unknown name takes the result: nothing is given to it
         if given is not None:
             said.add((error.path, error.line))
             places.finder.handed.add(owner_of(function))

@@ -222,6 +222,14 @@ def own_folder(folder: str, workspace: Workspace) -> bool:
     return folder != root and _owned(folder, root)
 
 
+def in_own_project(path: str, root: str) -> bool:
+    """Whether the file or folder ``path`` of the package at ``root`` belongs to the
+    package's own CMake project (``_owned``), not to a sub-project it vendors (ouster-ros'
+    ``ouster-sdk``, a ``project()`` of its own)."""
+    path = os.path.abspath(path)
+    return _owned(path if os.path.isdir(path) else os.path.dirname(path), os.path.abspath(root))
+
+
 def _owned(folder: str, root: str) -> bool:
     """Whether ``folder`` belongs to the package's own CMake project: no folder between
     the package root and it (itself included) is another project, one whose

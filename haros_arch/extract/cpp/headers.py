@@ -489,13 +489,18 @@ class IncludeSetup:
             self.user_dirs += [inc for inc in cmake_includes.exported_include_dirs(
                 root, workspace) if inc not in self.user_dirs]
         # the headers those packages install under names their folders do not hold
-        # (``_installed_header``), the first package's where two install one name
+        # (``_installed_header``), the first package's where two install one name; not
+        # those of a sub-project the package vendors, whose include folders are not
+        # given either (ouster-ros installs ouster-sdk's ``ouster/`` and ``nonstd/``:
+        # read, the SDK's Eigen tensors and optional-lite broke the node classes that
+        # hold its types)
         self._installed: dict[str, str] = {}
         for root in (*roots, *depended):
             package = workspace.package_of(root)
             if package is not None and package.root == root:
                 for name, path in share.include_map(package, workspace).items():
-                    self._installed.setdefault(name, path)
+                    if cmake_includes.in_own_project(path, root):
+                        self._installed.setdefault(name, path)
         for unit in self.units.values():  # so that the scan before parsing finds them
             self.user_dirs += [d for d in unit.include_dirs if d not in self.user_dirs]
         # the packages being extracted that our stand-ins also provide, with their

@@ -425,6 +425,16 @@ def node_given(lines: Sequence[str], line: int, names: Iterable[str]) -> str | N
     return found.group(1) if found is not None else None
 
 
+def assigns_to(lines: Sequence[str], line: int, name: str) -> bool:
+    """Whether the statement of the file of ``lines`` that starts on ``line`` assigns
+    to ``name`` (``name = ...``): the name then receives what the
+    right side makes, not the node or the options an argument there passes (tf2_ros'
+    ``optional_default_node_ = rclcpp::Node::make_shared("_", options)``, a member the
+    parse does not know, is no call given the options)."""
+    statement = "\n".join(_statement(lines, line))
+    return re.match(r"\s*" + re.escape(name) + r"\s*=(?!=)", statement) is not None
+
+
 def _macro_body(lines: Sequence[str], name: str) -> str | None:
     """The text a function-like macro ``name`` defined in the file of ``lines`` expands
     to, its continued lines joined (sbus_bridge's ``#define GET_PARAM(name) if
