@@ -103,6 +103,20 @@ def test_a_source_s_include_folders_are_its_targets_as_the_build_decides(tmp_pat
     assert "bridge/ros1_bridge/src/bridge.cpp" not in folders
 
 
+def test_a_run_naming_no_ros_version_gives_the_folders_of_each_build(tmp_path) -> None:
+    # no ROS_VERSION: ``if("$ENV{ROS_VERSION}" STREQUAL "1")`` is not decided, and the
+    # folders given in its ``elseif`` branch are that branch's, as its targets are (they
+    # carried the ``if`` too, so no target was under them and the ROS 1 variant of
+    # params.hpp, first in name order, was parsed: foxglove_bridge read with no distro)
+    root = _package(tmp_path)
+    ws = scan([str(tmp_path)], {"PATH": os.environ.get("PATH", "")})
+    folders = cmake.source_include_dirs(ws.packages["bridge"], ws)
+    assert folders["bridge/ros2_bridge/src/bridge.cpp"] == [
+        str(root / "ros2_bridge" / "include"), str(root / "base" / "include")]
+    assert folders["bridge/ros1_bridge/src/bridge.cpp"] == [
+        str(root / "ros1_bridge" / "include")]
+
+
 def test_the_variant_of_a_header_the_build_names_is_parsed(tmp_path) -> None:
     root = _package(tmp_path)
     source = os.path.join(root, "ros2_bridge", "src", "bridge.cpp")

@@ -928,3 +928,53 @@ def test_a_package_the_build_finds_and_the_manifest_does_not_name(write_tree: An
     assert any("moveit::planning_interface::MoveGroupInterface of ROS package "
                "moveit_ros_planning_interface is built here" in r
                for r in node.completeness_reasons), node.completeness_reasons
+
+
+ARM = """
+    #include <ros/ros.h>
+    #include <moveit/move_group_interface/move_group_interface.h>
+
+    bool moveArm() {
+      double tolerance = 0.1;
+      moveit::planning_interface::MoveGroupInterface group("right_arm");
+      group.setGoalPositionTolerance(tolerance);
+      return group.move();
+    }
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "wave");
+      ros::NodeHandle nh;
+      moveArm();
+    }
+    """
+
+
+def test_a_missing_class_built_where_no_ros_call_is_made(write_tree: Any) -> None:
+    # (vizzy's waveDemo) MoveIt's headers are missing and the function that builds its
+    # MoveGroupInterface makes no call of the API: the error on ``moveit`` still hides
+    # what that class does, so its name is declared and the construction said
+    node, _ = _teleop(write_tree, ARM, "moveit_ros_planning_interface")
+    assert node.completeness == "partial"
+    assert any(r.startswith("teleop/src/teleop.cpp:6:")
+               and "moveit::planning_interface::MoveGroupInterface of ROS package "
+               "moveit_ros_planning_interface is built here" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+
+
+def test_a_missing_vendor_class_built_where_no_ros_call_is_made(write_tree: Any) -> None:
+    # the same shape with a namespace that is no package the node depends on
+    node, _ = _teleop(write_tree, ARM.replace("moveit::planning_interface::", "vendor::"),
+                      "moveit_ros_planning_interface")
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_nested_type_of_a_missing_class_is_data(write_tree: Any) -> None:
+    # ``MoveGroupInterface::Plan plan;`` builds the class's own plan, not the class
+    code = ARM.replace("      return group.move();",
+                       "      moveit::planning_interface::MoveGroupInterface::Plan plan;\n"
+                       "      ros::param::param(\"~tolerance\", tolerance, 0.1);\n"
+                       "      return group.move();")
+    node, _ = _teleop(write_tree, code, "moveit_ros_planning_interface")
+    reasons = node.completeness_reasons
+    assert any(r.startswith("teleop/src/teleop.cpp:6:") for r in reasons), reasons
+    assert not any("::Plan" in r for r in reasons), reasons

@@ -695,7 +695,7 @@ def include_folders(it: Interpreter, raw: tuple[Argument, ...]
     command that are not decided: a ``$<BUILD_INTERFACE:...>`` its folder, no other
     generator expression (``$<INSTALL_INTERFACE:include>``), no argument that reads what
     this reading does not know (``${rclcpp_INCLUDE_DIRS}``)."""
-    conditions = (*it.current_conditions(), *it.unsure_tests)
+    conditions = it.unsure_conditions()
     found: list[tuple[str, str, tuple[Condition, ...]]] = []
     keyword = "PRIVATE"
     for arg in raw:
@@ -750,7 +750,7 @@ def _definitions(it: Interpreter, command: Invocation, raw: tuple[Argument, ...]
     found: list[tuple[str, CompileDefinition]] = []
     keyword = "PRIVATE"
     # (a test decided on what is not known may have chosen wrongly: as not decided)
-    conditions = (*it.current_conditions(), *it.unsure_tests)
+    conditions = it.unsure_conditions()
     for arg in raw:
         unknown = arg.kind != "bracket" and it.unknown_reference(arg.text)
         written = arg.text.strip()

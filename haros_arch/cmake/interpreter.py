@@ -322,6 +322,17 @@ class Interpreter:
     def current_conditions(self) -> tuple[Condition, ...]:
         return (*self.returns, *self.conditions)
 
+    def unsure_conditions(self) -> tuple[Condition, ...]:
+        """``current_conditions`` with the tests decided on what is not known
+        (``unsure_tests``: they may have chosen wrongly, so as not decided); not one the
+        reading left undecided, which is there already as the branch it is in (the
+        ``else`` of ``if("$ENV{ROS_VERSION}" STREQUAL "1")`` where ``elseif(... "2")``
+        runs: foxglove_bridge's ROS 2 include folders carried the ``if`` too, under which
+        their target, made in that branch, is not, so no target was given them)."""
+        current = self.current_conditions()
+        tracked = {c.location for c in current}
+        return (*current, *(t for t in self.unsure_tests if t.location not in tracked))
+
     def sure(self) -> bool:
         """Whether the command being run runs for certain, with what it reads known: under
         no if() or return() not decided, reading no value not known."""

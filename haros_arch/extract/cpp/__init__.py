@@ -1722,10 +1722,13 @@ def _translation_unit(path: str, text: str, ros2: bool,
     # the unit's own wrappers of the API, once a walk found them: a second parse declares
     # the names of the errors in functions that call them (``_again_for``)
     wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+    read: list[str] = []  # the workspace files the ROS 1 client test reads
+    clients = None if ros2 else ros1_clients(path, workspace, setup.generated, read)
     while True:
         result = CppResult()
         source = SourceCache(workspace.holds, {path: data})
-        tu = _parse(path, text, setup, workspace, result, source, owned, ros2, wrappers)
+        tu = _parse(path, text, setup, workspace, result, source, owned, ros2, wrappers,
+                    clients)
         if tu is None:
             result.unseen = ["*"]
             return result, []
@@ -1741,10 +1744,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
         # the header of the names declared permissively, when this parse has them
         declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
             d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
-        read: list[str] = []  # the workspace files the ROS 1 client test reads
         finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
-                            clients=None if ros2 else ros1_clients(
-                                path, workspace, setup.generated, read), local=local,
+                            clients=clients, local=local,
                             ros_class=ros_classes(path, workspace, read))
         finder.run()
         places = _Places(finder, source)
@@ -2342,13 +2343,8 @@ def _node_given(errors: list[_Error], places: _Places, workspace: Workspace
         if given is not None:
             said.add((error.path, error.line))
             places.finder.handed.add(owner_of(function))
-            name = match.group("name") or match.group("scope")
             # as written there: ``quadrotor_common::getParam``, not its namespace alone
-            text = lines[error.line - 1] if 0 < error.line <= len(lines) else ""
-            written = re.match(re.escape(name) + r"(?:\s*::\s*\w+)+",
-                               text[max(error.column - 1, 0):])
-            if written is not None:
-                name = re.sub(r"\s+", "", written.group(0))
+            name = _written_name(error, match.group("name") or match.group("scope"), lines)
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
                 given=given, name=name))
@@ -2389,11 +2385,12 @@ def _innermost(functions: list[Cursor], path: str, line: int) -> Cursor | None:
 def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
            result: CppResult, source: SourceCache,
            owned: Callable[[str], bool], ros2: bool = False,
-           wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+           wrappers: tuple[frozenset[str], frozenset[str]] | None = None,
+           clients: Callable[..., str | None] | None = None
            ) -> TranslationUnit | None:
     """Parse ``path``; headers clang still misses are stood in for and parsed again, then
     names it does not know are declared (``synthesis``) and parsed again while that
-    leaves fewer errors."""
+    leaves fewer errors (``clients``: ``ros1_clients`` of a ROS 1 unit)."""
     unsaved = [(path, text)]
     args = setup.arguments(source=path)
     if not setup.system_headers:
@@ -2430,7 +2427,7 @@ def _parse(path: str, text: str, setup: IncludeSetup, workspace: Workspace,
                     "CPP_MACRO_DEMANDED", workspace.location(path), macro=name,
                     where=f"{workspace.relpath(file)}:{line}"))
     return _synthesise(path, tu, args, unsaved, setup, workspace, result, source, owned,
-                       wrappers)
+                       wrappers, clients)
 
 
 MAX_DEMANDED = 8  # macros defined for one unit because an #error demands them
@@ -2593,11 +2590,13 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                 unsaved: list[tuple[str, str]], setup: IncludeSetup, workspace: Workspace,
                 result: CppResult, source: SourceCache,
                 owned: Callable[[str], bool],
-                wrappers: tuple[frozenset[str], frozenset[str]] | None = None
+                wrappers: tuple[frozenset[str], frozenset[str]] | None = None,
+                clients: Callable[..., str | None] | None = None
                 ) -> TranslationUnit:
     """The parse with the fewest errors once the unknown names are declared;
     ``wrappers``: the names of the unit's own wrappers of the API, whose calls count as
-    the API's where an error may cost one (known once the unit was walked)."""
+    the API's where an error may cost one (known once the unit was walked); ``clients``:
+    which classes known only by name may make ROS calls of their own (``_hiding``)."""
 
     def mine(unit: TranslationUnit) -> list[_Error]:
         return [e for e in _errors(unit) if e.name is not None and owned(e.name)]
@@ -2613,7 +2612,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     # every parse of the unit: each file is read once, not once per parse)
     functions: dict[str, list[recall.Function]] = {}
     sites = _Sites(wrappers)
-    if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites):
+    if synthesis.MAX_ROUNDS < 1 or not _hiding(tu, first, source, fieldless, functions, sites,
+                                               clients):
         return tu  # no error where it could cost a call
     names.in_free = _in_free(first, functions, source)
     if not names.learn(_located(first, source)):
@@ -2642,7 +2642,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         # parsed again only when a name learnt here can matter: from an error that can
         # cost a call (the other errors' names are declared too, but never cost a parse)
         left = mine(again)
-        hiding = _hiding(again, left, source, fieldless, functions, sites)
+        hiding = _hiding(again, left, source, fieldless, functions, sites, clients)
         names.in_free = _in_free(left, functions, source)
         learnt = bool(hiding) and names.learn(_located(hiding, source))
         rest = names.learn(_located([e for e in left if e not in hiding], source))
@@ -2727,10 +2727,16 @@ def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
 def _hiding(tu: TranslationUnit, errors: list[_Error],
             source: SourceCache, fieldless: set[str],
             functions: dict[str, list[recall.Function]],
-            sites: dict[str, list[recall.Site]]) -> list[_Error]:
+            sites: dict[str, list[recall.Site]],
+            clients: Callable[..., str | None] | None = None) -> list[_Error]:
     """Those of ``errors`` that can cost a call (``recall``): one outside every function
     the unit defines (a declaration: it may make a class invalid, and every call in its
-    methods with it), or one inside a function whose text calls the ROS API. Errors
+    methods with it), one inside a function whose text calls the ROS API, or, with
+    ``clients``, one on a qualified name the parse does not know that ``clients`` takes
+    for a class of a ROS package that may make ROS calls of its own (vizzy's
+    ``moveit::planning_interface::MoveGroupInterface group("right_arm");``, MoveIt's
+    headers missing, in a function calling no API: declared, the class is one
+    ``CallFinder._unseen_class`` says is built without its code). Errors
     only inside functions that make no ROS call, and those on fields of messages known
     only by name (clang reads on past them) but in a ROS call's arguments
     (``_in_ros_call``), are left as they are: declaring the names they miss would cost
@@ -2754,9 +2760,32 @@ def _hiding(tu: TranslationUnit, errors: list[_Error],
         if not around:
             kept.append(error)
             continue
-        if recall.holding(line, around, _sites(name, source, sites)) is not None:
+        if recall.holding(line, around, _sites(name, source, sites)) is not None or (
+                clients is not None and _names_client_class(error, source, clients)):
             kept.append(error)
     return kept
+
+
+def _written_name(error: _Error, name: str, lines: list[str]) -> str:
+    """``name`` of ``error`` with the scopes written after it there (``quadrotor_common``
+    of ``quadrotor_common::getParam``: the whole), without spaces; ``name`` when the
+    error's place does not start with it."""
+    text = lines[error.line - 1] if 0 < error.line <= len(lines) else ""
+    written = re.match(re.escape(name) + r"(?:\s*::\s*\w+)+", text[max(error.column - 1, 0):])
+    return re.sub(r"\s+", "", written.group(0)) if written is not None else name
+
+
+def _names_client_class(error: _Error, source: SourceCache,
+                        clients: Callable[..., str | None]) -> bool:
+    """Whether ``error`` is on a name the parse does not know, written qualified
+    (``pkg::ns::Class``), that ``clients`` takes for a class of a ROS package whose code
+    may make ROS calls (``ros1_clients``)."""
+    match = recall.UNKNOWN_NAME.search(error.spelling)
+    lines = source.lines(error.path) if error.path is not None else None
+    if match is None or lines is None:
+        return False
+    qualified = _written_name(error, match.group("name") or match.group("scope"), lines)
+    return "::" in qualified and clients(qualified.split("::", 1)[0], qualified) is not None
 
 
 _UNDECLARED = re.compile(r"^use of undeclared identifier '(\w+)'$")

@@ -1561,6 +1561,10 @@ class CallFinder:
         if where.name == self.declared:
             if not declared or cls.spelling == synthesis.ANY or cls.spelling.endswith("Ptr"):
                 return None  # ``pkg::NameConstPtr``: a message's pointer, as ROS 1 names it
+            parent = cls.semantic_parent
+            if parent is not None and parent.kind in (
+                    CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE):
+                return None  # a class's own type (``MoveGroupInterface::Plan plan;``): data
             if msg_types.written_type(name, False) is not None:
                 return None  # a message no header declares (``vendor_msgs::Pose``): data
             package = name.split("::", 1)[0]
