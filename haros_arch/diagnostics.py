@@ -443,6 +443,15 @@ CATALOGUE: dict[str, Entry] = {
         "workspace's own modules, ...). It is not run: its result is unknown, and what "
         "depends on it keeps '?' parts or a condition. Said once, where the construct "
         "is, not again where its value is used."),
+    "LAUNCH_PY_EXIT": Entry(
+        "warning", "{detail}: the launch file stops here, ros2 launch starts nothing of it",
+        "A Python launch file calls sys.exit() / exit() / quit() / os._exit(), or raises "
+        "an exception that no try around it catches, where it runs whatever the "
+        "arguments: generate_launch_description() never returns, and ros2 launch ends "
+        "with an error. Nothing of the file is read (what it would start is not known). "
+        "Where it stops only under a test not known statically (an else after the "
+        "releases it knows), that branch ends there and the rest of the file runs "
+        "under the other branch's test, as after a return; that is not said."),
     "LAUNCH_PY_FILE_UNKNOWN": Entry(
         "warning", "{detail}",
         "A Python launch file reads a file (open(), yaml.safe_load, a pathlib path's "

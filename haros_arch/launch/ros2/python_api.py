@@ -1127,6 +1127,7 @@ METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS
                               "is_dir": path_tested(os.path.isdir)}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open", "getattr", "type", "eval"))
+                      "isinstance", "all", "any", "open", "getattr", "type", "eval",
+                      "exit", "quit"))
 
 

@@ -53,6 +53,16 @@ class _Continue(_Flow):
     pass
 
 
+class _Stop(_Flow):
+    """``sys.exit()`` / ``exit()`` / a ``raise`` no ``try`` of the interpreted code
+    catches: the launch file stops there (``what``: the statement, said where it is when
+    it is reached under no test not known)."""
+
+    def __init__(self, what: str, node: ast.AST) -> None:
+        self.what = what
+        self.node = node
+
+
 class Raised(Exception):
     """A builtin exception the interpreted code raises (``int("camera")``) inside a
     ``try`` whose handler catches it: the interpreter goes on in that handler, as Python
