@@ -101,3 +101,16 @@ def generate_launch_description():
     # not "A == '1'": it runs where A is not 1, and where B is not 1
     after, = conditions["/after"]
     assert after.startswith("not (os.environ.get('A') == '1') or (")
+
+
+def test_tests_joined_by_and_keep_an_or_in_parentheses(write_tree):
+    """The condition of what an ``elif`` makes is the ``if``'s test not holding and the
+    ``elif``'s holding: an ``or`` among them is written in parentheses, as Python would
+    read ``not (a or b) and c or d`` otherwise."""
+    model, _ = run(write_tree, DISTRO_CHOICE % "exit()")
+    conditions = {n.name: [c.text for c in n.conditions] for n in model.nodes}
+    assert conditions["/driver"] == [
+        "not (ros_version == b'dashing\\n' or ros_version == b'eloquent\\n') and "
+        "(ros_version == b'foxy\\n' or ros_version == b'humble\\n')"]
+    assert conditions["/old_driver"] == [
+        "ros_version == b'dashing\\n' or ros_version == b'eloquent\\n'"]

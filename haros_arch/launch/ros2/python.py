@@ -83,6 +83,7 @@ from .python_values import (
     _Return,
     _source,
     _Stop,
+    conjunction,
     launch_object,
 )
 
@@ -1575,14 +1576,12 @@ def _either_goes_on(test: str, body: list[Guard], orelse: list[Guard]) -> str:
     """The text of where the code after an ``if`` of ``test`` runs, when its branches
     go on only under the tests of their own ``body`` / ``orelse`` (a ``return`` in
     them): where the test holds and the body's do, or it does not and the else's do."""
-    def joined(guards: list[Guard]) -> str:
-        return " and ".join(guards)
-
     if not orelse:
-        return f"not ({test}) or ({joined(body)})"
+        return f"not ({test}) or ({conjunction(body)})"
     if not body:
-        return f"({test}) or ({joined(orelse)})"
-    return f"({test} and {joined(body)}) or (not ({test}) and {joined(orelse)})"
+        return f"({test}) or ({conjunction(orelse)})"
+    return (f"({conjunction([test, *body])}) or "
+            f"({conjunction([f'not ({test})', *orelse])})")
 
 
 def _handler_classes(handler: ast.ExceptHandler) -> tuple[str, ...] | None:

@@ -8,6 +8,7 @@
 from __future__ import annotations
 
 import ast
+import functools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
@@ -87,6 +88,29 @@ class Guard(str):
         made.run = run
         made.test = test
         return made
+
+
+def conjunction(tests: Iterable[str]) -> str:
+    """The text of Python tests that all hold, joined by ``and``: one that is an ``or``
+    (or a conditional expression, a lambda) in parentheses when there are several, as
+    Python would read it otherwise (``not (a or b) and (c or d)``, not ``... and c or
+    d``)."""
+    texts = list(tests)
+    if len(texts) == 1:
+        return texts[0]
+    return " and ".join(f"({text})" if _loose(text) else text for text in texts)
+
+
+@functools.lru_cache(maxsize=1024)
+def _loose(text: str) -> bool:
+    """Whether ``text`` binds more loosely than ``and`` (a text that is no expression,
+    ``for x in items``, is taken as written)."""
+    try:
+        node = ast.parse(text, mode="eval").body
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return False
+    return (isinstance(node, ast.BoolOp) and isinstance(node.op, ast.Or)) or isinstance(
+        node, (ast.IfExp, ast.Lambda, ast.NamedExpr))
 
 
 @dataclass(frozen=True)
