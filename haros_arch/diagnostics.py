@@ -326,7 +326,10 @@ CATALOGUE: dict[str, Entry] = {
         "argument) and the whole launch file fails to load (urg_node 369ee4d's "
         "urg_node_launch.py). The tool reads them as the newer keywords, as Dashing to "
         "Foxy do; with the project's distro: (ROS_DISTRO) Galactic or later this is "
-        "LAUNCH_DASHING_KEYWORD_REMOVED, an error; Dashing or Eloquent, nothing."),
+        "LAUNCH_DASHING_KEYWORD_REMOVED, an error, unless the call is made only under a "
+        "Python test not known statically (a file that chooses the keywords by the "
+        "release it runs on): then this warning, naming the test; Dashing or Eloquent, "
+        "nothing."),
     "LAUNCH_DASHING_KEYWORD_REMOVED": Entry(
         "error", "{action} is given {words} of Dashing's launch_ros that "
         "{distro}'s does not take: the launch file does not load there (TypeError: "
