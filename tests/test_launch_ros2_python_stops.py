@@ -114,3 +114,21 @@ def test_tests_joined_by_and_keep_an_or_in_parentheses(write_tree):
         "(ros_version == b'foxy\\n' or ros_version == b'humble\\n')"]
     assert conditions["/old_driver"] == [
         "ros_version == b'dashing\\n' or ros_version == b'eloquent\\n'"]
+
+
+def test_an_exit_in_a_helper_module_is_said_where_it_is(write_tree):
+    """A helper module of the workspace whose function exits: said at its line in the
+    helper's file, not at that line of the launch file."""
+    helper = "import sys\n\n\ndef nodes():\n    sys.exit('no robot')\n"
+    model, _ = run(write_tree, """
+import sys
+sys.path.append(os.path.dirname(__file__))
+import robot_helpers
+
+def generate_launch_description():
+    return LaunchDescription(robot_helpers.nodes())
+""", extra={"src/pkg/launch/robot_helpers.py": helper})
+    assert model.nodes == []
+    (stop,) = [d for d in model.diagnostics if d.code == "LAUNCH_PY_EXIT"]
+    assert stop.location.file.endswith("launch/robot_helpers.py")
+    assert stop.location.line == 5

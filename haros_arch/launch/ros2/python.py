@@ -197,7 +197,7 @@ class Interpreter(Expressions):
         except Budget as stop:
             self.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where, detail=str(stop)))
         except _Stop as stop:
-            self.diagnostics.append(diag.make("LAUNCH_PY_EXIT", self.where(stop.node),
+            self.diagnostics.append(diag.make("LAUNCH_PY_EXIT", stop.where,
                                               detail=stop.what))
         except (RecursionError, _Flow):
             self.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
@@ -747,7 +747,7 @@ class Interpreter(Expressions):
                     _catches(c, str(exception)) for c in handlers):
                 return self.unsupported(node, f"{what} in a try: whether a handler "
                                               "catches it is not known here")
-        raise _Stop(what, node)
+        raise _Stop(what, self.where(node))
 
     def outer_names(self, stmt: ast.Global | ast.Nonlocal, env: dict[str, Any]) -> None:
         """``global n`` / ``nonlocal n`` in a function: ``n`` is the module's (the

@@ -15,6 +15,7 @@ from pathlib import PurePosixPath
 from typing import Any
 
 from ...evaluate.operations import Limits
+from ...model.location import Location
 from ...model.values import Unknown
 from . import entities as e
 
@@ -56,12 +57,13 @@ class _Continue(_Flow):
 
 class _Stop(_Flow):
     """``sys.exit()`` / ``exit()`` / a ``raise`` no ``try`` of the interpreted code
-    catches: the launch file stops there (``what``: the statement, said where it is when
-    it is reached under no test not known)."""
+    catches: the launch file stops there (``what``: the statement, said ``where`` it is,
+    in the file of the function that runs it, when it is reached under no test not
+    known)."""
 
-    def __init__(self, what: str, node: ast.AST) -> None:
+    def __init__(self, what: str, where: Location) -> None:
         self.what = what
-        self.node = node
+        self.where = where
 
 
 class Raised(Exception):
