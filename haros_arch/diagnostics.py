@@ -326,7 +326,10 @@ CATALOGUE: dict[str, Entry] = {
         "argument) and the whole launch file fails to load (urg_node 369ee4d's "
         "urg_node_launch.py). The tool reads them as the newer keywords, as Dashing to "
         "Foxy do; with the project's distro: (ROS_DISTRO) Galactic or later this is "
-        "LAUNCH_DASHING_KEYWORD_REMOVED, an error; Dashing or Eloquent, nothing."),
+        "LAUNCH_DASHING_KEYWORD_REMOVED, an error, unless the call is made only under a "
+        "Python test not known statically (a file that chooses the keywords by the "
+        "release it runs on): then this warning, naming the test; Dashing or Eloquent, "
+        "nothing."),
     "LAUNCH_DASHING_KEYWORD_REMOVED": Entry(
         "error", "{action} is given {words} of Dashing's launch_ros that "
         "{distro}'s does not take: the launch file does not load there (TypeError: "
@@ -443,6 +446,15 @@ CATALOGUE: dict[str, Entry] = {
         "workspace's own modules, ...). It is not run: its result is unknown, and what "
         "depends on it keeps '?' parts or a condition. Said once, where the construct "
         "is, not again where its value is used."),
+    "LAUNCH_PY_EXIT": Entry(
+        "warning", "{detail}: the launch file stops here, ros2 launch starts nothing of it",
+        "A Python launch file calls sys.exit() / exit() / quit() / os._exit(), or raises "
+        "an exception that no try around it catches, where it runs whatever the "
+        "arguments: generate_launch_description() never returns, and ros2 launch ends "
+        "with an error. Nothing of the file is read (what it would start is not known). "
+        "Where it stops only under a test not known statically (an else after the "
+        "releases it knows), that branch ends there and the rest of the file runs "
+        "under the other branch's test, as after a return; that is not said."),
     "LAUNCH_PY_FILE_UNKNOWN": Entry(
         "warning", "{detail}",
         "A Python launch file reads a file (open(), yaml.safe_load, a pathlib path's "

@@ -82,6 +82,8 @@ from .python_values import (
     _load,
     _Return,
     _source,
+    _Stop,
+    conjunction,
     launch_object,
 )
 
@@ -194,6 +196,9 @@ class Interpreter(Expressions):
             return run()
         except Budget as stop:
             self.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where, detail=str(stop)))
+        except _Stop as stop:
+            self.diagnostics.append(diag.make("LAUNCH_PY_EXIT", stop.where,
+                                              detail=stop.what))
         except (RecursionError, _Flow):
             self.diagnostics.append(diag.make("LAUNCH_PY_BUDGET", where,
                                               detail="interpretation nested too deeply"))
@@ -709,6 +714,8 @@ class Interpreter(Expressions):
             self.outer_names(stmt, env)
         elif isinstance(stmt, ast.Assert):
             self.assertion(stmt, env)
+        elif isinstance(stmt, ast.Raise):
+            self.stop(stmt, _raised_name(stmt.exc))
         else:
             self.unsupported(stmt, f"{type(stmt).__name__} statements are not interpreted")
 
@@ -721,6 +728,26 @@ class Interpreter(Expressions):
         if test is False:
             self.failed(stmt, f"assert {_source(stmt.test)} fails: the launch stops here",
                         "AssertionError: assertion failed")
+
+    def stop(self, node: ast.AST, exception: str | None) -> Unknown:
+        """``raise`` (``exception``: the class raised, by name, None when not known) or
+        ``sys.exit()`` (``SystemExit``): the launch file stops here (``_Stop``: the
+        branch of a test not known that runs it ends there, as with a ``return``), unless
+        a ``try`` around it may catch it. A builtin exception a handler catches goes to
+        it, as ``failed`` does; one a handler of a class not known, or under a test not
+        known in between, may catch stays not interpreted, said."""
+        what = _source(node).split("\n", 1)[0]
+        what = what if len(what) <= 80 else what[:77] + "..."
+        for handlers, guards in reversed(self.catching):
+            known = exception in _EXCEPTIONS
+            if known and any(_catches(c, str(exception)) for c in handlers) and (
+                    guards == len(self.guards)):
+                raise Raised(str(exception))
+            if not known or any(c is None for c in handlers) or any(
+                    _catches(c, str(exception)) for c in handlers):
+                return self.unsupported(node, f"{what} in a try: whether a handler "
+                                              "catches it is not known here")
+        raise _Stop(what, self.where(node))
 
     def outer_names(self, stmt: ast.Global | ast.Nonlocal, env: dict[str, Any]) -> None:
         """``global n`` / ``nonlocal n`` in a function: ``n`` is the module's (the
@@ -889,16 +916,19 @@ class Interpreter(Expressions):
             # goes on set (the other returns), else either's
             before = dict(env)
             held = [(d, dict(d)) for d in self.dicts_held(env)]
-            taken = self.branch(stmt.body, env, text, id(stmt.test))
+            taken, body_only = self.branch(stmt.body, env, text, id(stmt.test))
             after_body = dict(env)
             body_items = [dict(d) for d, _ in held]
             for d, items in held:
                 _refill(d, items)
             env.clear()
             env.update(before)
-            left = self.branch(stmt.orelse, env, f"not ({text})", id(stmt.test))
-            if taken is not None and left is not None:  # both return: so does the if
-                raise _Return(self.either([taken.value, left.value]))
+            left, else_only = self.branch(stmt.orelse, env, f"not ({text})", id(stmt.test))
+            if taken is not None and left is not None:  # both end: so does the if
+                ends = [r for r in (taken, left) if isinstance(r, _Return)]
+                if len(ends) == 2:
+                    raise _Return(self.either([end.value for end in ends]))
+                raise ends[0] if ends else taken
             if left is not None:
                 env.clear()
                 env.update(after_body)
@@ -910,13 +940,20 @@ class Interpreter(Expressions):
                     self.join_items(d, items, text)
             returned = taken or left
             if returned is not None:
-                # one branch returns: that value is one the function may give, and
-                # the rest of the function runs only under the other branch's test
-                if not self.returns:
-                    raise returned
-                self.returns[-1].append(returned.value)
+                # one branch returns (or stops): that value is one the function may
+                # give, and the rest of the function runs only under the other branch's
+                # test, and the tests that branch goes on under (a return in it)
+                if isinstance(returned, _Return):
+                    if not self.returns:
+                        raise returned
+                    self.returns[-1].append(returned.value)
                 self.guards.append(self.guard(text if taken is None else f"not ({text})",
                                               id(stmt.test)))
+                self.guards.extend(body_only if taken is None else else_only)
+            elif body_only or else_only:
+                # both go on, one (both) only under tests of its own (a return in it):
+                # the rest runs where that branch's test and those hold, or the other's
+                self.guards.append(self.guard(_either_goes_on(text, body_only, else_only)))
 
     def guarding(self) -> None:
         for guard in self.guards:
@@ -1017,17 +1054,21 @@ class Interpreter(Expressions):
         _refill(held, items)
 
     def branch(self, body: list[ast.stmt], env: dict[str, Any], guard: str,
-               test: int | None = None) -> _Return | None:
+               test: int | None = None) -> tuple[_Return | _Stop | None, list[Guard]]:
         """One branch of an ``if`` whose test is not known, under that test (``test``:
-        its node, by id); its ``return``, if it returns."""
+        its node, by id): its ``return`` (or stop), if it ends so, else the tests of
+        its own its end runs under (an ``if`` in it of which a branch returns), which
+        do not hold beyond it."""
+        depth = len(self.guards)
         self.guards.append(self.guard(guard, test))
         try:
             self.block(body, env)
-        except _Return as ret:
-            return ret
+        except (_Return, _Stop) as ended:
+            return ended, []
         finally:
-            self.guards.pop()
-        return None
+            goes_on = self.guards[depth + 1:]
+            del self.guards[depth:]
+        return None, goes_on
 
     def either(self, values: list[Any], what: str = "one of several return values") -> Any:
         """What a function gives that returns one of ``values``, or a name an ``if``
@@ -1147,11 +1188,11 @@ class Interpreter(Expressions):
                                              "unsupported", where=self.where(stmt.iter)),
                         env)
             try:
-                returned = self.branch(stmt.body, env, f"for {_source(stmt.target)} in "
-                                                       f"{_source(stmt.iter)}")
+                returned, _ = self.branch(stmt.body, env, f"for {_source(stmt.target)} in "
+                                                          f"{_source(stmt.iter)}")
             except (_Break, _Continue):
                 returned = None
-            if returned is not None:  # it may return there, or run on
+            if isinstance(returned, _Return):  # it may return there, or run on
                 if not self.returns:
                     raise returned
                 self.returns[-1].append(returned.value)
@@ -1207,6 +1248,8 @@ class Interpreter(Expressions):
         if isinstance(func, Ref):
             if func.qualified in ("sys.path.append", "sys.path.insert"):
                 return self.add_search(func, args, node)
+            if func.qualified in _EXITS:
+                return self.stop(node, "SystemExit")
             name = func.qualified
             short = name.rsplit(".", 1)[-1]
             if name == f"math.{short}" and callable(ops.MATH.get(short)) and not kwargs \
@@ -1511,6 +1554,34 @@ _RECURSION_UNKNOWN = 3
 _EXCEPTIONS: dict[str, type] = {
     name: value for name, value in vars(builtins).items()
     if isinstance(value, type) and issubclass(value, BaseException)}
+
+
+# what ends the Python process: SystemExit (os._exit: none a handler may catch)
+_EXITS = frozenset(("exit", "quit", "sys.exit", "os._exit"))
+
+
+def _raised_name(exc: ast.expr | None) -> str | None:
+    """The class a ``raise`` names (``raise KeyError(key)``, ``raise errors.Bad``), None
+    for a bare ``raise`` or one not named."""
+    if isinstance(exc, ast.Call):
+        exc = exc.func
+    if isinstance(exc, ast.Name):
+        return exc.id
+    if isinstance(exc, ast.Attribute):
+        return exc.attr
+    return None
+
+
+def _either_goes_on(test: str, body: list[Guard], orelse: list[Guard]) -> str:
+    """The text of where the code after an ``if`` of ``test`` runs, when its branches
+    go on only under the tests of their own ``body`` / ``orelse`` (a ``return`` in
+    them): where the test holds and the body's do, or it does not and the else's do."""
+    if not orelse:
+        return f"not ({test}) or ({conjunction(body)})"
+    if not body:
+        return f"({test}) or ({conjunction(orelse)})"
+    return (f"({conjunction([test, *body])}) or "
+            f"({conjunction([f'not ({test})', *orelse])})")
 
 
 def _handler_classes(handler: ast.ExceptHandler) -> tuple[str, ...] | None:

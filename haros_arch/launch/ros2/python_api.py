@@ -70,6 +70,7 @@ from .python_values import (
     LaunchDescription,
     Lazy,
     Ref,
+    conjunction,
     object_text,
     printable,
     to_text,
@@ -570,10 +571,18 @@ def dashing_keywords(i: Interpreter, k: Kwargs, n: ast.AST, action: str) -> None
         return
     words = ", ".join(f"{word}= (now {DASHING_KEYWORDS[word]}=)" for word in given)
     words += ", a keyword" if len(given) == 1 else ", keywords"
-    if distro in _DASHING_DEPRECATED or not distro:
+    said = distro.capitalize() or "not known (no ROS_DISTRO)"
+    if i.guards:
+        # made only under a Python test not known statically: a file that chooses
+        # the keywords by the release it runs on (lslidar's drivers test the output of
+        # ``echo $ROS_DISTRO``) may never run this call where they are refused
+        said += (f", and the call is made only where the Python test "
+                 f"{conjunction(i.guards)} holds, not known statically, which may keep "
+                 "it from running there")
+    if distro in _DASHING_DEPRECATED or not distro or i.guards:
         i.diagnostics.append(diag.make(
             "LAUNCH_DASHING_KEYWORD", i.where(n), action=action, words=words,
-            distro=distro.capitalize() or "not known (no ROS_DISTRO)"))
+            distro=said))
     else:
         i.diagnostics.append(diag.make(
             "LAUNCH_DASHING_KEYWORD_REMOVED", i.where(n), action=action, words=words,
@@ -1127,6 +1136,7 @@ METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS
                               "is_dir": path_tested(os.path.isdir)}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open", "getattr", "type", "eval"))
+                      "isinstance", "all", "any", "open", "getattr", "type", "eval",
+                      "exit", "quit"))
 
 

@@ -46,6 +46,7 @@ from .python_values import (
     _source,
     _text_of,
     concat,
+    conjunction,
     is_lazy,
     is_stringy,
     launch_object,
@@ -485,7 +486,7 @@ class Expressions(Walker):
         first action it guards (``guarding``), or its value where it was made (a loop's
         items, a filter): not again at each action."""
         self.guarding()
-        text = " and ".join(self.guards)
+        text = conjunction(self.guards)
         cond = e.Cond((e.Opaque(f"Python test {text}", report=False),), source=text,
                       runs=tuple(guard.run for guard in self.guards))
         if action.condition is None:

@@ -8,12 +8,14 @@
 from __future__ import annotations
 
 import ast
+import functools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import PurePosixPath
 from typing import Any
 
 from ...evaluate.operations import Limits
+from ...model.location import Location
 from ...model.values import Unknown
 from . import entities as e
 
@@ -53,6 +55,17 @@ class _Continue(_Flow):
     pass
 
 
+class _Stop(_Flow):
+    """``sys.exit()`` / ``exit()`` / a ``raise`` no ``try`` of the interpreted code
+    catches: the launch file stops there (``what``: the statement, said ``where`` it is,
+    in the file of the function that runs it, when it is reached under no test not
+    known)."""
+
+    def __init__(self, what: str, where: Location) -> None:
+        self.what = what
+        self.where = where
+
+
 class Raised(Exception):
     """A builtin exception the interpreted code raises (``int("camera")``) inside a
     ``try`` whose handler catches it: the interpreter goes on in that handler, as Python
@@ -77,6 +90,29 @@ class Guard(str):
         made.run = run
         made.test = test
         return made
+
+
+def conjunction(tests: Iterable[str]) -> str:
+    """The text of Python tests that all hold, joined by ``and``: one that is an ``or``
+    (or a conditional expression, a lambda) in parentheses when there are several, as
+    Python would read it otherwise (``not (a or b) and (c or d)``, not ``... and c or
+    d``)."""
+    texts = list(tests)
+    if len(texts) == 1:
+        return texts[0]
+    return " and ".join(f"({text})" if _loose(text) else text for text in texts)
+
+
+@functools.lru_cache(maxsize=1024)
+def _loose(text: str) -> bool:
+    """Whether ``text`` binds more loosely than ``and`` (a text that is no expression,
+    ``for x in items``, is taken as written)."""
+    try:
+        node = ast.parse(text, mode="eval").body
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return False
+    return (isinstance(node, ast.BoolOp) and isinstance(node.op, ast.Or)) or isinstance(
+        node, (ast.IfExp, ast.Lambda, ast.NamedExpr))
 
 
 @dataclass(frozen=True)
