@@ -931,6 +931,29 @@ def run_extras(it: Interpreter, command: Invocation, name: str) -> None:
             it.foreign_roots.pop()
 
 
+@handles("catkin_package_xml", "ament_package_xml")
+def _package_xml(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    package_xml_read(it, args)
+
+
+def package_xml_read(it: Interpreter, args: list[str] | None = None) -> None:
+    """What catkin's ``catkin_package_xml()`` and ament's ``ament_package_xml()`` set from
+    the package's package.xml: ``<project>_VERSION``, its ``<version>`` (Lslidar's
+    driver defines ``-D${PROJECT_NAME}_VERSION="${${PROJECT_NAME}_VERSION}"`` after
+    ``catkin_package()`` and prints it in its ``main``). Each runs once:
+    ``catkin_package()``, ``ament_package()``, ``ament_auto_package()`` and
+    ``ament_auto_find_build_dependencies()`` run it when it has not run before. Nothing
+    is set for another folder's package.xml (``DIRECTORY``) nor when the project is not
+    the package (both stop the build then)."""
+    if it.package_xml_read:
+        return
+    it.package_xml_read = True
+    project = it.get("PROJECT_NAME")
+    if (project and project == it.package_name and it.package_version
+            and "DIRECTORY" not in (args or [])):
+        it.set(f"{project}_VERSION", it.package_version)
+
+
 @handles("ament_auto_find_build_dependencies", "autoware_package")
 def _ament_auto_find_build_dependencies(it: Interpreter, command: Invocation,
                                         args: list[str]) -> None:
@@ -938,6 +961,7 @@ def _ament_auto_find_build_dependencies(it: Interpreter, command: Invocation,
     extras define is there after it. So does Autoware's ``autoware_package()`` (the
     macro of autoware_cmake, its compile options apart), when autoware_cmake is not in
     the workspace to define it."""
+    package_xml_read(it)
     for name in it.build_depends:
         run_extras(it, command, name)
 
@@ -963,6 +987,7 @@ def handed_extras(it: Interpreter, args: list[str], keyword: str = "CONFIG_EXTRA
 
 @handles("ament_package")
 def _ament_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    package_xml_read(it)
     handed_extras(it, args)
 
 
@@ -1037,6 +1062,7 @@ def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> No
     package's ``${catkin_LIBRARIES}`` when it finds this one (``Interpreter.catkin_exports``;
     no LIBRARIES: none), and ``CATKIN_DEPENDS``, whose libraries it puts there too
     (``Interpreter.catkin_depends``)."""
+    package_xml_read(it)
     names: list[str] = []
     depends: list[str] = []
     taking = ""
@@ -1303,6 +1329,7 @@ def _programs(it: Interpreter, command: Invocation, args: list[str],
 @handles("ament_auto_package")
 def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     """``INSTALL_TO_SHARE dir...`` installs those folders into ``share/<project>``."""
+    package_xml_read(it)
     handed_extras(it, args)
     if "INSTALL_TO_SHARE" not in args:
         return
