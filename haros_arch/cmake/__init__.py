@@ -437,6 +437,12 @@ def _interpreter(package: Package, workspace: Workspace,
     interpreter.build_depends = build_depends(package)
     interpreter.package_name, interpreter.package_version = package.name, package.version
 
+    def catkin_project(name: str) -> bool:
+        other = workspace.packages.get(name)
+        return other is None or other.build_type == "catkin"
+
+    interpreter.catkin_project = catkin_project
+
     def extras_of(name: str) -> tuple[str, list[str]]:
         other = workspace.packages.get(name)
         if name == package.name or other is None or not other.root:

@@ -437,16 +437,63 @@ LIBRARY_FLAGS = ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL",
                  "NO_TARGET_LINK_LIBRARIES")
 
 
-@handles("add_executable", "cs_add_executable", "cuda_add_executable",
-         "ament_auto_add_executable", "rosbuild_add_executable")
+@handles("add_executable", "cuda_add_executable", "ament_auto_add_executable",
+         "rosbuild_add_executable")
 def _add_executable(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "executable", EXECUTABLE_FLAGS)
 
 
-@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library",
+@handles("add_library", "cuda_add_library", "ament_auto_add_library",
          "rosbuild_add_library")
 def _add_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "library", LIBRARY_FLAGS)
+
+
+# -- catkin_simple (catkin/catkin_simple, and ethz-asl's fork, which maplab builds with)
+# the options of its cs_add_executable / cs_add_library
+_SIMPLE_FLAGS = ("NO_AUTO_LINK", "NO_AUTO_DEP", "NO_AUTO_EXPORT")
+
+
+@handles("catkin_simple")
+def _catkin_simple(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """catkin_simple's ``catkin_simple()``: parses package.xml (``catkin_package_xml``)
+    and finds the build dependencies that are catkin packages as catkin's components
+    (``find_package(catkin REQUIRED COMPONENTS ...)``), whose libraries its
+    ``cs_add_executable`` / ``cs_add_library`` then link. A dependency is left out only
+    where the workspace builds it without catkin (catkin_simple keeps those
+    ``find_package`` finds as catkin projects; one outside the workspace is taken as
+    one)."""
+    package_xml_read(it)
+    project = it.get("PROJECT_NAME") or ""
+    for variable in ("TARGETS", "LIBRARIES"):
+        it.set(f"{project}_{variable}", "")
+    depends = [name for name in it.build_depends
+               if name != project and it.catkin_project(name)]
+    it.set(f"{project}_CATKIN_BUILD_DEPENDS", ";".join(depends))
+    _find_package(it, command, ["catkin", "REQUIRED", "COMPONENTS", *depends])
+
+
+@handles("cs_add_executable", "cs_add_library")
+def _cs_add_target(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """catkin_simple's ``cs_add_executable(t ...)`` / ``cs_add_library(t ...)``: the
+    target, which links ``${catkin_LIBRARIES}`` (the components ``catkin_simple()``
+    found) unless ``NO_AUTO_LINK``; a library is in ``<project>_LIBRARIES`` (what
+    ``cs_export()`` exports) unless ``NO_AUTO_EXPORT``."""
+    if not args:
+        return
+    library = command.name.lower() == "cs_add_library"
+    given = [a for a in args if a not in _SIMPLE_FLAGS]
+    _add_target(it, command, given, "library" if library else "executable",
+                LIBRARY_FLAGS if library else EXECUTABLE_FLAGS)
+    project = it.get("PROJECT_NAME") or ""
+    it.set(f"{project}_TARGETS",
+           ";".join([*split_list(it.get(f"{project}_TARGETS") or ""), args[0]]))
+    if library and "NO_AUTO_EXPORT" not in args:
+        it.set(f"{project}_LIBRARIES",
+               ";".join([*split_list(it.get(f"{project}_LIBRARIES") or ""), args[0]]))
+    if "NO_AUTO_LINK" not in args:
+        _target_link_libraries(it, command,
+                               [args[0], *split_list(it.get("catkin_LIBRARIES") or "")])
 
 
 def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str,

@@ -162,6 +162,10 @@ class Interpreter:
         self.package_name = ""
         self.package_version = ""
         self.package_xml_read = False
+        # whether ``find_package(name)`` finds a catkin project (catkin_simple takes
+        # only those of the build dependencies as catkin's components): not one the
+        # workspace builds otherwise; given by the reading of the workspace
+        self.catkin_project: Callable[[str], bool] = lambda name: True
         # what this package hands on so (absolute paths), and the packages whose extras
         # this reading ran; while one runs, its package folder (an include may read there)
         self.config_extras: list[str] = []
