@@ -303,3 +303,26 @@ def test_a_typed_param_of_unknown_value_gets_the_model_type_name(write_tree):
         """)
     assert [(p.name, p.value, p.type) for p in model.params] == [
         ("/a", None, "str"), ("/b", None, "bool"), ("/c", None, "double"), ("/d", None, None)]
+
+
+def test_a_node_child_of_another_case_is_roslaunchs_tag(write_tree):
+    """roslaunch takes a <node>'s children by their lower-cased name (xmlloader's
+    ``t.tagName.lower()``): Lslidar's ``<Param name=... value=...>`` sets the parameter,
+    and its attributes are the param tag's, not unknown ones (two false
+    LAUNCH_UNKNOWN_ATTRIBUTE warnings said they were ignored). An attribute no param has
+    is still said; a top-level tag of another case is still unknown."""
+    model = load_launch(write_tree, """
+        <launch>
+          <node name="driver" pkg="p" type="d">
+            <Param name="topic" value="points" />
+            <REMAP from="in" to="/scan" />
+            <Param name="rate" valu="2" />
+          </node>
+          <Param name="top" value="1" />
+        </launch>
+        """)
+    assert [(p.name, p.value) for p in model.params] == [("/driver/topic", "points")]
+    assert model.nodes[0].remaps == [("in", "/scan")]
+    found = [(d.code, d.location.line) for d in model.diagnostics]
+    assert found == [("LAUNCH_UNKNOWN_ATTRIBUTE", 5), ("LAUNCH_BAD_VALUE", 5),
+                     ("LAUNCH_UNKNOWN_TAG", 7)]

@@ -435,6 +435,13 @@ def _interpreter(package: Package, workspace: Workspace,
     the workspace's other packages (``config_extras``)."""
     interpreter = Interpreter(package.root, workspace.environment, reader, files.location)
     interpreter.build_depends = build_depends(package)
+    interpreter.package_name, interpreter.package_version = package.name, package.version
+
+    def catkin_project(name: str) -> bool:
+        other = workspace.packages.get(name)
+        return other is None or other.build_type == "catkin"
+
+    interpreter.catkin_project = catkin_project
 
     def extras_of(name: str) -> tuple[str, list[str]]:
         other = workspace.packages.get(name)

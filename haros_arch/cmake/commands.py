@@ -437,16 +437,63 @@ LIBRARY_FLAGS = ("STATIC", "SHARED", "MODULE", "OBJECT", "EXCLUDE_FROM_ALL",
                  "NO_TARGET_LINK_LIBRARIES")
 
 
-@handles("add_executable", "cs_add_executable", "cuda_add_executable",
-         "ament_auto_add_executable", "rosbuild_add_executable")
+@handles("add_executable", "cuda_add_executable", "ament_auto_add_executable",
+         "rosbuild_add_executable")
 def _add_executable(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "executable", EXECUTABLE_FLAGS)
 
 
-@handles("add_library", "cs_add_library", "cuda_add_library", "ament_auto_add_library",
+@handles("add_library", "cuda_add_library", "ament_auto_add_library",
          "rosbuild_add_library")
 def _add_library(it: Interpreter, command: Invocation, args: list[str]) -> None:
     _add_target(it, command, args, "library", LIBRARY_FLAGS)
+
+
+# -- catkin_simple (catkin/catkin_simple, and ethz-asl's fork, which maplab builds with)
+# the options of its cs_add_executable / cs_add_library
+_SIMPLE_FLAGS = ("NO_AUTO_LINK", "NO_AUTO_DEP", "NO_AUTO_EXPORT")
+
+
+@handles("catkin_simple")
+def _catkin_simple(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """catkin_simple's ``catkin_simple()``: parses package.xml (``catkin_package_xml``)
+    and finds the build dependencies that are catkin packages as catkin's components
+    (``find_package(catkin REQUIRED COMPONENTS ...)``), whose libraries its
+    ``cs_add_executable`` / ``cs_add_library`` then link. A dependency is left out only
+    where the workspace builds it without catkin (catkin_simple keeps those
+    ``find_package`` finds as catkin projects; one outside the workspace is taken as
+    one)."""
+    package_xml_read(it)
+    project = it.get("PROJECT_NAME") or ""
+    for variable in ("TARGETS", "LIBRARIES"):
+        it.set(f"{project}_{variable}", "")
+    depends = [name for name in it.build_depends
+               if name != project and it.catkin_project(name)]
+    it.set(f"{project}_CATKIN_BUILD_DEPENDS", ";".join(depends))
+    _find_package(it, command, ["catkin", "REQUIRED", "COMPONENTS", *depends])
+
+
+@handles("cs_add_executable", "cs_add_library")
+def _cs_add_target(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """catkin_simple's ``cs_add_executable(t ...)`` / ``cs_add_library(t ...)``: the
+    target, which links ``${catkin_LIBRARIES}`` (the components ``catkin_simple()``
+    found) unless ``NO_AUTO_LINK``; a library is in ``<project>_LIBRARIES`` (what
+    ``cs_export()`` exports) unless ``NO_AUTO_EXPORT``."""
+    if not args:
+        return
+    library = command.name.lower() == "cs_add_library"
+    given = [a for a in args if a not in _SIMPLE_FLAGS]
+    _add_target(it, command, given, "library" if library else "executable",
+                LIBRARY_FLAGS if library else EXECUTABLE_FLAGS)
+    project = it.get("PROJECT_NAME") or ""
+    it.set(f"{project}_TARGETS",
+           ";".join([*split_list(it.get(f"{project}_TARGETS") or ""), args[0]]))
+    if library and "NO_AUTO_EXPORT" not in args:
+        it.set(f"{project}_LIBRARIES",
+               ";".join([*split_list(it.get(f"{project}_LIBRARIES") or ""), args[0]]))
+    if "NO_AUTO_LINK" not in args:
+        _target_link_libraries(it, command,
+                               [args[0], *split_list(it.get("catkin_LIBRARIES") or "")])
 
 
 def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str,
@@ -931,6 +978,29 @@ def run_extras(it: Interpreter, command: Invocation, name: str) -> None:
             it.foreign_roots.pop()
 
 
+@handles("catkin_package_xml", "ament_package_xml")
+def _package_xml(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    package_xml_read(it, args)
+
+
+def package_xml_read(it: Interpreter, args: list[str] | None = None) -> None:
+    """What catkin's ``catkin_package_xml()`` and ament's ``ament_package_xml()`` set from
+    the package's package.xml: ``<project>_VERSION``, its ``<version>`` (Lslidar's
+    driver defines ``-D${PROJECT_NAME}_VERSION="${${PROJECT_NAME}_VERSION}"`` after
+    ``catkin_package()`` and prints it in its ``main``). Each runs once:
+    ``catkin_package()``, ``ament_package()``, ``ament_auto_package()`` and
+    ``ament_auto_find_build_dependencies()`` run it when it has not run before. Nothing
+    is set for another folder's package.xml (``DIRECTORY``) nor when the project is not
+    the package (both stop the build then)."""
+    if it.package_xml_read:
+        return
+    it.package_xml_read = True
+    project = it.get("PROJECT_NAME")
+    if (project and project == it.package_name and it.package_version
+            and "DIRECTORY" not in (args or [])):
+        it.set(f"{project}_VERSION", it.package_version)
+
+
 @handles("ament_auto_find_build_dependencies", "autoware_package")
 def _ament_auto_find_build_dependencies(it: Interpreter, command: Invocation,
                                         args: list[str]) -> None:
@@ -938,6 +1008,7 @@ def _ament_auto_find_build_dependencies(it: Interpreter, command: Invocation,
     extras define is there after it. So does Autoware's ``autoware_package()`` (the
     macro of autoware_cmake, its compile options apart), when autoware_cmake is not in
     the workspace to define it."""
+    package_xml_read(it)
     for name in it.build_depends:
         run_extras(it, command, name)
 
@@ -963,6 +1034,7 @@ def handed_extras(it: Interpreter, args: list[str], keyword: str = "CONFIG_EXTRA
 
 @handles("ament_package")
 def _ament_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    package_xml_read(it)
     handed_extras(it, args)
 
 
@@ -1037,6 +1109,7 @@ def _catkin_package(it: Interpreter, command: Invocation, args: list[str]) -> No
     package's ``${catkin_LIBRARIES}`` when it finds this one (``Interpreter.catkin_exports``;
     no LIBRARIES: none), and ``CATKIN_DEPENDS``, whose libraries it puts there too
     (``Interpreter.catkin_depends``)."""
+    package_xml_read(it)
     names: list[str] = []
     depends: list[str] = []
     taking = ""
@@ -1303,6 +1376,7 @@ def _programs(it: Interpreter, command: Invocation, args: list[str],
 @handles("ament_auto_package")
 def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -> None:
     """``INSTALL_TO_SHARE dir...`` installs those folders into ``share/<project>``."""
+    package_xml_read(it)
     handed_extras(it, args)
     if "INSTALL_TO_SHARE" not in args:
         return

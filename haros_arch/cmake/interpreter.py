@@ -156,6 +156,16 @@ class Interpreter:
         self.submodule_of: Callable[[str], tuple[str, str] | None] | None = None
         # this package's build dependencies (``ament_auto_find_build_dependencies``)
         self.build_depends: list[str] = []
+        # this package's name and version in its package.xml, which catkin's and ament's
+        # package.xml parse (``catkin_package_xml()``, ``ament_package_xml()``) sets as
+        # ``<name>_VERSION``; and whether the parse was read (each runs once)
+        self.package_name = ""
+        self.package_version = ""
+        self.package_xml_read = False
+        # whether ``find_package(name)`` finds a catkin project (catkin_simple takes
+        # only those of the build dependencies as catkin's components): not one the
+        # workspace builds otherwise; given by the reading of the workspace
+        self.catkin_project: Callable[[str], bool] = lambda name: True
         # what this package hands on so (absolute paths), and the packages whose extras
         # this reading ran; while one runs, its package folder (an include may read there)
         self.config_extras: list[str] = []

@@ -216,14 +216,18 @@ class Ros1Loader:
         return None
 
     def check(self, element: Element, scope: Scope) -> bool:
-        """Report unknown and missing attributes; False if the element must be skipped."""
+        """Report unknown and missing attributes; False if the element must be skipped.
+        The attributes are those of the tag in lower case: roslaunch takes a node's or an
+        include's children by their lower-cased name (``<Param name= value=>`` in a
+        ``<node>`` sets the parameter, Lslidar's lslidar_ch.launch), and a tag of another
+        case anywhere else is unknown before this is asked."""
         tag = str(element.tag)
-        allowed = ATTRIBUTES.get(tag, ())
+        allowed = ATTRIBUTES.get(tag.lower(), ())
         for attribute in element.attrib:
             if attribute not in allowed and attribute not in COMMON:
                 self.report("LAUNCH_UNKNOWN_ATTRIBUTE", scope, element,
                             attribute=attribute, tag=tag)
-        for attribute in REQUIRED.get(tag, ()):
+        for attribute in REQUIRED.get(tag.lower(), ()):
             if element.get(attribute) is None:
                 self.report("LAUNCH_MISSING_ATTRIBUTE", scope, element,
                             tag=tag, attribute=attribute)
