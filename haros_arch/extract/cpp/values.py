@@ -1388,8 +1388,11 @@ class Scope:
                 and qualified_name(target.semantic_parent) in _ROS1_NAME_OWNERS:
             # ros::this_node::getName(): the node's own (private) name; a nodelet's
             # getName() is its own, which its private handle's namespace is too
-            # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics")
-            return ("~",)
+            # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics");
+            # followed by more of a segment it is not (kobuki's auto docking serves
+            # ``name_ + "_action"``, ``name_`` a nodelet's getName(): ``<node>_action``,
+            # not ``~_action``): ``own_name``
+            return (NODE_NAME,)
         if not args and target.spelling == "getNamespace" and target.semantic_parent is not None \
                 and qualified_name(target.semantic_parent) == "ros::this_node":
             # ros::this_node::getNamespace(): the node's namespace (rpg_dvs_ros' DAVIS
