@@ -34,7 +34,6 @@ from .values import (
     initializer,
     key_of,
     literal,
-    own_name,
     render,
     strip,
     written_arguments,
@@ -282,12 +281,10 @@ class Namespaces:
             parent = render(self.of(args[0], scope, depth + 1))
             if len(args) == 1 or owner != api.NODE_HANDLE:
                 return (parent,)
-            child = render(own_name(scope.string(args[1])))
+            child = render(scope.string(args[1]))
             self._unknown(child, args[1], scope)
             return (normalise(join_name(parent, child)) if parent else normalise(child),)
-        # (the node's own name alone is its private namespace: moveit's benchmarks make
-        # ``ros::NodeHandle nh(ros::this_node::getName())``; ``own_name``)
-        written = render(own_name(scope.string(args[0])))
+        written = render(scope.string(args[0]))
         self._unknown(written, args[0], scope)
         return (normalise(written),)
 
