@@ -86,6 +86,19 @@ class NodeBaseName(NodeName):
 NODE_BASE_NAME = NodeBaseName("~")
 
 
+class OwnName(str):
+    """ROS 1's ``getName()`` (``ros::this_node``'s, a nodelet's): the node's own name, ``~``
+    as a value (a NodeHandle made on it is the private one: moveit's benchmarks; a nodelet
+    loaded under it runs under the node's name: bebop_driver), and at the start of a
+    call's name followed by ``/`` its private namespace; followed by more of its segment
+    it is not (kobuki's auto docking serves ``name_ + "_action"``, ``name_`` the
+    nodelet's getName(): ``/<nodelet>_action``, not ``~_action``): ``own_name`` makes it
+    unknown there, as rclcpp's node name."""
+
+
+OWN_NAME = OwnName("~")
+
+
 class NodeNamespace(str):
     """The node's namespace, which rclcpp's ``expand_topic_or_service_name`` puts before
     a relative name (with a ``/``: ``_expanded``): unknown to ``render``; ``own_name``
@@ -231,7 +244,7 @@ def own_name_run(written: Parts, parts: Parts) -> bool:
 def own_name(parts: Parts) -> Parts:
     """``parts`` with the node's own name unknown where it is not the node's private
     namespace: anywhere but first, or followed by text that does not start with ``/``."""
-    if not any(isinstance(part, (NodeName, NodeNamespace)) for part in parts):
+    if not any(isinstance(part, (NodeName, NodeNamespace, OwnName)) for part in parts):
         return parts
     found: list[str | None] = []
     skip = False
@@ -246,7 +259,7 @@ def own_name(parts: Parts) -> Parts:
             skip = not any(p != "" for p in parts[:index])
             if not skip:
                 found.append(None)
-        elif isinstance(part, NodeName):
+        elif isinstance(part, (NodeName, OwnName)):
             after = next((p for p in parts[index + 1:] if p != ""), "")
             first = not any(p != "" for p in parts[:index])
             private = first and (after == "" or (after is not None and after.startswith("/")))
@@ -1388,8 +1401,9 @@ class Scope:
                 and qualified_name(target.semantic_parent) in _ROS1_NAME_OWNERS:
             # ros::this_node::getName(): the node's own (private) name; a nodelet's
             # getName() is its own, which its private handle's namespace is too
-            # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics")
-            return ("~",)
+            # (PX4-Avoidance's local planner reads getName() + "/pointcloud_topics");
+            # followed by more of a segment it is not: ``OwnName``
+            return (OWN_NAME,)
         if not args and target.spelling == "getNamespace" and target.semantic_parent is not None \
                 and qualified_name(target.semantic_parent) == "ros::this_node":
             # ros::this_node::getNamespace(): the node's namespace (rpg_dvs_ros' DAVIS
