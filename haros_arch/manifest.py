@@ -202,14 +202,14 @@ def parse_manifest(
     export = root.find("export")
     chosen = [e for e in export if e.tag == "build_type"] if export is not None else []
     package.build_type = _build_type(chosen, env)
-    if not env.get("ROS_VERSION", "").strip():
+    versionless = not env.get("ROS_VERSION", "").strip()
+    if versionless:
         by_version = {version: _build_type(chosen, version_environment(env, version))
                       for version in ROS_VERSIONS}
         if len(set(by_version.values())) > 1:
             package.builds_by_version = by_version
             package.builds_at = _line(chosen[0])
-    package.plugins.extend(_plugins(root, rel_folder, exported if not env.get(
-        "ROS_VERSION", "").strip() else active))
+    package.plugins.extend(_plugins(root, rel_folder, exported if versionless else active))
     return package, found
 
 

@@ -2337,14 +2337,14 @@ def _node_given(errors: list[_Error], places: _Places, workspace: Workspace
         if function is None or lines is None:
             continue
         given = recall.node_given(lines, error.line, places.node_names(function))
-        if given is not None and recall.assigns_to(lines, error.line, match.group("name")
-                                                   or match.group("scope")):
+        unknown = match.group("name") or match.group("scope")
+        if given is not None and recall.assigns_to(lines, error.line, unknown):
             given = None  # the unknown name takes the result: nothing is given to it
         if given is not None:
             said.add((error.path, error.line))
             places.finder.handed.add(owner_of(function))
             # as written there: ``quadrotor_common::getParam``, not its namespace alone
-            name = _written_name(error, match.group("name") or match.group("scope"), lines)
+            name = _written_name(error, unknown, lines)
             found.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", workspace.location(error.path, error.line, error.column),
                 given=given, name=name))

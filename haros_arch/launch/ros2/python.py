@@ -738,8 +738,8 @@ class Interpreter(Expressions):
         known in between, may catch stays not interpreted, said."""
         what = _source(node).split("\n", 1)[0]
         what = what if len(what) <= 80 else what[:77] + "..."
+        known = exception in _EXCEPTIONS
         for handlers, guards in reversed(self.catching):
-            known = exception in _EXCEPTIONS
             if known and any(_catches(c, str(exception)) for c in handlers) and (
                     guards == len(self.guards)):
                 raise Raised(str(exception))
