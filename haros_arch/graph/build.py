@@ -51,6 +51,7 @@ from ..models import rviz
 from ..models.commands import refused
 from ..plugins.attach import PluginModels, chains, class_packages, own_partial, plugin_types
 from ..plugins.attach import attach as attach_plugins
+from ..plugins.transports import RAW as RAW_TRANSPORT
 from ..plugins.transports import Transports
 from ..robot.attach import GZSERVER
 from ..robot.attach import attach as attach_descriptions
@@ -310,10 +311,28 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                 instance.ros_version == 1 and not each.transport.endswith("/"))
             plain = resolved_name(instance, each, {}, resources)
             expanded = base if remapped else plain
-            for one in transports.calls(each, expanded.full, instance):
+            for one in transports.calls(each, expanded.full, instance,
+                                        _transport_given(each, instance, resources)):
                 link(instance, one, remaps, resources, config, base if one is each else
                      _below_base(resolved_name(instance, one, remaps, resources), expanded,
                                  plain.full, instance.namespace))
+
+
+def _transport_given(call: PrimitiveCall, instance: NodeInstance,
+                     resources: Resources) -> str | None:
+    """What gives an image_transport subscriber's ``?`` transport where the node's
+    ``image_transport`` parameter does not (``PrimitiveCall.transport_param``, ...): the
+    value of a parameter, else of a program argument, else a default written in the
+    code, else ``raw``; None when not known (an argument the launch file does not give,
+    a value the extractor could not read)."""
+    default = call.transport_default
+    if call.transport_arg is not None:
+        default = program_argument(instance, call.transport_arg)
+    elif default is None:
+        default = RAW_TRANSPORT
+    if call.transport_param is not None:
+        default = _parameter_value(call.transport_param, default, instance, resources)
+    return None if default is None or UNKNOWN_MARK in default else default
 
 
 def _drop_base_copies(config: Configuration,

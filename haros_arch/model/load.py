@@ -175,6 +175,12 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                              c.get("name_option_default"), str) else None,
                          name_more=_name_more(c.get("name_more")),
                          transport=c.get("transport"),
+                         transport_param=c.get("transport_param") if isinstance(
+                             c.get("transport_param"), str) else None,
+                         transport_arg=_program_arg(c.get("transport_arg")),
+                         transport_default=c.get("transport_default") if isinstance(
+                             c.get("transport_default"), str) else None,
+                         transport_fixed=c.get("transport_fixed") is True,
                          variable=c.get("variable"),
                          also=c.get("also") if isinstance(c.get("also"), list) else None,
                          queue_size_missing=bool(c.get("queue_size_missing", False)),

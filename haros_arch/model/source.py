@@ -248,6 +248,19 @@ class PrimitiveCall:
     # resolved and remapped (ROS 1 Subscriber); a trailing ``=``: the ROS 2 code gave it a
     # base it resolved and remapped itself, which the transport's topic is named below
     transport: str | None = field(default=None, metadata={"optional": True})
+    # a subscriber's ``?`` transport: what gives it when the node's ``image_transport``
+    # parameter does not (the default its TransportHints are made with: ROS 1
+    # ``TransportHints("compressed")``, a string converted to them, ROS 2 ``TransportHints(
+    # node, "compressed")``), or, with ``transport_fixed``, what the code passes as the
+    # transport itself (ROS 2 ``create_subscription(node, base, cb, transport)``), which
+    # no parameter of image_transport changes: the value of the parameter
+    # ``transport_param`` (as the code names it), else of the program argument
+    # ``transport_arg`` (counted as ``name_arg``), else ``transport_default`` (``?``: a
+    # value not known); none of them: ``raw``
+    transport_param: str | None = field(default=None, metadata={"optional": True})
+    transport_arg: int | None = field(default=None, metadata={"optional": True})
+    transport_default: str | None = field(default=None, metadata={"optional": True})
+    transport_fixed: bool = field(default=False, metadata={"optional": True})
     # a parameter read: the member variable it stores the value in (``publish_`` of
     # ``nh.param("publish", publish_, false)`` or ``publish_ = declare_parameter(..)``),
     # when that is the member's only write in the file; a source condition over the

@@ -36,7 +36,11 @@ cannot hold that), a file of a later version is refused with its version named.
 ``transport`` (optional) marks a call made through image_transport (``*``: a publisher;
 a subscriber's transport, ``?`` when its node's ``image_transport`` parameter says; a
 trailing ``/`` when its transport's topic is named from the base as written, ``=`` when
-from a base its ROS 2 code resolved and remapped itself).
+from a base its ROS 2 code resolved and remapped itself); for a ``?`` transport,
+``transport_param``, ``transport_arg`` and ``transport_default`` say what gives it when
+that parameter does not (a parameter, a program argument, a text; ``?``: not known), and
+``transport_fixed`` that the code passes the transport itself (no parameter of
+image_transport changes it).
 """
 
 from __future__ import annotations
@@ -57,7 +61,7 @@ SCHEMA = f"haros-arch-model/{SCHEMA_VERSION}"
 SCHEMA_PREFIX = "haros-arch-model/"
 _TEXT_FIELDS = ("type", "name_param", "name_default", "name_each", "handle_namespace",
                 "node_name", "callback", "transport", "variable", "default_param",
-                "host_named", "loads")
+                "host_named", "loads", "transport_param", "transport_default")
 
 
 class ModelFileError(ValueError):
@@ -147,7 +151,7 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
                                  f"{', '.join(CALL_KINDS)}")
         if not all(isinstance(call.get(key), str | None) for key in _TEXT_FIELDS):
             raise ModelFileError(f"a call's {', '.join(_TEXT_FIELDS)} must be strings")
-        for key in ("program_arg", "name_arg"):
+        for key in ("program_arg", "name_arg", "transport_arg"):
             arg = call.get(key)
             if arg is not None and (not isinstance(arg, int) or isinstance(arg, bool)
                                     or arg == 0):

@@ -9,9 +9,10 @@ installed; any other not at all. The publisher's list parameter (ROS 1
 ``disable_pub_plugins``, ROS 2 ``enable_pub_plugins``) then removes transports; a value
 we cannot read leaves each transport under a condition that says so. A subscriber's
 transport comes from its code, or from the node's ``image_transport`` parameter (not set:
-``raw``, the base topic; a value not known: the topic ``<base>/?``); in ROS 2 only when
-the node declares that parameter (TransportHints read it with get_parameter_or, which
-sees no launch value of an undeclared parameter), else ``raw``.
+the default its TransportHints are made with, ``raw`` when none, the base topic; a value
+not known: the topic ``<base>/?``); in ROS 2 only when the node declares that parameter
+(TransportHints read it with get_parameter_or, which sees no launch value of an
+undeclared parameter), else that default.
 """
 
 from __future__ import annotations
@@ -63,12 +64,14 @@ class Transports:
         return None if transport.common else False
 
     def calls(self, call: PrimitiveCall, base: str, instance: NodeInstance,
-              ) -> list[PrimitiveCall]:
+              given: str | None = RAW) -> list[PrimitiveCall]:
         """The calls an image_transport call stands for: ``call`` itself for the base
         topic when it is made there, the transports' topics (absolute: ``base`` is
-        resolved and remapped), and the reads of the parameters that choose them."""
+        resolved and remapped), and the reads of the parameters that choose them.
+        ``given``: what gives a subscriber's ``?`` transport where the node's
+        ``image_transport`` parameter does not (None: not known)."""
         if call.kind == "subscribe":
-            return self._subscription(call, base, instance)
+            return self._subscription(call, base, instance, given)
         if call.kind != "publish":
             return [call]
         version = 1 if instance.ros_version == 1 else 2
@@ -144,22 +147,24 @@ class Transports:
         return key, value
 
     def _subscription(self, call: PrimitiveCall, base: str, instance: NodeInstance,
-                      ) -> list[PrimitiveCall]:
+                      given: str | None) -> list[PrimitiveCall]:
         version = 1 if instance.ros_version == 1 else 2
         out: list[PrimitiveCall] = []
         name: str | None = (call.transport or "").rstrip("/=")
-        if name == UNKNOWN_MARK and version == 2 and not _declares(instance, TRANSPORT_PARAM):
-            # ROS 2 TransportHints get_parameter_or a parameter they never declare: without
-            # the node's own declaration the launch value is not there, raw is used
-            name = RAW
+        if name == UNKNOWN_MARK and (call.transport_fixed or (
+                version == 2 and not _declares(instance, TRANSPORT_PARAM))):
+            # the transport the ROS 2 code passes itself; or ROS 2 TransportHints,
+            # which get_parameter_or a parameter they never declare: without the node's
+            # own declaration the launch value is not there, their default is used
+            name = given
         elif name == UNKNOWN_MARK:  # TransportHints: the node's parameter
             key = ("~" if version == 1 else "") + TRANSPORT_PARAM
             out.append(PrimitiveCall("read", key, location=call.location,
                                      conditions=call.conditions, has_default=True,
-                                     default=RAW, origin="plugin"))
+                                     default=given, origin="plugin"))
             found = self.params.by_name.get(
                 (Parameter, f"{instance.name.rstrip('/')}/{TRANSPORT_PARAM}"))
-            name = RAW
+            name = given
             if isinstance(found, Parameter) and found.set_by_launch:
                 value = found.value
                 name = value if isinstance(value, str) and value and (

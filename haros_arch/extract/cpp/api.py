@@ -515,6 +515,8 @@ NODELET_LOAD = ("nodelet::Loader", "load")
 # Classes whose objects are node handles, and functions that return a handle in a fixed
 # namespace: (scope, function) -> namespace.
 HANDLE_CLASSES = frozenset({NODE_HANDLE, "image_transport::ImageTransport"})
+# what tells an image_transport subscriber its transport (``visitor._hints_default``)
+IMAGE_HINTS = "image_transport::TransportHints"
 HANDLE_FACTORIES: dict[tuple[str, str], str] = {
     ("nodelet::Nodelet", "getNodeHandle"): "",
     ("nodelet::Nodelet", "getMTNodeHandle"): "",

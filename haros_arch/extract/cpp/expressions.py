@@ -44,11 +44,17 @@ def _qualified(cursor: Cursor | None) -> str:
 
 def constructed_name(expr: Cursor, class_name: str) -> Cursor | None:
     """The first argument of ``expr`` when it builds an object of ``class_name``
-    (``rclcpp::Parameter(name, value)``: the parameter's name), also where the
-    construction depends on a template parameter and clang leaves it unresolved (a
-    wrapper's ``rclcpp::Parameter(param_name, param_value)`` of ``const T&``: a call
-    with no declaration, its children the class's references and then the arguments);
-    else None."""
+    (``rclcpp::Parameter(name, value)``: the parameter's name); else None."""
+    values = constructed_arguments(expr, class_name)
+    return values[0] if values else None
+
+
+def constructed_arguments(expr: Cursor, class_name: str) -> list[Cursor] | None:
+    """The arguments written to ``expr`` when it builds an object of ``class_name``,
+    also where the construction depends on a template parameter and clang leaves it
+    unresolved (a wrapper's ``rclcpp::Parameter(param_name, param_value)`` of ``const
+    T&``: a call with no declaration, its children the class's references and then the
+    arguments); None when it builds none."""
     inner = strip(expr)
     if inner.kind != CursorKind.CALL_EXPR:
         return None
@@ -58,14 +64,12 @@ def constructed_name(expr: Cursor, class_name: str) -> Cursor | None:
             qualified_name(target.semantic_parent) != class_name
         ):
             return None
-        values = written_arguments(inner)
-    else:
-        children = list(inner.get_children())
-        named = [c for c in children if c.kind == CursorKind.TYPE_REF]
-        if not named or qualified_name(named[-1].referenced) != class_name:
-            return None
-        values = [c for c in children if c.kind not in _REFS]
-    return values[0] if values else None
+        return written_arguments(inner)
+    children = list(inner.get_children())
+    named = [c for c in children if c.kind == CursorKind.TYPE_REF]
+    if not named or qualified_name(named[-1].referenced) != class_name:
+        return None
+    return [c for c in children if c.kind not in _REFS]
 
 
 def is_default_argument(cursor: Cursor) -> bool:

@@ -46,7 +46,12 @@ from .call_types import CallTypes, factory_made, row_class
 from .call_types import callee as callee_of_call
 from .conditions import ConditionReader
 from .cursors import children_in, from_standin, overloads, release, root
-from .expressions import binary_operator, constructed_name, first_operand
+from .expressions import (
+    binary_operator,
+    constructed_arguments,
+    constructed_name,
+    first_operand,
+)
 from .handles import (
     Namespaces,
     binds_handle,
@@ -2271,10 +2276,9 @@ class CallFinder:
         ):
             status = None  # a wrapper that returns the value (ublox's getRosBoolean)
         transport = spec.transport
-        if transport is not None and arg(spec.transport_arg) is not None:
-            written_transport = render(scope.string(arg(spec.transport_arg)))
-            if written_transport and "?" not in written_transport:
-                transport = written_transport + ("/" if transport.endswith("/") else "")
+        chosen: dict[str, Any] = {}
+        if transport is not None and transport.startswith(UNKNOWN_MARK):
+            transport, chosen = self._transport(spec, transport, arg, args[shift:], scope)
         base = arg(spec.name_arg)
         if transport is not None and self.ros2 and base is not None and scope.resolved(base):
             transport += "="  # a base the code resolved and remapped (image_pipeline's)
@@ -2282,6 +2286,10 @@ class CallFinder:
         # node's namespace, whatever the handle's, then the rest within it, as it does a
         # handle's namespace (graph.build._handle_name): the prefix is the call's
         prefix = scope.names_prefix(base) if not self.ros2 and base is not None else None
+        if transport is not None and transport.endswith("/") and prefix is not None:
+            # a base roscpp resolved and remapped for the code (republish's
+            # ``nh.resolveName("in")``): the transport's topic is named below it as it is
+            transport = transport[:-1]
         # the handle's namespace holds a parameter's value (pointgrey's stereo nodelet:
         # ``ros::NodeHandle lnh(nh, firstcam)``, ``firstcam`` read from
         # ``first_namespace``, default "left"): the graph puts it in the place of the
@@ -2364,7 +2372,7 @@ class CallFinder:
                 handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
-                deletes=spec.deletes, node_name=owner, transport=transport,
+                deletes=spec.deletes, node_name=owner, transport=transport, **chosen,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
                     name.count("?") == 1) else None, name_member=name_member,
@@ -3443,6 +3451,64 @@ class CallFinder:
                 return None
             keys.append(found[0])
         return " ".join(keys)
+
+    def _transport(self, spec: api.RosFunction, transport: str,
+                   arg: Callable[[int | None], Cursor | None], args: list[Cursor],
+                   scope: Scope) -> tuple[str, dict[str, Any]]:
+        """An image_transport subscriber's transport (``PrimitiveCall.transport``) and
+        the fields that say what gives a ``?`` one: the transport the ROS 2 code passes
+        (``transport_arg`` of the row; not written: ``raw``, create_subscription's
+        default), else the default of the TransportHints it is given, which the node's
+        ``image_transport`` parameter overrides."""
+        mark = transport[len(UNKNOWN_MARK):]  # ``/``: a ROS 1 Subscriber
+        fixed = spec.transport_arg is not None
+        given = arg(spec.transport_arg) if fixed else self._hints_default(spec, args)
+        if given is None:
+            return ("raw" + mark if fixed else transport), {}
+        with program_arguments():
+            parts = scope.string(given)
+        text = render(parts)
+        if text and UNKNOWN_MARK not in text:
+            if fixed:
+                return text + mark, {}
+            return transport, {} if text == "raw" else {"transport_default": text}
+        chosen: dict[str, Any] = {"transport_fixed": fixed}
+        index = argument_of(parts)
+        source = self._parameter_source(given, scope, 0) if index is None else None
+        if index is not None:  # republish's ``argv[1]``
+            chosen["transport_arg"] = index
+        elif source is not None:
+            chosen["transport_param"] = source[0]
+            if source[1] is not None:
+                chosen["transport_default"] = source[1]
+        else:
+            chosen["transport_default"] = UNKNOWN_MARK
+        return transport, chosen
+
+    def _hints_default(self, spec: api.RosFunction, args: list[Cursor]) -> Cursor | None:
+        """The default transport of the TransportHints an image_transport subscriber is
+        given after its callback (or queue size): ROS 1 ``TransportHints("compressed",
+        ...)``, or a string, which converts to them; ROS 2 a pointer to
+        ``TransportHints(node, "compressed")``; also a variable made so. None when it is
+        given none (``raw``, unless the node's parameter says)."""
+        written = [i for i in (spec.name_arg, spec.queue_arg, spec.callback_arg)
+                   if i is not None]
+        at = 1 if self.ros2 else 0  # the default's place among the hints' arguments
+        for given in args[max(written) + 1:]:
+            inner = strip(given)
+            if inner.kind == CursorKind.UNARY_OPERATOR:  # ``&hints``
+                inner = first_operand(inner) or inner
+            if not self.ros2 and _textual(inner):
+                return inner
+            made = constructed_arguments(inner, api.IMAGE_HINTS)
+            decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+            if made is None and decl is not None and decl.kind == CursorKind.VAR_DECL:
+                init = initializer(decl)
+                made = constructed_arguments(init, api.IMAGE_HINTS) if (
+                    init is not None) else None
+            if made is not None:
+                return made[at] if len(made) > at else None
+        return None
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
                           depth: int, value: bool = False) -> Source | None:

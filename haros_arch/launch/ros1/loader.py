@@ -13,6 +13,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
+from typing import Any
 
 from lxml import etree
 
@@ -23,7 +24,7 @@ from ...model.conditions import Condition, exclusive, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
 from ...model.rosname import is_legal_name
-from ...model.values import Unknown, Value
+from ...model.values import UNKNOWN_MARK, Unknown, Value
 from ...workspace import Workspace
 from ..model import (
     LaunchModel,
@@ -31,6 +32,7 @@ from ..model import (
     RecordedEnvironment,
     UnreadInclude,
     found_nowhere,
+    shell_words,
 )
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
@@ -582,6 +584,11 @@ class Ros1Loader:
                                   param.location, param.source, param.command)
         full = inner.ns + name
         location = self.where(scope, element)
+        for key, value in argument_params(args):
+            kind = None if value is None else {bool: "bool", int: "int", float: "double",
+                                               str: "str"}[type(value)]
+            tags_params.add_param(self, private.ns + key, value, kind, scope.conditions,
+                                  location)
         if name and not is_test:
             # roslaunch refuses two nodes of one name that it starts: certainly so when
             # they are under the same conditions; under conditions that cannot both
@@ -771,6 +778,34 @@ class Ros1Loader:
         scope.stack = (*scope.stack, key)
         self.children(root, scope)
         return True
+
+
+def argument_params(args: str) -> list[tuple[str, Any]]:
+    """The private parameters a node's command line sets: roscpp's ``ros::init`` and
+    rospy's ``init_node`` take each ``_name:=value`` word (not ``__name:=``) as the
+    parameter ``~name``, its value an integer, a real or a boolean when it reads as one
+    (``true`` / ``false``, any case), else the text (sciurus17's republish ``args="...
+    _image_transport:=compressed"``). A word with a part not known sets a value not
+    known (None)."""
+    found: list[tuple[str, Any]] = []
+    for word in shell_words(args):
+        key, sep, text = word.partition(":=")
+        if not sep or not key.startswith("_") or key.startswith("__") or len(key) < 2:
+            continue
+        if UNKNOWN_MARK in key:
+            continue
+        found.append((key[1:], None if UNKNOWN_MARK in text else _argument_value(text)))
+    return found
+
+
+def _argument_value(text: str) -> Any:
+    for convert in (int, float) if "_" not in text else ():  # (Python's ``1_000``)
+        try:
+            return convert(text)
+        except ValueError:
+            pass
+    truth = {"true": True, "false": False}.get(text.lower())
+    return text if truth is None else truth
 
 
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,

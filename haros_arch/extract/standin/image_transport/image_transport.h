@@ -32,7 +32,7 @@ public:
   CameraPublisher();
   // ROS 2: (node, base_topic, qos, options)
   template<class N, class... A> CameraPublisher(N&& node, const std::string& base_topic,
-      A&&... more);
+      const A&... more);
   template<class I, class C> void publish(const I& image, const C& info) const;
   // ROS 1: the image and info stamped with ``stamp`` first (non-const references)
   template<class I, class C, class T> void publish(I& image, C& info, T stamp) const;
@@ -47,16 +47,18 @@ public:
   CameraSubscriber();
   // ROS 2: (node, base_topic, callback, transport, qos)
   template<class N, class C, class... A> CameraSubscriber(N&& node,
-      const std::string& base_topic, const C& callback, A&&... more);
+      const std::string& base_topic, const C& callback, const A&... more);
   std::string getTopic() const;
   std::string getInfoTopic() const;
   uint32_t getNumPublishers() const;
   void shutdown();
   operator void*() const;
 };
+// ROS 1 (default_transport, ros_hints, parameter_nh, parameter_name), ROS 2 (node,
+// default_transport, parameter_name): each taken by value or const reference
 class TransportHints {
 public:
-  template<class... A> explicit TransportHints(A&&... args);
+  template<class... A> explicit TransportHints(const A&... args);
   const std::string& getTransport() const;
 };
 class ImageTransport {
@@ -65,17 +67,17 @@ public:
   Publisher advertise(const std::string& base_topic, uint32_t queue_size, bool latch = false);
   // the overloads with (dis)connect callbacks: roscpp's or image_transport's callback types
   template<class C, class... A> Publisher advertise(const std::string& base_topic,
-      uint32_t queue_size, const C& connect_cb, A&&... more);
+      uint32_t queue_size, const C& connect_cb, const A&... more);
   template<class C> Subscriber subscribe(const std::string& base_topic, uint32_t queue_size,
       const C& callback);
   template<class C, class... A> Subscriber subscribe(const std::string& base_topic,
-      uint32_t queue_size, const C& callback, A&&... more);
+      uint32_t queue_size, const C& callback, const A&... more);
   CameraPublisher advertiseCamera(const std::string& base_topic, uint32_t queue_size,
       bool latch = false);
   template<class C, class... A> CameraPublisher advertiseCamera(const std::string& base_topic,
-      uint32_t queue_size, const C& image_connect_cb, A&&... more);
+      uint32_t queue_size, const C& image_connect_cb, const A&... more);
   template<class C, class... A> CameraSubscriber subscribeCamera(const std::string& base_topic,
-      uint32_t queue_size, const C& callback, A&&... more);
+      uint32_t queue_size, const C& callback, const A&... more);
 };
 // a message_filters source (subscriber_filter.h / .hpp): ROS 1 (it, base_topic, queue_size,
 // hints), ROS 2 (node, base_topic, transport, qos, options)
@@ -83,9 +85,9 @@ class SubscriberFilter {
 public:
   SubscriberFilter();
   template<class N, class... A> SubscriberFilter(N&& node, const std::string& base_topic,
-      A&&... more);
+      const A&... more);
   template<class N, class... A> void subscribe(N&& node, const std::string& base_topic,
-      A&&... more);
+      const A&... more);
   void unsubscribe();
   std::string getTopic() const;
   uint32_t getNumPublishers() const;
@@ -96,14 +98,14 @@ public:
 std::string getCameraInfoTopic(const std::string& base_topic);
 // the QoS profile and options that follow (rmw_qos_profile_t, PublisherOptions, ...)
 template<class N, class... A> Publisher create_publisher(N node, const std::string& base_topic,
-    A&&... qos_and_options);
+    const A&... qos_and_options);
 template<class N, class C, class... A> Subscriber create_subscription(N node,
     const std::string& base_topic, const C& callback, const std::string& transport = "raw",
-    A&&... qos_and_options);
+    const A&... qos_and_options);
 template<class N, class... A> CameraPublisher create_camera_publisher(N node,
-    const std::string& base_topic, A&&... qos_and_options);
+    const std::string& base_topic, const A&... qos_and_options);
 template<class N, class C, class... A> CameraSubscriber create_camera_subscription(N node,
     const std::string& base_topic, const C& callback, const std::string& transport = "raw",
-    A&&... qos_and_options);
+    const A&... qos_and_options);
 }
 #endif
