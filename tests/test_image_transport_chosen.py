@@ -43,6 +43,8 @@ int main(int argc, char** argv) {
   image_transport::Subscriber g = it.subscribe("g", 1, &V::cb, &v,
       image_transport::TransportHints(std::string(getenv("X"))));
   image_transport::Subscriber h = it.subscribe(n.resolveName("h"), 1, cb);
+  image_transport::TransportHints own("raw", ros::TransportHints(), pn, "depth_transport");
+  image_transport::Subscriber k = it.subscribe("k", 1, cb, ros::VoidPtr(), own);
   ros::spin();
 }
 """
@@ -67,6 +69,10 @@ int main(int argc, char** argv) {
   image_transport::TransportHints hints(node.get(), "compressed");
   auto f = it.subscribe("f", 1, cb, nullptr, &hints);
   auto g = image_transport::create_subscription(node.get(), "g", cb, std::string(getenv("X")));
+  image_transport::TransportHints plain(node.get());
+  auto k = image_transport::create_subscription(node.get(), "k", cb, plain.getTransport());
+  image_transport::TransportHints own(node.get(), "raw", "depth_transport");
+  auto m = image_transport::create_subscription(node.get(), "m", cb, own.getTransport());
   rclcpp::spin(node);
 }
 """
@@ -94,6 +100,8 @@ def test_ros1_hints_give_the_default_the_parameter_overrides(tmp_path):
         "g": ("?/", "?", None, None, False),  # not known: not raw
         # a base roscpp resolved and remapped: the transport's topic is below it
         "h": ("?", None, None, None, False),
+        # hints reading a parameter of another name: that parameter gives it
+        "k": ("?/", "raw", None, "~depth_transport", True),
     }
 
 
@@ -105,6 +113,10 @@ def test_ros2_code_passes_the_transport_itself(tmp_path):
         "d": ("?", "raw", None, "in_transport", True),
         "f": ("?/", "compressed", None, None, False),  # TransportHints(node, default)
         "g": ("?", "?", None, None, True),
+        # the transport TransportHints read (image_pipeline's ``hints.getTransport()``):
+        # their parameter, as if the hints were given
+        "k": ("?", None, None, None, False),
+        "m": ("?", "raw", None, "depth_transport", True),  # (rtabmap's depth_hints)
     }
 
 

@@ -32,6 +32,7 @@ from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall, co
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from ...plugins.classes import base_name, loader_bases
+from ...plugins.hosts import TRANSPORT_PARAM
 from . import api, call_conditions, links, msg_types, parameter_library, reconfigure, synthesis
 from .call_sites import (
     CallSites,
@@ -3458,57 +3459,102 @@ class CallFinder:
         """An image_transport subscriber's transport (``PrimitiveCall.transport``) and
         the fields that say what gives a ``?`` one: the transport the ROS 2 code passes
         (``transport_arg`` of the row; not written: ``raw``, create_subscription's
-        default), else the default of the TransportHints it is given, which the node's
-        ``image_transport`` parameter overrides."""
+        default; the ``getTransport()`` of TransportHints: as if given them), else the
+        TransportHints it is given: their parameter, else their default."""
         mark = transport[len(UNKNOWN_MARK):]  # ``/``: a ROS 1 Subscriber
-        fixed = spec.transport_arg is not None
-        given = arg(spec.transport_arg) if fixed else self._hints_default(spec, args)
+        if spec.transport_arg is None:
+            made = self._hints_given(spec, args)
+            return (transport, {}) if made is None else self._hinted(transport, made, scope)
+        given = arg(spec.transport_arg)
         if given is None:
-            return ("raw" + mark if fixed else transport), {}
+            return "raw" + mark, {}
+        made = self._hints_read(given)
+        if made is not None:  # ``hints.getTransport()``
+            return self._hinted(transport, made, scope)
+        text, chosen = self._transport_value(given, scope)
+        if text is not None:
+            return text + mark, {}
+        return transport, {**chosen, "transport_fixed": True}
+
+    def _transport_value(self, given: Cursor, scope: Scope) -> tuple[str | None, dict[str, Any]]:
+        """The transport text ``given`` holds, else the fields that say what gives it (a
+        program argument, a parameter's value, ``?``: not known)."""
         with program_arguments():
             parts = scope.string(given)
         text = render(parts)
         if text and UNKNOWN_MARK not in text:
-            if fixed:
-                return text + mark, {}
-            return transport, {} if text == "raw" else {"transport_default": text}
-        chosen: dict[str, Any] = {"transport_fixed": fixed}
+            return text, {}
         index = argument_of(parts)
-        source = self._parameter_source(given, scope, 0) if index is None else None
         if index is not None:  # republish's ``argv[1]``
-            chosen["transport_arg"] = index
-        elif source is not None:
-            chosen["transport_param"] = source[0]
-            if source[1] is not None:
-                chosen["transport_default"] = source[1]
-        else:
-            chosen["transport_default"] = UNKNOWN_MARK
-        return transport, chosen
+            return None, {"transport_arg": index}
+        source = self._parameter_source(given, scope, 0)
+        if source is None:
+            return None, {"transport_default": UNKNOWN_MARK}
+        chosen: dict[str, Any] = {"transport_param": source[0]}
+        if source[1] is not None:
+            chosen["transport_default"] = source[1]
+        return None, chosen
 
-    def _hints_default(self, spec: api.RosFunction, args: list[Cursor]) -> Cursor | None:
-        """The default transport of the TransportHints an image_transport subscriber is
-        given after its callback (or queue size): ROS 1 ``TransportHints("compressed",
-        ...)``, or a string, which converts to them; ROS 2 a pointer to
+    def _hinted(self, transport: str, made: list[Cursor], scope: Scope
+                ) -> tuple[str, dict[str, Any]]:
+        """A ``?`` transport chosen by TransportHints made with the arguments ``made``
+        (ROS 1 default transport, roscpp hints, handle, parameter name; ROS 2 node,
+        default transport, parameter name): their default (none: ``raw``), which their
+        parameter overrides. A parameter other than ``image_transport`` (rtabmap's
+        ``TransportHints(this, "raw", "depth_transport")``) is said as the parameter
+        that gives the transport, its default the hints' text (else not known)."""
+        at, name_at = (1, 2) if self.ros2 else (0, 3)
+        default = made[at] if len(made) > at else None
+        text, chosen = (None, {}) if default is None else self._transport_value(
+            default, scope)
+        if text is not None and text != "raw":
+            chosen = {"transport_default": text}
+        parameter = render(scope.string(made[name_at])) if len(made) > name_at else (
+            TRANSPORT_PARAM)
+        if parameter == TRANSPORT_PARAM:
+            return transport, chosen
+        return transport, {
+            "transport_fixed": True, "transport_default": text or (
+                UNKNOWN_MARK if default is not None else "raw"),
+            "transport_param": parameter if self.ros2 or UNKNOWN_MARK in parameter else (
+                "~" + parameter)}
+
+    def _hints_given(self, spec: api.RosFunction, args: list[Cursor]) -> list[Cursor] | None:
+        """The arguments of the TransportHints an image_transport subscriber is given
+        after its callback (or queue size): ROS 1 ``TransportHints("compressed", ...)``
+        or a string, which converts to them (as their one argument); ROS 2 a pointer to
         ``TransportHints(node, "compressed")``; also a variable made so. None when it is
         given none (``raw``, unless the node's parameter says)."""
         written = [i for i in (spec.name_arg, spec.queue_arg, spec.callback_arg)
                    if i is not None]
-        at = 1 if self.ros2 else 0  # the default's place among the hints' arguments
         for given in args[max(written) + 1:]:
             inner = strip(given)
             if inner.kind == CursorKind.UNARY_OPERATOR:  # ``&hints``
                 inner = first_operand(inner) or inner
             if not self.ros2 and _textual(inner):
-                return inner
-            made = constructed_arguments(inner, api.IMAGE_HINTS)
-            decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
-            if made is None and decl is not None and decl.kind == CursorKind.VAR_DECL:
-                init = initializer(decl)
-                made = constructed_arguments(init, api.IMAGE_HINTS) if (
-                    init is not None) else None
+                return [inner]
+            made = self._hints_made(inner)
             if made is not None:
-                return made[at] if len(made) > at else None
+                return made
         return None
+
+    def _hints_read(self, given: Cursor) -> list[Cursor] | None:
+        """The arguments of the TransportHints whose ``getTransport()`` ``given`` is."""
+        inner = strip(given)
+        if inner.kind != CursorKind.CALL_EXPR or inner.spelling != "getTransport":
+            return None
+        held = _method_object(inner)
+        return None if held is None else self._hints_made(strip(held))
+
+    def _hints_made(self, inner: Cursor) -> list[Cursor] | None:
+        """The arguments TransportHints ``inner`` are made with: a construction, or a
+        variable that one initialises."""
+        made = constructed_arguments(inner, api.IMAGE_HINTS)
+        decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+        if made is None and decl is not None and decl.kind == CursorKind.VAR_DECL:
+            init = initializer(decl)
+            made = constructed_arguments(init, api.IMAGE_HINTS) if init is not None else None
+        return made
 
     def _parameter_source(self, expr: Cursor, scope: Scope,
                           depth: int, value: bool = False) -> Source | None:
