@@ -209,17 +209,20 @@ def parse_manifest(
         if len(set(by_version.values())) > 1:
             package.builds_by_version = by_version
             package.builds_at = _line(chosen[0])
-    package.plugins.extend(_plugins(root, rel_folder, exported if versionless else active))
+    package.plugins.extend(_plugins(root, rel_folder, (
+        lambda element: exported(element, env)) if versionless else active))
     return package, found
 
 
-def exported(element: etree._Element) -> bool:
+def exported(element: etree._Element, environment: Mapping[str, str]) -> bool:
     """Whether a run that names no ROS version reads a plugin export: one whose REP 149
-    ``condition`` holds for either ROS version's setup, as that run reads each
-    version's build of a package that builds both (foxglove_bridge exports its nodelet
-    with ``condition="$ROS_VERSION == 1"``, which a ROS 1 launch file of the same tree
-    loads: read with neither version, it was "not in the workspace")."""
-    return any(holds(element, version_environment({}, version)) for version in ROS_VERSIONS)
+    ``condition`` holds for either ROS version's setup of the run's ``environment``, as
+    that run reads each version's build of a package that builds both (foxglove_bridge
+    exports its nodelet with ``condition="$ROS_VERSION == 1"``, which a ROS 1 launch
+    file of the same tree loads: read with neither version, it was "not in the
+    workspace")."""
+    return any(holds(element, version_environment(environment, version))
+               for version in ROS_VERSIONS)
 
 
 # what a distribution's setup script sets that REP 149 conditions test, per ROS version
