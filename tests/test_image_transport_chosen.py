@@ -45,6 +45,10 @@ int main(int argc, char** argv) {
   image_transport::Subscriber h = it.subscribe(n.resolveName("h"), 1, cb);
   image_transport::TransportHints own("raw", ros::TransportHints(), pn, "depth_transport");
   image_transport::Subscriber k = it.subscribe("k", 1, cb, ros::VoidPtr(), own);
+  bool is_compressed;
+  pn.param("is_compressed", is_compressed, false);
+  image_transport::Subscriber m = it.subscribe("m", 1, &V::cb, &v,
+      image_transport::TransportHints(is_compressed ? "compressed" : "raw"));
   ros::spin();
 }
 """
@@ -85,8 +89,14 @@ def subscriptions(tmp_path, text, build_type):
     (package / "src" / "viewer.cpp").write_text(text)
     result = extract_cpp([str(package / "src" / "viewer.cpp")], scan([str(tmp_path)], {}),
                          cache_dir=None)
-    return {c.name: (c.transport, c.transport_default, c.transport_arg, c.transport_param,
-                     c.transport_fixed) for c in result.calls if c.kind == "subscribe"}
+    found = {}
+    for c in result.calls:
+        if c.kind == "subscribe":
+            found.setdefault(c.name, []).append((
+                c.transport, c.transport_default, c.transport_arg, c.transport_param,
+                c.transport_fixed, tuple(f"{k.statement} {k.text}" for k in c.conditions)))
+    return {name: calls[0][:5] if len(calls) == 1 and not calls[0][5] else calls
+            for name, calls in found.items()}
 
 
 def test_ros1_hints_give_the_default_the_parameter_overrides(tmp_path):
@@ -102,6 +112,9 @@ def test_ros1_hints_give_the_default_the_parameter_overrides(tmp_path):
         "h": ("?", None, None, None, False),
         # hints reading a parameter of another name: that parameter gives it
         "k": ("?/", "raw", None, "~depth_transport", True),
+        # chosen by a test: one subscription per side, each under its side
+        "m": [("?/", "compressed", None, None, False, ("if is_compressed",)),
+              ("?/", None, None, None, False, ("else is_compressed",))],
     }
 
 

@@ -2138,6 +2138,19 @@ class CallFinder:
                 finally:
                     del scope.chosen[place]
             return
+        inner = self._inner_choice(self._transport_given(spec, arg, args[shift:]), scope) if (
+            spec.transport is not None and spec.transport.startswith(UNKNOWN_MARK)) else None
+        if inner is not None:  # a transport chosen by a test (fiducials' ``TransportHints(
+            # is_compressed ? "compressed" : "raw")``): one call per side, as for a name
+            place, sides = inner
+            for truth, condition in sides:
+                scope.chosen[place] = truth
+                try:
+                    self._emit_one(given, call, args, cls, (*conditions, condition), scope,
+                                   at, at_scope)
+                finally:
+                    del scope.chosen[place]
+            return
 
         site = at or call
         callee = callee_of_call(site)
@@ -3475,6 +3488,19 @@ class CallFinder:
         if text is not None:
             return text + mark, {}
         return transport, {**chosen, "transport_fixed": True}
+
+    def _transport_given(self, spec: api.RosFunction,
+                         arg: Callable[[int | None], Cursor | None], args: list[Cursor]
+                         ) -> Cursor | None:
+        """The expression whose text is a ``?`` transport (``_transport``): what the ROS
+        2 code passes, else the default of the TransportHints it is given or reads."""
+        made = self._hints_given(spec, args) if spec.transport_arg is None else (
+            self._hints_read(given) if (given := arg(spec.transport_arg)) is not None
+            else None)
+        if made is None:
+            return arg(spec.transport_arg) if spec.transport_arg is not None else None
+        at = 1 if self.ros2 else 0
+        return made[at] if len(made) > at else None
 
     def _transport_value(self, given: Cursor, scope: Scope) -> tuple[str | None, dict[str, Any]]:
         """The transport text ``given`` holds, else the fields that say what gives it (a
