@@ -1104,7 +1104,7 @@ class CallFinder:
             node_name = parameter_places(callee_of(call), api.STANDIN_NODE_NAME[key])
         if node_name is not None or standin:
             if node_name is not None:
-                self._node_name(node_name, args, scope)
+                self._node_name(node_name, args, scope, self._local_node(call, scope))
             switch = api.IMPLICIT_SWITCH.get(key)
             if not (switch is not None and switch < len(args)
                     and scope.boolean(args[switch]) is False):
@@ -1867,6 +1867,35 @@ class CallFinder:
                     return row, node, found
         return None
 
+    def _local_node(self, call: Cursor, scope: Scope) -> str | None:
+        """The owner of the node a method's construction ``call`` makes when it
+        initialises a local variable of the method (``rclcpp::Node parameters("npv", "",
+        options)``): that variable, as ``handle_node`` names it for the calls made on it,
+        not the method's class, whose other calls (on a member node reference it was
+        given) are not made on that node. sbg_ros2_driver's SbgDevice reads its
+        parameters through such a local node and publishes on the node main() gives it:
+        all its calls were taken for the local node's. None for any other construction:
+        a base's (``: Node("x")``), a member's, or a free function's (main's node is
+        what the classes it builds are given)."""
+        owner = self._owner
+        if owner is None or owner.endswith("()") or scope.body is None:
+            return None
+        for node in scope.body.walk_preorder():
+            if node.kind != CursorKind.VAR_DECL:
+                continue
+            value = initializer(node)
+            for _ in range(MAX_DEPTH):  # through the implicit casts and copies around it
+                if value is None:
+                    break
+                value = strip(value)
+                if value == call:
+                    if (owner, node.get_usr()) not in self.uses:
+                        self.uses.append((owner, node.get_usr()))  # the method holds it
+                    return node.get_usr()
+                inner = [c for c in value.get_children() if c.kind.is_expression()]
+                value = inner[0] if len(inner) == 1 else None
+        return None
+
     def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope,
                    owner: str | None = None) -> None:
         name_arg, ns_arg = where
@@ -2195,7 +2224,10 @@ class CallFinder:
             self._class_load(names, conditions, location, site.type, name_expr, scope)
             return
         owner = self._owner
-        if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
+        # node->create_x(...), node = rclcpp::Node::make_shared("x"); a parameter read
+        # on it too (``n.get_parameter_or(...)`` of ``rclcpp::Node n("x")``), which
+        # takes no namespace from its object
+        if spec.on_handle or spec.kind in ("read", "declare", "write"):
             made = handle_node(callee)
             if made is not None:
                 owner = made[0]
