@@ -38,3 +38,27 @@ def code_only(text: AnyStr, literals: bool = False) -> AnyStr:
             return found[:1] + inside.sub(space, found[1:-1]) + found[-1:]
         return inside.sub(space, found)
     return pattern.sub(blank, text)
+
+
+# an integer literal as C++ writes it: hexadecimal, binary, octal (a leading 0) or
+# decimal, with digit separators (``1'000``) and any suffix (``u``, ``UL``, ``ll``, ``z``)
+_INTEGER = re.compile(
+    r"([-+]?)(0[xX][0-9a-fA-F][0-9a-fA-F']*|0[bB][01][01']*|\d[\d']*)[uUlLzZ]*")
+
+
+def integer_literal(text: str) -> int | None:
+    """The value of the C++ integer literal ``text``, signed or not; None when ``text``
+    is none (``09``, whose leading 0 makes it octal, is none either: clang refuses it).
+    Python's ``int(text, 0)`` refuses the octal ``03`` a C++ source writes for 3."""
+    match = _INTEGER.fullmatch(text)
+    if match is None:
+        return None
+    digits = match.group(2).replace("'", "")
+    prefix = digits[:2].lower()
+    base = 16 if prefix == "0x" else 2 if prefix == "0b" else 8 if (
+        len(digits) > 1 and digits[0] == "0") else 10
+    try:
+        value = int(digits[2:] if base in (16, 2) else digits, base)
+    except ValueError:  # ``09``
+        return None
+    return -value if match.group(1) == "-" else value

@@ -120,7 +120,7 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
                    [("vendor", "rover::spin_all()")],
                    [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"],
                    [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")],
-                   ["rover::Odometry", ""])
+                   ["rover::Odometry", ""], [("rover::BaseDriver", "rover::Publishers")])
     assert from_data(json.loads(json.dumps(data)))[4:] == (
         [("rover::Odometry", "odometry_node")],
         [("rover::BaseDriver", "rover::devices::Battery")], ["Battery", "vendor"],
@@ -129,7 +129,7 @@ def test_node_names_survive_the_cache(tmp_path: object) -> None:
         [("vendor", "rover::spin_all()")],
         [("rover::spin_all()", "vendor::Bus")], ["Battery", "make_impl"],
         [("rover::Odometry", "rover::Odometry"), ("rover::Odometry", "rover::Base")],
-        ["rover::Odometry", ""])
+        ["rover::Odometry", ""], [("rover::BaseDriver", "rover::Publishers")])
     with pytest.raises(TypeError):
         from_data({**data, "registered": [["rover::Odometry", None]]})
     with pytest.raises(TypeError):

@@ -82,3 +82,24 @@ def test_a_file_its_own_package_cannot_run(write_tree):
     for fine in ("mux/launch/new.launch.xml", "mux/launch/either.launch",
                  "old/launch/old.launch", "dual/launch/old.launch"):
         assert foreign_to_package(str(root / "src" / fine), ws) is None, fine
+
+
+def test_a_word_of_an_attributes_value_is_no_mark(write_tree):
+    """``namespace=`` and ``exec=`` mark ROS 2 XML as attributes only: naoqi_driver2's
+    roslaunch file passes ``args="... --namespace=$(arg namespace)"`` to its node, which
+    made it a file of both systems, decided by its ament package as ROS 2, and the run
+    reported ros2 launch's errors on it instead of skipping it as a ROS 1 leftover."""
+    root = write_tree({
+        "src/drv/package.xml": package_xml("drv", "ament_cmake"),
+        "src/drv/launch/drv.launch": (
+            '<launch><arg name="namespace" default="drv"/>'
+            '<node pkg="drv" type="drv_node" name="$(arg namespace)" '
+            'args="--exec=x --namespace=$(arg namespace)"/></launch>'),
+        "src/drv/launch/drv.launch.xml": (
+            '<launch><node pkg="drv" exec="drv_node" namespace = \'ns\'/></launch>'),
+    })
+    ws = scan([str(root / "src")])
+    assert ros_version(str(root / "src/drv/launch/drv.launch"), ws) == 1
+    assert ros_version(str(root / "src/drv/launch/drv.launch.xml"), ws) == 2
+    assert foreign_to_package(str(root / "src/drv/launch/drv.launch"), ws) == (
+        "roslaunch (ROS 1) XML in drv, an ament (ROS 2) package: ros2 launch cannot run it")

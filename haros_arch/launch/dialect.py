@@ -26,9 +26,12 @@ from ..workspace import Workspace
 
 __all__ = ["foreign_to_package", "package_ros_version", "ros_version"]
 
+# ``exec=`` and ``namespace=`` as attributes only: a word of an attribute's value is none
+# (naoqi_driver2's roslaunch file passes ``args="... --namespace=$(arg namespace)"``)
 ROS2_MARKS = re.compile(
-    rb"\bexec\s*=|<let\b|\$\(var\b|<push[-_]ros[-_]namespace\b|<node_container\b|"
-    rb"<set_remap\b|<set_parameter\b|<set_env\b|\bnamespace\s*=[^=]|<executable\b|"
+    rb"\sexec\s*=\s*[\"']|<let\b|\$\(var\b|<push[-_]ros[-_]namespace\b|"
+    rb"<node_container\b|<set_remap\b|<set_parameter\b|<set_env\b|"
+    rb"\snamespace\s*=\s*[\"']|<executable\b|"
     rb"<composable_node\b|<load_composable_node\b|"
     rb"\$\((?:find-pkg-share|find-pkg-prefix|find-exec|exec-in-pkg)\b")
 ROS1_MARKS = re.compile(

@@ -285,6 +285,9 @@ class CppResult:
     # nodelet it runs as itself (``CPP_NODELET_IN_PROCESS``: the graph gives the node
     # that class's calls)
     loads_in: list[str] = field(default_factory=list)
+    # in a translation unit's result: (owner of the node, class of the workspace) for each
+    # call of a method of the class that hands it a node (``visitor.node_handed``)
+    node_handed: list[tuple[str, str]] = field(default_factory=list)
 
 
 @dataclass
@@ -837,6 +840,16 @@ def _name_nodes(result: CppResult, units: list[tuple[str, CppResult]],
             # the node of what constructs it
             if used.endswith("()") and caller != used and caller not in made_by.get(used, ()):
                 made_by.setdefault(used, []).append(caller)
+    constructed = {made for _, unit in units for _, made in unit.constructions}
+    for _, unit in units:
+        for giver, cls in unit.node_handed:
+            # a class no code constructs by a call (a member object, built with the
+            # class holding it) makes its calls on the node its methods are handed:
+            # sbg_ros2_driver's MessagePublisher publishes on the node given to
+            # ``initPublishers(node, ...)``, its ConfigStore reads through the local
+            # node given to ``loadFromRosNodeHandle(n_private)``
+            if cls not in constructed and giver not in made_by.get(cls, ()):
+                made_by.setdefault(cls, []).append(giver)
     found, loaded = reaching
     reached, hiding, entered, named, scoped, _exported = found if found is not None else (
         None, unseen, set(), set(), {}, [])
@@ -1416,7 +1429,7 @@ def _result_data(result: CppResult) -> dict[str, Any]:
                          result.node_names, result.constructions, result.unseen,
                          result.made_under, result.uses, result.defines, result.handed,
                          result.unseen_in, result.passed, result.hidden, result.registered,
-                         result.loads_in)
+                         result.loads_in, result.node_handed)
     if result.rosnames:  # a node's
         data["rosnames"] = list(result.rosnames)
     return data
@@ -1426,14 +1439,16 @@ def _result_from_data(data: dict[str, Any]) -> CppResult | None:
     """``_result_data`` read back; None for data that is not such."""
     try:
         (calls, rosname, found, facts, named, made, unseen, under, uses, defines, handed,
-         unseen_in, passed, hidden, registered, loads_in) = cache.from_data(data)
+         unseen_in, passed, hidden, registered, loads_in, node_handed) = cache.from_data(data)
         rosnames = data.get("rosnames", [])
         if not (isinstance(rosnames, list) and all(isinstance(n, str) for n in rosnames)):
             return None
     except (ValueError, TypeError, KeyError):
         return None
-    return CppResult(calls, rosname, found, facts, rosnames, named, made, uses, defines,
-                     under, unseen, handed, unseen_in, passed, hidden, registered, loads_in)
+    result = CppResult(calls, rosname, found, facts, rosnames, named, made, uses, defines,
+                       under, unseen, handed, unseen_in, passed, hidden, registered, loads_in)
+    result.node_handed = node_handed
+    return result
 
 
 # pluginlib's ClassLoader (ROS 1 and 2) and class_loader: a plugin class made by name
@@ -1785,6 +1800,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.facts = finder.facts
     result.node_names = finder.node_names
     result.constructions = finder.constructions
+    result.node_handed = finder.node_handed
     result.uses = finder.uses
     result.defines = finder.defines
     result.registered = finder.registered

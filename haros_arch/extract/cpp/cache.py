@@ -252,7 +252,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             passed: list[tuple[str, str]] | None = None,
             hidden: list[str] | None = None,
             registered: list[tuple[str, str]] | None = None,
-            loads_in: list[str] | None = None) -> dict[str, Any]:
+            loads_in: list[str] | None = None,
+            node_handed: list[tuple[str, str]] | None = None) -> dict[str, Any]:
     return {"calls": [plain(c) for c in calls], "rosname": rosname,
             "diagnostics": [plain(d) for d in diagnostics],
             "facts": [list(f) for f in facts or ()],
@@ -265,7 +266,8 @@ def to_data(calls: list[PrimitiveCall], rosname: str | None,
             "handed": list(handed or ()), "unseen_in": [list(n) for n in unseen_in or ()],
             "passed": [list(n) for n in passed or ()], "hidden": list(hidden or ()),
             "registered": [list(n) for n in registered or ()],
-            "loads_in": list(loads_in or ())}
+            "loads_in": list(loads_in or ()),
+            "node_handed": [list(n) for n in node_handed or ()]}
 
 
 def from_data(data: dict[str, Any]) -> tuple[
@@ -273,7 +275,7 @@ def from_data(data: dict[str, Any]) -> tuple[
         list[tuple[str, str]], list[tuple[str, str]], list[str],
         list[tuple[str, tuple[Condition, ...]]], list[tuple[str, str]], list[str], list[str],
         list[tuple[str, str]], list[tuple[str, str]], list[str], list[tuple[str, str]],
-        list[str]]:
+        list[str], list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
     calls = []
     for item in data["calls"]:
@@ -309,7 +311,7 @@ def from_data(data: dict[str, Any]) -> tuple[
     return (calls, rosname, diagnostics, facts, _pairs(data, "node_names"),
             _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
             handed, _pairs(data, "unseen_in"), _pairs(data, "passed"), hidden,
-            _pairs(data, "registered"), loads_in)
+            _pairs(data, "registered"), loads_in, _pairs(data, "node_handed"))
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

@@ -30,7 +30,7 @@ import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
-from ...ctext import code_only
+from ...ctext import code_only, integer_literal
 from . import interfaces, msg_types
 
 MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for waves)
@@ -359,14 +359,8 @@ def _class_heads(code: bytes) -> list[tuple[str, list[str]]]:
 def _case_literals(text: bytes) -> set[int]:
     """The integers ``text`` writes in case labels (``_CASE_LITERAL``; a leading 0 is
     octal, as in C, and a number that is none is left out)."""
-    found: set[int] = set()
-    for literal in _CASE_LITERAL.findall(text):
-        try:
-            found.add(int(literal, 16) if literal[1:2] in (b"x", b"X") else
-                      int(literal, 8) if literal.startswith(b"0") else int(literal))
-        except ValueError:  # ``case 09:``, not C
-            continue
-    return found
+    values = (integer_literal(literal.decode()) for literal in _CASE_LITERAL.findall(text))
+    return {value for value in values if value is not None}  # ``case 09:`` is not C
 
 
 # the uses of a name read only as a value (a constant, of its kinds)

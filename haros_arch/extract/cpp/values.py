@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind, conf
 
+from ...ctext import integer_literal
 from ...files import package_files
 from . import api, formats
 from .cursors import _Place
@@ -280,10 +281,9 @@ _RESOLVERS: dict[tuple[str, str], int] = {
     ("NodeBaseInterface", "resolve_topic_or_service_name"): 2,
     ("NodeTopicsInterface", "resolve_topic_name"): 1}
 _ESCAPES = {"n": "\n", "t": "\t", "\\": "\\", '"': '"', "'": "'", "0": "\0"}
-_TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*")
+_TOKEN = re.compile(rb"[A-Za-z_]\w*|[-+]?(?:0[xX][0-9a-fA-F']+|0[bB][01']+|\d[\d']*)[uUlLzZ]*")
 # a floating literal as written, its suffix (``f``, ``L``) left out
 _FLOAT = re.compile(r"((?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?)[fFlL]?")
-_INT = re.compile(r"([-+]?(?:0[xX][0-9a-fA-F]+|\d+))[uUlL]*")
 
 
 def _handle_resolve(target: Cursor) -> bool:
@@ -1793,8 +1793,7 @@ class Scope:
     def _int_token(self, token: str, depth: int = 0) -> int | None:
         if depth < MAX_DEPTH and token in self.macros:
             return self._int_token(self.macros[token], depth + 1)
-        match = _INT.fullmatch(token)
-        return int(match.group(1), 0) if match else None
+        return integer_literal(token)
 
     def number(self, cursor: Cursor, depth: int = 0) -> int | float | None:
         """A number written as a literal (an integer's as ``integer``, a floating one's

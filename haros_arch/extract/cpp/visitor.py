@@ -60,6 +60,7 @@ from .handles import (
     callback_name,
     holds_handle,
     is_handle,
+    is_ros2_node,
     join_name,
     looked_up,
     normalise,
@@ -78,6 +79,7 @@ from .links import (
 )
 from .members import MemberWrites, member_of
 from .owners import (
+    _is_node,
     binds_own_member,
     class_bases,
     constructed_bases,
@@ -430,6 +432,9 @@ class CallFinder:
         # free function ``ns::f()``, a method's class): what ``main()`` runs, with the
         # constructions (``extract.cpp._reached``)
         self.uses: list[tuple[str, str]] = []
+        # (owner of the node, class of the workspace) for each call of a method of the
+        # class that hands it a node (``_node_handed``)
+        self.node_handed: list[tuple[str, str]] = []
         self.defines: list[str] = []  # the owners of the unit's definitions
         # the classes the unit registers for a container, nodelet manager or host to
         # construct (``owners.registered_class``): (class, class) for each, then
@@ -909,6 +914,10 @@ class CallFinder:
                     not self.ros2):
                 self._struct_read(node, conditions, scope)
             if node.kind == CursorKind.CALL_EXPR and (
+                    method := node.referenced) is not None and (
+                    method.kind == CursorKind.CXX_METHOD):
+                self._node_handed(method, written_arguments(node), scope)
+            if node.kind == CursorKind.CALL_EXPR and (
                 node.spelling in _API_NAMES or node.spelling in self.wrappers.names
             ):
                 self._call(node, conditions, scope)
@@ -1110,7 +1119,7 @@ class CallFinder:
             node_name = parameter_places(callee_of(call), api.STANDIN_NODE_NAME[key])
         if node_name is not None or standin:
             if node_name is not None:
-                self._node_name(node_name, args, scope)
+                self._node_name(node_name, args, scope, self._local_node(call, scope))
             switch = api.IMPLICIT_SWITCH.get(key)
             if not (switch is not None and switch < len(args)
                     and scope.boolean(args[switch]) is False):
@@ -1873,6 +1882,61 @@ class CallFinder:
                     return row, node, found
         return None
 
+    def _node_handed(self, method: Cursor, args: list[Cursor], scope: Scope) -> None:
+        """(owner of the node, class) in ``node_handed`` for a call of a method of a
+        class of the workspace, not a node class itself, that hands it a node: the
+        owner of a method's local node variable (``_local_node``) when the argument is
+        that variable, else the calling function's owner (its node: a member, a
+        parameter, ``*this``, main's node)."""
+        cls = method.semantic_parent
+        where = cls.location.file if cls is not None and args else None
+        if method.is_static_method() or where is None or not self.owned(where.name) or (
+                self._owner is None or cls.kind not in CLASSES or is_ros2_node(cls)):
+            return
+        for arg in args:
+            if not _is_node(arg):
+                continue
+            holder = self._owner
+            ref = _referenced_variable(arg)
+            value = initializer(ref) if ref is not None else None
+            made = _node_construction(value)
+            if made is not None:
+                holder = self._local_node(made, scope) or holder
+            pair = (holder, qualified_name(cls))
+            # a method handing the node it holds on to another of its class hands the
+            # class nothing new
+            if holder != pair[1] and pair not in self.node_handed:
+                self.node_handed.append(pair)
+
+    def _local_node(self, call: Cursor, scope: Scope) -> str | None:
+        """The owner of the node a method's construction ``call`` makes when it
+        initialises a local variable of the method (``rclcpp::Node parameters("npv", "",
+        options)``): that variable, as ``handle_node`` names it for the calls made on it,
+        not the method's class, whose other calls (on a member node reference it was
+        given) are not made on that node. sbg_ros2_driver's SbgDevice reads its
+        parameters through such a local node and publishes on the node main() gives it:
+        all its calls were taken for the local node's. None for any other construction:
+        a base's (``: Node("x")``), a member's, or a free function's (main's node is
+        what the classes it builds are given)."""
+        owner = self._owner
+        if owner is None or owner.endswith("()") or scope.body is None:
+            return None
+        for node in scope.body.walk_preorder():
+            if node.kind != CursorKind.VAR_DECL:
+                continue
+            value = initializer(node)
+            for _ in range(MAX_DEPTH):  # through the implicit casts and copies around it
+                if value is None:
+                    break
+                value = strip(value)
+                if value == call:
+                    if (owner, node.get_usr()) not in self.uses:
+                        self.uses.append((owner, node.get_usr()))  # the method holds it
+                    return node.get_usr()
+                inner = [c for c in value.get_children() if c.kind.is_expression()]
+                value = inner[0] if len(inner) == 1 else None
+        return None
+
     def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope,
                    owner: str | None = None) -> None:
         name_arg, ns_arg = where
@@ -2214,7 +2278,10 @@ class CallFinder:
             self._class_load(names, conditions, location, site.type, name_expr, scope)
             return
         owner = self._owner
-        if spec.on_handle:  # node->create_x(...), node = rclcpp::Node::make_shared("x")
+        # node->create_x(...), node = rclcpp::Node::make_shared("x"); a parameter read
+        # on it too (``n.get_parameter_or(...)`` of ``rclcpp::Node n("x")``), which
+        # takes no namespace from its object
+        if spec.on_handle or spec.kind in ("read", "declare", "write"):
             made = handle_node(callee)
             if made is not None:
                 owner = made[0]
@@ -4574,6 +4641,39 @@ def _read_by_key(value: Cursor, scope: Scope, owned: Callable[[str], bool]) -> b
             continue
         return False
     return True
+
+
+def _referenced_variable(arg: Cursor) -> Cursor | None:
+    """The variable an argument names, through ``*`` and implicit conversions
+    (``*node``, ``node``); None for any other expression."""
+    expr: Cursor | None = strip(arg)
+    for _ in range(MAX_DEPTH):
+        if expr is None or expr.kind == CursorKind.DECL_REF_EXPR:
+            break
+        inner = [c for c in expr.get_children() if c.kind.is_expression()]
+        expr = strip(inner[0]) if len(inner) == 1 else None
+    decl = expr.referenced if expr is not None else None
+    return decl if decl is not None and decl.kind == CursorKind.VAR_DECL else None
+
+
+def _node_construction(value: Cursor | None) -> Cursor | None:
+    """The node construction a variable's initialiser is (``rclcpp::Node n("x")``,
+    ``std::make_shared<rclcpp::Node>("x")``), through the casts and copies around it."""
+    for _ in range(MAX_DEPTH):
+        if value is None:
+            return None
+        value = strip(value)
+        target = value.referenced if value.kind == CursorKind.CALL_EXPR else None
+        if target is not None:
+            key = (qualified_name(target.semantic_parent), target.spelling)
+            if key in api.FACTORIES:
+                decl = factory_made(value)
+                key = (qualified_name(decl), decl.spelling) if decl is not None else key
+            if key in api.RCLCPP_NODE_NAME:
+                return value
+        inner = [c for c in value.get_children() if c.kind.is_expression()]
+        value = inner[0] if len(inner) == 1 else None
+    return None
 
 
 def _handed_to_reader(call: Cursor, arg: Cursor, owned: Callable[[str], bool]) -> bool:

@@ -58,6 +58,9 @@ from .python_values import (
 
 # what ``Expressions.bound`` gives for a name no scope defines
 UNBOUND = object()
+# the mark of a comprehension's own scope (``Expressions.enter``), which a ``:=`` in it
+# does not bind in
+COMPREHENSION = "__comprehension__"
 # the modules not found that a scope star-imports (``from isaac_ros_launch_utils.all_types
 # import *``, of a package not in the workspace): a name not defined there may be one
 # of theirs, which the message of its use says
@@ -522,7 +525,19 @@ class Expressions(Walker):
         return Unknown(f"conditional expression {_source(node.test)}")
 
     def enter(self, env: Any) -> Any:
-        return dict(env, __closure__=env)
+        return dict(env, __closure__=env, **{COMPREHENSION: True})
+
+    def eval_NamedExpr(self, node: ast.NamedExpr, env: dict[str, Any]) -> Any:
+        """``(name := value)``: the value, bound to the name in the scope of the code
+        around it; in a comprehension, in the scope the comprehension is in (PEP 572).
+        Autoware's scenario_test_runner.launch.py: ``if (it := collect_vehicle_parameters())
+        != []: parameters += it``."""
+        value = self.eval(node.value, env)
+        scope = env
+        while scope.get(COMPREHENSION) and isinstance(scope.get("__closure__"), dict):
+            scope = scope["__closure__"]
+        self.assign(node.target, value, scope)
+        return value
 
     def comprehension(self, generators: list[ast.comprehension], env: Any,
                       emit: Callable[[Any], None]) -> None:

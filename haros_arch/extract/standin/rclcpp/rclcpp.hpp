@@ -950,6 +950,7 @@ class Context { public: RCLCPP_SMART_PTR_DEFINITIONS(Context) bool is_valid() co
   template<class C> PreShutdownCallbackHandle add_pre_shutdown_callback(C callback);
   bool remove_pre_shutdown_callback(const PreShutdownCallbackHandle& handle);
   template<class C> void add_on_shutdown_callback(C callback);
+  template<class C> C on_shutdown(C callback);  // the callback passed back
   bool shutdown(const std::string& reason); };
 namespace memory_strategy { class MemoryStrategy { public: RCLCPP_SMART_PTR_DEFINITIONS(MemoryStrategy) }; }
 struct ExecutorOptions {

@@ -24,6 +24,11 @@ typedef unsigned int uid_t;
 typedef unsigned long int ulong;
 typedef unsigned short int ushort;
 typedef unsigned int uint;
+// and its BSD ones (ublox_dgnss' USB connection writes ``u_char *`` buffers)
+typedef unsigned char u_char;
+typedef unsigned short int u_short;
+typedef unsigned int u_int;
+typedef unsigned long int u_long;
 // glibc's <bits/floatn.h> names the TS 18661-3 types as typedefs for a C++ compiler
 // that has none of its own (clang, g++ before 13): consai_ros2's controller takes its
 // gains as ``_Float64``
