@@ -180,6 +180,75 @@ def test_a_handle_main_makes_says_nothing_of_a_nodelets(write_tree: Any) -> None
                        ("publish", "cloud"): "process"}
 
 
+SPLIT_CMAKE = """project(filt)
+find_package(catkin REQUIRED COMPONENTS roscpp nodelet pluginlib std_msgs)
+catkin_package()
+add_library(filt_nodelet src/filt.cpp src/worker.cpp)
+"""
+
+WORKER_H = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+namespace filt {
+struct Worker { explicit Worker(ros::NodeHandle nh); ros::Publisher pub_; };
+struct Other { explicit Other(ros::NodeHandle nh); ros::Publisher pub_; };
+struct Both { explicit Both(ros::NodeHandle nh); ros::Publisher pub_; };
+}
+"""
+
+WORKER_CPP = """#include "worker.h"
+namespace filt {
+Worker::Worker(ros::NodeHandle nh) { pub_ = nh.advertise<std_msgs::String>("worker_out", 1); }
+Other::Other(ros::NodeHandle nh) { pub_ = nh.advertise<std_msgs::String>("other_out", 1); }
+Both::Both(ros::NodeHandle nh) { pub_ = nh.advertise<std_msgs::String>("both_out", 1); }
+}
+"""
+
+SPLIT_SOURCE = """#include <nodelet/nodelet.h>
+#include <pluginlib/class_list_macros.h>
+#include "worker.h"
+namespace filt {
+class Filter : public nodelet::Nodelet {
+ public:
+  void onInit() override {
+    worker_.reset(new Worker(getPrivateNodeHandle()));
+    ros::NodeHandle raw("~");
+    other_.reset(new Other(raw));
+    one_.reset(new Both(getNodeHandle()));
+    two_.reset(new Both(ros::NodeHandle()));
+  }
+ private:
+  boost::shared_ptr<Worker> worker_;
+  boost::shared_ptr<Other> other_;
+  boost::shared_ptr<Both> one_, two_;
+};
+}
+PLUGINLIB_EXPORT_CLASS(filt::Filter, nodelet::Nodelet)
+"""
+
+
+def test_a_handle_given_to_another_file_keeps_its_origin(write_tree: Any) -> None:
+    # msckf_vio's nodelet hands getPrivateNodeHandle() to ImageProcessor's constructor in
+    # another file; a class built on handles of both kinds has neither
+    root = write_tree({
+        "src/filt/package.xml": PACKAGE, "src/filt/CMakeLists.txt": SPLIT_CMAKE,
+        "src/filt/nodelets.xml": PLUGINS, "src/filt/src/filt.cpp": SPLIT_SOURCE,
+        "src/filt/src/worker.h": WORKER_H, "src/filt/src/worker.cpp": WORKER_CPP,
+        "src/filt/launch/filt.launch": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [filt/launch/filt.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None, jobs=1))
+    nodes = {n.name: n for p in model.packages for n in p.nodes}
+    origins = {(c.name, c.handle_origin) for c in nodes["filt/filt/Filter"].calls}
+    assert origins == {("~worker_out", "nodelet"), ("~other_out", "process"),
+                       ("both_out", None)}
+    (config,) = model.configurations
+    names = _names(config.node("/robot/sensors/filter"))
+    assert names == {"~worker_out": "/robot/sensors/filter/worker_out",
+                     "~other_out": "/robot/mgr/other_out",
+                     "both_out": "/robot/sensors/both_out"}
+
+
 def _names(instance: Any) -> dict[str, str]:
     return {link.rosname.given: link.rosname.full for link in instance.links}
 
@@ -242,11 +311,11 @@ def _nodelet(origin: str | None) -> Node:
     return node
 
 
-def _graph(node: Node, manager: bool = True) -> Configuration:
+def _graph(node: Node, manager: bool = True, named: str = "/robot/mgr") -> Configuration:
     decls = [NodeDecl("/robot/mgr", "nodelet", "nodelet", args="manager",
                       namespace="/robot/")] if manager else []
     decls.append(NodeDecl("/robot/sensors/filter", "nodelet", "nodelet",
-                          args="load filt/Filter /robot/mgr", namespace="/robot/sensors/"))
+                          args=f"load filt/Filter {named}", namespace="/robot/sensors/"))
     return build(Configuration("c"), LaunchModel(nodes=decls), Workspace(root="/nowhere"),
                  {node.name: node})
 
@@ -263,6 +332,10 @@ def test_a_manager_the_configuration_does_not_start_still_names_the_process() ->
     assert [t.name for t in config.topics] == ["/robot/cloud"]
     (said,) = [d for d in config.diagnostics if d.code == "NODELET_PROCESS_HANDLES"]
     assert "no remaps known" in said.message
+    # a manager's name not known (an argument nobody set): where it is, neither
+    assert [t.name for t in _graph(_nodelet("process"), named="?").topics] == ["/?/cloud"]
+    assert [t.name for t in _graph(_nodelet("process"), named="$(arg m)").topics] == [
+        "/?/cloud"]
 
 
 def test_the_origin_reads_back_and_an_older_model_has_none() -> None:

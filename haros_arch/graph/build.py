@@ -19,6 +19,7 @@ from ..model.location import Location
 from ..model.rosname import (
     RosName,
     clean,
+    is_legal_name,
     is_ros2_node_name,
     namespace_of,
     remap,
@@ -285,7 +286,9 @@ def loading_manager(decl: NodeDecl) -> str | None:
     words = decl.args.split()
     if nodelet_plugin(decl) is None or words[0] != "load" or len(words) < 3:
         return None
-    return resolve(words[2], decl.namespace)
+    # (a word that is no name, an argument's text left as written: not known)
+    known = is_legal_name(words[2].replace(UNKNOWN_MARK, "x"))
+    return resolve(words[2] if known else UNKNOWN_MARK, decl.namespace)
 
 
 def _link_in_manager(instance: NodeInstance, calls: Sequence[PrimitiveCall], manager: str,

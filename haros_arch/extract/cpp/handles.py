@@ -362,6 +362,15 @@ class Namespaces:
                        if where is None or self.sites is None else self.sites.scope(where),
                        depth + 1)
 
+    def member_origin(self, field: Cursor) -> tuple[Parts, str | None]:
+        """The namespace of the handle member ``field`` as the unit's constructors of its
+        class give it (``member``, read in no function), and where that handle was made
+        (``origin``)."""
+        self._origins = set()
+        found = self.member(field, None)
+        origin = next(iter(self._origins)) if len(self._origins) == 1 else None
+        return found, None if origin == _ORIGIN_UNSEEN else origin
+
     def _unknown(self, written: str, expr: Cursor, scope: Scope) -> None:
         """Note ``expr`` as what gave a namespace its unknown run (``unknown_from``)."""
         if "?" in written:
@@ -453,16 +462,17 @@ class Namespaces:
             return None
         return self.sites.member_placeholder(decl)
 
-    def global_handles(self, unit: Any) -> list[tuple[str, Parts]]:
-        """(USR, namespace) of each global handle the functions of the unit's main file
-        write exactly once (``_global_value``), for the other files of the node that
-        use it (``_global_elsewhere``)."""
-        found: list[tuple[str, Parts]] = []
+    def global_handles(self, unit: Any) -> list[tuple[str, Parts, str | None]]:
+        """(USR, namespace, origin) of each global handle the functions of the unit's
+        main file write exactly once (``_global_value``), for the other files of the node
+        that use it (``_global_elsewhere``)."""
+        found: list[tuple[str, Parts, str | None]] = []
         for key, writes in sorted(self._global_writes_of(unit).items()):
             usr = self._global_usrs.get(key, "")
             if len(writes) == 1 and usr:
-                found.append((usr, self.of(writes[0], Scope(
-                    None, self.macros, self.source, self.sites))))
+                namespace = self.of(writes[0], Scope(None, self.macros, self.source,
+                                                     self.sites))
+                found.append((usr, namespace, self.origin))
         return found
 
     def _global_writes(self, function: Cursor) -> None:

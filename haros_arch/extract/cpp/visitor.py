@@ -555,8 +555,8 @@ class CallFinder:
             # (a unit with no global handle has none to give: its functions are not
             # walked for global writes)
             self.facts.extend(links.global_facts(
-                ((usr, render(parts))
-                 for usr, parts in self.namespaces.global_handles(self.tu)),
+                ((usr, links.origin_marked(render(parts), origin))
+                 for usr, parts, origin in self.namespaces.global_handles(self.tu)),
                 self.tu.spelling))
         self.uses.extend(self._uses())
         # the owners the unit's code defines, not a workspace header's: a header's
@@ -645,7 +645,8 @@ class CallFinder:
         None for any other member, and for a string no constructor gives a known value
         or another function writes."""
         if holds_handle(field) or binds_handle(field):
-            return render(self.namespaces.member(field, None))
+            found, origin = self.namespaces.member_origin(field)
+            return links.origin_marked(render(found), origin)
         if msg_types.param_type(field.type) != "str" or self.sites is None:
             return None
         return self.sites.constructed_text(field)
