@@ -19,6 +19,7 @@ from ..model.location import Location
 from ..model.rosname import (
     RosName,
     clean,
+    is_legal_name,
     is_ros2_node_name,
     namespace_of,
     remap,
@@ -39,6 +40,7 @@ from ..model.runtime import (
 from ..model.source import (
     COUNTED,
     NUMBERED,
+    PROCESS_HANDLE,
     ROS_ARGUMENT,
     WORDS,
     Node,
@@ -165,6 +167,9 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     transports = Transports(workspace, resources)
     seen: dict[str, NodeInstance] = {}
     started: list[tuple[NodeDecl, NodeInstance]] = []
+    # the calls a nodelet loaded into a manager makes on handles its code constructs,
+    # with the manager's name: linked once every instance, the manager's too, is known
+    in_manager: list[tuple[NodeInstance, list[PrimitiveCall], str]] = []
     for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
         if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
@@ -180,8 +185,17 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         config.nodes.append(instance)
         if instance.node is None:
             continue
-        _link_calls(instance, [*own_calls(decl, instance.node, own), *in_process_nodelets(
-            instance, nodes, plugin_models)], resources, config, transports)
+        calls = [*own_calls(decl, instance.node, own), *in_process_nodelets(
+            instance, nodes, plugin_models)]
+        manager = loading_manager(decl)
+        moved = [c for c in calls if c.handle_origin == PROCESS_HANDLE] if (
+            manager is not None) else []
+        if moved:
+            in_manager.append((instance, moved, manager or ""))
+            calls = [c for c in calls if c.handle_origin != PROCESS_HANDLE]
+        _link_calls(instance, calls, resources, config, transports)
+    for instance, calls, manager in in_manager:
+        _link_in_manager(instance, calls, manager, resources, config, transports)
     # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
     # whose controllers the plugin hosts load, and a ROS 1 gazebo_ros_control plugin
     # serves the controller_manager services the spawners' controllers are loaded by
@@ -265,11 +279,55 @@ def _names_the_node(pattern: str, instance: NodeInstance | None) -> bool:
         last != instance.name.rsplit("/", 1)[-1])
 
 
+def loading_manager(decl: NodeDecl) -> str | None:
+    """The full name of the manager ``<node pkg="nodelet" type="nodelet" args="load
+    pkg/Name manager">`` loads its nodelet into: the loader resolves it in its own
+    namespace (nodelet.cpp's ``manager + "/load_nodelet"`` service); None for another
+    declaration (``standalone``: the process is the nodelet's own)."""
+    words = decl.args.split()
+    if nodelet_plugin(decl) is None or words[0] != "load" or len(words) < 3:
+        return None
+    # (a word that is no name, an argument's text left as written: not known)
+    known = is_legal_name(words[2].replace(UNKNOWN_MARK, "x"))
+    return resolve(words[2] if known else UNKNOWN_MARK, decl.namespace)
+
+
+def _link_in_manager(instance: NodeInstance, calls: Sequence[PrimitiveCall], manager: str,
+                     resources: Resources, config: Configuration,
+                     transports: Transports) -> None:
+    """Link the calls a nodelet loaded into ``manager`` makes on handles its code
+    constructs (``PrimitiveCall.handle_origin`` ``process``): roscpp makes such a
+    handle in the process's node, the manager's, so its names resolve in the manager's
+    namespace, ``~`` is the manager's private namespace, and the remaps are the
+    manager's, not those the nodelet was loaded with (laser_filters before 7c18194).
+    The links stay the nodelet instance's: its code makes them. A manager the
+    configuration does not start gives its name, from the load's arguments, and no
+    remaps known: NODELET_PROCESS_HANDLES says so."""
+    found = [n for n in config.nodes if n.name == manager and n.ros_version == 1]
+    process = found[0] if len(found) == 1 else None
+    at = NodeInstance(manager, instance.node, namespace=namespace_of(manager),
+                      remaps=list(process.remaps) if process is not None else [],
+                      args=process.args if process is not None else "",
+                      conditions=instance.conditions, location=instance.location)
+    config.diagnostics.append(diag.make(
+        "NODELET_PROCESS_HANDLES", instance.location, nodelet=instance.name,
+        count=len(calls), manager=manager, remaps="its remaps" if process is not None
+        else "no remaps known: the configuration does not start it"))
+    _link_calls(instance, calls, resources, config, transports, at=at,
+                noted=process or at)
+
+
 def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resources: Resources,
-                config: Configuration, transports: Transports) -> None:
+                config: Configuration, transports: Transports,
+                at: NodeInstance | None = None, noted: NodeInstance | None = None) -> None:
     """Link a node instance's calls: one per element of a list parameter, and for an
-    image_transport publisher or subscriber the topics of its transport plugins."""
-    remaps = _Applied(instance.remap_rules(), instance)
+    image_transport publisher or subscriber the topics of its transport plugins. The
+    names resolve as the node ``at`` (by default the instance itself) resolves them,
+    whose remaps that change a name are noted on ``noted`` (``at`` by default): a
+    nodelet's calls on the handles of its manager's process (``_link_in_manager``)."""
+    made = instance
+    instance = at or instance
+    remaps = _Applied(instance.remap_rules(), noted or instance)
     images: dict[Location, list[PrimitiveCall]] = {}  # image_transport calls by place
     for each in calls:
         if each.transport is not None:
@@ -284,7 +342,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
                 info = _camera_info(instance, each, images.get(each.location, []), remaps,
                                     resources)
                 if info is not None:
-                    link(instance, each, remaps, resources, config, info)
+                    link(made, each, remaps, resources, config, info)
                     continue
             base = resolved_name(instance, each, remaps, resources)
             if each.name_param is not None and base.is_unresolved and (
@@ -299,7 +357,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             ):
                 config.diagnostics.append(_name_arg_unset(instance, each))
             if each.transport is None:
-                link(instance, each, remaps, resources, config, base)
+                link(made, each, remaps, resources, config, base)
                 continue
             # the transport's topic is named below the base and resolved (and remapped)
             # again; ROS 1 image_transport's publishers and camera subscribers remap the
@@ -313,7 +371,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             expanded = base if remapped else plain
             for one in transports.calls(each, expanded.full, instance,
                                         _transport_given(each, instance, resources)):
-                link(instance, one, remaps, resources, config, base if one is each else
+                link(made, one, remaps, resources, config, base if one is each else
                      _below_base(resolved_name(instance, one, remaps, resources), expanded,
                                  plain.full, instance.namespace))
 

@@ -162,6 +162,8 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          struct_member=c.get("struct_member") is True,
                          handle_namespace=c.get("handle_namespace"),
                          root_handle=c.get("root_handle") is True,
+                         handle_origin=c.get("handle_origin") if isinstance(
+                             c.get("handle_origin"), str) else None,
                          deletes=bool(c.get("deletes", False)),
                          node_name=c.get("node_name"), name_each=c.get("name_each"),
                          program_arg=_program_arg(c.get("program_arg")),

@@ -47,6 +47,12 @@ CallKind = Literal[
     "read", "write", "declare",
 ]
 
+# ``PrimitiveCall.handle_origin``: a ROS 1 call made on a nodelet's own handle
+# (``getNodeHandle()``, ``getPrivateNodeHandle()``, their MT twins), or on one the code
+# constructs (``ros::NodeHandle nh("~")``), which roscpp makes in the process's node
+HANDLE_ORIGINS = ("nodelet", "process")
+NODELET_HANDLE, PROCESS_HANDLE = HANDLE_ORIGINS
+
 # a ROS 1 dynamic_reconfigure server's service and its two latched topics, below the
 # server's namespace (dynamic_reconfigure's server.h and server.py); a client (client.py,
 # dynparam) calls the service and subscribes to the topics
@@ -188,6 +194,14 @@ class PrimitiveCall:
     # ``init(hw, root_nh, controller_nh)``, its own namespace: a relative name is the
     # manager's (``plugins.attach.ros1_controllers``), not the controller's
     root_handle: bool = field(default=False, metadata={"optional": True})
+    # ROS 1: where the handle the call is made on comes from (``HANDLE_ORIGINS``):
+    # ``nodelet``, a nodelet's own handle, in the nodelet's namespace with the remaps it
+    # was loaded with; ``process``, a handle the code constructs, which is the process's
+    # node's: in a nodelet manager, the manager's namespace, private name and remaps
+    # (laser_filters before 7c18194 advertised on a member ``ros::NodeHandle nh;``). None:
+    # not known (a handle another file gives, handles of both kinds), or no handle; the
+    # graph then places the call as the node's own, as before this field was read
+    handle_origin: str | None = field(default=None, metadata={"optional": True})
     # parameter writes that delete the parameter (rospy.delete_param, ros::param::del,
     # NodeHandle::deleteParam)
     deletes: bool = False

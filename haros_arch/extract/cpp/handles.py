@@ -15,6 +15,8 @@ from typing import Any
 
 from clang.cindex import Cursor, CursorKind, TypeKind, conf
 
+from ...model.source import NODELET_HANDLE as NODELET
+from ...model.source import PROCESS_HANDLE as PROCESS
 from . import api
 from .call_sites import (
     CallSites,
@@ -51,6 +53,8 @@ _FUNCTIONS = frozenset({
 _POINTERS = ("shared_ptr", "unique_ptr", "weak_ptr", "scoped_ptr")
 _POINTER_READS = ("operator->", "operator*", "get")  # a smart pointer's handle
 _UNSURE = (None, None)  # a member whose writes differ (``Namespaces._assigned``)
+# a handle made where the unit does not show (``Namespaces.origin``)
+_ORIGIN_UNSEEN = "?"
 
 
 def join_name(namespace: str, name: str) -> str:
@@ -154,6 +158,13 @@ class Namespaces:
         # the last namespace asked for is a ROS 1 controller's root handle
         # (``controller_root``): the manager's namespace, not known here
         self.root = False
+        # where the last handle asked for was made (``PrimitiveCall.handle_origin``):
+        # ``nodelet`` for a nodelet's own handles (``getNodeHandle()``, ...), ``process``
+        # for one the code constructs (``ros::NodeHandle nh("~")``), which roscpp makes
+        # in the process's node; None when the handles it may be disagree, or one of
+        # them comes from where we do not see (another file, a controller's manager)
+        self.origin: str | None = None
+        self._origins: set[str] = set()
         self._asked = 0  # ``value_namespace`` questions open
         self.unit_root: Any = None  # the unit's root node (``cursors.root``), once known
         # whether a file is the workspace's, as the visitor asks (the same function: the
@@ -182,21 +193,28 @@ class Namespaces:
         ``resolveName``)."""
         if self._asked >= _MAX_ASKED:
             return UNKNOWN
-        state = (self.unknown_from, self._unknown_count, self.root, self.unknown_parts)
+        state = (self.unknown_from, self._unknown_count, self.root, self.unknown_parts,
+                 self.origin, self._origins)
         self._asked += 1
         try:
             found = self.of(expr, scope)
             return UNKNOWN if self.root else found
         finally:
             self._asked -= 1
-            self.unknown_from, self._unknown_count, self.root, self.unknown_parts = state
+            (self.unknown_from, self._unknown_count, self.root, self.unknown_parts,
+             self.origin, self._origins) = state
 
     def of(self, expr: Cursor, scope: Scope, depth: int = 0) -> Parts:
         """The namespace of the handle ``expr`` stands for."""
         if depth == 0:
             self.unknown_from, self._unknown_count, self.root = None, 0, False
             self.unknown_parts = []
+            self._origins = set()
         found = self._namespace(expr, scope, depth)
+        if depth == 0:
+            # one origin, known, for every handle the expression may be
+            self.origin = next(iter(self._origins)) if len(self._origins) == 1 else None
+            self.origin = None if self.origin == _ORIGIN_UNSEEN else self.origin
         if depth == 0 and self._unknown_count != 1:
             self.unknown_from = None
         if depth == 0 and len(self.unknown_parts) != self._unknown_count:
@@ -218,6 +236,7 @@ class Namespaces:
             decl = expr.referenced
             if decl is not None and controller_root(decl):
                 self.root = True
+                self._origins.add(_ORIGIN_UNSEEN)  # the manager's handle
                 return ("",)
             if decl is not None and scope.is_parameter(decl) and scope.sites is not None:
                 return scope.sites.agreed(decl, lambda a, s: self.of(a, s, depth + 1), UNKNOWN)
@@ -235,6 +254,7 @@ class Namespaces:
                                    depth + 1)
                 marker = self._global_elsewhere(decl)
                 if marker is not None:
+                    self._origins.add(_ORIGIN_UNSEEN)  # made in another file
                     return (marker,)
             if value is None and initializer(decl) is None:
                 return self._dropped_prefix(decl)
@@ -256,6 +276,7 @@ class Namespaces:
         owner = qualified_name(target.semantic_parent)
         factory = (owner, target.spelling)
         if factory in api.HANDLE_FACTORIES:
+            self._origins.add(NODELET)
             return (api.HANDLE_FACTORIES[factory],)
         if factory in api.RCLCPP_SUB_NODE or target.spelling in _POINTER_READS:
             return self._sub_node(expr, factory, scope, depth)
@@ -275,6 +296,12 @@ class Namespaces:
                 return found.pop() if len(found) == 1 else UNKNOWN
             return UNKNOWN
         args = written_arguments(expr)
+        if not args or not is_handle(args[0]):
+            # a handle the code constructs from nothing or a namespace: roscpp's, of the
+            # process (a child of another handle, or a copy, is where its parent is);
+            # with remappings the code gives (``NodeHandle(ns, remappings)``), its own
+            self._origins.add(PROCESS if len(args) < 2 and not _in_main(scope)
+                              else _ORIGIN_UNSEEN)
         if not args:
             return ("",)
         if is_handle(args[0]):
@@ -295,6 +322,7 @@ class Namespaces:
         known = api.HANDLE_MEMBERS.get((qualified_name(field.semantic_parent),
                                         field.spelling))
         if known is not None:
+            self._origins.add(NODELET)  # a nodelet base class's own handles
             return (known,)
         found = member_initialiser(field, self.source) if self.sites is None else (
             self.sites.member(field, body))
@@ -322,14 +350,26 @@ class Namespaces:
             if not (handle and (held or bound)):
                 return UNKNOWN
             if self.sites is not None and constructed_elsewhere(field, self.source):
+                self._origins.add(_ORIGIN_UNSEEN)  # set by a constructor of another file
                 marker = self.sites.member_placeholder(field)
                 return (marker,) if marker is not None else UNKNOWN
+            if held:
+                self._origins.add(PROCESS)  # default-constructed: ``ros::NodeHandle nh_;``
             return ("",) if held else UNKNOWN
         # read where it is written: ``ros::NodeHandle right(nh, "right"); right_nh_ =
         # right;``
         return self.of(value, Scope(None, self.macros, self.source, self.sites)
                        if where is None or self.sites is None else self.sites.scope(where),
                        depth + 1)
+
+    def member_origin(self, field: Cursor) -> tuple[Parts, str | None]:
+        """The namespace of the handle member ``field`` as the unit's constructors of its
+        class give it (``member``, read in no function), and where that handle was made
+        (``origin``)."""
+        self._origins = set()
+        found = self.member(field, None)
+        origin = next(iter(self._origins)) if len(self._origins) == 1 else None
+        return found, None if origin == _ORIGIN_UNSEEN else origin
 
     def _unknown(self, written: str, expr: Cursor, scope: Scope) -> None:
         """Note ``expr`` as what gave a namespace its unknown run (``unknown_from``)."""
@@ -422,16 +462,17 @@ class Namespaces:
             return None
         return self.sites.member_placeholder(decl)
 
-    def global_handles(self, unit: Any) -> list[tuple[str, Parts]]:
-        """(USR, namespace) of each global handle the functions of the unit's main file
-        write exactly once (``_global_value``), for the other files of the node that
-        use it (``_global_elsewhere``)."""
-        found: list[tuple[str, Parts]] = []
+    def global_handles(self, unit: Any) -> list[tuple[str, Parts, str | None]]:
+        """(USR, namespace, origin) of each global handle the functions of the unit's
+        main file write exactly once (``_global_value``), for the other files of the node
+        that use it (``_global_elsewhere``)."""
+        found: list[tuple[str, Parts, str | None]] = []
         for key, writes in sorted(self._global_writes_of(unit).items()):
             usr = self._global_usrs.get(key, "")
             if len(writes) == 1 and usr:
-                found.append((usr, self.of(writes[0], Scope(
-                    None, self.macros, self.source, self.sites))))
+                namespace = self.of(writes[0], Scope(None, self.macros, self.source,
+                                                     self.sites))
+                found.append((usr, namespace, self.origin))
         return found
 
     def _global_writes(self, function: Cursor) -> None:
@@ -463,6 +504,8 @@ class Namespaces:
         data = self.source.get(where.file.name)
         found = _PREFIX_PLUS.match(data, where.offset) if data else None
         prefix = literal(found.group(1).decode("utf-8", "replace")) if found else None
+        if prefix is not None:
+            self._origins.add(PROCESS)  # constructed from a namespace
         return UNKNOWN if prefix is None else (normalise(prefix + "?"),)
 
     def _sub_node(self, call: Cursor, factory: tuple[str, str], scope: Scope,
@@ -483,6 +526,17 @@ class Namespaces:
             return parent
         child = render(scope.string(args[index]))
         return (normalise(join_name(render(parent), child)),)
+
+
+def _in_main(scope: Scope) -> bool:
+    """Whether ``scope`` is a program's ``main()``: no nodelet runs it, so a handle made
+    there says nothing of a nodelet's handles, when a source compiled both as a program
+    and as a nodelet library is read as the program (laser_filters'
+    scan_to_cloud_filter_chain.cpp, whose ``#if BUILDING_NODELET`` one target defines:
+    its nodelet passes ``getPrivateNodeHandle()`` where ``main()`` passes ``pnh("~")``)."""
+    body = scope.body
+    return body is not None and body.kind == CursorKind.FUNCTION_DECL and (
+        body.spelling == "main")
 
 
 def controller_root(decl: Cursor) -> bool:

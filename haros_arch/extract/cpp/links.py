@@ -28,7 +28,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
 from ...model.rosname import node_name_joined
-from ...model.source import JOINED, PrimitiveCall
+from ...model.source import JOINED, NODELET_HANDLE, PROCESS_HANDLE, PrimitiveCall
 from . import msg_types
 from .cache import conditions_text
 from .call_conditions import (
@@ -305,12 +305,28 @@ def _literal(arg: Cursor, value: str) -> bool:
 # to ``getMassAndInertia(nh, ...)`` of hector_quadrotor_interface's library, which reads
 # ``robot_description`` on it); only ``resolve`` keeps it, as ``root_handle``
 ROOT_MARK = "\x17"
+# before a handle's namespace passed to another file's function: where the handle was
+# made (``Namespaces.origin``, ``PrimitiveCall.handle_origin``), for the calls made on it
+# there (msckf_vio's nodelet hands ``getPrivateNodeHandle()`` to ImageProcessor's
+# constructor in image_processor.cpp); only ``resolve`` reads it
+ORIGIN_MARKS = {NODELET_HANDLE: "\x18", PROCESS_HANDLE: "\x19"}
+_MARKS = re.compile("[" + ROOT_MARK + "".join(ORIGIN_MARKS.values()) + "]")
+
+
+def origin_marked(text: str, origin: str | None) -> str:
+    """A handle's namespace text as passed to another file, marked with its origin."""
+    return ORIGIN_MARKS.get(origin or "", "") + text
+
+
+def _plain(text: str) -> str:
+    """A passed value without the marks of a handle's root or origin."""
+    return _MARKS.sub("", text)
 
 
 def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,
            named: Callable[[Cursor, Scope], str | None] | None) -> str | None:
     if is_handle(arg):
-        text = render(namespaces.of(arg, scope))
+        text = origin_marked(render(namespaces.of(arg, scope)), namespaces.origin)
         return ROOT_MARK + text if namespaces.root else text
     if msg_types.param_type(arg.type) == "str":
         parts = scope.string(arg)
@@ -637,6 +653,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         # a camera's camera_info names its image topic as written on the same handle
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
+        start = len(out)
         for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle, host_called):
             filled, _, camera_filled = filled.partition(_CAMERA_SPLIT)
             filled, _, type_filled = filled.partition(_TYPE_SPLIT)
@@ -645,12 +662,17 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             filled, _, param_text = filled.partition(_PARAM_SPLIT)
             ns, _, name = filled.partition(_SPLIT)
             root = ROOT_MARK in ns
-            ns, name = ns.replace(ROOT_MARK, ""), name.replace(ROOT_MARK, "")
-            node_filled = node_filled.replace(ROOT_MARK, "")
-            param_text = param_text.replace(ROOT_MARK, "")
-            lists_text = [text.replace(ROOT_MARK, "") for text in lists_text]
-            type_filled = type_filled.replace(ROOT_MARK, "")
-            camera_filled = camera_filled.replace(ROOT_MARK, "")
+            # the handles the namespace was filled from, by where they were made: one
+            # origin, else none known; none passed: the call's own
+            origins = {o for o, mark in ORIGIN_MARKS.items() if mark in ns}
+            origin = call.handle_origin if not origins else (
+                origins.pop() if len(origins) == 1 else None)
+            ns, name = _plain(ns), _plain(name)
+            node_filled = _plain(node_filled)
+            param_text = _plain(param_text)
+            lists_text = [_plain(text) for text in lists_text]
+            type_filled = _plain(type_filled)
+            camera_filled = _plain(camera_filled)
             # (a parameter's mark in the namespace names the call, as one in the name
             # does: costmap_2d's ``ros::NodeHandle target_layer(nh, plugin_name)``)
             ns = _rejoined(ns) if ns else ""
@@ -661,6 +683,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             made = dataclasses.replace(
                 call, name=join_name(marked, name) if ns else name,
                 root_handle=call.root_handle or (root and not name.startswith(("/", "~"))),
+                handle_origin=origin,
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
                 camera_of=call.camera_of if call.camera_of is None or (
                     PLACEHOLDER not in call.camera_of) else (
@@ -694,7 +717,24 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                     "CPP_NAME_MEMBER_ELSEWHERE", made.location, kind=made.kind,
                     name=made.name, member=", ".join(members)) if members else diag.make(
                     "CPP_DYNAMIC_NAME", made.location, kind=made.kind, name=made.name))
+        _origins_agreed(out, start)
     return out, found
+
+
+def _origins_agreed(calls: list[PrimitiveCall], start: int) -> None:
+    """Of the calls one call made from ``start`` on (one per site that fills it), those
+    alike but for the origin of their handles (``handle_origin``: a class built on a
+    nodelet's handle in one file, on one the code makes in another) have none known:
+    one call of a node is not made on two handles."""
+    for index in range(start, len(calls)):
+        call = calls[index]
+        if call.handle_origin is None:
+            continue
+        bare = dataclasses.replace(call, handle_origin=None)
+        if any(other.handle_origin != call.handle_origin
+               and dataclasses.replace(other, handle_origin=None) == bare
+               for other in calls[start:]):
+            calls[index] = bare
 
 
 def _fields_marked(text: str) -> list[str]:
@@ -1093,9 +1133,9 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
 
 
 def _rootless(texts: list[str]) -> list[str]:
-    """``_expand``'s values without the root handle's mark (``ROOT_MARK``), for what is
-    no call's namespace."""
-    return [text.replace(ROOT_MARK, "") for text in texts]
+    """``_expand``'s values without the marks of a handle's root or origin
+    (``ROOT_MARK``, ``ORIGIN_MARKS``), for what is no call's namespace."""
+    return [_plain(text) for text in texts]
 
 
 def _at_sites(text: str, usr: str, items: list[tuple[str, dict[int, str]]],

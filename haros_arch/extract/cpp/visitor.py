@@ -566,8 +566,8 @@ class CallFinder:
             # (a unit with no global handle has none to give: its functions are not
             # walked for global writes)
             self.facts.extend(links.global_facts(
-                ((usr, render(parts))
-                 for usr, parts in self.namespaces.global_handles(self.tu)),
+                ((usr, links.origin_marked(render(parts), origin))
+                 for usr, parts, origin in self.namespaces.global_handles(self.tu)),
                 self.tu.spelling))
         self.uses.extend(self._uses())
         # the owners the unit's code defines, not a workspace header's: a header's
@@ -656,7 +656,8 @@ class CallFinder:
         None for any other member, and for a string no constructor gives a known value
         or another function writes."""
         if holds_handle(field) or binds_handle(field):
-            return render(self.namespaces.member(field, None))
+            found, origin = self.namespaces.member_origin(field)
+            return links.origin_marked(render(found), origin)
         if msg_types.param_type(field.type) != "str" or self.sites is None:
             return None
         return self.sites.constructed_text(field)
@@ -2229,6 +2230,7 @@ class CallFinder:
         unknown_from: tuple[Cursor, Scope] | None = None
         unknown_parts: list[tuple[Cursor, Scope]] = []  # each of its runs' (ROS 1)
         root = False  # made on a ROS 1 controller's root handle (``handles.controller_root``)
+        origin: str | None = None  # where that handle was made (``handles.Namespaces.origin``)
         if spec.fixed_name is not None:
             if spec.handle_default is not None:  # relative to the handle given
                 handle = next((a for a in args if is_handle(a)), None)
@@ -2236,6 +2238,7 @@ class CallFinder:
                     self.namespaces.of(handle, scope)))
                 if handle is not None:
                     unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                    origin = self.namespaces.origin
                     unknown_parts = list(self.namespaces.unknown_parts)
             # once per node (and handle): per owner when the file names several nodes
             once = self._owner if self._owner in dict(self.node_names) else ""
@@ -2293,10 +2296,12 @@ class CallFinder:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
                 unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                origin = self.namespaces.origin
                 unknown_parts = list(self.namespaces.unknown_parts)
             elif handle_arg is not None and handle_arg < len(args):
                 namespace = render(self.namespaces.of(args[handle_arg], scope))
                 unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                origin = self.namespaces.origin
                 unknown_parts = list(self.namespaces.unknown_parts)
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
@@ -2453,6 +2458,7 @@ class CallFinder:
                 handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
+                handle_origin=None if self.ros2 else origin,
                 deletes=spec.deletes, node_name=owner, transport=transport, **chosen,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
@@ -2511,6 +2517,7 @@ class CallFinder:
                     has_default=kind in ("declare", "read"),
                     handle_namespace=sibling_namespace, node_name=owner,
                     root_handle=root and on_handle and not full.startswith(("/", "~")),
+                    handle_origin=origin if on_handle and not self.ros2 else None,
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
                 if held is not None and namespace and sibling_namespace == namespace and (
