@@ -3490,6 +3490,12 @@ class CallFinder:
                         # writes it by reference (ROS 1's ``if (!pnh.getParam("topic",
                         # topic)) topic = "scan";``): the value where it is not set
                         return read[0], render(parts), read[2]
+                    if read is not None and scope.written_between(decl, call, expr) and (
+                            scope.written_before(decl, expr) is None):
+                        # written again after the read, where that write may not run
+                        # before this use (Autoware's image_rectifier: ``if (ns != "/")
+                        # topic = ns + topic;``): not the parameter's value alone
+                        return None
                     return read
                 handed = self._given_back(call, index, scope) if spec is None else None
                 if handed is not None:
