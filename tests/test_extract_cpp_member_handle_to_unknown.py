@@ -81,3 +81,23 @@ def test_a_member_that_is_no_handle_is_no_such_place(write_tree: Any) -> None:
     node = _node(write_tree, "quadrotor_common::check(mass_, port_name_);")
     assert not any("is given to" in r for r in node.completeness_reasons), (
         node.completeness_reasons)
+
+
+def test_the_handle_given_inside_a_macro_is_said_as_written(write_tree: Any) -> None:
+    """Once a call of the unknown helper outside the macro makes the parse declare it,
+    the macro's calls resolve and the handle is read from the expansion: its tokens
+    then ran from the macro's definition to the place it is invoked (sbus_bridge: "the
+    node (pnh_))returnfalseGET_PARAM(port_name)) is given to ..."). The argument as
+    written in the macro is said."""
+    global SOURCE
+    kept = SOURCE
+    SOURCE = SOURCE.replace(
+        "pub_ = nh_.advertise",
+        'quadrotor_common::getParam("rate", mass_, pnh_);\n    pub_ = nh_.advertise')
+    try:
+        node = _node(write_tree, "GET_PARAM(port_name);\n  GET_PARAM(mass);")
+    finally:
+        SOURCE = kept
+    given = [r.split(": ", 1)[1] for r in node.completeness_reasons if "is given to" in r]
+    assert given == ["the node (pnh_) is given to quadrotor_common::getParam, which the "
+                     "parse does not know"] * 3, node.completeness_reasons

@@ -59,6 +59,8 @@ class PackageFiles:
         # the words of each source (``classes.named_words``), kept by the workspace
         self.named_words = workspace.named_words
         self.file_facts = workspace.file_facts  # ``classes.remembered``
+        # the workspace's packages, whose headers a file includes as ``<pkg/...>``
+        self.packages = workspace.packages
 
     def relpath(self, path: str) -> str:
         rel = self._relative.get(path)

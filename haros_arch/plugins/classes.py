@@ -390,19 +390,104 @@ def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
 
 def _exported(path: str, workspace: Files) -> list[tuple[str, int]]:
     text = _text(path, workspace)
-    if not text or not any(mark in text for mark in _EXPORT_MARKS):
+    if not text:
+        return []
+    wrappers = _wrappers_used(path, text, workspace)
+    if not wrappers and not any(mark in text for mark in _EXPORT_MARKS):
         return []
     text = code_only(text, literals=True)
+    # a macro's body exports nothing where it is defined, only where it is invoked
+    defined = [m.span() for m in _DEFINITION.finditer(text)]
     out = []
     for match in _EXPORT.finditer(text):
-        words = re.findall(r"[A-Za-z_][\w:]*", match.group(2))
-        if not words:
-            continue
-        # DECLARE_CLASS(pkg, Name, ns::Class, Base): the class is the third word
-        cls = words[2] if match.group(1) == "PLUGINLIB_DECLARE_CLASS" and len(words) > 2 \
-            else words[0]
-        out.append((cls.lstrip(":"), text.count("\n", 0, match.start()) + 1))
+        cls = _exported_class(match.group(1), match.group(2))
+        if cls and not any(a <= match.start() < b for a, b in defined):
+            out.append((cls, text.count("\n", 0, match.start()) + 1))
+    for name, (params, macro, arguments) in wrappers.items():
+        for use in re.finditer(r"\b" + re.escape(name) + r"\s*\(([^)]*)\)", text):
+            values = [v.strip() for v in use.group(1).split(",")]
+            if len(values) != len(params) or any(a <= use.start() < b for a, b in defined):
+                continue
+            given = dict(zip(params, values, strict=True))
+            cls = _exported_class(macro, _expanded(arguments, given))
+            if cls:
+                out.append((cls, text.count("\n", 0, use.start()) + 1))
+    return sorted(out, key=lambda found: found[1])
+
+
+def _exported_class(macro: str, arguments: str) -> str | None:
+    """The class an export macro's arguments name: the first word,
+    ``PLUGINLIB_DECLARE_CLASS(pkg, Name, ns::Class, Base)``'s third."""
+    words = re.findall(r"[A-Za-z_][\w:]*", arguments)
+    if not words:
+        return None
+    return (words[2] if macro == "PLUGINLIB_DECLARE_CLASS" and len(words) > 2
+            else words[0]).lstrip(":")
+
+
+# a function-like macro's definition, its continued lines with it: name, parameters, body
+_DEFINITION = re.compile(r"^[ \t]*#[ \t]*define[ \t]+(\w+)(?:\(([^)]*)\))?"
+                         r"((?:[^\n]*\\\n)*[^\n]*)", re.MULTILINE)
+# a macro invoked at the start of a line, as exports are (outside any function)
+_INVOKED = re.compile(r"^[ \t]*([A-Z_][A-Z0-9_]*)[ \t]*\(", re.MULTILINE)
+
+
+def _wrappers_used(path: str, text: str, workspace: Files
+                   ) -> dict[str, tuple[list[str], str, str]]:
+    """The macros of the workspace that wrap an export macro (``export_wrappers``) which
+    ``text`` (the file at ``path``) invokes at the start of a line, defined there or in
+    a header of the workspace it includes: swri_nodelet's ``SWRI_NODELET_EXPORT_CLASS(NS,
+    CLASS)``, ``PLUGINLIB_EXPORT_CLASS(NS::CLASS, nodelet::Nodelet)`` and a factory."""
+    invoked = {m.group(1) for m in _INVOKED.finditer(text)}
+    if not invoked:
+        return {}
+    found: dict[str, tuple[list[str], str, str]] = {}
+    for source in (path, *included_headers(path, text, workspace),
+                   *_other_packages_headers(text, workspace)):
+        for name, wrapper in export_wrappers(source, workspace).items():
+            if name in invoked:
+                found.setdefault(name, wrapper)
+    return found
+
+
+def _other_packages_headers(text: str, workspace: Files) -> list[str]:
+    """The headers ``text`` includes as ``<pkg/...>`` from the ``include`` folder of
+    another package ``pkg`` of the workspace (swri_transform_util's nodelets include
+    ``<swri_nodelet/class_list_macros.h>``)."""
+    packages = getattr(workspace, "packages", None) or {}
+    out = []
+    for header in INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
+        package = packages.get(header.split("/", 1)[0]) if "/" in header else None
+        candidate = None if package is None else os.path.normpath(
+            os.path.join(package.root, "include", header))
+        if candidate is not None and os.path.isfile(candidate) and workspace.holds(candidate):
+            out.append(candidate)
     return out
+
+
+def export_wrappers(path: str, workspace: Files) -> dict[str, tuple[list[str], str, str]]:
+    """The function-like macros a C++ file defines whose body invokes an export macro:
+    name -> (parameters, the export macro, its arguments as written in the body)."""
+    def wrappers() -> dict[str, tuple[list[str], str, str]]:
+        text = _text(path, workspace)
+        if not text or "define" not in text or not any(m in text for m in _EXPORT_MARKS):
+            return {}
+        found = {}
+        for definition in _DEFINITION.finditer(code_only(text, literals=True)):
+            export = _EXPORT.search(definition.group(3).replace("\\\n", " "))
+            # (mavros defines MAVROS_PLUGIN_REGISTER, which ``_EXPORT`` reads as it is)
+            if definition.group(2) is not None and export is not None and not (
+                    _EXPORT.match(definition.group(1) + "()")):
+                params = [p.strip() for p in definition.group(2).split(",")]
+                found[definition.group(1)] = (params, export.group(1), export.group(2))
+        return found
+    return remembered("export wrappers", path, workspace, wrappers)
+
+
+def _expanded(body: str, values: Mapping[str, str]) -> str:
+    """A macro's ``body`` with its parameters replaced by ``values``, ``##`` pasted."""
+    replaced = re.sub(r"\b\w+\b", lambda m: values.get(m.group(0), m.group(0)), body)
+    return re.sub(r"\s*##\s*", "", replaced)
 
 
 def header_exports(source: str, workspace: Files) -> set[str]:

@@ -563,9 +563,12 @@ def _call_key(call: PrimitiveCall) -> tuple[object, ...]:
     """One call of the node: by kind, name, place and name parameter, the node a
     construction names it for (``links.per_construction``: a class built twice makes
     its calls on each of two nodes), and the image topic a camera_info call is beside
-    (a camera publisher class built twice makes two)."""
+    (a camera publisher class built twice makes two). A name the code resolves, or a
+    command-line word it reads, is no parameter read of that name at that place
+    (swri_roscpp's ``getParam`` wrapper resolves the name and then reads it)."""
     return (call.kind, call.name, call.location, call.name_param,
-            links.per_construction(call.node_name)[1], call.camera_of)
+            links.per_construction(call.node_name)[1], call.camera_of, call.resolved,
+            call.argument)
 
 
 # the diagnostics the visitor makes at a call it keeps, which say something of that call

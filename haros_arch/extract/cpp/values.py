@@ -766,6 +766,27 @@ class Scope:
             value = self._agreed(before, where, depth)
         return value
 
+    def written_between(self, decl: Cursor, after: Cursor, at: Cursor) -> bool:
+        """Whether this body assigns local ``decl`` (``=``, ``+=``) after ``after`` (a
+        call it was passed to) ends and before ``at`` reads it; not in an ``if`` whose
+        condition holds that call (``if (!pnh.getParam("topic", topic)) topic =
+        other();``: what it holds where the call did not fill it)."""
+        _ = self.writes  # read from the body together
+        placed = self._placed.get(key_of(decl))
+        if not placed or self.body is None or not self.holds(at.extent.start):
+            return False
+        start, where = after.extent.end.offset, at.extent.start.offset
+        later = [first for first, last, value in placed
+                 if start <= first and last <= where and value is not None]
+        if not later:
+            return False
+        testing = [node.extent for node in _walk(self.body) if node.kind == CursorKind.IF_STMT
+                   and (children := list(node.get_children()))
+                   and children[0].extent.start.offset <= after.extent.start.offset
+                   and after.extent.end.offset <= children[0].extent.end.offset]
+        return any(not any(e.start.offset <= first <= e.end.offset for e in testing)
+                   for first in later)
+
     def held_before(self, decl: Cursor, at: Cursor) -> tuple[bool, Cursor | None]:
         """Whether local ``decl`` is written with a value (an assignment, not an
         argument passed by reference) before ``at`` reads it, by a write that runs

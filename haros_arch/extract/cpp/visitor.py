@@ -308,6 +308,21 @@ _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", 
 
 
 
+def _written(argument: Cursor, call: Cursor) -> str:
+    """An argument of ``call`` as written (its tokens, at most 60 characters). One that a
+    macro's body writes (sbus_bridge's ``GET_PARAM(name)``, whose expansion gives
+    ``pnh_``) has no text of its own inside the call's: its extent is the whole
+    invocation, whose tokens libclang takes from the macro's definition to the place it
+    is invoked; then its own name (``pnh_``)."""
+    start, end, whole = argument.extent.start, argument.extent.end, call.extent
+    if (start.file is not None and whole.start.file is not None
+            and start.file.name == whole.start.file.name
+            and whole.start.offset < start.offset <= end.offset <= whole.end.offset):
+        return "".join(t.spelling for t in argument.get_tokens())[:60]
+    named = argument.referenced if argument.referenced is not None else argument
+    return named.spelling or argument.spelling or "?"
+
+
 def _declared_constructors(cls: Cursor) -> list[str]:
     """The USRs of the constructors ``cls`` declares (none when one has no USR, or it
     declares none: its implicit ones have no code anywhere to read)."""
@@ -1650,8 +1665,8 @@ class CallFinder:
                         (t.spelling for t in itertools.islice(call.get_tokens(), 24))))
             self._handed_to(owner, name, call)
             self.diagnostics.append(diag.make(
-                "CPP_NODE_TO_UNKNOWN", self.where(call),
-                given="".join(t.spelling for t in given[0].get_tokens())[:60], name=name))
+                "CPP_NODE_TO_UNKNOWN", self.where(call), given=_written(given[0], call),
+                name=name))
 
     def _of_loaded_base(self, call: Cursor) -> bool:
         """Whether ``call`` is a method of an object held as the base class that a
@@ -3687,6 +3702,12 @@ class CallFinder:
                         # writes it by reference (ROS 1's ``if (!pnh.getParam("topic",
                         # topic)) topic = "scan";``): the value where it is not set
                         return read[0], render(parts), read[2]
+                    if read is not None and scope.written_between(decl, call, expr) and (
+                            scope.written_before(decl, expr) is None):
+                        # written again after the read, where that write may not run
+                        # before this use (Autoware's image_rectifier: ``if (ns != "/")
+                        # topic = ns + topic;``): not the parameter's value alone
+                        return None
                     return read
                 handed = self._given_back(call, index, scope) if spec is None else None
                 if handed is not None:

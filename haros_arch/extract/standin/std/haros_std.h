@@ -540,7 +540,12 @@ public:
   template<class It> basic_string& assign(It first, It last);
   basic_string& insert(size_t pos, const basic_string& s);
   basic_string& erase(size_t pos = 0, size_t n = npos);
-  iterator erase(iterator first, iterator last);
+  // one position (``s.erase(s.begin())``): a template, since the iterator is a pointer
+  // here and ``s.erase(0)`` (a count) would find a null iterator as good a match
+  template<class It, class = typename enable_if<is_same<It, C*>::value
+                                                || is_same<It, const C*>::value>::type>
+  iterator erase(It position);
+  iterator erase(const_iterator first, const_iterator last);
   basic_string& replace(size_t pos, size_t n, const basic_string& s);
   basic_string& replace(size_t pos, size_t n, const basic_string& s, size_t subpos,
                         size_t sublen = npos);
