@@ -475,6 +475,14 @@ CATALOGUE: dict[str, Entry] = {
         "(ros2 bag play, which publishes what was recorded) is such a node for the "
         "queries: an absence it may be the missing side of is undecided, named in the "
         "-undecided info."),
+    "LAUNCH_MOVEIT_DESCRIPTION_TOPIC": Entry(
+        "info", "{detail}",
+        "A MoveItConfigsBuilder loads the robot description from a file of a workspace "
+        "package that is not there, with no substitution among its xacro arguments: "
+        "moveit_configs_utils catches the error, warns and leaves the description out "
+        "of the configs it builds (MoveIt then reads the one published on "
+        "/robot_description). The nodes given those configs get no robot_description "
+        "parameter from them."),
     "LAUNCH_PY_LIFECYCLE": Entry(
         "info", "lifecycle transitions requested here are read as changing nothing in "
         "the graph",

@@ -183,6 +183,59 @@ def generate_launch_description():
                if d.code == "LAUNCH_PY_UNSUPPORTED")
 
 
+def test_a_description_file_that_is_not_there_is_left_out_as_moveit_does(
+        write_tree) -> None:
+    """No ``.setup_assistant`` and no ``config/<robot>.urdf``: moveit_configs_utils'
+    ``robot_description()`` catches load_xacro's file-not-found error, warns and leaves
+    the description out (MoveIt reads /robot_description); open_manipulator's
+    ``MoveItConfigsBuilder(robot_name='omx_f', ...)`` configs were said unknown."""
+    bare = "src/bare_moveit_config"
+    files = {f"{bare}/package.xml": package_xml("bare_moveit_config", "ament_cmake"),
+             f"{bare}/config/kinematics.yaml": "manipulator: {kinematics_solver: kdl}\n"}
+    model, _ = run(write_tree, """
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from moveit_configs_utils import MoveItConfigsBuilder
+
+def generate_launch_description():
+    moveit_config = MoveItConfigsBuilder("bare").to_moveit_configs()
+    return LaunchDescription([
+        Node(package="moveit_ros_move_group", executable="move_group",
+             parameters=[moveit_config.to_dict()]),
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[moveit_config.robot_description]),
+    ])
+""", files)
+    params = params_of(model, "move_group")
+    assert params["robot_description_kinematics.manipulator.kinematics_solver"] == "kdl"
+    assert "robot_description" not in params
+    assert params_of(model, "robot_state_publisher") == {}
+    said = [d for d in model.diagnostics if d.code == "LAUNCH_MOVEIT_DESCRIPTION_TOPIC"]
+    assert len(said) == 1 and "bare.urdf" in said[0].message
+    assert said[0].severity == "info" and said[0].location.line == 6
+    assert not any("bare.urdf" in d.message for d in model.diagnostics
+                   if d.code == "LAUNCH_PY_UNSUPPORTED")
+    # xacro arguments with a substitution: an Xacro substitution, which fails when
+    # launch runs it; not known here, as before
+    model, _ = run(write_tree, """
+from launch import LaunchDescription
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from moveit_configs_utils import MoveItConfigsBuilder
+
+def generate_launch_description():
+    moveit_config = (MoveItConfigsBuilder("bare")
+                     .robot_description(mappings={"x": LaunchConfiguration("x")})
+                     .to_moveit_configs())
+    return LaunchDescription([
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[moveit_config.robot_description]),
+    ])
+""", files)
+    assert "robot_description" in params_of(model, "robot_state_publisher")
+    assert not any(d.code == "LAUNCH_MOVEIT_DESCRIPTION_TOPIC" for d in model.diagnostics)
+
+
 def test_the_demo_starts_the_config_package_s_launch_files(write_tree) -> None:
     helpers = {
         f"{CONFIG}/launch/{name}.launch.py": f"""

@@ -46,6 +46,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from ... import diagnostics as diag
 from ... import safe_yaml
 from ...model.values import Unknown
 from ...share import share_source
@@ -245,6 +246,20 @@ def m_robot_description(i: Interpreter, b: ConfigsBuilder, a: Args, k: Kwargs,
     given = arg(a, k, 0, "file_path")
     mappings = arg(a, k, 1, "mappings")
     path = b.urdf if given is None else _join(b.share, given)
+    if isinstance(path, str) and not _exists(i, path) and (mappings is None or (
+            isinstance(mappings, dict) and all(
+                isinstance(key, str) and isinstance(value, str)
+                for key, value in mappings.items()))):
+        # load_xacro raises ParameterBuilderFileNotFoundError, which robot_description()
+        # catches: a warning, and no description in the configs (MoveIt reads the topic)
+        found = diag.make("LAUNCH_MOVEIT_DESCRIPTION_TOPIC", i.where(n), detail=(
+            f"{i.workspace.relpath(share_source(i.workspace, path))} does not exist: "
+            "moveit_configs_utils warns and leaves the robot description out of the "
+            "configs (MoveIt reads /robot_description)"))
+        if found not in i.diagnostics:
+            i.diagnostics.append(found)
+        b.sections["robot_description"] = {}
+        return b
     if path is None:
         value: Any = i.unsupported(n, "robot description file path not known statically")
     else:
