@@ -37,7 +37,14 @@ from .. import safe_yaml
 from ..extract.cpp.api import CONTROLLER_MANAGER_SERVICES
 from ..files import read_text
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl, shell_words
-from ..launch.ros2.naming import params_for_node, pattern_matches, split_rule
+from ..launch.ros2.naming import (
+    MAX_PARAM_DEPTH,
+    PARAMS_KEY,
+    ParamFileLoader,
+    params_for_node,
+    pattern_matches,
+    split_rule,
+)
 from ..model.conditions import Condition
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
@@ -1040,20 +1047,43 @@ def _node_names(document: Any, namespace: str) -> list[str]:
     as they are); a key with wildcards names the node of its last name in
     ``namespace`` when it matches it as rcl matches (``/**/controller_manager``, the
     manager or a controller of this process in any namespace: rosbot_ros' controller
-    files); ``/**`` is for every node and names none."""
+    files); ``/**`` is for every node and names none. Keys nest as rcl joins them
+    down to ``ros__parameters`` (``/**:`` then ``controller_manager:``, as
+    open_manipulator's gz_ros2_control files write it, is ``/**/controller_manager``)."""
     if not isinstance(document, dict):
         return []
-    names = []
-    for key in list(document)[:MAX_PLUGINS]:
-        text = str(key)
+    names: list[str] = []
+    for text in _node_keys(document)[:MAX_PLUGINS]:
         if "*" not in text:
-            names.append(text if text.startswith("/") else clean(namespace + text))
-            continue
-        last = text.rstrip("/").rsplit("/", 1)[-1]
-        node = clean(namespace + last)
-        if "*" not in last and pattern_matches(text, node) and node not in names:
+            node = text if text.startswith("/") else clean(namespace + text)
+        else:
+            last = text.rstrip("/").rsplit("/", 1)[-1]
+            node = clean(namespace + last)
+            if "*" in last or not pattern_matches(text, node):
+                continue
+        if node not in names:
             names.append(node)
     return names
+
+
+def _node_keys(document: dict[Any, Any], depth: int = 0,
+               path: tuple[str, ...] = ()) -> list[str]:
+    """The node keys of a parameter file as rcl joins nested keys (``a/b``), one per
+    mapping holding ``ros__parameters``; a top key with none below it is kept as it
+    is."""
+    keys: list[str] = []
+    for key, value in document.items():
+        if key == PARAMS_KEY:
+            continue
+        here = (*path, str(key))
+        below: list[str] = []
+        if isinstance(value, dict):
+            if PARAMS_KEY in value:
+                below.append("/".join(here))
+            if depth < MAX_PARAM_DEPTH:
+                below.extend(_node_keys(value, depth + 1, here))
+        keys.extend(below if below or depth else [str(key)])
+    return keys
 
 
 def _yaml_file_lines(path: str, where: Location, workspace: Workspace,
@@ -1071,7 +1101,8 @@ def _yaml_file_lines(path: str, where: Location, workspace: Workspace,
     text, found = read_text(path, workspace.location(path, 1))
     config.diagnostics.extend(found)
     try:
-        return safe_yaml.load_with_lines(text) if text is not None else None
+        return safe_yaml.load_with_lines(text, ParamFileLoader) if text is not None \
+            else None
     except yaml.YAMLError:
         config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", where,
                                             path=workspace.relpath(path),
