@@ -23,10 +23,15 @@ from ..plugins import Files, narrow
 from ..plugins.classes import (
     code_only,
     code_words,
+    declared_nodes,
     defined_in,
     derives_from,
     exported_classes,
+    free_functions,
+    header_classes,
+    header_uses,
     included_headers,
+    linked_headers,
     lookup_types,
     main_words,
     named_closure,
@@ -360,8 +365,27 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     # package calls the same (opennav_following's ParameterHandler against
     # opennav_docking's)
     own = defined_in(kept, workspace)
-    words = code_words(kept, workspace) - own
     built = frozenset().union(*(main_words(s, workspace) for s in kept))
+    handed = sources.handed_groups(target)
+    # and the words of the linked packages' headers that kept code includes: their
+    # inline code runs here (mrs_lib's param_loader.h, whose template ParamLoader holds
+    # a ParamProvider that param_provider.cpp defines: the nodelets name only ParamLoader),
+    # but not those of a header declaring a class that is a node of its own (nav2's
+    # costmap_2d_ros.hpp: what that node names is its business)
+    # (the classes those use, not the free functions a header declares: rtabmap's
+    # MsgConversion.h declares a hundred, and a node calling one names it itself; and
+    # only of a header declaring a class the code names: nav2's planner includes
+    # costmap_layer.hpp for a cast, and runs no code of CostmapLayer's base Layer)
+    linked = {*sources.packages(target), *(owner for owner, _ in handed if owner)}
+    words = code_words(kept, workspace)
+    used = set().union(*(
+        header_uses(header, workspace) for header in linked_headers(kept, linked, workspace)
+        if header_classes(header, workspace) & words
+        and all(cls in built or derives_from(cls, kept, workspace)
+                for cls in declared_nodes(header, workspace))))
+    if used - words:
+        words |= used - free_functions((s for _, group in handed for s in group), workspace)
+    words -= own
 
     def usable(group: list[str]) -> list[str]:
         return [s for s in group if s not in kept
@@ -375,7 +399,7 @@ def with_elsewhere(kept: list[str], target: Target, sources: SourceMap,
     # package, builds VehicleInfoUtils with the node)
     groups: dict[str, list[str]] = {}
     naming: dict[str, set[str]] = {}
-    for index, (owner, group) in enumerate(sources.handed_groups(target)):
+    for index, (owner, group) in enumerate(handed):
         key = owner or f"\0{index}"
         groups[key] = usable(group)
         naming[key] = set(words)

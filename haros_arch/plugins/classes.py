@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol, TypeVar
 
@@ -454,15 +454,50 @@ def _other_packages_headers(text: str, workspace: Files) -> list[str]:
     """The headers ``text`` includes as ``<pkg/...>`` from the ``include`` folder of
     another package ``pkg`` of the workspace (swri_transform_util's nodelets include
     ``<swri_nodelet/class_list_macros.h>``)."""
+    return [path for _package, path in _packages_headers(text, workspace)]
+
+
+def _packages_headers(text: str, workspace: Files) -> list[tuple[str, str]]:
+    """``_other_packages_headers``, each with the name of its package."""
     packages = getattr(workspace, "packages", None) or {}
     out = []
     for header in INCLUDE.findall(text)[:MAX_NAMED_HEADERS]:
-        package = packages.get(header.split("/", 1)[0]) if "/" in header else None
+        name = header.split("/", 1)[0] if "/" in header else ""
+        package = packages.get(name) if name else None
         candidate = None if package is None else os.path.normpath(
             os.path.join(package.root, "include", header))
         if candidate is not None and os.path.isfile(candidate) and workspace.holds(candidate):
-            out.append(candidate)
+            out.append((name, candidate))
     return out
+
+
+def linked_headers(sources: Iterable[str], packages: Collection[str],
+                   workspace: Files) -> list[str]:
+    """The headers of the workspace packages ``packages`` (those whose libraries a node
+    links) that ``sources`` include as ``<pkg/...>``, themselves or through a header of
+    their own package they include (``named_words``' depth): their inline code runs in
+    the node (mrs_lib's param_loader.h, whose template ``ParamLoader`` holds a
+    ``ParamProvider``)."""
+    out: dict[str, None] = {}
+    for source in sources:
+        for package, header in _included_elsewhere(source, workspace):
+            if package in packages:
+                out.setdefault(header)
+    return list(out)
+
+
+def _included_elsewhere(source: str, workspace: Files) -> list[tuple[str, str]]:
+    """(package, path) of each header of another workspace package that ``source``
+    includes, itself or through a header of its package it includes."""
+    def compute() -> list[tuple[str, str]]:
+        path = os.path.join(workspace.root, source)
+        found: dict[tuple[str, str], None] = {}
+        for each in (path, *included_headers(path, _text(path, workspace) or "", workspace)):
+            for pair in _packages_headers(_text(each, workspace) or "", workspace):
+                found.setdefault(pair)
+        return list(found)
+
+    return remembered("other packages' headers", source, workspace, compute)
 
 
 def export_wrappers(path: str, workspace: Files) -> dict[str, tuple[list[str], str, str]]:
@@ -789,6 +824,48 @@ def node_classes(source: str, workspace: Files) -> set[str]:
 
 _MAIN = re.compile(r"\bint\s+main\s*\([^)]*\)\s*\{")
 MAX_MAIN_BODY = 200_000  # characters of a main() body read for the classes it names
+
+
+# a class declared or defined: ``class Name;``, ``struct Name : Base {``, a nested one
+# defined out of its class (mrs_lib's ``class SubscribeHandler<MessageType>::Impl``)
+_CLASS_NAMED = re.compile(r"\b(?:class|struct)\s+(?:\w+\s+)?(?:\w+\s*(?:<[^;{}()]*?>)?\s*::\s*)*"
+                          r"([A-Za-z_]\w*)\s*(?:final\s*)?[;:{]")
+
+
+def header_uses(header: str, workspace: Files) -> frozenset[str]:
+    """The words of a header's code (and of the headers of its package it includes, as
+    ``named_words``), each text without the classes it declares itself: the classes
+    and functions its inline code and members use (param_loader.h's ``ParamProvider``
+    member of ``ParamLoader``), not those it is the header of (a node that uses a class
+    a header declares names it in its own code)."""
+    def compute() -> frozenset[str]:
+        words: set[str] = set()
+        for text in with_headers(header, workspace):
+            # (not the paths of its includes: grid_map_ros.hpp, which only includes
+            # the package's headers, uses none of the classes they are named after)
+            code = INCLUDE.sub("", code_only(text))
+            words |= set(_WORD.findall(code)) - set(_CLASS_NAMED.findall(code))
+        return frozenset(words)
+
+    return remembered("header uses", header, workspace, compute)
+
+
+def header_classes(header: str, workspace: Files) -> frozenset[str]:
+    """The classes a header (and the headers of its package it includes) declares."""
+    return remembered("header classes", header, workspace, lambda: frozenset().union(
+        *(_CLASS_NAMED.findall(code_only(text)) for text in with_headers(header, workspace))))
+
+
+def free_functions(sources: Iterable[str], workspace: Files) -> set[str]:
+    """The free functions ``sources`` define."""
+    return set().union(*(_free_functions(source, workspace) for source in sources))
+
+
+def declared_nodes(source: str, workspace: Files) -> set[str]:
+    """The classes a file (or a header of its package it includes) declares that are ROS 2
+    nodes themselves, defined where they may be (``node_classes``, as declared)."""
+    return remembered("declared nodes", source, workspace, lambda: set().union(
+        *(_NODE_CLASS.findall(text) for text in with_headers(source, workspace))))
 
 
 def main_words(source: str, workspace: Files) -> frozenset[str]:
