@@ -2208,20 +2208,11 @@ class CallFinder:
             return
         inner = self._inner_choice(arg(spec.name_arg), scope) if (
             spec.fixed_name is None) else None
-        if inner is not None:  # the same, the test's value read once per side
-            place, sides = inner
-            for truth, condition in sides:
-                scope.chosen[place] = truth
-                try:
-                    self._emit_one(given, call, args, cls, (*conditions, condition), scope,
-                                   at, at_scope)
-                finally:
-                    del scope.chosen[place]
-            return
-        inner = self._inner_choice(self._transport_given(spec, arg, args[shift:]), scope) if (
-            spec.transport is not None and spec.transport.startswith(UNKNOWN_MARK)) else None
-        if inner is not None:  # a transport chosen by a test (fiducials' ``TransportHints(
+        if inner is None and spec.transport is not None and spec.transport.startswith(
+                UNKNOWN_MARK):  # a transport chosen so (fiducials' ``TransportHints(
             # is_compressed ? "compressed" : "raw")``): one call per side, as for a name
+            inner = self._inner_choice(self._transport_given(spec, arg, args[shift:]), scope)
+        if inner is not None:  # the same, the test's value read once per side
             place, sides = inner
             for truth, condition in sides:
                 scope.chosen[place] = truth
