@@ -300,10 +300,20 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
     from .distro_guess import guessed_distro
 
     guessed = guessed_distro(project, env)
-    if guessed is not None:
+    if guessed is not None and _builds_for_ros2(workspace):
+        # (a tree of catkin packages alone is read as ROS 1: kr_autonomous_flight's
+        # README names Jazzy, and no model or rclcpp of it is ever read)
         choice.notes.append(f"ROS 2 release {guessed[0]}, {guessed[1]} (ROS_DISTRO or a "
                             "project file's distro: chooses another)")
     return choice
+
+
+def _builds_for_ros2(workspace: Workspace) -> bool:
+    """Whether a package of the workspace builds for ROS 2 (ament, in any ROS version
+    its package.xml chooses), so that a guessed ROS 2 release is worth saying."""
+    return any(package.build_type.startswith("ament") or any(
+        kind.startswith("ament") for kind in package.builds_by_version.values())
+        for package in workspace.packages.values())
 
 
 MAX_IGNORED_SAID = 5  # markers named when none of a folder's packages is read

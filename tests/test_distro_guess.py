@@ -147,6 +147,19 @@ def test_a_folder_s_notes_say_the_guess(write_tree) -> None:
     assert not any("ROS 2 release" in n for n in notes)
 
 
+def test_a_tree_of_catkin_packages_alone_is_told_no_ros2_release(write_tree) -> None:
+    # kr_autonomous_flight, ROS 1, whose README names Jazzy: the note said "ROS 2 release
+    # jazzy, guessed from its README" of a tree no ROS 2 model or rclcpp is read for
+    from haros_arch.autoproject import choose
+
+    root = write_tree({
+        "ws/src/demo/package.xml": package_xml("demo", "catkin"),
+        "ws/src/demo/launch/a.launch": "<launch><node pkg='demo' type='a' name='a'/></launch>\n",
+        "ws/src/demo/README.md": "Ported to ROS 2 Jazzy on another branch.\n"})
+    notes = choose(str(root / "ws"), environment={}).notes
+    assert not any("ROS 2 release" in n for n in notes), notes
+
+
 def test_a_fifo_among_the_files_read_is_not_opened(tmp_path) -> None:
     # a hostile tree: a FIFO named Dockerfile (or README) would block an open() forever
     (tmp_path / "ws" / "pkg").mkdir(parents=True)
