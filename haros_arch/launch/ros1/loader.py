@@ -24,7 +24,7 @@ from ...model.conditions import Condition, exclusive, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
 from ...model.location import Location
 from ...model.rosname import is_legal_name
-from ...model.values import UNKNOWN_MARK, Unknown, Value
+from ...model.values import UNKNOWN_MARK, Unknown, Value, scalar_type
 from ...workspace import Workspace
 from ..model import (
     LaunchModel,
@@ -585,10 +585,8 @@ class Ros1Loader:
         full = inner.ns + name
         location = self.where(scope, element)
         for key, value in argument_params(args):
-            kind = None if value is None else {bool: "bool", int: "int", float: "double",
-                                               str: "str"}[type(value)]
-            tags_params.add_param(self, private.ns + key, value, kind, scope.conditions,
-                                  location)
+            tags_params.add_param(self, private.ns + key, value, scalar_type(value),
+                                  scope.conditions, location)
         if name and not is_test:
             # roslaunch refuses two nodes of one name that it starts: certainly so when
             # they are under the same conditions; under conditions that cannot both
