@@ -8,10 +8,13 @@ pool's workers end instead of being left behind waiting for tasks.
 from __future__ import annotations
 
 import contextlib
+import multiprocessing
+import multiprocessing.process
 import signal
 import threading
-from collections.abc import Iterator
-from concurrent.futures import ProcessPoolExecutor
+import time
+from collections.abc import Callable, Iterator
+from concurrent.futures import Future, ProcessPoolExecutor
 from types import TracebackType
 from typing import Any
 
@@ -99,17 +102,58 @@ def stop_signals() -> Iterator[None]:
                 signal.signal(signum, previous[signum])
 
 
+# how long a stopped run waits for its workers to end after passing the stop on to
+# them (a worker ends at its next Python step, or when a call into C it is in returns:
+# a parse of one unit) before it kills those left (one whose code waits for good)
+STOP_SECONDS = 10.0
+
+
+def _unless_stopped(function: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:
+    """A worker's task: not begun once the worker was told to stop (a task the pool had
+    already queued for it would else run whole after the stop)."""
+    raise_if_stopped()
+    return function(*args, **kwargs)
+
+
+class _Pool(ProcessPoolExecutor):
+    """``worker_pool``'s: each task checks first that its worker was not stopped."""
+
+    def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> Future[Any]:
+        return super().submit(_unless_stopped, fn, *args, **kwargs)
+
+
+def _end_workers(workers: list[multiprocessing.process.BaseProcess]) -> None:
+    """Pass a stop on to the pool's workers (SIGTERM: each ends as the run does, its own
+    temporary folders removed), wait ``STOP_SECONDS`` for them, kill those left."""
+    for worker in workers:
+        if worker.is_alive():
+            worker.terminate()
+    deadline = time.monotonic() + STOP_SECONDS
+    for worker in workers:
+        worker.join(max(0.0, deadline - time.monotonic()))
+    for worker in workers:
+        if worker.is_alive():
+            worker.kill()
+            worker.join()
+
+
 @contextlib.contextmanager
 def worker_pool(workers: int | None, **options: Any) -> Iterator[ProcessPoolExecutor]:
-    """A ``ProcessPoolExecutor`` that, when the block is left by an exception (Ctrl-C,
-    SIGTERM), drops the tasks no worker has begun: a plain one runs every task
-    submitted before it lets go."""
-    with ProcessPoolExecutor(max_workers=workers, **options) as pool:
-        try:
-            yield pool
-        except BaseException:
-            pool.shutdown(cancel_futures=True)
-            raise
+    """A ``ProcessPoolExecutor`` whose workers end soon when the block is left by an
+    exception (Ctrl-C, SIGTERM, an error): the tasks not begun are dropped, the running
+    ones stopped, a worker that does not end within ``STOP_SECONDS`` killed. A plain
+    pool runs every task submitted before it lets go, and waits for good for a worker
+    that never ends."""
+    pool = _Pool(max_workers=workers, **options)
+    try:
+        yield pool
+    except BaseException:
+        # the pool's processes: its workers are this process's only children
+        children = multiprocessing.active_children()
+        pool.shutdown(wait=False, cancel_futures=True)
+        _end_workers(children)
+        raise
+    pool.shutdown(wait=True)
 
 
 class OverTime(BaseException):

@@ -109,3 +109,68 @@ def test_a_visit_of_another_thread_does_not_hold_the_main_threads_stop():
         leave.set()
         thread.join(10)
     assert raised == []
+
+
+# a run with a pool of two workers, stopped by SIGTERM to its main process alone (``kill
+# PID``) from its first task, each task a minute long; "stuck": each task blocks the
+# stop signals first, as a worker waiting for good on a lock would never see them
+STOPPED_POOL = """
+import os, signal, sys, time
+from haros_arch import processes
+
+def task(index):
+    if sys.argv[1] == "stuck":
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})
+    print("begun", index, os.getpid(), flush=True)
+    if index == 0:
+        os.kill(os.getppid(), signal.SIGTERM)
+    time.sleep(60)
+    return index
+
+with processes.stop_signals(), processes.worker_pool(2) as pool:
+    print(list(pool.map(task, range(8))))
+"""
+
+
+def _stopped_pool(kind: str) -> tuple[float, list[str]]:
+    import subprocess
+    import sys
+    import time
+
+    start = time.monotonic()
+    run = subprocess.Popen([sys.executable, "-c", STOPPED_POOL, kind], text=True,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           start_new_session=True)
+    try:
+        stdout, stderr = run.communicate(timeout=100)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)
+        stdout, stderr = run.communicate()
+        raise AssertionError(f"the stopped pool did not end: {stdout}{stderr}") from None
+    assert run.returncode == 143, stdout + stderr
+    begun = [line for line in stdout.splitlines() if line.startswith("begun")]
+    for line in begun:  # no worker left behind
+        pid = int(line.split()[2])
+        try:
+            with open(f"/proc/{pid}/stat") as status:
+                assert status.read().split(") ")[1][0] == "Z", line
+        except FileNotFoundError:
+            pass
+    return time.monotonic() - start, begun
+
+
+def test_a_stopped_pool_begins_no_queued_task_and_ends_its_running_ones():
+    """A stop of the main process alone used to wait for each running task and run
+    those the pool had queued (minutes for a stopped ``models build``); now it is
+    passed on to the workers, and a queued task is not begun."""
+    seconds, begun = _stopped_pool("plain")
+    assert len(begun) <= 2, begun
+    assert seconds < processes.STOP_SECONDS, seconds
+
+
+def test_a_stopped_pool_kills_a_worker_that_does_not_end():
+    """A worker that never sees the stop (waiting for good) is killed after
+    ``STOP_SECONDS``: a stopped run ends."""
+    seconds, begun = _stopped_pool("stuck")
+    assert len(begun) <= 2, begun
+    assert seconds < processes.STOP_SECONDS + 20, seconds
