@@ -15,7 +15,7 @@ from collections.abc import Callable
 from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from . import api
-from .call_types import factory_made, template_argument
+from .call_types import factory_made
 from .cursors import from_standin
 from .expressions import lost_class
 from .handles import qualified_name
@@ -445,7 +445,16 @@ def handle_node(callee: Cursor) -> tuple[str, Cursor, tuple[str, str]] | None:
         CursorKind.DECL_REF_EXPR) else None
     if variable is None or variable.kind != CursorKind.VAR_DECL:
         return None
-    value = initializer(variable)
+    made = node_construction(initializer(variable))
+    return None if made is None else (f"{variable.get_usr()}", *made)
+
+
+def node_construction(value: Cursor | None) -> tuple[Cursor, tuple[str, str]] | None:
+    """The node construction a variable's initialiser is (``rclcpp::Node n("x")``,
+    ``std::make_shared<rclcpp::Node>("x")``, ``rclcpp::Node::make_shared("x")``), through
+    the casts and copies around it, with its ``api.RCLCPP_NODE_NAME`` key; a factory's
+    class is the one it makes (``factory_made``), not a type among that class's own
+    template arguments."""
     for _ in range(MAX_DEPTH):
         if value is None:
             return None
@@ -454,11 +463,10 @@ def handle_node(callee: Cursor) -> tuple[str, Cursor, tuple[str, str]] | None:
         if target is not None:
             key = (qualified_name(target.semantic_parent), target.spelling)
             if key in api.FACTORIES:
-                ref = template_argument(value)
-                decl = ref.type.get_canonical().get_declaration() if ref is not None else None
+                decl = factory_made(value)
                 key = (qualified_name(decl), decl.spelling) if decl is not None else key
             if key in api.RCLCPP_NODE_NAME:
-                return f"{variable.get_usr()}", value, key
+                return value, key
         inner = [c for c in value.get_children() if c.kind.is_expression()]
         value = inner[0] if len(inner) == 1 else None
     return None

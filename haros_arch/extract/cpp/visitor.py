@@ -88,6 +88,7 @@ from .owners import (
     constructors_here,
     handle_node,
     node_arguments,
+    node_construction,
     opaque_constructor,
     options_arguments,
     owner_of,
@@ -1915,9 +1916,9 @@ class CallFinder:
             holder = self._owner
             ref = _referenced_variable(arg)
             value = initializer(ref) if ref is not None else None
-            made = _node_construction(value)
+            made = node_construction(value)
             if made is not None:
-                holder = self._local_node(made, scope) or holder
+                holder = self._local_node(made[0], scope) or holder
             pair = (holder, qualified_name(cls))
             # a method handing the node it holds on to another of its class hands the
             # class nothing new
@@ -4673,26 +4674,6 @@ def _referenced_variable(arg: Cursor) -> Cursor | None:
         expr = strip(inner[0]) if len(inner) == 1 else None
     decl = expr.referenced if expr is not None else None
     return decl if decl is not None and decl.kind == CursorKind.VAR_DECL else None
-
-
-def _node_construction(value: Cursor | None) -> Cursor | None:
-    """The node construction a variable's initialiser is (``rclcpp::Node n("x")``,
-    ``std::make_shared<rclcpp::Node>("x")``), through the casts and copies around it."""
-    for _ in range(MAX_DEPTH):
-        if value is None:
-            return None
-        value = strip(value)
-        target = value.referenced if value.kind == CursorKind.CALL_EXPR else None
-        if target is not None:
-            key = (qualified_name(target.semantic_parent), target.spelling)
-            if key in api.FACTORIES:
-                decl = factory_made(value)
-                key = (qualified_name(decl), decl.spelling) if decl is not None else key
-            if key in api.RCLCPP_NODE_NAME:
-                return value
-        inner = [c for c in value.get_children() if c.kind.is_expression()]
-        value = inner[0] if len(inner) == 1 else None
-    return None
 
 
 def _handed_to_reader(call: Cursor, arg: Cursor, owned: Callable[[str], bool]) -> bool:
