@@ -17,7 +17,9 @@ this instance gives it:
 - ``argc`` / ``argv`` of a condition in ``main`` (``Condition.program_args``) of a
   ROS 1 instance whose ``args`` are known: roslaunch starts it with its ``args`` words,
   its remappings, ``__name:=`` and ``__log:=``, and ``ros::init`` removes the ``:=``
-  words; the condition is decided only when both views of ``argv`` give one answer;
+  words; the condition is decided only when both views of ``argv`` give one answer,
+  or by the one it sees when it is tested before or after main's ``ros::init``
+  (``Condition.after_init``: republish's ``if (argc < 3)``, after it, with one word);
 - the local of ``main`` that keeps what rclcpp leaves of the arguments
   (``Condition.args_left``: ``args.size()``, ``args.at(1) == "messages"``) of an
   instance whose ``args`` are known: its words outside ``--ros-args`` sections.
@@ -385,6 +387,9 @@ def decide(condition: Condition, values: Callable[[str], object],
     uses_left = left is not None and left in names
     if (uses_argv or uses_left) and (not condition.program_args or not views):
         return None
+    if views is not None and len(views) == 2 and condition.after_init is not None:
+        # ROS 1 code tested on one side of its ``ros::init``: that side's ``argv`` alone
+        views = views[1:] if condition.after_init else views[:1]
     # Python's arguments, the same list wherever the code reads them: ``sys.argv`` as
     # the program was started (no client library takes words off it), ``rospy.myargv()``
     # what rospy leaves

@@ -108,6 +108,11 @@ class Condition:
     # of that list (``graph.build.element_calls``), decides it with that element's value
     elements: tuple[tuple[str, str, str], ...] | None = field(
         default=None, metadata={"optional": True})
+    # of a ``program_args`` condition of ROS 1 code: whether it is tested after main's
+    # ``ros::init(argc, argv, ..)`` (True: ``argc`` / ``argv`` are what it leaves, the
+    # ``:=`` words taken off), before it (False: as the program was started), or not
+    # known (None: either)
+    after_init: bool | None = field(default=None, metadata={"optional": True})
 
     def __str__(self) -> str:
         # (a ``try`` block has no text: ``try``, not ``try ()``)

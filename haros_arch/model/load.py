@@ -76,7 +76,9 @@ def conditions(data: Any) -> tuple[Condition, ...]:
                                    tuple(n for n in item.get("runs") or ()
                                          if isinstance(n, int)),
                                    _constants(item.get("constants")),
-                                   _elements(item.get("elements"))))
+                                   _elements(item.get("elements")),
+                                   after if isinstance(after := item.get("after_init"), bool)
+                                   else None))
     return tuple(found)
 
 

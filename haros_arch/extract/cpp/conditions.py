@@ -27,7 +27,7 @@ from clang.cindex import Cursor, CursorKind
 
 from ...model.conditions import Condition
 from ...model.location import Location
-from .expressions import strip
+from .expressions import ros_init, strip
 
 Branch = tuple[Cursor, tuple[Condition, ...]]
 _Rest = TypeVar("_Rest")
@@ -91,6 +91,10 @@ class ConditionReader:
         self.source = source
         self.where = where
         self.in_main = False  # the function walked is main(argc, argv)
+        # the extent (file, first and end offsets) of main's ``ros::init(argc, argv, ..)``
+        # when it is a statement of main's body: a statement before it runs before it,
+        # one after it after it (``Condition.after_init``)
+        self._init: tuple[str, int, int] | None = None
         # main's local that holds the arguments the client library leaves (``args_left``)
         self.args_left: str | None = None
         # the locals a tested expression names that hold a parameter's value, in the
@@ -435,7 +439,18 @@ class ConditionReader:
             self.elements is not None) else ()
         return Condition(text, "source", statement, self.where(node), self.in_main,
                          self.args_left if self.in_main else None, held or None,
-                         constants=constants or None, elements=elements or None)
+                         constants=constants or None, elements=elements or None,
+                         after_init=self._after_init(node) if self.in_main else None)
+
+    def _after_init(self, node: Cursor) -> bool | None:
+        """Whether main's statement ``node`` runs after main's ``ros::init`` (True),
+        before it (False), or neither is known (None: no such call in main's body)."""
+        start = node.extent.start
+        if self._init is None or start.file is None or start.file.name != self._init[0]:
+            return None
+        if start.offset >= self._init[2]:
+            return True
+        return False if node.extent.end.offset <= self._init[1] else None
 
     def choice(self, node: Cursor, statement: str, test: Cursor) -> Condition:
         """The condition of a side of the ``?:`` ``node`` whose test is ``test``: ``if``
@@ -463,8 +478,13 @@ class ConditionReader:
                   if c.kind == CursorKind.PARM_DECL]
         self.in_main = function.spelling == "main" and params[:2] == ["argc", "argv"]
         self.args_left = None
+        self._init = None
         if not self.in_main:
             return
+        call = ros_init(function)
+        start = call.extent.start if call is not None else None
+        if call is not None and start is not None and start.file is not None:
+            self._init = start.file.name, start.offset, call.extent.end.offset
         found = {node.spelling for node in function.walk_preorder()
                  if node.kind == CursorKind.VAR_DECL and any(
                      call.kind == CursorKind.CALL_EXPR and call.spelling in arguments_left
@@ -657,3 +677,4 @@ def _branches_of(one: tuple[Condition, ...], other: tuple[Condition, ...]
             b.text, b.location):
         return None
     return (*one[:differ[0]], *one[differ[0] + 1:])
+

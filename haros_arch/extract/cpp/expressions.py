@@ -161,3 +161,24 @@ def lost_class(variable: Cursor) -> Cursor | None:
         return None
     decl = ctype.get_declaration()
     return decl.get_definition() or decl
+
+
+def ros_init(main: Cursor) -> Cursor | None:
+    """The call ``ros::init(argc, argv, ...)`` of ``main``'s own two parameters written
+    as a statement of its body (roscpp's, which takes the ``:=`` words off ``argc`` and
+    ``argv``): the statements of the body before it run before it, those after it after
+    it. None when there is no such statement."""
+    params = [c for c in main.get_children() if c.kind == CursorKind.PARM_DECL]
+    body = next((c for c in main.get_children() if c.kind == CursorKind.COMPOUND_STMT), None)
+    for statement in body.get_children() if body is not None and len(params) >= 2 else ():
+        call = strip(statement)
+        target = call.referenced if call.kind == CursorKind.CALL_EXPR else None
+        parent = target.semantic_parent if target is not None else None
+        if target is None or target.spelling != "init" or parent is None or (
+                parent.kind != CursorKind.NAMESPACE or parent.spelling != "ros"):
+            continue
+        args = [strip(a).referenced for a in call.get_arguments()]
+        if len(args) >= 2 and all(a is not None and a == p for a, p in zip(
+                args[:2], params[:2], strict=True)):
+            return call
+    return None

@@ -33,6 +33,7 @@ from .expressions import (
     initializer,
     operand,
     qualified_name,
+    ros_init,
     strip,
     unresolved_operator,
     written_arguments,
@@ -1984,21 +1985,9 @@ def _from_end(index: Cursor, argc: Cursor, main: Cursor, read: Cursor,
         not isinstance(less, int) or isinstance(less, bool) or less < 1
     ):
         return None
-    body = next((c for c in main.get_children() if c.kind == CursorKind.COMPOUND_STMT), None)
-    if body is None:
-        return None
-    where = read.extent.start.offset
-    for statement in body.get_children():
-        if statement.extent.end.offset >= where:
-            return None
-        call = strip(statement)
-        target = call.referenced if call.kind == CursorKind.CALL_EXPR else None
-        parent = None if target is None else target.semantic_parent
-        if target is not None and target.spelling == "init" and parent is not None and (
-            parent.spelling == "ros" and parent.kind == CursorKind.NAMESPACE
-        ):
-            return -less
-    return None
+    init = ros_init(main)
+    return -less if init is not None and init.extent.end.offset < read.extent.start.offset \
+        else None
 
 
 def _leaves(statement: Cursor) -> bool:
