@@ -958,6 +958,11 @@ RCLCPP_SUB_NODE: dict[tuple[str, str], int] = {("rclcpp::Node", "create_sub_node
 # Calls clang could not resolve (made on an object of a class it does not know, or of
 # one an error made invalid), matched by the function's name alone: rclcpp's node
 # methods and rclcpp_action's functions in ROS 2 code, a NodeHandle's in ROS 1 code.
+# free functions called with a node of a template parameter, whose call is the row's only
+# where the name was looked up to the row's own function, not to another of that name:
+# Autoware's helper (its VehicleInfoUtils(NodeT & node) constructor template declares the
+# vehicle's parameters with it)
+UNRESOLVED_FREE: dict[str, RosFunction] = {"get_or_declare_parameter": _GET_OR_DECLARE}
 UNRESOLVED_ROS2: dict[str, RosFunction] = {
     **_RCLCPP_NODE,
     "create_server": LIBRARIES[("rclcpp_action", "create_server")],
@@ -966,6 +971,7 @@ UNRESOLVED_ROS2: dict[str, RosFunction] = {
     "declare_parameter_if_not_declared": _NAV2_DECLARE,
     "get_plugin_type_param": _NAV2_PLUGIN_TYPE,
     "declare_or_get_parameter": _NAV2_DECLARE,
+    **UNRESOLVED_FREE,
 }
 UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}

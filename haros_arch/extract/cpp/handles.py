@@ -690,9 +690,33 @@ def looked_up(call: Cursor) -> list[Cursor]:
     ``set_parameters(std::forward<Rest>(rest)...)``); none when the lookup waits for a
     template argument (``node->declare_parameter(...)`` with ``NodeT node``)."""
     heads = list(call.get_children())[:1]
-    return [d for head in heads for child in [head, *head.get_children()]
+    return [named for head in heads for child in [head, *head.get_children()]
             if child.kind == CursorKind.OVERLOADED_DECL_REF
-            for d in overloads(child) if d is not None]
+            for d in overloads(child) if d is not None for named in _through_using(d)]
+
+
+# the functions whose own ``using ns::f;`` ``_through_using`` looks for
+_USING_SCOPES = frozenset({CursorKind.FUNCTION_DECL, CursorKind.FUNCTION_TEMPLATE,
+                           CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR})
+
+
+def _through_using(decl: Cursor) -> list[Cursor]:
+    """``decl``, or, when it is the name a function's ``using ns::f;`` brings in (clang's
+    using-shadow, an unexposed declaration of that function), the declarations that
+    using-declaration names (Autoware's ``using autoware_utils_rclcpp::
+    get_or_declare_parameter;`` in VehicleInfoUtils' constructor template)."""
+    parent = decl.semantic_parent if decl.kind == CursorKind.UNEXPOSED_DECL else None
+    if parent is None or parent.kind not in _USING_SCOPES:
+        return [decl]
+    line = decl.location.line
+    for node in parent.walk_preorder():
+        if node.kind != CursorKind.USING_DECLARATION or node.location.line != line:
+            continue
+        found = [d for ref in node.get_children() if ref.kind == CursorKind.OVERLOADED_DECL_REF
+                 and ref.spelling == decl.spelling for d in overloads(ref) if d is not None]
+        if found:
+            return found
+    return [decl]
 
 
 def own_functions_only(call: Cursor) -> bool:

@@ -1305,6 +1305,10 @@ class CallFinder:
         if spec is None or (spec.kind == "action-server" and "rclcpp_action" not in
                             _callee_text(call)):
             return
+        if function in api.UNRESOLVED_FREE and not any(
+                api.ALL.get((qualified_name(d.semantic_parent), d.spelling)) is spec
+                for d in looked_up(call)):
+            return  # another function of that name, or one the lookup did not find
         if spec.standin_only:  # a dependent call of a stand-in's function (of nav2's
             # declare_parameter_if_not_declared in a template): one of the overloads its
             # name may be is the stand-in's row
