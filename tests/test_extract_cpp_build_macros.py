@@ -88,3 +88,66 @@ def test_with_the_build_s_compile_commands_the_macro_is_applied(write_tree) -> N
     assert node.completeness == "complete"
     assert ("publish", "points") in {(c.kind, c.name) for c in node.calls}
     assert not [d for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
+
+
+COMPAT = """
+#pragma once
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+extern rclcpp::Node::SharedPtr node;
+#ifdef BUILDING_ROS1
+#define DECLARE(name, value) private_nh.param(name, value, value)
+#elif defined BUILDING_ROS2
+template <typename T>
+void declare_it(const std::string & name, const T & value) {
+  node->declare_parameter(name, value);
+}
+#define DECLARE(name, value) declare_it(name, value)
+#endif
+"""
+
+WRAPPED = """
+#include "common.hpp"
+rclcpp::Node::SharedPtr node;
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  node = std::make_shared<rclcpp::Node>("driver");
+  DECLARE("frame_id", std::string("lidar"));
+  rclcpp::spin(node);
+}
+"""
+
+
+def test_calls_under_a_macro_in_a_header_of_the_package_make_the_node_partial(
+        write_tree) -> None:
+    """ros_deep_learning: its nodes call macros (ROS_DECLARE_PARAMETER) that ros_compat.h
+    defines under ``#ifdef ROS1`` / ``#elif ROS2``, the macro the CMake defines under
+    ``if(catkin_FOUND)``: neither applied, the nodes were read with no call and complete
+    (41 false warnings). The header, included through another one, is read for such
+    blocks: said there, once, and the node is partial."""
+    files = {
+        "src/drv/package.xml": package_xml("drv", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend></package>"),
+        "src/drv/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(drv)\n"
+                                  "find_package(catkin QUIET)\n"
+                                  "if(catkin_FOUND)\n  add_definitions(-DBUILDING_ROS1)\n"
+                                  "else()\n  add_definitions(-DBUILDING_ROS2)\nendif()\n"
+                                  "add_executable(driver src/driver.cpp src/other.cpp)\n",
+        "src/drv/src/driver.cpp": WRAPPED,
+        "src/drv/src/other.cpp": '#include "drv/compat.hpp"\n',
+        "src/drv/src/common.hpp": '#pragma once\n#include "drv/compat.hpp"\n',
+        "src/drv/include/drv/compat.hpp": COMPAT,
+        "src/drv/launch/drv.launch.py": LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [drv/launch/drv.launch.py]\n",
+    }
+    root = write_tree(files)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "driver")
+    assert node.completeness == "partial"
+    said = [d for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
+    assert [(d.location.file, d.location.line) for d in said] == [
+        ("drv/include/drv/compat.hpp", 10)]
+    assert "declare_parameter" in said[0].message and "BUILDING_ROS2" in said[0].message
+    rule = next(r for r in load_catalogue() if r.id == "parameter-set-not-read")
+    assert [f.rule for f in run_rule(rule, model)] == ["parameter-set-not-read-undecided"]

@@ -403,3 +403,44 @@ def test_the_default_pipelines_of_the_distribution_when_not_in_the_workspace(
     model, _ = run(write_tree, MOVE_GROUP, env={"ROS_DISTRO": "humble"})
     params = params_of(model, "move_group")
     assert params["planning_pipelines"] == ["ompl", "pilz_industrial_motion_planner", "chomp"]
+
+
+def test_a_builder_not_known_statically_is_said_once_not_at_each_chained_call(
+        write_tree) -> None:
+    """abb_ros2's abb_moveit.launch.py: ``MoveItConfigsBuilder(.., package_name=
+    arg.perform(context))`` of an argument without a value, then eight chained calls
+    and ``.to_dict()`` given to two nodes: every second call of the chain and each
+    node's parameters were said again (6 warnings more)."""
+    model, _ = run(write_tree, """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from moveit_configs_utils import MoveItConfigsBuilder
+
+def setup(context):
+    package = LaunchConfiguration("moveit_config_package")
+    config = (MoveItConfigsBuilder("arm", package_name=package.perform(context))
+              .robot_description(file_path="urdf/arm.urdf.xacro")
+              .robot_description_semantic(file_path="config/arm.srdf")
+              .planning_pipelines()
+              .robot_description_kinematics(file_path="config/kinematics.yaml")
+              .planning_scene_monitor(publish_planning_scene=True)
+              .to_moveit_configs())
+    return [
+        Node(package="moveit_ros_move_group", executable="move_group",
+             parameters=[config.to_dict()]),
+        Node(package="rviz2", executable="rviz2", parameters=[config.to_dict()]),
+    ]
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument("moveit_config_package"),
+                              OpaqueFunction(function=setup)])
+""")
+    said = [(d.location.line, d.message) for d in model.diagnostics
+            if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert len(said) == 1 and said[0][0] == 9
+    assert "MoveItConfigsBuilder" in said[0][1]
+    # not known, not empty: each node's parameters are unknown, from that call
+    for executable in ("move_group", "rviz2"):
+        assert "?" in params_of(model, executable)

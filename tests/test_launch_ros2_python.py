@@ -694,3 +694,35 @@ def generate_launch_description():
     # a text that is no expression of the subset (a call of __import__) stays unknown
     assert "/odd/v" not in params or params["/odd/v"] is None
     assert "LAUNCH_PY_UNSUPPORTED" in codes(model)
+
+
+def test_fields_set_on_an_object_not_interpreted_are_not_said_again(write_tree):
+    """crane_x7's launch files: ``loader = RobotDescriptionLoader()`` of a package not in
+    the workspace (said there), then ``loader.port_name = '/dev/ttyUSB0'`` and four more
+    fields, each said "assignment to this target is not interpreted"; its ``.load()``
+    stays unknown where it is used."""
+    model, _ = run(write_tree, """
+from robot_description_loader import RobotDescriptionLoader
+
+def generate_launch_description():
+    loader = RobotDescriptionLoader()
+    loader.port_name = '/dev/ttyUSB0'
+    loader.baudrate = '3000000'
+    return LaunchDescription([
+        Node(package='robot_state_publisher', executable='robot_state_publisher',
+             parameters=[{'robot_description': loader.load()}]),
+    ])
+""")
+    said = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert len(said) == 1 and "RobotDescriptionLoader" in said[0]
+    [param] = [p for p in model.params if p.name.endswith("/robot_description")]
+    assert param.value is None  # not known
+    # a field of a value known to be no object is still said
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    name = 'text'
+    name.field = 1
+    return LaunchDescription([])
+""")
+    assert [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"] == [
+        "assignment to this target is not interpreted"]

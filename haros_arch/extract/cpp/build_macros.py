@@ -252,25 +252,82 @@ def _skipped(source: str, text: str, macros: frozenset[str], valued: frozenset[s
 
 def build_macro_calls(sources: list[str], macros: dict[str, tuple[str, int]],
                       workspace: Workspace) -> list[Diagnostic]:
-    """``CPP_BUILD_MACRO`` at the first ROS call of each block of the node's sources that
-    only one of ``macros`` (its package's CMake files', ``cmake_macros``) turns on, unless
-    the CMake reading decides that macro for the source (given to its parse, or defined
-    for other targets only: ``_cmake_macros``), and of each block whose condition tests
-    the value of a macro given with its value unknown."""
+    """``CPP_BUILD_MACRO`` at the first ROS call of each block of the node's sources, and
+    of the headers of their package they include (``package_headers``), that only one of
+    ``macros`` (its package's CMake files', ``cmake_macros``) turns on, unless the CMake
+    reading decides that macro for the source (given to its parse, or defined for other
+    targets only: ``_cmake_macros``), and of each block whose condition tests the value
+    of a macro given with its value unknown. A header's block is said once for the
+    node."""
     found: list[Diagnostic] = []
+    done: set[tuple[str, int]] = set()
     for source in sources:
         _, settled, valued = _cmake_macros(source, workspace)
         left = {name: where for name, where in macros.items() if name not in settled}
         if not left and not valued:
             continue
-        text, _ = read_text(source, workspace.location(source))
-        if not text:
-            continue
-        for line, macro, call in _skipped(source, text, frozenset(left), frozenset(valued),
-                                          workspace):
-            where, at = left.get(macro) or valued[macro]
-            named = macro if macro in left else f"{macro} (its value not known)"
-            found.append(diag.make(
-                "CPP_BUILD_MACRO", workspace.location(source, line), macro=named,
-                text=call.strip()[:80], cmake=f"{workspace.relpath(where)}:{at}"))
+        for path in [source, *package_headers(source, workspace)]:
+            text, _ = read_text(path, workspace.location(path))
+            if not text:
+                continue
+            for line, macro, call in _skipped(path, text, frozenset(left),
+                                              frozenset(valued), workspace):
+                if (path, line) in done:
+                    continue
+                done.add((path, line))
+                where, at = left.get(macro) or valued[macro]
+                named = macro if macro in left else f"{macro} (its value not known)"
+                found.append(diag.make(
+                    "CPP_BUILD_MACRO", workspace.location(path, line), macro=named,
+                    text=call.strip()[:80], cmake=f"{workspace.relpath(where)}:{at}"))
+    return found
+
+
+MAX_HEADERS = 64  # the headers of its package one source includes, followed
+
+
+def package_headers(source: str, workspace: Workspace) -> list[str]:
+    """The headers of ``source``'s package that it includes, directly or through one
+    another (at most ``MAX_HEADERS``): each ``#include`` found beside the file that
+    writes it or in the package's ``include`` folder. ros_deep_learning's nodes choose
+    their ROS calls in ros_compat.h (``#ifdef ROS1`` / ``#elif ROS2`` around the macros
+    they call, ``ROS_DECLARE_PARAMETER``, ``ROS_CREATE_PUBLISHER``), where the CMake
+    defines ROS1 or ROS2 under ``if(catkin_FOUND)``, not decided: the nodes were read
+    with no call and complete (34 "set but never read" and 7 "remap that changes no
+    name" warnings)."""
+    package = workspace.package_of(source)
+    if package is None or not package.root:
+        return []
+    key = (source, package.root)
+    if key not in _HEADERS:
+        if len(_HEADERS) > 512:
+            _HEADERS.clear()
+        _HEADERS[key] = tuple(_follow(source, package.root, workspace))
+    return list(_HEADERS[key])
+
+
+_HEADERS: dict[tuple[str, str], tuple[str, ...]] = {}
+
+
+def _follow(source: str, root: str, workspace: Workspace) -> list[str]:
+    inside = os.path.join(os.path.abspath(root), "")
+    found: list[str] = []
+    seen = {os.path.abspath(source)}
+    queue = [os.path.abspath(source)]
+    while queue and len(found) < MAX_HEADERS:
+        current = queue.pop(0)
+        text, _ = read_text(current, workspace.location(current))
+        for line in (text or "").splitlines():
+            written = _INCLUDE.match(line)
+            if written is None:
+                continue
+            for folder in (os.path.dirname(current), os.path.join(root, "include")):
+                path = os.path.normpath(os.path.join(folder, written.group(1)))
+                if path.startswith(inside) and path not in seen and os.path.isfile(path):
+                    seen.add(path)
+                    found.append(path)
+                    queue.append(path)
+                    break
+            if len(found) >= MAX_HEADERS:
+                break
     return found

@@ -819,6 +819,13 @@ class Interpreter(Expressions):
                 target.attr in owner.attributes):
             # moveit_config.robot_description = {...}: a field of its (slotted) dataclass
             owner.attributes[target.attr] = value
+        elif isinstance(target, ast.Attribute) and isinstance(owner, Unknown) and (
+                owner.kind == "unsupported"):
+            # a field of an object made by a construct said not interpreted where it was
+            # made: it stays unknown, said there once (crane_x7's launch files set five
+            # fields of a RobotDescriptionLoader of a package not in the workspace, each
+            # said again)
+            pass
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
 

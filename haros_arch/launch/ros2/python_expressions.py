@@ -47,6 +47,7 @@ from .python_values import (
     _text_of,
     concat,
     conjunction,
+    derived,
     is_lazy,
     is_stringy,
     launch_object,
@@ -659,7 +660,7 @@ class _Bound:
                 and self.owner.kind == "unsupported":
             # a method of a value whose construct was said not interpreted where it was
             # made (``c = LocalClass()`` then ``c.add(...)`` 30 times): said there, once
-            return Unknown(f"method .{self.attr}() of a value not known statically")
+            return derived(self.owner, f"method .{self.attr}() of a value not known statically")
         if handler is None:
             return interp.unsupported(node, f"method .{self.attr}() is not interpreted")
         return handler(interp, self.owner, args, kwargs, node)

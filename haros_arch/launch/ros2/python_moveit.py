@@ -60,7 +60,7 @@ from .python_methods import (
     arg,
     xacro_command,
 )
-from .python_values import LaunchDescription, Lazy, Record, to_text
+from .python_values import LaunchDescription, Lazy, Record, derived, to_text
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -496,7 +496,7 @@ def _other(i: Interpreter, owner: Any, name: str, n: ast.AST) -> Unknown:
     """A method of these names on another value: not interpreted, as any method not
     listed (said once: not again for a value already said unknown where it was made)."""
     if isinstance(owner, Unknown) and owner.kind == "unsupported":
-        return Unknown(f"method .{name}() of a value not known statically")
+        return derived(owner, f"method .{name}() of a value not known statically")
     return i.unsupported(n, f"method .{name}() is not interpreted")
 
 

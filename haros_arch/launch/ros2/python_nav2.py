@@ -18,7 +18,7 @@ from ... import safe_yaml
 from ...model.values import Unknown
 from . import entities as e
 from .python_methods import Args, Builder, Kwargs, Method, arg, cond, text_or_none
-from .python_values import to_text
+from .python_values import derived, to_text
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -86,7 +86,7 @@ def m_value(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     read as YAML with the fields it omits at 0.0; ``{}`` when the argument is not given."""
     if not isinstance(owner, MultiRobotPoses):
         if isinstance(owner, Unknown) and owner.kind == "unsupported":  # said where made
-            return Unknown("method .value() of a value not known statically")
+            return derived(owner, "method .value() of a value not known statically")
         return i.unsupported(n, "method .value() is not interpreted")
     poses: dict[str, Any] = {}
     for entry in owner.text.split(";") if owner.text else []:

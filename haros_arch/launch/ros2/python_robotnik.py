@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...model.values import Unknown
 from .python_methods import Args, Builder, Kwargs, Method, arg
-from .python_values import LaunchDescription
+from .python_values import LaunchDescription, derived
 
 if TYPE_CHECKING:
     from .python import Interpreter
@@ -116,5 +116,5 @@ def _other(i: Interpreter, owner: Any, name: str, n: ast.AST) -> Unknown:
     ``ArgumentContainer.add_arg``, its module not in the workspace): not interpreted,
     said once, not again on a value already said unknown where it was made."""
     if isinstance(owner, Unknown) and owner.kind == "unsupported":
-        return Unknown(f"method .{name}() of a value not known statically")
+        return derived(owner, f"method .{name}() of a value not known statically")
     return i.unsupported(n, f"method .{name}() is not interpreted")

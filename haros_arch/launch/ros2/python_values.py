@@ -115,6 +115,19 @@ def _loose(text: str) -> bool:
         node, (ast.IfExp, ast.Lambda, ast.NamedExpr))
 
 
+def derived(owner: Unknown, origin: str) -> Unknown:
+    """The result of a method not interpreted of the unknown ``owner``: of one made by a
+    construct said not interpreted where it was made, of that kind and place too, so
+    that nothing made of it says so again: the calls chained on a
+    ``MoveItConfigsBuilder`` of a package not known statically were said at every
+    second one (the result of a method of a said value was a plain unknown, and a method
+    of that was said), and the ``.to_dict()`` of its configs given as a node's
+    parameters once more at each node."""
+    if owner.kind == "unsupported":
+        return Unknown(origin, "unsupported", where=owner.where)
+    return Unknown(origin)
+
+
 @dataclass(frozen=True)
 class InstalledPackages(Unknown):
     """ament_index_python's ``get_packages_with_prefixes()``: every package installed
