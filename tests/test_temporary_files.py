@@ -64,7 +64,7 @@ def _stopped_run(tmp_path, jobs: str) -> None:
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
         start_new_session=True)
     try:
-        stdout, stderr = run.communicate(timeout=120)
+        stdout, stderr = run.communicate(timeout=300)  # a loaded machine is slow
     except subprocess.TimeoutExpired:
         os.killpg(run.pid, signal.SIGKILL)
         stdout, stderr = run.communicate()
