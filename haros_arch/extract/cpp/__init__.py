@@ -1203,7 +1203,7 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
                     scoped.setdefault(word, set()).update(within[word] & reached)
         words = anywhere | set(scoped)
         starts = {f for f in functions - reached
-                  if "*" in words or _named(f, words, classes)}
+                  if "*" in words or _named(f, words, classes, scoped)}
     scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
     return (reached, words, {made for targets in edges.values() for made in targets} | hosted,
             named, scoped, exported)
@@ -1231,16 +1231,25 @@ def _registered(units: list[tuple[str, CppResult]], entry: str | None
     return [*classes, *(pair for pair in pairs if pair[0] != pair[1])] if classes else []
 
 
-def _named(function: str, words: Collection[str], classes: Collection[str]) -> bool:
+def _named(function: str, words: Collection[str], classes: Collection[str],
+           scoped: dict[str, set[str]] | None = None) -> bool:
     """Whether code that may hide a call (``words``) can call ``function``: its own name
     is one of them, and for a static method (``ns::C::m()``, of a class the executable's
-    files define) its class's too, as C++ calls one from outside its class
-    (``C::make_shared(...)``): ``std::make_shared`` near an error calls no
-    ``ActionExecutorClient::make_shared`` (plansys2's compute_bt)."""
-    if _simple(function) not in words:
+    files define: one it constructs or calls, or whose static methods a unit defines)
+    its class's too, as C++ calls one from outside its class (``C::make_shared(...)``):
+    ``std::make_shared`` near an error calls no ``ActionExecutorClient::make_shared``
+    (plansys2's compute_bt), the word ``load`` of an opaque constructor's class no
+    ``LaneletLoader::load`` (scenario_simulator_v2's preprocessor); unless the name is
+    written only in code of that class (``scoped``: the owners holding it), which calls
+    it bare."""
+    own = _simple(function)
+    if own not in words:
         return False
     scope = function.removesuffix("()").rpartition("::")[0]
-    return scope not in classes or scope.rpartition("::")[2] in words
+    if scope not in classes or scope.rpartition("::")[2] in words:
+        return True
+    holders = (scoped or {}).get(own, set())
+    return any(h == scope or h.startswith(scope + "::") for h in holders)
 
 
 def _simple(function: str) -> str:

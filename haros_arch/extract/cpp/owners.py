@@ -47,6 +47,17 @@ def owner_of(function: Cursor) -> str:
     return f"{scope}::{function.spelling}()" if scope else f"{function.spelling}()"
 
 
+def static_class(function: Cursor) -> list[str]:
+    """The class of a static method (``[ns::C]`` for ``ns::C::m()``, whose owner is the
+    function itself: ``owner_of``); none for any other function."""
+    parent = function.semantic_parent
+    if parent is not None and parent.kind in _CLASSES and function.kind in (
+            CursorKind.CXX_METHOD, CursorKind.FUNCTION_TEMPLATE) and (
+            function.is_static_method()):
+        return [qualified_name(parent)]
+    return []
+
+
 def constructed_class(call: Cursor, owned: Callable[[str], bool]) -> str | None:
     """The class of the workspace a call constructs (``T(...)``, ``new T(...)``,
     ``std::make_shared<T>(...)``), by its qualified name."""

@@ -69,6 +69,14 @@ _FREE_DEFINITION = re.compile(
 # going on from the line before)
 _INSTANTIATION = re.compile(
     r"^\s*(?:extern\s+)?template\s+(?:(?:class|struct)\b|[\w:<>,*&]+\s+[*&]*\s*[\w:~]+)")
+# a line that declares or defines an explicit specialisation of a member template, its
+# ``template <>`` on the line before (mrs_lib's param_loader.h: ``ros::Duration
+# ParamLoader::loadParam2<ros::Duration>(const std::string& name);``): a return type, the
+# qualified name, its template arguments and the parameter list; no statement keyword
+# (``return ParamLoader::loadParam2<double>(name);`` is a call)
+_SPECIALISATION = re.compile(
+    r"^\s*(?:(?!(?:return|throw|else|case|co_return|co_yield|co_await|new|delete|goto|do)"
+    r"\b)[\w:<>,*&]+\s+)+[*&]*\s*(?:\w+::)+\w+\s*<[^;{}()]*>\s*\(")
 
 
 @dataclass(frozen=True)
@@ -183,7 +191,7 @@ def _code_lines(text: str) -> tuple[tuple[int, str, str, int | None], ...]:
         # service")`` names a wrapper of the unit
         code = _masked(shown)
         if code.lstrip().startswith("#") or _DEFINITION.match(code) or (
-                _INSTANTIATION.match(code)):
+                _INSTANTIATION.match(code)) or _SPECIALISATION.match(code):
             continue
         declared = _FREE_DEFINITION.match(code)
         found.append((number, shown, code,

@@ -94,6 +94,7 @@ from .owners import (
     owner_of,
     registered_alias,
     registered_class,
+    static_class,
     unseen_construction,
 )
 from .qos import qos as qos_of
@@ -589,11 +590,16 @@ class CallFinder:
         # the owners the unit's code defines, not a workspace header's: a header's
         # function is every including unit's, and runs in none of them by being reached
         # in another (a stand-in's macro, gtest's TEST, defines the unit's own)
+        # (and the class of each static method it defines: C++ calls one by its bare name
+        # only in its class, so code elsewhere that writes the name alone calls no such
+        # method, ``_reached``'s ``_named``: scenario_simulator_v2's
+        # ``LaneletLoader::load`` is not called by a word ``load`` beside an error)
         main = self.tu.spelling
         self.defines = list(dict.fromkeys(
-            owner_of(f) for f in self.functions
+            owner for f in self.functions
             if (where := f.location.file) is None or where.name == main
-            or not self.owned(where.name)))
+            or not self.owned(where.name)
+            for owner in (owner_of(f), *static_class(f))))
         self.wrappers.preorder.clear()
         self.wrappers.references.clear()
         for call in self.calls:  # get_parameter("p") of a declare_parameter("p", default)
