@@ -389,3 +389,47 @@ def test_a_qt_string_list_built_with_the_stream_operator_makes_no_error(write_tr
     errors = [d.message for d in result.diagnostics
               if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
     assert errors == []
+
+
+QT_WINDOW = """#include <QtGui>
+#include <QMainWindow>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+
+class MainWindow : public QMainWindow {
+public:
+  MainWindow() {
+    QObject::connect(this, SIGNAL(destroyed()), qApp, SLOT(quit()));
+    client_ = nh_.serviceClient<std_srvs::Trigger>("solve");
+  }
+  ros::NodeHandle nh_;
+  ros::ServiceClient client_;
+};
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "gui");
+  QApplication app(argc, argv);
+  MainWindow window;
+  return app.exec();
+}
+"""
+
+
+def test_qt_s_application_macro_makes_no_error(write_tree) -> None:
+    """industrial_calibration's ical_gui connects its About action to ``qApp`` (Qt's
+    macro for the application object, qapplication.h) in the window constructor that
+    makes its service clients (icalgui_main_window.cpp:56): without the macro in the Qt
+    stand-in, an error in a function that calls the ROS API, and the node was partial."""
+    root = write_tree({
+        "gui/package.xml": package_xml("gui", "catkin"),
+        "gui/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(gui)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp std_srvs)\n"
+            "catkin_package()\nadd_executable(gui src/gui.cpp)\n"),
+        "gui/src/gui.cpp": QT_WINDOW})
+    result = extract_cpp([str(root / "gui" / "src" / "gui.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert {(c.kind, c.name) for c in result.calls} == {("client", "solve")}
+    errors = [d.message for d in result.diagnostics
+              if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    assert errors == []

@@ -641,3 +641,28 @@ def test_an_int_read_as_a_double_is_a_mismatch_only_in_ros_2():
     (found,) = run_rule(RULES["parameter-type-mismatch"], configuration(doc))
     assert found.entities[0] == "parameter:/two/timeout"
     assert found.message == "/two/timeout is set as int (86400) but /two reads it as double"
+
+
+def test_a_shape_shifter_carries_any_type():
+    """topic_tools' ShapeShifter is roscpp's any-message (md5sum ``*``): a subscriber of
+    it connects to a publisher of any type, and a publisher of it (topic_tools' relay,
+    ``ShapeShifter::advertise``) publishes the type it received. imu_transformer's
+    nodelet subscribes to ``imu_in/mag`` as a ShapeShifter and instantiates a
+    MagneticField or a Vector3Stamped: a MagneticField publisher there was an error
+    'publishes /imu_in/mag as sensor_msgs/MagneticField but ... subscribes to it as
+    topic_tools/ShapeShifter'. Two known types that differ are still one."""
+    rule = RULES["topic-type-mismatch"]
+    for shifter in ("subscribe", "publish"):
+        other = "publish" if shifter == "subscribe" else "subscribe"
+        model = configuration({"links": [
+            {"kind": shifter, "node": "/a", "name": "/t", "type": "topic_tools/ShapeShifter",
+             "location": {"file": "a/a.cpp", "line": 1}},
+            {"kind": other, "node": "/b", "name": "/t", "type": "sensor_msgs/MagneticField",
+             "location": {"file": "b/b.py", "line": 2}}]})
+        assert run_catalogue(model, None, [rule]) == []
+    model = configuration({"links": [
+        {"kind": "publish", "node": "/a", "name": "/t", "type": "geometry_msgs/Vector3Stamped",
+         "location": {"file": "a/a.cpp", "line": 1}},
+        {"kind": "subscribe", "node": "/b", "name": "/t", "type": "sensor_msgs/MagneticField",
+         "location": {"file": "b/b.py", "line": 2}}]})
+    assert [f.rule for f in run_catalogue(model, None, [rule])] == ["topic-type-mismatch"]

@@ -175,6 +175,14 @@ def _project(it: Interpreter, command: Invocation, args: list[str]) -> None:
     it.set("CATKIN_PACKAGE_BIN_DESTINATION", f"lib/{name}")
     it.set("CATKIN_PACKAGE_SHARE_DESTINATION", f"share/{name}")
     it.set("CATKIN_GLOBAL_BIN_DESTINATION", "bin")
+    it.set("CATKIN_GLOBAL_INCLUDE_DESTINATION", "include")
+    it.set("CATKIN_PACKAGE_INCLUDE_DESTINATION", f"include/{name}")
+    # catkin's devel space, in the build folder (its all.cmake's default,
+    # ``${CMAKE_BINARY_DIR}/devel``): what a custom command writes there is generated
+    # (cpr_multimaster_tools' message_relay builds its processors from sources it
+    # writes to ``${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}``)
+    if it.get("CATKIN_DEVEL_PREFIX") is None:
+        it.set("CATKIN_DEVEL_PREFIX", (it.get("CMAKE_BINARY_DIR") or "") + "/devel")
 
 
 @handles("get_filename_component")

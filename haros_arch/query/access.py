@@ -124,12 +124,19 @@ def _wire_type(link: Any) -> str | None:
     return wire_key(link.type)
 
 
+# roscpp's any-message (md5sum ``*``): a subscriber of it connects to a publisher of any
+# type, a publisher of it (topic_tools' relay) sends the type it received
+_ANY_TYPES = frozenset({"topic_tools/ShapeShifter"})
+
+
 def _known_type(link: Any) -> str | None:
-    """The type when it is known statically: None for no type and for one with the
+    """The type when it is known statically: None for no type, for one with the
     unknown mark (a call the parse could not resolve is typed ``?``), which the type
-    checks must not compare as if it were a type."""
+    checks must not compare as if it were a type, and for topic_tools' ShapeShifter,
+    which stands for any type."""
     found = link.type
-    return found if isinstance(found, str) and found and UNKNOWN_MARK not in found else None
+    return found if isinstance(found, str) and found and UNKNOWN_MARK not in found and (
+        found not in _ANY_TYPES) else None
 
 
 def _modelled(instance: NodeInstance) -> bool:

@@ -963,7 +963,8 @@ class IncludeSetup:
         generated header: a capitalised name, or one in lowercase that the package (or
         the catalogue) defines and no real file of that name is (ROS 1 allows message
         names in lowercase: LIO-SAM's ``msg/cloud_info.msg`` and ``srv/save_map.srv``
-        generate ``<lio_sam/cloud_info.h>`` and ``<lio_sam/save_map.h>``)."""
+        generate ``<lio_sam/cloud_info.h>`` and ``<lio_sam/save_map.h>``), or a part of
+        an action the package's ``action/`` folder defines."""
         found = _MESSAGE_HEADER.fullmatch(header)
         if found is not None and (
             # no ROS package is named so (REP 144: lowercase letters, digits and
@@ -984,7 +985,10 @@ class IncludeSetup:
         if found is None or found.group(2).endswith("Config") or (
                 self._resolve(header) is not None):
             return None
-        return found if self._definition(found.group(1), found.group(2)) else None
+        # a lowercase action's parts too (industrial_calibration's
+        # ``action/manual_trigger.action`` makes <pkg/manual_triggerAction.h>, ...Goal.h)
+        return found if self._definition(found.group(1), found.group(2)) or (
+            self._action_file(found.group(1), found.group(2))) else None
 
     def _message(self, header: str, package: str, name: str, where: Location) -> bool:
         """Synthesise a message / service header when that is what ``header`` is."""

@@ -312,4 +312,6 @@ public:
   static QCoreApplication* instance();
 };
 class QApplication : public QCoreApplication { public: QApplication(int& argc, char** argv); };
+// the application object, as qapplication.h defines it (connect(..., qApp, SLOT(aboutQt())))
+#define qApp (static_cast<QApplication*>(QCoreApplication::instance()))
 #endif
