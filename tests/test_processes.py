@@ -122,9 +122,9 @@ from haros_arch import processes
 def task(index):
     if sys.argv[1] == "stuck":
         signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})
-    print("begun", index, flush=True)
+    os.write(1, f"begun {index}\\n".encode())  # one write: whole lines, never mixed
     if index == 0:
-        print("stop", time.time(), flush=True)
+        os.write(1, f"stop {time.time()}\\n".encode())
         os.kill(os.getppid(), signal.SIGTERM)
     time.sleep(60)
     return index
@@ -133,7 +133,7 @@ try:
     with processes.stop_signals(), processes.worker_pool(2) as pool:
         print(list(pool.map(task, range(8))))
 finally:
-    print("end", time.time(), flush=True)
+    os.write(1, f"end {time.time()}\\n".encode())
 """
 
 
