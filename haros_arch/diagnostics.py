@@ -545,6 +545,16 @@ CATALOGUE: dict[str, Entry] = {
         "does not start. launch_ros promotes such a list to doubles only in a launch "
         "file's own dictionaries. clearpath_sensors' microstrain_imu.yaml (a0f07cfb^) "
         "wrote imu_orientation_cov: [0.01, 0, 0, ...]."),
+    "LAUNCH_PARAMS_SET": Entry(
+        "warning", "parameters holds the set {text}, not a dictionary: launch_ros takes "
+        "it for a parameter file's path, which is no file, and the node gets none of it",
+        "A Python launch file writes an item of a node's parameters as {\"name\", "
+        "value} (a set, a comma where the dictionary {\"name\": value} has a colon). "
+        "launch_ros takes an item that is no mapping for the path of a parameter file, "
+        "made of the set's items in an order Python does not fix; no such file exists, "
+        "so it warns \"Parameter file path is not a file\" and the node starts without "
+        "those parameters. yolo_ros' yolov8_3d.launch.py (7d3292d^) gave detect_3d_node "
+        "its maximum_detection_threshold so."),
     "LAUNCH_SUBST_UNCLOSED": Entry(
         "warning", "the substitution \"{text}\" is never closed: roslaunch keeps it as "
         "plain text",

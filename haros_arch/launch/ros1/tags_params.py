@@ -21,7 +21,16 @@ from ...model.location import Location
 from ...model.values import Value
 from ..model import ParamDecl
 from ..partial_yaml import MARK, marked_text, unknown_parts
-from .params import Binary, ParamError, convert_value, flatten, join, load_yaml, type_name
+from .params import (
+    Binary,
+    ParamError,
+    RosparamLoader,
+    convert_value,
+    flatten,
+    join,
+    load_yaml,
+    type_name,
+)
 from .scope import PrivateParam, Scope, canonical
 
 if TYPE_CHECKING:
@@ -232,10 +241,12 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
 
 
 def _key_lines(text: str) -> Any:
-    """Where each key of a parameter file is written (``safe_yaml.load_with_lines``);
-    None when the file cannot be read so (its diagnostic is the load's)."""
+    """Where each key of a parameter file is written (``safe_yaml.load_with_lines``, with
+    the loader the values are read with: rosparam's ``!degrees`` / ``!radians`` tags, which
+    pmb2_2dnav's amcl.yaml writes); None when the file cannot be read so (its diagnostic
+    is the load's)."""
     try:
-        return safe_yaml.load_with_lines(text)[1]
+        return safe_yaml.load_with_lines(text, RosparamLoader)[1]
     except (yaml.YAMLError, ValueError, RecursionError):
         return None
 

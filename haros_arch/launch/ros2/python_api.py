@@ -485,7 +485,18 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
     if not isinstance(value, (list, tuple)):
         i.unsupported(n, "node parameters not known statically")
         return [e.UnknownParams("node parameters not known statically", i.where(n))]
-    for item in value:
+    written = _keyword_items(n, "parameters", len(value))
+    for item, display in zip(value, written, strict=True):
+        if isinstance(display, ast.Set) and len(display.elts) > 1:
+            # ``{"name", value}``: a set, not the dictionary ``{"name": value}``. launch_ros
+            # takes what is no mapping for a parameter file's path (its items joined, in
+            # an order Python does not fix) and, finding no such file, warns and passes
+            # nothing: the node gets none of them (yolo_ros 7d3292d^'s detect_3d_node).
+            # A set of one item is that item's path (neuronbot2's slam_toolbox_launch.py
+            # writes ``{share + '/config/slam_toolbox_params.yaml'}``), read as one
+            i.diagnostics.append(diag.make("LAUNCH_PARAMS_SET", i.where(display),
+                                           text=_source(display)))
+            continue
         if isinstance(item, dict):
             for key, val in item.items():
                 out.append((to_text(key), param_value(val)))
@@ -534,9 +545,35 @@ def remappings(i: Interpreter, value: Any, n: ast.AST) -> list[tuple[e.Text, e.T
     for pair in value:
         if isinstance(pair, (list, tuple)) and len(pair) == 2:
             out.append((to_text(pair[0]), to_text(pair[1])))
+        elif isinstance(pair, str):
+            # ``remappings=['from', 'to']``: launch_ros' normalize_remap_rule takes each
+            # item for a (from, to) tuple and raises TypeError for text, so the launch
+            # file does not load (f1tenth_system 7c5bc1b^'s ackermann_mux)
+            i.diagnostics.append(diag.make(
+                "LAUNCH_BAD_VALUE", i.where(n),
+                detail=f"remappings holds the text {pair!r}, not a (from, to) tuple: "
+                       "launch_ros refuses it (TypeError) and the launch file does not "
+                       "load"))
         else:
             i.unsupported(n, "a remapping not known statically")
     return out
+
+
+def _keyword_items(n: ast.AST, keyword: str, count: int) -> list[ast.AST | None]:
+    """The written items of a call's ``keyword=[...]`` display, one per item of its value
+    (None each where the value is not written so, or its items are not as many)."""
+    if isinstance(n, ast.Call):
+        for word in n.keywords:
+            if word.arg == keyword and isinstance(word.value, (ast.List, ast.Tuple)) and (
+                    len(word.value.elts) == count) and not any(
+                    isinstance(elt, ast.Starred) for elt in word.value.elts):
+                return list(word.value.elts)
+    return [None] * count
+
+
+def _source(node: ast.AST) -> str:
+    text = ast.unparse(node)
+    return text if len(text) <= 120 else text[:117] + "..."
 
 
 def words(value: Any) -> list[e.Text]:
