@@ -10,6 +10,7 @@ from __future__ import annotations
 import contextlib
 import multiprocessing
 import multiprocessing.process
+import os
 import signal
 import threading
 import time
@@ -48,6 +49,16 @@ class _Held:
 
 
 held_signals = _Held()
+
+
+def _forked() -> None:
+    """A forked process (a pool's worker, forked by a submission, which holds the stop)
+    starts with no stop held nor asked for: its own come as they come."""
+    held_signals.depth = 0
+    held_signals.requested = None
+
+
+os.register_at_fork(after_in_child=_forked)
 
 
 def raise_if_stopped() -> None:
@@ -116,10 +127,14 @@ def _unless_stopped(function: Callable[..., Any], *args: Any, **kwargs: Any) -> 
 
 
 class _Pool(ProcessPoolExecutor):
-    """``worker_pool``'s: each task checks first that its worker was not stopped."""
+    """``worker_pool``'s: each task checks first that its worker was not stopped. A stop
+    that comes while a task is submitted waits for the submission's end (``held_signals``):
+    raised inside it, in the lock of a thread the pool starts (its first submission),
+    it left that lock released twice, a RuntimeError in place of the stop."""
 
     def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> Future[Any]:
-        return super().submit(_unless_stopped, fn, *args, **kwargs)
+        with held_signals:
+            return super().submit(_unless_stopped, fn, *args, **kwargs)
 
 
 def _end_workers(workers: list[multiprocessing.process.BaseProcess]) -> None:

@@ -124,6 +124,7 @@ def task(index):
         signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})
     os.write(1, f"begun {index}\\n".encode())  # one write: whole lines, never mixed
     if index == 0:
+        time.sleep(float(sys.argv[3]))  # 0: the stop may come while the tasks are submitted
         os.write(1, f"stop {time.time()}\\n".encode())
         os.kill(os.getppid(), signal.SIGTERM)
     time.sleep(60)
@@ -153,14 +154,15 @@ def _left(marker: str) -> list[str]:
     return found
 
 
-def _stopped_pool(kind: str) -> tuple[float, list[str]]:
+def _stopped_pool(kind: str, wait: float = 1.0) -> tuple[float, list[str]]:
     """How long the run took to end after the stop, and its tasks begun."""
     import subprocess
     import sys
     import uuid
 
     marker = f"haros-arch-pool-test-{uuid.uuid4().hex}"
-    run = subprocess.Popen([sys.executable, "-c", STOPPED_POOL, kind, marker], text=True,
+    run = subprocess.Popen([sys.executable, "-c", STOPPED_POOL, kind, marker, str(wait)],
+                           text=True,
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                            start_new_session=True)
     try:
@@ -193,3 +195,24 @@ def test_a_stopped_pool_kills_a_worker_that_does_not_end():
     seconds, begun = _stopped_pool("stuck")
     assert len(begun) <= 2, begun
     assert seconds < processes.STOP_SECONDS + 35, seconds  # about 10 s when idle
+
+
+def test_a_stop_while_the_tasks_are_submitted_stops_the_run():
+    """The stop comes at once, perhaps while the pool still starts its thread (the first
+    submission): it is the run's stop, not an error of the pool's locks."""
+    for _ in range(3):
+        seconds, begun = _stopped_pool("plain", 0.0)
+        assert len(begun) <= 2, begun
+        assert seconds < 45, seconds
+
+
+def test_a_process_forked_while_a_stop_is_held_holds_none():
+    """A pool's worker is forked by a submission, which holds the stop: the worker must
+    not inherit that (it then never stopped on its own SIGTERM and was killed)."""
+    with processes.held_signals:
+        pid = os.fork()
+        if pid == 0:  # the child: its answer as its exit status
+            held = processes.held_signals
+            os._exit(0 if held.depth == 0 and held.requested is None else 1)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
