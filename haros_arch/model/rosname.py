@@ -165,14 +165,20 @@ def pattern_for(full: str) -> str:
     segment: roscpp cleans the ``//`` an empty text leaves (autorally's serial ports
     read ``nodeName + (handle.empty() ? "" : "/" + handle) + "/serialBaud"``, which is
     ``~?/serialBaud``, ``/node/?/serialBaud`` resolved, and ``/node/serialBaud`` when the
-    handle is empty)."""
+    handle is empty). A last segment that is all ``?``, ``/a/?``, is ``/a`` too: an
+    image_transport subscriber whose transport is not known subscribes ``<base>/?``,
+    which ``raw`` makes the base itself."""
     parts = full.split(UNKNOWN_MARK)
     out = ["^", re.escape(parts[0])]
     after_slash = parts[0].endswith(SEP)
-    for part in parts[1:]:
+    for at, part in enumerate(parts[1:], 1):
         if after_slash and part.startswith(SEP):
             out.append("(?:.*/)?")  # the segment, and its slash, or nothing
             part = part[1:]
+        elif not part and at == len(parts) - 1 and out[-1].endswith(SEP) and (
+                "".join(out[1:]) != SEP):
+            out[-1] = out[-1][:-1]  # the text before, without its slash
+            out.append("(?:/.*)?")  # the last segment and its slash, or nothing
         else:
             out.append(".*")
             after_slash = False

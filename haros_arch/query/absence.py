@@ -148,7 +148,7 @@ def _known(config: Configuration) -> Known:
     return _per_configuration(_KNOWN, config, (len(config.nodes), len(config.links)), Known)
 
 
-Built = TypeVar("Built", "Known", "_Settings", "_Dropped")
+Built = TypeVar("Built", "Known", "_Settings", "_Dropped", "_Names")
 
 
 def _per_configuration(cache: WeakKeyDictionary[Configuration, Built], config: Configuration,
@@ -303,6 +303,90 @@ _OTHER_SIDE: dict[str, tuple[str, ...]] = {
     "client": ("server",), "action-server": ("action-client",),
     "action-client": ("action-server",),
 }
+
+
+def meeting(charge: Charge, config: Any, link: Any) -> list[Link]:
+    """The links on the other side of ``link`` (a subscriber's publishers, a client's
+    servers, an action client's servers): those of its resource; for a name with ``?``,
+    those of every resource of its kind whose name it could be (``RosName.pattern``),
+    and of every other name with ``?`` that could be the same name (``may_meet``). A
+    check that says a name with ``?`` has no other side rests on this list being empty:
+    whatever the unknown part is, nothing in the configuration is on the other side."""
+    if not isinstance(config, Configuration) or not isinstance(link, Link):
+        raise QueryTypeError("meeting() takes a configuration and a link")
+    sides = _OTHER_SIDE.get(link.kind, ())
+    charge(1)
+    if not link.rosname.is_unresolved:
+        return [each for each in link.resource.links if each.kind in sides]
+    names = _names(config)
+    pattern = re.compile(link.rosname.pattern)
+    known, unresolved = names.of.get(type(link.resource), ([], []))
+    charge(1 + (len(known) + len(unresolved)) // 64)
+    found = [resource for resource in known if pattern.match(resource.name)]
+    found.extend(resource for resource in unresolved
+                 if resource is link.resource or may_meet(resource.name, link.rosname.full))
+    return [each for resource in found for each in resource.links if each.kind in sides]
+
+
+class _Names:
+    """The resources of a configuration by kind: those of known names and those with ``?``."""
+
+    def __init__(self, config: Configuration) -> None:
+        self.size = (len(config.nodes), len(config.links))
+        self.of: dict[type, tuple[list[Resource], list[Resource]]] = {}
+        for collection in (config.topics, config.services, config.actions):
+            for resource in collection:
+                known, unresolved = self.of.setdefault(type(resource), ([], []))
+                (unresolved if resource.is_unresolved else known).append(resource)
+
+
+_NAMES: WeakKeyDictionary[Configuration, _Names] = WeakKeyDictionary()
+
+
+def _names(config: Configuration) -> _Names:
+    return _per_configuration(_NAMES, config, (len(config.nodes), len(config.links)), _Names)
+
+
+def may_meet(first: str, second: str) -> bool:
+    """Whether two names with ``?`` parts could be one name: some text fits both when
+    each ``?`` stands for any text (a little more than ``pattern_for`` allows, which
+    errs towards a meeting)."""
+    one = _glob(first)
+    other = _glob(second)
+    seen: set[tuple[int, int]] = set()
+    todo = [(0, 0)]
+    while todo:
+        at = todo.pop()
+        if at in seen:
+            continue
+        seen.add(at)
+        i, j = at
+        if i == len(one) and j == len(other):
+            return True
+        if i < len(one) and one[i] is None:
+            todo.append((i + 1, j))
+            if j < len(other):
+                todo.append((i, j + 1))
+        elif j < len(other) and other[j] is None:
+            todo.append((i, j + 1))
+            if i < len(one):
+                todo.append((i + 1, j))
+        elif i < len(one) and j < len(other) and one[i] == other[j]:
+            todo.append((i + 1, j + 1))
+    return False
+
+
+def _glob(name: str) -> list[str | None]:
+    """A name as its characters, each ``?`` (with the slash before it, as a segment
+    that is all ``?`` may be no segment: ``pattern_for``) as None: any text."""
+    out: list[str | None] = []
+    for at, part in enumerate(name.split(UNKNOWN_MARK)):
+        if at:
+            if out and out[-1] == "/":
+                out.pop()
+            out.append(None)
+        out.extend(part)
+    return out
 
 
 def _sets_later(include: LaunchItem, owner: NodeInstance) -> bool:

@@ -6,6 +6,7 @@ through ``charge``, so they cannot be used to escape the limits.
 
 from __future__ import annotations
 
+import re
 from collections import deque
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -19,7 +20,14 @@ from ..model.runtime import Link, NodeInstance, Parameter, Resource
 from ..model.source import Package
 from ..model.values import UNKNOWN_MARK
 from ..plugins.hosts import TRANSPORTS
-from .absence import distance, reads_dropped, same_setting, similar_to, unknown_users
+from .absence import (
+    distance,
+    meeting,
+    reads_dropped,
+    same_setting,
+    similar_to,
+    unknown_users,
+)
 from .access import readers_of
 from .errors import QueryLimitError, QueryTypeError
 
@@ -318,11 +326,18 @@ _INFRASTRUCTURE_OWN = frozenset({"parameter_descriptions", "parameter_updates", 
 
 
 def is_infrastructure(charge: Charge, name: Any) -> bool:
-    """True for a topic name that ROS libraries and tools use by convention."""
+    """True for a topic name that ROS libraries and tools use by convention; for a name
+    with ``?``, also when it could be one of the root names (``/?``, ``?``: a name of
+    which nothing is known could be any)."""
     if not isinstance(name, str):
         return False
     charge(1)
-    return name in _INFRASTRUCTURE or name.rsplit("/", 1)[-1] in _INFRASTRUCTURE_OWN
+    if name in _INFRASTRUCTURE or name.rsplit("/", 1)[-1] in _INFRASTRUCTURE_OWN:
+        return True
+    if UNKNOWN_MARK not in name:
+        return False
+    pattern = re.compile(rosname.pattern_for(name))
+    return any(pattern.match(each) for each in _INFRASTRUCTURE)
 
 
 FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure,
@@ -355,6 +370,7 @@ FUNCTIONS["is_own_service"] = Function("is_own_service", is_own_service, charged
 # checks that claim an absence, and similar-name pairing through an index (absence.py)
 FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 3, charged=True)
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
+FUNCTIONS["meeting"] = Function("meeting", meeting, 2, 2, charged=True)
 FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged=True)
 FUNCTIONS["reads_dropped"] = Function("reads_dropped", reads_dropped, 2, 2, charged=True)
 
