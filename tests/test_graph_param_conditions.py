@@ -812,3 +812,29 @@ def test_a_local_holding_a_private_parameter_read_through_the_node_name(write_tr
     })
     config = _config(root)
     assert _publishers(config, "/rover") == {"rover_status": []}
+
+
+def test_a_private_parameter_of_a_node_in_an_unknown_namespace_decides(write_tree):
+    # kr_autonomous_flight's ukf.launch: <group ns="$(arg robot)"> whose default is
+    # $(env EMU_ROBOT_NAME), the fla_ukf nodelet given <param name="enable_cam"
+    # value="false"/>: the node is /?/fla_ukf, its parameter /?/fla_ukf/enable_cam, the
+    # one unknown part its own name's; a shared name with ? still decides nothing
+    root = _workspace(write_tree)
+    (root / "src/gated/launch/gated.launch").write_text("""
+    <launch>
+      <arg name="robot" default="$(env HAROS_TEST_UNSET_ROBOT)"/>
+      <group ns="$(arg robot)">
+        <node pkg="gated" type="gated" name="gated">
+          <param name="from_launch" value="true"/>
+          <param name="publish_status" value="false"/>
+        </node>
+      </group>
+    </launch>
+    """)
+    config = _config(root)
+    gated = _publishers(config, "/?/gated")
+    assert "status" not in gated and gated["quiet"] == [] and gated["launched"] == []
+    assert "debug" not in gated  # the default, false
+    # the launch's setting and the node's read are one parameter
+    status = [p for p in config.parameters if p.name == "/?/gated/publish_status"]
+    assert len(status) == 1 and status[0].set_by_launch and status[0].readers

@@ -22,6 +22,7 @@ from ..model.rosname import (
     is_legal_name,
     is_ros2_node_name,
     namespace_of,
+    own_unknown,
     remap,
     resolve,
     ros2_name_problem,
@@ -100,9 +101,14 @@ class Resources:
                 if UNKNOWN_MARK in resource.name:
                     self.repeats[key] = self.repeats.get(key, 0) + 1
 
-    def get(self, cls: type[Resource], name: str) -> Resource:
+    def get(self, cls: type[Resource], name: str, owner: str | None = None) -> Resource:
+        """The resource of a name; a new one for each name with ``?``, as two unknown
+        parts may differ, unless its one unknown part is in the name of its ``owner``,
+        the node whose private parameter it is (``own_unknown``): one node's."""
         key = (cls, name)
-        if UNKNOWN_MARK not in name and key in self.by_name:
+        if (UNKNOWN_MARK not in name or (
+                cls is Parameter and owner is not None and own_unknown(owner, name))
+                ) and key in self.by_name:
             return self.by_name[key]
         resource = cls(name)
         kind = cls.__name__.lower()
@@ -154,8 +160,10 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.diagnostics.extend(guessed_names(launch, nodes))
     config.diagnostics.extend(unnamed_param_files(launch, nodes))
     given = process_params(launch, nodes)
+    unknown_nodes = [decl.name for decl in launch.nodes if UNKNOWN_MARK in decl.name]
     for param in given:
-        parameter = resources.get(Parameter, param.name)
+        owner = next((n for n in unknown_nodes if own_unknown(n, param.name)), None)
+        parameter = resources.get(Parameter, param.name, owner)
         assert isinstance(parameter, Parameter)
         parameter.launch_type = param.type
         parameter.value = param.value
@@ -966,7 +974,7 @@ def link(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[str, str],
     ``rosname`` gives the resolved name when the caller already knows it."""
     if rosname is None:
         rosname = resolved_name(instance, call, remaps, resources)
-    resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full)
+    resource = resources.get(RESOURCE_OF_KIND[call.kind], rosname.full, instance.name)
     made = LINK_CLASSES[call.kind](
         node=instance, resource=resource, rosname=rosname, type=call.type,
         queue_size=call.queue_size, qos=call.qos, latch=call.latch,

@@ -47,7 +47,7 @@ from ..evaluate.python import KeyAttributes, evaluate, is_unknown
 from ..launch.ros2.naming import split_arguments
 from ..model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ..model.location import Location
-from ..model.rosname import RosName, pattern_for
+from ..model.rosname import RosName, own_unknown, pattern_for
 from ..model.runtime import Configuration, Link, NodeInstance, Parameter
 from ..model.source import COUNTED, NUMBERED, WORDS
 from ..model.values import UNKNOWN_MARK, Unknown
@@ -538,7 +538,7 @@ def _read_value(link: Link, untyped: bool = False) -> object:
     call, param = link.call, link.resource
     if call is None or not isinstance(param, Parameter):
         return Unknown("not a parameter read")
-    if param.is_unresolved:
+    if param.is_unresolved and not own_unknown(link.node.name, param.name):
         # a name not known (``zone_name_ + ".visualize"``): whatever sets the real one
         return Unknown(f"the name {param.name} is not known")
     if param.set_by_launch:

@@ -188,6 +188,16 @@ def pattern_for(full: str) -> str:
     return "".join(out) + "$"
 
 
+def own_unknown(owner: str, name: str) -> bool:
+    """Whether the only unknown parts of a parameter's name are in the name of the node
+    ``owner`` whose private parameter it is (``/?/fla_ukf/enable_cam`` of a node in a
+    launch ``<group ns="$(arg robot)">`` whose value is not known statically): what the
+    launch sets under that node is what the node reads."""
+    own = owner.rstrip("/") + "/"
+    return UNKNOWN_MARK in own and name.startswith(own) and (
+        UNKNOWN_MARK not in name[len(own):])
+
+
 @dataclass(frozen=True)
 class RosName:
     """A name as written in a call (``given``) and as resolved (``full``)."""
