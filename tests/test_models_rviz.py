@@ -263,3 +263,43 @@ def test_a_display_of_another_package_with_a_known_name_is_another_display(
     assert rviz.completeness_reasons == [
         "display rviz_plugins/Path of view.rviz is not known: it may subscribe or publish "
         "anything"]
+
+
+NAV2_PANEL = """\
+Panels:
+  - Class: rviz_common/Displays
+  - Class: nav2_rviz_plugins/Navigation 2
+    Name: Navigation 2
+Visualization Manager:
+  Displays:
+    - Class: rviz_default_plugins/Map
+      Enabled: true
+      Topic:
+        Value: /map
+  Tools:
+    - Class: nav2_rviz_plugins/GoalTool
+"""
+
+
+def test_nav2_panel_calls_nav2_and_leaves_rviz_whole(tmp_path: Path) -> None:
+    """nav2_default_view.rviz's Navigation 2 panel (nav2_panel.cpp): the lifecycle
+    managers' services, the three navigation actions, the waypoint markers, the actions'
+    feedback and status; a panel not in the table still leaves rviz partial."""
+    config = _graph(tmp_path, NAV2_PANEL, 2)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    links = {(link.kind, link.resource.name, link.type) for link in rviz.links}
+    assert {("client", "/lifecycle_manager_navigation/manage_nodes",
+             "nav2_msgs/srv/ManageLifecycleNodes"),
+            ("client", "/lifecycle_manager_localization/is_active", "std_srvs/srv/Trigger"),
+            ("action-client", "/navigate_to_pose", "nav2_msgs/action/NavigateToPose"),
+            ("action-client", "/follow_waypoints", "nav2_msgs/action/FollowWaypoints"),
+            ("publish", "/waypoints", "visualization_msgs/msg/MarkerArray"),
+            ("subscribe", "/navigate_through_poses/_action/status",
+             "action_msgs/msg/GoalStatusArray")} <= links
+    assert rviz.is_complete, rviz.completeness_reasons
+    other = tmp_path / "other"
+    other.mkdir()
+    config = _graph(other, NAV2_PANEL.replace("Navigation 2\n", "Navigation 3\n", 1), 2)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    assert not rviz.is_complete
+    assert rviz.completeness_reasons[0].startswith("panel nav2_rviz_plugins/Navigation 3")

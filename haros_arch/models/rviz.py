@@ -8,7 +8,8 @@ tool publishes on its ``Topic``, and the frame manager listens to ``/tf`` and
 calls beside its interface model's; the file is read as YAML, never run. A display or
 tool is read only when it is enabled (a disabled group's displays are not). A display
 class, tool or panel this table does not know may subscribe or publish anything: the
-node is then partial, said with the class and the file.
+node is then partial, said with the class and the file. A panel of a plugin package it
+knows (nav2_rviz_plugins' Navigation 2) adds its calls.
 
 Facts from rviz's sources (ros-visualization/rviz noetic-devel ``src/rviz/default_plugin``
 and rviz2 ``rviz_default_plugins``): each display's message type; the Map display also
@@ -159,6 +160,37 @@ _PLUGINS: dict[str, _Plugin] = {
 }
 # panels of rviz itself, which make no ROS call
 _PANELS = {"Displays", "Selection", "Tool Properties", "Views", "Time", "Help"}
+# panels of plugin packages (ROS 2), by whole class name: the calls they make, each
+# (kind, name, type), names relative to rviz's namespace. nav2_rviz_plugins' Navigation 2
+# panel (navigation2 humble 3c3db59d6, jazzy f4108e5b1 and main a3a97043e alike,
+# nav2_panel.cpp): a client node of its own in rviz's process (``__node:=
+# rviz_navigation_dialog_action_client``, no namespace of its own) makes the two
+# LifecycleManagerClients of lifecycle_manager_navigation and _localization
+# (lifecycle_manager_client.cpp:33-43: ``<name>/manage_nodes``, ``<name>/is_active``),
+# the action clients of navigate_to_pose, follow_waypoints and navigate_through_poses
+# and the ``waypoints`` marker publisher; rviz's own node subscribes to the feedback and
+# status of navigate_to_pose and navigate_through_poses and (jazzy on) declares
+# ``base_frame``; its transform listener listens to /tf and /tf_static as rviz does
+_MANAGE = "nav2_msgs/srv/ManageLifecycleNodes"
+_PANEL_CALLS: dict[str, tuple[tuple[str, str, str], ...]] = {
+    "nav2_rviz_plugins/Navigation 2": (
+        *((kind, f"lifecycle_manager_{which}/{service}", type_)
+          for which in ("navigation", "localization")
+          for kind, service, type_ in (("client", "manage_nodes", _MANAGE),
+                                       ("client", "is_active", "std_srvs/srv/Trigger"))),
+        ("action-client", "navigate_to_pose", "nav2_msgs/action/NavigateToPose"),
+        ("action-client", "follow_waypoints", "nav2_msgs/action/FollowWaypoints"),
+        ("action-client", "navigate_through_poses", "nav2_msgs/action/NavigateThroughPoses"),
+        ("publish", "waypoints", "visualization_msgs/msg/MarkerArray"),
+        *(("subscribe", f"{action}/_action/feedback",
+           f"nav2_msgs/action/{name}_FeedbackMessage")
+          for action, name in (("navigate_to_pose", "NavigateToPose"),
+                               ("navigate_through_poses", "NavigateThroughPoses"))),
+        *(("subscribe", f"{action}/_action/status", "action_msgs/msg/GoalStatusArray")
+          for action in ("navigate_to_pose", "navigate_through_poses")),
+        ("declare", "base_frame", "str"),
+    ),
+}
 _DURABILITY = {"Volatile": "volatile", "Transient Local": "transient_local"}
 _RELIABILITY = {"Reliable": "reliable", "Best Effort": "best_effort"}
 _HISTORY = {"Keep Last": "keep_last", "Keep All": "keep_all"}
@@ -222,7 +254,12 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
     panels = data.get("Panels") if isinstance(data, dict) else None
     for panel in panels or ():
         cls = panel.get("Class") if isinstance(panel, dict) else None
-        if isinstance(cls, str) and cls.rpartition("/")[2] not in _PANELS:
+        if not isinstance(cls, str) or cls.rpartition("/")[2] in _PANELS:
+            continue
+        if ros2 and cls in _PANEL_CALLS:
+            calls.extend(_config_call(kind, name, type_, where)
+                         for kind, name, type_ in _PANEL_CALLS[cls])
+        else:
             unknown.append(f"panel {cls}")
     own = {(c.kind, c.name) for c in calls}
     kept = [c for c in (base.calls if base is not None else ())
