@@ -329,6 +329,54 @@ def generate_launch_description():
     assert params_of(model, "/n")["rate"] == 5
 
 
+def test_a_parameter_file_launch_ros_opens_itself_must_be_there(write_tree) -> None:
+    """autoware_core 6207f301d: preprocessor.launch.py gives its crop box filter
+    component ``ParameterFile(config/crop_box_filter.param.yaml, allow_substs=True)``, a
+    file the package has not (its file is crop_box_filter_node.param.yaml). launch_ros
+    opens a composable node's parameter files to build the load request
+    (to_parameters_list's open()) and a ParameterFile with allow_substs to substitute in
+    it: a file not there raises FileNotFoundError and ros2 launch fails, an error where
+    the launch file gives it. A plain Node's missing file stays the warning (launch_ros
+    skips it and starts the node)."""
+    from conftest import package_xml
+
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "src/p/config/there.yaml": "/**:\n  ros__parameters:\n    rate: 5\n",
+        "src/p/launch/a.launch.py": """from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import ComposableNodeContainer, Node
+from launch_ros.descriptions import ComposableNode, ParameterFile
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    share = FindPackageShare('p')
+    missing = PathJoinSubstitution([share, 'config', 'missing.yaml'])
+    there = PathJoinSubstitution([share, 'config', 'there.yaml'])
+    return LaunchDescription([
+        ComposableNodeContainer(
+            package='rclcpp_components', executable='component_container', name='box',
+            namespace='', composable_node_descriptions=[
+                ComposableNode(package='p', plugin='p::Filter', name='filter',
+                               parameters=[missing, there])]),
+        Node(package='p', executable='e', name='subst',
+             parameters=[ParameterFile(missing, allow_substs=True)]),
+        Node(package='p', executable='e', name='plain', parameters=[missing, there]),
+    ])
+"""})
+    workspace = scan([str(root / "src")], {})
+    model = load(str(root / "src/p/launch/a.launch.py"), workspace, {}, {})
+    said = [(d.code, d.severity, d.location.line) for d in model.diagnostics
+            if "missing.yaml" in d.message]
+    assert said == [("LAUNCH_BAD_VALUE", "error", 16), ("LAUNCH_BAD_VALUE", "error", 19),
+                    ("LAUNCH_PARAM_FILE", "warning", 20)]
+    errors = [d.message for d in model.diagnostics if d.code == "LAUNCH_BAD_VALUE"]
+    assert "to load the component" in errors[0] and "allow_substs" in errors[1]
+    assert params_of(model, "/filter")["rate"] == 5
+    assert params_of(model, "/plain")["rate"] == 5
+
+
 def test_a_parameter_file_outside_the_workspace_is_not_read(write_tree) -> None:
     """A ROS 2 parameter file is read only inside the workspace and the installed
     packages, as a ROS 1 ``<rosparam file>`` and ``$(file-content)`` are: it was read

@@ -128,11 +128,12 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
 
     def read_file(entry: e.ParamFile, location: Location) -> None:
         placed: list[tuple[str, Any]] = []
-        document = runner.param_file(entry, scope, location, placed=placed)
+        composable = runner.model.nodes[-1].composable
+        document = runner.param_file(entry, scope, location, placed=placed,
+                                     component=composable)
         if document is None:
             unseen.append(location)
             return
-        composable = runner.model.nodes[-1].composable
         if composable:
             document = naming.as_component_file(document)
         keys = _key_places(runner, placed, composable, node)

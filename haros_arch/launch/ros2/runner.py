@@ -944,13 +944,16 @@ class Runner:
 
     # -- parameter files -------------------------------------------------------------
     def param_file(self, entry: e.ParamFile, scope: Scope, where: Location,
-                   depth: int = 0, placed: list[tuple[str, Any]] | None = None) -> Any:
+                   depth: int = 0, placed: list[tuple[str, Any]] | None = None,
+                   component: bool = False) -> Any:
         """The parsed document of a parameter file, rewritten as asked; None if unknown.
         ``placed``, if given, gets the file read and where each key of the document is
         written (``safe_yaml.load_with_lines``, its keys renamed and put under a root
-        key as the document's are)."""
+        key as the document's are). ``component``: the file is given to a composable
+        node, whose parameter files launch_ros opens itself."""
         if len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef) and depth < 8:
-            document = self.param_file(entry.path[0].file, scope, where, depth + 1, placed)
+            document = self.param_file(entry.path[0].file, scope, where, depth + 1, placed,
+                                       component)
             if document is None:
                 return None
             if placed:
@@ -968,7 +971,7 @@ class Runner:
             inner = e.ParamFile((e.FileRef(path.file),), entry.root_key, entry.rewrites,
                                 entry.location, entry.replacements, entry.condition,
                                 entry.allow_substs, entry.key_rewrites, entry.value_rewrites)
-            return self.param_file(inner, scope, where, depth + 1, placed)
+            return self.param_file(inner, scope, where, depth + 1, placed, component)
         if path is None or path.literal is None:
             self.report("LAUNCH_PARAM_FILE", where,
                         detail=f"parameter file {path} is not known statically")
@@ -993,6 +996,18 @@ class Runner:
         if not os.path.lexists(file) and (
                 note := self.workspace.submodule_note(file)) is not None:
             self.report("LAUNCH_UNKNOWN_VALUE", where, detail=note)
+            return None
+        if not os.path.lexists(file) and (component or entry.allow_substs):
+            # launch_ros opens the file itself: ParameterFile.evaluate with allow_substs
+            # reads it to substitute in it, and a composable node's load request reads
+            # each of its files (to_parameters_list's open()); a file that is not there
+            # raises FileNotFoundError and ros2 launch stops (autoware_core 6207f301d:
+            # the preprocessor's crop_box_filter.param.yaml, a name the package has not)
+            how = "to substitute in it (allow_substs)" if entry.allow_substs else \
+                "to load the component"
+            self.report("LAUNCH_BAD_VALUE", where, detail=(
+                f"parameter file {self.workspace.relpath(file)} does not exist; launch_ros "
+                f"opens it {how}, so ros2 launch fails (FileNotFoundError)"))
             return None
         if not os.path.lexists(file):
             # said where the launch file gives it (not at a file that is not there):
