@@ -303,3 +303,33 @@ def test_nav2_panel_calls_nav2_and_leaves_rviz_whole(tmp_path: Path) -> None:
     rviz = next(n for n in config.nodes if n.name == "/rviz")
     assert not rviz.is_complete
     assert rviz.completeness_reasons[0].startswith("panel nav2_rviz_plugins/Navigation 3")
+
+
+DEPTH = """\
+Visualization Manager:
+  Displays:
+    - Class: rviz/DepthCloud
+      Enabled: true
+      Depth Map Topic: /camera/depth/image_rect_raw
+      Depth Map Transport Hint: compressedDepth
+      Color Image Topic: /camera/color/image_raw
+      Color Transport Hint: raw
+    - Class: rviz_imu_plugin/Imu
+      Enabled: true
+      Topic: /imu/data
+"""
+
+
+def test_depth_cloud_and_imu_displays(tmp_path: Path) -> None:
+    """ROS 1 rviz's depth cloud display takes its depth map through image_transport with
+    its hint, the camera_info beside it and the color image; imu_tools' Imu display its
+    topic."""
+    config = _graph(tmp_path, DEPTH, 1)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    links = {(link.kind, link.resource.name, link.type) for link in rviz.links}
+    assert {("subscribe", "/camera/depth/image_rect_raw/compressedDepth",
+             "sensor_msgs/CompressedImage"),
+            ("subscribe", "/camera/depth/camera_info", "sensor_msgs/CameraInfo"),
+            ("subscribe", "/camera/color/image_raw", "sensor_msgs/Image"),
+            ("subscribe", "/imu/data", "sensor_msgs/Imu")} <= links
+    assert rviz.is_complete, rviz.completeness_reasons

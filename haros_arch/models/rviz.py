@@ -37,6 +37,7 @@ from .. import safe_yaml
 from ..diagnostics import Diagnostic
 from ..launch.model import NodeDecl
 from ..model.source import Node, PrimitiveCall
+from ..plugins.hosts import TRANSPORTS
 from ..workspace import Workspace
 from .commands import program_words
 
@@ -68,6 +69,7 @@ _DISPLAYS: dict[str, tuple[str, str] | None] = {
     "GridCells": ("nav_msgs", "GridCells"), "Effort": ("sensor_msgs", "JointState"),
     "Imu": ("sensor_msgs", "Imu"),
     "ParticleCloud": ("nav2_msgs", "ParticleCloud"),  # nav2_rviz_plugins' (amcl's particles)
+    "DepthCloud": ("sensor_msgs", "Image"),  # ROS 1's: its topics are _depth_cloud's
 }
 # the packages whose display classes ``_DISPLAYS`` describes: rviz's own, and the one
 # plugin package of a display there; another package's class of the same last name is
@@ -75,7 +77,8 @@ _DISPLAYS: dict[str, tuple[str, str] | None] = {
 # Path, not nav_msgs')
 _RVIZ_OWNERS = frozenset(("rviz", "rviz_default_plugins"))
 _DISPLAY_OWNERS: dict[str, frozenset[str]] = {
-    "ParticleCloud": frozenset(("nav2_rviz_plugins",))}
+    "ParticleCloud": frozenset(("nav2_rviz_plugins",)),
+    "DepthCloud": frozenset(("rviz",))}  # rviz_default_plugins' not read yet
 # a tool -> (ROS 1 topic, ROS 2 topic, package, message) it publishes by default; None:
 # a tool that publishes nothing
 _TOOLS: dict[str, tuple[str, str, str, str] | None] = {
@@ -150,6 +153,9 @@ _PLUGINS: dict[str, _Plugin] = {
     # MapGraphDisplay.h:56 / :62, MapCloudDisplay.h:76 / :103); the map cloud display
     # also downloads the map through rtabmap's services (its "Download namespace",
     # MapCloudDisplay.cpp:195; ROS 2 from a client node of its own, :100-101)
+    # imu_tools' rviz_imu_plugin (noetic and humble): a message filter display of
+    # sensor_msgs' Imu on its "Topic" (imu_display.h:62 / :59)
+    "rviz_imu_plugin/Imu": _Plugin(((("Topic",), ("", ""), ("sensor_msgs", "Imu")),)),
     "rtabmap_rviz_plugins/Info": _Plugin(
         ((("Topic",), ("", ""), ("rtabmap_msgs", "Info")),)),
     "rtabmap_rviz_plugins/MapGraph": _Plugin(
@@ -328,6 +334,9 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
             unknown.append(f"display {cls}")
             continue
         message = _DISPLAYS[kind]
+        if kind == "DepthCloud":
+            _depth_cloud(display, where, calls)
+            continue
         if kind == "InteractiveMarkers":
             _markers(display, ros2, where, calls)
         elif kind == "RobotModel":
@@ -352,6 +361,29 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
             info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
             calls.append(_config_call("subscribe", info,
                                       _type("sensor_msgs", "CameraInfo", ros2), where))
+
+
+def _depth_cloud(display: dict[str, Any], where: Any, calls: list[PrimitiveCall]) -> None:
+    """ROS 1 rviz's depth cloud display (depth_cloud_display.cpp:271-316): its depth
+    map through image_transport with its transport hint (``raw``: the topic itself,
+    else the transport's topic below it), the camera_info beside the depth map, and the
+    color image when one is named, with its own hint."""
+    image = _type("sensor_msgs", "Image", False)
+    for topic_key, hint_key in (("Depth Map Topic", "Depth Map Transport Hint"),
+                                ("Color Image Topic", "Color Transport Hint")):
+        name, _ = _topic(display.get(topic_key))
+        if not name:
+            continue
+        hint = display.get(hint_key, "raw")
+        hint = hint if isinstance(hint, str) and hint else "raw"
+        row = next((t for t in TRANSPORTS if t.name == hint), None)
+        message = image if hint == "raw" else (row.types[0] if row is not None else None)
+        calls.append(_config_call("subscribe", name if hint == "raw" else (
+            name.rstrip("/") + "/" + hint), message or "", where))
+        if topic_key == "Depth Map Topic":
+            info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
+            calls.append(_config_call("subscribe", info,
+                                      _type("sensor_msgs", "CameraInfo", False), where))
 
 
 def _plugin(display: dict[str, Any], plugin: _Plugin, ros2: bool, where: Any,
