@@ -297,6 +297,18 @@ def test_nav2_panel_calls_nav2_and_leaves_rviz_whole(tmp_path: Path) -> None:
             ("subscribe", "/navigate_through_poses/_action/status",
              "action_msgs/msg/GoalStatusArray")} <= links
     assert rviz.is_complete, rviz.completeness_reasons
+    panels = tmp_path / "panels"
+    panels.mkdir()
+    config = _graph(panels, NAV2_PANEL.replace(
+        "  - Class: rviz_common/Displays\n",
+        "  - Class: nav2_rviz_plugins/Selector\n  - Class: nav2_rviz_plugins/Docking\n"), 2)
+    rviz = next(n for n in config.nodes if n.name == "/rviz")
+    links = {(link.kind, link.resource.name) for link in rviz.links}
+    assert {("publish", "/planner_selector"), ("action-client", "/dock_robot"),
+            ("subscribe", "/undock_robot/_action/status")} <= links
+    selector = next(link for link in rviz.links if link.resource.name == "/planner_selector")
+    assert selector.qos is not None and selector.qos.get("durability") == "transient_local"
+    assert rviz.is_complete, rviz.completeness_reasons
     other = tmp_path / "other"
     other.mkdir()
     config = _graph(other, NAV2_PANEL.replace("Navigation 2\n", "Navigation 3\n", 1), 2)

@@ -178,23 +178,47 @@ _PANELS = {"Displays", "Selection", "Tool Properties", "Views", "Time", "Help"}
 # status of navigate_to_pose and navigate_through_poses and (jazzy on) declares
 # ``base_frame``; its transform listener listens to /tf and /tf_static as rviz does
 _MANAGE = "nav2_msgs/srv/ManageLifecycleNodes"
-_PANEL_CALLS: dict[str, tuple[tuple[str, str, str], ...]] = {
+# ``rclcpp::QoS(1).transient_local()``, reliable by default
+_LATCHED_ONE = {"depth": 1, "history": "keep_last", "reliability": "reliable",
+                "durability": "transient_local"}
+# kind, name, type, and the QoS of a publisher (None: the default profile)
+_PANEL_CALLS: dict[str, tuple[tuple[str, str, str, dict[str, Any] | None], ...]] = {
     "nav2_rviz_plugins/Navigation 2": (
-        *((kind, f"lifecycle_manager_{which}/{service}", type_)
+        *((kind, f"lifecycle_manager_{which}/{service}", type_, None)
           for which in ("navigation", "localization")
           for kind, service, type_ in (("client", "manage_nodes", _MANAGE),
                                        ("client", "is_active", "std_srvs/srv/Trigger"))),
-        ("action-client", "navigate_to_pose", "nav2_msgs/action/NavigateToPose"),
-        ("action-client", "follow_waypoints", "nav2_msgs/action/FollowWaypoints"),
-        ("action-client", "navigate_through_poses", "nav2_msgs/action/NavigateThroughPoses"),
-        ("publish", "waypoints", "visualization_msgs/msg/MarkerArray"),
+        ("action-client", "navigate_to_pose", "nav2_msgs/action/NavigateToPose", None),
+        ("action-client", "follow_waypoints", "nav2_msgs/action/FollowWaypoints", None),
+        ("action-client", "navigate_through_poses", "nav2_msgs/action/NavigateThroughPoses",
+         None),
+        ("publish", "waypoints", "visualization_msgs/msg/MarkerArray", _LATCHED_ONE),
         *(("subscribe", f"{action}/_action/feedback",
-           f"nav2_msgs/action/{name}_FeedbackMessage")
+           f"nav2_msgs/action/{name}_FeedbackMessage", None)
           for action, name in (("navigate_to_pose", "NavigateToPose"),
                                ("navigate_through_poses", "NavigateThroughPoses"))),
-        *(("subscribe", f"{action}/_action/status", "action_msgs/msg/GoalStatusArray")
+        *(("subscribe", f"{action}/_action/status", "action_msgs/msg/GoalStatusArray", None)
           for action in ("navigate_to_pose", "navigate_through_poses")),
-        ("declare", "base_frame", "str"),
+        ("declare", "base_frame", "str", None),
+    ),
+    # its Selector panel (selector.cpp:26-39): a node of its own publishes the selected
+    # plugin of each server, depth 1, reliable, transient local (main adds
+    # path_handler_selector; listed for every release, as a missing publisher would say
+    # more than an extra one)
+    "nav2_rviz_plugins/Selector": tuple(
+        ("publish", f"{server}_selector", "std_msgs/msg/String", _LATCHED_ONE)
+        for server in ("controller", "planner", "goal_checker", "smoother",
+                       "progress_checker", "path_handler")),
+    # its Docking panel (docking_panel.cpp:167-290, jazzy and main): the dock_robot and
+    # undock_robot action clients on a node of its own, and, on rviz's node, the
+    # docking feedback and the two actions' status
+    "nav2_rviz_plugins/Docking": (
+        ("action-client", "dock_robot", "nav2_msgs/action/DockRobot", None),
+        ("action-client", "undock_robot", "nav2_msgs/action/UndockRobot", None),
+        ("subscribe", "dock_robot/_action/feedback",
+         "nav2_msgs/action/DockRobot_FeedbackMessage", None),
+        *(("subscribe", f"{action}/_action/status", "action_msgs/msg/GoalStatusArray", None)
+          for action in ("dock_robot", "undock_robot")),
     ),
 }
 _DURABILITY = {"Volatile": "volatile", "Transient Local": "transient_local"}
@@ -263,8 +287,8 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
         if not isinstance(cls, str) or cls.rpartition("/")[2] in _PANELS:
             continue
         if ros2 and cls in _PANEL_CALLS:
-            calls.extend(_config_call(kind, name, type_, where)
-                         for kind, name, type_ in _PANEL_CALLS[cls])
+            calls.extend(_config_call(kind, name, type_, where, dict(qos) if qos else None)
+                         for kind, name, type_, qos in _PANEL_CALLS[cls])
         else:
             unknown.append(f"panel {cls}")
     own = {(c.kind, c.name) for c in calls}
