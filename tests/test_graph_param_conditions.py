@@ -838,3 +838,13 @@ def test_a_private_parameter_of_a_node_in_an_unknown_namespace_decides(write_tre
     # the launch's setting and the node's read are one parameter
     status = [p for p in config.parameters if p.name == "/?/gated/publish_status"]
     assert len(status) == 1 and status[0].set_by_launch and status[0].readers
+
+
+def test_only_a_node_of_known_own_name_owns_its_unknown_parameters():
+    from haros_arch.model.rosname import own_unknown
+
+    assert own_unknown("/?/gated", "/?/gated/publish_status")
+    assert not own_unknown("/?/gated", "/?/gated/?/x")
+    assert not own_unknown("/?", "/?/enable_stamped_cmd_vel")  # several nodes may be /?
+    assert not own_unknown("/robot1/?", "/robot1/?/x")
+    assert not own_unknown("/robot1/gated", "/robot1/gated/x")  # nothing unknown

@@ -192,10 +192,11 @@ def own_unknown(owner: str, name: str) -> bool:
     """Whether the only unknown parts of a parameter's name are in the name of the node
     ``owner`` whose private parameter it is (``/?/fla_ukf/enable_cam`` of a node in a
     launch ``<group ns="$(arg robot)">`` whose value is not known statically): what the
-    launch sets under that node is what the node reads."""
+    launch sets under that node is what the node reads. Not for a node whose own name
+    is not known (``/?``, ``/ns/?``): several nodes may have that name in the graph."""
     own = owner.rstrip("/") + "/"
-    return UNKNOWN_MARK in own and name.startswith(own) and (
-        UNKNOWN_MARK not in name[len(own):])
+    return UNKNOWN_MARK in own and UNKNOWN_MARK not in own.rstrip("/").rsplit("/", 1)[-1] and (
+        name.startswith(own) and UNKNOWN_MARK not in name[len(own):])
 
 
 @dataclass(frozen=True)

@@ -181,7 +181,8 @@ _MANAGE = "nav2_msgs/srv/ManageLifecycleNodes"
 # ``rclcpp::QoS(1).transient_local()``, reliable by default
 _LATCHED_ONE = {"depth": 1, "history": "keep_last", "reliability": "reliable",
                 "durability": "transient_local"}
-# kind, name, type, and the QoS of a publisher (None: the default profile)
+# kind, name, type, and the QoS of a publisher (None: the default profile) or the default
+# of a parameter declaration
 _PANEL_CALLS: dict[str, tuple[tuple[str, str, str, dict[str, Any] | None], ...]] = {
     "nav2_rviz_plugins/Navigation 2": (
         *((kind, f"lifecycle_manager_{which}/{service}", type_, None)
@@ -199,7 +200,7 @@ _PANEL_CALLS: dict[str, tuple[tuple[str, str, str, dict[str, Any] | None], ...]]
                                ("navigate_through_poses", "NavigateThroughPoses"))),
         *(("subscribe", f"{action}/_action/status", "action_msgs/msg/GoalStatusArray", None)
           for action in ("navigate_to_pose", "navigate_through_poses")),
-        ("declare", "base_frame", "str", None),
+        ("declare", "base_frame", "str", {"default": "base_footprint"}),
     ),
     # its Selector panel (selector.cpp:26-39): a node of its own publishes the selected
     # plugin of each server, depth 1, reliable, transient local (main adds
@@ -287,8 +288,8 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
         if not isinstance(cls, str) or cls.rpartition("/")[2] in _PANELS:
             continue
         if ros2 and cls in _PANEL_CALLS:
-            calls.extend(_config_call(kind, name, type_, where, dict(qos) if qos else None)
-                         for kind, name, type_, qos in _PANEL_CALLS[cls])
+            calls.extend(_panel_call(kind, name, type_, extra, where)
+                         for kind, name, type_, extra in _PANEL_CALLS[cls])
         else:
             unknown.append(f"panel {cls}")
     own = {(c.kind, c.name) for c in calls}
@@ -312,6 +313,16 @@ def _config_call(kind: Any, name: str, type_: str, where: Any,
                  qos: dict[str, Any] | None = None) -> PrimitiveCall:
     """A call of the configuration (links of origin ``config``), at its file."""
     return PrimitiveCall(kind, name, type_, qos=qos, location=where, origin="config")
+
+
+def _panel_call(kind: str, name: str, type_: str, extra: dict[str, Any] | None,
+                where: Any) -> PrimitiveCall:
+    """A call of a panel of ``_PANEL_CALLS``: a publisher with its QoS, a declaration
+    with its default."""
+    if kind == "declare" and extra is not None:
+        return replace(_config_call(kind, name, type_, where), has_default=True,
+                       default=extra.get("default"))
+    return _config_call(kind, name, type_, where, dict(extra) if extra else None)
 
 
 def _type(package: str, name: str, ros2: bool) -> str:
