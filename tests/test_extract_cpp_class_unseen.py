@@ -978,3 +978,51 @@ def test_a_nested_type_of_a_missing_class_is_data(write_tree: Any) -> None:
     reasons = node.completeness_reasons
     assert any(r.startswith("teleop/src/teleop.cpp:6:") for r in reasons), reasons
     assert not any("::Plan" in r for r in reasons), reasons
+
+
+# ros_control_boilerplate's GenericHWInterface::registerJointLimits: the limits of each
+# joint from the URDF first (joint_limits_urdf.h's two-argument overloads, which read
+# no parameter), then from the handle given (joint_limits_rosparam.h's). With no stand-in
+# of joint_limits_urdf.h the URDF calls were "too few arguments" errors in a function
+# that reads parameters, and the node partial
+JOINT_LIMITS_URDF = """
+    #include <ros/ros.h>
+    #include <urdf/model.h>
+    #include <joint_limits_interface/joint_limits.h>
+    #include <joint_limits_interface/joint_limits_rosparam.h>
+    #include <joint_limits_interface/joint_limits_urdf.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "hw");
+      ros::NodeHandle nh("arm");
+      urdf::Model model;
+      model.initParam("robot_description");
+      urdf::JointConstSharedPtr joint = model.getJoint("joint_1");
+      joint_limits_interface::JointLimits limits;
+      joint_limits_interface::SoftJointLimits soft;
+      bool has_limits = joint_limits_interface::getJointLimits(joint, limits);
+      joint_limits_interface::getJointLimits("joint_1", nh, limits);
+      if (joint_limits_interface::getSoftJointLimits(joint, soft)) {
+        has_limits = true;
+      }
+      ros::spin();
+    }
+    """
+
+
+def test_joint_limits_from_the_urdf_read_no_parameter(write_tree: Any) -> None:
+    model = _model(write_tree, {
+        "src/hw/package.xml": _depends("hw", "roscpp", "urdf", "joint_limits_interface"),
+        "src/hw/CMakeLists.txt": "project(hw)\nadd_executable(hw src/hw.cpp)\n",
+        "src/hw/src/hw.cpp": JOINT_LIMITS_URDF,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "hw/hw")
+    assert node.completeness == "complete", node.completeness_reasons
+    reads = sorted(c.name for c in node.calls if c.kind == "read")
+    limits = "arm/joint_limits/joint_1/"
+    assert reads == sorted([
+        "robot_description", *(limits + name for name in (
+            "min_position", "max_position", "max_velocity", "max_acceleration",
+            "max_jerk", "max_effort", "has_position_limits", "angle_wraparound",
+            "has_velocity_limits", "has_acceleration_limits", "has_jerk_limits",
+            "has_effort_limits"))])

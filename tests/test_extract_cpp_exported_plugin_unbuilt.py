@@ -122,3 +122,18 @@ def test_the_executable_that_builds_the_plugin_makes_its_calls(write_tree) -> No
         ("read", "~rate"), ("read", "~radius"), ("read", "~local/rate"),
         ("read", "~local/frame"), ("read", "~local/radius"), ("subscribe", "~local/obstacles")}
     assert "CPP_PLUGIN_IN_PROCESS" in {d.code for d in found.diagnostics}
+
+
+def test_an_error_beside_the_static_call_builds_no_plugin(write_tree) -> None:
+    """mpc_local_planner's test_mpc_optim_node: its ``start()`` calls the plugin class's
+    static ``getRobotFootprintFromParamServer(nh)`` and has parse errors elsewhere
+    (teb_local_planner's obstacle classes, not in the tree). The words of a function with
+    errors are where a construction may hide, but a class written there only as the
+    scope of static calls the parse read constructs nothing there: its ``initialize``
+    still ran in the executable (119 reads on ``~?/``, ``~?/obstacles``)."""
+    found = _extract(write_tree, "std::string broken = 2.5;")
+    assert "CPP_PARSE_ERROR" in {d.code for d in found.diagnostics}
+    assert _calls(found) == {("read", "~rate"), ("read", "~frame"), ("read", "~radius")}
+    # a class also written otherwise there (a construction the error may hide) keeps them
+    kept = _extract(write_tree, "std::string broken = 2.5; planner::PlannerROS * p = 0;")
+    assert ("subscribe", "~?/obstacles") in _calls(kept)

@@ -636,6 +636,27 @@ def test_ros1_time_bounds_and_compound_assignments(write_tree) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "stamped")]
 
 
+def test_ros1_steady_time(write_tree) -> None:
+    """robotnik_base_hw's control loop measures its period with ``ros::SteadyTime``
+    (rostime's monotonic clock, beside WallTime, since Melodic): ``ros::Duration
+    elapsed((now - last).toSec())`` was an ambiguous constructor call, an error in the
+    function that advertises, and the node partial."""
+    source = (
+        "#include <ros/ros.h>\n#include <std_msgs/Float64.h>\n"
+        "int main(int argc, char **argv) {\n"
+        "  ros::init(argc, argv, \"loop\");\n  ros::NodeHandle nh;\n"
+        "  ros::SteadyTime last = ros::SteadyTime::now();\n"
+        "  ros::Publisher pub = nh.advertise<std_msgs::Float64>(\"period\", 1);\n"
+        "  while (ros::ok()) {\n"
+        "    ros::SteadyTime now = ros::SteadyTime::now();\n"
+        "    ros::Duration elapsed((now - last).toSec());\n"
+        "    std_msgs::Float64 msg;\n    msg.data = elapsed.toSec();\n"
+        "    pub.publish(msg);\n    last = now;\n  }\n}\n")
+    result = _extract(write_tree, source, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "period")]
+
+
 def test_ros1_opencv_regions_as_small_matrices_and_a_time_synchronizers_inputs(
         write_tree) -> None:
     """msckf_vio's image processor reads its camera transforms into ``cv::Matx33d`` and

@@ -1625,3 +1625,57 @@ def test_a_base_member_of_a_class_derived_from_a_declared_one(tmp_path) -> None:
     assert errors == [(22, "C++ error: use of undeclared identifier 'counter_'")]
     assert [(c.kind, c.name) for c in result.calls] == [
         ("subscribe", "height"), ("publish", "pose"), ("publish", "plain")]
+
+
+def test_a_calling_convention_macro_of_a_missing_header_is_defined_empty(write_tree) -> None:
+    """``static void VENDOR_CALLBACK handle(void *data, const vendor_t t);`` with the
+    vendor's header missing (vrpn_client_ros' ``VRPN_CALLBACK`` handlers, which
+    advertise their pose, twist and accel topics): clang read the macro as a variable of
+    type void and the function as lost (``expected ';'``), so the handler's definition
+    was no function and its advertise call no call."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/include/pkg/tracker.h": """\
+            #include <ros/ros.h>
+            #include <geometry_msgs/PoseStamped.h>
+            #include <vendor_tracker.h>
+            class Tracker {
+             public:
+              explicit Tracker(ros::NodeHandle nh);
+             private:
+              ros::NodeHandle nh_;
+              ros::Publisher pub_;
+              static void VENDOR_CALLBACK handle_pose(void *data, const vendor_POSE pose);
+              static int VENDOR_CALLBACK handle_count(void *data, const vendor_POSE pose);
+            };
+            """,
+        "pkg/src/tracker.cpp": """\
+            #include <pkg/tracker.h>
+            Tracker::Tracker(ros::NodeHandle nh) : nh_(nh) {
+              vendor_register(this, &Tracker::handle_pose, &Tracker::handle_count);
+            }
+            void VENDOR_CALLBACK Tracker::handle_pose(void *data, const vendor_POSE pose) {
+              Tracker *self = static_cast<Tracker *>(data);
+              self->pub_ = self->nh_.advertise<geometry_msgs::PoseStamped>("pose", 1);
+            }
+            int VENDOR_CALLBACK Tracker::handle_count(void *data, const vendor_POSE pose) {
+              Tracker *self = static_cast<Tracker *>(data);
+              return self->nh_.param<int>("count", 0);
+            }
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "tracker");
+              Tracker tracker(ros::NodeHandle("~"));
+              ros::spin();
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "tracker.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("publish", "~pose", "geometry_msgs/PoseStamped", 7),
+                            ("read", "~count", "int", 11)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []
+    # a variable declared after a type is no macro: ``int count handle(`` is left alone
+    names = synthesis.Names()
+    text = b"int count handle(1);\n"
+    assert not names.learn([("expected ';' after top level declarator", text,
+                             text.index(b" handle"))])

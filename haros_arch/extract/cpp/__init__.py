@@ -2250,6 +2250,8 @@ def error_detail(spelling: str, generated: str) -> str:
 
 _HANDED = frozenset({"CPP_NODE_PASSED", "CPP_NODE_TO_UNKNOWN", "CPP_NODE_UNREAD"})
 _CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL, CursorKind.CLASS_TEMPLATE})
+# what follows a class's name written as the scope of a call of its static method
+_STATIC_CALL = re.compile(rb"\s*::\s*(?:template\s+)?[A-Za-z_]\w*\s*(?:<[^;{}()]*>\s*)?\(")
 # the children of a function's cursor that belong to its declarator
 _DECLARATOR = frozenset({
     CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF,
@@ -2269,6 +2271,7 @@ class _Places:
         self._innermost: dict[tuple[str, int], Cursor | None] = {}
         self._words: dict[tuple[str, int], frozenset[bytes] | None] = {}
         self._names: dict[int, tuple[Cursor, frozenset[str]]] = {}
+        self._static: dict[int, frozenset[bytes]] = {}  # ``_static_scopes``, by function
 
     def innermost(self, path: str, line: int) -> Cursor | None:
         """``_innermost`` of the finder's functions."""
@@ -2283,6 +2286,41 @@ class _Places:
         if found is None:
             found = self._names[id(function)] = (function, node_names(function))
         return found[1]
+
+    def _static_scopes(self, function: Cursor, data: bytes, start: int) -> frozenset[bytes]:
+        """The classes ``function``'s code (from ``start``) writes only as the scope of
+        calls of their static methods that the parse read (``C::f(...)``, each at the
+        lines of such a call): no statement an error hides constructs one there, and
+        what the calls do is read with them (mpc_local_planner's test_mpc_optim_node
+        calls its plugin class's static ``MpcLocalPlannerROS::
+        getRobotFootprintFromParamServer(nh)`` in ``start()``, whose other statements
+        have errors: the plugin's ``initialize`` ran in the executable)."""
+        key = function.hash
+        found = self._static.get(key)
+        if found is not None:
+            return found
+        lines: dict[bytes, set[int]] = {}
+        for node in function.walk_preorder():
+            if node.kind != CursorKind.CALL_EXPR:
+                continue
+            target = node.referenced
+            if target is None or target.kind != CursorKind.CXX_METHOD or (
+                    not target.is_static_method()):
+                continue
+            owner = target.semantic_parent
+            if owner is None or owner.kind not in _CLASSES or not owner.spelling:
+                continue
+            lines.setdefault(owner.spelling.encode(), set()).update(
+                range(node.extent.start.line, node.extent.end.line + 1))
+        end = function.extent.end.offset
+        scopes: set[bytes] = set()
+        for word, at in lines.items():
+            uses = list(re.compile(rb"\b" + re.escape(word) + rb"\b").finditer(data, start, end))
+            if uses and all(_STATIC_CALL.match(data, use.end()) is not None and (
+                    data.count(b"\n", 0, use.start()) + 1 in at) for use in uses):
+                scopes.add(word)
+        found = self._static[key] = frozenset(scopes)
+        return found
 
     def words(self, error: _Error) -> frozenset[bytes] | None:
         """The words of the code where ``error`` can hide a statement: the text of the
@@ -2308,6 +2346,7 @@ class _Places:
                 start = next((child.extent.start.offset for child in function.get_children()
                               if child.kind not in _DECLARATOR), function.extent.start.offset)
                 found.update(WORDS.findall(data[start:function.extent.end.offset]))
+                found -= self._static_scopes(function, data, start)
                 owner = function.semantic_parent
                 if owner is not None and owner.kind in _CLASSES:
                     # a method names its own class (``&Costmap2DROS::reconfigureCB``),

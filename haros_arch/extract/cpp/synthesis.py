@@ -718,6 +718,32 @@ _DECLARATION_MACRO = re.compile(
     rb"([A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+)\s*\((?:[^;{}()]|\([^;{}()]*\))*\)")
 
 
+# a function declared with a macro between its return type and its name, the macro's
+# header missing: a calling convention or an export attribute (vrpn_client_ros'
+# ``static void VRPN_CALLBACK handle_pose(void *userData, ...)``, VRPN's header
+# missing). Clang reads the macro as the name of a variable of the return type and
+# wants a ``;`` after it, where the function's name is: the function is lost, and its
+# definition's body (the handler's advertise calls) with it. Defined empty.
+_DECLARATOR_ENDED = re.compile(
+    r"^expected ';' (?:at end of declaration list|after top level declarator)")
+_MACRO_BEFORE = re.compile(rb"[\w*&>]\s+([A-Z][A-Z0-9_]*[A-Z0-9])\s*$")
+_FUNCTION_NAMED = re.compile(rb"\s+(?:[A-Za-z_]\w*\s*::\s*)*~?[A-Za-z_]\w*\s*\(")
+
+
+def _attribute_macro(text: bytes, offset: int) -> str | None:
+    """The macro name written between a declaration's type and a function's name that
+    ends before ``offset``, where clang wanted the declaration to end (``_DECLARATOR_
+    ENDED``), if it is one: capitals, after a type's last word (or ``*``, ``&``,
+    ``>``), and followed by a name and ``(``."""
+    found = _MACRO_BEFORE.search(text, max(0, offset - 200), offset)
+    if found is None or _FUNCTION_NAMED.match(text, offset) is None:
+        return None
+    start = text.rfind(b"\n", 0, found.start()) + 1
+    if text[start:found.start()].lstrip().startswith(b"#"):
+        return None  # a preprocessor line
+    return found.group(1).decode()
+
+
 def _declaration_macros(text: bytes, offset: int) -> list[str]:
     """The macros whose calls, one after another, are the whole declaration that ends
     before ``offset`` (from the last ``;``, ``{`` or ``}`` before it, comments left
@@ -1162,6 +1188,12 @@ class Names:
                 if macro not in self.declaration_macros:
                     self.declaration_macros.add(macro)
                     self.count += 1
+            return
+        if _DECLARATOR_ENDED.match(message):
+            attribute = _attribute_macro(text, offset) if text is not None else None
+            if attribute is not None and attribute not in self.macros:
+                self.macros.add(attribute)
+                self.count += 1
             return
         template = _NOT_TEMPLATE.match(message)
         if template is not None:

@@ -69,6 +69,7 @@ public:
   Time& operator-=(const Duration& rhs);
 };
 typedef Time WallTime;
+typedef Time SteadyTime;  // rostime's monotonic clock (Melodic and Noetic)
 // rostime's bounds (``last_sync_(ros::TIME_MIN)``, novatel_gps_driver)
 extern const Time TIME_MIN, TIME_MAX;
 extern const Duration DURATION_MIN, DURATION_MAX;
