@@ -332,7 +332,7 @@ class Evaluator:
     def s_FindPackage(self, s: e.FindPackage) -> Value:
         name = self.known(s.package)
         self.runner.uses(self.value(s.package).text, self.location,
-                         self.scope.conditions)
+                         self.scope.conditions, self.runner.chosen_by(s.package))
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
@@ -379,7 +379,7 @@ class Evaluator:
         """``$(exec-in-pkg)``: ``<prefix>/lib/<pkg>/<exe>`` when the package installs it."""
         package = self.known(package_text)
         self.runner.uses(self.value(package_text).text, self.location,
-                         self.scope.conditions)
+                         self.scope.conditions, self.runner.chosen_by(package_text))
         if package is None:
             return Value.unknown("package with an unknown name")
         workspace = self.runner.workspace
