@@ -371,6 +371,10 @@ class Evaluator:
             candidate = os.path.join(folder, name)
             if folder and os.path.isfile(candidate) and os.access(candidate, os.X_OK):
                 return Value.of(candidate)
+        if name == "ros2":
+            # ros2cli's command: ``ros2 launch`` is one of its verbs, so it is on the
+            # PATH of any launch (ouster-ros' ``$(find-exec ros2) lifecycle set ...``)
+            return Value.of(name)
         self.report("LAUNCH_UNKNOWN_VALUE", detail=f"executable {name} is not found on "
                     "the PATH of the configuration")
         return Value.unknown(f"find-exec {name}")
