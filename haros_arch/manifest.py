@@ -304,6 +304,26 @@ def ros_version(package: Package) -> int | None:
     return None
 
 
+def build_ros_version(package: Package) -> str:
+    """The ROS version ("1", "2") whose build system builds the package, where its
+    package.xml says one and only one: its build tools (``buildtool_depend`` catkin or
+    ament_*) and an ament ``<build_type>``, those whose REP 149 condition does not fail.
+    Empty when it names none, or both (a dual package's conditions over
+    ``$ROS_VERSION`` read with no ROS version given, ``builds_by_version``): the run's
+    ROS version decides then. colcon builds a catkin package with catkin, in a ROS 1
+    environment, and an ament one in a ROS 2 one: a dual package's
+    ``find_package(catkin QUIET)`` / ``if(catkin_FOUND)`` (ros_deep_learning's
+    CMakeLists.txt, whose package.xml is the ROS 1 one) follows the package.xml."""
+    if package.builds_by_version:
+        return ""
+    versions = {"1" if dep.name == "catkin" else "2" for dep in package.dependencies
+                if dep.active and dep.kind in ("buildtool_depend", "buildtool_export_depend")
+                and (dep.name == "catkin" or dep.name.startswith("ament_"))}
+    if package.build_type in ("ament_cmake", "ament_python"):
+        versions.add("2")
+    return versions.pop() if len(versions) == 1 else ""
+
+
 def _plugins(root: etree._Element, rel_folder: str,
              active: Callable[[etree._Element], bool] = lambda _: True) -> list[Plugin]:
     """``<export><host plugin="${prefix}/plugins.xml"/></export>``, in both manifests;

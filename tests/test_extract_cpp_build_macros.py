@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import os
 
+import pytest
 from conftest import package_xml
 
 from haros_arch.pipeline import Options, analyse
@@ -118,6 +119,15 @@ int main(int argc, char ** argv) {
 """
 
 
+DUAL_MANIFEST = (
+    '<buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>'
+    '<buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>'
+    '<depend condition="$ROS_VERSION == 2">rclcpp</depend>'
+    '<depend condition="$ROS_VERSION == 1">roscpp</depend><export>'
+    '<build_type condition="$ROS_VERSION == 1">catkin</build_type>'
+    '<build_type condition="$ROS_VERSION == 2">ament_cmake</build_type></export></package>')
+
+
 def test_calls_under_a_macro_in_a_header_of_the_package_make_the_node_partial(
         write_tree) -> None:
     """ros_deep_learning: its nodes call macros (ROS_DECLARE_PARAMETER) that ros_compat.h
@@ -126,8 +136,9 @@ def test_calls_under_a_macro_in_a_header_of_the_package_make_the_node_partial(
     (41 false warnings). The header, included through another one, is read for such
     blocks: said there, once, and the node is partial."""
     files = {
-        "src/drv/package.xml": package_xml("drv", "ament_cmake").replace(
-            "</package>", "<depend>rclcpp</depend></package>"),
+        # built by catkin or by ament as the ROS version chooses: catkin_FOUND follows
+        # the run's ROS version, which names none (test_package_xml_s_build_tool_...)
+        "src/drv/package.xml": package_xml("drv").replace("</package>", DUAL_MANIFEST),
         "src/drv/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(drv)\n"
                                   "find_package(catkin QUIET)\n"
                                   "if(catkin_FOUND)\n  add_definitions(-DBUILDING_ROS1)\n"
@@ -151,3 +162,64 @@ def test_calls_under_a_macro_in_a_header_of_the_package_make_the_node_partial(
     assert "declare_parameter" in said[0].message and "BUILDING_ROS2" in said[0].message
     rule = next(r for r in load_catalogue() if r.id == "parameter-set-not-read")
     assert [f.rule for f in run_rule(rule, model)] == ["parameter-set-not-read-undecided"]
+
+
+BOTH_NODE = """
+#ifdef BUILDING_ROS1
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+int main(int argc, char ** argv) {
+  ros::init(argc, argv, "driver");
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<std_msgs::String>("points1", 10);
+  ros::spin();
+}
+#else
+#include <memory>
+#include <rclcpp/rclcpp.hpp>
+#include <std_msgs/msg/string.hpp>
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("driver");
+  auto pub = node->create_publisher<std_msgs::msg::String>("points2", 10);
+  rclcpp::spin(node);
+}
+#endif
+"""
+
+
+@pytest.mark.parametrize(("manifest", "topics"), [
+    # ros_deep_learning: a catkin package.xml (format 1, buildtool catkin)
+    ("<buildtool_depend>catkin</buildtool_depend><depend>roscpp</depend></package>",
+     ["points1"]),
+    ("<buildtool_depend>ament_cmake</buildtool_depend><depend>rclcpp</depend>"
+     "<export><build_type>ament_cmake</build_type></export></package>", ["points2"]),
+    (DUAL_MANIFEST, None),  # both, by $ROS_VERSION: the run's version decides
+])
+def test_package_xml_s_build_tool_decides_catkin_found(write_tree, manifest, topics) -> None:
+    """ros_deep_learning's CMakeLists.txt picks ROS 1 or ROS 2 with ``find_package(catkin
+    QUIET)`` / ``if(catkin_FOUND)`` and defines the macro its sources test there; its
+    package.xml is the ROS 1 one, which colcon builds with catkin: with no ROS version
+    given, catkin_FOUND was undecided and the nodes partial (CPP_BUILD_MACRO). The
+    package.xml's build tool decides it when it names one only."""
+    root = write_tree({
+        "src/drv/package.xml": package_xml("drv").replace("</package>", manifest),
+        "src/drv/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(drv)\n"
+                                  "find_package(catkin QUIET)\n"
+                                  "if(catkin_FOUND)\n  add_definitions(-DBUILDING_ROS1)\n"
+                                  "else()\n  find_package(ament_cmake QUIET)\n"
+                                  "  if(ament_cmake_FOUND)\n"
+                                  "    add_definitions(-DBUILDING_ROS2)\n  endif()\n"
+                                  "endif()\nadd_executable(driver src/driver.cpp)\n",
+        "src/drv/src/driver.cpp": BOTH_NODE,
+        "project.yaml": "project: p\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    node = next(n for p in model.packages for n in p.nodes if n.executable == "driver")
+    said = [d for d in model.diagnostics if d.code == "CPP_BUILD_MACRO"]
+    if topics is None:
+        assert node.completeness == "partial" and said
+        return
+    assert node.completeness == "complete" and not said
+    assert [c.name for c in node.calls if c.kind == "publish"] == topics

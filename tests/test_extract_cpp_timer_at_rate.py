@@ -51,3 +51,51 @@ def test_a_timer_made_at_a_rate_is_no_error(write_tree) -> None:
     codes = [d.code for d in result.diagnostics]
     assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes
     assert "CPP_CALL_MISSED" not in codes
+
+
+PERIODS = """#include <ros/ros.h>
+#include <std_msgs/String.h>
+class Status {
+public:
+  void init() {
+    ros::WallDuration heartbeat;
+    double rate_d = 1.0;
+    if (nh_.getParam("conn/heartbeat_rate", rate_d) && rate_d != 0.0)
+      heartbeat = ros::WallDuration(ros::Rate(rate_d));
+    ros::Duration period(ros::Rate(5.0));
+    if (period > ros::Duration::ZERO && last_ != ros::Time::ZERO)
+      pub_ = nh_.advertise<std_msgs::String>("heartbeat", 10);
+  }
+  ros::NodeHandle nh_;
+  ros::Publisher pub_;
+  ros::Time last_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "status");
+  Status status;
+  status.init();
+  ros::spin();
+}
+"""
+
+
+def test_a_duration_of_a_rate_and_the_named_durations_are_no_error(write_tree) -> None:
+    """mavros' sys_status and sys_time plugins turn a rate into a period,
+    ``ros::WallDuration(ros::Rate(conn_heartbeat_d))`` (sys_status.cpp:456): rostime's
+    Duration and WallDuration have ``explicit ...(const Rate &)``, which the stand-in
+    lacked, so the plugin stopped there with an error near its calls and /mavros was
+    partial. rostime's named durations and times (``ros::Duration::ZERO``,
+    ``ros::Time::ZERO``) are there too."""
+    root = write_tree({
+        "st/package.xml": package_xml("st", "catkin"),
+        "st/CMakeLists.txt": (
+            "cmake_minimum_required(VERSION 3.0.2)\nproject(st)\n"
+            "find_package(catkin REQUIRED COMPONENTS roscpp)\ncatkin_package()\n"
+            "add_executable(status src/status.cpp)\n"),
+        "st/src/status.cpp": PERIODS})
+    result = extract_cpp([str(root / "st" / "src" / "status.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "conn/heartbeat_rate"), ("publish", "heartbeat")]
+    codes = [d.code for d in result.diagnostics]
+    assert "CPP_PARSE_ERROR" not in codes and "CPP_ERROR_NEAR_CALL" not in codes

@@ -467,3 +467,70 @@ def test_ros2_a_ros2cli_verb_uses_the_package_that_gives_it(write_tree):
     assert sorted(u.package for u in bag.package_uses) == ["ros2bag", "ros2service"]
     assert sorted(u.package for u in live.package_uses) == ["ros2service"]
     assert findings(model) == [("odom/launch/odometry.launch.py", 10, "ros2bag")]
+
+
+CHOSEN_LOADER = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription, OpaqueFunction
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration
+from launch_ros.substitutions import FindPackageShare
+
+
+def launch_setup(context, *args, **kwargs):
+    share = FindPackageShare([LaunchConfiguration('vehicle_model'), '_description']
+                             ).perform(context)
+    sensors = FindPackageShare([LaunchConfiguration('sensor_model'), '_description']
+                               ).perform(context)
+    return [IncludeLaunchDescription(PythonLaunchDescriptionSource(
+        [FindPackageShare('info'), '/launch/info.launch.py']),
+        launch_arguments={'file': [share, '/config/a.yaml'],
+                          'other': [sensors, '/b.yaml']}.items())]
+
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('sensor_model', default_value='kit'),
+                              OpaqueFunction(function=launch_setup)])
+"""
+
+
+def test_ros2_a_package_named_by_the_includers_configuration_is_undecided(write_tree):
+    """autoware_global_parameter_loader's global_params.launch.py asks for
+    ``FindPackageShare([LaunchConfiguration('vehicle_model'), '_description'])`` and
+    declares no vehicle_model: the file that includes it (test_default_adapi.launch.xml,
+    ``<arg name="vehicle_model" default="sample_vehicle"/>``) chooses the package, so
+    the loader's package.xml cannot name it: undecided, not a warning on the loader. A
+    configuration the file declares itself (sensor_model) or sets (``<let>``) is its own
+    choice: a finding, as before."""
+    root = write_tree({
+        "src/loader/package.xml": manifest("loader", ("exec_depend", "info"),
+                                           build_type="ament_cmake"),
+        "src/loader/CMakeLists.txt": "project(loader)\n",
+        "src/loader/launch/params.launch.py": CHOSEN_LOADER,
+        "src/loader/launch/own.launch.xml": (
+            '<launch>\n  <let name="vehicle_model" value="mine"/>\n'
+            '  <include file="$(find-pkg-share $(var vehicle_model)_description)/x.py"/>\n'
+            '</launch>\n'),
+        "src/info/package.xml": manifest("info", build_type="ament_cmake"),
+        "src/info/CMakeLists.txt": "project(info)\n",
+        "src/info/launch/info.launch.py": "from launch import LaunchDescription\n\n\n"
+                                          "def generate_launch_description():\n"
+                                          "    return LaunchDescription([])\n",
+        "src/api/package.xml": manifest("api", ("exec_depend", "loader"),
+                                        build_type="ament_cmake"),
+        "src/api/CMakeLists.txt": "project(api)\n",
+        "src/api/launch/test_api.launch.xml": (
+            '<launch>\n  <arg name="vehicle_model" default="sample_vehicle"/>\n'
+            '  <include file="$(find-pkg-share loader)/launch/params.launch.py"/>\n'
+            '  <include file="$(find-pkg-share loader)/launch/own.launch.xml"/>\n'
+            '</launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [api/launch/test_api.launch.xml]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("loader/launch/own.launch.xml", 3, "mine_description"),
+                               ("loader/launch/params.launch.py", 21, "kit_description")]
+    undecided = [f.message for f in run_rule(RULE, model) if f.rule.endswith(UNDECIDED)]
+    assert len(undecided) == 1 and "sample_vehicle_description" in undecided[0]
+    reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
+    assert findings(reloaded) == findings(model)
+    assert [u.chosen_by for c in reloaded.configurations for u in c.package_uses
+            if u.package == "sample_vehicle_description"] == ["vehicle_model"]

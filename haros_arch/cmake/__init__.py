@@ -19,6 +19,7 @@ from .. import diagnostics as diag
 from .. import plugins, pysetup
 from ..diagnostics import Diagnostic
 from ..files import kept_in, read_text
+from ..manifest import build_ros_version
 from ..model.location import Location
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
@@ -436,6 +437,7 @@ def _interpreter(package: Package, workspace: Workspace,
     interpreter = Interpreter(package.root, workspace.environment, reader, files.location)
     interpreter.build_depends = build_depends(package)
     interpreter.package_name, interpreter.package_version = package.name, package.version
+    interpreter.package_ros_version = build_ros_version(package)
 
     def catkin_project(name: str) -> bool:
         other = workspace.packages.get(name)

@@ -950,8 +950,11 @@ def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
     distribution's own is found (a dual package's ``find_package(catkin QUIET)`` then
     ``if(catkin_FOUND)``; Hesai's driver, ``find_package(rclcpp QUIET)`` then
     ``if(rclcpp_FOUND) add_definitions(-DROS2_FOUND)``); catkin and roscpp are not in a
-    ROS 2 one, rclcpp in no ROS 1 one. None where that is not known."""
-    version = it.environment.get("ROS_VERSION", "").strip()
+    ROS 2 one, rclcpp in no ROS 1 one. A run that names no ROS version takes the one
+    whose build system the package.xml names, when it names one only
+    (``Interpreter.package_ros_version``: ros_deep_learning's catkin package.xml over its
+    ``find_package(catkin QUIET)`` / ``if(catkin_FOUND)``). None where that is not known."""
+    version = it.environment.get("ROS_VERSION", "").strip() or it.package_ros_version
     tool = _BUILD_TOOLS.get(name)
     if tool is None or version not in ("1", "2"):
         return None

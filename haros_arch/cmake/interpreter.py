@@ -161,6 +161,10 @@ class Interpreter:
         # ``<name>_VERSION``; and whether the parse was read (each runs once)
         self.package_name = ""
         self.package_version = ""
+        # the ROS version whose build system builds this package, as its package.xml
+        # says (``manifest.build_ros_version``; empty when it does not say one): what a
+        # ``<tool>_FOUND`` follows when the run names no ROS version
+        self.package_ros_version = ""
         self.package_xml_read = False
         # whether ``find_package(name)`` finds a catkin project (catkin_simple takes
         # only those of the build dependencies as catkin's components): not one the

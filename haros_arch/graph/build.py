@@ -544,8 +544,10 @@ def package_uses(launch: LaunchModel, workspace: Workspace,
             tests[file] = _test_file(file, workspace)
         test = use.test or tests[file]
         key = (file, use.package, test)
-        if key not in found or (found[key].guard is not None and use.guard is None):
-            found[key] = replace(use, test=test)  # one not under an install check wins
+        if key not in found or (found[key].guard is not None and use.guard is None) or (
+                found[key].chosen_by and not use.chosen_by and use.guard is None):
+            # one not under an install check wins, and one whose name the file chose
+            found[key] = replace(use, test=test)
     return list(found.values())
 
 

@@ -150,6 +150,10 @@ class PackageUse:
     # (or ``has_resource('packages', 'G')``): G, the package whose installation the file
     # checks before it uses this one, so it runs without them
     guard: str | None = field(default=None, metadata=OPTIONAL)
+    # the launch configurations (comma-separated) the package's name is made of that
+    # the launch file itself neither declares nor sets: their values are the choice of
+    # the file that includes it, so which package this file uses is not its own
+    chosen_by: str = field(default="", metadata=OPTIONAL)
 
     @property
     def user(self) -> str | None:
@@ -198,9 +202,11 @@ def use_from_data(data: Any) -> PackageUse | None:
     if not isinstance(data, dict) or not isinstance(data.get("package"), str):
         return None
     guard = data.get("guard")
+    chosen = data.get("chosen_by")
     return PackageUse(data["package"], _location(data.get("location")),
                       str(data.get("kind", "file")), bool(data.get("test", False)),
-                      guard if isinstance(guard, str) else None)
+                      guard if isinstance(guard, str) else None,
+                      chosen if isinstance(chosen, str) else "")
 
 
 MAX_CHILDREN = 5_000

@@ -22,7 +22,10 @@ changed between releases). ros2 service call (ros2cli ``ros2service/verb/call.py
 takes the service and its type, both required, optional YAML values or ``--stdin``, and
 ``-r`` / ``--rate`` with a value; ``requester`` makes the node
 ``_ros2cli_requester_<package>_<Service>`` of the type's words and a client of the
-service with that type.
+service with that type. ros2 lifecycle set (ros2cli ``ros2lifecycle/verb/set.py`` and
+``api/__init__.py``) takes the node's name and the transition; when a running node has
+that full name it calls ``<node>/get_available_transitions`` and ``<node>/change_state``
+(else it prints "Node not found" and calls nothing).
 
 topic_tools (ros_comm ``tools/topic_tools/src``, noetic-devel): ``relay IN [OUT]``
 subscribes IN and advertises OUT (default ``IN_relay``), reading ``~unreliable``,
@@ -125,6 +128,8 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _ros2_topic(decl, words[1:])
     if decl.executable == "ros2" and words[:2] == ["service", "call"]:
         return _ros2_service(decl, words[2:])
+    if decl.executable == "ros2" and words[:2] == ["lifecycle", "set"]:
+        return _ros2_lifecycle_set(decl, words[2:])
     if decl.executable == "ros2" and words[:2] == ["control", "load_controller"]:
         return _ros2_control_load(decl)
     if decl.package == "topic_tools" and decl.ros_version == 1:
@@ -531,6 +536,29 @@ def _ros2_service(decl: NodeDecl, words: list[str]) -> Node | None:
     call = PrimitiveCall("client", positional[0], type_, location=decl.location,
                          origin="arguments")
     return _node(decl, decl.package or "ros2service", call, "python")
+
+
+# ros2lifecycle's ``set`` options that take a value (ros2cli's NodeStrategy arguments)
+_LIFECYCLE_VALUES = {"--spin-time"}
+
+
+def _ros2_lifecycle_set(decl: NodeDecl, words: list[str]) -> Node | None:
+    """``ros2 lifecycle set NODE TRANSITION``: when NODE is a running node's full name,
+    a client of ``NODE/get_available_transitions`` (lifecycle_msgs GetAvailableTransitions)
+    and of ``NODE/change_state`` (ChangeState); None when argparse would refuse the
+    words (both are required)."""
+    positional, _values, _flags = split_options(words, _LIFECYCLE_VALUES)
+    if len(positional) < 2:
+        return None
+    node = positional[0] if positional[0].startswith("/") else "/" + positional[0]
+    calls = [PrimitiveCall("client", f"{node.rstrip('/')}/{service}",
+                           f"lifecycle_msgs/srv/{kind}", location=decl.location,
+                           origin="arguments")
+             for service, kind in (("get_available_transitions", "GetAvailableTransitions"),
+                                   ("change_state", "ChangeState"))]
+    made = _node(decl, decl.package or "ros2lifecycle", calls[0], "python")
+    made.calls = calls
+    return made
 
 
 def _node(decl: NodeDecl, package: str, call: PrimitiveCall, language: Any) -> Node:

@@ -16,7 +16,7 @@ from .. import manifest
 from ..model import rosname
 from ..model.conditions import Condition, after_exit, exclusive, same_conditions
 from ..model.conditions import undecided as undecided_of
-from ..model.runtime import Link, NodeInstance, Parameter, Resource
+from ..model.runtime import Configuration, Link, NodeInstance, Parameter, Resource
 from ..model.source import Package
 from ..model.values import UNKNOWN_MARK
 from ..plugins.hosts import TRANSPORTS
@@ -355,16 +355,35 @@ _OWN_SERVICES = frozenset({
     "get_transition_graph", "get_loggers", "set_logger_level"})
 
 
-def is_own_service(charge: Charge, name: Any) -> bool:
+# the services a lifecycle node offers by itself (rclcpp_lifecycle's and rclpy's
+# LifecycleNode): a node of that name must run to offer them
+_LIFECYCLE_SERVICES = frozenset({"change_state", "get_state", "get_available_states",
+                                 "get_available_transitions", "get_transition_graph"})
+
+
+def is_own_service(charge: Charge, name: Any, config: Any = None) -> bool:
     """True for a service name that every node (or every lifecycle node, or
-    dynamic_reconfigure server) offers by itself: its last segment is one of them."""
+    dynamic_reconfigure server) offers by itself: its last segment is one of them.
+    With ``config``, a lifecycle service only where a node of its prefix's name runs
+    there (or one whose name is not known statically): ouster-ros' ``ros2 lifecycle set
+    /ouster/os_sensor configure`` calls ``/ouster/os_sensor/change_state``, and no node
+    of that name runs (its driver is /ouster/os_driver)."""
     if not isinstance(name, str):
         return False
     charge(1)
-    return name.rsplit("/", 1)[-1] in _OWN_SERVICES
+    prefix, _, last = name.rpartition("/")
+    if last not in _OWN_SERVICES:
+        return False
+    if not isinstance(config, Configuration) or last not in _LIFECYCLE_SERVICES:
+        return True
+    charge(len(config.nodes))
+    owner = prefix or "/"
+    return any(node.name == owner or (UNKNOWN_MARK in node.name and re.match(
+        rosname.pattern_for(node.name), owner) is not None) for node in config.nodes)
 
 
-FUNCTIONS["is_own_service"] = Function("is_own_service", is_own_service, charged=True)
+FUNCTIONS["is_own_service"] = Function("is_own_service", is_own_service, 1, 2,
+                                       charged=True)
 
 
 # checks that claim an absence, and similar-name pairing through an index (absence.py)

@@ -404,8 +404,10 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
     (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``), ``ros2
     topic pub ...`` (a publisher that ``models.commands`` reads from its arguments,
     named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``),
-    ``ros2 service call ...`` (a client, named after the service type) or ``ros2
-    control load_controller ...`` (its DirectNode, which loads a controller);
+    ``ros2 service call ...`` (a client, named after the service type), ``ros2
+    lifecycle set NODE TRANSITION`` (its DirectNode, a client of NODE's lifecycle
+    services) or ``ros2 control load_controller ...`` (its DirectNode, which loads a
+    controller);
     None for any other process (a simulator, xacro), or when those words are not known.
     """
     def plain(word: Text) -> str | None:
@@ -430,6 +432,11 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
         # the service type's words (``verb/call.py``, ``requester``) calls the service
         return NodeAction(("ros2service",), ("ros2",), _requester_name(words[3:]),
                           arguments=list(words[1:]))
+    if head[1:] == ["lifecycle", "set"]:
+        # ros2lifecycle's set verb: its DirectNode (``_ros2cli_<pid>``) calls the named
+        # node's lifecycle services (``models.commands``)
+        name = ("_ros2cli_", Opaque("the process id of ros2 lifecycle", report=False))
+        return NodeAction(("ros2lifecycle",), ("ros2",), name, arguments=list(words[1:]))
     if head[1:] == ["control", "load_controller"]:
         # ros2controlcli's verb: its DirectNode (``_ros2cli_<pid>``) asks the controller
         # manager to load the controller (``models.commands``; the graph attaches the

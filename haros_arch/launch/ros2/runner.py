@@ -103,6 +103,10 @@ class IncludeFrame:
     declared: set[str] = field(default_factory=set)
     read: set[str] = field(default_factory=set)
     hidden: str = ""
+    # what the include's file itself (not the files it includes) declares or sets of
+    # the launch configurations (``config_own``): a configuration it reads and does
+    # not hold is the choice of the files around it
+    own: set[str] = field(default_factory=set)
 
     def use(self, name: str) -> tuple[ArgUse, str]:
         """How the include's file uses an argument it is passed, and what was not seen
@@ -258,6 +262,41 @@ class Runner:
     def config_declared(self, name: str) -> None:
         for frame in self.includes:
             frame.declared.add(name)
+        self.config_own(name)
+
+    def config_own(self, name: str) -> None:
+        """The file being performed declares or sets the launch configuration ``name``
+        (``DeclareLaunchArgument``, ``<let>``, a group's configurations)."""
+        if self.includes:
+            self.includes[-1].own.add(name)
+
+    def chosen_by(self, text: e.Text) -> str:
+        """The launch configurations ``text`` reads (by names known statically) that the
+        included file being performed neither declares nor sets, comma-separated: their
+        values come from the files that include it (autoware_global_parameter_loader's
+        ``FindPackageShare([LaunchConfiguration('vehicle_model'), '_description'])``,
+        ``vehicle_model`` given by the launch file that includes it). Empty in the file
+        the configuration starts (its configurations are the command line's)."""
+        if not self.includes:
+            return ""
+        own = self.includes[-1].own
+        names: list[str] = []
+        stack: list[tuple[Any, int]] = [(text, 0)]
+        seen = 0
+        while stack and seen < MAX_SKIPPED_VISITS:
+            value, depth = stack.pop()
+            seen += 1
+            if depth > MAX_SKIPPED_DEPTH:
+                continue
+            if isinstance(value, e.Var) and all(isinstance(p, str) for p in value.name):
+                name = recording.written(value.name)
+                if name not in own and name not in names:
+                    names.append(name)
+            if isinstance(value, (list, tuple)):
+                stack.extend((item, depth + 1) for item in value)
+            elif is_dataclass(value) and not isinstance(value, type):
+                stack.extend((getattr(value, f.name), depth + 1) for f in fields(value))
+        return ", ".join(sorted(names))
 
     def hidden(self, what: diag.Diagnostic | str, where: Location | None = None) -> None:
         """Part of the includes being performed is not seen (``what``: the diagnostic that
@@ -272,11 +311,13 @@ class Runner:
                 frame.hidden = text
 
     def uses(self, package: str, location: Location,
-             conditions: tuple[Condition, ...] = ()) -> None:
+             conditions: tuple[Condition, ...] = (), chosen_by: str = "") -> None:
         """A substitution asked for the folder of ``package`` (``?`` for parts not known),
-        under ``conditions`` (a Python test of whether a package is installed, maybe)."""
+        under ``conditions`` (a Python test of whether a package is installed, maybe);
+        ``chosen_by``: the launch configurations of its name the file does not hold."""
         self.model.package_uses.append(PackageUse(package, location, guard=installed_check(
-            c.text for c in conditions if c.kind == "launch" and c.statement == "if")))
+            c.text for c in conditions if c.kind == "launch" and c.statement == "if"),
+            chosen_by=chosen_by))
 
     def evaluator(self, scope: Scope, location: Location) -> Evaluator:
         return Evaluator(self, scope, location)
@@ -502,6 +543,7 @@ class Runner:
         name = self.value(action.name, scope, action.location)
         if name is None or name.literal is None:
             return
+        self.config_own(name.literal)
         scope.configs[name.literal] = self.value(action.value, scope, action.location)
 
     def do_Group(self, action: e.Group, scope: Scope) -> None:
@@ -515,6 +557,7 @@ class Runner:
         for key, val in action.configs:
             name = self.value(key, scope, action.location)
             if name is not None and name.literal is not None:
+                self.config_own(name.literal)
                 inner.configs[name.literal] = self.value(val, scope, action.location)
         self.run(action.actions, inner)
 

@@ -332,7 +332,7 @@ class Evaluator:
     def s_FindPackage(self, s: e.FindPackage) -> Value:
         name = self.known(s.package)
         self.runner.uses(self.value(s.package).text, self.location,
-                         self.scope.conditions)
+                         self.scope.conditions, self.runner.chosen_by(s.package))
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
@@ -371,6 +371,10 @@ class Evaluator:
             candidate = os.path.join(folder, name)
             if folder and os.path.isfile(candidate) and os.access(candidate, os.X_OK):
                 return Value.of(candidate)
+        if name == "ros2":
+            # ros2cli's command: ``ros2 launch`` is one of its verbs, so it is on the
+            # PATH of any launch (ouster-ros' ``$(find-exec ros2) lifecycle set ...``)
+            return Value.of(name)
         self.report("LAUNCH_UNKNOWN_VALUE", detail=f"executable {name} is not found on "
                     "the PATH of the configuration")
         return Value.unknown(f"find-exec {name}")
@@ -379,7 +383,7 @@ class Evaluator:
         """``$(exec-in-pkg)``: ``<prefix>/lib/<pkg>/<exe>`` when the package installs it."""
         package = self.known(package_text)
         self.runner.uses(self.value(package_text).text, self.location,
-                         self.scope.conditions)
+                         self.scope.conditions, self.runner.chosen_by(package_text))
         if package is None:
             return Value.unknown("package with an unknown name")
         workspace = self.runner.workspace

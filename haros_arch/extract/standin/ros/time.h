@@ -5,12 +5,16 @@
 // as rostime declares them: the conversions below return boost's types
 namespace boost { namespace posix_time { struct ptime; struct time_duration; } }
 namespace ros {
+class Rate;
 class Duration {
 public:
   int32_t sec, nsec;
   Duration();
   explicit Duration(double t);
   Duration(int32_t s, int32_t n);
+  explicit Duration(const Rate& r);  // one cycle of the rate (mavros' WallDuration(Rate(f)))
+  static const Duration MIN, MAX, ZERO, DAY, HOUR, MINUTE, SECOND, MILLISECOND,
+      MICROSECOND, NANOSECOND;
   Duration& fromSec(double t);
   Duration& fromNSec(int64_t t);
   double toSec() const;
@@ -67,6 +71,7 @@ public:
   bool operator!=(const Time& rhs) const;
   Time& operator+=(const Duration& rhs);
   Time& operator-=(const Duration& rhs);
+  static const Time MIN, MAX, ZERO, UNINITIALIZED;
 };
 typedef Time WallTime;
 typedef Time SteadyTime;  // rostime's monotonic clock (Melodic and Noetic)
