@@ -1069,8 +1069,9 @@ CATALOGUE: dict[str, Entry] = {
         "info", "interface models of distribution {distro} ({why})",
         "Nodes of packages without source in the workspace take the interface model of "
         "this ROS distribution: the project file's 'distro', else ROS_DISTRO in the "
-        "configuration's environment, else noetic for ROS 1 launch files and, for ROS 2 "
-        "ones, the distribution the workspace's own files name (its git branch, its "
+        "configuration's environment when it is a distribution of the launch files' ROS "
+        "(a ROS 2 one runs no ROS 1 launch file), else noetic for ROS 1 launch files "
+        "and, for ROS 2 ones, the distribution the workspace's own files name (its git branch, its "
         "build and CI files, its README's 'ROS 2 <name>'), else jazzy. humble and iron "
         "take jazzy's model of a package they have none of; another distribution of a "
         "known ROS (melodic, foxy, rolling, ...) takes the "

@@ -406,3 +406,24 @@ def test_service_client_of_nav2_util_is_a_client(tmp_path) -> None:
     assert [(c.kind, c.name, c.type, c.location.line) for c in result.calls] == [
         ("client", "/driver/arm", "std_srvs/srv/SetBool", 10),
         ("client", "reset", "std_srvs/srv/Trigger", 12)]
+
+
+def test_line_iterator_of_nav2_util(tmp_path) -> None:
+    """neo_local_planner2 walks a costmap's cells with ``nav2_util::LineIterator``
+    (nav2_util/line_iterator.hpp, no ROS call): it was no class of the stand-in, five
+    parse errors in the planner's unit."""
+    result = _extract(tmp_path, """\
+#include <utility>
+#include <vector>
+#include "nav2_util/line_iterator.hpp"
+std::vector<std::pair<int, int>> cells(int x0, int y0, int x1, int y1) {
+  std::vector<std::pair<int, int>> found;
+  for (nav2_util::LineIterator line(x0, y0, x1, y1); line.isValid(); line.advance()) {
+    found.push_back(std::make_pair(line.getX(), line.getY()));
+  }
+  nav2_util::LineIterator last(x0, y0, x1, y1);
+  found.push_back({last.getX0() + last.getX1(), last.getY0() + last.getY1()});
+  return found;
+}
+""")
+    assert _unclean(result) == []

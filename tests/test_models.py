@@ -908,3 +908,24 @@ def test_a_ros1_trajectory_controller_takes_the_joint_trajectory_controller_mode
             ("action-server", "/arm_controller/follow_joint_trajectory"),
             ("server", "/arm_controller/query_state")} <= links
     assert not [d for d in config.diagnostics if d.code == "PLUGIN_NOT_FOUND"]
+
+
+def test_a_ros1_launch_file_takes_ros1_models_whatever_a_ros2_distro_says():
+    """A ROS 1 launch file runs under roslaunch, of a ROS 1 distribution: a ROS_DISTRO
+    of ROS 2 in the environment (elevation_mapping_cupy's ros2 branch keeps catkin
+    packages and their .launch files beside the ported ones, checked with humble's) is
+    not the one its nodes run in. humble's models gave its tf2_ros
+    static_transform_publisher ``tf2_msgs/msg/TFMessage`` on /tf_static, which the ROS 1
+    nodes subscribe as ``tf2_msgs/TFMessage``: a false topic-type-mismatch."""
+    ros1 = LaunchModel(nodes=[NodeDecl("/a", "p", "a")])
+    ros2 = LaunchModel(nodes=[NodeDecl("/a", "p", "a", ros_version=2)])
+    distro, why = choose_distro(None, {"ROS_DISTRO": "humble"}, ros1)
+    assert distro == "noetic" and "ROS_DISTRO humble" in why and "ROS 2" in why
+    assert choose_distro(None, {"ROS_DISTRO": "noetic"}, ros2)[0] == "jazzy"
+    assert choose_distro(None, {"ROS_DISTRO": "humble"}, ros2)[0] == "humble"
+    assert choose_distro(None, {"ROS_DISTRO": "mydistro"}, ros1)[0] == "mydistro"
+    _model, config = _analyse(env={"ROS_PACKAGE_PATH": INSTALLED, "ROS_DISTRO": "humble"})
+    amcl = _instance(config, "/amcl")
+    assert amcl.completeness == "model" and amcl.node.model.startswith("noetic/amcl ")
+    (chosen,) = [d for d in config.diagnostics if d.code == "MODEL_DISTRO"]
+    assert "noetic" in chosen.message and "humble" in chosen.message

@@ -8,17 +8,17 @@ is used by the graph exactly like an extracted node: its completeness is ``model
 and its version, and every link made from it has ``origin: "model"``.
 
 The distribution is the project file's ``distro:``, else ``ROS_DISTRO`` in the
-configuration's environment, else guessed from its launch files (ROS 1: noetic, ROS 2:
-jazzy); humble and iron take jazzy's model of a package they have none of (models for
-them are made only where their packages differ: humble's ship for 50 packages, iron's for
-none). Another distribution of a known ROS (melodic, kinetic; foxy, kilted, rolling)
-takes the model of the nearest release of its ROS that has one (noetic's for a ROS 1
-one), as evidence of what its node does, not of what it lacks: such a node is
-``partial`` (its release may read or name what that model's does not), so checks that
-claim something absent do not decide on it. A ``MODEL_DISTRO`` diagnostic says
-which, and ``MODEL_USED`` which model each node took (its label starts with the
-distribution it is for), and under which name when the launch file starts it by
-another name its releases install (``Node.aliases``).
+configuration's environment when it is of the ROS of its launch files, else guessed from
+its launch files (ROS 1: noetic, ROS 2: jazzy); humble and iron take jazzy's model of a
+package they have none of (models for them are made only where their packages differ:
+humble's ship for 50 packages, iron's for none). Another distribution of a known ROS
+(melodic, kinetic; foxy, kilted, rolling) takes the model of the nearest release of its
+ROS that has one (noetic's for a ROS 1 one), as evidence of what its node does, not of
+what it lacks: such a node is ``partial`` (its release may read or name what that
+model's does not), so checks that claim something absent do not decide on it. A
+``MODEL_DISTRO`` diagnostic says which, and ``MODEL_USED`` which model each node took
+(its label starts with the distribution it is for), and under which name when the launch
+file starts it by another name its releases install (``Node.aliases``).
 """
 
 from __future__ import annotations
@@ -67,16 +67,32 @@ def choose_distro(setting: str | None, environment: Mapping[str, str],
                   launch: LaunchModel, guessed: tuple[str, str] | None = None
                   ) -> tuple[str, str]:
     """The distribution whose models a configuration uses, and why that one: the
-    project file's, the environment's, for ROS 2 launch files the one the workspace's
-    own files name (``guessed``: ``distro_guess``), else the default of their ROS."""
+    project file's, the environment's when it is one of the ROS of the launch files (or
+    of no ROS known), for ROS 2 launch files the one the workspace's own files name
+    (``guessed``: ``distro_guess``), else the default of their ROS."""
     if setting:
         return setting, "the project file's 'distro'"
-    if environment.get("ROS_DISTRO"):
-        return environment["ROS_DISTRO"], "ROS_DISTRO in the configuration's environment"
     version = 2 if any(d.ros_version == 2 for d in launch.nodes) else 1
-    if version == 2 and guessed is not None:
+    environment_distro = environment.get("ROS_DISTRO")
+    other = ""
+    if environment_distro:
+        ros = ros_of(environment_distro)
+        if ros is None or ros == version:
+            return environment_distro, "ROS_DISTRO in the configuration's environment"
+        # a ROS 2 distribution's environment runs no roslaunch, a ROS 1 one no ros2
+        # launch: the launch files say which ROS their nodes are of (a tree in the middle
+        # of its port keeps ROS 1 launch files beside the ROS 2 ones)
+        other = (f"; ROS_DISTRO {environment_distro} in the configuration's environment "
+                 f"is a ROS {ros} distribution")
+    if version == 2 and guessed is not None and not other:
         return guessed
-    return DEFAULT_DISTRO[version], f"guessed: its launch files are ROS {version}"
+    return DEFAULT_DISTRO[version], f"guessed: its launch files are ROS {version}{other}"
+
+
+def ros_of(distro: str) -> int | None:
+    """1 or 2: the ROS ``distro`` is a distribution of (``RELEASES``), None for a name
+    of neither."""
+    return next((n for n, releases in enumerate(RELEASES, 1) if distro in releases), None)
 
 
 class Attacher:

@@ -205,14 +205,26 @@ def _action_impl_parts(name: str) -> list[str]:
                                          (f"{name}_Feedback", "feedback")])):
         lines += [f"struct {struct} {{", f"  {struct}();"]
         lines += [f"  {cpp} {field};" for cpp, field in fields]
-        lines += [f"  using SharedPtr = std::shared_ptr<{struct}>;",
-                  f"  using ConstSharedPtr = std::shared_ptr<const {struct}>;",
-                  f"  using UniquePtr = std::unique_ptr<{struct}>;", "};"]
+        lines += [*_pointer_types(struct), "};"]
     for service in ("SendGoal", "GetResult"):
         lines += [f"struct {name}_{service} {{",
                   f"  using Request = {name}_{service}_Request;",
                   f"  using Response = {name}_{service}_Response;", "};"]
     return lines
+
+
+def _pointer_types(name: str) -> list[str]:
+    """The pointer types rosidl_generator_cpp gives a struct, with ROS 1's ``Ptr`` and
+    ``ConstPtr`` it keeps (deprecated) for code ported from ROS 1."""
+    return [f"  using RawPtr = {name} *;", f"  using ConstRawPtr = const {name} *;",
+            f"  using SharedPtr = std::shared_ptr<{name}>;",
+            f"  using ConstSharedPtr = std::shared_ptr<const {name}>;",
+            f"  using UniquePtr = std::unique_ptr<{name}>;",
+            f"  using ConstUniquePtr = std::unique_ptr<const {name}>;",
+            f"  using WeakPtr = std::weak_ptr<{name}>;",
+            f"  using ConstWeakPtr = std::weak_ptr<const {name}>;",
+            f"  typedef std::shared_ptr<{name}> Ptr;",
+            f"  typedef std::shared_ptr<const {name}> ConstPtr;"]
 
 
 def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
@@ -244,10 +256,7 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
         lines.append("  uint8_t structure_needs_at_least_one_member;")
     lines += [f"  bool operator==(const {name}& other) const;",
               f"  bool operator!=(const {name}& other) const;",
-              f"  using SharedPtr = std::shared_ptr<{name}>;",
-              f"  using ConstSharedPtr = std::shared_ptr<const {name}>;",
-              f"  using UniquePtr = std::unique_ptr<{name}>;",
-              f"  using WeakPtr = std::weak_ptr<{name}>;", "};",
+              *_pointer_types(name), "};",
               # rosidl's YAML of a message, beside it (``RCLCPP_INFO_STREAM(logger,
               # geometry_msgs::msg::to_yaml(pose))``)
               f"std::string to_yaml(const {name}& msg, bool use_flow_style = false);",

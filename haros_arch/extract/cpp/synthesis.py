@@ -386,8 +386,9 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
         return "size" if kind == "constant" else kind
     if _CONSTEXPR.search(statement):
         return kind
-    if window[-1:] in (b"<", b",") and _CONSTANT.fullmatch(name) and _template_argument(
-            window) and _TYPE_FIRST.search(window) is None:
+    argument = _value_start(window)
+    if argument[-1:] in (b"<", b",") and _CONSTANT.fullmatch(name) and _template_argument(
+            argument) and _TYPE_FIRST.search(argument) is None:
         # a template's argument in capitals (``std::array<std::string,
         # KUKA::FRI::LBRState::NUMBER_OF_JOINTS>``, the robot SDK's header missing): a
         # non-type argument needs a constant, as an array's bound does, and is often a
@@ -397,6 +398,21 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
     if labels and b":" not in statement[labels[-1].end():].replace(b"::", b""):
         return kind  # in the label's expression, up to its colon
     return kind if _in_enum_body(text, offset) else None
+
+
+# what may come between a template argument's start and a constant in it: a cast
+# (``static_cast<int>(``), a parenthesis, an integer and an arithmetic operator (``3 *``)
+_VALUE_PREFIX = re.compile(rb"(?:\bstatic_cast\s*<[^<>;{}()]*>\s*\(|\(|\b\d+[uUlL]*\s*[-+*])\s*$")
+
+
+def _value_start(window: bytes) -> bytes:
+    """``window`` (the text before a name) without the casts, parentheses and products
+    by an integer the name is written in (``_VALUE_PREFIX``): nao_lola's ``std::array<float,
+    3 * static_cast<int>(Leds::NUM_LEDS)>`` is a template's argument as ``<float, N>``."""
+    window = window.rstrip()
+    while (found := _VALUE_PREFIX.search(window)) is not None:
+        window = window[:found.start()].rstrip()
+    return window
 
 
 # the standard's templates whose first argument is a type, right before a name: the name

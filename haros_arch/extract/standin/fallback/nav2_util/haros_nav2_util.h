@@ -143,6 +143,20 @@ Iter first_after_integrated_distance(Iter begin, Iter end, Getter getCompareVal)
 double calculate_path_length(const nav_msgs::msg::Path& path, size_t start_index = 0);
 }  // namespace geometry_utils
 
+// line_iterator.hpp: the cells of a line between two cells (no ROS call)
+class LineIterator {
+public:
+  LineIterator(int x0, int y0, int x1, int y1);
+  bool isValid() const;
+  void advance();
+  int getX() const;
+  int getY() const;
+  int getX0() const;
+  int getY0() const;
+  int getX1() const;
+  int getY1() const;
+};
+
 // node_thread.hpp: spins the node it is given (no ROS call)
 class NodeThread {
 public:
