@@ -84,27 +84,32 @@ int main(int argc, char** argv) {
 }
 """
 
-# a variable getopt's loop sets that another function writes too: not known
+# a variable getopt's loop sets that another function writes too: not known; a
+# std::string built empty and set from optarg: the option, unknown when not given
 ELSEWHERE = """#include <ros/ros.h>
 #include <std_msgs/String.h>
 #include <unistd.h>
+#include <string>
 
 char* g_topic = NULL;
+std::string g_frame;
 
 void fallback() { g_topic = (char*)"other"; }
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "elsewhere");
   int c;
-  while ((c = getopt(argc, argv, "t:")) != -1) {
+  while ((c = getopt(argc, argv, "t:f:")) != -1) {
     switch (c) {
       case 't': g_topic = optarg; break;
+      case 'f': g_frame = optarg; break;
       default: return 1;
     }
   }
   fallback();
   ros::NodeHandle n;
   ros::Publisher pub = n.advertise<std_msgs::String>(g_topic, 1);
+  ros::Publisher frame = n.advertise<std_msgs::String>(g_frame + "/frame", 1);
   return 0;
 }
 """
@@ -120,7 +125,8 @@ LAUNCH = """<launch>
   <node pkg="opt" type="loop" name="neither"/>
   <node pkg="opt" type="loop" name="unknown" args="-q -r desc"/>
   <node pkg="opt" type="loop" name="ended" args="-- -r desc"/>
-  <node pkg="opt" type="elsewhere" name="elsewhere" args="-t e"/>
+  <node pkg="opt" type="elsewhere" name="elsewhere" args="-t e -f base"/>
+  <node pkg="opt" type="elsewhere" name="no_frame"/>
 </launch>
 """
 
@@ -151,7 +157,8 @@ def test_the_extractor_marks_names_of_getopt_options(write_tree) -> None:
         ("read", "?", "-x --xml", SPEC, None, True),
         ("publish", "?", "-t --topic", SPEC, "chatter", False)}
     other = extract_cpp([str(root / "src/opt/src/elsewhere.cpp")], ws, cache_dir=None)
-    assert [(c.name, c.name_option) for c in other.calls] == [("?", None)]
+    assert [(c.name, c.name_option, c.name_getopt) for c in other.calls] == [
+        ("?", None, None), ("?/frame", "-f", "t:f:")]
 
 
 def test_the_graph_names_them_with_the_launch_arguments(write_tree) -> None:
@@ -179,7 +186,8 @@ def test_the_graph_names_them_with_the_launch_arguments(write_tree) -> None:
         # after --, no option
         ("/ended", "publish", "/chatter"),
         # written elsewhere too: unknown
-        ("/elsewhere", "publish", "?"),
+        ("/elsewhere", "publish", "?"), ("/elsewhere", "publish", "/base/frame"),
+        ("/no_frame", "publish", "?"), ("/no_frame", "publish", "?/frame"),
     }
 
 

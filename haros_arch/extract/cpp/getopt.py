@@ -24,7 +24,7 @@ import re
 from clang.cindex import Cursor, CursorKind, TypeKind
 
 from .expressions import initializer, strip, written_arguments
-from .writes import by_operator, out_argument, writes_of
+from .writes import by_operator, default_constructed, out_argument, writes_of
 
 GETOPT = frozenset({"getopt", "getopt_long", "getopt_long_only"})
 _NULLS = (CursorKind.CXX_NULL_PTR_LITERAL_EXPR, CursorKind.GNU_NULL_EXPR)
@@ -315,7 +315,7 @@ def option_held(read: Cursor, decl: Cursor, source: dict[str, bytes]
         return None  # read before the options are
     if decl.kind == CursorKind.VAR_DECL and last < 0:
         made = initializer(decl)
-        if made is not None:
+        if made is not None and not default_constructed(made):  # (``std::string s;``)
             default = _text(made)
             if default is None and not _null(made):
                 return None
