@@ -217,5 +217,9 @@ def test_getopt_rules_on_the_words_alone() -> None:
     assert value("extra -r a", spec="+" + SPEC) is None  # ...not with a leading +
     assert value("--rosparam=a", spec="sx:r:t: --?") is None  # long table not read
     assert value("$(arg x) -r a") is None  # arguments not known statically
+    # long options only (an empty optstring), and a model file's empty options
+    assert value("--rosparam a", spec=" rosparam:") == "a"
+    assert value("-r a", spec=" rosparam:") is None
+    assert value("-r a", spec="") is None
     # ROS 2: getopt also reads launch_ros' --ros-args words, not told here
     assert value("-r a", ros_version=2) is None

@@ -525,7 +525,8 @@ def getopt_option(instance: NodeInstance, flags: str, spec: str,
     names = flags.split()
     shorts = {name[1] for name in names if len(name) == 2 and name[0] == "-"}
     longs = {name[2:] for name in names if name.startswith("--")}
-    optstring, *table = spec.split()
+    optstring, *table = spec.split(" ")  # (an optstring may be empty: long options only)
+    table = [entry for entry in table if entry]
     in_order = optstring.startswith("+")
     letters = optstring.lstrip("+-:")
     takes: dict[str, int] = {}  # option -> 0 none, 1 required, 2 optional argument
