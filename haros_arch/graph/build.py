@@ -63,9 +63,11 @@ from ..rosrun import find_executable
 from ..workspace import Workspace, installed_roots
 from .actions import action_links
 from .conditions import (
+    NOT_GIVEN,
     decide,
     decide_links,
     drop_links,
+    getopt_option,
     program_argument,
     program_option,
     program_views,
@@ -344,6 +346,15 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
         if call.argument or call.resolved:
             # a command-line word the code reads, a name roscpp resolves for it: no
             # ROS resource
+            continue
+        if call.name_option_null and call.name_getopt is not None and (
+            call.name_option is not None and UNKNOWN_MARK in call.name
+            and getopt_option(instance, call.name_option, call.name_getopt,
+                              NOT_GIVEN) == NOT_GIVEN
+        ):
+            # named by a getopt option's argument, a null pointer where the instance's
+            # arguments do not give the option (pr2_ethercat's ``-x`` beside ``-r``):
+            # ``std::string`` of it throws, the call names nothing
             continue
         for each in element_calls(call, instance, resources):  # list parameters
             if each.camera_of is not None:
@@ -1057,7 +1068,9 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     if call.name_option is not None and UNKNOWN_MARK in call.name:
         # an option's value (``"/robot/limb/" + args.limb``), else its default when the
         # arguments are known and do not give it; neither: the ``?``
-        given = program_option(instance, call.name_option, call.name_option_default)
+        given = program_option(instance, call.name_option, call.name_option_default) if (
+            call.name_getopt is None) else getopt_option(
+                instance, call.name_option, call.name_getopt, call.name_option_default)
         filled = _filled(call.name, given) if given is not None else ""
         if filled.strip("/~"):  # an empty value is no name (a ``?`` alone given "")
             call = replace(call, name=filled, name_option=None)

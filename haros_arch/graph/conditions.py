@@ -504,6 +504,94 @@ def program_option(instance: NodeInstance, flags: str,
     return found.pop() if len(found) == 1 else None
 
 
+# what ``getopt_option`` is told as the default to tell an option not given apart
+NOT_GIVEN = "\0"
+
+
+def getopt_option(instance: NodeInstance, flags: str, spec: str,
+                  default: str | None = None) -> str | None:
+    """The value the instance's command line gives an option that C's getopt /
+    getopt_long parses (``PrimitiveCall.name_option``, ``-r --rosparam``, with the
+    program's options ``spec``, ``PrimitiveCall.name_getopt``), read as getopt reads the
+    words the client library leaves: ``-r X``, ``-rX``, ``-ur X`` (``u`` taking no
+    argument), ``--rosparam X``, ``--rosparam=X`` and an unambiguous prefix of the long
+    name (``--rosp X``), the last one given; ``--`` ends the options, and so does the
+    first other word when the optstring begins with ``+``. ``default`` when the words
+    are read and do not give it; None when they are not known, do not give it and no
+    default is told, or hold what getopt's table here cannot tell: an option the
+    program does not take, a long option with its table not read (``--?``); and for a
+    ROS 2 instance, whose ``argv`` holds launch_ros' words too."""
+    views = program_views(instance)
+    names = flags.split()
+    shorts = {name[1] for name in names if len(name) == 2 and name[0] == "-"}
+    longs = {name[2:] for name in names if name.startswith("--")}
+    optstring, *table = spec.split(" ")  # (an optstring may be empty: long options only)
+    table = [entry for entry in table if entry]
+    in_order = optstring.startswith("+")
+    letters = optstring.lstrip("+-:")
+    takes: dict[str, int] = {}  # option -> 0 none, 1 required, 2 optional argument
+    for at, letter in enumerate(letters):
+        if letter != ":":
+            after = letters[at + 1:at + 3]
+            takes[letter] = 2 if after == "::" else 1 if after[:1] == ":" else 0
+    long_takes = {entry.rstrip(":"): len(entry) - len(entry.rstrip(":"))
+                  for entry in table if entry != "--?"}
+    found = set()
+    for argv, kept in views or ():
+        if argv is None:
+            # ROS 2: getopt reads the ``--ros-args`` sections launch_ros adds too (``-r
+            # a:=b``, ``-p``), which are not told here
+            return None
+        value = None
+        words = kept[1:]
+        at = 0
+        while at < len(words):
+            word = words[at]
+            at += 1
+            if word == "--":
+                break
+            if word.startswith("--"):
+                if "--?" in table:
+                    return None
+                name, equals, given = word[2:].partition("=")
+                matches = [n for n in long_takes if n == name] or [
+                    n for n in long_takes if n.startswith(name)]
+                if len(matches) != 1:
+                    return None  # an option getopt rejects, or an ambiguous prefix
+                kind = long_takes[matches[0]]
+                argument: str | None = given if equals else None
+                if kind == 1 and not equals:
+                    if at >= len(words):
+                        return None
+                    argument, at = words[at], at + 1
+                if matches[0] in longs and kind:
+                    value = argument
+                continue
+            if not word.startswith("-") or word == "-":
+                if in_order:
+                    break
+                continue  # GNU getopt moves the other words after the options
+            for place, letter in enumerate(word[1:], 1):
+                if letter not in takes or letter == ":":
+                    return None  # an option the program does not take
+                if not takes[letter]:
+                    continue
+                argument = word[place + 1:] or None
+                if argument is None and takes[letter] == 1:
+                    if at >= len(words):
+                        return None
+                    argument, at = words[at], at + 1
+                if letter in shorts:
+                    value = argument
+                break
+        if value is None:
+            value = default
+        if value is None:
+            return None
+        found.add(value)
+    return found.pop() if len(found) == 1 else None
+
+
 def arguments_left(words: list[str], ros_version: int) -> list[str]:
     """What a program's client library leaves of its arguments: roscpp's ``ros::init``
     takes every ``:=`` word (remaps, ``__name:=``), rclcpp every ``--ros-args ... --``

@@ -177,6 +177,9 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                              c.get("name_option"), str) else None,
                          name_option_default=c.get("name_option_default") if isinstance(
                              c.get("name_option_default"), str) else None,
+                         name_getopt=c.get("name_getopt") if isinstance(
+                             c.get("name_getopt"), str) else None,
+                         name_option_null=c.get("name_option_null") is True,
                          name_more=_name_more(c.get("name_more")),
                          transport=c.get("transport"),
                          transport_param=c.get("transport_param") if isinstance(

@@ -245,6 +245,18 @@ class PrimitiveCall:
     # launch file's arguments, known statically, do not name it: gazebo_ros'
     # spawn_entity.py ``-gazebo_namespace``, default ``''``, so ``/spawn_entity``
     name_option_default: str | None = field(default=None, metadata={"optional": True})
+    # the option is read by C's getopt / getopt_long, not argparse (pr2_ethercat's ``case
+    # 'r': g_options.rosparam_ = optarg;``, flags ``-r --rosparam``): the options the
+    # program takes, which tell getopt's words apart: its optstring (``hi:usx:r:``), then
+    # each long option of the ``struct option`` table with getopt's ``:`` / ``::`` for a
+    # required / optional argument (``rosparam:``), or ``--?`` when that table is not
+    # read. The graph takes the value by getopt's rules (``conditions.getopt_option``)
+    name_getopt: str | None = field(default=None, metadata={"optional": True})
+    # with ``name_getopt``: the code sets the variable to a null pointer before getopt
+    # reads the options (``g_options.xml_ = NULL;``), so where the instance's arguments
+    # do not give the option the name is no string (``std::string`` of a null pointer
+    # throws): the call reads, or makes, nothing there
+    name_option_null: bool = field(default=False, metadata={"optional": True})
     # a name with several ``?``, each a parameter's value, in order: ``name_param`` (and
     # ``name_default``) fills the first, each [parameter, its default or None] here one
     # more (f1tenth_gym_ros' ``ego_namespace + '/' + get_parameter('ego_odom_topic')``:

@@ -38,6 +38,7 @@ from .expressions import (
     unresolved_operator,
     written_arguments,
 )
+from .getopt import option_held
 from .reach import FUNCTIONS
 from .synthesis import ANY
 from .writes import Write, by_operator, const_array, emptied, searched_key, writes_of
@@ -160,6 +161,38 @@ class ProgramArgument(str):
         return hash(("argv", self.position))
 
 
+class ProgramOption(str):
+    """A part that is the argument of a command-line option getopt parses
+    (``getopt.option_held``: ``flags``, ``-r --rosparam``; ``spec``, the program's
+    options; ``default``, its value when the command line does not give it, ``null``
+    when that is a null pointer): unknown to ``render``; a call whose name has it as its
+    one unknown run carries them (``PrimitiveCall.name_option``, ``name_getopt``,
+    ``name_option_default``, ``name_option_null``)."""
+
+    flags: str
+    spec: str
+    default: str | None
+    null: bool
+
+    def __new__(cls, flags: str, spec: str, default: str | None,
+                null: bool = False) -> ProgramOption:
+        made = super().__new__(cls, "?")
+        made.flags, made.spec, made.default, made.null = flags, spec, default, null
+        return made
+
+    def _fields(self) -> tuple[str, str, str | None, bool]:
+        return self.flags, self.spec, self.default, self.null
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, ProgramOption) and other._fields() == self._fields()
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    def __hash__(self) -> int:
+        return hash(("option", *self._fields()))
+
+
 class TopicOf(str):
     """The topic name of a publisher or subscription the code made (rclcpp's
     ``get_topic_name()``): the name as resolved and remapped in the node, which
@@ -186,7 +219,7 @@ class TopicOf(str):
 
 
 # the parts ``render`` writes ``?`` for besides None: known only to the graph or per instance
-_UNKNOWN_PARTS = (NodeName, ProgramArgument, TopicOf)
+_UNKNOWN_PARTS = (NodeName, ProgramArgument, ProgramOption, TopicOf)
 
 
 def topic_base(parts: Parts) -> str | None:
@@ -230,6 +263,15 @@ def argument_of(parts: Parts) -> int | None:
     if len(runs) != 1 or len(runs[0]) != 1 or not isinstance(runs[0][0], ProgramArgument):
         return None
     return runs[0][0].position
+
+
+def option_of(parts: Parts) -> ProgramOption | None:
+    """The getopt option whose argument is the one unknown run of ``parts``."""
+    unknown = [part for part in parts
+               if part is None or isinstance(part, (*_UNKNOWN_PARTS, NodeNamespace))]
+    if len(unknown) != 1 or not isinstance(unknown[0], ProgramOption):
+        return None
+    return unknown[0]
 
 
 def own_name_run(written: Parts, parts: Parts) -> bool:
@@ -441,8 +483,8 @@ def is_empty(parts: Parts) -> bool | None:
     for part in parts:
         if isinstance(part, NodeName):
             return False
-        if part is None or isinstance(part, (ProgramArgument, TopicOf)) or PLACEHOLDER in part or (
-                CHOICE in part):
+        if part is None or isinstance(part, (ProgramArgument, ProgramOption, TopicOf)) or (
+                PLACEHOLDER in part) or CHOICE in part:
             known = False
         elif part:
             return False
@@ -500,7 +542,8 @@ def camera_info_topic(base: Parts) -> Parts:
     the base (``left/image_rect`` -> ``left/camera_info``); unknown when that namespace
     is."""
     last = base[-1]
-    if last is None or PLACEHOLDER in last or isinstance(last, (ProgramArgument, TopicOf)):
+    if last is None or PLACEHOLDER in last or isinstance(
+            last, (ProgramArgument, ProgramOption, TopicOf)):
         return UNKNOWN
     if "/" in last:
         return (*base[:-1], last.rpartition("/")[0] + "/camera_info")
@@ -1151,6 +1194,10 @@ class Scope:
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
+            if _ARGUMENTS[0] and decl.kind in (CursorKind.FIELD_DECL, CursorKind.VAR_DECL):
+                option = option_held(cursor, decl, self.source)
+                if option is not None:  # ``case 'r': name = optarg;`` of a getopt loop
+                    return (ProgramOption(*option),)
             found = self.held(cursor, decl, depth)
             if found is None and self.sites is not None:
                 elsewhere = self.sites.member_elsewhere(decl)

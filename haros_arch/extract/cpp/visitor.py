@@ -109,6 +109,7 @@ from .values import (
     NodeName,
     NodeNamespace,
     ProgramArgument,
+    ProgramOption,
     Scope,
     SearchedName,
     _method_object,
@@ -116,6 +117,7 @@ from .values import (
     argument_of,
     initializer,
     literal,
+    option_of,
     own_name,
     own_name_run,
     permissive_conversion,
@@ -235,6 +237,18 @@ class ArgumentName(str):
     def __new__(cls, name: str, program_arg: int) -> ArgumentName:
         made = super().__new__(cls, name)
         made.program_arg = program_arg
+        return made
+
+
+class OptionName(str):
+    """A call's name whose one ``?`` is a getopt option's argument
+    (``values.ProgramOption``): ``PrimitiveCall.name_option`` and ``name_getopt``."""
+
+    option: ProgramOption
+
+    def __new__(cls, name: str, option: ProgramOption) -> OptionName:
+        made = super().__new__(cls, name)
+        made.option = option
         return made
 
 
@@ -2482,6 +2496,7 @@ class CallFinder:
                     name.count("?") == 1) else None, name_member=name_member,
                 name_self=isinstance(written, SelfName) and name.count("?") == 1,
                 name_below=written.base if isinstance(written, BelowName) else None,
+                **_option_fields(written, name),
                 loads=spec.loads, namespace_param=namespace_param,
                 argument=spec.argument, resolved=spec.resolved))
             if status is not None:
@@ -2781,6 +2796,9 @@ class CallFinder:
         argument = argument_of(parts)
         if argument is not None:
             return (ArgumentName(name, argument), None)
+        option = option_of(parts)
+        if option is not None:
+            return (OptionName(name, option), None)
         if own_name_run(written, parts):
             return (SelfName(name), None)
         below = topic_base(parts)
@@ -5034,7 +5052,7 @@ def _concatenated(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor | N
 def _text(part: str | None) -> bool:
     """Whether a part of a string's value is text a name shows (``values.render``), not
     empty and no ``?``."""
-    return bool(part) and not isinstance(part, (NodeName, ProgramArgument))
+    return bool(part) and not isinstance(part, (NodeName, ProgramArgument, ProgramOption))
 
 
 def _name_namespace(name: str) -> str:
@@ -5050,3 +5068,14 @@ def _name_namespace(name: str) -> str:
         return f"{head}/{UNKNOWN_MARK}" if slash else (
             "~" + UNKNOWN_MARK if name.startswith("~") else UNKNOWN_MARK)
     return head if slash else ("~" if name.startswith("~") else "")
+
+
+def _option_fields(written: str, name: str) -> dict[str, Any]:
+    """The fields of a call whose name's one ``?`` is a getopt option's argument
+    (``OptionName``): ``PrimitiveCall.name_option``, ``name_getopt``,
+    ``name_option_default``, ``name_option_null``."""
+    if not isinstance(written, OptionName) or name.count("?") != 1:
+        return {}
+    option = written.option
+    return {"name_option": option.flags, "name_getopt": option.spec,
+            "name_option_default": option.default, "name_option_null": option.null}
