@@ -345,3 +345,15 @@ def test_depth_cloud_and_imu_displays(tmp_path: Path) -> None:
             ("subscribe", "/camera/color/image_raw", "sensor_msgs/Image"),
             ("subscribe", "/imu/data", "sensor_msgs/Imu")} <= links
     assert rviz.is_complete, rviz.completeness_reasons
+
+
+def test_a_panel_following_an_action_shows_no_display_without_data(tmp_path: Path) -> None:
+    """rviz alone with nav2's view: its Map display has no publisher (an info), the
+    Navigation 2 panel's action feedback and status subscriptions are no display."""
+    from haros_arch.model import Model
+    from haros_arch.query.catalogue import load_catalogue, run_rule
+
+    config = _graph(tmp_path, NAV2_PANEL, 2)
+    rule = next(r for r in load_catalogue() if r.id == "rviz-display-without-data")
+    found = run_rule(rule, Model(project="p", configurations=[config]))
+    assert [f.entities[-1] for f in found] == ["topic:/map"]
