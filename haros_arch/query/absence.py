@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from collections import OrderedDict
 from collections.abc import Callable
+from functools import lru_cache
 from typing import Any, TypeVar
 from weakref import WeakKeyDictionary
 
@@ -347,10 +348,18 @@ def _names(config: Configuration) -> _Names:
     return _per_configuration(_NAMES, config, (len(config.nodes), len(config.links)), _Names)
 
 
+@lru_cache(maxsize=65536)
 def may_meet(first: str, second: str) -> bool:
     """Whether two names with ``?`` parts could be one name: some text fits both when
     each ``?`` stands for any text (a little more than ``pattern_for`` allows, which
-    errs towards a meeting)."""
+    errs towards a meeting). The known text before the first ``?`` of each, and after
+    the last, must agree first: most pairs part there, before any search."""
+    head_one, head_other = _head(first), _head(second)
+    if not (head_one.startswith(head_other) or head_other.startswith(head_one)):
+        return False
+    tail_one, tail_other = _tail_text(first), _tail_text(second)
+    if not (tail_one.endswith(tail_other) or tail_other.endswith(tail_one)):
+        return False
     one = _glob(first)
     other = _glob(second)
     seen: set[tuple[int, int]] = set()
@@ -374,6 +383,17 @@ def may_meet(first: str, second: str) -> bool:
         elif i < len(one) and j < len(other) and one[i] == other[j]:
             todo.append((i + 1, j + 1))
     return False
+
+
+def _head(name: str) -> str:
+    """The known text before a name's first ``?`` (without a slash the ``?`` may drop)."""
+    head = name.split(UNKNOWN_MARK, 1)[0]
+    return head[:-1] if UNKNOWN_MARK in name and head.endswith("/") else head
+
+
+def _tail_text(name: str) -> str:
+    """The known text after a name's last ``?`` (the whole name when it has none)."""
+    return name.rsplit(UNKNOWN_MARK, 1)[-1] if UNKNOWN_MARK in name else name
 
 
 def _glob(name: str) -> list[str | None]:
