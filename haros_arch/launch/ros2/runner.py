@@ -243,21 +243,8 @@ class Runner:
         holds, so an include's argument of that name is used, not ignored
         (webots_ros2_epuck's robot_tools_launch.py reads ``fill_map`` in its mapper's
         parameters, the mapper under ``IfCondition(use_mapper)``, false by default)."""
-        stack: list[tuple[Any, int]] = [(action, 0)]
-        seen = 0
-        while stack and seen < MAX_SKIPPED_VISITS:
-            value, depth = stack.pop()
-            seen += 1
-            if depth > MAX_SKIPPED_DEPTH:
-                continue
-            if isinstance(value, e.Var) and all(isinstance(p, str) for p in value.name):
-                self.config_read(recording.written(value.name))
-            if isinstance(value, (list, tuple)):
-                stack.extend((item, depth + 1) for item in value)
-            elif isinstance(value, dict):
-                stack.extend((item, depth + 1) for item in value.values())
-            elif is_dataclass(value) and not isinstance(value, type):
-                stack.extend((getattr(value, f.name), depth + 1) for f in fields(value))
+        for name in _names_read(action):
+            self.config_read(name)
 
     def config_declared(self, name: str) -> None:
         for frame in self.includes:
@@ -280,23 +267,7 @@ class Runner:
         if not self.includes:
             return ""
         own = self.includes[-1].own
-        names: list[str] = []
-        stack: list[tuple[Any, int]] = [(text, 0)]
-        seen = 0
-        while stack and seen < MAX_SKIPPED_VISITS:
-            value, depth = stack.pop()
-            seen += 1
-            if depth > MAX_SKIPPED_DEPTH:
-                continue
-            if isinstance(value, e.Var) and all(isinstance(p, str) for p in value.name):
-                name = recording.written(value.name)
-                if name not in own and name not in names:
-                    names.append(name)
-            if isinstance(value, (list, tuple)):
-                stack.extend((item, depth + 1) for item in value)
-            elif is_dataclass(value) and not isinstance(value, type):
-                stack.extend((getattr(value, f.name), depth + 1) for f in fields(value))
-        return ", ".join(sorted(names))
+        return ", ".join(sorted({name for name in _names_read(text) if name not in own}))
 
     def hidden(self, what: diag.Diagnostic | str, where: Location | None = None) -> None:
         """Part of the includes being performed is not seen (``what``: the diagnostic that
@@ -1374,3 +1345,25 @@ def _compared_in(text: e.Text, evaluator: Evaluator
 
 def _literal(node: ast.expr) -> str | None:
     return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
+
+
+def _names_read(value: Any) -> Iterator[str]:
+    """The launch configurations ``value`` (an action, a text) reads by names known
+    statically, through its LaunchConfiguration / ``$(var)`` substitutions, looked for
+    in its lists, tuples, dictionaries and dataclass fields (within
+    ``MAX_SKIPPED_VISITS`` values, ``MAX_SKIPPED_DEPTH`` deep)."""
+    stack: list[tuple[Any, int]] = [(value, 0)]
+    seen = 0
+    while stack and seen < MAX_SKIPPED_VISITS:
+        value, depth = stack.pop()
+        seen += 1
+        if depth > MAX_SKIPPED_DEPTH:
+            continue
+        if isinstance(value, e.Var) and all(isinstance(p, str) for p in value.name):
+            yield recording.written(value.name)
+        if isinstance(value, (list, tuple)):
+            stack.extend((item, depth + 1) for item in value)
+        elif isinstance(value, dict):
+            stack.extend((item, depth + 1) for item in value.values())
+        elif is_dataclass(value) and not isinstance(value, type):
+            stack.extend((getattr(value, f.name), depth + 1) for f in fields(value))
