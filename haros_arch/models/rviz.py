@@ -37,7 +37,7 @@ from .. import safe_yaml
 from ..diagnostics import Diagnostic
 from ..launch.model import NodeDecl
 from ..model.source import Node, PrimitiveCall
-from ..plugins.hosts import TRANSPORTS
+from ..plugins.hosts import transport_named
 from ..workspace import Workspace
 from .commands import program_words
 
@@ -393,9 +393,14 @@ def _displays(displays: Any, ros2: bool, where: Any, calls: list[PrimitiveCall],
                 calls.append(_config_call("subscribe", update, _type(
                     "map_msgs", "OccupancyGridUpdate", ros2), where, update_qos))
         elif kind == "Camera":
-            info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
-            calls.append(_config_call("subscribe", info,
+            calls.append(_config_call("subscribe", _camera_info(name),
                                       _type("sensor_msgs", "CameraInfo", ros2), where))
+
+
+def _camera_info(image: str) -> str:
+    """The camera_info topic beside an image topic (image_transport's
+    ``getCameraInfoTopic``)."""
+    return image.rpartition("/")[0] + "/camera_info" if "/" in image else "camera_info"
 
 
 def _depth_cloud(display: dict[str, Any], where: Any, calls: list[PrimitiveCall]) -> None:
@@ -403,7 +408,6 @@ def _depth_cloud(display: dict[str, Any], where: Any, calls: list[PrimitiveCall]
     map through image_transport with its transport hint (``raw``: the topic itself,
     else the transport's topic below it), the camera_info beside the depth map, and the
     color image when one is named, with its own hint."""
-    image = _type("sensor_msgs", "Image", False)
     for topic_key, hint_key in (("Depth Map Topic", "Depth Map Transport Hint"),
                                 ("Color Image Topic", "Color Transport Hint")):
         name, _ = _topic(display.get(topic_key))
@@ -411,13 +415,11 @@ def _depth_cloud(display: dict[str, Any], where: Any, calls: list[PrimitiveCall]
             continue
         hint = display.get(hint_key, "raw")
         hint = hint if isinstance(hint, str) and hint else "raw"
-        row = next((t for t in TRANSPORTS if t.name == hint), None)
-        message = image if hint == "raw" else (row.types[0] if row is not None else None)
+        row = transport_named(hint)
         calls.append(_config_call("subscribe", name if hint == "raw" else (
-            name.rstrip("/") + "/" + hint), message or "", where))
+            name.rstrip("/") + "/" + hint), (row.types[0] if row else None) or "", where))
         if topic_key == "Depth Map Topic":
-            info = name.rpartition("/")[0] + "/camera_info" if "/" in name else "camera_info"
-            calls.append(_config_call("subscribe", info,
+            calls.append(_config_call("subscribe", _camera_info(name),
                                       _type("sensor_msgs", "CameraInfo", False), where))
 
 

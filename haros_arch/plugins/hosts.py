@@ -683,6 +683,11 @@ TRANSPORTS: tuple[Transport, ...] = (
                "ffmpeg_image_transport_msgs/msg/FFMPEGPacket")),
 )
 
+
+def transport_named(name: str | None) -> Transport | None:
+    """The row of ``TRANSPORTS`` of a transport's name (``raw``, ``compressed``), if any."""
+    return next((t for t in TRANSPORTS if t.name == name), None)
+
 # the parameters that choose transports: a ROS 1 publisher skips the transports listed
 # in ``<resolved base>/disable_pub_plugins`` (publisher.cpp, getParam on the node's
 # handle); a ROS 2 one loads only those of ``<base>.enable_pub_plugins`` (the base

@@ -31,6 +31,7 @@ from .hosts import (
     TRANSPORT_PARAM,
     TRANSPORTS,
     Transport,
+    transport_named,
 )
 
 RAW = "raw"
@@ -171,7 +172,7 @@ class Transports:
                     UNKNOWN_MARK not in value) else None
         if name == RAW:
             return [call, *out]
-        row = next((t for t in TRANSPORTS if t.name == name), None)
+        row = transport_named(name)
         msg_type = row.types[version - 1] if row is not None else None
         topic = f"{base.rstrip('/')}/{name if name else UNKNOWN_MARK}"
         return [replace(call, name=topic, type=msg_type, name_param=None,
