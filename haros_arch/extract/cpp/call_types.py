@@ -15,6 +15,7 @@ from collections.abc import Iterator
 from clang.cindex import Cursor, CursorKind, Type, TypeKind, conf
 
 from . import api, msg_types
+from .expressions import stripped_to_cast
 from .handles import parameters, qualified_name
 from .values import Scope, key_of, render, strip
 
@@ -208,7 +209,8 @@ class CallTypes:
                 spec.type_arg < len(args)
             ):
                 arg = args[spec.type_arg]
-                ctype = strip(arg).type
+                # (a value's type as written: ``static_cast<double>(0)`` is a double)
+                ctype = (stripped_to_cast(arg) if source == "value" else strip(arg)).type
                 if source == "type-name":
                     found = _type_name(render(scope.string(arg)), self.ros2)
                 elif source == "arg":
@@ -218,7 +220,7 @@ class CallTypes:
                 else:  # the value a ParameterValue holds; a ParameterType constant
                     found = msg_types.param_type(ctype)
                     if found is None:
-                        held = msg_types.held_value(arg)
+                        held = msg_types.held_value(arg, typed=True)
                         found = msg_types.param_type(held.type) if held is not arg else (
                             msg_types.parameter_type_constant(arg))
             elif source == "result" and call.kind == CursorKind.CALL_EXPR:

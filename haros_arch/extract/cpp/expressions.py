@@ -127,6 +127,32 @@ def strip(cursor: Cursor) -> Cursor:
     return cursor
 
 
+# explicit casts, and the builtin types a cast to which makes a value of that type (not
+# the character types: a ``static_cast<uint8_t>(3)`` is read by the value under it)
+_CASTS = frozenset({CursorKind.CSTYLE_CAST_EXPR, CursorKind.CXX_STATIC_CAST_EXPR,
+                    CursorKind.CXX_FUNCTIONAL_CAST_EXPR})
+_SCALARS = frozenset({
+    TypeKind.BOOL, TypeKind.SHORT, TypeKind.USHORT, TypeKind.INT, TypeKind.UINT,
+    TypeKind.LONG, TypeKind.ULONG, TypeKind.LONGLONG, TypeKind.ULONGLONG, TypeKind.FLOAT,
+    TypeKind.DOUBLE,
+})
+
+
+def stripped_to_cast(cursor: Cursor) -> Cursor:
+    """``cursor`` without the wrappers around it, stopping at an explicit cast to a
+    builtin scalar type: the expression whose type is the value's as written
+    (``static_cast<double>(0)`` is a double, not the int literal under it; implicit
+    conversions, parentheses and casts to classes are taken off as ``strip`` does)."""
+    while cursor.kind in WRAPPERS:
+        if cursor.kind in _CASTS and cursor.type.get_canonical().kind in _SCALARS:
+            return cursor
+        inner = operand(cursor)
+        if inner is None:
+            break
+        cursor = inner
+    return cursor
+
+
 def initializer(decl: Cursor) -> Cursor | None:
     """The expression a variable declaration initialises it with, if any."""
     exprs = [c for c in decl.get_children() if c.kind.is_expression()]

@@ -12,7 +12,7 @@ from collections.abc import Mapping
 
 from clang.cindex import Cursor, CursorKind, Type, TypeKind
 
-from .expressions import strip
+from .expressions import strip, stripped_to_cast
 
 _RECORDS = (CursorKind.STRUCT_DECL, CursorKind.CLASS_DECL, CursorKind.CLASS_TEMPLATE,
             CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION)
@@ -263,10 +263,13 @@ _BUILDS = frozenset({CursorKind.CALL_EXPR, CursorKind.CXX_FUNCTIONAL_CAST_EXPR,
                      CursorKind.UNEXPOSED_EXPR, CursorKind.INIT_LIST_EXPR})
 
 
-def held_value(expr: Cursor) -> Cursor:
+def held_value(expr: Cursor, typed: bool = False) -> Cursor:
     """What an ``rclcpp::ParameterValue`` built of one value (``ParameterValue(0.4)``,
     ``ParameterValue{true}``, as nav2's ``declare_parameter_if_not_declared`` is given
-    its default) is built of; ``expr`` itself otherwise."""
+    its default) is built of; ``expr`` itself otherwise. ``typed``: the value as its type
+    is written, an explicit cast kept (``ParameterValue(static_cast<double>(0))`` holds a
+    double: ``stripped_to_cast``)."""
+    take = stripped_to_cast if typed else strip
     node, descended = strip(expr), False
     for _ in range(8):
         if node.kind not in _BUILDS or (
@@ -276,7 +279,7 @@ def held_value(expr: Cursor) -> Cursor:
         inner = [c for c in node.get_children() if c.kind.is_expression()]
         if len(inner) != 1:
             return expr
-        node, descended = strip(inner[0]), True
+        node, descended = take(inner[0]), True
     return expr
 
 
