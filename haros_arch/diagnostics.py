@@ -362,6 +362,16 @@ CATALOGUE: dict[str, Entry] = {
         "differs from the one declared (slam_toolbox_mode for slam_mode). Where an "
         "action the reader could not see may declare it, the condition is undecided "
         "instead (LAUNCH_UNKNOWN_VALUE)."),
+    "LAUNCH_INCLUDE_ABSOLUTE": Entry(
+        "warning", "launch file {path} is included by an absolute path this file writes "
+        "out; it is there only on the machine that wrote it",
+        "An include names its file by a path into one machine's folders (/home/<user>/..., "
+        "/Users/..., /root/..., a mount), written in the launch file itself: another "
+        "checkout, a container or the robot has other folders, and the include fails "
+        "there (ros2_kortex's gen3_dual.launch.py included kortex_control.launch.py from "
+        "/home/<developer>/.../install/kortex_bringup/share/...). The file is not read "
+        "(LAUNCH_UNKNOWN_VALUE). Fix: $(find pkg)/... (ROS 1), FindPackageShare or "
+        "$(find-pkg-share pkg) (ROS 2)."),
     "LAUNCH_PATH_JOIN_ABSOLUTE": Entry(
         "warning", "path join part {part} starts with '/': it drops the parts before it, "
         "the path is {path}",

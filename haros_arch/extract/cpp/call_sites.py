@@ -1247,11 +1247,19 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
              source: dict[str, bytes]) -> Cursor | None:
     """What a constructor's initialiser list, or a write of the body of it or of an
     initialisation method that replaces the member's value (``member_ = value``,
-    ``member_.reset(new T(..))``: ``writes``), gives ``field``."""
+    ``member_.reset(new T(..))``: ``writes``), gives ``field``. A null pointer in the
+    initialiser list (``it_(nullptr)``) holds nothing yet: the body's write, when there is
+    one, is what the member holds after the constructor (Kimera-VIO-ROS's
+    ``it_(nullptr)``, then ``it_ = VIO::make_unique<image_transport::ImageTransport>(nh_)``
+    in the body)."""
     children = list(definition.get_children())
+    null: Cursor | None = None
     for i, child in enumerate(children[:-1]):
         if child.kind == CursorKind.MEMBER_REF and child.referenced == field:
-            return children[i + 1]
+            if not _null_pointer(children[i + 1]):
+                return children[i + 1]
+            null = children[i + 1]
+            break
     for node in definition.walk_preorder():
         for write in writes_of(node, source):
             target, value = write.target, write.value
@@ -1259,7 +1267,21 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
                 target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced == field
             ) and (constructor or not uses_parameter(value)):
                 return value
-    return None
+    return null
+
+
+_NULLS = (CursorKind.CXX_NULL_PTR_LITERAL_EXPR, CursorKind.GNU_NULL_EXPR)
+
+
+def _null_pointer(value: Cursor) -> bool:
+    """Whether an initialiser is a null pointer (``nullptr``, ``NULL``), through the
+    conversions around it."""
+    inner = strip(value)
+    if inner.kind in _NULLS:
+        return True
+    given = [c for c in inner.get_children() if c.kind.is_expression()]
+    return inner.kind == CursorKind.CALL_EXPR and len(given) == 1 and (
+        strip(given[0]).kind in _NULLS)  # a smart pointer's constructor from nullptr
 
 
 def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:

@@ -347,7 +347,13 @@ class Namespaces:
             # set where we do not see (``Impl impl{&nh}``, a copy of the struct): not known
             # (a reference member is bound by every constructor: there, what they give)
             held, bound = holds_handle(field), binds_handle(field)
-            if not (handle and (held or bound)):
+            # a pointer to a handle that the constructors of another file set: what those
+            # give it, as for a handle member (Kimera-VIO-ROS's RosOnlineDataProvider
+            # subscribes on ``*it_``, which its base's constructor, in another file, makes
+            # from ``nh_``)
+            pointed = self.sites is not None and points_to_handle(field) and (
+                constructed_elsewhere(field, self.source))
+            if not (handle and (held or bound)) and not pointed:
                 return UNKNOWN
             if self.sites is not None and constructed_elsewhere(field, self.source):
                 self._origins.add(_ORIGIN_UNSEEN)  # set by a constructor of another file
@@ -608,6 +614,26 @@ def holds_handle(field: Cursor) -> bool:
     if ctype.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
         return False
     decl = ctype.get_declaration()
+    return decl is not None and qualified_name(decl) in api.HANDLE_CLASSES
+
+
+# the owning pointers a handle is held through (Kimera-VIO-ROS's
+# ``std::unique_ptr<image_transport::ImageTransport> it_``)
+_SMART_POINTERS = frozenset({"std::unique_ptr", "std::shared_ptr", "boost::shared_ptr"})
+
+
+def points_to_handle(field: Cursor) -> bool:
+    """A member that is a pointer, plain or smart, to a handle class."""
+    ctype = field.type.get_canonical()
+    if ctype.kind == TypeKind.POINTER:
+        pointee = ctype.get_pointee().get_canonical()
+    else:
+        decl = ctype.get_declaration()
+        if decl is None or qualified_name(decl) not in _SMART_POINTERS or (
+                ctype.get_num_template_arguments() < 1):
+            return False
+        pointee = ctype.get_template_argument_type(0).get_canonical()
+    decl = pointee.get_declaration()
     return decl is not None and qualified_name(decl) in api.HANDLE_CLASSES
 
 

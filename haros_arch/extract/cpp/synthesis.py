@@ -2006,6 +2006,10 @@ class _Values:
         return value
 
 
+# functions by the standard's names for making an owned object: what each returns
+_SMART_FACTORIES = {"make_unique": "unique_ptr", "make_shared": "shared_ptr"}
+
+
 def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
             withdrawn: set[str] | frozenset[str] = frozenset()) -> list[str]:
     if name in withdrawn and not node.known:
@@ -2027,6 +2031,14 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
                 f"{values.next('flag' in node.uses, 'size' in node.uses)} }};"]
     if node.uses <= _VALUE_USES:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
+    if name in _SMART_FACTORIES and "template" in node.uses and not node.children:
+        # a library's back-port of std::make_unique / make_shared (Kimera-VIO's
+        # ``VIO::make_unique<image_transport::ImageTransport>(nh_)``, its header missing):
+        # by that name it constructs its template argument from its arguments and owns it,
+        # as the standard one does, so the object it makes keeps its class (a handle's
+        # namespace, a member assigned with it) instead of the permissive class's
+        return [f"{indent}template <class T, class... A> {'static ' if nested else ''}"
+                f"std::{_SMART_FACTORIES[name]}<T> {name}(A &&...);"]
     head = "template <class... T> " if "template" in node.uses else ""
     if head and node.value_arguments:
         # a value at each position the code gives one, a type elsewhere, any number

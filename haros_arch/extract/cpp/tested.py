@@ -32,6 +32,9 @@ _OR = frozenset({"||", "or", "|", "bitor"})
 _ASSIGN = re.compile(r"^\s*=\s*$")
 _EQUALS = re.compile(r"^\s*(==|!=)\s*$")
 _NOT = re.compile(r"^\s*(!|\bnot\b)")
+# the functions the glog stand-in's CHECK, PCHECK, DCHECK, LOG_ASSERT and CHECK_ERR
+# expand to: each aborts the program when its argument is false
+_CHECKS = frozenset({"haros_check"})
 
 
 def key(cursor: Cursor) -> Key | None:
@@ -64,6 +67,13 @@ class TestedCalls:
         kind = node.kind
         if kind == CursorKind.CALL_EXPR:
             self._pass(node)
+            if node.spelling in _CHECKS:
+                # glog's CHECK(nh.getParam("x", x)) aborts the program when the read
+                # finds nothing: the parameter is required (Kimera-VIO-ROS' log_gt_data)
+                given = list(node.get_arguments())
+                if given:
+                    self.required.update(k for k, v in self._when_absent(given[0]).items()
+                                         if not v)
         if kind in (CursorKind.IF_STMT, CursorKind.WHILE_STMT):
             children = list(node.get_children())
             if children:

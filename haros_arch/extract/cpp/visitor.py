@@ -65,6 +65,7 @@ from .handles import (
     looked_up,
     normalise,
     own_functions_only,
+    points_to_handle,
     qualified_name,
     record_class,
 )
@@ -691,7 +692,7 @@ class CallFinder:
         with a constructor's parameters as placeholders, ``CallSites.member_elsewhere``);
         None for any other member, and for a string no constructor gives a known value
         or another function writes."""
-        if holds_handle(field) or binds_handle(field):
+        if holds_handle(field) or binds_handle(field) or points_to_handle(field):
             found, origin = self.namespaces.member_origin(field)
             return links.origin_marked(render(found), origin)
         if msg_types.param_type(field.type) != "str" or self.sites is None:
@@ -988,6 +989,11 @@ class CallFinder:
             self._struct_parameters(function, made_under, scope)
         for site, read in self._status_reads:
             read.tested = read.tested or (site in tested.keys and site not in tested.required)
+            if site in tested.required and read.kind == "read":
+                # a read whose absence fails the program (``CHECK(nh.getParam("x",
+                # x_))``, ``if (!nh.getParam(..)) { ROS_ERROR(..); return false; }``)
+                # has no default, whatever the variable held before it
+                read.has_default = False
         self._unit_status_reads.extend(self._status_reads)
         for held, made in tested.lasting_passed.items():
             self._lasting_passed.setdefault(held, []).extend(made)

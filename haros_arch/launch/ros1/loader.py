@@ -34,6 +34,7 @@ from ..model import (
     found_nowhere,
     shell_words,
 )
+from ..paths import written_absolute
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
@@ -760,6 +761,8 @@ class Ros1Loader:
             self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=(
                 f"launch file {path} is outside the workspace and installed packages; "
                 "it is not read"))
+            if written_absolute(path, parent.path):
+                self.report("LAUNCH_INCLUDE_ABSOLUTE", parent, element, path=path)
             scope.item.kind = "include"  # the include that reached it, not read
             return False
         location = self.where(parent, element) if parent else self.workspace.location(path)

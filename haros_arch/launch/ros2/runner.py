@@ -39,6 +39,7 @@ from ...share import generated_at, share_source
 from ...workspace import Workspace
 from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment, found_nowhere
 from ..partial_yaml import MARK, marked_text, unknown_parts
+from ..paths import written_absolute
 from ..tree import node_items
 from . import entities as e
 from . import naming, recording
@@ -392,6 +393,8 @@ class Runner:
             self.report("LAUNCH_UNKNOWN_VALUE", where, detail=(
                 f"launch file {path} is outside the workspace and installed packages; "
                 "it is not read"))
+            if written_absolute(path, self.stack[-1]):
+                self.report("LAUNCH_INCLUDE_ABSOLUTE", where, path=path)
             return
         if not os.path.isfile(path):
             made = generated_at(self.workspace, path)
