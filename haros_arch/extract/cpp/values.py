@@ -2229,10 +2229,24 @@ _ARITHMETIC: dict[str, Callable[[int, int], int]] = {
 
 
 def key_of(decl: Cursor) -> tuple[str, int]:
+    """What tells declaration ``decl`` from the unit's others: its file and offset (a
+    lambda and its ``operator()`` are one, a constructor and its template's too), and a
+    variable's name, as every variable a macro's expansion declares is at the
+    expansion's place (ros_deep_learning's ``ROS_CREATE_NODE(name)`` declares ``nh`` and
+    ``private_nh`` at one offset: the two were one variable, written twice)."""
     where = decl.location
-    if type(where) is _Place:
-        return where.key
-    return (where.file.name if where.file else "", where.offset)
+    place = where.key if type(where) is _Place else (
+        where.file.name if where.file else "", where.offset)
+    if decl.kind not in _VARIABLES:
+        return place
+    facts = decl.__dict__
+    found: tuple[str, int] | None = facts.get("_key")
+    if found is None:
+        found = facts["_key"] = (f"{place[0]}\0{decl.spelling}", place[1])
+    return found
+
+
+_VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
 
 
 # the standard algorithms that call their last argument with each element of a range in
