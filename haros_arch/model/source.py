@@ -229,7 +229,8 @@ class PrimitiveCall:
     name_arg: int | None = field(default=None, metadata={"optional": True})
     # the name's one ``?`` is the node's own name without its namespace (rclcpp's
     # ``get_name()`` inside a name: nav2's costmap serves ``"get_cost_" + get_name()``):
-    # the graph puts the instance's name there
+    # the graph puts the instance's name there. From a Python node, the name's first
+    # ``?`` when nothing fills the others (rclpy's ``f"/{self.get_name()}/{key}"``)
     name_self: bool = field(default=False, metadata={"optional": True})
     # the name's one ``?`` begins it and is the topic of a publisher or subscription the
     # node made, resolved and remapped (rclcpp's ``get_topic_name()``: autoware_utils'

@@ -10,7 +10,8 @@ option whose argument it holds: the flags (the case's letter when the optstring 
 the optstring, then the table's long names with ``:`` / ``::``, or ``--?`` when the table
 is not a constant array read here) and its value when no option sets it (a string
 literal written before the loop, None for a null pointer). Only when every write of it
-in the unit's own file is that: ``= optarg`` in the case of an option letter of a
+in the unit's own file is that: ``= optarg`` (or a copy of its text,
+``std::string(optarg)``, ``strdup(optarg)``) in the case of an option letter of a
 ``switch`` over what getopt returned, or a constant written before that ``switch`` in
 its function; a read before the ``switch`` in that function is not taken. Anything else
 (a write elsewhere, a label not known, an optstring not written as a literal) is None:
@@ -84,14 +85,46 @@ def _text(expr: Cursor) -> str | None:
     from .values import literal  # (values imports this module)
 
     expr = strip(expr)
+    inner = _copied(expr)  # (``std::string topic = "chatter"``: built from the text)
+    if inner is not None:
+        expr = strip(inner)
     return literal(expr.spelling) if expr.kind == CursorKind.STRING_LITERAL else None
 
 
+# the C library's functions that return a copy of the text they are given
+_COPIES = frozenset({"strdup"})
+
+
+def _copied(expr: Cursor) -> Cursor | None:
+    """What ``expr`` holds a copy of, the same text: the one argument of a
+    ``std::string`` built from it (``std::string(optarg)``, ``std::string{optarg}``) or
+    of the C library's ``strdup(optarg)``; None for any other expression."""
+    if expr.kind != CursorKind.CALL_EXPR or expr.referenced is None:
+        return None
+    args = written_arguments(expr)
+    if len(args) != 1:
+        return None
+    target = expr.referenced
+    if target.kind == CursorKind.CONSTRUCTOR:
+        owner = target.semantic_parent
+        named = owner.spelling.split("<")[0] if owner is not None else ""
+        space = owner.semantic_parent if owner is not None else None
+        return args[0] if named == "basic_string" and space is not None and (
+            space.spelling == "std") else None
+    if target.spelling in _COPIES and _file(target) != expr.translation_unit.spelling:
+        return args[0]
+    return None
+
+
 def _is_optarg(expr: Cursor | None) -> bool:
-    """``optarg``, the library's variable (declared in a header, not the unit's file)."""
+    """``optarg``, the library's variable (declared in a header, not the unit's file),
+    or a copy of its text (``_copied``)."""
     if expr is None:
         return False
     expr = strip(expr)
+    inner = _copied(expr)
+    if inner is not None:
+        expr = strip(inner)
     decl = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
     return decl is not None and decl.kind == CursorKind.VAR_DECL and (
         decl.spelling == "optarg") and _file(decl) != decl.translation_unit.spelling

@@ -774,6 +774,9 @@ class Scope:
         self.writes.setdefault(key_of(decl), []).append(value)
 
     def _place(self, decl: Cursor, write: Write) -> None:
+        if decl.kind == CursorKind.VAR_DECL and not write.whole and _namespace_kept(
+                decl, write, self.source):
+            return  # a roscpp handle's namespace, which the call does not change
         if decl.kind == CursorKind.VAR_DECL:
             value = write.value if write.whole else None
             if not write.whole and write.at.kind == CursorKind.CALL_EXPR and (
@@ -2198,6 +2201,57 @@ def is_own_member(target: Cursor) -> bool:
         strip(c).kind == CursorKind.CXX_THIS_EXPR for c in target.get_children())
 
 
+def _namespace_kept(decl: Cursor, write: Write, source: dict[str, bytes],
+                    depth: int = 0) -> bool:
+    """Whether ``write``, a call that may change roscpp handle ``decl`` in place, keeps
+    its namespace: a method of the handle (none changes it: only a construction or an
+    assignment does, whole writes), or a function given it by non-const reference whose
+    body (read here) neither assigns that parameter nor hands it on to a call that may
+    (ros_deep_learning's ``__ros_declare_parameter(ros::NodeHandle& nh, name, value)``,
+    which only reads through it: ``hasParam``, ``setParam``). Anything else may."""
+    call = write.at
+    if call.kind != CursorKind.CALL_EXPR or depth > MAX_CALLEE_DEPTH or not _is_node_handle(
+            decl):
+        return False
+    target = call.referenced
+    if target is None:
+        return False
+    if target.kind == CursorKind.CXX_METHOD and qualified_name(
+            target.semantic_parent) == api.NODE_HANDLE:
+        return True
+    args = list(call.get_arguments())
+    index = next((i for i, arg in enumerate(args)
+                  if arg == write.target or strip(arg) == write.target), None)
+    body = target.get_definition()
+    if index is None or body is None:
+        return False
+    params = [c for c in body.get_children() if c.kind == CursorKind.PARM_DECL]
+    if index >= len(params):
+        return False
+    parameter = key_of(params[index])
+    for node in body.walk_preorder():
+        for inner in writes_of(node, source):
+            variable = inner.variable
+            if variable is None or key_of(variable) != parameter:
+                continue
+            if inner.whole or not _namespace_kept(params[index], inner, source, depth + 1):
+                return False
+    return True
+
+
+MAX_CALLEE_DEPTH = 3  # calls handing a handle on, each read for what it does with it
+
+
+def _is_node_handle(decl: Cursor) -> bool:
+    """A variable or parameter that is a roscpp ``ros::NodeHandle`` (or a reference to
+    one)."""
+    ctype = decl.type.get_canonical()
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee().get_canonical()
+    return ctype.kind == TypeKind.RECORD and qualified_name(
+        ctype.get_declaration()) == api.NODE_HANDLE
+
+
 def _plain_value(decl: Cursor) -> bool:
     """True for variables of a builtin or string type, the values we resolve."""
     ctype = decl.type.get_canonical()
@@ -2229,10 +2283,24 @@ _ARITHMETIC: dict[str, Callable[[int, int], int]] = {
 
 
 def key_of(decl: Cursor) -> tuple[str, int]:
+    """What tells declaration ``decl`` from the unit's others: its file and offset (a
+    lambda and its ``operator()`` are one, a constructor and its template's too), and a
+    variable's name, as every variable a macro's expansion declares is at the
+    expansion's place (ros_deep_learning's ``ROS_CREATE_NODE(name)`` declares ``nh`` and
+    ``private_nh`` at one offset: the two were one variable, written twice)."""
     where = decl.location
-    if type(where) is _Place:
-        return where.key
-    return (where.file.name if where.file else "", where.offset)
+    place = where.key if type(where) is _Place else (
+        where.file.name if where.file else "", where.offset)
+    if decl.kind not in _VARIABLES:
+        return place
+    facts = decl.__dict__
+    found: tuple[str, int] | None = facts.get("_key")
+    if found is None:
+        found = facts["_key"] = (f"{place[0]}\0{decl.spelling}", place[1])
+    return found
+
+
+_VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
 
 
 # the standard algorithms that call their last argument with each element of a range in

@@ -59,8 +59,8 @@ from .qos import QoSProfiles
 from .scopes import MAX_UNROLL
 from .strings import from_plain, number, percent, plain, string_method
 
-__all__ = ["MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "NODE_NAME", "RESOLVED", "Evaluator",
-           "argument", "own_name", "unknown_params"]
+__all__ = ["FULL_NAME", "MAX_CALL_DEPTH", "MAX_UNROLL", "NAMESPACE", "NODE_NAME", "RESOLVED",
+           "Evaluator", "argument", "own_name", "unknown_params"]
 
 MAX_EVAL_DEPTH = 60
 MAX_RECORD = 64  # entries of a dict literal kept (``Record``)
@@ -74,6 +74,10 @@ NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
 # resolved and remapped at run time (``visitor._resolved``)
 RESOLVED = "resolved name "
 NODE_NAME = "node name"  # origin of the unknown get_name() gives (see own_name)
+# origin of the unknown rclpy's get_fully_qualified_name() gives: the node's own name as
+# rospy's get_name() is (``NODE_NAME``), but never its name without the namespace, which
+# is what rclpy's get_name() gives (``PrimitiveCall.name_self``)
+FULL_NAME = "node fully qualified name"
 
 
 SEARCHED = "found by search_param: "  # origin of the name rospy.search_param(x) gives
@@ -94,7 +98,7 @@ def own_name(text: Value) -> Value:
     ``~/x``. Followed by other text (``get_name() + '_status'``, a sibling of the node,
     ``/cam_status``) or anywhere else, the node's name stays unknown."""
     parts = text.parts
-    if parts and isinstance(parts[0], Unknown) and parts[0].origin == NODE_NAME and (
+    if parts and isinstance(parts[0], Unknown) and parts[0].origin in (NODE_NAME, FULL_NAME) and (
             len(parts) == 1 or (isinstance(parts[1], str) and parts[1].startswith("/"))):
         return Value.of("~", *parts[1:])
     return text
@@ -468,7 +472,9 @@ class Evaluator(Instances, QoSProfiles, Walker):
 
     def _node_method(self, name: str, expr: ast.Call, frame: Frame) -> object:
         if name in NAME_METHODS and not expr.args:
-            return Value.unknown(NODE_NAME)  # the node's own name: as rospy.get_name()
+            # the node's own name: as rospy.get_name() at a name's start; get_name() is
+            # the name without the namespace, which the graph knows per instance
+            return Value.unknown(NODE_NAME if name == "get_name" else FULL_NAME)
         if name == "get_namespace" and not expr.args:
             return Value.unknown(NAMESPACE)
         if name in ("get_parameter", "declare_parameter", "get_parameter_or"):

@@ -67,6 +67,7 @@ from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
     MAX_CALL_DEPTH,
     NAMESPACE,
+    NODE_NAME,
     RESOLVED,
     Evaluator,
     argument,
@@ -1210,7 +1211,14 @@ class Walker:
         if found is not None:  # get_param(search_param('x')): the parameter found
             call.name, call.searched = found, True
             return
-        text = _in_namespace(own_name(text))
+        text = own_name(_in_namespace(text, version))
+        # rclpy's get_name() elsewhere in a name (``f"/{self.get_name()}/x"``): the node's
+        # name without its namespace, which the graph puts in its place per instance; the
+        # first ``?`` when nothing else fills the others (``f"/{self.get_name()}/{key}"``)
+        unknowns = [p.origin for p in text.parts if isinstance(p, Unknown)]
+        named_self = version == 2 and unknowns[:1] == [NODE_NAME] and (
+            len(unknowns) == 1 or (call.name_param is None and call.name_arg is None
+                                   and call.name_option is None and call.name_each is None))
         if version == 2 and call.kind in _PARAM_KINDS:
             call.name = param_name(text)
         elif text.text.startswith("~/"):  # f"{get_name()}/x": the private name ~x
@@ -1220,6 +1228,7 @@ class Walker:
         if call.name_more and call.name.count("?") != 1 + sum(
                 entry[2:] != [JOINED] for entry in call.name_more):
             call.name_param = call.name_default = call.name_more = None  # not one each
+        call.name_self = named_self and call.name.count("?") == len(unknowns)
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,
               action: bool) -> str | None:
@@ -1552,13 +1561,20 @@ def _resolved(value: object) -> tuple[Value, str | None] | None:
     return Value.of(written, *rest), (written if under else None)
 
 
-def _in_namespace(text: Value) -> Value:
+def _in_namespace(text: Value, version: int) -> Value:
     """``f"{get_namespace()}/x"`` is the relative name ``x``: it resolves in the node's
-    namespace (rospy's namespace ends in '/', rclpy's does not)."""
+    namespace (rospy's namespace ends in '/', rclpy's does not). rclpy's
+    ``f"{get_namespace()}/{get_name()}/x"`` is the node's fully qualified name and what
+    follows: it is then written as starting with the node's own name (``own_name``)."""
     parts = text.parts
-    if len(parts) >= 2 and isinstance(parts[0], Unknown) and parts[0].origin == NAMESPACE \
-            and isinstance(parts[1], str) and parts[1].strip("/"):
+    if len(parts) < 2 or not isinstance(parts[0], Unknown) or parts[0].origin != NAMESPACE \
+            or not isinstance(parts[1], str):
+        return text
+    if parts[1].strip("/"):
         return Value.of(parts[1].lstrip("/"), *parts[2:])
+    if version == 2 and parts[1] == "/" and len(parts) >= 3 and isinstance(
+            parts[2], Unknown) and parts[2].origin == NODE_NAME:
+        return Value.of(*parts[2:])
     return text
 
 

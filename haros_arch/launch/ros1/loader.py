@@ -81,6 +81,12 @@ class Ros1Loader:
         self.environment: Mapping[str, str] = RecordedEnvironment(environment,
                                                         self.model.environment_values)
         self.default_machine: str | None = None
+        # each node's machine and where the node is: roslaunch looks them up once every
+        # file is loaded (``check_machines``)
+        self.machine_uses: list[tuple[str, Location]] = []
+        # where an included file was not read (not in the workspace, outside it, in a
+        # submodule not checked out): what it declares is not known
+        self.unread_files: list[Location] = []
         # the nodes started so far by name, and the anonymous parts of the name: two
         # ``$(anon x)`` of one file are one name, those of two includes are not
         self.node_names: dict[tuple[str, tuple[int, ...]],
@@ -601,8 +607,8 @@ class Ros1Loader:
                             other=f"{other.file}:{other.line}")
             else:
                 earlier.append((location, scope.conditions))
-        if machine and machine not in self.model.machines and "?" not in machine:
-            self.fail(scope, element, f"unknown machine '{machine}'")
+        if machine and "?" not in machine:
+            self.machine_uses.append((machine, self.where(scope, element)))
         try:
             respawn_delay = float(delay) if delay else 0.0
         except ValueError:
@@ -614,6 +620,35 @@ class Ros1Loader:
             machine=machine, respawn=bool(respawn), required=bool(required),
             respawn_delay=respawn_delay, output=output, cwd=cwd, launch_prefix=prefix or None,
             env=list(env.env), is_test=is_test, remap_places=dict(remaps.remap_places)))
+
+    def check_machines(self) -> None:
+        """Each node's machine, once every file is loaded, as roslaunch looks it up
+        (``assign_machines``): one declared anywhere, after the node too, is known; one
+        declared nowhere is an error, unless a file not read (an include whose package
+        is not here: PR2's ``$(find pr2_machine)/pr2.machine``) or a machine whose name
+        is not known may declare it: then it is undecided, said once per machine, at
+        the first node on it."""
+        unread = [u.location for u in self.model.unread_includes] + self.unread_files
+        unnamed = any("?" in name for name in self.model.machines)
+        undecided: dict[str, list[Location]] = {}
+        for machine, where in self.machine_uses:
+            if machine in self.model.machines:
+                continue
+            if not unread and not unnamed:
+                self.model.diagnostics.append(diag.make(
+                    "LAUNCH_BAD_VALUE", where, detail=f"unknown machine '{machine}'"))
+                continue
+            undecided.setdefault(machine, []).append(where)
+        for machine, nodes in undecided.items():
+            places = ", ".join(f"{u.file}:{u.line}" for u in unread[:3]) + (
+                f" and {len(unread) - 3} more" if len(unread) > 3 else "")
+            why = (f"an include not read ({places})" if unread else "") + (
+                " or " if unread and unnamed else "") + (
+                "a machine whose name is not known" if unnamed else "")
+            others = f" (and {len(nodes) - 1} more nodes)" if len(nodes) > 1 else ""
+            self.model.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", nodes[0], detail=(
+                f"machine '{machine}' of this node{others} is declared in no file read; "
+                f"{why} may declare it")))
 
     def tag_include(self, element: Element, scope: Scope) -> None:
         guard = self.take_guard()
@@ -764,6 +799,7 @@ class Ros1Loader:
             if written_absolute(path, parent.path):
                 self.report("LAUNCH_INCLUDE_ABSOLUTE", parent, element, path=path)
             scope.item.kind = "include"  # the include that reached it, not read
+            self.unread_files.append(self.where(parent, element))
             return False
         location = self.where(parent, element) if parent else self.workspace.location(path)
         if parent is not None and element is not None and not os.path.isfile(path) and (
@@ -771,6 +807,7 @@ class Ros1Loader:
             # in a git submodule not checked out: what it would start stays unknown
             self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=note)
             scope.item.kind = "include"  # the include that reached it, not read
+            self.unread_files.append(self.where(parent, element))
             return False
         root = self.parse(path, location)
         if root is None:
@@ -822,6 +859,7 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
                                   for k, v in given.items()])
     loader.model.tree.append(scope.item)
     loader.load_file(path, scope)
+    loader.check_machines()
     loader.model.args = {k: (v.text if v is not None else None)
                          for k, v in scope.args.items()}
     for name in scope.arg_names:

@@ -1284,6 +1284,12 @@ public:
   template<class Y> shared_ptr(const shared_ptr<Y>& other, element_type* p) noexcept;
   template<class Y, class D> shared_ptr(unique_ptr<Y, D>&& other);
   template<class Y> shared_ptr(auto_ptr<Y>&& other);  // C++11-14; libstdc++ keeps it
+  // what a function the parse declared permissively returns, a pointer in the real code
+  // (vrpn_client_ros' ``std::shared_ptr<vrpn_Connection>(vrpn_get_connection_by_name(
+  // host))``, vrpn's headers missing): not ambiguous among the constructors above, each
+  // reachable through the value's conversion to any type
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  explicit shared_ptr(const U& unknown);
   shared_ptr& operator=(const shared_ptr& other) noexcept;
   template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
   shared_ptr& operator=(const shared_ptr<Y>& other) noexcept;
@@ -1296,6 +1302,8 @@ public:
   template<class Y> void reset(Y* p);
   template<class Y, class D> void reset(Y* p, D d);
   template<class Y, class D, class A> void reset(Y* p, D d, A a);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  void reset(const U& unknown);  // (as the constructor above)
   long use_count() const noexcept;
   explicit operator bool() const noexcept;
 };
