@@ -426,6 +426,13 @@ class Walker:
             # has, the node reads a dict (AutoRally's autorally_controller.py reads
             # ``get_param("~chassisCommandProirities", [])``, then sorts its ``items()``)
             reads[0].type = "dict"
+        elif reads[0].kind == "read" and reads[0].type == "str" and reads[0].default == "" \
+                and member in _iterated_members(frame.module):
+            # an empty text as the default of a value the code walks element by element
+            # (``for c in sorted(self.joints)``) stands for "none": rospy's read has no
+            # type, and the node reads a list (rbx1's dynamixel_joint_state_publisher.py
+            # reads ``get_param(namespace + '/joints', '')``, the launch file loads a list)
+            reads[0].type = "list"
         if _member_writes(frame.module).get(member) == 1:
             # rclpy's ``declare_parameter`` / ``get_parameter`` give the Parameter, whose
             # ``.value`` a condition reads (``self.origin_param.value == 'auto'``)
@@ -1532,6 +1539,25 @@ def _mapping_members(module: Module) -> set[str]:
             and node.func.attr in _MAPPING_METHODS
             and (member := _self_member(node.func.value)) is not None}
     return module.mapping_members
+
+
+# builtins whose one argument the code walks element by element (``sorted(self.x)``)
+_ITERATING = frozenset({"sorted", "enumerate", "reversed", "list", "tuple", "set"})
+
+
+def _iterated_members(module: Module) -> set[str]:
+    """The ``self.<member>`` of the module that some code walks element by element: the
+    iterable of a ``for`` or a comprehension, as it is or as the argument of ``sorted``,
+    ``enumerate``, ``reversed``, ``list``, ``tuple`` or ``set``."""
+    if module.iterated_members is None:
+        walked = [node.iter for node in ast.walk(module.tree)
+                  if isinstance(node, ast.For | ast.AsyncFor | ast.comprehension)]
+        walked += [node.args[0] for node in ast.walk(module.tree)
+                   if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+                   and node.func.id in _ITERATING and len(node.args) == 1]
+        module.iterated_members = {
+            member for value in walked if (member := _self_member(value)) is not None}
+    return module.iterated_members
 
 
 def _resolved(value: object) -> tuple[Value, str | None] | None:
