@@ -66,6 +66,7 @@ def extract_python(sources: list[str], workspace: Workspace, *,
             loaded.node_version = loader.node_version
     walker = Walker(loader)
     walker.unseen_packages = _unseen_packages(workspace, package)
+    walker.unseen_dependencies = _unseen_packages(workspace, package, declared=True)
     walker.run(modules)
     result.rosname, result.namespace = walker.rosname, walker.namespace
     result.anonymous = walker.anonymous
@@ -174,16 +175,19 @@ NOT_CLIENTS = frozenset({
 })
 
 
-def _unseen_packages(workspace: Workspace, package: str | None) -> frozenset[str]:
+def _unseen_packages(workspace: Workspace, package: str | None,
+                     declared: bool = False) -> frozenset[str]:
     """The ROS packages the workspace does not hold whose code may make ROS calls
-    (``NOT_CLIENTS`` do not): those the node's package depends on, and those the tool
-    knows by a shipped interface model, which a package may use without declaring it
-    (tiago_tutorials' tts builds sound_play's SoundClient, a publisher of
-    ``robotsound``, and lists only roscpp and rospy)."""
+    (``NOT_CLIENTS`` do not): those the node's package depends on, and (unless
+    ``declared``) those the tool knows by a shipped interface model, which a package may
+    use without declaring it (tiago_tutorials' tts builds sound_play's SoundClient, a
+    publisher of ``robotsound``, and lists only roscpp and rospy)."""
     found = workspace.packages.get(package) if package is not None else None
     if found is None:
         return frozenset()
-    names = {d.name for d in found.dependencies} | shipped_packages()
+    names = {d.name for d in found.dependencies}
+    if not declared:
+        names |= shipped_packages()
     return frozenset(name for name in names
                      if name not in workspace.packages and name not in NOT_CLIENTS)
 

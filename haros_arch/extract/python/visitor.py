@@ -137,7 +137,9 @@ class Walker:
         # the ROS packages the node's package depends on whose code is not read, and
         # the classes of them said built (``_unseen_class``)
         self.unseen_packages: frozenset[str] = frozenset()
-        self._classes_said: dict[str, Location] = {}
+        # those of them the node's package.xml names (``_package_of_module``)
+        self.unseen_dependencies: frozenset[str] = frozenset()
+        self._classes_said: dict[str, tuple[Location, str]] = {}
         # classes built of Python packages neither the workspace holds nor a dependency
         # names (``_unseen_class``): ROS code when the program makes no node itself
         self._classes_elsewhere: dict[str, Location] = {}
@@ -1267,8 +1269,9 @@ class Walker:
                 or parts[0] in _MODELLED or target.qualname in self._classes_said \
                 or any(part in ("msg", "srv", "action") for part in parts[1:-1]):
             return
-        if parts[0] in self.unseen_packages:
-            self._classes_said[target.qualname] = self._where(frame, call)
+        package = self._package_of_module(parts[0])
+        if package is not None:
+            self._classes_said[target.qualname] = (self._where(frame, call), package)
         elif base and target.qualname not in self._classes_elsewhere and _foreign(parts[0]):
             self._classes_elsewhere[target.qualname] = self._where(frame, call)
 
@@ -1335,9 +1338,21 @@ class Walker:
                                                   module=cls.split(".", 1)[0]))
         if no_node and not self._ros_init and not self._gui_plugin and not self.calls:
             return
-        for cls, where in self._classes_said.items():
+        for cls, (where, package) in self._classes_said.items():
             self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,
-                                              package=cls.split(".", 1)[0]))
+                                              package=package))
+
+    def _package_of_module(self, module: str) -> str | None:
+        """The unread ROS package whose Python code the top-level module ``module`` is:
+        the package of that name, else a dependency of the node's package whose name
+        the module's begins with, then ``_`` (a package's setup.py installs modules of
+        any name: mas_common_robotics' mcr_manipulation_pose_selector installs
+        ``mcr_manipulation_pose_selector_ros``), the longest such name, when the
+        module may be ROS code (``_foreign``). None for any other module."""
+        if module in self.unseen_packages:
+            return module
+        named = [name for name in self.unseen_dependencies if module.startswith(name + "_")]
+        return max(named, key=len) if named and _foreign(module) else None
 
     def _add(self, call: PrimitiveCall) -> None:
         self.calls.append(call)
