@@ -62,6 +62,7 @@ from .objects import (
 )
 from .qos import as_profile, with_policy
 from .reach import Reach, imports_ros
+from .scopes import COPIES as _COPIES
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
@@ -631,6 +632,13 @@ class Walker:
         turn = self._turn_loop(target, over, frame)
         if turn is not None:
             return turn
+        while isinstance(over, ast.Call) and isinstance(over.func, ast.Name) \
+                and over.func.id in _COPIES and len(over.args) == 1 and not over.keywords \
+                and isinstance(ev.eval(over.func, frame), Unknown):
+            # ``sorted(p)``, ``list(p)``, ...: the elements of ``p`` in an order of their
+            # own (rbx1's dynamixel_joint_state_publisher.py: ``for controller in
+            # sorted(self.joints)``)
+            over = over.args[0]
         walked = ev.eval(over, frame)
         if isinstance(walked, ParamValue):
             return ParamElement(walked.name) if isinstance(target, ast.Name) else None
