@@ -66,3 +66,17 @@ def test_sorted_list_parameter_is_walked_element_by_element(tmp_path) -> None:
                  "            rospy.Subscriber(c + '/state', Float64, None)\n")
     each = ("for each (c in sorted(self.joints))",)
     assert made(result) == [("subscribe", "?/state", "/joints", ".", each)]
+
+
+def test_a_parameter_read_in_the_node_namespace_names_its_calls_as_read(tmp_path) -> None:
+    """rbx1's relax_all_servos.py reads ``rospy.get_namespace() + '/joints'``, the read
+    ``joints`` (relative: in the node's namespace); the calls named by its elements took
+    ``?/joints`` for their parameter, a name no launch file sets."""
+    result = run(tmp_path,
+                 "        namespace = rospy.get_namespace()\n"
+                 "        self.joints = rospy.get_param(namespace + '/joints', '')\n"
+                 "        for c in sorted(self.joints):\n"
+                 "            rospy.Publisher('/' + c + '/command', Float64, queue_size=1)\n")
+    each = ("for each (c in sorted(self.joints))",)
+    assert [c.name for c in result.calls if c.kind == "read"] == ["joints"]
+    assert made(result) == [("publish", "/?/command", "joints", ".", each)]

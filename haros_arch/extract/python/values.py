@@ -70,6 +70,18 @@ LIMITS = ops.Limits(steps=500_000)
 # methods of an rclpy node that give its own name; in a name they are the private '~'
 NAME_METHODS = ("get_name", "get_fully_qualified_name")
 NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
+
+
+def in_namespace(text: Value) -> Value:
+    """``f"{get_namespace()}/x"`` is the relative name ``x``: it resolves in the node's
+    namespace (rospy's namespace ends in '/', rclpy's does not). So is the parameter a
+    read of that name gives its value of (rbx1's relax_all_servos.py walks the value of
+    ``get_param(rospy.get_namespace() + '/joints', '')``)."""
+    parts = text.parts
+    if len(parts) >= 2 and isinstance(parts[0], Unknown) and parts[0].origin == NAMESPACE \
+            and isinstance(parts[1], str) and parts[1].strip("/"):
+        return Value.of(parts[1].lstrip("/"), *parts[2:])
+    return text
 # origin of what rospy.resolve_name(name) gives, the name written after it: a known name,
 # resolved and remapped at run time (``visitor._resolved``)
 RESOLVED = "resolved name "
@@ -405,7 +417,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if key in (("rospy", "get_param"), ("rospy", "get_param_cached")):
             name = argument(expr, rospy.ROWS[key].name)
             default = argument(expr, rospy.ROWS[key].value)
-            value = ParamValue(own_name(text_of(self.eval(name, frame))).text if name else "?",
+            value = ParamValue(in_namespace(own_name(text_of(self.eval(name, frame)))).text
+                               if name else "?",
                                self.eval(default, frame) if default is not None else None)
             self.param_defaults[value.name] = value.default
             return value

@@ -67,10 +67,10 @@ from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
     MAX_CALL_DEPTH,
-    NAMESPACE,
     RESOLVED,
     Evaluator,
     argument,
+    in_namespace,
     own_name,
     searched_name,
     unknown_params,
@@ -1227,7 +1227,7 @@ class Walker:
         if found is not None:  # get_param(search_param('x')): the parameter found
             call.name, call.searched = found, True
             return
-        text = _in_namespace(own_name(text))
+        text = in_namespace(own_name(text))
         if version == 2 and call.kind in _PARAM_KINDS:
             call.name = param_name(text)
         elif text.text.startswith("~/"):  # f"{get_name()}/x": the private name ~x
@@ -1599,16 +1599,6 @@ def _resolved(value: object) -> tuple[Value, str | None] | None:
     under = bool(rest) and isinstance(rest[0], str) and rest[0].startswith("/") and (
         rest[0].strip("/"))
     return Value.of(written, *rest), (written if under else None)
-
-
-def _in_namespace(text: Value) -> Value:
-    """``f"{get_namespace()}/x"`` is the relative name ``x``: it resolves in the node's
-    namespace (rospy's namespace ends in '/', rclpy's does not)."""
-    parts = text.parts
-    if len(parts) >= 2 and isinstance(parts[0], Unknown) and parts[0].origin == NAMESPACE \
-            and isinstance(parts[1], str) and parts[1].strip("/"):
-        return Value.of(parts[1].lstrip("/"), *parts[2:])
-    return text
 
 
 def _remote(remote: Value, name: str) -> str:
