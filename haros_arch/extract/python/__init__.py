@@ -98,7 +98,8 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     typed = {(c.kind, c.name, c.location, c.node_name) for c in calls
              if c.type not in (None, "?")}
     # and a site whose '?' some walk named by a parameter does not keep the walk that
-    # named it by none (its function walked with its arguments unbound)
+    # named it by nothing (neither a parameter nor a command-line option: its function
+    # walked with its arguments unbound)
     linked = {(c.kind, c.name, c.location, c.node_name) for c in calls
               if c.name_param is not None}
     for call in calls:
@@ -107,7 +108,8 @@ def extract_python(sources: list[str], workspace: Workspace, *,
         # a client per joint of ``[pan, tilt]``, two parameters' values)
         key = (call.kind, call.name, call.location, call.node_name, call.type,
                call.name_option, call.name_param, call.name_default)
-        if "?" in call.name and call.name_param is None and key[:4] in linked:
+        if "?" in call.name and call.name_param is None and call.name_option is None \
+                and key[:4] in linked:
             continue
         if key in seen:
             # the same call on both paths of an if (a function given a local the paths
