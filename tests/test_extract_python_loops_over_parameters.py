@@ -80,3 +80,23 @@ def test_a_parameter_read_in_the_node_namespace_names_its_calls_as_read(tmp_path
     each = ("for each (c in sorted(self.joints))",)
     assert [c.name for c in result.calls if c.kind == "read"] == ["joints"]
     assert made(result) == [("publish", "/?/command", "joints", ".", each)]
+
+
+def test_a_list_made_with_list_is_an_empty_list(tmp_path) -> None:
+    """rbx1's dynamixel_joint_state_publisher.py: ``self.controllers = list()``, an
+    element appended per joint of the list parameter ``/joints``, then a subscription per
+    controller: ``list()`` was an unknown value, so the appends were lost and
+    ``?/state`` named by nothing; it is ``[]``, as ``tuple()`` is ``()``, and
+    ``list(seq)`` a copy of a known sequence."""
+    result = run(tmp_path,
+                 "        self.joints = rospy.get_param('/joints', '')\n"
+                 "        self.controllers = list()\n"
+                 "        for controller in sorted(self.joints):\n"
+                 "            self.controllers.append(controller)\n"
+                 "        [rospy.Subscriber(c + '/state', Float64, None)"
+                 " for c in self.controllers]\n"
+                 "        for side in list(('left', 'right')):\n"
+                 "            rospy.Publisher(side + '/x', Float64, queue_size=1)\n")
+    assert made(result) == [("subscribe", "?/state", "/joints", ".", ()),
+                            ("publish", "left/x", None, None, ()),
+                            ("publish", "right/x", None, None, ())]

@@ -379,6 +379,15 @@ class Evaluator(Instances, QoSProfiles, Walker):
                 except ValueError:
                     return Unknown(expr.func.id)
             return value if number(value) else Unknown(expr.func.id)
+        if isinstance(expr.func, ast.Name) and expr.func.id in ("list", "tuple") \
+                and not expr.keywords and len(expr.args) <= 1 and isinstance(func, Unknown):
+            # ``list()`` is ``[]`` (rbx1's dynamixel_joint_state_publisher.py: ``self.
+            # controllers = list()``, then an element appended per joint of a list
+            # parameter), and ``list(seq)`` a copy of a sequence the walk knows
+            if not expr.args:
+                return Seq(())
+            value = self.eval(expr.args[0], frame)
+            return Seq(value.items) if isinstance(value, Seq) else Unknown("call")
         return Unknown("call")
 
     def callee(self, func: ast.expr, frame: Frame) -> object:
