@@ -39,9 +39,11 @@ def test_a_local_made_of_a_parameter_names_it(write_tree) -> None:
     })
     result = extract_cpp([str(root / "conv" / "src" / "node.cpp")], scan([str(root)]),
                          cache_dir=None)
+    assert [c.name_more for c in result.calls if c.name == "?/?"] == [[["~topic", None]]]
     assert sorted((c.kind, c.name, c.name_param) for c in result.calls
                   if c.kind in ("publish", "subscribe")) == [
-        ("publish", "?/?", None),  # two parameter runs in one local: not one parameter
+        # two parameter runs in one local: each named, as in a call (``name_more``)
+        ("publish", "?/?", "~topic"),
         ("publish", "?/direct", "~topic"),
         ("publish", "~?/converted", "~topic"),
         ("subscribe", "?", "~topic"),

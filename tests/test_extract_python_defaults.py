@@ -101,3 +101,32 @@ def test_an_rclpy_managed_node_serves_its_state_machine(tmp_path):
         ("server", "~/get_available_states", "lc_talker"),
         ("server", "~/get_available_transitions", "lc_talker"),
         ("server", "~/get_state", "lc_talker"), ("server", "~/get_transition_graph", "lc_talker")]
+
+
+def test_an_empty_text_default_of_a_value_walked_element_by_element_is_a_list(tmp_path):
+    """rbx1's dynamixel_joint_state_publisher.py: ``self.joints = rospy.get_param(
+    namespace + '/joints', '')``, then ``for controller in sorted(self.joints)``: the
+    launch file loads a list there, and the empty text made parameter-type-mismatch say
+    the node reads a string (survey surveyB). A text default that is not empty, or an
+    empty one the code does not walk, keeps its type."""
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import rospy\n"
+        "class Publisher(object):\n"
+        "    def __init__(self):\n"
+        "        self.joints = rospy.get_param('/joints', '')\n"
+        "        self.names = rospy.get_param('~names', '')\n"
+        "        self.frame = rospy.get_param('~frame', '')\n"
+        "        self.prefix = rospy.get_param('~prefix', 'arm')\n"
+        "        for joint in sorted(self.joints):\n"
+        "            rospy.loginfo(joint)\n"
+        "        self.upper = [n.upper() for n in self.names]\n"
+        "        self.label = self.frame + '/base'\n"
+        "        for c in self.prefix:\n"
+        "            rospy.loginfo(c)\n"
+        "rospy.init_node('publisher')\n"
+        "Publisher()\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.name, c.type) for c in result.calls]
+    assert got == [("/joints", "list"), ("~names", "list"), ("~frame", "str"),
+                   ("~prefix", "str")]

@@ -621,7 +621,10 @@ def _namespace_values(config: Configuration) -> None:
             for child in below:  # unless every reader takes its keys alone
                 child.read_as_part_of = param
         param.value = None if any(c.is_unresolved for c in below) else tree
-        param.launch_type = "dict"
+        # a dictionary when some key under the name is known; set only through content
+        # not known (``name/?``: a ``<rosparam param="name">`` that is no YAML, a file not
+        # named statically), the value may be a scalar as well: no type
+        param.launch_type = "dict" if tree else None
         param.set_by_launch = True
         param.launch_location = below[0].launch_location
         param.launch_conditions = below[0].launch_conditions

@@ -1544,14 +1544,16 @@ class Scope:
                 return found
         return UNKNOWN
 
-    def _stream_text(self, decl: Cursor, at: Cursor, depth: int) -> Parts:
-        """What ``ss.str()`` at ``at`` gives of the local string stream ``decl``, made
-        empty and written in this body with ``ss << a << b`` (youbot_driver_ros_interface's
+    def _stream_events(self, decl: Cursor, at: Cursor, depth: int
+                       ) -> list[tuple[Parts | None, list[Cursor]]] | None:
+        """The writes (their text, or None for an emptying, and the operands written)
+        that make what ``ss.str()`` at ``at`` gives of the local string stream ``decl``,
+        made empty and written in this body with ``ss << a << b`` (youbot_driver_ros_interface's
         ``topicName.str(""); topicName << armTopic << "arm_controller/position_command";
         node.subscribe(topicName.str(), ...)``): the text of what was written since its
         last emptying (``ss.str("")``), each string and integer written as its value, any
-        other value (a float, a manipulator's formatting) an unknown run. Unknown as a
-        whole where a write may not run before ``at`` (a branch it is outside of), where
+        other value (a float, a manipulator's formatting) an unknown run. None (unknown
+        as a whole) where a write may not run before ``at`` (a branch it is outside of), where
         ``at`` is in a loop (or lambda) that writes the stream without emptying it before
         ``at`` in the same turn, or writes it after ``at`` (the next turn reads that),
         where the stream is made with a text (later writes overwrite it from its start)
@@ -1561,14 +1563,15 @@ class Scope:
                 child.kind.is_expression() and (strip(child).kind != CursorKind.CALL_EXPR
                                                 or written_arguments(strip(child)))
                 for child in decl.get_children()):
-            return UNKNOWN
+            return None
         _ = self.writes  # the regions are read with the writes
         key, where = key_of(decl), at.extent.start.offset
         start = decl.extent.start.offset
         uses: set[int] = set()  # the places the body names the stream
         known: set[int] = set()  # those that are a write, an emptying or a read of it
         inner: set[tuple[int, int]] = set()  # the ``<<`` of a chain already taken
-        events: list[tuple[int, Parts | None]] = []  # (place, written) or an emptying
+        # (place, written, its operands), written None for an emptying
+        events: list[tuple[int, Parts | None, list[Cursor]]] = []
         loops: list[tuple[int, int]] = []  # the loops and lambdas ``at`` is in, not decl
         for node in _walk(self.body):
             offset = node.extent.start.offset
@@ -1600,7 +1603,7 @@ class Scope:
                             and key_of(left.referenced) == key:
                         known.add(left.extent.start.offset)
                         events.append((offset, self._streamed(operands, depth)
-                                       if offset < where else ()))
+                                       if offset < where else (), operands))
                     break
             elif node.kind == CursorKind.CALL_EXPR and node.spelling in ("str", "clear"):
                 callee = next(iter(node.get_children()), None)
@@ -1614,25 +1617,54 @@ class Scope:
                 args = written_arguments(node)
                 if node.spelling == "str" and args:
                     if self.string(args[0], depth + 1) != ("",):
-                        return UNKNOWN  # a text that later writes overwrite
-                    events.append((offset, None))
+                        return None  # a text that later writes overwrite
+                    events.append((offset, None, []))
         if uses - known:
-            return UNKNOWN  # given away, or changed otherwise (``ss.precision(3)``)
+            return None  # given away, or changed otherwise (``ss.precision(3)``)
         for first, last in loops:
-            inside = [offset for offset, _written in events if first <= offset <= last]
+            inside = [offset for offset, _written, _ops in events if first <= offset <= last]
             if any(offset > where for offset in inside):
-                return UNKNOWN  # written after ``at`` in the loop: read in the next turn
-            if inside and not any(first <= offset < where for offset, written in events
+                return None  # written after ``at`` in the loop: read in the next turn
+            if inside and not any(first <= offset < where for offset, written, _ops in events
                                   if written is None):
-                return UNKNOWN  # what earlier turns wrote is still there
-        events = sorted(event for event in events if event[0] < where)
+                return None  # what earlier turns wrote is still there
+        events = sorted((event for event in events if event[0] < where),
+                        key=lambda event: event[0])
         if any(first <= offset <= last and not first <= where <= last
-               for offset, _written in events for first, last in self._regions):
-            return UNKNOWN  # a write or an emptying that may not run before ``at``
+               for offset, _written, _ops in events for first, last in self._regions):
+            return None  # a write or an emptying that may not run before ``at``
+        return [(written, ops) for _offset, written, ops in events]
+
+    def _stream_text(self, decl: Cursor, at: Cursor, depth: int) -> Parts:
+        """What ``ss.str()`` at ``at`` gives of the local string stream ``decl``
+        (``_stream_events``): the text written since its last emptying; UNKNOWN where
+        that is not known."""
+        events = self._stream_events(decl, at, depth)
+        if events is None:
+            return UNKNOWN
         parts: Parts = ()
-        for _offset, written in events:
+        for written, _ops in events:
             parts = () if written is None else parts + written
         return parts if parts else ("",)
+
+    def stream_operands(self, call: Cursor) -> list[Cursor] | None:
+        """The values written, in order, since its last emptying, to the local string
+        stream whose ``str()`` the call ``call`` is (pddl_problem_generator's ``ss << "/"
+        << knowledge_base << "/domain/name"; name = ss.str();``); None for any other
+        call, or a stream whose text is not known."""
+        children = list(call.get_children()) if call.kind == CursorKind.CALL_EXPR and (
+            call.spelling == "str" and not written_arguments(call)) else []
+        if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
+            return None
+        objects = list(children[0].get_children())
+        stream = _string_stream(objects[0]) if objects else None
+        events = self._stream_events(stream, call, 0) if stream is not None else None
+        if events is None:
+            return None
+        found: list[Cursor] = []
+        for written, ops in events:
+            found = [] if written is None else found + ops
+        return found
 
     def _streamed(self, operands: list[Cursor], depth: int) -> Parts:
         """The text of values written to a string stream: a string's, an integer's

@@ -158,6 +158,8 @@ _API_NAMES = frozenset(
                           *api.STANDIN_NODE_NAME, *api.FACTORIES]]
     + [parameter_library.LISTENER])
 MAX_DEPTH = 16
+# how many variables or members holding a name ``_held_source`` follows, one in another
+_MAX_HELD = 3
 _MAX_CONSTANT_ELEMENTS = 64  # a constant list longer than this is read as unknown
 # a nodelet's lookup name as a launch file gives it (``pkg/Name``, a C++ type)
 _LOOKUP_NAME = re.compile(r"[A-Za-z_][\w/:]*")
@@ -411,6 +413,7 @@ class CallFinder:
         # prefix (None: a map whose keys are not known), for get_parameters(prefix, out)
         self._prefix_keys: dict[str, list[str] | None] = {}
         self.calls: list[PrimitiveCall] = []
+        self._held_depth = 0  # variables holding a name followed now (``_held_source``)
         self.functions: list[Cursor] = []
         # the definitions of its headers the unit's code does not reach (``reachable``)
         self.unreached: list[Cursor] = []
@@ -2815,7 +2818,8 @@ class CallFinder:
         if None not in parts:
             return (name, None)
         if name.count("?") != 1:
-            return (name, self._first_parameter(expr, scope, name.count("?")))
+            return (name, self._first_parameter(expr, scope, name.count("?"))
+                    or self._held_source(inner, scope, name))
         # the one unknown part: the whole name, or a run of it that the text around keeps
         # (``"/" + robot_name + "/base_feedback"``; a wrapper's ``before`` and ``after``)
         unknown = [inner] if inner.kind == CursorKind.DECL_REF_EXPR or _subscript(
@@ -2857,7 +2861,38 @@ class CallFinder:
             # several parameters' values joined in the one ``?`` (doosan's ``"/" + name +
             # model + "/stop"``): each, the graph joins them where all are set
             return (name, self._first_parameter(expr, scope, 1))
-        return (name, None if source is None else (*source, None, None, None))
+        if source is None:
+            return (name, self._held_source(inner, scope, name))
+        return (name, (*source, None, None, None))
+
+    def _held_source(self, inner: Cursor, scope: Scope, name: str) -> NameSource | None:
+        """The parameters that name a call whose name is a variable or member holding a
+        text made around their values (a local, or a member this body or its class's
+        constructor assigns: pddl_problem_generator.cpp builds ``"/" << knowledge_base <<
+        "/domain/name"`` in a string stream in its constructor, keeps it in a member and
+        names a client with it in another method), read where that text is made, when
+        it renders as the call's name; else None."""
+        decl = inner.referenced if inner.kind in (
+            CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+        if decl is None or self._held_depth >= _MAX_HELD:
+            return None
+        held: tuple[Cursor, Scope] | None = None
+        if decl.kind == CursorKind.VAR_DECL:
+            value = scope.variable(decl)
+            held = (value, scope) if value is not None else None
+        elif decl.kind == CursorKind.FIELD_DECL:
+            value = scope.assigned(decl, inner) if inner.kind == CursorKind.MEMBER_REF_EXPR \
+                else None
+            held = (value, scope) if value is not None else scope.field(decl)
+        if held is None:
+            return None
+        self._held_depth += 1
+        try:
+            made, source = self._name(held[0], held[1])
+        finally:
+            self._held_depth -= 1
+        return source if source is not None and str(made) == str(name) and not isinstance(
+            made, (ArgumentName, OptionName, SelfName, BelowName, SearchedName)) else None
 
     def _constant_each(self, expr: Cursor, scope: Scope, name: str
                        ) -> tuple[list[str], tuple[int, int]] | None:
@@ -5036,6 +5071,11 @@ def _concatenated(expr: Cursor, scope: Scope, depth: int = 0) -> list[Cursor | N
         # a library the parse does not have), converted to the string the call takes
         held = permissive_held(expr)
         return [] if held is None else _concatenated(held, scope, depth + 1)
+    elif expr.kind == CursorKind.CALL_EXPR and expr.spelling == "str" and (
+            streamed := scope.stream_operands(expr)) is not None:
+        # what a local string stream was written (``ss << "/" << base << "/goals";
+        # ss.str()``), as the operands of a concatenation
+        operands = streamed
     else:
         return []
     found: list[Cursor | None] = []

@@ -66,6 +66,7 @@ def extract_python(sources: list[str], workspace: Workspace, *,
             loaded.node_version = loader.node_version
     walker = Walker(loader)
     walker.unseen_packages = _unseen_packages(workspace, package)
+    walker.unseen_dependencies = _unseen_packages(workspace, package, declared=True)
     walker.run(modules)
     result.rosname, result.namespace = walker.rosname, walker.namespace
     result.anonymous = walker.anonymous
@@ -86,7 +87,8 @@ def extract_python(sources: list[str], workspace: Workspace, *,
             call.node_name = None
     # a call site also reached with its names known does not keep a '?' variant that
     # one of them fits (the site walked with its function's arguments unbound); one no
-    # known name fits is a call of its own (a wrapper given "zeros/" + a joint's name)
+    # known name fits is a call of its own (a wrapper given "zeros/" + a joint's name),
+    # and so is one a parameter's value names (``for joint in sorted([pan, 'tilt'])``)
     known: dict[tuple[object, ...], list[str]] = {}
     for c in calls:
         if "?" not in c.name:
@@ -95,17 +97,27 @@ def extract_python(sources: list[str], workspace: Workspace, *,
     # type is kept where the paths of an if give it different ones)
     typed = {(c.kind, c.name, c.location, c.node_name) for c in calls
              if c.type not in (None, "?")}
+    # and a site whose '?' some walk named by a parameter does not keep the walk that
+    # named it by nothing (neither a parameter nor a command-line option: its function
+    # walked with its arguments unbound)
+    linked = {(c.kind, c.name, c.location, c.node_name) for c in calls
+              if c.name_param is not None}
     for call in calls:
-        # (one named by an option of the command line is not one named otherwise)
+        # (one named by an option of the command line is not one named otherwise; nor
+        # one named by a parameter, one named by another: rbx1's head_tracker.py names
+        # a client per joint of ``[pan, tilt]``, two parameters' values)
         key = (call.kind, call.name, call.location, call.node_name, call.type,
-               call.name_option)
+               call.name_option, call.name_param, call.name_default)
+        if "?" in call.name and call.name_param is None and call.name_option is None \
+                and key[:4] in linked:
+            continue
         if key in seen:
             # the same call on both paths of an if (a function given a local the paths
             # left different, gazebo_ros' spawn_entity.py's timeout): under neither
             kept = seen[key]
             kept.conditions = _either(kept.conditions, call.conditions)
             continue
-        if ("?" in call.name and _fitted(call.name, known.get(
+        if ("?" in call.name and call.name_param is None and _fitted(call.name, known.get(
                 (call.kind, call.location, call.node_name), []))) or (
                 call.type == "?" and key[:4] in typed):
             continue
@@ -174,16 +186,19 @@ NOT_CLIENTS = frozenset({
 })
 
 
-def _unseen_packages(workspace: Workspace, package: str | None) -> frozenset[str]:
+def _unseen_packages(workspace: Workspace, package: str | None,
+                     declared: bool = False) -> frozenset[str]:
     """The ROS packages the workspace does not hold whose code may make ROS calls
-    (``NOT_CLIENTS`` do not): those the node's package depends on, and those the tool
-    knows by a shipped interface model, which a package may use without declaring it
-    (tiago_tutorials' tts builds sound_play's SoundClient, a publisher of
-    ``robotsound``, and lists only roscpp and rospy)."""
+    (``NOT_CLIENTS`` do not): those the node's package depends on, and (unless
+    ``declared``) those the tool knows by a shipped interface model, which a package may
+    use without declaring it (tiago_tutorials' tts builds sound_play's SoundClient, a
+    publisher of ``robotsound``, and lists only roscpp and rospy)."""
     found = workspace.packages.get(package) if package is not None else None
     if found is None:
         return frozenset()
-    names = {d.name for d in found.dependencies} | shipped_packages()
+    names = {d.name for d in found.dependencies}
+    if not declared:
+        names |= shipped_packages()
     return frozenset(name for name in names
                      if name not in workspace.packages and name not in NOT_CLIENTS)
 

@@ -82,6 +82,8 @@ class Module:
     member_writes: dict[str, int] | None = None
     # the ``self.<member>`` some code uses as a dict (visitor._mapping_members)
     mapping_members: set[str] | None = None
+    # the ``self.<member>`` some code walks element by element (visitor._iterated_members)
+    iterated_members: set[str] | None = None
     # the ROS version of the node these modules make, for a module that imports neither
     # rospy nor rclpy (``extract_python`` sets it)
     node_version: int = 1

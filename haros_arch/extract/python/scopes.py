@@ -187,6 +187,9 @@ class Scopes(EvaluatorBase):
                 items = args[0].items
                 return tuple(Seq((i, item)) for i, item in enumerate(items)) \
                     if len(items) <= limit else None
+            if expr.func.id in COPIES and len(args) == 1 and isinstance(args[0], Seq) \
+                    and len(args[0].items) <= limit:
+                return _copied(expr.func.id, args[0].items)
             return None
         value = self.eval(expr, frame)
         if isinstance(value, Seq) and len(value.items) <= limit:
@@ -194,6 +197,28 @@ class Scopes(EvaluatorBase):
         if isinstance(value, Record):
             return _view(value, "keys", limit)
         return None
+
+
+# builtins that give the items of the sequence they are given, in an order of their own
+# (``for joint in sorted(self.joints)``: rbx1's head_tracker.py)
+COPIES = frozenset({"sorted", "reversed", "list", "tuple"})
+
+
+def _copied(builtin: str, items: tuple[object, ...]) -> tuple[object, ...]:
+    """The items a loop over ``builtin(items)`` takes: reversed, sorted when every item
+    is a literal text or every one a number, else (``sorted`` of items not all known) as
+    written: each is walked once, which is all a call made per item depends on."""
+    if builtin == "reversed":
+        return items[::-1]
+    if builtin != "sorted":
+        return items
+    texts = [item.literal if isinstance(item, Value) else None for item in items]
+    if all(text is not None for text in texts):
+        order = sorted(range(len(items)), key=lambda index: str(texts[index]))
+        return tuple(items[index] for index in order)
+    if all(isinstance(item, int | float) and not isinstance(item, bool) for item in items):
+        return tuple(sorted(items, key=float))  # type: ignore[arg-type]
+    return items
 
 
 # a dict's methods that iterate over it, and what each gives

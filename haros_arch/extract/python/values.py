@@ -70,6 +70,27 @@ LIMITS = ops.Limits(steps=500_000)
 # methods of an rclpy node that give its own name; in a name they are the private '~'
 NAME_METHODS = ("get_name", "get_fully_qualified_name")
 NAMESPACE = "node namespace"  # origin of the unknown get_namespace() gives
+
+
+def in_namespace(text: Value, version: int = 1) -> Value:
+    """``f"{get_namespace()}/x"`` is the relative name ``x``: it resolves in the node's
+    namespace (rospy's namespace ends in '/', rclpy's does not). So is the parameter a
+    read of that name gives its value of (rbx1's relax_all_servos.py walks the value of
+    ``get_param(rospy.get_namespace() + '/joints', '')``). rclpy's (``version`` 2)
+    ``f"{get_namespace()}/{get_name()}/x"`` is the node's fully qualified name and what
+    follows: it is then written as starting with the node's own name (``own_name``)."""
+    parts = text.parts
+    if len(parts) < 2 or not isinstance(parts[0], Unknown) or parts[0].origin != NAMESPACE \
+            or not isinstance(parts[1], str):
+        return text
+    if parts[1].strip("/"):
+        return Value.of(parts[1].lstrip("/"), *parts[2:])
+    if version == 2 and parts[1] == "/" and len(parts) >= 3 and isinstance(
+            parts[2], Unknown) and parts[2].origin == NODE_NAME:
+        return Value.of(*parts[2:])
+    return text
+
+
 # origin of what rospy.resolve_name(name) gives, the name written after it: a known name,
 # resolved and remapped at run time (``visitor._resolved``)
 RESOLVED = "resolved name "
@@ -371,6 +392,15 @@ class Evaluator(Instances, QoSProfiles, Walker):
                 except ValueError:
                     return Unknown(expr.func.id)
             return value if number(value) else Unknown(expr.func.id)
+        if isinstance(expr.func, ast.Name) and expr.func.id in ("list", "tuple") \
+                and not expr.keywords and len(expr.args) <= 1 and isinstance(func, Unknown):
+            # ``list()`` is ``[]`` (rbx1's dynamixel_joint_state_publisher.py: ``self.
+            # controllers = list()``, then an element appended per joint of a list
+            # parameter), and ``list(seq)`` a copy of a sequence the walk knows
+            if not expr.args:
+                return Seq(())
+            value = self.eval(expr.args[0], frame)
+            return Seq(value.items) if isinstance(value, Seq) else Unknown("call")
         return Unknown("call")
 
     def callee(self, func: ast.expr, frame: Frame) -> object:
@@ -409,7 +439,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if key in (("rospy", "get_param"), ("rospy", "get_param_cached")):
             name = argument(expr, rospy.ROWS[key].name)
             default = argument(expr, rospy.ROWS[key].value)
-            value = ParamValue(own_name(text_of(self.eval(name, frame))).text if name else "?",
+            value = ParamValue(in_namespace(own_name(text_of(self.eval(name, frame)))).text
+                               if name else "?",
                                self.eval(default, frame) if default is not None else None)
             self.param_defaults[value.name] = value.default
             return value

@@ -62,15 +62,16 @@ from .objects import (
 )
 from .qos import as_profile, with_policy
 from .reach import Reach, imports_ros
+from .scopes import COPIES as _COPIES
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
 from .specials import evaluate, param_name, special_calls, type_only
 from .values import (
     MAX_CALL_DEPTH,
-    NAMESPACE,
     NODE_NAME,
     RESOLVED,
     Evaluator,
     argument,
+    in_namespace,
     own_name,
     searched_name,
     unknown_params,
@@ -138,7 +139,9 @@ class Walker:
         # the ROS packages the node's package depends on whose code is not read, and
         # the classes of them said built (``_unseen_class``)
         self.unseen_packages: frozenset[str] = frozenset()
-        self._classes_said: dict[str, Location] = {}
+        # those of them the node's package.xml names (``_package_of_module``)
+        self.unseen_dependencies: frozenset[str] = frozenset()
+        self._classes_said: dict[str, tuple[Location, str]] = {}
         # classes built of Python packages neither the workspace holds nor a dependency
         # names (``_unseen_class``): ROS code when the program makes no node itself
         self._classes_elsewhere: dict[str, Location] = {}
@@ -427,6 +430,13 @@ class Walker:
             # has, the node reads a dict (AutoRally's autorally_controller.py reads
             # ``get_param("~chassisCommandProirities", [])``, then sorts its ``items()``)
             reads[0].type = "dict"
+        elif reads[0].kind == "read" and reads[0].type == "str" and reads[0].default == "" \
+                and member in _iterated_members(frame.module):
+            # an empty text as the default of a value the code walks element by element
+            # (``for c in sorted(self.joints)``) stands for "none": rospy's read has no
+            # type, and the node reads a list (rbx1's dynamixel_joint_state_publisher.py
+            # reads ``get_param(namespace + '/joints', '')``, the launch file loads a list)
+            reads[0].type = "list"
         if _member_writes(frame.module).get(member) == 1:
             # rclpy's ``declare_parameter`` / ``get_parameter`` give the Parameter, whose
             # ``.value`` a condition reads (``self.origin_param.value == 'auto'``)
@@ -623,6 +633,13 @@ class Walker:
         turn = self._turn_loop(target, over, frame)
         if turn is not None:
             return turn
+        while isinstance(over, ast.Call) and isinstance(over.func, ast.Name) \
+                and over.func.id in _COPIES and len(over.args) == 1 and not over.keywords \
+                and isinstance(ev.eval(over.func, frame), Unknown):
+            # ``sorted(p)``, ``list(p)``, ...: the elements of ``p`` in an order of their
+            # own (rbx1's dynamixel_joint_state_publisher.py: ``for controller in
+            # sorted(self.joints)``)
+            over = over.args[0]
         walked = ev.eval(over, frame)
         if isinstance(walked, ParamValue):
             return ParamElement(walked.name) if isinstance(target, ast.Name) else None
@@ -1211,7 +1228,7 @@ class Walker:
         if found is not None:  # get_param(search_param('x')): the parameter found
             call.name, call.searched = found, True
             return
-        text = own_name(_in_namespace(text, version))
+        text = own_name(in_namespace(text, version))
         # rclpy's get_name() elsewhere in a name (``f"/{self.get_name()}/x"``): the node's
         # name without its namespace, which the graph puts in its place per instance; the
         # first ``?`` when nothing else fills the others (``f"/{self.get_name()}/{key}"``)
@@ -1269,8 +1286,9 @@ class Walker:
                 or parts[0] in _MODELLED or target.qualname in self._classes_said \
                 or any(part in ("msg", "srv", "action") for part in parts[1:-1]):
             return
-        if parts[0] in self.unseen_packages:
-            self._classes_said[target.qualname] = self._where(frame, call)
+        package = self._package_of_module(parts[0])
+        if package is not None:
+            self._classes_said[target.qualname] = (self._where(frame, call), package)
         elif base and target.qualname not in self._classes_elsewhere and _foreign(parts[0]):
             self._classes_elsewhere[target.qualname] = self._where(frame, call)
 
@@ -1337,9 +1355,21 @@ class Walker:
                                                   module=cls.split(".", 1)[0]))
         if no_node and not self._ros_init and not self._gui_plugin and not self.calls:
             return
-        for cls, where in self._classes_said.items():
+        for cls, (where, package) in self._classes_said.items():
             self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,
-                                              package=cls.split(".", 1)[0]))
+                                              package=package))
+
+    def _package_of_module(self, module: str) -> str | None:
+        """The unread ROS package whose Python code the top-level module ``module`` is:
+        the package of that name, else a dependency of the node's package whose name
+        the module's begins with, then ``_`` (a package's setup.py installs modules of
+        any name: mas_common_robotics' mcr_manipulation_pose_selector installs
+        ``mcr_manipulation_pose_selector_ros``), the longest such name, when the
+        module may be ROS code (``_foreign``). None for any other module."""
+        if module in self.unseen_packages:
+            return module
+        named = [name for name in self.unseen_dependencies if module.startswith(name + "_")]
+        return max(named, key=len) if named and _foreign(module) else None
 
     def _add(self, call: PrimitiveCall) -> None:
         self.calls.append(call)
@@ -1543,6 +1573,25 @@ def _mapping_members(module: Module) -> set[str]:
     return module.mapping_members
 
 
+# builtins whose one argument the code walks element by element (``sorted(self.x)``)
+_ITERATING = frozenset({"sorted", "enumerate", "reversed", "list", "tuple", "set"})
+
+
+def _iterated_members(module: Module) -> set[str]:
+    """The ``self.<member>`` of the module that some code walks element by element: the
+    iterable of a ``for`` or a comprehension, as it is or as the argument of ``sorted``,
+    ``enumerate``, ``reversed``, ``list``, ``tuple`` or ``set``."""
+    if module.iterated_members is None:
+        walked = [node.iter for node in ast.walk(module.tree)
+                  if isinstance(node, ast.For | ast.AsyncFor | ast.comprehension)]
+        walked += [node.args[0] for node in ast.walk(module.tree)
+                   if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+                   and node.func.id in _ITERATING and len(node.args) == 1]
+        module.iterated_members = {
+            member for value in walked if (member := _self_member(value)) is not None}
+    return module.iterated_members
+
+
 def _resolved(value: object) -> tuple[Value, str | None] | None:
     """A name that begins with ``rospy.resolve_name(name)``: the name as written, and,
     when ``/...`` follows it (``resolve_name('mux') + '/select'``), that name as the
@@ -1559,23 +1608,6 @@ def _resolved(value: object) -> tuple[Value, str | None] | None:
     under = bool(rest) and isinstance(rest[0], str) and rest[0].startswith("/") and (
         rest[0].strip("/"))
     return Value.of(written, *rest), (written if under else None)
-
-
-def _in_namespace(text: Value, version: int) -> Value:
-    """``f"{get_namespace()}/x"`` is the relative name ``x``: it resolves in the node's
-    namespace (rospy's namespace ends in '/', rclpy's does not). rclpy's
-    ``f"{get_namespace()}/{get_name()}/x"`` is the node's fully qualified name and what
-    follows: it is then written as starting with the node's own name (``own_name``)."""
-    parts = text.parts
-    if len(parts) < 2 or not isinstance(parts[0], Unknown) or parts[0].origin != NAMESPACE \
-            or not isinstance(parts[1], str):
-        return text
-    if parts[1].strip("/"):
-        return Value.of(parts[1].lstrip("/"), *parts[2:])
-    if version == 2 and parts[1] == "/" and len(parts) >= 3 and isinstance(
-            parts[2], Unknown) and parts[2].origin == NODE_NAME:
-        return Value.of(*parts[2:])
-    return text
 
 
 def _remote(remote: Value, name: str) -> str:
