@@ -85,6 +85,9 @@ public:
       if (costed != nullptr) {
         pubs_.push_back(std::make_unique<demo::Pub>(this, layer->getName() + "/c"));
       }
+      if (auto held = std::dynamic_pointer_cast<demo::Costed>(layer)) {
+        pubs_.push_back(std::make_unique<demo::Pub>(this, layer->getName() + "/d"));
+      }
     }
     for (auto & other : stack_->others()) {
       pubs_.push_back(std::make_unique<demo::Pub>(this, other->getName() + "/o"));
@@ -119,6 +122,7 @@ def test_a_name_each_kept_plugin_returns_is_marked(write_tree) -> None:
         # that returns the plugin's name)
         ("?", None, f"{LOADED}demo::Stack::getLayers demo::Layer::getTopic"),
         ("?/c", None, f"{layers} demo::Costed"),  # only a layer of that class
+        ("?/d", None, f"{layers} demo::Costed"),  # (the test's own declaration)
         ("?/o", None, others),
         ("?_raw", None, layers),  # made in the loop itself
     ], made

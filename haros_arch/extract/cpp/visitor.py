@@ -5034,6 +5034,10 @@ def _cast_tested(walk: Cursor, expr: Cursor, element: Cursor) -> str | None:
     key = key_of(element)
     for node in walk_cursors(body):
         children = list(node.get_children())
+        # ``if (auto x = ...)`` / ``if (auto x = ...; x)``: the declaration first
+        declared = children[0] if children and children[0].kind in (
+            CursorKind.VAR_DECL, CursorKind.DECL_STMT) else None
+        children = children[1:] if declared is not None else children
         if node.kind != CursorKind.IF_STMT or len(children) < 2 or not (
                 children[1].extent.start.offset <= at <= children[1].extent.end.offset):
             continue
@@ -5043,8 +5047,10 @@ def _cast_tested(walk: Cursor, expr: Cursor, element: Cursor) -> str | None:
             test.kind == CursorKind.BINARY_OPERATOR or (
                 test.kind == CursorKind.CALL_EXPR and test.spelling.startswith("operator"))
         ) else [test]
-        for each in tested:
-            local = each.referenced if each.kind == CursorKind.DECL_REF_EXPR else None
+        locals_ = [each.referenced for each in tested if each.kind == CursorKind.DECL_REF_EXPR]
+        if declared is not None and declared.kind == CursorKind.VAR_DECL:
+            locals_.append(declared)  # a condition's variable: its test is its value
+        for local in locals_:
             if local is None or local.kind != CursorKind.VAR_DECL:
                 continue
             made = initializer(local)
