@@ -40,6 +40,7 @@ from ..model.runtime import (
 )
 from ..model.source import (
     COUNTED,
+    LOADED,
     NUMBERED,
     PROCESS_HANDLE,
     ROS_ARGUMENT,
@@ -180,6 +181,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     # the calls a nodelet loaded into a manager makes on handles its code constructs,
     # with the manager's name: linked once every instance, the manager's too, is known
     in_manager: list[tuple[NodeInstance, list[PrimitiveCall], str]] = []
+    per_plugin: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     for decl, own in process_nodes(launch.nodes, nodes):
         instance = _instance(decl, nodes, workspace, config)
         if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
@@ -203,6 +205,13 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         if moved:
             in_manager.append((instance, moved, manager or ""))
             calls = [c for c in calls if c.handle_origin != PROCESS_HANDLE]
+        # a call per plugin object the host keeps: once its plugins are attached
+        kept = [c for c in calls if c.name_param is None and (c.name_each or "").startswith(
+            LOADED)]
+        if kept:
+            per_plugin.append((instance, kept))
+            calls = [c for c in calls if not (c.name_param is None and (
+                c.name_each or "").startswith(LOADED))]
         _link_calls(instance, calls, resources, config, transports)
     for instance, calls, manager in in_manager:
         _link_in_manager(instance, calls, manager, resources, config, transports)
@@ -221,7 +230,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.launch_tree = launch.tree  # the includes not read, which may set parameters
     attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
                               workspace, plugin_models, described.hardware)
-    for instance, calls in attached:
+    for instance, calls in [*per_plugin, *attached]:
         _link_calls(instance, calls, resources, config, transports)
     # then the classes any instance's own code loads by a parameter's value (filters'
     # chains), controllers and plugins made above included, and the chains those
@@ -1277,6 +1286,8 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     members = _member_calls(call, instance, resources)
     if members is not None:
         return members
+    if call.name_param is None and (call.name_each or "").startswith(LOADED):
+        return _kept_calls(call, instance)
     if call.name_each is None or call.name_param is None:
         return _element_turns(call, instance, resources)
     full = _list_name(call.name_param, instance)
@@ -1311,6 +1322,35 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                     loads_given=name if call.loads is not None else None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
+
+
+def _kept_calls(call: PrimitiveCall, instance: NodeInstance) -> list[PrimitiveCall]:
+    """A call named by each plugin object a loop of the host's code walks where it keeps
+    them (``LOADED``): one per plugin the host row's slot kept there loads
+    (``NodeInstance.kept``, ``hosts.Slot.kept``), named by the name it was given, under
+    the conditions that chose it; none when it loads none; the call as it is (its name
+    keeps its ``?``) where the instance keeps no such slot, or beside the others where
+    a parameter not seen may choose more plugins."""
+    container, method, *cast = (call.name_each or "")[len(LOADED):].split(" ")
+    kept = instance.kept.get((container, method))
+    if kept is None or call.name.count(UNKNOWN_MARK) != 1:
+        return [call]
+    whole, plugins = kept
+    conditions = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
+    made: list[PrimitiveCall] = []
+    for name, chosen, bases in plugins:
+        # the loop tests the object's class (``dynamic_pointer_cast<C>(layer)``): a
+        # plugin whose bases are known makes the call only if C is one of them; where
+        # they are not, the call is made under that test, undecided
+        test = cast[0] if cast else None
+        plain = test.rsplit("::", 1)[-1] if test else None
+        if plain is not None and bases is not None and plain not in bases:
+            continue
+        undecided = (Condition(f"{name} is a {test}", location=call.location),) if (
+            test is not None and bases is None) else ()
+        made.append(replace(call, name=_filled(call.name, name), name_each=None,
+                            conditions=conditions + chosen + undecided))
+    return made if whole else [*made, call]
 
 
 def _counted_calls(call: PrimitiveCall, instance: NodeInstance, param: Resource | None,

@@ -66,6 +66,14 @@ class NodeInstance:
     remap_places: dict[str, Location] = field(default_factory=dict,
                                               metadata={"optional": True})
     links: list[Link] = field(default_factory=list, metadata=INDEX)
+    # a host's plugin objects by where its code keeps them (``hosts.Slot.kept``: the
+    # container's function, the name's method): whether every plugin of that slot is
+    # known, and the name each is given with the conditions that chose it and its
+    # class's chain of bases (plain names, most derived first; None: not known)
+    # (``plugins.attach``; ``graph.build.element_calls`` names a call per plugin)
+    kept: dict[tuple[str, str], tuple[bool, list[tuple[
+        str, tuple[Condition, ...], tuple[str, ...] | None]]]] = field(
+        default_factory=dict, metadata=INDEX)
 
     JSON_VIEWS: ClassVar[dict[str, Callable[[Any], Any]]] = {
         "completeness": lambda n: n.completeness,

@@ -78,6 +78,24 @@ NUMBERED = "#"
 # ``PrimitiveCall.name_each`` of a call named by each word of a string parameter (costmap_2d's
 # ``observation_sources``, read word by word with ``while (stream >> source)``)
 WORDS = " "
+# the start of a ``PrimitiveCall.name_each`` (``name_param`` None) of a call named by each
+# object a loop walks in a container of the node's plugins, by what a method of the object
+# returns: LOADED, the qualified name of the function that gives the container, a space,
+# that of the method (navigation2's Costmap2DROS, ``for (auto & layer :
+# *layered_costmap_->getPlugins())``, a publisher on ``layer->getName()``: "@nav2_costmap_2d::
+# LayeredCostmap::getPlugins nav2_costmap_2d::Layer::getName"); the graph makes the call
+# once per plugin the host row says is kept there (``hosts.Slot.kept``); then, after a
+# space, the class the loop tests the object is of before the call (``if (auto
+# costmap_layer = std::dynamic_pointer_cast<CostmapLayer>(layer))``), if it does
+LOADED = "@"
+
+
+def loaded_mark(container: str, method: str, cast: str | None = None) -> str:
+    """``PrimitiveCall.name_each`` of a call named by ``method`` of each object of the
+    container ``container`` gives (``LOADED``), of class ``cast`` only when given."""
+    return f"{LOADED}{container} {method}" + (f" {cast}" if cast else "")
+
+
 # the start of a ``PrimitiveCall.name_each`` of a call named by each value of a counting
 # loop whose bound is an integer parameter (``name_param``), its ``?`` the loop variable
 # as decimal text: COUNTED, the first value, and "=" when the last is the bound itself

@@ -57,7 +57,7 @@ from ..models.commands import cli_load
 from ..share import share_source
 from ..workspace import Workspace
 from . import behavior_trees
-from .classes import _untemplated, with_headers
+from .classes import _untemplated, registered_class, with_headers
 from .hosts import (
     CHAINS,
     DESCRIBED,
@@ -77,7 +77,7 @@ from .hosts import (
     sources_of,
     tree_host_of,
 )
-from .inherit import HEADER_DEPTH, base_argument, direct_bases
+from .inherit import HEADER_DEPTH, base_argument, chain, direct_bases
 
 SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "spawner.py"))
 ROS1_SPAWNERS = (("controller_manager", "spawner"), ("controller_manager", "controller_manager"))
@@ -169,6 +169,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 if slot.since is not None and instance.node is not None and \
                         _older(_version(instance.node, workspace), slot.since):
                     continue  # a release that does not load them
+                unseen: str | None = None
                 if slot.names == SPAWNER:
                     choices = list(_spawned(instance, started, params, workspace, config,
                                             unnamed=decl.name_guessed))
@@ -183,6 +184,13 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     unseen = _unseen_choice(instance, slot, params)
                     if unseen is not None:
                         own_partial(instance, unseen, owned)
+                if slot.kept is not None:
+                    # the plugin objects the host's code keeps (``Slot.kept``): all of
+                    # them known unless a parameter not seen may choose others
+                    instance.kept[slot.kept] = (unseen is None, [
+                        (slot.prefix + _given(choice, slot), choice.conditions,
+                         _class_chain(_lookup(choice, index, workspace, models), workspace))
+                        for choice in choices])
                 for choice in choices:
                     out.extend(_load(choice, slot, instance, index, workspace, models,
                                      params, config, owned, made, loaded, decl,
@@ -193,6 +201,17 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                                          instance, reason, owned, first=True),
                                      getattr(models, "package", None)))
     return out
+
+
+def _class_chain(node: Node | None, workspace: Workspace) -> tuple[str, ...] | None:
+    """A plugin node's class and its base classes, most derived first, plain names, as
+    the declarations in its sources give them (``inherit.chain``); None when not known
+    (no node, no source of it here, no base class found: a plugin class has one)."""
+    if node is None or not node.plugin_class or not node.sources:
+        return None
+    own = registered_class(node.plugin_class, node.sources, workspace)
+    found = chain(own, list(node.sources), workspace)
+    return tuple(found) if len(found) > 1 else None
 
 
 def _manager_host(instance: NodeInstance) -> Host | None:

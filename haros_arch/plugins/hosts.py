@@ -134,6 +134,17 @@ class Slot:
     # plugin's calls carry it as a source condition, which the graph decides from the
     # host's parameter
     default_if: tuple[Test, ...] = ()
+    # where the host keeps the objects of the plugins it loads: the qualified name of the
+    # function that gives that container and of the method of a plugin object that
+    # returns the plugin's name (the name given to it: ``prefix`` and the plugin name).
+    # The host's code adds each object it loads to the container through another class's
+    # method (nav2's ``layered_costmap_->addPlugin(plugin)``, a ``push_back`` in
+    # layered_costmap.cpp) and the name reaches the object through a base-class method
+    # (``Layer::initialize(..., name, ...)`` keeps it in ``name_``), which the extraction
+    # of one unit does not follow: this row says it. A loop of the host's code over that
+    # container naming a call by that method (``PrimitiveCall.name_each`` ``LOADED``) makes
+    # the call once per plugin of this slot (``graph.build.element_calls``)
+    kept: tuple[str, str] | None = None
 
 
 @dataclass(frozen=True)
@@ -206,13 +217,19 @@ HARDWARE_BASES = ("hardware_interface", "hardware_interface::SystemInterface",
 EXPORTED = "*exported"  # every class exported with one of the slot's bases
 KEYED = "*keyed"  # the plugin names are parts of parameter names (``Slot.keys``)
 
+# Costmap2DROS keeps its layers in its LayeredCostmap's ``getPlugins()``, its filters in
+# ``getFilters()`` (nav2_costmap_2d/src/costmap_2d_ros.cpp, layered_costmap.hpp); from 1.3
+# it publishes each layer that is a CostmapLayer on the topic ``layer->getName()``
+_NAV2_LAYER_NAME = "nav2_costmap_2d::Layer::getName"
 _NAV2_COSTMAP = (Slot("plugins", "{name}.plugin", ("nav2_costmap_2d",
                                                     "nav2_costmap_2d::Layer"),
                       defaults=(("static_layer", "nav2_costmap_2d::StaticLayer"),
                                 ("obstacle_layer", "nav2_costmap_2d::ObstacleLayer"),
-                                ("inflation_layer", "nav2_costmap_2d::InflationLayer"))),
+                                ("inflation_layer", "nav2_costmap_2d::InflationLayer")),
+                      kept=("nav2_costmap_2d::LayeredCostmap::getPlugins", _NAV2_LAYER_NAME)),
                  Slot("filters", "{name}.plugin", ("nav2_costmap_2d",
-                                                    "nav2_costmap_2d::Layer")))
+                                                    "nav2_costmap_2d::Layer"),
+                      kept=("nav2_costmap_2d::LayeredCostmap::getFilters", _NAV2_LAYER_NAME)))
 
 
 def _ros1_costmap(prefix: str) -> Slot:

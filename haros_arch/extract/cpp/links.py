@@ -28,7 +28,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import Condition
 from ...model.rosname import node_name_joined
-from ...model.source import JOINED, NODELET_HANDLE, PROCESS_HANDLE, PrimitiveCall
+from ...model.source import JOINED, LOADED, NODELET_HANDLE, PROCESS_HANDLE, PrimitiveCall
 from . import msg_types
 from .cache import conditions_text
 from .call_conditions import (
@@ -399,6 +399,8 @@ def _named_by(call: PrimitiveCall) -> PrimitiveCall:
         param, each = marks[0]
         if param.startswith(MEMBER_MARK):
             return dataclasses.replace(call, name=name, name_member=param[len(MEMBER_MARK):])
+        if not param and each.startswith(LOADED):
+            return dataclasses.replace(call, name=name, name_each=each)  # no parameter
         param, _, default = param.partition(DEFAULT_MARK)
         return dataclasses.replace(call, name=name, name_param=normalise(param),
                                    name_default=default or call.name_default,

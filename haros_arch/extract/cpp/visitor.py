@@ -28,7 +28,15 @@ from ...model.conditions import (
     Condition,
 )
 from ...model.location import Location
-from ...model.source import JOINED, ROS_ARGUMENT, SDF_ELEMENT, PrimitiveCall, counted_mark
+from ...model.source import (
+    JOINED,
+    LOADED,
+    ROS_ARGUMENT,
+    SDF_ELEMENT,
+    PrimitiveCall,
+    counted_mark,
+    loaded_mark,
+)
 from ...model.source import WORDS as EACH_WORD
 from ...model.values import UNKNOWN_MARK
 from ...plugins.classes import base_name, loader_bases
@@ -172,7 +180,7 @@ _LOOKUP = re.compile(rb"\s*(?:(?:\.|->)\s*(?:find|count|contains|at|end)\s*\(|\[
 # each in order ([parameter, its default]: ``PrimitiveCall.name_more``)
 # ``PrimitiveCall.stores`` of a read into a member the unit also writes otherwise
 OTHER_WRITES = "!"
-NameSource = tuple[str, str | None, str | None, str | None, tuple[int, int] | None,
+NameSource = tuple[str | None, str | None, str | None, str | None, tuple[int, int] | None,
                    list[list[str | None]] | None]
 EACH = "."
 
@@ -2598,8 +2606,8 @@ class CallFinder:
                                                   cls=written))
                 self.loads_in.add(self._owner or "")
                 continue
-            if written != UNKNOWN_MARK or source is None or source[3] is not None or (
-                    source[5] is not None):
+            if written != UNKNOWN_MARK or source is None or source[0] is None or (
+                    source[3] is not None or source[5] is not None):
                 continue  # a class written in the code, or not known
             each = None
             if UNKNOWN_MARK in source[0]:
@@ -2826,6 +2834,8 @@ class CallFinder:
             inner) is not None or _element_field(inner) is not None else _unknown_operands(
             expr, scope)
         one = strip(unknown[0]) if len(unknown) == 1 else _string_of_variable(inner)
+        if one is None and not unknown and inner.kind == CursorKind.CALL_EXPR:
+            one = inner  # what a method returns (``layer->getName()``: ``LOADED``)
         each = self._each_element(one, scope) if one is not None else None
         if each is not None:
             # ``for (std::string topic : topics_) create_subscription(topic, ..)`` over a
@@ -2836,7 +2846,8 @@ class CallFinder:
             # gives it, in the place of the ``?`` (graph.element_calls); or each word of
             # a string parameter (``while (ss >> source)``, ``EACH_WORD``)
             listed, at, mark = each
-            return (name, (listed, None, None, mark, at, None) if listed is not None else None)
+            return (name, (listed, None, None, mark, at, None) if (
+                listed is not None or mark.startswith(LOADED)) else None)
         searched = self._searched_key_source(inner, scope)
         if searched is not None:
             # the name ``searchParam(key, name)`` found for a key a parameter holds
@@ -3020,6 +3031,12 @@ class CallFinder:
                     value.referenced.kind == CursorKind.CONSTRUCTOR and len(inner) == 1):
                 value = inner[0]  # the string's copy: ``name_(name)``
             return self._each_element(value, held[1], depth + 1)
+        loaded = _loaded_element(expr, scope)
+        if loaded is not None:
+            # what a method returns of each plugin object a loop walks in the container
+            # the node keeps them in (``LOADED``: no parameter; the host row says which
+            # plugins are kept there)
+            return None, (loaded[0].location.line, loaded[0].location.column), loaded[1]
         decl = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
         if decl is None:
             return None
@@ -3549,11 +3566,14 @@ class CallFinder:
             # (``extract.cpp._members_named``)
             usr = self._run_member(expr, scope, name)
             return parameter_mark(name, MEMBER_MARK + usr, None) if usr else None
+        if source is not None and source[0] is None and (source[3] or "").startswith(
+                LOADED) and PLACEHOLDER not in name:
+            return parameter_mark(name, "", source[3])  # each plugin kept: no parameter
         # (a parameter named after what other files pass is not known until they are
         # read: its name stays unknown; but for one read on a handle whose namespace
         # they pass, filled site by site as the name is: costmap_2d's ``plugins`` on
         # the handle of the costmap's name)
-        if source is None or PLACEHOLDER in name or not (
+        if source is None or source[0] is None or PLACEHOLDER in name or not (
                 known_name(source[0]) or _on_passed_handle(source[0])):
             return None
         # the parameters joined to it in the one ``?`` (``prefix + arm``), if that is all
@@ -5010,6 +5030,125 @@ def _element_loop(expr: Cursor, scope: Scope
         return None, None, EACH
     walk = scope.counted_loop(index.referenced, container)
     return (walk, container, EACH) if walk is not None else (None, None, EACH)
+
+
+def _loaded_element(expr: Cursor, scope: Scope) -> tuple[Cursor, str] | None:
+    """(the loop, ``LOADED`` mark) when ``expr`` calls a method, with no argument, of the
+    variable of a range-based ``for`` over a container a function returns (a local
+    holding it, dereferenced or not): ``for (auto & layer : *layered_costmap_->
+    getPlugins())`` ... ``layer->getName()``. Which plugins that container holds is not
+    in the code the unit sees (the host adds each object it loads through another
+    class's method): the host row says it (``hosts.Slot.kept``)."""
+    expr = strip(expr)
+    method = expr.referenced if expr.kind == CursorKind.CALL_EXPR else None
+    if method is None or method.kind != CursorKind.CXX_METHOD or written_arguments(expr):
+        return None
+    held = _method_object(expr)
+    element = _dereferenced(held) if held is not None else None
+    if element is None or element.kind != CursorKind.DECL_REF_EXPR or (
+            element.referenced is None):
+        return None
+    walk = scope.range_of(element.referenced)
+    if walk is None:
+        return None
+    container = _dereferenced(list(walk.get_children())[1])
+    if container is not None and container.kind == CursorKind.DECL_REF_EXPR and (
+            container.referenced is not None
+            and container.referenced.kind == CursorKind.VAR_DECL):
+        value = scope.variable(container.referenced)
+        container = _dereferenced(value) if value is not None else None
+    giver = container.referenced if container is not None and (
+        container.kind == CursorKind.CALL_EXPR) else None
+    if giver is None or giver.kind not in (CursorKind.CXX_METHOD, CursorKind.FUNCTION_DECL):
+        return None
+    return walk, loaded_mark(_function_name(giver), _function_name(method),
+                             _cast_tested(walk, expr, element.referenced))
+
+
+def _cast_tested(walk: Cursor, expr: Cursor, element: Cursor) -> str | None:
+    """The class (qualified) the loop ``walk`` tests its element is of before ``expr``:
+    ``expr`` in the branch of an ``if`` over a local (``x``, ``x != nullptr``) that holds
+    ``std::dynamic_pointer_cast<C>(element)`` or ``dynamic_cast<C *>(..element..)``
+    (navigation2's Costmap2DROS publishes only its layers that are CostmapLayers)."""
+    body = list(walk.get_children())[-1]
+    at = expr.extent.start.offset
+    key = key_of(element)
+    for node in walk_cursors(body):
+        children = list(node.get_children())
+        # ``if (auto x = ...)`` / ``if (auto x = ...; x)``: the declaration first
+        declared = children[0] if children and children[0].kind in (
+            CursorKind.VAR_DECL, CursorKind.DECL_STMT) else None
+        children = children[1:] if declared is not None else children
+        if node.kind != CursorKind.IF_STMT or len(children) < 2 or not (
+                children[1].extent.start.offset <= at <= children[1].extent.end.offset):
+            continue
+        test = strip(children[0])
+        # ``x``, ``x != nullptr`` (a smart pointer's ``operator!=``, ``operator bool``)
+        tested = [test, *(strip(c) for c in test.get_children())] if (
+            test.kind == CursorKind.BINARY_OPERATOR or (
+                test.kind == CursorKind.CALL_EXPR and test.spelling.startswith("operator"))
+        ) else [test]
+        locals_ = [each.referenced for each in tested if each.kind == CursorKind.DECL_REF_EXPR]
+        if declared is not None and declared.kind == CursorKind.VAR_DECL:
+            locals_.append(declared)  # a condition's variable: its test is its value
+        for local in locals_:
+            if local is None or local.kind != CursorKind.VAR_DECL:
+                continue
+            made = initializer(local)
+            cls = _cast_class(strip(made), key) if made is not None else None
+            if cls is not None:
+                return cls
+    return None
+
+
+def _cast_class(made: Cursor, element: Any) -> str | None:
+    """The class ``made`` casts the loop's ``element`` to, dynamically; else None."""
+    if made.kind == CursorKind.CALL_EXPR and made.spelling == "dynamic_pointer_cast":
+        target = made.type.get_canonical()
+        cls = target.get_template_argument_type(0) if (
+            target.get_num_template_arguments() > 0) else None
+    elif made.kind == CursorKind.CXX_DYNAMIC_CAST_EXPR:
+        cls = made.type.get_canonical().get_pointee()
+    else:
+        return None
+    if cls is None or not any(c.kind == CursorKind.DECL_REF_EXPR and c.referenced is not None
+                              and key_of(c.referenced) == element
+                              for c in walk_cursors(made)):
+        return None
+    decl = cls.get_canonical().get_declaration()
+    return qualified_name(decl) or None if decl.kind in (
+        CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL) else None
+
+
+def _function_name(function: Cursor) -> str:
+    """A function's (or method's) qualified name: ``demo::Stack::getLayers``."""
+    owner = qualified_name(function.semantic_parent)
+    return f"{owner}::{function.spelling}" if owner else function.spelling
+
+
+def _dereferenced(expr: Cursor) -> Cursor | None:
+    """``expr`` without a dereference (``*p``, a smart pointer's ``operator*`` or
+    ``operator->``) around it."""
+    expr = strip(expr)
+    for _ in range(MAX_DEPTH):
+        if expr.kind == CursorKind.UNARY_OPERATOR and expr.spelling in ("*", ""):
+            inner = [c for c in expr.get_children() if c.kind.is_expression()]
+            if len(inner) != 1:
+                return expr
+            tokens = [t.spelling for t in expr.get_tokens()][:1]
+            if tokens != ["*"]:
+                return expr
+            expr = strip(inner[0])
+        elif expr.kind == CursorKind.CALL_EXPR and expr.spelling in ("operator*",
+                                                                      "operator->"):
+            inner = [c for c in expr.get_children() if c.kind.is_expression()]
+            operands = [c for c in inner if strip(c).spelling != expr.spelling]
+            if len(operands) != 1:
+                return expr
+            expr = strip(operands[0])
+        else:
+            return expr
+    return expr
 
 
 def _constructed_global(variable: Cursor) -> bool:
