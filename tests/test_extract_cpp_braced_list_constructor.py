@@ -10,7 +10,11 @@ the node was complete with none of its parameters, 60 parameter-set-not-read war
 And a variable such a list passes to the constructor's non-const reference parameter
 may be written there: its ZedWrapper's ``std::format("/{}/right/image", mDeviceName)``,
 ``mDeviceName`` in ``{"device_name", mDeviceName, "zed"}``, was read as ``//right/image``
-(the member taken as never written, its empty default), two instances publishing it."""
+(the member taken as never written, its empty default), two instances publishing it.
+A ``float`` member with a ``double`` literal, ``{"model_score_threshold",
+mModelScoreThreshold, 0.75}``, picks the ``float&`` overload: no conversion binds a
+non-const reference; a member of a class whose header is missing (its aruco
+``mDetectorParams->adaptiveThreshConstant``) is of a type not known, which may be it."""
 
 from __future__ import annotations
 
@@ -32,6 +36,9 @@ public:
   Setting(std::string key, double& slot, double fallback = 0.0)
   : key_{std::move(key)}, type_{rclcpp::ParameterType::PARAMETER_DOUBLE} {
     (void)slot; (void)fallback; }
+  Setting(std::string key, float& slot, float fallback = 0.0)
+  : key_{std::move(key)}, type_{rclcpp::ParameterType::PARAMETER_DOUBLE} {
+    (void)slot; (void)fallback; }
   Setting(std::string key, std::string& slot, std::string fallback = "")
   : key_{std::move(key)}, type_{rclcpp::ParameterType::PARAMETER_STRING},
     text_{&slot} { (void)fallback; }
@@ -49,6 +56,7 @@ public:
 
 NODE = """#include <rclcpp/rclcpp.hpp>
 #include <std_msgs/msg/string.hpp>
+#include <vendor/tuning.hpp>
 #include "setting.hpp"
 namespace rov {
 class Arm : public rclcpp::Node {
@@ -58,6 +66,8 @@ public:
       {"gain", gain_, 0.5},
       {"joints", joints_, 6},
       {"device", device_, "cam"},
+      {"ratio", ratio_, 0.75},
+      {"threshold", tuning_->threshold, 7.0},
     };
     Setting::declareAll(this, settings);
     pub_ = create_publisher<std_msgs::msg::String>("/" + device_ + "/status", 1);
@@ -65,6 +75,8 @@ public:
 private:
   double gain_;
   int joints_;
+  float ratio_;
+  std::shared_ptr<vendor::Tuning> tuning_;
   std::string device_{};
   rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
 };
@@ -98,7 +110,7 @@ def test_braced_elements_construct_by_their_constructor(write_tree):
     model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
     (node,) = [n for n in model.nodes if n.package == "rov"]
     assert sorted(c.name for c in node.calls if c.kind == "declare") == [
-        "device", "gain", "joints"]
+        "device", "gain", "joints", "ratio", "threshold"]
     # the constructor takes ``device_`` by non-const reference (and keeps its address,
     # where a parameter's value goes later): not known to stay empty
     assert [c.name for c in node.calls if c.kind == "publish"] == ["/?/status"]

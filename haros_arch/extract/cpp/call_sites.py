@@ -20,6 +20,7 @@ from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import api, msg_types
 from .expressions import is_default_argument, lost_class, qualified_name, strip
+from .synthesis import ANY as ANY_CLASS
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
@@ -1349,9 +1350,31 @@ def _list_constructor(node: Cursor, ctype: Type) -> Cursor | None:
         return None
     args = [c for c in node.get_children() if c.kind.is_expression()]
     found = [c for c in definition.get_children()
-             if c.kind == CursorKind.CONSTRUCTOR and _takes(c, len(args))]
+             if c.kind == CursorKind.CONSTRUCTOR and _takes(c, len(args))
+             and _binds(c, args)]
     found = closest(found, args)
     return found[0] if len(found) == 1 else None
+
+
+def _binds(function: Cursor, args: list[Cursor]) -> bool:
+    """Whether each of ``args`` that ``function`` takes by non-const lvalue reference is
+    of that very type (no conversion makes such a reference: a ``float`` member passed
+    where one overload takes ``double&`` and another ``float&`` picks the second)."""
+    for ptype, arg in zip(function.type.argument_types(), args, strict=False):
+        if ptype.kind != TypeKind.LVALUEREFERENCE:
+            continue
+        wanted = ptype.get_pointee()
+        if wanted.is_const_qualified():
+            continue
+        given = arg.type.get_canonical()
+        if given.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            given = given.get_pointee().get_canonical()
+        if given.kind in (TypeKind.INVALID, TypeKind.UNEXPOSED, TypeKind.DEPENDENT) or (
+                ANY_CLASS in given.spelling):
+            continue  # a type the parse does not know (a missing header's): may be it
+        if given.spelling != wanted.get_canonical().spelling:
+            return False
+    return True
 
 
 def _takes(constructor: Cursor, count: int) -> bool:
