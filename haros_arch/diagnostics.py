@@ -1062,7 +1062,10 @@ CATALOGUE: dict[str, Entry] = {
                    "built target nor a Python program); its interface is unknown",
         "A ROS 1 launch file starts an executable file of the package that is neither "
         "built by its CMakeLists nor a Python program (a shell script, a prebuilt "
-        "binary): roslaunch finds it in the package's folder and runs it. The instance "
+        "binary): roslaunch finds it in the package's folder and runs it. A ROS 2 "
+        "launch file starts such a program that its package's CMakeLists installs "
+        "(install(PROGRAMS ...)) into its lib folder, where ros2 launch finds it. The "
+        "instance "
         "is kept without links, of unknown interface; describe it with hints if it "
         "matters."),
     "NODE_PACKAGE_UNKNOWN": Entry(

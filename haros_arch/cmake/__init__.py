@@ -35,6 +35,7 @@ from .nodes import (
     executables,
     gazebo_launchers,
     gazebo_plugins,
+    is_python,
     scripts,
     with_elsewhere,
 )
@@ -278,6 +279,22 @@ def option_gated(package: Package, workspace: Workspace
         return {}
     interpreter, _ = _interpret(package, workspace, PackageFiles(package, workspace))
     return dict(interpreter.option_gated)
+
+
+def installed_program(package: Package, workspace: Workspace, name: str) -> str | None:
+    """The file the package's CMake files install as the program ``name``
+    (``install(PROGRAMS ...)``, ``catkin_install_python``) when it is there and no
+    Python program (``scripts`` makes those nodes): a shell script or a prebuilt binary,
+    which ros2 launch finds in the package's lib folder and runs, and which this tool does
+    not read; None otherwise."""
+    if package.build_type not in CMAKE_BUILD_TYPES or not package.root or not name:
+        return None
+    interpreter, _ = _interpret(package, workspace, PackageFiles(package, workspace))
+    for program in interpreter.programs:
+        if program.name == name and os.path.isfile(program.path) and not is_python(
+                program.path):
+            return program.path
+    return None
 
 
 def _source_definitions(package: Package, workspace: Workspace

@@ -509,11 +509,18 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
     if len(args) == 3 and args[1] == "ALIAS":  # another name of a target
         it.aliases[args[0]] = it.aliases.get(args[2], args[2])
         return
-    if not args or "IMPORTED" in args or "ALIAS" in args or "INTERFACE" in args[1:2]:
+    if not args or "IMPORTED" in args or "ALIAS" in args:
         return
     every = it.every_way(command.args)  # the sources of every path through tests not decided
     if every[:1] == args[:1]:
         args = every
+    if kind == "library" and "INTERFACE" in args[1:2]:
+        # a header-only library: no code of its own to build (CMake 3.19 allows sources),
+        # but what it gives the targets that link it, its INTERFACE include folders
+        # (mrover-ros2's ``add_library(motor INTERFACE)`` with
+        # ``target_include_directories(motor INTERFACE esw/motor)``, the folder of the
+        # brushless.hpp its bridge nodes include), definitions and links
+        args = [args[0], *args[2:]]
     sources: list[str] = []
     # a quoted list is one argument and still a list of sources: PX4-Avoidance's
     # add_library(avoidance "${AVOIDANCE_CPP_FILES}") builds each of its files

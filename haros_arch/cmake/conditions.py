@@ -48,7 +48,8 @@ class Evaluator:
     def __init__(self, variables: Mapping[str, str], targets: Mapping[str, object],
                  base: str, known_commands: Callable[[str], bool] = lambda _: False,
                  assigned: Collection[str] = (),
-                 environment: Mapping[str, str] | None = None) -> None:
+                 environment: Mapping[str, str] | None = None,
+                 in_absent_submodule: Callable[[str], bool] = lambda _: False) -> None:
         self.variables = variables
         self.targets = targets
         self.base = base
@@ -59,6 +60,9 @@ class Evaluator:
         # ``distro:`` gives ROS_VERSION): a setting it has is defined; one it lacks may
         # still be given to the build
         self.environment = environment or {}
+        # whether a path lies in a git submodule the tree lacks (declared in a
+        # .gitmodules, its folder empty): a build from a full checkout has it
+        self.in_absent_submodule = in_absent_submodule
 
     def evaluate(self, args: list[str]) -> Truth:
         tokens = self._groups(list(args))
@@ -152,6 +156,11 @@ class Evaluator:
             path = arg if os.path.isabs(arg) else None
             if path is None or not path.startswith(self.base):
                 return None  # outside the package: depends on the machine
+            if not os.path.exists(path) and self.in_absent_submodule(path):
+                # in a git submodule not checked out here (mrover-ros2's ``if (EXISTS
+                # ${MROVER_EMBEDDED_ROOT_DIR})``, a folder of its submodule esw/fw): the
+                # build of a full checkout finds it, so the test is not decided
+                return None
             return os.path.isdir(path) if op == "IS_DIRECTORY" else os.path.exists(path)
         if op == "IS_ABSOLUTE":
             return os.path.isabs(arg)

@@ -580,8 +580,11 @@ class Interpreter:
         evaluator = Evaluator(self.variables, self.targets, self.package_root,
                               lambda name: name.lower() in HANDLERS
                               or name.lower() in self.definitions, self.assigned,
-                              self.environment)
+                              self.environment, self._in_absent_submodule)
         return evaluator.evaluate(args)
+
+    def _in_absent_submodule(self, path: str) -> bool:
+        return self.submodule_of is not None and self.submodule_of(path) is not None
 
     def decide(self, head: Invocation) -> tuple[bool | None, Allowed, Allowed]:
         """An if() / elseif() / while() test: True, False or None (not decided). A test

@@ -691,6 +691,14 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
         # roslaunch finds the file and refuses it: "Found ... but it is not executable"
         config.diagnostics.append(diag.make("NODE_NOT_EXECUTABLE", decl.location, node=key,
                                             path=workspace.relpath(found)))
+    elif node is None and plugin is None and decl.ros_version == 2 and (
+        found := _installed_program(workspace, decl.package, decl.executable)
+    ):
+        # a shell script (or prebuilt program) its package installs into its lib folder
+        # (mrover-ros2's ``install(PROGRAMS .../gui_prod.sh DESTINATION lib/...)``):
+        # ros2 launch runs it; not missing, not read
+        config.diagnostics.append(diag.make("NODE_NOT_READ", decl.location, node=key,
+                                            path=workspace.relpath(found)))
     elif node is None and plugin is None and not decl.executable.strip():
         # ``executable="  "`` (Universal_Robots_ROS2_Driver 2477f13's spawner): the package
         # is there, the program named is blank; NODE_NOT_FOUND said it was not in the
@@ -813,6 +821,17 @@ def _option_gated(workspace: Workspace, package: str, executable: str
     if found is None or not executable or UNKNOWN_MARK in executable:
         return None
     return option_gated(found, workspace).get(executable)
+
+
+def _installed_program(workspace: Workspace, package: str, executable: str) -> str | None:
+    """The file the workspace package ``package``'s CMake files install as the program
+    ``executable`` and that is no node this tool reads (``cmake.installed_program``)."""
+    from ..cmake import installed_program
+
+    found = workspace.packages.get(package)
+    if found is None or not executable or UNKNOWN_MARK in executable:
+        return None
+    return installed_program(found, workspace, executable)
 
 
 def _program_file(workspace: Workspace, package: str, name: str,

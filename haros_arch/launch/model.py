@@ -80,6 +80,10 @@ class NodeDecl:
     # ROS 2: the command line of each argument that is a ``Command``'s output (``ros_gz_sim
     # create -string <xacro ...>``), by its index among the words of ``args``
     arg_commands: dict[int, str] = field(default_factory=dict, repr=False)
+    # ROS 2: the text of each file an argument names that the launch gives with text
+    # replaced (nav2_common's ``ReplaceString``: rviz2's ``-d`` configuration with
+    # ``<robot_namespace>`` made the robot's namespace), by the path the argument holds
+    rewritten_files: dict[str, str] = field(default_factory=dict, repr=False)
     # ROS 1: where each of ``remaps`` is written (the ``<remap>`` element, in the node or
     # in a scope around it), by its pair
     remap_places: dict[tuple[str, str], Location] = field(default_factory=dict, repr=False)

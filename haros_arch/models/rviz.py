@@ -259,7 +259,11 @@ def with_displays(decl: NodeDecl, base: Node | None, workspace: Workspace,
                                    detail=f"larger than {MAX_BYTES} bytes, not read"))
             return None
         with open(path, encoding="utf-8", errors="replace") as handle:
-            data = safe_yaml.load(handle.read())
+            text = handle.read()
+        # the file as the launch gives it, its text replaced (nav2's ReplaceString)
+        text = next((done for given, done in decl.rewritten_files.items()
+                     if os.path.realpath(given) == os.path.realpath(path)), text)
+        data = safe_yaml.load(text)
     except (OSError, yaml.YAMLError) as error:
         mark = getattr(error, "problem_mark", None)
         if mark is not None:

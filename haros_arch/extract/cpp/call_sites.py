@@ -20,6 +20,7 @@ from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import api, msg_types
 from .expressions import is_default_argument, lost_class, qualified_name, strip
+from .synthesis import ANY as ANY_CLASS
 from .values import (
     PLACEHOLDER,
     SEPARATOR,
@@ -579,6 +580,15 @@ class CallSites:
                     if callee is None and node.kind == CursorKind.CALL_EXPR and (
                             node.referenced is not None):
                         callee = held_lambda(node.referenced)
+                    if node.kind == CursorKind.INIT_LIST_EXPR:
+                        # ``{"alpha", mAlpha, 0.05}`` building a class by a constructor
+                        # (a list's element: mrover's ParameterWrapper): clang keeps no
+                        # call there, the list is its argument list
+                        for made, callee in list_constructions(node):
+                            self._base_calls[key_of(made)] = callee
+                            for key in specialised_keys(callee):
+                                self._index.setdefault(key, []).append((made, function))
+                        callee = None
                     if node.kind == CursorKind.VAR_DECL:
                         # a variable whose default construction the parse dropped: a
                         # call of the default constructor that passes nothing
@@ -1323,6 +1333,70 @@ def uses_parameter(expr: Cursor) -> bool:
     return any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
                and node.referenced.kind == CursorKind.PARM_DECL
                for node in expr.walk_preorder())
+
+
+def list_constructions(node: Cursor) -> list[tuple[Cursor, Cursor]]:
+    """(braced list, the constructor it calls) for a braced list (``INIT_LIST_EXPR``)
+    that initialises a class of the project's code by a constructor, or for each such
+    element of a braced list of an array of that class (what a ``std::vector<T>{{...},
+    {...}}`` builds its ``std::initializer_list`` from: clang types those elements
+    ``void`` and keeps no call, mrover's ``std::vector<ParameterWrapper> params{{"alpha",
+    mAlpha, 0.05}, ...}``); the list is the call's argument list."""
+    ctype = node.type.get_canonical()
+    if ctype.kind == TypeKind.RECORD:
+        callee = _list_constructor(node, ctype)
+        return [(node, callee)] if callee is not None else []
+    if ctype.kind not in (TypeKind.CONSTANTARRAY, TypeKind.INCOMPLETEARRAY):
+        return []
+    element = ctype.element_type.get_canonical()
+    if element.kind != TypeKind.RECORD:
+        return []
+    found = []
+    for child in node.get_children():
+        if child.kind == CursorKind.INIT_LIST_EXPR and (
+                child.type.get_canonical().kind != TypeKind.RECORD):
+            callee = _list_constructor(child, element)
+            if callee is not None:
+                found.append((child, callee))
+    return found
+
+
+def _list_constructor(node: Cursor, ctype: Type) -> Cursor | None:
+    """The constructor of class ``ctype`` the braced list ``node`` calls: the one
+    overload that may take its elements, the closest as C++ picks (``closest``); None
+    for an aggregate, a standard class, or a choice not made here."""
+    decl = ctype.get_declaration()
+    definition = decl.get_definition() if decl is not None else None
+    if definition is None or definition.location.file is None or (
+            definition.location.is_in_system_header):
+        return None
+    args = [c for c in node.get_children() if c.kind.is_expression()]
+    found = [c for c in definition.get_children()
+             if c.kind == CursorKind.CONSTRUCTOR and _takes(c, len(args))
+             and _binds(c, args)]
+    found = closest(found, args)
+    return found[0] if len(found) == 1 else None
+
+
+def _binds(function: Cursor, args: list[Cursor]) -> bool:
+    """Whether each of ``args`` that ``function`` takes by non-const lvalue reference is
+    of that very type (no conversion makes such a reference: a ``float`` member passed
+    where one overload takes ``double&`` and another ``float&`` picks the second)."""
+    for ptype, arg in zip(function.type.argument_types(), args, strict=False):
+        if ptype.kind != TypeKind.LVALUEREFERENCE:
+            continue
+        wanted = ptype.get_pointee()
+        if wanted.is_const_qualified():
+            continue
+        given = arg.type.get_canonical()
+        if given.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            given = given.get_pointee().get_canonical()
+        if given.kind in (TypeKind.INVALID, TypeKind.UNEXPOSED, TypeKind.DEPENDENT) or (
+                ANY_CLASS in given.spelling):
+            continue  # a type the parse does not know (a missing header's): may be it
+        if given.spelling != wanted.get_canonical().spelling:
+            return False
+    return True
 
 
 def _takes(constructor: Cursor, count: int) -> bool:

@@ -76,6 +76,8 @@ def _writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
         return [Write(node, init, node, True)]
     if kind == CursorKind.CALL_EXPR:
         return _call(node, source)
+    if kind == CursorKind.INIT_LIST_EXPR:
+        return _listed(node)
     if kind == CursorKind.BINARY_OPERATOR:
         children = list(node.get_children())
         if len(children) == 2 and between(children[0], children[1], source) == "=":
@@ -87,6 +89,29 @@ def _writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
     if kind == CursorKind.UNARY_OPERATOR and _assigning(node, source):
         return [Write(strip(child), None, node, False) for child in node.get_children()]
     return []
+
+
+def _listed(node: Cursor) -> list[Write]:
+    """The variables a braced list that builds a class by a constructor passes to that
+    constructor's non-const lvalue reference parameters (mrover-ros2's ``{"device_name",
+    mDeviceName, "zed"}``, an element of a ``std::vector<ParameterWrapper>`` whose
+    constructor keeps ``&variable`` and writes the parameter's value there later): the
+    constructor may store into them, as a call's out argument (``_call``). Clang keeps
+    no call there (``call_sites.list_constructions``)."""
+    from .call_sites import list_constructions  # (call_sites imports this module)
+
+    found: list[Write] = []
+    for made, constructor in list_constructions(node):
+        types = list(constructor.type.argument_types())
+        args = [c for c in made.get_children() if c.kind.is_expression()]
+        for arg, ptype in zip(args, types, strict=False):
+            arg = strip(arg)
+            if arg.kind in _NAMES and arg.referenced is not None and (
+                ptype.kind == TypeKind.LVALUEREFERENCE
+                and not ptype.get_pointee().is_const_qualified()
+            ):
+                found.append(Write(arg, None, made, False))
+    return found
 
 
 def by_operator(write: Write) -> bool:

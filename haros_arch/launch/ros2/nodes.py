@@ -8,10 +8,12 @@ parameter whose value cannot be known is still declared, with value ``None``.
 
 from __future__ import annotations
 
+import os
 import shlex
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
+from ...files import read_text
 from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Value
 from ...share import share_source
@@ -35,6 +37,30 @@ def _quoted(word: str) -> str:
     """One argument of a Python ``arguments=[...]`` list in the command line: quoted
     when it holds a space (``"-r ~/cmd_vel:=/cmd_vel"`` stays one argument)."""
     return shlex.quote(word) if not word or any(c.isspace() for c in word) else word
+
+
+def _rewritten(runner: Runner, ev: Evaluator, arguments: list[e.Text], scope: Scope,
+               where: Location) -> dict[str, str]:
+    """The text of each file an argument names as a file with text replaced
+    (``ReplaceString``: nav2's rviz_launch.py gives rviz2 ``-d`` its configuration with
+    ``<robot_namespace>`` replaced), by the path the argument holds; a file whose
+    replacements are not known is left out (read as written, its names kept)."""
+    found: dict[str, str] = {}
+    for argument in arguments:
+        value = ev.value(argument)
+        entry = value.file
+        path = value.literal
+        if not isinstance(entry, e.ParamFile) or not entry.replacements or not path:
+            continue
+        source = share_source(runner.workspace, path)
+        if not os.path.isfile(source):
+            continue
+        text, problems = read_text(source, runner.workspace.location(source))
+        runner.model.diagnostics.extend(problems)
+        done = runner.replace(text, entry, scope, where) if text is not None else None
+        if done is not None:
+            found[path] = done
+    return found
 
 
 def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
@@ -69,6 +95,8 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         name_given=given is not None or parsed.node_name is not None,
         namespace_given=bool(parsed.namespace) or ns_given is not None
         or scope.namespace is not None))
+    runner.model.nodes[-1].rewritten_files = _rewritten(runner, ev, action.arguments,
+                                                        scope, where)
     if not action.split:  # one word per argument: a Command's output is one of them
         runner.model.nodes[-1].arg_commands = {
             index: line for index, argument in enumerate(action.arguments[:len(plain)])
