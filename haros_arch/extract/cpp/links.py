@@ -920,12 +920,22 @@ def node_rosnames(names: Iterable[str | None], facts: NodeFacts,
                   for each in written.split(UNBUILT_NAMES)]
     if not candidates:
         return []
+    unbuilt = constructor_unbuilt(facts, unseen)
     made = [resolve_name(name, facts, unseen) for usr, marked, name in candidates
-            if not marked or usr in facts.called]
+            if (not marked or usr in facts.called) and not _named_unbuilt(name, unbuilt)]
     if not made:
         made = [resolve_name(name, facts, unseen) for usr, _, name in candidates
                 if _made(usr, facts.called, facts.constructed, unseen)]
     return made or [resolve_name(candidates[0][2], facts, unseen)]
+
+
+def _named_unbuilt(name: str, unbuilt: Callable[[str], bool]) -> bool:
+    """Whether a unit's name for its node is a parameter of a constructor no file of the
+    node calls and no error hides (a header's delegating ``LifecycleNode(name, options) :
+    LifecycleNode(name, "", options)``, as a unit that has not the subclass's constructor
+    sees it): that constructor makes no node, so it names none."""
+    marked = constructor_marked(name)
+    return marked is not None and unbuilt(marked)
 
 
 def constructor_unbuilt(known: NodeFacts, unseen: Collection[str]) -> Callable[[str], bool]:

@@ -20,6 +20,7 @@ from typing import Any
 from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type, TypeKind, conf
 
 from ... import diagnostics as diag
+from ...ctext import code_only
 from ...diagnostics import Diagnostic
 from ...model.conditions import (
     EACH_STATEMENT,
@@ -1453,13 +1454,12 @@ class CallFinder:
         if opaque is not None and opaque.location.file is not None:
             # its class's declaration: the members it may construct, unseen here
             data = self.source.get(opaque.location.file.name)
-            extent = opaque.extent
             usr = constructor.canonical.get_usr() if constructor is not None else ""
             if data is not None:
                 # not the class's own name, which its declaration writes and its
                 # constructor (read where it is defined) does not construct again
-                words = set(WORDS.findall(
-                    data[extent.start.offset:extent.end.offset])) - {opaque.spelling.encode()}
+                words = set(WORDS.findall(_declared_code(opaque, data))) - {
+                    opaque.spelling.encode()}
                 # made through a factory (``std::make_shared<C>(options)``), which may
                 # call any of the class's declared constructors: unseen until another
                 # unit of the node has the code of each (rtabmap_odom's main builds
@@ -4041,6 +4041,30 @@ class CallFinder:
                        Scope(None, self.macros, self.source, self.sites))
         finally:
             self._owner = held
+
+
+def _declared_code(cls: Cursor, data: bytes) -> bytes:
+    """The code of a class's declaration whose words are what its constructor may build
+    unseen: its comments and the insides of its literals blanked (``code_only``: words of
+    prose build nothing; nav2's Costmap2DROS explains itself as a "child-LifecycleNode"),
+    and, for a class that is a ROS 2 node of its own, the node classes it derives from:
+    its constructor builds those bases as its own node, which that construction names,
+    not another node of the process (the controller server's costmap, a
+    ``nav2::LifecycleNode``, left the server's own name unknown)."""
+    extent = cls.extent
+    start, end = extent.start.offset, extent.end.offset
+    code = bytearray(code_only(data)[start:end])
+    if is_ros2_node(cls):
+        for base in cls.get_children():
+            if base.kind != CursorKind.CXX_BASE_SPECIFIER:
+                continue
+            decl = base.type.get_canonical().get_declaration()
+            if not is_ros2_node(decl):
+                continue
+            first, last = base.extent.start.offset - start, base.extent.end.offset - start
+            if 0 <= first <= last <= len(code):
+                code[first:last] = b" " * (last - first)
+    return bytes(code)
 
 
 def _shown_type(ctype: str | None) -> str:
