@@ -206,12 +206,10 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             in_manager.append((instance, moved, manager or ""))
             calls = [c for c in calls if c.handle_origin != PROCESS_HANDLE]
         # a call per plugin object the host keeps: once its plugins are attached
-        kept = [c for c in calls if c.name_param is None and (c.name_each or "").startswith(
-            LOADED)]
+        kept = [c for c in calls if _per_kept_plugin(c)]
         if kept:
             per_plugin.append((instance, kept))
-            calls = [c for c in calls if not (c.name_param is None and (
-                c.name_each or "").startswith(LOADED))]
+            calls = [c for c in calls if not _per_kept_plugin(c)]
         _link_calls(instance, calls, resources, config, transports)
     for instance, calls, manager in in_manager:
         _link_in_manager(instance, calls, manager, resources, config, transports)
@@ -1305,7 +1303,7 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     members = _member_calls(call, instance, resources)
     if members is not None:
         return members
-    if call.name_param is None and (call.name_each or "").startswith(LOADED):
+    if _per_kept_plugin(call):
         return _kept_calls(call, instance)
     if call.name_each is None or call.name_param is None:
         return _element_turns(call, instance, resources)
@@ -1341,6 +1339,12 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
                     loads_given=name if call.loads is not None else None,
                     conditions=_element_conditions(kept, call.name_param, item))
             for name, item in named]
+
+
+def _per_kept_plugin(call: PrimitiveCall) -> bool:
+    """Whether ``call`` is named by each plugin object a loop of the host's code walks
+    where it keeps them (``LOADED``), not by a parameter."""
+    return call.name_param is None and (call.name_each or "").startswith(LOADED)
 
 
 def _kept_calls(call: PrimitiveCall, instance: NodeInstance) -> list[PrimitiveCall]:
