@@ -46,7 +46,7 @@ from .call_conditions import (
 from .call_sites import CallSites, argument, string_parameters
 from .handles import Namespaces, is_handle, join_name, normalise
 from .owners import owner_of
-from .values import PLACEHOLDER, SEPARATOR, Scope, choose, key_of, render
+from .values import PLACEHOLDER, SEPARATOR, VARIABLES, Scope, choose, key_of, render
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 CALLED = -1  # the index of a fact that says only that the call site calls the function
@@ -224,9 +224,6 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
     return list(dict.fromkeys(facts))
 
 
-_VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
-
-
 def opaque_facts(functions: Iterable[Cursor], main: str,
                  words: dict[str, set[bytes]]) -> list[Fact]:
     """The ``OPAQUE`` facts of the constructions whose constructor's code the unit has
@@ -295,7 +292,7 @@ def _literal(arg: Cursor, value: str) -> bool:
     if "?" in value or PLACEHOLDER in value or PARAMETER in value or is_handle(arg):
         return False
     return not any(node.kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR)
-                   and (node.referenced is None or node.referenced.kind in _VARIABLES)
+                   and (node.referenced is None or node.referenced.kind in VARIABLES)
                    for node in arg.walk_preorder())
 
 

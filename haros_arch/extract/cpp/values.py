@@ -2323,7 +2323,7 @@ def key_of(decl: Cursor) -> tuple[str, int]:
     where = decl.location
     place = where.key if type(where) is _Place else (
         where.file.name if where.file else "", where.offset)
-    if decl.kind not in _VARIABLES:
+    if decl.kind not in VARIABLES:
         return place
     facts = decl.__dict__
     found: tuple[str, int] | None = facts.get("_key")
@@ -2332,7 +2332,8 @@ def key_of(decl: Cursor) -> tuple[str, int]:
     return found
 
 
-_VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
+# the declarations of variables: locals, members and parameters
+VARIABLES = frozenset({CursorKind.VAR_DECL, CursorKind.FIELD_DECL, CursorKind.PARM_DECL})
 
 
 # the standard algorithms that call their last argument with each element of a range in
