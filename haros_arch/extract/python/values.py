@@ -439,7 +439,7 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if key in (("rospy", "get_param"), ("rospy", "get_param_cached")):
             name = argument(expr, rospy.ROWS[key].name)
             default = argument(expr, rospy.ROWS[key].value)
-            value = ParamValue(in_namespace(own_name(text_of(self.eval(name, frame)))).text
+            value = ParamValue(own_name(in_namespace(text_of(self.eval(name, frame)))).text
                                if name else "?",
                                self.eval(default, frame) if default is not None else None)
             self.param_defaults[value.name] = value.default
