@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import api, msg_types
-from .expressions import is_default_argument, lost_class, qualified_name, strip
+from .expressions import NULL_POINTERS, is_default_argument, lost_class, qualified_name, strip
 from .synthesis import ANY as ANY_CLASS
 from .values import (
     PLACEHOLDER,
@@ -1280,18 +1280,15 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
     return null
 
 
-_NULLS = (CursorKind.CXX_NULL_PTR_LITERAL_EXPR, CursorKind.GNU_NULL_EXPR)
-
-
 def _null_pointer(value: Cursor) -> bool:
     """Whether an initialiser is a null pointer (``nullptr``, ``NULL``), through the
     conversions around it."""
     inner = strip(value)
-    if inner.kind in _NULLS:
+    if inner.kind in NULL_POINTERS:
         return True
     given = [c for c in inner.get_children() if c.kind.is_expression()]
     return inner.kind == CursorKind.CALL_EXPR and len(given) == 1 and (
-        strip(given[0]).kind in _NULLS)  # a smart pointer's constructor from nullptr
+        strip(given[0]).kind in NULL_POINTERS)  # a smart pointer's constructor from nullptr
 
 
 def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:

@@ -15,6 +15,8 @@ WRAPPERS = frozenset({
     CursorKind.CXX_CONST_CAST_EXPR,
 })
 _REFS = frozenset({CursorKind.TYPE_REF, CursorKind.NAMESPACE_REF, CursorKind.TEMPLATE_REF})
+# the null pointer literals: ``nullptr``, and ``NULL`` as GNU's headers define it
+NULL_POINTERS = (CursorKind.CXX_NULL_PTR_LITERAL_EXPR, CursorKind.GNU_NULL_EXPR)
 # the declarations a qualified name is made of
 _SCOPES = frozenset({
     CursorKind.NAMESPACE, CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL,

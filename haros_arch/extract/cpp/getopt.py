@@ -24,11 +24,10 @@ import re
 
 from clang.cindex import Cursor, CursorKind, TypeKind
 
-from .expressions import initializer, strip, written_arguments
+from .expressions import NULL_POINTERS, initializer, strip, written_arguments
 from .writes import by_operator, default_constructed, out_argument, writes_of
 
 GETOPT = frozenset({"getopt", "getopt_long", "getopt_long_only"})
-_NULLS = (CursorKind.CXX_NULL_PTR_LITERAL_EXPR, CursorKind.GNU_NULL_EXPR)
 _LEAVE = (CursorKind.BREAK_STMT, CursorKind.RETURN_STMT, CursorKind.CONTINUE_STMT,
           CursorKind.GOTO_STMT)
 # <getopt.h>'s macros for a long option's ``has_arg``
@@ -78,7 +77,7 @@ def _written(expr: Cursor, source: dict[str, bytes]) -> list[str]:
 
 def _null(expr: Cursor) -> bool:
     expr = strip(expr)
-    return expr.kind in _NULLS or _number(expr) == 0
+    return expr.kind in NULL_POINTERS or _number(expr) == 0
 
 
 def _text(expr: Cursor) -> str | None:
