@@ -11,7 +11,9 @@ import contextlib
 import multiprocessing
 import multiprocessing.process
 import os
+import shutil
 import signal
+import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -119,18 +121,93 @@ def stop_signals() -> Iterator[None]:
 STOP_SECONDS = 10.0
 
 
+# folders a process removes when it ends (``remove_at_end``), each with the process
+# that made it: a process forked from it may have inherited the list, not the folders
+_REMOVED_AT_END: list[tuple[int, str]] = []
+
+
+def remove_at_end(folder: str) -> None:
+    """Remove ``folder`` when this process ends: at its exit (a pool's worker too, where
+    ``atexit`` handlers do not run) or when a stop ends a worker (``_end_worker``).
+    Never by a process forked from this one, which may have inherited the path."""
+    multiprocessing.util.Finalize(None, shutil.rmtree, args=(folder, True), exitpriority=0)
+    _REMOVED_AT_END.append((os.getpid(), folder))
+
+
+def _end_worker(error: BaseException) -> None:
+    """End a stopped worker at once, its folders removed, with the stop's exit status.
+    Not through the pool's loop: that catches the stop as a task's error and reads the
+    next task, from a queue another worker stopped while reading may have left in the
+    middle of a message (its bytes then taken for one: an EOFError printed as the run
+    ended)."""
+    for pid, folder in _REMOVED_AT_END:
+        if pid == os.getpid():
+            shutil.rmtree(folder, True)
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    os._exit(error.code if isinstance(error, SystemExit) and isinstance(error.code, int)
+             else 128 + signal.SIGINT)
+
+
+def _end_if_stopped() -> None:
+    """End this worker if it was told to stop (not for a unit's time limit)."""
+    stop = held_signals.requested
+    if isinstance(stop, (KeyboardInterrupt, SystemExit)):
+        _end_worker(stop)
+
+
+# whether this worker runs a task (else it waits for one, in the pool's queue)
+_in_task = False
+
+
+def _worker_stopped(signum: int, frame: Any) -> None:
+    """A worker's Ctrl-C or SIGTERM: within a task, the run's stop (``_stopped``), which
+    ends the task and then the worker; between tasks, the worker ends at once."""
+    if _in_task:
+        _stopped(signum, frame)
+    else:
+        _end_worker(KeyboardInterrupt() if signum == signal.SIGINT
+                    else SystemExit(128 + signum))
+
+
+def _start_worker(initializer: Callable[..., Any] | None, *initargs: Any) -> None:
+    """A pool worker's start: its stop signals, then the pool's own initialiser."""
+    global _in_task
+    _in_task = False
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        if signal.getsignal(signum) is not signal.SIG_IGN:
+            signal.signal(signum, _worker_stopped)
+    if initializer is not None:
+        initializer(*initargs)
+
+
 def _unless_stopped(function: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:
     """A worker's task: not begun once the worker was told to stop (a task the pool had
-    already queued for it would else run whole after the stop)."""
-    raise_if_stopped()
-    return function(*args, **kwargs)
+    already queued for it would else run whole after the stop), and a task the stop
+    ended ends its worker (``_end_worker``)."""
+    global _in_task
+    _end_if_stopped()
+    _in_task = True
+    try:
+        return function(*args, **kwargs)
+    finally:
+        _in_task = False
+        _end_if_stopped()
 
 
 class _Pool(ProcessPoolExecutor):
-    """``worker_pool``'s: each task checks first that its worker was not stopped. A stop
-    that comes while a task is submitted waits for the submission's end (``held_signals``):
-    raised inside it, in the lock of a thread the pool starts (its first submission),
-    it left that lock released twice, a RuntimeError in place of the stop."""
+    """``worker_pool``'s: each task checks first that its worker was not stopped, and a
+    stopped worker ends. A stop that comes while a task is submitted waits for the
+    submission's end (``held_signals``): raised inside it, in the lock of a thread the
+    pool starts (its first submission), it left that lock released twice, a RuntimeError
+    in place of the stop."""
+
+    def __init__(self, max_workers: int | None = None, *,
+                 initializer: Callable[..., Any] | None = None,
+                 initargs: tuple[Any, ...] = (), **options: Any) -> None:
+        super().__init__(max_workers, initializer=_start_worker,
+                         initargs=(initializer, *initargs), **options)
 
     def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> Future[Any]:
         with held_signals:

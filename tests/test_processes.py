@@ -216,3 +216,48 @@ def test_a_process_forked_while_a_stop_is_held_holds_none():
             os._exit(0 if held.depth == 0 and held.requested is None else 1)
     _, status = os.waitpid(pid, 0)
     assert os.waitstatus_to_exitcode(status) == 0
+
+
+def _stops_its_worker(record: str) -> None:
+    """A task that makes a folder its worker removes at its end, writes its worker's pid
+    and the folder, and then stops its own worker (a SIGTERM that ``_end_workers``, or
+    ``timeout`` to the process group, sends)."""
+    import tempfile
+    import time
+
+    folder = tempfile.mkdtemp(prefix="haros-arch-worker-test-")
+    processes.remove_at_end(folder)
+    with open(record, "w") as out:
+        out.write(f"{os.getpid()} {folder}")
+    os.kill(os.getpid(), signal.SIGTERM)
+    time.sleep(30)  # the stop comes first
+
+
+def _gone(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as status:
+            return status.read().rsplit(") ", 1)[1][0] == "Z"
+    except (FileNotFoundError, ProcessLookupError):
+        return True
+
+
+def test_a_worker_stopped_in_a_task_ends_and_takes_no_other(tmp_path):
+    """A worker whose task the stop ended went back to the pool's queue for the next
+    task (the pool's loop takes the stop for the task's error); another worker stopped
+    while reading from that queue may have left half a message there, whose rest the
+    first then read as one (an EOFError printed by a run stopped under load). Now it
+    ends at once, its folders removed, and no later task reaches it."""
+    import time
+
+    record = tmp_path / "worker"
+    with processes.worker_pool(1) as pool:
+        stopped = pool.submit(_stops_its_worker, str(record))
+        later = pool.submit(os.getpid)
+        assert stopped.exception(timeout=120) is not None
+        assert later.exception(timeout=120) is not None  # never run: the pool is broken
+        pid, folder = record.read_text().split()
+        deadline = time.monotonic() + 60
+        while not _gone(int(pid)) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert _gone(int(pid)), "the stopped worker still waits for tasks"
+        assert not os.path.exists(folder)

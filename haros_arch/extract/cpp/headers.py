@@ -47,7 +47,6 @@ import contextlib
 import fcntl
 import functools
 import hashlib
-import multiprocessing.util
 import os
 import re
 import shutil
@@ -58,7 +57,7 @@ from dataclasses import dataclass
 
 from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
-from ... import cmake, share
+from ... import cmake, processes, share
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...files import read_text, write_whole
@@ -1367,10 +1366,8 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
             return _PCH[key]
         folder = tempfile.mkdtemp(prefix="haros-arch-pch-")
         # removed when this process ends, a pool's worker too (``atexit`` handlers do
-        # not run there: ``models build --jobs`` left one folder per worker); never by
-        # a process forked from this one, which may have inherited the path
-        multiprocessing.util.Finalize(None, shutil.rmtree, args=(folder, True),
-                                      exitpriority=0)
+        # not run there: ``models build --jobs`` left one folder per worker)
+        processes.remove_at_end(folder)
         path: str | None = os.path.join(folder, "prelude.pch")
         args = ["-I", STANDIN, "-isystem", STD_STANDIN, *flags, "-x", "c++-header"]
         # from C++20 on, libclang refuses (``Error parsing translation unit``) a PCH made
