@@ -193,7 +193,7 @@ def test_rostopic_pub_with_a_rate_does_not_latch():
                                  args="pub -r 10 /cmd geometry_msgs/Twist '{}' __name:=x"))
     (call,) = node.calls
     assert (call.name, call.type, call.latch) == ("/cmd", "geometry_msgs/Twist", False)
-    assert command_node(NodeDecl("/e", "rostopic", "rostopic", args="echo /cmd")) is None
+    assert command_node(NodeDecl("/e", "rostopic", "rostopic", args="info /cmd")) is None
     ros2 = command_node(NodeDecl("/p", "", "ros2", args="topic pub --qos-reliability "
                                  "best_effort -r 5 cmd_vel geometry_msgs/msg/Twist '{}'"))
     (call,) = ros2.calls
@@ -929,3 +929,50 @@ def test_a_ros1_launch_file_takes_ros1_models_whatever_a_ros2_distro_says():
     assert amcl.completeness == "model" and amcl.node.model.startswith("noetic/amcl ")
     (chosen,) = [d for d in config.diagnostics if d.code == "MODEL_DISTRO"]
     assert "noetic" in chosen.message and "humble" in chosen.message
+
+
+def test_rostopic_echo_hz_delay_and_bw_subscribe_to_what_they_name(write_tree):
+    """``<node pkg="rostopic" type="rostopic" args="echo velodyne_scan">`` (multimaster_fkie's
+    demos start a dozen): a subscriber of the topic, in the node's namespace, of whatever
+    type its publishers have; not a node of unknown interface that could be the missing
+    side of every absence in the configuration. ``echo -b`` reads a bag: no subscriber."""
+    root = write_tree({
+        "src/p/package.xml": package_xml("p"),
+        "src/p/CMakeLists.txt": "project(p)\n",
+        "src/p/launch/p.launch": """
+            <launch>
+              <group ns="robot">
+                <node pkg="rostopic" type="rostopic" name="scan"
+                      args="pub scan std_msgs/String -r 1 'scan'"/>
+                <node pkg="rostopic" type="rostopic" name="echo" args="echo -n 3 scan"/>
+                <node pkg="rostopic" type="rostopic" name="hz"
+                      args="hz --window 10 scan /odom"/>
+              </group>
+              <node pkg="rostopic" type="rostopic" name="bw" args="bw /robot/scan"/>
+              <node pkg="rostopic" type="rostopic" name="delay" args="delay -w 5 /odom"/>
+              <node pkg="rostopic" type="rostopic" name="bag" args="echo -b a.bag /odom"/>
+              <node pkg="rostopic" type="rostopic" name="two" args="echo /a /b"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [p/launch/p.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    echo = _instance(config, "/robot/echo")
+    assert echo.completeness == "model"
+    assert [(link.kind, link.name, link.type) for link in echo.links] == [
+        ("subscribe", "/robot/scan", None), ("read", "/use_sim_time", "bool")]
+    assert [(link.kind, link.name) for link in _instance(config, "/robot/hz").links] == [
+        ("subscribe", "/robot/scan"), ("subscribe", "/odom"),
+        ("read", "/robot/use_sim_time")]
+    assert [(link.kind, link.name) for link in _instance(config, "/bw").links] == [
+        ("subscribe", "/robot/scan")]
+    assert [(link.kind, link.name) for link in _instance(config, "/delay").links] == [
+        ("subscribe", "/odom"), ("read", "/use_sim_time")]
+    bag = _instance(config, "/bag")
+    assert bag.completeness == "model" and bag.links == []
+    assert _instance(config, "/two").completeness == "unknown"  # optparse refuses it
+    topic = next(t for t in config.topics if t.name == "/robot/scan")
+    assert sorted(s.node.name for s in topic.subscribers) == ["/bw", "/robot/echo", "/robot/hz"]
+    # each subscriber takes the publisher's type: no type mismatch with a typeless side
+    assert [f.rule for f in run_catalogue(model) if "type" in f.rule] == []

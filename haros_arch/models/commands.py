@@ -1,4 +1,5 @@
 """Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
+``rostopic echo``, ``hz``, ``delay`` and ``bw``,
 ``rosservice call`` / ``ros2 service call``, dynamic_reconfigure's ``dynparam``,
 ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, ROS 1
 controller_manager's ``spawner`` and gazebo_ros' ``spawn_model``.
@@ -443,7 +444,18 @@ def split_options(words: list[str], value_options: set[str]
     return positional, values, flags
 
 
+# rostopic's verbs that subscribe to the topics they name, with their options that take
+# a value and the parameter each reads after ``init_node`` (see ``_rostopic_watch``)
+ROSTOPIC_WATCHERS: dict[str, tuple[set[str], str | None]] = {
+    "echo": ({"-b", "--bag", "-w", "--filter", "-n"}, "/use_sim_time"),
+    "hz": ({"-w", "--window", "--filter"}, "use_sim_time"),
+    "delay": ({"-w", "--window"}, "use_sim_time"),
+    "bw": ({"-w", "--window"}, None)}
+
+
 def _rostopic(decl: NodeDecl, words: list[str]) -> Node | None:
+    if words and words[0] in ROSTOPIC_WATCHERS:
+        return _rostopic_watch(decl, words[0], words[1:])
     if not words or words[0] != "pub":
         return None
     positional, values, flags = split_options(words[1:], ROS1_VALUE_OPTIONS)
@@ -455,6 +467,38 @@ def _rostopic(decl: NodeDecl, words: list[str]) -> Node | None:
     call = PrimitiveCall("publish", positional[0], type_, queue_size=100, latch=latch,
                          location=decl.location, origin="arguments")
     return _node(decl, "rostopic", call, "python")
+
+
+def _rostopic_watch(decl: NodeDecl, verb: str, words: list[str]) -> Node | None:
+    """``rostopic echo|hz|delay|bw [options] TOPIC...`` (ros_comm noetic-devel
+    ``tools/rostopic/src/rostopic/__init__.py``, ``_rostopic_cmd_<verb>``): a subscriber
+    of each topic, which ``script_resolve_name`` puts in the node's namespace, with the
+    type its publishers have (looked up when it runs: any here), and no bounded queue.
+    ``hz`` takes several topics, the others one; ``echo -b BAG`` reads a bag file and
+    subscribes to nothing. ``echo`` then reads ``/use_sim_time`` and ``hz`` and ``delay``
+    ``use_sim_time``, each with the default False. A name may go on into a field of the
+    message (``echo /odom/pose/pose``), and rostopic then subscribes to the longest
+    part of it that is a topic when it runs; here the name is taken whole. None when
+    optparse or argparse refuses the words, or they are not known."""
+    values_of, parameter = ROSTOPIC_WATCHERS[verb]
+    if any(UNKNOWN_MARK in word for word in words):
+        return None
+    positional, values, _flags = split_options(
+        [word for word in words if not word.startswith("__")], values_of)
+    if not positional or (verb != "hz" and len(positional) > 1):
+        return None
+    calls: list[PrimitiveCall] = []
+    if verb != "echo" or not (values.get("-b") or values.get("--bag")):
+        calls = [PrimitiveCall("subscribe", topic, None, location=decl.location,
+                               origin="arguments") for topic in positional]
+        if parameter is not None:
+            calls.append(PrimitiveCall("read", parameter, "bool", location=decl.location,
+                                       origin="arguments", has_default=True, default=False))
+    node = Node("rostopic", decl.executable, "executable", "python", calls=calls,
+                location=decl.location)
+    node.model = f"the arguments of rostopic {verb}"
+    node.completeness = "model"
+    return node
 
 
 def _rosservice(decl: NodeDecl, words: list[str]) -> Node | None:
