@@ -172,14 +172,20 @@ def _worker_stopped(signum: int, frame: Any) -> None:
 
 
 def _start_worker(initializer: Callable[..., Any] | None, *initargs: Any) -> None:
-    """A pool worker's start: its stop signals, then the pool's own initialiser."""
+    """A pool worker's start: its stop signals, then the pool's own initialiser. A stop
+    that comes before they are set (the handler the worker was forked with raises it)
+    ends the worker as one between tasks does: raised out of an initialiser, the pool
+    prints it with its traceback."""
     global _in_task
     _in_task = False
-    for signum in (signal.SIGINT, signal.SIGTERM):
-        if signal.getsignal(signum) is not signal.SIG_IGN:
-            signal.signal(signum, _worker_stopped)
-    if initializer is not None:
-        initializer(*initargs)
+    try:
+        for signum in (signal.SIGINT, signal.SIGTERM):
+            if signal.getsignal(signum) is not signal.SIG_IGN:
+                signal.signal(signum, _worker_stopped)
+        if initializer is not None:
+            initializer(*initargs)
+    except (KeyboardInterrupt, SystemExit) as stop:
+        _end_worker(stop)
 
 
 def _unless_stopped(function: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:

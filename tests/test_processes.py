@@ -248,13 +248,18 @@ def test_a_worker_stopped_in_a_task_ends_and_takes_no_other(tmp_path):
     first then read as one (an EOFError printed by a run stopped under load). Now it
     ends at once, its folders removed, and no later task reaches it."""
     import time
+    from concurrent.futures.process import BrokenProcessPool
 
     record = tmp_path / "worker"
     with processes.worker_pool(1) as pool:
         stopped = pool.submit(_stops_its_worker, str(record))
-        later = pool.submit(os.getpid)
+        try:
+            later = pool.submit(os.getpid)
+        except BrokenProcessPool:  # the worker has ended already
+            later = None
         assert stopped.exception(timeout=120) is not None
-        assert later.exception(timeout=120) is not None  # never run: the pool is broken
+        if later is not None:  # never run: the pool is broken
+            assert later.exception(timeout=120) is not None
         pid, folder = record.read_text().split()
         deadline = time.monotonic() + 60
         while not _gone(int(pid)) and time.monotonic() < deadline:
