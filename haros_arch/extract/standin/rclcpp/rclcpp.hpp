@@ -1023,10 +1023,15 @@ public:
 };
 class EventsExecutor : public Executor {
 public:
+  RCLCPP_SMART_PTR_DEFINITIONS(EventsExecutor)
   explicit EventsExecutor(const ExecutorOptions& options = ExecutorOptions());
 };
 class StaticSingleThreadedExecutor : public Executor { public: StaticSingleThreadedExecutor(); };
 }
+// Iron and Jazzy declare the events executor in rclcpp/experimental (later releases
+// in rclcpp::executors): bitbots_main's nodes spin on
+// ``rclcpp::experimental::executors::EventsExecutor``
+namespace experimental { namespace executors { using rclcpp::executors::EventsExecutor; } }
 using executors::Executor;
 std::ostream& operator<<(std::ostream& os, const FutureReturnCode& code);
 std::string to_string(const FutureReturnCode& code);
