@@ -198,9 +198,19 @@ def _files(roots: list[str]) -> list[tuple[str, Counter[str]]]:
             (f"its README ({first.get('readme', '')})", readme)]
 
 
+# the configuration of Mergify, a bot that copies merged changes to other branches: the
+# releases it names (``backport to jazzy``, ``branches: [humble]``) are those the tree's
+# changes are copied to, not the one it is built for (pb2025_sentry_nav: a humble
+# Dockerfile and CI, a mergify.yml backporting to jazzy and humble)
+_BACKPORT_CONFIGS = frozenset({"mergify.yml", "mergify.yaml", ".mergify.yml",
+                               ".mergify.yaml"})
+
+
 def _kind(folder: str, name: str) -> str | None:
     low = name.lower()
     parts = set(folder.replace("\\", "/").split("/"))
+    if low in _BACKPORT_CONFIGS:
+        return None
     if (low.startswith("dockerfile") or low.endswith((".dockerfile", ".repos"))
             or low in (".gitlab-ci.yml", ".travis.yml", "docker-compose.yml",
                        "docker-compose.yaml")

@@ -167,3 +167,27 @@ def test_a_fifo_among_the_files_read_is_not_opened(tmp_path) -> None:
     (tmp_path / "ws" / "README.md").write_text("Built for ROS 2 Humble.\n")
     distro, why, _ = guess([str(tmp_path / "ws")])
     assert distro == "humble" and "README" in why
+
+
+MERGIFY = """pull_request_rules:
+  - name: backport to jazzy at reviewers discretion
+    conditions:
+      - label=backport-jazzy
+    actions:
+      backport:
+        branches:
+          - jazzy
+"""
+
+
+def test_a_backport_bot_s_branches_are_not_what_the_tree_is_built_for(write_tree) -> None:
+    # pb2025_sentry_nav: its Dockerfile and CI are humble's, its mergify.yml copies
+    # changes to a jazzy branch; nav2's Humble lookup names in its parameters
+    root = write_tree({"a/Dockerfile": "FROM ros:humble-ros-base\n",
+                       "a/.github/workflows/ci.yml": "env:\n  ROS_DISTRO: humble\n",
+                       "a/.github/mergify.yml": MERGIFY})
+    distro, why, _ = guess([str(root / "a")])
+    assert distro == "humble" and "jazzy" not in why
+    # the configuration alone names no release the tree is built for
+    root = write_tree({"b/.github/mergify.yml": MERGIFY, "b/pkg/package.xml": "x"})
+    assert guess([str(root / "b")]) is None

@@ -216,6 +216,24 @@ class ParamFileLoader(yaml.SafeLoader):
         return mapping
 
 
+# How rcl_yaml_param_parser types a plain scalar of a parameter file: a bool word, else
+# what strtol (base 0) reads whole, else what strtod reads whole (or .inf / .nan), else a
+# string. YAML 1.1's resolvers (the safe loader's) differ: ``1e-3``, ``10e9`` and
+# ``1.0e5`` (no dot, or an exponent without a sign) are strings there and doubles here
+# (bitbots_robot_filter's ``robot_storage_time: 10e9``, read as a double); ``1_000`` and
+# ``1:30`` (underscores, sexagesimal) are ints there and strings here; ``08`` is 8.0.
+_RCL_INT = re.compile(r"^[-+]?(?:0x[0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)$")
+_RCL_FLOAT = re.compile(r"^(?:[-+]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
+                        r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$")
+_YAML_INT = "tag:yaml.org,2002:int"
+_YAML_FLOAT = "tag:yaml.org,2002:float"
+ParamFileLoader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag not in (_YAML_INT, _YAML_FLOAT)]
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()}
+ParamFileLoader.add_implicit_resolver(_YAML_INT, _RCL_INT, list("-+0123456789"))
+ParamFileLoader.add_implicit_resolver(_YAML_FLOAT, _RCL_FLOAT, list("-+0123456789."))
+
+
 def load_param_file(text: str) -> Any:
     """A ROS 2 parameter file's document (bounded, as ``safe_yaml.load``)."""
     return safe_yaml.load(text, ParamFileLoader)

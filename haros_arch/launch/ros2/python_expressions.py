@@ -279,6 +279,10 @@ class Expressions(Walker):
             return text
         # a list, tuple or dict of plain values prints as str() prints it
         container = isinstance(value, (list, tuple, dict)) and printable(value, path=False)
+        if node.format_spec is None and node.conversion == -1 and isinstance(value, bool):
+            # ``f"not {fake}"`` of a bool the file computed (``perform(context) ==
+            # "true"``): Python's text of it, True or False (a PythonExpression of it)
+            return str(value)
         if node.format_spec is None and node.conversion == -1 and not container:
             return value
         spec = self.eval(node.format_spec, env) if node.format_spec is not None else ""

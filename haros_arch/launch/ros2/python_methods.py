@@ -10,6 +10,7 @@ handle on a workspace file and ``yaml.safe_load`` reads it with the safe loader;
 from __future__ import annotations
 
 import ast
+import json
 import os
 from collections.abc import Callable
 from pathlib import PurePosixPath
@@ -130,6 +131,30 @@ def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return safe_yaml.load(text)
     except yaml.YAMLError as err:
         return i.unsupported(n, f"YAML cannot be read: {err}")
+
+
+def json_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``json.load(f)`` on a file we may read, ``json.loads(text)`` on a text known here:
+    Python's own JSON reader, which builds data and runs nothing (DOBOT's bringup launch
+    file reads its robot's name and number from ``config/param.json``). Keyword
+    arguments (``object_hook``, ``parse_float``: callables) are not run."""
+    if k:
+        return i.unsupported(n, f"{_source(n)}: json.load with keyword arguments is not "
+                                "interpreted")
+    source = a[0] if a else None
+    text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
+        source if isinstance(source, str) else None)
+    if text is None and isinstance(source, ReadOnlyFile):  # said by read(): not again
+        return Unknown(f"{source.path} not read", "unsupported", where=i.where(n))
+    if text is None:
+        return Unknown("JSON not known statically")
+    try:
+        return json.loads(text)
+    except (ValueError, RecursionError) as err:
+        # json.JSONDecodeError is a ValueError: the launch file stops there unless a
+        # handler catches it
+        return i.failed(n, f"{_source(n)}: JSON cannot be read: {err}",
+                        f"ValueError: {err}")
 
 
 # the loaders of ``yaml.load(stream, Loader=...)`` that read plain YAML as the safe one

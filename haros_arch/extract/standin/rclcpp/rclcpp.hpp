@@ -333,12 +333,37 @@ public:
   template<class R, class P> bool wait_until_started(const std::chrono::duration<R, P>& timeout);
   bool started();
 };
-class Rate {
+// rate.hpp: humble's Rate is GenericRate<system_clock>, jazzy's a class of its own
+// taking a clock; both declare the smart pointer aliases (``Rate::make_shared(hz)``,
+// ``Rate::SharedPtr``: reachy2_core's gazebo_mimic plugin)
+class RateBase {
 public:
-  explicit Rate(double rate);
+  RCLCPP_SMART_PTR_DEFINITIONS(RateBase)
+  virtual ~RateBase();
+  virtual bool sleep() = 0;
+  virtual rcl_clock_type_t get_type() const = 0;
+  virtual void reset() = 0;
+};
+class Rate : public RateBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(Rate)
+  explicit Rate(double rate, Clock::SharedPtr clock = Clock::SharedPtr());
+  explicit Rate(const Duration& period, Clock::SharedPtr clock = Clock::SharedPtr());
   template<class R, class P> explicit Rate(const std::chrono::duration<R, P>& period);
-  bool sleep();
-  void reset();
+  bool sleep() override;
+  void reset() override;
+  rcl_clock_type_t get_type() const override;
+  bool is_steady() const;
+  std::chrono::nanoseconds period() const;
+};
+template<class C = std::chrono::high_resolution_clock> class GenericRate : public RateBase {
+public:
+  RCLCPP_SMART_PTR_DEFINITIONS(GenericRate)
+  explicit GenericRate(double rate);
+  template<class R, class P> explicit GenericRate(const std::chrono::duration<R, P>& period);
+  bool sleep() override;
+  void reset() override;
+  rcl_clock_type_t get_type() const override;
   bool is_steady() const;
   std::chrono::nanoseconds period() const;
 };
@@ -998,10 +1023,15 @@ public:
 };
 class EventsExecutor : public Executor {
 public:
+  RCLCPP_SMART_PTR_DEFINITIONS(EventsExecutor)
   explicit EventsExecutor(const ExecutorOptions& options = ExecutorOptions());
 };
 class StaticSingleThreadedExecutor : public Executor { public: StaticSingleThreadedExecutor(); };
 }
+// Iron and Jazzy declare the events executor in rclcpp/experimental (later releases
+// in rclcpp::executors): bitbots_main's nodes spin on
+// ``rclcpp::experimental::executors::EventsExecutor``
+namespace experimental { namespace executors { using rclcpp::executors::EventsExecutor; } }
 using executors::Executor;
 std::ostream& operator<<(std::ostream& os, const FutureReturnCode& code);
 std::string to_string(const FutureReturnCode& code);

@@ -249,6 +249,9 @@ template<class T> struct is_default_constructible : is_constructible<T> {};
 template<class T> struct is_copy_constructible : is_constructible<T, const T&> {};
 template<class T> struct is_move_constructible : is_constructible<T, T&&> {};
 template<class T, class U> struct is_assignable : integral_constant<bool, __is_assignable(T, U)> {};
+template<class T> struct is_copy_assignable : is_assignable<T&, const T&> {};
+template<class T> struct is_move_assignable : is_assignable<T&, T&&> {};
+template<class T, class U> constexpr bool is_assignable_v = __is_assignable(T, U);
 template<class T, class... A> struct is_nothrow_constructible : integral_constant<bool, __is_nothrow_constructible(T, A...)> {};
 template<class T> struct is_nothrow_move_constructible : is_nothrow_constructible<T, T&&> {};
 template<class T> struct is_nothrow_move_assignable : integral_constant<bool, __is_nothrow_assignable(T&, T&&)> {};
@@ -440,7 +443,26 @@ template<class A> struct allocator_traits {
   template<class T> static void destroy(A& a, T* p);
   static size_type max_size(const A& a) noexcept;
 };
-template<class C> struct char_traits { typedef C char_type; };
+// what a stream of characters reads one at a time (nlohmann/json's input adapters:
+// ``std::char_traits<char>::int_type c = ...; c == std::char_traits<char>::eof()``)
+template<class C> struct char_traits {
+  typedef C char_type;
+  typedef int int_type;
+  static constexpr int_type eof() noexcept;
+  static constexpr int_type to_int_type(char_type c) noexcept;
+  static constexpr char_type to_char_type(int_type i) noexcept;
+  static constexpr bool eq_int_type(int_type a, int_type b) noexcept;
+  static constexpr bool eq(char_type a, char_type b) noexcept;
+  static constexpr bool lt(char_type a, char_type b) noexcept;
+  static constexpr size_t length(const char_type* s);
+  static constexpr int compare(const char_type* a, const char_type* b, size_t n);
+  static constexpr const char_type* find(const char_type* s, size_t n, const char_type& c);
+  static char_type* copy(char_type* d, const char_type* s, size_t n);
+  static char_type* move(char_type* d, const char_type* s, size_t n);
+  static char_type* assign(char_type* d, size_t n, char_type c);
+  static constexpr void assign(char_type& d, const char_type& c) noexcept;
+  static constexpr int_type not_eof(int_type i) noexcept;
+};
 struct input_iterator_tag {};
 struct forward_iterator_tag : input_iterator_tag {};
 struct random_access_iterator_tag : forward_iterator_tag {};
@@ -1164,6 +1186,13 @@ template<class C> struct back_insert_iterator {
   template<class V> back_insert_iterator& operator=(const V& v);
 };
 template<class C> back_insert_iterator<C> back_inserter(C& c);
+template<class C> struct front_insert_iterator {
+  front_insert_iterator& operator*();
+  front_insert_iterator& operator++();
+  front_insert_iterator operator++(int);
+  template<class V> front_insert_iterator& operator=(const V& v);
+};
+template<class C> front_insert_iterator<C> front_inserter(C& c);
 // std::inserter(c, it): inserts at a position (into a set or map: moveit_task_constructor)
 template<class C> struct insert_iterator {
   insert_iterator& operator*();
