@@ -51,7 +51,7 @@ from .objects import (
     Ref,
     Seq,
     SuperInit,
-    alternative,
+    returned_alternative,
     same_value,
     text_of,
 )
@@ -537,7 +537,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
         options = tuple((each, (*under, *more)) for value, under in found
                         for each, more in (value.options if isinstance(value, Alternatives)
                                            else ((value, ()),)))
-        if len(options) <= MAX_ALTERNATIVES and all(alternative(v) for v, _ in options):
+        if len(options) <= MAX_ALTERNATIVES and all(returned_alternative(v)
+                                                  for v, _ in options):
             return Alternatives(options)
         return Unknown(f"{info.qualname}() (one of several values)")
 
