@@ -412,8 +412,12 @@ def test_a_loop_over_a_helper_that_returns_a_parameter_or_its_default(write_tree
     is set, else ``name``, else ``value``: a loop over ``get_param('source_list', [])``
     subscribes once per element of the list the configuration gives (it was one ``?``
     subscription, so a misnamed source was never seen), and a name it returns is one
-    call per path (the parameter, or the default)."""
+    call per path (the parameter, or the default), each under the helper's
+    ``rospy.has_param`` tests written with the name tested, which the graph decides
+    (the reads of the name as written: ``~x``, not ``x``); a call they leave out is
+    said to be under a false condition, not named by a parameter nobody sets."""
     import os
+    import re
 
     from conftest import package_xml
 
@@ -446,6 +450,20 @@ def test_a_loop_over_a_helper_that_returns_a_parameter_or_its_default(write_tree
                      ("publish", "?", "~out", None, "if"),
                      ("publish", "?", "out", None, "if"),
                      ("publish", "merged", None, None, "else")]
-    subscribed = sorted(link.resource.name for link in model.configurations[0].links
-                        if link.kind == "subscribe")
-    assert subscribed == ["/arm/joint_states", "/hand/joint_states"]
+    # the helper's tests, one name per call: the graph decides them (~source_list is
+    # set, source_list, ~out and out are not), so no '?' is left
+    tests = [c.conditions[0].text for p in model.packages for n in p.nodes
+             for c in n.calls if c.kind == "publish"]
+    assert tests == ["rospy.has_param('~out')"] * 3
+    topics = sorted((link.kind, link.resource.name) for link in model.configurations[0].links
+                    if link.kind in ("publish", "subscribe"))
+    assert topics == [("publish", "/merged"), ("subscribe", "/arm/joint_states"),
+                      ("subscribe", "/hand/joint_states")]
+    # the calls the tests leave out name nothing here: no word of their parameters
+    said = model.configurations[0].diagnostics
+    assert "NAME_PARAM_UNSET" not in [d.code for d in said]
+    dropped = sorted(re.search(r": (no .*?) in this configuration", d.message).group(1)
+                     for d in said if d.code == "CONDITION_FALSE")
+    # (the global source_list is read only where ~source_list is not set)
+    assert dropped == ["no publish ?", "no read /merger/out", "no read /out",
+                       "no read /source_list", "no read /source_list", "no subscribe ?"]

@@ -28,7 +28,7 @@ from ...model.source import JOINED, PrimitiveCall, counted_mark
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
-from .conditions import condition, is_main_guard, source_text
+from .conditions import condition, is_main_guard, source_text, tested_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import, api_modules, last_name
 from .msg_types import ros_type
 from .objects import (
@@ -72,6 +72,7 @@ from .values import (
     Evaluator,
     argument,
     in_namespace,
+    literal_name,
     own_name,
     searched_name,
     unknown_params,
@@ -462,7 +463,8 @@ class Walker:
             self._block(side, frame, conds)
             self._decided_if = (statement, side)
             return
-        text = self._text(frame, statement.test)
+        text = tested_text(frame.module.lines, statement.test,
+                           lambda arg: literal_name(self.evaluator.eval(arg, frame)))
         where = self._where(frame, statement)
         held = self._held(statement.test, frame)
         yes, no = condition("if", text, where, held), condition("else", text, where, held)
