@@ -1272,6 +1272,12 @@ class Walker:
                 entry[2:] != [JOINED] for entry in call.name_more):
             call.name_param = call.name_default = call.name_more = None  # not one each
         call.name_self = named_self and call.name.count("?") == len(unknowns)
+        # rospy's fully qualified name inside a name (``"/debug" + rospy.get_name()``; at
+        # its start, followed by ``/``, it is ``~``): the graph puts the instance's, as
+        # rospy makes it canonical (``"/" + get_name()`` has no ``//``; rcl refuses one)
+        call.name_full = version == 1 and call.name.count("?") == 1 and (
+            unknowns == [NODE_NAME] and call.name_param is None and call.name_arg is None
+            and call.name_option is None)
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,
               action: bool) -> str | None:
