@@ -208,7 +208,13 @@ def root_launch_files(files: Sequence[str], workspace: Workspace,
             if key in real and key != os.path.realpath(path):
                 included.add(key)
         patterns += [(re.compile(p), os.path.realpath(path)) for p in loaded.include_patterns]
-        if not loaded.nodes:
+        unread = loaded.unread_includes or any(
+            item.kind == "include" and not item.skipped
+            for tree in loaded.tree for item in tree.walk())
+        if not loaded.nodes and not unread:
+            # a file that starts no node it is seen to start (one with an include not
+            # read may start nodes unseen: pb2025_nav_bringup's robot_state_publisher
+            # launch file, whose own include names a package not here)
             fragments.add(os.path.realpath(path))
         if any(default is None for default in loaded.args.values()):
             required.add(os.path.realpath(path))

@@ -197,6 +197,7 @@ def test_a_ros2_file_included_only_under_a_false_condition_is_no_configuration(
           </include>
           <include file="$(find-pkg-share arm)/launch/params.launch.xml" if="$(var sim)"/>
           <include file="$(find-pkg-share arm)/launch/rviz.launch.xml" if="$(var sim)"/>
+          <include file="$(find-pkg-share arm)/launch/camera.launch.xml" if="$(var sim)"/>
         </launch>""")
     write(launch / "rviz.launch.xml", """\
         <launch><node pkg="arm" exec="rviz" name="rviz"/></launch>""")
@@ -207,8 +208,13 @@ def test_a_ros2_file_included_only_under_a_false_condition_is_no_configuration(
         </launch>""")
     write(launch / "params.launch.xml", """\
         <launch><set_parameter name="use_sim_time" value="true"/></launch>""")
+    # a file that starts no node seen, but includes one not read (a package not here):
+    # it may start nodes, so it is no fragment and stays a configuration
+    write(launch / "camera.launch.xml", """\
+        <launch><include file="$(find-pkg-share vendor_camera)/launch/cam.launch.xml"/>
+        </launch>""")
     configs = {c.name for c in choose(str(tmp_path / "ws"), environment={}).project.configurations}
-    assert configs == {"arm/bringup", "arm/sim", "arm/rviz"}
+    assert configs == {"arm/bringup", "arm/sim", "arm/rviz", "arm/camera"}
 
 
 def test_launch_file_is_the_configuration_and_finds_its_workspace(ws: Path) -> None:
