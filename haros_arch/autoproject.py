@@ -197,6 +197,7 @@ def root_launch_files(files: Sequence[str], workspace: Workspace,
     included: set[str] = set()
     patterns: list[tuple[re.Pattern[str], str]] = []  # (include pattern, its file)
     fragments: set[str] = set()  # the files that start no node
+    required: set[str] = set()  # the files with an argument of no default
     for path in files:
         try:
             loaded = load_launch(path, workspace, {}, dict(environment))
@@ -207,16 +208,27 @@ def root_launch_files(files: Sequence[str], workspace: Workspace,
             if key in real and key != os.path.realpath(path):
                 included.add(key)
         patterns += [(re.compile(p), os.path.realpath(path)) for p in loaded.include_patterns]
-        if not loaded.nodes:
+        unread = loaded.unread_includes or any(
+            item.kind == "include" and not item.skipped
+            for tree in loaded.tree for item in tree.walk())
+        if not loaded.nodes and not unread:
+            # a file that starts no node it is seen to start (one with an include not
+            # read may start nodes unseen: pb2025_nav_bringup's robot_state_publisher
+            # launch file, whose own include names a package not here)
             fragments.add(os.path.realpath(path))
+        if any(default is None for default in loaded.args.values()):
+            required.add(os.path.realpath(path))
     # a file that starts no node and that an include reaches with another value of its
     # arguments is a fragment of that launch, not a configuration (MoveIt's
     # ``$(arg pipeline)_planning_pipeline.launch.xml``: the chomp pipeline's file sets
-    # parameters for move_group; alone, every one of them is "set but never read"); one
-    # that starts nodes stays one (turtlebot3_slam's ``turtlebot3_$(arg
+    # parameters for move_group; alone, every one of them is "set but never read"); so
+    # is one with an argument of no default, which the include gives and which alone
+    # has no value (a driver's launch file included only ``if`` the robot is real, its
+    # ``robot_ip`` given: alone, every name made of it keeps '?'); one that starts nodes
+    # with every argument set stays one (turtlebot3_slam's ``turtlebot3_$(arg
     # slam_methods).launch``: each method's file is what a user checks)
     for pattern, owner in patterns:
-        for key in fragments - included:
+        for key in (fragments | required) - included:
             if key != owner and (pattern.fullmatch(os.path.abspath(real[key]))
                                  or pattern.fullmatch(key)):
                 included.add(key)

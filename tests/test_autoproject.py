@@ -133,6 +133,90 @@ def test_a_fragment_an_include_reaches_with_another_argument_is_no_configuration
                        "arm_moveit_config/tools"}
 
 
+def test_a_ros2_file_included_only_under_a_false_condition_is_no_configuration(
+        tmp_path: Path) -> None:
+    """A ROS 2 launch file that another includes only ``if`` an argument false by
+    default holds (Python ``IncludeLaunchDescription(condition=IfCondition(..))``, XML
+    ``<include if="$(var sim)">``) was a configuration of its own: alone, its argument
+    of no default had no value (LAUNCH_ARG_UNSET, names with '?'), and a file of
+    parameters alone set them for nobody. Such a file with an argument of no default,
+    or that starts no node, is part of the launch that includes it, as in ROS 1 (also
+    in a group left out); one that starts nodes with every argument set stays one."""
+    pkg = tmp_path / "ws" / "src" / "arm"
+    write(pkg / "package.xml", ROS2_PKG.format(name="arm"))
+    write(pkg / "CMakeLists.txt", "project(arm)\n")
+    launch = pkg / "launch"
+    write(launch / "bringup.launch.py", """\
+        import os
+        from ament_index_python.packages import get_package_share_directory
+        from launch import LaunchDescription
+        from launch.actions import DeclareLaunchArgument, GroupAction
+        from launch.actions import IncludeLaunchDescription
+        from launch.conditions import IfCondition, UnlessCondition
+        from launch.launch_description_sources import PythonLaunchDescriptionSource
+        from launch.substitutions import LaunchConfiguration
+
+        def generate_launch_description():
+            share = get_package_share_directory('arm')
+            real = IncludeLaunchDescription(
+                PythonLaunchDescriptionSource(os.path.join(share, 'launch', 'driver.launch.py')),
+                condition=IfCondition(LaunchConfiguration('real')),
+                launch_arguments={'robot_ip': '10.0.0.2'}.items())
+            viewer = GroupAction([IncludeLaunchDescription(PythonLaunchDescriptionSource(
+                os.path.join(share, 'launch', 'viewer.launch.py')))],
+                condition=UnlessCondition('true'))
+            return LaunchDescription([
+                DeclareLaunchArgument('real', default_value='false'), real, viewer])
+        """)
+    write(launch / "driver.launch.py", """\
+        from launch import LaunchDescription
+        from launch.actions import DeclareLaunchArgument
+        from launch.substitutions import LaunchConfiguration
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([
+                DeclareLaunchArgument('robot_ip'),
+                Node(package='arm', executable='driver', name='driver',
+                     parameters=[{'ip': LaunchConfiguration('robot_ip')}])])
+        """)
+    write(launch / "viewer.launch.py", """\
+        from launch import LaunchDescription
+        from launch.actions import DeclareLaunchArgument
+        from launch_ros.actions import Node
+
+        def generate_launch_description():
+            return LaunchDescription([DeclareLaunchArgument('layout'),
+                                      Node(package='arm', executable='viewer')])
+        """)
+    write(launch / "sim.launch.xml", """\
+        <launch>
+          <arg name="sim" default="false"/>
+          <include file="$(find-pkg-share arm)/launch/gazebo.launch.xml" if="$(var sim)">
+            <arg name="world" value="empty"/>
+          </include>
+          <include file="$(find-pkg-share arm)/launch/params.launch.xml" if="$(var sim)"/>
+          <include file="$(find-pkg-share arm)/launch/rviz.launch.xml" if="$(var sim)"/>
+          <include file="$(find-pkg-share arm)/launch/camera.launch.xml" if="$(var sim)"/>
+        </launch>""")
+    write(launch / "rviz.launch.xml", """\
+        <launch><node pkg="arm" exec="rviz" name="rviz"/></launch>""")
+    write(launch / "gazebo.launch.xml", """\
+        <launch>
+          <arg name="world"/>
+          <node pkg="arm" exec="gazebo" name="gazebo" args="$(var world)"/>
+        </launch>""")
+    write(launch / "params.launch.xml", """\
+        <launch><set_parameter name="use_sim_time" value="true"/></launch>""")
+    # a file that starts no node seen, but includes one not read (a package not here):
+    # it may start nodes, so it is no fragment and stays a configuration
+    write(launch / "camera.launch.xml", """\
+        <launch><include file="$(find-pkg-share vendor_camera)/launch/cam.launch.xml"/>
+        </launch>""")
+    configs = {c.name for c in choose(str(tmp_path / "ws"), environment={}).project.configurations}
+    assert configs == {"arm/bringup", "arm/sim", "arm/rviz", "arm/camera"}
+
+
 def test_launch_file_is_the_configuration_and_finds_its_workspace(ws: Path) -> None:
     launch = ws / "src" / "rover" / "launch" / "drive_launch.py"
     assert workspace_of(str(launch)) == str(ws / "src")

@@ -384,3 +384,86 @@ def test_dict_literal_keys_values_and_items(tmp_path) -> None:
     assert names(result) == [("left/raw", ()), ("right/raw", ()), ("cam_l/rect", ()),
                              ("cam_r/rect", ()), ("left/cam_l", ()), ("right/cam_r", ())]
     assert [d.code for d in result.diagnostics] == []
+
+
+_FALLBACK = ("#!/usr/bin/env python\nimport rospy\nfrom sensor_msgs.msg import JointState\n"
+             "def get_param(name, value=None):\n"
+             "    private = '~%s' % name\n"
+             "    if rospy.has_param(private):\n"
+             "        return rospy.get_param(private)\n"
+             "    elif rospy.has_param(name):\n"
+             "        return rospy.get_param(name)\n"
+             "    else:\n"
+             "        return value\n"
+             "class Merger(object):\n"
+             "    def __init__(self):\n"
+             "        sources = get_param('source_list', [])\n"
+             "        self.subs = []\n"
+             "        for source in sources:\n"
+             "            self.subs.append(rospy.Subscriber(source, JointState, self.cb))\n"
+             "        rospy.Publisher(get_param('out', 'merged'), JointState, queue_size=1)\n"
+             "    def cb(self, msg):\n"
+             "        pass\n"
+             "rospy.init_node('merger')\nMerger()\n")
+
+
+def test_a_loop_over_a_helper_that_returns_a_parameter_or_its_default(write_tree) -> None:
+    """joint_state_publisher's own ``get_param(name, value)`` returns ``~name`` where it
+    is set, else ``name``, else ``value``: a loop over ``get_param('source_list', [])``
+    subscribes once per element of the list the configuration gives (it was one ``?``
+    subscription, so a misnamed source was never seen), and a name it returns is one
+    call per path (the parameter, or the default), each under the helper's
+    ``rospy.has_param`` tests written with the name tested, which the graph decides
+    (the reads of the name as written: ``~x``, not ``x``); a call they leave out is
+    said to be under a false condition, not named by a parameter nobody sets."""
+    import os
+    import re
+
+    from conftest import package_xml
+
+    from haros_arch.pipeline import Options, analyse
+    from haros_arch.project import load
+
+    launch = ("<launch><node pkg=\"merger\" type=\"merger.py\" name=\"merger\">\n"
+              "<rosparam param=\"source_list\">[arm/joint_states, hand/joint_states]"
+              "</rosparam>\n</node></launch>\n")
+    root = write_tree({
+        "src/merger/package.xml": package_xml("merger"),
+        "src/merger/CMakeLists.txt": "cmake_minimum_required(VERSION 3.0.2)\n"
+                                     "project(merger)\n"
+                                     "find_package(catkin REQUIRED COMPONENTS rospy)\n"
+                                     "catkin_package()\n"
+                                     "catkin_install_python(PROGRAMS scripts/merger.py "
+                                     "DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
+        "src/merger/scripts/merger.py": _FALLBACK,
+        "src/merger/launch/merger.launch": launch,
+        "project.yaml": "project: p\nconfigurations:\n  c: [merger/launch/merger.launch]\n",
+    })
+    os.chmod(root / "src/merger/scripts/merger.py", 0o755)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    calls = [(c.kind, c.name, c.name_param, c.name_each, c.conditions[-1].statement)
+             for p in model.packages for n in p.nodes for c in n.calls
+             if c.kind in ("publish", "subscribe")]
+    assert calls == [("subscribe", "?", "~source_list", ".", "for each"),
+                     ("subscribe", "?", "source_list", ".", "for each"),
+                     ("publish", "?", "~out", None, "if"),
+                     ("publish", "?", "out", None, "if"),
+                     ("publish", "merged", None, None, "else")]
+    # the helper's tests, one name per call: the graph decides them (~source_list is
+    # set, source_list, ~out and out are not), so no '?' is left
+    tests = [c.conditions[0].text for p in model.packages for n in p.nodes
+             for c in n.calls if c.kind == "publish"]
+    assert tests == ["rospy.has_param('~out')"] * 3
+    topics = sorted((link.kind, link.resource.name) for link in model.configurations[0].links
+                    if link.kind in ("publish", "subscribe"))
+    assert topics == [("publish", "/merged"), ("subscribe", "/arm/joint_states"),
+                      ("subscribe", "/hand/joint_states")]
+    # the calls the tests leave out name nothing here: no word of their parameters
+    said = model.configurations[0].diagnostics
+    assert "NAME_PARAM_UNSET" not in [d.code for d in said]
+    dropped = sorted(re.search(r": (no .*?) in this configuration", d.message).group(1)
+                     for d in said if d.code == "CONDITION_FALSE")
+    # (the global source_list is read only where ~source_list is not set)
+    assert dropped == ["no publish ?", "no read /merger/out", "no read /out",
+                       "no read /source_list", "no read /source_list", "no subscribe ?"]

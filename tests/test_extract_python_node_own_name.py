@@ -3,7 +3,9 @@ name without its namespace (``talker``), so ``f"/{self.get_name()}/x"`` is the g
 ``/talker/x`` and ``f"{self.get_namespace()}/{self.get_name()}/x"`` the private ``~x``.
 elevation_mapping_cupy publishes ``f"/{self.get_name()}/{pub_key}"``: its names stayed
 ``/?/?`` though the launch file names the node (now ``/elevation_mapping/?``). rospy's
-``get_name()`` is the fully qualified name: only at a name's start is it known (``~``)."""
+``get_name()`` is the fully qualified name: at a name's start it is ``~``, elsewhere the
+graph puts the instance's name in its place (``PrimitiveCall.name_full``,
+tests/test_graph_rospy_full_name.py)."""
 
 from __future__ import annotations
 
@@ -74,9 +76,9 @@ def test_rclpy_node_name_inside_a_name_is_the_instance_name(tmp_path) -> None:
                       "/robot/cam_debug"]
 
 
-def test_rospy_node_name_inside_a_name_stays_unknown(tmp_path) -> None:
+def test_rospy_node_name_inside_a_name_is_its_full_name(tmp_path) -> None:
     source = tmp_path / "talker.py"
     source.write_text(ROSPY)
     found = extract_python([str(source)], scan([str(tmp_path)]))
-    assert sorted((c.name, c.name_self) for c in found.calls if c.kind == "publish") == [
-        ("/?/odd", False), ("~own", False)]
+    assert sorted((c.name, c.name_self, c.name_full) for c in found.calls
+                  if c.kind == "publish") == [("/?/odd", False, True), ("~own", False, False)]

@@ -66,15 +66,19 @@ def test_catalogue_on_parameter_server_semantics(write_tree):
     for finding in findings:
         by_rule.setdefault(finding.rule, []).append(finding.message)
     # ~port and ~scratch are read without a default or a check and never set (~scratch
-    # is only deleted); ~optional_b too, but only under has_param("~optional"), a
-    # condition the graph does not decide: the read may not happen (undecided)
+    # is only deleted); ~optional_b too, but only under has_param("~optional"), which
+    # the graph decides false (nothing sets ~optional, nor may anything unseen): the
+    # read does not happen here, and the configuration says so
     assert sorted(m.split()[0] for m in by_rule["parameter-read-not-set"]) == [
         "/foo/talker/port", "/foo/talker/scratch"]
-    (undecided,) = by_rule["parameter-read-not-set-undecided"]
-    assert "/foo/talker/optional_b" in undecided
-    assert 'if (rospy.has_param("~optional"))' in undecided
-    # the search for legacy does not stop at /legacy, which is only deleted
+    assert "parameter-read-not-set-undecided" not in by_rule
     config = model.configurations[0]
+    assert [d.message for d in config.diagnostics if d.code == "CONDITION_FALSE"
+            and "/foo/talker/optional_b" in d.message] == [
+        '/foo/talker: no read /foo/talker/optional_b in this configuration: the code makes '
+        'it under if (rospy.has_param("~optional")) (pkg/scripts/talker.py:17), which does '
+        'not hold here']
+    # the search for legacy does not stop at /legacy, which is only deleted
     assert [r.node.name for r in config.parameter("/foo/legacy").readers] == ["/foo/talker"]
     assert config.parameter("/legacy").readers == []
     # gains/P and gains/I are read as the gains namespace; robot_model is found by search

@@ -1094,6 +1094,14 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         # the node's own name (``"get_cost_" + get_name()``): the instance's
         call = replace(call, name=_filled(call.name, instance.name.rstrip("/").rsplit(
             "/", 1)[-1]), name_self=False)
+    if call.name_full and call.name.count(UNKNOWN_MARK) == 1:
+        # the node's fully qualified name (``"/" + rospy.get_name() + "/x"``): the
+        # instance's; rospy's names are canonical (``canonicalize_name``: no ``//``)
+        filled = _filled(call.name, instance.name)
+        if instance.ros_version == 1:
+            filled = ("/" if filled.startswith("/") else "") + "/".join(
+                part for part in filled.split("/") if part)
+        call = replace(call, name=filled, name_full=False)
     if call.name_option is not None and UNKNOWN_MARK in call.name:
         # an option's value (``"/robot/limb/" + args.limb``), else its default when the
         # arguments are known and do not give it; neither: the ``?``

@@ -289,8 +289,10 @@ PARAMETER_PREFIX = "haros_parameter_"
 
 
 # roscpp's tests of a parameter's presence: ``getParam`` (true when it is there and its
-# value converts to the variable's type) and ``hasParam``, on a handle or ros::param
-_PRESENCE_METHODS = {"getParam": "get", "hasParam": "has", "getParamCached": "get"}
+# value converts to the variable's type) and ``hasParam``, on a handle or ros::param;
+# rospy's ``rospy.has_param``
+_PRESENCE_METHODS = {"getParam": "get", "hasParam": "has", "getParamCached": "get",
+                     "has_param": "has"}
 _PRESENCE_FUNCTIONS = {"ros::param::get": "get", "ros::param::has": "has",
                        "ros::param::getCached": "get"}
 PRESENCE_PREFIX = "haros_presence_"
@@ -664,6 +666,12 @@ def _presence_value(config: Configuration, instance: NodeInstance, file: str | N
              and link.call.name.lstrip("~").endswith(written.lstrip("~"))}
     if not found:
         return Unknown(f"no read of {written} in {file}")
+    # the reads of the name as the test writes it, where there are (a helper that
+    # tests ``~x``, then ``x``: rospy's joint_state_publisher); else those of a handle
+    # that puts its namespace before it (``private_nh.hasParam("x")``, read as ``~x``)
+    exact = {key: link for key, link in found.items()
+             if link.call is not None and link.call.name == written}
+    found = exact or found
     present = {key: _present(config, link, kind, made, at) for key, link in found.items()}
     answers = set(present.values())
     if len(answers) > 1 and near is not None:
@@ -880,9 +888,31 @@ def decide_links(config: Configuration) -> None:
             config.diagnostics.append(diag.make(
                 "CONDITION_FALSE", link.location, node=instance.name, kind=link.kind,
                 name=link.rosname.full, condition=str(false), where=where))
+        _unsaid_unset(config, instance, [link for link, _ in falses], gone)
         falses.clear()
     if dropped:
         drop_links(config, dropped)
+
+
+def _unsaid_unset(config: Configuration, instance: NodeInstance, links: list[Link],
+                  gone: set[int]) -> None:
+    """Take back what ``graph.build`` said of a name a call takes from a parameter the
+    configuration does not set (NAME_PARAM_UNSET), where the call does not exist there
+    (``links``, under a false condition) and no other link of the node made there keeps
+    a '?': joint_state_publisher subscribes per element of ``source_list`` only when
+    ``~source_list`` is not set, and a launch file that sets ``~source_list`` sets no
+    ``source_list``, which names nothing then."""
+    left = {(k.location, k.kind) for k in instance.links
+            if id(k) not in gone and k.rosname.is_unresolved}
+    taken = {(link.location, link.kind) for link in links
+             if link.call is not None and link.call.name_param is not None
+             and link.rosname.is_unresolved} - left
+    if not taken:
+        return
+    config.diagnostics[:] = [d for d in config.diagnostics if not (
+        d.code == "NAME_PARAM_UNSET" and any(
+            d.location == where and d.message.startswith(
+                f"{instance.name}: the name of this {kind} ") for where, kind in taken))]
 
 
 def _list_unset(config: Configuration, instance: NodeInstance, link: Link,

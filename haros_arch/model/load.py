@@ -171,6 +171,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
                          program_arg=_program_arg(c.get("program_arg")),
                          name_arg=_program_arg(c.get("name_arg")),
                          name_self=c.get("name_self") is True,
+                         name_full=c.get("name_full") is True,
                          name_below=c.get("name_below") if isinstance(
                              c.get("name_below"), str) else None,
                          name_option=c.get("name_option") if isinstance(

@@ -250,6 +250,10 @@ class PrimitiveCall:
     # the graph puts the instance's name there. From a Python node, the name's first
     # ``?`` when nothing fills the others (rclpy's ``f"/{self.get_name()}/{key}"``)
     name_self: bool = field(default=False, metadata={"optional": True})
+    # the name's one ``?`` is the node's fully qualified name (rospy's ``get_name()``
+    # anywhere but at the start: ``"/debug" + rospy.get_name()``): the graph puts the
+    # instance's name there, the name made canonical as rospy does (no ``//``)
+    name_full: bool = field(default=False, metadata={"optional": True})
     # the name's one ``?`` begins it and is the topic of a publisher or subscription the
     # node made, resolved and remapped (rclcpp's ``get_topic_name()``: autoware_utils'
     # published-time publisher names ``<topic>/debug/published_time``): that topic's

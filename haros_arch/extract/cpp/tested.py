@@ -32,8 +32,10 @@ _OR = frozenset({"||", "or", "|", "bitor"})
 _ASSIGN = re.compile(r"^\s*=\s*$")
 _EQUALS = re.compile(r"^\s*(==|!=)\s*$")
 _NOT = re.compile(r"^\s*(!|\bnot\b)")
-# the functions the glog stand-in's CHECK, PCHECK, DCHECK, LOG_ASSERT and CHECK_ERR
-# expand to: each aborts the program when its argument is false
+# the functions the glog stand-in's CHECK, PCHECK, LOG_ASSERT and CHECK_ERR expand to:
+# each aborts the program when its argument is false. Not DCHECK's (``haros_dcheck``):
+# a release build (NDEBUG, as ROS packages are built) never evaluates its argument, so
+# a read in it is no required one
 _CHECKS = frozenset({"haros_check"})
 
 

@@ -5,13 +5,15 @@ One ``Condition`` per enclosing construct: ``if`` (its test), ``else`` (the test
 ``while`` (its test), ``try`` (empty text), ``except`` (the exception caught),
 ``match`` + ``case``. ``if __name__ == '__main__':`` is the script's entry, not a
 condition; ``with`` and ``finally`` blocks always run. Texts are the source as written,
-whitespace collapsed.
+whitespace collapsed; a presence test of a parameter named by a variable is written with
+the name the variable holds (``tested_text``).
 """
 
 from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Callable
 
 from ...model.conditions import Condition
 from ...model.location import Location
@@ -61,3 +63,29 @@ def _segment(lines: list[str], node: ast.AST) -> str | None:
         return chunk[0][start:end].decode("utf-8", "replace")
     chunk[0], chunk[-1] = chunk[0][start:], chunk[-1][:end]
     return b"".join(chunk).decode("utf-8", "replace")
+
+
+# the functions that tell whether a parameter is set (rospy's ``has_param``)
+_PRESENCE_CALLS = frozenset({"has_param"})
+
+
+def tested_text(lines: list[str], test: ast.expr, name_of: Callable[[ast.expr], str | None]
+                ) -> str:
+    """The text of ``test``, each presence test of a parameter whose name is not a
+    literal (``rospy.has_param(private)``) written with the name its argument holds
+    where ``name_of`` knows it (``rospy.has_param('~source_list')``): a helper that
+    tests the private parameter, then the global one, tests one name per call, and the
+    graph decides the test by it (``graph.conditions``)."""
+    text = source_text(lines, test)
+    for node in ast.walk(test):
+        func = node.func if isinstance(node, ast.Call) else None
+        called = func.attr if isinstance(func, ast.Attribute) else (
+            func.id if isinstance(func, ast.Name) else None)
+        if called not in _PRESENCE_CALLS or not isinstance(node, ast.Call) or len(
+                node.args) != 1 or node.keywords or isinstance(node.args[0], ast.Constant):
+            continue
+        name = name_of(node.args[0])
+        if name:
+            written = source_text(lines, node.args[0])
+            text = text.replace(f"{called}({written})", f"{called}({name!r})")
+    return text

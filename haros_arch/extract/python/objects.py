@@ -238,6 +238,16 @@ def alternative(value: object) -> bool:
     return isinstance(value, Ref | Value | int | float)
 
 
+def returned_alternative(value: object) -> bool:
+    """A value a helper may return per path (``Evaluator.returned``): an ``alternative``;
+    a parameter's value (a call it names is named by the parameter on that path); a
+    literal list of them (what a loop over the return walks on that path):
+    joint_state_publisher's ``get_param(name, value)`` returns the private parameter,
+    else the global one, else ``value``."""
+    return alternative(value) or isinstance(value, ParamValue) or (
+        isinstance(value, Seq) and all(alternative(item) for item in value.items))
+
+
 @dataclass(frozen=True)
 class ModuleRef:
     module: Module

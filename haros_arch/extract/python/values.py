@@ -27,7 +27,7 @@ from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
-from .conditions import condition, source_text
+from .conditions import condition, tested_text
 from .instances import Instances
 from .modules import ClassInfo, FunctionInfo, Loader, submodule
 from .objects import (
@@ -51,7 +51,7 @@ from .objects import (
     Ref,
     Seq,
     SuperInit,
-    alternative,
+    returned_alternative,
     same_value,
     text_of,
 )
@@ -537,7 +537,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
         options = tuple((each, (*under, *more)) for value, under in found
                         for each, more in (value.options if isinstance(value, Alternatives)
                                            else ((value, ()),)))
-        if len(options) <= MAX_ALTERNATIVES and all(alternative(v) for v, _ in options):
+        if len(options) <= MAX_ALTERNATIVES and all(returned_alternative(v)
+                                                  for v, _ in options):
             return Alternatives(options)
         return Unknown(f"{info.qualname}() (one of several values)")
 
@@ -563,7 +564,8 @@ class Evaluator(Instances, QoSProfiles, Walker):
                 if taken is not None:
                     return self.paths([*(statement.body if taken else statement.orelse),
                                        *rest], frame, under, found)
-                text = source_text(frame.module.lines, statement.test)
+                text = tested_text(frame.module.lines, statement.test,
+                                   lambda arg: literal_name(self.eval(arg, frame)))
                 where = self.loader.location(frame.module.path, statement.lineno,
                                              statement.col_offset + 1)
                 return all(self.paths([*branch, *rest], replace(
@@ -574,6 +576,12 @@ class Evaluator(Instances, QoSProfiles, Walker):
                 return False
         found.append((None, under))
         return len(found) <= MAX_ALTERNATIVES
+
+
+def literal_name(value: object) -> str | None:
+    """The text of a value known to be one string, else None."""
+    return value.literal if isinstance(value, Value) and isinstance(value.literal, str) \
+        else None
 
 
 def _truth(value: object) -> bool | None:

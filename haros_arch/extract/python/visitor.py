@@ -28,7 +28,7 @@ from ...model.source import JOINED, PrimitiveCall, counted_mark
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
-from .conditions import condition, is_main_guard, source_text
+from .conditions import condition, is_main_guard, source_text, tested_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import, api_modules, last_name
 from .msg_types import ros_type
 from .objects import (
@@ -72,6 +72,7 @@ from .values import (
     Evaluator,
     argument,
     in_namespace,
+    literal_name,
     own_name,
     searched_name,
     unknown_params,
@@ -462,7 +463,8 @@ class Walker:
             self._block(side, frame, conds)
             self._decided_if = (statement, side)
             return
-        text = self._text(frame, statement.test)
+        text = tested_text(frame.module.lines, statement.test,
+                           lambda arg: literal_name(self.evaluator.eval(arg, frame)))
         where = self._where(frame, statement)
         held = self._held(statement.test, frame)
         yes, no = condition("if", text, where, held), condition("else", text, where, held)
@@ -595,6 +597,11 @@ class Walker:
         baud rate of each port, reading each message) exhaust the walk before the
         node's own code (ethzasl_xsens_driver's MTDevice: 4 of its 23 calls found)."""
         ev = self.evaluator
+        if id(over) not in ev.fixed:
+            walked = ev.eval(over, frame)
+            if isinstance(walked, Alternatives):
+                self._loop_per_value(target, over, frame, where, body, walked, whole, builds)
+                return
         text = f"{self._text(frame, target)} in {self._text(frame, over)}"
         loop: tuple[Condition, ...] = (condition("for", text, where),)
         items = None if self._inlining[-1][1] and not builds else ev.iteration(
@@ -624,6 +631,25 @@ class Walker:
                 self._loop_names.pop()
         if items:  # after the loop its variable is unknown to the rest of the walk
             ev.bind(target, Unknown("loop variable"), frame)
+
+    def _loop_per_value(self, target: ast.expr, over: ast.expr, frame: Frame,
+                        where: Location, body: Callable[[tuple[Condition, ...]], None],
+                        walked: Alternatives, whole: bool, builds: bool) -> None:
+        """A loop over what differs per path (a local an ``if`` set, a helper's return,
+        ``Alternatives``): the loop once per value, under its path's conditions, as a
+        call given such a value is one call per value; a literal empty list on a path
+        (a helper's default) walks nothing there (joint_state_publisher's ``for source
+        in get_param("source_list", [])``: per element of ``~source_list`` where it is
+        set, else of ``source_list``; the subscription was ``?``)."""
+        ev = self.evaluator
+        try:
+            for value, under in walked.options:
+                if isinstance(value, Seq) and not value.items:
+                    continue
+                ev.fixed[id(over)] = value
+                self._loop(target, over, frame, where, _under(body, under), whole, builds)
+        finally:
+            ev.fixed.pop(id(over), None)
 
     def _element_loop(self, target: ast.expr, over: ast.expr, frame: Frame) -> object:
         """What a loop's variable holds when the loop is over a parameter's elements:
@@ -1246,6 +1272,12 @@ class Walker:
                 entry[2:] != [JOINED] for entry in call.name_more):
             call.name_param = call.name_default = call.name_more = None  # not one each
         call.name_self = named_self and call.name.count("?") == len(unknowns)
+        # rospy's fully qualified name inside a name (``"/debug" + rospy.get_name()``; at
+        # its start, followed by ``/``, it is ``~``): the graph puts the instance's, as
+        # rospy makes it canonical (``"/" + get_name()`` has no ``//``; rcl refuses one)
+        call.name_full = version == 1 and call.name.count("?") == 1 and (
+            unknowns == [NODE_NAME] and call.name_param is None and call.name_arg is None
+            and call.name_option is None)
 
     def _type(self, expr: ast.expr | None, frame: Frame, version: int,
               action: bool) -> str | None:
@@ -1953,6 +1985,12 @@ def _from_parameter(value: object) -> bool:
     return isinstance(value, ParamValue) or (isinstance(value, Value) and any(
         isinstance(part, Unknown) and part.origin.startswith("parameter ")
         for part in value.parts))
+
+
+def _under(body: Callable[[tuple[Condition, ...]], None], under: tuple[Condition, ...]
+           ) -> Callable[[tuple[Condition, ...]], None]:
+    """A loop's body walked under ``under`` too."""
+    return lambda loop: body((*under, *loop))
 
 
 def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str, object],

@@ -12,6 +12,7 @@ import ast
 import functools
 import os
 import pickle
+import re
 import shlex
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field, fields, is_dataclass, replace
@@ -53,6 +54,7 @@ MAX_ITERATIONS = 1_000  # of one ForEach / ForLoop
 
 # diagnostics that say part of a launch file was not read as launch would run it: what
 # that part would have declared or read of the launch configurations is not seen
+MAX_SKIPPED_DEPTH = 8  # groups a left-out include may be in
 MAX_SKIPPED_VISITS = 20_000  # values of a skipped action looked through for names
 MAX_SKIPPED_DEPTH = 24
 HIDING_CODES = frozenset({
@@ -460,6 +462,7 @@ class Runner:
                     if left_out.kind == "include" and os.path.isabs(left_out.name):
                         left_out.name = self.workspace.relpath(left_out.name)
                     scope.item.add(left_out)
+                self.skipped_includes(action, scope)
                 continue
             handler = getattr(self, "do_" + type(action).__name__, None)
             if handler is None:
@@ -592,6 +595,26 @@ class Runner:
             scope.environment[name.literal + "\0unset"] = ""
         elif value.literal is not None:
             scope.environment[name.literal] = value.literal
+
+    def skipped_includes(self, action: e.Action, scope: Scope, depth: int = 0) -> None:
+        """An include a decided condition leaves out (itself, or in a group it leaves
+        out) reaches its file with another value of the condition's arguments
+        (``include_patterns``, as the ROS 1 loader keeps them): its path, when known,
+        evaluated with nothing said or used (the include is not performed)."""
+        if isinstance(action, e.Group) and depth < MAX_SKIPPED_DEPTH:
+            for inner in action.actions:
+                self.skipped_includes(inner, scope, depth + 1)
+        if not isinstance(action, e.Include):
+            return
+        said, used = len(self.model.diagnostics), len(self.model.package_uses)
+        hidden = [frame.hidden for frame in self.includes]
+        path = self.value(action.path, scope, action.location)
+        del self.model.diagnostics[said:]
+        del self.model.package_uses[used:]
+        for frame, was in zip(self.includes, hidden, strict=True):
+            frame.hidden = was
+        if path is not None and path.literal is not None and path.literal.strip():
+            self.model.include_patterns.append(re.escape(os.path.abspath(path.literal)))
 
     def do_Include(self, action: e.Include, scope: Scope) -> None:
         path = self.value(action.path, scope, action.location)

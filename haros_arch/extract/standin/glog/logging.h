@@ -67,6 +67,8 @@ std::ostream& haros_log(LogSeverity severity);
 std::ostream& haros_log_if(LogSeverity severity, bool condition);
 std::ostream& haros_vlog(int level);
 template <class C> std::ostream& haros_check(const C& condition);
+// DCHECK: CHECK in a debug build only; a release build (NDEBUG) never evaluates it
+template <class C> std::ostream& haros_dcheck(const C& condition);
 template <class A, class B> std::ostream& haros_check_op(const A& a, const B& b);
 template <class A, class B, class M> std::ostream& haros_check_near(const A& a, const B& b,
                                                                     const M& margin);
@@ -121,7 +123,7 @@ extern std::string FLAGS_vmodule;
 #define RAW_LOG(severity, ...) ::google::haros_raw_log(::google::GLOG_##severity, __VA_ARGS__)
 #define RAW_VLOG(level, ...) ::google::haros_raw_log(::google::GLOG_INFO, __VA_ARGS__)
 #define RAW_CHECK(condition, message) ::google::haros_check(condition)
-#define RAW_DCHECK(condition, message) ::google::haros_check(condition)
+#define RAW_DCHECK(condition, message) ::google::haros_dcheck(condition)
 
 #define CHECK(condition) ::google::haros_check(condition)
 #define PCHECK(condition) CHECK(condition)
@@ -141,7 +143,7 @@ extern std::string FLAGS_vmodule;
 #define CHECK_NEAR(a, b, margin) ::google::haros_check_near((a), (b), (margin))
 #define CHECK_ERR(invocation) ::google::haros_check(invocation)
 #define CHECK_NOTNULL(value) ::google::haros_check_notnull(value)
-#define DCHECK(condition) CHECK(condition)
+#define DCHECK(condition) ::google::haros_dcheck(condition)
 #define DCHECK_EQ(a, b) CHECK_EQ(a, b)
 #define DCHECK_NE(a, b) CHECK_NE(a, b)
 #define DCHECK_LE(a, b) CHECK_LE(a, b)
