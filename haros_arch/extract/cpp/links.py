@@ -43,7 +43,7 @@ from .call_conditions import (
     SITE_UNDER,
     qualified_call,
 )
-from .call_sites import CallSites, argument, string_parameters
+from .call_sites import BUILT_CLOSE, BUILT_OPEN, CallSites, argument, string_parameters
 from .handles import Namespaces, is_handle, join_name, normalise
 from .owners import owner_of
 from .values import PLACEHOLDER, SEPARATOR, VARIABLES, Scope, choose, key_of, render
@@ -307,7 +307,20 @@ ROOT_MARK = "\x17"
 # there (msckf_vio's nodelet hands ``getPrivateNodeHandle()`` to ImageProcessor's
 # constructor in image_processor.cpp); only ``resolve`` reads it
 ORIGIN_MARKS = {NODELET_HANDLE: "\x18", PROCESS_HANDLE: "\x19"}
-_MARKS = re.compile("[" + ROOT_MARK + "".join(ORIGIN_MARKS.values()) + "]")
+_MARKS = re.compile("[" + ROOT_MARK + "".join(ORIGIN_MARKS.values()) + BUILT_OPEN
+                    + BUILT_CLOSE + "]")
+# a run a member that holds the node's name as constructed filled (``call_sites.
+# names_node``), between its marks
+_BUILT = re.compile(BUILT_OPEN + "[^" + BUILT_CLOSE + "]*" + BUILT_CLOSE)
+
+
+def _built(name: str) -> str | None:
+    """``name`` (as ``_expand`` filled it, marks and all) with ``?`` for the one run that
+    is the node's name as constructed, without the other marks; None when no run, or
+    several, are (``PrimitiveCall.name_built``)."""
+    if len(_BUILT.findall(name)) != 1:
+        return None
+    return _plain(_BUILT.sub("?", name))
 
 
 def origin_marked(text: str, origin: str | None) -> str:
@@ -666,6 +679,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             origins = {o for o, mark in ORIGIN_MARKS.items() if mark in ns}
             origin = call.handle_origin if not origins else (
                 origins.pop() if len(origins) == 1 else None)
+            built = _built(name)
             ns, name = _plain(ns), _plain(name)
             node_filled = _plain(node_filled)
             param_text = _plain(param_text)
@@ -679,8 +693,12 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
                 name = "~" + name[2:]
+            if built is not None and built.startswith("~/"):
+                built = "~" + built[2:]
             made = dataclasses.replace(
                 call, name=join_name(marked, name) if ns else name,
+                name_built=None if built is None else join_name(marked, built) if ns
+                else built,
                 root_handle=call.root_handle or (root and not name.startswith(("/", "~"))),
                 handle_origin=origin,
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,
