@@ -507,7 +507,8 @@ class NodeFacts:
         """Call site -> the constructor it is in, which its unit never calls (``WITHIN``)."""
         return {site: caller for _usr, index, caller, site in self.facts if index == WITHIN}
 
-    def idle(self, unseen: Collection[str], naming: bool = False) -> Callable[[str], bool]:
+    def idle(self, unseen: Collection[str], naming: bool = False,
+             exported_here: Callable[[str], bool] | None = None) -> Callable[[str], bool]:
         """Whether a call site is in code the node never runs: a constructor no file of
         the node calls, of a class its files construct by another one (no loader builds
         it by that one then), where no parse error may hide a call of it and no variable
@@ -524,14 +525,24 @@ class NodeFacts:
         OdometryROS, exported as a component and built by rgbd_odometry's main through
         ``RGBDOdometry``, whose base initialiser names the node ``rgbd_odometry``: its
         delegating ``OdometryROS(options) : OdometryROS("odometry", options)`` made
-        every rtabmap odometry executable two nodes)."""
+        every rtabmap odometry executable two nodes).
+
+        ``exported_here``: whether a loader's export of a class (by its USR) builds it
+        in this node, when that is known (``extract.cpp._exported_here``): a
+        component's own class, not another class its files register, which a
+        container builds as a node of its own (ouster_ros' OusterDriver is built by
+        ``OusterSensor("os_driver", options)``; its files register OusterSensor too,
+        whose ``OusterSensor(options) : OusterSensor("os_sensor", options)`` made
+        the driver a client of ``os_sensor/change_state``); None: any may be."""
         unbuilt = constructor_unbuilt(self, set(unseen) - {"*"} if naming else unseen)
 
         def idle(site: str) -> bool:
             caller = self.within.get(site)
+            owner = caller.rsplit("@F@", 1)[0] if caller is not None else ""
             return caller is not None and unbuilt(caller) and (
                 class_of(caller) in self.constructed) and (
-                naming or caller.rsplit("@F@", 1)[0] not in self.named_classes)
+                naming or owner not in self.named_classes or (
+                    exported_here is not None and not exported_here(owner)))
         return idle
 
     @functools.lru_cache(maxsize=4)  # noqa: B019 (one NodeFacts per node, dropped with it)
@@ -583,7 +594,8 @@ class NodeFacts:
 
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             unseen: Collection[str] = ("*",), named: dict[str, str] | None = None,
-            hosting: bool = False) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+            hosting: bool = False, exported_here: Callable[[str], bool] | None = None,
+            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
     call a constructor makes with a name from its parameters (``made_in``) is left out
     when no file of the node calls that constructor and the class's name is not among
@@ -606,7 +618,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     found: list[Diagnostic] = []
     unbuilt = constructor_unbuilt(known, unseen)
     unrun = never_run(known, unseen)
-    idle = known.idle(unseen)
+    idle = known.idle(unseen, exported_here=exported_here)
     host_called = known.host_callable
     for call in calls:
         if call.called_in is not None and not hosting and unrun(call.called_in):
