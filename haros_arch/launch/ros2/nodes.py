@@ -392,13 +392,15 @@ def flat(key: str, value: Any) -> list[tuple[str, Any]]:
 
 def null_text(value: Any, ev: Evaluator) -> str | None:
     """The text of a parameter value made of substitutions (not only text: a
-    ``LaunchConfiguration``, ``$(var x)``) that launch_ros reads as YAML's null (``''``,
-    ``~``, ``null``): its ``evaluate_parameter_dict`` refuses it with a TypeError. None
-    for any other value, and for one not known."""
+    ``LaunchConfiguration``, ``$(var x)``) that launch_ros reads as YAML's null (``~``,
+    ``null``, blanks): its ``evaluate_parameter_dict`` refuses it with a TypeError. Not
+    the empty text, which it reads as the empty string (launch_ros#300, 2022, in every
+    release from Foxy's last on; Dashing and Eloquent refused it too). None for any
+    other value, and for one not known."""
     if not isinstance(value, tuple) or all(isinstance(part, str) for part in value):
         return None
     text = ev.value(value).literal
-    if text is None or len(text) > 16:
+    if not text or len(text) > 16:
         return None
     try:
         return text if safe_yaml.load(text) is None else None
