@@ -205,7 +205,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
 # the calls' optional text fields (written only when set): read back as written, so that
 # a model reads back whole (``runcache.store`` keeps only such a model)
 _OPTIONAL_TEXTS = ("made_in", "built_in", "called_in", "name_member", "stores",
-                   "loads_given", "namespace_param")
+                   "loads_given", "namespace_param", "name_built")
 
 
 def node_from_data(data: dict[str, Any], package: str) -> Node:

@@ -365,6 +365,13 @@ class PrimitiveCall:
     # member and nothing else there does: that member's USR. A node whose files do both
     # takes the name from that parameter (``extract.cpp._members_named``)
     name_member: str | None = field(default=None, metadata={"optional": True})
+    # ``name`` with ``?`` for the run that is the name the node's class was constructed
+    # with, read from a member every constructor of the class initialises with what it
+    # hands its rclcpp node base as the node's name (nav2's ``Costmap2DROS::name_``, its
+    # ``getName()``: ``"clear_entirely_" + costmap_.getName()`` is ``clear_entirely_?``);
+    # ``name`` holds the value under the program's own construction. A node that a
+    # host's code constructs (``plugins.hosts.Child``) takes its own name there
+    name_built: str | None = field(default=None, metadata={"optional": True})
     stores: str | None = field(default=None, metadata={"optional": True})
     # the parameter this call reads or declares names the plugin classes the code loads
     # by pluginlib, of the export tag / base class given (``plugins.hosts.CHAINS``): a

@@ -159,7 +159,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
         for child in top.children:
             own, node = _child_instance(decl, started_instance, child, nodes, models,
                                         params, config)
-            out.append((own, list(node.calls) if node else []))
+            out.append((own, [_constructed(c, child.name) for c in node.calls] if node
+                           else []))
             inner = host_of(child.package, child.executable, decl.ros_version)
             if inner is not None:
                 hosts.append((inner, own))
@@ -560,6 +561,17 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
     config.nodes.append(instance)
     process_file_params(decl, instance, params)
     return instance, node
+
+
+def _constructed(call: PrimitiveCall, name: str) -> PrimitiveCall:
+    """A call of the node a host's code constructs with the name ``name``: a name made
+    of the name the node was constructed with (``PrimitiveCall.name_built``) has
+    ``name`` there, not the name the node's own program constructs it with (nav2's
+    controller server builds its Costmap2DROS as ``local_costmap``, which serves
+    ``clear_entirely_local_costmap``; the costmap program's node is ``costmap``)."""
+    if call.name_built is None or call.name_built.count(UNKNOWN_MARK) != 1:
+        return call
+    return replace(call, name=call.name_built.replace(UNKNOWN_MARK, name), name_built=None)
 
 
 def process_file_params(decl: NodeDecl, instance: NodeInstance, params: Params,

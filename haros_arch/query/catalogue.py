@@ -219,6 +219,8 @@ def render(template: str, match: Any, evaluator: Evaluator) -> str:
             len(value) <= MAX_MESSAGE
         ):
             return value  # a diagnostic's own sentence, not data read from the workspace
+        if isinstance(value, str) and not value and fields and fields[-1] == "value":
+            return "''"  # an empty string value (a parameter's), not nothing
         return label(value) if entities(value) else _shorten(str(plain(value)))
 
     return _FIELD.sub(fill, template)

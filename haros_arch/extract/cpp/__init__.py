@@ -594,6 +594,32 @@ def _runs_any(units: Iterable[CppResult], reaching: object, entry: str | None) -
         unit.loads_in or any(d.code in _LOADS for d in unit.diagnostics) for unit in units)
 
 
+def _exported_here(units: Iterable[CppResult], reaching: object, entry: str | None
+                   ) -> Callable[[str], bool] | None:
+    """Whether a loader's export of a class (by its USR) builds it in this node
+    (``links.NodeFacts.idle``): for a component, plugin or nodelet class (``entry``),
+    only that class, which its host builds, not another class its files register (a
+    container builds that as a node of its own); for a program with a ``main()``
+    that loads no code by name, none; None where that is not known (no ``main()``
+    read, or code loaded by name into the process, which may build any)."""
+    if reaching is None or any(unit.loads_in or any(d.code in _LOADS for d in unit.diagnostics)
+                               for unit in units):
+        return None
+    if entry is None:
+        return lambda usr: False
+    name = entry.replace(" ", "").lstrip(":")
+
+    def here(usr: str) -> bool:
+        qualified = "::".join(_USR_SCOPE.findall(usr))
+        return qualified == name or qualified.endswith("::" + name) or (
+            name.endswith("::" + qualified))
+    return here
+
+
+# the namespaces and classes a class's USR is scoped in, outermost first
+_USR_SCOPE = re.compile(r"@(?:N|S|C|ST|SP)@([^@#$>]+)")
+
+
 def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True,
                  entry: str | None = None, loadable: Collection[str] = ()) -> CppResult:
     result = CppResult()
@@ -641,7 +667,8 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                 if len(names) == 1 and PLACEHOLDER in next(iter(names))
                 and "?" in links.resolve_name(next(iter(names)), known, unseen)}
     for unit in units:
-        calls, found = links.resolve(unit.calls, known, unseen, per_site, hosting)
+        calls, found = links.resolve(unit.calls, known, unseen, per_site, hosting,
+                                     _exported_here(units, reaching, entry))
         # a diagnostic of a call the node does not make (one a header's template or a
         # constructor no file of the node calls makes) is none of the node's
         dropped = {call.location for call in unit.calls} - {call.location for call in calls}

@@ -217,6 +217,10 @@ class CallSites:
         texts = {render(self.scope(constructor).string(value)) if value is not None else "?"
                  for value, constructor in options}
         text = texts.pop() if len(texts) == 1 else "?"
+        if options and all(value is not None and names_node(value, constructor)
+                           for value, constructor in options):
+            # the name the node was constructed with, whatever constructor built it
+            return BUILT_OPEN + text + BUILT_CLOSE
         return None if "?" in text else text
 
     def placeholder(self, parm: Cursor) -> str | None:
@@ -1187,6 +1191,85 @@ def constructor_values(field: Cursor, source: dict[str, bytes]
             continue  # the constructor it delegates to gives the value, with its arguments
         (writing if value is not None else leaving).append((value, definition))
     return writing + leaving
+
+
+# around the text of a member that holds the name its node was constructed with
+# (``names_node``), where ``links.resolve`` fills it in a call's name: the call's
+# ``name_built`` is that name with ``?`` there
+BUILT_OPEN = "\x1a"
+BUILT_CLOSE = "\x1b"
+
+
+def names_node(value: Cursor, constructor: Cursor) -> bool:
+    """Whether ``value``, which ``constructor`` initialises a member with, is what that
+    constructor hands its node base class as the node's name (``node_name_given``): the
+    same parameter of the constructor, or the same text reading none (nav2's
+    ``Costmap2DROS(name, ...) : nav2_util::LifecycleNode(name, "", ...), name_(name)``,
+    and ``Costmap2DROS(options) : LifecycleNode("costmap", "", options), name_(
+    "costmap")``): the member is the node's name as constructed, which the code that
+    constructs the class gives (a nav2 server its costmap: ``local_costmap``), whatever
+    the program that runs the class alone gives."""
+    given = node_name_given(constructor)
+    if given is None:
+        return False
+    one, other = _unconverted(value), _unconverted(given)
+    refs = [e.referenced if e.kind == CursorKind.DECL_REF_EXPR else None for e in (one, other)]
+    if all(r is not None and r.kind == CursorKind.PARM_DECL for r in refs):
+        return key_of(refs[0]) == key_of(refs[1])
+    texts = {value_text(e) for e in (one, other)}
+    return len(texts) == 1 and not texts.pop().startswith("\x00")
+
+
+def node_name_given(constructor: Cursor) -> Cursor | None:
+    """The argument ``constructor`` hands its base class that is, or derives from,
+    rclcpp's Node or LifecycleNode, for the base constructor's first parameter when that
+    is a string: the node's name (rclcpp's constructors take it first; so do those of
+    classes derived from them, nav2_util's LifecycleNode); None when the constructor
+    initialises no such base, or clang kept no call of the base's constructor."""
+    parent = constructor.semantic_parent
+    if parent is None:
+        return None
+    for first, second in itertools.pairwise(constructor.get_children()):
+        base = first.referenced if first.kind == CursorKind.TYPE_REF else None
+        inner = list(second.get_children()) if second.kind == CursorKind.UNEXPOSED_EXPR \
+            else [second]
+        second = inner[0]  # (the call, unexposed where an argument is converted)
+        if base is None or key_of(base) == key_of(parent) or not _node_class(base, 0) or (
+                len(inner) != 1 or second.kind != CursorKind.CALL_EXPR):
+            continue
+        target = second.referenced
+        args = written_arguments(second)
+        params = [c for c in target.get_children() if c.kind == CursorKind.PARM_DECL] if (
+            target is not None and target.kind == CursorKind.CONSTRUCTOR) else []
+        if args and params and msg_types.param_type(params[0].type) == "str":
+            return args[0]
+    return None
+
+
+def _unconverted(value: Cursor) -> Cursor:
+    """``value`` without the conversions and copies around it (a ``std::string`` built
+    of a literal or of another string)."""
+    for _ in range(8):
+        value = strip(value)
+        inner = [c for c in value.get_children() if c.kind.is_expression()]
+        target = value.referenced if value.kind == CursorKind.CALL_EXPR else None
+        if len(inner) == 1 and (value.kind == CursorKind.UNEXPOSED_EXPR or (
+                target is not None and target.kind == CursorKind.CONSTRUCTOR)):
+            value = inner[0]
+            continue
+        break
+    return value
+
+
+def _node_class(cls: Cursor | None, depth: int) -> bool:
+    """Whether ``cls`` is rclcpp's Node or LifecycleNode, or derives from one."""
+    if cls is None or depth > 8:
+        return False
+    cls = cls.get_definition() or cls
+    if qualified_name(cls) in api.RCLCPP_NODES:
+        return True
+    return any(_node_class(base.referenced, depth + 1) for base in cls.get_children()
+               if base.kind == CursorKind.CXX_BASE_SPECIFIER)
 
 
 def _delegates(constructor: Cursor) -> bool:

@@ -43,7 +43,7 @@ from .call_conditions import (
     SITE_UNDER,
     qualified_call,
 )
-from .call_sites import CallSites, argument, string_parameters
+from .call_sites import BUILT_CLOSE, BUILT_OPEN, CallSites, argument, string_parameters
 from .handles import Namespaces, is_handle, join_name, normalise
 from .owners import owner_of
 from .values import PLACEHOLDER, SEPARATOR, VARIABLES, Scope, choose, key_of, render
@@ -307,7 +307,20 @@ ROOT_MARK = "\x17"
 # there (msckf_vio's nodelet hands ``getPrivateNodeHandle()`` to ImageProcessor's
 # constructor in image_processor.cpp); only ``resolve`` reads it
 ORIGIN_MARKS = {NODELET_HANDLE: "\x18", PROCESS_HANDLE: "\x19"}
-_MARKS = re.compile("[" + ROOT_MARK + "".join(ORIGIN_MARKS.values()) + "]")
+_MARKS = re.compile("[" + ROOT_MARK + "".join(ORIGIN_MARKS.values()) + BUILT_OPEN
+                    + BUILT_CLOSE + "]")
+# a run a member that holds the node's name as constructed filled (``call_sites.
+# names_node``), between its marks
+_BUILT = re.compile(BUILT_OPEN + "[^" + BUILT_CLOSE + "]*" + BUILT_CLOSE)
+
+
+def _built(name: str) -> str | None:
+    """``name`` (as ``_expand`` filled it, marks and all) with ``?`` for the one run that
+    is the node's name as constructed, without the other marks; None when no run, or
+    several, are (``PrimitiveCall.name_built``)."""
+    if len(_BUILT.findall(name)) != 1:
+        return None
+    return _plain(_BUILT.sub("?", name))
 
 
 def origin_marked(text: str, origin: str | None) -> str:
@@ -494,7 +507,8 @@ class NodeFacts:
         """Call site -> the constructor it is in, which its unit never calls (``WITHIN``)."""
         return {site: caller for _usr, index, caller, site in self.facts if index == WITHIN}
 
-    def idle(self, unseen: Collection[str], naming: bool = False) -> Callable[[str], bool]:
+    def idle(self, unseen: Collection[str], naming: bool = False,
+             exported_here: Callable[[str], bool] | None = None) -> Callable[[str], bool]:
         """Whether a call site is in code the node never runs: a constructor no file of
         the node calls, of a class its files construct by another one (no loader builds
         it by that one then), where no parse error may hide a call of it and no variable
@@ -511,14 +525,24 @@ class NodeFacts:
         OdometryROS, exported as a component and built by rgbd_odometry's main through
         ``RGBDOdometry``, whose base initialiser names the node ``rgbd_odometry``: its
         delegating ``OdometryROS(options) : OdometryROS("odometry", options)`` made
-        every rtabmap odometry executable two nodes)."""
+        every rtabmap odometry executable two nodes).
+
+        ``exported_here``: whether a loader's export of a class (by its USR) builds it
+        in this node, when that is known (``extract.cpp._exported_here``): a
+        component's own class, not another class its files register, which a
+        container builds as a node of its own (ouster_ros' OusterDriver is built by
+        ``OusterSensor("os_driver", options)``; its files register OusterSensor too,
+        whose ``OusterSensor(options) : OusterSensor("os_sensor", options)`` made
+        the driver a client of ``os_sensor/change_state``); None: any may be."""
         unbuilt = constructor_unbuilt(self, set(unseen) - {"*"} if naming else unseen)
 
         def idle(site: str) -> bool:
             caller = self.within.get(site)
+            owner = caller.rsplit("@F@", 1)[0] if caller is not None else ""
             return caller is not None and unbuilt(caller) and (
                 class_of(caller) in self.constructed) and (
-                naming or caller.rsplit("@F@", 1)[0] not in self.named_classes)
+                naming or owner not in self.named_classes or (
+                    exported_here is not None and not exported_here(owner)))
         return idle
 
     @functools.lru_cache(maxsize=4)  # noqa: B019 (one NodeFacts per node, dropped with it)
@@ -570,7 +594,8 @@ class NodeFacts:
 
 def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             unseen: Collection[str] = ("*",), named: dict[str, str] | None = None,
-            hosting: bool = False) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
+            hosting: bool = False, exported_here: Callable[[str], bool] | None = None,
+            ) -> tuple[list[PrimitiveCall], list[Diagnostic]]:
     """The calls with their placeholders filled from ``facts`` (of the same node). A
     call a constructor makes with a name from its parameters (``made_in``) is left out
     when no file of the node calls that constructor and the class's name is not among
@@ -593,7 +618,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     found: list[Diagnostic] = []
     unbuilt = constructor_unbuilt(known, unseen)
     unrun = never_run(known, unseen)
-    idle = known.idle(unseen)
+    idle = known.idle(unseen, exported_here=exported_here)
     host_called = known.host_callable
     for call in calls:
         if call.called_in is not None and not hosting and unrun(call.called_in):
@@ -666,6 +691,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             origins = {o for o, mark in ORIGIN_MARKS.items() if mark in ns}
             origin = call.handle_origin if not origins else (
                 origins.pop() if len(origins) == 1 else None)
+            built = _built(name)
             ns, name = _plain(ns), _plain(name)
             node_filled = _plain(node_filled)
             param_text = _plain(param_text)
@@ -679,8 +705,12 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             ns = normalise(_unmarked(ns)) if ns else ""
             if name.startswith("~/"):  # written as the visitor writes a private name
                 name = "~" + name[2:]
+            if built is not None and built.startswith("~/"):
+                built = "~" + built[2:]
             made = dataclasses.replace(
                 call, name=join_name(marked, name) if ns else name,
+                name_built=None if built is None else join_name(marked, built) if ns
+                else built,
                 root_handle=call.root_handle or (root and not name.startswith(("/", "~"))),
                 handle_origin=origin,
                 handle_namespace=ns if ns and not name.startswith(("/", "~")) else None,

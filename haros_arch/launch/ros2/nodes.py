@@ -13,6 +13,9 @@ import shlex
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
+import yaml
+
+from ... import safe_yaml
 from ...files import read_text
 from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Value
@@ -236,6 +239,16 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             unseen.append(entry.location if entry.location.file else where)
         else:
             written, value = entry
+            empty = null_text(value, ev)
+            if empty is not None:
+                # launch_ros reads substitutions' text as YAML, and YAML's null is no
+                # parameter value: evaluate_parameter_dict raises TypeError
+                runner.report("LAUNCH_BAD_VALUE", where, detail=(
+                    f"parameter {ev.value(written).text} of {node} is given {empty!r} by "
+                    "substitutions, which launch_ros reads as YAML: null, no parameter "
+                    "value (TypeError 'Allowed value types are ...'), so ros2 launch stops "
+                    "here; ParameterValue(..., value_type=str) would give the text"))
+                continue
             for name, leaf in flat(ev.value(written).text, convert(value, ev)):
                 put(name, leaf, where)
                 given[name] = leaf
@@ -375,6 +388,24 @@ def flat(key: str, value: Any) -> list[tuple[str, Any]]:
     if isinstance(value, dict):
         return list(naming.flatten(value, key))
     return [(key, value)]
+
+
+def null_text(value: Any, ev: Evaluator) -> str | None:
+    """The text of a parameter value made of substitutions (not only text: a
+    ``LaunchConfiguration``, ``$(var x)``) that launch_ros reads as YAML's null (``~``,
+    ``null``, blanks): its ``evaluate_parameter_dict`` refuses it with a TypeError. Not
+    the empty text, which it reads as the empty string (launch_ros#300, 2022, in every
+    release from Foxy's last on; Dashing and Eloquent refused it too). None for any
+    other value, and for one not known."""
+    if not isinstance(value, tuple) or all(isinstance(part, str) for part in value):
+        return None
+    text = ev.value(value).literal
+    if not text or len(text) > 16:
+        return None
+    try:
+        return text if safe_yaml.load(text) is None else None
+    except yaml.YAMLError:
+        return None
 
 
 def convert(value: Any, ev: Evaluator, depth: int = 0) -> Any:
