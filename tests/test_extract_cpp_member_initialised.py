@@ -131,3 +131,43 @@ def test_a_member_with_a_default_initialiser_in_a_unit_without_its_constructor(
         ("publish", "/diagnostics", 10, 3),
         ("declare", "diagnostic_updater.period", 10, 3),
         ("declare", "diagnostic_updater.use_fqn", 10, 3)]
+
+
+TEMPLATE = """#include <rclcpp/rclcpp.hpp>
+#include <tf2_ros/static_transform_broadcaster.h>
+
+template <typename NodeT>
+class StaticFrames
+{
+public:
+  explicit StaticFrames(NodeT * parent) : node(parent), tf_bcast(parent) {}
+
+private:
+  NodeT * node;
+  tf2_ros::StaticTransformBroadcaster tf_bcast;
+};
+
+class Cloud : public rclcpp::Node
+{
+public:
+  Cloud() : rclcpp::Node("cloud"), frames(this) {}
+
+private:
+  StaticFrames<rclcpp::Node> frames;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Cloud>());
+}
+"""
+
+
+def test_a_member_a_class_template_initialises_with_a_dependent_argument(
+        write_tree) -> None:
+    """ouster_ros' ``OusterStaticTransformsBroadcaster<NodeT>`` builds its
+    ``tf_bcast(parent)`` from a ``NodeT*``: in the template that initialiser calls
+    nothing the walk can read, so the declaration stands for the construction (the
+    /tf_static publisher of os_cloud and os_driver was lost)."""
+    assert _calls(write_tree, TEMPLATE, "ament_cmake") == [("publish", "/tf_static", 12)]

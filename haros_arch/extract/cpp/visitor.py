@@ -4121,9 +4121,26 @@ def _initialised(field: Cursor) -> bool:
         if delegation(definition) is not None:
             continue
         if not any(c.kind == CursorKind.MEMBER_REF and c.referenced is not None
-                   and place_of(c.referenced) == where for c in children):
+                   and place_of(c.referenced) == where and index + 1 < len(children)
+                   and _construction(children[index + 1])
+                   for index, c in enumerate(children)):
             return False
     return True
+
+
+def _construction(expression: Cursor) -> bool:
+    """Whether a member initialiser's expression is a construction the walk reads as a
+    call: a constructor's call, under the implicit nodes around it. In a class template
+    an initialiser given a dependent argument (ouster_ros'
+    ``OusterStaticTransformsBroadcaster<NodeT>``: ``tf_bcast(parent)``, ``parent`` a
+    ``NodeT*``) is a list of its arguments and calls nothing yet: the member's
+    declaration stands for its construction there (its /tf_static publisher was lost)."""
+    while expression.kind == CursorKind.UNEXPOSED_EXPR:
+        inner = list(expression.get_children())
+        if len(inner) != 1:
+            return False
+        expression = inner[0]
+    return expression.kind == CursorKind.CALL_EXPR
 
 
 def _default_constructible(cls: Cursor) -> bool:
