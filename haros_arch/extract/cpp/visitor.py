@@ -2625,10 +2625,15 @@ class CallFinder:
                 conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
                     c.statement in ("for", "while") and c.location in each[2]
                 ) else c for c in conditions)
+            # read on a handle a caller passes (jsk_aerial_robot's AerialRobotBase(nh,
+            # nh_private) reads on ``nh_``): named on that handle, as the read the code
+            # makes there is (``links.resolve``), so the public handle's "" gives
+            # ``name``, not the global ``/name``
             self.calls.append(PrimitiveCall(
                 kind="read", name=source[0], type="str", conditions=conditions,
                 location=location, has_default=source[1] is not None, default=source[1],
                 loads=loads, node_name=self._owner,
+                handle_namespace=links.placeholder_namespace(source[0]),
                 name_param=each[0] if each else None, name_each=each[1] if each else None,
                 name_default=each[3] if each else None))
 
