@@ -196,3 +196,39 @@ def test_a_file_the_launch_file_writes_is_not_hard_coded(write_tree):
     found = sorted(f.entities for f in run_rule(rule, model))
     assert found == [("parameter:/tb1_bridge/calibration",),
                      ("parameter:/tb3_bridge/calibration",)]
+
+
+TEXTFILE_LAUNCH = """<launch>
+  <param name="robot_description" textfile="$(find nav)/urdf/robot.urdf" />
+  <param name="other_description" textfile="$(find nav)/urdf/hard.urdf" />
+</launch>
+"""
+
+COMMENTED_URDF = """<?xml version="1.0" ?>
+<!-- Install the meshes in /opt/ros/... or from the source repository,
+     or copy them to /home/me/meshes/base.urdf -->
+<robot name="r"><link name="base"/></robot>
+"""
+
+HARD_URDF = """<?xml version="1.0" ?>
+<robot name="r"><link name="base"><visual><geometry>
+  <mesh filename="/home/me/meshes/base.stl"/></geometry></visual></link></robot>
+"""
+
+
+def test_the_words_of_an_xml_comment_are_no_path(write_tree):
+    """A parameter loaded with ``textfile`` holds the document: amr-ros-config's
+    pioneer-lx-devil.urdf says in a comment where to install meshes ("/opt/ros/... or
+    from source repository"), which is no value any program reads; a mesh the document
+    names by an absolute path still is one."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/urdf/robot.urdf": COMMENTED_URDF,
+        "src/nav/urdf/hard.urdf": HARD_URDF,
+        "src/nav/launch/desc.launch": TEXTFILE_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/desc.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    assert [f.entities for f in run_rule(rule, model)] == [("parameter:/other_description",)]

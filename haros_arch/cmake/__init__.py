@@ -590,6 +590,15 @@ def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], l
                  for base, path in interpreter.plugin_descriptions]
     roots = [package.root, *(workspace.packages[d].root for d in depends
                              if d in workspace.packages and workspace.packages[d].root)]
+    # pluginlib's ClassLoader(tag, base) reads the classes every package exports under
+    # its tag, and the code that declares it includes the base's header, so its package
+    # is the tag's package or depends on it: jsk_aerial_robot's dragon exports
+    # controllers under aerial_robot_control, and aerial_robot_base, which depends on
+    # aerial_robot_control (not on dragon), loads them by a parameter's value
+    tags = {plugin.kind for plugin in [*package.plugins, *described]}
+    roots += [other.root for other in workspace.packages.values() if other.root and (
+        other.root not in roots) and (other.name in tags or any(
+            d.name in tags for d in other.dependencies))]
     named: frozenset[str] = frozenset()
     if package.plugins or described:
         # the code that creates a class by its name is usually in a package that depends

@@ -288,6 +288,9 @@ _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json"
                   ".png", ".bag", ".db3", ".csv", ".txt", ".so", ".py", ".cfg", ".ini")
 
 
+_XML_COMMENT = re.compile(r"<!--.*?(?:-->|$)", re.DOTALL)
+
+
 def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
     """True when a value (or a word of it) looks like an absolute filesystem path that
     is not one of the ``portable`` folders (``config.package_paths``: where ``$(find
@@ -297,7 +300,10 @@ def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
     folders = [f.rstrip("/") + "/" for f in _items(portable) if isinstance(f, str)] \
         if portable else []
     charge(1 + len(value) // 256 + len(folders))
-    for word in value.replace("=", " ").split():
+    # the words of an XML comment are prose, no value a program reads: a document loaded
+    # with ``textfile`` (amr-ros-config's URDF says to install meshes "/opt/ros/... or
+    # from source repository")
+    for word in _XML_COMMENT.sub(" ", value).replace("=", " ").split():
         word = word.strip("'\"")
         if any(word.startswith(folder) or word == folder[:-1] for folder in folders):
             continue

@@ -898,6 +898,15 @@ def _param_text(param: str) -> str:
     return f"{param[:mark.end()]}{_SPLIT}{rest.lstrip('/')}"
 
 
+def placeholder_namespace(name: str) -> str | None:
+    """The placeholder ``name`` starts with when a ``/`` follows it: the namespace of a
+    handle a caller passes, joined to the rest as ``join_name`` does before it is known
+    (the parameter a class load reads, ``_param_text``'s split); else None."""
+    mark = _MARK.match(name)
+    return name[:mark.end()] if mark is not None and (
+        name[mark.end():].startswith("/")) else None
+
+
 def _param_joined(filled: str) -> str:
     """A ``_param_text`` with its placeholders filled: the namespace joined to the name."""
     ns, _, name = filled.partition(_SPLIT)

@@ -1304,8 +1304,15 @@ class CallFinder:
         self._made_by = self._template
         try:
             if made is not None:
+                before = len(self.calls)
                 self._emit(made[0], call, written_arguments(call), made[1], conditions,
                            scope)
+                if made[0].fixed_name is None and len(self.calls) > before:
+                    # its name from arguments that depend on the template's parameters,
+                    # as for a ``new`` clang kept unresolved (``_lost_initialiser``)
+                    self.diagnostics.append(diag.make(
+                        "CPP_CALL_UNRESOLVED", self.calls[before].location,
+                        function=made[1].spelling, type=self.calls[before].type or "?"))
             elif declared is not None:
                 self._listener(call, written_arguments(call), declared, conditions, scope)
         finally:
@@ -2618,10 +2625,15 @@ class CallFinder:
                 conditions = tuple(dataclasses.replace(c, statement=EACH_STATEMENT) if (
                     c.statement in ("for", "while") and c.location in each[2]
                 ) else c for c in conditions)
+            # read on a handle a caller passes (jsk_aerial_robot's AerialRobotBase(nh,
+            # nh_private) reads on ``nh_``): named on that handle, as the read the code
+            # makes there is (``links.resolve``), so the public handle's "" gives
+            # ``name``, not the global ``/name``
             self.calls.append(PrimitiveCall(
                 kind="read", name=source[0], type="str", conditions=conditions,
                 location=location, has_default=source[1] is not None, default=source[1],
                 loads=loads, node_name=self._owner,
+                handle_namespace=links.placeholder_namespace(source[0]),
                 name_param=each[0] if each else None, name_each=each[1] if each else None,
                 name_default=each[3] if each else None))
 
@@ -4386,9 +4398,12 @@ def _dependent_listener(call: Cursor
 def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     """The API row and class of ``std::make_shared<C>(args)`` (a factory of
     ``api.FACTORIES``) that a template leaves unresolved because an argument depends on
-    its parameters, when ``C`` is a class, not a template, whose construction has a row
-    with a name of its own: nav2's ``create_transform_listener(buffer, node)`` makes a
-    ``std::make_shared<nav2::TransformListener>(buffer, node)``."""
+    its parameters, when ``C`` is a class, not a template, whose construction has a row:
+    nav2's ``create_transform_listener(buffer, node)`` makes a
+    ``std::make_shared<nav2::TransformListener>(buffer, node)``; or a class template of
+    the API: MoveIt's ``ActionBasedControllerHandle<T>`` makes its action client with
+    ``std::make_shared<actionlib::SimpleActionClient<T>>(getActionName(), true)``,
+    named by its arguments as far as they are known."""
     cls = _dependent_class(call)
     # else a class template of the API whose arguments depend on the template's
     # parameters (jsk_pcl_ros' ColorFilter<Comparison, Config> builds
@@ -4398,7 +4413,7 @@ def _dependent_made(call: Cursor) -> tuple[api.RosFunction, Cursor] | None:
     if made is None:
         return None
     spec = api.ALL.get((qualified_name(made), made.spelling))
-    if spec is None or spec.fixed_name is None:
+    if spec is None:
         return None
     return spec, made
 
