@@ -24,7 +24,10 @@ bug's launch files is written beside, and ``python -m haros_arch check project.y
 - ``undecided``: only the rule's ``-undecided`` info points at it (the tool says it
   cannot decide; the reason is in that info's message). That info names its first case
   only: a bug's ``expect.unseen`` query (``haros-arch query``) tells whether the bug's
-  case is among the others (no finding, a node of unknown interface in the way);
+  case is among the others (no finding, a node of unknown interface in the way); a
+  ROS 2 launch configuration used where an action not seen may have declared it (the
+  info ``LAUNCH_UNKNOWN_VALUE``, "is not seen declared (undecided: ...)") is the
+  undecided form of ``LAUNCH_ARG_UNSET``;
 - ``missed``: neither (also a bug in code no launch file starts: ``not_launched``);
 - ``skipped``: a mirror or a commit is not on disk (fetch github:owner/name first);
 - ``setup error``: check reports the project file itself (a launch file it names is
@@ -62,6 +65,7 @@ from typing import Any
 import yaml
 
 HERE = Path(__file__).resolve().parent
+UNDECIDED = "-undecided"  # suffix of a rule's info on the matches it cannot decide
 DATA = HERE / "robust_bugs.yaml"
 
 
@@ -163,8 +167,14 @@ def check(project: Path) -> list[dict[str, Any]]:
                           capture_output=True, text=True, cwd=project.parent, check=False)
     try:
         report = json.loads(done.stdout)
-        return [*report["findings"], *(d for d in report.get("diagnostics", [])
-                                       if d.get("severity") in ("warning", "error"))]
+        diagnostics = report.get("diagnostics", [])
+        return [*report["findings"], *(d for d in diagnostics
+                                       if d.get("severity") in ("warning", "error")),
+                # a ROS 2 launch configuration used where an action not seen may have
+                # declared it: LAUNCH_ARG_UNSET's undecided form, an info
+                *({**d, "code": "LAUNCH_ARG_UNSET" + UNDECIDED} for d in diagnostics
+                  if d.get("code") == "LAUNCH_UNKNOWN_VALUE"
+                  and "is not seen declared (undecided" in d.get("message", ""))]
     except (ValueError, KeyError):
         last = (done.stderr.strip().splitlines() or ["no output"])[-1]
         raise CheckFailed(f"{project.parent.name}: {last[:300]}") from None
@@ -208,16 +218,16 @@ def verdict(bug: dict[str, Any], trees: dict[str, Path], verbose: bool) -> str:
         return f"setup error ({wrong})"
     found = pointing(buggy, bug["expect"])
     if verbose:
-        for finding in found or pointing(buggy, bug["expect"], "-undecided"):
+        for finding in found or pointing(buggy, bug["expect"], UNDECIDED):
             print(f"    {finding.get('rule', finding.get('code'))}: {finding['message'][:300]}")
     if found:
         after = "gone after fix" if not pointing(fixed, bug["expect"]) else "stays after fix"
         return f"found, {after}"
-    if pointing(buggy, bug["expect"], "-undecided"):
+    if pointing(buggy, bug["expect"], UNDECIDED):
         return "undecided"
     unseen = bug["expect"].get("unseen")
     if unseen and any(pointing(buggy, {**bug["expect"], "file": [], "text": []},
-                               "-undecided")) and matches(trees["buggy"], unseen):
+                               UNDECIDED)) and matches(trees["buggy"], unseen):
         # the rule's undecided info names its first case only: the query says whether
         # this one is among them (no finding, a node of unknown interface in the way)
         return "undecided"

@@ -362,6 +362,15 @@ CATALOGUE: dict[str, Entry] = {
         "differs from the one declared (slam_toolbox_mode for slam_mode). Where an "
         "action the reader could not see may declare it, the condition is undecided "
         "instead (LAUNCH_UNKNOWN_VALUE)."),
+    "LAUNCH_NODE_ARG_PATH_MISSING": Entry(
+        "warning", "node {name} is given the path {path} on its command line, which is "
+        "not there",
+        "A ROS 1 node's args hold an absolute path into the workspace (most often made by "
+        "$(find pkg)/..., which is the package's own folder) that does not exist: the "
+        "program is started with a file it cannot open (gazebo_ros' range_world.launch "
+        "gave gzserver the world $(find gazebo_plugins)/test/test_worlds/"
+        "gazebo_ros_range.W()orld). A path with a part not known statically is not "
+        "judged."),
     "LAUNCH_INCLUDE_ABSOLUTE": Entry(
         "warning", "launch file {path} is included by an absolute path this file writes "
         "out; it is there only on the machine that wrote it",

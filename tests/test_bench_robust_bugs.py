@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import json
 import subprocess
 import tarfile
 from pathlib import Path
@@ -69,3 +70,29 @@ def test_the_fixed_tree_takes_the_launch_arguments_the_fix_renamed(tmp_path: Pat
     assert isinstance(trees, dict)
     assert yaml.safe_load(trees["fixed"].read_text())["configurations"]["bug"]["args"] == {
         "cfg": "old"}
+
+
+def test_configuration_not_seen_declared_is_the_undecided_form_of_arg_unset(
+        monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    # turtlebot4_simulator decdf2b: x is used where an include not read (a launch file
+    # the build makes) may have declared it; check says so in an info, which the
+    # verdict takes as LAUNCH_ARG_UNSET's undecided form, not as a miss
+    script = _script()
+    report = {"findings": [], "diagnostics": [
+        {"code": "LAUNCH_UNKNOWN_VALUE", "severity": "info",
+         "location": {"file": "pkg/launch/ignition.launch.py", "line": 186},
+         "message": "launch argument x is not seen declared (undecided: what was not "
+                    "read may declare it: ...); what depends on it keeps '?'"},
+        {"code": "LAUNCH_UNKNOWN_VALUE", "severity": "info",
+         "location": {"file": "pkg/launch/ignition.launch.py", "line": 90},
+         "message": "package ros_ign_gazebo is not in the workspace nor installed here"}]}
+
+    def run(*args, **kwargs):
+        return subprocess.CompletedProcess(args, 0, stdout=json.dumps(report), stderr="")
+
+    monkeypatch.setattr(script.subprocess, "run", run)
+    findings = script.check(tmp_path / "project.yaml")
+    expect = {"rules": ["LAUNCH_ARG_UNSET"], "file": "ignition.launch.py", "text": ["x"]}
+    assert script.pointing(findings, expect) == []
+    assert [f["location"]["line"] for f in script.pointing(findings, expect, "-undecided")] \
+        == [186]

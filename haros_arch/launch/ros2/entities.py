@@ -145,6 +145,17 @@ class Opaque(Subst):
     refused: bool = False  # launch itself raises on it: an error, not a gap of ours
 
 
+@dataclass(frozen=True)
+class Performed(Subst):
+    """An object of a substitution class the launch file defines, its ``perform`` not
+    interpreted: unknown, but the substitutions its constructor was given (``reads``)
+    are performed where it is, as its ``perform`` performs them (a launch configuration
+    not set there is said as any other)."""
+
+    origin: str
+    reads: tuple[Text, ...] = ()
+
+
 COMMAND_NOT_RUN = "Command (never run) is not evaluated; its value is unknown"
 
 

@@ -74,6 +74,7 @@ from .python_values import (
     ReadOnlyFile,
     Record,
     Ref,
+    SubstitutionClass,
     SuperOf,
     _Break,
     _Continue,
@@ -85,6 +86,7 @@ from .python_values import (
     _Stop,
     conjunction,
     launch_object,
+    to_text,
 )
 
 T = TypeVar("T")
@@ -323,6 +325,11 @@ class Interpreter(Expressions):
                 elif not _no_op(item):
                     return unknown
             return ActionClass(stmt.name, base, init)
+        if isinstance(base, Ref) and base.qualified in _SUBSTITUTION_BASES \
+                and not stmt.decorator_list and any(
+                    isinstance(item, ast.FunctionDef) and item.name == "perform"
+                    for item in stmt.body):
+            return SubstitutionClass(stmt.name)
         plain = self.plain_class(stmt, base, env)
         return plain if plain is not None else unknown
 
@@ -1235,6 +1242,8 @@ class Interpreter(Expressions):
             return self.construct(func, args, kwargs, node)
         if isinstance(func, PlainClass):
             return self.instantiate(func, args, kwargs, node)
+        if isinstance(func, SubstitutionClass):
+            return self.user_substitution(func, args, kwargs, node)
         if isinstance(func, Method):
             return self.call_function(func.func, [func.owner, *args], kwargs, node)
         if isinstance(func, SuperOf):  # super(), or super(Class, self)
@@ -1292,6 +1301,21 @@ class Interpreter(Expressions):
             return Unknown(f"call to {callee}", "unsupported", where=func.where)
         return self.unsupported(node, f"call to {callee}, a value not known statically, "
                                       "is not interpreted")
+
+    def user_substitution(self, cls: SubstitutionClass, args: list[Any],
+                          kwargs: dict[str, Any], node: ast.AST) -> Any:
+        """An object of a substitution class the file defines: its ``perform`` is not
+        interpreted (said here), so its value is unknown, but the substitutions given to
+        its constructor are performed where it is (``e.Performed``): a launch
+        configuration among them that is not set there is said, as launch raises."""
+        said = self.unsupported(node, f"call to class {cls.name} (not interpreted)")
+        reads: list[e.Text] = []
+        for value in [*args, *kwargs.values()]:
+            if isinstance(value, (Lazy, e.Subst, list, tuple)):
+                text = to_text(value)
+                if any(isinstance(part, e.Subst) for part in text):
+                    reads.append(text)
+        return Lazy((e.Performed(said.origin, tuple(reads)),))
 
     def charge_arguments(self, values: list[Any]) -> None:
         """What a builder, builtin or method will walk: containers by their nested size,
@@ -1646,6 +1670,8 @@ def _common_text(values: list[Any], reason: str) -> Lazy | None:
     return Lazy(tuple(parts))
 
 
+# launch's base class of substitutions, as a launch file imports it
+_SUBSTITUTION_BASES = ("launch.Substitution", "launch.substitution.Substitution")
 _ENUM_BASES = ("enum.Enum", "enum.IntEnum", "enum.StrEnum", "enum.Flag", "enum.IntFlag")
 
 

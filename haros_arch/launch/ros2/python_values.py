@@ -189,6 +189,17 @@ class ActionClass:
 
 
 @dataclass(eq=False)
+class SubstitutionClass:
+    """A class the interpreted code defines on launch's ``Substitution`` (with its own
+    ``perform``, not interpreted): an object of it is a substitution whose value is not
+    known, but launch performs it where the action using it runs, and it performs the
+    substitutions its constructor is given (create3_sim's and turtlebot4_simulator's
+    ``OffsetParser(LaunchConfiguration('x'), 0.157)``)."""
+
+    name: str
+
+
+@dataclass(eq=False)
 class PlainClass:
     """A class of the interpreted code that is no launch action (vrx_gz's ``Model``,
     whose methods build its bridges and nodes; a ``@dataclass`` ``Bridge``; an ``Enum``):

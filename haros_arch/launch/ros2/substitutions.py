@@ -573,6 +573,11 @@ class Evaluator:
     def s_Literal(self, s: e.Literal) -> Value:
         return self.value(s.text)
 
+    def s_Performed(self, s: e.Performed) -> Value:
+        for read in s.reads:  # what its perform() performs; said where it is not set
+            self.value(read)
+        return Value.unknown(s.origin)
+
     def s_Opaque(self, s: e.Opaque) -> Value:
         if s.report:
             self.report("LAUNCH_BAD_VALUE" if s.refused else "LAUNCH_UNSUPPORTED",

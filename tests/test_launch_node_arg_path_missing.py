@@ -1,0 +1,63 @@
+"""A ROS 1 node given, on its command line, an absolute path into the workspace that is
+not there is said, LAUNCH_NODE_ARG_PATH_MISSING (warning), at the node: gazebo_ros
+a2cbcb5's range_world.launch handed empty_world.launch the world
+``$(find gazebo_plugins)/test/test_worlds/$(arg world).W()orld``, which its gzserver
+node then got among its args. A path that is there, one with a part not known, one
+outside the workspace and one given to an option of output (map_saver's ``-f``) are
+not said."""
+
+from __future__ import annotations
+
+from conftest import package_xml
+
+from haros_arch.launch import load
+from haros_arch.workspace import scan
+
+WORLD = """<launch>
+  <arg name="world" default="range"/>
+  <include file="$(find sim)/launch/empty.launch">
+    <arg name="world_name" value="$(find sim)/worlds/$(arg world).W()orld"/>
+  </include>
+  <node pkg="sim" type="viewer" name="viewer"
+        args="-d $(find sim)/worlds/range.world --config=$(find sim)/cfg/missing.yaml"/>
+  <node pkg="sim" type="viewer" name="unknown" args="$(find sim)/worlds/$(arg other)"/>
+  <node pkg="map_server" type="map_saver" name="saver" args="-f $(find sim)/maps/new"/>
+  <node pkg="sim" type="viewer" name="outside" args="/opt/elsewhere/file.yaml"/>
+</launch>
+"""
+
+EMPTY = """<launch>
+  <arg name="world_name" default="worlds/empty.world"/>
+  <node pkg="sim" type="gzserver" name="gazebo" args="-e ode $(arg world_name)"/>
+</launch>
+"""
+
+
+def _said(model) -> list[tuple[str, str, int]]:
+    return sorted((d.location.file.rsplit("/", 1)[-1], d.message, d.location.line)
+                  for d in model.diagnostics if d.code == "LAUNCH_NODE_ARG_PATH_MISSING")
+
+
+def test_missing_world_file_handed_to_an_included_node(write_tree) -> None:
+    root = write_tree({"src/sim/package.xml": package_xml("sim", "catkin"),
+                       "src/sim/launch/range.launch": WORLD,
+                       "src/sim/launch/empty.launch": EMPTY,
+                       "src/sim/worlds/range.world": "<sdf/>\n"})
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/sim/launch/range.launch"), ws, {}, {})
+    assert _said(model) == [
+        ("empty.launch", "node gazebo is given the path sim/worlds/range.W()orld on its "
+         "command line, which is not there", 3),
+        ("range.launch", "node viewer is given the path sim/cfg/missing.yaml on its "
+         "command line, which is not there", 6)]
+
+
+def test_world_file_that_is_there_is_not_said(write_tree) -> None:
+    root = write_tree({"src/sim/package.xml": package_xml("sim", "catkin"),
+                       "src/sim/launch/range.launch": WORLD.replace(".W()orld", ".world")
+                       .replace(" --config=$(find sim)/cfg/missing.yaml", ""),
+                       "src/sim/launch/empty.launch": EMPTY,
+                       "src/sim/worlds/range.world": "<sdf/>\n"})
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/sim/launch/range.launch"), ws, {}, {})
+    assert _said(model) == []
