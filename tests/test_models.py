@@ -976,3 +976,42 @@ def test_rostopic_echo_hz_delay_and_bw_subscribe_to_what_they_name(write_tree):
     assert sorted(s.node.name for s in topic.subscribers) == ["/bw", "/robot/echo", "/robot/hz"]
     # each subscriber takes the publisher's type: no type mismatch with a typeless side
     assert [f.rule for f in run_catalogue(model) if "type" in f.rule] == []
+
+
+def test_ros2_topic_echo_hz_bw_and_delay_subscribe_to_what_they_name(write_tree):
+    """``ExecuteProcess(cmd=['ros2', 'topic', 'echo', ...])`` in a ROS 2 launch file: a
+    subscriber of the topic, of the type given (else its publishers'), with the QoS its
+    options say (else unknown: echo adapts to the publishers); ``hz`` (several topics),
+    ``bw`` and ``delay`` subscribe with ``qos_profile_sensor_data``."""
+    root = write_tree({
+        "src/p/package.xml": package_xml("p", "ament_cmake"),
+        "src/p/CMakeLists.txt": "project(p)\n",
+        "src/p/launch/p.launch.py": """
+from launch import LaunchDescription
+from launch.actions import ExecuteProcess
+
+def generate_launch_description():
+    return LaunchDescription([
+        ExecuteProcess(cmd=['ros2', 'topic', 'pub', '--node-name', 'scan_pub', '/scan',
+                            'std_msgs/msg/String', '{}']),
+        ExecuteProcess(cmd=['ros2', 'topic', 'echo', '--qos-reliability', 'best_effort',
+                            '/scan', 'std_msgs/msg/String']),
+        ExecuteProcess(cmd=['ros2', 'topic', 'hz', '-w', '10', '/scan', '/odom']),
+        ExecuteProcess(cmd=['ros2', 'topic', 'bw', '/scan', '/odom']),
+    ])
+""",
+        "project.yaml": "project: p\nconfigurations:\n  c: [p/launch/p.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    echo, hz, bw = [n for n in config.nodes if n.name != "/scan_pub"]
+    assert echo.completeness == hz.completeness == "model"
+    assert [(link.kind, link.name, link.type, link.qos) for link in echo.links] == [
+        ("subscribe", "/scan", "std_msgs/msg/String", {"reliability": "best_effort"})]
+    sensor = {"depth": 5, "history": "keep_last", "reliability": "best_effort",
+              "durability": "volatile"}
+    assert [(link.kind, link.name, link.qos) for link in hz.links] == [
+        ("subscribe", "/scan", sensor), ("subscribe", "/odom", sensor)]
+    assert bw.completeness == "unknown"  # argparse refuses a second topic
+    topic = next(t for t in config.topics if t.name == "/scan")
+    assert len(topic.subscribers) == 2 and len(topic.publishers) == 1

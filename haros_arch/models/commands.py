@@ -1,5 +1,6 @@
 """Nodes whose interface is their command line: ``rostopic pub`` / ``ros2 topic pub``,
-``rostopic echo``, ``hz``, ``delay`` and ``bw``,
+``rostopic echo``, ``hz``, ``delay`` and ``bw`` / ``ros2 topic echo``, ``hz``, ``bw``
+and ``delay``,
 ``rosservice call`` / ``ros2 service call``, dynamic_reconfigure's ``dynparam``,
 ROS 1 topic_tools' ``relay``, ``mux``, ``demux``, ``throttle`` and ``drop``, ROS 1
 controller_manager's ``spawner`` and gazebo_ros' ``spawn_model``.
@@ -86,6 +87,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from ..extract.python.rclpy import PRESETS
 from ..launch.model import NodeDecl, shell_words
 from ..launch.ros2.naming import split_arguments
 from ..model.source import RECONFIGURE_SERVICE, RECONFIGURE_TOPICS, CallKind, Node, PrimitiveCall
@@ -127,6 +129,9 @@ def command_node(decl: NodeDecl) -> Node | None:
         return _rosservice(decl, words)
     if decl.executable == "ros2" and words[:2] == ["topic", "pub"]:
         return _ros2_topic(decl, words[1:])
+    if decl.executable == "ros2" and words[:1] == ["topic"] and words[1:2] and (
+            words[1] in ROS2_TOPIC_WATCHERS):
+        return _ros2_topic_watch(decl, words[1], words[2:])
     if decl.executable == "ros2" and words[:2] == ["service", "call"]:
         return _ros2_service(decl, words[2:])
     if decl.executable == "ros2" and words[:2] == ["lifecycle", "set"]:
@@ -566,6 +571,52 @@ def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:
                          location=decl.location,
                          origin="arguments")
     return _node(decl, decl.package or "ros2topic", call, "python")
+
+
+# ros2topic's verbs that subscribe to the topics they name (ros2cli
+# ``ros2topic/ros2topic/verb/<verb>.py``), with their options that take a value
+_ROS2_QOS_VALUES = {"--qos-profile", "--qos-depth", "--qos-history", "--qos-reliability",
+                    "--qos-durability", "--qos-liveliness",
+                    "--qos-liveliness-lease-duration-seconds"}
+ROS2_TOPIC_WATCHERS: dict[str, set[str]] = {
+    "echo": {*_ROS2_QOS_VALUES, "--field", "--truncate-length", "-l", "--filter",
+             "--timeout", "--spin-time"},
+    "hz": {"--window", "-w", "--filter", "--spin-time"},
+    "bw": {"--window", "-w", "--spin-time"},
+    "delay": {"--window", "-w", "--spin-time"}}
+
+
+def _ros2_topic_watch(decl: NodeDecl, verb: str, words: list[str]) -> Node | None:
+    """``ros2 topic echo|hz|bw|delay [options] TOPIC...``: a subscriber of each topic.
+    ``echo TOPIC [TYPE]`` subscribes with the type given, else its publishers' (looked
+    up when it runs), and with the QoS its ``--qos-*`` options say, else one chosen from
+    its publishers' when it runs (unknown here); ``hz`` (several topics from Jazzy on),
+    ``bw`` and ``delay`` subscribe with ``qos_profile_sensor_data``. None when argparse
+    would refuse the words, or they are not known."""
+    if any(UNKNOWN_MARK in word for word in words):
+        return None
+    positional, values, _flags = split_options(words, ROS2_TOPIC_WATCHERS[verb])
+    most = {"echo": 2, "hz": None}.get(verb, 1)
+    if not positional or (most is not None and len(positional) > most):
+        return None
+    if verb == "echo":
+        qos: dict[str, Any] | None = {
+            key: int(values[option]) if values[option].isdigit()
+            else values[option].replace("-", "_")
+            for option, key in ROS2_QOS.items() if option in values} or None
+        type_ = positional[1] if len(positional) > 1 else None
+        calls = [PrimitiveCall("subscribe", positional[0], type_, qos=qos,
+                               location=decl.location, origin="arguments")]
+    else:
+        calls = [PrimitiveCall("subscribe", topic, None,
+                               qos=dict(PRESETS["qos_profile_sensor_data"]),
+                               location=decl.location, origin="arguments")
+                 for topic in positional]
+    node = Node(decl.package or "ros2topic", decl.executable, "executable", "python",
+                calls=calls, location=decl.location)
+    node.model = f"the arguments of ros2 topic {verb}"
+    node.completeness = "model"
+    return node
 
 
 def _ros2_service(decl: NodeDecl, words: list[str]) -> Node | None:

@@ -415,6 +415,7 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
     (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``), ``ros2
     topic pub ...`` (a publisher that ``models.commands`` reads from its arguments,
     named as ros2cli's DirectNode names it, ``_ros2cli_<pid>``, or by ``--node-name``),
+    ``ros2 topic echo|hz|bw|delay ...`` (a subscriber, named so),
     ``ros2 service call ...`` (a client, named after the service type), ``ros2
     lifecycle set NODE TRANSITION`` (its DirectNode, a client of NODE's lifecycle
     services) or ``ros2 control load_controller ...`` (its DirectNode, which loads a
@@ -437,6 +438,11 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
         for index, word in enumerate(words[3:-1], start=3):
             if plain(word) in ("-n", "--node-name"):
                 name = words[index + 1]
+        return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
+    if head[1] == "topic" and head[2] in ("echo", "hz", "bw", "delay"):
+        # a subscriber of the topics it names (``models.commands``), its DirectNode named
+        # ``_ros2cli_<pid>`` as pub's
+        name = ("_ros2cli_", Opaque("the process id of ros2 topic", report=False))
         return NodeAction(("ros2topic",), ("ros2",), name, arguments=list(words[1:]))
     if head[1:] == ["service", "call"]:
         # ros2service's call verb: a node ``_ros2cli_requester_<package>_<Service>`` of
