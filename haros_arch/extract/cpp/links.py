@@ -1154,9 +1154,10 @@ def _host_handle(namespace: str, facts: NodeFacts,
         values = {values[key[1]] for values in facts.passed.get(key[0], {}).values()
                   if key[1] in values}
         if not values:
-            bases = overridden.get(key)
-            return " ".join(sorted(f"{base}#{key[1]}" for base in bases)) if (
-                bases) else None
+            # the method itself too: a host calling it through its own class (a base's
+            # ``initialize`` the plugin does not override)
+            bases = overridden.get(key, set()) | {key[0]}
+            return " ".join(sorted(f"{base}#{key[1]}" for base in bases))
         if len(values) != 1:
             return None
         match = _MARK.match(_plain(values.pop()))
