@@ -124,6 +124,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                 node, without_overridden(node, result.calls, workspace), workspace)
             node.rosname = _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
+            node.handles_given = dict(result.handles_given)
         if cpp_batch is not None:
             cpp_batch.extend(batch)
         found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
@@ -158,7 +159,7 @@ def other_key(node: Node) -> str:
 
 # the node fields extraction sets (``extract_node``, ``completeness``)
 _RESULT_FIELDS = ("calls", "rosname", "rosnames", "completeness", "completeness_reasons",
-                  "plugin_loads", "nodelets")
+                  "plugin_loads", "nodelets", "handles_given")
 
 
 def _result_data(node: Node, said: list[Diagnostic]) -> dict[str, Any]:
@@ -413,6 +414,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
                 node, without_overridden(node, result.calls, workspace), workspace)
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
+        node.handles_given = dict(result.handles_given)
         said = _read_elsewhere(result.diagnostics, [node], [result], workspace)
         return [*said, *completeness(node, result.diagnostics, workspace)]
     if node.language == "python" and sources:

@@ -205,7 +205,7 @@ def call_from_data(c: dict[str, Any]) -> PrimitiveCall:
 # the calls' optional text fields (written only when set): read back as written, so that
 # a model reads back whole (``runcache.store`` keeps only such a model)
 _OPTIONAL_TEXTS = ("made_in", "built_in", "called_in", "name_member", "stores",
-                   "loads_given", "namespace_param", "name_built")
+                   "loads_given", "namespace_param", "name_built", "host_handle")
 
 
 def node_from_data(data: dict[str, Any], package: str) -> Node:
@@ -230,7 +230,16 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 plugin_loads=[str(a) for a in data.get("plugin_loads", ()) or ()
                               if isinstance(a, str)],
                 nodelets=[str(a) for a in data.get("nodelets", ()) or ()
-                          if isinstance(a, str)])
+                          if isinstance(a, str)],
+                handles_given=_handles_given(data.get("handles_given")))
+
+
+def _handles_given(value: Any) -> dict[str, list[str]]:
+    """A saved node's ``handles_given``; anything else than text lists is none."""
+    if not isinstance(value, dict):
+        return {}
+    return {str(key): [str(v) for v in values if isinstance(v, str)]
+            for key, values in value.items() if isinstance(values, list)}
 
 
 def _completeness(value: Any) -> Completeness:

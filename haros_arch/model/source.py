@@ -358,6 +358,14 @@ class PrimitiveCall:
     # under the ``name`` nav2_core::Behavior's ``configure`` is given); the host fills it
     # in (``plugins.attach``)
     host_named: str | None = field(default=None, metadata={"optional": True})
+    # ROS 1: made on a handle whose namespace, wholly or as its first part, is a handle
+    # parameter of a virtual method that no code of the node calls, nor a base method
+    # it overrides (a plugin's ``initialize(ros::NodeHandle nh, ...)``, which its host
+    # calls through the base class it loads it by): ``<base method USR>#<index>`` of
+    # each method it overrides (directly or not), separated by spaces. The name's first
+    # ``?`` is that handle's namespace, which the host's call gives
+    # (``Node.handles_given``; ``plugins.attach``)
+    host_handle: str | None = field(default=None, metadata={"optional": True})
     # in one translation unit's calls only (never in a node's): a name that is wholly a
     # member of a class that no function of the unit writes (topic_tools' ToolBaseNode
     # publishes on ``output_topic_``, which its subclass RelayNode sets in another
@@ -488,6 +496,12 @@ class Node:
     # (``nodelet::Loader``'s ``load(ros::this_node::getName(), "pkg/Name", ...)``), by
     # lookup name: each instance makes their calls too (``graph.build``)
     nodelets: list[str] = field(default_factory=list, metadata={"optional": True})
+    # ROS 1: the namespaces of the handles the code passes to virtual methods it calls
+    # through a base class (a host's ``plugin->initialize(nh, nhp, ...)``), as
+    # ``<method USR>#<index>`` -> the namespaces (``?`` for one not known): a plugin's
+    # call made on such a parameter (``PrimitiveCall.host_handle``) is made there
+    handles_given: dict[str, list[str]] = field(default_factory=dict,
+                                                metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

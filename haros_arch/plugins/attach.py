@@ -294,7 +294,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             if inner_slots and _per_inner(call):
                 each_inner.append(call)
             else:
-                calls.append(_under(call, plugin, choice.conditions, slot.bases,
+                calls.append(_under(_host_handled(call, instance.node), plugin,
+                                    choice.conditions, slot.bases,
                                     slot.inner and not slot.joined))
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
@@ -1466,10 +1467,44 @@ def _under(call: PrimitiveCall, plugin: str, conditions: tuple[Condition, ...],
     if call.loads is not None and given is None and name != call.name and (
             call.name.count(UNKNOWN_MARK) == 1):
         given = plugin  # the class this read loads is given the plugin's name
-    return replace(call, name=name, host_named=None, loads_given=given,
+    return replace(call, name=name, host_named=None, host_handle=None, loads_given=given,
                    handle_namespace=_named(call.handle_namespace, plugin, inner),
                    name_param=_named(call.name_param, plugin, inner),
                    conditions=(*conditions, *call.conditions))
+
+
+def _host_handled(call: PrimitiveCall, host: Node | None) -> PrimitiveCall:
+    """The call of a plugin made on the handle its host's call of an entry method gives
+    it (``host_handle``: ``initialize(ros::NodeHandle nh, ...)``, which the host calls
+    through the base class it loads it by), in the namespace of the handle the host
+    passes there (``Node.handles_given``: ``plugin->initialize(nh_, nhp_)``, ``nh_`` the
+    node's public handle, ``nhp_`` its private one): its ``?`` is that namespace. Kept
+    when the host passes no handle known there, or handles of several namespaces."""
+    if not call.host_handle or host is None or not host.handles_given:
+        return call
+    values = {value for key in call.host_handle.split()
+              for value in host.handles_given.get(key, ())}
+    if len(values) != 1 or call.name.count(UNKNOWN_MARK) < 1 or not (
+            call.name == UNKNOWN_MARK or call.name.startswith(UNKNOWN_MARK + "/")):
+        return call
+    value = values.pop()
+    if UNKNOWN_MARK in value:
+        return call
+
+    def placed(name: str | None) -> str | None:
+        if name is None or not (name == UNKNOWN_MARK or name.startswith(UNKNOWN_MARK + "/")):
+            return name
+        rest = name[len(UNKNOWN_MARK) + 1:]
+        if not rest:
+            return value or None
+        if not value:
+            return rest
+        return value + rest if value == "~" or value.endswith("/") else f"{value}/{rest}"
+
+    name = placed(call.name) or call.name
+    return replace(call, name=name, host_handle=None,
+                   handle_namespace=placed(call.handle_namespace) if (
+                       call.handle_namespace) else call.handle_namespace)
 
 
 def _moved(name: str, namespace: str) -> str:

@@ -288,6 +288,8 @@ class CppResult:
     # in a translation unit's result: (owner of the node, class of the workspace) for each
     # call of a method of the class that hands it a node (``visitor.node_handed``)
     node_handed: list[tuple[str, str]] = field(default_factory=list)
+    # in a node's result: ``Node.handles_given`` (``links.handles_given``)
+    handles_given: dict[str, list[str]] = field(default_factory=dict)
 
 
 @dataclass
@@ -666,6 +668,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     per_site = {owner: next(iter(names)) for owner, names in written.items()
                 if len(names) == 1 and PLACEHOLDER in next(iter(names))
                 and "?" in links.resolve_name(next(iter(names)), known, unseen)}
+    result.handles_given = links.handles_given(known, unseen)
     for unit in units:
         calls, found = links.resolve(unit.calls, known, unseen, per_site, hosting,
                                      _exported_here(units, reaching, entry))
@@ -1471,6 +1474,8 @@ def _result_data(result: CppResult) -> dict[str, Any]:
                          result.loads_in, result.node_handed)
     if result.rosnames:  # a node's
         data["rosnames"] = list(result.rosnames)
+    if result.handles_given:  # a node's
+        data["handles_given"] = {k: list(v) for k, v in result.handles_given.items()}
     return data
 
 
@@ -1487,6 +1492,11 @@ def _result_from_data(data: dict[str, Any]) -> CppResult | None:
     result = CppResult(calls, rosname, found, facts, rosnames, named, made, uses, defines,
                        under, unseen, handed, unseen_in, passed, hidden, registered, loads_in)
     result.node_handed = node_handed
+    given = data.get("handles_given", {})
+    if not isinstance(given, dict) or not all(
+            isinstance(v, list) and all(isinstance(x, str) for x in v) for v in given.values()):
+        return None
+    result.handles_given = {str(k): list(v) for k, v in given.items()}
     return result
 
 

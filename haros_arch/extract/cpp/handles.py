@@ -401,7 +401,8 @@ class Namespaces:
         value, function = found[0]
         if function.kind != CursorKind.CONSTRUCTOR and uses_parameter(value) and (
             self.sites is None or not (self.sites.callers(function)
-                                       or self.sites.called_elsewhere(function))
+                                       or self.sites.called_elsewhere(function)
+                                       or self._host_given(function, value))
         ):
             return _UNSURE
         if len({value_text(v) for v, _ in found}) > 1:
@@ -412,6 +413,15 @@ class Namespaces:
             if len(spaces) > 1 or None in next(iter(spaces)):
                 return _UNSURE
         return value, function
+
+    def _host_given(self, function: Cursor, value: Cursor) -> bool:
+        """Whether a handle a virtual method stores in a member (``nh_ = nh;`` in a
+        plugin base's ``initialize(nh, ...)``) is its parameter's placeholder, filled
+        from the node's calls and, where none passes it, from the host's call of the
+        method (``links.handles_given``, ``PrimitiveCall.host_handle``)."""
+        return self.sites is not None and self.sites.external and (
+            function.kind == CursorKind.CXX_METHOD and function.is_virtual_method()) and (
+            is_handle(value))
 
     def _global_value(self, decl: Cursor) -> Cursor | None:
         """What a global handle holds when the functions of the unit's main file write it

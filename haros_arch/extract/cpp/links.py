@@ -117,6 +117,10 @@ CLASS_BUILT = "class:"
 # USR is the fact's value, which its unit never calls: where no file of the node calls it
 # either, the site passes nothing (``NodeFacts.idle``)
 WITHIN = -18
+# the index of a fact that says the call site (the fact's site) calls the virtual method
+# (the fact's USR) through its class, not naming it (``plugin->initialize(nh, nhp)``):
+# the call may run any override, a plugin's the host loads (``handles_given``)
+VIRTUAL_CALL = -22
 # the index, plus K, of a fact that says the construction (the fact's site) builds the
 # class template whose constructor is the fact's USR with the ROS type (the value) as its
 # K-th template argument: a call whose callback takes that type parameter is typed by it
@@ -124,7 +128,8 @@ WITHIN = -18
 TYPE_ARGUMENT = 1000
 # facts that say no call of their function
 NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
-                       OPAQUE, DEFINED, MEMBER, WITHIN, QUALIFIED, EXPORTED_AT})
+                       OPAQUE, DEFINED, MEMBER, WITHIN, QUALIFIED, EXPORTED_AT,
+                       VIRTUAL_CALL})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 # realsense2_camera's setParam is called with ~30 names in its files, OrbbecSDK_ROS2's
@@ -182,8 +187,9 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
             if exported and (holder := owner_of(caller)) in exported:
                 facts.append((holder, EXPORTED_AT, "", site))
             if callee.kind == CursorKind.CXX_METHOD and callee.is_virtual_method() and (
-                    call.kind == CursorKind.CALL_EXPR and qualified_call(call)):
-                facts.append((usr, QUALIFIED, "", site))
+                    call.kind == CursorKind.CALL_EXPR):
+                facts.append((usr, QUALIFIED if qualified_call(call) else VIRTUAL_CALL,
+                              "", site))
             within = caller.canonical.get_usr() if (
                 caller.kind == CursorKind.CONSTRUCTOR and not sites.callers(caller)) else ""
             if within:
@@ -620,6 +626,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
     unrun = never_run(known, unseen)
     idle = known.idle(unseen, exported_here=exported_here)
     host_called = known.host_callable
+    overridden: dict[tuple[str, int], set[str]] | None = None
     for call in calls:
         if call.called_in is not None and not hosting and unrun(call.called_in):
             continue  # made in a function the node never runs (``never_run``)
@@ -735,6 +742,14 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                 whole) else None
             if made.name == "?" and classes:
                 made = dataclasses.replace(made, host_named=classes)
+            if namespace and (ns == "?" or ns.startswith("?/")) and (
+                    made.name == ns or made.name.startswith(ns + "/")):
+                # the namespace of a plugin's entry handle, which its host's call gives
+                if overridden is None:
+                    overridden = _overridden(known)
+                host = _host_handle(namespace, known, overridden)
+                if host is not None:
+                    made = dataclasses.replace(made, host_handle=host)
             if made.struct_member and made.name.startswith(("?", "~?")):
                 continue  # what was handed is no parameter's value: nothing read
             if node_text is not None:
@@ -1069,6 +1084,84 @@ def resolve_name(name: str, facts: Iterable[Fact] | NodeFacts,
     if len(found) == 1 and PLACEHOLDER not in found[0]:
         return node_name_joined(_unmarked(found[0]))
     return choose(_MARK.sub("?", name))
+
+
+def handles_given(facts: NodeFacts, unseen: Collection[str] = ("*",),
+                  ) -> dict[str, list[str]]:
+    """``Node.handles_given``: what the node's code passes at each parameter of a virtual
+    method it calls through its class (``VIRTUAL_CALL``: a host's ``plugin->initialize(
+    nh_, nhp_, ...)``), as ``<method USR>#<index>`` -> the values, filled from the node's
+    files as a call's namespace is (``?`` where they give none: a member of a class no
+    file builds). Strings come along too; a plugin reads only a handle's
+    (``PrimitiveCall.host_handle``)."""
+    virtual = {(usr, site) for usr, index, _value, site in facts.facts
+               if index == VIRTUAL_CALL}
+    if not virtual:
+        return {}
+    unbuilt = constructor_unbuilt(facts, unseen)
+    unrun = never_run(facts, unseen)
+    out: dict[str, list[str]] = {}
+    for usr, index, value, site in facts.facts:
+        if index < 0 or index >= TYPE_ARGUMENT or (usr, site) not in virtual:
+            continue
+        text = _JOINED.sub(_join_mark, value) + _SPLIT
+        for filled in _expand(text, facts.passed, 0, unbuilt, unrun):
+            namespace = _plain(filled.partition(_SPLIT)[0])
+            namespace = normalise(_unmarked(_rejoined(namespace))) if namespace else ""
+            if PLACEHOLDER in namespace:
+                namespace = "?"
+            values = out.setdefault(f"{usr}#{index}", [])
+            if namespace not in values:
+                values.append(namespace)
+    return out
+
+
+def _overridden(facts: NodeFacts) -> dict[tuple[str, int], set[str]]:
+    """(virtual method USR, handle parameter's index) -> the USRs of the methods it
+    overrides, directly or through others (``OVERRIDES``)."""
+    direct: dict[tuple[str, int], set[str]] = {}
+    for usr, index, base, parameter in facts.facts:
+        if index == OVERRIDES and base and parameter.isdigit():
+            direct.setdefault((usr, int(parameter)), set()).add(base)
+    out: dict[tuple[str, int], set[str]] = {}
+    for key in direct:
+        found: set[str] = set()
+        todo = list(direct[key])
+        while todo:
+            base = todo.pop()
+            if base not in found:
+                found.add(base)
+                todo.extend(direct.get((base, key[1]), ()))
+        out[key] = found
+    return out
+
+
+def _host_handle(namespace: str, facts: NodeFacts,
+                 overridden: dict[tuple[str, int], set[str]]) -> str | None:
+    """``PrimitiveCall.host_handle`` of a call whose handle namespace, as written
+    (``namespace``), begins with a function's handle parameter: followed through the
+    sites that pass each such parameter on, the one parameter of an override that no
+    file of the node passes (a plugin's ``initialize(nh, ...)``, which its host calls
+    through a base class), as ``<base USR>#<index>`` of each method it overrides; None
+    when any site passes something else, or the chain ends elsewhere."""
+    match = _MARK.match(_plain(namespace))
+    seen: set[tuple[str, int]] = set()
+    while match is not None:
+        key = (match.group(1), int(match.group(2)))
+        if key in seen or len(seen) > MAX_DEPTH:
+            return None
+        seen.add(key)
+        values = {values[key[1]] for values in facts.passed.get(key[0], {}).values()
+                  if key[1] in values}
+        if not values:
+            # the method itself too: a host calling it through its own class (a base's
+            # ``initialize`` the plugin does not override)
+            bases = overridden.get(key, set()) | {key[0]}
+            return " ".join(sorted(f"{base}#{key[1]}" for base in bases))
+        if len(values) != 1:
+            return None
+        match = _MARK.match(_plain(values.pop()))
+    return None
 
 
 def qualified_class(usr: str) -> str:
