@@ -102,6 +102,23 @@ NODE = """
         ros::Publisher pub = nh.advertise<std_msgs::String>(topic, 1);
       }
       {
+        std::string topic;  // a case that may leave before its write
+        switch (mode) {
+          case 1: if (given.empty()) break; topic = "maybe"; break;
+          default: topic = "other"; break;
+        }
+        ros::Publisher pub = nh.advertise<std_msgs::String>(topic, 1);
+      }
+      {
+        std::string topic;  // cases in blocks of their own
+        switch (mode) {
+          case 1: { topic = "braced/one"; break; }
+          case 2: { topic = "braced/two"; } break;
+          default: { throw std::runtime_error("mode"); }
+        }
+        ros::Subscriber sub = nh.subscribe(topic, 1, &callback);
+      }
+      {
         std::string topic;
         switch (mode) {
           case 1: topic = "uno"; break;
@@ -129,10 +146,13 @@ def test_each_written_value_is_a_call_under_its_branch(write_tree):
         ("publish", "?", ()),
         ("publish", "?", ()),
         ("publish", "?", ()),
+        ("publish", "?", ()),
         ("publish", "high", (("else", "mode == 1"), ("if", "mode == 2"))),
         ("publish", "low", (("if", "mode == 1"),)),
         ("publish", "off", (("else", "mode == 1"), ("else", "mode == 2"))),
         ("subscribe", "?", ()),
+        ("subscribe", "braced/one", (("switch", "mode == 1"),)),
+        ("subscribe", "braced/two", (("switch", "mode == 2"),)),
         ("subscribe", "left/cmd", (("switch", "pick_side() == LEFT"),)),
         ("subscribe", "otro", (("switch", "mode != 1"),)),
         ("subscribe", "right/cmd", (("switch", "pick_side() == RIGHT"),)),

@@ -2162,6 +2162,8 @@ def _block_writes(statements: list[Cursor], placed: list[tuple[int, Cursor | Non
             continue
         if kind == CursorKind.BREAK_STMT and in_case:
             return current
+        if in_case and _breaks_within(statement):
+            return None  # ``if (c) break;``: a path out of the case before its writes
         if kind in (CursorKind.IF_STMT, CursorKind.SWITCH_STMT) and _inside(statement, placed):
             current = _path_writes(statement, placed)
             if current is None or current is _LEAVES:
@@ -2222,11 +2224,39 @@ def _switch_writes(switch: Cursor, placed: list[tuple[int, Cursor | None]]) -> _
             return None
         if ends is _LEAVES:
             continue
-        stops = any(s.kind == CursorKind.BREAK_STMT for s in group)
-        if not stops and index < len(groups) - 1:
+        if not _stops(group) and index < len(groups) - 1:
             return None  # falls into the next case
         out.extend(ends)
     return out or _LEAVES
+
+
+def _stops(group: list[Cursor]) -> bool:
+    """Whether the statements of a case end it with a ``break`` (``case 1: { ...;
+    break; }`` too)."""
+    if any(s.kind == CursorKind.BREAK_STMT for s in group):
+        return True
+    return bool(group) and group[-1].kind == CursorKind.COMPOUND_STMT and _stops(
+        list(group[-1].get_children()))
+
+
+def _breaks_within(statement: Cursor) -> bool:
+    """Whether a ``break`` inside ``statement`` (not a block of its own) may leave the
+    ``switch`` around it: one not in a loop or ``switch`` of its own."""
+    if statement.kind == CursorKind.COMPOUND_STMT:
+        return False  # (read statement by statement)
+    stack = list(statement.get_children())
+    while stack:
+        node = stack.pop()
+        if node.kind == CursorKind.BREAK_STMT:
+            return True
+        if node.kind not in _LOOPS_AND_SWITCH:
+            stack.extend(node.get_children())
+    return False
+
+
+_LOOPS_AND_SWITCH = frozenset({CursorKind.FOR_STMT, CursorKind.CXX_FOR_RANGE_STMT,
+                               CursorKind.WHILE_STMT, CursorKind.DO_STMT,
+                               CursorKind.SWITCH_STMT, CursorKind.LAMBDA_EXPR})
 
 
 def _every_enumerator(value: Cursor, labels: list[Cursor]) -> bool:
