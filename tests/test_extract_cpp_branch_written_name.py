@@ -5,9 +5,13 @@ or a side that writes a value not known, keeps the name ``?``."""
 
 from __future__ import annotations
 
+import os
+
 from conftest import package_xml
 
 from haros_arch.extract.cpp import extract_cpp
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
 from haros_arch.workspace import scan
 
 NODE = """
@@ -158,3 +162,65 @@ def test_each_written_value_is_a_call_under_its_branch(write_tree):
         ("subscribe", "right/cmd", (("switch", "pick_side() == RIGHT"),)),
         ("subscribe", "uno", (("switch", "mode == 1"),)),
     ]
+
+
+GRAPH_NODE = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <std_msgs/msg/string.hpp>
+
+    class Camera : public rclcpp::Node {
+     public:
+      Camera() : Node("camera") {
+        int mode = declare_parameter("mode", 1);
+        std::string topic;
+        switch (mode) {
+          case 1: topic = "image/low"; break;
+          case 2: topic = "image/high"; break;
+          default: topic = "image/off"; break;
+        }
+        pub_ = create_publisher<std_msgs::msg::String>(topic, 10);
+      }
+     private:
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+    };
+
+    int main(int argc, char ** argv) {
+      rclcpp::init(argc, argv);
+      rclcpp::spin(std::make_shared<Camera>());
+    }
+    """
+
+GRAPH_LAUNCH = """
+    <launch>
+      <node pkg="cam" exec="camera" name="plain"/>
+      <node pkg="cam" exec="camera" name="high">
+        <param name="mode" value="2"/>
+      </node>
+    </launch>
+    """
+
+
+def test_the_graph_decides_the_case_per_instance(write_tree):
+    """A switch over a parameter: each instance publishes the one name its value
+    chooses (the default 1 for ``plain``, the launch file's 2 for ``high``)."""
+    root = write_tree({
+        "src/cam/package.xml": package_xml("cam", "ament_cmake"),
+        "src/cam/CMakeLists.txt": ("cmake_minimum_required(VERSION 3.8)\nproject(cam)\n"
+                                   "add_executable(camera src/camera.cpp)\n"
+                                   "install(TARGETS camera DESTINATION lib/${PROJECT_NAME})\n"),
+        "src/cam/src/camera.cpp": GRAPH_NODE,
+        "src/cam/launch/two.launch.xml": GRAPH_LAUNCH,
+        "project.yaml": "project: p\ndistro: jazzy\nconfigurations:\n"
+                        "  c: [cam/launch/two.launch.xml]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")),
+                    {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
+    config = model.configuration("c")
+
+    def published(node: str) -> set[str]:
+        return {link.rosname.full for link in config.links
+                if link.node.name == node and link.kind == "publish"
+                and link.rosname.full.startswith("/image")}
+
+    assert published("/plain") == {"/image/low"}
+    assert published("/high") == {"/image/high"}
