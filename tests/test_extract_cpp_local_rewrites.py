@@ -62,9 +62,11 @@ def test_a_local_written_again_is_read_as_last_written(tmp_path) -> None:
     assert [(c.name, c.location.line) for c in result.calls if c.kind == "publish"] == [
         # zed_wrapper's pattern: one local for every service name, in turn
         ("~status", 11), ("~pose", 13),
-        # either branch may have run, the loop's next turn sees "after", the lambda
-        # runs after "late": not known
-        ("?", 17), ("?", 20), ("?", 24),
+        # either side may have run, and each writes it: one call per side (each
+        # under its side's condition: test_extract_cpp_branch_written_name.py)
+        ("then", 17), ("else", 17),
+        # the loop's next turn sees "after", the lambda runs after "late": not known
+        ("?", 20), ("?", 24),
         # += appends (it was read as "grown" before)
         ("grown/more", 29),
         ("again", 31),

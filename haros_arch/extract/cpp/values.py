@@ -936,6 +936,51 @@ class Scope:
             return None  # a loop or a branch inside the side: not its one value
         return values[0], values[1], branch, side_of == children[1]
 
+    def branch_written(self, cursor: Cursor
+                       ) -> tuple[Cursor, list[tuple[int, Cursor]]] | None:
+        """The values a local variable may hold where ``cursor`` reads it when the
+        writes that reach the read are one in each case of a ``switch`` (or each side
+        of an ``if`` / ``else if`` / ``else`` chain) that runs before the read, every
+        path through it writing the variable or leaving the function
+        (ariac2021ws's ``switch (agv_id) { case AgvId::agv1: service_id = ...; break;
+        ... case AgvId::any: throw ...; }``, then ``ros::service::call(service_id,
+        msg)``): that statement, and each write's offset with the value it writes.
+        None when a path leaves the variable as it was (an ``if`` without ``else``, a
+        ``switch`` without ``default`` over a value that is not an enumeration whose
+        every enumerator is a label), a write is not so placed (in a loop, after
+        the statement, a reference handed to a call), or there are more than
+        ``MAX_BRANCH_VALUES``."""
+        cursor = strip(cursor)
+        decl = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.VAR_DECL or self.is_parameter(decl):
+            return None
+        found = self._reaching(decl, cursor)
+        if found is None or self.body is None:
+            return None
+        before, where = found
+        last = max(before, key=lambda write: write[1])
+        around = [node for node in _walk(self.body)
+                  if node.kind in (CursorKind.IF_STMT, CursorKind.SWITCH_STMT)
+                  and node.extent.start.offset <= last[0]
+                  and last[1] <= node.extent.end.offset
+                  and not node.extent.start.offset <= where <= node.extent.end.offset]
+        if not around:
+            return None
+        statement = min(around, key=lambda node: node.extent.start.offset)
+        low, high = statement.extent.start.offset, statement.extent.end.offset
+        if self._may_skip(low, where):
+            return None  # in a branch, loop or lambda the read is outside of
+        placed = [(start, value) for start, end, value in before if start >= low]
+        if any(start > high for start, _value in placed):
+            return None  # written again after it
+        ends = _path_writes(statement, placed)
+        if ends is None or ends is _LEAVES or not 2 <= len(ends) <= MAX_BRANCH_VALUES:
+            return None
+        assert isinstance(ends, list)
+        if sorted(ends, key=lambda w: w[0]) != sorted(placed, key=lambda w: w[0]):
+            return None  # a write the paths do not account for
+        return statement, ends
+
     def _may_skip(self, offset: int, where: int) -> bool:
         """Whether what starts at ``offset`` may not run before a read at ``where``: it
         is in a branch, loop or lambda that the read is outside of."""
@@ -2070,6 +2115,166 @@ def _from_end(index: Cursor, argc: Cursor, main: Cursor, read: Cursor,
     init = ros_init(main)
     return -less if init is not None and init.extent.end.offset < read.extent.start.offset \
         else None
+
+
+MAX_BRANCH_VALUES = 16  # values a local written in each case of a switch may hold
+_LEAVES: list[tuple[int, Cursor]] = []  # a path that leaves the function (``_path_writes``)
+_Ends = list[tuple[int, Cursor]] | None
+
+
+def _path_writes(statement: Cursor, placed: list[tuple[int, Cursor | None]]) -> _Ends:
+    """The writes of a variable (``placed``: each one's offset and value) that end the
+    paths through ``statement`` which go on after it, one per path, when every such
+    path writes it last with a known value; ``_LEAVES`` when every path leaves the
+    function (``return``, ``throw``); None when a path leaves it unwritten, or a write
+    is not plainly one statement of a block, a side or a case."""
+    kind = statement.kind
+    if kind == CursorKind.IF_STMT:
+        children = list(statement.get_children())
+        if len(children) != 3 or children[0].kind == CursorKind.DECL_STMT:
+            return None  # no ``else``, or ``if (init; test)``
+        sides = [_path_writes(side, placed) for side in children[1:]]
+        if any(side is None for side in sides):
+            return None
+        going = [side for side in sides if side is not _LEAVES]
+        return [w for side in going for w in side or ()] if going else _LEAVES
+    if kind == CursorKind.SWITCH_STMT:
+        return _switch_writes(statement, placed)
+    return _block_writes([statement], placed, False)
+
+
+def _block_writes(statements: list[Cursor], placed: list[tuple[int, Cursor | None]],
+                  in_case: bool) -> _Ends:
+    """``_path_writes`` of statements run in order (a block; a case of a switch up to
+    its ``break`` when ``in_case``)."""
+    current: _Ends = None
+    for statement in statements:
+        kind = statement.kind
+        if kind == CursorKind.COMPOUND_STMT:
+            statement_ends = _block_writes(list(statement.get_children()), placed, in_case)
+            if statement_ends is not None:
+                current = statement_ends
+                if current is _LEAVES:
+                    return current
+                continue
+            if _inside(statement, placed):
+                return None
+            continue
+        if kind == CursorKind.BREAK_STMT and in_case:
+            return current
+        if in_case and _breaks_within(statement):
+            return None  # ``if (c) break;``: a path out of the case before its writes
+        if kind in (CursorKind.IF_STMT, CursorKind.SWITCH_STMT) and _inside(statement, placed):
+            current = _path_writes(statement, placed)
+            if current is None or current is _LEAVES:
+                return current
+            continue
+        if _leaves(statement):
+            return _LEAVES
+        inside = _inside(statement, placed)
+        if not inside:
+            continue
+        value = inside[0][1] if len(inside) == 1 else None
+        if value is None or not (kind.is_expression() or kind == CursorKind.UNEXPOSED_EXPR):
+            return None
+        current = [(inside[0][0], value)]
+    return current
+
+
+def _inside(statement: Cursor, placed: list[tuple[int, Cursor | None]]
+            ) -> list[tuple[int, Cursor | None]]:
+    low, high = statement.extent.start.offset, statement.extent.end.offset
+    return [write for write in placed if low <= write[0] <= high]
+
+
+def _switch_writes(switch: Cursor, placed: list[tuple[int, Cursor | None]]) -> _Ends:
+    """``_path_writes`` of a ``switch``: each case's statements up to its ``break``
+    (a case that falls into the next one: None); complete with a ``default`` label or
+    when its value is an enumeration whose every enumerator is a label."""
+    children = list(switch.get_children())
+    if len(children) < 2 or children[-1].kind != CursorKind.COMPOUND_STMT:
+        return None
+    groups: list[list[Cursor]] = []
+    labels: list[Cursor] = []
+    default = False
+    for statement in children[-1].get_children():
+        if statement.kind not in (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT):
+            if not groups:
+                return None  # a statement before the first label
+            groups[-1].append(statement)
+            continue
+        groups.append([])
+        while statement.kind in (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT):
+            inner = list(statement.get_children())
+            if statement.kind == CursorKind.DEFAULT_STMT:
+                default = True
+            elif inner:
+                labels.append(inner[0])
+            if not inner:
+                break
+            statement = inner[-1]
+        if statement.kind not in (CursorKind.CASE_STMT, CursorKind.DEFAULT_STMT):
+            groups[-1].append(statement)
+    if not default and not _every_enumerator(children[-2], labels):
+        return None
+    out: list[tuple[int, Cursor]] = []
+    for index, group in enumerate(groups):
+        ends = _block_writes(group, placed, True)
+        if ends is None:
+            return None
+        if ends is _LEAVES:
+            continue
+        if not _stops(group) and index < len(groups) - 1:
+            return None  # falls into the next case
+        out.extend(ends)
+    return out or _LEAVES
+
+
+def _stops(group: list[Cursor]) -> bool:
+    """Whether the statements of a case end it with a ``break`` (``case 1: { ...;
+    break; }`` too)."""
+    if any(s.kind == CursorKind.BREAK_STMT for s in group):
+        return True
+    return bool(group) and group[-1].kind == CursorKind.COMPOUND_STMT and _stops(
+        list(group[-1].get_children()))
+
+
+def _breaks_within(statement: Cursor) -> bool:
+    """Whether a ``break`` inside ``statement`` (not a block of its own) may leave the
+    ``switch`` around it: one not in a loop or ``switch`` of its own."""
+    if statement.kind == CursorKind.COMPOUND_STMT:
+        return False  # (read statement by statement)
+    stack = list(statement.get_children())
+    while stack:
+        node = stack.pop()
+        if node.kind == CursorKind.BREAK_STMT:
+            return True
+        if node.kind not in _LOOPS_AND_SWITCH:
+            stack.extend(node.get_children())
+    return False
+
+
+_LOOPS_AND_SWITCH = frozenset({CursorKind.FOR_STMT, CursorKind.CXX_FOR_RANGE_STMT,
+                               CursorKind.WHILE_STMT, CursorKind.DO_STMT,
+                               CursorKind.SWITCH_STMT, CursorKind.LAMBDA_EXPR})
+
+
+def _every_enumerator(value: Cursor, labels: list[Cursor]) -> bool:
+    """Whether the switch's value ``value`` is of an enumeration each of whose
+    enumerators is one of ``labels``."""
+    declared = strip(value).type.get_canonical().get_declaration()
+    if declared is None or declared.kind != CursorKind.ENUM_DECL:
+        return False
+    enumerators = {c.enum_value for c in declared.get_children()
+                   if c.kind == CursorKind.ENUM_CONSTANT_DECL}
+    named = set()
+    for label in labels:
+        node = strip(label)
+        target = node.referenced if node.kind == CursorKind.DECL_REF_EXPR else None
+        if target is None or target.kind != CursorKind.ENUM_CONSTANT_DECL:
+            return False
+        named.add(target.enum_value)
+    return bool(enumerators) and enumerators <= named
 
 
 def _leaves(statement: Cursor) -> bool:

@@ -227,16 +227,18 @@ def _held_classes(ctype: Type) -> list[str]:
 
 
 class ChoiceName(str):
-    """One of the values a call's name may hold (``Scope.written_choices``): the call
-    with it is made under ``condition`` (a side of the ``if`` that decides it), and it is
-    a key ``searchParam`` found when ``searched``."""
+    """One of the values a call's name may hold (``Scope.written_choices``,
+    ``Scope.branch_written``): the call with it is made under ``conditions`` (the sides
+    of the ``if`` statements, the case of the ``switch``, that decide it), and it is a
+    key ``searchParam`` found when ``searched``."""
 
-    condition: Condition
+    conditions: tuple[Condition, ...]
     searched: bool
 
-    def __new__(cls, name: str, condition: Condition, searched: bool) -> ChoiceName:
+    def __new__(cls, name: str, conditions: tuple[Condition, ...], searched: bool
+                ) -> ChoiceName:
         made = super().__new__(cls, name)
-        made.condition, made.searched = condition, searched
+        made.conditions, made.searched = conditions, searched
         return made
 
 
@@ -2496,7 +2498,7 @@ class CallFinder:
             self.calls.append(PrimitiveCall(
                 kind=spec.kind, name=name, type=ctype, queue_size=queue, qos=qos,
                 latch=latch, callback=callback_name(function),
-                conditions=(*conditions, written.condition) if isinstance(
+                conditions=(*conditions, *written.conditions) if isinstance(
                     written, ChoiceName) else conditions,
                 location=location,
                 name_param=source[0] if source else None,
@@ -2801,17 +2803,60 @@ class CallFinder:
         # (costmap_2d's searched key, or the fallback if the search finds nothing)
         choices = scope.written_choices(expr)
         if choices is None:
-            return [named]
+            return self._branch_names(expr, scope) or [named]
         first, side, branch, in_then = choices
         tested = next(iter(branch.get_children()))
         out: list[tuple[str, NameSource | None]] = []
         for parts, statement in ((first, "else" if in_then else "if"),
                                  (side, "if" if in_then else "else")):
             parts = own_name(parts)
-            out.append((ChoiceName(render(parts), self.reader.choice(
-                branch, statement, tested), len(parts) == 1 and isinstance(
+            out.append((ChoiceName(render(parts), (self.reader.choice(
+                branch, statement, tested),), len(parts) == 1 and isinstance(
                     parts[0], SearchedName)), None))
         return out
+
+    def _branch_names(self, expr: Cursor, scope: Scope
+                      ) -> list[tuple[str, NameSource | None]] | None:
+        """A local name written with a known text in each case of a ``switch`` (each
+        side of an ``if`` / ``else`` chain) before the call (``Scope.branch_written``):
+        one name per write, under the conditions the walk gives that write's statement
+        inside the ``switch`` or ``if`` (ariac2021ws's service chosen by the AGV: four
+        clients, each under its ``case``, where the name was ``?``). None when not so
+        written, or a value is not known in full."""
+        found = scope.branch_written(expr)
+        if found is None:
+            return None
+        statement, writes = found
+        names: list[tuple[str, tuple[Condition, ...]]] = []
+        for offset, value in writes:
+            parts = own_name(scope.string(value))
+            if None in parts:
+                return None
+            conditions = self._conditions_inside(statement, offset)
+            if conditions is None:
+                return None
+            names.append((render(parts), conditions))
+        if len({name for name, _ in names}) == 1:
+            return [(names[0][0], None)]  # the same text whichever runs
+        return [(ChoiceName(name, conditions, False), None) for name, conditions in names]
+
+    def _conditions_inside(self, statement: Cursor, offset: int
+                       ) -> tuple[Condition, ...] | None:
+        """The conditions the walk gives what starts at ``offset`` inside the control
+        statement ``statement``, relative to it (``ConditionReader.branches``)."""
+        out: tuple[Condition, ...] = ()
+        node = statement
+        for _depth in range(MAX_DEPTH):
+            if node.extent.start.offset == offset and node is not statement:
+                return out
+            below = self.reader.below(node, ())
+            inside = [(child, extra) for child, extra in below
+                      if child.extent.start.offset <= offset <= child.extent.end.offset]
+            if not inside:
+                return None
+            node, extra = inside[-1]  # (``below`` gives them last first)
+            out += extra
+        return None
 
     def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
