@@ -118,15 +118,25 @@ def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return ReadOnlyFile(a[0])
 
 
-def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``yaml.safe_load(f)`` on a file we may read, with the safe loader (bounded)."""
+def _loaded_text(i: Interpreter, a: Args, n: ast.AST, kind: str) -> str | Unknown:
+    """The text a loader's first argument gives: a file we may read (``open(...)``) or
+    a text known here; else why it is not known (a file ``read`` could not read was
+    said there, not again)."""
     source = a[0] if a else None
     text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
         source if isinstance(source, str) else None)
-    if text is None and isinstance(source, ReadOnlyFile):  # said by read(): not again
+    if text is None and isinstance(source, ReadOnlyFile):
         return Unknown(f"{source.path} not read", "unsupported", where=i.where(n))
     if text is None:
-        return Unknown("YAML not known statically")
+        return Unknown(f"{kind} not known statically")
+    return text
+
+
+def safe_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``yaml.safe_load(f)`` on a file we may read, with the safe loader (bounded)."""
+    text = _loaded_text(i, a, n, "YAML")
+    if isinstance(text, Unknown):
+        return text
     try:
         return safe_yaml.load(text)
     except yaml.YAMLError as err:
@@ -141,13 +151,9 @@ def json_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if k:
         return i.unsupported(n, f"{_source(n)}: json.load with keyword arguments is not "
                                 "interpreted")
-    source = a[0] if a else None
-    text = i.read(source.path, n) if isinstance(source, ReadOnlyFile) else (
-        source if isinstance(source, str) else None)
-    if text is None and isinstance(source, ReadOnlyFile):  # said by read(): not again
-        return Unknown(f"{source.path} not read", "unsupported", where=i.where(n))
-    if text is None:
-        return Unknown("JSON not known statically")
+    text = _loaded_text(i, a, n, "JSON")
+    if isinstance(text, Unknown):
+        return text
     try:
         return json.loads(text)
     except (ValueError, RecursionError) as err:
