@@ -557,17 +557,19 @@ def _dynparam(decl: NodeDecl, words: list[str]) -> Node | None:
     return node
 
 
+def _qos_options(values: dict[str, str]) -> dict[str, Any] | None:
+    """The QoS a ros2topic verb's ``--qos-*`` options say (None when they say nothing)."""
+    return {key: int(values[option]) if values[option].isdigit()
+            else values[option].replace("-", "_")
+            for option, key in ROS2_QOS.items() if option in values} or None
+
+
 def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:
     positional, values, _flags = split_options(words[1:], ROS2_VALUE_OPTIONS)
     if not positional:
         return None
-    qos: dict[str, Any] = {}
-    for option, key in ROS2_QOS.items():
-        if option in values:
-            value = values[option]
-            qos[key] = int(value) if value.isdigit() else value.replace("-", "_")
     type_ = positional[1] if len(positional) > 1 else None
-    call = PrimitiveCall("publish", positional[0], type_, qos=qos or None,
+    call = PrimitiveCall("publish", positional[0], type_, qos=_qos_options(values),
                          location=decl.location,
                          origin="arguments")
     return _node(decl, decl.package or "ros2topic", call, "python")
@@ -600,12 +602,8 @@ def _ros2_topic_watch(decl: NodeDecl, verb: str, words: list[str]) -> Node | Non
     if not positional or (most is not None and len(positional) > most):
         return None
     if verb == "echo":
-        qos: dict[str, Any] | None = {
-            key: int(values[option]) if values[option].isdigit()
-            else values[option].replace("-", "_")
-            for option, key in ROS2_QOS.items() if option in values} or None
         type_ = positional[1] if len(positional) > 1 else None
-        calls = [PrimitiveCall("subscribe", positional[0], type_, qos=qos,
+        calls = [PrimitiveCall("subscribe", positional[0], type_, qos=_qos_options(values),
                                location=decl.location, origin="arguments")]
     else:
         calls = [PrimitiveCall("subscribe", topic, None,
