@@ -126,9 +126,9 @@ def test_rospy_services_and_parameters(ros1) -> None:
         ("read", "~debug", None, None, False, None, 42, ()),
         ("write", "~debug", None, None, False, None, 43,
          (("if", "rospy.has_param('~debug')"),)),
-        ("read", "frame_id", None, None, False, None, 44, ()),
+        ("read", "~frame_id", None, None, False, None, 44, ()),
         # get_param(found), found = search_param('frame_id'): the parameter it found
-        ("read", "frame_id", None, None, False, None, 45, ()),
+        ("read", "~frame_id", None, None, False, None, 45, ()),
     ]
     assert [c.searched for c in result.calls[-2:]] == [True, True]
 

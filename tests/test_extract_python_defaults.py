@@ -19,7 +19,8 @@ def test_defaults_and_searches(tmp_path):
     result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
     got = [(c.name, c.has_default, c.default, c.searched) for c in result.calls]
     assert got == [("~a", True, 0.5, False), ("b", False, None, False),
-                   ("global_example", False, None, True), ("~d", True, [1, 2], False),
+                   # rospy's search starts at the node's own name
+                   ("~global_example", False, None, True), ("~d", True, [1, 2], False),
                    ("~e", True, None, False)]
 
 

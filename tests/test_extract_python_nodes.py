@@ -219,5 +219,5 @@ def test_a_read_of_the_name_search_param_found_is_a_searched_read(tmp_path) -> N
                  "if found:\n"
                  "    prefix = rospy.get_param(found, '')\n")
     assert [(c.kind, c.name, c.searched, c.type, c.location.line) for c in result.calls] == [
-        ("read", "tf_prefix", True, None, 3), ("read", "tf_prefix", True, "str", 5)]
+        ("read", "~tf_prefix", True, None, 3), ("read", "~tf_prefix", True, "str", 5)]
     assert "PY_DYNAMIC_NAME" not in [d.code for d in result.diagnostics]

@@ -195,6 +195,27 @@ def test_a_key_searched_on_a_namespaced_handle_is_searched_from_that_namespace()
         "/foo/arm/missing", "/robot_description"]
 
 
+def test_a_private_key_is_searched_from_the_node_s_own_namespace_up():
+    # roscpp's NodeHandle("~").searchParam and ros::param::search(key, ..), rospy's
+    # search_param: the master searches from the node's own name up (paramserver.py's
+    # search_param tests ns + key first), so /foo/r/tf_prefix, set inside the node's
+    # <node> tag, is found before /foo/tf_prefix; it was searched from /foo up, and the
+    # node's own parameter was "set but not read"
+    reader = node("p", "r", call("read", "~tf_prefix"), call("read", "~frame"),
+                  call("read", "~missing"))
+    for read in reader.calls:
+        read.searched, read.handle_namespace = True, "~"
+    config = graph([NodeDecl("/foo/r", "p", "r", "/foo/")], params=[
+        ParamDecl("/foo/r/tf_prefix", "robot1", "str"),
+        ParamDecl("/foo/tf_prefix", "other", "str"),
+        ParamDecl("/frame", "map", "str")], nodes=[reader])
+    # found in the node's namespace, and at the root; the missing one stays private
+    assert sorted(link.name for link in config.links) == [
+        "/foo/r/missing", "/foo/r/tf_prefix", "/frame"]
+    assert config.parameter("/foo/r/tf_prefix").is_read
+    assert not config.parameter("/foo/tf_prefix").is_read
+
+
 def test_actions_are_also_their_topics_and_services():
     server = node("p", "server", call("action-server", "fib", "tut/Fibonacci"))
     client = node("p", "client", call("action-client", "/fib", "tut/Fibonacci"))

@@ -78,8 +78,10 @@ def test_catalogue_on_parameter_server_semantics(write_tree):
         '/foo/talker: no read /foo/talker/optional_b in this configuration: the code makes '
         'it under if (rospy.has_param("~optional")) (pkg/scripts/talker.py:17), which does '
         'not hold here']
-    # the search for legacy does not stop at /legacy, which is only deleted
-    assert [r.node.name for r in config.parameter("/foo/legacy").readers] == ["/foo/talker"]
+    # the search for legacy does not stop at /legacy, which is only deleted; it stays
+    # where rospy's search starts, the node's own namespace
+    assert [r.node.name for r in config.parameter("/foo/talker/legacy").readers] == [
+        "/foo/talker"]
     assert config.parameter("/legacy").readers == []
     # gains/P and gains/I are read as the gains namespace; robot_model is found by search
     assert "parameter-set-not-read" not in by_rule

@@ -1643,7 +1643,8 @@ def _element_name(item: Any, field: str) -> str | None:
 def _search(name: RosName, instance: NodeInstance, resources: Resources,
             handle: str | None = None) -> RosName:
     """searchParam: the closest set parameter from the node's namespace up to the root,
-    else the name in the node's own namespace. A ROS 1 key given on a handle with a
+    else the name in the node's own namespace; a private key (``~x``) from the node's
+    own name up, else its private name. A ROS 1 key given on a handle with a
     namespace (``handle``) is searched for from that handle's namespace, as roscpp's
     ``NodeHandle::searchParam`` does (gazebo_ros_control's ``model_nh_`` in
     ``<robotNamespace>``)."""
@@ -1659,6 +1660,11 @@ def _search(name: RosName, instance: NodeInstance, resources: Resources,
         namespace = name.full[:-len(key) - 1]
     elif name.is_global:
         return name
+    elif name.given.startswith("~"):
+        # a private key (NodeHandle("~").searchParam, ros::param::search(key, ..),
+        # rospy.search_param): the master searches from the node's own name up, its
+        # private namespace first (rosmaster's ParamDictionary.search_param)
+        namespace = instance.name.rstrip("/")
     levels = []
     while True:
         levels.append(f"{namespace}/{key}")

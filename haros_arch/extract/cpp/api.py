@@ -141,6 +141,10 @@ class RosFunction:
     # written before the name argument: a costmap layer's ``declareParameter(name, v)``
     # declares ``<the layer's name>.name``, the layer's name given at run time (``?.``)
     name_prefix: str | None = None
+    # roscpp's ros::param::search(key, result) searches from the node's own name
+    # (this_node::getName()) up: a relative key given so is first the node's private
+    # one (``~key``); its three-argument form names the namespace to start from
+    search_from_node: bool = False
     # the row describes our stand-in (of ``standin/fallback`` or ``standin/``: a library
     # installed, not in the workspace): a class of that name declared elsewhere makes no
     # such call (ROS 1 ros_control's ControllerManager: with controller_manager's sources
@@ -220,7 +224,8 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
         "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2,
         on_handle=False),
     ("ros::param", "has"): RosFunction("read", on_handle=False, presence=True),
-    ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True),
+    ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True,
+                                          search_from_node=True),
     ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1, on_handle=False),
     ("ros::param", "del"): RosFunction("write", on_handle=False, deletes=True),
 }

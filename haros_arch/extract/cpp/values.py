@@ -41,7 +41,15 @@ from .expressions import (
 from .getopt import option_held
 from .reach import FUNCTIONS
 from .synthesis import ANY
-from .writes import Write, by_operator, const_array, emptied, searched_key, writes_of
+from .writes import (
+    Write,
+    by_operator,
+    const_array,
+    emptied,
+    searched_from_node,
+    searched_key,
+    writes_of,
+)
 
 if TYPE_CHECKING:
     from .call_sites import CallSites
@@ -1490,8 +1498,12 @@ class Scope:
         key = searched_key(call)
         if key is not None:  # the name it found (a write of its result: ``writes``)
             text = self.string(key, depth + 1)
-            return (SearchedName(text[0]),) if len(text) == 1 and (
-                type(text[0]) is str and text[0]) else UNKNOWN
+            if len(text) != 1 or type(text[0]) is not str or not text[0]:
+                return UNKNOWN
+            key_text = text[0]
+            if searched_from_node(call) and not key_text.startswith(("/", "~")):
+                key_text = "~" + key_text  # from the node's private namespace up
+            return (SearchedName(key_text),)
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self._appended(args[1], depth)

@@ -2326,6 +2326,9 @@ class CallFinder:
             elsewhere = list(sites.elsewhere) if sites is not None else []
             if spec.name_prefix is not None:
                 names = [(spec.name_prefix + name, source) for name, source in names]
+            if spec.search_from_node and len(args) == 2:
+                names = [(name if not name or name.startswith(("/", "~", UNKNOWN_MARK))
+                          else "~" + name, source) for name, source in names]
             if spec.empty_is_none:
                 names = [(name, source) for name, source in names if name]
                 if not names:

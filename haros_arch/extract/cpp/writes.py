@@ -245,6 +245,16 @@ def emptied(call: Cursor) -> bool:
 _SEARCHES = {("ros::NodeHandle", "searchParam"): 2, ("ros::param", "search"): 2}
 
 
+def searched_from_node(call: Cursor) -> bool:
+    """Whether a search ``searched_key`` names starts at the node's own name:
+    ``ros::param::search(key, result)`` asks the master from this_node::getName() up,
+    the node's private namespace first (a NodeHandle's from the handle's namespace)."""
+    method = call.referenced
+    parent = method.semantic_parent if method is not None else None
+    return call.spelling == "search" and parent is not None and (
+        qualified_name(parent) == "ros::param")
+
+
 def searched_key(call: Cursor) -> Cursor | None:
     """The key argument of roscpp's ``NodeHandle::searchParam(key, result)`` or
     ``ros::param::search(key, result)``, whose result is the full name of the parameter

@@ -23,7 +23,7 @@ from ...evaluate import budget
 from ...evaluate import operations as ops
 from ...evaluate.python import BUILTINS, Walker, evaluate_counted
 from ...model.conditions import Condition
-from ...model.values import Unknown, Value
+from ...model.values import UNKNOWN_MARK, Unknown, Value
 from . import rclpy, rospy
 from .api import Arg
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
@@ -102,6 +102,13 @@ FULL_NAME = "node fully qualified name"
 
 
 SEARCHED = "found by search_param: "  # origin of the name rospy.search_param(x) gives
+
+
+def search_start(key: str) -> str:
+    """The name of a key rospy.search_param looks for: rospy asks the master to search
+    from the caller's own name up, so a relative key is first the node's private one
+    (``~x``); a global key is only itself."""
+    return key if key.startswith(("/", "~", UNKNOWN_MARK)) else "~" + key
 
 
 def searched_name(text: Value) -> str | None:
@@ -450,7 +457,7 @@ class Evaluator(Instances, QoSProfiles, Walker):
             name = argument(expr, rospy.ROWS[key].name)
             text = text_of(self.eval(name, frame)) if name is not None else None
             if text is not None and text.is_known and text.text:
-                return Value.unknown(SEARCHED + text.text)
+                return Value.unknown(SEARCHED + search_start(text.text))
             return Value.unknown("search_param")
         if ref.qualname == "rospy.myargv":  # the arguments without roslaunch's := words
             return ProgramArgs(stripped=True)

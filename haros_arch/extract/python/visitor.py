@@ -74,6 +74,7 @@ from .values import (
     in_namespace,
     literal_name,
     own_name,
+    search_start,
     searched_name,
     unknown_params,
 )
@@ -1183,6 +1184,8 @@ class Walker:
         if spec.kind == "read" and id(call) in self._converted:
             base.type = None
         base.searched = spec.search or base.searched
+        if spec.search and base.name:  # rospy.search_param: from the node's own name up
+            base.name = search_start(base.name)
         base.tested = (spec.tests and id(call) in self._tested) or (
             spec.kind in ("read", "declare") and not base.has_default
             and any(c in self._handled for c in conds))
