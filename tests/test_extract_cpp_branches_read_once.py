@@ -84,7 +84,9 @@ def test_each_statement_is_read_once_and_the_conditions_are_the_same(
     anew, again = _calls(write_tree, monkeypatch, memo=False)
     assert max(again.values()) > 1  # the walks do read the constructor again
     assert once == anew
-    # (Part is built under two different tests: its publisher under none of them)
-    assert ("publish", "~fast_out", ()) in once, once
+    # (Part is built under two different tests: the publisher each construction names
+    # is under that construction's test alone)
+    assert ("publish", "~fast_out", ("if fast",)) in once, once
+    assert ("publish", "~slow_out", ("else fast", "if slow")) in once, once
     # (a counting loop over literal bounds runs: only the test inside it is a condition)
     assert ("subscribe", "~first", ("if i == 0",)) in once

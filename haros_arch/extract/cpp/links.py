@@ -30,13 +30,14 @@ from ...model.conditions import Condition
 from ...model.rosname import node_name_joined
 from ...model.source import JOINED, LOADED, NODELET_HANDLE, PROCESS_HANDLE, PrimitiveCall
 from . import msg_types
-from .cache import conditions_text
+from .cache import conditions_of_text, conditions_text
 from .call_conditions import (
     BASES,
     HIDDEN,
     INDICES,
     INSTANTIATED,
     NAMED_CLASS,
+    NOT_CARRIED,
     OVERLOADED,
     REFERENCED,
     RUNS_WHEN_CALLED,
@@ -509,6 +510,26 @@ class NodeFacts:
         return {fact[0]: fact[2] for fact in self.facts if fact[1] == RUNS_WHEN_CALLED}
 
     @functools.cached_property
+    def site_under(self) -> dict[str, tuple[Condition, ...]]:
+        """Call site -> the source conditions its function makes it under (a
+        construction's ``CONDITIONS``, a call's ``SITE_UNDER``), not a loop's or a
+        ``try``'s (``NOT_CARRIED``); a site with none is not here."""
+        found: dict[str, tuple[Condition, ...]] = {}
+        for _usr, index, value, site in self.facts:
+            if index not in (CONDITIONS, SITE_UNDER) or not value:
+                continue
+            place = site.partition("\n")[0] if index == SITE_UNDER else site
+            try:
+                under = conditions_of_text(value)
+            except (ValueError, TypeError, KeyError):
+                continue
+            kept = tuple(c for c in under if c.kind == "source"
+                         and c.statement not in NOT_CARRIED)
+            if kept:
+                found[place] = tuple(dict.fromkeys((*found.get(place, ()), *kept)))
+        return found
+
+    @functools.cached_property
     def within(self) -> dict[str, str]:
         """Call site -> the constructor it is in, which its unit never calls (``WITHIN``)."""
         return {site: caller for _usr, index, caller, site in self.facts if index == WITHIN}
@@ -685,7 +706,13 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         camera = call.camera_of[len(prefix):] if namespace and call.camera_of and (
             call.camera_of.startswith(prefix)) else None
         start = len(out)
-        for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle, host_called):
+        # the sites each value was filled at: a call named at one site exists only under
+        # that site's conditions (a class built on ``nh_ttl`` under one ``if``, on
+        # ``nh_can`` under another), which the conditions all sites share drop
+        chains: dict[str, list[frozenset[str]]] = {}
+        for filled in _expand(text, known.passed, 0, unbuilt, unrun, idle, host_called,
+                              chains):
+            under = _chain_conditions(chains.get(filled, [frozenset()]), known.site_under)
             filled, _, camera_filled = filled.partition(_CAMERA_SPLIT)
             filled, _, type_filled = filled.partition(_TYPE_SPLIT)
             filled, _, node_filled = filled.partition(_NODE_SPLIT)
@@ -752,6 +779,9 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
                     made = dataclasses.replace(made, host_handle=host)
             if made.struct_member and made.name.startswith(("?", "~?")):
                 continue  # what was handed is no parameter's value: nothing read
+            if under:
+                made = dataclasses.replace(made, conditions=(
+                    *(c for c in under if c not in made.conditions), *made.conditions))
             if node_text is not None:
                 made = _on_each_node(made, [node_filled], known.within, unbuilt, call)[0]
             out.append(made)
@@ -1238,7 +1268,8 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
             depth: int, unbuilt: Callable[[str], bool] | None = None,
             unrun: Callable[[str], bool] | None = None,
             idle: Callable[[str], bool] | None = None,
-            hosted: Collection[str] = ()) -> list[str]:
+            hosted: Collection[str] = (),
+            chains: dict[str, list[frozenset[str]]] | None = None) -> list[str]:
     """``text`` with its placeholders filled: the placeholders of one function take the
     values of the same call site together (``attach(n, "left")``, ``attach(base,
     "right")`` never give ``base/left``). A value that a caller takes from a parameter of
@@ -1252,10 +1283,16 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     ``NodeFacts.host_callable``) whose calls in the node give nothing is the host's to
     call, with a value not known here: navfn's plugin ``NavfnROS::initialize(name,
     costmap_ros)``, called in its own file only by a constructor the host never runs,
-    hands its ``name`` to the overload that makes every call (``~<name>/plan``)."""
+    hands its ``name`` to the overload that makes every call (``~<name>/plan``).
+
+    ``chains``, when given, gets for each value the call sites each way of filling it
+    went through (one set per way): the call so named exists only where they all run."""
     match = _MARK.search(text)
     if match is None:
-        return [choose(text)]
+        value = choose(text)
+        if chains is not None:
+            chains.setdefault(value, []).append(frozenset())
+        return [value]
     usr = match.group(1)
     items = list(passed.get(usr, {}).items()) if depth < MAX_DEPTH else []
     if idle is not None and len(items) > 1:
@@ -1267,9 +1304,10 @@ def _expand(text: str, passed: dict[str, dict[str, dict[int, str]]],
     if not sites and depth < MAX_DEPTH and unrun is not None and unrun(usr):
         return []
     out = _at_sites(text, usr, items or [("", {})], passed, depth, unbuilt, unrun, idle,
-                    hosted)
+                    hosted, chains)
     if not out and items and usr in hosted and depth < MAX_DEPTH:
-        out = _at_sites(text, usr, [("", {})], passed, depth, unbuilt, unrun, idle, hosted)
+        out = _at_sites(text, usr, [("", {})], passed, depth, unbuilt, unrun, idle, hosted,
+                        chains)
     return out
 
 
@@ -1282,9 +1320,11 @@ def _rootless(texts: list[str]) -> list[str]:
 def _at_sites(text: str, usr: str, items: list[tuple[str, dict[int, str]]],
               passed: dict[str, dict[str, dict[int, str]]], depth: int,
               unbuilt: Callable[[str], bool] | None, unrun: Callable[[str], bool] | None,
-              idle: Callable[[str], bool] | None, hosted: Collection[str]) -> list[str]:
+              idle: Callable[[str], bool] | None, hosted: Collection[str],
+              chains: dict[str, list[frozenset[str]]] | None = None) -> list[str]:
     """``_expand``'s values of ``text`` with ``usr``'s placeholders filled at each of
-    the call sites ``items`` (site, values by parameter index), then the rest."""
+    the call sites ``items`` (site, values by parameter index), then the rest; the
+    sites each value went through to ``chains``, when given."""
     out: list[str] = []
     mark = f"{_SITE_OF}{usr}{_SITE_OF}"  # the site of this function's call, asked for
     for site, values in items:
@@ -1297,14 +1337,37 @@ def _at_sites(text: str, usr: str, items: list[tuple[str, dict[int, str]]],
             # itself, directly or through a base method) stands for a chain of any
             # length: unknown (it expanded until MAX_VALUES made every value unknown)
             return "?" if usr in marked_usrs(value) else value
+        inner: dict[str, list[frozenset[str]]] | None = {} if chains is not None else None
         for filled in _expand(_MARK.sub(fill, here), passed, depth + 1, unbuilt, unrun,
-                              idle, hosted):
+                              idle, hosted, inner):
             if filled not in out:
                 out.append(filled)
+            if chains is not None and inner is not None:
+                chains.setdefault(filled, []).extend(
+                    chain | {site} if site else chain
+                    for chain in inner.get(filled, [frozenset()]))
             if len(out) > MAX_VALUES:  # no more work: the values of placeholders
                 # multiplied (``a + b`` of two functions of many callers each) end here
-                return [choose(_MARK.sub("?", text))]
+                value = choose(_MARK.sub("?", text))
+                if chains is not None:
+                    chains.clear()
+                    chains[value] = [frozenset()]
+                return [value]
     return out
+
+
+def _chain_conditions(chains: list[frozenset[str]],
+                      site_under: dict[str, tuple[Condition, ...]]) -> tuple[Condition, ...]:
+    """The conditions a call filled by each of ``chains`` (the call sites of one way of
+    filling it) exists under: those of every site of a way, shared by all the ways."""
+    shared: tuple[Condition, ...] | None = None
+    for chain in chains:
+        held = tuple(dict.fromkeys(c for site in sorted(chain)
+                                   for c in site_under.get(site, ())))
+        shared = held if shared is None else tuple(c for c in shared if c in held)
+        if not shared:
+            return ()
+    return shared or ()
 
 
 def _of_class_template(function: Cursor) -> bool:
