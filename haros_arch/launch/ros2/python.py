@@ -1377,13 +1377,24 @@ class Interpreter(Expressions):
             self.returns.append([])
             guards = len(self.guards)
             result: Any = None
+            stopped = False
             try:
                 self.block(func.node.body, env)
             except _Return as ret:
                 result = ret.value
+            except _Stop:
+                # a raise (an exit) reached only where the function did not return
+                # earlier, in a branch or a loop over items not known: that path ends
+                # there, the function gives what it may return (perseus-v2's host
+                # address read from ``ip addr`` line by line, then ``raise``)
+                if not self.returns[-1]:
+                    raise
+                stopped = True
             finally:
                 maybe = self.returns.pop()
                 del self.guards[guards:]
+            if stopped:
+                return self.either(maybe)
             return self.either([*maybe, result]) if maybe else result
         finally:
             _write_outer(env)
