@@ -326,6 +326,12 @@ def temporary_name(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                        to_text(prefix), (chosen,), to_text(suffix)))
 
 
+def typing_cast(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``typing.cast(T, value)``: ``value`` itself; the type is for type checkers only
+    (rm_engineer's launch files cast ``xacro.process_file(...)`` before ``toxml()``)."""
+    return arg(a, k, 1, "val")
+
+
 def file_removal(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``os.remove(path)`` / ``os.unlink(path)``: the file is removed when the launch
     code runs (navigation2's simulation launch files remove their temporary world on
@@ -1086,6 +1092,7 @@ API: dict[str, Builder] = {
     "has_resource": has_resource,
     "get_packages_with_prefixes": packages_with_prefixes,
     "get_package_prefix": package_directory(False),
+    "cast": typing_cast,
     "mktemp": temporary_name, "remove": file_removal, "unlink": file_removal,
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
