@@ -3907,7 +3907,12 @@ class CallFinder:
                 handed = self._given_back(call, index, scope) if spec is None else None
                 if handed is not None:
                     return self._parameter_source(handed[0], handed[1], depth + 1, value)
-                if spec is None:
+                if spec is None and not (
+                        call.extent.start.offset <= expr.extent.start.offset
+                        and expr.extent.end.offset <= call.extent.end.offset):
+                    # (a use after the call, not the argument it is given as: a
+                    # condition on ``hasBoolean(this, "flag", flag)`` is the helper's
+                    # answer, not what it stores)
                     through = self._read_through(call, index, scope)
                     if through is not None:
                         return through
