@@ -77,13 +77,23 @@ def is_launch_file(path: str) -> bool:
 def _runnable(path: str) -> bool:
     """False for a Python file named like a launch file that never names the function
     ``ros2 launch`` calls (interbotix_xs_modules' ``xs_launch/xs_launch.py``, a module
-    of helpers the launch files import): no configuration of its own."""
+    of helpers the launch files import), or a YAML file so named without the key
+    ``launch``: no configuration of its own."""
     name = os.path.basename(path).lower()
-    if not name.endswith(".py") or not name.endswith(LAUNCH_SUFFIXES):
-        return True  # (a launch/ folder's .py is a launch file by its content already)
+    if not name.endswith(LAUNCH_SUFFIXES):
+        return True  # (a launch/ folder's file is a launch file by its content already)
+    if name.endswith(".py"):
+        marker = re.compile(rb"generate_launch_description")
+    elif name.endswith((".yaml", ".yml")):
+        # launch's YAML frontend reads one mapping with the key ``launch``: a file named
+        # like a launch file without it is data (perseus-v2's config/realsense_launch.yaml,
+        # the arguments its launch file gives realsense2_camera's)
+        marker = _YAML_LAUNCH
+    else:
+        return True
     try:
         with open(path, "rb") as handle:
-            return b"generate_launch_description" in handle.read(MAX_PY_HEAD)
+            return marker.search(handle.read(MAX_PY_HEAD)) is not None
     except OSError:
         return False
 

@@ -409,3 +409,27 @@ def test_a_src_folder_of_code_beside_the_packages(tmp_path: Path) -> None:
     assert choice.project.workspace == [str(tmp_path)]
     assert [c.launch for c in choice.project.configurations] == [
         ["arm_control/launch/arm.launch"]]
+
+
+def test_a_yaml_file_named_like_a_launch_file_that_is_none_is_no_configuration(
+        ws: Path) -> None:
+    """perseus-v2's ``config/realsense_launch.yaml`` holds the arguments its launch file
+    gives realsense2_camera's: a YAML launch file is one mapping with the key ``launch``,
+    so ``ros2 launch`` cannot run it; it was a configuration whose only result was a
+    LAUNCH_YAML_SYNTAX error. A YAML launch file with that key stays one."""
+    rover = ws / "src" / "rover"
+    write(rover / "config" / "camera_launch.yaml", """\
+        # the camera's launch arguments
+        camera_name: camera
+        enable_color: true
+        """)
+    write(rover / "launch" / "lidar.launch.yaml", """\
+        %YAML 1.2
+        ---
+        launch:
+        - node: {pkg: rover, exec: lidar, name: lidar}
+        """)
+    choice = choose(str(ws), environment={})
+    configs = {c.name: c.launch for c in choice.project.configurations}
+    assert "rover/camera" not in configs
+    assert configs["rover/lidar"] == ["rover/launch/lidar.launch.yaml"]

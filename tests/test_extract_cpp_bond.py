@@ -120,3 +120,33 @@ def test_ros1_bond_in_a_shared_ptr_member_initialised_with_nullptr(write_tree) -
     calls = _calls(write_tree, ROS1_MEMBER, "laser")
     assert ("publish", "/aggregator/bond", "bond/Status") in calls
     assert ("subscribe", "/aggregator/bond", "bond/Status") in calls
+
+
+# wato_monorepo's lifecycle manager: the broken callback set after construction, and
+# the getters of the timeouts (bondcpp's bond.hpp): the stand-in had neither, a parse
+# error in the function that makes the bond (CPP_NODE_PARTIAL)
+ROS2_SETTERS = dict(ROS2)
+ROS2_SETTERS["worker/src/worker.cpp"] = ROS2["worker/src/worker.cpp"].replace(
+    "bond_->start();", """bond_->setBrokenCallback([this]() { broken_ = true; });
+            bond_->setFormedCallback(std::bind(&Worker::formed, this));
+            bond_->setDeadPublishPeriod(bond_->getHeartbeatPeriod() + bond_->getHeartbeatTimeout()
+                                        + bond_->getConnectTimeout() + bond_->getDisconnectTimeout()
+                                        + bond_->getDeadPublishPeriod());
+            if (bond_->getTopic() != bond_->getId() + bond_->getInstanceId()) {
+              bond_->start();
+            }""").replace(
+    "std::shared_ptr<bond::Bond> bond_;", """void formed() {}
+          bool broken_ = false;
+          std::shared_ptr<bond::Bond> bond_;""")
+
+
+def test_ros2_bond_callbacks_set_after_construction(write_tree) -> None:
+    ws = scan([str(write_tree(ROS2_SETTERS))])
+    pkg = ws.packages["worker"]
+    pkg.nodes, _ = cmake.parse_package(pkg, ws)
+    said = extract_nodes(pkg.nodes, ws, cache_dir=None, jobs=1)
+    node = pkg.nodes[0]
+    assert [d.message for d in said if d.code in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NODE_PARTIAL")] == []
+    calls = sorted((c.kind, c.name, c.type or "") for c in node.calls)
+    assert ("publish", "heartbeat", "bond/msg/Status") in calls

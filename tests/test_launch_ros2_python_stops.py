@@ -132,3 +132,32 @@ def generate_launch_description():
     (stop,) = [d for d in model.diagnostics if d.code == "LAUNCH_PY_EXIT"]
     assert stop.location.file.endswith("launch/robot_helpers.py")
     assert stop.location.line == 5
+
+
+def test_a_raise_after_a_possible_return_ends_that_path_only(write_tree):
+    """A helper that returns from a loop over a value not known statically (perseus-v2's
+    livox.launch.py reads the host address from ``ip addr`` output line by line) or
+    from an ``if`` whose test is not known, and raises after it, gives what it may
+    return: the raise ends only the path where it did not return, so the launch file
+    goes on with that value rather than stopping."""
+    for returning in ("""
+    for line in subprocess.run(['ip', 'addr'], capture_output=True).stdout.splitlines():
+        if line.startswith('inet '):
+            return 'eth_' + 'host'
+""", """
+    if subprocess.run(['ip', 'addr'], capture_output=True).returncode == 0:
+        return 'eth_' + 'host'
+"""):
+        model, _ = run(write_tree, """
+import subprocess
+
+def host_name():
+""" + returning + """
+    raise RuntimeError('no address')
+
+def generate_launch_description():
+    name = host_name()
+    return LaunchDescription([Node(package='p', executable='e', name=name)])
+""")
+        assert [n.name for n in model.nodes] == ["/eth_host"], returning
+        assert not any(d.code == "LAUNCH_PY_EXIT" for d in model.diagnostics), returning

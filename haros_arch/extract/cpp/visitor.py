@@ -3666,6 +3666,63 @@ class CallFinder:
         handed = body.given_back(parms[index])
         return None if handed is None else (handed, body)
 
+    def _read_through(self, call: Cursor, index: int, scope: Scope) -> Source | None:
+        """The parameter a helper of the unit reads into the caller's variable, given to
+        it by non-const reference as its parameter ``index``, when its body hands that
+        parameter, as the out argument, to one ROS read of a parameter (rm_engineer's
+        config loaders: ``declare_get("joint_cmd_topic", cfg.joint_cmd_topic)`` of a
+        lambda ``[&](const std::string& name, auto& value) { node.declare_parameter(name,
+        value); node.get_parameter(name, value); }``); the read's name is the caller's
+        argument where it is another parameter of the helper, the default what the
+        variable holds before the call. A read named on a handle's namespace is left."""
+        if scope.sites is None:
+            return None
+        function = callee_of(call)
+        definition = function.get_definition() if function is not None else None
+        if definition is None or definition.kind not in (
+                CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD,
+                CursorKind.FUNCTION_TEMPLATE):
+            return None
+        parms = [c for c in definition.get_children() if c.kind == CursorKind.PARM_DECL]
+        outer = written_arguments(call)
+        if call.spelling.startswith("operator") and len(outer) == len(parms) + 1:
+            outer, index = outer[1:], index - 1  # a lambda's call lists its object first
+        if not 0 <= index < len(parms) or len(outer) != len(parms):
+            return None
+        ptype = parms[index].type
+        if ptype.kind != TypeKind.LVALUEREFERENCE or ptype.get_pointee().is_const_qualified():
+            return None
+        body = scope.sites.scope(definition)
+        parm = parms[index]
+        if any(write is not None for write in body.writes.get(place_of(parm), [])):
+            return None  # assigned a value of its own too
+        reads: list[tuple[api.RosFunction, list[Cursor]]] = []
+        for node in definition.walk_preorder():
+            if node.kind != CursorKind.CALL_EXPR:
+                continue
+            spec, _ = self._row(node)
+            args = written_arguments(node)
+            if spec is None or spec.kind != "read" or spec.out_arg is None or (
+                    spec.out_arg >= len(args)):
+                continue
+            out = strip(args[spec.out_arg])
+            if out.kind == CursorKind.DECL_REF_EXPR and out.referenced == parm:
+                reads.append((spec, args))
+        if len(reads) != 1:
+            return None
+        spec, args = reads[0]
+        if spec.on_handle or spec.handle_arg is not None or spec.value_only or (
+                spec.argument or spec.name_arg >= len(args)):
+            return None
+        named = strip(args[spec.name_arg])
+        given = named.referenced if named.kind == CursorKind.DECL_REF_EXPR else None
+        parts = scope.string(outer[parms.index(given)]) if given in parms else (
+            body.string(named))
+        if not _known(parts):
+            return None
+        kept = _kept_value(outer[index], scope)[1]
+        return render(parts), kept if isinstance(kept, str) else None, None
+
     def _searched_key_source(self, expr: Cursor, scope: Scope) -> Source | None:
         """The parameter whose value is the key of the ``searchParam(key, result)`` that
         last wrote the variable ``expr`` (its result), if it is one."""
@@ -3853,6 +3910,15 @@ class CallFinder:
                 handed = self._given_back(call, index, scope) if spec is None else None
                 if handed is not None:
                     return self._parameter_source(handed[0], handed[1], depth + 1, value)
+                if spec is None and not (
+                        call.extent.start.offset <= expr.extent.start.offset
+                        and expr.extent.end.offset <= call.extent.end.offset):
+                    # (a use after the call, not the argument it is given as: a
+                    # condition on ``hasBoolean(this, "flag", flag)`` is the helper's
+                    # answer, not what it stores)
+                    through = self._read_through(call, index, scope)
+                    if through is not None:
+                        return through
             if scope.sites is not None and scope.is_parameter(decl):
                 # a function's parameter: the parameter every call of the file passes
                 # (nav2's ``CostmapSubscriber(node, costmap_topic)``, the topic a local
@@ -3985,7 +4051,18 @@ class CallFinder:
                 spec, _ = self._row(node)
                 if spec is not None and self.ros2 and spec.ros2 is not None:
                     spec = spec.ros2
-                if spec is None or spec.kind not in _PARAM_KINDS or spec.out_arg is None:
+                if spec is None:
+                    # the member given by reference to a helper that reads a parameter
+                    # into it (``_read_through``)
+                    for index, arg in enumerate(written_arguments(node)):
+                        held = strip(arg)
+                        if held.kind == CursorKind.MEMBER_REF_EXPR and (
+                                held.referenced == member):
+                            found = self._read_through(node, index, self._scope_of(function))
+                            if found is not None:
+                                return found
+                    continue
+                if spec.kind not in _PARAM_KINDS or spec.out_arg is None:
                     continue
                 args = list(node.get_arguments())
                 shift = 1 if spec.optional_handle and args and is_handle(args[0]) else 0

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
+from typing import Any
 
 import yaml
 from lxml import etree
@@ -18,13 +19,14 @@ from ...files import read_bytes, read_text
 from ...model.launch_tree import LaunchItem
 from ...model.location import Location
 from ...model.values import Value
-from ...share import share_source
+from ...share import install_prefix, share_source
 from ...workspace import Workspace
 from ..dialect import ros_version
 from ..model import LaunchModel
 from . import entities as e
 from .frontend import Frontend, xml_entities, yaml_entities
 from .nodes import sections_for_no_node
+from .python_values import Lazy
 from .runner import Runner, Scope
 
 __all__ = ["is_ros2", "load"]
@@ -52,7 +54,8 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
                                          uses=runner.model.package_uses,
                                          command_line=runner.command_line,
                                          written=written, unsure=unsure,
-                                         made=runner.model.environment_values)
+                                         made=runner.model.environment_values,
+                                         argv=runner.argv)
         runner.wrote(written, unsure)
         runner.model.diagnostics.extend(problems)
         return actions
@@ -92,6 +95,26 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
     return actions
 
 
+def command_argv(workspace: Workspace, path: str, args: Mapping[str, str]
+                 ) -> list[Any] | None:
+    """``sys.argv`` of the ``ros2 launch`` process that runs the configuration, as a user
+    starts an installed launch file: ``[<ros2>, 'launch', <package>, <file name>,
+    'name:=value', ...]`` (the launch files that read it take ``sys.argv[4:]`` as the
+    launch arguments: tmr_ros2's, wheeltec's usb_cam); the path of the ros2 script,
+    under the install prefix of ros2cli, when that is installed here, else not known.
+    None when the file is in no package of the workspace (started by its path, whose
+    spelling is the user's)."""
+    package = workspace.package_of(path)
+    if package is None:
+        return None
+    prefix = install_prefix(workspace, "ros2cli")
+    # (a text not known, not an unknown item: the list's length is known)
+    ros2: Any = os.path.join(prefix, "bin", "ros2") if prefix else Lazy((
+        e.Opaque("the path of the ros2 command", report=False),))
+    return [ros2, "launch", package.name, os.path.basename(path),
+            *(f"{name}:={value}" for name, value in args.items())]
+
+
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
          environment: Mapping[str, str] | None = None) -> LaunchModel:
     """Interpret one ROS 2 launch file and what it includes."""
@@ -100,6 +123,7 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
     runner.command_line = dict(args or {})
     scope = Scope({k: Value.of(v) for k, v in (args or {}).items()})
     path = os.path.abspath(path)
+    runner.argv = command_argv(workspace, path, runner.command_line)
     scope.item = LaunchItem("file", workspace.relpath(share_source(workspace, path)),
                             workspace.location(path), namespace="/")
     runner.model.tree.append(scope.item)

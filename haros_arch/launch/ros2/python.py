@@ -156,6 +156,9 @@ class Interpreter(Expressions):
         self.library_state: dict[str, Any] = {}
         # the launch's command-line arguments (``parse_python``)
         self.command_line: Mapping[str, str] = {}
+        # ``sys.argv``: the ``ros2 launch`` command line that starts the configuration
+        # (``parse_python``), None when not known
+        self.argv: list[Any] | None = None
         from .python_api import API, BUILTINS, METHODS
 
         self.api = API
@@ -541,6 +544,9 @@ class Interpreter(Expressions):
                 env[alias.asname or alias.name] = ops.MATH[alias.name]  # from math import pi
             elif found is None and os_value(module, alias.name) is not None:
                 env[alias.asname or alias.name] = os_value(module, alias.name)
+            elif found is None and (module, alias.name) == ("sys", "argv") and (
+                    self.argv is not None):
+                env[alias.asname or alias.name] = list(self.argv)  # from sys import argv
             elif found is None and alias.name == "*":
                 # a module not found: the names it binds are not known here (said where
                 # one is used: ``lookup``)
@@ -716,7 +722,7 @@ class Interpreter(Expressions):
         elif isinstance(stmt, ast.With):
             self.with_(stmt, env)
         elif isinstance(stmt, ast.While):
-            self.unsupported(stmt, "while loops are not interpreted (never run)")
+            self.while_(stmt, env)
         elif isinstance(stmt, (ast.Global, ast.Nonlocal)):
             self.outer_names(stmt, env)
         elif isinstance(stmt, ast.Assert):
@@ -1222,6 +1228,35 @@ class Interpreter(Expressions):
                 continue
         self.block(stmt.orelse, env)
 
+    def while_(self, stmt: ast.While, env: dict[str, Any]) -> None:
+        """``while TEST:``, its test known each time it is checked: the body runs while
+        it holds (each turn a step of the evaluation's budget, as every loop), then the
+        ``else`` unless a ``break`` left it (lexus_bringup's ``while len(pose) < 6:
+        pose.append('0.0')``; tmr_ros2's copy of ``sys.argv[4:]``). A test not known
+        (at the first check or a later one) is said, and the loop is left there; so is
+        a loop still running after ``MAX_WHILE_TURNS`` turns (``while True:`` waiting
+        for what only the running system gives), the rest of the file read on."""
+        for turn in range(MAX_WHILE_TURNS + 1):
+            if turn == MAX_WHILE_TURNS:
+                self.unsupported(stmt, f"while loops that run more than {MAX_WHILE_TURNS} "
+                                       "turns are not interpreted")
+                return
+            self.step()
+            _, test = self.test_of(stmt.test, env)
+            if test is None:
+                self.unsupported(stmt, "a while loop whose test is not known statically is "
+                                       "not interpreted")
+                return
+            if not test:
+                break
+            try:
+                self.block(stmt.body, env)
+            except _Break:
+                return
+            except _Continue:
+                continue
+        self.block(stmt.orelse, env)
+
     def iterable(self, value: Any, node: ast.AST) -> list[Any] | None:
         if isinstance(value, dict):
             return list(value)
@@ -1377,13 +1412,24 @@ class Interpreter(Expressions):
             self.returns.append([])
             guards = len(self.guards)
             result: Any = None
+            stopped = False
             try:
                 self.block(func.node.body, env)
             except _Return as ret:
                 result = ret.value
+            except _Stop:
+                # a raise (an exit) reached only where the function did not return
+                # earlier, in a branch or a loop over items not known: that path ends
+                # there, the function gives what it may return (perseus-v2's host
+                # address read from ``ip addr`` line by line, then ``raise``)
+                if not self.returns[-1]:
+                    raise
+                stopped = True
             finally:
                 maybe = self.returns.pop()
                 del self.guards[guards:]
+            if stopped:
+                return self.either(maybe)
             return self.either([*maybe, result]) if maybe else result
         finally:
             _write_outer(env)
@@ -1400,6 +1446,7 @@ def parse_python(text: str, path: str, workspace: Workspace,
                  written: dict[str, str] | None = None,
                  unsure: set[str] | None = None,
                  made: list[str] | None = None,
+                 argv: list[Any] | None = None,
                  ) -> tuple[list[e.Action] | None, list[Diagnostic]]:
     """The actions of a Python launch file, and what could not be interpreted; the
     packages whose folders it asks for as it runs are added to ``uses``.
@@ -1407,7 +1454,8 @@ def parse_python(text: str, path: str, workspace: Workspace,
     ``written``: gets what the file writes in ``os.environ`` as it is loaded; ``unsure``:
     the variables written before under a test not known statically, which gets those
     this file so writes (and loses those it writes for sure). ``made``: gets the paths
-    of the files it opens for writing."""
+    of the files it opens for writing. ``argv``: ``sys.argv``, the command line of
+    ``ros2 launch`` (``Runner.argv``), None when not known."""
     where = workspace.location(path)
     tree, problem = checked_tree(text, path, workspace)
     if tree is None:
@@ -1415,6 +1463,7 @@ def parse_python(text: str, path: str, workspace: Workspace,
     interp = Interpreter(path, workspace,
                          environment if environment is not None else workspace.environment)
     interp.command_line = command_line or {}
+    interp.argv = argv
     if unsure:
         interp.environment_unsure |= unsure
     actions = interp.bounded(where, lambda: interp.module(tree), None)
@@ -1589,6 +1638,8 @@ _EXCEPTIONS: dict[str, type] = {
 
 # what ends the Python process: SystemExit (os._exit: none a handler may catch)
 _EXITS = frozenset(("exit", "quit", "sys.exit", "os._exit"))
+# the turns a ``while`` loop whose test stays true may run before it is left, said
+MAX_WHILE_TURNS = 10_000
 
 
 def _raised_name(exc: ast.expr | None) -> str | None:

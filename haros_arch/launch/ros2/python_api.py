@@ -326,6 +326,12 @@ def temporary_name(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                        to_text(prefix), (chosen,), to_text(suffix)))
 
 
+def typing_cast(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``typing.cast(T, value)``: ``value`` itself; the type is for type checkers only
+    (rm_engineer's launch files cast ``xacro.process_file(...)`` before ``toxml()``)."""
+    return arg(a, k, 1, "val")
+
+
 def file_removal(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``os.remove(path)`` / ``os.unlink(path)``: the file is removed when the launch
     code runs (navigation2's simulation launch files remove their temporary world on
@@ -380,6 +386,42 @@ def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         return default
     i.unknown_value(n, f"environment variable {name} is not set in the configuration")
     return Lazy((e.Opaque(f"environment variable {name}", report=False),))
+
+
+def expand_user(i: Interpreter, path: Any, n: ast.AST) -> Any:
+    """What ``os.path.expanduser(path)`` gives: a path not starting with ``~`` is itself;
+    ``~`` / ``~/rest`` is HOME (the configuration's environment, as ``os.getenv`` reads
+    it here) without its trailing ``/``, then ``rest``; without HOME, or for ``~user``,
+    that folder is not known here (said), the rest kept."""
+    if isinstance(path, PurePosixPath):
+        path = str(path)
+    if not isinstance(path, str):
+        return Unknown("expanduser of a value not known statically")
+    if not path.startswith("~"):
+        return path
+    cut = path.find("/", 1)
+    cut = len(path) if cut < 0 else cut
+    user, rest = path[1:cut], path[cut:]
+    if user:
+        i.unknown_value(n, f"the home folder of user {user} is not known here")
+        return Lazy(e.text((e.Opaque(f"the home folder of user {user}", report=False),),
+                           to_text(rest)))
+    home = getenv(i, ["HOME"], {}, n)
+    if isinstance(home, str):
+        return (home.rstrip("/") + rest) or "/"
+    return Lazy(e.text(to_text(home), to_text(rest)))
+
+
+def os_path_expanduser(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    return expand_user(i, arg(a, k, 0, "path"), n)
+
+
+def path_expanduser(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``Path.expanduser()``: the path ``os.path.expanduser`` gives its text."""
+    expanded = expand_user(i, owner, n)
+    if isinstance(expanded, Lazy):  # a path of parts known when launch runs
+        return pure_path(i, [expanded], {}, n)
+    return PurePosixPath(expanded) if isinstance(expanded, str) else expanded
 
 
 def find_executable(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -1086,6 +1128,7 @@ API: dict[str, Builder] = {
     "has_resource": has_resource,
     "get_packages_with_prefixes": packages_with_prefixes,
     "get_package_prefix": package_directory(False),
+    "cast": typing_cast,
     "mktemp": temporary_name, "remove": file_removal, "unlink": file_removal,
     "join": os_path_join, "dirname": os_path(os.path.dirname),
     "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
@@ -1093,7 +1136,7 @@ API: dict[str, Builder] = {
     "splitext": os_path(os.path.splitext), "isabs": os_path(os.path.isabs),
     "exists": path_exists(os.path.exists), "isfile": path_exists(os.path.isfile),
     "isdir": path_exists(os.path.isdir),
-    "getenv": getenv,
+    "getenv": getenv, "expanduser": os_path_expanduser,
     "PathJoinSubstitution": path_join, "PathSubstitution": path_substitution,
     "Path": pure_path, "PurePath": pure_path, "PurePosixPath": pure_path,
     "TextSubstitution": text_substitution,
@@ -1172,7 +1215,8 @@ API: dict[str, Builder] = {
 METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS,
                               **MOVEIT_METHODS, "exists": path_tested(os.path.exists),
                               "is_file": path_tested(os.path.isfile),
-                              "is_dir": path_tested(os.path.isdir)}
+                              "is_dir": path_tested(os.path.isdir),
+                              "expanduser": path_expanduser}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
                       "isinstance", "all", "any", "open", "getattr", "type", "eval",

@@ -93,6 +93,7 @@ class Expressions(Walker):
     # variables the file sets (``os.environ[key] = ...``) under a test not known
     # statically: read after, their value is not known
     environment_unsure: set[str]
+    argv: list[Any] | None  # ``sys.argv``: the ros2 launch command line, if known
     guards: list[Guard]
     # the expressions whose value Python's handling of a launch object decided: ``not``
     # of one, one compared with ``==`` (``compare_values``); by id, the node kept alive
@@ -411,6 +412,8 @@ class Expressions(Walker):
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
                 return _Environ()
+            if owner.qualified == "sys" and node.attr == "argv" and self.argv is not None:
+                return list(self.argv)  # the ros2 launch command line (Runner.argv)
             if f"{owner.qualified}.{node.attr}" in OS_VALUES:  # os.pathsep
                 return OS_VALUES[f"{owner.qualified}.{node.attr}"]
             if owner.qualified == "math" and math_constant(node.attr):

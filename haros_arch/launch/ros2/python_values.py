@@ -334,6 +334,7 @@ _KNOWN_ROOTS = ("launch", "launch_ros", "launch_xml", "launch_yaml", "os", "amen
                 "nav2_common", "builtins", "pathlib", "yaml", "xacro", "copy", "launch_pal",
                 "controller_manager", "robotnik_common", "moveit_configs_utils",
                 "launch_param_builder", "itertools", "collections", "tempfile", "json",
+                "typing",
                 # their launch actions (package_actions)
                 "ros_gz_bridge", "ros_gz_sim")
 # the modules of a package whose launch actions the API's rows are (python_webots); the

@@ -196,6 +196,9 @@ class Runner:
         # the arguments of the command line that starts the first file (``name:=value``),
         # which a Python launch file may read from ``sys.argv`` (``load``)
         self.command_line: Mapping[str, str] = {}
+        # ``sys.argv`` of the ``ros2 launch`` process (``command_argv``), for every file
+        # it loads; None when the first file is in no package of the workspace
+        self.argv: list[Any] | None = None
         # the action lists being run, innermost last (``run``)
         self.running: list[list[e.Action]] = []
         self.param_entries = 0  # parameter entries applied to nodes (nodes.node_params)

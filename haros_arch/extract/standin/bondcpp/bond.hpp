@@ -19,6 +19,18 @@ public:
   void setHeartbeatTimeout(double dur);
   void setConnectTimeout(double dur);
   void setDisconnectTimeout(double dur);
+  // ROS 2 (bondcpp/bond.hpp): the callbacks set after construction, the timeouts read
+  void setDeadPublishPeriod(double dur);
+  double getConnectTimeout() const;
+  double getDisconnectTimeout() const;
+  double getHeartbeatTimeout() const;
+  double getHeartbeatPeriod() const;
+  double getDeadPublishPeriod() const;
+  void setFormedCallback(std::function<void()> on_formed);
+  void setBrokenCallback(std::function<void()> on_broken);
+  std::string getTopic() const;
+  std::string getId() const;
+  std::string getInstanceId() const;
   void start();
   void breakBond();
   bool isBroken();

@@ -919,6 +919,18 @@ template<class K, class V, class H = hash<K>, class E = equal_to<K>,
 class unordered_map : public map<K, V> {
 public:
   using map<K, V>::map;
+  // a hash table's own members, which the ordered map it stands in as lacks
+  typedef H hasher;
+  typedef E key_equal;
+  void reserve(size_t n);
+  void rehash(size_t n);
+  size_t bucket_count() const;
+  size_t bucket(const K& k) const;
+  float load_factor() const;
+  float max_load_factor() const;
+  void max_load_factor(float f);
+  hasher hash_function() const;
+  key_equal key_eq() const;
 };
 template<class K, class V, class C = less<K>> class multimap : public map<K, V, C> {
 public:
@@ -976,6 +988,18 @@ template<class K, class H = hash<K>, class E = equal_to<K>, class A = allocator<
 class unordered_set : public set<K> {
 public:
   using set<K>::set;
+  // a hash table's own members, which the ordered set it stands in as lacks
+  typedef H hasher;
+  typedef E key_equal;
+  void reserve(size_t n);
+  void rehash(size_t n);
+  size_t bucket_count() const;
+  size_t bucket(const K& k) const;
+  float load_factor() const;
+  float max_load_factor() const;
+  void max_load_factor(float f);
+  hasher hash_function() const;
+  key_equal key_eq() const;
 };
 template<class T, class S = deque<T>> class queue {
 public:
