@@ -18,7 +18,7 @@ NODE = """
 
     class Robot : public rclcpp::Node {
      public:
-      Robot() : Node("robot"), prefix_("arm") {}
+      Robot() : Node("robot"), prefix_("arm"), base_("base") {}
       void init() {
         int number = 1;
         std::string name{""};
@@ -39,14 +39,18 @@ NODE = """
           other_ = "far";
         }
         sub_pub_ = create_publisher<std_msgs::msg::String>(other_ + "/status", 10);
+        auto later_name = [this]() { base_ = "renamed"; };
+        base_pub_ = create_publisher<std_msgs::msg::String>(base_ + "/out", 10);
+        later_name();
       }
       void later() { other_ = "changed"; }
      private:
       std::string robot_;
       std::string prefix_;
       std::string other_;
+      std::string base_;
       rclcpp::Service<std_srvs::srv::Trigger>::SharedPtr srv_;
-      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_, sub_pub_;
+      rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_, sub_pub_, base_pub_;
     };
 
     int main(int argc, char ** argv) {
@@ -82,4 +86,6 @@ def test_a_member_set_in_a_branch_names_a_call_per_value(write_tree):
     assert ("publish", "twin/state", (("if", "number > 2"),)) in published
     # other_ is written in later() too: what it holds in init() is not known
     assert ("publish", "?/status", ()) in published
-    assert len(published) == 3
+    # a lambda's write runs when it is called: after the read here
+    assert ("publish", "base/out", ()) in published
+    assert len(published) == 4

@@ -735,15 +735,18 @@ class Scope:
 
     def _written_maybe(self, decl: Cursor, at: Cursor) -> bool:
         """Whether this body writes member ``decl`` before ``at`` reads it only in
-        branches, loops or lambdas the read is outside of (``if (n > 1) { robot_ =
-        name; }``): the read sees that write or what the member held before."""
+        branches or loops the read is outside of (``if (n > 1) { robot_ = name; }``):
+        the read sees that write or what the member held before. A lambda's write runs
+        when the lambda is called, a callback's after start-up: not counted."""
         _ = self.writes  # read from the body together
         chain = _named(at) if at.kind == CursorKind.MEMBER_REF_EXPR else None
         found = self._members.get(chain if chain is not None and len(chain) > 1
                                   else key_of(decl))
         where = at.extent.start.offset
-        return bool(found) and any(offset < where and self._may_skip(offset, where)
-                                   for offset, _value in found or ())
+        return bool(found) and any(
+            offset < where and self._may_skip(offset, where) and not any(
+                first <= offset <= last for first, last in self._lambdas)
+            for offset, _value in found or ())
 
     def _overridden(self, decl: Cursor, at: Cursor, depth: int
                     ) -> tuple[bool, Cursor | None]:
