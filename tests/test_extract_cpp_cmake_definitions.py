@@ -391,3 +391,39 @@ def test_a_macro_under_the_test_its_target_is_made_under_is_given(write_tree) ->
     assert cmake_flags(str(src / "b.cpp"), ws) == ["-DWITH_GPU"]
     # plain is made on every path: WITH_GPU and ONLY_WITH_CUDA may not be given it
     assert cmake_flags(str(src / "plain.cpp"), ws) == []
+
+
+BOTH_WAYS = r"""
+cmake_minimum_required(VERSION 3.8)
+project(both)
+set(blob "net.blob")
+if(ament_cmake_FOUND)
+  add_definitions(-DROS2_ONLY)
+  add_executable(node_x src/ros2.cpp)
+  target_compile_definitions(node_x PRIVATE BLOB_NAME="${blob}" ROS_VERSION_2)
+elseif(CATKIN_DEVEL_PREFIX)
+  add_executable(node_x src/ros1.cpp)
+  target_compile_definitions(node_x PRIVATE BLOB_NAME="${blob}")
+  if(WITH_EXTRA)
+    target_compile_definitions(node_x PRIVATE EXTRA)
+  endif()
+endif()
+"""
+
+
+def test_a_target_made_in_both_branches_gets_its_branchs_macros(write_tree) -> None:
+    """depthai_examples makes stereo_inertial_node in both branches of
+    ``if(ament_cmake_FOUND)`` (not decided), each from its own source, and defines
+    BLOB_NAME for it in each: the ROS 1 source, compiled only in the ``else``, gets that
+    branch's definition (without it ``std::string nnName(BLOB_NAME);`` declared a
+    function, and the parse of main stopped there); not the other branch's, nor one
+    under a further test."""
+    root = write_tree({
+        "src/both/package.xml": package_xml("both", "catkin"),
+        "src/both/CMakeLists.txt": BOTH_WAYS,
+        "src/both/src/ros1.cpp": "int main() { return 0; }\n",
+        "src/both/src/ros2.cpp": "int main() { return 0; }\n",
+    })
+    ws = scan([str(root / "src")])
+    src = root / "src" / "both" / "src"
+    assert cmake_flags(str(src / "ros1.cpp"), ws) == ['-DBLOB_NAME="net.blob"']

@@ -1015,3 +1015,46 @@ def generate_launch_description():
     assert bw.completeness == "unknown"  # argparse refuses a second topic
     topic = next(t for t in config.topics if t.name == "/scan")
     assert len(topic.subscribers) == 2 and len(topic.publishers) == 1
+
+
+def test_rostopic_watchers_subscribe_to_the_topic_a_field_name_is_in(write_tree):
+    """``rostopic echo /robot/odom/pose/pose`` prints a field of ``/robot/odom``'s
+    messages: rostopic subscribes to the longest published topic that begins the name
+    (ros_comm's ``_get_topic_type``; hz, delay and bw too), not to a topic nobody
+    publishes. A name that is a topic itself, or has no published topic before it,
+    stays as written."""
+    root = write_tree({
+        "src/p/package.xml": package_xml("p"),
+        "src/p/CMakeLists.txt": "project(p)\n",
+        "src/p/launch/p.launch": """
+            <launch>
+              <node pkg="rostopic" type="rostopic" name="odom"
+                    args="pub /robot/odom std_msgs/String -r 1 'x'"/>
+              <node pkg="rostopic" type="rostopic" name="deep"
+                    args="pub /robot/odom/pose std_msgs/String -r 1 'x'"/>
+              <node pkg="rostopic" type="rostopic" name="field"
+                    args="echo /robot/odom/twist/twist"/>
+              <node pkg="rostopic" type="rostopic" name="deeper" args="hz /robot/odom/pose/x"/>
+              <node pkg="rostopic" type="rostopic" name="whole" args="bw /robot/odom/pose"/>
+              <node pkg="rostopic" type="rostopic" name="none" args="delay /other/field"/>
+            </launch>
+            """,
+        "project.yaml": "project: p\nconfigurations:\n  c: [p/launch/p.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {}, Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+
+    def subscribed(name: str) -> list[str]:
+        return [link.name for link in _instance(config, name).links
+                if link.kind == "subscribe"]
+
+    assert subscribed("/field") == ["/robot/odom"]
+    assert subscribed("/deeper") == ["/robot/odom/pose"]  # the longest
+    assert subscribed("/whole") == ["/robot/odom/pose"]
+    assert subscribed("/none") == ["/other/field"]
+    names = sorted(t.name for t in config.topics)
+    assert names == ["/other/field", "/robot/odom", "/robot/odom/pose"]
+    odom = next(t for t in config.topics if t.name == "/robot/odom")
+    assert [s.node.name for s in odom.subscribers] == ["/field"]
+    rules = [f.rule for f in run_catalogue(model) if f.rule.startswith("subscriber-")]
+    assert rules == ["subscriber-without-publisher"]  # /other/field alone

@@ -326,10 +326,14 @@ def _given_where_made(each: CompileDefinition, target: Target) -> CompileDefinit
     hold (autorally's ``if(CUDA_FOUND)`` around ``cuda_add_executable(path_integral_bf
     ...)`` and its ``target_compile_definitions(... USE_BASIS_FUNC_MODEL__)``, which
     chooses the dynamics model and its constants: undefined, every line using them was an
-    error)."""
-    if not each.conditions or not target.conditions:
+    error). The sources of a target made in both branches of an if() not decided are
+    those of its last make, compiled only where its branch is taken (depthai_examples'
+    ``target_compile_definitions(stereo_inertial_node PRIVATE BLOB_NAME=...)`` in the
+    ``else`` of ``if(ament_cmake_FOUND)``, after the ROS 1 make of the node)."""
+    made = target.sources_under
+    if not each.conditions or not made:
         return each
-    rest = tuple(c for c in each.conditions if c not in target.conditions)
+    rest = tuple(c for c in each.conditions if c not in made)
     return each if len(rest) == len(each.conditions) else dataclasses.replace(
         each, conditions=rest)
 
@@ -396,7 +400,7 @@ def _source_include_dirs(package: Package, workspace: Workspace) -> dict[str, li
     sources = SourceMap(interpreter, files)
     found: dict[str, list[str]] = {}
     for target in interpreter.targets.values():
-        made = set(target.conditions)
+        made = set(target.sources_under)
         given = [*(folder for folder, under in target.directory_includes
                    if set(under) <= made),
                  *(folder for keyword, folder, under in target.includes

@@ -532,12 +532,13 @@ def _add_target(it: Interpreter, command: Invocation, args: list[str], kind: str
         sources.extend(_glob(it, [os.path.join(folder, "*" + s) for s in C_SUFFIXES],
                              recurse=True))
     sources.extend(it.source_path(a) for a in rest if a not in flags)
-    conditions = it.current_conditions()
+    made_under = conditions = it.current_conditions()
     before = it.targets.get(args[0])
     if before is not None:
         conditions = on_every_path(before.conditions, conditions)
     target = it.targets[args[0]] = Target(
-        args[0], kind, sources, conditions=conditions, line=command.line,
+        args[0], kind, sources, conditions=conditions, made_under=made_under,
+        line=command.line,
         column=command.column, file=command.file,
         directory_definitions=it.compile_definitions[-1],
         definitions=[("PRIVATE", each) for each in it.compile_options[-1]],

@@ -38,6 +38,12 @@ class Target:
     # made by ``ament_auto_add_*``: it also links every build dependency of package.xml
     auto: bool = False
     conditions: tuple[Condition, ...] = ()
+    # the if()s not decided around the command that made it last, whose sources these
+    # are: a target made in both branches of ``if(ament_cmake_FOUND)`` has no condition
+    # (it is made on every path), but the sources of the ``else`` branch's, and what that
+    # branch defines for it, are compiled only where that branch is taken; None: as
+    # ``conditions``
+    made_under: tuple[Condition, ...] | None = None
     line: int = 0
     column: int = 0
     file: str = ""
@@ -69,6 +75,11 @@ class Target:
     extensions: bool | None = None
     flags_standard: int | None = None
     options_standard: int | None = None
+
+    @property
+    def sources_under(self) -> tuple[Condition, ...]:
+        """The if()s not decided that hold wherever its sources are compiled."""
+        return self.conditions if self.made_under is None else self.made_under
 
 
 @dataclass

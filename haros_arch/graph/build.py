@@ -247,11 +247,42 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, name)
     config.launch_tree = launch.tree  # what decide_links asks of includes not read
+    _field_watchers(config, resources)
     decide_links(config)  # source conditions this configuration decides
     _namespace_values(config)
     config.package_paths = package_paths(launch, workspace)
     config.package_uses = package_uses(launch, workspace, started)
     return config
+
+
+def _field_watchers(config: Configuration, resources: Resources) -> None:
+    """rostopic's watchers (``PrimitiveCall.name_field``) subscribe to the topic their
+    name is, when one is published; else to the longest published topic whose name
+    followed by ``/`` begins it, the rest a field of its message (ros_comm's
+    ``_get_topic_type``: ``rostopic echo /odom/pose/pose`` subscribes to ``/odom``).
+    Such a subscription moves to that topic; one with no such topic stays as named."""
+    published = {topic.name: topic for topic in config.topics
+                 if UNKNOWN_MARK not in topic.name
+                 and any(link.kind == "publish" for link in topic.links)}
+    for made in config.links:
+        call = made.call
+        if made.kind != "subscribe" or call is None or not call.name_field or (
+                made.rosname.full in published or UNKNOWN_MARK in made.rosname.full):
+            continue
+        full = made.rosname.full
+        prefixes = [name for name in published if full.startswith(name.rstrip("/") + "/")]
+        if not prefixes:
+            continue
+        topic = published[max(prefixes, key=len)]
+        before = made.resource
+        before.links = [link for link in before.links if link is not made]
+        if not before.links and before in config.topics:
+            config.topics.remove(before)
+            resources.by_name.pop((Topic, before.name), None)
+        made.resource = topic
+        made.rosname = replace(made.rosname, full=topic.name,
+                               namespace=namespace_of(topic.name))
+        topic.links.append(made)
 
 
 def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagnostic]:

@@ -234,6 +234,11 @@ class PrimitiveCall:
     # parameter set, from 0 up to the first one not set, as the code reads them. ``WORDS``
     # (a space): each whitespace-separated word of a string parameter
     name_each: str | None = field(default=None, metadata={"optional": True})
+    # ROS 1 rostopic's echo, hz, delay and bw: the name may go on into a field of the
+    # message (``rostopic echo /odom/pose/pose``); the subscription is of the topic
+    # whose name is the longest part of it that is published, when no topic is named
+    # whole (``graph.build._field_watchers``)
+    name_field: bool = field(default=False, metadata={"optional": True})
     # a parameter write whose value is the process's K-th command-line argument, counted
     # as rclcpp counts what ``init_and_remove_ros_arguments`` leaves (0: the program; 1:
     # the first argument): topic_tools' relay sets ``input_topic`` from ``args.at(1)``.

@@ -483,8 +483,9 @@ def _rostopic_watch(decl: NodeDecl, verb: str, words: list[str]) -> Node | None:
     subscribes to nothing. ``echo`` then reads ``/use_sim_time`` and ``hz`` and ``delay``
     ``use_sim_time``, each with the default False. A name may go on into a field of the
     message (``echo /odom/pose/pose``), and rostopic then subscribes to the longest
-    part of it that is a topic when it runs; here the name is taken whole. None when
-    optparse or argparse refuses the words, or they are not known."""
+    part of it that is a published topic when it runs (``_get_topic_type``, for each
+    verb): the call says so (``name_field``), and the graph, which knows the topics,
+    chooses. None when optparse or argparse refuses the words, or they are not known."""
     values_of, parameter = ROSTOPIC_WATCHERS[verb]
     if any(UNKNOWN_MARK in word for word in words):
         return None
@@ -495,7 +496,7 @@ def _rostopic_watch(decl: NodeDecl, verb: str, words: list[str]) -> Node | None:
     calls: list[PrimitiveCall] = []
     if verb != "echo" or not (values.get("-b") or values.get("--bag")):
         calls = [PrimitiveCall("subscribe", topic, None, location=decl.location,
-                               origin="arguments") for topic in positional]
+                               origin="arguments", name_field=True) for topic in positional]
         if parameter is not None:
             calls.append(PrimitiveCall("read", parameter, "bool", location=decl.location,
                                        origin="arguments", has_default=True, default=False))

@@ -326,15 +326,18 @@ class ConditionReader:
                    for statement in rest for found in statement.walk_preorder()
                    for write in writes_of(found, self.source))
 
-    def required(self, node: Cursor, children: list[Cursor]) -> tuple[str, Cursor] | None:
+    def required(self, node: Cursor, children: list[Cursor], presence: bool = True
+                 ) -> tuple[str, Cursor] | None:
         """The side of the ``if`` ``node`` (with its children) that a parameter's
-        presence test makes required (``_required``), with the tested expression."""
+        presence test makes required (``_required``), with the tested expression;
+        ``presence`` False: whatever it tests (a count of failed reads, which the
+        caller follows to the reads)."""
         sides = self._sides(node, children)
-        side = self._required(children, sides) if sides is not None else None
+        side = self._required(children, sides, presence) if sides is not None else None
         return (side, sides[3]) if side is not None and sides is not None else None
 
-    def _required(self, children: list[Cursor], sides: tuple[int, bool, str, Cursor]
-                  ) -> str | None:
+    def _required(self, children: list[Cursor], sides: tuple[int, bool, str, Cursor],
+                  presence: bool = True) -> str | None:
         """Which side of an ``if`` (its children and ``_sides``) a parameter's presence
         test makes required: ``"if"`` when the ``else`` side fails (``if
         (nh.hasParam("x")) {..} else { ROS_ERROR(..); return false; }``), ``"else"`` when
@@ -343,7 +346,7 @@ class ConditionReader:
         exiting or logging an error: a bare ``return false;`` may be a fallback the
         caller takes."""
         then, has_else, text, _ = sides
-        if not _PRESENCE.search(text):
+        if presence and not _PRESENCE.search(text):
             return None
         if has_else and self._leaves(children[-1]) == "failed":
             return "if"

@@ -335,9 +335,16 @@ def origin_marked(text: str, origin: str | None) -> str:
     return ORIGIN_MARKS.get(origin or "", "") + text
 
 
+# unknown runs side by side: the values of two placeholders, each not known
+# (jsk_aerial_robot's sensor plugins: ``ros::NodeHandle(nh_, sensor_name +
+# std::to_string(index))``), are one unknown run, written once as ``render`` writes it
+_UNKNOWN_RUN = re.compile(r"\?{2,}")
+
+
 def _plain(text: str) -> str:
-    """A passed value without the marks of a handle's root or origin."""
-    return _MARKS.sub("", text)
+    """A passed value without the marks of a handle's root or origin, an unknown run
+    written once."""
+    return _UNKNOWN_RUN.sub("?", _MARKS.sub("", text))
 
 
 def _value(arg: Cursor, scope: Scope, namespaces: Namespaces,

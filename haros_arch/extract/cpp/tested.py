@@ -32,6 +32,16 @@ _OR = frozenset({"||", "or", "|", "bitor"})
 _ASSIGN = re.compile(r"^\s*=\s*$")
 _EQUALS = re.compile(r"^\s*(==|!=)\s*$")
 _NOT = re.compile(r"^\s*(!|\bnot\b)")
+# a compound assignment that gathers failed reads into a count or a flag: ``+=`` and
+# ``|=`` make it true (non-zero) with any operand that is, ``&=`` false with any false one
+_GATHER = re.compile(r"^\s*(\+=|\|=|&=|\bor_eq\b|\band_eq\b)\s*$")
+_COMPARE = re.compile(r"^\s*(==|!=|>=|<=|>|<)\s*$")
+# a comparison of a count with a number that says whether it is non-zero (``n > 0``,
+# ``n != 0``, ``n >= 1``; ``n == 0`` says it is zero), by operator and number, the count
+# on the left
+_NONZERO = {(">", 0): True, ("!=", 0): True, (">=", 1): True,
+            ("==", 0): False, ("<=", 0): False, ("<", 1): False}
+_MIRROR = {">": "<", "<": ">", ">=": "<=", "<=": ">=", "==": "==", "!=": "!="}
 # the functions the glog stand-in's CHECK, PCHECK, LOG_ASSERT and CHECK_ERR expand to:
 # each aborts the program when its argument is false. Not DCHECK's (``haros_dcheck``):
 # a release build (NDEBUG, as ROS packages are built) never evaluates its argument, so
@@ -64,6 +74,11 @@ class TestedCalls:
         # (!nh.getParam("x", x)) { ROS_ERROR(..); return false; }``): the parameter is
         # required, its absence not handled
         self.required: set[Key] = set()
+        # a variable that counts or flags the reads that found nothing (depthai_examples'
+        # ``badParams += !pnh.getParam("x", x);`` before ``if (badParams > 0) throw``,
+        # ``ok &= nh.getParam(..)``, ``if (!nh.getParam(..)) ++missing;``) -> the calls
+        # whose absence decides it, each with whether it is then true (non-zero)
+        self._markers: dict[Key, dict[Key, bool]] = {}
 
     def visit(self, node: Cursor) -> None:
         kind = node.kind
@@ -80,7 +95,16 @@ class TestedCalls:
             children = list(node.get_children())
             if children:
                 self._condition(children[0])
-            found = self.reader.required(node, children) if kind == CursorKind.IF_STMT else None
+            found = None
+            if kind == CursorKind.IF_STMT:
+                sides = self.reader._sides(node, children)
+                if sides is not None:
+                    self._marked_sides(children, sides[0], sides[1])
+                # a test of a count of failed reads names no read: the failing side it
+                # takes makes them required all the same
+                found = self.reader.required(node, children) or (self.reader.required(
+                    node, children, presence=False) if sides is not None
+                    and self._marks(sides[3]) else None)
             if found is not None:
                 side, tested = found
                 fails = side != "if"  # the test's value that takes the failing side
@@ -106,10 +130,105 @@ class TestedCalls:
                     self._condition(children[1])
                 elif self.reader._between(children[0], children[1], _ASSIGN):
                     self._hold(children[0].referenced, children[1])
+                    self._assign_marker(children[0], children[1])
+        elif kind == CursorKind.COMPOUND_ASSIGNMENT_OPERATOR:
+            children = list(node.get_children())
+            operator = self.reader._between(children[0], children[1], _GATHER) if len(
+                children) == 2 else ""
+            if operator:
+                self._gather(children[0], children[1], operator not in ("&=", "and_eq"))
         elif kind == CursorKind.VAR_DECL:
             children = [c for c in node.get_children() if c.kind.is_expression()]
             if children:
                 self._hold(node, children[-1])
+                held = key(node)
+                if held is not None:
+                    self._markers[held] = self._when_absent(children[-1])
+
+    def _variable(self, expr: Cursor) -> Key | None:
+        """The local or member a written expression names."""
+        expr = _strip(expr)
+        variable = expr.referenced if expr.kind in (
+            CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+        if variable is None or variable.kind not in (CursorKind.VAR_DECL,
+                                                     CursorKind.FIELD_DECL):
+            return None
+        return key(variable)
+
+    def _gather(self, target: Cursor, value: Cursor, truthy: bool) -> None:
+        """``target += value`` (``|=``: ``truthy``) or ``&=``: the calls whose absence
+        makes ``value`` true (false for ``&=``) make the variable so."""
+        held = self._variable(target)
+        if held is None:
+            return
+        marks = self._markers.setdefault(held, {})
+        marks.update({k: v for k, v in self._when_absent(value).items() if v == truthy})
+
+    def _assign_marker(self, target: Cursor, value: Cursor) -> None:
+        """``ok = ok && nh.getParam(..)``, ``failed = failed || !nh.getParam(..)``:
+        gathered as ``&=`` and ``|=``; another value replaces what the variable held."""
+        held = self._variable(target)
+        if held is None:
+            return
+        inner = _strip(value)
+        sides = list(inner.get_children()) if inner.kind == CursorKind.BINARY_OPERATOR else []
+        operator = self.reader._between(sides[0], sides[1], _LOGICAL) if len(sides) == 2 else ""
+        itself = [s for s in sides if self._variable(s) == held]
+        if operator and len(itself) == 1:
+            other = sides[1] if itself[0] == sides[0] else sides[0]
+            self._gather(target, other, operator in _OR)
+            return
+        self._markers[held] = self._when_absent(value)
+
+    def _marked_sides(self, children: list[Cursor], then_at: int, has_else: bool) -> None:
+        """``if (!nh.getParam("x", x)) { ROS_ERROR(..); ++missing; }``: the side of an
+        ``if`` (its children, the index of its ``then`` side, whether it has an
+        ``else``) that a read's absence takes marks what it writes there: ``++n``,
+        ``n++``, ``n += 1``, ``failed = true``, ``ok = false``."""
+        absent = self._when_absent(children[then_at - 1])
+        then = children[then_at]
+        other = children[-1] if has_else else None
+        for made, value in absent.items():
+            side = then if value else other
+            if side is None:
+                continue
+            statements = list(side.get_children()) if side.kind == CursorKind.COMPOUND_STMT \
+                else [side]
+            for statement in statements:
+                written = self._mark_written(statement)
+                if written is not None:
+                    self._markers.setdefault(written[0], {})[made] = written[1]
+
+    def _mark_written(self, statement: Cursor) -> tuple[Key, bool] | None:
+        """The variable a statement marks and whether it makes it true (non-zero)."""
+        statement = _strip(statement)
+        children = list(statement.get_children())
+        if statement.kind == CursorKind.UNARY_OPERATOR and len(children) == 1:
+            tokens = [t.spelling for t in statement.get_tokens()]
+            held = self._variable(children[0])
+            return (held, True) if held is not None and "++" in tokens else None
+        if len(children) != 2:
+            return None
+        held = self._variable(children[0])
+        literal = _literal(children[1])
+        if held is None or literal is None:
+            return None
+        if statement.kind == CursorKind.COMPOUND_ASSIGNMENT_OPERATOR:
+            operator = self.reader._between(children[0], children[1], _GATHER)
+            return (held, True) if operator in ("+=", "|=", "or_eq") and literal else None
+        if statement.kind == CursorKind.BINARY_OPERATOR and self.reader._between(
+                children[0], children[1], _ASSIGN):
+            return held, bool(literal)
+        return None
+
+    def _marks(self, tested: Cursor) -> bool:
+        """Whether an ``if``'s test reads a variable that marks failed reads."""
+        for node in tested.walk_preorder():
+            held = self._variable(node) if node.kind in (
+                CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR) else None
+            if held is not None and self._markers.get(held):
+                return True
+        return False
 
     def _when_absent(self, expr: Cursor) -> dict[Key, bool]:
         """The calls of a tested expression whose absence (the call false) decides its
@@ -130,6 +249,9 @@ class TestedCalls:
                 decided = operator in _OR  # the value an operand decides
                 return {k: v for side in sides for k, v in self._when_absent(side).items()
                         if v == decided}
+            counted = self._count_test(sides)
+            if counted is not None:
+                return counted
             literals = [s for s in sides if _strip(s).kind == CursorKind.CXX_BOOL_LITERAL_EXPR]
             between = self.reader._between(sides[0], sides[1], _EQUALS)
             if len(literals) != 1 or not between:
@@ -142,11 +264,34 @@ class TestedCalls:
             variable = expr.referenced
             held = key(variable) if variable is not None else None
             made = self._results.get(held) if held is not None else None
-            return {made: False} if made is not None else {}
+            if made is not None:
+                return {made: False}
+            return dict(self._markers.get(held, {})) if held is not None else {}
         if kind == CursorKind.CALL_EXPR:
             made = key(expr)
             return {made: False} if made is not None else {}
         return {}
+
+    def _count_test(self, sides: list[Cursor]) -> dict[Key, bool] | None:
+        """A comparison of a variable that marks failed reads with a number that says
+        whether it is non-zero (``badParams > 0``, ``0 != missing``): the marks, their
+        values turned as the test turns them; None for another expression."""
+        numbers = [_literal(s) for s in sides]
+        if numbers.count(None) != 1 or any(isinstance(n, bool) for n in numbers):
+            return None
+        at = numbers.index(None)
+        held = self._variable(sides[at])
+        if held is None or held not in self._markers:
+            return None
+        operator = self.reader._between(sides[0], sides[1], _COMPARE)
+        if not operator:
+            return None
+        operator = operator if at == 0 else _MIRROR[operator]
+        number = numbers[1 - at]
+        nonzero = _NONZERO.get((operator, number)) if isinstance(number, int) else None
+        if nonzero is None:
+            return None
+        return {k: v if nonzero else not v for k, v in self._markers[held].items()}
 
     def _is_not(self, node: Cursor) -> bool:
         text = self.reader._bytes(node.extent.start.file)
@@ -258,6 +403,21 @@ def _unwrap(expr: Cursor) -> Cursor | None:
             return expr if expr.kind == CursorKind.UNEXPOSED_EXPR and children else None
         expr = children[0]
     return None
+
+
+def _literal(expr: Cursor) -> int | bool | None:
+    """The value of an integer or ``bool`` literal (``1``, ``true``); None for
+    another expression."""
+    expr = _strip(expr)
+    if expr.kind == CursorKind.CXX_BOOL_LITERAL_EXPR:
+        return any(t.spelling == "true" for t in expr.get_tokens())
+    if expr.kind != CursorKind.INTEGER_LITERAL:
+        return None
+    tokens = [t.spelling for t in expr.get_tokens()]
+    try:
+        return int(tokens[0].rstrip("uUlL"), 0) if tokens else None
+    except ValueError:
+        return None
 
 
 def _strip(expr: Cursor) -> Cursor:

@@ -243,6 +243,8 @@ def topic_base(parts: Parts) -> str | None:
 # whether ``Scope.string`` gives a program argument as a ``ProgramArgument`` part (only
 # for a call's name, ``program_arguments``; other readers of parts know only None)
 _ARGUMENTS = [False]
+# a std::string as clang spells its canonical type
+_STD_STRING = re.compile(r"^(const )?std::(__\w+::)?basic_string<char\b")
 
 
 @contextmanager
@@ -593,6 +595,9 @@ class Scope:
         # ``test ? a : b`` (by its place) -> the side taken, while a name made of its
         # value is read once per side (``CallFinder._name_choice``)
         self.chosen: dict[tuple[str, int], bool] = {}
+        # a member taken to hold one of its values while a name made of it is read once
+        # per value (``member_choices``): its key -> that value
+        self.fixed: dict[tuple[str, int], Parts] = {}
         # a counting loop's variable (``for (int i = 1; i < 10; i++)``) -> the value of the
         # turn a call made in its body is read for (``CallFinder._emit_one``)
         self.bound: dict[tuple[str, int], int] = {}
@@ -735,6 +740,21 @@ class Scope:
                for start, end in self._regions):
             return None  # the assignment may not run before the read (amcl's map_topic_)
         return value
+
+    def _written_maybe(self, decl: Cursor, at: Cursor) -> bool:
+        """Whether this body writes member ``decl`` before ``at`` reads it only in
+        branches or loops the read is outside of (``if (n > 1) { robot_ = name; }``):
+        the read sees that write or what the member held before. A lambda's write runs
+        when the lambda is called, a callback's after start-up: not counted."""
+        _ = self.writes  # read from the body together
+        chain = _named(at) if at.kind == CursorKind.MEMBER_REF_EXPR else None
+        found = self._members.get(chain if chain is not None and len(chain) > 1
+                                  else key_of(decl))
+        where = at.extent.start.offset
+        return bool(found) and any(
+            offset < where and self._may_skip(offset, where) and not any(
+                first <= offset <= last for first, last in self._lambdas)
+            for offset, _value in found or ())
 
     def _overridden(self, decl: Cursor, at: Cursor, depth: int
                     ) -> tuple[bool, Cursor | None]:
@@ -943,6 +963,108 @@ class Scope:
                for first_, last in self._regions):
             return None  # a loop or a branch inside the side: not its one value
         return values[0], values[1], branch, side_of == children[1]
+
+    def member_choices(self, expr: Cursor, depth: int = 0
+                       ) -> tuple[Cursor, Parts, Parts, Cursor, bool] | None:
+        """The two values a member of this object that ``expr`` reads (itself, or
+        through the locals it reads) may hold there, when the one write of it outside
+        the class's constructors is this body's, in a side of an ``if`` the read is
+        after and outside of (DOBOT's ``if (robotNumber > 1) { kRobotName =
+        robotNodeName + "/"; }`` before ``kRobotName + "/dobot_bringup_ros2/srv/..."``):
+        what it held before (its constructor's value, its initialiser, or the empty
+        string a ``std::string`` is made with), known in full, and the side's: (the
+        member, those two values, that ``if``, whether the side is its ``then``). None
+        when not so, or more than one member is."""
+        if self.body is None or self.sites is None or depth > MAX_DEPTH:
+            return None
+        found: list[tuple[Cursor, Parts, Parts, Cursor, bool]] = []
+        seen: set[tuple[str, int]] = set()
+        for at in self._members_read(expr, depth):
+            decl = at.referenced
+            held = key_of(decl)
+            if held in seen:
+                continue
+            seen.add(held)
+            choice = self._member_choice(decl, at, depth)
+            if choice is not None:
+                found.append(choice)
+        return found[0] if len(found) == 1 else None
+
+    def _members_read(self, expr: Cursor, depth: int) -> list[Cursor]:
+        """The references to this object's members in ``expr`` and in the values of the
+        locals it reads (as ``written_before`` gives them)."""
+        out: list[Cursor] = []
+        for node in _walk(expr):
+            if node.kind == CursorKind.MEMBER_REF_EXPR and is_own_member(node):
+                out.append(node)
+            elif node.kind == CursorKind.DECL_REF_EXPR and depth < MAX_DEPTH and (
+                    node.referenced is not None
+                    and node.referenced.kind == CursorKind.VAR_DECL):
+                value = self.variable(node.referenced) or self.written_before(
+                    node.referenced, node, depth + 1)
+                if value is not None:
+                    out.extend(self._members_read(value, depth + 1))
+        return out
+
+    def _member_choice(self, decl: Cursor, at: Cursor, depth: int
+                       ) -> tuple[Cursor, Parts, Parts, Cursor, bool] | None:
+        assert self.body is not None and self.sites is not None
+        _ = self.writes  # read from the body together
+        here = self._members.get(key_of(decl))
+        where = at.extent.start.offset
+        if not here or len(here) != 1 or key_of(decl) in self._changed:
+            return None
+        offset, value = here[0]
+        if offset > where or not self._may_skip(offset, where):
+            return None
+        body = self.body.extent
+        writes = list(self.sites._writes_to(decl, (CursorKind.CONSTRUCTOR,
+                                                  CursorKind.DESTRUCTOR)))
+        if len(writes) != 1 or not (
+                writes[0].at.extent.start.file is not None and body.start.file is not None
+                and writes[0].at.extent.start.file.name == body.start.file.name
+                and body.start.offset <= writes[0].at.extent.start.offset <= body.end.offset):
+            return None  # another function writes it too: what it held is not known
+        around = [node for node in _walk(self.body) if node.kind == CursorKind.IF_STMT
+                  and node.extent.start.offset <= offset <= node.extent.end.offset
+                  and not node.extent.start.offset <= where <= node.extent.end.offset]
+        if not around:
+            return None
+        branch = max(around, key=lambda node: node.extent.start.offset)
+        children = list(branch.get_children())
+        if len(children) < 2:
+            return None
+        then = children[1].extent
+        side_of = children[1] if then.start.offset <= offset <= then.end.offset else (
+            children[2] if len(children) > 2 else None)
+        if side_of is None:
+            return None
+        low, high = side_of.extent.start.offset, side_of.extent.end.offset
+        if any(low <= first <= offset <= last <= high and (first, last) != (low, high)
+               for first, last in self._regions):
+            return None  # a loop or a branch inside the side: not its one value
+        before = self._entry_value(decl, depth)
+        side = self.string(value, depth + 1)
+        if before is None or None in before or before == side:
+            return None
+        return decl, before, side, branch, side_of == children[1]
+
+    def _entry_value(self, decl: Cursor, depth: int) -> Parts | None:
+        """What a member holds before the one function that writes it runs: what its
+        class's constructor or initialiser gives it, else the empty string of a
+        ``std::string`` made without a value; None when not known."""
+        assert self.sites is not None and self.body is not None
+        constructed = self.sites.member(decl, self.body)
+        if constructed is not None and _within(self.body, constructed[1]):
+            constructed = None  # this function, taken for an initialisation method
+        if constructed is not None and constructed[0] is not None:
+            return self.sites.scope(constructed[1]).string(constructed[0], depth + 1)
+        value = initializer(decl)
+        if value is not None:
+            return Scope(None, self.macros, self.source, self.sites).string(value, depth + 1)
+        if _STD_STRING.match(decl.type.get_canonical().spelling):
+            return ("",)
+        return None
 
     def branch_written(self, cursor: Cursor
                        ) -> tuple[Cursor, list[tuple[int, Cursor]]] | None:
@@ -1250,6 +1372,8 @@ class Scope:
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
+            if self.fixed and key_of(decl) in self.fixed:
+                return self.fixed[key_of(decl)]
             if _ARGUMENTS[0] and decl.kind in (CursorKind.FIELD_DECL, CursorKind.VAR_DECL):
                 option = option_held(cursor, decl, self.source)
                 if option is not None:  # ``case 'r': name = optarg;`` of a getopt loop
@@ -1421,6 +1545,10 @@ class Scope:
                 overridden, value = self._overridden(decl, cursor, depth)
                 if overridden:
                     return None if value is None else (value, self)
+                if self._written_maybe(decl, cursor):
+                    # what the constructor gave it, or this body's write in a branch
+                    # before the read (``member_choices`` gives a call per value)
+                    return None
         elif value is None and decl.kind == CursorKind.VAR_DECL:
             value = self.written_before(decl, cursor, depth)
         return (value, self) if value is not None else self.field(decl)
@@ -2441,6 +2569,14 @@ def _string_constant(decl: Cursor) -> bool:
     ctype = decl.type.get_canonical()
     return ctype.kind == TypeKind.POINTER and ctype.get_pointee().is_const_qualified() and (
         ctype.get_pointee().get_canonical().kind in (TypeKind.CHAR_S, TypeKind.CHAR_U))
+
+
+def _within(inner: Cursor, outer: Cursor) -> bool:
+    """Whether ``inner``'s text is inside ``outer``'s, in the same file."""
+    one, other = inner.extent, outer.extent
+    return one.start.file is not None and other.start.file is not None and (
+        one.start.file.name == other.start.file.name
+        and other.start.offset <= one.start.offset <= one.end.offset <= other.end.offset)
 
 
 def is_own_member(target: Cursor) -> bool:

@@ -2806,7 +2806,8 @@ class CallFinder:
         # (costmap_2d's searched key, or the fallback if the search finds nothing)
         choices = scope.written_choices(expr)
         if choices is None:
-            return self._branch_names(expr, scope) or [named]
+            return self._branch_names(expr, scope) or self._member_names(
+                expr, scope) or [named]
         first, side, branch, in_then = choices
         tested = next(iter(branch.get_children()))
         out: list[tuple[str, NameSource | None]] = []
@@ -2817,6 +2818,30 @@ class CallFinder:
                 branch, statement, tested),), len(parts) == 1 and isinstance(
                     parts[0], SearchedName)), None))
         return out
+
+    def _member_names(self, expr: Cursor, scope: Scope
+                      ) -> list[tuple[str, NameSource | None]] | None:
+        """A name made of a member that this function sets in a side of an ``if``
+        before, and that holds its first value otherwise (``Scope.member_choices``:
+        DOBOT's ``kRobotName``, set only ``if (robotNumber > 1)``): one name per value,
+        each under its side of that ``if``. None when not so."""
+        found = scope.member_choices(expr)
+        if found is None:
+            return None
+        member, before, side, branch, in_then = found
+        tested = next(iter(branch.get_children()))
+        out: list[tuple[str, NameSource | None]] = []
+        held = place_of(member)
+        for value, statement in ((before, "else" if in_then else "if"),
+                                 (side, "if" if in_then else "else")):
+            scope.fixed[held] = value
+            try:
+                parts = own_name(scope.string(expr))
+            finally:
+                del scope.fixed[held]
+            out.append((ChoiceName(render(parts), (self.reader.choice(
+                branch, statement, tested),), False), None))
+        return out if out[0][0] != out[1][0] else None
 
     def _branch_names(self, expr: Cursor, scope: Scope
                       ) -> list[tuple[str, NameSource | None]] | None:
