@@ -362,6 +362,17 @@ CATALOGUE: dict[str, Entry] = {
         "differs from the one declared (slam_toolbox_mode for slam_mode). Where an "
         "action the reader could not see may declare it, the condition is undecided "
         "instead (LAUNCH_UNKNOWN_VALUE)."),
+    "LAUNCH_ARG_UNUSED": Entry(
+        "warning", "launch argument {name} is declared but nothing in the launch reads "
+        "it: its value changes nothing{detail}",
+        "A ROS 2 DeclareLaunchArgument (or <arg>) whose configuration no substitution, "
+        "condition, include or function of the whole launch reads by name: the value "
+        "given on the command line or its default is ignored, and ros2 launch -s offers "
+        "an argument that does nothing. Usually the name differs from the one read "
+        "(raspimouse_slam_navigation_ros2 declared use_sim_tim and read "
+        "LaunchConfiguration('use_sim_time', default='False'), so its default True never "
+        "applied). Not said when part of the launch was not seen (an include not read, "
+        "a function not interpreted), which may read it."),
     "LAUNCH_NODE_ARG_PATH_MISSING": Entry(
         "warning", "node {name} is given the path {path} on its command line, which is "
         "not there",
