@@ -6,8 +6,9 @@ mycobot_ros2 83acce0's detect_marker.launch.py gave rviz2 ``-d`` its package's
 without it; waveshare's ugv_ws 5a6618a, Python's ``os.path.join`` of
 ``get_package_share_directory``, and the XML front end's ``$(find-pkg-share)`` the same.
 A file that is there, one with a part not known, one the build makes
-(``configure_file``) and one given to an option of output (map_saver_cli's ``-f``) are
-not said."""
+(``configure_file``), one in a folder that is not there (the launch file may make it and
+write the file: bitbots_main's domain bridge configurations) and one given to an option of
+output (map_saver_cli's ``-f``) are not said."""
 
 from __future__ import annotations
 
@@ -47,6 +48,8 @@ def generate_launch_description():
         Node(package='rviz2', executable='rviz2', name='rviz_unknown',
              arguments=['-d', PathJoinSubstitution([FindPackageShare('viz'), 'config',
                                                     LaunchConfiguration('other')])]),
+        Node(package='domain_bridge', executable='domain_bridge', name='bridge',
+             arguments=[os.path.join(share, 'config', 'made_at_launch', 'bridge.yaml')]),
         Node(package='nav2_map_server', executable='map_saver_cli', name='saver',
              arguments=['-f', os.path.join(share, 'maps', 'new_map')]),
     ])

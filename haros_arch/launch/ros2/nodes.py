@@ -71,12 +71,18 @@ def _installed(runner: Runner, path: str) -> str | None:
     """The source file a path of a node's command line stands for, a share folder's
     file read from what the package's build installs there (``share_source``); None
     for one the build makes (a file ``configure_file`` writes or an install rule takes
-    from the build folder), which no checkout holds."""
+    from the build folder), which no checkout holds, and for one in a folder that is
+    not there, which the launch file may make."""
     if generated_at(runner.workspace, path) is not None:
         return None
     source = share_source(runner.workspace, path)
     if os.path.lexists(source):
         return source
+    if not os.path.isdir(os.path.dirname(source)):
+        # a folder the package does not hold: the launch file may make it and write the
+        # file there before the node starts (bitbots_main's mujoco_simulation.launch.py
+        # writes config/domain_bridges/robot11_bridge.yaml, then hands it to the bridge)
+        return None
     return None if configured(runner.workspace, source) is not None else source
 
 
