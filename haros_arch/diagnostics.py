@@ -362,15 +362,28 @@ CATALOGUE: dict[str, Entry] = {
         "differs from the one declared (slam_toolbox_mode for slam_mode). Where an "
         "action the reader could not see may declare it, the condition is undecided "
         "instead (LAUNCH_UNKNOWN_VALUE)."),
+    "LAUNCH_ARG_UNUSED": Entry(
+        "warning", "launch argument {name} is declared but nothing in the launch reads "
+        "it: its value changes nothing{detail}",
+        "A ROS 2 DeclareLaunchArgument (or <arg>) whose configuration no substitution, "
+        "condition, include or function of the whole launch reads by name: the value "
+        "given on the command line or its default is ignored, and ros2 launch -s offers "
+        "an argument that does nothing. Usually the name differs from the one read "
+        "(raspimouse_slam_navigation_ros2 declared use_sim_tim and read "
+        "LaunchConfiguration('use_sim_time', default='False'), so its default True never "
+        "applied). Not said when part of the launch was not seen (an include not read, "
+        "a function not interpreted), which may read it."),
     "LAUNCH_NODE_ARG_PATH_MISSING": Entry(
         "warning", "node {name} is given the path {path} on its command line, which is "
         "not there",
-        "A ROS 1 node's args hold an absolute path into the workspace (most often made by "
-        "$(find pkg)/..., which is the package's own folder) that does not exist: the "
-        "program is started with a file it cannot open (gazebo_ros' range_world.launch "
-        "gave gzserver the world $(find gazebo_plugins)/test/test_worlds/"
-        "gazebo_ros_range.W()orld). A path with a part not known statically is not "
-        "judged."),
+        "A node's command line (a ROS 1 node's args, a ROS 2 node's arguments) holds an "
+        "absolute path into the workspace that does not exist: ROS 1's $(find pkg)/... is "
+        "the package's own folder, ROS 2's share folder holds what the package's build "
+        "installs, so the program is started with a file it cannot open (gazebo_ros' "
+        "range_world.launch gave gzserver the world $(find gazebo_plugins)/test/"
+        "test_worlds/gazebo_ros_range.W()orld; mycobot_ros2's detect_marker.launch.py "
+        "gave rviz2 -d its package's config/mypal_260.rviz). A path with a part not "
+        "known statically, or a file the build makes, is not judged."),
     "LAUNCH_INCLUDE_ABSOLUTE": Entry(
         "warning", "launch file {path} is included by an absolute path this file writes "
         "out; it is there only on the machine that wrote it",

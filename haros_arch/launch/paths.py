@@ -11,6 +11,11 @@ mistake ``absolute-paths-in-launch`` reports in parameter values and node argume
 from __future__ import annotations
 
 import os
+import re
+from collections.abc import Callable
+
+from ..model.values import UNKNOWN_MARK
+from ..workspace import Workspace
 
 # the folders of one machine: a user's home (Linux, macOS), an administrator's, mounts.
 # /opt and /usr hold installed software, which a ROS install shares across machines of
@@ -31,3 +36,53 @@ def written_absolute(path: str, includer: str | None) -> bool:
     except OSError:
         return False
     return path in text
+
+
+# options after which a path names a file the program writes (missing_argument_paths)
+_OUTPUT_OPTION = re.compile(r"-[oOfw]$|--?\w*(out|save|log|write|record|dump|prefix)\w*$",
+                            re.IGNORECASE)
+_OUTPUT_KEY = re.compile(r"out|save|log|write|record|dump|prefix", re.IGNORECASE)
+
+
+def missing_argument_paths(words: list[str], workspace: Workspace,
+                           installed: Callable[[str], str | None] | None = None
+                           ) -> list[str]:
+    """The absolute paths among a node's command-line words (a word, or what follows
+    the ``=`` of ``--world=PATH`` or the ``:=`` of ``name:=PATH``) that lie in a
+    workspace folder and are not there: ROS 1's ``$(find pkg)/...`` gives the
+    package's own folder, so such a file is missing where the node runs as well
+    (gazebo_ros' range_world.launch handed gzserver ``$(find gazebo_plugins)/test/
+    test_worlds/gazebo_ros_range.W()orld``). ROS 2's share folder holds what the
+    package's build installs: ``installed`` gives the source file a path of it stands
+    for (``share.share_source``), or None for a file the build makes, which is not
+    judged (mycobot_ros2's detect_marker.launch.py gave rviz2 ``-d`` its package's
+    ``config/mypal_260.rviz``, not there). A word with an unknown part, or in a git
+    submodule not checked out here, is not judged; nor is one the program may write,
+    given to an option of output (map_saver's ``-f $(find pkg)/maps/new``, rosbag's
+    ``-O``, ``--log_file=...``, ``_save_path:=...``)."""
+    missing: list[str] = []
+    for at, word in enumerate(words):
+        candidates = [word]
+        for sep in (":=", "="):
+            if sep in word:
+                key, value = word.split(sep, 1)
+                if _OUTPUT_KEY.search(key.lstrip("-_")):
+                    candidates = []
+                else:
+                    candidates.append(value)
+                break
+        if at and _OUTPUT_OPTION.match(words[at - 1]):
+            candidates = []
+        for candidate in candidates:
+            path = candidate.strip("'\"")
+            if not path.startswith(os.sep) or UNKNOWN_MARK in path:
+                continue
+            source: str | None = os.path.normpath(path)
+            if installed is not None:
+                source = installed(source)  # type: ignore[arg-type]
+            if source is None or not workspace.holds(source):
+                continue
+            if not os.path.exists(source) and workspace.submodule_of(source) is None \
+                    and source not in missing:
+                missing.append(source)
+    return missing

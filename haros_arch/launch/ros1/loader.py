@@ -34,7 +34,7 @@ from ..model import (
     found_nowhere,
     shell_words,
 )
-from ..paths import written_absolute
+from ..paths import missing_argument_paths, written_absolute
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .scope import Scope, canonical, global_ns
@@ -591,7 +591,7 @@ class Ros1Loader:
                                   param.location, param.source, param.command)
         full = inner.ns + name
         location = self.where(scope, element)
-        for path in missing_argument_paths(args, self.workspace):
+        for path in missing_argument_paths(args.split(), self.workspace):
             self.report("LAUNCH_NODE_ARG_PATH_MISSING", scope, element,
                         path=self.workspace.relpath(path), name=name or executable)
         for key, value in argument_params(args):
@@ -819,47 +819,6 @@ class Ros1Loader:
         scope.stack = (*scope.stack, key)
         self.children(root, scope)
         return True
-
-
-# options after which a path names a file the program writes (missing_argument_paths)
-_OUTPUT_OPTION = re.compile(r"-[oOfw]$|--?\w*(out|save|log|write|record|dump|prefix)\w*$",
-                            re.IGNORECASE)
-_OUTPUT_KEY = re.compile(r"out|save|log|write|record|dump|prefix", re.IGNORECASE)
-
-
-def missing_argument_paths(args: str, workspace: Workspace) -> list[str]:
-    """The absolute paths among a node's command-line words (a word, or what follows
-    the ``=`` of ``--world=PATH`` or the ``:=`` of ``name:=PATH``) that lie in a
-    workspace folder and are not there: ``$(find pkg)/...`` gives the package's own
-    folder, so such a file is missing where the node runs as well (gazebo_ros'
-    range_world.launch handed gzserver ``$(find gazebo_plugins)/test/test_worlds/
-    gazebo_ros_range.W()orld``). A word with an unknown part, or in a git submodule
-    not checked out here, is not judged; nor is one the program may write, given to an
-    option of output (map_saver's ``-f $(find pkg)/maps/new``, rosbag's ``-O``,
-    ``--log_file=...``, ``_save_path:=...``)."""
-    missing: list[str] = []
-    words = args.split()
-    for at, word in enumerate(words):
-        candidates = [word]
-        for sep in (":=", "="):
-            if sep in word:
-                key, value = word.split(sep, 1)
-                if _OUTPUT_KEY.search(key.lstrip("-_")):
-                    candidates = []
-                else:
-                    candidates.append(value)
-                break
-        if at and _OUTPUT_OPTION.match(words[at - 1]):
-            candidates = []
-        for candidate in candidates:
-            path = candidate.strip("'\"")
-            if not path.startswith(os.sep) or UNKNOWN_MARK in path \
-                    or not workspace.holds(os.path.normpath(path)):
-                continue
-            if not os.path.exists(path) and workspace.submodule_of(path) is None \
-                    and path not in missing:
-                missing.append(path)
-    return missing
 
 
 def argument_params(args: str) -> list[tuple[str, Any]]:

@@ -128,6 +128,7 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
                             workspace.location(path), namespace="/")
     runner.model.tree.append(scope.item)
     runner.run_file(path, scope, workspace.location(path))
+    runner.unused_arguments()
     sections_for_no_node(runner)
     model = runner.model
     for name, value in (args or {}).items():

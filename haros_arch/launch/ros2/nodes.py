@@ -19,8 +19,9 @@ from ... import safe_yaml
 from ...files import read_text
 from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Value
-from ...share import share_source
+from ...share import configured, generated_at, share_source
 from ..model import ForeignSections
+from ..paths import missing_argument_paths
 from . import entities as e
 from . import naming
 from .runner import make_param, node_decl
@@ -66,6 +67,25 @@ def _rewritten(runner: Runner, ev: Evaluator, arguments: list[e.Text], scope: Sc
     return found
 
 
+def _installed(runner: Runner, path: str) -> str | None:
+    """The source file a path of a node's command line stands for, a share folder's
+    file read from what the package's build installs there (``share_source``); None
+    for one the build makes (a file ``configure_file`` writes or an install rule takes
+    from the build folder), which no checkout holds, and for one in a folder that is
+    not there, which the launch file may make."""
+    if generated_at(runner.workspace, path) is not None:
+        return None
+    source = share_source(runner.workspace, path)
+    if os.path.lexists(source):
+        return source
+    if not os.path.isdir(os.path.dirname(source)):
+        # a folder the package does not hold: the launch file may make it and write the
+        # file there before the node starts (bitbots_main's mujoco_simulation.launch.py
+        # writes config/domain_bridges/robot11_bridge.yaml, then hands it to the bridge)
+        return None
+    return None if configured(runner.workspace, source) is not None else source
+
+
 def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
     where = action.location
     ev = runner.evaluator(scope, where)
@@ -100,6 +120,10 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         or scope.namespace is not None))
     runner.model.nodes[-1].rewritten_files = _rewritten(runner, ev, action.arguments,
                                                         scope, where)
+    for path in missing_argument_paths(plain, runner.workspace,
+                                       lambda p: _installed(runner, p)):
+        runner.report("LAUNCH_NODE_ARG_PATH_MISSING", where,
+                      path=runner.workspace.relpath(path), name=full)
     if not action.split:  # one word per argument: a Command's output is one of them
         runner.model.nodes[-1].arg_commands = {
             index: line for index, argument in enumerate(action.arguments[:len(plain)])

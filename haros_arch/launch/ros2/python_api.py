@@ -484,6 +484,15 @@ def if_condition(negate: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         expr = arg(a, k, 0, "predicate_expression")
         source = ast.unparse(n.args[0]) if isinstance(n, ast.Call) and n.args else "?"
+        if isinstance(expr, (bool, int, float)) or expr is None:
+            # launch normalises the predicate to substitutions: a str, a substitution or
+            # an iterable of them; anything else raises when the condition is made
+            # (amigo_ros2's IfCondition(mode == 'pose_collection'), ``mode`` a
+            # LaunchConfiguration: Python's False)
+            kind = "IfCondition" if not negate else "UnlessCondition"
+            return i.failed(n, f"{kind}({source}) fails: TypeError: its predicate is "
+                            f"{expr!r}, a {type(expr).__name__}, where launch takes text "
+                            "or substitutions", "TypeError")
         return e.Cond(to_text(expr), negate, source)
     return build
 

@@ -83,6 +83,13 @@ def _fails_for_sure(value: Any, key: Any) -> bool:
     return not isinstance(value, dict) or not open_keys(value)
 
 
+
+# Python's sign of each binary operator (``binop``'s TypeError of a launch object)
+_OPERATOR_SIGNS: dict[type, str] = {
+    ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.FloorDiv: "//",
+    ast.Mod: "%", ast.Pow: "**", ast.BitAnd: "&", ast.BitOr: "|", ast.BitXor: "^",
+    ast.LShift: "<<", ast.RShift: ">>", ast.MatMult: "@"}
+
 class Expressions(Walker):
     """The expression half of ``Interpreter`` (statements and calls live there)."""
 
@@ -318,6 +325,17 @@ class Expressions(Walker):
                         self.placed(_unknown_part(left), node)]),
                     *(right if isinstance(right, list) else [
                         self.placed(_unknown_part(right), node)])]
+        if (isinstance(left, (e.Cond, e.Action)) or isinstance(right, (e.Cond, e.Action))) \
+                and not (isinstance(left, Unknown) or isinstance(right, Unknown)):
+            # launch's conditions and actions define no operator: Python raises
+            # (amigo_ros2's ``IfCondition(a) & IfCondition(b)``; ``all`` of conditions,
+            # launch's AndSubstitution, is what combines them)
+            sign = _OPERATOR_SIGNS.get(type(op), type(op).__name__)
+            kinds = " and ".join(dict.fromkeys(
+                "a launch condition" if isinstance(x, e.Cond) else "a launch action"
+                if isinstance(x, e.Action) else type(x).__name__ for x in (left, right)))
+            return self.failed(node, f"{_source(node)} fails: TypeError: unsupported "
+                               f"operand type(s) for {sign}: {kinds}", "TypeError")
         if isinstance(left, Unknown) or isinstance(right, Unknown):
             return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (

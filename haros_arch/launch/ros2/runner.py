@@ -96,6 +96,16 @@ class Scope:
                        params=list(self.params), environment=dict(self.environment))
 
 
+def near_name(name: str, other: str) -> bool:
+    """Whether ``other`` is most likely ``name`` misspelt: at most one edit per four
+    letters and never more than two (``query.absence.distance``, the similar-name
+    rule's measure, as ``Workspace.misspelt`` takes it)."""
+    from ...query.absence import MAX_DISTANCE, distance
+    limit = min(MAX_DISTANCE, len(name) // 4)
+    return name != other and limit >= 1 and abs(len(name) - len(other)) <= limit and (
+        distance(name, other) <= limit)
+
+
 @dataclass
 class IncludeFrame:
     """An include being performed: what its file and the files it includes in turn
@@ -217,6 +227,11 @@ class Runner:
         # output, which robot descriptions read (``nodes.command_line``)
         self.command_outputs: list[tuple[Unknown, str]] = []
         self.includes: list[IncludeFrame] = []  # the includes being performed, innermost last
+        # the whole run's (``unused_arguments``): each argument declared, where; the
+        # launch configurations read by name; the first part not seen, if any
+        self.declared_args: list[tuple[str, Location]] = []
+        self.all_read: set[str] = set()
+        self.all_hidden = ""
         # the values of the ForEach / ForLoop iterations being performed, innermost last
         # (launch's context locals, which ``$(for-var)`` / ``$(index)`` read); None for
         # an iteration whose values are not known statically
@@ -240,6 +255,7 @@ class Runner:
     def config_read(self, name: str) -> None:
         """A launch configuration read by name (``LaunchConfiguration``, ``$(var)``,
         ``context.launch_configurations``): the includes being performed use it."""
+        self.all_read.add(name)
         for frame in self.includes:
             frame.read.add(name)
 
@@ -283,6 +299,7 @@ class Runner:
             text = f"{what} ({where.file}:{where.line})" if where is not None else what
         else:
             text = f"{what.code} at {what.location.file}:{what.location.line}"
+        self.all_hidden = self.all_hidden or text
         for frame in self.includes:
             if not frame.hidden:
                 frame.hidden = text
@@ -490,6 +507,7 @@ class Runner:
 
     def do_DeclareArg(self, action: e.DeclareArg, scope: Scope) -> None:
         self.config_declared(action.name)
+        self.declared_args.append((action.name, action.location))
         self.record_arg(action, scope)
         if action.name in scope.configs:
             return
@@ -501,6 +519,27 @@ class Runner:
         if len(self.stack) == 1:
             value = scope.configs[action.name]
             self.model.args[action.name] = value.text if value is not None else None
+
+    def unused_arguments(self) -> None:
+        """Each launch argument declared that nothing of the whole launch reads by name,
+        said once where it is declared, LAUNCH_ARG_UNUSED: its value, the default or the
+        command line's, changes nothing (raspimouse_slam_navigation_ros2's
+        pc_navigation.launch.py declared ``use_sim_tim`` and read
+        ``LaunchConfiguration('use_sim_time', default='False')``). Nothing is said when
+        a part of the launch was not seen (an include not read, a function not
+        interpreted, a configuration of a name not known): it may read any of them."""
+        if self.all_hidden:
+            return
+        said: set[str] = set()
+        for name, where in self.declared_args:
+            if name in self.all_read or name in said:
+                continue
+            said.add(name)
+            near = sorted(n for n in self.all_read if n not in dict(self.declared_args)
+                          and near_name(name, n))
+            self.report("LAUNCH_ARG_UNUSED", where, name=name, detail=(
+                f"; a configuration of a near name is read and never declared: "
+                f"{', '.join(near)}" if near else ""))
 
     def record_arg(self, action: e.DeclareArg, scope: Scope) -> None:
         """The argument on the tree, unless the including file gave it already."""
@@ -611,11 +650,13 @@ class Runner:
             return
         said, used = len(self.model.diagnostics), len(self.model.package_uses)
         hidden = [frame.hidden for frame in self.includes]
+        all_hidden = self.all_hidden
         path = self.value(action.path, scope, action.location)
         del self.model.diagnostics[said:]
         del self.model.package_uses[used:]
         for frame, was in zip(self.includes, hidden, strict=True):
             frame.hidden = was
+        self.all_hidden = all_hidden
         if path is not None and path.literal is not None and path.literal.strip():
             self.model.include_patterns.append(re.escape(os.path.abspath(path.literal)))
 
