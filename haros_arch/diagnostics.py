@@ -363,16 +363,28 @@ CATALOGUE: dict[str, Entry] = {
         "action the reader could not see may declare it, the condition is undecided "
         "instead (LAUNCH_UNKNOWN_VALUE)."),
     "LAUNCH_ARG_UNUSED": Entry(
-        "warning", "launch argument {name} is declared but nothing in the launch reads "
-        "it: its value changes nothing{detail}",
+        "info", "launch argument {name} is declared but nothing in the launch reads it: "
+        "its value changes nothing",
         "A ROS 2 DeclareLaunchArgument (or <arg>) whose configuration no substitution, "
         "condition, include or function of the whole launch reads by name: the value "
         "given on the command line or its default is ignored, and ros2 launch -s offers "
-        "an argument that does nothing. Usually the name differs from the one read "
+        "an argument that does nothing. Mostly a leftover of a copied launch file, "
+        "harmless; where a configuration of a near name is read and never declared it is "
+        "most likely a misspelling, LAUNCH_ARG_MISSPELT. Not said when part of the launch "
+        "was not seen (an include not read, a function not interpreted), when the name "
+        "is written anywhere else in the launch files performed (an action the reader "
+        "does not interpret may read it), nor for an argument a library's launch helper "
+        "declares (moveit_configs_utils'), which the file calling it does not write."),
+    "LAUNCH_ARG_MISSPELT": Entry(
+        "warning", "launch argument {name} is declared but nothing in the launch reads it, "
+        "and a configuration of a near name is read and never declared: {near}",
+        "A ROS 2 DeclareLaunchArgument (or <arg>) nothing reads, beside a launch "
+        "configuration of a near name that is read and that nothing declares: one of the "
+        "two names is most likely misspelt, so the declared default and any value given "
+        "on the command line never reach what reads the other "
         "(raspimouse_slam_navigation_ros2 declared use_sim_tim and read "
         "LaunchConfiguration('use_sim_time', default='False'), so its default True never "
-        "applied). Not said when part of the launch was not seen (an include not read, "
-        "a function not interpreted), which may read it."),
+        "applied and nav2 ran on wall time)."),
     "LAUNCH_NODE_ARG_PATH_MISSING": Entry(
         "warning", "node {name} is given the path {path} on its command line, which is "
         "not there",

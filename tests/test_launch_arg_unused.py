@@ -1,10 +1,13 @@
 """A ROS 2 launch argument declared that nothing of the whole launch reads by name is
-said, LAUNCH_ARG_UNUSED (warning), where it is declared: raspimouse_slam_navigation_ros2
-e71c388's pc_navigation.launch.py declared ``use_sim_tim`` (default True) and read
+said where it is declared: LAUNCH_ARG_MISSPELT (warning) when a configuration of a near
+name is read and never declared (raspimouse_slam_navigation_ros2 e71c388's
+pc_navigation.launch.py declared ``use_sim_tim`` (default True) and read
 ``LaunchConfiguration('use_sim_time', default='False')``, so nav2 and rviz2 ran on wall
-time. An argument read by an included file, or only under a condition that does not
-hold, is used; nothing is said when a part of the launch is not seen (an include of a
-file not read), which may read it."""
+time), else LAUNCH_ARG_UNUSED (info). An argument read by an included file, or only
+under a condition that does not hold, is used; nothing is said when a part of the launch
+is not seen (an include of a file not read), nor when the name is written elsewhere in
+the files performed, where an action not interpreted may read it (slam_toolbox's
+``EmitEvent(ChangeState(...), condition=IfCondition(autostart))``)."""
 
 from __future__ import annotations
 
@@ -31,6 +34,7 @@ def generate_launch_description():
         DeclareLaunchArgument('robot', default_value='mouse'),
         DeclareLaunchArgument('rviz', default_value='false'),
         DeclareLaunchArgument('rviz_file', default_value='view.rviz'),
+        DeclareLaunchArgument('leftover', default_value='1'),
         IncludeLaunchDescription(PythonLaunchDescriptionSource(os.path.join(
             get_package_share_directory(INCLUDED), 'launch', 'inner.launch.py'))),
         Node(package='rviz2', executable='rviz2', condition=IfCondition(
@@ -59,16 +63,55 @@ def _said(write_tree, included: str) -> list[tuple[str, int]]:
                        "src/demo/launch/inner.launch.py": INNER})
     ws = scan([str(root / "src")], {})
     model = load(str(root / "src/demo/launch/top.launch.py"), ws, {}, {})
-    return [(d.message, d.location.line) for d in model.diagnostics
-            if d.code == "LAUNCH_ARG_UNUSED"]
+    return [(d.code, d.severity, d.message, d.location.line) for d in model.diagnostics
+            if d.code in ("LAUNCH_ARG_UNUSED", "LAUNCH_ARG_MISSPELT")]
 
 
 def test_declared_argument_nothing_reads_is_said(write_tree) -> None:
     assert _said(write_tree, "demo") == [
-        ("launch argument use_sim_tim is declared but nothing in the launch reads it: its "
-         "value changes nothing; a configuration of a near name is read and never "
-         "declared: use_sim_time", 14)]
+        ("LAUNCH_ARG_MISSPELT", "warning", "launch argument use_sim_tim is declared but "
+         "nothing in the launch reads it, and a configuration of a near name is read and "
+         "never declared: use_sim_time", 14),
+        ("LAUNCH_ARG_UNUSED", "info", "launch argument leftover is declared but nothing in "
+         "the launch reads it: its value changes nothing", 18)]
 
 
 def test_not_said_when_an_include_is_not_read(write_tree) -> None:
     assert _said(write_tree, "not_here") == []
+
+
+LIFECYCLE = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, EmitEvent
+from launch.conditions import IfCondition
+from launch.events import matches_action
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import LifecycleNode
+from launch_ros.events.lifecycle import ChangeState
+from lifecycle_msgs.msg import Transition
+
+
+def generate_launch_description():
+    autostart = LaunchConfiguration('autostart')
+    node = LifecycleNode(package='demo', executable='talker', name='talker', namespace='')
+    configure = EmitEvent(
+        event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                          transition_id=Transition.TRANSITION_CONFIGURE),
+        condition=IfCondition(autostart))
+    return LaunchDescription([
+        DeclareLaunchArgument('autostart', default_value='true'),
+        DeclareLaunchArgument('spare', default_value='true'),
+        node, configure])
+"""
+
+
+def test_not_said_of_a_name_written_where_an_action_not_interpreted_may_read_it(
+        write_tree) -> None:
+    root = write_tree({"src/demo/package.xml": package_xml("demo", "ament_python"),
+                       "src/demo/launch/life.launch.py": LIFECYCLE})
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/demo/launch/life.launch.py"), ws, {}, {})
+    assert [(d.code, d.message) for d in model.diagnostics
+            if d.code.startswith("LAUNCH_ARG_")] == [
+        ("LAUNCH_ARG_UNUSED", "launch argument spare is declared but nothing in the launch "
+         "reads it: its value changes nothing")]

@@ -318,9 +318,9 @@ def test_an_action_attribute_launch_does_not_read_fails_the_launch(write_tree):
         </launch>
         """)
     found = sorted((d.code, d.location.line, d.severity) for d in model.diagnostics)
-    # (the argument map, which nothing reads, is said too: LAUNCH_ARG_UNUSED)
-    assert found == [("LAUNCH_ARG_UNUSED", 2, "warning"),
-                     ("LAUNCH_UNEXPECTED_ATTRIBUTE", 2, "error"),
+    # (the argument map, which nothing reads, is not LAUNCH_ARG_UNUSED: its name is
+    # written again, in its help text)
+    assert found == [("LAUNCH_UNEXPECTED_ATTRIBUTE", 2, "error"),
                      ("LAUNCH_UNEXPECTED_ATTRIBUTE", 3, "error"),
                      ("LAUNCH_UNKNOWN_ATTRIBUTE", 4, "warning")]
     assert "required=" in next(d for d in model.diagnostics if d.location.line == 3).message

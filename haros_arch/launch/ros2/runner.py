@@ -231,6 +231,8 @@ class Runner:
         # launch configurations read by name; the first part not seen, if any
         self.declared_args: list[tuple[str, Location]] = []
         self.all_read: set[str] = set()
+        # the launch files performed, by the name a location gives them -> their path
+        self.performed_files: dict[str, str] = {}
         self.all_hidden = ""
         # the values of the ForEach / ForLoop iterations being performed, innermost last
         # (launch's context locals, which ``$(for-var)`` / ``$(index)`` read); None for
@@ -447,6 +449,7 @@ class Runner:
         if actions is None:
             return
         self.model.files.append(self.workspace.relpath(path))
+        self.performed_files.setdefault(self.workspace.relpath(path), path)
         self.stack.append(path)
         outer = scope.file
         scope.file = reached
@@ -522,24 +525,44 @@ class Runner:
 
     def unused_arguments(self) -> None:
         """Each launch argument declared that nothing of the whole launch reads by name,
-        said once where it is declared, LAUNCH_ARG_UNUSED: its value, the default or the
-        command line's, changes nothing (raspimouse_slam_navigation_ros2's
-        pc_navigation.launch.py declared ``use_sim_tim`` and read
-        ``LaunchConfiguration('use_sim_time', default='False')``). Nothing is said when
-        a part of the launch was not seen (an include not read, a function not
-        interpreted, a configuration of a name not known): it may read any of them."""
+        said once where it is declared: LAUNCH_ARG_MISSPELT (a warning) when a
+        configuration of a near name is read and never declared
+        (raspimouse_slam_navigation_ros2's pc_navigation.launch.py declared
+        ``use_sim_tim`` and read ``LaunchConfiguration('use_sim_time',
+        default='False')``), else LAUNCH_ARG_UNUSED (an info: a leftover, harmless).
+        Nothing is said when a part of the launch was not seen (an include not read, a
+        function not interpreted, a configuration of a name not known), nor when the
+        name is written in the launch files performed anywhere but where it is declared:
+        an action the reader performs only in part (ros_gz_bridge's XML tag, whose
+        ``container_name="$(var container_name)"`` it does not read) or not at all
+        (slam_toolbox's ``EmitEvent(..., condition=IfCondition(autostart))``) may read
+        it. An argument a library's launch helper declares (moveit_configs_utils'
+        ``monitor_dynamics``), whose name the file calling it does not write, is not
+        the user's to remove."""
         if self.all_hidden:
             return
+        texts: dict[str, str] = {}
+        for name_of, path in self.performed_files.items():
+            text, _ = read_text(path, Location(file=name_of))
+            texts[name_of] = text or ""
+        declared = {n for n, _ in self.declared_args}
         said: set[str] = set()
         for name, where in self.declared_args:
             if name in self.all_read or name in said:
                 continue
             said.add(name)
-            near = sorted(n for n in self.all_read if n not in dict(self.declared_args)
+            written = re.compile(rf"(?<!\w){re.escape(name)}(?!\w)")
+            sites = {(w.file, w.line) for n, w in self.declared_args if n == name}
+            if not all(written.search(texts.get(file or "", "")) for file, _ in sites):
+                continue  # declared by code the user does not write
+            if sum(len(written.findall(text)) for text in texts.values()) > len(sites):
+                continue  # written elsewhere: perhaps read by what is not interpreted
+            near = sorted(n for n in self.all_read if n not in declared
                           and near_name(name, n))
-            self.report("LAUNCH_ARG_UNUSED", where, name=name, detail=(
-                f"; a configuration of a near name is read and never declared: "
-                f"{', '.join(near)}" if near else ""))
+            if near:
+                self.report("LAUNCH_ARG_MISSPELT", where, name=name, near=", ".join(near))
+            else:
+                self.report("LAUNCH_ARG_UNUSED", where, name=name)
 
     def record_arg(self, action: e.DeclareArg, scope: Scope) -> None:
         """The argument on the tree, unless the including file gave it already."""
