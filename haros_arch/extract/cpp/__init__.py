@@ -2076,6 +2076,8 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     if package is not None and package.root:
         read.append(manifest_of(package.root))
     declared = _visible(package, workspace, read) if package is not None else set()
+    # the unit's package's own dependencies first, then those it reaches through them
+    direct = {d.name for d in package.dependencies} if package is not None else set()
     known: dict[tuple[str, str], bool] = {}
 
     def one(name: str, cls: str) -> bool:
@@ -2097,7 +2099,8 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
             # robot_model_loader::RobotModelLoader reaches the unit through a
             # dependency named moveit_* (moveit_ros_planning_interface brings
             # moveit_ros_planning's headers): that dependency's, when it may make calls
-            return next((d for d in sorted(declared) if (
+            return next((d for d in sorted(declared, key=lambda d: (
+                d != name, d not in direct, d)) if (
                 d == name or d.startswith(name + "_")) and one(d, cls)), None)
         if name in declared or name in workspace.packages:
             return name if one(name, cls) else None
