@@ -1062,3 +1062,21 @@ def test_a_class_of_a_missing_header_s_folder_of_a_dependency(write_tree: Any) -
         "robot_model_loader::RobotModelLoader", "loader::RobotModelLoader"),
         "moveit_ros_planning_interface")
     assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_missing_header_s_class_is_of_the_unit_s_own_dependency_first(
+        write_tree: Any) -> None:
+    # a workspace library exports moveit_a_adapter, which the unit reaches too: the
+    # class is said of the dependency the unit's package names itself
+    model = _model(write_tree, {
+        "src/helper/package.xml": _depends("helper", "roscpp", "moveit_a_adapter"),
+        "src/helper/CMakeLists.txt": "project(helper)\n",
+        "src/teleop/package.xml": _depends("teleop", "roscpp", "helper",
+                                           "moveit_ros_planning_interface"),
+        "src/teleop/CMakeLists.txt": "project(teleop)\nadd_executable(teleop src/teleop.cpp)\n",
+        "src/teleop/src/teleop.cpp": EVALUATOR,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "teleop/teleop")
+    assert any("robot_model_loader::RobotModelLoader of ROS package "
+               "moveit_ros_planning_interface is built here" in r
+               for r in node.completeness_reasons), node.completeness_reasons
