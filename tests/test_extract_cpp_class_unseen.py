@@ -1026,3 +1026,57 @@ def test_joint_limits_from_the_urdf_read_no_parameter(write_tree: Any) -> None:
             "max_jerk", "max_effort", "has_position_limits", "angle_wraparound",
             "has_velocity_limits", "has_acceleration_limits", "has_jerk_limits",
             "has_effort_limits"))])
+
+
+# mobipick's kinematics_speed_and_validity_evaluator builds MoveIt's RobotModelLoader,
+# whose kinematics plugin loader reads ~<group>/kinematics_solver and its siblings on a
+# handle of its own; the header is moveit_ros_planning's, which the package reaches only
+# through moveit_ros_planning_interface, and the namespace robot_model_loader names no
+# package: the node was complete and the launch file's solver parameters "unread"
+EVALUATOR = """
+    #include <string>
+    #include <moveit/robot_model_loader/robot_model_loader.h>
+    #include <ros/ros.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "evaluator");
+      robot_model_loader::RobotModelLoader rml("robot_description");
+      ros::spin();
+    }
+    """
+
+
+def test_a_class_of_a_missing_header_s_folder_of_a_dependency(write_tree: Any) -> None:
+    node, _ = _teleop(write_tree, EVALUATOR, "moveit_ros_planning_interface", "moveit_msgs")
+    assert node.completeness == "partial"
+    assert any(r.startswith("teleop/src/teleop.cpp:7:")
+               and "robot_model_loader::RobotModelLoader of ROS package "
+               "moveit_ros_planning_interface is built here" in r
+               for r in node.completeness_reasons), node.completeness_reasons
+    # no dependency begins with the header's folder: a vendor's library, as before
+    node, _ = _teleop(write_tree, EVALUATOR.replace("<moveit/", "<vendor/"),
+                      "moveit_ros_planning_interface")
+    assert node.completeness == "complete", node.completeness_reasons
+    # the namespace is none of the header's folders: not tied to it
+    node, _ = _teleop(write_tree, EVALUATOR.replace(
+        "robot_model_loader::RobotModelLoader", "loader::RobotModelLoader"),
+        "moveit_ros_planning_interface")
+    assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_a_missing_header_s_class_is_of_the_unit_s_own_dependency_first(
+        write_tree: Any) -> None:
+    # a workspace library exports moveit_a_adapter, which the unit reaches too: the
+    # class is said of the dependency the unit's package names itself
+    model = _model(write_tree, {
+        "src/helper/package.xml": _depends("helper", "roscpp", "moveit_a_adapter"),
+        "src/helper/CMakeLists.txt": "project(helper)\n",
+        "src/teleop/package.xml": _depends("teleop", "roscpp", "helper",
+                                           "moveit_ros_planning_interface"),
+        "src/teleop/CMakeLists.txt": "project(teleop)\nadd_executable(teleop src/teleop.cpp)\n",
+        "src/teleop/src/teleop.cpp": EVALUATOR,
+    })
+    node = next(n for p in model.packages for n in p.nodes if n.name == "teleop/teleop")
+    assert any("robot_model_loader::RobotModelLoader of ROS package "
+               "moveit_ros_planning_interface is built here" in r
+               for r in node.completeness_reasons), node.completeness_reasons

@@ -164,7 +164,7 @@ from launch_ros.actions import Node
 
 
 def bridge_config(robot):
-    path = f"/tmp/{robot}_bridge.yaml"
+    path = f"/var/lib/robots/{robot}_bridge.yaml"
     with open(path, 'w') as out:
         yaml.dump([{'ros_topic_name': robot + '/scan'}], out)
     return path
@@ -175,7 +175,7 @@ def generate_launch_description():
     for robot in ['tb1', 'tb3']:
         nodes.append(Node(package='nav', executable='bridge', name=robot + '_bridge',
                           parameters=[{'config_file': bridge_config(robot),
-                                       'calibration': '/tmp/calib/camera.yaml'}]))
+                                       'calibration': '/var/lib/calib/camera.yaml'}]))
     return LaunchDescription(nodes)
 """
 
@@ -184,7 +184,8 @@ def test_a_file_the_launch_file_writes_is_not_hard_coded(write_tree):
     """tb3_multi_robot's tb3_world.launch.py writes each robot's bridge configuration to
     ``/tmp/<robot>_bridge.yaml`` (``open(path, 'w')``, not run) and gives the bridge that
     path: a file made on the machine that runs the launch, not one of the author's
-    (survey F). A path it only reads stays hard-coded, in /tmp too."""
+    (survey F). /tmp is a scratch folder anyway; here the file is written under /var. A
+    path it only reads stays hard-coded."""
     root = write_tree({
         "src/nav/package.xml": package_xml("nav", "ament_cmake"),
         "src/nav/CMakeLists.txt": "project(nav)\n",
@@ -232,3 +233,42 @@ def test_the_words_of_an_xml_comment_are_no_path(write_tree):
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
     (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
     assert [f.entities for f in run_rule(rule, model)] == [("parameter:/other_description",)]
+
+
+SYSTEM_FOLDERS_LAUNCH = """
+<launch>
+  <node name="ekf" pkg="nav" type="ekf" args="--port /dev/ttyUSB0 --log /tmp/ekf.log">
+    <param name="debug_out_file" value="/tmp/robot_localization_debug.txt" />
+    <param name="cache" value="/var/tmp/nav/cache.yaml" />
+    <param name="lock" value="/run/nav/nav.json" />
+    <param name="gpio" value="/sys/class/gpio/gpio17/value.txt" />
+    <param name="stat" value="/proc/self/status.txt" />
+    <param name="device" value="/dev/serial/by-id/usb-FTDI.cfg" />
+    <param name="escape" value="/tmp/../home/alice/calib.yaml" />
+    <param name="tmp_like" value="/tmpdata/calib.yaml" />
+    <param name="calibration" value="/home/alice/ws/calib.yaml" />
+  </node>
+  <node name="driver" pkg="nav" type="driver" args="/home/alice/ws/driver.yaml" />
+</launch>
+"""
+
+
+def test_scratch_device_and_kernel_folders_are_no_machine_s_paths(write_tree):
+    """robot_localization's launch files give ``debug_out_file:
+    /tmp/robot_localization_debug.txt`` (a file ekf writes when ``debug`` is true; survey
+    R, nono): /tmp, /var/tmp, /run, /dev (``/dev/ttyUSB0``), /proc and /sys are the same
+    folders on every Linux machine, no path of the author's. A user's home still is,
+    also reached through ``..`` or behind a name that only begins like /tmp."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/ekf.launch": SYSTEM_FOLDERS_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/ekf.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    reloaded = from_data(json.loads(json.dumps(model_to_data(model))))
+    for found in (run_rule(rule, model), run_rule(rule, reloaded)):
+        assert sorted(f.entities for f in found) == [
+            ("node:/driver",), ("parameter:/ekf/calibration",),
+            ("parameter:/ekf/escape",), ("parameter:/ekf/tmp_like",)]

@@ -246,9 +246,16 @@ def package_not_found(package: str) -> Value:
     return Value.unknown(_NOT_FOUND + package)
 
 
-def found_nowhere(value: Value) -> bool:
-    """Whether every unknown part of ``value`` is such a folder (``package_not_found``):
-    an include of such a path is not said again."""
+# the origin of a ROS 1 ``$(env NAME)`` whose variable the configuration does not set
+_ENV_UNSET = "env "
+
+
+def found_nowhere(value: Value, environment: bool = False) -> bool:
+    """Whether every unknown part of ``value`` is such a folder (``package_not_found``),
+    or, with ``environment``, a variable the configuration does not set (ROS 1's
+    ``$(env NAME)``, which says so where it is substituted): an include of such a path
+    is not said again."""
+    causes = (_NOT_FOUND, _ENV_UNSET) if environment else (_NOT_FOUND,)
     unknown = [p for p in value.parts if isinstance(p, Unknown)]
-    return bool(unknown) and all(p.origin.startswith(_NOT_FOUND) for p in unknown)
+    return bool(unknown) and all(p.origin.startswith(causes) for p in unknown)
 

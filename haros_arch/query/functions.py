@@ -6,6 +6,7 @@ through ``charge``, so they cannot be used to escape the limits.
 
 from __future__ import annotations
 
+import posixpath
 import re
 from collections import deque
 from collections.abc import Callable, Iterable
@@ -282,8 +283,14 @@ FUNCTIONS["group_by"] = Function("group_by", group_by, 2, 2, charged=True)
 
 
 # ``/Users/``: a macOS home, as ``/home/`` is Linux's (voxblox's eval launch files)
-_PATH_PREFIXES = ("/home/", "/opt/", "/usr/", "/tmp/", "/mnt/", "/media/", "/root/",
+_PATH_PREFIXES = ("/home/", "/opt/", "/usr/", "/mnt/", "/media/", "/root/",
                   "/var/", "/etc/", "/srv/", "/Users/")
+# folders every Linux machine has with the same meaning, whatever was installed or who
+# uses it: scratch space for files a run writes (robot_localization's ``debug_out_file``
+# ``/tmp/robot_localization_debug.txt``), the run's sockets and locks, and the kernel's
+# devices (``/dev/ttyUSB0``) and views of the system (``/proc``, ``/sys``). A path there
+# names the same thing on the robot as on the author's machine: no portability mistake.
+_SYSTEM_FOLDERS = ("/tmp/", "/var/tmp/", "/run/", "/var/run/", "/dev/", "/proc/", "/sys/")
 _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json", ".pgm",
                   ".png", ".bag", ".db3", ".csv", ".txt", ".so", ".py", ".cfg", ".ini")
 
@@ -306,6 +313,8 @@ def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
     for word in _XML_COMMENT.sub(" ", value).replace("=", " ").split():
         word = word.strip("'\"")
         if any(word.startswith(folder) or word == folder[:-1] for folder in folders):
+            continue
+        if posixpath.normpath(word).startswith(_SYSTEM_FOLDERS):
             continue
         if word.startswith(_PATH_PREFIXES) or (
                 word.startswith("/") and word.lower().endswith(_FILE_SUFFIXES)):

@@ -64,7 +64,7 @@ from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names, owner_of
 from .values import PLACEHOLDER
-from .visitor import OTHER_WRITES, STATIC, WORDS, CallFinder, known_name
+from .visitor import OTHER_WRITES, STATIC, WORDS, CallFinder, header_folder, known_name
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
@@ -1808,9 +1808,13 @@ def _translation_unit(path: str, text: str, ros2: bool,
         # the header of the names declared permissively, when this parse has them
         declared = os.path.join(setup.generated, synthesis.HEADER_NAME) if any(
             d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
+        # the headers the unit includes that are empty stand-ins: a class declared
+        # permissively may be of the package one of them names (``CallFinder._unseen_of``)
+        missing = [] if clients is None else _missing_headers(tu, setup)
         finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
                             clients=clients, local=local,
-                            ros_class=ros_classes(path, workspace, read))
+                            ros_class=ros_classes(path, workspace, read),
+                            missing_headers=missing)
         finder.run()
         places = _Places(finder, source)
         hidden = _hidden(path, errors, places, fieldless, workspace)
@@ -2072,6 +2076,8 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
     if package is not None and package.root:
         read.append(manifest_of(package.root))
     declared = _visible(package, workspace, read) if package is not None else set()
+    # the unit's package's own dependencies first, then those it reaches through them
+    direct = {d.name for d in package.dependencies} if package is not None else set()
     known: dict[tuple[str, str], bool] = {}
 
     def one(name: str, cls: str) -> bool:
@@ -2081,11 +2087,21 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
                                                  read)
         return found
 
-    def client(name: str, cls: str, unread: bool = False) -> str | None:
+    def client(name: str, cls: str, unread: bool = False, header: bool = False
+               ) -> str | None:
         if unread:
             # a class our stand-ins declare without reading its code (HAROS_UNREAD:
             # costmap_2d's Costmap2DROS): the package's, when the unit may include it
             return name if name in declared else None
+        if header:
+            # ``name`` begins a missing header the class is declared in, by folder:
+            # MoveIt's <moveit/robot_model_loader/robot_model_loader.h>, whose
+            # robot_model_loader::RobotModelLoader reaches the unit through a
+            # dependency named moveit_* (moveit_ros_planning_interface brings
+            # moveit_ros_planning's headers): that dependency's, when it may make calls
+            return next((d for d in sorted(declared, key=lambda d: (
+                d != name, d not in direct, d)) if (
+                d == name or d.startswith(name + "_")) and one(d, cls)), None)
         if name in declared or name in workspace.packages:
             return name if one(name, cls) else None
         parts = cls.split("::")
@@ -2705,6 +2721,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
     def mine(unit: TranslationUnit) -> list[_Error]:
         return [e for e in _errors(unit) if e.name is not None and owned(e.name)]
 
+    if clients is not None:
+        clients = _by_header(clients, _missing_headers(tu, setup))
     first = mine(tu)
     before = len(first)
     facts = _header_facts(setup)
@@ -2826,6 +2844,28 @@ def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
         return found[scope]
 
     return declared
+
+
+def _missing_headers(tu: TranslationUnit, setup: IncludeSetup) -> list[str]:
+    """The headers ``tu`` includes that are empty stand-ins, as included."""
+    return [h for h in dict.fromkeys(setup.empty_stand_in(os.path.abspath(i.include.name))
+                                     for i in tu.get_includes()) if h is not None]
+
+
+def _by_header(clients: Callable[..., str | None], headers: list[str]
+               ) -> Callable[..., str | None]:
+    """``clients``, and for a class it takes for no package's, the dependency a missing
+    header the class is declared in names by its first folder (``header_folder``)."""
+    if not headers:
+        return clients
+
+    def client(name: str, cls: str, unread: bool = False) -> str | None:
+        found = clients(name, cls, unread)
+        if found is not None or unread:
+            return found
+        top = header_folder(cls, headers)
+        return None if top is None else clients(top, cls, header=True)
+    return client
 
 
 def _hiding(tu: TranslationUnit, errors: list[_Error],

@@ -1312,23 +1312,30 @@ class IncludeSetup:
         first."""
         found: list[Diagnostic] = []
         seen: set[str] = set()
-        roots = (self.generated + os.sep, self.overflow + os.sep)
         for path, where in includes:
-            if path in seen or not path.startswith(roots) or (
-                    self.prepared is not None and path in self.prepared):
+            if path in seen or (self.prepared is not None and path in self.prepared):
                 continue
             seen.add(path)
-            text = self.written.get(path)
-            if text is None:
-                try:
-                    with open(path, encoding="utf-8", errors="replace") as handle:
-                        text = handle.read(len(_EMPTY_MARK) + 512)
-                except OSError:
-                    continue
-            if text.startswith(_EMPTY_MARK):
-                header = text[len(_EMPTY_MARK):].partition(_EMPTY_END)[0]
+            header = self.empty_stand_in(path)
+            if header is not None:
                 found.append(diag.make("CPP_INCLUDE_MISSING", where(), header=header))
         return found
+
+    def empty_stand_in(self, path: str) -> str | None:
+        """The header as included (``moveit/robot_model_loader/robot_model_loader.h``)
+        when ``path`` is an empty stand-in a parse made for it (``repair``), else None."""
+        if not path.startswith((self.generated + os.sep, self.overflow + os.sep)):
+            return None
+        text = self.written.get(path)
+        if text is None:
+            try:
+                with open(path, encoding="utf-8", errors="replace") as handle:
+                    text = handle.read(len(_EMPTY_MARK) + 512)
+            except OSError:
+                return None
+        if not text.startswith(_EMPTY_MARK):
+            return None
+        return text[len(_EMPTY_MARK):].partition(_EMPTY_END)[0]
 
     def repair(self, messages: list[tuple[str, Location]]) -> bool:
         """Create what clang reported as not found; True when a new parse may help."""

@@ -13,8 +13,9 @@ from __future__ import annotations
 import dataclasses
 import functools
 import itertools
+import os
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type, TypeKind, conf
@@ -382,6 +383,20 @@ def _value_method(call: Cursor, children: list[Cursor]) -> bool:
 Source = tuple[str, str | None, str | None]
 
 
+
+def header_folder(name: str, headers: Sequence[str]) -> str | None:
+    """The first folder of one of the missing ``headers`` (as included) in whose path,
+    below that folder, the first part of the namespace of the class ``name`` is a folder
+    or the file's stem: ``moveit`` for ``robot_model_loader::RobotModelLoader`` and
+    ``<moveit/robot_model_loader/robot_model_loader.h>`` (MoveIt's headers share one
+    folder over several packages, each class in a namespace named as its folder)."""
+    first = name.lstrip(":").split("::", 1)[0]
+    for header in headers:
+        parts = header.split("/")
+        if len(parts) >= 2 and first in {*parts[1:-1], os.path.splitext(parts[-1])[0]}:
+            return parts[0]
+    return None
+
 class CallFinder:
     """Collects the primitive calls and the node name of one translation unit."""
 
@@ -390,8 +405,12 @@ class CallFinder:
                  ros2: bool = False, declared: str | None = None,
                  clients: Callable[..., str | None] | None = None,
                  local: Callable[[str], bool] | None = None,
-                 ros_class: Callable[[str], bool] | None = None) -> None:
+                 ros_class: Callable[[str], bool] | None = None,
+                 missing_headers: Sequence[str] = ()) -> None:
         self.tu = tu
+        # ROS 1: the headers the unit includes that are empty stand-ins, as included
+        # (``_header_package``)
+        self.missing_headers = missing_headers
         # whether a class the parse knows only as a name declared permissively
         # (qualified) may be a ROS package's, whose code may make ROS calls
         # (``extract.cpp.ros_classes``); None: any may
@@ -1670,6 +1689,10 @@ class CallFinder:
         if name in _API_CLASSES or qualified_name(row_class(cls)) in _API_CLASSES:
             return None
         found = self.clients(package, name)
+        if not found and where.name == self.declared:
+            top = header_folder(name, self.missing_headers)
+            if top is not None:
+                found = self.clients(top, name, header=True)
         return (name, found) if found else None
 
     def _to_unknown(self, call: Cursor, function: Cursor | None = None) -> None:

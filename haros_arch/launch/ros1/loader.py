@@ -666,7 +666,7 @@ class Ros1Loader:
                 self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
                     f"launch file {relative!r} is a relative path, opened from the "
                     "folder roslaunch runs in; it is not read"))
-            elif path is None or not found_nowhere(path):
+            elif path is None or not found_nowhere(path, environment=True):
                 self.report("LAUNCH_UNSUPPORTED", scope, element, detail=(
                     f"include file \"{element.get('file')}\" is not known statically"))
             ns = self.text(element, "ns", scope)
