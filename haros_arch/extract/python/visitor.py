@@ -1228,7 +1228,10 @@ class Walker:
                 # one call per turn of the value the configuration gives it
                 name, _, start = params[0].removeprefix(TURN_OF).partition(TURN_FROM)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
-                call.name_each = counted_mark(int(start), False)
+                turn = re.fullmatch(r"(\d+)([+-]\d+)?", start)
+                if turn is not None:
+                    first, shift = turn.groups("0")
+                    call.name_each = counted_mark(int(first), False, int(shift))
             elif len(params) == 1 and params[0].startswith(PROGRAM_ARGUMENT):
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``
