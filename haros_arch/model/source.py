@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 from typing import Any, ClassVar, Literal
 
@@ -100,27 +101,37 @@ def loaded_mark(container: str, method: str, cast: str | None = None) -> str:
 # loop whose bound is an integer parameter (``name_param``), its ``?`` the loop variable
 # as decimal text: COUNTED, the first value, and "=" when the last is the bound itself
 # (``i <= n``); ego-planner's ``for (int i = 0; i < waypoint_num_; i++)
-# nh.param("fsm/waypoint" + to_string(i) + "_x", ...)`` is "<0" on ``fsm/waypoint_num``
+# nh.param("fsm/waypoint" + to_string(i) + "_x", ...)`` is "<0" on ``fsm/waypoint_num``.
+# A name made of the variable plus a constant (denso_robot_control's ``ss << "joint_" <<
+# i + 1``) ends with that constant, signed: "<0+1"
 COUNTED = "<"
 
 
-def counted_mark(start: int, inclusive: bool) -> str:
+def counted_mark(start: int, inclusive: bool, shift: int = 0) -> str:
     """``PrimitiveCall.name_each`` of a counting loop from ``start`` (``COUNTED``), up to
-    its bound, that value too when ``inclusive`` (``i <= n``)."""
-    return f"{COUNTED}{start}{'=' if inclusive else ''}"
+    its bound, that value too when ``inclusive`` (``i <= n``); the name holds the
+    variable plus ``shift``."""
+    return (f"{COUNTED}{start}{'=' if inclusive else ''}"
+            + (f"{shift:+d}" if shift else ""))
 
 
 def counted_turns(each: str, bound: object, limit: int) -> range | None:
-    """The values a counting loop (``COUNTED``) takes for the bound ``bound``; None when
+    """The values a name made of a counting loop's variable (``COUNTED``) holds, one per
+    turn, for the bound ``bound`` (the variable's, shifted as the mark says); None when
     ``each`` is no such mark, the bound is no integer, or there are more than
     ``limit``."""
     if not each.startswith(COUNTED) or isinstance(bound, bool) or not isinstance(bound, int):
         return None
-    start, inclusive = each[len(COUNTED):].rstrip("="), each.endswith("=")
-    if not start.isdigit():
+    match = _COUNTED_MARK.fullmatch(each[len(COUNTED):])
+    if match is None:
         return None
-    turns = range(int(start), bound + 1 if inclusive else bound)
+    start, shift = int(match.group(1)), int(match.group(3) or 0)
+    turns = range(start + shift, (bound + 1 if match.group(2) else bound) + shift)
     return turns if len(turns) <= limit else None
+
+
+# what follows ``COUNTED`` in a mark: the first value, "=", the shift (``counted_mark``)
+_COUNTED_MARK = re.compile(r"(\d+)(=?)([+-]\d+)?")
 # the start of a ``PrimitiveCall.name_param`` that is no ROS parameter but a child element
 # of a Gazebo classic plugin's SDF (``sdf:topicName``), which robot.attach fills in from
 # the robot description

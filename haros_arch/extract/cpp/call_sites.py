@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from clang.cindex import Cursor, CursorKind, LinkageKind, Type, TypeKind, conf
 
 from . import api, msg_types
+from .cursors import overloads
 from .expressions import NULL_POINTERS, is_default_argument, lost_class, qualified_name, strip
 from .synthesis import ANY as ANY_CLASS
 from .values import (
@@ -991,7 +992,7 @@ def callee_of(call: Cursor) -> Cursor | None:
     its defaults)."""
     target = call.referenced
     if target is None:
-        return _dependent_maker(call)
+        return _dependent_maker(call) or _dependent_function(call)
     if target.kind not in _CALLABLE:
         return None
     if target.spelling not in _MAKERS or target.kind == CursorKind.CONSTRUCTOR:
@@ -1046,6 +1047,25 @@ def _dependent_maker(call: Cursor) -> Cursor | None:
     args = written_arguments(call)
     found = closest([c for c in decl.get_children() if c.kind == CursorKind.CONSTRUCTOR
                      and _takes(c, len(args))], args)
+    return found[0] if len(found) == 1 else None
+
+
+def _dependent_function(call: Cursor) -> Cursor | None:
+    """In a template, a call of a free function (template) whose arguments depend on a
+    template parameter is no call clang resolves (joint_trajectory_controller's
+    ``getSegmentTolerances<Scalar>(tol_nh, joint_names_)`` with ``Scalar`` its segment's):
+    the one function the name was looked up to that takes that many arguments."""
+    children = list(call.get_children())
+    if not children:
+        return None
+    head = children[0]
+    refs = [c for c in (head, *head.get_children()) if c.kind == CursorKind.OVERLOADED_DECL_REF]
+    if len(refs) != 1:
+        return None
+    args = written_arguments(call)
+    found = closest([d for d in overloads(refs[0]) if d is not None
+                     and d.kind in (CursorKind.FUNCTION_DECL, CursorKind.FUNCTION_TEMPLATE)
+                     and _takes(d, len(args))], args)
     return found[0] if len(found) == 1 else None
 
 

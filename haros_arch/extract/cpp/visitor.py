@@ -2186,21 +2186,17 @@ class CallFinder:
             variable, start, inclusive, bound = found
             if variable in scope.bound or not self._named_by_turn(name, scope, variable, start):
                 continue
-            scope.bound[variable] = start
-            try:
-                whole = _known(scope.string(name))
-            finally:
-                del scope.bound[variable]
+            shift = self._turn_shift(name, scope, variable, start)
             source = self._parameter_source(bound, scope, 0, value=True)
             param = _held_name(source)
-            if not whole or param is None:
+            if shift is None or param is None:
                 continue
             each = dataclasses.replace(loop, statement=EACH_STATEMENT)
             made = len(self.calls)
             self._emit_one(spec, call, args, cls,
                            tuple(each if c is loop else c for c in conditions), scope,
                            at, at_scope)
-            mark = counted_mark(start, inclusive)
+            mark = counted_mark(start, inclusive, shift)
             for index in range(made, len(self.calls)):
                 done = self.calls[index]
                 if done.name.count("?") == 1 and done.name_param is None:
@@ -2210,6 +2206,38 @@ class CallFinder:
                                                             name_each=mark)
             return True
         return False
+
+    @staticmethod
+    def _turn_shift(name: Cursor, scope: Scope, key: tuple[str, int], start: int) -> int | None:
+        """What the one unknown run of the name ``name`` holds is the counting loop's
+        variable ``key`` plus this, as decimal text (0 for ``to_string(i)``, 1 for
+        denso_robot_control's ``ss << "joint_" << i + 1``), read from the names of the
+        turns ``start`` and the next; None when the name is not known in full for a
+        turn, or its run is no such value (``2 * i``, ``names[i]``)."""
+        parts = scope.string(name)
+        if sum(part is None for part in parts) != 1 or not _known(
+                tuple(part for part in parts if part is not None)):
+            return None
+        index = parts.index(None)
+        head = "".join(part or "" for part in parts[:index])
+        tail = "".join(part or "" for part in parts[index + 1:])
+        held: list[int] = []
+        for turn in (start, start + 1):
+            scope.bound[key] = turn
+            try:
+                turned = scope.string(name)
+            finally:
+                del scope.bound[key]
+            if not _known(turned):
+                return None
+            text = "".join(part or "" for part in turned)
+            run = text[len(head):len(text) - len(tail)]
+            if not (text.startswith(head) and text.endswith(tail)
+                    and len(text) >= len(head) + len(tail)
+                    and re.fullmatch(r"-?\d+", run)):
+                return None
+            held.append(int(run) - turn)
+        return held[0] if held[0] == held[1] else None
 
     @staticmethod
     def _named_by_turn(name: Cursor, scope: Scope, key: tuple[str, int], turn: int) -> bool:

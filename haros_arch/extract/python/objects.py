@@ -108,10 +108,11 @@ class ParamTurn:
     """The variable of a counting loop up to an integer parameter's value (``for i in
     range(rospy.get_param('~waypoint_num'))``): a call named by it is one call per turn
     of the value the configuration gives ``name`` (``PrimitiveCall.name_each``
-    ``COUNTED``), from ``start``."""
+    ``COUNTED``), from ``start``; ``shift`` is a constant added to it (``i + 1``)."""
 
     name: str
     start: int = 0
+    shift: int = 0
 
 
 @dataclass(frozen=True)
@@ -279,7 +280,8 @@ def text_of(value: object) -> Value:
         field = "" if value.field == "." else f"{FIELD_OF}{value.field}"
         return Value.unknown(f"{ELEMENT_OF}{value.name}{field}")
     if isinstance(value, ParamTurn):
-        return Value.unknown(f"{TURN_OF}{value.name}{TURN_FROM}{value.start}")
+        return Value.unknown(f"{TURN_OF}{value.name}{TURN_FROM}{value.start}"
+                             + (f"{value.shift:+d}" if value.shift else ""))
     return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
 
 

@@ -16,6 +16,7 @@ The evaluator's parts: ``scopes`` (names and loops), ``calls`` (argument binding
 from __future__ import annotations
 
 import ast
+import dataclasses
 from dataclasses import replace
 from typing import Any, NoReturn
 
@@ -44,6 +45,7 @@ from .objects import (
     ParamElement,
     ParameterClient,
     ParamObject,
+    ParamTurn,
     ParamValue,
     ProgramArgs,
     ProgramOptions,
@@ -258,6 +260,9 @@ class Evaluator(Instances, QoSProfiles, Walker):
                 return Seq((*left.items, right))
             if isinstance(left, Unknown) and isinstance(right, Seq):
                 return Seq((left, *right.items))
+        turned = _shifted_turn(expr.op, left, right)
+        if turned is not None:
+            return turned
         if isinstance(expr.op, ast.Mod) and isinstance(left, Value):
             items = right.items if isinstance(right, Seq) else (right,)
             return percent(left, items)
@@ -688,3 +693,15 @@ def _parser_options(receiver: ast.expr, tree: ast.Module,
                         and isinstance(k.value.value, str)), None)
         found.setdefault(dest, (" ".join(flags), default))
     return tuple((dest, flags, default) for dest, (flags, default) in found.items())
+
+
+def _shifted_turn(op: ast.operator, left: object, right: object) -> ParamTurn | None:
+    """A counting loop's variable plus or minus a literal integer (``i + 1``, ``1 + i``,
+    ``i - 1``): the variable shifted by it; None for any other operation."""
+    if isinstance(op, ast.Add) and isinstance(right, ParamTurn) and type(left) is int:
+        left, right = right, left
+    if not (isinstance(left, ParamTurn) and type(right) is int
+            and isinstance(op, ast.Add | ast.Sub)):
+        return None
+    step = right if isinstance(op, ast.Add) else -right
+    return dataclasses.replace(left, shift=left.shift + step)

@@ -1176,6 +1176,14 @@ class Walker:
             if declared_type is not None:
                 # declare_parameter('port', Parameter.Type.STRING): a type, no value
                 base.type = declared_type
+            elif spec.kind == "declare" and (value_expr is None or _none(value_expr)) and (
+                    _descriptor(argument(call, Arg(2, "descriptor"))) is not None):
+                # declare_parameter(name, [None,] descriptor=ParameterDescriptor(..)):
+                # rclpy's get_parameter of it, unset, returns a NOT_SET parameter (value
+                # None) when the descriptor says dynamic_typing=True, and raises for a
+                # statically typed one, as any other descriptor declares (with no
+                # descriptor, rclpy makes the parameter dynamically typed)
+                base.has_default = _descriptor(argument(call, Arg(2, "descriptor"))) is True
             elif value_expr is not None and spec.kind in ("read", "declare"):
                 base.has_default = True
                 base.default = plain_value(value)
@@ -1220,7 +1228,10 @@ class Walker:
                 # one call per turn of the value the configuration gives it
                 name, _, start = params[0].removeprefix(TURN_OF).partition(TURN_FROM)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
-                call.name_each = counted_mark(int(start), False)
+                turn = re.fullmatch(r"(\d+)([+-]\d+)?", start)
+                if turn is not None:
+                    first, shift = turn.groups("0")
+                    call.name_each = counted_mark(int(first), False, int(shift))
             elif len(params) == 1 and params[0].startswith(PROGRAM_ARGUMENT):
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``
@@ -1625,6 +1636,23 @@ def _iterated_members(module: Module) -> set[str]:
         module.iterated_members = {
             member for value in walked if (member := _self_member(value)) is not None}
     return module.iterated_members
+
+
+def _none(expr: ast.expr) -> bool:
+    return isinstance(expr, ast.Constant) and expr.value is None
+
+
+def _descriptor(expr: ast.expr | None) -> bool | None:
+    """Whether ``expr``, written ``ParameterDescriptor(...)``, says ``dynamic_typing=True``;
+    None when it is no such call (a variable, nothing)."""
+    if not isinstance(expr, ast.Call):
+        return None
+    func = expr.func
+    name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+    if name != "ParameterDescriptor":
+        return None
+    return any(k.arg == "dynamic_typing" and isinstance(k.value, ast.Constant)
+               and k.value.value is True for k in expr.keywords)
 
 
 def _resolved(value: object) -> tuple[Value, str | None] | None:

@@ -1832,7 +1832,10 @@ public:
   istream& operator>>(char& c);
   istream& ignore(long n = 1, int delim = -1);
   int get();
+  istream& get(char& c);
   int peek();
+  istream& putback(char c);
+  istream& unget();
   istream& read(char* s, long n);
   istream& seekg(long pos);
   istream& seekg(long off, ios_base::seekdir dir);

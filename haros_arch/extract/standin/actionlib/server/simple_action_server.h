@@ -11,7 +11,7 @@ namespace actionlib {
 class SimpleClientGoalState {
 public:
   enum StateEnum { PENDING, ACTIVE, RECALLED, REJECTED, PREEMPTED, ABORTED, SUCCEEDED, LOST };
-  SimpleClientGoalState(StateEnum state);
+  SimpleClientGoalState(StateEnum state, const std::string& text = std::string(""));
   StateEnum state_;
   std::string toString() const;
   std::string getText() const;
