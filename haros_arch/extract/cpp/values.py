@@ -943,10 +943,20 @@ class Scope:
         values = [self.string(first, depth + 1), self.string(side, depth + 1)]
         if any(None in parts for parts in values) or values[0] == values[1]:
             return None
-        # the innermost ``if`` the side's write is in and the read is not
+        found_side = self._side_written(start, where)
+        if found_side is None:
+            return None
+        return values[0], values[1], *found_side
+
+    def _side_written(self, write: int, read: int) -> tuple[Cursor, bool] | None:
+        """The innermost ``if`` of the body a write at offset ``write`` is in and a read
+        at ``read`` is not, and whether the write is in its ``then``; None when there is
+        none, or the write is inside a loop or another branch within that side (then it
+        is not the side's one value)."""
+        assert self.body is not None
         around = [node for node in _walk(self.body) if node.kind == CursorKind.IF_STMT
-                  and node.extent.start.offset <= start <= node.extent.end.offset
-                  and not node.extent.start.offset <= where <= node.extent.end.offset]
+                  and node.extent.start.offset <= write <= node.extent.end.offset
+                  and not node.extent.start.offset <= read <= node.extent.end.offset]
         if not around:
             return None
         branch = max(around, key=lambda node: node.extent.start.offset)
@@ -954,15 +964,15 @@ class Scope:
         if len(children) < 2:
             return None
         then = children[1].extent
-        side_of = children[1] if then.start.offset <= start <= then.end.offset else (
+        side_of = children[1] if then.start.offset <= write <= then.end.offset else (
             children[2] if len(children) > 2 else None)
         if side_of is None:
             return None
         low, high = side_of.extent.start.offset, side_of.extent.end.offset
-        if any(low <= first_ <= start <= last <= high and (first_, last) != (low, high)
-               for first_, last in self._regions):
+        if any(low <= first <= write <= last <= high and (first, last) != (low, high)
+               for first, last in self._regions):
             return None  # a loop or a branch inside the side: not its one value
-        return values[0], values[1], branch, side_of == children[1]
+        return branch, side_of == children[1]
 
     def member_choices(self, expr: Cursor, depth: int = 0
                        ) -> tuple[Cursor, Parts, Parts, Cursor, bool] | None:
@@ -1025,29 +1035,14 @@ class Scope:
                 and writes[0].at.extent.start.file.name == body.start.file.name
                 and body.start.offset <= writes[0].at.extent.start.offset <= body.end.offset):
             return None  # another function writes it too: what it held is not known
-        around = [node for node in _walk(self.body) if node.kind == CursorKind.IF_STMT
-                  and node.extent.start.offset <= offset <= node.extent.end.offset
-                  and not node.extent.start.offset <= where <= node.extent.end.offset]
-        if not around:
+        found_side = self._side_written(offset, where)
+        if found_side is None:
             return None
-        branch = max(around, key=lambda node: node.extent.start.offset)
-        children = list(branch.get_children())
-        if len(children) < 2:
-            return None
-        then = children[1].extent
-        side_of = children[1] if then.start.offset <= offset <= then.end.offset else (
-            children[2] if len(children) > 2 else None)
-        if side_of is None:
-            return None
-        low, high = side_of.extent.start.offset, side_of.extent.end.offset
-        if any(low <= first <= offset <= last <= high and (first, last) != (low, high)
-               for first, last in self._regions):
-            return None  # a loop or a branch inside the side: not its one value
         before = self._entry_value(decl, depth)
         side = self.string(value, depth + 1)
         if before is None or None in before or before == side:
             return None
-        return decl, before, side, branch, side_of == children[1]
+        return decl, before, side, *found_side
 
     def _entry_value(self, decl: Cursor, depth: int) -> Parts | None:
         """What a member holds before the one function that writes it runs: what its
