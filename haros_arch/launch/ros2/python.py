@@ -1220,13 +1220,20 @@ class Interpreter(Expressions):
         for item in items:
             self.step()
             self.assign(stmt.target, item, env)
-            try:
-                self.block(stmt.body, env)
-            except _Break:
+            if not self._turn(stmt.body, env):
                 return
-            except _Continue:
-                continue
         self.block(stmt.orelse, env)
+
+    def _turn(self, body: list[ast.stmt], env: dict[str, Any]) -> bool:
+        """One turn of a loop's body: False when a ``break`` left the loop (its
+        ``else`` does not run), True when the turn ended or a ``continue`` ended it."""
+        try:
+            self.block(body, env)
+        except _Break:
+            return False
+        except _Continue:
+            pass
+        return True
 
     def while_(self, stmt: ast.While, env: dict[str, Any]) -> None:
         """``while TEST:``, its test known each time it is checked: the body runs while
@@ -1249,12 +1256,8 @@ class Interpreter(Expressions):
                 return
             if not test:
                 break
-            try:
-                self.block(stmt.body, env)
-            except _Break:
+            if not self._turn(stmt.body, env):
                 return
-            except _Continue:
-                continue
         self.block(stmt.orelse, env)
 
     def iterable(self, value: Any, node: ast.AST) -> list[Any] | None:
