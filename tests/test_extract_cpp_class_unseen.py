@@ -10,6 +10,7 @@ whose API the rows model, classes of packages that are no ROS client, and ROS 2 
 from __future__ import annotations
 
 import os
+import re
 from typing import Any
 
 from conftest import package_xml
@@ -641,7 +642,9 @@ def test_the_table_names_its_sources() -> None:
     for name, entry in data["classes"].items():  # each package's list names its source
         repo, commit, *paths = entry["source"].split()
         assert repo.startswith("github:") and len(commit) == 40 and paths, name
-        assert entry["names"] and all("::" not in n for n in entry["names"]), name
+        # each a name within the package's namespace, or one written in full
+        assert entry["names"] and all(re.fullmatch(r"\w+(::\w+)*", n)
+                                      for n in entry["names"]), name
     # every released library names the manifest read: repository, commit, path
     for name, source in data["released"].items():
         repo, commit, path = source.split()
@@ -1080,3 +1083,35 @@ def test_a_missing_header_s_class_is_of_the_unit_s_own_dependency_first(
     assert any("robot_model_loader::RobotModelLoader of ROS package "
                "moveit_ros_planning_interface is built here" in r
                for r in node.completeness_reasons), node.completeness_reasons
+
+
+# MoveIt 1's robot state and model (moveit_core's moveit::core, robot_state and
+# robot_model its aliases) are data: their code makes no ROS call. A node building one
+# from a missing header of a MoveIt dependency is still complete for it; the loader beside
+# it is not.
+STATE = """
+    #include <moveit/robot_model_loader/robot_model_loader.h>
+    #include <moveit/robot_state/robot_state.h>
+    #include <ros/ros.h>
+
+    void use(const robot_model::RobotModelConstPtr& model) {
+      robot_state::RobotState state(model);
+      moveit::core::RobotState copy(model);
+    }
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "evaluator");
+      ros::spin();
+    }
+    """
+
+
+def test_moveit_s_robot_state_is_no_client_wherever_its_header_is_missing(
+        write_tree: Any) -> None:
+    node, _ = _teleop(write_tree, STATE, "moveit_ros_planning_interface")
+    assert node.completeness == "complete", node.completeness_reasons
+    loader = STATE.replace("ros::spin();",
+                           'robot_model_loader::RobotModelLoader rml("robot_description");')
+    node, _ = _teleop(write_tree, loader, "moveit_ros_planning_interface")
+    assert node.completeness == "partial"
+    assert [r for r in node.completeness_reasons if "RobotState" in r] == []

@@ -2198,6 +2198,13 @@ def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
     other = workspace.packages.get(name)
     if other is None and cls in no_client_classes().get(name, ()):
         return False  # a class of a ROS package, read in its source: no ROS call
+    if any(cls in names for package, names in no_client_classes().items()
+           if package != name and package not in workspace.packages and "::" in cls
+           and not cls.startswith(package + "::")):
+        # named in full in the table under another package than the one it is credited
+        # to (moveit_core's robot_state::RobotState, credited to the unit's MoveIt
+        # dependency by the header's folder): that package's, read in its source
+        return False
     if other is not None:
         if not any(d.name == ROSCPP for d in other.dependencies):
             return False
@@ -2237,11 +2244,14 @@ def no_client_classes() -> dict[str, frozenset[str]]:
     (``nonclients.yaml``'s ``classes``): costmap_2d's ``Costmap2D``, the grid that
     frontier explorers and planners build; ros_control's joint limits handles and
     interfaces (its ``getJointLimits(name, nh, limits)`` reads parameters: a function,
-    not a class, still unknown where the header is missing). Used where the package is
-    not in the workspace (a workspace package's code is read instead)."""
+    not a class, still unknown where the header is missing); a name with ``::`` is
+    written in full (MoveIt's ``moveit::core::RobotState``, whose namespace is not its
+    package's name, and its alias ``robot_state::RobotState``). Used where the package
+    is not in the workspace (a workspace package's code is read instead)."""
     with open(NO_CLIENTS, encoding="utf-8") as handle:
         data = safe_yaml.load(handle.read())
-    return {package: frozenset(f"{package}::{name}" for name in entry["names"])
+    return {package: frozenset(name if "::" in name else f"{package}::{name}"
+                               for name in entry["names"])
             for package, entry in data["classes"].items()}
 
 
