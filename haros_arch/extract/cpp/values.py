@@ -883,6 +883,16 @@ class Scope:
                       and end < node.extent.start.offset < where for node in _walk(self.body))
         return True, None if between else value
 
+    def _local_reaching(self, cursor: Cursor
+                        ) -> tuple[list[tuple[int, int, Cursor | None]], int] | None:
+        """``_reaching`` for the local variable (not a parameter of the function)
+        ``cursor`` reads; None when it reads none."""
+        cursor = strip(cursor)
+        decl = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else None
+        if decl is None or decl.kind != CursorKind.VAR_DECL or self.is_parameter(decl):
+            return None
+        return self._reaching(decl, cursor)
+
     def _reaching(self, decl: Cursor, at: Cursor
                 ) -> tuple[list[tuple[int, int, Cursor | None]], int] | None:
         """The writes of local ``decl`` that end before ``at`` reads it, and where it
@@ -926,11 +936,7 @@ class Scope:
         ``nh.param(key, ...)``: the key the search found, or the fallback): (the first
         value, the value of the side, that ``if``, whether the side is its ``then``);
         None otherwise."""
-        cursor = strip(cursor)
-        decl = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else None
-        if decl is None or decl.kind != CursorKind.VAR_DECL or self.is_parameter(decl):
-            return None
-        found = self._reaching(decl, cursor)
+        found = self._local_reaching(cursor)
         if found is None or self.body is None:
             return None
         before, where = found
@@ -1075,11 +1081,7 @@ class Scope:
         every enumerator is a label), a write is not so placed (in a loop, after
         the statement, a reference handed to a call), or there are more than
         ``MAX_BRANCH_VALUES``."""
-        cursor = strip(cursor)
-        decl = cursor.referenced if cursor.kind == CursorKind.DECL_REF_EXPR else None
-        if decl is None or decl.kind != CursorKind.VAR_DECL or self.is_parameter(decl):
-            return None
-        found = self._reaching(decl, cursor)
+        found = self._local_reaching(cursor)
         if found is None or self.body is None:
             return None
         before, where = found
