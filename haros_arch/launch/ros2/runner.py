@@ -541,16 +541,17 @@ class Runner:
         the user's to remove."""
         if self.all_hidden:
             return
-        texts: dict[str, str] = {}
-        for name_of, path in self.performed_files.items():
-            text, _ = read_text(path, Location(file=name_of))
-            texts[name_of] = text or ""
+        texts: dict[str, str] = {}  # read once a name is unread (mostly none is)
         declared = {n for n, _ in self.declared_args}
         said: set[str] = set()
         for name, where in self.declared_args:
             if name in self.all_read or name in said:
                 continue
             said.add(name)
+            if not texts:
+                for name_of, path in self.performed_files.items():
+                    text, _ = read_text(path, Location(file=name_of))
+                    texts[name_of] = text or ""
             written = re.compile(rf"(?<!\w){re.escape(name)}(?!\w)")
             sites = {(w.file, w.line) for n, w in self.declared_args if n == name}
             if not all(written.search(texts.get(file or "", "")) for file, _ in sites):
