@@ -743,6 +743,18 @@ VIKIT: dict[tuple[str, str], RosFunction] = {
     ("vk", "hasParam"): RosFunction(
         "read", on_handle=False, presence=True, name_required=True, standin_only=True),
 }
+# PickNik's rosparam_shortcuts (``standin/fallback/rosparam_shortcuts``, melodic-devel and
+# ros2 77b69f6): ROS 1's ``get(parent_name, nh, name, value)`` reads ``name`` on ``nh``
+# (hasParam, then getParam) and returns false when it is not set, no default; ROS 2's
+# ``get(node, name, value)`` declares it with the value's type and no default, then reads
+# it. (``shutdownIfError`` makes a count of failed gets required: ``tested.EXITS``.)
+ROSPARAM_SHORTCUTS: dict[tuple[str, str], RosFunction] = {
+    ("rosparam_shortcuts", "get"): RosFunction(
+        "read", type_from=("value",), type_arg=3, out_arg=3, on_handle=False, handle_arg=1,
+        name_arg=2, name_required=True, standin_only=True, ros2=RosFunction(
+            "declare", type_from=("value",), type_arg=2, on_handle=False, handle_arg=0,
+            name_arg=1, name_required=True, standin_only=True)),
+}
 # perception_pcl's PCLNodelet::onInit() (2f70209f's pcl_nodelet.h) runs NodeletLazy's
 # (``_LAZY_INIT``) and reads four private parameters more
 PCL_ROS: dict[tuple[str, str], RosFunction] = {
@@ -990,7 +1002,7 @@ ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
                                             **JOINT_LIMITS_INTERFACE, **PLUGINLIB, **JSK,
-                                            **VIKIT, **PCL_ROS}
+                                            **VIKIT, **PCL_ROS, **ROSPARAM_SHORTCUTS}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is
 # made there (its handle, location and conditions), with the name, queue and type of the

@@ -102,6 +102,8 @@ FALLBACK_UMBRELLAS = {"pcl/": "pcl/haros_pcl.h",
                       "jsk_topic_tools/": "jsk_topic_tools/haros_jsk_topic_tools.h",
                       # rpg_vikit's parameter helpers (uzh-rpg's SVO)
                       "vikit/": "vikit/haros_vikit.h",
+                      # PickNik's rosparam_shortcuts (its checked parameter reads)
+                      "rosparam_shortcuts/": "rosparam_shortcuts/rosparam_shortcuts.h",
                       # navigation2's libraries, for its plugins outside navigation2
                       **{f"{p}/": f"{p}/haros_{p}.h" for p in (
                           "nav2_util", "nav2_ros_common", "nav2_core", "nav2_costmap_2d",

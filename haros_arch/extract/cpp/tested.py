@@ -47,6 +47,10 @@ _MIRROR = {">": "<", "<": ">", ">=": "<=", "<=": ">=", "==": "==", "!=": "!="}
 # a release build (NDEBUG, as ROS packages are built) never evaluates its argument, so
 # a read in it is no required one
 _CHECKS = frozenset({"haros_check"})
+# library functions that end the process when their last argument, a count of failed
+# reads, is not zero: rosparam_shortcuts' ``shutdownIfError([parent_name, ]error_count)``
+# (``ros::shutdown(); exit(0)``), by (namespace, name)
+EXITS = frozenset({("rosparam_shortcuts", "shutdownIfError")})
 
 
 def key(cursor: Cursor) -> Key | None:
@@ -91,6 +95,13 @@ class TestedCalls:
                 if given:
                     self.required.update(k for k, v in self._when_absent(given[0]).items()
                                          if not v)
+            elif _exits_when_nonzero(node):
+                # ``error += !get(..); shutdownIfError("x", error);``: each get the count
+                # gathers is required (mobipick's pick-and-place poses)
+                given = list(node.get_arguments())
+                if given:
+                    self.required.update(k for k, v in self._when_absent(given[-1]).items()
+                                         if v)
         if kind in (CursorKind.IF_STMT, CursorKind.WHILE_STMT):
             children = list(node.get_children())
             if children:
@@ -428,3 +439,13 @@ def _strip(expr: Cursor) -> Cursor:
             break
         expr = children[0]
     return expr
+
+
+def _exits_when_nonzero(call: Cursor) -> bool:
+    """Whether a call is of a library function of ``EXITS`` (by its declaration's
+    namespace, not by its name alone)."""
+    if call.spelling not in {name for _, name in EXITS}:
+        return False
+    function = call.referenced
+    parent = function.semantic_parent if function is not None else None
+    return parent is not None and (parent.spelling, call.spelling) in EXITS
