@@ -48,8 +48,14 @@ public:
   void update();
   void force_update();
   void broadcast(int level, const std::string& message);
-#ifdef HAROS_STANDIN_RCLCPP_HPP
-  rclcpp::Duration getPeriod();  // ROS 2: a duration (robot_localization's nanoseconds())
+  // ROS 1: seconds (ros_canopen's ``ros::Duration(updater.getPeriod() / 2.0)``); ROS 2:
+  // a duration (robot_localization's ``nanoseconds()``). rclcpp is precompiled into every
+  // unit, so the unit's own ROS (HAROS_UNIT_ROS, given to it after the precompiled
+  // stand-ins) chooses, not whether rclcpp is there.
+#if defined(HAROS_UNIT_ROS) && HAROS_UNIT_ROS == 1
+  double getPeriod();
+#elif defined(HAROS_STANDIN_RCLCPP_HPP)
+  rclcpp::Duration getPeriod();
 #else
   double getPeriod();
 #endif
