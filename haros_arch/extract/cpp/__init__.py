@@ -2009,7 +2009,8 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         text = source.text(name)
         if text is None:
             continue
-        sites = recall.call_sites(text, wrappers, bare, finder.ros2)
+        sites = recall.call_sites(text, wrappers, bare, finder.ros2,
+                                  finder.wrappers.site_qualifiers)
         if not sites:
             continue
         relative = workspace.relpath(name)

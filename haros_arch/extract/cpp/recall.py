@@ -138,7 +138,8 @@ def first_site(sites: Sequence[Site], first: int, last: int) -> Site | None:
 
 
 def call_sites(text: str, extra: Iterable[str] = (), bare: Iterable[str] = (),
-               ros2: bool | None = None) -> list[Site]:
+               ros2: bool | None = None, qualifiers: Iterable[tuple[str, str]] = ()
+               ) -> list[Site]:
     """The API call sites of one file's text (comments left out, and lines that define
     a function of the same name: ``Node::create_publisher(``, or declare one:
     ``static std::string set_parameter(``). ``extra`` are the unit's wrappers, and
@@ -147,18 +148,23 @@ def call_sites(text: str, extra: Iterable[str] = (), bare: Iterable[str] = (),
     (``ptr.get()``, ``std::get<I>(t)`` where the unit has a wrapper ``get(node,
     name)``). The headers of a package are read by each of its units: the sites of a
     text are kept (a few texts). ``ros2``: the code is ROS 2 (``site_pattern``); None
-    when not known."""
-    return list(_call_sites(text, frozenset(extra), frozenset(bare), ros2))
+    when not known. ``qualifiers``: (name, namespace) for the namespaces a call of a
+    wrapper of ``extra`` that is a free function may be qualified with, and (name, "")
+    where every wrapper of the name is one (``Wrappers.site_qualifiers``)."""
+    return list(_call_sites(text, frozenset(extra), frozenset(bare), ros2,
+                            frozenset(qualifiers)))
 
 
 @functools.lru_cache(maxsize=64)
 def _call_sites(text: str, extra: frozenset[str], bare: frozenset[str],
-                ros2: bool | None = None) -> tuple[Site, ...]:
+                ros2: bool | None = None,
+                qualifiers: frozenset[tuple[str, str]] = frozenset()) -> tuple[Site, ...]:
     pattern = site_pattern(extra, ros2)
     found = []
     for number, shown, code, named in _code_lines(text):
         if any(not _unevaluated(code, m.start()) and not _named_type(code, m, extra)
-               and m.start("bare") != named and not _not_a_wrapper(code, m, extra, bare)
+               and m.start("bare") != named
+               and not _not_a_wrapper(code, m, extra, bare, qualifiers)
                and not _constructor_declared(code, m, extra)
                for m in pattern.finditer(code)):
             found.append(Site(number, shown.strip()[:80]))
@@ -294,19 +300,29 @@ _EMPTY_CALL = re.compile(r"\(\s*\)")
 
 
 def _not_a_wrapper(code: str, match: re.Match[str], extra: frozenset[str],
-                   bare: frozenset[str]) -> bool:
+                   bare: frozenset[str],
+                   qualifiers: frozenset[tuple[str, str]] = frozenset()) -> bool:
     """Whether ``match``, a call of a name that only the unit's wrappers (``extra``)
-    have, cannot be one of theirs: written in ``std::``, or with no argument where no
-    wrapper of that name can be called so (not in ``bare``)."""
+    have, cannot be one of theirs: written in ``std::``, or qualified by a class or a
+    namespace none of them is in where each is a free function (``qualifiers``:
+    ``TypeGuard::create<T>()`` beside ros_canopen's ``canopen::create(nh, name, ...)``),
+    or with no argument where no wrapper of that name can be called so (not in
+    ``bare``)."""
     name = match.group("bare") or match.group("member")
     if name is None or name not in extra or site_pattern().match(code, match.start()):
         return False  # (a call the API's own grep finds there too)
     if match.group("bare") is not None and code[:match.start("bare")].endswith("std::"):
         return True
+    qualifier = _QUALIFIER.search(code[:match.start("bare")]) if (
+        match.group("bare") is not None and (name, "") in qualifiers) else None
+    if qualifier is not None and (name, qualifier.group(1)) not in qualifiers:
+        return True
     return match.group(0).endswith("(") and name not in bare and bool(
         _EMPTY_CALL.match(code, match.end() - 1))
 
 
+# the class or namespace a name is qualified with (``X::``; ``X<T>::`` as ``>``)
+_QUALIFIER = re.compile(r"(\w+|>)\s*::\s*$")
 _UNEVALUATED = re.compile(r"\b(?:decltype|sizeof|alignof|noexcept)\s*\(")
 
 

@@ -179,6 +179,12 @@ class Wrappers:
         self.names: frozenset[str] = frozenset()  # the wrappers' spellings
         self.site_names: frozenset[str] = frozenset()  # those a call-site grep looks for
         self.site_names_bare: frozenset[str] = frozenset()  # those called with no argument
+        # the qualifiers a call of a wrapper that is a free function may be written with:
+        # (name, namespace) for each namespace around each wrapper of that name, and
+        # (name, "") to say that every wrapper of that name is a free function; a call
+        # qualified by another class or namespace (``TypeGuard::create<T>()`` beside
+        # ros_canopen's ``canopen::create(nh, name, ...)``) is none of theirs
+        self.site_qualifiers: frozenset[tuple[str, str]] = frozenset()
         self._inner: dict[Key, Key] = {}  # call inside a wrapper -> the wrapper
         self._kept: set[Key] = set()  # wrappers whose inner calls are still emitted
         # those of them that the node's other files may call too: a call of one in this
@@ -446,6 +452,17 @@ class Wrappers:
             and not _template_parameters(f)
             and all(default_argument(p) is not None for p in _parameters(f))
         ) & self.site_names
+        qualifiers: dict[str, set[str] | None] = {}  # None: a method has the name
+        for f in functions:
+            if self.summaries.get(_key(f.canonical)) and f.kind != CursorKind.LAMBDA_EXPR:
+                name = f.spelling.split("<")[0]
+                around = _namespaces(f)
+                known = qualifiers.get(name, set())
+                qualifiers[name] = None if around is None or known is None else (
+                    known | around)
+        self.site_qualifiers = frozenset(
+            (name, q) for name, every in qualifiers.items()
+            if every is not None and name in self.site_names for q in {"", *every})
 
     def read_inside(self, conditions_of: Callable[[Cursor, list[Cursor]],
                                                   dict[Any, tuple[Condition, ...]]]
@@ -2215,3 +2232,18 @@ def _dependent_name(name: str) -> bool:
 
 def _passed_value(values: dict[str, object], name: str) -> object:
     return values.get(name, Unknown())
+
+
+def _namespaces(function: Cursor) -> set[str] | None:
+    """The names of the namespaces around a free function (those a call of it may be
+    qualified with); None for a function of a class, whose calls may name it through
+    an alias or a derived class."""
+    if function.kind not in (CursorKind.FUNCTION_DECL, CursorKind.FUNCTION_TEMPLATE):
+        return None
+    found: set[str] = set()
+    parent = function.canonical.semantic_parent
+    while parent is not None and parent.kind == CursorKind.NAMESPACE:
+        if parent.spelling:
+            found.add(parent.spelling)
+        parent = parent.semantic_parent
+    return found if parent is not None and parent.kind == CursorKind.TRANSLATION_UNIT else None
