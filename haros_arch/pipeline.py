@@ -119,6 +119,7 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
 
     with _stage(options, "scan"):
         workspace = scan(project.workspace, env)
+        workspace.source_distro = source_distro(project, env)
     parts = extraction.get("parts")
     if not isinstance(parts, list) or not all(
             isinstance(part, list) and all(isinstance(p, str) for p in part)
@@ -238,6 +239,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
 
     with _stage(options, "scan"):  # folders and package manifests
         workspace = scan(project.workspace, env)
+        workspace.source_distro = source_distro(project, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
 
     launches: dict[str, LaunchModel] = {}

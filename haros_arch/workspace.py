@@ -33,6 +33,10 @@ class Workspace:
     packages: dict[str, Package] = field(default_factory=dict)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     environment: Mapping[str, str] = field(default_factory=dict)
+    # the ROS distribution the sources are read for (``pipeline.source_distro``: the
+    # rclcpp / roscpp the C++ stand-ins announce), which the CMake reading takes
+    # ``rclcpp_VERSION`` / ``roscpp_VERSION`` from; None when not known
+    source_distro: str | None = None
     _installed: dict[str, str | None] = field(default_factory=dict)
     _path_index: dict[str, str] | None = field(default=None, repr=False)
     # the names of the packages installed here, for ``misspelt``: filled when first asked

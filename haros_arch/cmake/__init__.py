@@ -459,6 +459,7 @@ def _interpreter(package: Package, workspace: Workspace,
     interpreter.build_depends = build_depends(package)
     interpreter.package_name, interpreter.package_version = package.name, package.version
     interpreter.package_ros_version = build_ros_version(package)
+    interpreter.source_distro = workspace.source_distro
 
     def catkin_project(name: str) -> bool:
         other = workspace.packages.get(name)

@@ -1063,6 +1063,7 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
         return
     run_extras(it, command, args[0])
     it.found_packages.add(args[0].lower())
+    _client_version(it, args[0])
     found = _tool_found(it, args[0], "REQUIRED" in args[1:])
     if found is not None:
         it.set(f"{args[0]}_FOUND", found)
@@ -1082,11 +1083,29 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
                     it.catkin_components.append(arg)
                 run_extras(it, command, arg)
                 it.found_packages.add(arg.lower())  # catkin finds each one
+                _client_version(it, arg)
         it.set("catkin_LIBRARIES", ";".join(PACKAGE_MARK.format(c) for c in components))
         return
     for variable in (f"{args[0]}_LIBRARIES", f"{args[0]}_TARGETS"):
         if it.get(variable) is None:
             it.set(variable, PACKAGE_MARK.format(args[0]))
+
+
+def _client_version(it: Interpreter, name: str) -> None:
+    """What ``find_package`` of a ROS client library sets of its version
+    (``<name>_VERSION`` and its parts), when the distribution the sources are read for
+    is known: that release's, the one the C++ stand-ins announce (mavros builds with
+    ``-DUSE_OLD_DECLARE_PARAMETER`` only ``if(rclcpp_VERSION VERSION_LESS 9.0.0)``,
+    Foxy's); not known otherwise, as any other package's."""
+    from ..extract.cpp.versions import RCLCPP, ROSCPP
+
+    library = {"rclcpp": RCLCPP, "roscpp": ROSCPP}.get(name)
+    found = library.version(it.source_distro) if library is not None else None
+    if found is None:
+        return
+    it.set(f"{name}_VERSION", ".".join(map(str, found)))
+    for part, number in zip(("MAJOR", "MINOR", "PATCH"), found, strict=True):
+        it.set(f"{name}_VERSION_{part}", str(number))
 
 
 @handles("target_link_libraries", "ament_target_dependencies")

@@ -112,6 +112,9 @@ class Interpreter:
                  reader: Reader | None = None, location: Locator | None = None) -> None:
         self.package_root = os.path.realpath(source_dir)
         self.environment = environment
+        # the ROS distribution the sources are read for (``Workspace.source_distro``):
+        # ``find_package(rclcpp)`` / ``roscpp`` set that release's version
+        self.source_distro: str | None = None
         self.reader = reader or (lambda path: [])
         self.location = location
         self.scopes: list[dict[str, str]] = [{}]
