@@ -660,6 +660,7 @@ MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the na
 # constructor's member initialisers written from the first column (``: costmap_(c),``)
 _FUNCTION = re.compile(r"^(?![ \t#:,])[\w:<>,&* \t]*?(?<![:\w])([a-z_]\w*)\s*\(([^\n]*)$",
                        re.MULTILINE)
+_STATIC = re.compile(r"\bstatic\b")
 _NOT_FUNCTIONS = frozenset({"if", "for", "while", "switch", "return", "sizeof", "namespace",
                             "using", "typedef", "template", "class", "struct", "enum"})
 
@@ -736,10 +737,15 @@ def _members(source: str, workspace: Files) -> set[str]:
 
 
 def _free_functions(source: str, workspace: Files) -> set[str]:
-    """The free functions a source file defines."""
+    """The free functions a source file defines that another file can call: not one
+    declared ``static`` there (internal linkage: ros_canopen's ros_chain.cpp defines a
+    ``static ... create(nh, name, ...)``, which no node that links its library and
+    writes ``create`` elsewhere can call)."""
     def compute() -> set[str]:
-        return {name for name, rest in _FUNCTION.findall(_scoped(source, workspace))
-                if not rest.rstrip().endswith(";")} - _NOT_FUNCTIONS
+        return {match.group(1) for match in _FUNCTION.finditer(_scoped(source, workspace))
+                if not match.group(2).rstrip().endswith(";")
+                and not _STATIC.search(match.group(0), 0, match.start(1) - match.start())
+                } - _NOT_FUNCTIONS
 
     return remembered("free functions", source, workspace, compute)
 
