@@ -1186,6 +1186,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         # an empty prefix of a segment (ros_kortex's ``m_prefix + m_gripper_name +
         # "_gripper_controller/gripper_cmd"``, both set to ""): the rest of the segment
         return _filled(call.name, value)
+    if value == "" and _empty_head(call):
+        # an empty value that begins what the code wrote, before ``/`` (aau_multi_robot's
+        # map_merger: ``robot_prefix + "/adhoc_communication/send_position"`` on its
+        # private handle, ``~robot_prefix`` set to ""): the rest, a global name on any
+        # handle
+        return call.name.partition(UNKNOWN_MARK)[2]
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     if value.startswith("/") and call.name.count(UNKNOWN_MARK) == 1 and (
@@ -1225,6 +1231,16 @@ def _empty_prefix(call: PrimitiveCall) -> bool:
         return False
     tail = call.name.partition(UNKNOWN_MARK)[2]
     return bool(tail) and not tail.startswith("/")
+
+
+def _empty_head(call: PrimitiveCall) -> bool:
+    """Whether the one ``?`` of a call's name begins what the code wrote (right after the
+    handle's namespace) and is followed by ``/`` and a name: given "", the name is that
+    global rest (``"" + "/scan"``)."""
+    if call.name.count(UNKNOWN_MARK) != 1:
+        return False
+    head, _, tail = call.name.partition(UNKNOWN_MARK)
+    return head == _handle_prefix(call) and tail.startswith("/") and bool(tail.strip("/"))
 
 
 def _filled(name: str, value: str) -> str:
