@@ -236,3 +236,26 @@ def test_an_empty_parameter_value_that_begins_a_name_leaves_its_global_rest() ->
                        Workspace(root="/x"), {"map_merger/map_merger": merger})
         assert sorted(link.rosname.full for link in config.links) == names
         assert [d.code for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"] == []
+
+
+def test_a_ros1_action_topic_remapped_alone_moves_and_the_remap_is_used() -> None:
+    """explore_lite's ``SimpleActionClient move_base_client_("move_base")`` publishes
+    ``move_base/goal`` and ``move_base/cancel`` and subscribes ``move_base/status``,
+    ``/feedback``, ``/result``; omniveyor's explore launch file remaps each to
+    ``motion_manager/move_base/<topic>``. roscpp (and rospy) remap every name actionlib
+    resolves, so the topics move there and the remaps are used: they were five
+    ``remap-unused`` warnings and the topics stayed under ``/move_base``. A remap of
+    the action itself (``move_base:=other``) was followed already."""
+    explore = Node("explore_lite", "explore", calls=[
+        PrimitiveCall("action-client", "move_base", "move_base_msgs/MoveBaseAction")])
+    remaps = [(f"move_base/{t}", f"motion_manager/move_base/{t}")
+              for t in ("goal", "cancel", "status", "feedback", "result")]
+    decl = NodeDecl("/explore", "explore_lite", "explore", "/", remaps=remaps)
+    config = build(Configuration("c"), LaunchModel(nodes=[decl]), Workspace(root="/x"),
+                   {"explore_lite/explore": explore})
+    assert sorted(link.rosname.full for link in config.links) == [
+        "/motion_manager/move_base/cancel", "/motion_manager/move_base/feedback",
+        "/motion_manager/move_base/goal", "/motion_manager/move_base/result",
+        "/motion_manager/move_base/status", "/move_base"]
+    assert sorted(config.nodes[0].remaps_applied) == sorted(
+        f"/move_base/{t}" for t in ("goal", "cancel", "status", "feedback", "result"))

@@ -245,7 +245,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     _drop_base_copies(config, [*attached, *chained])
     config.diagnostics.extend(_foreign_sections(launch, config))
     for action, call, name in action_links(config):
-        link(action.node, call, {}, resources, config, name)
+        link(action.node, call, {}, resources, config, _wire_remapped(action.node, name))
     config.launch_tree = launch.tree  # what decide_links asks of includes not read
     _field_watchers(config, resources)
     decide_links(config)  # source conditions this configuration decides
@@ -253,6 +253,21 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.package_paths = package_paths(launch, workspace)
     config.package_uses = package_uses(launch, workspace, started)
     return config
+
+
+def _wire_remapped(instance: NodeInstance, name: RosName) -> RosName:
+    """A ROS 1 action's topic as the node's remaps rename it: actionlib makes each on a
+    handle in the action's namespace (roscpp's ``NodeHandle(nh, "move_base")``, rospy's
+    ``remap_name(ns) + "/goal"``), and roscpp and rospy remap every name they resolve,
+    so ``move_base/goal:=motion_manager/move_base/goal`` moves that topic alone
+    (omniveyor's explore launch file moves all five of explore_lite's client). The
+    action's own name is remapped already (``link``)."""
+    if instance.ros_version != 1 or UNKNOWN_MARK in name.full:
+        return name
+    moved = _Applied(instance.remap_rules(), instance).get(name.full, name.full)
+    if moved is None or moved == name.full:
+        return name
+    return RosName(name.given, moved, namespace_of(moved))
 
 
 def _field_watchers(config: Configuration, resources: Resources) -> None:
