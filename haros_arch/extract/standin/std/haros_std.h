@@ -1942,6 +1942,7 @@ istream& operator>>(istream&& is, haros_manip m);
 class stringstream : public iostream {
 public:
   stringstream();
+  explicit stringstream(openmode mode);  // ``ostringstream log(ostringstream::out)``
   explicit stringstream(const string& s, openmode mode = in | out);
   string str() const;
   void str(const string& s);
@@ -1950,6 +1951,7 @@ public:
 class ostringstream : public ostream {
 public:
   ostringstream();
+  explicit ostringstream(openmode mode);  // ``ostringstream log(ostringstream::out)``
   explicit ostringstream(const string& s, openmode mode = out);
   string str() const;
   void str(const string& s);
@@ -1958,6 +1960,7 @@ public:
 class istringstream : public istream {
 public:
   istringstream();
+  explicit istringstream(openmode mode);  // ``ostringstream log(ostringstream::out)``
   explicit istringstream(const string& s, openmode mode = in);
   string str() const;
   void str(const string& s);
