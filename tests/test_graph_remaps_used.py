@@ -192,7 +192,9 @@ def test_an_empty_parameter_value_inside_a_ros1_name_drops_its_segment() -> None
     its ``~namespace``, which the launch file sets to "" (``$(optenv ROBOT_NAMESPACE)``):
     roscpp cleans ``//activate_control`` to ``/activate_control``; the name stayed
     ``/?/activate_control`` with a diagnostic saying the parameter was not set (survey
-    Z39). A ``?`` that begins the name, or ends it, still names nothing known."""
+    Z39). A ``?`` that begins the name before ``/`` leaves the global rest (``"" +
+    "/cmd"`` is ``/cmd``: aau_multi_robot's map_merger, ``robot_prefix`` set to ""); one
+    that ends it still names nothing known."""
     commands = Node("heron_nmea", "command_publisher", calls=[
         PrimitiveCall("client", "/?/activate_control", "std_srvs/SetBool",
                       name_param="~namespace"),
@@ -204,8 +206,56 @@ def test_an_empty_parameter_value_inside_a_ros1_name_drops_its_segment() -> None
     config = build(Configuration("c"), LaunchModel(nodes=[decl], params=params),
                    Workspace(root="/x"), {"heron_nmea/command_publisher": commands})
     assert sorted(link.rosname.full for link in config.links) == [
-        "/activate_control", "/nmea_if/robot/?", "?/cmd"]
+        "/activate_control", "/cmd", "/nmea_if/robot/?"]
     # as written: the code's global name (the global-names query quotes it)
     assert "/activate_control" in [link.rosname.given for link in config.links]
     assert [d.code for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"] == [
-        "NAME_PARAM_UNSET", "NAME_PARAM_UNSET"]
+        "NAME_PARAM_UNSET"]
+
+
+def test_an_empty_parameter_value_that_begins_a_name_leaves_its_global_rest() -> None:
+    """aau_multi_robot's map_merger calls ``robot_prefix + "/adhoc_communication/
+    send_position"`` on its private handle with ``~robot_prefix`` set to "" by the launch
+    file (an argument's empty default): the name is the global
+    ``/adhoc_communication/send_position``, not ``?/adhoc_communication/send_position``
+    with a NAME_PARAM_UNSET saying the configuration does not set the parameter. On a
+    handle with a namespace the same: a global name ignores it. Given a value, the
+    value and the rest (the private handle's namespace before a relative one)."""
+    merger = Node("map_merger", "map_merger", calls=[
+        PrimitiveCall("client", "~?/adhoc_communication/send_position",
+                      "std_srvs/Trigger", name_param="~robot_prefix",
+                      handle_namespace="~"),
+        PrimitiveCall("publish", "ns/?/all_positions", "std_msgs/String",
+                      name_param="~robot_prefix", handle_namespace="ns")])
+    for value, names in (("", ["/adhoc_communication/send_position", "/all_positions"]),
+                         ("robot_1", ["/merger/robot_1/adhoc_communication/send_position",
+                                      "/ns/robot_1/all_positions"])):
+        decl = NodeDecl("/merger", "map_merger", "map_merger", "/")
+        params = [ParamDecl("/merger/robot_prefix", value)]
+        config = build(Configuration("c"), LaunchModel(nodes=[decl], params=params),
+                       Workspace(root="/x"), {"map_merger/map_merger": merger})
+        assert sorted(link.rosname.full for link in config.links) == names
+        assert [d.code for d in config.diagnostics if d.code == "NAME_PARAM_UNSET"] == []
+
+
+def test_a_ros1_action_topic_remapped_alone_moves_and_the_remap_is_used() -> None:
+    """explore_lite's ``SimpleActionClient move_base_client_("move_base")`` publishes
+    ``move_base/goal`` and ``move_base/cancel`` and subscribes ``move_base/status``,
+    ``/feedback``, ``/result``; omniveyor's explore launch file remaps each to
+    ``motion_manager/move_base/<topic>``. roscpp (and rospy) remap every name actionlib
+    resolves, so the topics move there and the remaps are used: they were five
+    ``remap-unused`` warnings and the topics stayed under ``/move_base``. A remap of
+    the action itself (``move_base:=other``) was followed already."""
+    explore = Node("explore_lite", "explore", calls=[
+        PrimitiveCall("action-client", "move_base", "move_base_msgs/MoveBaseAction")])
+    remaps = [(f"move_base/{t}", f"motion_manager/move_base/{t}")
+              for t in ("goal", "cancel", "status", "feedback", "result")]
+    decl = NodeDecl("/explore", "explore_lite", "explore", "/", remaps=remaps)
+    config = build(Configuration("c"), LaunchModel(nodes=[decl]), Workspace(root="/x"),
+                   {"explore_lite/explore": explore})
+    assert sorted(link.rosname.full for link in config.links) == [
+        "/motion_manager/move_base/cancel", "/motion_manager/move_base/feedback",
+        "/motion_manager/move_base/goal", "/motion_manager/move_base/result",
+        "/motion_manager/move_base/status", "/move_base"]
+    assert sorted(config.nodes[0].remaps_applied) == sorted(
+        f"/move_base/{t}" for t in ("goal", "cancel", "status", "feedback", "result"))

@@ -4,8 +4,11 @@ a machine declared after the node, in the same file or in a file included later,
 known. PR2's pr2_bringup/pr2.launch takes its machines from ``$(find pr2_machine)/
 pr2.machine``: with pr2_machine not in the workspace, its 22 nodes were each an error
 ``unknown machine 'c1'`` though the include not read may declare it (undecided, an
-info); with the package there its machines are read. A machine no file declares,
-with every include read, stays the error roslaunch gives."""
+info); with the package there its machines are read. A file of a package that is
+there but missing the file (omniveyor's pcv_base includes ``$(find omniveyor_mobility)/
+launch/local.machine``, which its tree lacks, for ten nodes on ``machine="AGV"``) is
+said missing once; its machines are undecided too, not ten more errors. A machine no
+file declares, with every include read, stays the error roslaunch gives."""
 
 from __future__ import annotations
 
@@ -57,3 +60,16 @@ def test_machine_declared_nowhere_is_an_error(write_tree) -> None:
     </launch>""", extra={"src/pkg/launch/robot.machine": MACHINE})
     assert codes(model) == [("LAUNCH_BAD_VALUE", "error", 3)]
     assert "unknown machine 'c3'" in model.diagnostics[0].message
+
+
+def test_machine_of_a_missing_included_file_is_undecided(write_tree) -> None:
+    model = load_launch(write_tree, """<launch>
+      <include file="$(find pkg)/launch/local.machine"/>
+      <node name="a" pkg="pkg" type="x" machine="AGV"/>
+      <node name="b" pkg="pkg" type="x" machine="AGV"/>
+    </launch>""", extra={"src/pkg/launch/other.launch": "<launch/>\n"})
+    said = codes(model)
+    assert not any(code == "LAUNCH_BAD_VALUE" for code, _, _ in said), said
+    assert [line for _, severity, line in said if severity == "error"] == [2], said
+    notes = [d.message for d in model.diagnostics if d.location.line == 3]
+    assert len(notes) == 1 and "'AGV'" in notes[0] and "main.launch:2" in notes[0], notes

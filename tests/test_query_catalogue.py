@@ -293,6 +293,32 @@ def test_a_double_read_as_an_int_is_a_mismatch_only_in_ros_2():
                                                     "parameter:/py2/width"]
 
 
+def test_zero_or_one_read_as_a_bool_is_a_mismatch_but_by_rospy():
+    # omniveyor's multi-robot teleop: <param name="use_odom_only" value="0"/>, read by
+    # rospy.get_param('~use_odom_only', False) and tested with ``if``; roscpp's
+    # getParam(bool) refuses an integer (the node keeps its default), rclpy throws; 2
+    # is no boolean's value in any client
+    def reader(node: str) -> dict:
+        return {"kind": "read", "node": node, "name": f"{node}/flag", "type": "bool",
+                "location": {"file": "a/n", "line": 3}}
+
+    names = ("/py1", "/py2", "/cpp1", "/py1two", "/pyros2")
+    values = {"/py1two": 2}
+    types = {"/py1": ("python", 1), "/py2": ("python", 1), "/cpp1": ("cpp", 1),
+             "/py1two": ("python", 1), "/pyros2": ("python", 2)}
+    doc = {"packages": [{"name": "a", "nodes": [
+               {"name": f"a{n.replace('/', '_')}", "language": language}
+               for n, (language, _) in types.items()]}],
+           "parameters": [{"name": f"{n}/flag", "type": "int", "value": values.get(n, 0),
+                           "writers": ["<launch>"]} for n in names],
+           "nodes": [{"name": n, "node": f"a/a{n.replace('/', '_')}", "ros_version": version}
+                     for n, (_, version) in types.items()],
+           "links": [reader(n) for n in names]}
+    found = run_rule(RULES["parameter-type-mismatch"], configuration(doc))
+    assert sorted(f.entities[0] for f in found) == [
+        "parameter:/cpp1/flag", "parameter:/py1two/flag", "parameter:/pyros2/flag"]
+
+
 def test_a_list_value_keeps_every_element_in_the_message():
     # navigation_tutorials' y_vels: [-0.3, -0.1, 0.1, -0.3], read as a string
     model = configuration({

@@ -245,7 +245,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     _drop_base_copies(config, [*attached, *chained])
     config.diagnostics.extend(_foreign_sections(launch, config))
     for action, call, name in action_links(config):
-        link(action.node, call, {}, resources, config, name)
+        link(action.node, call, {}, resources, config, _wire_remapped(action.node, name))
     config.launch_tree = launch.tree  # what decide_links asks of includes not read
     _field_watchers(config, resources)
     decide_links(config)  # source conditions this configuration decides
@@ -253,6 +253,21 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     config.package_paths = package_paths(launch, workspace)
     config.package_uses = package_uses(launch, workspace, started)
     return config
+
+
+def _wire_remapped(instance: NodeInstance, name: RosName) -> RosName:
+    """A ROS 1 action's topic as the node's remaps rename it: actionlib makes each on a
+    handle in the action's namespace (roscpp's ``NodeHandle(nh, "move_base")``, rospy's
+    ``remap_name(ns) + "/goal"``), and roscpp and rospy remap every name they resolve,
+    so ``move_base/goal:=motion_manager/move_base/goal`` moves that topic alone
+    (omniveyor's explore launch file moves all five of explore_lite's client). The
+    action's own name is remapped already (``link``)."""
+    if instance.ros_version != 1 or UNKNOWN_MARK in name.full:
+        return name
+    moved = _Applied(instance.remap_rules(), instance).get(name.full, name.full)
+    if moved is None or moved == name.full:
+        return name
+    return RosName(name.given, moved, namespace_of(moved))
 
 
 def _field_watchers(config: Configuration, resources: Resources) -> None:
@@ -1186,6 +1201,12 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
         # an empty prefix of a segment (ros_kortex's ``m_prefix + m_gripper_name +
         # "_gripper_controller/gripper_cmd"``, both set to ""): the rest of the segment
         return _filled(call.name, value)
+    if value == "" and _empty_head(call):
+        # an empty value that begins what the code wrote, before ``/`` (aau_multi_robot's
+        # map_merger: ``robot_prefix + "/adhoc_communication/send_position"`` on its
+        # private handle, ``~robot_prefix`` set to ""): the rest, a global name on any
+        # handle
+        return call.name.partition(UNKNOWN_MARK)[2]
     if not value:  # none, or empty: no topic is named "" (rosbot's gz bridge guards it)
         return call.name
     if value.startswith("/") and call.name.count(UNKNOWN_MARK) == 1 and (
@@ -1225,6 +1246,16 @@ def _empty_prefix(call: PrimitiveCall) -> bool:
         return False
     tail = call.name.partition(UNKNOWN_MARK)[2]
     return bool(tail) and not tail.startswith("/")
+
+
+def _empty_head(call: PrimitiveCall) -> bool:
+    """Whether the one ``?`` of a call's name begins what the code wrote (right after the
+    handle's namespace) and is followed by ``/`` and a name: given "", the name is that
+    global rest (``"" + "/scan"``)."""
+    if call.name.count(UNKNOWN_MARK) != 1:
+        return False
+    head, _, tail = call.name.partition(UNKNOWN_MARK)
+    return head == _handle_prefix(call) and tail.startswith("/") and bool(tail.strip("/"))
 
 
 def _filled(name: str, value: str) -> str:

@@ -330,7 +330,9 @@ class Namespaces:
             assigned = self._assigned(field, depth)  # not set by a constructor: by the unit
             if assigned is _UNSURE:
                 return UNKNOWN
-            found = found or assigned
+            # the unit's writes agree: theirs (an initialisation method's first write,
+            # which ``found`` holds, may be one a later statement replaces unread)
+            found = assigned or found
         value, where = found if found is not None else (None, None)
         if value is None and (found is not None or self.sites is None
                               or not constructed_elsewhere(field, self.source)):
@@ -395,7 +397,7 @@ class Namespaces:
         the value reads a parameter of a method that no call of the file passes (a
         plugin's ``initialize(name)``: its host's value), unless the node's other files
         pass it (``CallSites.called_elsewhere``: a placeholder they fill)."""
-        found = self.members.assignments(field) if self.members is not None else []
+        found = self.members.live_assignments(field) if self.members is not None else []
         if not found:
             return None
         value, function = found[0]

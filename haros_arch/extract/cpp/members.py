@@ -16,7 +16,11 @@ default (the visitor takes it as one), not another write. The writes are those
 ``writes.writes_of`` reads. The same reading gives what each member of any type is
 assigned in the file's functions
 (``assignments``): a node handle member set once outside its class's constructors
-(``right_nh_.reset(new ros::NodeHandle(nh, "right"))``).
+(``right_nh_.reset(new ros::NodeHandle(nh, "right"))``). A whole write that a later
+statement of the same block replaces, with nothing between them that may read the
+member, is never seen (``overwritten``): tuw_multi_robot's fake pose nodelet sets ``nh_
+= getPrivateNodeHandle();`` then ``nh_ = getNodeHandle();`` and advertises on the
+second (``live_assignments``).
 """
 
 from __future__ import annotations
@@ -112,6 +116,9 @@ class MemberWrites:
         # the assignments of ``if (!read) member = value;``, which are no writes of
         # their own but the read's default
         self._skipped: set[Key] = set()
+        # the values of whole member writes that a later statement of their block
+        # replaces before anything may read them (``_overwritten``)
+        self._dead: set[Key] = set()
         self._index = 0  # of the function being read
         self._callback = False  # it is a parameter callback (``writes.parameter_callback``)
         self._spans: list[tuple[str, int, int] | None] = []
@@ -155,6 +162,13 @@ class MemberWrites:
         return [(value, self._functions[index])
                 for value, index in self._values.get(key_of(member), [])
                 if self._functions[index].kind != CursorKind.DESTRUCTOR]
+
+    def live_assignments(self, member: Cursor) -> list[tuple[Cursor, Cursor]]:
+        """``assignments`` but those a later statement of their block replaces before
+        anything may read the member (``_overwritten``): the values the member may hold
+        when read."""
+        return [(value, function) for value, function in self.assignments(member)
+                if key(value) not in self._dead]
 
     def assigned(self, call: Cursor) -> Cursor | None:
         """The member ``call``'s result is assigned to, if any."""
@@ -213,9 +227,79 @@ class MemberWrites:
             return
         self._skipped.add(done)
 
+    def _text(self, node: Cursor) -> bytes | None:
+        where = key(node)
+        data = self.source.get(where[0]) if where is not None else None
+        return data[where[1]:where[2]] if data is not None and where is not None else None
+
+    def _own_write(self, statement: Cursor
+                   ) -> tuple[tuple[str, int], Cursor, bytes] | None:
+        """(the member, the value, the member's name) when ``statement`` is itself one
+        whole write of a member of ``this`` (``nh_ = getNodeHandle();``, ``this->p_ =
+        ..;``, ``p_.reset(..)``), else None."""
+        writes = writes_of(strip(statement), self.source)
+        if len(writes) != 1 or not writes[0].whole or writes[0].value is None:
+            return None
+        target = writes[0].target
+        field = target.referenced if target.kind == CursorKind.MEMBER_REF_EXPR else None
+        if field is None or field.kind != CursorKind.FIELD_DECL:
+            return None
+        base = [strip(child) for child in target.get_children()]
+        if base and (len(base) != 1 or base[0].kind != CursorKind.CXX_THIS_EXPR):
+            return None
+        return key_of(field), writes[0].value, field.spelling.encode("utf-8")
+
+    def _reads(self, node: Cursor, names: set[bytes]) -> set[bytes] | None:
+        """Those of ``names`` (of members of ``this``) that ``node``'s text names; None
+        when it may read any member (it names ``this``, calls a method of its own class
+        or a call the parse left unresolved) or its text is not at hand."""
+        text = self._text(node)
+        if text is None or b"this" in text:
+            return None
+        own = self._functions[self._index].semantic_parent
+        for inner in _walk(node):
+            if inner.kind != CursorKind.CALL_EXPR:
+                continue
+            callee = inner.referenced
+            if callee is None:
+                return None
+            parent = callee.semantic_parent
+            if callee.kind in (CursorKind.CXX_METHOD, CursorKind.FUNCTION_TEMPLATE) and (
+                    not callee.is_static_method()) and own is not None and (
+                    parent is not None and key_of(parent) == key_of(own)):
+                return None
+        return {name for name in names if name in text}
+
+    def _overwritten(self, block: Cursor) -> None:
+        """Note the whole member writes of ``block``'s statements that a later one of
+        its statements replaces, with no statement between them (nor the later value)
+        that may read the member (``_reads``): their values are never seen."""
+        pending: dict[tuple[str, int], tuple[Cursor, bytes]] = {}  # member -> its last value
+        for statement in block.get_children():
+            own = self._own_write(statement)
+            names = {name for _, name in pending.values()}
+            if own is not None:
+                names.add(own[2])
+            reads = self._reads(own[1] if own is not None else statement, names)
+            if reads is None:
+                pending.clear()
+            else:
+                for member in [m for m, (_, name) in pending.items() if name in reads]:
+                    del pending[member]
+            if own is None:
+                continue
+            member, value, name = own
+            earlier = pending.get(member)
+            made = key(earlier[0]) if earlier is not None else None
+            if made is not None:
+                self._dead.add(made)
+            pending[member] = (value, name)
+
     def _visit(self, node: Cursor) -> None:
         if node.kind == CursorKind.IF_STMT:
             self._if_not_read(node)
+        if node.kind == CursorKind.COMPOUND_STMT and not self._callback:
+            self._overwritten(node)
         if self._skipped and key(node) in self._skipped:
             return
         for write in writes_of(node, self.source):

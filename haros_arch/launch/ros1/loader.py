@@ -628,7 +628,8 @@ class Ros1Loader:
         """Each node's machine, once every file is loaded, as roslaunch looks it up
         (``assign_machines``): one declared anywhere, after the node too, is known; one
         declared nowhere is an error, unless a file not read (an include whose package
-        is not here: PR2's ``$(find pr2_machine)/pr2.machine``) or a machine whose name
+        is not here: PR2's ``$(find pr2_machine)/pr2.machine``; one missing, said once
+        where it is included) or a machine whose name
         is not known may declare it: then it is undecided, said once per machine, at
         the first node on it."""
         unread = [u.location for u in self.model.unread_includes] + self.unread_files
@@ -814,6 +815,12 @@ class Ros1Loader:
             return False
         root = self.parse(path, location)
         if root is None:
+            if parent is not None and element is not None:
+                # a file missing (or not well-formed XML; said by ``parse``): what it
+                # would declare, a machine, is not known (omniveyor's pcv_base includes
+                # ``$(find omniveyor_mobility)/launch/local.machine``, not in the tree,
+                # for its nodes' ``machine="AGV"``)
+                self.unread_files.append(self.where(parent, element))
             return False
         scope.path = path
         scope.stack = (*scope.stack, key)

@@ -16,6 +16,8 @@ public:
   void callOne();
   void callOne(WallDuration timeout);
   bool empty();
+  bool isEmpty();  // roscpp's other spelling of empty()
+  bool isEnabled();
   void clear();
   void enable();
   void disable();

@@ -1464,11 +1464,23 @@ public:
   explicit operator bool() const noexcept;
   D& get_deleter() noexcept;
 };
-template<class T, class D> class unique_ptr<T[], D> {
+template<class T, class D> class unique_ptr<T[], D> {  // an array's: a member left empty
 public:
+  typedef T element_type;
+  typedef T* pointer;
+  constexpr unique_ptr() noexcept;
+  constexpr unique_ptr(nullptr_t) noexcept;
   explicit unique_ptr(T* p) noexcept;
+  unique_ptr(unique_ptr&& other) noexcept;
+  unique_ptr& operator=(unique_ptr&& other) noexcept;
+  unique_ptr& operator=(nullptr_t) noexcept;
   T& operator[](size_t i) const;
   T* get() const noexcept;
+  T* release() noexcept;
+  void reset(T* p = nullptr) noexcept;
+  void reset(nullptr_t) noexcept;
+  explicit operator bool() const noexcept;
+  D& get_deleter() noexcept;
 };
 template<class T, class D> bool operator==(const unique_ptr<T, D>& a, nullptr_t) noexcept;
 template<class T, class D> bool operator!=(const unique_ptr<T, D>& a, nullptr_t) noexcept;
@@ -1930,6 +1942,7 @@ istream& operator>>(istream&& is, haros_manip m);
 class stringstream : public iostream {
 public:
   stringstream();
+  explicit stringstream(openmode mode);  // ``ostringstream log(ostringstream::out)``
   explicit stringstream(const string& s, openmode mode = in | out);
   string str() const;
   void str(const string& s);
@@ -1938,6 +1951,7 @@ public:
 class ostringstream : public ostream {
 public:
   ostringstream();
+  explicit ostringstream(openmode mode);  // ``ostringstream log(ostringstream::out)``
   explicit ostringstream(const string& s, openmode mode = out);
   string str() const;
   void str(const string& s);
@@ -1946,6 +1960,7 @@ public:
 class istringstream : public istream {
 public:
   istringstream();
+  explicit istringstream(openmode mode);  // ``ostringstream log(ostringstream::out)``
   explicit istringstream(const string& s, openmode mode = in);
   string str() const;
   void str(const string& s);
