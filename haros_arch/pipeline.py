@@ -270,6 +270,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     for launched in launches.values():
         _rosrun_scripts(launched, workspace, nodes)
     every = [n for p in model.packages for n in p.nodes]
+    every += [n for p in model.packages for made in p.version_nodes.values()
+              for n in made.values()]
     batch = None
     if cpp_sources(every, workspace):  # libclang loads only when there is C++ to parse
         from .extract.cpp import CppBatch
@@ -294,7 +296,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
         config = Configuration(spec.name, list(spec.launch), dict(spec.args),
                                {**env, **spec.environment})
         with _stage(options, "models"):  # interface models (no source here)
-            known = models.nodes_for(launches[spec.name], workspace, nodes,
+            known = models.nodes_for(launches[spec.name], workspace,
+                                     built_for(launches[spec.name], model.packages, nodes),
                                      config.environment, config.diagnostics)
         with _stage(options, "graph"):
             graph.build(config, launches[spec.name], workspace, known,
@@ -308,6 +311,23 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
             graph.find_candidates(config)
         model.configurations.append(config)
     return model
+
+
+def built_for(launched: LaunchModel, packages: Sequence[Package],
+              nodes: dict[str, Node]) -> dict[str, Node]:
+    """``nodes`` as the launch files' ROS version builds them: a package CMake builds
+    under both versions from other sources (``Package.version_nodes``) gives that
+    version's program to the launch files of that version (a ROS 2 launch file of
+    depthai_examples starts the ament build's stereo_inertial_node, not the catkin
+    one's). Launch files of both versions, or none, take ``nodes`` as they are."""
+    versions = {str(decl.ros_version) for decl in launched.nodes}
+    if len(versions) != 1:
+        return nodes
+    version = versions.pop()
+    chosen = {node.name: node for package in packages
+              for node in package.version_nodes.get(version, {}).values()
+              if node.name in nodes}
+    return {**nodes, **chosen} if chosen else nodes
 
 
 def without_deferred(packages: Sequence[Package], nodes: dict[str, Node] | None = None,
@@ -339,7 +359,7 @@ def _build_files(packages: Sequence[Package], workspace: Workspace,
         entry = kept.get(package.name)
         given = _kept_package(entry, package.name) if entry is not None else None
         if given is not None:
-            package.nodes, found = given
+            package.nodes, found, package.version_nodes = given
         else:
             with recording() as read:
                 found = read_build_files(package, workspace)
@@ -347,10 +367,17 @@ def _build_files(packages: Sequence[Package], workspace: Workspace,
             if record is not None:
                 nodes = [to_data(node) for node in package.nodes]
                 diagnostics = to_data(found)
+                versions = {version: {executable: to_data(node)
+                                      for executable, node in made.items()}
+                            for version, made in package.version_nodes.items()}
                 if all(_same(node_from_data(data, package.name), node)
-                       for data, node in zip(nodes, package.nodes, strict=True)) and [
+                       for data, node in zip(nodes, package.nodes, strict=True)) and all(
+                           _same(node_from_data(versions[version][executable],
+                                                package.name), node)
+                           for version, made in package.version_nodes.items()
+                           for executable, node in made.items()) and [
                            diagnostic_from_data(d) for d in diagnostics] == found:
-                    entry = {"nodes": nodes, "diagnostics": diagnostics,
+                    entry = {"nodes": nodes, "diagnostics": diagnostics, "versions": versions,
                              "cpp": {path: content_digest(path)
                                      for path in sorted(read)
                                      if path.endswith(runcache.CPP_FILES)}}
@@ -361,7 +388,8 @@ def _build_files(packages: Sequence[Package], workspace: Workspace,
 
 
 def _kept_package(entry: Any, name: str
-                  ) -> tuple[list[Node], list[diag.Diagnostic]] | None:
+                  ) -> tuple[list[Node], list[diag.Diagnostic],
+                             dict[str, dict[str, Node]]] | None:
     """What a package's build files gave in an earlier run (``_build_files``), when the
     C++ files that reading read are as they were; else None."""
     from .model.load import diagnostic_from_data, node_from_data
@@ -371,7 +399,10 @@ def _kept_package(entry: Any, name: str
                for path, digest in entry["cpp"].items()):
             return None
         return ([node_from_data(n, name) for n in entry["nodes"]],
-                [diagnostic_from_data(d) for d in entry["diagnostics"]])
+                [diagnostic_from_data(d) for d in entry["diagnostics"]],
+                {version: {executable: node_from_data(data, name)
+                           for executable, data in made.items()}
+                 for version, made in entry.get("versions", {}).items()})
     except (KeyError, TypeError, ValueError, AttributeError):
         return None
 
@@ -397,6 +428,7 @@ def _read_build_files(package: Package, workspace: Workspace) -> list[diag.Diagn
         package.nodes, found = pysetup.parse_package(package, workspace)
     elif package.build_type in cmake.CMAKE_BUILD_TYPES:
         package.nodes, found = cmake.parse_package(package, workspace)
+        package.version_nodes = cmake.version_nodes(package, workspace, package.nodes)
     others = other_builds(package, workspace.environment)
     if others:  # each ROS version's setup.py, the run giving none
         own = {version for version, build_type in package.builds_by_version.items()

@@ -55,3 +55,50 @@ def test_an_include_unknown_only_through_an_unset_variable_is_said_once(write_tr
     known = load(str(root / "src/pkg/launch/direct.launch"), ws, {},
                  {"ARM_TYPE": "katana_300"})
     assert said(known) == [] and [n.name for n in known.nodes] == ["/arm"]
+
+
+ROS2_DIRECT = ('<launch>\n'
+               '  <include file="$(find-pkg-share pkg)/launch/$(env ARM_TYPE).launch.xml"/>\n'
+               '</launch>\n')
+ROS2_THROUGH_ARG = (
+    '<launch>\n'
+    '  <arg name="sensor" default="$(env ROBOT_SENSOR)"/>\n'
+    '  <include file="$(find-pkg-share pkg)/launch/$(var sensor)_amcl.launch.xml"/>\n'
+    '</launch>\n')
+ROS2_YAML = ('launch:\n'
+             '- include:\n'
+             '    file: "$(find-pkg-share pkg)/launch/$(env ARM_TYPE).launch.xml"\n')
+ROS2_MIXED = ('<launch>\n'
+              '  <include file="$(find-pkg-share pkg)/launch/'
+              '$(env ARM_TYPE)_$(command x).launch.xml"/>\n'
+              '</launch>\n')
+ROS2_ARM = '<launch><node pkg="pkg" exec="arm_node" name="arm"/></launch>\n'
+
+
+def test_ros_2_an_include_unknown_only_through_an_unset_variable_names_it(write_tree):
+    """ROS 2's ``$(env NAME)`` with no default, unset: the include said only
+    ``included file .../?.launch.xml is not known statically`` (LAUNCH_UNSUPPORTED
+    warning), which did not name the variable; now one info that names it, as ROS 1's."""
+    root = write_tree({"src/pkg/package.xml": package_xml("pkg", "ament_cmake"),
+                       "src/pkg/launch/direct.launch.xml": ROS2_DIRECT,
+                       "src/pkg/launch/through_arg.launch.xml": ROS2_THROUGH_ARG,
+                       "src/pkg/launch/direct.launch.yaml": ROS2_YAML,
+                       "src/pkg/launch/mixed.launch.xml": ROS2_MIXED,
+                       "src/pkg/launch/katana.launch.xml": ROS2_ARM})
+    ws = scan([str(root / "src")], {})
+    for name, variable in (("direct.launch.xml", "ARM_TYPE"),
+                           ("through_arg.launch.xml", "ROBOT_SENSOR"),
+                           ("direct.launch.yaml", "ARM_TYPE")):
+        model = load(str(root / "src/pkg/launch" / name), ws, {}, {})
+        line = 3 if name == "through_arg.launch.xml" else 2
+        assert said(model) == [("LAUNCH_UNKNOWN_VALUE", "info", line)], name
+        (message,) = [d.message for d in model.diagnostics
+                      if d.code == "LAUNCH_UNKNOWN_VALUE"]
+        assert f"environment variable {variable} is not set" in message
+        assert not model.nodes
+    # unknown for another cause too: still the warning
+    mixed = load(str(root / "src/pkg/launch/mixed.launch.xml"), ws, {}, {})
+    assert ("LAUNCH_UNSUPPORTED", "warning", 2) in said(mixed)
+    known = load(str(root / "src/pkg/launch/direct.launch.xml"), ws, {},
+                 {"ARM_TYPE": "katana"})
+    assert said(known) == [] and [n.name for n in known.nodes] == ["/arm"]

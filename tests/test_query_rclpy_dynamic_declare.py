@@ -4,8 +4,10 @@ it returns a NOT_SET parameter whose value is None (rclpy node.py, ``get_paramet
 ros2_controllers_test_nodes' trajectory publisher (humble) declares each goal name so,
 gets it, and takes the ``<goal>.positions`` form when it is no list: every goal was
 reported read but never set (Elite's CS driver examples, 8 warnings). A value of None
-given without that descriptor is no default: the parameter is statically typed and
-uninitialised, and its get raises."""
+given with another descriptor is no default: the parameter is statically typed and
+uninitialised, and its get raises. The name alone (``declare_parameter(name)``, a
+one-element tuple of ``declare_parameters``) is dynamically typed; ``(name, None)`` in
+``declare_parameters`` statically."""
 
 from __future__ import annotations
 
@@ -34,6 +36,14 @@ class Goals(Node):
         self.gain = self.get_parameter('gain').value
         self.declare_parameter('ratio', None, ParameterDescriptor(dynamic_typing=True))
         self.ratio = self.get_parameter('ratio').value
+        # the name alone: rclpy declares it dynamically typed (deprecated), get returns it
+        self.declare_parameter('bare')
+        self.bare = self.get_parameter('bare').value
+        self.declare_parameters('', [('one',), ('two', None),
+                                     ('three', None, ParameterDescriptor(dynamic_typing=True))])
+        self.one = self.get_parameter('one').value
+        self.two = self.get_parameter('two').value
+        self.three = self.get_parameter('three').value
 
 
 def main():
@@ -69,4 +79,5 @@ def test_a_dynamically_typed_declaration_is_read_unset_without_failing(write_tre
     unset = sorted(f.message.split(" ")[0] for f in run_catalogue(model)
                    if f.rule == "parameter-read-not-set")
     # a value of None without dynamic typing declares it statically typed, uninitialised
-    assert unset == ["/goals/gain", "/goals/speed"]
+    assert unset == ["/goals/gain", "/goals/speed", "/goals/two"]
+

@@ -19,7 +19,7 @@ from .. import diagnostics as diag
 from .. import plugins, pysetup
 from ..diagnostics import Diagnostic
 from ..files import kept_in, read_text
-from ..manifest import build_ros_version
+from ..manifest import build_ros_version, version_environment
 from ..model.location import Location
 from ..model.source import Node, Package, Plugin
 from ..plugins.classes import remembered
@@ -69,12 +69,14 @@ def interpret(package: Package, workspace: Workspace) -> tuple[Interpreter, list
     return _interpret(package, workspace, PackageFiles(package, workspace))
 
 
-def _interpret(package: Package, workspace: Workspace,
-               files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
+def _interpret(package: Package, workspace: Workspace, files: PackageFiles,
+               version: str = "") -> tuple[Interpreter, list[Diagnostic]]:
     """The package's interpreter, run once per run (``Workspace.interpreted``: a package
-    whose libraries others link is read for them too)."""
-    return kept_in(workspace.interpreted, (package.name, package.root),
-                   lambda: _run(package, workspace, files))
+    whose libraries others link is read for them too); with ``version``, its reading
+    as a distribution of that ROS version builds it (``version_nodes``)."""
+    key = (package.name, package.root + (f"\0{version}" if version else ""))
+    return kept_in(workspace.interpreted, key,
+                   lambda: _run(package, workspace, files, version))
 
 
 _BUILD_DEPENDS = ("depend", "build_depend")
@@ -302,22 +304,61 @@ def _source_definitions(package: Package, workspace: Workspace
     if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
         return {}
     files = PackageFiles(package, workspace)
-    interpreter, _ = _interpret(package, workspace, files)
-    sources = SourceMap(interpreter, files)
     found: dict[str, list[dict[str, CompileDefinition]]] = {}
-    for target in interpreter.targets.values():
-        given = [*(_given_where_made(each, target) for each in target.directory_definitions),
-                 *(_given_where_made(each, target)
-                   for keyword, each in target.definitions if keyword != "INTERFACE"),
-                 *(_given_where_made(each, linked) for linked in sources.closure(target)[1:]
-                   for keyword, each in linked.definitions if keyword != "PRIVATE")]
-        defined: dict[str, CompileDefinition] = {}
-        for each in given:
-            known = defined.get(each.name)
-            defined[each.name] = each if known is None or _same(known, each) else CONFLICT
-        for source in sources.own(target):
-            found.setdefault(source, []).append(defined)
+    # a source only one ROS version's build compiles (``version_builds``) takes what
+    # that reading gives it
+    for version, interpreter in zip(["", *version_builds(package)],
+                                    _readings(package, workspace, files), strict=True):
+        sources = SourceMap(interpreter, files, build_depends=build_depends(package),
+                            package=package.name)
+        here: dict[str, list[dict[str, CompileDefinition]]] = {}
+        for target in interpreter.targets.values():
+            given = [*(_given_where_made(each, target)
+                       for each in target.directory_definitions),
+                     *(_given_where_made(each, target)
+                       for keyword, each in target.definitions if keyword != "INTERFACE"),
+                     *(_given_where_made(each, linked)
+                       for linked in sources.closure(target)[1:]
+                       for keyword, each in linked.definitions if keyword != "PRIVATE"),
+                     *(each for other in sources.packages(target)
+                       for each in exported_definitions(other, workspace, version))]
+            defined: dict[str, CompileDefinition] = {}
+            for each in given:
+                known = defined.get(each.name)
+                defined[each.name] = each if known is None or _same(known, each) else CONFLICT
+            for source in sources.own(target):
+                here.setdefault(source, []).append(defined)
+        for source, given_here in here.items():
+            found.setdefault(source, given_here)
     return found
+
+
+def exported_definitions(name: str, workspace: Workspace,
+                         version: str = "") -> list[CompileDefinition]:
+    """The macros the workspace package ``name``'s libraries that others link define
+    for the targets linking them (``target_compile_definitions`` PUBLIC and INTERFACE,
+    of each exported library and the package libraries it links), each where its
+    library is made; as that package's build for ROS ``version`` makes them, where it
+    is read per version (``version_builds``). depthai_bridge's ament branch gives its
+    library ``PUBLIC IS_ROS2``, which picks the ROS 2 half of every header it installs
+    for depthai_examples' ROS 2 nodes."""
+    return remembered("exported definitions", f"{name}\0{version}", workspace,
+                      lambda: _exported_definitions(name, workspace, version))
+
+
+def _exported_definitions(name: str, workspace: Workspace,
+                          version: str) -> list[CompileDefinition]:
+    package = workspace.packages.get(name)
+    if package is None or package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return []
+    files = PackageFiles(package, workspace)
+    interpreter, _ = _interpret(package, workspace, files,
+                                version if version in version_builds(package) else "")
+    sources = SourceMap(interpreter, files)
+    return list(dict.fromkeys(
+        _given_where_made(each, linked) for target in _exported(interpreter, sources)
+        for linked in sources.closure(target)
+        for keyword, each in linked.definitions if keyword != "PRIVATE"))
 
 
 def _given_where_made(each: CompileDefinition, target: Target) -> CompileDefinition:
@@ -396,20 +437,23 @@ def _source_include_dirs(package: Package, workspace: Workspace) -> dict[str, li
     if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
         return {}
     files = PackageFiles(package, workspace)
-    interpreter, _ = _interpret(package, workspace, files)
-    sources = SourceMap(interpreter, files)
     found: dict[str, list[str]] = {}
-    for target in interpreter.targets.values():
-        made = set(target.sources_under)
-        given = [*(folder for folder, under in target.directory_includes
-                   if set(under) <= made),
-                 *(folder for keyword, folder, under in target.includes
-                   if keyword != "INTERFACE" and set(under) <= made),
-                 *(folder for linked in sources.closure(target)[1:]
-                   for keyword, folder, under in linked.includes
-                   if keyword != "PRIVATE" and set(under) <= set(linked.conditions))]
-        for source in sources.own(target):
-            found[source] = list(dict.fromkeys([*found.get(source, []), *given]))
+    for interpreter in _readings(package, workspace, files):  # as _source_definitions
+        sources = SourceMap(interpreter, files)
+        here: dict[str, list[str]] = {}
+        for target in interpreter.targets.values():
+            made = set(target.sources_under)
+            given = [*(folder for folder, under in target.directory_includes
+                       if set(under) <= made),
+                     *(folder for keyword, folder, under in target.includes
+                       if keyword != "INTERFACE" and set(under) <= made),
+                     *(folder for linked in sources.closure(target)[1:]
+                       for keyword, folder, under in linked.includes
+                       if keyword != "PRIVATE" and set(under) <= set(linked.conditions))]
+            for source in sources.own(target):
+                here[source] = list(dict.fromkeys([*here.get(source, []), *given]))
+        for source, folders in here.items():
+            found.setdefault(source, folders)
     return found
 
 
@@ -418,8 +462,8 @@ def _same(one: CompileDefinition, other: CompileDefinition) -> bool:
                                                       other.conditions)
 
 
-def _run(package: Package, workspace: Workspace,
-         files: PackageFiles) -> tuple[Interpreter, list[Diagnostic]]:
+def _run(package: Package, workspace: Workspace, files: PackageFiles,
+         version: str = "") -> tuple[Interpreter, list[Diagnostic]]:
     found: list[Diagnostic] = []
 
     def reader(path: str) -> list[Invocation]:
@@ -427,7 +471,7 @@ def _run(package: Package, workspace: Workspace,
         found.extend(problems)
         return commands
 
-    interpreter = _interpreter(package, workspace, reader, files)
+    interpreter = _interpreter(package, workspace, reader, files, version)
     path = os.path.join(package.root, "CMakeLists.txt")
     if os.path.isfile(path):
         _EXTRAS_READING.add(package.name)
@@ -443,7 +487,7 @@ def _run(package: Package, workspace: Workspace,
     where, name, values = interpreter.superbuild
     first = found + interpreter.diagnostics
     found = []
-    again = _interpreter(package, workspace, reader, files)
+    again = _interpreter(package, workspace, reader, files, version)
     again.cache.update(values)
     again.run_file(reader(path))
     said = diag.make("CMAKE_SUPERBUILD", where, name=name,
@@ -452,13 +496,17 @@ def _run(package: Package, workspace: Workspace,
 
 
 def _interpreter(package: Package, workspace: Workspace,
-                 reader: Callable[[str], list[Invocation]], files: PackageFiles) -> Interpreter:
+                 reader: Callable[[str], list[Invocation]], files: PackageFiles,
+                 version: str = "") -> Interpreter:
     """An interpreter for the package's CMake files, which finds the config extras of
-    the workspace's other packages (``config_extras``)."""
-    interpreter = Interpreter(package.root, workspace.environment, reader, files.location)
+    the workspace's other packages (``config_extras``); with ``version``, in the
+    environment a distribution of that ROS version sets (``ROS_VERSION``)."""
+    environment = (version_environment(workspace.environment, version) if version
+                   else workspace.environment)
+    interpreter = Interpreter(package.root, environment, reader, files.location)
     interpreter.build_depends = build_depends(package)
     interpreter.package_name, interpreter.package_version = package.name, package.version
-    interpreter.package_ros_version = build_ros_version(package)
+    interpreter.package_ros_version = version or build_ros_version(package)
     interpreter.source_distro = workspace.source_distro
 
     def catkin_project(name: str) -> bool:
@@ -564,10 +612,53 @@ _PROGRAM_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.+-]*")
 _CODE_SUFFIXES = (*C_SUFFIXES, ".h", ".hh", ".hpp", ".hxx")
 
 
-def parse_package(package: Package, workspace: Workspace) -> tuple[list[Node], list[Diagnostic]]:
-    """The runnable nodes a CMake-built package has, with their sources."""
+def version_builds(package: Package) -> list[str]:
+    """The ROS versions ("1", "2") under which a dual package's package.xml has CMake
+    build it (``builds_by_version``: catkin for ROS 1, ament_cmake for ROS 2, chosen by
+    ``$ROS_VERSION``, the run giving none), when there are two: its CMake files are
+    then read once more as each version's distribution builds them, where
+    ``if(ament_cmake_FOUND)`` or ``if($ENV{ROS_VERSION} EQUAL 2)`` is decided
+    (``version_nodes``); empty otherwise."""
+    versions = [version for version, build_type in sorted(package.builds_by_version.items())
+                if build_type in CMAKE_BUILD_TYPES]
+    return versions if len(versions) > 1 else []
+
+
+def version_nodes(package: Package, workspace: Workspace,
+                  nodes: list[Node]) -> dict[str, dict[str, Node]]:
+    """For a package CMake builds under both ROS versions (``version_builds``), each
+    version -> the executables of ``nodes`` (the reading that decides no version) that
+    this version's build makes from other sources, as it makes them. A target made in
+    both branches of an ``if()`` on the ROS version (depthai_examples'
+    ``if(ament_cmake_FOUND) ... elseif(CATKIN_DEVEL_PREFIX)``, each branch making
+    ``stereo_inertial_node`` from its own source) is one node of the last make's
+    sources in ``nodes``; the launch files of each ROS version start the program that
+    version's build makes (``pipeline.built_for``)."""
+    found: dict[str, dict[str, Node]] = {}
+    plain = {node.executable: node for node in nodes if node.kind == "executable"}
+    for version in version_builds(package):
+        made, _ = parse_package(package, workspace, version)
+        for node in made:
+            known = plain.get(node.executable)
+            if node.kind == "executable" and known is not None and node.sources != known.sources:
+                found.setdefault(version, {})[node.executable] = node
+    return found
+
+
+def _readings(package: Package, workspace: Workspace,
+              files: PackageFiles) -> list[Interpreter]:
+    """The package's reading that decides no ROS version, then each version's reading
+    (``version_builds``)."""
+    return [_interpret(package, workspace, files, version)[0]
+            for version in ["", *version_builds(package)]]
+
+
+def parse_package(package: Package, workspace: Workspace,
+                  version: str = "") -> tuple[list[Node], list[Diagnostic]]:
+    """The runnable nodes a CMake-built package has, with their sources; with
+    ``version``, as a distribution of that ROS version builds it."""
     files = PackageFiles(package, workspace)
-    interpreter, found = _interpret(package, workspace, files)
+    interpreter, found = _interpret(package, workspace, files, version)
     found = list(found)
     depends = build_depends(package)
     sources = SourceMap(interpreter, files, lambda name: package_libraries(name, workspace),

@@ -259,3 +259,10 @@ def found_nowhere(value: Value, environment: bool = False) -> bool:
     unknown = [p for p in value.parts if isinstance(p, Unknown)]
     return bool(unknown) and all(p.origin.startswith(causes) for p in unknown)
 
+
+def unset_variables(value: Value) -> list[str]:
+    """The environment variables whose value ``value`` lacks (``$(env NAME)`` with no
+    default, ROS 1's and ROS 2's, where the configuration does not set NAME), in order."""
+    return list(dict.fromkeys(p.origin[len(_ENV_UNSET):] for p in value.parts
+                              if isinstance(p, Unknown) and p.origin.startswith(_ENV_UNSET)))
+

@@ -586,6 +586,12 @@ class Package:
     # then, the ROS version ("1", "2") whose build makes each executable of ``nodes``
     # (its Python code is read with that version's ROS_VERSION)
     node_versions: dict[str, str] = field(default_factory=dict, metadata={"json": False})
+    # a package CMake builds under both ROS versions so (catkin for ROS 1, ament_cmake for
+    # ROS 2): each version -> the executables of ``nodes`` its build makes from other
+    # sources, as it makes them (``cmake.version_nodes``); a launch file of that version
+    # starts those (``pipeline.built_for``)
+    version_nodes: dict[str, dict[str, Node]] = field(default_factory=dict,
+                                                      metadata={"json": False})
 
     def __repr__(self) -> str:
         return f"Package({self.name})"

@@ -1810,11 +1810,11 @@ def _translation_unit(path: str, text: str, ros2: bool,
             d.code == "CPP_NAMES_DECLARED" for d in result.diagnostics) else None
         # the headers the unit includes that are empty stand-ins: a class declared
         # permissively may be of the package one of them names (``CallFinder._unseen_of``)
-        missing = [] if clients is None else _missing_headers(tu, setup)
+        absent = _missing_headers(tu, setup)
         finder = CallFinder(tu, source, owned, where, ros2=ros2, declared=declared,
                             clients=clients, local=local,
-                            ros_class=ros_classes(path, workspace, read),
-                            missing_headers=missing)
+                            ros_class=ros_classes(path, workspace, read, absent),
+                            missing_headers=[] if clients is None else absent)
         finder.run()
         places = _Places(finder, source)
         hidden = _hidden(path, errors, places, fieldless, workspace)
@@ -2095,14 +2095,10 @@ def ros1_clients(path: str, workspace: Workspace, generated: str,
             # costmap_2d's Costmap2DROS): the package's, when the unit may include it
             return name if name in declared else None
         if header:
-            # ``name`` begins a missing header the class is declared in, by folder:
-            # MoveIt's <moveit/robot_model_loader/robot_model_loader.h>, whose
-            # robot_model_loader::RobotModelLoader reaches the unit through a
-            # dependency named moveit_* (moveit_ros_planning_interface brings
-            # moveit_ros_planning's headers): that dependency's, when it may make calls
-            return next((d for d in sorted(declared, key=lambda d: (
-                d != name, d not in direct, d)) if (
-                d == name or d.startswith(name + "_")) and one(d, cls)), None)
+            # ``name`` begins a missing header the class is declared in, by folder
+            # (``header_packages``): that dependency's, when it may make calls
+            return next((d for d in header_packages(name, declared, direct) if one(d, cls)),
+                        None)
         if name in declared or name in workspace.packages:
             return name if one(name, cls) else None
         parts = cls.split("::")
@@ -2127,18 +2123,42 @@ _EXPORTED = frozenset({"depend", "build_export_depend", "run_depend"})
 _QT_CLASS = re.compile(r"Q[A-Z]\w*")
 
 
-def ros_classes(path: str, workspace: Workspace, read: list[str]) -> Callable[[str], bool]:
+def header_packages(top: str, visible: Collection[str],
+                    direct: Collection[str] = ()) -> list[str]:
+    """The packages a unit may include (``visible``) that the first folder ``top`` of a
+    missing header names (``visitor.header_folder``: the header declares the class by
+    the folder below it), the likeliest first: that package, else those whose names
+    begin with it, the unit's own dependencies (``direct``) before those it reaches
+    through them. MoveIt's ``<moveit/robot_model_loader/robot_model_loader.h>``, whose
+    ``robot_model_loader::RobotModelLoader`` reaches a unit through a dependency named
+    ``moveit_*`` (moveit_ros_planning_interface brings moveit_ros_planning's headers).
+    One rule for both questions asked of such a class: whether it is a ROS package's
+    (``ros_classes``) and whose code it runs (``ros1_clients``)."""
+    return [d for d in sorted(visible, key=lambda d: (d != top, d not in direct, d))
+            if d == top or d.startswith(top + "_")]
+
+
+def ros_classes(path: str, workspace: Workspace, read: list[str],
+                missing_headers: Sequence[str] = ()) -> Callable[[str], bool]:
     """Whether a class the parse knows only by its (qualified) name may be a ROS
     package's, whose code may make ROS calls on an object of it: one in the global
     namespace (not known), or whose namespace's first part is a workspace package, a
     package the unit's package may include (``_visible``) or the beginning of one's name
-    (MoveIt's ``moveit::`` of moveit_ros_planning_interface). Not another library's:
-    librealsense's ``rs2::sensor``, which realsense2_camera's RosSensor derives from, is
-    of no package the unit depends on by that name. The manifests read go to ``read``."""
+    (MoveIt's ``moveit::`` of moveit_ros_planning_interface), or is a folder of one of
+    the unit's ``missing_headers`` whose first folder names such a package
+    (``header_packages``: MoveIt's ``planning_interface::PlannerManager`` of
+    ``<moveit/planning_interface/planning_interface.h>``, moveit_core's). Not another
+    library's: librealsense's ``rs2::sensor``, which realsense2_camera's RosSensor
+    derives from, is of no package the unit depends on by that name. The manifests read
+    go to ``read``."""
     package = workspace.package_of(path)
     if package is not None and package.root:
         read.append(manifest_of(package.root))
     visible = _visible(package, workspace, read) if package is not None else set()
+
+    def named(first: str) -> bool:
+        return first in workspace.packages or first in visible or any(
+            name.startswith(first + "_") for name in visible)
 
     def ros(cls: str) -> bool:
         first = cls.lstrip(":").split("::", 1)[0]
@@ -2146,8 +2166,11 @@ def ros_classes(path: str, workspace: Workspace, read: list[str]) -> Callable[[s
             # in the global namespace: not known, but for Qt's classes (``Q`` and a
             # capital: rviz's PropertyTreeModel calls QAbstractItemModel's createIndex)
             return _QT_CLASS.fullmatch(first) is None
-        return first in workspace.packages or first in visible or any(
-            name.startswith(first + "_") for name in visible)
+        if named(first):
+            return True
+        top = header_folder(cls, missing_headers)
+        return top is not None and (top in workspace.packages
+                                    or bool(header_packages(top, visible)))
     return ros
 
 

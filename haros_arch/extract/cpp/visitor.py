@@ -339,6 +339,42 @@ _VALUE_METHODS = frozenset({"c_str", "str", "as_string", "as_int", "as_double", 
 
 
 
+_TEMPLATE_CLASSES = frozenset({CursorKind.CLASS_TEMPLATE,
+                               CursorKind.CLASS_TEMPLATE_PARTIAL_SPECIALIZATION})
+
+
+def _chosen_method(call: Cursor, owned: Callable[[str], bool]) -> tuple[str, str] | None:
+    """The method name and the written type of the object of ``call``, a member call
+    clang leaves unresolved in a template because the object's class is a class
+    template of the workspace specialised on the template's parameters
+    (``adapter_.init(...)``, ``adapter_`` a ``HwAdapter`` = ``Adapter<I, S>``): which
+    class, primary or partial specialisation, and so which method, each instantiation
+    chooses; None for any other call."""
+    children = list(call.get_children())
+    if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR or (
+            children[0].referenced is not None):
+        return None
+    member = children[0]
+    objects = [c for c in member.get_children() if c.kind.is_expression()]
+    if not objects:
+        return None
+    kind = objects[0].type.get_canonical()
+    if kind.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        kind = kind.get_pointee()
+    cls = kind.get_declaration()
+    where = cls.location.file if cls is not None else None
+    if cls is None or cls.kind not in _TEMPLATE_CLASSES or where is None or (
+            not owned(where.name)):
+        return None
+    end = objects[0].extent.end.offset
+    tokens = [t.spelling for t in member.get_tokens() if t.extent.start.offset >= end]
+    while tokens and tokens[0] in (".", "->", "template"):
+        tokens.pop(0)
+    if not tokens or not (tokens[0][0].isalpha() or tokens[0][0] == "_"):
+        return None
+    return tokens[0], objects[0].type.spelling
+
+
 def _written(argument: Cursor, call: Cursor) -> str:
     """An argument of ``call`` as written (its tokens, at most 60 characters). One that a
     macro's body writes (sbus_bridge's ``GET_PARAM(name)``, whose expansion gives
@@ -1702,6 +1738,9 @@ class CallFinder:
         not read. So does an unqualified call that the permissive class's friend takes
         (``synthesis.Names.friends``) in a method of ``function``'s class derived from a
         class declared permissively: it may be that base's method, run on the object."""
+        if call.referenced is None:
+            self._to_chosen_class(call, function)
+            return
         unknown = self._unknown_callee(call)
         if unknown is None:
             return
@@ -1741,6 +1780,31 @@ class CallFinder:
             self.diagnostics.append(diag.make(
                 "CPP_NODE_TO_UNKNOWN", self.where(call), given=_written(given[0], call),
                 name=name))
+
+    def _to_chosen_class(self, call: Cursor, function: Cursor | None) -> None:
+        """Say when ``call``, in a template, gives the node to a method of an object whose
+        class the template's arguments choose, a class template of the workspace
+        (``_chosen_method``): ros_controllers' JointTrajectoryController calls
+        ``hw_iface_adapter_.init(joints_, controller_nh_)`` on a
+        ``HardwareInterfaceAdapter<HardwareInterface, State>``, whose specialisations for
+        velocity and effort interfaces read PID gains and ``velocity_ff`` on that handle
+        and those for position interfaces nothing. The parse walks the template, not
+        each instantiation, so which ``init`` runs is not known: what it does with the
+        node is not read, the node is partial (``CPP_NODE_TO_UNKNOWN``), not complete."""
+        chosen = _chosen_method(call, self.owned)
+        given = node_arguments(call) if chosen is not None else []
+        if chosen is None or not given:
+            return
+        key = place_of(call)
+        if key in self._unknown:
+            return
+        self._unknown.add(key)
+        method, cls = chosen
+        owner = (owner_of(function) if function is not None else self._owner) or ""
+        self._handed_to(owner, method, call)
+        self.diagnostics.append(diag.make(
+            "CPP_NODE_TO_UNKNOWN", self.where(call), given=_written(given[0], call),
+            name=f"{method} of {cls}, a class the template's arguments choose"))
 
     def _of_loaded_base(self, call: Cursor) -> bool:
         """Whether ``call`` is a method of an object held as the base class that a

@@ -67,15 +67,21 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
             name = text_of(ev.eval(pair[0], frame)).text
             full = f"{prefix}.{name}" if prefix else name
             # ``(name, value)`` declares with that default, ``(name, Parameter.Type.X)``
-            # a type and no value, ``(name,)`` neither: as ``declare_parameter`` does
+            # a type and no value; ``(name,)`` dynamically typed, unset (a get returns
+            # it, value None: rclpy's deprecated form), and ``(name, None)`` statically
+            # typed, uninitialised (a get raises), unless its descriptor says
+            # ``dynamic_typing=True`` (rclpy node.py ``declare_parameters``)
             declared_type = type_only(pair[1]) if len(pair) > 1 else None
             value = ev.eval(pair[1], frame) if len(pair) > 1 else None
             ev.declared[full] = value
-            if len(pair) > 1 and declared_type is None:
+            described = dynamic_descriptor(pair[2]) if len(pair) > 2 else False
+            if len(pair) == 1:
+                made.append(replace(base, name=full, has_default=True))
+            elif declared_type is not None or (is_none(pair[1]) and described is False):
+                made.append(replace(base, name=full, type=declared_type))
+            else:
                 made.append(replace(base, name=full, type=param_type(value),
                                     has_default=True, default=plain_value(value)))
-            else:
-                made.append(replace(base, name=full, type=declared_type))
     elif spec.special == "parameters-under":
         prefix = param_name(text_of(evaluate(ev, argument(call, Arg(0, "prefix")), frame)))
         if "?" in prefix:  # a prefix not known statically: whatever it is
@@ -246,6 +252,24 @@ def _elements(expr: ast.expr | None) -> list[ast.expr]:
     if isinstance(expr, ast.List | ast.Tuple):
         return list(expr.elts)
     return []
+
+
+def is_none(expr: ast.expr) -> bool:
+    """Whether ``expr`` is the literal None."""
+    return isinstance(expr, ast.Constant) and expr.value is None
+
+
+def dynamic_descriptor(expr: ast.expr | None) -> bool | None:
+    """Whether ``expr``, written ``ParameterDescriptor(...)``, says ``dynamic_typing=True``;
+    None when it is no such call (a variable, nothing)."""
+    if not isinstance(expr, ast.Call):
+        return None
+    func = expr.func
+    name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+    if name != "ParameterDescriptor":
+        return None
+    return any(k.arg == "dynamic_typing" and isinstance(k.value, ast.Constant)
+               and k.value.value is True for k in expr.keywords)
 
 
 def param_name(text: Value) -> str:

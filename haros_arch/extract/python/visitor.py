@@ -64,7 +64,14 @@ from .qos import as_profile, with_policy
 from .reach import Reach, imports_ros
 from .scopes import COPIES as _COPIES
 from .scopes import MAX_UNROLL, MAX_UNROLL_OUTER
-from .specials import evaluate, param_name, special_calls, type_only
+from .specials import (
+    dynamic_descriptor,
+    evaluate,
+    is_none,
+    param_name,
+    special_calls,
+    type_only,
+)
 from .values import (
     MAX_CALL_DEPTH,
     NODE_NAME,
@@ -1176,14 +1183,21 @@ class Walker:
             if declared_type is not None:
                 # declare_parameter('port', Parameter.Type.STRING): a type, no value
                 base.type = declared_type
-            elif spec.kind == "declare" and (value_expr is None or _none(value_expr)) and (
-                    _descriptor(argument(call, Arg(2, "descriptor"))) is not None):
+            elif spec.kind == "declare" and (value_expr is None or is_none(value_expr)) and (
+                    dynamic_descriptor(argument(call, Arg(2, "descriptor"))) is not None):
                 # declare_parameter(name, [None,] descriptor=ParameterDescriptor(..)):
                 # rclpy's get_parameter of it, unset, returns a NOT_SET parameter (value
                 # None) when the descriptor says dynamic_typing=True, and raises for a
-                # statically typed one, as any other descriptor declares (with no
-                # descriptor, rclpy makes the parameter dynamically typed)
-                base.has_default = _descriptor(argument(call, Arg(2, "descriptor"))) is True
+                # statically typed one, as any other descriptor declares
+                base.has_default = dynamic_descriptor(
+                    argument(call, Arg(2, "descriptor"))) is True
+            elif spec.kind == "declare" and value_expr is None and argument(
+                    call, Arg(2, "descriptor")) is None:
+                # declare_parameter(name): rclpy (node.py, humble to rolling) passes the
+                # name alone to declare_parameters, which declares it dynamically typed
+                # (the deprecated form), so a get of it unset returns it, value None,
+                # as it does for declare_parameter(name, None)
+                base.has_default = True
             elif value_expr is not None and spec.kind in ("read", "declare"):
                 base.has_default = True
                 base.default = plain_value(value)
@@ -1636,23 +1650,6 @@ def _iterated_members(module: Module) -> set[str]:
         module.iterated_members = {
             member for value in walked if (member := _self_member(value)) is not None}
     return module.iterated_members
-
-
-def _none(expr: ast.expr) -> bool:
-    return isinstance(expr, ast.Constant) and expr.value is None
-
-
-def _descriptor(expr: ast.expr | None) -> bool | None:
-    """Whether ``expr``, written ``ParameterDescriptor(...)``, says ``dynamic_typing=True``;
-    None when it is no such call (a variable, nothing)."""
-    if not isinstance(expr, ast.Call):
-        return None
-    func = expr.func
-    name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
-    if name != "ParameterDescriptor":
-        return None
-    return any(k.arg == "dynamic_typing" and isinstance(k.value, ast.Constant)
-               and k.value.value is True for k in expr.keywords)
 
 
 def _resolved(value: object) -> tuple[Value, str | None] | None:

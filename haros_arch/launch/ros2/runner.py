@@ -38,7 +38,14 @@ from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Unknown, Value
 from ...share import generated_at, share_source
 from ...workspace import Workspace
-from ..model import LaunchModel, NodeDecl, ParamDecl, RecordedEnvironment, found_nowhere
+from ..model import (
+    LaunchModel,
+    NodeDecl,
+    ParamDecl,
+    RecordedEnvironment,
+    found_nowhere,
+    unset_variables,
+)
 from ..partial_yaml import MARK, marked_text, unknown_parts
 from ..paths import written_absolute
 from ..tree import node_items
@@ -687,7 +694,19 @@ class Runner:
     def do_Include(self, action: e.Include, scope: Scope) -> None:
         path = self.value(action.path, scope, action.location)
         if path is None or path.literal is None:
-            if path is None or not found_nowhere(path):
+            unset = unset_variables(path) if path is not None else []
+            if path is not None and unset and found_nowhere(path, environment=True):
+                # unknown only through environment variables the configuration does not
+                # set (``$(env ARM_TYPE)``, no default; launch raises SubstitutionFailure
+                # without them): said once, naming them, as the ROS 1 loader says it
+                unsure = [name for name in unset if name in self.environment_unsure]
+                self.report("LAUNCH_UNKNOWN_VALUE", action.location, detail=(
+                    f"included file {path} is not known statically: environment "
+                    f"variable{'s' if len(unset) > 1 else ''} {', '.join(unset)} "
+                    f"{'are' if len(unset) > 1 else 'is'} not set in the configuration"
+                    + (f" (a launch file sets {', '.join(unsure)} under a test not known "
+                       "statically)" if unsure else "")))
+            elif path is None or not found_nowhere(path):
                 self.report("LAUNCH_UNSUPPORTED", action.location,
                             detail=f"included file {path} is not known statically")
             self.unread(str(path) if path is not None else "?", scope, action.location)

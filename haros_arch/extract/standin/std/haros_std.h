@@ -628,6 +628,15 @@ string to_string(unsigned long v);
 string to_string(unsigned long long v);
 string to_string(float v);
 string to_string(double v);
+string to_string(long double v);
+wstring to_wstring(int v);
+wstring to_wstring(long v);
+wstring to_wstring(long long v);
+wstring to_wstring(unsigned v);
+wstring to_wstring(unsigned long v);
+wstring to_wstring(unsigned long long v);
+wstring to_wstring(float v);
+wstring to_wstring(double v);
 int stoi(const string& s, size_t* pos = nullptr, int base = 10);
 long stol(const string& s, size_t* pos = nullptr, int base = 10);
 unsigned long stoul(const string& s, size_t* pos = nullptr, int base = 10);
@@ -1964,6 +1973,84 @@ public:
   explicit istringstream(const string& s, openmode mode = in);
   string str() const;
   void str(const string& s);
+  void clear();
+};
+// the wide streams (<sstream>, <iostream>, <fstream> over wchar_t: bcap_service's
+// ``std::wstringstream ss; ss << L",WDT=" << m_wdt; ss.str().c_str()``), each its own
+// class as the narrow ones are
+class wostream : virtual public ios_base {
+public:
+  wostream& operator<<(bool v);
+  wostream& operator<<(short v);
+  wostream& operator<<(unsigned short v);
+  wostream& operator<<(int v);
+  wostream& operator<<(unsigned v);
+  wostream& operator<<(long v);
+  wostream& operator<<(unsigned long v);
+  wostream& operator<<(long long v);
+  wostream& operator<<(unsigned long long v);
+  wostream& operator<<(float v);
+  wostream& operator<<(double v);
+  wostream& operator<<(long double v);
+  wostream& operator<<(const void* v);
+  wostream& operator<<(wostream& (*manip)(wostream&));
+  wostream& operator<<(ostream& (*manip)(ostream&));
+  wostream& flush();
+  wostream& write(const wchar_t* s, long n);
+};
+wostream& operator<<(wostream& os, wchar_t c);
+wostream& operator<<(wostream& os, char c);
+wostream& operator<<(wostream& os, const wchar_t* s);
+wostream& operator<<(wostream& os, const char* s);
+wostream& operator<<(wostream& os, const wstring& s);
+wostream& operator<<(wostream& os, haros_manip m);
+class wistream : virtual public ios_base {
+public:
+  wistream& operator>>(bool& v);
+  wistream& operator>>(int& v);
+  wistream& operator>>(unsigned& v);
+  wistream& operator>>(long& v);
+  wistream& operator>>(unsigned long& v);
+  wistream& operator>>(float& v);
+  wistream& operator>>(double& v);
+  wistream& operator>>(wstring& s);
+  wistream& operator>>(wchar_t& c);
+  wistream& ignore(long n = 1, int delim = -1);
+  int get();
+  wistream& get(wchar_t& c);
+  int peek();
+  wistream& read(wchar_t* s, long n);
+  long gcount() const;
+};
+class wiostream : public wostream, public wistream {};
+wistream& getline(wistream& is, wstring& s);
+wistream& getline(wistream& is, wstring& s, wchar_t delim);
+extern wostream wcout;
+extern wostream wcerr;
+extern wostream wclog;
+extern wistream wcin;
+class wstringstream : public wiostream {
+public:
+  wstringstream();
+  explicit wstringstream(const wstring& s, openmode mode = in | out);
+  wstring str() const;
+  void str(const wstring& s);
+  void clear();
+};
+class wostringstream : public wostream {
+public:
+  wostringstream();
+  explicit wostringstream(const wstring& s, openmode mode = out);
+  wstring str() const;
+  void str(const wstring& s);
+  void clear();
+};
+class wistringstream : public wistream {
+public:
+  wistringstream();
+  explicit wistringstream(const wstring& s, openmode mode = in);
+  wstring str() const;
+  void str(const wstring& s);
   void clear();
 };
 class ifstream : public istream {
