@@ -2,9 +2,9 @@
 image_publisher declares ``declare_parameter("publish_rate", static_cast<double>(10))``
 and ros_gz_sim's ``create`` ``declare_parameter("x", static_cast<double>(0))`` (and y, z,
 R, P, Y; jazzy's: humble's reads gflags); the models, built before that fix, typed them
-int, so a launch file giving ``publish_rate: 25.0`` (riptide_core's underwater camera) or a pose ``x: 1.5``
-was a false parameter-type-mismatch, and one giving ``publish_rate: 25`` (an int, which
-rclcpp refuses for a double) none."""
+int, so a launch file giving ``publish_rate: 25.0`` (riptide_core's underwater camera)
+or a pose ``x: 1.5`` was a false parameter-type-mismatch, and one giving
+``publish_rate: 25`` (an int, which rclcpp refuses for a double) none."""
 
 from __future__ import annotations
 
