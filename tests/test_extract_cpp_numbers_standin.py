@@ -51,3 +51,25 @@ def test_std_numbers_constants_parse(write_tree) -> None:
             if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")] == []
     assert [(c.kind, c.name) for c in result.calls] == [
         ("declare", "yaw_offset_deg"), ("publish", "yaw")]
+
+
+def test_std_numbers_reached_without_its_include_in_cpp20(write_tree) -> None:
+    """libstdc++ includes <numbers> from its ranges support, which <string> and the
+    other headers use in C++20: a source built as C++20 that writes std::numbers::pi
+    after <rclcpp/rclcpp.hpp> alone compiles; in C++17 it is an error."""
+    source = SOURCE.replace("#include <numbers>\n", "")
+    cmake = ("cmake_minimum_required(VERSION 3.8)\nproject(pkg)\n"
+             "set(CMAKE_CXX_STANDARD {std})\nfind_package(rclcpp REQUIRED)\n"
+             "add_executable(turner src/node.cpp)\n")
+    for std in ("20", "17"):
+        root = write_tree({"pkg/package.xml": package_xml("pkg", "ament_cmake"),
+                           "pkg/CMakeLists.txt": cmake.format(std=std),
+                           "pkg/src/node.cpp": source})
+        result = extract_cpp([str(root / "pkg" / "src" / "node.cpp")], scan([str(root)]),
+                             cache_dir=None)
+        found = [d.message for d in result.diagnostics
+                 if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+        if std == "20":
+            assert found == []
+        else:
+            assert found and "numbers" in found[0]
