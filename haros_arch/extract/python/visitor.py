@@ -537,7 +537,10 @@ class Walker:
         code's own switch, kept as a condition), nor one assigned again
         (``_rebound_globals``); the caller leaves out the frame's locals."""
         written = module.constants.get(name)
-        if written is None or isinstance(written, ast.Constant | ast.UnaryOp):
+        if written is None or (isinstance(written, ast.Constant | ast.UnaryOp)
+                               and name not in module.import_guarded):
+            # (but a flag a ROS import guard sets is what running as a node makes it:
+            # kyubic_ros' dashboard's ``ROS_AVAILABLE``, ``modules._ros_import_guard``)
             return False
         rebound = _rebound_globals(module.tree)
         if name in rebound:
