@@ -860,13 +860,18 @@ CATALOGUE: dict[str, Entry] = {
         "the node is 'partial' and checks that claim something is absent do not decide "
         "on it, rather than take a robot's whole base for a node with no interface."),
     "PY_RUNS_ROS_TOOL": Entry(
-        "info", "{call} runs rosrun, roslaunch, rosbag, rqt_bag or ros2 at run time; "
-        "the nodes it starts, or the topics a bag it plays holds, are not read",
+        "info", "{call} runs rosrun, roslaunch, rosbag, rqt_bag, ros2 or a micro-ROS / "
+        "XRCE-DDS agent at run time; the nodes it starts, or the topics a bag it plays or "
+        "an agent bridges hold, are not read",
         "A Python program runs a command that starts ROS nodes or plays a bag "
         "(``subprocess.call(['rosrun', 'rviz', 'rviz', '-d', path])``, "
         "``os.system('roslaunch ...')``, ``rosbag play`` with the remaps the program was "
-        "given): Doosan's dmodel.py writes an rviz configuration and starts rviz so, "
-        "spencer_bagfile_tools' play.py plays the recorded bags. What it starts or "
+        "given), or the agent that puts a micro-ROS or XRCE-DDS client's topics on the "
+        "ROS 2 graph (MicroXRCEAgent, micro-ros-agent: PX4's ``/fmu/...``), also through "
+        "a terminal emulator or a shell that runs it (``gnome-terminal -- bash -c "
+        "'MicroXRCEAgent udp4 -p 8888; exec bash'``): Doosan's dmodel.py writes an rviz "
+        "configuration and starts rviz so, spencer_bagfile_tools' play.py plays the "
+        "recorded bags, the PX4 offboard example starts the agent. What it starts or "
         "publishes is decided at run time, so the node is 'partial' and checks that "
         "claim something is absent (a remap that changes no name too) do not decide on "
         "it."),
@@ -958,7 +963,9 @@ CATALOGUE: dict[str, Entry] = {
     "PY_PARSE_ERROR": Entry(
         "error", "Python syntax error: {detail}",
         "The Python file could not be parsed (nor read as Python 2 after repairing its "
-        "print/exec/except statements); it gives no calls."),
+        "print/exec/except statements, nor with Python 3.12's f-strings, whose fields "
+        "may span lines or reuse the f-string's quotes, written triple-quoted); it gives "
+        "no calls."),
     "PY_PYTHON2": Entry(
         "info", "Python 2 syntax; read after a line-preserving repair",
         "The file uses Python 2 statements (print, exec, 'except E, e') or indents a "

@@ -68,3 +68,34 @@ def test_a_command_that_plays_a_bag_is_said_and_one_that_reads_it_is_not(tmp_pat
     result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
     said = [d.location.line for d in result.diagnostics if d.code == "PY_RUNS_ROS_TOOL"]
     assert said == [10, 11, 13, 14]
+
+
+PROCESSES = """#!/usr/bin/env python3
+import subprocess
+import time
+
+commands = [
+    "MicroXRCEAgent udp4 -p 8888",
+    "cd ~/PX4-Autopilot && make px4_sitl gz_x500",
+]
+
+for command in commands:
+    subprocess.run(["gnome-terminal", "--tab", "--", "bash", "-c", command + "; exec bash"])
+    time.sleep(1)
+subprocess.run(["xterm", "-e", "ros2 run demo_nodes_cpp talker"])
+subprocess.Popen("sh -c 'cd /tmp && micro-ros-agent serial --dev /dev/ttyACM0'", shell=True)
+subprocess.run(["gnome-terminal", "--", "bash", "-c", "make; exec bash"])
+subprocess.run(["konsole", "-e", "htop"])
+"""
+
+
+def test_a_command_a_terminal_or_a_shell_runs_is_read(tmp_path) -> None:
+    """The PX4 offboard example's processes.py opens a terminal tab per command, each a
+    bash that runs it: the micro XRCE-DDS agent, which puts PX4's topics (``/fmu/out/
+    ...``) on the graph, and the simulator. The agent starts ROS entities as rosrun
+    does; the terminal, the shell and ``make`` do not."""
+    source = tmp_path / "processes.py"
+    source.write_text(PROCESSES)
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    said = [d.location.line for d in result.diagnostics if d.code == "PY_RUNS_ROS_TOOL"]
+    assert said == [11, 13, 14]

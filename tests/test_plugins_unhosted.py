@@ -210,6 +210,22 @@ def test_a_vendor_library_the_code_names_is_no_plugin(write_tree: Any) -> None:
     assert [r for r in instance.completeness_reasons if "dlopen(argv[1]" in r]
 
 
+def test_a_load_in_code_the_preprocessor_leaves_out_is_no_load(write_tree: Any) -> None:
+    """vectornav's SDK, vendored in riptide_imu, compiles dllvalidator.cpp whole under
+    ``#if defined WIN32 && defined DLL_VALIDATOR``: its ``LoadLibraryEx`` of each DLL a
+    Windows binary needs is no code of a Linux build, yet it made the IMU node partial
+    (CPP_LIBRARY_LOADED, CPP_NODE_PARTIAL). The same load in code that is built still
+    counts."""
+    skipped = ("\n#if defined WIN32 && defined DLL_VALIDATOR\n"
+               "      void * dll = LoadLibraryEx(argv[1], NULL, 0);\n#endif\n")
+    instance = _vendor_run(write_tree, skipped)
+    assert instance.completeness == "complete", instance.completeness_reasons
+    instance = _vendor_run(write_tree, skipped.replace("defined WIN32 &&", "1 ||"))
+    assert instance.completeness == "partial"
+    assert [r for r in instance.completeness_reasons if "LoadLibraryEx(argv[1]" in r], \
+        instance.completeness_reasons
+
+
 LOADER = """
     void * load(const char * library, int flags) {
       return dlopen(library, RTLD_NOW | flags);

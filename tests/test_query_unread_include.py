@@ -288,20 +288,27 @@ def test_components_loaded_into_a_container_started_elsewhere_leave_them_undecid
 @pytest.mark.parametrize("command", [
     "ExecuteProcess(cmd=['ros2', 'bag', 'play', LaunchConfiguration('bag_file')])",
     "ExecuteProcess(cmd=['sleep', '5'])",
-], ids=["ros2-bag-play", "no-ros-tool"])
+    "ExecuteProcess(cmd=['MicroXRCEAgent', 'udp4', '-p', '8888'])",
+    "ExecuteProcess(cmd=[['micro-ros-agent udp4 --port 8888 -v ']], shell=True)",
+], ids=["ros2-bag-play", "no-ros-tool", "xrce-agent", "micro-ros-agent-shell"])
 def test_a_ros2_command_not_interpreted_may_be_the_missing_side(
         write_tree: Any, command: str) -> None:
     """ouster's replay launch plays a bag, ``ros2 bag play $(var bag_file) --clock``: the
     player publishes what was recorded, which is not seen, so the point cloud node's
     subscriptions are undecided, not "nothing publishes". A command that is no ROS tool
-    leaves them decided."""
+    leaves them decided. PX4's ROS 2 launch files start the micro XRCE-DDS agent so,
+    which publishes the flight controller's topics: what the agent bridges is not seen
+    either."""
     found = _ros2_findings(write_tree, command)
     if "sleep" in command:
         assert len(found.get("subscriber-without-publisher", [])) == 1
         return
     assert "subscriber-without-publisher" not in found
     undecided = found["subscriber-without-publisher-undecided"]
-    assert len(undecided) == 1 and "process ros2 bag play" in undecided[0]
+    process = ("process ros2 bag play" if "bag" in command
+               else "process MicroXRCEAgent udp4 -p" if "MicroXRCEAgent" in command
+               else "process micro-ros-agent udp4 --port")
+    assert len(undecided) == 1 and process in undecided[0], undecided
 
 
 @pytest.mark.parametrize(("command", "process"), [

@@ -1,15 +1,188 @@
 """``ast.parse`` for code read from the workspace: the compiler's warnings about it
 (``SyntaxWarning: invalid decimal literal``, invalid escape sequences) are not ours to
-print, so they are not printed."""
+print, so they are not printed.
+
+Code written for Python 3.12 (Ubuntu 24.04, ROS 2 Jazzy and later) may use the
+f-strings of PEP 701, which an older interpreter's parser refuses: a replacement field
+of a single-quoted f-string that runs over several lines (``f'... {\\n value}'``), or a
+string inside a field quoted as the f-string itself is (``f"{d["key"]}"``). When the
+text does not parse and holds such an f-string, each one is written triple-quoted
+(``f'''...'''``: its fields may then span lines and hold strings in either quote, as
+3.6 to 3.11 allow) and the text parsed again; the columns of the tree are put back on
+the file's own lines. A field that holds a backslash or a comment (also new in 3.12) is
+not rewritten: the file's syntax error stands."""
 
 from __future__ import annotations
 
 import ast
+import sys
 import warnings
 from typing import Any
+
+# the string prefixes (any case) a quote may follow
+_PREFIXES = frozenset({"r", "u", "f", "b", "br", "rb", "fr", "rf"})
+_QUOTES = "'\""
 
 
 def parse(text: str, filename: str = "<unknown>", mode: str = "exec") -> Any:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return ast.parse(text, filename=filename, mode=mode)
+        try:
+            return ast.parse(text, filename=filename, mode=mode)
+        except SyntaxError:
+            if sys.version_info >= (3, 12):
+                raise
+            rewritten = _nested_f_strings(text)
+            if rewritten is None:
+                raise
+            try:
+                tree = ast.parse(rewritten[0], filename=filename, mode=mode)
+            except (SyntaxError, ValueError):
+                pass
+            else:
+                _shift_back(tree, rewritten[1])
+                return tree
+            raise
+
+
+class _Unreadable(Exception):
+    """A string this scan does not rewrite (the text is left as it is)."""
+
+
+def _nested_f_strings(text: str) -> tuple[str, dict[int, list[int]]] | None:
+    """``text`` with every single-quoted f-string whose fields need Python 3.12 written
+    triple-quoted, and, per line (1-based), the columns of the rewritten text where two
+    quote characters were added; None when there is none, or one cannot be rewritten."""
+    edits: list[tuple[int, int, str]] = []  # opening quote, closing quote, new quote
+    i, n = 0, len(text)
+    try:
+        while i < n:
+            char = text[i]
+            if char == "#":
+                end = text.find("\n", i)
+                i = n if end == -1 else end
+            elif char in _QUOTES:
+                i = _top_string(text, i, "", edits)
+            elif char.isalpha() or char == "_":
+                start = i
+                while i < n and (text[i].isalnum() or text[i] == "_"):
+                    i += 1
+                word = text[start:i]
+                if i < n and text[i] in _QUOTES and word.lower() in _PREFIXES:
+                    i = _top_string(text, i, word.lower(), edits)
+            else:
+                i += 1
+    except _Unreadable:
+        return None
+    if not edits:
+        return None
+    pieces: list[str] = []
+    added: dict[int, list[int]] = {}
+    last = 0
+    for opening, closing, quote in edits:
+        pieces += [text[last:opening], quote * 3, text[opening + 1:closing], quote * 3]
+        last = closing + 1
+    pieces.append(text[last:])
+    rewritten = "".join(pieces)
+    # where each added pair of quotes is in the rewritten text, for the columns
+    shift = 0
+    for opening, closing, _ in edits:
+        for place in (opening + shift, closing + shift + 2):
+            line = rewritten.count("\n", 0, place) + 1
+            column = place - (rewritten.rfind("\n", 0, place) + 1)
+            added.setdefault(line, []).append(column)
+        shift += 4
+    return rewritten, added
+
+
+def _top_string(text: str, at: int, prefix: str, edits: list[tuple[int, int, str]]) -> int:
+    """Scan the string whose quote is at ``at``; record it in ``edits`` when it is a
+    single-quoted f-string that needs rewriting. The index after it."""
+    end, needs = _string(text, at, prefix)
+    if needs:
+        body = text[at + 1:end - 1]
+        quote = next((q for q in (text[at], *_QUOTES) if q * 3 not in body
+                      and not body.endswith(q)), None)
+        if quote is None:
+            raise _Unreadable
+        edits.append((at, end - 1, quote))
+    return end
+
+
+def _string(text: str, at: int, prefix: str) -> tuple[int, bool]:
+    """The index after the string whose quote is at ``at`` (``prefix`` before it), and
+    whether it is a single-quoted f-string that only Python 3.12 reads."""
+    quote = text[at]
+    width = 3 if text.startswith(quote * 3, at) else 1
+    fmt = "f" in prefix
+    needs = False
+    i, n = at + width, len(text)
+    while i < n:
+        char = text[i]
+        if char == "\\":
+            i += 2
+            continue
+        if text.startswith(quote * width, i):
+            return i + width, needs
+        if char == "\n" and width == 1:
+            raise _Unreadable  # unterminated: not ours to mend
+        if fmt and char == "{":
+            if text.startswith("{{", i):
+                i += 2
+                continue
+            i, field = _field(text, i + 1, quote, width)
+            needs = needs or (field and width == 1)
+            continue
+        i += 1
+    raise _Unreadable
+
+
+def _field(text: str, at: int, quote: str, width: int) -> tuple[int, bool]:
+    """The index after the replacement field that starts at ``at`` (after its ``{``) of
+    an f-string quoted by ``quote`` ``width`` times, and whether the field needs Python
+    3.12 (a line break in it, or a string quoted as the f-string)."""
+    depth, needs = 0, False
+    i, n = at, len(text)
+    while i < n:
+        char = text[i]
+        if char in "([{":
+            depth += 1
+        elif char in ")]":
+            depth -= 1
+        elif char == "}":
+            if depth == 0:
+                return i + 1, needs
+            depth -= 1
+        elif char == "\n":
+            needs = True
+        elif char in "\\#":
+            raise _Unreadable  # new in 3.12 too, and not written otherwise here
+        elif char in _QUOTES or char.isalpha() or char == "_":
+            start = i
+            while i < n and (text[i].isalnum() or text[i] == "_"):
+                i += 1
+            word = text[start:i].lower()
+            if i < n and text[i] in _QUOTES and (not word or word in _PREFIXES):
+                inner = text[i]
+                if inner == quote and (width == 3 or text.startswith(inner * 3, i)):
+                    raise _Unreadable  # the f-string's own quotes, tripled
+                end, inner_needs = _string(text, i, word)
+                if inner_needs:
+                    raise _Unreadable  # one level of rewriting only
+                needs = needs or inner == quote
+                i = end
+            continue
+        i += 1
+    raise _Unreadable
+
+
+def _shift_back(tree: ast.AST, added: dict[int, list[int]]) -> None:
+    """Put the columns of a tree parsed from the rewritten text back on the file's own
+    lines: two characters less for each pair of quotes added before the column."""
+    for node in ast.walk(tree):
+        for line_key, column_key in (("lineno", "col_offset"),
+                                     ("end_lineno", "end_col_offset")):
+            line, column = getattr(node, line_key, None), getattr(node, column_key, None)
+            if line in added and isinstance(column, int):
+                before = sum(2 for place in added[line] if place < column)
+                setattr(node, column_key, max(column - before, 0))

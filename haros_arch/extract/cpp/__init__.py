@@ -1567,10 +1567,15 @@ def library_loads(path: str, text: str, workspace: Workspace,
     its configuration lists; what they do on the node is not in its code. With the
     unit's parse ``tu``, not a load of a library the code names by a string literal
     (itself or through a macro) that no package of the workspace builds
-    (``_vendor_library``): a vendor's library, like any the node links."""
-    sites = _LIBRARY_LOAD.finditer(text)
+    (``_vendor_library``): a vendor's library, like any the node links; nor one in code
+    the preprocessor leaves out of this build (vectornav's dllvalidator.cpp, whose
+    ``LoadLibraryEx`` is all under ``#if defined WIN32 && defined DLL_VALIDATOR``)."""
+    sites: Iterable[re.Match[str]] = _LIBRARY_LOAD.finditer(text)
     if tu is not None:
-        sites = (m for m in sites if not _vendor_library(path, text, m, tu, workspace))
+        skipped = recall.skipped_lines(tu).get(os.path.abspath(path), [])
+        sites = (m for m in sites if not any(
+            start <= text.count("\n", 0, m.start()) + 1 <= end for start, end in skipped)
+            and not _vendor_library(path, text, m, tu, workspace))
     return _load_lines("CPP_LIBRARY_LOADED", path, text, workspace, sites,
                        ("//", "*", "/*", "#"))
 
@@ -1975,6 +1980,9 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
                                         or _DECLARATION_ONLY.match(e.spelling))
               or _in_ros_call(e, source, near)]
     errors = [e for e in errors if not _of_kept_call(e, finder.kept_unresolved)]
+    wrappers = sorted(n for n in finder.wrappers.site_names if n)
+    bare = finder.wrappers.site_names_bare
+    errors = [e for e in errors if not _of_quiet_overloads(e, places, wrappers, bare)]
     if not errors:
         return []
     files = dict.fromkeys([path, *(e.path for e in errors if e.path is not None)])
@@ -2002,8 +2010,6 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         lines.setdefault(workspace.relpath(name), set()).add(line)
     for name, ranges in recall.skipped_lines(finder.tu).items():
         silent.setdefault(name, []).extend(ranges)  # no code of this build
-    wrappers = sorted(n for n in finder.wrappers.site_names if n)
-    bare = finder.wrappers.site_names_bare
     found: list[Diagnostic] = []
     for name in files:
         text = source.text(name)
@@ -2042,6 +2048,43 @@ def _of_kept_call(error: _Error, kept: set[tuple[str, int, str]]) -> bool:
     found = _CALL_ERROR.search(error.spelling)
     return found is not None and error.name is not None and (
         error.name, error.line, found.group(1)) in kept
+
+
+def _of_quiet_overloads(error: _Error, places: _Places, wrappers: list[str],
+                        bare: Iterable[str]) -> bool:
+    """Whether ``error`` is clang's "call to 'f' is ambiguous" of a function ``f`` whose
+    every overload is a function of the unit's own files that makes no ROS call, on a
+    line that holds none either: riptide_imu's ``toMsg(cd.quaternion())``, where its
+    two overloads take ``vn::math::vec4f`` and ``vec3f`` of a library not here, both
+    built from anything by the parse; whichever runs, it only fills a message, so the
+    error, in the callback that publishes it, hides no ROS call."""
+    if "is ambiguous" not in error.spelling or error.path is None:
+        return False
+    called = _CALL_ERROR.search(error.spelling)
+    if called is None:
+        return False
+    name = called.group(1).rsplit("::", 1)[-1]
+    if name in _api_names() or name in wrappers:
+        return False
+    finder, source = places.finder, places.source
+    overloads = [f for f in finder.functions if f.spelling == name
+                 and f.kind in (CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD,
+                                CursorKind.FUNCTION_TEMPLATE)]
+    if not overloads:
+        return False
+    for function in overloads:
+        start, end = function.extent.start, function.extent.end
+        if start.file is None or not function.is_definition():
+            return False
+        text = source.text(os.path.abspath(start.file.name))
+        if text is None or any(start.line <= site.line <= end.line
+                               for site in recall.call_sites(text, wrappers, bare,
+                                                             finder.ros2)):
+            return False
+    text = source.text(error.path)
+    return text is not None and all(
+        site.line != error.line
+        for site in recall.call_sites(text, wrappers, bare, finder.ros2))
 
 
 ROSCPP = "roscpp"

@@ -397,6 +397,16 @@ def _constant_at(name: str, text: bytes, offset: int, end: int) -> str | None:
     labels = list(_CASE_WORDS.finditer(statement))
     if labels and b":" not in statement[labels[-1].end():].replace(b"::", b""):
         return kind  # in the label's expression, up to its colon
+    if _CONSTANT.fullmatch(name) and (
+            (window.endswith(b"?") and _NUMBER_AFTER_COLON.match(text, end) is not None)
+            or _NUMBER_BEFORE_COLON.search(window) is not None):
+        # a constant in capitals one branch of a conditional whose other is a number
+        # (vectornav's ``adjust ? COMMONGROUP_TIMESTARTUP : 0`` among the binary output
+        # groups it ORs together, the SDK's header missing): a permissive value converts
+        # to the number's type and is built from it, so clang finds the conditional
+        # ambiguous; an enumerator only converts, as the library's own does. A bit of
+        # its own: such a constant is a flag more often than not
+        return "flag"
     return kind if _in_enum_body(text, offset) else None
 
 
@@ -467,6 +477,11 @@ _DECLARING = re.compile(rb"\b(?:using|typedef|namespace)\b")
 _TYPE_AS_VALUE = re.compile(r"^expected '\(' for function-style cast or type construction")
 _NAME_BEFORE = re.compile(rb"((?:[A-Za-z_]\w*\s*::\s*)*[A-Za-z_]\w*)\s*$")
 _CONSTANT = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)+|[A-Z]{2,}[0-9]*")
+# the other branch of a conditional, an integer literal: after the name (``? NAME : 0``)
+# or before it (``? 0 : NAME``)
+_NUMBER_AFTER_COLON = re.compile(rb"\s*:(?!:)\s*\(?\s*(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*\s*\)?"
+                                 rb"\s*[),;]")
+_NUMBER_BEFORE_COLON = re.compile(rb"\?\s*\(?\s*(?:0[xX][0-9a-fA-F]+|\d+)[uUlL]*\s*\)?\s*:$")
 # an unqualified name in capitals, two letters at least, not called: a macro or a
 # constant of a missing header (robotis_math's ``DEGREE2RADIAN``, ``#define``d there), a
 # value; a member is rarely written so
@@ -1199,6 +1214,9 @@ class Names:
                 self.flags |= flags
 
     def _learn_one(self, message: str, text: bytes | None, offset: int) -> None:
+        if message == "expected namespace name" and text is not None:
+            self._using_namespace(text, offset)
+            return
         if _BODY_EXPECTED.match(message):
             for macro in _declaration_macros(text, offset) if text is not None else []:
                 if macro not in self.declaration_macros:
@@ -1484,6 +1502,31 @@ class Names:
         if kind is not None and not {"constant", kind} <= node.uses:
             node.uses.update(("constant", kind))
             self.count += 1
+
+    def _using_namespace(self, text: bytes, offset: int) -> None:
+        """``using namespace vn::math;`` of a namespace the parse does not know, no name
+        of it written qualified (vectornav's driver: its SDK's headers missing, the
+        names it uses from ``vn::math``, ``vn::sensors``, ``vn::xplat`` all written
+        bare): declared, each part a namespace, so the directive is valid and the
+        names it brings are found in it (``_found_by_using``)."""
+        start = text.rfind(b"using", max(0, offset - 200), offset + 1)
+        found = _USING.match(text, start) if start != -1 else None
+        if found is None or not start <= offset <= found.end():
+            return
+        node = self.root
+        for part in re.sub(rb"\s+", b"", found.group(1)).decode().split("::"):
+            if not part or part in _KEYWORDS:
+                return
+            child = node.children.get(part)
+            if child is None:
+                child = node.children[part] = _Name()
+                self.count += 1
+            if not child.known and child.uses != {"scope"} and child.uses <= _VALUE_USES:
+                # a name the failed directive made a value (``use of undeclared
+                # identifier``) is the namespace the directive needs
+                child.uses = {"scope"}
+                self.changed += 1
+            node = child
 
     def _complete(self, qualified: str) -> None:
         """A class declared but never defined, which the code uses complete

@@ -74,6 +74,9 @@ class Module:
     stars: list[str] = field(default_factory=list)       # qualified modules
     local_stars: list[str] = field(default_factory=list)  # module files
     constants: dict[str, ast.expr] = field(default_factory=dict)
+    # the names a ROS import guard's body binds (``_ros_import_guard``): what running as
+    # a ROS node makes them, not a switch of the code's own
+    import_guarded: set[str] = field(default_factory=set)
     functions: dict[str, FunctionInfo] = field(default_factory=dict)
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     values: dict[str, object] = field(default_factory=dict)
@@ -312,6 +315,48 @@ def _index_statement(module: Module, loader: Loader, statement: ast.stmt) -> Non
         _index_guarded_imports(module, loader, statement)
         if isinstance(statement, ast.If):
             _index_guarded(module, statement, ())
+        elif _ros_import_guard(statement):
+            for child in statement.body:
+                if isinstance(child, ast.Assign | ast.AnnAssign):
+                    bound: dict[str, ast.expr] = {}
+                    _constant(child, bound)
+                    module.constants.update(bound)
+                    module.import_guarded.update(bound)
+
+
+# the exceptions a failed import raises
+_IMPORT_ERRORS = frozenset({"ImportError", "ModuleNotFoundError"})
+
+
+def _ros_import_guard(statement: ast.Try) -> bool:
+    """Whether a module-level ``try`` imports the ROS client library and only ROS
+    modules (the client library's, interface modules ``pkg.msg`` / ``.srv`` /
+    ``.action``) and catches only a failed import: kyubic_ros' dashboard sets
+    ``ROS_AVAILABLE = True`` after ``import rclpy`` and its messages, ``False`` in
+    ``except ImportError`` (a UI-only mode), then makes its node only ``if
+    ROS_AVAILABLE``. Run as a ROS node those imports succeed, so the names the body
+    binds are the module's (the handler's are not), and the node's calls no longer
+    hang on a test not known."""
+    if statement.finalbody or not statement.handlers or not all(
+            handler.type is not None and _names(handler.type) <= _IMPORT_ERRORS
+            for handler in statement.handlers):
+        return False
+    modules = [alias.name for child in statement.body if isinstance(child, ast.Import)
+               for alias in child.names]
+    modules += [child.module for child in statement.body
+                if isinstance(child, ast.ImportFrom) and child.module and not child.level]
+    if any(isinstance(child, ast.ImportFrom) and child.level for child in statement.body):
+        return False
+    client = any(name.split(".")[0] in ("rclpy", "rospy") for name in modules)
+    return client and all(name.split(".")[0] in ("rclpy", "rospy")
+                          or (len(name.split(".")) > 1 and name.split(".")[1] in (
+                              "msg", "srv", "action")) for name in modules)
+
+
+def _names(expr: ast.expr) -> set[str]:
+    """The exception class names an ``except`` clause gives (one, or a tuple's)."""
+    items = expr.elts if isinstance(expr, ast.Tuple) else [expr]
+    return {item.id if isinstance(item, ast.Name) else "?" for item in items}
 
 
 def _index_guarded_imports(module: Module, loader: Loader, statement: ast.If | ast.Try) -> None:

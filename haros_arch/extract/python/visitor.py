@@ -16,7 +16,9 @@ from __future__ import annotations
 import ast
 import dataclasses
 import functools
+import itertools
 import re
+import shlex
 import sys
 from collections.abc import Callable
 
@@ -542,7 +544,10 @@ class Walker:
         code's own switch, kept as a condition), nor one assigned again
         (``_rebound_globals``); the caller leaves out the frame's locals."""
         written = module.constants.get(name)
-        if written is None or isinstance(written, ast.Constant | ast.UnaryOp):
+        if written is None or (isinstance(written, ast.Constant | ast.UnaryOp)
+                               and name not in module.import_guarded):
+            # (but a flag a ROS import guard sets is what running as a node makes it:
+            # kyubic_ros' dashboard's ``ROS_AVAILABLE``, ``modules._ros_import_guard``)
             return False
         rebound = _rebound_globals(module.tree)
         if name in rebound:
@@ -1357,18 +1362,23 @@ class Walker:
         nodes or plays a bag (``_starts_nodes``: Doosan's dmodel.py writes an rviz
         configuration and runs ``['rosrun', 'rviz', 'rviz', '-d', path]``;
         spencer_bagfile_tools' play.py runs ``rosbag play`` with the remaps it was
-        given)."""
+        given), also when a terminal or a shell runs it (``_commands``: the PX4 offboard
+        example's processes.py opens ``gnome-terminal --tab -- bash -c
+        'MicroXRCEAgent udp4 -p 8888; exec bash'``)."""
         given = call.args[0] if call.args else next(
             (k.value for k in call.keywords if k.arg == "args"), None)
         if given is None or isinstance(given, ast.Starred):
             return False
         value = self.evaluator.eval(given, frame)
         if isinstance(value, Seq):
-            words = [text_of(item).text.strip() for item in value.items[:3]]
+            words = [text_of(item).text.strip() for item in value.items[:_MAX_WORDS]]
+            if len(words) == 1:
+                words = _split_words(words[0])
         else:
-            words = (text_of(value).text.strip() if value is not None else "").split()[:3]
-        return _starts_nodes([w.rsplit("/", 1)[-1] if i == 0 else w
-                              for i, w in enumerate(" ".join(words).split()[:3])])
+            words = _split_words(text_of(value).text if value is not None else "")
+        return any(_starts_nodes([w.rsplit("/", 1)[-1] if i == 0 else w
+                                  for i, w in enumerate(" ".join(command).split()[:3])])
+                   for command in _commands(words))
 
     def _dynamic_import(self, function: str, call: ast.Call, frame: Frame) -> None:
         """Say where the program imports a module whose name it computes at run time
@@ -1444,10 +1454,69 @@ class Walker:
                                     getattr(node, "col_offset", -1) + 1)
 
 
-# the functions that run a command, and the commands that start ROS nodes
+# the functions that run a command, and the commands that start ROS nodes: the ROS
+# tools, and the agents that put the topics of a micro-ROS or XRCE-DDS client (PX4's
+# uxrce_dds_client, a microcontroller) on the ROS 2 graph
 _SUBPROCESSES = frozenset({"subprocess.call", "subprocess.check_call", "subprocess.run",
                            "subprocess.Popen", "subprocess.check_output", "os.system"})
-_ROS_TOOLS = frozenset({"rosrun", "roslaunch", "rqt_bag"})
+_ROS_TOOLS = frozenset({"rosrun", "roslaunch", "rqt_bag", "MicroXRCEAgent",
+                        "micro-ros-agent", "micro_ros_agent"})
+# a command's words read at most; the terminal emulators that run the command after
+# ``--``, ``-e``, ``-x`` (or ``--command=`` / ``--execute``), and the shells that run
+# the text after ``-c``, with what may come before a command in a shell line
+_MAX_WORDS = 64
+_TERMINALS = frozenset({"gnome-terminal", "xterm", "konsole", "terminator", "tilix",
+                        "xfce4-terminal", "mate-terminal", "lxterminal", "kitty",
+                        "alacritty", "urxvt", "x-terminal-emulator"})
+_TERMINAL_RUNS = frozenset({"--", "-e", "-x", "--command", "--execute"})
+_SHELLS = frozenset({"bash", "sh", "zsh", "dash"})
+_PREFIX_WORDS = frozenset({"exec", "nohup", "sudo", "setsid"})
+_SEPARATORS = frozenset({";", "&&", "||", "|", "&"})
+
+
+def _split_words(text: str) -> list[str]:
+    """A command line's words, as a shell splits them (quotes kept together, ``;``,
+    ``&&``, ``|`` words of their own); split on spaces when its quoting is broken."""
+    try:
+        lexer = shlex.shlex(text, posix=True, punctuation_chars=";&|")
+        lexer.whitespace_split = True
+        return list(itertools.islice(lexer, _MAX_WORDS))
+    except ValueError:
+        return text.split()[:_MAX_WORDS]
+
+
+def _commands(words: list[str], depth: int = 0) -> list[list[str]]:
+    """The commands a command line runs: itself, or what the terminal emulator or the
+    shell it starts runs (``gnome-terminal --tab -- bash -c 'cd ~/PX4 && make; exec
+    bash'``: ``cd ~/PX4``, ``make``, ``exec bash``), each without a leading ``exec``,
+    ``nohup``, ``sudo`` or variable assignment."""
+    found: list[list[str]] = []
+    current: list[str] = []
+    for word in [*words, ";"]:
+        if word not in _SEPARATORS:
+            current.append(word)
+            continue
+        while current and (current[0] in _PREFIX_WORDS or re.fullmatch(r"\w+=\S*", current[0])):
+            current = current[1:]
+        first = current[0].rsplit("/", 1)[-1] if current else ""
+        inner: list[str] | None = None
+        if first in _TERMINALS:
+            at = next((i for i, w in enumerate(current) if w in _TERMINAL_RUNS
+                       or w.startswith("--command=")), None)
+            if at is not None:
+                given = current[at]
+                inner = ([given.split("=", 1)[1]] if given.startswith("--command=")
+                         else current[at + 1:])
+                if len(inner) == 1:
+                    inner = _split_words(inner[0])
+        elif first in _SHELLS and len(current) > 2 and current[1] == "-c":
+            inner = _split_words(current[2])
+        if inner is not None and depth < 3:
+            found += _commands(inner, depth + 1)
+        elif current:
+            found.append(current)
+        current = []
+    return found
 
 
 def _starts_nodes(words: list[str]) -> bool:

@@ -78,6 +78,10 @@ Parser = Callable[[str, "Runner", Location], "list[e.Action] | None"]
 _LAUNCH_PRINTS = frozenset({"-p", "--print", "--print-description", "-s", "--show-args",
                             "--show-arguments"})
 _LAUNCH_OPTIONS_WITH_VALUE = frozenset({"--launch-prefix", "--launch-prefix-filter"})
+# the agents that put the topics of a micro-ROS or XRCE-DDS client (PX4's
+# uxrce_dds_client, a microcontroller's micro-ROS) on the ROS 2 graph, run as programs
+# (the Python nodes' reader counts them too: extract.python.visitor._ROS_TOOLS)
+_XRCE_AGENTS = frozenset({"MicroXRCEAgent", "micro-ros-agent", "micro_ros_agent"})
 
 
 @dataclass
@@ -916,12 +920,19 @@ class Runner:
         gazebo_ros (``gazebo -s libgazebo_ros_factory.so``, ``line`` the command's words,
         None where not known): those plugins are ROS nodes (``/spawn_entity``,
         ``/clock``), and the models spawned into it load their own ROS plugins
-        (tello_ros' simulation: its TelloPlugin serves ``tello_action``)."""
+        (tello_ros' simulation: its TelloPlugin serves ``tello_action``). And so does a
+        micro XRCE-DDS agent (``MicroXRCEAgent udp4 -p 8888``), whose clients' topics
+        (PX4's) it puts on the graph."""
         gazebo = gazebo_ros_command(line or [])
         if gazebo is not None:
             self.unread(gazebo, scope, where, detail="process")
             return
         words = head.split()
+        if words and words[0].rsplit("/", 1)[-1] in _XRCE_AGENTS:
+            # a micro XRCE-DDS agent publishes and subscribes for its clients (PX4's
+            # ``/fmu/out/...``): what is not seen, as a bag's topics are
+            self.unread(head, scope, where, detail="process")
+            return
         if words[:1] == ["ros2"]:
             verb = ROS2CLI_VERBS.get(words[1]) if len(words) > 1 else None
             if verb is not None:  # ``ros2 bag``: the package that gives ros2 the verb

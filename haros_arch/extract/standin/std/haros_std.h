@@ -2516,4 +2516,10 @@ class synchronized_pool_resource : public monotonic_buffer_resource {};
 }  // namespace pmr
 }  // namespace std
 namespace __gnu_cxx {}
+// C++20's mathematical constants: libstdc++ reaches <numbers> from <string>, <memory>
+// and the other headers built on its ranges (bits/max_size_type.h), so a C++20 source
+// may use std::numbers::pi with no #include of its own (kyubic_ros' localization)
+#if __cplusplus > 201703L
+#include "numbers"
+#endif
 #endif
