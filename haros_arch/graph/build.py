@@ -627,7 +627,9 @@ def _namespace_values(config: Configuration) -> None:
     parameter ``gains.`` of ``get_parameters_by_prefix("gains")``, when the configuration
     sets ``gains.P``, ``gains.I.max``) is the same read with ``.`` for ``/``, its
     dictionary keyed by the rest of each name (``P``, ``I.max``), as rclpy and rclcpp
-    give it; it does not read ``gains`` itself."""
+    give it; it does not read ``gains`` itself. A node that does not declare the
+    overrides it is given (``PrimitiveCall.declared_only``) gets only what it declares
+    there: what nothing else of it reads is not read as part of it."""
     set_params = [p for p in config.parameters if p.set_by_launch]
     # their names in order, and each one's place among them: the names under a prefix
     # are one run of the sorted names (found by bisection, then taken in their order)
@@ -643,6 +645,11 @@ def _namespace_values(config: Configuration) -> None:
         while last < len(names) and names[last].startswith(prefix):
             last += 1
         below = [set_params[index] for index in sorted(order[first:last])]
+        if all(link.call is not None and link.call.declared_only for link in param.readers):
+            # a ROS 2 node that does not declare its overrides gets only the parameters
+            # it declares (``PrimitiveCall.declared_only``): what it reads by name, never
+            # one the configuration sets beside them
+            below = [child for child in below if child.readers]
         if not below:
             continue
         tree: dict[str, Any] = {}
