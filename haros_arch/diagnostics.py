@@ -396,6 +396,17 @@ CATALOGUE: dict[str, Entry] = {
         "test_worlds/gazebo_ros_range.W()orld; mycobot_ros2's detect_marker.launch.py "
         "gave rviz2 -d its package's config/mypal_260.rviz). A path with a part not "
         "known statically, or a file the build makes, is not judged."),
+    "LAUNCH_PROCESS_ARG_PATH_MISSING": Entry(
+        "warning", "process {command} is given the path {path} on its command line, which "
+        "is not there",
+        "A ROS 2 launch file's ExecuteProcess (an <executable cmd=...>) that starts no node "
+        "the reader can name holds, among its arguments, an absolute path into the "
+        "workspace that does not exist (rviz2 -d of a package's share folder, python3 of "
+        "a script there): the share folder holds what the package's build installs, so "
+        "the program is started with a file it cannot open, as LAUNCH_NODE_ARG_PATH_MISSING "
+        "says of a node's arguments. A path with a part not known statically, a file the "
+        "build makes, one in a folder the package does not hold (the launch file may make "
+        "it) or given to an option of output is not judged."),
     "LAUNCH_INCLUDE_ABSOLUTE": Entry(
         "warning", "launch file {path} is included by an absolute path this file writes "
         "out; it is there only on the machine that wrote it",

@@ -29,6 +29,7 @@ from ..plugins.classes import base_name, exported_classes
 from ..plugins.hosts import host_of
 from ..plugins.inherit import without_other_classes, without_overridden
 from ..workspace import Workspace
+from .overrides import clear_where_declared
 
 if TYPE_CHECKING:
     from .cpp import CppBatch, CppResult
@@ -125,6 +126,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             node.rosname = _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
             node.handles_given = dict(result.handles_given)
+            clear_where_declared(node, workspace)
         if cpp_batch is not None:
             cpp_batch.extend(batch)
         found.extend(_read_elsewhere(batch.all_diagnostics(), cpp, batch.results, workspace))
@@ -415,6 +417,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
         node.handles_given = dict(result.handles_given)
+        clear_where_declared(node, workspace)
         said = _read_elsewhere(result.diagnostics, [node], [result], workspace)
         return [*said, *completeness(node, result.diagnostics, workspace)]
     if node.language == "python" and sources:
@@ -423,6 +426,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         found = extract_python(sources, workspace, package=node.package,
                                environment=_build_environment(node, workspace))
         node.calls = found.calls
+        clear_where_declared(node, workspace)
         node.rosname = found.rosname
         if found.rosname and found.namespace and found.namespace.strip("/"):
             # as the C++ side writes it: the namespace the code gives, then the name

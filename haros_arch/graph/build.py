@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import bisect
 import os
+from collections import Counter
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
@@ -11,7 +12,7 @@ from weakref import WeakKeyDictionary
 
 from .. import diagnostics as diag
 from ..diagnostics import Diagnostic
-from ..launch.model import LaunchModel, NodeDecl, shell_words
+from ..launch.model import LaunchModel, NodeDecl, ParamDecl, shell_words
 from ..launch.ros2.naming import pattern_matches
 from ..model.conditions import EACH_STATEMENT, ELEMENT_PARAMETER, Condition
 from ..model.launch_tree import LaunchItem, PackageUse, installed_check
@@ -182,8 +183,12 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     # with the manager's name: linked once every instance, the manager's too, is known
     in_manager: list[tuple[NodeInstance, list[PrimitiveCall], str]] = []
     per_plugin: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
-    for decl, own in process_nodes(launch.nodes, nodes):
+    own_values = _own_values(launch, given)
+    for index, decl, own in ((index, decl, own) for index, original in enumerate(launch.nodes)
+                             for decl, own in process_nodes([original], nodes)):
         instance = _instance(decl, nodes, workspace, config)
+        if index in own_values and instance.ros_version == 2:
+            _OWN_VALUES[instance] = own_values[index]
         if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
             instance.code_name = own
         instance.conditions = (*instance.conditions, *_made_under(instance.node, own))
@@ -642,7 +647,9 @@ def _namespace_values(config: Configuration) -> None:
     parameter ``gains.`` of ``get_parameters_by_prefix("gains")``, when the configuration
     sets ``gains.P``, ``gains.I.max``) is the same read with ``.`` for ``/``, its
     dictionary keyed by the rest of each name (``P``, ``I.max``), as rclpy and rclcpp
-    give it; it does not read ``gains`` itself."""
+    give it; it does not read ``gains`` itself. A node that does not declare the
+    overrides it is given (``PrimitiveCall.declared_only``) gets only what it declares
+    there: what nothing else of it reads is not read as part of it."""
     set_params = [p for p in config.parameters if p.set_by_launch]
     # their names in order, and each one's place among them: the names under a prefix
     # are one run of the sorted names (found by bisection, then taken in their order)
@@ -658,6 +665,11 @@ def _namespace_values(config: Configuration) -> None:
         while last < len(names) and names[last].startswith(prefix):
             last += 1
         below = [set_params[index] for index in sorted(order[first:last])]
+        if all(link.call is not None and link.call.declared_only for link in param.readers):
+            # a ROS 2 node that does not declare its overrides gets only the parameters
+            # it declares (``PrimitiveCall.declared_only``): what it reads by name, never
+            # one the configuration sets beside them
+            below = [child for child in below if child.readers]
         if not below:
             continue
         tree: dict[str, Any] = {}
@@ -1288,6 +1300,27 @@ def _name_default(call: PrimitiveCall, instance: NodeInstance) -> str | None:
     return found[0]
 
 
+# ROS 2: the values the launch gives an instance that shares its name with another
+# (``_own_values``), by full parameter name
+_OWN_VALUES: WeakKeyDictionary[NodeInstance, dict[str, ParamDecl]] = WeakKeyDictionary()
+
+
+def _own_values(launch: LaunchModel, given: list[ParamDecl]) -> dict[int, dict[str, ParamDecl]]:
+    """The parameters the launch gives each node declaration (by its index) whose name
+    another declaration has too. launch_ros hands each process its own parameters, so
+    two ROS 2 nodes of one name (a duplicate, said as such) each read their own values,
+    while the graph keeps one parameter per full name, set to the last one's
+    (Nautilus-One's two ``publish_camera`` nodes of ``camera_name`` front and down: both
+    were named after the down camera, two false multiple publishers)."""
+    names = Counter(decl.name for decl in launch.nodes if UNKNOWN_MARK not in decl.name)
+    shared = {index for index, decl in enumerate(launch.nodes) if names[decl.name] > 1}
+    found: dict[int, dict[str, ParamDecl]] = {}
+    for param in given:
+        if param.owner in shared and param.pattern is None:
+            found.setdefault(param.owner, {})[param.name] = param
+    return found
+
+
 def _parameter_value(written: str, default: str | None, instance: NodeInstance,
                      resources: Resources) -> str | None:
     """The text value of the instance's parameter ``written`` (as the code names it):
@@ -1298,7 +1331,10 @@ def _parameter_value(written: str, default: str | None, instance: NodeInstance,
         return ros_argument(instance, written[len(ROS_ARGUMENT):])
     source = _node_scoped(written) if instance.ros_version == 2 else written
     param_name = RosName.make(source, instance.namespace, instance.name).full
-    param = resources.by_name.get((Parameter, param_name))
+    own = _OWN_VALUES.get(instance, {}).get(param_name)
+    param = resources.by_name.get((Parameter, param_name)) if own is None else None
+    if own is not None and (isinstance(own.value, str) or own.value is None):
+        return own.value  # its own, not another node's of the same name
     if isinstance(param, Parameter) and param.set_by_launch:
         if isinstance(param.value, str):
             return param.value

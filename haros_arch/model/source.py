@@ -203,6 +203,15 @@ class PrimitiveCall:
     # whole (``graph.build._namespace_values``): what the configuration sets under the
     # prefix is read as part of it
     under: bool = field(default=False, metadata={"optional": True})
+    # ROS 2: a read of every parameter the node has (under a prefix, ``under``, or all of
+    # them, ``~``: rclpy's ``get_parameters_by_prefix``, rclcpp's ``get_parameters(prefix,
+    # map)`` and ``list_parameters``) made on a node that does not declare the overrides
+    # it is given (``automatically_declare_parameters_from_overrides``, false by default in
+    # rclpy and rclcpp): it gets only the parameters the node declares, not every one the
+    # configuration sets (``graph.build._namespace_values``). The extractor marks such
+    # reads and clears the mark where the node's code may declare its overrides
+    # (``extract.overrides``)
+    declared_only: bool = field(default=False, metadata={"optional": True})
     # ROS 1: a namespace read whole (``getParam("", dict)``) whose value the code uses for
     # its keys alone (``for (auto& pair : dict)`` naming only ``pair.first``, and
     # ``getType()`` / ``size()`` / ``valid()``): mavros' distance_sensor iterates the

@@ -2626,6 +2626,9 @@ class CallFinder:
                 name_more=source[5] if source else None,
                 has_default=has_default or isinstance(written, PrefixName),
                 default=default, tested=typed_only, under=isinstance(written, PrefixName),
+                declared_only=self.ros2 and spec.kind == "read" and (
+                    isinstance(written, PrefixName) or (written == "~" and (
+                        call.spelling == "list_parameters" or call.spelling in _PREFIXED))),
                 searched=spec.searched or isinstance(written, SearchedName) or (
                     isinstance(written, ChoiceName) and written.searched),
                 keys_only=not self.ros2 and spec.kind == "read" and (spec.presence or keys_only(

@@ -88,7 +88,8 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
             made.append(replace(base, name=f"{prefix}.?", has_default=True, default={}))
         else:  # what is under ``prefix.`` (``""``: every parameter, the node's ``~`` whole)
             made.append(replace(base, name=f"{prefix}." if prefix else "~",
-                                under=bool(prefix), has_default=True, default={}))
+                                under=bool(prefix), has_default=True, default={},
+                                declared_only=version == 2))
     elif spec.special == "parameter-names":
         items = call.args[0] if call.args else argument(call, _kw("names"))
         listed = evaluate(ev, items, frame)

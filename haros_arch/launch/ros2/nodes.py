@@ -67,7 +67,7 @@ def _rewritten(runner: Runner, ev: Evaluator, arguments: list[e.Text], scope: Sc
     return found
 
 
-def _installed(runner: Runner, path: str) -> str | None:
+def installed_source(runner: Runner, path: str) -> str | None:
     """The source file a path of a node's command line stands for, a share folder's
     file read from what the package's build installs there (``share_source``); None
     for one the build makes (a file ``configure_file`` writes or an install rule takes
@@ -121,7 +121,7 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
     runner.model.nodes[-1].rewritten_files = _rewritten(runner, ev, action.arguments,
                                                         scope, where)
     for path in missing_argument_paths(plain, runner.workspace,
-                                       lambda p: _installed(runner, p)):
+                                       lambda p: installed_source(runner, p)):
         runner.report("LAUNCH_NODE_ARG_PATH_MISSING", where,
                       path=runner.workspace.relpath(path), name=full)
     if not action.split:  # one word per argument: a Command's output is one of them

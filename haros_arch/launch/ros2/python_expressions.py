@@ -90,6 +90,26 @@ _OPERATOR_SIGNS: dict[type, str] = {
     ast.Mod: "%", ast.Pow: "**", ast.BitAnd: "&", ast.BitOr: "|", ast.BitXor: "^",
     ast.LShift: "<<", ast.RShift: ">>", ast.MatMult: "@"}
 
+def _substitution(value: Any) -> bool:
+    """Whether ``value`` is a launch substitution object the file made (a
+    ``LaunchConfiguration``, ``FindPackageShare``, ``PathJoinSubstitution``, a
+    ``pathlib`` path of parts known at launch time...), not text computed when launch
+    runs (``Lazy``, a ``str`` then) nor a value not known (``Opaque``: any object), nor
+    an object of a substitution class the file defines (``Performed``: it may define
+    operators)."""
+    return isinstance(value, e.Subst) and not isinstance(value, (e.Opaque, e.Performed))
+
+
+def _operand_kind(value: Any) -> str:
+    if isinstance(value, e.PathJoin) and value.python == e.PATHLIB:
+        return "a pathlib path"
+    if isinstance(value, e.Subst):
+        return "a launch substitution"
+    if isinstance(value, PurePosixPath):
+        return "a pathlib path"
+    return "str"
+
+
 class Expressions(Walker):
     """The expression half of ``Interpreter`` (statements and calls live there)."""
 
@@ -313,6 +333,18 @@ class Expressions(Walker):
             if isinstance(right, Unknown):
                 return Unknown("a path part not known statically")
             return e.PathJoin((*left.parts, to_text(right)), left.python)
+        if isinstance(op, ast.Add) and (_substitution(left) or _substitution(right)) and (
+                is_stringy(left) or isinstance(left, PurePosixPath)) and (
+                is_stringy(right) or isinstance(right, PurePosixPath)) and not (
+                isinstance(left, (Unknown, e.Opaque)) or isinstance(right, (Unknown, e.Opaque))):
+            # launch's substitutions define no ``+`` (``Substitution`` has ``describe``
+            # and ``perform`` alone, and a str's ``+`` takes a str): Python raises where
+            # the file is loaded. A list of them, ``[LaunchConfiguration('ns'), '/scan']``,
+            # or ``PathJoinSubstitution`` is what joins them
+            kinds = " and ".join(dict.fromkeys(_operand_kind(x) for x in (left, right)))
+            return self.failed(node, f"{_source(node)} fails: TypeError: unsupported "
+                               f"operand type(s) for +: {kinds}; a list of the parts joins "
+                               "them", "TypeError")
         if isinstance(op, ast.Add) and (is_stringy(left) or is_stringy(right)) and not (
                 isinstance(left, list) or isinstance(right, list)):
             return concat([left, right])

@@ -47,7 +47,7 @@ from ..model import (
     unset_variables,
 )
 from ..partial_yaml import MARK, marked_text, unknown_parts
-from ..paths import written_absolute
+from ..paths import missing_argument_paths, written_absolute
 from ..tree import node_items
 from . import entities as e
 from . import naming, recording
@@ -193,6 +193,14 @@ class _Scoped(Mapping[str, str]):
 
     def __len__(self) -> int:
         return sum(1 for _ in self)
+
+
+# programs whose arguments name the files or folders they make: a path of them that is
+# not there is no file missing (``_missing_paths``)
+_FILE_MAKERS = frozenset({"cp", "mv", "mkdir", "touch", "ln", "tee", "install", "rsync",
+                          "dd", "tar", "unzip", "wget", "curl"})
+# a shell redirection, alone (its file the next word) or with its file (``>out``)
+_REDIRECT = re.compile(r"\d?>>?|&>|\d?>>?\S+|&>\S+")
 
 
 class Runner:
@@ -883,10 +891,13 @@ class Runner:
         if action.words is not None:  # known to be no node when it was made
             head = e.command_head(action.words)
             self.report("LAUNCH_PROCESS", action.location, command=head)
-            self._ros_command(head, scope, action.location, [
-                "".join(p for p in word if isinstance(p, str))
-                if all(isinstance(p, str) for p in word) else None
-                for word in action.words])
+            line = ["".join(p for p in word if isinstance(p, str))
+                    if all(isinstance(p, str) for p in word) else None
+                    for word in action.words]
+            self._ros_command(head, scope, action.location, line)
+            ev = self.evaluator(scope, action.location)
+            self._missing_paths(head, [ev.value(word).text for word in action.words],
+                                action.location)
             return
         value = self.value(action.cmd, scope, action.location)
         words: list[str] = []
@@ -907,9 +918,30 @@ class Runner:
                        else value.text if value is not None else "")
             self._ros_command(" ".join(text.split()[:3]), scope, action.location,
                               list(words))
+            self._missing_paths(e.command_head([(w,) for w in words]), words,
+                                action.location)
             return
         node.location = action.location
         self.do_NodeAction(node, scope)
+
+    def _missing_paths(self, head: str, words: list[str], where: Location) -> None:
+        """The paths into the workspace among the arguments of a process that is no node
+        (``rviz2 -d <share>/rviz/x.rviz``, ``python3 <share>/scripts/x.py``) that are not
+        there, judged as a node's arguments are (``paths.missing_argument_paths``): the
+        program is started with a file it cannot open. The program's own word is not
+        (a colcon install's ``lib/<pkg>/<exe>`` is no file of a checkout)."""
+        from .nodes import installed_source
+
+        program = os.path.basename(words[0]) if words else ""
+        if program in _FILE_MAKERS:
+            return  # its arguments name the files it makes (cp's target, mkdir's folder)
+        # a shell's redirection names a file the process writes (``> /ws/log.txt``)
+        judged = [UNKNOWN_MARK if (at and _REDIRECT.fullmatch(words[at - 1]))
+                  or _REDIRECT.match(word) else word for at, word in enumerate(words)]
+        for path in missing_argument_paths(judged[1:], self.workspace,
+                                           lambda p: installed_source(self, p)):
+            self.report("LAUNCH_PROCESS_ARG_PATH_MISSING", where,
+                        command=program or head, path=self.workspace.relpath(path))
 
     def _ros_command(self, head: str, scope: Scope, where: Location,
                      line: list[str | None] | None = None) -> None:
