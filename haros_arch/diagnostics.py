@@ -369,7 +369,7 @@ CATALOGUE: dict[str, Entry] = {
         "condition, include or function of the whole launch reads by name: the value "
         "given on the command line or its default is ignored, and ros2 launch -s offers "
         "an argument that does nothing. Mostly a leftover of a copied launch file, "
-        "harmless; where a configuration of a near name is read and never declared it is "
+        "harmless; where a configuration of a near name is read where nothing has set it, it is "
         "most likely a misspelling, LAUNCH_ARG_MISSPELT. Not said when part of the launch "
         "was not seen (an include not read, a function not interpreted), when the name "
         "is written anywhere else in the launch files performed (an action the reader "
@@ -377,9 +377,11 @@ CATALOGUE: dict[str, Entry] = {
         "declares (moveit_configs_utils'), which the file calling it does not write."),
     "LAUNCH_ARG_MISSPELT": Entry(
         "warning", "launch argument {name} is declared but nothing in the launch reads it, "
-        "and a configuration of a near name is read and never declared: {near}",
+        "and a configuration of a near name is read where nothing has set it: {near}",
         "A ROS 2 DeclareLaunchArgument (or <arg>) nothing reads, beside a launch "
-        "configuration of a near name that is read and that nothing declares: one of the "
+        "configuration of a near name that is read where nothing has declared or set it "
+        "(a declaration in a file included later, navigation2's bringup declaring "
+        "use_sim_time, comes too late for that read): one of the "
         "two names is most likely misspelt, so the declared default and any value given "
         "on the command line never reach what reads the other "
         "(raspimouse_slam_navigation_ros2 declared use_sim_tim and read "

@@ -250,6 +250,9 @@ class Runner:
         # launch configurations read by name; the first part not seen, if any
         self.declared_args: list[tuple[str, Location]] = []
         self.all_read: set[str] = set()
+        # the launch configurations read where nothing had set them (their default, or
+        # none, taken), where no action the reader did not see could have
+        self.read_unset: set[str] = set()
         # the launch files performed, by the name a location gives them -> their path
         self.performed_files: dict[str, str] = {}
         self.all_hidden = ""
@@ -545,10 +548,12 @@ class Runner:
     def unused_arguments(self) -> None:
         """Each launch argument declared that nothing of the whole launch reads by name,
         said once where it is declared: LAUNCH_ARG_MISSPELT (a warning) when a
-        configuration of a near name is read and never declared
-        (raspimouse_slam_navigation_ros2's pc_navigation.launch.py declared
+        configuration of a near name is read where nothing had set it, or never
+        declared (raspimouse_slam_navigation_ros2's pc_navigation.launch.py declared
         ``use_sim_tim`` and read ``LaunchConfiguration('use_sim_time',
-        default='False')``), else LAUNCH_ARG_UNUSED (an info: a leftover, harmless).
+        default='False')``, which it hands to navigation2's bringup, whose own
+        declaration of ``use_sim_time`` comes too late for that read), else
+        LAUNCH_ARG_UNUSED (an info: a leftover, harmless).
         Nothing is said when a part of the launch was not seen (an include not read, a
         function not interpreted, a configuration of a name not known), nor when the
         name is written in the launch files performed anywhere but where it is declared:
@@ -577,7 +582,8 @@ class Runner:
                 continue  # declared by code the user does not write
             if sum(len(written.findall(text)) for text in texts.values()) > len(sites):
                 continue  # written elsewhere: perhaps read by what is not interpreted
-            near = sorted(n for n in self.all_read if n not in declared
+            near = sorted(n for n in self.all_read
+                          if (n not in declared or n in self.read_unset)
                           and near_name(name, n))
             if near:
                 self.report("LAUNCH_ARG_MISSPELT", where, name=name, near=", ".join(near))

@@ -272,6 +272,8 @@ class Evaluator:
                                self.location)
             return Value.unknown("launch configuration with an unknown name")
         self.runner.config_read(name)
+        if name not in self.scope.configs and not self.scope.unseen:
+            self.runner.read_unset.add(name)
         if name in self.scope.configs:
             found = self.scope.configs[name]
             if found is None:
