@@ -630,6 +630,20 @@ CATALOGUE: dict[str, Entry] = {
         "kld_err twice, kld_z never). Not said for tags with an if / unless of their "
         "own, nor across files (an including file overriding an included one's value). "
         "Fix: correct the name of one of them, or delete the one that is not meant."),
+    "LAUNCH_PARAM_FILE_KEY_TWICE": Entry(
+        "warning", "key {key} is written again here (first at line {line}) in the same "
+        "mapping of this parameter file: {reader} keeps the later value, the first is "
+        "never used",
+        "One mapping of a parameter file (a ROS 2 file a node is given, a ROS 1 "
+        "<rosparam file>) writes a key twice. YAML says keys are unique, but rcl's "
+        "parameter file parser and PyYAML (roslaunch) accept the file and keep the "
+        "later value without a word, so the earlier one is dead, which usually means "
+        "one of the two is a parameter written under the wrong name (wato_monorepo's "
+        "nuscenes_config.yaml wrote publish_clusters_topic twice, the second for the "
+        "points in a box, so the node's two publishers took one topic and the clusters' "
+        "topic lost its publisher). Not said of a key written twice with a mapping both "
+        "times (rcl merges them). Fix: rename the one meant for another parameter, or "
+        "delete the one that is not meant."),
     "LAUNCH_PARAMS_NO_NODE": Entry(
         "warning", "parameter file {file} is given to {nodes}, but its sections are for "
         "{patterns}: rcl gives their parameters to none of them",

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 import yaml
 from lxml import etree
 
+from ... import diagnostics as diag
 from ... import safe_yaml
 from ...files import read_bytes
 from ...model.conditions import Condition
@@ -194,6 +195,12 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
             return
         text = data.decode("utf-8", errors="replace")
         lines = _key_lines(text)
+        for twice, first, later in safe_yaml.keys_twice(text, RosparamLoader):
+            said = diag.make("LAUNCH_PARAM_FILE_KEY_TWICE", loader.workspace.location(
+                file.literal, later), key="/".join(twice), line=first,
+                reader="roslaunch (PyYAML)")
+            if said not in loader.model.diagnostics:
+                loader.model.diagnostics.append(said)
     else:
         text = (element.text or "") + "".join(c.tail or "" for c in element)
         lines = None

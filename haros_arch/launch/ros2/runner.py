@@ -1199,6 +1199,7 @@ class Runner:
             if not found:
                 self.report("LAUNCH_PARAM_FILE", where, detail=f"cannot read {file}")
             return None
+        written = text
         text = self.replace(text, entry, scope, where)
         rewritten = bool(entry.rewrites or entry.key_rewrites or entry.value_rewrites) or (
             entry.root_key is not None)
@@ -1218,6 +1219,9 @@ class Runner:
                 file, mark.line + 1 if mark else 0, mark.column + 1 if mark else 0),
                 detail=str(getattr(err, "problem", err)))
             return None
+        for keys, first, later in safe_yaml.keys_twice(written, naming.ParamFileLoader):
+            self.report("LAUNCH_PARAM_FILE_KEY_TWICE", self.workspace.location(file, later),
+                        key=param_key(keys), line=first, reader="rcl")
         rel = self.workspace.relpath(file)
         if rel not in self.model.files:
             self.model.files.append(rel)
@@ -1328,6 +1332,14 @@ class Runner:
             if root is not None and root.text:
                 document = {root.text: document}
         return document
+
+
+def param_key(path: tuple[str, ...]) -> str:
+    """A key of a ROS 2 parameter file as the parameter's name when it is one (the keys
+    below ``ros__parameters`` joined with ``.``), else the keys down to it."""
+    if "ros__parameters" in path[:-1]:
+        return ".".join(path[path.index("ros__parameters") + 1:])
+    return "/".join(path)
 
 
 def _unknown_parts(document: Any, text: str) -> Any:
