@@ -642,7 +642,9 @@ CATALOGUE: dict[str, Entry] = {
         "nuscenes_config.yaml wrote publish_clusters_topic twice, the second for the "
         "points in a box, so the node's two publishers took one topic and the clusters' "
         "topic lost its publisher). Not said of a key written twice with a mapping both "
-        "times (rcl merges them). Fix: rename the one meant for another parameter, or "
+        "times in a ROS 2 file (rcl merges them); said in a ROS 1 <rosparam> file, whose "
+        "PyYAML reading keeps the later mapping whole and drops the first one's keys. "
+        "Fix: rename the one meant for another parameter, or "
         "delete the one that is not meant."),
     "LAUNCH_PARAMS_NO_NODE": Entry(
         "warning", "parameter file {file} is given to {nodes}, but its sections are for "

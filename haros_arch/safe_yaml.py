@@ -114,34 +114,36 @@ def _key_lines(node: yaml.Node, depth: int = 0) -> Any:
     return out
 
 
-def keys_twice(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader
-               ) -> list[tuple[tuple[str, ...], int, int]]:
+def keys_twice(text: str, loader: type[yaml.SafeLoader] = yaml.SafeLoader,
+               merging: bool = True) -> list[tuple[tuple[str, ...], int, int]]:
     """The keys one mapping of the document writes twice where the later value replaces
-    the earlier (not both mappings, which rcl merges: ``merged``): each as the keys down
-    to it, the line of its first writing and of the later, 1-based. rcl's parameter file
-    parser and PyYAML (roslaunch's ``<rosparam>``) keep the later value without a word
-    (wato_monorepo's nuscenes_config.yaml before 7871674c wrote publish_clusters_topic
-    twice, the second meant for another parameter). Nothing for a text that is no YAML
-    (its reader says so)."""
-    return list(_keys_twice(text, cast(Any, loader)))
+    the earlier (with ``merging``, not both mappings, which rcl merges: ``merged``; PyYAML,
+    roslaunch's ``<rosparam>`` reader, replaces a mapping whole too): each as the keys
+    down to it, the line of its first writing and of the later, 1-based. rcl's parameter
+    file parser and PyYAML keep the later value without a word (wato_monorepo's
+    nuscenes_config.yaml before 7871674c wrote publish_clusters_topic twice, the second
+    meant for another parameter). Nothing for a text that is no YAML (its reader says
+    so)."""
+    return list(_keys_twice(text, cast(Any, loader), merging))
 
 
 @functools.lru_cache(maxsize=64)  # a file given to many nodes is read for each
-def _keys_twice(text: str, loader: Any) -> tuple[tuple[tuple[str, ...], int, int], ...]:
+def _keys_twice(text: str, loader: Any, merging: bool = True
+                ) -> tuple[tuple[tuple[str, ...], int, int], ...]:
     try:
         node = compose(text, loader)
     except (yaml.YAMLError, ValueError, RecursionError):
         return ()
     found: list[tuple[tuple[str, ...], int, int]] = []
-    _twice(node, (), found, 0)
+    _twice(node, (), found, 0, merging)
     return tuple(found)
 
 
 def _twice(node: Any, path: tuple[str, ...], found: list[tuple[tuple[str, ...], int, int]],
-           depth: int) -> None:
+           depth: int, merging: bool = True) -> None:
     if isinstance(node, yaml.SequenceNode) and depth <= MAX_DEPTH:
         for index, item in enumerate(node.value):
-            _twice(item, (*path, str(index)) if path else path, found, depth + 1)
+            _twice(item, (*path, str(index)) if path else path, found, depth + 1, merging)
         return
     if not isinstance(node, yaml.MappingNode) or depth > MAX_DEPTH:
         return
@@ -151,11 +153,11 @@ def _twice(node: Any, path: tuple[str, ...], found: list[tuple[tuple[str, ...], 
             continue
         line = key.start_mark.line + 1
         before = seen.get(key.value)
-        if before is not None and not (isinstance(before[0], yaml.MappingNode)
+        if before is not None and not (merging and isinstance(before[0], yaml.MappingNode)
                                        and isinstance(item, yaml.MappingNode)):
             found.append(((*path, key.value), before[1], line))
         seen[key.value] = (item, line)
-        _twice(item, (*path, key.value), found, depth + 1)
+        _twice(item, (*path, key.value), found, depth + 1, merging)
 
 
 def merged(first: dict[Any, Any], second: dict[Any, Any]) -> dict[Any, Any]:

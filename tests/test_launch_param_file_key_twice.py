@@ -135,3 +135,19 @@ def test_keys_twice_reads_no_yaml_as_nothing():
     assert safe_yaml.keys_twice("a: [1\n") == []
     assert safe_yaml.keys_twice("a: 1\n<<: {b: 2}\nb: 3\n") == []
     assert safe_yaml.keys_twice("- a: 1\n  a: 2\n") == [(("a",), 1, 2)]
+
+
+def test_a_rosparam_file_mapping_written_twice_is_said_as_pyyaml_replaces_it(write_tree):
+    model = load_launch(write_tree, """<launch>
+          <node pkg="move_base" type="move_base" name="move_base">
+            <rosparam file="$(find pkg)/config/costmap.yaml" command="load"/>
+          </node>
+        </launch>""", extra={"src/pkg/config/costmap.yaml": (
+        "local_costmap:\n  width: 4\n  height: 4\nglobal_costmap:\n  width: 40\n"
+        "local_costmap:\n  resolution: 0.05\n")})
+    said = [(d.location.line, d.message.split(" is written")[0]) for d in model.diagnostics
+            if d.code == "LAUNCH_PARAM_FILE_KEY_TWICE"]
+    assert said == [(6, "key local_costmap")]
+    # the first mapping's keys are gone, as roslaunch loads the file
+    assert sorted(p.name for p in model.params if "local_costmap" in p.name) == [
+        "/move_base/local_costmap/resolution"]

@@ -195,7 +195,8 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
             return
         text = data.decode("utf-8", errors="replace")
         lines = _key_lines(text)
-        for twice, first, later in safe_yaml.keys_twice(text, RosparamLoader):
+        # (PyYAML replaces a mapping written twice whole: its first keys are gone too)
+        for twice, first, later in safe_yaml.keys_twice(text, RosparamLoader, merging=False):
             said = diag.make("LAUNCH_PARAM_FILE_KEY_TWICE", loader.workspace.location(
                 file.literal, later), key="/".join(twice), line=first,
                 reader="roslaunch (PyYAML)")
