@@ -1044,12 +1044,17 @@ CATALOGUE: dict[str, Entry] = {
         "not exist here, so no check counts it. Set the parameter (or the argument) "
         "where the node is launched if the link is wanted."),
     "NAME_PARAM_UNSET": Entry(
-        "info", "{node}: the name of this {kind} is the value of the {what}, which the "
-        "configuration does not set; it stays unknown",
+        "info", "{node}: the name of this {kind} is the value of the {what}, {why}; it "
+        "stays unknown",
         "The code (or its interface model) takes a topic or service name from a "
         "parameter (robot_localization's imu0, twist_mux's topics list) and neither the "
         "launch files nor their parameter files set it, and the code gives no default: "
-        "the link's name stays '?'. Set the parameter where the node is launched."),
+        "the link's name stays '?'. Set the parameter where the node is launched. The "
+        "message says so too where the launch sets the parameter to a value not known "
+        "statically (an argument nobody gives), and where it sets it to the empty string "
+        "and what the code makes of it is no name the graph resolves: an empty name, or "
+        "one with an empty segment or a trailing '/', which rcl refuses and roscpp "
+        "resolves to the handle's namespace or cleans; the graph keeps '?' there."),
     "NAME_ARG_UNSET": Entry(
         "info", "{node}: the name of this {kind} holds the process's command-line "
         "argument {which}, {why}; it stays unknown",

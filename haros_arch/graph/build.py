@@ -1667,7 +1667,21 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
     param = call.name_param
     named = [(param or "", _name_default(call, instance)), *((p or "", d) for p, d, *_ in (
         call.name_more or []))]
-    unset = [p for p, d in named if _parameter_value(p, d, instance, resources) is None]
+    values = [(p, _parameter_value(p, d, instance, resources)) for p, d in named]
+    unset = [p for p, v in values if v is None]
+    empty = [p for p, v in values if v == ""]
+    why = "which the configuration does not set"
+    if call.name_each is None and not unset and empty:
+        # set to "": what the code makes of it is no name the graph resolves here
+        pieces = call.name.split(UNKNOWN_MARK)
+        shown = pieces[0] + "".join(
+            (UNKNOWN_MARK if v is None else v) + piece
+            for (_, v), piece in zip(values, pieces[1:], strict=False))
+        why = ("which the configuration sets to the empty string, leaving "
+               f"{shown!r} (an empty name, segment or last segment is not resolved here)")
+        unset = empty
+    elif unset and all(_set_not_known(p, instance, resources) for p in unset):
+        why = "which the configuration sets to a value not known statically"
     if len(named) > 1 and unset:
         param = ", ".join(unset)
     what = {None: f"parameter{'s' if len(unset) > 1 else ''} {param}",
@@ -1677,7 +1691,22 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
                   if (call.name_each or "").startswith(COUNTED)
                   else f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
-                     kind=call.kind, what=what)
+                     kind=call.kind, what=what, why=why)
+
+
+def _set_not_known(written: str, instance: NodeInstance, resources: Resources) -> bool:
+    """Whether a launch file sets the instance's parameter ``written`` to a value not
+    known statically (an argument nobody gave): set, though its value is not known."""
+    if written.startswith(ROS_ARGUMENT):
+        return False
+    source = _node_scoped(written) if instance.ros_version == 2 else written
+    param_name = RosName.make(source, instance.namespace, instance.name).full
+    own = _OWN_VALUES.get(instance, {}).get(param_name)
+    if own is not None:
+        return own.value is None or isinstance(own.value, Unknown)
+    param = resources.by_name.get((Parameter, param_name))
+    return isinstance(param, Parameter) and param.set_by_launch and (
+        param.value is None or isinstance(param.value, Unknown))
 
 
 def _name_arg_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:

@@ -120,9 +120,11 @@ def resolve(name: str, namespace: str = SEP, node: str | None = None) -> str:
     roscpp, rospy and rcl take as it is on any handle, relative or private, so no
     namespace is known to hold it (its pattern, ``.*/cmd_vel``, matches the names in
     every namespace). A name whose unknown parts come later keeps what is known
-    (``scan_?``, ``a/?``: relative, in ``namespace``)."""
+    (``scan_?``, ``a/?``: relative, in ``namespace``). The rest after an unknown head is
+    cleaned as roscpp cleans what it resolves: ``prefix + "/" + "/ctrl"`` (``?//ctrl``)
+    is ``?/ctrl``, which ``/robot_0/ctrl`` matches."""
     if name.startswith(UNKNOWN_MARK):
-        return name
+        return clean(name)
     namespace = as_namespace(namespace)
     if not name:
         return clean(namespace)

@@ -100,6 +100,15 @@ def _substitution(value: Any) -> bool:
     return isinstance(value, e.Subst) and not isinstance(value, (e.Opaque, e.Performed))
 
 
+def _launch_class(ref: Ref) -> bool:
+    """Whether ``ref`` names a class of launch's or launch_ros' modules (a CamelCase
+    name there: ``launch.substitutions.PathJoinSubstitution``), not a module, function
+    or constant."""
+    module, _, name = ref.qualified.rpartition(".")
+    return module.split(".")[0] in ("launch", "launch_ros") and name[:1].isupper() and (
+        not name.isupper() and "_" not in name)
+
+
 def _operand_kind(value: Any) -> str:
     if isinstance(value, e.PathJoin) and value.python == e.PATHLIB:
         return "a pathlib path"
@@ -415,6 +424,14 @@ class Expressions(Walker):
     def eval_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
         value = self.eval(node.value, env)
         key = self.eval(node.slice, env)
+        if isinstance(value, Ref) and _launch_class(value):
+            # ``PathJoinSubstitution[share, 'x.launch.py']``: a class of launch or
+            # launch_ros subscripted, not called; none defines ``__class_getitem__``, so
+            # Python raises where the file is loaded
+            return self.failed(node, f"{_source(node)} fails: TypeError: type "
+                               f"'{value.qualified.rsplit('.', 1)[-1]}' is not "
+                               "subscriptable; the class is called with a list of the parts, "
+                               f"{value.qualified.rsplit('.', 1)[-1]}([...])", "TypeError")
         if isinstance(value, _Environ):
             return value.get(self, [key], node)
         if isinstance(value, Context) and isinstance(node.value, ast.Attribute):
