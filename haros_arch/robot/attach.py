@@ -35,6 +35,7 @@ from lxml import etree
 from .. import diagnostics as diag
 from .. import safe_yaml
 from ..extract.cpp.api import CONTROLLER_MANAGER_SERVICES
+from ..extract.cpp.headers import FALLBACK
 from ..files import read_text
 from ..launch.model import LaunchModel, NodeDecl, ParamDecl, shell_words
 from ..launch.ros2.naming import (
@@ -796,7 +797,10 @@ def _unread_helper(built: Node, workspace: Workspace) -> str | None:
     if HELPER_LIBRARY in workspace.packages:
         return None
     for path, header in _included(built, workspace):
-        if header.startswith(HELPER_LIBRARY + "/"):
+        # a header our stand-ins write the calls of (gazebo_ros_utils.h's GazeboRos:
+        # its handle and SDF reads) is read with the plugin's code
+        if header.startswith(HELPER_LIBRARY + "/") and not os.path.isfile(
+                os.path.join(FALLBACK, os.path.normpath(header))):
             return (f"{workspace.relpath(path)} includes {header}, whose classes make "
                     "calls that are not read")
     return None

@@ -859,6 +859,15 @@ _SDF_VALUE = RosFunction("read", on_handle=False, name_required=True, call_site=
                          value_only=True, name_prefix=SDF_ELEMENT)
 SDF: dict[tuple[str, str], RosFunction] = {
     (SDF_CLASS, method): _SDF_VALUE for method in ("Get", "GetElement", "FindElement")}
+# ROS 1 gazebo_plugins' GazeboRos helper (gazebo_ros_utils.h): ``getParameter<T>(value,
+# "tag", default)`` sets ``value`` to the <plugin> element's child ``tag``, the default
+# where it is absent (``getParameterBoolean`` the same for a flag)
+GAZEBO_ROS_HELPER = "gazebo::GazeboRos"
+_SDF_HELPER_VALUE = RosFunction(
+    "read", on_handle=False, name_arg=1, out_arg=0, default_arg=2, name_required=True,
+    call_site=False, value_only=True, name_prefix=SDF_ELEMENT)
+SDF.update({(GAZEBO_ROS_HELPER, method): _SDF_HELPER_VALUE
+            for method in ("getParameter", "getParameterBoolean")})
 # a node's parameters interface (node->get_node_parameters_interface()) has the same
 # parameter methods: slam_toolbox keeps one and declares through it
 RCLCPP_PARAMETERS_INTERFACE = "rclcpp::node_interfaces::NodeParametersInterface"

@@ -4223,7 +4223,13 @@ class CallFinder:
             return None
         name = render(scope.string(args[spec.name_arg]))
         if spec.value_only:
-            return (spec.name_prefix or "") + name, None, None
+            # the host's value; where the host gives none, the code's default when it
+            # writes one (gazebo_plugins' ``getParameter<T>(value, "tag", default)``)
+            given = args[spec.default_arg] if spec.default_arg is not None and (
+                spec.default_arg < len(args)) else None
+            parts = scope.string(given) if given is not None else None
+            return (spec.name_prefix or "") + name, render(parts) if (
+                parts is not None and _known(parts)) else None, None
         if spec.argument:
             return ROS_ARGUMENT + name, None, None
         if spec.on_handle:
