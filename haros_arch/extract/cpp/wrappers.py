@@ -823,6 +823,15 @@ class Wrappers:
             spec = (DEPENDENT_ROS2 if self.finder.ros2 else DEPENDENT_ROS1).get(name)
             if spec is not None and not own_functions_only(call):
                 yield Wrapper(spec), args, None, None
+            # a class load on a pluginlib ClassLoader of the template's parameter (ros_canopen's
+            # GuardedClassLoader<T>: ``loader_->createUniqueInstance(lookup_name)``, its
+            # ``std::shared_ptr<pluginlib::ClassLoader<T>> loader_``): the load's row, as on
+            # a ClassLoader of a known class
+            loader = _dependent_loader(head)
+            spec = api.PLUGINLIB.get((qualified_name(loader), name)) if (
+                loader is not None) else None
+            if spec is not None and from_standin(loader):
+                yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
             # a method of the unit called on a dependent object (``this`` in a generic
             # lambda: its overloads are named): the wrappers among them
             for decl in _fitting(head, args):
@@ -1874,6 +1883,31 @@ def called_name(call: Cursor) -> str:
         elif depth <= 0 and text.isidentifier() and text != "template":
             name = text
     return name
+
+
+def _dependent_loader(member: Cursor) -> Cursor | None:
+    """The class template of the object a dependent member call is made on, when a
+    ClassLoader of pluginlib holds it (``loader_->createUniqueInstance(name)`` with
+    ``std::shared_ptr<pluginlib::ClassLoader<T>> loader_``, or the loader itself, by value,
+    reference or plain pointer): its declaration; else None."""
+    objects = [c for c in member.get_children() if c.kind.is_expression()]
+    if not objects:
+        return None
+    ctype = objects[0].type.get_canonical()
+    if ctype.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee().get_canonical()
+    decl = ctype.get_declaration()
+    if decl is not None and decl.kind != CursorKind.NO_DECL_FOUND and (
+        qualified_name(decl) in _OWNING_POINTERS and ctype.get_num_template_arguments() > 0
+    ):
+        ctype = ctype.get_template_argument_type(0).get_canonical()
+        decl = ctype.get_declaration()
+    if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
+        return None
+    return decl if any(owner == qualified_name(decl) for owner, _ in api.PLUGINLIB) else None
+
+
+_OWNING_POINTERS = frozenset({"std::unique_ptr", "std::shared_ptr", "boost::shared_ptr"})
 
 
 def _member_name(member: Cursor) -> str:
