@@ -2735,7 +2735,9 @@ class CallFinder:
         the value says (nav2's ``type = get_plugin_type_param(node, ids[i])``, reading
         ``<id>.plugin`` for each id of ``edge_cost_functions``): the read is one per
         element, each loading its class (``plugins.attach.chains``)."""
-        held = _held_classes(made)  # the outermost: a templated base, not its argument
+        # (none where the load is made in a template, on a type its use gives: ros_canopen's
+        # ClassAllocator<T>::allocateInstance, named through its callers)
+        held = _held_classes(made) if made.kind != TypeKind.DEPENDENT else []
         if _aliased_holder(made, held):
             # a wrapper's own name for what it returns (ros_canopen's GuardedClassLoader<T>
             # ``ClassSharedPtr``, ``std::shared_ptr<T>``): the class it holds

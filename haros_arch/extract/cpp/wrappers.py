@@ -654,6 +654,12 @@ class Wrappers:
             if callee == key or key in wrapper.through:
                 self._recursive.add(key)
                 return False
+            if wrapper.row.loads is not None and not _returned_whole(function, call):
+                # a class load whose instance the function does not return as it is
+                # (ros_canopen's ClassAllocator<T>::allocateInstance, returning
+                # ``this->createInstance(name)->allocate(t1)``): its call's type is no
+                # holder of the loaded class's base, which a load is read with
+                continue
             lifted = self._lift(function, wrapper, call, args, cls)
             if lifted is None:
                 continue
@@ -1883,6 +1889,28 @@ def called_name(call: Cursor) -> str:
         elif depth <= 0 and text.isidentifier() and text != "template":
             name = text
     return name
+
+
+def _returned_whole(function: Cursor, call: Cursor) -> bool:
+    """Whether ``function`` returns the value of ``call`` as it is (converted to its
+    return type at most: ``return loader_->createUniqueInstance(name);`` into a
+    ``std::shared_ptr<T>``)."""
+    for node in function.walk_preorder():
+        if node.kind != CursorKind.RETURN_STMT:
+            continue
+        value = next((c for c in node.get_children() if c.kind.is_expression()), None)
+        for _depth in range(MAX_DEPTH):
+            if value is None:
+                break
+            value = strip(value)
+            made = value.referenced if value.kind == CursorKind.CALL_EXPR else None
+            if made is None or made.kind != CursorKind.CONSTRUCTOR:
+                break
+            inner = [c for c in value.get_children() if c.kind.is_expression()]
+            value = inner[0] if len(inner) == 1 else None
+        if value is not None and _key(value) == _key(call):
+            return True
+    return False
 
 
 def _dependent_loader(member: Cursor) -> Cursor | None:
