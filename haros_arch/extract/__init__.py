@@ -137,8 +137,14 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
                                              *said], workspace))
         bases = {base_name(base) for node in cpp for call in node.calls
                  if (base := class_load_base(call.loads)) is not None}
-        # and the classes a node creates by a name written in its code
+        # and the classes a node creates by a name written in its code, or by a
+        # parameter whose default names them where the loader's base is not known (a
+        # load in a template, on the class its use gives: ros_canopen's
+        # ClassAllocator<T>::allocateInstance)
         named = {name.lstrip(":") for node in cpp for name in node.nodelets}
+        named |= {call.default.lstrip(":") for node in cpp for call in node.calls
+                  if is_class_load(call.loads) and class_load_base(call.loads) is None
+                  and isinstance(call.default, str) and call.default}
         cpp = [node for node in deferred if base_name(node.plugin_base or "") in bases
                or node.executable in named or (node.plugin_class or "").lstrip(":") in named]
         deferred = [node for node in deferred if node not in cpp]

@@ -134,10 +134,31 @@ def loaded_bases(roots: Iterable[str], workspace: Files) -> frozenset[str]:
 _CPP_FILES = (".cpp", ".cc", ".cxx", ".hpp", ".h", ".hh", ".hxx")
 
 
+# a ClassLoader of whatever class a template of the workspace is given: ros_canopen's
+# ``template<typename T> class GuardedClassLoader { ... pluginlib::ClassLoader<T> ... }``,
+# whose constructions (``GuardedClassLoader<can::DriverInterface>``) no ClassLoader names
+ANY_BASE = "*"
+_TEMPLATE_PARAMETERS = re.compile(r"\btemplate\s*<([^<>]*)>")
+_TYPE_PARAMETER = re.compile(r"\b(?:typename|class)\s+([A-Za-z_]\w*)")
+
+
+def _generic_loader(text: str) -> bool:
+    """Whether ``text`` declares a ClassLoader of a type parameter of a template it
+    declares (the class it loads is the one each use of the template gives)."""
+    bases = {match.group(1) for match in _CLASS_LOADER.finditer(text)}
+    if not bases:
+        return False
+    parameters = {name for match in _TEMPLATE_PARAMETERS.finditer(text)
+                  for name in _TYPE_PARAMETER.findall(match.group(1))}
+    return bool(bases & parameters)
+
+
 def _loaders(root: str, workspace: Files) -> frozenset[str]:
     found: set[str] = set()
     for _path, text in _loader_texts(root, workspace):
         found.update(loader_bases(text))
+        if _generic_loader(text):
+            found.add(ANY_BASE)
     return frozenset(found)
 
 
@@ -226,7 +247,10 @@ def plugin_classes(package: Package, workspace: Files, libraries: Mapping[str, L
                 # ClassLoader("nav2_core", ...) never reads); it is a node only as one a
                 # ClassLoader of its package or its dependencies' code may load, by base,
                 # or one the code of a package depending on it creates by its name
-                by_code = bool(base) and (base_name(base) in loaded or bool(
+                # (or of any base, where a template of that code is a loader of
+                # whatever class it is given: a node only once a load names its base)
+                by_code = bool(base) and (base_name(base) in loaded or (
+                    ANY_BASE in loaded) or bool(
                     named & {(name or "").lstrip(":"), (cls.get("type") or "").lstrip(":")}))
                 if not name or (plugin.kind not in NODE_PLUGIN_KINDS and base and (
                         not hosted_class(plugin.kind, base)) and not by_code):

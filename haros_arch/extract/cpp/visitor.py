@@ -227,6 +227,18 @@ def _held_classes(ctype: Type) -> list[str]:
             if w not in _HOLDERS and w != synthesis.ANY]
 
 
+def _aliased_holder(ctype: Type, held: list[str]) -> bool:
+    """Whether ``ctype`` is written as a plain alias (``typedef std::shared_ptr<T>
+    ClassSharedPtr``, ``Ptr``) whose words name no class it holds (``held``: none, or the
+    alias's own name), not a template written with its arguments."""
+    if "<" in ctype.spelling or len(held) > 1:
+        return False
+    decl = ctype.get_declaration()
+    return decl is not None and decl.kind in (
+        CursorKind.TYPEDEF_DECL, CursorKind.TYPE_ALIAS_DECL) and (
+        not held or held[0].rsplit("::", 1)[-1] == decl.spelling)
+
+
 class ChoiceName(str):
     """One of the values a call's name may hold (``Scope.written_choices``,
     ``Scope.branch_written``): the call with it is made under ``conditions`` (the sides
@@ -2723,7 +2735,13 @@ class CallFinder:
         the value says (nav2's ``type = get_plugin_type_param(node, ids[i])``, reading
         ``<id>.plugin`` for each id of ``edge_cost_functions``): the read is one per
         element, each loading its class (``plugins.attach.chains``)."""
-        held = _held_classes(made)  # the outermost: a templated base, not its argument
+        # (none where the load is made in a template, on a type its use gives: ros_canopen's
+        # ClassAllocator<T>::allocateInstance, named through its callers)
+        held = _held_classes(made) if made.kind != TypeKind.DEPENDENT else []
+        if _aliased_holder(made, held):
+            # a wrapper's own name for what it returns (ros_canopen's GuardedClassLoader<T>
+            # ``ClassSharedPtr``, ``std::shared_ptr<T>``): the class it holds
+            held = _held_classes(made.get_canonical())
         base = held[0] if held else ""
         loads = f"{api.PLUGINLIB_CLASS}:{base}" if base else api.PLUGINLIB_CLASS
         for written, source in names:

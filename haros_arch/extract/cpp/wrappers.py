@@ -654,6 +654,12 @@ class Wrappers:
             if callee == key or key in wrapper.through:
                 self._recursive.add(key)
                 return False
+            if wrapper.row.loads is not None and not _returned_whole(function, call):
+                # a class load whose instance the function does not return as it is
+                # (ros_canopen's ClassAllocator<T>::allocateInstance, returning
+                # ``this->createInstance(name)->allocate(t1)``): its call's type is no
+                # holder of the loaded class's base, which a load is read with
+                continue
             lifted = self._lift(function, wrapper, call, args, cls)
             if lifted is None:
                 continue
@@ -823,6 +829,15 @@ class Wrappers:
             spec = (DEPENDENT_ROS2 if self.finder.ros2 else DEPENDENT_ROS1).get(name)
             if spec is not None and not own_functions_only(call):
                 yield Wrapper(spec), args, None, None
+            # a class load on a pluginlib ClassLoader of the template's parameter (ros_canopen's
+            # GuardedClassLoader<T>: ``loader_->createUniqueInstance(lookup_name)``, its
+            # ``std::shared_ptr<pluginlib::ClassLoader<T>> loader_``): the load's row, as on
+            # a ClassLoader of a known class
+            loader = _dependent_loader(head)
+            spec = api.PLUGINLIB.get((qualified_name(loader), name)) if (
+                loader is not None) else None
+            if spec is not None and from_standin(loader):
+                yield Wrapper(dataclasses.replace(spec, standin_only=False)), args, None, None
             # a method of the unit called on a dependent object (``this`` in a generic
             # lambda: its overloads are named): the wrappers among them
             for decl in _fitting(head, args):
@@ -1874,6 +1889,53 @@ def called_name(call: Cursor) -> str:
         elif depth <= 0 and text.isidentifier() and text != "template":
             name = text
     return name
+
+
+def _returned_whole(function: Cursor, call: Cursor) -> bool:
+    """Whether ``function`` returns the value of ``call`` as it is (converted to its
+    return type at most: ``return loader_->createUniqueInstance(name);`` into a
+    ``std::shared_ptr<T>``)."""
+    for node in function.walk_preorder():
+        if node.kind != CursorKind.RETURN_STMT:
+            continue
+        value = next((c for c in node.get_children() if c.kind.is_expression()), None)
+        for _depth in range(MAX_DEPTH):
+            if value is None:
+                break
+            value = strip(value)
+            made = value.referenced if value.kind == CursorKind.CALL_EXPR else None
+            if made is None or made.kind != CursorKind.CONSTRUCTOR:
+                break
+            inner = [c for c in value.get_children() if c.kind.is_expression()]
+            value = inner[0] if len(inner) == 1 else None
+        if value is not None and _key(value) == _key(call):
+            return True
+    return False
+
+
+def _dependent_loader(member: Cursor) -> Cursor | None:
+    """The class template of the object a dependent member call is made on, when a
+    ClassLoader of pluginlib holds it (``loader_->createUniqueInstance(name)`` with
+    ``std::shared_ptr<pluginlib::ClassLoader<T>> loader_``, or the loader itself, by value,
+    reference or plain pointer): its declaration; else None."""
+    objects = [c for c in member.get_children() if c.kind.is_expression()]
+    if not objects:
+        return None
+    ctype = objects[0].type.get_canonical()
+    if ctype.kind in (TypeKind.POINTER, TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee().get_canonical()
+    decl = ctype.get_declaration()
+    if decl is not None and decl.kind != CursorKind.NO_DECL_FOUND and (
+        qualified_name(decl) in _OWNING_POINTERS and ctype.get_num_template_arguments() > 0
+    ):
+        ctype = ctype.get_template_argument_type(0).get_canonical()
+        decl = ctype.get_declaration()
+    if decl is None or decl.kind == CursorKind.NO_DECL_FOUND:
+        return None
+    return decl if any(owner == qualified_name(decl) for owner, _ in api.PLUGINLIB) else None
+
+
+_OWNING_POINTERS = frozenset({"std::unique_ptr", "std::shared_ptr", "boost::shared_ptr"})
 
 
 def _member_name(member: Cursor) -> str:
