@@ -359,6 +359,38 @@ FUNCTIONS["is_infrastructure"] = Function("is_infrastructure", is_infrastructure
                                           charged=True)
 
 
+# the topics of tf2's frame tree, which every broadcaster of a robot publishes: at the
+# root, or in the robot's namespace where its nodes are remapped so (``/robot1/tf``)
+_FRAME_TREE = frozenset({"tf", "tf_static"})
+
+
+def frame_tree_elsewhere(charge: Charge, config: Any, link: Any) -> list[str]:
+    """For a subscription to a topic of the frame tree in a namespace (``/prbt/tf``:
+    code run in ``prbt`` waiting on the relative name ``tf``) that nothing publishes, the
+    names of that topic elsewhere in ``config`` that something does publish (``/tf``):
+    the transforms go there, not where the subscriber listens. Empty for any other
+    link, and where the topic has a publisher or no namespace, so a convention name
+    nobody publishes in the configuration (a driver's, started elsewhere) stays out."""
+    if not isinstance(config, Configuration) or not isinstance(link, Link):
+        raise QueryTypeError("frame_tree_elsewhere() takes a configuration and a link")
+    charge(1)
+    name = link.rosname.full
+    head, _, last = name.rpartition("/")
+    if (link.kind != "subscribe" or last not in _FRAME_TREE or not head
+            or UNKNOWN_MARK in name or name in _INFRASTRUCTURE
+            or any(each.kind == "publish" for each in link.resource.links)):
+        return []
+    charge(1 + len(config.topics) // 64)
+    return sorted(topic.name for topic in config.topics
+                  if topic.name != name and topic.name.rpartition("/")[2] == last
+                  and UNKNOWN_MARK not in topic.name
+                  and any(each.kind == "publish" for each in topic.links))
+
+
+FUNCTIONS["frame_tree_elsewhere"] = Function("frame_tree_elsewhere", frame_tree_elsewhere,
+                                             2, 2, charged=True)
+
+
 # services a node offers by itself, under names its author does not choose, so that a
 # client of one has its server wherever the node runs: ROS 2's parameter services and
 # type description service of every node, a lifecycle node's state services, ROS 1's
