@@ -60,3 +60,10 @@ def test_other_conventions_in_a_namespace_are_not_concerned() -> None:
     elsewhere = {"kind": "publish", "node": "/x", "name": "/x/parameter_updates",
                  "given": "~parameter_updates", "type": "dynamic_reconfigure/Config"}
     assert _run([updates, elsewhere]) == []
+
+
+def test_the_global_name_a_remap_moves_into_a_namespace_is_the_launchs_convention() -> None:
+    # tf2's listener subscribes /tf; a launch remap /tf:=tf moves it into the node's
+    # namespace (navigation2's bringup): not the code's mistake, as before not said
+    remapped = {**OBSERVER, "given": "/tf"}
+    assert _run([remapped, STATE_PUBLISHER]) == []

@@ -370,13 +370,17 @@ def frame_tree_elsewhere(charge: Charge, config: Any, link: Any) -> list[str]:
     names of that topic elsewhere in ``config`` that something does publish (``/tf``):
     the transforms go there, not where the subscriber listens. Empty for any other
     link, and where the topic has a publisher or no namespace, so a convention name
-    nobody publishes in the configuration (a driver's, started elsewhere) stays out."""
+    nobody publishes in the configuration (a driver's, started elsewhere) stays out; and
+    where the code wrote the global name (tf2's listener's ``/tf``) that a remap moved
+    into the namespace: the usual ``/tf:=tf`` of a robot's nodes, whose broadcasters
+    the same remap moves, is the launch's convention, not the code's mistake."""
     if not isinstance(config, Configuration) or not isinstance(link, Link):
         raise QueryTypeError("frame_tree_elsewhere() takes a configuration and a link")
     charge(1)
     name = link.rosname.full
     head, _, last = name.rpartition("/")
     if (link.kind != "subscribe" or last not in _FRAME_TREE or not head
+            or link.rosname.given.startswith("/")
             or UNKNOWN_MARK in name or name in _INFRASTRUCTURE
             or any(each.kind == "publish" for each in link.resource.links)):
         return []
