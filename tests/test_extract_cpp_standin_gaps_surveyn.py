@@ -27,6 +27,11 @@ CASES = {
         "      new diagnostic_updater::HeaderlessTopicDiagnostic(\"cmd\", updater,\n"
         "          diagnostic_updater::FrequencyStatusParam(&low, &high, 0.1, 10));\n"
         "  freq->addTask(&task);\n"),
+    "mat_over_data": (
+        "#include <opencv2/core/core.hpp>\n#include <sensor_msgs/Image.h>\n",
+        "  sensor_msgs::Image msg;\n"
+        "  const cv::Mat image(cv::Size(msg.width, msg.height), CV_8UC3,\n"
+        "                      const_cast<uint8_t *>(msg.data.data()), msg.step);\n"),
 }
 
 
