@@ -2,7 +2,9 @@
 error in a function that calls the ROS API, so the call after it could be missed and the
 node was partial. diagnostic_updater's ``FunctionDiagnosticTask``, a task a composite
 task adds (guardian_sim's guardian_robot_control); OpenCV's ``cv::Mat(size, type, data,
-step)`` over a message's pixels (quori_ros' quori_face_node)."""
+step)`` over a message's pixels (quori_ros' quori_face_node); gazebo_plugins'
+``PubMultiQueue::addPub<T>()`` (smb_common's odometry source plugin, a fallback header:
+gazebo_plugins is not in the workspace)."""
 
 from __future__ import annotations
 
@@ -32,6 +34,11 @@ CASES = {
         "  sensor_msgs::Image msg;\n"
         "  const cv::Mat image(cv::Size(msg.width, msg.height), CV_8UC3,\n"
         "                      const_cast<uint8_t *>(msg.data.data()), msg.step);\n"),
+    "pub_queue": (
+        "#include <gazebo_plugins/PubQueue.h>\n",
+        "  PubMultiQueue pmq;\n"
+        "  pmq.startServiceThread();\n"
+        "  PubQueue<std_msgs::String>::Ptr queue = pmq.addPub<std_msgs::String>();\n"),
 }
 
 
