@@ -1092,9 +1092,10 @@ CATALOGUE: dict[str, Entry] = {
         "warning", "node type {node}: {path} is there but not executable, so roslaunch "
         "cannot start it; its interface is not read",
         "A ROS 1 launch file starts a type that is a file of the package without its "
-        "execute bit, and no build file installs it (catkin_install_python): roslaunch "
-        "finds it and refuses it (\"Found ... but it is not executable\"), so the node "
-        "does not run. Set the bit (chmod +x) or install the script."),
+        "execute bit, and no build file installs it (catkin_install_python, "
+        "install(PROGRAMS), whose copy has the bit): roslaunch finds it and refuses it "
+        "(\"Found ... but it is not executable\"), so the node does not run. Set the bit "
+        "(chmod +x) or install the script."),
     "NODE_TYPE_UNKNOWN": Entry(
         "warning", "node type {node} is not known statically; its interface is unknown",
         "A launch file starts a node whose package or executable it names with a value "

@@ -100,3 +100,33 @@ def test_an_unknown_call_in_a_method_stays_a_friend(write_tree) -> None:
     assert "friend haros_any &refresh(" in header
     assert not [line for line in header.splitlines()
                 if line.startswith("template <class... A> haros_any &refresh(")]
+
+
+TWICE = """
+#include <string>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <ignition/common/StringUtils.hh>
+int main(int argc, char **argv) {
+  ros::init(argc, argv, "logger");
+  ros::NodeHandle nh;
+  std::string name = "scan";
+  using namespace ignition::common;
+  if (EndsWith(name, "/front_scan") ||
+      EndsWith(name, "/points")) {
+    ros::Publisher pub = nh.advertise<std_msgs::String>("seen", 1);
+  }
+  ros::spin();
+}
+"""
+
+
+def test_a_name_called_twice_in_main_stays_declared(write_tree) -> None:
+    """subt 083c6a8's bridge_logger calls ignition-common's ``EndsWith`` (its header
+    missing) twice in one condition: the second call made the name a friend as well,
+    and a name both free and a friend was declared neither way, so both calls stayed
+    errors in the function that advertises (CPP_ERROR_NEAR_CALL, the node partial)."""
+    result = _extract(write_tree, TWICE)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "seen")]
+    assert not [d for d in result.diagnostics if d.code in (
+        "CPP_ERROR_NEAR_CALL", "CPP_PARSE_ERROR")]

@@ -741,19 +741,21 @@ def _instance(decl: NodeDecl, nodes: Mapping[str, Node], workspace: Workspace,
     ):
         config.diagnostics.append(diag.make("NODE_NOT_READ", decl.location, node=key,
                                             path=workspace.relpath(found)))
+    elif node is None and plugin is None and (
+        found := _installed_program(workspace, decl.package, decl.executable)
+    ):
+        # a shell script (or prebuilt program) its package installs into its lib folder
+        # (mrover-ros2's ``install(PROGRAMS .../gui_prod.sh DESTINATION lib/...)``):
+        # ros2 launch runs it; so does roslaunch from the install space, with the execute
+        # bit install(PROGRAMS) gives the copy whatever the source file's (subt's
+        # ``rostopic_stats_logger.sh``, 644 in git); not missing, not read
+        config.diagnostics.append(diag.make("NODE_NOT_READ", decl.location, node=key,
+                                            path=workspace.relpath(found)))
     elif node is None and plugin is None and decl.ros_version == 1 and (
         found := _program_file(workspace, *key.partition("/")[::2], executable=False)
     ):
         # roslaunch finds the file and refuses it: "Found ... but it is not executable"
         config.diagnostics.append(diag.make("NODE_NOT_EXECUTABLE", decl.location, node=key,
-                                            path=workspace.relpath(found)))
-    elif node is None and plugin is None and decl.ros_version == 2 and (
-        found := _installed_program(workspace, decl.package, decl.executable)
-    ):
-        # a shell script (or prebuilt program) its package installs into its lib folder
-        # (mrover-ros2's ``install(PROGRAMS .../gui_prod.sh DESTINATION lib/...)``):
-        # ros2 launch runs it; not missing, not read
-        config.diagnostics.append(diag.make("NODE_NOT_READ", decl.location, node=key,
                                             path=workspace.relpath(found)))
     elif node is None and plugin is None and not decl.executable.strip():
         # ``executable="  "`` (Universal_Robots_ROS2_Driver 2477f13's spawner): the package

@@ -350,6 +350,11 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
     ("nodelet_topic_tools::NodeletLazy", "advertise"): RosFunction(
         "publish", type_from=("template",), on_handle=False, handle_arg=0, name_arg=1,
         queue_arg=2, latch_arg=3),
+    # topic_tools' ShapeShifter::advertise(nh, topic, queue, latch): a relay's publisher
+    # of the type it received (roscpp's any type), on that handle
+    ("topic_tools::ShapeShifter", "advertise"): RosFunction(
+        "publish", fixed_type="topic_tools/ShapeShifter", on_handle=False, handle_arg=0,
+        name_arg=1, queue_arg=2, latch_arg=3),
     ("nodelet_topic_tools::NodeletLazy", "onInit"): _base_init(
         "use_multithread_callback", _LAZY_INIT),
     ("message_filters::Subscriber", "Subscriber"): _FILTER_SUBSCRIBER,

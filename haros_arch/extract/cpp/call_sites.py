@@ -1253,10 +1253,12 @@ def node_name_given(constructor: Cursor) -> Cursor | None:
         base = first.referenced if first.kind == CursorKind.TYPE_REF else None
         inner = list(second.get_children()) if second.kind == CursorKind.UNEXPOSED_EXPR \
             else [second]
-        second = inner[0]  # (the call, unexposed where an argument is converted)
+        # (the call, unexposed where an argument is converted; an unexposed expression
+        # of no children is no call: a member's ``command(double())``)
         if base is None or key_of(base) == key_of(parent) or not _node_class(base, 0) or (
-                len(inner) != 1 or second.kind != CursorKind.CALL_EXPR):
+                len(inner) != 1 or inner[0].kind != CursorKind.CALL_EXPR):
             continue
+        second = inner[0]
         target = second.referenced
         args = written_arguments(second)
         params = [c for c in target.get_children() if c.kind == CursorKind.PARM_DECL] if (

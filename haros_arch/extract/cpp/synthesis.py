@@ -1435,9 +1435,13 @@ class Names:
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
                 if called and (id(text), offset) in self.in_free and (
-                        written[-1] not in self.free | _api_methods()):
-                    self.free.add(written[-1])
-                    self.count += 1
+                        written[-1] not in _api_methods()):
+                    # (a name called again in a free function stays free: made a friend
+                    # too it was declared neither way, ``free - friends``; subt's
+                    # ``EndsWith(a, "/x") || EndsWith(a, "/y")``)
+                    if written[-1] not in self.free:
+                        self.free.add(written[-1])
+                        self.count += 1
                 elif called and written[-1] not in self.friends and (
                         written[-1] not in _api_methods()):
                     # (an API method's name stays an error: a call the parse cannot

@@ -31,6 +31,15 @@ public:
   const std::string& getName();
   virtual void run(DiagnosticStatusWrapper& stat) = 0;
 };
+// a task of a function (a bound method): what a composite task adds (guardian_sim's
+// ``subs_command_freq->addTask(&command_freq_)``)
+template<class T>
+class GenericFunctionDiagnosticTask : public DiagnosticTask {
+public:
+  GenericFunctionDiagnosticTask(const std::string& name, boost::function<void(T&)> fn);
+  void run(DiagnosticStatusWrapper& stat);
+};
+typedef GenericFunctionDiagnosticTask<DiagnosticStatusWrapper> FunctionDiagnosticTask;
 class Updater {
 public:
   Updater();

@@ -196,6 +196,7 @@ public:
   Mat(int rows, int cols, int type, void* data, size_t step = 0);
   Mat(Size size, int type);
   Mat(Size size, int type, const Scalar& value);
+  Mat(Size size, int type, void* data, size_t step = 0);  // (a message's pixels, not copied)
   Mat(const Mat& m, const Rect& roi);
   Mat(const Mat& m, const Range& rows, const Range& cols = Range::all());
   Mat(const Mat& m);
