@@ -48,6 +48,8 @@ from .python_values import (
     concat,
     conjunction,
     derived,
+    env_unknown,
+    env_unset,
     is_lazy,
     is_stringy,
     launch_object,
@@ -230,7 +232,11 @@ class Expressions(Walker):
         return super().truth(value)
 
     def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
-        """An operation on a substitution or an unknown: an unknown, which says what."""
+        """An operation on a substitution or an unknown: an unknown, which says what
+        (one of values unknown only through unset environment variables: ``env_unknown``)."""
+        causes = env_unset(values)
+        if causes:
+            return env_unknown(what, causes, self.where(node))
         if what == "comparison":
             return Unknown(f"comparison {_source(node)}")
         return Unknown(_NOT_KNOWN.get(what, what))
@@ -378,6 +384,9 @@ class Expressions(Walker):
             return self.failed(node, f"{_source(node)} fails: TypeError: unsupported "
                                f"operand type(s) for {sign}: {kinds}", "TypeError")
         if isinstance(left, Unknown) or isinstance(right, Unknown):
+            causes = env_unset((left, right))
+            if causes:
+                return env_unknown("arithmetic", causes, self.where(node))
             return Unknown("arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (

@@ -39,6 +39,8 @@ from .python_values import (
     _hashable,
     _source,
     concat,
+    env_unknown,
+    env_unset,
     launch_object,
     open_keys,
     to_text,
@@ -88,6 +90,9 @@ def builtin(function: Callable[..., Any], *types: type,
         if k or not all(accepts(v) for v in a) or any(
                 isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple, dict))
                 for x in v):  # an unknown item (a dict's: under an unknown key)
+            causes = env_unset(a) if not k else ()
+            if causes:
+                return env_unknown(f"{name}()", causes, i.where(n))
             return Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
