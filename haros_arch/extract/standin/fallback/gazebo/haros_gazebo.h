@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 #include <boost/shared_ptr.hpp>
+// boost::bind and its placeholders in the global namespace, which Gazebo's headers bring
+// (gazebo/transport/Node.hh writes ``boost::bind(_fp, _obj, _1)``): a plugin binds its
+// update callback with a bare ``_1``
+#include <boost/bind.hpp>
 #include <sdf/sdf.hh>
 #include <haros_registration.h>
 
