@@ -56,6 +56,7 @@ from .python_values import (
     object_text,
     open_keys,
     printable,
+    said_unknown,
     to_text,
 )
 
@@ -234,9 +235,15 @@ class Expressions(Walker):
     def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
         """An operation on a substitution or an unknown: an unknown, which says what
         (one of values unknown only through unset environment variables: ``env_unknown``)."""
-        causes = env_unset(values)
+        values = list(values)
+        # an ``and`` / ``or`` stops at its first operand not known: the later ones, not
+        # evaluated, are unknown for causes of their own
+        causes = env_unset(values) if what != "boolean" else ()
         if causes:
             return env_unknown(what, causes, self.where(node))
+        made = said_unknown(what, values) if what != "boolean" else None
+        if made is not None:
+            return made
         if what == "comparison":
             return Unknown(f"comparison {_source(node)}")
         return Unknown(_NOT_KNOWN.get(what, what))
@@ -387,7 +394,8 @@ class Expressions(Walker):
             causes = env_unset((left, right))
             if causes:
                 return env_unknown("arithmetic", causes, self.where(node))
-            return Unknown("arithmetic on an unknown value")
+            return said_unknown("arithmetic", (left, right)) or Unknown(
+                "arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (
                     isinstance(right, tuple) and any(is_lazy(x) for x in right))):

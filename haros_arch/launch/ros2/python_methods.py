@@ -43,6 +43,7 @@ from .python_values import (
     env_unset,
     launch_object,
     open_keys,
+    said_unknown,
     to_text,
 )
 
@@ -93,7 +94,8 @@ def builtin(function: Callable[..., Any], *types: type,
             causes = env_unset(a) if not k else ()
             if causes:
                 return env_unknown(f"{name}()", causes, i.where(n))
-            return Unknown(f"{name}() of values not known statically")
+            return said_unknown(f"{name}()", a) or Unknown(
+                f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
         except ops.Refused as err:
@@ -331,7 +333,10 @@ def type_of(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not all(isinstance(v, int) for v in a) or not a:
-        return Unknown("range of unknown bounds")
+        causes = env_unset(a)
+        if causes:
+            return env_unknown("range()", causes, i.where(n))
+        return said_unknown("range()", a) or Unknown("range of unknown bounds")
     values = range(*a)
     if len(values) > 10_000:
         return i.unsupported(n, "range() above 10000 items is not expanded")

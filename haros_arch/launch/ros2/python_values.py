@@ -455,6 +455,26 @@ def env_unset(values: Iterable[Any]) -> tuple[str, ...]:
     return tuple(dict.fromkeys(causes))
 
 
+def said_unknown(what: str, values: Iterable[Any]) -> Unknown | None:
+    """What Python computes from a value a construct not interpreted made (kind
+    ``unsupported``, said where it was made): unknown, said there only, so that its uses
+    say no more (``'robot_' + str(int(subprocess.check_output(...)) + 1)``, ``str(i)``
+    of the item of a loop over such a value, ``range()`` of one); None when no value
+    is one."""
+    for value in values:
+        if isinstance(value, Unknown) and value.kind == "unsupported":
+            return Unknown(f"{what} of {value.origin}", "unsupported", causes=value.causes,
+                           where=value.where)
+        if isinstance(value, Lazy) and all(
+                isinstance(p, str) or (isinstance(p, e.Opaque) and not p.report)
+                for p in value.text):
+            # a text of such values (``'robot_' + str(...)``): said where each was made
+            made = next((p for p in value.text if isinstance(p, e.Opaque)), None)
+            if made is not None:
+                return Unknown(f"{what} of {made.origin}", "unsupported")
+    return None
+
+
 def env_unknown(what: str, causes: tuple[str, ...], where: Location | None) -> Unknown:
     """What Python computes from values unknown only through unset environment
     variables (``int(os.environ['DRONE_ID'])``, ``count > 0``): unknown, and said where
