@@ -155,12 +155,38 @@ def generated_at(workspace: Workspace, path: str) -> tuple[str, int] | None:
                  if folder.endswith("/") and relative.startswith(folder)), None)
 
 
+def climbed(workspace: Workspace, path: str) -> str:
+    """The absolute ``path`` normalised as ROS 2 launch resolves it where it climbs
+    (``..``) out of a folder of a workspace package: a launch file finds a package in its
+    install share folder (``<install>/<pkg>/share/<pkg>``, four folders below the
+    workspace, not two as ``src/<pkg>``), so the climb starts there: drone_autonomous_
+    landing_on_ugv's ``os.path.join(get_package_share_directory(pkg), '..', '..', '..',
+    '..', 'src', pkg, 'parameters', 'params.yaml')`` is the workspace's
+    ``src/<pkg>/parameters/params.yaml``. Only when a file is there (then the source file
+    installed there, when the climb stays in the install space); else ``path``
+    normalised as it is."""
+    plain = os.path.normpath(path)
+    parts = path.split("/")
+    if not os.path.isabs(path) or ".." not in parts:
+        return plain
+    first = parts.index("..")
+    before = os.path.normpath("/".join(parts[:first]) or "/")
+    package = workspace.package_of(before)
+    if package is None or not package.root or package.name not in workspace.packages:
+        return plain
+    inside = os.path.relpath(before, os.path.normpath(package.root))
+    share = os.path.join(install_base(workspace), package.name, "share", package.name)
+    moved = _from_prefix(workspace, os.path.normpath(os.path.join(share, inside,
+                                                                  *parts[first:])))
+    return moved if os.path.lexists(moved) else plain
+
+
 def share_source(workspace: Workspace, path: str) -> str:
     """The source file that ``path``, a path in a workspace package's share folder as
     ``Workspace.find`` gives it (the package's source folder) or as its install prefix
     gives it (``<install>/<pkg>/share/<pkg>/...``), stands for; ``path`` itself when the
     package's build rules install nothing there."""
-    path = os.path.normpath(os.path.abspath(path))
+    path = climbed(workspace, path) if os.path.isabs(path) else os.path.abspath(path)
     path = _from_prefix(workspace, path)
     package = workspace.package_of(path)
     if package is None or path == package.root:

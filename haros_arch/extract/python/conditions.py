@@ -4,7 +4,8 @@ One ``Condition`` per enclosing construct: ``if`` (its test), ``else`` (the test
 ``if``; an ``elif`` is an ``else`` and an ``if``), ``for`` (``target in iterable``),
 ``while`` (its test), ``try`` (empty text), ``except`` (the exception caught),
 ``match`` + ``case``. ``if __name__ == '__main__':`` is the script's entry, not a
-condition; ``with`` and ``finally`` blocks always run. Texts are the source as written,
+condition, and a test of ``__name__`` against a name the module cannot have is decided
+(``name_test``); ``with`` and ``finally`` blocks always run. Texts are the source as written,
 whitespace collapsed; a presence test of a parameter named by a variable is written with
 the name the variable holds (``tested_text``).
 """
@@ -12,6 +13,7 @@ the name the variable holds (``tested_text``).
 from __future__ import annotations
 
 import ast
+import os
 import re
 from collections.abc import Callable
 
@@ -43,6 +45,30 @@ def is_main_guard(test: ast.expr) -> bool:
     names = [s for s in sides if isinstance(s, ast.Name) and s.id == "__name__"]
     mains = [s for s in sides if isinstance(s, ast.Constant) and s.value == "__main__"]
     return bool(names and mains)
+
+
+def name_test(test: ast.expr, path: str) -> bool | None:
+    """The value of ``__name__ == 'text'`` (or ``!=``, either way round) in the module at
+    ``path``, where no module name it may have is ``text``: ``__name__`` is ``'__main__'``
+    when the file runs as a script and its import name (``pkg.module``) when imported, as
+    an entry point's module is before its function is called. So ``if __name__ ==
+    "main":`` never runs (drone_autonomous_landing_on_ugv's nodes, which their entry
+    points start through ``main``), unless the file is ``main.py``. None for any other
+    test, and for ``'__main__'`` (``is_main_guard``)."""
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1
+            and isinstance(test.ops[0], ast.Eq | ast.NotEq)):
+        return None
+    sides = [test.left, test.comparators[0]]
+    names = [s for s in sides if isinstance(s, ast.Name) and s.id == "__name__"]
+    texts = [s.value for s in sides if isinstance(s, ast.Constant) and isinstance(s.value, str)]
+    if not names or not texts or texts[0] == "__main__":
+        return None
+    stem = os.path.splitext(os.path.basename(path))[0]
+    if os.path.basename(path) == "__init__.py":
+        stem = os.path.basename(os.path.dirname(path))  # a package's module is its folder
+    if texts[0].rsplit(".", 1)[-1] == stem:
+        return None  # its import name may be that
+    return isinstance(test.ops[0], ast.NotEq)
 
 
 def condition(statement: str, text: str, location: Location,

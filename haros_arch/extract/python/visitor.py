@@ -30,7 +30,7 @@ from ...model.source import JOINED, PrimitiveCall, counted_mark
 from ...model.values import Unknown, Value
 from . import rclpy, rospy
 from .api import Arg, PyFunction
-from .conditions import condition, is_main_guard, source_text, tested_text
+from .conditions import condition, is_main_guard, name_test, source_text, tested_text
 from .modules import ClassInfo, FunctionInfo, Loader, Module, add_import, api_modules, last_name
 from .msg_types import ros_type
 from .objects import (
@@ -514,7 +514,11 @@ class Walker:
         and that the call gives a literal (fetchit_challenge's ``SchunkMachineServer(
         is_simulated=True)``, whose ``__init__`` makes the simulation's publishers ``if
         is_simulated:`` and the real machine's otherwise). None for any other test, or
-        one whose value is not known."""
+        one whose value is not known. A test of ``__name__`` against a name the module
+        cannot have is decided too (``name_test``)."""
+        named = name_test(test, frame.module.path)
+        if named is not None:
+            return named
         names = {name for at, given in self._loop_names if at == id(frame) for name in given}
         names |= {name for name in self._fixed.get(id(frame), ())
                   if name in frame.locals and _literal(frame.locals[name])}

@@ -85,6 +85,7 @@ from .python_values import (
     _source,
     _Stop,
     conjunction,
+    env_unset,
     launch_object,
     to_text,
 )
@@ -912,10 +913,11 @@ class Interpreter(Expressions):
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
         said = len(self.diagnostics)
         value, test = self.test_of(stmt.test, env)
-        if test is None and len(self.diagnostics) == said:
+        if test is None and len(self.diagnostics) == said and not env_unset((value,)):
             # a test not known whose value said nothing of why where it was made (an
             # environment variable not set, a call not run: said there) is said once,
-            # at the test, if it guards an action (``guarding``)
+            # at the test, if it guards an action (``guarding``); one unknown only
+            # through environment variables not set was said where they were read
             self.tests_unsaid.setdefault(id(stmt.test), diag.make(
                 "LAUNCH_UNSUPPORTED", self.where(stmt.test),
                 detail=f"Python test {_source(stmt.test)}"))
@@ -1267,8 +1269,11 @@ class Interpreter(Expressions):
             return list(value)
         if isinstance(value, PlainClass) and value.enum:
             return _enum_members(value)  # for mode in Mode: (spot_ros2's choices)
-        if not (isinstance(value, Unknown) and value.kind == "unsupported"):
-            # one that a construct not interpreted made was said where it was made
+        if not (isinstance(value, Unknown) and value.kind == "unsupported") or (
+                env_unset((value,))):
+            # one that a construct not interpreted made was said where it was made; one
+            # unknown through environment variables not set was, as an info, which did
+            # not say that the loop's body runs once, for an item not known
             self.unsupported(node, "loop over a value that is not known statically")
         return None
 

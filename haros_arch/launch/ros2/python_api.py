@@ -23,7 +23,7 @@ from ...diagnostics import Diagnostic
 from ...model.conditions import exit_event
 from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown, Value
-from ...share import install_prefix
+from ...share import climbed, install_prefix
 from .. import expression
 from . import entities as e
 from .naming import yaml_value
@@ -300,6 +300,16 @@ def os_path_join(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
                 i.diagnostics.append(found)
         return joined
     return Lazy((e.PathJoin(tuple(to_text(p) for p in a)),))
+
+
+def os_path_normalized(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``os.path.abspath`` / ``realpath`` of a known path: normalised, a climb out of a
+    workspace package's folder starting from its install share folder, as launch finds
+    the package there (``share.climbed``)."""
+    if a and isinstance(a[0], (str, PurePosixPath)):
+        text = str(a[0])
+        return climbed(i.workspace, text) if os.path.isabs(text) else os.path.normpath(text)
+    return Unknown("abspath of a value not known statically")
 
 
 def os_path(function: Callable[[str], Any]) -> Builder:
@@ -1140,8 +1150,8 @@ API: dict[str, Builder] = {
     "cast": typing_cast,
     "mktemp": temporary_name, "remove": file_removal, "unlink": file_removal,
     "join": os_path_join, "dirname": os_path(os.path.dirname),
-    "basename": os_path(os.path.basename), "abspath": os_path(os.path.normpath),
-    "realpath": os_path(os.path.normpath), "split": os_path(os.path.split),
+    "basename": os_path(os.path.basename), "abspath": os_path_normalized,
+    "realpath": os_path_normalized, "split": os_path(os.path.split),
     "splitext": os_path(os.path.splitext), "isabs": os_path(os.path.isabs),
     "exists": path_exists(os.path.exists), "isfile": path_exists(os.path.isfile),
     "isdir": path_exists(os.path.isdir),

@@ -48,12 +48,15 @@ from .python_values import (
     concat,
     conjunction,
     derived,
+    env_unknown,
+    env_unset,
     is_lazy,
     is_stringy,
     launch_object,
     object_text,
     open_keys,
     printable,
+    said_unknown,
     to_text,
 )
 
@@ -230,7 +233,17 @@ class Expressions(Walker):
         return super().truth(value)
 
     def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
-        """An operation on a substitution or an unknown: an unknown, which says what."""
+        """An operation on a substitution or an unknown: an unknown, which says what
+        (one of values unknown only through unset environment variables: ``env_unknown``)."""
+        values = list(values)
+        # an ``and`` / ``or`` stops at its first operand not known: the later ones, not
+        # evaluated, are unknown for causes of their own
+        causes = env_unset(values) if what != "boolean" else ()
+        if causes:
+            return env_unknown(what, causes, self.where(node))
+        made = said_unknown(what, values) if what != "boolean" else None
+        if made is not None:
+            return made
         if what == "comparison":
             return Unknown(f"comparison {_source(node)}")
         return Unknown(_NOT_KNOWN.get(what, what))
@@ -378,7 +391,11 @@ class Expressions(Walker):
             return self.failed(node, f"{_source(node)} fails: TypeError: unsupported "
                                f"operand type(s) for {sign}: {kinds}", "TypeError")
         if isinstance(left, Unknown) or isinstance(right, Unknown):
-            return Unknown("arithmetic on an unknown value")
+            causes = env_unset((left, right))
+            if causes:
+                return env_unknown("arithmetic", causes, self.where(node))
+            return said_unknown("arithmetic", (left, right)) or Unknown(
+                "arithmetic on an unknown value")
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (
                     isinstance(right, tuple) and any(is_lazy(x) for x in right))):

@@ -39,8 +39,11 @@ from .python_values import (
     _hashable,
     _source,
     concat,
+    env_unknown,
+    env_unset,
     launch_object,
     open_keys,
+    said_unknown,
     to_text,
 )
 
@@ -88,7 +91,11 @@ def builtin(function: Callable[..., Any], *types: type,
         if k or not all(accepts(v) for v in a) or any(
                 isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple, dict))
                 for x in v):  # an unknown item (a dict's: under an unknown key)
-            return Unknown(f"{name}() of values not known statically")
+            causes = env_unset(a) if not k else ()
+            if causes:
+                return env_unknown(f"{name}()", causes, i.where(n))
+            return said_unknown(f"{name}()", a) or Unknown(
+                f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
         except ops.Refused as err:
@@ -326,7 +333,10 @@ def type_of(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not all(isinstance(v, int) for v in a) or not a:
-        return Unknown("range of unknown bounds")
+        causes = env_unset(a)
+        if causes:
+            return env_unknown("range()", causes, i.where(n))
+        return said_unknown("range()", a) or Unknown("range of unknown bounds")
     values = range(*a)
     if len(values) > 10_000:
         return i.unsupported(n, "range() above 10000 items is not expanded")

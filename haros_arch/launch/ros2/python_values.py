@@ -430,6 +430,60 @@ def object_text(value: Any) -> Lazy | None:
     return Lazy((f"<{name} object at ", address, ">"))
 
 
+ENV_UNSET = "environment variable "  # the origin ``os.environ`` / ``os.getenv`` give one
+
+
+def env_unset(values: Iterable[Any]) -> tuple[str, ...]:
+    """The environment variables (``environment variable NAME``) that ``values`` are
+    unknown through, when that is their only unknown: an unset variable's read (a
+    ``Lazy`` of its ``Opaque``, said where it was read) or a value computed from such
+    reads alone (``env_unknown``); () when any value is unknown for another cause, or
+    none is unknown."""
+    causes: list[str] = []
+    for value in values:
+        if isinstance(value, Lazy):
+            for part in value.text:
+                if isinstance(part, e.Opaque) and not part.report and (
+                        part.origin.startswith(ENV_UNSET)):
+                    causes.append(part.origin)
+                elif not isinstance(part, str):
+                    return ()
+        elif isinstance(value, Unknown):
+            if not value.causes or not all(c.startswith(ENV_UNSET) for c in value.causes):
+                return ()
+            causes.extend(value.causes)
+    return tuple(dict.fromkeys(causes))
+
+
+def said_unknown(what: str, values: Iterable[Any]) -> Unknown | None:
+    """What Python computes from a value a construct not interpreted made (kind
+    ``unsupported``, said where it was made): unknown, said there only, so that its uses
+    say no more (``'robot_' + str(int(subprocess.check_output(...)) + 1)``, ``str(i)``
+    of the item of a loop over such a value, ``range()`` of one); None when no value
+    is one."""
+    for value in values:
+        if isinstance(value, Unknown) and value.kind == "unsupported":
+            return Unknown(f"{what} of {value.origin}", "unsupported", causes=value.causes,
+                           where=value.where)
+        if isinstance(value, Lazy) and all(
+                isinstance(p, str) or (isinstance(p, e.Opaque) and not p.report)
+                for p in value.text):
+            # a text of such values (``'robot_' + str(...)``): said where each was made
+            made = next((p for p in value.text if isinstance(p, e.Opaque)), None)
+            if made is not None:
+                return Unknown(f"{what} of {made.origin}", "unsupported")
+    return None
+
+
+def env_unknown(what: str, causes: tuple[str, ...], where: Location | None) -> Unknown:
+    """What Python computes from values unknown only through unset environment
+    variables (``int(os.environ['DRONE_ID'])``, ``count > 0``): unknown, and said where
+    the variables were read (LAUNCH_UNKNOWN_VALUE), so its uses say no more, as those of
+    a construct said not interpreted (kind ``unsupported``); ``causes`` names them."""
+    return Unknown(f"{what} of {', '.join(causes)}", "unsupported", causes=causes,
+                   where=where)
+
+
 def is_lazy(value: Any) -> bool:
     return isinstance(value, (Lazy, e.Subst, Unknown))
 

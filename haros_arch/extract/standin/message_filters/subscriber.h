@@ -96,6 +96,9 @@ template<class... M> struct ApproximateTime {
 template<class... M> struct ExactTime {
   typedef Synchronizer<ExactTime> Sync;
   ExactTime(uint32_t queue_size);
+  // the messages it drops unmatched (a Synchronizer of it derives it)
+  template<class C> Connection registerDropCallback(const C& callback);
+  template<class C, class T> Connection registerDropCallback(const C& callback, T* object);
 };
 }
 template<class P> class Synchronizer {
@@ -108,6 +111,9 @@ public:
   template<class D> void setInterMessageLowerBound(const D& bound);
   void setAgePenalty(double penalty);
   template<class D> void setMaxIntervalDuration(const D& duration);
+  // ExactTime's, which a synchronizer of that policy derives (orca2's fp_node)
+  template<class C> Connection registerDropCallback(const C& callback);
+  template<class C, class T> Connection registerDropCallback(const C& callback, T* object);
   // the policy it was built with (Autoware's lane_select:
   // ``sync->getPolicy()->setMaxIntervalDuration(ros::Duration(0.1))``)
   P* getPolicy();
@@ -118,6 +124,9 @@ public:
   template<class... F> void connectInput(F&... filters);  // built with a queue size only
   template<class C> Connection registerCallback(const C& callback);
   template<class C, class T> Connection registerCallback(const C& callback, T* object);
+  // a Synchronizer of the ExactTime policy
+  template<class C> Connection registerDropCallback(const C& callback);
+  template<class C, class T> Connection registerDropCallback(const C& callback, T* object);
 };
 // what a Cache gives: a message pointer of either ROS (ROS 1 boost, ROS 2 std), a time
 // of either (``toSec()`` / ``seconds()``)

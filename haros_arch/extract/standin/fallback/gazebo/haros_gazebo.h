@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 #include <boost/shared_ptr.hpp>
+// boost::bind and its placeholders in the global namespace, which Gazebo's headers bring
+// (gazebo/transport/Node.hh writes ``boost::bind(_fp, _obj, _1)``): a plugin binds its
+// update callback with a bare ``_1``
+#include <boost/bind.hpp>
 #include <sdf/sdf.hh>
 #include <haros_registration.h>
 
@@ -77,7 +81,9 @@ namespace msgs {}
 namespace util {}
 namespace gui {}
 // gazebo/transport: Gazebo's own topics (not ROS): a plugin advertises and subscribes
-// gz messages there, which makes no ROS call; declared so that its code parses
+// gz messages there, which makes no ROS call; declared so that its code parses. Its
+// pointers are boost's (gazebo/transport/TransportTypes.hh), as plugins build them:
+// ``boost::make_shared<transport::Node>()``, ``transport::NodePtr(new transport::Node())``
 namespace transport
 {
 class Publisher
@@ -93,8 +99,8 @@ public:
   std::string GetTopic() const;
   void Unsubscribe() const;
 };
-typedef std::shared_ptr<Publisher> PublisherPtr;
-typedef std::shared_ptr<Subscriber> SubscriberPtr;
+typedef boost::shared_ptr<Publisher> PublisherPtr;
+typedef boost::shared_ptr<Subscriber> SubscriberPtr;
 class Node
 {
 public:
@@ -109,7 +115,7 @@ public:
   template <class F> SubscriberPtr Subscribe(const std::string &_topic, F _callback,
                                              bool _latching = false);
 };
-typedef std::shared_ptr<Node> NodePtr;
+typedef boost::shared_ptr<Node> NodePtr;
 }  // namespace transport
 
 template <class T> class PluginT

@@ -12,6 +12,18 @@
 
 namespace gazebo_ros
 {
+// gazebo_ros/qos.hpp: the <qos> overrides of a plugin's topics, over a default QoS
+class QoS
+{
+public:
+  QoS();
+  explicit QoS(sdf::ElementPtr _sdf);
+  rclcpp::QoS get_publisher_qos(const std::string _topic,
+                                rclcpp::QoS _default = rclcpp::QoS(10)) const;
+  rclcpp::QoS get_subscription_qos(const std::string _topic,
+                                   rclcpp::QoS _default = rclcpp::QoS(10)) const;
+};
+
 class Node : public rclcpp::Node
 {
 public:
@@ -19,13 +31,9 @@ public:
   static SharedPtr Get(sdf::ElementPtr _sdf);
   static SharedPtr Get(sdf::ElementPtr _sdf, const std::string &_node_name);
   static SharedPtr Get();
-};
-
-class QoS
-{
-public:
-  rclcpp::QoS get_publisher_qos(const std::string &_topic, rclcpp::QoS _default) const;
-  rclcpp::QoS get_subscription_qos(const std::string &_topic, rclcpp::QoS _default) const;
+  // the QoS overrides of the plugin's <ros><qos> (gazebo_ros/node.hpp)
+  const QoS &get_qos() const &;
+  QoS get_qos() &&;
 };
 }  // namespace gazebo_ros
 #endif
