@@ -20,7 +20,10 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
 
     Without ``verbose``, info-level diagnostics (mostly gaps of the C++ stand-in headers:
     there can be hundreds on a real workspace) are not listed one by one but counted per
-    code at the end, with the first place each code was seen.
+    code at the end, with the first place each code was seen; and a diagnostic said
+    again in the same file with the same message (an unset argument at each of its
+    uses: subt's launch files, a thousand times) is listed once, at its first place,
+    with the others as ``also at``.
     """
     items = list(diagnostics)
     shown = items if verbose else [d for d in items if d.severity != "info"]
@@ -30,14 +33,39 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
     colours = {"error": "red", "warning": "yellow", "info": "blue"}
     for file in sorted(by_file):
         console.print(f"[bold]{escape(file)}[/bold]", highlight=False)
-        for item in sorted(by_file[file], key=lambda d: (d.location.line, d.location.column)):
+        ordered = sorted(by_file[file], key=lambda d: (d.location.line, d.location.column))
+        repeats: dict[tuple[str, str, str], list[Diagnostic]] = {}
+        for item in ordered:
+            repeats.setdefault((item.severity, item.code, item.message), []).append(item)
+        for item in ordered:
+            group = repeats[(item.severity, item.code, item.message)]
+            if not verbose and group[0] is not item:
+                continue
             where = f"{file}:{item.location.line}:{item.location.column}"
             colour = colours.get(item.severity, "white")
             console.print(f"  {escape(where)}: [{colour}]{item.severity}[/{colour}]: "
                           f"{escape(item.message)} [dim]\\[{item.code}][/dim]",
                           highlight=False)
+            others = _places(group[1:], exclude=item) if not verbose else ""
+            if others:
+                console.print(f"      also at: {escape(others)}", highlight=False)
     if not verbose:
         _print_info_counts([d for d in items if d.severity == "info"], console)
+
+
+ALSO_AT_LISTED = 8  # places of a repeated diagnostic listed before "and N more"
+
+
+def _places(items: list[Diagnostic], exclude: Diagnostic) -> str:
+    """``line:col`` of each (distinct, in order, not ``exclude``'s own), the first few,
+    then how many more; empty when none is left."""
+    own = f"{exclude.location.line}:{exclude.location.column}"
+    places = [place for place in dict.fromkeys(
+        f"{d.location.line}:{d.location.column}" for d in items) if place != own]
+    text = ", ".join(places[:ALSO_AT_LISTED])
+    if len(places) > ALSO_AT_LISTED:
+        text += f" and {len(places) - ALSO_AT_LISTED} more"
+    return text
 
 
 def _print_info_counts(infos: list[Diagnostic], console: Console) -> None:
