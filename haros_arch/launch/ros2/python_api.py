@@ -72,6 +72,7 @@ from .python_values import (
     Lazy,
     Ref,
     conjunction,
+    launch_object,
     object_text,
     printable,
     to_text,
@@ -856,8 +857,26 @@ def include_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return include(i, [_Source(to_text(path))], rest, n)
 
 
-def description_source(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    return _Source(to_text(arg(a, k, 0, "launch_file_path")))
+def description_source(*keywords: str) -> Builder:
+    """A launch description source (``PythonLaunchDescriptionSource(path)``): its
+    constructor takes the launch file's path and ``keywords`` only (launch's classes;
+    the frontend's also ``method=`` and ``parser=``). Another keyword, or a second
+    argument, is launch's TypeError when generate_launch_description runs, and the
+    launch file does not load: SAUVC-RPI 1413970's ``launch_arguments=`` written in the
+    source's call, meant for the include's."""
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        callee = getattr(getattr(n, "func", None), "attr", None) or getattr(
+            getattr(n, "func", None), "id", "the launch description source")
+        wrong = [word for word in k if word not in ("launch_file_path", *keywords)]
+        if wrong:
+            reason = f"TypeError: unexpected keyword argument '{wrong[0]}'"
+            return i.failed(n, f"{callee}(...) fails: {reason} (it takes the launch "
+                               "file's path; launch_arguments= are the include's)", reason)
+        if len(a) > 1 or (a and "launch_file_path" in k):
+            reason = "TypeError: one launch file path only"
+            return i.failed(n, f"{callee}(...) fails: {reason}", reason)
+        return _Source(to_text(arg(a, k, 0, "launch_file_path")))
+    return build
 
 
 def group(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
@@ -1132,6 +1151,29 @@ def text_of(as_repr: bool) -> Builder:
     return build
 
 
+def number_of(function: type[int] | type[float], *types: type) -> Builder:
+    """``int(value)`` / ``float(value)``: Python's, of plain values; of an object of
+    launch's API (a substitution, a condition, an action), a TypeError when
+    generate_launch_description runs, since none of their classes converts to a number:
+    panther_ros 03ada6da's ``float(EnvironmentVariable(name=..., default_value="1.2"))``,
+    which never stands for the variable's text (``.perform(context)`` gives that)."""
+    plain = builtin(function, *types)
+    name = function.__name__
+
+    def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+        if a and launch_object(a[0]):
+            text = object_text(a[0])  # "<launch.substitutions...Class object at ", ...
+            head = text.text[0] if text is not None else None
+            cls = head.removesuffix(" object at ").rsplit(".", 1)[-1] if isinstance(
+                head, str) and head != "<" else "a launch object"
+            reason = f"TypeError: {name}() argument must be a string or a number, not {cls}"
+            return i.failed(n, f"{name}() of a launch object fails: {reason} (a "
+                               "substitution's value is known only when it is performed)",
+                            reason)
+        return plain(i, a, k, n)
+    return build
+
+
 SCALARS = (str, int, float, bool, list, tuple, dict, type(None))
 API: dict[str, Builder] = {
     "LaunchDescription": launch_description,
@@ -1182,11 +1224,11 @@ API: dict[str, Builder] = {
     "ComposableNodeContainer": node(True), "ComposableNode": composable_node,
     "LoadComposableNodes": load_composable,
     "IncludeLaunchDescription": include, "include_launch_py_description": include_in_package,
-    "PythonLaunchDescriptionSource": description_source,
-    "XMLLaunchDescriptionSource": description_source,
-    "YAMLLaunchDescriptionSource": description_source,
-    "AnyLaunchDescriptionSource": description_source,
-    "FrontendLaunchDescriptionSource": description_source,
+    "PythonLaunchDescriptionSource": description_source(),
+    "XMLLaunchDescriptionSource": description_source(),
+    "YAMLLaunchDescriptionSource": description_source(),
+    "AnyLaunchDescriptionSource": description_source(),
+    "FrontendLaunchDescriptionSource": description_source("method", "parser"),
     "GroupAction": group, "PushRosNamespace": push_namespace,
     "ResetLaunchConfigurations": reset_configurations,
     "PushROSNamespace": push_namespace, "SetRemap": set_remap,
@@ -1210,7 +1252,7 @@ API: dict[str, Builder] = {
     **CONTROLLER_MANAGER, **LAUNCH_PAL, **ROBOTNIK_COMMON, **MOVEIT_CONFIGS_UTILS, **WEBOTS,
     "len": builtin(len, str, list, tuple, dict),
     "str": text_of(False), "repr": text_of(True),
-    "int": builtin(int, str, int, float, bool), "float": builtin(float, str, int, float),
+    "int": number_of(int, str, int, float, bool), "float": number_of(float, str, int, float),
     "bool": builtin(bool, *SCALARS), "list": builtin(list, str, list, tuple, dict),
     "tuple": builtin(tuple, str, list, tuple), "dict": dict_of,
     "sorted": builtin(sorted, list, tuple), "min": builtin(min, int, float, list, tuple),
