@@ -54,7 +54,14 @@ from ..model.source import (
 from ..model.values import UNKNOWN_MARK, Unknown
 from ..models import rviz
 from ..models.commands import refused
-from ..plugins.attach import PluginModels, chains, class_packages, own_partial, plugin_types
+from ..plugins.attach import (
+    PROCESSES,
+    PluginModels,
+    chains,
+    class_packages,
+    own_partial,
+    plugin_types,
+)
 from ..plugins.attach import attach as attach_plugins
 from ..plugins.transports import RAW as RAW_TRANSPORT
 from ..plugins.transports import Transports
@@ -184,8 +191,9 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     in_manager: list[tuple[NodeInstance, list[PrimitiveCall], str]] = []
     per_plugin: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     own_values = _own_values(launch, given)
-    for index, decl, own in ((index, decl, own) for index, original in enumerate(launch.nodes)
-                             for decl, own in process_nodes([original], nodes)):
+    for index, launched, decl, own in (
+            (index, original, decl, own) for index, original in enumerate(launch.nodes)
+            for decl, own in process_nodes([original], nodes)):
         instance = _instance(decl, nodes, workspace, config)
         if index in own_values and instance.ros_version == 2:
             _OWN_VALUES[instance] = own_values[index]
@@ -210,12 +218,14 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         if moved:
             in_manager.append((instance, moved, manager or ""))
             calls = [c for c in calls if c.handle_origin != PROCESS_HANDLE]
+        if instance.ros_version == 2:
+            PROCESSES[instance] = (launched, instance)
         # a call per plugin object the host keeps: once its plugins are attached
         kept = [c for c in calls if _per_kept_plugin(c)]
         if kept:
             per_plugin.append((instance, kept))
             calls = [c for c in calls if not _per_kept_plugin(c)]
-        _link_calls(instance, calls, resources, config, transports)
+        _link_process(instance, calls, resources, config, transports)
     for instance, calls, manager in in_manager:
         _link_in_manager(instance, calls, manager, resources, config, transports)
     # robot descriptions first: a ros2_control Gazebo plugin starts a controller manager
@@ -234,7 +244,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     attached = attach_plugins(config, [*started, *described.managers], nodes, resources,
                               workspace, plugin_models, described.hardware)
     for instance, calls in [*per_plugin, *attached]:
-        _link_calls(instance, calls, resources, config, transports)
+        _link_process(instance, calls, resources, config, transports)
     # then the classes any instance's own code loads by a parameter's value (filters'
     # chains), controllers and plugins made above included, and the chains those
     # classes configure in turn (a few levels)
@@ -243,7 +253,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
     for _ in range(CHAIN_DEPTH):
         more = chains(config, nodes, resources, workspace, plugin_models, done)
         for instance, calls in more:
-            _link_calls(instance, calls, resources, config, transports)
+            _link_process(instance, calls, resources, config, transports)
         chained += more
         if not more:
             break
@@ -358,6 +368,44 @@ def loading_manager(decl: NodeDecl) -> str | None:
     # (a word that is no name, an argument's text left as written: not known)
     known = is_legal_name(words[2].replace(UNKNOWN_MARK, "x"))
     return resolve(words[2] if known else UNKNOWN_MARK, decl.namespace)
+
+
+def _link_process(instance: NodeInstance, calls: Sequence[PrimitiveCall],
+                  resources: Resources, config: Configuration,
+                  transports: Transports) -> None:
+    """Link a node instance's calls, those made on a node a library makes in its process
+    (ROS 2, ``PrimitiveCall.handle_origin`` ``process``) where that node resolves them
+    (``_process_node``)."""
+    library = [c for c in calls if c.handle_origin == PROCESS_HANDLE]
+    process = _process_node(instance) if library else None
+    if process is not None:
+        _link_calls(instance, library, resources, config, transports, at=process,
+                    noted=instance)
+        calls = [c for c in calls if c.handle_origin != PROCESS_HANDLE]
+    _link_calls(instance, calls, resources, config, transports)
+
+
+def _process_node(instance: NodeInstance) -> NodeInstance | None:
+    """ROS 2: the node a library makes with default options in the process of
+    ``instance`` (tf2_ros' ``TransformListener(buffer)``: ``transform_listener_impl_``
+    and an address), where the calls it makes there resolve. It takes the process's
+    global arguments only: the namespace and remaps of the launch declaration that
+    starts the process (and the name ``name=`` gives every node of it), not the
+    namespace the code gives the node the call is written in (nav2's costmap, a node of
+    its own in ``/local_costmap``), nor the local arguments of a controller. None where
+    the process is not known here (an instance no launch declaration starts: a hint's),
+    and for a component, whose process is its container's: those calls stay the
+    instance's own, as before."""
+    found = PROCESSES.get(instance)
+    if instance.ros_version != 2 or found is None or found[0].composable:
+        return None
+    decl, started = found
+    name = decl.name if decl.name_given else resolve(
+        f"transform_listener_impl_{UNKNOWN_MARK}", decl.namespace)
+    return NodeInstance(name, instance.node, namespace=decl.namespace,
+                        remaps=list(started.remaps), args=started.args,
+                        conditions=instance.conditions, location=instance.location,
+                        ros_version=2)
 
 
 def _link_in_manager(instance: NodeInstance, calls: Sequence[PrimitiveCall], manager: str,

@@ -50,7 +50,10 @@ CallKind = Literal[
 
 # ``PrimitiveCall.handle_origin``: a ROS 1 call made on a nodelet's own handle
 # (``getNodeHandle()``, ``getPrivateNodeHandle()``, their MT twins), or on one the code
-# constructs (``ros::NodeHandle nh("~")``), which roscpp makes in the process's node
+# constructs (``ros::NodeHandle nh("~")``), which roscpp makes in the process's node; a
+# ROS 2 call made on a node a library makes with default options (tf2_ros'
+# ``TransformListener(buffer)``), which takes the process's global arguments only: the
+# launch's namespace and remaps, not the namespace or arguments the code gives its node
 HANDLE_ORIGINS = ("nodelet", "process")
 NODELET_HANDLE, PROCESS_HANDLE = HANDLE_ORIGINS
 
@@ -238,7 +241,9 @@ class PrimitiveCall:
     # node's: in a nodelet manager, the manager's namespace, private name and remaps
     # (laser_filters before 7c18194 advertised on a member ``ros::NodeHandle nh;``). None:
     # not known (a handle another file gives, handles of both kinds), or no handle; the
-    # graph then places the call as the node's own, as before this field was read
+    # graph then places the call as the node's own, as before this field was read.
+    # ROS 2: ``process`` alone, a node a library makes with default options (tf2_ros'
+    # ``TransformListener(buffer)``): the launch's namespace and remaps for the process
     handle_origin: str | None = field(default=None, metadata={"optional": True})
     # parameter writes that delete the parameter (rospy.delete_param, ros::param::del,
     # NodeHandle::deleteParam)

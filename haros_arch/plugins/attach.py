@@ -32,6 +32,7 @@ import re
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol
+from weakref import WeakKeyDictionary
 
 import yaml
 
@@ -91,6 +92,15 @@ MAX_PARAM_VALUES = 100_000  # values in one spawner parameter file, aliases coun
 
 # a plugin class (lookup name or C++ type) to its node in an interface model, if any
 PluginModels = Callable[[str], Node | None]
+
+
+# ROS 2: the process each node instance runs in, as the launch declaration that starts
+# it and the instance made of it (``graph.build`` gives the launched ones; a node a
+# host's code makes, a controller it loads, is in the host's): where a library's own node
+# of that process (``PrimitiveCall.handle_origin`` ``process``) takes its namespace and
+# remaps
+PROCESSES: WeakKeyDictionary[NodeInstance, tuple[NodeDecl, NodeInstance]] = (
+    WeakKeyDictionary())
 
 
 class Params(Protocol):
@@ -560,6 +570,8 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
     taken = sum(1 for n in config.nodes if n.name == name)
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
+    if host in PROCESSES:
+        PROCESSES[instance] = PROCESSES[host]
     process_file_params(decl, instance, params)
     return instance, node
 
@@ -1442,6 +1454,8 @@ def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
     taken = sum(1 for n in config.nodes if n.name == name)
     instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
+    if host in PROCESSES:
+        PROCESSES[instance] = PROCESSES[host]
     return instance
 
 

@@ -172,6 +172,12 @@ class RosFunction:
     argument: bool = False
     # a name roscpp resolves and remaps for the code, no call (``PrimitiveCall.resolved``)
     resolved: bool = False
+    # ROS 2: given no node (every argument after the first a ``bool``: tf2_ros'
+    # ``TransformListener(buffer)``, ``(buffer, spin_thread)``), the library makes a node
+    # of its own with default options, which takes the process's global arguments only:
+    # the call is that node's (``PrimitiveCall.handle_origin`` ``process``), not the node
+    # of the code around it
+    own_node: bool = False
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -375,8 +381,9 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf2_ros::StaticTransformBroadcaster", "StaticTransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf_static", fixed_type=_TF, on_handle=False, latched=True),
+    # ROS 2: without a node argument, on a node of its own (``own_node``)
     ("tf2_ros::TransformListener", "TransformListener"): RosFunction(
-        "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
+        "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False, own_node=True,
         siblings=(("subscribe", "/tf_static", _TF),)),
     # dynamic_reconfigure's server lives in the namespace of the handle it is given (a
     # controller's own controller_nh), by default the node's private one

@@ -33,6 +33,7 @@ from ...model.location import Location
 from ...model.source import (
     JOINED,
     LOADED,
+    PROCESS_HANDLE,
     ROS_ARGUMENT,
     SDF_ELEMENT,
     PrimitiveCall,
@@ -481,7 +482,8 @@ class CallFinder:
         self.ros2 = ros2
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
-        self._fixed: set[tuple[str, str, str | None]] = set()  # fixed-name calls already found
+        # fixed-name calls already found
+        self._fixed: set[tuple[str, str, str | None, bool]] = set()
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
         # the place of a read whose value a typed accessor takes (rclcpp's
@@ -2406,6 +2408,10 @@ class CallFinder:
         target = site.referenced
         location = self.where(site if target is not None and (
             target.kind == CursorKind.CONSTRUCTOR) else callee)
+        # made on a node the library makes for it, given no node (``RosFunction.own_node``)
+        own_node = self.ros2 and spec.own_node and all(
+            not is_handle(a) and a.type.get_canonical().kind == TypeKind.BOOL
+            for a in args[1:])
         names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
         elsewhere: list[str] = []  # members read for the name that other files set
@@ -2424,9 +2430,10 @@ class CallFinder:
                     unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
                     origin = self.namespaces.origin
                     unknown_parts = list(self.namespaces.unknown_parts)
-            # once per node (and handle): per owner when the file names several nodes
+            # once per node (and handle): per owner when the file names several nodes,
+            # apart on a node the library makes (``own_node``)
             once = self._owner if self._owner in dict(self.node_names) else ""
-            key = (spec.kind, join_name(namespace or "", spec.fixed_name), once)
+            key = (spec.kind, join_name(namespace or "", spec.fixed_name), once, own_node)
             if key in self._fixed:
                 return
             self._fixed.add(key)
@@ -2648,7 +2655,7 @@ class CallFinder:
                 handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
-                handle_origin=None if self.ros2 else origin,
+                handle_origin=PROCESS_HANDLE if own_node else None if self.ros2 else origin,
                 deletes=spec.deletes, node_name=owner, transport=transport, **chosen,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (
@@ -2708,7 +2715,8 @@ class CallFinder:
                     has_default=kind in ("declare", "read"),
                     handle_namespace=sibling_namespace, node_name=owner,
                     root_handle=root and on_handle and not full.startswith(("/", "~")),
-                    handle_origin=origin if on_handle and not self.ros2 else None,
+                    handle_origin=PROCESS_HANDLE if own_node else (
+                        origin if on_handle and not self.ros2 else None),
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
                 if held is not None and namespace and sibling_namespace == namespace and (
