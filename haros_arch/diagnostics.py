@@ -559,6 +559,17 @@ CATALOGUE: dict[str, Entry] = {
         "the configuration's value performed in an OpaqueFunction. A launch object "
         "compared with '!=' or 'is not' is always unequal too (launch's classes define no "
         "__eq__: Python compares them by identity)."),
+    "LAUNCH_PY_BOOLEAN_OBJECT": Entry(
+        "warning", "Python's '{op}' takes the launch object '{test}' as true without "
+        "evaluating it: the '{op}' {result}",
+        "An 'and' / 'or' of a launch file's Python has a condition or a substitution as "
+        "an operand before its last (condition=IfCondition(a) and IfCondition(b), "
+        "LaunchConfiguration('ns') or 'robot'). Launch's classes define no __bool__: "
+        "Python takes the object as true whatever the launch arguments, so the 'and' "
+        "gives its last operand whole (IfCondition(b) alone decides) and the 'or' the "
+        "object itself (the fallback is never used). Fix: AndSubstitution / "
+        "OrSubstitution, one PythonExpression, or the value performed in an "
+        "OpaqueFunction."),
     "LAUNCH_PY_ALWAYS_FALSE": Entry(
         "info", "the Python test '{test}' is always false: a launch object is not "
         "evaluated by Python",

@@ -641,6 +641,41 @@ def generate_launch_description():
         d.message for d in model.diagnostics if d.code == "LAUNCH_PY_ALWAYS_TRUE")
 
 
+def test_and_or_of_launch_conditions_takes_one_whole(write_tree):
+    """``condition=IfCondition(a) and IfCondition(b)`` (panther_ros dcdc6731): Python
+    takes the first condition as true without evaluating it, so ``and`` gives the second
+    whole and ``or`` the first; the other is never tested. The node runs under the one
+    taken, with a warning at the operand whose truth was taken
+    (``LAUNCH_PY_BOOLEAN_OBJECT``). An action tested so (a variable that may hold None)
+    is not said."""
+    model, root = run(write_tree, """
+def generate_launch_description():
+    a = LaunchConfiguration('a')
+    b = LaunchConfiguration('b')
+    spare = None
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='false'),
+        DeclareLaunchArgument('b', default_value='true'),
+        Node(package='p', executable='e', name='both_node',
+             condition=IfCondition(a) and IfCondition(b)),
+        Node(package='p', executable='e', name='either_node',
+             condition=IfCondition(b) or IfCondition(a)),
+        *([spare and Node(package='p', executable='e', name='spare_node')] if spare else []),
+    ])
+""")
+    # a is false: both_node would not run if launch tested both; Python kept b's alone
+    assert sorted(n.name for n in model.nodes) == ["/both_node", "/either_node"]
+    lines = (root / "src/pkg/launch/main.launch.py").read_text().splitlines()
+    said = sorted((d.location.line, d.severity, d.message) for d in model.diagnostics
+                  if d.code == "LAUNCH_PY_BOOLEAN_OBJECT")
+    assert [line for line, _, _ in said] == [
+        1 + n for n, text in enumerate(lines) if "condition=IfCondition" in text]
+    assert {severity for _, severity, _ in said} == {"warning"}
+    assert "'and' takes the launch object 'IfCondition(a)'" in said[0][2]
+    assert "'or' takes the launch object 'IfCondition(b)'" in said[1][2]
+    assert not [d for d in model.diagnostics if d.code == "LAUNCH_PY_ALWAYS_TRUE"]
+
+
 def test_a_call_of_a_value_python_does_not_call_is_a_type_error(write_tree):
     # clearpath_robot 577bfcf: a comma missing between two remappings calls the first
     # tuple with the second: a TypeError, said as such (not "a value not known");

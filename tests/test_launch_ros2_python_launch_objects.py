@@ -58,6 +58,11 @@ def test_launch_objects_compare_by_identity_and_are_true(write_tree):
     assert said == [("LAUNCH_PY_ALWAYS_FALSE", "not use_sim"),
                     ("LAUNCH_PY_ALWAYS_FALSE", "use_sim == "),
                     ("LAUNCH_PY_ALWAYS_TRUE", "use_sim != ")]
+    # an ``or`` / ``and`` that takes a substitution's or a condition's truth is said
+    # where it takes it (``ns or 'fallback'`` never falls back)
+    assert sorted((d.severity, d.message.split("'")[4]) for d in model.diagnostics
+                  if d.code == "LAUNCH_PY_BOOLEAN_OBJECT") == [
+        ("warning", "IfCondition(use_sim)"), ("warning", "ns"), ("warning", "ns")]
 
 
 def test_a_helper_comparing_a_launch_object_once_and_a_string_once(write_tree):

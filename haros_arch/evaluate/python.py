@@ -178,9 +178,11 @@ class Walker:
         is_and = isinstance(node.op, ast.And)
         pending: Unknown | None = None
         result: object = None
-        for operand in node.values:
+        for at, operand in enumerate(node.values):
             result = self.eval(operand, env)
             truth = self.truth(result)
+            if truth is not None and at < len(node.values) - 1:
+                self.truth_taken(node, operand, result)
             if truth is None:
                 if not (self.past_unknown and isinstance(result, Unknown)):
                     return self.not_known(node, "boolean", (result,))
@@ -193,6 +195,10 @@ class Walker:
     def truth(self, value: object) -> bool | None:
         """Python's truth of a value; None for one the configuration cannot compute with."""
         return None if self.opaque(value) else bool(value)
+
+    def truth_taken(self, node: ast.BoolOp, operand: ast.expr, value: object) -> None:
+        """The ``and`` / ``or`` ``node`` took the truth of ``value``, its ``operand``'s,
+        to decide whether to go on (not the last operand, whose value is the result)."""
 
     def undecided(self, node: ast.IfExp, test: object, env: Any) -> Any:
         """A conditional expression whose test is not known."""

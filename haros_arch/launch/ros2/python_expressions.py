@@ -19,6 +19,8 @@ from dataclasses import dataclass
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any, NoReturn
 
+from ... import diagnostics as diag
+from ...diagnostics import Diagnostic
 from ...evaluate import operations as ops
 from ...evaluate.python import Walker
 from ...model.location import Location
@@ -138,6 +140,7 @@ class Expressions(Walker):
     # of one, one compared with ``==`` (``compare_values``); by id, the node kept alive
     # so that no later node takes its id
     decided: dict[int, ast.AST]
+    diagnostics: list[Diagnostic]
 
     guard_runs: int  # the runs of Python tests not known statically so far (``guard``)
 
@@ -231,6 +234,21 @@ class Expressions(Walker):
         if launch_object(value):
             return True
         return super().truth(value)
+
+    def truth_taken(self, node: ast.BoolOp, operand: ast.expr, value: object) -> None:
+        """An ``and`` / ``or`` over a condition or a substitution (``condition=
+        IfCondition(a) and IfCondition(b)``, ``LaunchConfiguration('ns') or 'robot'``):
+        Python takes the object as true, never evaluating it, so the ``and`` gives its
+        last operand whole and the ``or`` the object itself: ``LAUNCH_PY_BOOLEAN_OBJECT``
+        at the operand. Not an action: ``node and [...]`` is the usual test of a variable
+        that may hold None."""
+        if isinstance(value, (e.Subst, e.Cond)):
+            is_and = isinstance(node.op, ast.And)
+            self.diagnostics.append(diag.make(
+                "LAUNCH_PY_BOOLEAN_OBJECT", self.where(operand), test=_source(operand),
+                op="and" if is_and else "or",
+                result=("is its last operand whole: this one is never tested" if is_and
+                        else "is this object itself: what follows it is never used")))
 
     def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
         """An operation on a substitution or an unknown: an unknown, which says what
