@@ -64,14 +64,8 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--distro", default=None)
     args = parser.parse_args(argv)
     checkout.announce(sys.stdout)
-    try:
-        project = open_project(args.project)
-    except ProjectError as err:
-        sys.exit(f"cpp_real: {err}")
-    project.distro = args.distro or project.distro
-    project.packages = args.package or project.packages
-    env = pipeline.distro_environment(project, os.environ)
-    workspace, nodes = source_nodes(project, env)
+    project, env, workspace, nodes = opened(args.project, args.distro, args.package,
+                                            "cpp_real")
     spent = _time_stages() if args.jobs == 1 or args.profile else None
     profile = cProfile.Profile(time.process_time) if args.profile else None
     start = time.process_time()
@@ -110,6 +104,22 @@ def main(argv: list[str] | None = None) -> None:
     if args.calls:
         for name, call in sorted(calls, key=lambda nc: (nc[0], nc[1].kind, nc[1].name)):
             print(f"CALL {name} {call.kind} {call.name} {call.type}")
+
+
+def opened(path: str, distro: str | None, packages: list[str], script: str
+           ) -> tuple[Project, dict[str, str], Workspace, list[Node]]:
+    """The project ``path`` names (a project file or a workspace folder; exit with its
+    error), parsed for ``distro`` and limited to ``packages`` when given, the run's
+    environment for it, and ``source_nodes``."""
+    try:
+        project = open_project(path)
+    except ProjectError as err:
+        sys.exit(f"{script}: {err}")
+    project.distro = distro or project.distro
+    project.packages = packages or project.packages
+    env = pipeline.distro_environment(project, os.environ)
+    workspace, nodes = source_nodes(project, env)
+    return project, env, workspace, nodes
 
 
 def source_nodes(project: Project, env: dict[str, str]) -> tuple[Workspace, list[Node]]:

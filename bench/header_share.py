@@ -29,12 +29,10 @@ import sys
 from typing import Any
 
 import checkout  # bench/checkout.py: says which haros_arch is measured
-from cpp_real import source_nodes
+from cpp_real import opened
 
 from haros_arch import pipeline
-from haros_arch.autoproject import open_project
 from haros_arch.extract import extract_nodes
-from haros_arch.project import ProjectError
 
 Results = dict[tuple[Any, ...], dict[str, set[str]]]
 
@@ -47,14 +45,8 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--distro", default=None)
     args = parser.parse_args(argv)
     checkout.announce(sys.stdout)
-    try:
-        project = open_project(args.project)
-    except ProjectError as err:
-        sys.exit(f"header_share: {err}")
-    project.distro = args.distro or project.distro
-    project.packages = args.package or project.packages
-    env = pipeline.distro_environment(project, os.environ)
-    workspace, nodes = source_nodes(project, env)
+    project, env, workspace, nodes = opened(args.project, args.distro, args.package,
+                                            "header_share")
     stages: dict[str, Results] = {name: collections.defaultdict(
         lambda: collections.defaultdict(set)) for name in ("gives", "summary", "calls")}
     parsed = _record(stages)
