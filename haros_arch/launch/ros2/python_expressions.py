@@ -77,7 +77,8 @@ if TYPE_CHECKING:
 
 _PATH_ATTRIBUTES = frozenset(("parent", "name", "stem", "suffix", "parts"))
 _NOT_KNOWN = {"not": "not of an unknown value", "unary": "unary operation", "slice": "slice",
-              "boolean": "boolean of an unknown value"}
+              "boolean": "boolean of an unknown value",
+              "arithmetic": "arithmetic on an unknown value"}
 
 
 def _fails_for_sure(value: Any, key: Any) -> bool:
@@ -409,11 +410,7 @@ class Expressions(Walker):
             return self.failed(node, f"{_source(node)} fails: TypeError: unsupported "
                                f"operand type(s) for {sign}: {kinds}", "TypeError")
         if isinstance(left, Unknown) or isinstance(right, Unknown):
-            causes = env_unset((left, right))
-            if causes:
-                return env_unknown("arithmetic", causes, self.where(node))
-            return said_unknown("arithmetic", (left, right)) or Unknown(
-                "arithmetic on an unknown value")
+            return self.not_known(node, "arithmetic", (left, right))
         if isinstance(op, ast.Mod) and isinstance(left, str) and (
                 isinstance(right, (Lazy, e.Subst)) or (
                     isinstance(right, tuple) and any(is_lazy(x) for x in right))):
