@@ -18,6 +18,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures import TimeoutError as FutureTimeout
 from types import TracebackType
 from typing import Any
 
@@ -218,6 +219,43 @@ class _Pool(ProcessPoolExecutor):
     def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> Future[Any]:
         with held_signals:
             return super().submit(_unless_stopped, fn, *args, **kwargs)
+
+    def map(self, fn: Callable[..., Any], *iterables: Any, timeout: float | None = None,
+            chunksize: int = 1) -> Iterator[Any]:
+        """Each task's result, in the order of the items, each waited for by ``result``."""
+        futures = [self.submit(fn, *items) for items in zip(*iterables, strict=False)]
+        return _in_order(futures, timeout)
+
+
+# how often a wait for a task's result (``result``) looks whether the run was stopped
+RESULT_POLL_SECONDS = 0.2
+
+
+def result(future: Future[Any], timeout: float | None = None) -> Any:
+    """``future.result(timeout)`` with a stop that comes meanwhile held until the wait
+    is out of the future's lock (``held_signals``), then raised. A stop raised in the
+    wait itself could come just after the lock was taken inside its Python
+    ``__enter__``: the lock stayed taken, the pool's thread waited for it for good to
+    set a result, and so did the run's end, which joins that thread."""
+    deadline = None if timeout is None else time.monotonic() + timeout
+    while True:
+        left = RESULT_POLL_SECONDS if deadline is None else min(
+            RESULT_POLL_SECONDS, max(0.0, deadline - time.monotonic()))
+        with held_signals, contextlib.suppress(FutureTimeout):
+            return future.result(left)
+        if deadline is not None and time.monotonic() >= deadline:
+            raise FutureTimeout()
+
+
+def _in_order(futures: list[Future[Any]], timeout: float | None) -> Iterator[Any]:
+    """The futures' results in order (``_Pool.map``); the ones not waited for are
+    cancelled when the caller stops reading."""
+    try:
+        for future in futures:
+            yield result(future, timeout)
+    finally:
+        for future in futures:
+            future.cancel()
 
 
 def _end_workers(workers: list[multiprocessing.process.BaseProcess]) -> None:

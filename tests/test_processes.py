@@ -266,3 +266,51 @@ def test_a_worker_stopped_in_a_task_ends_and_takes_no_other(tmp_path):
             time.sleep(0.05)
         assert _gone(int(pid)), "the stopped worker still waits for tasks"
         assert not os.path.exists(folder)
+
+
+# a run with a pool of two workers whose stop (SIGTERM to itself) comes while its main
+# thread waits for the first result, just after it took that result's lock inside the
+# lock's ``__enter__`` (Python code, where a signal's handler may run): the lock was left
+# taken, the pool's thread waited for it for good, and so did the run's end
+STOPPED_IN_WAIT = """
+import os, signal, sys, threading, time
+from haros_arch import processes
+
+enter = threading.Condition.__enter__
+main = threading.get_ident()
+sent = []
+
+def entered(self):
+    taken = enter(self)
+    if (threading.get_ident() == main and not sent
+            and sys._getframe(1).f_code.co_name == "result"):
+        sent.append(True)
+        os.kill(os.getpid(), signal.SIGTERM)  # its handler runs on return of the call
+    return taken
+
+def task(index):
+    time.sleep(2)
+    return index
+
+with processes.stop_signals(), processes.worker_pool(2) as pool:
+    threading.Condition.__enter__ = entered
+    print(list(pool.map(task, range(4))))
+"""
+
+
+def test_a_stop_while_waiting_for_a_result_ends_the_run():
+    """The run ends with the stop's status, not waiting for good at its exit."""
+    import subprocess
+    import sys
+
+    run = subprocess.Popen([sys.executable, "-c", STOPPED_IN_WAIT], text=True,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           start_new_session=True)
+    try:
+        stdout, stderr = run.communicate(timeout=120)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)
+        stdout, stderr = run.communicate()
+        raise AssertionError(f"the stopped run did not end: {stdout}{stderr}") from None
+    assert run.returncode == 143, stdout + stderr
+    assert "Traceback" not in stderr, stderr
