@@ -48,7 +48,7 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
                           highlight=False)
             others = _places(group[1:], exclude=item) if not verbose else ""
             if others:
-                console.print(f"      also at: {escape(others)}", highlight=False)
+                console.print(f"      [dim]also at: {escape(others)}[/dim]", highlight=False)
     if not verbose:
         _print_info_counts([d for d in items if d.severity == "info"], console)
 
