@@ -11,8 +11,11 @@ is on (``humble``, ``ros2-humble``, ``jazzy-devel``); the build and CI files
 humble``, ``FROM ros:humble``); the README's ``ROS 2 Humble``. The first of these that
 names a ROS 2 distribution decides: the default (Jazzy) when it is among those named
 (the tree is built for it too), else Humble (the other release whose models ship), else
-Iron (which takes Jazzy's); a tree that names only other releases (Foxy, Galactic,
-Rolling) keeps the default, as a guess should not make every modelled node partial.
+Iron (which takes Jazzy's); a tree that names only older releases (Dashing to
+Galactic) is read with Humble's models, the nearest release after them, and only newer
+ones (Kilted, Rolling) keeps the default: a guess should not make every modelled node
+partial, as a release without models of its own would. The rclcpp the C++ sources are
+read against is the guess's only when the files name that one release.
 Only files, never a command: the branch is read from ``.git/HEAD``. Bounded: folders
 four levels down, a few thousand entries, files of at most 256 KiB.
 """
@@ -37,6 +40,8 @@ ROS2 = ("dashing", "eloquent", "foxy", "galactic", "humble", "iron", "jazzy", "k
 # the releases a guess may choose, in order: the default, the other release whose
 # interface models ship, and one that takes the default's models as its own
 MODELLED = ("jazzy", "humble", "iron")
+# the releases before the oldest whose models ship, read with Humble's (``_choose``)
+OLDER = ("dashing", "eloquent", "foxy", "galactic")
 MAX_DEPTH = 4
 MAX_ENTRIES = 5_000
 MAX_READ = 256 * 1024
@@ -83,8 +88,12 @@ def guess(roots: list[str]) -> tuple[str, str, bool] | None:
             chosen = _choose(names)
             if chosen is None:
                 return None  # names only releases without models of their own
-            return (chosen, f"guessed from {level}, which name {_said(names)}",
-                    len(names) == 1)
+            why = f"guessed from {level}, which name {_said(names)}"
+            if chosen not in names:
+                why += (f"; read with {chosen}'s interface models, the nearest release "
+                        "after those whose models ship")
+            # the rclcpp of a release the files do not name is no reading of its code
+            return (chosen, why, len(names) == 1 and chosen in names)
     return None
 
 
@@ -92,10 +101,17 @@ def _choose(names: Counter[str]) -> str | None:
     """The release to read the tree as, of those named: only one whose interface models
     ship (or that takes another's as its own: iron), as a guess should not make every
     modelled node partial (an end-of-life or rolling release takes a nearer release's
-    models as stand-ins, each node that takes one partial: a ``distro:`` says so)."""
+    models as stand-ins, each node that takes one partial: a ``distro:`` says so). A
+    tree that names only releases older than Humble (Dashing to Galactic) is read with
+    Humble's models, the nearest after them: Foxy's and Galactic's nav2 export
+    ``nav2_navfn_planner/NavfnPlanner`` and their bt_navigator reads
+    ``default_bt_xml_filename``, as Humble's do and Jazzy's do not; a tree that names
+    only newer ones (Kilted, Rolling) keeps the default, the nearest before them."""
     for name in MODELLED:
         if name in names:
             return name
+    if any(name in names for name in OLDER):
+        return "humble"
     return None
 
 

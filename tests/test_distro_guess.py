@@ -40,9 +40,13 @@ def test_build_files_then_readme_and_what_several_names_give(write_tree) -> None
     root = write_tree({"b/.github/workflows/ci.yml": "distro: [humble, iron, rolling]\n"})
     assert guess([str(root / "b")])[0] == "humble"  # the other release with models
     # a release without models of its own is no guess (its stand-ins would make every
-    # modelled node partial): rosbot_xl_ros of 2022, galactic's, keeps the default
+    # modelled node partial): one older than Humble takes Humble's, the nearest after it,
+    # and its rclcpp is not Humble's (sole: False); a newer one keeps the default
     root = write_tree({"c/ci.repos": "version: foxy\n", "c/docker/Dockerfile": "FROM ros:foxy\n"})
-    assert guess([str(root / "c")]) is None
+    distro, why, sole = guess([str(root / "c")])
+    assert (distro, sole) == ("humble", False) and "foxy (2x)" in why and "nearest" in why
+    root = write_tree({"g/.github/workflows/ci.yml": "distro: [rolling, kilted]\n"})
+    assert guess([str(root / "g")]) is None
     root = write_tree({"f/.github/workflows/ci.yml": "distro: [iron, rolling]\n"})
     assert guess([str(root / "f")])[0] == "iron"
     root = write_tree({"d/README.md": "This ROS2 Humble package ... (not for ROS 1 Noetic)\n"})
@@ -101,6 +105,16 @@ def test_a_humble_tree_takes_humble_s_models(write_tree) -> None:
     (note,) = _said(config, "MODEL_DISTRO")
     assert "humble" in note and "README" in note
     assert source_distro(project, env) == "humble"
+
+
+def test_a_foxy_tree_takes_humble_s_models_not_its_rclcpp(write_tree) -> None:
+    # clober's foxy-devel: Foxy's nav2 lookup names, read against Jazzy's models, made a
+    # false PLUGIN_NOT_FOUND and bt_navigator parameters "set but not read"
+    project, config, env = _analysed(write_tree, {"src/demo/README.md": "For ROS 2 Foxy.\n"})
+    assert not _said(config, "PLUGIN_NOT_FOUND")
+    (note,) = _said(config, "MODEL_DISTRO")
+    assert "humble" in note and "foxy" in note
+    assert source_distro(project, env) is None  # its version tests stay undecided
 
 
 def test_without_a_sign_or_with_ros_distro_set_no_guess(write_tree) -> None:
