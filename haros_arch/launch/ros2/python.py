@@ -1269,11 +1269,19 @@ class Interpreter(Expressions):
             return list(value)
         if isinstance(value, PlainClass) and value.enum:
             return _enum_members(value)  # for mode in Mode: (spot_ros2's choices)
-        if not (isinstance(value, Unknown) and value.kind == "unsupported") or (
-                env_unset((value,))):
-            # one that a construct not interpreted made was said where it was made; one
-            # unknown through environment variables not set was, as an info, which did
-            # not say that the loop's body runs once, for an item not known
+        unset = env_unset((value,))
+        if unset:
+            # unknown only through environment variables the configuration does not set
+            # (said, an info, where they were read): what that does to the loop is said
+            # as an info too, not as a construct not interpreted (a swarm's
+            # ``range(int(os.environ['NUM_DRONES']))``); the configuration can set them
+            found = diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node), detail=(
+                f"loop over {_source(node)}, not known statically ({', '.join(unset)} "
+                "not set): its body is read once, for an item not known"))
+            if found not in self.diagnostics:
+                self.diagnostics.append(found)
+        elif not (isinstance(value, Unknown) and value.kind == "unsupported"):
+            # one that a construct not interpreted made was said where it was made
             self.unsupported(node, "loop over a value that is not known statically")
         return None
 
