@@ -229,7 +229,7 @@ def test_a_name_of_a_star_import_not_found_says_the_module(write_tree):
     import *`` (isaac_ros_common, not in the workspace), then ``IfCondition(...)``,
     ``SetParameter(...)``, ``LaunchDescription(...)``: each "name IfCondition is not
     defined here", as though the file were wrong. Now the message names the star import
-    it may come from; a name with none still says only that."""
+    it may come from; a name with none, bound nowhere in the file, is a NameError."""
     body = """
 from launch import LaunchDescription
 from vendor_launch_utils.all_types import *
@@ -245,5 +245,7 @@ def generate_launch_description():
             "found") in said
     plain = run(write_tree, "plain.launch.py", body.replace(
         "from vendor_launch_utils.all_types import *\n", ""))
-    assert (line_of(body, "SetParameter(") - 1, "name SetParameter is not defined here") in \
+    # with none, and bound nowhere in the file: Python's NameError there
+    assert (line_of(body, "SetParameter(") - 1, "name SetParameter is not defined anywhere "
+            "in the file: Python raises NameError here, and launch stops") in \
         found(plain, "LAUNCH_PY_UNSUPPORTED")

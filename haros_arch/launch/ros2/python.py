@@ -148,6 +148,8 @@ class Interpreter(Expressions):
         self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
         # per function being run: the values it returned under a test not known
         self.returns: list[list[Any]] = []
+        # per file read, the names its code binds anywhere (``names_bound``; None: any)
+        self.bindings: dict[str, frozenset[str] | None] = {}
         # folders the file put on sys.path (sys.path.append), where `import name` looks
         self.search: list[str] = []
         # modules imported from them, by source path (None: being read, or unreadable)
@@ -260,6 +262,7 @@ class Interpreter(Expressions):
 
     def module_body(self, tree: ast.Module, env: dict[str, Any]) -> None:
         """What importing the module does: its names, and its module-level code."""
+        self.bindings[self.path] = names_bound(tree)
         for stmt in tree.body:
             if isinstance(stmt, (ast.Import, ast.ImportFrom)):
                 self.import_(stmt, env)
@@ -1647,6 +1650,46 @@ def _returns(body: list[ast.stmt]) -> bool:
 _RECURSION_UNKNOWN = 3
 
 # Python's builtin exception classes by name, to tell which handler catches which
+# names whose use may bind any other name at run time (``names_bound``)
+_DYNAMIC = frozenset(("exec", "eval", "globals", "locals", "vars", "setattr", "__dict__",
+                      "__builtins__", "__import__", "importlib", "modules"))
+
+
+def names_bound(tree: ast.Module) -> frozenset[str] | None:
+    """Every name the file's code binds anywhere, in any scope (assignments, ``del``,
+    definitions, parameters, imports, handlers, ``with ... as``, ``global``, patterns),
+    whether or not the interpreter runs that code; None when the file can bind names
+    it does not write (``from m import *``, ``exec``, ``globals()``, ``setattr``, a
+    module's ``__dict__``): a name outside the set is then not known to be unbound."""
+    bound: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Name):
+            if not isinstance(node.ctx, ast.Load):
+                bound.add(node.id)
+            elif node.id in _DYNAMIC:
+                return None
+        elif isinstance(node, ast.Attribute) and node.attr in _DYNAMIC:
+            return None
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            bound.add(node.name)
+        elif isinstance(node, ast.arg):
+            bound.add(node.arg)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            for alias in node.names:
+                if alias.name == "*":
+                    return None
+                bound.add(alias.asname or alias.name.split(".", 1)[0])
+        elif isinstance(node, ast.ExceptHandler) and node.name:
+            bound.add(node.name)
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            bound.update(node.names)
+        elif isinstance(node, (ast.MatchAs, ast.MatchStar)) and node.name:
+            bound.add(node.name)
+        elif isinstance(node, ast.MatchMapping) and node.rest:
+            bound.add(node.rest)
+    return frozenset(bound)
+
+
 _EXCEPTIONS: dict[str, type] = {
     name: value for name, value in vars(builtins).items()
     if isinstance(value, type) and issubclass(value, BaseException)}

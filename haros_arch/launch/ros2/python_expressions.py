@@ -13,6 +13,7 @@ gives an unknown value and a diagnostic.
 from __future__ import annotations
 
 import ast
+import builtins
 import dataclasses
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
@@ -144,6 +145,9 @@ class Expressions(Walker):
     diagnostics: list[Diagnostic]
 
     guard_runs: int  # the runs of Python tests not known statically so far (``guard``)
+    path: str  # the file whose code runs
+    # per file read, the names its code binds anywhere (``python.names_bound``)
+    bindings: dict[str, frozenset[str] | None]
 
     def sized(self, value: Any) -> Any:
         raise NotImplementedError
@@ -217,6 +221,12 @@ class Expressions(Walker):
                                           + ", ".join(f"'from {m} import *'" for m in stars)
                                           + (", a module" if len(stars) == 1 else ", modules")
                                           + " not found")
+        bindings = self.bindings.get(self.path)
+        if bindings is not None and name not in bindings and not hasattr(builtins, name):
+            # bound nowhere in the file, in code run or not: Python's NameError there
+            return self.failed(node, f"name {name} is not defined anywhere in the file: "
+                               "Python raises NameError here, and launch stops",
+                               f"NameError: name '{name}' is not defined")
         return self.unsupported(node, f"name {name} is not defined here")
 
     # -- this configuration of the one evaluator's walk (``Walker``) -------------------
