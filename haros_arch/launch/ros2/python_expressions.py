@@ -592,10 +592,31 @@ class Expressions(Walker):
                     kwargs.update({str(k): v for k, v in value.items()})
             else:
                 kwargs[keyword.arg] = value
+        if isinstance(func, Ref) and func.qualified == "eval" and len(args) == 1 and (
+                not kwargs and isinstance(args[0], str)):
+            return self.eval_source(args[0], node, env)
         result = self.call(func, args, kwargs, node)
         if self.guards and isinstance(result, (e.Action, e.ComposableNode)):
             result = self.guarded(result, node)
         return result
+
+    def eval_source(self, source: str, node: ast.Call, env: dict[str, Any]) -> Any:
+        """Python's ``eval(text)`` of a text known here, given no globals nor locals: the
+        expression, read as any of the file's, with the names of the scope it is called
+        in, as Python gives it the caller's (navigation2's multi-robot test launch file:
+        ``eval(f"{robot['name']}_params_file")`` of its locals ``robot1_params_file``,
+        ``robot2_params_file``); interpreted, never run. Its parts are placed at the
+        call; a text that is no expression is the SyntaxError Python raises."""
+        try:
+            tree = ast.parse(source.strip(" \t"), mode="eval")
+        except (SyntaxError, ValueError) as err:
+            return self.failed(node, f"eval of {source!r} fails: it is no Python expression",
+                               f"SyntaxError: {err}")
+        for part in ast.walk(tree):
+            if isinstance(part, ast.expr):
+                ast.copy_location(part, node)
+                part.end_lineno, part.end_col_offset = node.end_lineno, node.end_col_offset
+        return self.eval(tree.body, env)
 
     def guarded(self, action: e.Action | e.ComposableNode, node: ast.AST
                 ) -> e.Action | e.ComposableNode:
