@@ -143,7 +143,7 @@ def generate_launch_description():
 
 def test_hostile_system_call_and_imports_run_nothing(write_tree, tmp_path):
     marker = tmp_path / "pwned"
-    model, _ = run(write_tree, f"""
+    model, root = run(write_tree, f"""
 import subprocess
 import evil_helper
 os.system('touch {marker}')
@@ -160,7 +160,13 @@ def generate_launch_description():
     assert not marker.exists()
     assert [n.name for n in model.nodes] == ["/n"]
     messages = " ".join(d.message for d in model.diagnostics)
-    assert "os.system" in messages and "eval" in messages and "evil_helper.go" in messages
+    assert "os.system" in messages and "evil_helper.go" in messages
+    # the text eval is given is read as the file's code, never run: its builtin
+    # __import__ is said where the eval is
+    lines = (root / "src/pkg/launch/main.launch.py").read_text().splitlines()
+    line = next(i + 1 for i, text in enumerate(lines) if text.strip().startswith("eval("))
+    evaluated = [d.message for d in model.diagnostics if d.location.line == line]
+    assert evaluated == ["builtin __import__ is not interpreted (never run)"], evaluated
     assert codes(model) == ["LAUNCH_PY_UNSUPPORTED"]
 
 
@@ -429,8 +435,18 @@ def generate_launch_description():
         Node(package='p', executable='e', name='n', parameters=[{'stem': stem}]),
     ])
 """)
+    # HOME not set: said where it is read (an info), and not again at the subscript
+    assert [d.code for d in model.diagnostics] == ["LAUNCH_UNKNOWN_VALUE"]
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    stem = os.path.dirname(LaunchConfiguration('path'))[0]
+    return LaunchDescription([
+        Node(package='p', executable='e', name='n', parameters=[{'stem': stem}]),
+    ])
+""")
     messages = sorted(d.message for d in model.diagnostics if d.code == "LAUNCH_UNSUPPORTED")
-    assert messages and all("os.path.expanduser('~/robot.yaml')[0]" in m for m in messages)
+    assert messages and all(
+        "os.path.dirname(LaunchConfiguration('path'))[0]" in m for m in messages)
 
 
 def test_an_argument_with_a_space_stays_one_argument(write_tree):

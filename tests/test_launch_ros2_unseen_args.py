@@ -146,7 +146,8 @@ def generate_launch_description():
 def test_constructs_not_interpreted_are_named_and_said_once(write_tree):
     """nav2's tb3_simulation_launch.py reads its URDF in ``with open(urdf) as f`` from a
     package not here: one diagnostic at the read(), none again where robot_description
-    is used; ``eval(...)(...)`` is said once, where ``eval`` is; perform() on no
+    is used; ``eval(...)(...)`` is said once, where ``eval`` is (the name its text reads
+    not defined: the file may bind it unwritten, as it calls eval); perform() on no
     launch context names the expression; a Command says which command it does not run."""
     body = """
 import os
@@ -186,7 +187,7 @@ def generate_launch_description():
         (line_of(body, "with open(urdf)"), "open(urdf): open() other than for reading a "
                                            "known path is not run"),
         (line_of(body, "where_is_it"), "name where_is_it is not defined here"),
-        (line_of(body, "eval("), "eval of 'make_node': name 'make_node' is not defined")]
+        (line_of(body, "eval("), "name make_node is not defined here")]
     # a file not read is data not known, said as such (it hides no configuration)
     assert found(model, "LAUNCH_PY_FILE_UNKNOWN") == [
         (line_of(body, "infp.read()"), "/nowhere/robot.urdf is outside the workspace; "

@@ -87,6 +87,7 @@ from .python_values import (
     conjunction,
     env_unset,
     launch_object,
+    said_unknown,
     to_text,
 )
 
@@ -916,11 +917,13 @@ class Interpreter(Expressions):
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
         said = len(self.diagnostics)
         value, test = self.test_of(stmt.test, env)
-        if test is None and len(self.diagnostics) == said and not env_unset((value,)):
+        if test is None and len(self.diagnostics) == said and not env_unset((value,)) and (
+                said_unknown("test", [value]) is None):
             # a test not known whose value said nothing of why where it was made (an
             # environment variable not set, a call not run: said there) is said once,
             # at the test, if it guards an action (``guarding``); one unknown only
-            # through environment variables not set was said where they were read
+            # through environment variables not set was said where they were read, and
+            # one computed from a value said not known, where that was made
             self.tests_unsaid.setdefault(id(stmt.test), diag.make(
                 "LAUNCH_UNSUPPORTED", self.where(stmt.test),
                 detail=f"Python test {_source(stmt.test)}"))
@@ -1136,6 +1139,10 @@ class Interpreter(Expressions):
         if all(isinstance(v, list) and len(v) == len(first) for v in values):
             return [self.either([v[n] for v in values], f"{what}[{n}]")
                     for n in range(len(first))]
+        said = [said_unknown(what, [v]) for v in values]
+        if all(made is not None for made in said):
+            # each not known for a cause said where it was made: said no more
+            return said[0]
         reason = f"{what} (a test not known statically)"
         return _common_text(values, reason) or Unknown(reason)
 
@@ -1335,11 +1342,23 @@ class Interpreter(Expressions):
             handler = self.api.get(name) or self.api.get(short)  # xacro.parse: by module
             if handler is not None and (_known_module(name) or short in self.builtins):
                 self.charge_arguments([*args, *kwargs.values()])
-                return handler(self, args, kwargs, node)
+                result = handler(self, args, kwargs, node)
+                if isinstance(result, Unknown) and result.kind != "unsupported":
+                    # not known as an argument said not known where it was made is not
+                    # (``os.path.expanduser`` of a path read from a file outside the
+                    # workspace): said no more where it is used
+                    return said_unknown(f"{short}()", [*args, *kwargs.values()]) or result
+                return result
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
             self.charge_arguments([func.owner, *args, *kwargs.values()])
-            return func.call(self, args, kwargs, node)
+            result = func.call(self, args, kwargs, node)
+            if isinstance(result, Unknown) and result.kind != "unsupported":
+                # a method of a value said not known where it was made, or given one
+                # (``os.popen(cmd).read().split()``): said no more where it is used
+                return said_unknown(f".{func.attr}()", [func.owner, *args,
+                                                        *kwargs.values()]) or result
+            return result
         if isinstance(func, Unknown) and func.origin.startswith("class "):
             return self.unsupported(node, f"call to {func.origin}")
         callee = _source(node.func) if isinstance(node, ast.Call) else "?"

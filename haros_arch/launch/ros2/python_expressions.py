@@ -227,6 +227,8 @@ class Expressions(Walker):
             return self.failed(node, f"name {name} is not defined anywhere in the file: "
                                "Python raises NameError here, and launch stops",
                                f"NameError: name '{name}' is not defined")
+        if hasattr(builtins, name):  # a builtin of Python the reader does not run
+            return self.unsupported(node, f"builtin {name} is not interpreted (never run)")
         return self.unsupported(node, f"name {name} is not defined here")
 
     # -- this configuration of the one evaluator's walk (``Walker``) -------------------
@@ -499,12 +501,21 @@ class Expressions(Walker):
             try:
                 return ops.subscript(value, _hashable(key))
             except ops.Refused as err:
+                made = said_unknown("a slice", [value])
+                if made is not None:  # said where it was made
+                    return made
                 if err.kind == "error" and _fails_for_sure(value, key):
                     # a missing key, an index out of range of a value known: Python
                     # raises, to a ``try`` whose handler catches it (``failed``)
                     return self.failed(node, f"{_source(node)} fails: {err.reason}",
                                        err.reason)
                 return self.unsupported(node, f"{_source(node)} is not known statically")
+        # a value said unknown where it was made (a file outside the workspace, a call
+        # not run): its items are as unknown, said no more (III-Drone's parameters
+        # dict, read from ~/.config, then subscripted at each use)
+        made = said_unknown("an item", [value])
+        if made is not None:
+            return made
         # which expression, as an attribute of an unknown value says (it was "subscript")
         return Unknown(f"{_source(node)} (a subscript of a value not known statically)")
 

@@ -116,10 +116,9 @@ def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
             a[0], str) and a[0].startswith("/"):
         i.made_paths.append(a[0])  # a file the launch makes as it runs (not run here)
     if mode not in ("r", "rt") or not a or not isinstance(a[0], str):
-        if mode in ("r", "rt") and a and isinstance(a[0], Unknown) \
-                and a[0].kind == "unsupported":  # its path was said where it was made
-            return Unknown(f"{_source(n)} of a path not known", "unsupported",
-                           where=a[0].where)
+        made = said_unknown("open()", a[:1]) if mode in ("r", "rt") else None
+        if made is not None:  # its path was said where it was made (or its parts were)
+            return made
         return i.unsupported(n, f"{_source(n)}: open() other than for reading a known "
                                 "path is not run")
     return ReadOnlyFile(a[0])
@@ -135,7 +134,9 @@ def _loaded_text(i: Interpreter, a: Args, n: ast.AST, kind: str) -> str | Unknow
     if text is None and isinstance(source, ReadOnlyFile):
         return Unknown(f"{source.path} not read", "unsupported", where=i.where(n))
     if text is None:
-        return Unknown(f"{kind} not known statically")
+        # the text of a file read already (``open(path).read()``) that could not be:
+        # said there, not again
+        return said_unknown(kind, [source]) or Unknown(f"{kind} not known statically")
     return text
 
 
@@ -364,7 +365,9 @@ def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if text is None:  # said by read(), here: its uses say no more
             return Unknown(f"{owner.path} not read", "unsupported", where=i.where(n))
         return text
-    return i.unsupported(n, ".read() on a value not known statically")
+    # a file opened at a path said not known where it was made: as unknown, said no more
+    return said_unknown(".read()", [owner]) or i.unsupported(
+        n, ".read() on a value not known statically")
 
 
 def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -465,14 +465,37 @@ def said_unknown(what: str, values: Iterable[Any]) -> Unknown | None:
         if isinstance(value, Unknown) and value.kind == "unsupported":
             return Unknown(f"{what} of {value.origin}", "unsupported", causes=value.causes,
                            where=value.where)
-        if isinstance(value, Lazy) and all(
-                isinstance(p, str) or (isinstance(p, e.Opaque) and not p.report)
-                for p in value.text):
-            # a text of such values (``'robot_' + str(...)``): said where each was made
-            made = next((p for p in value.text if isinstance(p, e.Opaque)), None)
+        if isinstance(value, Lazy):
+            # a text of such values (``'robot_' + str(...)``, a path joined of them):
+            # said where each was made
+            made = _said_parts(value.text)
             if made is not None:
                 return Unknown(f"{what} of {made.origin}", "unsupported")
     return None
+
+
+def _said_parts(text: e.Text) -> e.Opaque | None:
+    """The first part of ``text`` said not known where it was made, when every part is
+    known text or such a part (through path joins: ``os.path.join(folder, said)``);
+    None when another part is not known, or none is."""
+    first: e.Opaque | None = None
+    for part in text:
+        if isinstance(part, str):
+            continue
+        if isinstance(part, e.Opaque) and not part.report:
+            first = first or part
+            continue
+        if isinstance(part, e.PathJoin):
+            for piece in part.parts:
+                if all(isinstance(x, str) for x in piece):
+                    continue
+                made = _said_parts(piece)
+                if made is None:
+                    return None
+                first = first or made
+            continue
+        return None
+    return first
 
 
 def env_unknown(what: str, causes: tuple[str, ...], where: Location | None) -> Unknown:
