@@ -184,14 +184,15 @@ def generate_launch_description():
     assert said == [
         (line_of(body, ".perform("), "LaunchConfiguration('name').perform(context): "
                                      "perform() outside an OpaqueFunction is not interpreted"),
-        (line_of(body, "with open(urdf)"), "open(urdf): open() other than for reading a "
-                                           "known path is not run"),
         (line_of(body, "where_is_it"), "name where_is_it is not defined here"),
         (line_of(body, "eval("), "name make_node is not defined here")]
     # a file not read is data not known, said as such (it hides no configuration)
+    # (and so is one whose path launch finds when it runs, in a package not here)
     assert found(model, "LAUNCH_PY_FILE_UNKNOWN") == [
         (line_of(body, "infp.read()"), "/nowhere/robot.urdf is outside the workspace; "
-                                       "not read")]
+                                       "not read"),
+        (line_of(body, "with open(urdf)"), "open(urdf): a file whose path is known only "
+                                           "when launch runs; not read")]
     assert found(model, "LAUNCH_UNSUPPORTED") == []
     # never run, as a ROS 1 command= is not: an unknown value, not a construct not read
     assert (line_of(body, "name='b'"), 'command "xacro /nowhere/r.xacro" is not run; what '

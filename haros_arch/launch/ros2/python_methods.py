@@ -119,6 +119,12 @@ def open_file(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         made = said_unknown("open()", a[:1]) if mode in ("r", "rt") else None
         if made is not None:  # its path was said where it was made (or its parts were)
             return made
+        if mode in ("r", "rt") and a and isinstance(a[0], Lazy):
+            # a path launch finds when it runs (a package's share folder not here:
+            # navigation2's tb3_simulation_launch.py reads its robot's URDF so): data
+            # not known, as a file outside the workspace is, not a construct not read
+            return i.unsupported(n, f"{_source(n)}: a file whose path is known only when "
+                                    "launch runs; not read", "LAUNCH_PY_FILE_UNKNOWN")
         return i.unsupported(n, f"{_source(n)}: open() other than for reading a known "
                                 "path is not run")
     return ReadOnlyFile(a[0])
