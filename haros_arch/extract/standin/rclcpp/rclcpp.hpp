@@ -377,7 +377,14 @@ public:
   Logger get_child(const std::string& suffix);
 };
 Logger get_logger(const std::string& name);
-namespace haros { void log(const Logger& logger, const char* format, ...); }
+// the logging macros take a std::string as the format too (logging.hpp passes the first
+// argument through rclcpp::get_c_string of utilities.hpp)
+namespace haros {
+void log(const Logger& logger, const char* format, ...);
+void log(const Logger& logger, const std::string& format, ...);
+}
+const char* get_c_string(const char* string_in);
+const char* get_c_string(const std::string& string_in);
 // QoS
 // (``Unknown``: what a QoS copied from another endpoint may hold; foxglove_bridge tests
 // ``qos.history() == rclcpp::HistoryPolicy::Unknown``)

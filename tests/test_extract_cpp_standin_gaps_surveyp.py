@@ -1,0 +1,43 @@
+"""Stand-in gaps seen on real ROS 2 code (bench/README, helper surveyP): each left a C++
+error in a function of a node, which made the node partial where that function calls the
+ROS API."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import package_xml
+
+from haros_arch.extract.cpp import extract_cpp
+from haros_arch.workspace import scan
+
+HEAD = "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+
+CASES = {
+    # rclcpp's logging macros pass their first argument through rclcpp::get_c_string:
+    # a std::string is a format (the Omron AMR's demo_execute_macro.cpp logs
+    # ``feedback->feed_msg``)
+    "string_format": (
+        "#include <string>\n",
+        "  const std::string text = \"goal\";\n"
+        "  RCLCPP_INFO(node->get_logger(), text);\n"
+        "  RCLCPP_WARN_ONCE(node->get_logger(), std::string(\"once\"));\n"
+        "  RCLCPP_ERROR(node->get_logger(), rclcpp::get_c_string(text));\n"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
+    include, body = CASES[case]
+    (tmp_path / "package.xml").write_text(package_xml("node", "ament_cmake"))
+    source = tmp_path / "node.cpp"
+    source.write_text(
+        HEAD + include + "int main(int argc, char** argv) {\n"
+        "  rclcpp::init(argc, argv);\n"
+        "  auto node = std::make_shared<rclcpp::Node>(\"node\");\n" + body +
+        "  auto pub = node->create_publisher<std_msgs::msg::String>(\"out\", 10);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="jazzy")
+    assert [(d.location.line, d.message) for d in result.diagnostics
+            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
+                          "CPP_INCLUDE_MISSING")] == []
+    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
