@@ -22,6 +22,22 @@ CASES = {
         "  RCLCPP_INFO(node->get_logger(), text);\n"
         "  RCLCPP_WARN_ONCE(node->get_logger(), std::string(\"once\"));\n"
         "  RCLCPP_ERROR(node->get_logger(), rclcpp::get_c_string(text));\n"),
+    # the events executor's listeners on subscriptions, services and clients (III-Drone's
+    # lifecycle nodes clear them in on_deactivate)
+    "event_listeners": (
+        "#include <std_srvs/srv/trigger.hpp>\n",
+        "  auto sub = node->create_subscription<std_msgs::msg::String>(\"in\", 10,\n"
+        "      [](std_msgs::msg::String::SharedPtr) {});\n"
+        "  auto srv = node->create_service<std_srvs::srv::Trigger>(\"do\",\n"
+        "      [](const std::shared_ptr<std_srvs::srv::Trigger::Request>,\n"
+        "         std::shared_ptr<std_srvs::srv::Trigger::Response>) {});\n"
+        "  auto cli = node->create_client<std_srvs::srv::Trigger>(\"ask\");\n"
+        "  sub->set_on_new_message_callback([](size_t) {});\n"
+        "  sub->clear_on_new_message_callback();\n"
+        "  srv->set_on_new_request_callback([](size_t) {});\n"
+        "  srv->clear_on_new_request_callback();\n"
+        "  cli->set_on_new_response_callback([](size_t) {});\n"
+        "  cli->clear_on_new_response_callback();\n"),
 }
 
 

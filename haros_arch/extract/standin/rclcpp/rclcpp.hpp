@@ -631,6 +631,11 @@ public:
   std::vector<NetworkFlowEndpoint> get_network_flow_endpoints() const;
   std::shared_ptr<void> create_message();
   bool take_type_erased(void* message, MessageInfo& message_info);
+  // an events executor's listeners (rclcpp since humble)
+  void set_on_new_message_callback(std::function<void(size_t)> callback);
+  void clear_on_new_message_callback();
+  void set_on_new_intra_process_message_callback(std::function<void(size_t)> callback);
+  void clear_on_new_intra_process_message_callback();
   void handle_message(std::shared_ptr<void>& message, const MessageInfo& message_info);
 };
 // rclcpp/message_info.hpp: what a subscription callback's second parameter can be
@@ -679,6 +684,8 @@ class ServiceBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase)
   const char* get_service_name() const;
+  void set_on_new_request_callback(std::function<void(size_t)> callback);
+  void clear_on_new_request_callback();
 };
 template<class S> class Service : public ServiceBase {
 public:
@@ -701,6 +708,8 @@ public:
   template<class R = long, class P = std::ratio<1>>
   bool wait_for_service(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
   const char* get_service_name() const;
+  void set_on_new_response_callback(std::function<void(size_t)> callback);
+  void clear_on_new_response_callback();
 };
 template<class S> class Client : public ClientBase {
 public:
