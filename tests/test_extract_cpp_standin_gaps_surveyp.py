@@ -38,6 +38,14 @@ CASES = {
         "  srv->clear_on_new_request_callback();\n"
         "  cli->set_on_new_response_callback([](size_t) {});\n"
         "  cli->clear_on_new_response_callback();\n"),
+    # std::shared_lock's members (III-Drone's utils unlock one early)
+    "shared_lock": (
+        "#include <shared_mutex>\n",
+        "  std::shared_mutex mutex;\n"
+        "  std::shared_lock<std::shared_mutex> lock(mutex);\n"
+        "  if (lock.owns_lock()) { lock.unlock(); }\n"
+        "  std::shared_lock<std::shared_mutex> later(mutex, std::defer_lock);\n"
+        "  later.lock();\n"),
 }
 
 

@@ -2277,7 +2277,18 @@ public:
 };
 template<class M> class shared_lock {
 public:
+  shared_lock() noexcept;
   explicit shared_lock(M& m);
+  shared_lock(M& m, defer_lock_t t);
+  shared_lock(M& m, try_to_lock_t t);
+  shared_lock(M& m, adopt_lock_t t);
+  void lock();
+  void unlock();
+  bool try_lock();
+  bool owns_lock() const noexcept;
+  explicit operator bool() const noexcept;
+  M* mutex() const noexcept;
+  M* release() noexcept;
 };
 class condition_variable {
 public:
