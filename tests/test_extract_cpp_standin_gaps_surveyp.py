@@ -46,6 +46,14 @@ CASES = {
         "  if (lock.owns_lock()) { lock.unlock(); }\n"
         "  std::shared_lock<std::shared_mutex> later(mutex, std::defer_lock);\n"
         "  later.lock();\n"),
+    # <complex>'s imaginary literals (corgi's gait generators: ``std::exp(1i * a) * v``)
+    "complex_literals": (
+        "#include <complex>\n#include <cmath>\n",
+        "  using namespace std::complex_literals;\n"
+        "  const double a = 0.5;\n"
+        "  std::complex<double> v(1.0, 0.0);\n"
+        "  std::complex<double> turned = std::exp(1i * (a + M_PI)) * v;\n"
+        "  double x = turned.real() + (2.0 * (std::exp(1i * a) * v)).imag();\n"),
 }
 
 
