@@ -54,6 +54,12 @@ CASES = {
         "  std::complex<double> v(1.0, 0.0);\n"
         "  std::complex<double> turned = std::exp(1i * (a + M_PI)) * v;\n"
         "  double x = turned.real() + (2.0 * (std::exp(1i * a) * v)).imag();\n"),
+    # Eigen's partialPivLu() (corgi's leg model solves its Newton step with it)
+    "partial_piv_lu": (
+        "#include <Eigen/Dense>\n",
+        "  Eigen::Matrix2d jac = Eigen::Matrix2d::Identity();\n"
+        "  Eigen::Vector2d cost(1.0, 2.0);\n"
+        "  Eigen::Vector2d step = jac.partialPivLu().solve(-cost);\n"),
 }
 
 
