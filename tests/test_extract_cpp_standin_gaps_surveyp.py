@@ -60,6 +60,20 @@ CASES = {
         "  Eigen::Matrix2d jac = Eigen::Matrix2d::Identity();\n"
         "  Eigen::Vector2d cost(1.0, 2.0);\n"
         "  Eigen::Vector2d step = jac.partialPivLu().solve(-cost);\n"),
+    # Node::get_clock() const and Clock::now() const (hexapod-ros2-control's bridge reads
+    # its clock in a const member, ``(get_clock()->now() - boot_).nanoseconds()``)
+    "const_clock": (
+        "#include <cstdint>\n"
+        "struct Ticker {\n"
+        "  const rclcpp::Node* node;\n"
+        "  rclcpp::Time boot;\n"
+        "  std::int64_t since() const {\n"
+        "    return (node->get_clock()->now() - boot).nanoseconds();\n"
+        "  }\n"
+        "};\n",
+        "  Ticker ticker{node.get(), node->now()};\n"
+        "  rclcpp::Clock::ConstSharedPtr clock = ticker.node->get_clock();\n"
+        "  auto elapsed = ticker.since() + clock->now().nanoseconds();\n"),
 }
 
 

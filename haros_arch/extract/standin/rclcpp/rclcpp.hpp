@@ -325,7 +325,7 @@ class Clock {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Clock)
   explicit Clock(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
-  Time now();
+  Time now() const;
   rcl_clock_type_t get_clock_type() const;
   bool sleep_for(Duration d);
   bool sleep_until(Time until);
@@ -817,7 +817,8 @@ class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParamet
 class NodeLoggingInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeLoggingInterface)
   rclcpp::Logger get_logger() const; const char* get_logger_name() const; };
 class NodeClockInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface)
-  std::shared_ptr<rclcpp::Clock> get_clock(); };
+  std::shared_ptr<rclcpp::Clock> get_clock();
+  std::shared_ptr<const rclcpp::Clock> get_clock() const; };
 class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterface)
   std::map<std::string, std::vector<std::string>> get_topic_names_and_types(
       bool no_demangle = false) const;
@@ -855,6 +856,7 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   const std::string& get_effective_namespace() const; \
   rclcpp::Logger get_logger() const; \
   rclcpp::Clock::SharedPtr get_clock(); \
+  rclcpp::Clock::ConstSharedPtr get_clock() const; \
   rclcpp::Time now() const; \
   std::shared_ptr<NodeT> shared_from_this(); \
   rclcpp::CallbackGroup::SharedPtr create_callback_group(rclcpp::CallbackGroupType t, bool automatically_add = true); \
