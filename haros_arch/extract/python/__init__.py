@@ -187,6 +187,9 @@ NOT_CLIENTS = frozenset({
     # serial ports and file formats make no ROS call)
     "cv2", "numpy", "scipy", "sklearn", "torch", "matplotlib", "pandas", "PIL", "shapely",
     "pyproj", "open3d", "transforms3d", "serial", "yaml",
+    # neural network runtimes (ros2-rover's tractor_bringup depends on ``rknn``, Rockchip's
+    # NPU toolkit, and builds ``rknn.api.RKNN``): inference makes no ROS call
+    "rknn", "rknnlite", "onnxruntime", "tensorflow", "tflite_runtime",
 })
 
 
