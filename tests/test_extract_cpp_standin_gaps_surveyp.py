@@ -74,6 +74,38 @@ CASES = {
         "  Ticker ticker{node.get(), node->now()};\n"
         "  rclcpp::Clock::ConstSharedPtr clock = ticker.node->get_clock();\n"
         "  auto elapsed = ticker.since() + clock->now().nanoseconds();\n"),
+    # the Linux SPI and GPIO character device interfaces (Husarion Panther's APA102
+    # lights, hexapod-ros2-control's SH1122 display): the headers were missing
+    "spidev_gpio": (
+        "#include <fcntl.h>\n#include <sys/ioctl.h>\n#include <unistd.h>\n"
+        "#include <cstring>\n#include <linux/spi/spidev.h>\n#include <linux/gpio.h>\n",
+        "  int spi = open(\"/dev/spidev0.0\", O_RDWR);\n"
+        "  uint8_t mode = SPI_MODE_3 | SPI_NO_CS;\n"
+        "  uint32_t speed = 8000000;\n"
+        "  ioctl(spi, SPI_IOC_WR_MODE, &mode);\n"
+        "  ioctl(spi, SPI_IOC_WR_MAX_SPEED_HZ, &speed);\n"
+        "  uint8_t tx[4] = {0, 0, 0, 0};\n"
+        "  struct spi_ioc_transfer transfer;\n"
+        "  std::memset(&transfer, 0, sizeof(transfer));\n"
+        "  transfer.tx_buf = reinterpret_cast<uint64_t>(tx);\n"
+        "  transfer.len = sizeof(tx);\n"
+        "  transfer.bits_per_word = 8;\n"
+        "  ioctl(spi, SPI_IOC_MESSAGE(1), &transfer);\n"
+        "  int chip = open(\"/dev/gpiochip0\", O_RDWR);\n"
+        "  gpio_v2_line_request request{};\n"
+        "  request.offsets[0] = 24;\n"
+        "  request.num_lines = 1;\n"
+        "  request.config.flags = GPIO_V2_LINE_FLAG_OUTPUT;\n"
+        "  std::strncpy(request.consumer, \"panel\", sizeof(request.consumer) - 1);\n"
+        "  ioctl(chip, GPIO_V2_GET_LINE_IOCTL, &request);\n"
+        "  gpio_v2_line_values values{};\n"
+        "  values.mask = 1ULL;\n"
+        "  values.bits = 1ULL;\n"
+        "  ioctl(request.fd, GPIO_V2_LINE_SET_VALUES_IOCTL, &values);\n"
+        "  gpiohandle_request handle{};\n"
+        "  handle.flags = GPIOHANDLE_REQUEST_OUTPUT;\n"
+        "  ioctl(chip, GPIO_GET_LINEHANDLE_IOCTL, &handle);\n"
+        "  close(spi);\n"),
 }
 
 
