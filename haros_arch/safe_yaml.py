@@ -248,6 +248,8 @@ def _read_document(text: str, loader: type[yaml.SafeLoader], lines: bool
     _check_flow_depth(text)
     reader = _reader(loader, text)
     try:
+        if getattr(loader, "documents_merged", False):
+            return _merged_documents(reader, lines)
         node = reader.get_single_node()
         if node is None:
             return None, None
@@ -259,6 +261,39 @@ def _read_document(text: str, loader: type[yaml.SafeLoader], lines: bool
         raise YAMLLimit(f"YAML cannot be read: {err}") from None
     finally:
         reader.dispose()
+
+
+def _merged_documents(reader: Any, lines: bool) -> tuple[Any, Any]:
+    """The documents of a stream read as one, for a loader whose ``documents_merged``
+    says so (rcl's parameter file parser passes over the document start and end events):
+    their mappings merged in order (``merged``), as a key written twice is; a stream
+    holding a document that is no mapping beside another is refused as the single
+    document reader refuses it."""
+    nodes: list[yaml.Node] = []
+    while reader.check_node():
+        node = reader.get_node()
+        if node is not None:
+            check(node)
+            nodes.append(node)
+    values = [reader.construct_document(node) for node in nodes]
+    kept = [(node, value) for node, value in zip(nodes, values, strict=True)
+            if value is not None]
+    if not kept:
+        return None, None
+    if len(kept) == 1:
+        node, value = kept[0]
+        return value, _key_lines(node) if lines else None
+    if not all(isinstance(value, dict) for _, value in kept):
+        raise yaml.composer.ComposerError(
+            "expected a single document in the stream", kept[0][0].start_mark,
+            "but found another document", kept[1][0].start_mark)
+    document: dict[Any, Any] = {}
+    where: dict[Any, Any] = {}
+    for node, value in kept:
+        document = merged(document, value)
+        if lines:
+            where = merged(where, _key_lines(node) or {})
+    return document, where if lines else None
 
 
 def _check_flow_depth(text: str) -> None:

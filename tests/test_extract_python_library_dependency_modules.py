@@ -5,7 +5,9 @@ navigation2_dynamic (ros-planning, 6eae17e) kf_hungarian_tracker depends on ``cv
 builds ``cv2.KalmanFilter`` for each obstacle (obstacle_class.py:37); autoware_mini
 (UT-ADL, f0a4c3e) builds ``lanelet2.projection.UtmProjector`` and
 ``lanelet2.routing.RoutingGraph`` in six nodes. Each was partial (PY_CLASS_UNSEEN "of
-ROS package cv2"), so nothing it published or subscribed could be said missing."""
+ROS package cv2"), so nothing it published or subscribed could be said missing; so was
+adl-ros2's fr3_interface for ``pinocchio.SE3`` and two of ros2-rover's nodes for
+``rknn.api.RKNN`` (bench/README, helper surveyP)."""
 
 from __future__ import annotations
 
@@ -45,7 +47,12 @@ def _codes(tmp_path, dependency: str, built: str) -> list[str]:
 
 @pytest.mark.parametrize("dependency,built", [
     ("cv2", "cv2.KalmanFilter(4, 2)"),
-    ("lanelet2", "lanelet2.projection.UtmProjector(lanelet2.io.Origin(58.3, 26.7))")])
+    ("lanelet2", "lanelet2.projection.UtmProjector(lanelet2.io.Origin(58.3, 26.7))"),
+    # adl-ros2 (McGill ADL, f64e5b1) fr3_interface.py:134: a pose of the arm's model
+    ("pinocchio", "pinocchio.SE3(pinocchio.Quaternion(1.0, 0.0, 0.0, 0.0), [0.0, 0.0, 0.0])"),
+    ("crocoddyl", "crocoddyl.ShootingProblem(x0, [], terminal)"),
+    # ros2-rover (bensonjohnson, f4db791) ppo_manager_rtab.py:414: the policy on the NPU
+    ("rknn", "rknn.api.RKNN(verbose=False)")])
 def test_a_library_class_hides_no_ros_call(tmp_path, dependency, built) -> None:
     assert "PY_CLASS_UNSEEN" not in _codes(tmp_path, dependency, built)
 

@@ -222,6 +222,36 @@ def own_folder(folder: str, workspace: Workspace) -> bool:
     return folder != root and _owned(folder, root)
 
 
+def shared_folder(folder: str, workspace: Workspace) -> bool:
+    """Whether ``folder`` is a folder (not a link) that no package holds, of the workspace
+    or of the workspace folder above its ``src/`` (not the build's ``build``,
+    ``install``, ``devel``, ``log``): code several packages of a repository build from one
+    tree outside them, which a package's CMake names by a path up from its own folder
+    (hexapod-ros2-control's ``set(FW_SRC ${CMAKE_CURRENT_SOURCE_DIR}/../../shared/
+    motion_core)``, the firmware's control code the bridge node compiles, with
+    ``target_include_directories(firmware_bridge_node PRIVATE ${FW_SRC})``: its headers
+    were missing and the node partial). Never a folder elsewhere (an installed library's,
+    whose headers the stand-ins are)."""
+    folder = os.path.abspath(folder)
+    if workspace.package_of(folder) is not None or os.path.islink(folder) \
+            or not os.path.isdir(folder):
+        return False
+    if workspace.holds(folder):
+        return True
+    for top in workspace.folders:
+        top = os.path.abspath(top)
+        if os.path.basename(top) != "src":
+            continue
+        above = os.path.dirname(top)
+        inside = os.path.relpath(folder, above).split(os.sep)
+        if inside[0] not in (os.pardir, os.curdir) and inside[0] not in _BUILD_FOLDERS:
+            return True
+    return False
+
+
+_BUILD_FOLDERS = frozenset({"build", "install", "devel", "log"})
+
+
 def in_own_project(path: str, root: str) -> bool:
     """Whether the file or folder ``path`` of the package at ``root`` belongs to the
     package's own CMake project (``_owned``), not to a sub-project it vendors (ouster-ros'

@@ -286,7 +286,8 @@ def _library_include_dirs(workspace: Workspace) -> list[str]:
 def _built_include_dirs(sources: Sequence[str], workspace: Workspace) -> list[str]:
     """The include folders the compile lines of ``sources`` get from their packages'
     CMake files as the interpreter reads them (``cmake.source_include_dirs``), in order:
-    folders of a workspace package's own project (``cmake_includes.own_folder``)."""
+    folders of a workspace package's own project (``cmake_includes.own_folder``) and
+    folders of the workspace outside every package (``cmake_includes.shared_folder``)."""
     found: list[str] = []
     for source in dict.fromkeys(map(os.path.abspath, sources)):
         package = workspace.package_of(source)
@@ -294,7 +295,8 @@ def _built_include_dirs(sources: Sequence[str], workspace: Workspace) -> list[st
             continue
         given = cmake.source_include_dirs(package, workspace).get(workspace.relpath(source), ())
         found += [folder for folder in given if folder not in found
-                  and cmake_includes.own_folder(folder, workspace)]
+                  and (cmake_includes.own_folder(folder, workspace)
+                       or cmake_includes.shared_folder(folder, workspace))]
     return found
 
 

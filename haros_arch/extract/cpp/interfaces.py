@@ -472,6 +472,7 @@ def render(interface: Interface) -> str:
         request, response = interface.sections
         lines += _struct(f"{name}Request", request, pkg, interface.known)
         lines += _struct(f"{name}Response", response, pkg, interface.known)
+        lines += [template_name(f"{name}Request"), template_name(f"{name}Response")]
         lines += [f"struct {name} {{",
                   f"  typedef {name}Request Request;", f"  typedef {name}Response Response;",
                   "  Request request;", "  Response response;"]
@@ -485,6 +486,7 @@ def render(interface: Interface) -> str:
     else:
         lines += _struct(name, interface.sections[0] if interface.sections else [], pkg,
                          interface.known)
+        lines.append(template_name(name))
     lines += [f"}}  // namespace {pkg}", "#endif", ""]
     return "\n".join(lines)
 
@@ -541,6 +543,17 @@ def _struct(name: str, fields: list[Field], package: str, known: bool = True) ->
     return lines + _pointers(name)
 
 
+def template_name(name: str) -> str:
+    """The class template a generator makes a message struct from, named with a trailing
+    ``_`` and its allocator as argument (rosidl_generator_cpp's ``template<class
+    ContainerAllocator> struct Name_``, ``using Name = Name_<std::allocator<void>>``;
+    gencpp's the same with a typedef), as code copied from compiler messages or written
+    against the generated headers names it (the Omron AMR's goals_marker.cpp takes a
+    ``std::shared_ptr<om_aiv_msg::srv::ArclApi_Request_<std::allocator<void>>>&``): an
+    alias template of the synthesised struct, whatever the allocator."""
+    return f"template<class ContainerAllocator> using {name}_ = {name};"
+
+
 def _pointers(name: str) -> list[str]:
     return [f"typedef boost::shared_ptr<{name}> {name}Ptr;",
             f"typedef boost::shared_ptr<{name} const> {name}ConstPtr;"]
@@ -589,5 +602,6 @@ def render_action(interface: Interface) -> str:
     lines += [f"  typedef boost::shared_ptr<{name}Action> Ptr;",
               f"  typedef boost::shared_ptr<{name}Action const> ConstPtr;", "};"]
     lines += _pointers(f"{name}Action")
+    lines += [template_name(f"{name}{part}") for part in ACTION_PARTS]
     lines += [f"}}  // namespace {pkg}", "#endif", ""]
     return "\n".join(lines)

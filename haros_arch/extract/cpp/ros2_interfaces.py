@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from .interfaces import Field, Interface, fields_hook, qualified, string_literal
+from .interfaces import Field, Interface, fields_hook, qualified, string_literal, template_name
 
 KINDS = ("msg", "srv", "action")
 PRIMITIVES = {
@@ -205,7 +205,7 @@ def _action_impl_parts(name: str) -> list[str]:
                                          (f"{name}_Feedback", "feedback")])):
         lines += [f"struct {struct} {{", f"  {struct}();"]
         lines += [f"  {cpp} {field};" for cpp, field in fields]
-        lines += [*_pointer_types(struct), "};"]
+        lines += [*_pointer_types(struct), "};", template_name(struct)]
     for service in ("SendGoal", "GetResult"):
         lines += [f"struct {name}_{service} {{",
                   f"  using Request = {name}_{service}_Request;",
@@ -256,7 +256,7 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
         lines.append("  uint8_t structure_needs_at_least_one_member;")
     lines += [f"  bool operator==(const {name}& other) const;",
               f"  bool operator!=(const {name}& other) const;",
-              *_pointer_types(name), "};",
+              *_pointer_types(name), "};", template_name(name),
               # rosidl's YAML of a message, beside it (``RCLCPP_INFO_STREAM(logger,
               # geometry_msgs::msg::to_yaml(pose))``)
               f"std::string to_yaml(const {name}& msg, bool use_flow_style = false);",

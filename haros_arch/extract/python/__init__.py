@@ -171,6 +171,10 @@ NOT_CLIENTS = frozenset({
     # maps (``lanelet2.io.Origin``, ``lanelet2.projection.UtmProjector``,
     # ``lanelet2.routing.RoutingGraph``: autoware_mini's planners and detectors)
     "lanelet2",
+    # rigid-body dynamics and optimal control libraries released into ROS (the Stack of
+    # Tasks' pinocchio, its eigenpy bindings, crocoddyl): an arm's interface builds
+    # ``pinocchio.SE3``, ``pinocchio.Motion`` (adl-ros2's fr3_interface)
+    "pinocchio", "eigenpy", "crocoddyl",
     # not ROS packages at all: rosdep keys a package.xml may write that name a Python
     # library by the module it imports (rosdep/python.yaml of github:ros/rosdistro
     # 8468e88c: its keys that are modules; pyquaternion, PyPI's, which jsk_fetch_startup
@@ -183,6 +187,9 @@ NOT_CLIENTS = frozenset({
     # serial ports and file formats make no ROS call)
     "cv2", "numpy", "scipy", "sklearn", "torch", "matplotlib", "pandas", "PIL", "shapely",
     "pyproj", "open3d", "transforms3d", "serial", "yaml",
+    # neural network runtimes (ros2-rover's tractor_bringup depends on ``rknn``, Rockchip's
+    # NPU toolkit, and builds ``rknn.api.RKNN``): inference makes no ROS call
+    "rknn", "rknnlite", "onnxruntime", "tensorflow", "tflite_runtime",
 })
 
 

@@ -234,9 +234,22 @@ ParamFileLoader.add_implicit_resolver(_YAML_INT, _RCL_INT, list("-+0123456789"))
 ParamFileLoader.add_implicit_resolver(_YAML_FLOAT, _RCL_FLOAT, list("-+0123456789."))
 
 
-def load_param_file(text: str) -> Any:
+class RclParamFileLoader(ParamFileLoader):
+    """A parameter file as rcl reads it when the node is given its path
+    (``--params-file``): its parse_file_events passes over the YAML document start and
+    end events, so a file of several documents (``---``) is read as one, their entries
+    merged as a key written twice is (ros2-rover's robot_localization.yaml gives its
+    local and global EKFs in two documents). launch_ros reads a file itself with
+    ``yaml.safe_load``, one document only, when it substitutes in it (allow_substs), when
+    the file is a composable node's, and so does a rewrite (nav2's RewrittenYaml):
+    ``ParamFileLoader`` there."""
+
+    documents_merged = True
+
+
+def load_param_file(text: str, loader: type[ParamFileLoader] = ParamFileLoader) -> Any:
     """A ROS 2 parameter file's document (bounded, as ``safe_yaml.load``)."""
-    return safe_yaml.load(text, ParamFileLoader)
+    return safe_yaml.load(text, loader)
 
 
 def yaml_value(text: str) -> Any:

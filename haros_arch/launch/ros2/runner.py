@@ -1207,11 +1207,15 @@ class Runner:
             text = self.substitute(text, scope, where)  # the file as written, comments too
         if text is None:
             return None
+        # rcl reads a file launch_ros hands on as it is; launch_ros reads one itself
+        # (one document) when it substitutes in it or loads a component, a rewrite too
+        loader = naming.ParamFileLoader if (
+            component or entry.allow_substs or rewritten) else naming.RclParamFileLoader
         try:
             if placed is None:
-                document = _unknown_parts(naming.load_param_file(text), text)
+                document = _unknown_parts(naming.load_param_file(text, loader), text)
             else:
-                loaded, lines = safe_yaml.load_with_lines(text, naming.ParamFileLoader)
+                loaded, lines = safe_yaml.load_with_lines(text, loader)
                 document = _unknown_parts(loaded, text)
         except yaml.YAMLError as err:
             mark = getattr(err, "problem_mark", None)

@@ -325,7 +325,7 @@ class Clock {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(Clock)
   explicit Clock(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME);
-  Time now();
+  Time now() const;
   rcl_clock_type_t get_clock_type() const;
   bool sleep_for(Duration d);
   bool sleep_until(Time until);
@@ -377,7 +377,14 @@ public:
   Logger get_child(const std::string& suffix);
 };
 Logger get_logger(const std::string& name);
-namespace haros { void log(const Logger& logger, const char* format, ...); }
+// the logging macros take a std::string as the format too (logging.hpp passes the first
+// argument through rclcpp::get_c_string of utilities.hpp)
+namespace haros {
+void log(const Logger& logger, const char* format, ...);
+void log(const Logger& logger, const std::string& format, ...);
+}
+const char* get_c_string(const char* string_in);
+const char* get_c_string(const std::string& string_in);
 // QoS
 // (``Unknown``: what a QoS copied from another endpoint may hold; foxglove_bridge tests
 // ``qos.history() == rclcpp::HistoryPolicy::Unknown``)
@@ -624,6 +631,11 @@ public:
   std::vector<NetworkFlowEndpoint> get_network_flow_endpoints() const;
   std::shared_ptr<void> create_message();
   bool take_type_erased(void* message, MessageInfo& message_info);
+  // an events executor's listeners (rclcpp since humble)
+  void set_on_new_message_callback(std::function<void(size_t)> callback);
+  void clear_on_new_message_callback();
+  void set_on_new_intra_process_message_callback(std::function<void(size_t)> callback);
+  void clear_on_new_intra_process_message_callback();
   void handle_message(std::shared_ptr<void>& message, const MessageInfo& message_info);
 };
 // rclcpp/message_info.hpp: what a subscription callback's second parameter can be
@@ -672,6 +684,8 @@ class ServiceBase {
 public:
   RCLCPP_SMART_PTR_DEFINITIONS(ServiceBase)
   const char* get_service_name() const;
+  void set_on_new_request_callback(std::function<void(size_t)> callback);
+  void clear_on_new_request_callback();
 };
 template<class S> class Service : public ServiceBase {
 public:
@@ -694,6 +708,8 @@ public:
   template<class R = long, class P = std::ratio<1>>
   bool wait_for_service(std::chrono::duration<R, P> timeout = std::chrono::duration<R, P>(-1));
   const char* get_service_name() const;
+  void set_on_new_response_callback(std::function<void(size_t)> callback);
+  void clear_on_new_response_callback();
 };
 template<class S> class Client : public ClientBase {
 public:
@@ -801,7 +817,8 @@ class NodeParametersInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeParamet
 class NodeLoggingInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeLoggingInterface)
   rclcpp::Logger get_logger() const; const char* get_logger_name() const; };
 class NodeClockInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeClockInterface)
-  std::shared_ptr<rclcpp::Clock> get_clock(); };
+  std::shared_ptr<rclcpp::Clock> get_clock();
+  std::shared_ptr<const rclcpp::Clock> get_clock() const; };
 class NodeGraphInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeGraphInterface)
   std::map<std::string, std::vector<std::string>> get_topic_names_and_types(
       bool no_demangle = false) const;
@@ -839,6 +856,7 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   const std::string& get_effective_namespace() const; \
   rclcpp::Logger get_logger() const; \
   rclcpp::Clock::SharedPtr get_clock(); \
+  rclcpp::Clock::ConstSharedPtr get_clock() const; \
   rclcpp::Time now() const; \
   std::shared_ptr<NodeT> shared_from_this(); \
   rclcpp::CallbackGroup::SharedPtr create_callback_group(rclcpp::CallbackGroupType t, bool automatically_add = true); \

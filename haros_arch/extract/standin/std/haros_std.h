@@ -185,6 +185,16 @@ template<class T> complex<T> exp(const complex<T>& z);
 template<class T> complex<T> log(const complex<T>& z);
 template<class T> complex<T> sqrt(const complex<T>& z);
 template<class T> complex<T> pow(const complex<T>& z, const T& y);
+// <complex>'s imaginary literals (``using namespace std::complex_literals; exp(1i * a)``,
+// corgi's gait generators): without them clang reads ``1i`` as GNU's ``_Complex int``
+inline namespace literals { inline namespace complex_literals {
+complex<double> operator""i(long double d);
+complex<double> operator""i(unsigned long long d);
+complex<float> operator""if(long double d);
+complex<float> operator""if(unsigned long long d);
+complex<long double> operator""il(long double d);
+complex<long double> operator""il(unsigned long long d);
+} }
 // more of <type_traits>, on clang's builtins (robin_hood's hash map asks them of its
 // keys and values)
 template<class T> struct remove_volatile { typedef T type; };
@@ -2277,7 +2287,18 @@ public:
 };
 template<class M> class shared_lock {
 public:
+  shared_lock() noexcept;
   explicit shared_lock(M& m);
+  shared_lock(M& m, defer_lock_t t);
+  shared_lock(M& m, try_to_lock_t t);
+  shared_lock(M& m, adopt_lock_t t);
+  void lock();
+  void unlock();
+  bool try_lock();
+  bool owns_lock() const noexcept;
+  explicit operator bool() const noexcept;
+  M* mutex() const noexcept;
+  M* release() noexcept;
 };
 class condition_variable {
 public:
