@@ -348,9 +348,11 @@ CATALOGUE: dict[str, Entry] = {
         "given one (in a ROS 1 top-level file, or one it includes with pass_all_args, "
         "also an argument not declared at all: roslaunch takes every name:=value of "
         "its command line as an argument); what depends on it is kept with an unknown "
-        "part. A ROS 2 configuration not seen declared after an action the reader "
-        "could not see (a value not known among a launch description's entities, an "
-        "include not read) may be declared there: LAUNCH_UNKNOWN_VALUE, undecided."),
+        "part. It is said once per configuration, at the first use, the other uses "
+        "listed as its other places (also at). A ROS 2 configuration not seen "
+        "declared after an action the reader could not see (a value not known among "
+        "a launch description's entities, an include not read) may be declared there: "
+        "LAUNCH_UNKNOWN_VALUE, undecided."),
     "LAUNCH_CONDITION_UNSET": Entry(
         "warning", "a condition tests launch configuration {name}, which nothing "
         "declares or sets here: launch takes it as unequal to any value, so what "
