@@ -484,7 +484,7 @@ class CallFinder:
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
         # fixed-name calls already found
-        self._fixed: set[tuple[str, str, str | None, bool]] = set()
+        self._fixed: set[tuple[str, str, str | None, bool, str | None]] = set()
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
         # the place of a read whose value a typed accessor takes (rclcpp's
