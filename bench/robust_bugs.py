@@ -190,8 +190,9 @@ def pointing(findings: list[dict[str, Any]], expect: dict[str, Any], suffix: str
     for finding in findings:
         if finding.get("rule", finding.get("code")) not in rules:
             continue
-        files = [finding.get("location") or {}] + [a.get("location") or {}
-                                                   for a in finding.get("also", [])]
+        # ``also``: a finding's other places, a diagnostic's said once (an unset
+        # argument's other uses), each a location
+        files = [finding.get("location") or {}, *finding.get("also", [])]
         wanted = expect.get("file") or []
         wanted = [wanted] if isinstance(wanted, str) else wanted
         if wanted and not any(str(f.get("file", "")).endswith(tuple(wanted)) for f in files):

@@ -348,9 +348,11 @@ CATALOGUE: dict[str, Entry] = {
         "given one (in a ROS 1 top-level file, or one it includes with pass_all_args, "
         "also an argument not declared at all: roslaunch takes every name:=value of "
         "its command line as an argument); what depends on it is kept with an unknown "
-        "part. A ROS 2 configuration not seen declared after an action the reader "
-        "could not see (a value not known among a launch description's entities, an "
-        "include not read) may be declared there: LAUNCH_UNKNOWN_VALUE, undecided."),
+        "part. It is said once per configuration, at the first use, the other uses "
+        "listed as its other places (also at). A ROS 2 configuration not seen "
+        "declared after an action the reader could not see (a value not known among "
+        "a launch description's entities, an include not read) may be declared there: "
+        "LAUNCH_UNKNOWN_VALUE, undecided."),
     "LAUNCH_CONDITION_UNSET": Entry(
         "warning", "a condition tests launch configuration {name}, which nothing "
         "declares or sets here: launch takes it as unequal to any value, so what "
@@ -1132,18 +1134,23 @@ CATALOGUE: dict[str, Entry] = {
         "class's interface."),
     "NODELET_PROCESS_HANDLES": Entry(
         "info", "nodelet {nodelet} makes {count} call(s) on node handles its code "
-                "constructs: they are its manager {manager}'s, named in its namespace, "
-                "'~' its private namespace, with {remaps}",
+                "(or a tf listener given none) constructs: they are its manager "
+                "{manager}'s, named in its namespace, '~' its private namespace, with "
+                "{remaps}",
         "A ROS 1 nodelet loaded into a manager (nodelet load pkg/Name manager) gets its "
         "own handles from the nodelet API (getNodeHandle(), getPrivateNodeHandle() and "
         "their MT twins): in the nodelet's namespace, with the remaps it was loaded with. "
         "A handle its code constructs itself (ros::NodeHandle nh; NodeHandle pnh(\"~\")) "
         "is roscpp's handle of the process, the manager's node: its names resolve in the "
         "manager's namespace, '~' is the manager's private namespace, and the remaps that "
-        "apply are the manager's; the nodelet's <remap>s do not reach them. The graph "
-        "links those calls so (still as the nodelet's). Usually a bug of the nodelet "
-        "(laser_filters' scan_to_cloud_filter_chain, fixed upstream by passing "
-        "getNodeHandle()): use the nodelet's handles."),
+        "apply are the manager's; the nodelet's <remap>s do not reach them. So does "
+        "a tf2_ros::TransformListener(buffer) or tf::TransformListener() given no "
+        "handle: it subscribes /tf and /tf_static on a ros::NodeHandle() it makes (a "
+        "remap of /tf on the nodelet does not reach it; given getNodeHandle(), the "
+        "listener is the nodelet's). The graph links those calls so (still as the "
+        "nodelet's). Usually a bug of the nodelet (laser_filters' "
+        "scan_to_cloud_filter_chain, fixed upstream by passing getNodeHandle()): use "
+        "the nodelet's handles."),
     "NODE_NOT_READ": Entry(
         "warning", "node type {node} is {path}, a program this tool does not read (not a "
                    "built target nor a Python program); its interface is unknown",

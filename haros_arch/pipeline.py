@@ -19,6 +19,7 @@ from .distro_guess import guessed_distro, sole_distro
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
 from .files import content_digest, recording
 from .manifest import other_builds
+from .model.diagnostic import said_once
 from .model.location import Location
 from .model.model import Model
 from .model.serialise import to_data
@@ -516,4 +517,6 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
     # the values the configuration gives its launch arguments come from outside the
     # launch files, as the environment's do (a map folder given as ``map_path:=``)
     merged.environment_values.extend(v for v in spec.args.values() if isinstance(v, str))
+    # an argument left without a value: said once for the configuration, with its uses
+    merged.diagnostics = said_once(merged.diagnostics)
     return merged

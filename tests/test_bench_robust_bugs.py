@@ -96,3 +96,19 @@ def test_configuration_not_seen_declared_is_the_undecided_form_of_arg_unset(
     assert script.pointing(findings, expect) == []
     assert [f["location"]["line"] for f in script.pointing(findings, expect, "-undecided")] \
         == [186]
+
+
+def test_a_place_in_also_points_at_the_bug() -> None:
+    # an unset argument is said once per configuration, at its first use: a use in the
+    # file the bug names may be among its other places (``also``, locations as a
+    # finding's are); before, the also entries were read as {"location": ...} and never
+    # matched
+    script = _script()
+    said = {"code": "LAUNCH_ARG_UNSET", "severity": "warning",
+            "message": "launch argument custom_param_file has no value",
+            "location": {"file": "pkg/launch/main.launch", "line": 3},
+            "also": [{"file": "pkg/launch/includes/move_base.launch.xml", "line": 24}]}
+    expect = {"rules": ["LAUNCH_ARG_UNSET"], "file": "move_base.launch.xml",
+              "text": ["custom_param_file"]}
+    assert script.pointing([said], expect) == [said]
+    assert script.pointing([{**said, "also": []}], expect) == []

@@ -1,7 +1,7 @@
 """``haros-arch check``'s text lists a diagnostic said again in one file with the same
 message once, at its first place, with the others as ``also at`` (subt's launch files use
 an argument no one sets hundreds of times: a thousand lines of one warning); ``-v``
-lists every one, and the JSON keeps every one."""
+lists every place, and the JSON keeps every one."""
 
 from __future__ import annotations
 
@@ -57,11 +57,18 @@ def test_many_places_are_cut_short(write_tree) -> None:
     assert also.endswith("and 3 more")
 
 
-def test_verbose_lists_each_and_the_json_keeps_each(write_tree) -> None:
-    root = _tree(write_tree, 3)
-    assert len([line for line in _text(root, "-v") if "[LAUNCH_ARG_UNSET]" in line]) == 3
+def test_verbose_lists_every_place_and_the_json_keeps_each(write_tree) -> None:
+    """One argument's uses are one diagnostic of the configuration (its ``also``:
+    test_launch_arg_unset_once.py): ``-v`` lists all its places, the JSON keeps them."""
+    root = _tree(write_tree, 12)
+    lines = _text(root, "-v")
+    said = [n for n, line in enumerate(lines) if "[LAUNCH_ARG_UNSET]" in line]
+    assert len(said) == 1
+    assert lines[said[0] + 1].strip() == "also at: " + ", ".join(
+        f"{line}:0" for line in range(4, 15))
     out = root / "check.json"
     main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
           "--fail-on", "never"])
     report = json.loads(out.read_text())
-    assert len([d for d in report["diagnostics"] if d["code"] == "LAUNCH_ARG_UNSET"]) == 3
+    (unset,) = [d for d in report["diagnostics"] if d["code"] == "LAUNCH_ARG_UNSET"]
+    assert [where["line"] for where in unset["also"]] == list(range(4, 15))

@@ -263,7 +263,8 @@ def test_findings_by_rule_incomplete_nodes_and_diagnostics_per_configuration(
                            config("real", "demo/launch/real.launch")],
         "diagnostics": [
             {"code": "LAUNCH_X", "severity": "warning", "message": "in sim only",
-             "location": where("demo/launch/sim.launch", 3)},
+             "location": where("demo/launch/sim.launch", 3),
+             "also": [where("demo/launch/sim.launch", 7)]},
             {"code": "CPP_X", "severity": "info", "message": "in the slam source",
              "location": where("demo/src/slam.cpp", 2)}]}
     findings = [Finding("queue-size-one", "info", "Queue size 1", f"link {i}", "sim",
@@ -290,6 +291,10 @@ def test_findings_by_rule_incomplete_nodes_and_diagnostics_per_configuration(
     # diagnostics of this configuration's files only
     text = page.inner_text("#diagnostics")
     assert "in sim only" in text and "in the slam source" in text
+    # a diagnostic said once for several places (an unset argument's uses) lists them
+    page.click('#diagnostics .item.diagnostic[data-code="LAUNCH_X"]')
+    panel = page.inner_text("#panel")
+    assert "the same problem at (1)" in panel.lower() and "sim.launch:7" in panel
     page.select_option("#config", label="real")
     text = page.inner_text("#diagnostics")
     assert "in sim only" not in text and "in the slam source" in text

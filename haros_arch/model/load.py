@@ -124,8 +124,11 @@ def _elements(data: Any) -> tuple[tuple[str, str, str], ...] | None:
 
 
 def diagnostic_from_data(data: dict[str, Any]) -> Diagnostic:
+    also = data.get("also")
     return Diagnostic(str(data.get("code", "")), data.get("severity", "warning"),
-                      str(data.get("message", "")), location(data.get("location")))
+                      str(data.get("message", "")), location(data.get("location")),
+                      tuple(location(where) for where in also)
+                      if isinstance(also, list) else ())
 
 
 def _program_arg(value: Any) -> int | None:

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from itertools import chain
 
 from .diagnostic import Diagnostic
+from .location import Location
 from .runtime import Configuration
 from .source import Node, Package
 
@@ -37,8 +39,13 @@ class Model:
 
     @property
     def all_diagnostics(self) -> list[Diagnostic]:
-        """Every diagnostic once (configurations that share launch files repeat them)."""
-        found = dict.fromkeys(self.diagnostics)
-        for config in self.configurations:
-            found.update(dict.fromkeys(config.diagnostics))
-        return list(found)
+        """Every diagnostic once (configurations that share launch files repeat them);
+        one said at the same place by several configurations, each with other places
+        (``also``: an unset argument's other uses), once with all of them."""
+        found: dict[tuple[str, str, str, Location], Diagnostic] = {}
+        for item in chain(self.diagnostics, *(c.diagnostics for c in self.configurations)):
+            key = (item.code, item.severity, item.message, item.location)
+            had = found.setdefault(key, item)
+            if had is not item and item.also and item.also != had.also:
+                found[key] = replace(had, also=tuple(dict.fromkeys((*had.also, *item.also))))
+        return list(found.values())

@@ -24,7 +24,8 @@ def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
             f"\ninvolves: {', '.join(f.entities)}" if f.entities else "") + (
             f"\nalso at: {', '.join(map(str, f.also))}" if f.also else "")))
     for d in diagnostics:
-        cases.setdefault(d.code, []).append((str(d.location), d.severity, d.code, d.message))
+        cases.setdefault(d.code, []).append((str(d.location), d.severity, d.code, d.message + (
+            f"\nalso at: {', '.join(map(str, d.also))}" if d.also else "")))
     root = ET.Element("testsuites", name="haros-arch")
     total = failures = 0
     for rule, items in sorted(cases.items()):

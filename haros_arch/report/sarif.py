@@ -55,11 +55,7 @@ def to_sarif(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
         }
         if finding.location.file:
             result["locations"] = [_location(finding.location)]
-        related = [_location(where, "the same problem") for where in finding.also
-                   if where.file]
-        if related:
-            result["relatedLocations"] = [{"id": i + 1, **place}
-                                          for i, place in enumerate(related)]
+        _related(result, finding.also)
         rules.setdefault(finding.rule, (finding.title, ""))
         results.append(result)
     for diagnostic in diagnostics:
@@ -67,6 +63,7 @@ def to_sarif(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
                   "message": {"text": diagnostic.message}}
         if diagnostic.location.file:
             result["locations"] = [_location(diagnostic.location)]
+        _related(result, diagnostic.also)
         rules.setdefault(diagnostic.code, (diagnostic.code, ""))
         results.append(result)
     run: dict[str, Any] = {
@@ -81,6 +78,14 @@ def to_sarif(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
     if workspace:
         run["originalUriBaseIds"] = {ROOT: {"uri": Path(workspace).resolve().as_uri() + "/"}}
     return {"$schema": SCHEMA, "version": "2.1.0", "runs": [run]}
+
+
+def _related(result: dict[str, Any], also: tuple[Location, ...]) -> None:
+    """The other places of a result's problem (``also``), as its related locations."""
+    related = [_location(where, "the same problem") for where in also if where.file]
+    if related:
+        result["relatedLocations"] = [{"id": i + 1, **place}
+                                      for i, place in enumerate(related)]
 
 
 def dumps(*args: Any, **kwargs: Any) -> str:

@@ -8,6 +8,7 @@ from collections.abc import Iterable
 from rich.console import Console
 
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
+from ..model.location import Location
 from ..model.model import Model
 from ..model.runtime import LAUNCH_WRITER, Configuration, NodeInstance, Parameter, Resource
 from ..query.absence import unread_launch
@@ -22,8 +23,10 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
     there can be hundreds on a real workspace) are not listed one by one but counted per
     code at the end, with the first place each code was seen; and a diagnostic said
     again in the same file with the same message (an unset argument at each of its
-    uses: subt's launch files, a thousand times) is listed once, at its first place,
-    with the others as ``also at``.
+    uses in one file) is listed once, at its first place, with the others as ``also
+    at``. A diagnostic said once for several places (``Diagnostic.also``: an unset
+    argument, once per configuration) lists them as ``also at`` too, all of them with
+    ``verbose``.
     """
     items = list(diagnostics)
     shown = items if verbose else [d for d in items if d.severity != "info"]
@@ -46,7 +49,11 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
             console.print(f"  {escape(where)}: [{colour}]{item.severity}[/{colour}]: "
                           f"{escape(item.message)} [dim]\\[{item.code}][/dim]",
                           highlight=False)
-            others = _places(group[1:], exclude=item) if not verbose else ""
+            # its own other places (an unset argument's other uses), and without
+            # ``verbose`` those of the same said again in this file
+            others = _places([*item.also] if verbose else [
+                place for d in group for place in (d.location, *d.also)],
+                exclude=item, limit=None if verbose else ALSO_AT_LISTED)
             if others:
                 console.print(f"      [dim]also at: {escape(others)}[/dim]", highlight=False)
     if not verbose:
@@ -56,15 +63,17 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
 ALSO_AT_LISTED = 8  # places of a repeated diagnostic listed before "and N more"
 
 
-def _places(items: list[Diagnostic], exclude: Diagnostic) -> str:
-    """``line:col`` of each (distinct, in order, not ``exclude``'s own), the first few,
-    then how many more; empty when none is left."""
-    own = f"{exclude.location.line}:{exclude.location.column}"
-    places = [place for place in dict.fromkeys(
-        f"{d.location.line}:{d.location.column}" for d in items) if place != own]
-    text = ", ".join(places[:ALSO_AT_LISTED])
-    if len(places) > ALSO_AT_LISTED:
-        text += f" and {len(places) - ALSO_AT_LISTED} more"
+def _places(places: list[Location], exclude: Diagnostic, limit: int | None) -> str:
+    """``line:col`` of each place (``file:line:col`` in another file than ``exclude``'s;
+    distinct, in order, not ``exclude``'s own), the first ``limit``, then how many more;
+    empty when none is left."""
+    file = exclude.location.file
+    texts = [f"{'' if where.file == file else f'{where.file}:'}{where.line}:{where.column}"
+             for where in dict.fromkeys(places) if where != exclude.location]
+    texts = list(dict.fromkeys(texts))
+    text = ", ".join(texts[:limit])
+    if limit is not None and len(texts) > limit:
+        text += f" and {len(texts) - limit} more"
     return text
 
 

@@ -176,7 +176,9 @@ class RosFunction:
     # ``TransformListener(buffer)``, ``(buffer, spin_thread)``), the library makes a node
     # of its own with default options, which takes the process's global arguments only:
     # the call is that node's (``PrimitiveCall.handle_origin`` ``process``), not the node
-    # of the code around it
+    # of the code around it. ROS 1 (tf2_ros' and tf's listeners): given no handle, the
+    # object subscribes on a ``ros::NodeHandle()`` it makes, roscpp's of the process (a
+    # nodelet's manager's: ``handle_origin`` ``process``); given one, on that handle
     own_node: bool = False
 
 
@@ -381,7 +383,8 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
     ("tf2_ros::StaticTransformBroadcaster", "StaticTransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf_static", fixed_type=_TF, on_handle=False, latched=True),
-    # ROS 2: without a node argument, on a node of its own (``own_node``)
+    # without a node argument, on a node of its own (``own_node``; ROS 1: on a handle
+    # it makes, the process's node's)
     ("tf2_ros::TransformListener", "TransformListener"): RosFunction(
         "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False, own_node=True,
         siblings=(("subscribe", "/tf_static", _TF),)),
@@ -441,8 +444,9 @@ LIBRARIES: dict[tuple[str, str], RosFunction] = {
                   ("read", "print_warnings", "bool"))),
     ("tf::TransformBroadcaster", "TransformBroadcaster"): RosFunction(
         "publish", fixed_name="/tf", fixed_type=_TF, on_handle=False),
+    # on the handle given, else on one it makes (``own_node``: ROS 1's process's node)
     ("tf::TransformListener", "TransformListener"): RosFunction(
-        "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False,
+        "subscribe", fixed_name="/tf", fixed_type=_TF, on_handle=False, own_node=True,
         siblings=(("subscribe", "/tf_static", _TF),)),
     # both read tf_prefix with searchParam on a NodeHandle("~") (tf/transform_listener.h)
     ("tf::TransformListener", "resolve"): RosFunction(

@@ -290,6 +290,7 @@ def from_data(data: dict[str, Any]) -> tuple[
         made_under.append((made, _conditions(under)))
     # the severity comes from today's catalogue, not from when the entry was written
     diagnostics = [Diagnostic(**{**d, "location": Location(**d["location"]),
+                                 "also": tuple(Location(**w) for w in d.get("also", ())),
                                  "severity": _severity(d["code"], d["severity"])})
                    for d in data["diagnostics"]]
     rosname = data["rosname"]

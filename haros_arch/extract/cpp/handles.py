@@ -300,7 +300,7 @@ class Namespaces:
             # a handle the code constructs from nothing or a namespace: roscpp's, of the
             # process (a child of another handle, or a copy, is where its parent is);
             # with remappings the code gives (``NodeHandle(ns, remappings)``), its own
-            self._origins.add(PROCESS if len(args) < 2 and not _in_main(scope)
+            self._origins.add(PROCESS if len(args) < 2 and not in_main(scope)
                               else _ORIGIN_UNSEEN)
         if not args:
             return ("",)
@@ -546,7 +546,7 @@ class Namespaces:
         return (normalise(join_name(render(parent), child)),)
 
 
-def _in_main(scope: Scope) -> bool:
+def in_main(scope: Scope) -> bool:
     """Whether ``scope`` is a program's ``main()``: no nodelet runs it, so a handle made
     there says nothing of a nodelet's handles, when a source compiled both as a program
     and as a nodelet library is read as the program (laser_filters'

@@ -70,6 +70,7 @@ from .handles import (
     callback,
     callback_name,
     holds_handle,
+    in_main,
     is_handle,
     is_ros2_node,
     join_name,
@@ -483,7 +484,7 @@ class CallFinder:
         self.types = CallTypes(ros2)
         self.namespaces = Namespaces(self.macros, source)
         # fixed-name calls already found
-        self._fixed: set[tuple[str, str, str | None, bool]] = set()
+        self._fixed: set[tuple[str, str, str | None, bool, str | None]] = set()
         # ROS 2 parameter -> its declared default, and the parameter it holds (``Source``)
         self._declared: dict[str, tuple[str, str | None]] = {}
         # the place of a read whose value a typed accessor takes (rclcpp's
@@ -2412,6 +2413,10 @@ class CallFinder:
         own_node = self.ros2 and spec.own_node and all(
             not is_handle(a) and a.type.get_canonical().kind == TypeKind.BOOL
             for a in args[1:])
+        # ROS 1: the same library objects (tf2_ros' and tf's listeners) given no handle
+        # subscribe on a ``ros::NodeHandle()`` they make, roscpp's of the process (a
+        # nodelet's manager's); given one, on that handle, as it was made (``origin``)
+        library_handle = not self.ros2 and spec.own_node
         names: list[tuple[str, NameSource | None]]
         namespace: str | None = None
         elsewhere: list[str] = []  # members read for the name that other files set
@@ -2430,10 +2435,18 @@ class CallFinder:
                     unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
                     origin = self.namespaces.origin
                     unknown_parts = list(self.namespaces.unknown_parts)
+            elif library_handle:
+                handle = next((a for a in args if is_handle(a)), None)
+                if handle is None:
+                    origin = None if in_main(scope) else PROCESS_HANDLE
+                else:
+                    self.namespaces.of(handle, scope)
+                    origin = self.namespaces.origin
             # once per node (and handle): per owner when the file names several nodes,
-            # apart on a node the library makes (``own_node``)
+            # apart on a node the library makes (``own_node``, ROS 1's ``origin``)
             once = self._owner if self._owner in dict(self.node_names) else ""
-            key = (spec.kind, join_name(namespace or "", spec.fixed_name), once, own_node)
+            key = (spec.kind, join_name(namespace or "", spec.fixed_name), once, own_node,
+                   origin if library_handle else None)
             if key in self._fixed:
                 return
             self._fixed.add(key)
@@ -2716,7 +2729,8 @@ class CallFinder:
                     handle_namespace=sibling_namespace, node_name=owner,
                     root_handle=root and on_handle and not full.startswith(("/", "~")),
                     handle_origin=PROCESS_HANDLE if own_node else (
-                        origin if on_handle and not self.ros2 else None),
+                        origin if (on_handle or library_handle) and not self.ros2
+                        else None),
                     made_in=self._made_in(full, sibling_namespace),
                     camera_of=name if camera else None))
                 if held is not None and namespace and sibling_namespace == namespace and (

@@ -16,6 +16,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from ... import diagnostics as diag
+from ... import safe_yaml
 from ...diagnostics import Diagnostic
 from ...manifest import ros_version
 from ...model.conditions import Condition
@@ -154,6 +155,21 @@ def _fitted(unknown: str, names: list[str]) -> bool:
     return any(pattern.fullmatch(name) for name in names)
 
 
+PIP_LIBRARIES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pip_libraries.yaml")
+
+
+def _pip_libraries() -> frozenset[str]:
+    """The import names of the Python libraries rosdep installs from PyPI, less released
+    ROS packages' names and libraries that talk to ROS (``pip_libraries.yaml``, written
+    by bench/pip_libraries.py from a pinned rosdistro commit): a package.xml that names
+    one (``<depend>dt_apriltags</depend>``, whose rosdep key is
+    ``python-dt-apriltags-pip``) depends on a Python library, not on a ROS package whose
+    code is not read."""
+    with open(PIP_LIBRARIES, encoding="utf-8") as handle:
+        data = safe_yaml.load(handle.read())
+    return frozenset(str(name) for name in data["libraries"])
+
+
 # ROS packages whose Python code makes no ROS call of its own (math, conversions, file
 # formats, tools) or whose classes the API tables model (rospy, rclpy, actionlib, tf,
 # tf2_ros, message_filters): building one of their classes hides nothing
@@ -190,7 +206,7 @@ NOT_CLIENTS = frozenset({
     # neural network runtimes (ros2-rover's tractor_bringup depends on ``rknn``, Rockchip's
     # NPU toolkit, and builds ``rknn.api.RKNN``): inference makes no ROS call
     "rknn", "rknnlite", "onnxruntime", "tensorflow", "tflite_runtime",
-})
+}) | _pip_libraries()
 
 
 def _unseen_packages(workspace: Workspace, package: str | None,

@@ -182,7 +182,10 @@ function diagnosticItem(d, app) {
   return el('div', {class: 'item diagnostic', 'data-code': d.code, onclick: () => app.showPanel([
     el('div', {class: 'panel-kind'}, 'diagnostic'), el('h2', {class: 'panel-title'}, d.code),
     field('severity', severityBadge(d.severity)), el('p', {class: 'message'}, d.message),
-    codeBlock(d.location, app.sources)])},
+    codeBlock(d.location, app.sources),
+    // said once for several places (an unset launch argument's other uses)
+    ...((d.also || []).length ? [el('h4', {}, `The same problem at (${d.also.length})`),
+      ...d.also.map(loc => codeBlock(loc, app.sources, 1))] : [])])},
   severityBadge(d.severity), el('span', {class: 'item-title'}, d.message), el('span', {class: 'item-sub'}, where(d.location)));
 }
 

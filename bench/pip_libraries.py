@@ -1,0 +1,89 @@
+"""Write ``haros_arch/extract/python/pip_libraries.yaml``: the import names of the Python
+libraries that rosdep installs from PyPI, less the names of released ROS packages.
+
+    python bench/pip_libraries.py ROSDISTRO_GIT_DIR COMMIT \
+        > haros_arch/extract/python/pip_libraries.yaml
+
+ROSDISTRO_GIT_DIR is a clone (or bare mirror) of github:ros/rosdistro. Each ``pip:`` rule
+of ``rosdep/python.yaml`` names PyPI distributions; a package.xml often names such a
+library by its import name instead of its rosdep key (``<depend>dt_apriltags</depend>``,
+the key being ``python-dt-apriltags-pip``). The import name is taken as the
+distribution's name normalised as pip and Python do (``-`` and ``.`` to ``_``, lower
+case, extras and version pins dropped). A name that some distribution of the same
+commit releases as a ROS package (``depthai``, ``canopen``) is left out: that name may
+be the ROS package's.
+"""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from typing import Any
+
+import yaml
+
+# Python libraries of the rules that talk to ROS themselves, left out (a node that builds
+# one of their classes may communicate through it): roslibpy (topics and services through
+# rosbridge), jupyros (rospy publishers and subscribers behind notebook widgets), Isaac
+# Sim's ROS bridges, pyros_setup (sets up a ROS environment for a program)
+TALK_TO_ROS = frozenset({"roslibpy", "jupyros", "isaacsim_ros1", "isaacsim_ros2",
+                         "pyros_setup"})
+# the distributions whose released packages are left out (ROS 1 and ROS 2, old and new)
+DISTROS = ("indigo", "kinetic", "lunar", "melodic", "noetic", "dashing", "eloquent",
+           "foxy", "galactic", "humble", "iron", "jazzy", "kilted", "rolling")
+
+
+def _show(git_dir: str, commit: str, path: str) -> str:
+    done = subprocess.run(["git", "--git-dir", git_dir, "show", f"{commit}:{path}"],
+                          capture_output=True, text=True, check=False)
+    return done.stdout
+
+
+def _pip_names(rules: Any) -> set[str]:
+    """Every PyPI distribution named under a ``pip`` key, at any depth."""
+    found: set[str] = set()
+    if isinstance(rules, dict):
+        for key, value in rules.items():
+            if key == "pip":
+                items = value.get("packages", []) if isinstance(value, dict) else value
+                found.update(str(item) for item in items or ())
+            else:
+                found |= _pip_names(value)
+    elif isinstance(rules, list):
+        for value in rules:
+            found |= _pip_names(value)
+    return found
+
+
+def _import_name(distribution: str) -> str:
+    bare = re.split(r"[\[<>=!~; ]", distribution.strip(), maxsplit=1)[0]
+    return re.sub(r"[-.]+", "_", bare).lower()
+
+
+def main(git_dir: str, commit: str) -> None:
+    rules = yaml.safe_load(_show(git_dir, commit, "rosdep/python.yaml"))
+    names = {_import_name(name) for name in _pip_names(rules)} - {""}
+    released: set[str] = set()
+    for distro in DISTROS:
+        data = yaml.safe_load(_show(git_dir, commit, f"{distro}/distribution.yaml") or "{}")
+        for repository, entry in (data.get("repositories") or {}).items():
+            released.add(repository)
+            release = entry.get("release") or {}
+            released.update(release.get("packages") or ())
+    kept = sorted(names - released - TALK_TO_ROS)
+    print("# The import names of the Python libraries rosdep installs from PyPI (every pip")
+    print("# rule of rosdep/python.yaml of github:ros/rosdistro at commit")
+    print(f"# {commit}, each distribution's name normalised: '-' and '.' to")
+    print("# '_', lower case), less the names of the ROS packages the distributions of the")
+    print("# same commit release (DISTROS), and of those that talk to ROS themselves")
+    print("# (roslibpy, jupyros, ...: TALK_TO_ROS). Written by")
+    print("# bench/pip_libraries.py; read by haros_arch/extract/python (NOT_CLIENTS): a")
+    print("# package.xml dependency of one of these names, not in the workspace, is a Python")
+    print("# library, not a ROS package whose code is not read.")
+    print(yaml.safe_dump({"libraries": kept}, default_flow_style=False, sort_keys=False),
+          end="")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
