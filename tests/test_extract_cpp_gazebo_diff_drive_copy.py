@@ -3,7 +3,9 @@ installed header (HusqvarnaResearch/hrp's am_gazebo_controller_2wd compiles its 
 gazebo_ros_diff_drive.cpp with ``#include <gazebo_plugins/gazebo_ros_diff_drive.h>``).
 gazebo_plugins is not in the workspace and the header had no fallback stand-in: every
 out-of-line definition of the class was an error and its ROS calls were missed
-(``CPP_CALL_MISSED``). glibc's ``isnanf``, which the copy tests, was undeclared too."""
+(``CPP_CALL_MISSED``). glibc's ``isnanf``, which the copy tests, was undeclared too. Its
+members' Gazebo types are declared there (a model, a joint: classes the parse then
+defines permissively where the code uses them complete, in Gazebo's namespaces)."""
 
 from __future__ import annotations
 
@@ -27,6 +29,10 @@ void GazeboRosDiffDrive::Load(physics::ModelPtr _parent, sdf::ElementPtr _sdf)
   this->parent = _parent;
   gazebo_ros_ = GazeboRosPtr(new GazeboRos(_parent, _sdf, "DiffDrive"));
   gazebo_ros_->isInitialized();
+  joints_.resize(2);
+  joints_[0] = gazebo_ros_->getJoint(parent, "leftJoint", "left_joint");
+  joints_[0]->SetParam("max_force", 0, wheel_torque);
+  last_update_time_ = parent->GetWorld()->SimTime();
   gazebo_ros_->getParameter<std::string>(command_topic_, "commandTopic", "cmd_vel");
   gazebo_ros_->getParameter<std::string>(odometry_topic_, "odometryTopic", "odom");
   gazebo_ros_->getParameterBoolean(publishWheelJointState_, "publishWheelJointState", false);
@@ -64,7 +70,12 @@ void GazeboRosDiffDrive::QueueThread()
   while (alive_ && gazebo_ros_->node()->ok()) { queue_.callAvailable(ros::WallDuration(0.01)); }
 }
 
-void GazeboRosDiffDrive::UpdateChild() { UpdateOdometryEncoder(); }
+void GazeboRosDiffDrive::UpdateChild()
+{
+  common::Time current_time = parent->GetWorld()->SimTime();
+  if ((current_time - last_update_time_).Double() > update_period_) { UpdateOdometryEncoder(); }
+  last_update_time_ += common::Time(update_period_);
+}
 void GazeboRosDiffDrive::FiniChild() { alive_ = false; queue_.clear(); queue_.disable(); }
 
 GZ_REGISTER_MODEL_PLUGIN(GazeboRosDiffDrive)

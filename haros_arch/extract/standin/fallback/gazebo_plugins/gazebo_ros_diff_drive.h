@@ -33,6 +33,49 @@ namespace gazebo
 class Joint;
 class Entity;
 
+// the Gazebo types the class's members are declared with, as Gazebo 7 to 11 declare
+// them (gazebo/physics/PhysicsTypes.hh, common/CommonTypes.hh, common/Time.hh): boost
+// pointers to classes declared here and left to the parse, which defines a class used
+// complete permissively (a copy's ``parent->GetWorld()``); the simulation time its
+// members hold is written out
+namespace physics
+{
+class Model;
+class Joint;
+typedef boost::shared_ptr<Model> ModelPtr;
+typedef boost::shared_ptr<Joint> JointPtr;
+}  // namespace physics
+namespace event
+{
+class Connection;
+typedef boost::shared_ptr<Connection> ConnectionPtr;
+}  // namespace event
+namespace common
+{
+class Time
+{
+public:
+  Time();
+  Time(double _time);
+  Time(int _sec, int _nsec);
+  static const Time &GetWallTime();
+  double Double() const;
+  float Float() const;
+  Time operator+(const Time &_time) const;
+  Time operator-(const Time &_time) const;
+  Time &operator+=(const Time &_time);
+  Time &operator-=(const Time &_time);
+  bool operator==(const Time &_time) const;
+  bool operator!=(const Time &_time) const;
+  bool operator<(const Time &_time) const;
+  bool operator<=(const Time &_time) const;
+  bool operator>(const Time &_time) const;
+  bool operator>=(const Time &_time) const;
+  int sec;
+  int nsec;
+};
+}  // namespace common
+
 class GazeboRosDiffDrive : public ModelPlugin
 {
   enum OdomSource
