@@ -126,6 +126,7 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
             node.rosname = _rosname(node, result.rosname)
             _process_nodes(node, result.rosnames)
             node.handles_given = dict(result.handles_given)
+            node.local_rules = _local_rules(node, result.local_rules)
             clear_where_declared(node, workspace)
         if cpp_batch is not None:
             cpp_batch.extend(batch)
@@ -167,7 +168,7 @@ def other_key(node: Node) -> str:
 
 # the node fields extraction sets (``extract_node``, ``completeness``)
 _RESULT_FIELDS = ("calls", "rosname", "rosnames", "completeness", "completeness_reasons",
-                  "plugin_loads", "nodelets", "handles_given")
+                  "plugin_loads", "nodelets", "handles_given", "local_rules")
 
 
 def _result_data(node: Node, said: list[Diagnostic]) -> dict[str, Any]:
@@ -400,6 +401,17 @@ def _process_nodes(node: Node, rosnames: list[str]) -> None:
         node.calls = [replace(c, node_name=None) if c.node_name else c for c in node.calls]
 
 
+def _local_rules(node: Node, found: list[tuple[str, str]]) -> dict[str, list[str]]:
+    """``Node.local_rules`` of the nodes the executable makes (``rosname``,
+    ``rosnames``): a component's class is one node, its own."""
+    names = {node.rosname, *node.rosnames}
+    rules: dict[str, list[str]] = {}
+    for name, rule in found:
+        if name in names and rule not in rules.get(name, []):
+            rules.setdefault(name, []).append(rule)
+    return rules
+
+
 def _paths(node: Node, workspace: Workspace) -> list[str]:
     return [s if os.path.isabs(s) else os.path.join(workspace.root, s) for s in node.sources]
 
@@ -423,6 +435,7 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         node.rosname = _rosname(node, result.rosname)
         _process_nodes(node, result.rosnames)
         node.handles_given = dict(result.handles_given)
+        node.local_rules = _local_rules(node, result.local_rules)
         clear_where_declared(node, workspace)
         said = _read_elsewhere(result.diagnostics, [node], [result], workspace)
         return [*said, *completeness(node, result.diagnostics, workspace)]

@@ -24,7 +24,7 @@ process reads it.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import replace
 
 from .. import diagnostics as diag
@@ -60,14 +60,16 @@ def process_nodes(decls: Sequence[NodeDecl], nodes: Mapping[str, Node]
         if not owns:
             yield decl, None
             continue
-        guessed = code_node(decl, nodes) is None  # named after its executable
+        node = code_node(decl, nodes)
+        guessed = node is None  # named after its executable
         for own in owns:
-            name = _renamed(decl, own)
+            local = _local(node, own)
+            name = _renamed(decl, own, local)
             if name == decl.name:
                 yield decl, own
                 continue
             named = replace(decl, name=name, name_guessed=guessed)
-            if _code_namespace(decl, own):
+            if _code_namespace(decl, own) or "__ns" in local:
                 # the namespace the code gives holds where the launch gives none
                 # (jetbot_ros' ``Node('nav_model', namespace='jetbot')``): the node's
                 # relative names resolve in it, as its own name does
@@ -86,7 +88,8 @@ def process_params(launch: LaunchModel, nodes: Mapping[str, Node]) -> list[Param
     to none."""
     by_owner: dict[int, list[str]] = {}
     for index, decl in enumerate(launch.nodes):
-        names = [_renamed(decl, own) for own in _own_names(decl, nodes)]
+        node = code_node(decl, nodes)
+        names = [_renamed(decl, own, _local(node, own)) for own in _own_names(decl, nodes)]
         if names and names[0] != decl.name:
             by_owner[index] = names
     params: list[ParamDecl] = []
@@ -155,8 +158,10 @@ def _own_names(decl: NodeDecl, nodes: Mapping[str, Node]) -> list[str]:
     if _unnamed(decl) and node.rosname and node.rosname.rsplit("/", 1)[-1].strip(
             UNKNOWN_MARK):
         return [node.rosname]
-    if not _unnamed(decl) and node.rosname and _code_namespace(decl, node.rosname):
-        # named by the launch, in the namespace its code gives (``__node:=`` alone)
+    if not _unnamed(decl) and node.rosname and (
+            _code_namespace(decl, node.rosname) or _local(node, node.rosname)):
+        # named by the launch, in the namespace its code gives (``__node:=`` alone), or
+        # named or placed by its own arguments
         return [node.rosname]
     return []
 
@@ -179,13 +184,29 @@ def _apart(decl: NodeDecl, node: Node) -> bool:
     return node.unplaced and not decl.name_given
 
 
-def _renamed(decl: NodeDecl, own: str) -> str:
+def _local(node: Node | None, own: str | None) -> set[str]:
+    """What the node ``own``'s own arguments set (``Node.local_rules``): ``__ns``,
+    ``__node``."""
+    if node is None or own is None:
+        return set()
+    return {rule.partition(":=")[0] for rule in node.local_rules.get(own, ())}
+
+
+def _renamed(decl: NodeDecl, own: str, local: Collection[str] = ()) -> str:
     """A node of the process: the launch name when one is given, else its own name.
 
     The code may give a namespace too (``rclcpp::Node("talker", "ns")``): it holds
     unless the launch file gives one (``namespace=``, ``PushRosNamespace``), which
-    replaces it, as ``__ns:=`` does."""
+    replaces it, as ``__ns:=`` does. A namespace or name its own arguments set
+    (``local``: ``__ns``, ``__node``, ``Node.local_rules``) holds whatever the launch
+    gives, as rcl reads a node's own rules first."""
     unnamed = _unnamed(decl)
+    if local:
+        name = own.rsplit("/", 1)[-1] if unnamed or "__node" in local else (
+            decl.name.rsplit("/", 1)[-1])
+        if "__ns" in local or _code_namespace(decl, own):
+            return namespace_of(own) + name
+        return decl.namespace.rstrip("/") + "/" + name
     if _code_namespace(decl, own):  # the code's namespace holds: its name, or the launch's
         return own if unnamed else namespace_of(own) + decl.name.rsplit("/", 1)[-1]
     if not unnamed:

@@ -234,11 +234,13 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                               if isinstance(a, str)],
                 nodelets=[str(a) for a in data.get("nodelets", ()) or ()
                           if isinstance(a, str)],
-                handles_given=_handles_given(data.get("handles_given")))
+                handles_given=_handles_given(data.get("handles_given")),
+                local_rules=_handles_given(data.get("local_rules")))
 
 
 def _handles_given(value: Any) -> dict[str, list[str]]:
-    """A saved node's ``handles_given``; anything else than text lists is none."""
+    """A saved node's ``handles_given`` (or ``local_rules``); anything else than text
+    lists is none."""
     if not isinstance(value, dict):
         return {}
     return {str(key): [str(v) for v in values if isinstance(v, str)]

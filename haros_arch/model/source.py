@@ -532,6 +532,13 @@ class Node:
     # call made on such a parameter (``PrimitiveCall.host_handle``) is made there
     handles_given: dict[str, list[str]] = field(default_factory=dict,
                                                 metadata={"optional": True})
+    # ROS 2: the ``__ns`` / ``__node`` rules (``__ns:=/x``) of the node's own arguments,
+    # by its name (``rosname`` or one of ``rosnames``, which they are already applied
+    # to): the ``NodeOptions().arguments({"--ros-args", "-r", "__ns:=/x"})`` its code
+    # builds it with. rcl reads a node's own rules before the process's, so the
+    # namespace or name they set holds whatever the launch file gives (``graph``)
+    local_rules: dict[str, list[str]] = field(default_factory=dict,
+                                              metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

@@ -290,6 +290,10 @@ class CppResult:
     node_handed: list[tuple[str, str]] = field(default_factory=list)
     # in a node's result: ``Node.handles_given`` (``links.handles_given``)
     handles_given: dict[str, list[str]] = field(default_factory=dict)
+    # (node name, rule) for each ``__ns`` / ``__node`` rule of a node's own arguments
+    # (``CallFinder.local_rules``); in a node's result with the names filled
+    # (``Node.local_rules``)
+    local_rules: list[tuple[str, str]] = field(default_factory=list)
 
 
 @dataclass
@@ -716,6 +720,9 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
     result.calls = _members_named(result.calls)
     result.diagnostics = list(dict.fromkeys(result.diagnostics))
     _name_nodes(result, ordered, known, unseen, given, entry, (reaching, loaded), loadable)
+    result.local_rules = list(dict.fromkeys(
+        (links.resolve_name(name, known, unseen), rule)
+        for unit in units for name, rule in unit.local_rules))
     result.calls = declared_defaults(result.calls)
     return result
 
@@ -1476,6 +1483,8 @@ def _result_data(result: CppResult) -> dict[str, Any]:
         data["rosnames"] = list(result.rosnames)
     if result.handles_given:  # a node's
         data["handles_given"] = {k: list(v) for k, v in result.handles_given.items()}
+    if result.local_rules:
+        data["local_rules"] = [list(pair) for pair in result.local_rules]
     return data
 
 
@@ -1497,6 +1506,12 @@ def _result_from_data(data: dict[str, Any]) -> CppResult | None:
             isinstance(v, list) and all(isinstance(x, str) for x in v) for v in given.values()):
         return None
     result.handles_given = {str(k): list(v) for k, v in given.items()}
+    rules = data.get("local_rules", [])
+    if not isinstance(rules, list) or not all(
+            isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)
+            for pair in rules):
+        return None
+    result.local_rules = [(name, rule) for name, rule in rules]
     return result
 
 
@@ -1857,6 +1872,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
         not finder.rosname_unbuilt) else links.UNBUILT_NAMES.join(finder.rosname_unbuilt)
     result.facts = finder.facts
     result.node_names = finder.node_names
+    result.local_rules = finder.local_rules
     result.constructions = finder.constructions
     result.node_handed = finder.node_handed
     result.uses = finder.uses

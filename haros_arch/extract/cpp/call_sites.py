@@ -240,12 +240,14 @@ class CallSites:
         return f"{PLACEHOLDER}{usr}{SEPARATOR}{index}{PLACEHOLDER}"
 
     def passing_sites(self, done: set[tuple[str, int]]
-                      ) -> Iterator[tuple[Cursor, Cursor, Cursor]]:
-        """(callee, call, caller) for the calls of functions not defined here, of those
-        defined in a header (the node's other units that include it and do not call it
-        hold it with a placeholder: turtlebot3's ``TwistSubscriber``, built in one
-        file, its header included by others) and of those given a placeholder, except
-        the functions in ``done``."""
+                      ) -> Iterator[tuple[Cursor, Cursor, Cursor, Cursor | None]]:
+        """(callee, call, caller, specialisation) for the calls of functions not defined
+        here, of those defined in a header (the node's other units that include it and
+        do not call it hold it with a placeholder: turtlebot3's ``TwistSubscriber``,
+        built in one file, its header included by others) and of those given a
+        placeholder, except the functions in ``done``; ``specialisation``: the one of
+        function template ``caller`` in which ``call`` calls ``callee``
+        (``instantiated``), else None."""
         from .handles import is_handle  # (handles imports this module)
 
         defined = {key_of(f.canonical) for f in self.functions
@@ -263,6 +265,16 @@ class CallSites:
                                and key not in dispatching):
                 continue
             for call, caller in sites:
+                picked = self.instantiated(call, caller)
+                if picked:
+                    # in each specialisation of the template the unit calls, the
+                    # overload C++ picks there (``instantiated_callee``)
+                    for callee, specialisation in picked:
+                        wanted = key_of(callee.canonical)
+                        if wanted not in done and (wanted not in defined or (
+                                wanted in self.marked)):
+                            yield callee, call, caller, specialisation
+                    continue
                 callee = self._implicit.get((key_of(call), key)) if call.kind in (
                     CursorKind.VAR_DECL, *_CONSTRUCTORS) else (
                     callee_of(call) or self._base_calls.get(key_of(call)))
@@ -271,7 +283,37 @@ class CallSites:
                 if bound is not None and key_of(bound.canonical) == key:
                     callee = bound  # the function a bind or a thread calls
                 if callee is not None:
-                    yield callee, call, caller
+                    yield callee, call, caller, None
+
+    def specialisations(self, template: Cursor) -> list[Cursor]:
+        """The specialisations of function template ``template`` the unit calls."""
+        found: dict[str, Cursor] = {}
+        for call, _caller in self._sites().get(key_of(template.canonical), ()):
+            callee = call.referenced if call.kind == CursorKind.CALL_EXPR else None
+            if callee is None or callee.kind != CursorKind.FUNCTION_DECL:
+                continue
+            origin = conf.lib.clang_getSpecializedCursorTemplate(callee)
+            if origin is not None and origin.kind == CursorKind.FUNCTION_TEMPLATE and (
+                    key_of(origin.canonical) == key_of(template.canonical)):
+                found.setdefault(callee.get_usr(), callee)
+        return list(found.values())
+
+    def instantiated(self, call: Cursor, caller: Cursor) -> list[tuple[Cursor, Cursor]]:
+        """(callee, specialisation) for each specialisation of function template
+        ``caller`` that the unit calls, where ``call``, one clang does not resolve in
+        the template (its arguments depend on the template's parameters), calls the
+        overload ``instantiated_callee`` picks there; empty unless it picks one in every
+        one of them (then what the call may be is as ``callee_of`` says)."""
+        if caller.kind != CursorKind.FUNCTION_TEMPLATE or call.kind != CursorKind.CALL_EXPR or (
+                call.referenced is not None):
+            return []
+        found = []
+        for specialisation in self.specialisations(caller):
+            callee = instantiated_callee(call, caller, specialisation)
+            if callee is None:
+                return []
+            found.append((callee, specialisation))
+        return found
 
     def scope(self, function: Cursor) -> Scope:
         key = key_of(function)
@@ -1069,11 +1111,143 @@ def _dependent_function(call: Cursor) -> Cursor | None:
     return found[0] if len(found) == 1 else None
 
 
+_BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
+                       TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
+
+
+def fits(decl: Cursor, types: list[Type]) -> bool:
+    """Whether overload ``decl`` may be the one called with arguments of ``types``:
+    their number, and no builtin value (``true``, ``0.25``) passed for a class parameter
+    (a descriptor), nor for one of a class template's (``const Vector2<T>&``)."""
+    params = [p for p in decl.get_children() if p.kind == CursorKind.PARM_DECL]
+    variadic = bool(params) and params[-1].type.spelling.endswith("...")
+    if variadic:
+        params = params[:-1]  # a pack (``R&&... rest``): any number of arguments
+    elif decl.type.kind == TypeKind.FUNCTIONPROTO and decl.type.is_function_variadic():
+        variadic = True  # C's ``...`` (no parameter of its own): any number after them
+    required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
+    if not len(required) <= len(types) <= (len(types) if variadic else len(params)):
+        return False
+    for param, given_type in zip(params, types, strict=False):
+        wanted = param.type.get_canonical()
+        if wanted.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            wanted = wanted.get_pointee().get_canonical()
+        given = given_type.get_canonical()
+        if given.kind in _BUILTINS and (wanted.kind == TypeKind.RECORD or (
+                wanted.kind == TypeKind.UNEXPOSED and wanted.spelling.endswith(">"))):
+            return False  # (a class template's specialisation, ``Vector2<T>``)
+        if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.POINTER and (
+            given.get_pointee().get_canonical().kind == TypeKind.RECORD
+        ):
+            return False  # an object's address (``this``) for a class (a logger)
+        if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.RECORD and (
+            msg_types.param_type(wanted) == "str" and msg_types.param_type(given) != "str"
+        ):
+            return False  # a string parameter given another class (a duration)
+    return True
+
+
+def instantiated_callee(call: Cursor, template: Cursor, specialisation: Cursor
+                        ) -> Cursor | None:
+    """The function ``call``, in function template ``template``, calls in its
+    ``specialisation``: a call whose arguments depend on the template's parameters is
+    no call clang resolves in the template (``param(nh, name + "/x", value.x)`` with
+    ``const Vector2<T>& value``, quori_face's overloads for ``uint32_t`` and
+    ``double``), and C++ picks the overload in each specialisation by the types the
+    arguments have there. None where an argument's type there is not known, or no one
+    overload is the one."""
+    children = list(call.get_children())
+    head = children[0] if children else None
+    refs = [c for c in (head, *head.get_children()) if c.kind == CursorKind.OVERLOADED_DECL_REF
+            ] if head is not None else []
+    if len(refs) != 1:
+        return None
+    types: list[Type] = []
+    for arg in written_arguments(call):
+        found = instantiated_type(arg, template, specialisation)
+        if found is None:
+            return None
+        types.append(found)
+    chosen = closest_typed([d for d in overloads(refs[0]) if d is not None and d.kind in (
+        CursorKind.FUNCTION_DECL, CursorKind.FUNCTION_TEMPLATE) and fits(d, types)], types)
+    return chosen[0] if len(chosen) == 1 else None
+
+
+def instantiated_type(expr: Cursor, template: Cursor, specialisation: Cursor
+                      ) -> Type | None:
+    """The type expression ``expr`` of function template ``template`` has in its
+    ``specialisation``: a parameter's as the specialisation declares it, a member's as
+    the class it is read from there declares it, a template type parameter's the
+    specialisation's argument; None where that is not known."""
+    expr = strip(expr)
+    ctype = expr.type
+    if not _depends(ctype):
+        return ctype
+    parameters = [c for c in template.get_children()
+                  if c.kind == CursorKind.TEMPLATE_TYPE_PARAMETER]
+    target = expr.referenced if expr.kind == CursorKind.DECL_REF_EXPR else None
+    if target is not None and target.kind == CursorKind.PARM_DECL:
+        own = [p for p in template.get_children() if p.kind == CursorKind.PARM_DECL]
+        given = list(specialisation.get_arguments())
+        index = next((i for i, p in enumerate(own) if p == target), None)
+        return given[index].type if index is not None and index < len(given) and (
+            len(given) == len(own)) else None
+    if expr.kind == CursorKind.MEMBER_REF_EXPR:
+        bases = [c for c in expr.get_children() if c.kind.is_expression()]
+        name = _member_spelling(expr)
+        base = instantiated_type(bases[0], template, specialisation) if (
+            len(bases) == 1 and name) else None
+        if base is None:
+            return None
+        if base.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+            base = base.get_pointee()
+        base = base.get_canonical()
+        if base.kind == TypeKind.POINTER:
+            base = base.get_pointee().get_canonical()
+        if base.kind != TypeKind.RECORD:
+            return None
+        field = next((f for f in base.get_fields() if f.spelling == name), None)
+        return field.type if field is not None else None
+    # a variable or a value of one of the template's type parameters (``T local``)
+    spelling = ctype.spelling.removeprefix("const ").removesuffix(" const")
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        spelling = ctype.get_pointee().spelling.removeprefix("const ")
+    index = next((i for i, p in enumerate(parameters) if p.spelling == spelling), None)
+    if index is None or index >= specialisation.get_num_template_arguments():
+        return None
+    found = specialisation.get_template_argument_type(index)
+    return found if found.kind != TypeKind.INVALID else None
+
+
+def _depends(ctype: Type) -> bool:
+    """Whether a type in a template is one its parameters decide."""
+    if ctype.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
+        ctype = ctype.get_pointee()
+    canonical = ctype.get_canonical()
+    return canonical.kind in (TypeKind.DEPENDENT, TypeKind.UNEXPOSED, TypeKind.INVALID) or (
+        "type-parameter" in canonical.spelling)
+
+
+def _member_spelling(member: Cursor) -> str:
+    """The member a member reference names; a dependent one has no spelling, its last
+    token after ``.`` or ``->`` is the name."""
+    if member.spelling:
+        return member.spelling
+    tokens = [t.spelling for t in member.get_tokens()]
+    return tokens[-1] if len(tokens) >= 2 and tokens[-2] in (".", "->") and (
+        tokens[-1].isidentifier()) else ""
+
+
 def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
-    """The overloads, of those that may take ``args``, that C++ would rather call: the
-    ones that take the most arguments as they are, by a parameter of that very type
-    first, then by one of a template's own type (which takes any), and one that is no
-    template before a template (nav2's CostmapSubscriber takes a
+    """``closest_typed`` with the types of the arguments ``args``."""
+    return closest_typed(functions, [arg.type for arg in args])
+
+
+def closest_typed(functions: list[Cursor], types: list[Type]) -> list[Cursor]:
+    """The overloads, of those that may take arguments of ``types``, that C++ would
+    rather call: the ones that take the most arguments as they are, by a parameter of
+    that very type first, then by one of a template's own type (which takes any), and
+    one that is no template before a template (nav2's CostmapSubscriber takes a
     ``LifecycleNode::WeakPtr``, or any ``NodeT``, and a topic; nav2's
     ``declare_or_get_parameter(node, name, descriptor)`` before the overload over any
     ``default_value``), then by one of the same class template as the argument (a
@@ -1087,8 +1261,8 @@ def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
         params = [p for p in function.get_children() if p.kind == CursorKind.PARM_DECL]
         same = generic = alike = 0
         viable = True
-        for param, arg in zip(params, args, strict=False):
-            wanted, given = _bare(param.type), _bare(arg.type)
+        for param, arg in zip(params, types, strict=False):
+            wanted, given = _bare(param.type), _bare(arg)
             if wanted is None:
                 generic += 1
             elif wanted == given:
@@ -1096,7 +1270,7 @@ def closest(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
             elif given is not None and "<" in wanted and (
                     wanted.split("<", 1)[0] == given.split("<", 1)[0]):
                 alike += 1
-            if wanted is not None and wanted != given and _unconvertible(param.type, arg.type):
+            if wanted is not None and wanted != given and _unconvertible(param.type, arg):
                 viable = False
         return viable, same, generic, alike, function.kind != CursorKind.FUNCTION_TEMPLATE
 

@@ -163,7 +163,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
         todo = list(sites.passing_sites(done))
         if not todo:
             break
-        for callee, call, caller in todo:
+        for callee, call, caller, specialisation in todo:
             where = callee.location.file
             usr = callee.canonical.get_usr()
             done.add(key_of(callee.canonical))
@@ -179,6 +179,11 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                 value = _value(arg, scope, namespaces, named) if arg is not None else None
                 if value is None and arg is not None and struct is not None:
                     value = struct(arg, scope)
+                if value is not None and specialisation is not None:
+                    # what the template's callers pass: those of this specialisation
+                    value = value.replace(
+                        f"{PLACEHOLDER}{caller.canonical.get_usr()}{SEPARATOR}",
+                        f"{PLACEHOLDER}{specialisation.get_usr()}{SEPARATOR}")
                 if value is not None:
                     facts.append((usr, index, value, site))
                     if _literal(arg, value):

@@ -1552,7 +1552,11 @@ class Names:
             if child is None:
                 opened = re.compile(rb"\bnamespace\s+(?:\w+\s*::\s*)*" + re.escape(
                     part.encode()) + rb"\b")
-                if not (i == 0 and self.declared is not None and self.declared(part)) and (
+                # (a namespace the parse has at the top or directly in one there:
+                # Gazebo's ``gazebo::physics``, which its stand-in opens)
+                if not (self.declared is not None and (
+                        self.declared(part) if i == 0 else (
+                            i == 1 and part in self.declared(parts[0])))) and (
                         not any(opened.search(text) for text in self._texts)):
                     return
                 child = node.children[part] = _Name(known=True)

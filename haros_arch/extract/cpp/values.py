@@ -440,7 +440,7 @@ def emptiness_test(test: Cursor) -> tuple[Cursor, bool] | None:
     if kind == CursorKind.CALL_EXPR:
         args = written_arguments(test)
         if test.spelling == "empty" and not args:
-            subject = _method_object(test)
+            subject = method_object(test)
             return None if subject is None else (subject, True)
         if test.spelling in ("operator==", "operator!=") and len(args) == 2:
             for subject, other in ((args[0], args[1]), (args[1], args[0])):
@@ -507,7 +507,7 @@ def _choice_text(parts: Parts) -> str:
                    else part for part in parts)
 
 
-def _method_object(call: Cursor) -> Cursor | None:
+def method_object(call: Cursor) -> Cursor | None:
     """The object of ``obj.method()``."""
     children = list(call.get_children())
     if children and children[0].kind == CursorKind.MEMBER_REF_EXPR:
@@ -537,7 +537,7 @@ def _size_of(cursor: Cursor) -> Cursor | None:
     call = strip(cursor)
     if call.kind == CursorKind.CALL_EXPR and call.spelling in ("length", "size") and not (
             written_arguments(call)):
-        return _method_object(call)
+        return method_object(call)
     return None
 
 
@@ -1668,11 +1668,11 @@ class Scope:
                 and qualified_name(target.semantic_parent) in _TOPIC_HOLDERS):
             # a publisher's or subscription's topic, resolved and remapped: the name the
             # code made it with, where that is known (``TopicOf``)
-            made = self._made_topic(_method_object(call), depth + 1)
+            made = self._made_topic(method_object(call), depth + 1)
             if made is None:
                 # the topic of a publisher a parameter holds, given by calls this file
                 # does not hold: the parameter's placeholder (``CallSites.given_elsewhere``)
-                marker = self._elsewhere(_method_object(call))
+                marker = self._elsewhere(method_object(call))
                 return UNKNOWN if marker is None else (marker,)
             return (TopicOf(made),)
         if not args and _names_node(target):
@@ -1882,7 +1882,7 @@ class Scope:
         """``handle.resolveName(name)``: ``name`` in the namespace of the handle
         (``~image`` on a private one, ``motors/image`` on one in ``motors``), which
         ``CallSites.handle_namespace`` tells; unknown where it is not known."""
-        handle = _method_object(call)
+        handle = method_object(call)
         find = None if self.sites is None else self.sites.handle_namespace
         namespace = UNKNOWN if handle is None or find is None else find(handle, self)
         return join_parts(namespace, self.string(name, depth + 1))

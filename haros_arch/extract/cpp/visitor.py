@@ -16,7 +16,7 @@ import itertools
 import os
 import re
 from collections.abc import Callable, Iterator, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from clang.cindex import Cursor, CursorKind, StorageClass, TranslationUnit, Type, TypeKind, conf
 
@@ -91,6 +91,7 @@ from .links import (
     parameter_mark,
 )
 from .members import MemberWrites, member_of
+from .node_options import NODE_OPTIONS, local_arguments
 from .owners import (
     _is_node,
     binds_own_member,
@@ -125,11 +126,11 @@ from .values import (
     ProgramOption,
     Scope,
     SearchedName,
-    _method_object,
     _textual,
     argument_of,
     initializer,
     literal,
+    method_object,
     option_of,
     own_name,
     own_name_run,
@@ -154,6 +155,9 @@ from .writes import (
     searched_key,
     writes_of,
 )
+
+if TYPE_CHECKING:
+    from ...launch.ros2.naming import RosArgs
 
 WORDS = re.compile(rb"[A-Za-z_]\w*")  # the identifiers (and keywords) of a text
 _QUALIFIED = re.compile(rb"[A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*")  # and as written, qualified
@@ -520,6 +524,10 @@ class CallFinder:
         # owner (``owner_of``) is the class whose constructor names it (``: Node("x")``)
         # or the free function that makes it (``make_shared<rclcpp::Node>("x")`` in main)
         self.node_names: list[tuple[str, str]] = []
+        # (name, rule) for each ``__ns`` / ``__node`` rule a node of ``node_names`` is
+        # built with in its own arguments (``node_options``): the launch's do not replace
+        # what it sets
+        self.local_rules: list[tuple[str, str]] = []
         self._root: Any = None  # the unit's cursor as a node (``run``), until ``release``
         self._owner: str | None = None  # of the function being walked
         # the placeholder that starts a parameter of the constructor being walked, whose
@@ -1246,7 +1254,7 @@ class CallFinder:
             node_name = parameter_places(callee_of(call), api.STANDIN_NODE_NAME[key])
         if node_name is not None or standin:
             if node_name is not None:
-                self._node_name(node_name, args, scope, self._local_node(call, scope))
+                self._node_name(node_name, args, scope, self._local_node(call, scope), call)
             switch = api.IMPLICIT_SWITCH.get(key)
             if not (switch is not None and switch < len(args)
                     and scope.boolean(args[switch]) is False):
@@ -1402,7 +1410,7 @@ class CallFinder:
         name = _recovered_name(call)
         if not name or name not in self.wrappers.names or call.location.file is None:
             return
-        obj = _method_object(call)
+        obj = method_object(call)
         declared = obj.referenced if obj is not None else None
         if declared is None or declared.kind not in (
                 CursorKind.FIELD_DECL, CursorKind.VAR_DECL, CursorKind.PARM_DECL):
@@ -2107,20 +2115,41 @@ class CallFinder:
         return None
 
     def _node_name(self, where: tuple[int, int], args: list[Cursor], scope: Scope,
-                   owner: str | None = None) -> None:
+                   owner: str | None = None, call: Cursor | None = None) -> None:
         name_arg, ns_arg = where
         if name_arg >= len(args):
             return
+        # the local rules of the node of its owner: a class's base (``: Node("x",
+        # options)``), a free function's node or a local one (not a helper node a
+        # class keeps beside its own, which has none of its calls: nav2's client nodes)
+        own = (owner is not None and owner != self._owner) or (
+            self._owner is not None and self._owner.endswith("()")) or (
+            call is not None and _base_initialiser(call, scope.body))
         owner = owner or self._owner
-        if any(_renames_itself(arg) for arg in args):
+        local = _local_rules(args, scope) if own else None
+        rules: list[str] = []
+        if local is not None and local.node_name is not None:
+            name = local.node_name  # its own ``__node:=`` rule names it, as rcl does
+            rules.append(f"__node:={name}")
+        elif any(_renames_itself(arg) for arg in args):
             return  # its own ``__node:=`` argument names it at run time (nav2's helpers)
-        name = render(scope.string(args[name_arg]))
-        if ns_arg < len(args) and (
+        else:
+            name = render(scope.string(args[name_arg]))
+        if local is not None and local.namespace is not None:
+            # its own ``__ns:=`` rule: that namespace, whatever the code and the launch
+            # give (rcl wants it fully qualified; one that is not is not a rule)
+            namespace = local.namespace.strip("/")
+            name = f"/{namespace}/{name}" if namespace else f"/{name}"
+            rules.append(f"__ns:={local.namespace}")
+        elif ns_arg < len(args) and (
             strip(args[ns_arg]).type.get_canonical().get_declaration().spelling != "NodeOptions"
         ):
             namespace = render(scope.string(args[ns_arg])).strip("/")
             if namespace:
                 name = f"/{namespace}/{name}"
+        for rule in rules:
+            if (name, rule) not in self.local_rules:
+                self.local_rules.append((name, rule))
         if owner is not None and (owner, name) not in self.node_names:
             self.node_names.append((owner, name))
         made_in = self._made_in(name, None)
@@ -2498,7 +2527,7 @@ class CallFinder:
                 if self._owner is not None and (self._owner, owner) not in self.uses:
                     self.uses.append((self._owner, owner))  # the function holds it
                 self._node_name(api.RCLCPP_NODE_NAME[made[2]], written_arguments(made[1]),
-                                at_scope or scope, owner)
+                                at_scope or scope, owner, made[1])
         if spec.fixed_name is None:
             if spec.on_handle:
                 namespace = render(self.namespaces.of_call(site, callee, at_scope or scope))
@@ -3540,7 +3569,7 @@ class CallFinder:
     def _typed_accessor(self, call: Cursor) -> None:
         """``get_parameter("x").as_int()``: the read (visited after this call, its
         object) asks for an int; rclcpp throws when the parameter holds another type."""
-        inner = _method_object(call)
+        inner = method_object(call)
         inner = strip(inner) if inner is not None else None
         if inner is not None and inner.kind == CursorKind.CALL_EXPR and (
                 inner.spelling == "get_parameter"):
@@ -4039,7 +4068,7 @@ class CallFinder:
         inner = strip(given)
         if inner.kind != CursorKind.CALL_EXPR or inner.spelling != "getTransport":
             return None
-        held = _method_object(inner)
+        held = method_object(inner)
         return None if held is None else self._hints_made(strip(held))
 
     def _hints_made(self, inner: Cursor) -> list[Cursor] | None:
@@ -4134,7 +4163,7 @@ class CallFinder:
         if spec is not None and spec.value_only and spec.name_arg >= len(
                 written_arguments(expr)):
             # ``GetElement("key")->Get<T>()``: the value of its object
-            held = _method_object(expr)
+            held = method_object(expr)
             return self._parameter_source(held, scope, depth + 1, value) if (
                 held is not None) else None
         if expr.spelling == "operator->":
@@ -5205,6 +5234,52 @@ def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
     return [expr]
 
 
+def _local_rules(args: list[Cursor], scope: Scope) -> RosArgs | None:
+    """The ``__ns`` and ``__node`` rules among the local arguments of the
+    ``NodeOptions`` a node construction is given (``node_options``), as rcl reads them
+    after ``--ros-args`` (a ``__ns`` known not to be fully qualified is no rule); None
+    where none is known."""
+    from ...launch.ros2.naming import parse_ros_args, split_arguments
+
+    for arg in args:
+        if strip(arg).type.get_canonical().get_declaration().spelling != NODE_OPTIONS:
+            continue
+        words = local_arguments(arg, scope)
+        if not words:
+            return None
+        found = parse_ros_args(split_arguments(words)[1], None)
+        # (a value not wholly known here leaves the node as the code and the launch
+        # name it: ``"__ns:=" + add_namespaces(parent, local)``)
+        if found.namespace is not None and (
+                not _plain_rule(found.namespace) or not found.namespace.startswith("/")):
+            found.namespace = None
+        if found.node_name is not None and not _plain_rule(found.node_name):
+            found.node_name = None
+        return found
+    return None
+
+
+def _base_initialiser(call: Cursor, function: Cursor | None) -> bool:
+    """Whether ``call`` initialises a base of the class of constructor ``function``
+    (``: rclcpp::Node("x", options)``, after the base's name; not a member's)."""
+    if function is None or function.kind != CursorKind.CONSTRUCTOR:
+        return False
+    start, end = call.extent.start.offset, call.extent.end.offset
+    before = None
+    for child in function.get_children():
+        if child.kind.is_expression() and (
+                child.extent.start.offset <= start and end <= child.extent.end.offset):
+            return before is not None and before.kind in (
+                CursorKind.TYPE_REF, CursorKind.TEMPLATE_REF)
+        before = child
+    return False
+
+
+def _plain_rule(value: str) -> bool:
+    """Whether a rule's value is wholly known text (no part unknown, none a parameter's)."""
+    return bool(value) and UNKNOWN_MARK not in value and PLACEHOLDER not in value
+
+
 def _renames_itself(arg: Cursor) -> bool:
     """Whether a node's options carry a ``__node:=`` remap of their own: node-local
     arguments win over the process's, so neither the name in code nor a launch
@@ -5295,7 +5370,7 @@ def _element_field(expr: Cursor) -> tuple[Cursor, str] | None:
                 len(children) == 1):
             expr = children[0]  # std::string(..), a copy of the converted value
         elif target is not None and target.kind == CursorKind.CONVERSION_FUNCTION:
-            held = _method_object(expr)  # value.operator std::string &()
+            held = method_object(expr)  # value.operator std::string &()
             if held is None:
                 return None
             expr = held
@@ -5360,7 +5435,7 @@ def _read_only(variable: Cursor, scope: Scope) -> bool:
                 safe += 1
         elif kind == CursorKind.CALL_EXPR:
             target = node.referenced
-            held = _method_object(node)
+            held = method_object(node)
             held = strip(held) if held is not None else None
             if held is not None and held.kind == CursorKind.DECL_REF_EXPR and (
                 held.referenced is not None and place_of(held.referenced) == key
@@ -5413,7 +5488,7 @@ def _loaded_element(expr: Cursor, scope: Scope) -> tuple[Cursor, str] | None:
     method = expr.referenced if expr.kind == CursorKind.CALL_EXPR else None
     if method is None or method.kind != CursorKind.CXX_METHOD or written_arguments(expr):
         return None
-    held = _method_object(expr)
+    held = method_object(expr)
     element = _dereferenced(held) if held is not None else None
     if element is None or element.kind != CursorKind.DECL_REF_EXPR or (
             element.referenced is None):

@@ -44,6 +44,7 @@ from .call_sites import (
     closest,
     default_argument,
     delegation,
+    fits,
     held_lambda,
     is_constructor,
     specialised_keys,
@@ -109,8 +110,6 @@ _ROW_NAMES = _API_NAMES | FACTORY_NAMES
 # the names an unresolved call can match a row through, each written in its text
 _UNRESOLVED_NAMES = frozenset(name.encode() for name in _ROW_NAMES)
 _WORD = re.compile(rb"\w+")
-_BUILTINS = frozenset({TypeKind.BOOL, TypeKind.INT, TypeKind.LONG, TypeKind.DOUBLE,
-                       TypeKind.FLOAT, TypeKind.UINT, TypeKind.ULONG, TypeKind.LONGLONG})
 _THIS_CALLS = frozenset({"shared_from_this", "get", "weak_from_this"})
 # the types of a call that may return whether a parameter is there: ``bool``, or not
 # known until a template is instantiated
@@ -2003,33 +2002,8 @@ def _preferred(functions: list[Cursor], args: list[Cursor]) -> list[Cursor]:
 
 
 def _fits(decl: Cursor, args: list[Cursor]) -> bool:
-    """Whether overload ``decl`` may be the one called with ``args``: their number, and
-    no builtin value (``true``, ``0.25``) passed for a class parameter (a descriptor)."""
-    params = _parameters(decl)
-    variadic = bool(params) and params[-1].type.spelling.endswith("...")
-    if variadic:
-        params = params[:-1]  # a pack (``R&&... rest``): any number of arguments
-    elif decl.type.kind == TypeKind.FUNCTIONPROTO and decl.type.is_function_variadic():
-        variadic = True  # C's ``...`` (no parameter of its own): any number after them
-    required = [p for p in params if not any(c.kind.is_expression() for c in p.get_children())]
-    if not len(required) <= len(args) <= (len(args) if variadic else len(params)):
-        return False
-    for param, arg in zip(params, args, strict=False):
-        wanted = param.type.get_canonical()
-        if wanted.kind in (TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE):
-            wanted = wanted.get_pointee().get_canonical()
-        given = strip(arg).type.get_canonical()
-        if wanted.kind == TypeKind.RECORD and given.kind in _BUILTINS:
-            return False
-        if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.POINTER and (
-            given.get_pointee().get_canonical().kind == TypeKind.RECORD
-        ):
-            return False  # an object's address (``this``) for a class (a logger)
-        if wanted.kind == TypeKind.RECORD and given.kind == TypeKind.RECORD and (
-            msg_types.param_type(wanted) == "str" and msg_types.param_type(given) != "str"
-        ):
-            return False  # a string parameter given another class (a duration)
-    return True
+    """Whether overload ``decl`` may be the one called with ``args`` (``call_sites.fits``)."""
+    return fits(decl, [strip(arg).type for arg in args])
 
 
 def _dispatched(constructor: Cursor, decl: Cursor, args: list[Cursor]

@@ -420,6 +420,12 @@ double scalbn(double x, int n);
 int isnan(double x);
 int isinf(double x);
 int isfinite(double x);
+// glibc's BSD forms, which <math.h> declares for g++ (_GNU_SOURCE): a copy of
+// gazebo_plugins' diff drive tests ``isnanf(w)``
+int isnanf(float x);
+int isinff(float x);
+int finite(double x);
+int finitef(float x);
 struct timespec { time_t tv_sec; long tv_nsec; };
 struct timeval { time_t tv_sec; long tv_usec; };
 time_t time(time_t* t);
