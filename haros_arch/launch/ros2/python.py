@@ -1485,9 +1485,13 @@ def parse_python(text: str, path: str, workspace: Workspace,
     interp.argv = argv
     if unsure:
         interp.environment_unsure |= unsure
-    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if uses is not None:
-        uses.extend(interp.uses)
+        # the caller's list itself: a function that runs only when launch performs its
+        # action (an OpaqueFunction's, an event handler's) asks for packages after the
+        # module was read (vrx 747cb183's spawn, whose Model.generate asks for
+        # wamv_gazebo's share folder)
+        interp.uses = uses
+    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if made is not None:
         made.extend(p for p in interp.made_paths if p not in made)
     if written is not None and isinstance(interp.environment, _Overlay):
