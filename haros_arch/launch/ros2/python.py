@@ -1491,9 +1491,9 @@ def parse_python(text: str, path: str, workspace: Workspace,
         # module was read (vrx 747cb183's spawn, whose Model.generate asks for
         # wamv_gazebo's share folder)
         interp.uses = uses
-    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if made is not None:
-        made.extend(p for p in interp.made_paths if p not in made)
+        interp.made_paths = made  # so too the files such a function writes
+    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if written is not None and isinstance(interp.environment, _Overlay):
         written.update(interp.environment.own)
     if unsure is not None:
