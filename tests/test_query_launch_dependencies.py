@@ -156,6 +156,42 @@ def test_ros2_nodes_and_package_shares(write_tree):
 
 
 
+OPAQUE_LAUNCH = """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch_ros.actions import Node
+
+
+def setup(context, *args, **kwargs):
+    model = os.path.join(get_package_share_directory('boat_desc'), 'urdf', 'boat.xacro')
+    return [Node(package='driver3', executable='driver_node', name='driver',
+                 arguments=[model])]
+
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup)])
+"""
+
+
+def test_ros2_a_package_an_opaque_function_asks_for_when_it_runs(write_tree):
+    """vrx 747cb183: competition.launch.py spawns the boat in an OpaqueFunction, whose
+    helper asks for wamv_gazebo's share folder when launch runs the function, after the
+    module was read; vrx_gz's package.xml did not declare wamv_gazebo."""
+    root = write_tree({
+        "src/bringup3/package.xml": manifest("bringup3", ("exec_depend", "driver3"),
+                                             build_type="ament_cmake"),
+        "src/bringup3/CMakeLists.txt": "project(bringup3)\n",
+        "src/bringup3/launch/boat.launch.py": OPAQUE_LAUNCH,
+        "src/boat_desc/package.xml": manifest("boat_desc", build_type="ament_cmake"),
+        "src/boat_desc/CMakeLists.txt": "project(boat_desc)\n",
+        "project.yaml": "project: p\nconfigurations:\n  c: [bringup3/launch/boat.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("bringup3/launch/boat.launch.py", 10, "boat_desc")]
+
+
 GUARDED_LAUNCH = """import os
 
 from ament_index_python.packages import get_package_share_directory, get_packages_with_prefixes

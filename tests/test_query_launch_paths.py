@@ -199,6 +199,31 @@ def test_a_file_the_launch_file_writes_is_not_hard_coded(write_tree):
                      ("parameter:/tb3_bridge/calibration",)]
 
 
+
+def test_a_file_an_opaque_function_writes_is_not_hard_coded(write_tree):
+    """The same bridge configurations written by a function launch runs later, an
+    OpaqueFunction's (after the module was read): made on the machine that runs the
+    launch too."""
+    opaque = WRITING_LAUNCH.replace("def generate_launch_description():\n    nodes = []",
+                                    "def setup(context):\n    nodes = []").replace(
+        "    return LaunchDescription(nodes)",
+        "    return nodes\n\n\ndef generate_launch_description():\n"
+        "    return LaunchDescription([OpaqueFunction(function=setup)])").replace(
+        "from launch import LaunchDescription",
+        "from launch import LaunchDescription\nfrom launch.actions import OpaqueFunction")
+    assert "OpaqueFunction(function=setup)" in opaque and "def setup(context):" in opaque
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/bridges.launch.py": opaque,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/bridges.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    found = sorted(f.entities for f in run_rule(rule, model))
+    assert found == [("parameter:/tb1_bridge/calibration",),
+                     ("parameter:/tb3_bridge/calibration",)]
+
 TEXTFILE_LAUNCH = """<launch>
   <param name="robot_description" textfile="$(find nav)/urdf/robot.urdf" />
   <param name="other_description" textfile="$(find nav)/urdf/hard.urdf" />

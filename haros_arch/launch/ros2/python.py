@@ -1412,6 +1412,17 @@ class Interpreter(Expressions):
             name = getattr(func.node, "name", "lambda")
             return self.unsupported(node, f"recursive call of {name} on values not known "
                                           "statically")
+        wrong = _unexpected_keywords(func.node.args, kwargs)
+        if wrong:
+            # Python binds no keyword the function does not name unless it takes
+            # ``**kwargs``: the call raises TypeError and its body does not run
+            # (interbotix 47c468e's xsarm_dual.launch.py gave the helper of
+            # interbotix_xs_modules robot_description_launch_configuration_name=, which
+            # it names robot_description_launch_config_name)
+            name = getattr(func.node, "name", "<lambda>")
+            reason = (f"TypeError: {name}() got an unexpected keyword argument "
+                      f"'{wrong[0]}'")
+            return self.failed(node, f"call to {name} fails: {reason}", reason)
         self.depth += 1
         if self.depth > MAX_CALL_DEPTH:
             self.depth = 0
@@ -1504,11 +1515,15 @@ def parse_python(text: str, path: str, workspace: Workspace,
     interp.argv = argv
     if unsure:
         interp.environment_unsure |= unsure
-    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if uses is not None:
-        uses.extend(interp.uses)
+        # the caller's list itself: a function that runs only when launch performs its
+        # action (an OpaqueFunction's, an event handler's) asks for packages after the
+        # module was read (vrx 747cb183's spawn, whose Model.generate asks for
+        # wamv_gazebo's share folder)
+        interp.uses = uses
     if made is not None:
-        made.extend(p for p in interp.made_paths if p not in made)
+        interp.made_paths = made  # so too the files such a function writes
+    actions = interp.bounded(where, lambda: interp.module(tree), None)
     if written is not None and isinstance(interp.environment, _Overlay):
         written.update(interp.environment.own)
     if unsure is not None:
@@ -1591,6 +1606,15 @@ def _scope_of(name: str, closure: dict[str, Any] | None, module: bool
             return scope
         scope = scope.get("__closure__")
     return None
+
+
+def _unexpected_keywords(params: ast.arguments, kwargs: dict[str, Any]) -> list[str]:
+    """The keywords of a call that the function's parameters do not take: none when it
+    has ``**kwargs``; a positional-only parameter is no keyword (Python's TypeError)."""
+    if params.kwarg is not None:
+        return []
+    names = {a.arg for a in (*params.args, *params.kwonlyargs)}
+    return [word for word in kwargs if word not in names]
 
 
 def _write_outer(env: dict[str, Any]) -> None:
