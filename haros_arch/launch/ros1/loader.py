@@ -160,7 +160,14 @@ class Ros1Loader:
             return self.workspace.find(name)
 
         def declared(name: str) -> bool:
-            return name in scope.arg_names or (
+            # roslaunch makes every ``name:=value`` of its command line an argument of
+            # the top-level file (load_sysargs_into_context), declared or not, and
+            # pass_all_args hands them on: in a file that gets them (``command_line``)
+            # ``$(arg bag_filename)`` with no <arg> (cartographer_ros' demo launches)
+            # wants a value from the command line, unset as one declared without a
+            # value (LAUNCH_ARG_UNSET), and the text around it stays (dvrk_video's
+            # ``ns="$(arg rig_name)/left"`` is ``?/left``, not ``?``)
+            return name in scope.arg_names or scope.command_line or (
                 scope.include_args is not None and name in scope.outer_arg_names)
 
         ctx = Context(scope.args, self.environment, find, scope.filename,
@@ -169,13 +176,7 @@ class Ros1Loader:
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:
-            if scope.command_line and err.name not in scope.arg_names:
-                # roslaunch makes every ``name:=value`` of its command line an argument
-                # of the top-level file (load_sysargs_into_context), declared or not, and
-                # pass_all_args hands them on: ``$(arg bag_filename)`` with no <arg>
-                # (cartographer_ros' demo launches) wants a value from the command line
-                self.report("LAUNCH_ARG_UNSET", scope, element, name=err.name)
-            elif err.name in scope.arg_names or scope.in_include:
+            if err.name in scope.arg_names or scope.in_include:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
                             path=self.workspace.relpath(scope.path), name=err.name)
             else:
