@@ -195,7 +195,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             (index, original, decl, own) for index, original in enumerate(launch.nodes)
             for decl, own in process_nodes([original], nodes)):
         instance = _instance(decl, nodes, workspace, config)
-        if index in own_values and instance.ros_version == 2:
+        if index in own_values:
             _OWN_VALUES[instance] = own_values[index]
         if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
             instance.code_name = own
@@ -1361,9 +1361,15 @@ def _own_values(launch: LaunchModel, given: list[ParamDecl]) -> dict[int, dict[s
     two ROS 2 nodes of one name (a duplicate, said as such) each read their own values,
     while the graph keeps one parameter per full name, set to the last one's
     (Nautilus-One's two ``publish_camera`` nodes of ``camera_name`` front and down: both
-    were named after the down camera, two false multiple publishers)."""
-    names = Counter(decl.name for decl in launch.nodes if UNKNOWN_MARK not in decl.name)
-    shared = {index for index, decl in enumerate(launch.nodes) if names[decl.name] > 1}
+    were named after the down camera, two false multiple publishers). In ROS 1 two names
+    that read alike with ``?`` in them are two names as far as is known (robosub-ros'
+    ``$(anon pink_bins_detector)`` of two includes, of ``camera`` front and bottom, both
+    ``/pink_bins_detector_?``), each with the parameters of its <node> element; a ROS 2
+    name ``/?`` is a node not named yet, whose parameters go by their owner."""
+    named = [(index, decl.name) for index, decl in enumerate(launch.nodes)
+             if UNKNOWN_MARK not in decl.name or decl.ros_version == 1]
+    names = Counter(name for _, name in named)
+    shared = {index for index, name in named if names[name] > 1}
     found: dict[int, dict[str, ParamDecl]] = {}
     for param in given:
         if param.owner in shared and param.pattern is None:

@@ -545,6 +545,7 @@ class Ros1Loader:
             return
         private = inner.child(name)
         private.private = []
+        params_before = len(self.model.params)
         package = self.text(element, "pkg", scope) or ""
         executable = self.text(element, "type", scope) or ""
         machine = self.text(element, "machine", scope) or self.default_machine
@@ -627,6 +628,12 @@ class Ros1Loader:
         except ValueError:
             self.fail(scope, element, f"respawn_delay must be a number: {delay!r}")
             respawn_delay = 0.0
+        # the parameters given in the <node> element are its own (``ParamDecl.owner``):
+        # two instances of one name (``$(anon x)`` of two includes, both ``/x_?`` here)
+        # each read theirs
+        for given_param in self.model.params[params_before:]:
+            if given_param.owner is None:
+                given_param.owner = len(self.model.nodes)
         self.model.nodes.append(NodeDecl(
             full, package, executable, inner.ns, args, list(remaps.remaps),
             scope.conditions, location, anonymous="$(anon" in element.get("name", ""),
