@@ -463,6 +463,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             # ``std::string`` of it throws, the call names nothing
             continue
         for each in element_calls(call, instance, resources):  # list parameters
+            each = _argument_param(each, instance)
             if each.camera_of is not None:
                 info = _camera_info(instance, each, images.get(each.location, []), remaps,
                                     resources)
@@ -1318,6 +1319,22 @@ def _empty_head(call: PrimitiveCall) -> bool:
         return False
     head, _, tail = call.name.partition(UNKNOWN_MARK)
     return head == _handle_prefix(call) and tail.startswith("/") and bool(tail.strip("/"))
+
+
+def _argument_param(call: PrimitiveCall, instance: NodeInstance) -> PrimitiveCall:
+    """``call`` with the one ``?`` of the parameter its name is the value of
+    (``name_param``) filled from the command line, where the node reads that parameter by
+    a name written the same whose ``?`` is a command-line argument (``name_arg``, one
+    index): underwater_vehicle_dynamics' dynamics.py reads
+    ``argv[1] + "/dynamics/external_force_topic"`` (``g500/...``) and subscribes to its
+    value, the configuration's ``g500/ForceSensor``. Unchanged otherwise."""
+    written = call.name_param
+    if written is None or written.count(UNKNOWN_MARK) != 1 or instance.node is None:
+        return call
+    indexes = {c.name_arg for c in instance.node.calls
+               if c.kind == "read" and c.name == written and c.name_arg is not None}
+    given = program_argument(instance, indexes.pop()) if len(indexes) == 1 else None
+    return replace(call, name_param=_filled(written, given)) if given else call
 
 
 def _filled(name: str, value: str) -> str:
