@@ -6,7 +6,12 @@ nimbro_service_transport's service relays set ``ops.helper`` to their own subcla
 ``ros::SubscriptionCallbackHelperT`` on a SubscribeOptions), and rosbag's export macro
 and compression types (``rosbag/macros.h``, ``rosbag/stream.h``, fallback headers: the
 fork declares ``class ROSBAG_DECL Recorder`` holding a
-``rosbag::compression::CompressionType``, so the whole class was an error)."""
+``rosbag::compression::CompressionType``, so the whole class was an error); and small
+gaps of the same robot's nodes: a directory entry's ``status()`` and the queries over a
+status (config_server's backups, Boost.Filesystem as ``<filesystem>``),
+``std::string::insert(iterator, char)`` (rrlogger), ``std::map::insert(hint, value)``
+(the rosbag fork's player), ``ServiceClient::call(req, res, md5sum)`` (the UDP service
+server's relay of serialized messages)."""
 
 from __future__ import annotations
 
@@ -56,6 +61,28 @@ CASES = {
         "  rosbag::RecorderOptions options;\n"
         "  options.compression = rosbag::compression::LZ4;\n"
         "  rosbag::Recorder recorder(options);\n"),
+    "directory_entry_status": (
+        "#include <boost/filesystem.hpp>\n"
+        "namespace fs = boost::filesystem;\n",
+        "  fs::directory_iterator end;\n"
+        "  for (fs::directory_iterator file(\"/tmp\"); file != end; ++file) {\n"
+        "    if (!fs::is_directory(file->status())) continue;\n"
+        "  }\n"),
+    "string_insert_char": (
+        "",
+        "  std::string topic = \"chatter\";\n"
+        "  if (topic[0] != '/') topic.insert(topic.begin(), '/');\n"),
+    "map_insert_hint": (
+        "#include <map>\n",
+        "  std::map<std::string, ros::Publisher> publishers;\n"
+        "  publishers.insert(publishers.begin(),\n"
+        "                    std::pair<std::string, ros::Publisher>(\"a\", ros::Publisher()));\n"),
+    "service_call_md5sum": (
+        "#include <std_srvs/Empty.h>\n",
+        "  ros::ServiceClient client = nh.serviceClient<std_srvs::Empty>(\"relay\");\n"
+        "  std_srvs::Empty::Request request;\n"
+        "  std_srvs::Empty::Response response;\n"
+        "  bool ok = client.call(request, response, std::string(\"*\"));\n"),
 }
 
 
