@@ -466,7 +466,10 @@ CATALOGUE: dict[str, Entry] = {
     "LAUNCH_NODE_DUPLICATE": Entry(
         "error", "launch starts two nodes named {name} (also at {other})",
         "roslaunch refuses a launch whose node names collide (two $(anon x) of one "
-        "file are one name; those of two includes of it are two)."),
+        "file are one name; those of two includes of it are two). A name with unknown "
+        "parts collides only where they are the same arguments or environment variables "
+        "not known here: /dvrk/$(arg master)/jsp and /dvrk/$(arg slave)/jsp are one name "
+        "only when both are given one value, which is not said."),
     "LAUNCH_ARG_UNDEFINED": Entry(
         "error", "argument {name} is not defined here",
         "$(arg) names an argument that is neither declared in this scope nor passed "

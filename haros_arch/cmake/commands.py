@@ -971,6 +971,19 @@ def _tool_found(it: Interpreter, name: str, required: bool) -> str | None:
     return "FALSE" if name in _ONE_VERSION_ONLY and not required else None
 
 
+def _built_before(it: Interpreter, name: str) -> bool:
+    """Whether ``find_package(name)`` finds a package of the workspace that this package
+    declares a build dependency on: catkin and colcon build it first and put its config
+    where the search looks, so ``<name>_FOUND`` holds (humanoid_op_ros'
+    nimbro_topic_transport depends on plot_msgs, "not a hard dependency", and defines
+    WITH_PLOTTING under ``if(plot_msgs_FOUND)``, which chooses its ``/plot``
+    publisher)."""
+    if name == it.package_name or name not in it.build_depends or it.extras_of is None:
+        return False
+    root, _extras = it.extras_of(name)
+    return bool(root)
+
+
 def run_extras(it: Interpreter, command: Invocation, name: str) -> None:
     """Run the CMake files the workspace package ``name`` hands to the packages that find
     it (``Interpreter.extras_of``: its ament CONFIG_EXTRAS, catkin CFG_EXTRAS), once per
@@ -1065,6 +1078,8 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
     it.found_packages.add(args[0].lower())
     _client_version(it, args[0])
     found = _tool_found(it, args[0], "REQUIRED" in args[1:])
+    if found is None and _built_before(it, args[0]):
+        found = "TRUE"
     if found is not None:
         it.set(f"{args[0]}_FOUND", found)
     if args[0] == "catkin":

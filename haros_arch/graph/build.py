@@ -195,7 +195,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
             (index, original, decl, own) for index, original in enumerate(launch.nodes)
             for decl, own in process_nodes([original], nodes)):
         instance = _instance(decl, nodes, workspace, config)
-        if index in own_values and instance.ros_version == 2:
+        if index in own_values:
             _OWN_VALUES[instance] = own_values[index]
         if own is not None and own.rsplit("/", 1)[-1] != instance.name.rsplit("/", 1)[-1]:
             instance.code_name = own
@@ -463,6 +463,7 @@ def _link_calls(instance: NodeInstance, calls: Sequence[PrimitiveCall], resource
             # ``std::string`` of it throws, the call names nothing
             continue
         for each in element_calls(call, instance, resources):  # list parameters
+            each = _argument_param(each, instance)
             if each.camera_of is not None:
                 info = _camera_info(instance, each, images.get(each.location, []), remaps,
                                     resources)
@@ -1320,6 +1321,22 @@ def _empty_head(call: PrimitiveCall) -> bool:
     return head == _handle_prefix(call) and tail.startswith("/") and bool(tail.strip("/"))
 
 
+def _argument_param(call: PrimitiveCall, instance: NodeInstance) -> PrimitiveCall:
+    """``call`` with the one ``?`` of the parameter its name is the value of
+    (``name_param``) filled from the command line, where the node reads that parameter by
+    a name written the same whose ``?`` is a command-line argument (``name_arg``, one
+    index): underwater_vehicle_dynamics' dynamics.py reads
+    ``argv[1] + "/dynamics/external_force_topic"`` (``g500/...``) and subscribes to its
+    value, the configuration's ``g500/ForceSensor``. Unchanged otherwise."""
+    written = call.name_param
+    if written is None or written.count(UNKNOWN_MARK) != 1 or instance.node is None:
+        return call
+    indexes = {c.name_arg for c in instance.node.calls
+               if c.kind == "read" and c.name == written and c.name_arg is not None}
+    given = program_argument(instance, indexes.pop()) if len(indexes) == 1 else None
+    return replace(call, name_param=_filled(written, given)) if given else call
+
+
 def _filled(name: str, value: str) -> str:
     """``name`` with ``value`` in the place of its (first) ``?``."""
     if value.startswith(("/", "~")) and name.count(UNKNOWN_MARK) == 1 and (
@@ -1361,9 +1378,15 @@ def _own_values(launch: LaunchModel, given: list[ParamDecl]) -> dict[int, dict[s
     two ROS 2 nodes of one name (a duplicate, said as such) each read their own values,
     while the graph keeps one parameter per full name, set to the last one's
     (Nautilus-One's two ``publish_camera`` nodes of ``camera_name`` front and down: both
-    were named after the down camera, two false multiple publishers)."""
-    names = Counter(decl.name for decl in launch.nodes if UNKNOWN_MARK not in decl.name)
-    shared = {index for index, decl in enumerate(launch.nodes) if names[decl.name] > 1}
+    were named after the down camera, two false multiple publishers). In ROS 1 two names
+    that read alike with ``?`` in them are two names as far as is known (robosub-ros'
+    ``$(anon pink_bins_detector)`` of two includes, of ``camera`` front and bottom, both
+    ``/pink_bins_detector_?``), each with the parameters of its <node> element; a ROS 2
+    name ``/?`` is a node not named yet, whose parameters go by their owner."""
+    named = [(index, decl.name) for index, decl in enumerate(launch.nodes)
+             if UNKNOWN_MARK not in decl.name or decl.ros_version == 1]
+    names = Counter(name for _, name in named)
+    shared = {index for index, name in named if names[name] > 1}
     found: dict[int, dict[str, ParamDecl]] = {}
     for param in given:
         if param.owner in shared and param.pattern is None:

@@ -121,8 +121,9 @@ class ParamDecl:
     location: Location = NOWHERE
     node: str | None = None  # ROS 2: full name of the node that owns the parameter
     key: str | None = None  # ROS 2: the parameter's dotted name within that node
-    # ROS 2: index in LaunchModel.nodes of the node declaration it was given to (several
-    # unnamed nodes share the name ``/?`` until the graph names them from their code)
+    # index in LaunchModel.nodes of the node declaration it was given to (ROS 2: several
+    # unnamed nodes share the name ``/?`` until the graph names them from their code;
+    # ROS 1: a parameter of a <node> element, two ``$(anon x)`` both ``/x_?``)
     owner: int | None = None
     # ROS 2: a parameter file's entry for particular nodes (``turtlebot3_node:``,
     # ``/**/amcl:``) given to a node whose name is not known yet: the rcl node name

@@ -37,7 +37,7 @@ from ..model import (
 from ..paths import missing_argument_paths, written_absolute
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
-from .scope import Scope, canonical, global_ns
+from .scope import Scope, canonical, global_ns, same_unknowns, unknown_parts
 from .substitution import ArgUndefined, Context, SubstitutionError, substitute, unclosed
 
 Element = etree._Element
@@ -88,9 +88,10 @@ class Ros1Loader:
         # submodule not checked out): what it declares is not known
         self.unread_files: list[Location] = []
         # the nodes started so far by name, and the anonymous parts of the name: two
-        # ``$(anon x)`` of one file are one name, those of two includes are not
-        self.node_names: dict[tuple[str, tuple[int, ...]],
-                              list[tuple[Location, tuple[Condition, ...]]]] = {}
+        # ``$(anon x)`` of one file are one name, those of two includes are not; each
+        # with its place, conditions and the unknown parts of its name
+        self.node_names: dict[tuple[str, tuple[int, ...]], list[tuple[
+            Location, tuple[Condition, ...], tuple[Unknown, ...]]]] = {}
         # each ``$(anon x)`` unknown met in a node name, by identity, with its number
         self.anon_parts: dict[int, tuple[Unknown, int]] = {}
         self.includes = 0
@@ -160,7 +161,14 @@ class Ros1Loader:
             return self.workspace.find(name)
 
         def declared(name: str) -> bool:
-            return name in scope.arg_names or (
+            # roslaunch makes every ``name:=value`` of its command line an argument of
+            # the top-level file (load_sysargs_into_context), declared or not, and
+            # pass_all_args hands them on: in a file that gets them (``command_line``)
+            # ``$(arg bag_filename)`` with no <arg> (cartographer_ros' demo launches)
+            # wants a value from the command line, unset as one declared without a
+            # value (LAUNCH_ARG_UNSET), and the text around it stays (dvrk_video's
+            # ``ns="$(arg rig_name)/left"`` is ``?/left``, not ``?``)
+            return name in scope.arg_names or scope.command_line or (
                 scope.include_args is not None and name in scope.outer_arg_names)
 
         ctx = Context(scope.args, self.environment, find, scope.filename,
@@ -169,13 +177,7 @@ class Ros1Loader:
         try:
             result = substitute(raw, ctx)
         except ArgUndefined as err:
-            if scope.command_line and err.name not in scope.arg_names:
-                # roslaunch makes every ``name:=value`` of its command line an argument
-                # of the top-level file (load_sysargs_into_context), declared or not, and
-                # pass_all_args hands them on: ``$(arg bag_filename)`` with no <arg>
-                # (cartographer_ros' demo launches) wants a value from the command line
-                self.report("LAUNCH_ARG_UNSET", scope, element, name=err.name)
-            elif err.name in scope.arg_names or scope.in_include:
+            if err.name in scope.arg_names or scope.in_include:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
                             path=self.workspace.relpath(scope.path), name=err.name)
             else:
@@ -448,12 +450,16 @@ class Ros1Loader:
     def ns_clear_params(self, element: Element, scope: Scope, node_name: str | None = None,
                         include: str | None = None) -> Scope | None:
         ns = None
+        unknowns: tuple[Unknown, ...] = ()
         if element.get("ns") is not None:
-            ns = self.text(element, "ns", scope)
+            value = self.value(element, "ns", scope)
+            ns = value.text if value is not None else None
             if not ns:
                 self.fail(scope, element, f"<{element.tag}> tag has an empty 'ns' attribute")
                 return None
-        inner = scope.include_child(ns, include) if include is not None else scope.child(ns)
+            unknowns = unknown_parts(value)
+        inner = (scope.include_child(ns, include, unknowns) if include is not None
+                 else scope.child(ns, unknowns))
         clear = self.flag(element, "clear_params", scope, False)
         if clear:
             if element.tag in ("node", "test"):
@@ -520,7 +526,8 @@ class Ros1Loader:
                     self.fail(scope, element, f"<test> tags cannot have '{attribute}'")
                     return
             test_name = self.text(element, "test-name", scope) or ""
-            name = self.text(element, "name", scope) or test_name
+            given = self.value(element, "name", scope)
+            name = (given.text if given is not None else "") or test_name
             anonymous: tuple[int, ...] = ()
         else:
             given = self.value(element, "name", scope)
@@ -538,6 +545,7 @@ class Ros1Loader:
             return
         private = inner.child(name)
         private.private = []
+        params_before = len(self.model.params)
         package = self.text(element, "pkg", scope) or ""
         executable = self.text(element, "type", scope) or ""
         machine = self.text(element, "machine", scope) or self.default_machine
@@ -601,15 +609,18 @@ class Ros1Loader:
             # roslaunch refuses two nodes of one name that it starts: certainly so when
             # they are under the same conditions; under conditions that cannot both
             # hold (<group if="$(eval model == 'a')"> and 'b') never; in between the
-            # duplicate-node-names query says it is not decided
+            # duplicate-node-names query says it is not decided. A name with unknown
+            # parts is one name only where they are the same unknowns (``same_unknowns``)
+            unknowns = (*inner.ns_unknowns, *unknown_parts(given))
             earlier = self.node_names.setdefault((full, anonymous), [])
-            other = next((where for where, conditions in earlier
-                          if same_conditions(conditions, scope.conditions)), None)
+            other = next((where for where, conditions, parts in earlier
+                          if same_conditions(conditions, scope.conditions)
+                          and same_unknowns(parts, unknowns)), None)
             if other is not None:
                 self.report("LAUNCH_NODE_DUPLICATE", scope, element, name=full,
                             other=f"{other.file}:{other.line}")
             else:
-                earlier.append((location, scope.conditions))
+                earlier.append((location, scope.conditions, unknowns))
         if machine and "?" not in machine:
             self.machine_uses.append((machine, self.where(scope, element)))
         try:
@@ -617,6 +628,12 @@ class Ros1Loader:
         except ValueError:
             self.fail(scope, element, f"respawn_delay must be a number: {delay!r}")
             respawn_delay = 0.0
+        # the parameters given in the <node> element are its own (``ParamDecl.owner``):
+        # two instances of one name (``$(anon x)`` of two includes, both ``/x_?`` here)
+        # each read theirs
+        for given_param in self.model.params[params_before:]:
+            if given_param.owner is None:
+                given_param.owner = len(self.model.nodes)
         self.model.nodes.append(NodeDecl(
             full, package, executable, inner.ns, args, list(remaps.remaps),
             scope.conditions, location, anonymous="$(anon" in element.get("name", ""),

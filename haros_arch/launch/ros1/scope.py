@@ -20,6 +20,30 @@ from ...model.location import NOWHERE, Location
 from ...model.values import Unknown, Value
 from .params import join
 
+# the unknowns that stand for one value wherever they are used: a substitution of an
+# argument or an environment variable (the command line's ``$(arg rig)`` is one value in
+# every namespace made of it); an unknown computed otherwise ($(eval) over known values
+# that may differ, a package not found) is not known to equal another of its spelling
+_ONE_VALUE = re.compile(r"(?:arg|env) \S+")
+
+
+def same_unknowns(one: tuple[Unknown, ...], other: tuple[Unknown, ...]) -> bool:
+    """Whether two names of one spelling with the unknown parts ``one`` and ``other``
+    (in order) are certainly one name: each pair of parts is one argument or
+    environment variable not known here, so whatever value it has, both have it.
+    Two nodes of ``/dvrk/$(arg master)/joint_state_publisher`` and
+    ``/dvrk/$(arg slave)/joint_state_publisher`` collide only when the two arguments
+    are given one value. An ``$(anon x)`` is one value in one file and another in each
+    include of it: the same unknown object (``Scope.anon``)."""
+    return len(one) == len(other) and all(
+        a is b or (a == b and not a.causes and _ONE_VALUE.fullmatch(a.origin) is not None)
+        for a, b in zip(one, other, strict=True))
+
+
+def unknown_parts(value: Value | None) -> tuple[Unknown, ...]:
+    """The unknown parts of ``value``, in order (none of None)."""
+    return () if value is None else tuple(p for p in value.parts if isinstance(p, Unknown))
+
 
 def canonical(name: str) -> str:
     """rosgraph's ``canonicalize_name``: no repeated or trailing slashes."""
@@ -85,21 +109,29 @@ class Scope:
     stack: tuple[tuple[str, tuple[tuple[str, str | None], ...]], ...] = ()
     # the launch tree's file or group being read (shared by the scopes made from it)
     item: LaunchItem = field(default_factory=lambda: LaunchItem("file", ""))
+    # the unknown parts of ``ns``, in order (each ``?`` of it): which values they are
+    # (``same_unknowns``)
+    ns_unknowns: tuple[Unknown, ...] = ()
 
     @classmethod
     def root(cls, path: str, args: dict[str, Value], namespace: str = "/") -> Scope:
         return cls(global_ns(namespace or "/"), path, path, args=dict(args))
 
-    def child(self, ns: str | None) -> Scope:
+    def child(self, ns: str | None, unknowns: tuple[Unknown, ...] = ()) -> Scope:
+        """A scope in namespace ``ns`` (relative to this one's unless global), whose
+        unknown parts are ``unknowns``."""
         child_ns = (ns if ns.startswith("/") else join(self.ns, ns)) if ns else self.ns
+        held = (unknowns if ns.startswith("/") else (*self.ns_unknowns, *unknowns)) if ns \
+            else self.ns_unknowns
         return replace(
             self, ns=global_ns(child_ns), args=dict(self.args), arg_names=list(self.arg_names),
             arg_conditions={k: list(v) for k, v in self.arg_conditions.items()},
             pass_all_args=False, private=self.private if self.private else [],
-            env=list(self.env), anon=dict(self.anon))
+            env=list(self.env), anon=dict(self.anon), ns_unknowns=held)
 
-    def include_child(self, ns: str | None, filename: str) -> Scope:
-        inner = self.child(ns)
+    def include_child(self, ns: str | None, filename: str,
+                      unknowns: tuple[Unknown, ...] = ()) -> Scope:
+        inner = self.child(ns, unknowns)
         inner.outer_arg_names = tuple(self.arg_names)
         inner.arg_names = []
         inner.arg_conditions = {}

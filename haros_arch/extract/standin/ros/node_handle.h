@@ -7,6 +7,33 @@
 #include <ros/service_server.h>
 #include <ros/timer.h>
 namespace ros {
+// roscpp's callback helpers, which a SubscribeOptions or AdvertiseServiceOptions holds as
+// its ``helper`` (a recorder's ShapeShifter subscription, a relay's service whose calls
+// it forwards: nimbro_service_transport's ``class CallbackHelper : public
+// ros::ServiceCallbackHelper``); no ROS call of their own
+class SubscriptionCallbackHelper {
+public:
+  virtual ~SubscriptionCallbackHelper();
+  virtual bool isConst();
+  virtual bool hasHeader();
+};
+typedef boost::shared_ptr<SubscriptionCallbackHelper> SubscriptionCallbackHelperPtr;
+// the callback's own parameter type ``P`` (``const M::ConstPtr&``, an event of M)
+template<typename P, typename Enabled = void>
+class SubscriptionCallbackHelperT : public SubscriptionCallbackHelper {
+public:
+  typedef boost::function<void(P)> Callback;
+  explicit SubscriptionCallbackHelperT(const Callback& callback);
+};
+struct ServiceCallbackHelperCallParams {
+  boost::shared_ptr<M_string> connection_header;
+};
+class ServiceCallbackHelper {
+public:
+  virtual ~ServiceCallbackHelper();
+  virtual bool call(ServiceCallbackHelperCallParams& params) = 0;
+};
+typedef boost::shared_ptr<ServiceCallbackHelper> ServiceCallbackHelperPtr;
 // what subscribe(ops) / advertise(ops) take; init<M> / create<M> hold the topic
 struct SubscribeOptions {
   SubscribeOptions();
@@ -32,6 +59,7 @@ struct SubscribeOptions {
   std::string datatype;
   CallbackQueueInterface* callback_queue;
   bool allow_concurrent_callbacks;
+  SubscriptionCallbackHelperPtr helper;
   VoidConstPtr tracked_object;
   TransportHints transport_hints;
 };
@@ -86,6 +114,7 @@ struct AdvertiseServiceOptions {
   std::string datatype;
   std::string req_datatype;
   std::string res_datatype;
+  ServiceCallbackHelperPtr helper;
   CallbackQueueInterface* callback_queue;
   VoidConstPtr tracked_object;
 };

@@ -21,6 +21,9 @@ public:
   ServiceClient();
   template<class Service> bool call(Service& service);
   template<class MReq, class MRes> bool call(MReq& req, MRes& res);
+  // with the service's md5sum given (a relay's serialized request and response: ``"*"``)
+  template<class MReq, class MRes>
+  bool call(const MReq& req, MRes& res, const std::string& service_md5sum);
   bool isValid() const;
   bool isPersistent() const;
   bool exists();

@@ -571,6 +571,11 @@ public:
   basic_string& assign(size_t n, C c);
   template<class It> basic_string& assign(It first, It last);
   basic_string& insert(size_t pos, const basic_string& s);
+  // one character before a position (``s.insert(s.begin(), '/')``): a template, as
+  // ``erase(It)`` below, since the iterator is a pointer here
+  template<class It, class = typename enable_if<is_same<It, C*>::value
+                                                || is_same<It, const C*>::value>::type>
+  iterator insert(It position, C c);
   basic_string& erase(size_t pos = 0, size_t n = npos);
   // one position (``s.erase(s.begin())``): a template, since the iterator is a pointer
   // here and ``s.erase(0)`` (a count) would find a null iterator as good a match
@@ -906,6 +911,7 @@ public:
   iterator find(const K& k);
   const_iterator find(const K& k) const;
   pair<iterator, bool> insert(const value_type& v);
+  iterator insert(const_iterator hint, const value_type& v);
   template<class... Args> pair<iterator, bool> emplace(Args&&... args);
   template<class M> pair<iterator, bool> insert_or_assign(const K& k, M&& value);
   template<class... Args> pair<iterator, bool> try_emplace(const K& k, Args&&... args);

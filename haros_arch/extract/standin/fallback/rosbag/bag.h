@@ -11,16 +11,14 @@
 #include <stdexcept>
 #include <boost/shared_ptr.hpp>
 #include <ros/time.h>
+#include <rosbag/macros.h>
+#include <rosbag/stream.h>
 
 namespace rosbag {
 namespace bagmode {
 enum BagMode { Write = 1, Read = 2, Append = 4 };
 }  // namespace bagmode
 typedef bagmode::BagMode BagMode;
-namespace compression {
-enum CompressionType { Uncompressed = 0, BZ2 = 1, LZ4 = 2 };
-}  // namespace compression
-typedef compression::CompressionType CompressionType;
 
 class BagException : public std::runtime_error {
  public:
