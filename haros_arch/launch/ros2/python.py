@@ -85,6 +85,7 @@ from .python_values import (
     _source,
     _Stop,
     conjunction,
+    derived_unknown,
     env_unset,
     launch_object,
     said_unknown,
@@ -917,8 +918,8 @@ class Interpreter(Expressions):
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
         said = len(self.diagnostics)
         value, test = self.test_of(stmt.test, env)
-        if test is None and len(self.diagnostics) == said and not env_unset((value,)) and (
-                said_unknown("test", [value]) is None):
+        if test is None and len(self.diagnostics) == said and (
+                derived_unknown("test", [value], None) is None):
             # a test not known whose value said nothing of why where it was made (an
             # environment variable not set, a call not run: said there) is said once,
             # at the test, if it guards an action (``guarding``); one unknown only
@@ -1342,23 +1343,15 @@ class Interpreter(Expressions):
             handler = self.api.get(name) or self.api.get(short)  # xacro.parse: by module
             if handler is not None and (_known_module(name) or short in self.builtins):
                 self.charge_arguments([*args, *kwargs.values()])
-                result = handler(self, args, kwargs, node)
-                if isinstance(result, Unknown) and result.kind != "unsupported":
-                    # not known as an argument said not known where it was made is not
-                    # (``os.path.expanduser`` of a path read from a file outside the
-                    # workspace): said no more where it is used
-                    return said_unknown(f"{short}()", [*args, *kwargs.values()]) or result
-                return result
+                # ``os.path.expanduser`` of a path read from a file outside the workspace
+                return _said_through(handler(self, args, kwargs, node), f"{short}()",
+                                     [*args, *kwargs.values()])
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
             self.charge_arguments([func.owner, *args, *kwargs.values()])
-            result = func.call(self, args, kwargs, node)
-            if isinstance(result, Unknown) and result.kind != "unsupported":
-                # a method of a value said not known where it was made, or given one
-                # (``os.popen(cmd).read().split()``): said no more where it is used
-                return said_unknown(f".{func.attr}()", [func.owner, *args,
-                                                        *kwargs.values()]) or result
-            return result
+            # ``os.popen(cmd).read().split()``: a method of a value said not known
+            return _said_through(func.call(self, args, kwargs, node), f".{func.attr}()",
+                                 [func.owner, *args, *kwargs.values()])
         if isinstance(func, Unknown) and func.origin.startswith("class "):
             return self.unsupported(node, f"call to {func.origin}")
         callee = _source(node.func) if isinstance(node, ast.Call) else "?"
@@ -1608,6 +1601,15 @@ def _scope_of(name: str, closure: dict[str, Any] | None, module: bool
     return None
 
 
+def _said_through(result: Any, what: str, values: list[Any]) -> Any:
+    """A library function's or a method's result, said no more where it is used when it
+    is not known because one of ``values`` (its arguments, the method's owner) was said
+    not known where it was made (``said_unknown``)."""
+    if isinstance(result, Unknown) and result.kind != "unsupported":
+        return said_unknown(what, values) or result
+    return result
+
+
 def _unexpected_keywords(params: ast.arguments, kwargs: dict[str, Any]) -> list[str]:
     """The keywords of a call that the function's parameters do not take: none when it
     has ``**kwargs``; a positional-only parameter is no keyword (Python's TypeError)."""
@@ -1692,7 +1694,6 @@ def _returns(body: list[ast.stmt]) -> bool:
 # and one that takes both branches of an isinstance() test not known doubles per level)
 _RECURSION_UNKNOWN = 3
 
-# Python's builtin exception classes by name, to tell which handler catches which
 # names whose use may bind any other name at run time (``names_bound``)
 _DYNAMIC = frozenset(("exec", "eval", "globals", "locals", "vars", "setattr", "__dict__",
                       "__builtins__", "__import__", "importlib", "modules"))
@@ -1733,6 +1734,7 @@ def names_bound(tree: ast.Module) -> frozenset[str] | None:
     return frozenset(bound)
 
 
+# Python's builtin exception classes by name, to tell which handler catches which
 _EXCEPTIONS: dict[str, type] = {
     name: value for name, value in vars(builtins).items()
     if isinstance(value, type) and issubclass(value, BaseException)}

@@ -448,11 +448,11 @@ def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 
 def eval_text(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """Python's ``eval`` of a text known here, with no names of the file's own: the
-    value the one expression evaluator gives it, as ``PythonExpression`` (yolo_ros' launch
-    file reads its boolean arguments with ``eval(context.perform_substitution(...))``);
-    never run as code. Any other (a text not known, globals or locals given) is not
-    known."""
+    """Python's ``eval`` reached other than by a call written ``eval(text)`` (which
+    ``Expressions.eval_source`` reads with the caller's names), or given globals or
+    locals: of a text known here, the value the one expression evaluator gives it, as
+    ``PythonExpression``, with no names of the file's own; never run as code. Any other
+    (a text not known, globals or locals given) is not known."""
     source = a[0] if a else k.get("source")
     if len(a) > 1 or set(k) - {"source"} or not isinstance(source, str):
         return i.unsupported(n, "eval of a value not known statically")

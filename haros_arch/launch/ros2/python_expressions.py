@@ -51,8 +51,7 @@ from .python_values import (
     concat,
     conjunction,
     derived,
-    env_unknown,
-    env_unset,
+    derived_unknown,
     is_lazy,
     is_stringy,
     launch_object,
@@ -221,14 +220,14 @@ class Expressions(Walker):
                                           + ", ".join(f"'from {m} import *'" for m in stars)
                                           + (", a module" if len(stars) == 1 else ", modules")
                                           + " not found")
+        if hasattr(builtins, name):  # a builtin of Python the reader does not run
+            return self.unsupported(node, f"builtin {name} is not interpreted (never run)")
         bindings = self.bindings.get(self.path)
-        if bindings is not None and name not in bindings and not hasattr(builtins, name):
+        if bindings is not None and name not in bindings:
             # bound nowhere in the file, in code run or not: Python's NameError there
             return self.failed(node, f"name {name} is not defined anywhere in the file: "
                                "Python raises NameError here, and launch stops",
                                f"NameError: name '{name}' is not defined")
-        if hasattr(builtins, name):  # a builtin of Python the reader does not run
-            return self.unsupported(node, f"builtin {name} is not interpreted (never run)")
         return self.unsupported(node, f"name {name} is not defined here")
 
     # -- this configuration of the one evaluator's walk (``Walker``) -------------------
@@ -265,14 +264,10 @@ class Expressions(Walker):
 
     def not_known(self, node: ast.AST, what: str, values: Iterable[object]) -> Any:
         """An operation on a substitution or an unknown: an unknown, which says what
-        (one of values unknown only through unset environment variables: ``env_unknown``)."""
-        values = list(values)
+        (one of values already said not known: ``derived_unknown``)."""
         # an ``and`` / ``or`` stops at its first operand not known: the later ones, not
         # evaluated, are unknown for causes of their own
-        causes = env_unset(values) if what != "boolean" else ()
-        if causes:
-            return env_unknown(what, causes, self.where(node))
-        made = said_unknown(what, values) if what != "boolean" else None
+        made = derived_unknown(what, values, self.where(node)) if what != "boolean" else None
         if made is not None:
             return made
         if what == "comparison":

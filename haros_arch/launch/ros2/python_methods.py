@@ -39,8 +39,7 @@ from .python_values import (
     _hashable,
     _source,
     concat,
-    env_unknown,
-    env_unset,
+    derived_unknown,
     launch_object,
     open_keys,
     said_unknown,
@@ -91,11 +90,9 @@ def builtin(function: Callable[..., Any], *types: type,
         if k or not all(accepts(v) for v in a) or any(
                 isinstance(x, Unknown) for v in a if isinstance(v, (list, tuple, dict))
                 for x in v):  # an unknown item (a dict's: under an unknown key)
-            causes = env_unset(a) if not k else ()
-            if causes:
-                return env_unknown(f"{name}()", causes, i.where(n))
-            return said_unknown(f"{name}()", a) or Unknown(
-                f"{name}() of values not known statically")
+            made = derived_unknown(f"{name}()", a, i.where(n)) if not k else said_unknown(
+                f"{name}()", a)
+            return made or Unknown(f"{name}() of values not known statically")
         try:
             return ops.call_builtin(function, a, {}, LIMITS)
         except ops.Refused as err:
@@ -340,10 +337,8 @@ def type_of(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def bounded_range(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if not all(isinstance(v, int) for v in a) or not a:
-        causes = env_unset(a)
-        if causes:
-            return env_unknown("range()", causes, i.where(n))
-        return said_unknown("range()", a) or Unknown("range of unknown bounds")
+        return derived_unknown("range()", a, i.where(n)) or Unknown(
+            "range of unknown bounds")
     values = range(*a)
     if len(values) > 10_000:
         return i.unsupported(n, "range() above 10000 items is not expanded")

@@ -498,6 +498,19 @@ def _said_parts(text: e.Text) -> e.Opaque | None:
     return first
 
 
+def derived_unknown(what: str, values: Iterable[Any], where: Location | None
+                    ) -> Unknown | None:
+    """What Python computes from ``values`` when one is already said not known: unknown
+    only through unset environment variables (``env_unknown``, said where they were
+    read), or through a value a construct not interpreted made (``said_unknown``); None
+    when neither, and the caller says why it is not known."""
+    values = list(values)
+    causes = env_unset(values)
+    if causes:
+        return env_unknown(what, causes, where)
+    return said_unknown(what, values)
+
+
 def env_unknown(what: str, causes: tuple[str, ...], where: Location | None) -> Unknown:
     """What Python computes from values unknown only through unset environment
     variables (``int(os.environ['DRONE_ID'])``, ``count > 0``): unknown, and said where
