@@ -103,6 +103,16 @@ PROCESSES: WeakKeyDictionary[NodeInstance, tuple[NodeDecl, NodeInstance]] = (
     WeakKeyDictionary())
 
 
+def _add_hosted(instance: NodeInstance, host: NodeInstance, config: Configuration) -> None:
+    """Add a node instance its host makes (a controller, a plugin's own node) to the
+    configuration: its id, another of its name counted, and its host's process."""
+    taken = sum(1 for n in config.nodes if n.name == instance.name)
+    instance.id = f"node:{instance.name}" + (f"#{taken + 1}" if taken else "")
+    config.nodes.append(instance)
+    if host in PROCESSES:
+        PROCESSES[instance] = PROCESSES[host]
+
+
 class Params(Protocol):
     """The configuration's parameters by name (``graph.build.Resources`` is one)."""
 
@@ -567,11 +577,7 @@ def _child_instance(decl: NodeDecl, host: NodeInstance, child: Child,
                             args=host.args, conditions=host.conditions,
                             location=host.location, origin="plugin",
                             ros_version=host.ros_version)
-    taken = sum(1 for n in config.nodes if n.name == name)
-    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
-    config.nodes.append(instance)
-    if host in PROCESSES:
-        PROCESSES[instance] = PROCESSES[host]
+    _add_hosted(instance, host, config)
     process_file_params(decl, instance, params)
     return instance, node
 
@@ -1451,11 +1457,7 @@ def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
                             conditions=(*host.conditions, *choice.conditions),
                             location=choice.location, origin="plugin",
                             ros_version=host.ros_version)
-    taken = sum(1 for n in config.nodes if n.name == name)
-    instance.id = f"node:{name}" + (f"#{taken + 1}" if taken else "")
-    config.nodes.append(instance)
-    if host in PROCESSES:
-        PROCESSES[instance] = PROCESSES[host]
+    _add_hosted(instance, host, config)
     return instance
 
 
