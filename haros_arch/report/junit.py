@@ -6,12 +6,17 @@ report also says what was checked.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from xml.etree import ElementTree as ET
 
 from ..model.diagnostic import Diagnostic
 from ..model.finding import Finding
 from .escape import printable
+
+
+def _also(places: Sequence[object]) -> str:
+    """The other places of the same problem, as a line of the failure's text."""
+    return f"\nalso at: {', '.join(map(str, places))}" if places else ""
 
 
 def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = (),
@@ -21,11 +26,10 @@ def to_junit(findings: Iterable[Finding], diagnostics: Iterable[Diagnostic] = ()
         configs = ", ".join(f.configurations)
         name = f"{configs}: {f.location}" if configs else str(f.location)
         cases.setdefault(f.rule, []).append((name, f.severity, f.title, f.message + (
-            f"\ninvolves: {', '.join(f.entities)}" if f.entities else "") + (
-            f"\nalso at: {', '.join(map(str, f.also))}" if f.also else "")))
+            f"\ninvolves: {', '.join(f.entities)}" if f.entities else "") + _also(f.also)))
     for d in diagnostics:
-        cases.setdefault(d.code, []).append((str(d.location), d.severity, d.code, d.message + (
-            f"\nalso at: {', '.join(map(str, d.also))}" if d.also else "")))
+        cases.setdefault(d.code, []).append((str(d.location), d.severity, d.code,
+                                             d.message + _also(d.also)))
     root = ET.Element("testsuites", name="haros-arch")
     total = failures = 0
     for rule, items in sorted(cases.items()):

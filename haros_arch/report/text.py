@@ -68,9 +68,9 @@ def _places(places: list[Location], exclude: Diagnostic, limit: int | None) -> s
     distinct, in order, not ``exclude``'s own), the first ``limit``, then how many more;
     empty when none is left."""
     file = exclude.location.file
-    texts = [f"{'' if where.file == file else f'{where.file}:'}{where.line}:{where.column}"
-             for where in dict.fromkeys(places) if where != exclude.location]
-    texts = list(dict.fromkeys(texts))
+    texts = list(dict.fromkeys(
+        f"{'' if where.file == file else f'{where.file}:'}{where.line}:{where.column}"
+        for where in places if where != exclude.location))
     text = ", ".join(texts[:limit])
     if limit is not None and len(texts) > limit:
         text += f" and {len(texts) - limit} more"
