@@ -14,10 +14,7 @@ could be missed and the node was partial."""
 from __future__ import annotations
 
 import pytest
-from conftest import package_xml
-
-from haros_arch.extract.cpp import extract_cpp
-from haros_arch.workspace import scan
+from standin_gap_checks import assert_call_found
 
 HEAD = ("#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
         "#include <cstring>\n#include <random>\n#include <sstream>\n")
@@ -124,16 +121,9 @@ CASES = {
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
     include, body = CASES[case]
-    (tmp_path / "package.xml").write_text(package_xml("node", "ament_cmake"))
-    source = tmp_path / "node.cpp"
-    source.write_text(
+    assert_call_found(tmp_path, (
         HEAD + include + "class Node : public rclcpp::Node {\npublic:\n"
         "  Node() : rclcpp::Node(\"node\") {\n" + body +
         "    pub_ = create_publisher<std_msgs::msg::String>(\"out\", 1);\n  }\n"
-        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
-                         distro="jazzy")
-    assert [(d.location.line, d.message) for d in result.diagnostics
-            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
-                          "CPP_INCLUDE_MISSING")] == []
-    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
+        "  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;\n};\n"),
+        "ament_cmake", "jazzy")

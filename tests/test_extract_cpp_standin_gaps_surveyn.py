@@ -9,12 +9,7 @@ gazebo_plugins is not in the workspace)."""
 from __future__ import annotations
 
 import pytest
-from conftest import package_xml
-
-from haros_arch.extract.cpp import extract_cpp
-from haros_arch.workspace import scan
-
-HEAD = "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+from standin_gap_checks import assert_call_found, ros1_main
 
 CASES = {
     "function_diagnostic_task": (
@@ -45,15 +40,4 @@ CASES = {
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
     include, body = CASES[case]
-    (tmp_path / "package.xml").write_text(package_xml("node"))
-    source = tmp_path / "node.cpp"
-    source.write_text(
-        HEAD + include + "int main(int argc, char** argv) {\n"
-        "  ros::init(argc, argv, \"node\");\n  ros::NodeHandle nh;\n" + body +
-        "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n}\n")
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
-                         distro="noetic")
-    assert [(d.location.line, d.message) for d in result.diagnostics
-            if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_NAMES_DECLARED",
-                          "CPP_INCLUDE_MISSING")] == []
-    assert [(c.kind, c.name) for c in result.calls if c.name == "out"] == [("publish", "out")]
+    assert_call_found(tmp_path, ros1_main(include, body))
