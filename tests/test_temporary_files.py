@@ -9,6 +9,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 from concurrent.futures import ProcessPoolExecutor
 
 from conftest import FIXTURES
@@ -36,7 +37,8 @@ def test_a_prelude_built_in_a_worker_is_removed_when_the_worker_ends(tmp_path, m
 # SIGTERM (to the process itself, or from a worker to the main process) after listing
 # the temporary folder, which must hold the run's folders by then
 STOPPED_RUN = """
-import os, signal, sys, tempfile
+import faulthandler, os, signal, sys, tempfile
+faulthandler.register(signal.SIGUSR1, all_threads=True)  # where a run that hangs waits
 from haros_arch import cli
 from haros_arch.extract import cpp
 
@@ -66,6 +68,8 @@ def _stopped_run(tmp_path, jobs: str) -> None:
     try:
         stdout, stderr = run.communicate(timeout=300)  # a loaded machine is slow
     except subprocess.TimeoutExpired:
+        os.kill(run.pid, signal.SIGUSR1)  # its threads' stacks, into the message below
+        time.sleep(2)
         os.killpg(run.pid, signal.SIGKILL)
         stdout, stderr = run.communicate()
         raise AssertionError(f"the stopped run did not end: {stdout}{stderr}") from None
