@@ -19,7 +19,7 @@ import time
 from collections.abc import Callable, Iterator
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures import TimeoutError as FutureTimeout
-from types import TracebackType
+from types import FrameType, TracebackType
 from typing import Any
 
 
@@ -47,7 +47,11 @@ class _Held:
         if threading.current_thread() is not threading.main_thread():
             return
         self.depth -= 1
-        if self.depth == 0 and kind is None:  # else that exception unwinds the run
+        if self.depth == 0 and (kind is None or (issubclass(kind, Exception) and isinstance(
+                self.requested, (KeyboardInterrupt, SystemExit)))):
+            # a stop also wins over an error of the block, which may be its consequence
+            # (a pool whose workers the same SIGTERM ended: BrokenProcessPool); else
+            # that exception unwinds the run
             raise_if_stopped()
 
 
@@ -70,25 +74,73 @@ def raise_if_stopped() -> None:
         raise held_signals.requested
 
 
-def _stopped(signum: int, _frame: Any) -> None:
+def _stopped(signum: int, frame: FrameType | None) -> None:
     error: BaseException = (KeyboardInterrupt() if signum == signal.SIGINT
                             else SystemExit(128 + signum))
     if signum == signal.SIGTERM:
         # once: a second SIGTERM (``timeout`` signals the whole process group, a worker
         # may pass one on) must not interrupt the unwinding the first one started
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    _request(error)
+    _request(error, frame)
 
 
-def _request(error: BaseException) -> None:
+def _request(error: BaseException, frame: FrameType | None = None) -> None:
     """Keep ``error`` as the one the run was asked for (a stop of the run over a unit's
     time limit, not the other way round) and raise it, unless a call into C runs our
-    callbacks (``_Held``): then it is raised when that call ends."""
+    callbacks (``_Held``): then it is raised when that call ends; or unless the signal
+    came while a finaliser ran (``frame``: ``_in_finaliser``): then it is raised again
+    soon (``_again_soon``)."""
     held = held_signals.requested
     if held is None or (isinstance(held, OverTime) and not isinstance(error, OverTime)):
         held_signals.requested = error
-    if not held_signals.depth:
-        raise error
+    if held_signals.depth:
+        return
+    if _in_finaliser(frame):
+        _again_soon()
+        return
+    raise error
+
+
+# how deep the frames of a signal's Python code are looked through for a finaliser
+FINALISER_FRAMES = 64
+# how soon a stop that came while a finaliser ran is raised again (``_again_soon``)
+AGAIN_SECONDS = 0.01
+
+
+def _in_finaliser(frame: FrameType | None) -> bool:
+    """Whether the code a signal interrupted runs in a finaliser (``__del__``, which the
+    interpreter calls wherever an object's last reference goes: libclang's strings and
+    translation units in a worker's walk). Raised there, the stop is printed as an
+    "Exception ignored" with its traceback and dropped."""
+    for _ in range(FINALISER_FRAMES):
+        if frame is None:
+            return False
+        if frame.f_code.co_name == "__del__":
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _again_soon() -> None:
+    """Raise the stop asked for again in ``AGAIN_SECONDS`` (SIGALRM, whose handler is put
+    back once it came), out of the finaliser it came in by then."""
+    if signal.getsignal(signal.SIGALRM) is _again:
+        return  # on its way already
+    _AGAIN_PREVIOUS[:] = [signal.getsignal(signal.SIGALRM) or signal.SIG_DFL]
+    signal.signal(signal.SIGALRM, _again)
+    signal.setitimer(signal.ITIMER_REAL, AGAIN_SECONDS)
+
+
+# the SIGALRM handler ``_again`` stands in for while it is set
+_AGAIN_PREVIOUS: list[Any] = []
+
+
+def _again(_signum: int, frame: FrameType | None) -> None:
+    if _AGAIN_PREVIOUS:
+        signal.signal(signal.SIGALRM, _AGAIN_PREVIOUS.pop())
+    stop = held_signals.requested
+    if stop is not None:
+        _request(stop, frame)
 
 
 @contextlib.contextmanager
@@ -314,8 +366,8 @@ def cpu_limit(seconds: float) -> Iterator[None]:
         yield
         return
 
-    def over(_signum: int, _frame: Any) -> None:
-        _request(OverTime(seconds))
+    def over(_signum: int, frame: FrameType | None) -> None:
+        _request(OverTime(seconds), frame)
 
     previous = signal.signal(signal.SIGPROF, over)
     signal.setitimer(signal.ITIMER_PROF, seconds)

@@ -314,3 +314,45 @@ def test_a_stop_while_waiting_for_a_result_ends_the_run():
         raise AssertionError(f"the stopped run did not end: {stdout}{stderr}") from None
     assert run.returncode == 143, stdout + stderr
     assert "Traceback" not in stderr, stderr
+
+
+# a stop (SIGTERM to the run's process group, as ``timeout`` sends it) whose handler
+# runs in a finaliser: in the run itself, and in a pool's worker within a task
+# (libclang's objects are freed all through a walk). Raised there, Python printed it as
+# an "Exception ignored" with its traceback and dropped it: the run went on to its end.
+# With a pool, the run's own stop, held while it waited for a result, lost to the
+# BrokenProcessPool its ended worker left: "internal error" instead of 143
+STOPPED_IN_FINALISER = """
+import os, signal, sys, time
+from haros_arch import processes
+
+class Freed:
+    def __del__(self):
+        os.killpg(0, signal.SIGTERM)  # its handler runs here, before this returns
+        self.after = [n for n in range(10)]
+
+def work(index):
+    Freed()
+    for _ in range(200):  # the stop must end this within two seconds
+        time.sleep(0.01)
+    return index
+
+with processes.stop_signals():
+    if sys.argv[1] == "pool":
+        with processes.worker_pool(1) as pool:
+            print("result", list(pool.map(work, range(2))), flush=True)
+    else:
+        print("result", work(0), flush=True)
+"""
+
+
+@pytest.mark.parametrize("where", ["run", "pool"])
+def test_a_stop_in_a_finaliser_ends_the_run_with_no_traceback(where):
+    import subprocess
+    import sys
+
+    run = subprocess.run([sys.executable, "-c", STOPPED_IN_FINALISER, where], text=True,
+                         capture_output=True, timeout=120, start_new_session=True)
+    assert "result" not in run.stdout, run.stdout + run.stderr
+    assert "Traceback" not in run.stderr and "Exception ignored" not in run.stderr, run.stderr
+    assert run.returncode == 143, run.stdout + run.stderr
