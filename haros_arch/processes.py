@@ -74,51 +74,49 @@ def raise_if_stopped() -> None:
         raise held_signals.requested
 
 
-def _stopped(signum: int, frame: FrameType | None) -> None:
+def _stopped(signum: int, _frame: FrameType | None) -> None:
     error: BaseException = (KeyboardInterrupt() if signum == signal.SIGINT
                             else SystemExit(128 + signum))
     if signum == signal.SIGTERM:
         # once: a second SIGTERM (``timeout`` signals the whole process group, a worker
         # may pass one on) must not interrupt the unwinding the first one started
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    _request(error, frame)
+    _request(error)
 
 
-def _request(error: BaseException, frame: FrameType | None = None) -> None:
+def _request(error: BaseException) -> None:
     """Keep ``error`` as the one the run was asked for (a stop of the run over a unit's
     time limit, not the other way round) and raise it, unless a call into C runs our
-    callbacks (``_Held``): then it is raised when that call ends; or unless the signal
-    came while a finaliser ran (``frame``: ``_in_finaliser``): then it is raised again
-    soon (``_again_soon``)."""
+    callbacks (``_Held``): then it is raised when that call ends. Raised where Python
+    cannot pass it on (a finaliser, a callback of C code not held), it is raised again
+    soon (``_unraisable``)."""
     held = held_signals.requested
     if held is None or (isinstance(held, OverTime) and not isinstance(error, OverTime)):
         held_signals.requested = error
-    if held_signals.depth:
-        return
-    if _in_finaliser(frame):
-        _again_soon()
-        return
-    raise error
+    if not held_signals.depth:
+        raise error
 
 
-# how deep the frames of a signal's Python code are looked through for a finaliser
-FINALISER_FRAMES = 64
-# how soon a stop that came while a finaliser ran is raised again (``_again_soon``)
+# how soon a stop that was raised where Python could not pass it on is raised again
 AGAIN_SECONDS = 0.01
 
 
-def _in_finaliser(frame: FrameType | None) -> bool:
-    """Whether the code a signal interrupted runs in a finaliser (``__del__``, which the
-    interpreter calls wherever an object's last reference goes: libclang's strings and
-    translation units in a worker's walk). Raised there, the stop is printed as an
-    "Exception ignored" with its traceback and dropped."""
-    for _ in range(FINALISER_FRAMES):
-        if frame is None:
-            return False
-        if frame.f_code.co_name == "__del__":
-            return True
-        frame = frame.f_back
-    return False
+def _unraisable(unraisable: Any) -> None:
+    """``sys.unraisablehook`` within ``stop_signals``: the stop asked for, raised in a
+    finaliser (``__del__``, which the interpreter calls wherever an object's last
+    reference goes: libclang's strings and translation units in a walk) or in a callback
+    of C code (libclang's ``get_includes``), is raised again soon (``_again_soon``), not
+    printed with its traceback as an ignored exception and dropped; anything else goes
+    to the hook before it."""
+    if unraisable.exc_value is not None and unraisable.exc_value is held_signals.requested:
+        _again_soon()
+        return
+    before = _UNRAISABLE_BEFORE[-1] if _UNRAISABLE_BEFORE else sys.__unraisablehook__
+    before(unraisable)
+
+
+# the hooks ``_unraisable`` stands in for (``stop_signals``)
+_UNRAISABLE_BEFORE: list[Callable[[Any], None]] = []
 
 
 def _again_soon() -> None:
@@ -135,22 +133,22 @@ def _again_soon() -> None:
 _AGAIN_PREVIOUS: list[Any] = []
 
 
-def _again(_signum: int, frame: FrameType | None) -> None:
+def _again(_signum: int, _frame: FrameType | None) -> None:
     if _AGAIN_PREVIOUS:
         signal.signal(signal.SIGALRM, _AGAIN_PREVIOUS.pop())
     stop = held_signals.requested
     if stop is not None:
-        _request(stop, frame)
+        _request(stop)
 
 
 @contextlib.contextmanager
 def stop_signals() -> Iterator[None]:
     """Within the block Ctrl-C raises KeyboardInterrupt and the first SIGTERM
     ``SystemExit(143)`` (later ones are ignored), held while ``held_signals`` is and
-    raised again where one was dropped (``_Held``): the run unwinds. By default Python
-    ends at once on SIGTERM and leaves its temporary folders (and, with a pool, the
-    workers). Nothing is changed off the main thread, nor a handler of the program's
-    own."""
+    raised again where one was dropped (``_Held``, ``_unraisable``): the run unwinds.
+    By default Python ends at once on SIGTERM and leaves its temporary folders (and,
+    with a pool, the workers). Nothing is changed off the main thread, nor a handler
+    of the program's own."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -159,6 +157,8 @@ def stop_signals() -> Iterator[None]:
     ours = [signum for signum, handler in defaults.items() if previous[signum] is handler]
     for signum in ours:
         signal.signal(signum, _stopped)
+    _UNRAISABLE_BEFORE.append(sys.unraisablehook)
+    sys.unraisablehook = _unraisable
     try:
         yield
     finally:  # not SIGTERM's once it came: it stays ignored while the process ends
@@ -166,6 +166,9 @@ def stop_signals() -> Iterator[None]:
         for signum in ours:
             if signal.getsignal(signum) is _stopped:
                 signal.signal(signum, previous[signum])
+        before = _UNRAISABLE_BEFORE.pop()
+        if sys.unraisablehook is _unraisable:
+            sys.unraisablehook = before
 
 
 # how long a stopped run waits for its workers to end after passing the stop on to
@@ -366,8 +369,8 @@ def cpu_limit(seconds: float) -> Iterator[None]:
         yield
         return
 
-    def over(_signum: int, frame: FrameType | None) -> None:
-        _request(OverTime(seconds), frame)
+    def over(_signum: int, _frame: FrameType | None) -> None:
+        _request(OverTime(seconds))
 
     previous = signal.signal(signal.SIGPROF, over)
     signal.setitimer(signal.ITIMER_PROF, seconds)

@@ -317,13 +317,14 @@ def test_a_stop_while_waiting_for_a_result_ends_the_run():
 
 
 # a stop (SIGTERM to the run's process group, as ``timeout`` sends it) whose handler
-# runs in a finaliser: in the run itself, and in a pool's worker within a task
-# (libclang's objects are freed all through a walk). Raised there, Python printed it as
-# an "Exception ignored" with its traceback and dropped it: the run went on to its end.
+# runs in a finaliser or a callback of C code: in the run itself, and in a pool's
+# worker within a task (libclang's objects are freed all through a walk; its
+# ``get_includes`` calls back). Raised there, Python printed it as an "Exception
+# ignored" with its traceback and dropped it: the run went on to its end.
 # With a pool, the run's own stop, held while it waited for a result, lost to the
 # BrokenProcessPool its ended worker left: "internal error" instead of 143
 STOPPED_IN_FINALISER = """
-import os, signal, sys, time
+import ctypes, os, signal, sys, time
 from haros_arch import processes
 
 class Freed:
@@ -331,8 +332,17 @@ class Freed:
         os.killpg(0, signal.SIGTERM)  # its handler runs here, before this returns
         self.after = [n for n in range(10)]
 
+def compare(a, b):
+    os.killpg(0, signal.SIGTERM)  # in a callback of C code (libc's qsort)
+    return 0
+
 def work(index):
-    Freed()
+    if sys.argv[2] == "finaliser":
+        Freed()
+    else:
+        values = (ctypes.c_int * 2)(2, 1)
+        kind = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p)
+        ctypes.CDLL(None).qsort(values, 2, ctypes.sizeof(ctypes.c_int), kind(compare))
     for _ in range(200):  # the stop must end this within two seconds
         time.sleep(0.01)
     return index
@@ -347,11 +357,12 @@ with processes.stop_signals():
 
 
 @pytest.mark.parametrize("where", ["run", "pool"])
-def test_a_stop_in_a_finaliser_ends_the_run_with_no_traceback(where):
+@pytest.mark.parametrize("inside", ["finaliser", "callback"])
+def test_a_stop_in_a_finaliser_or_callback_ends_the_run_with_no_traceback(where, inside):
     import subprocess
     import sys
 
-    run = subprocess.run([sys.executable, "-c", STOPPED_IN_FINALISER, where], text=True,
+    run = subprocess.run([sys.executable, "-c", STOPPED_IN_FINALISER, where, inside], text=True,
                          capture_output=True, timeout=120, start_new_session=True)
     assert "result" not in run.stdout, run.stdout + run.stderr
     assert "Traceback" not in run.stderr and "Exception ignored" not in run.stderr, run.stderr
