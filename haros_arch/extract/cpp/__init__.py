@@ -1837,6 +1837,8 @@ def _translation_unit(path: str, text: str, ros2: bool,
                             missing_headers=[] if clients is None else absent)
         finder.run()
         places = _Places(finder, source)
+        # (said above; what hides nothing is left out of what may hide a call)
+        errors = [e for e in errors if not places.logged(e)]
         hidden = _hidden(path, errors, places, fieldless, workspace)
         if wrappers is None:
             wrappers = _again_for(tu, errors, finder, hidden, source, fieldless)
@@ -2467,6 +2469,29 @@ class _Places:
                 scopes.add(word)
         found = self._static[key] = frozenset(scopes)
         return found
+
+    def logged(self, error: _Error) -> bool:
+        """Whether ``error`` is inside the arguments of a logging macro (``RCLCPP_INFO``,
+        ``ROS_WARN_STREAM``: ``recall.log_statements``) that holds no ROS call site of
+        the API or the unit's wrappers: such a statement writes a message, and hides no
+        call (mavros' ``RCLCPP_INFO(..., mavlink::version)`` with mavlink's generated
+        headers absent left its router and UAS partial)."""
+        data = self.source.get(error.path) if error.path is not None else None
+        if data is None:
+            return False
+        span = next(((start, end) for start, end in recall.log_statements(data)
+                     if start <= error.offset < end), None)
+        if span is None:
+            return False
+        assert error.path is not None
+        text = self.source.text(error.path) or ""
+        wrappers = self.finder.wrappers
+        sites = recall.call_sites(text, sorted(n for n in wrappers.site_names if n),
+                                  wrappers.site_names_bare, self.finder.ros2,
+                                  wrappers.site_qualifiers)
+        first = data.count(b"\n", 0, span[0]) + 1
+        last = first + data.count(b"\n", span[0], span[1])
+        return not any(first <= site.line <= last for site in sites)
 
     def words(self, error: _Error) -> frozenset[bytes] | None:
         """The words of the code where ``error`` can hide a statement: the text of the

@@ -418,6 +418,65 @@ def in_call(lines: Sequence[str], sites: Sequence[Site], line: int) -> bool:
                if s.line <= line < s.line + STATEMENT_LINES)
 
 
+# a logging macro of roscpp / rosconsole, rclcpp, rcutils or nodelet (``ROS_INFO``,
+# ``ROS_WARN_STREAM_THROTTLE``, ``RCLCPP_ERROR_ONCE``, ``RCUTILS_LOG_INFO_NAMED``,
+# ``NODELET_DEBUG``), to its opening parenthesis: a statement that writes a message
+_LOG_MACRO = re.compile(
+    rb"\b(?:ROS|RCLCPP|RCUTILS_LOG|NODELET)_(?:DEBUG|INFO|WARN|ERROR|FATAL)(?:_[A-Z_]+)?"
+    rb"\s*\(")
+LOG_STATEMENT_BYTES = 4096  # how far the end of one is looked for
+
+
+def _closing(data: bytes, start: int) -> int | None:
+    """The offset just past the parenthesis that closes the one at ``start``, strings,
+    character literals and comments read over; None when not found within
+    ``LOG_STATEMENT_BYTES``."""
+    depth = 0
+    at = start
+    end = min(len(data), start + LOG_STATEMENT_BYTES)
+    while at < end:
+        char = data[at]
+        if char in (0x22, 0x27):  # a string or a character literal
+            if char == 0x27 and at > 0 and data[at - 1:at].isdigit():
+                at += 1  # a digit separator (1'000)
+                continue
+            at += 1
+            while at < end and data[at] != char:
+                at += 2 if data[at] == 0x5C else 1  # a backslash escapes the next byte
+            at += 1
+            continue
+        if data.startswith(b"//", at):
+            newline = data.find(b"\n", at, end)
+            at = end if newline < 0 else newline
+            continue
+        if data.startswith(b"/*", at):
+            close = data.find(b"*/", at + 2, end)
+            if close < 0:
+                return None
+            at = close + 2
+            continue
+        if char == 0x28:
+            depth += 1
+        elif char == 0x29:
+            depth -= 1
+            if depth == 0:
+                return at + 1
+        at += 1
+    return None
+
+
+@functools.lru_cache(maxsize=64)
+def log_statements(data: bytes) -> tuple[tuple[int, int], ...]:
+    """The logging macro invocations of a file's bytes (``_LOG_MACRO``), each as the
+    offsets of its name and just past its closing parenthesis."""
+    found = []
+    for match in _LOG_MACRO.finditer(data):
+        end = _closing(data, match.end() - 1)
+        if end is not None:
+            found.append((match.start(), end))
+    return tuple(found)
+
+
 # clang's messages for a name it does not know, the name in the group ``name`` (or
 # ``scope``: a name found, but not as the namespace or class written before ``::``, a
 # local variable named after the namespace of a missing header, ``auto raspimouse =
