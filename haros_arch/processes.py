@@ -7,6 +7,7 @@ pool's workers end instead of being left behind waiting for tasks.
 
 from __future__ import annotations
 
+import concurrent.futures.process
 import contextlib
 import multiprocessing
 import multiprocessing.process
@@ -34,6 +35,9 @@ class _Held:
     def __init__(self) -> None:
         self.depth = 0
         self.requested: BaseException | None = None
+        # the stop was raised where Python dropped it (``_unraisable``), and not raised
+        # again since
+        self.dropped = False
 
     def __enter__(self) -> None:
         # the main thread's calls only: Python runs a signal's handler there, and a call
@@ -63,6 +67,7 @@ def _forked() -> None:
     starts with no stop held nor asked for: its own come as they come."""
     held_signals.depth = 0
     held_signals.requested = None
+    held_signals.dropped = False
 
 
 os.register_at_fork(after_in_child=_forked)
@@ -71,6 +76,7 @@ os.register_at_fork(after_in_child=_forked)
 def raise_if_stopped() -> None:
     """Raise the stop the run was asked for, if any (see ``_Held``)."""
     if held_signals.requested is not None:
+        held_signals.dropped = False
         raise held_signals.requested
 
 
@@ -94,6 +100,7 @@ def _request(error: BaseException) -> None:
     if held is None or (isinstance(held, OverTime) and not isinstance(error, OverTime)):
         held_signals.requested = error
     if not held_signals.depth:
+        held_signals.dropped = False
         raise error
 
 
@@ -109,6 +116,7 @@ def _unraisable(unraisable: Any) -> None:
     printed with its traceback as an ignored exception and dropped; anything else goes
     to the hook before it."""
     if unraisable.exc_value is not None and unraisable.exc_value is held_signals.requested:
+        held_signals.dropped = True
         _again_soon()
         return
     before = _UNRAISABLE_BEFORE[-1] if _UNRAISABLE_BEFORE else sys.__unraisablehook__
@@ -121,7 +129,9 @@ _UNRAISABLE_BEFORE: list[Callable[[Any], None]] = []
 
 def _again_soon() -> None:
     """Raise the stop asked for again in ``AGAIN_SECONDS`` (SIGALRM, whose handler is put
-    back once it came), out of the finaliser it came in by then."""
+    back once it came), out of the finaliser it came in by then, unless it was raised
+    again meanwhile (where the run holds it: the end of a visit, a wait's poll): twice,
+    the second would interrupt the unwinding of the first (a pool's workers left)."""
     if signal.getsignal(signal.SIGALRM) is _again:
         return  # on its way already
     _AGAIN_PREVIOUS[:] = [signal.getsignal(signal.SIGALRM) or signal.SIG_DFL]
@@ -137,7 +147,7 @@ def _again(_signum: int, _frame: FrameType | None) -> None:
     if _AGAIN_PREVIOUS:
         signal.signal(signal.SIGALRM, _AGAIN_PREVIOUS.pop())
     stop = held_signals.requested
-    if stop is not None:
+    if stop is not None and held_signals.dropped:  # not raised again since it was dropped
         _request(stop)
 
 
@@ -163,6 +173,7 @@ def stop_signals() -> Iterator[None]:
         yield
     finally:  # not SIGTERM's once it came: it stays ignored while the process ends
         held_signals.requested = None
+        held_signals.dropped = False
         for signum in ours:
             if signal.getsignal(signum) is _stopped:
                 signal.signal(signum, previous[signum])
@@ -341,10 +352,28 @@ def worker_pool(workers: int | None, **options: Any) -> Iterator[ProcessPoolExec
     except BaseException:
         # the pool's processes: its workers are this process's only children
         children = multiprocessing.active_children()
+        thread = getattr(pool, "_executor_manager_thread", None)  # shutdown drops it
         pool.shutdown(wait=False, cancel_futures=True)
         _end_workers(children)
+        _ended(thread)
         raise
+    thread = getattr(pool, "_executor_manager_thread", None)
     pool.shutdown(wait=True)
+    _ended(thread)
+
+
+def _ended(thread: object) -> None:
+    """Wait (``STOP_SECONDS``) for a pool's own thread to end, then take it off the
+    threads the interpreter's exit wakes (``concurrent.futures.process``): a thread that
+    ended needs no waking, and a stopped run's exit wrote to a wake-up pipe whose file
+    was closed by then, now and then, and printed an OSError (Bad file descriptor) with
+    its traceback."""
+    if not isinstance(thread, threading.Thread):
+        return
+    thread.join(STOP_SECONDS)
+    woken = getattr(concurrent.futures.process, "_threads_wakeups", None)
+    if not thread.is_alive() and woken is not None:
+        woken.pop(thread, None)
 
 
 class OverTime(BaseException):
