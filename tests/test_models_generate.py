@@ -400,3 +400,60 @@ def test_a_package_for_both_ros_versions_is_modelled_for_its_distribution(
     model = from_document(json.loads(outcome.text))
     assert [n.executable for n in model.nodes] == ["bridge"]
     assert [(c.kind, c.name) for c in model.node("bridge").calls] == [("publish", topic)]
+
+
+VERSIONED_CMAKE = """\
+cmake_minimum_required(VERSION 3.10)
+project(versioned)
+find_package(ament_cmake REQUIRED)
+find_package(rclcpp REQUIRED)
+if(rclcpp_VERSION VERSION_LESS 9.0.0)
+  add_definitions(-DUSE_OLD_DECLARE_PARAMETER)
+endif()
+add_executable(node src/node.cpp)
+install(TARGETS node DESTINATION lib/${PROJECT_NAME})
+ament_package()
+"""
+
+VERSIONED_NODE = """\
+#include <rclcpp/rclcpp.hpp>
+int main(int argc, char ** argv) {
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("versioned");
+#ifdef USE_OLD_DECLARE_PARAMETER
+  node->declare_parameter("old_rate", rclcpp::ParameterValue(1.0));
+#else
+  node->declare_parameter<double>("rate", 1.0);
+#endif
+  rclcpp::spin(node);
+  return 0;
+}
+"""
+
+
+def test_a_build_test_on_the_client_library_version_is_decided_for_the_distribution(
+        tmp_path):
+    """mavros defines USE_OLD_DECLARE_PARAMETER ``if(rclcpp_VERSION VERSION_LESS
+    9.0.0)`` (Foxy's); the build read for a list entry's distribution finds jazzy's
+    rclcpp, so the test is decided and the model whole, not partial for a condition
+    'the extraction does not apply' (every mavros plugin was)."""
+    commit = "0123456789abcdef0123456789abcdef01234567"
+    listed = tmp_path / "list.yaml"
+    listed.write_text(f"- repository: github:example/versioned\n  commit: {commit}\n"
+                      "  distro: jazzy\n  packages: [versioned]\n")
+    tree = tmp_path / "sources" / "example+versioned@0123456789ab"
+    (tree / "src").mkdir(parents=True)
+    (tree / "package.xml").write_text(
+        '<?xml version="1.0"?>\n<package format="3">\n  <name>versioned</name>\n'
+        '  <version>1.0.0</version>\n  <description>d</description>\n'
+        '  <maintainer email="a@b.c">a</maintainer>\n  <license>MIT</license>\n'
+        '  <buildtool_depend>ament_cmake</buildtool_depend>\n  <depend>rclcpp</depend>\n'
+        '  <export>\n    <build_type>ament_cmake</build_type>\n  </export>\n</package>\n')
+    (tree / "CMakeLists.txt").write_text(VERSIONED_CMAKE)
+    (tree / "src" / "node.cpp").write_text(VERSIONED_NODE)
+    (task,) = tasks(read_list(str(listed)), str(tmp_path / "sources"),
+                    os.path.join(FIXTURE, "none"), cache_dir=None)
+    model = from_document(json.loads(build_package(task).text))
+    node = model.node("node")
+    assert [(c.kind, c.name) for c in node.calls] == [("declare", "rate")]
+    assert node.completeness == "complete", node.completeness_reasons

@@ -4,6 +4,7 @@ CMake, extracted from their libraries, attached to move_base and controller_mana
 from __future__ import annotations
 
 import os
+import shutil
 
 import pytest
 from conftest import FIXTURES
@@ -15,8 +16,9 @@ from haros_arch.project import ConfigurationSpec, Project
 ROOT = str(FIXTURES / "build" / "plugins")
 
 
-def configuration(launch: str, models: bool = True, **args: str) -> Configuration:
-    project = Project("plugins", os.path.join(ROOT, "project.yaml"), workspace=[ROOT],
+def configuration(launch: str, models: bool = True, root: str = ROOT, **args: str
+                  ) -> Configuration:
+    project = Project("plugins", os.path.join(root, "project.yaml"), workspace=[root],
                       configurations=[ConfigurationSpec("c", [launch], dict(args))])
     model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1,
                                                            models=models))
@@ -92,10 +94,22 @@ def test_nav2_planner_costmap_and_layers_come_from_the_jazzy_models():
 
 def test_mavros_loads_every_exported_plugin_its_deny_list_lets_through():
     config = configuration("ros2_bringup/launch/uas.launch.xml")
-    added = sorted((n.name, n.node.name) for n in config.nodes if n.origin == "plugin")
+    added = sorted((n.name, n.node.name) for n in config.nodes if n.origin == "plugin"
+                   and n.node.name.startswith("uas_plugins/"))
     # plugin nodes named by their code (``Plugin(uas_, "sys")``), not by their lookup
     # names; "vibration" matches the deny list's "VIB*" (case folded)
     assert added == [("/mavros/imu", "uas_plugins/imu"), ("/mavros/sys", "uas_plugins/sys_status")]
+    # and those of mavros' own model (its package has no source here); mavros_extras'
+    # load where it is installed, which nothing here says (no package depends on it)
+    modelled = {n.node.name: (n.name, [c.text for c in n.conditions]) for n in config.nodes
+                if n.origin == "plugin" and not n.node.name.startswith("uas_plugins/")}
+    assert modelled["mavros/local_position"] == ("/mavros/local_position", [])
+    assert modelled["mavros/sys_status"] == ("/mavros/sys", [])
+    assert modelled["mavros_extras/gps_status"] == (
+        "/mavros/gpsstatus", ["mavros_extras is installed"])
+    assert "mavros_extras/vibration" not in modelled  # denied too
+    assert len(modelled) > 50
+    assert not any(d.code == "PLUGIN_CLASS_UNKNOWN" for d in config.diagnostics)
     assert links(config, "/mavros/imu") == [
         ("publish", "/mavros/imu/data", "source"), ("read", "/mavros/imu/frame_id", "source")]
     assert ("publish", "/mavros/state", "source") in links(config, "/mavros/sys")
@@ -154,3 +168,49 @@ def test_nav2_servers_started_without_plugin_lists_load_their_defaults_from_the_
     served = {link.resource.name for link in config.links
               if link.node is behaviors and link.kind == "action-server"}
     assert {"/spin", "/backup", "/drive_on_heading", "/wait"} <= served
+
+
+def test_mavros_plugins_without_a_namespace_are_beneath_its_uas_node():
+    """A plugin's node is made in the namespace of the UAS node's full name, which a
+    process's namespace replaces: started with none, mavros' UAS node is /mavros and
+    its plugins' nodes are beneath it, as with one (not /imu)."""
+    config = configuration("ros2_bringup/launch/uas_root.launch.xml")
+    placed = {n.node.name: n.name for n in config.nodes if n.origin == "plugin"}
+    assert placed["uas_plugins/imu"] == "/mavros/imu"
+    assert placed["mavros/local_position"] == "/mavros/local_position"
+    assert ("publish", "/mavros/imu/data", "source") in links(config, "/mavros/imu")
+
+
+def test_mavros_extras_plugins_load_unconditionally_where_a_package_depends_on_it(tmp_path):
+    root = tmp_path / "plugins"
+    shutil.copytree(ROOT, root)
+    xml = root / "ros2_bringup" / "package.xml"
+    xml.write_text(xml.read_text().replace(
+        "<buildtool_depend>", "<exec_depend>mavros_extras</exec_depend>\n  <buildtool_depend>"))
+    config = configuration("ros2_bringup/launch/uas.launch.xml", root=str(root))
+    extras = {n.name: n.conditions for n in config.nodes
+              if n.node is not None and n.node.name.startswith("mavros_extras/")}
+    assert extras["/mavros/gpsstatus"] == ()
+
+
+def test_the_inputs_mavros_offers_through_its_own_plugins_are_no_missing_publishers():
+    """Every plugin mavros finds is loaded; the configuration feeds a few of their inputs
+    (setpoint_raw/local, ...) and the rest stay unfed by design: a subscription of such a
+    plugin of the installed package is no subscriber-without-publisher. A plugin class
+    of the workspace's own is not one."""
+    from haros_arch.query import run_catalogue
+
+    project = Project("plugins", os.path.join(ROOT, "project.yaml"), workspace=[ROOT],
+                      configurations=[ConfigurationSpec(
+                          "c", ["ros2_bringup/launch/uas.launch.xml"], {})])
+    model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    offered = {n.name for n in config.nodes if n.offered}
+    assert "/mavros/setpoint_raw" in offered and "/mavros/imu" not in {
+        n.name for n in config.nodes if n.offered and n.node.name.startswith("uas_plugins/")}
+    assert any(link.kind == "subscribe" and link.node.name == "/mavros/setpoint_raw"
+               for link in config.links)
+    unfed = [f for f in run_catalogue(model, project)
+             if f.rule == "subscriber-without-publisher"]
+    assert not any(entity.startswith("node:") and entity[5:] in offered
+                   for f in unfed for entity in f.entities), unfed

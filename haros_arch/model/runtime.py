@@ -60,6 +60,10 @@ class NodeInstance:
     # a host row loaded its plugins (``plugins.attach``): what its code loads by name is
     # in its links or in the instances it made, and a plugin not found made it partial
     hosted: bool = field(default=False, metadata={"optional": True})
+    # a plugin node its host loads because it loads every class it finds (mavros' plugins:
+    # ``hosts.Slot`` EXPORTED), of an installed package's model: what it subscribes is
+    # input the host offers, which a configuration need not feed
+    offered: bool = field(default=False, metadata={"optional": True})
     # ROS 1: where each remap of ``remaps`` is written (its ``<remap>`` element), by its
     # text ``from:=to``: one element a group gives nodes of several namespaces is one
     # remap (``remaps_of``)

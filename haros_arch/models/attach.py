@@ -24,7 +24,7 @@ file starts it by another name its releases install (``Node.aliases``).
 from __future__ import annotations
 
 import copy
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import replace
 
 from .. import diagnostics as diag
@@ -249,3 +249,13 @@ class PluginFinder:
 
     def package(self, name: str) -> InterfaceModel | None:
         return self.attacher._find(name, self.distro)
+
+    def exported(self, package: str, bases: Collection[str]) -> list[Node] | None:
+        """The plugin classes of ``package``'s model whose base is one of ``bases``, each
+        as hosts take it; None when there is no model of the package."""
+        model = self.attacher._find(package, self.distro)
+        if model is None:
+            return None
+        found = (self.attacher._node(model, n.executable, self.distro) for n in model.nodes
+                 if n.kind == "plugin" and n.plugin_base in bases)
+        return [n for n in found if n is not None]

@@ -199,6 +199,9 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     # none the jazzy model had its ROS 1 nodelet only, not the ROS 2 node
     environment = {"ROS_DISTRO": task.entry.distro, **distro_variables(task.entry.distro)}
     workspace = scan([task.tree, *task.context], environment)
+    # what the release's build finds of its client library (``find_package(rclcpp)``'s
+    # version: mavros defines USE_OLD_DECLARE_PARAMETER below 9.0.0, Foxy's)
+    workspace.source_distro = task.entry.distro
     package = workspace.packages.get(task.package)
     if package is None:
         outcome.problem = f"no package {task.package} in {task.entry.repository}"

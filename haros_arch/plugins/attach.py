@@ -29,7 +29,7 @@ import copy
 import fnmatch
 import os
 import re
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Protocol
 from weakref import WeakKeyDictionary
@@ -52,7 +52,14 @@ from ..model.conditions import EACH_STATEMENT, Condition
 from ..model.location import Location
 from ..model.rosname import namespace_of, pattern_for, resolve
 from ..model.runtime import Configuration, NodeInstance, Parameter, Resource
-from ..model.source import PLUGINLIB_CLASS, Node, PrimitiveCall, class_load_base, is_class_load
+from ..model.source import (
+    PLUGINLIB_CLASS,
+    Node,
+    Package,
+    PrimitiveCall,
+    class_load_base,
+    is_class_load,
+)
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import cli_load
 from ..share import share_source
@@ -195,7 +202,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                     choices = list(_spawned(instance, started, params, workspace, config,
                                             unnamed=decl.name_guessed))
                 elif slot.names == EXPORTED:
-                    choices = list(_exported(instance, slot, params, nodes))
+                    choices = list(_exported(instance, slot, params, nodes, models,
+                                             workspace, decl.package))
                 elif slot.names == DESCRIBED:
                     choices = list((hardware or {}).get(id(instance), ()))
                 elif slot.names == KEYED:
@@ -281,7 +289,9 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         _unhosted(reader, owned)
         out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
-        reader = _plugin_instance(instance, choice, node, config)
+        reader = _plugin_instance(instance, choice, node, config, slot.beneath_host and (
+            decl is None or not (decl.namespace_given or decl.namespace.strip("/"))))
+        reader.offered = slot.names == EXPORTED and node.model is not None
         if slot.names in (EXPORTED, SPAWNER) and decl is not None:
             # a node the process makes: its files apply by name (a controller's section
             # of the file given to ros2_control_node, after its spawner's file, whose
@@ -646,9 +656,15 @@ def _host_setting(params: Params, host: NodeInstance | None, name: str,
 
 
 def _exported(instance: NodeInstance, slot: Slot, params: Params,
-              nodes: Mapping[str, Node]) -> Iterator[Choice]:
+              nodes: Mapping[str, Node], models: PluginModels | None = None,
+              workspace: Workspace | None = None, host: str | None = None
+              ) -> Iterator[Choice]:
     """Every plugin class exported with one of the slot's bases that the host's deny and
-    allow lists let through (mavros' is_plugin_allowed: fnmatch, case folded)."""
+    allow lists let through (mavros' is_plugin_allowed: fnmatch, case folded): those of
+    the workspace's packages, and those the interface models of the slot's
+    ``exporters`` without source here give. Another exporter than the host's own
+    package (``host``) loads only where it is installed: its classes are under that
+    condition, not decided, unless a package of the workspace depends on it."""
     assert slot.lists is not None
     base = instance.name.rstrip("/") + "/"
     deny, allow = (_parameter(params, base + key) for key in slot.lists)
@@ -664,17 +680,38 @@ def _exported(instance: NodeInstance, slot: Slot, params: Params,
     given = deny or allow
     where = given.launch_location if given is not None else instance.location
     reads = tuple(p.name for p in (deny, allow) if p)
-    found = sorted((n for n in nodes.values() if n.kind == "plugin"
-                    and (n.plugin_base in slot.bases)), key=lambda n: n.name)
-    if not found:  # its plugins' packages have no source here: what it loads is unknown
+    found: list[tuple[Node, tuple[Condition, ...]]] = [
+        (n, ()) for n in sorted((n for n in nodes.values() if n.kind == "plugin"
+                                 and (n.plugin_base in slot.bases)), key=lambda n: n.name)]
+    unseen = not found  # its plugins' packages have no source here: what it loads is unknown
+    modelled = getattr(models, "exported", None)
+    here = workspace.packages if workspace is not None else {}
+    for package in slot.exporters:
+        if package in here or modelled is None:
+            continue
+        classes = modelled(package, slot.bases)
+        if classes is None:  # no model of it: its classes are not known
+            unseen = unseen or package == host
+            continue
+        unseen = False
+        installed = () if package == host or _depended(package, here.values()) else (
+            Condition(f"{package} is installed", kind="launch", location=where),)
+        found.extend((n, installed) for n in sorted(classes, key=lambda n: n.name))
+    if unseen:
         yield Choice("*", None, where, conditions, reads)
-    for node in found[:MAX_PLUGINS * 5]:
+    for node, more in found[:MAX_PLUGINS * 5]:
         name = node.executable.casefold()
         if any(fnmatch.fnmatchcase(name, p) for p in denied) and not any(
                 fnmatch.fnmatchcase(name, p) for p in allowed):
             continue
-        yield Choice(node.rosname or node.executable, node.executable, where, conditions,
-                     reads, node=node)
+        yield Choice(node.rosname or node.executable, node.executable, where,
+                     (*conditions, *more), reads, node=node)
+
+
+def _depended(package: str, packages: Iterable[Package]) -> bool:
+    """Whether a package of ``packages`` depends on ``package`` (a dependency whose
+    condition holds, or cannot be decided)."""
+    return any(d.name == package and d.active for p in packages for d in p.dependencies)
 
 
 def _patterns(parameter: Parameter | None) -> list[str] | None:
@@ -1442,15 +1479,17 @@ def _set_params(params: Params, node_name: str, values: Mapping[str, Any],
 
 
 def _plugin_instance(host: NodeInstance, choice: Choice, node: Node | None,
-                     config: Configuration) -> NodeInstance:
+                     config: Configuration, beneath: bool = False) -> NodeInstance:
     """A node instance of its own for a controller loaded into ``host``. It takes the
     remaps of the host's process (launch_ros gives a node's remappings as ``-r from:=to``,
     which rcl applies to every node of the process: open_manipulator remaps the arm
     controller's ``/arm_controller/joint_trajectory`` on ros2_control_node), its own
     (``--controller-ros-args``) over them: they are the controller node's local rules,
     which rcl tries before the process's (remap.c), and it applies the first that
-    matches."""
-    namespace = host.namespace if host.namespace.endswith("/") else host.namespace + "/"
+    matches. ``beneath``: the node is made in the namespace of the host's full name
+    (``Slot.beneath_host``, in a process without a namespace of its own)."""
+    namespace = host.name if beneath else host.namespace
+    namespace = namespace if namespace.endswith("/") else namespace + "/"
     name = namespace + choice.name
     remaps = [*choice.remaps, *host.remaps]
     instance = NodeInstance(name, node, namespace=namespace, remaps=remaps,

@@ -108,6 +108,18 @@ class Slot:
     # the key of a ``{name, type}`` mapping of ``names`` that gives the class
     # (move_group's ``sensors``: ``sensor_plugin``)
     type_key: str = "type"
+    # ``names`` is EXPORTED: the packages known to export classes of ``bases``, whose
+    # interface models give them where a package has no source here (mavros' own and
+    # mavros_extras'); another package than the host's loads only where it is installed,
+    # which nothing here says unless a package of the workspace depends on it
+    exporters: tuple[str, ...] = ()
+    # ``placement`` is "node": each plugin's node is made in the namespace of the host
+    # node's full name (mavros' ``Plugin(uas, "imu")``: ``Node::make_shared("imu",
+    # uas->get_fully_qualified_name())``), which the process's ``__ns`` rule, a launch
+    # file's namespace for it, replaces (rcl applies it to every node of the process):
+    # ``/mavros/imu`` either way for mavros' UAS node ``mavros`` started in ``/mavros``
+    # or in ``/``
+    beneath_host: bool = False
     # an element of ``names`` that is no mapping, or has no class, an empty one or one
     # starting with ``~``, loads nothing (MoveIt's octomap updaters,
     # occupancy_map_monitor.cpp:113-130)
@@ -428,16 +440,19 @@ HOSTS: tuple[Host, ...] = (
     # mavros (mavros/src/lib/mavros.cpp, mavros_uas.cpp) loads every class its plugin
     # loader declares unless its lists say otherwise; ROS 1 plugins make their calls on
     # the mavros node through handles their code names (``~imu``); a ROS 2 plugin is a
-    # node of its own, ``Plugin(uas, "imu")`` (plugin.hpp: Node::make_shared(subnode, ...)),
-    # in the process's namespace; before mavros 0.18 (2016) the ROS 1 plugins' base was
+    # node of its own, ``Plugin(uas, "imu")`` (plugin.hpp: Node::make_shared(subnode,
+    # uas's full name)), beneath the UAS node unless the process has a namespace;
+    # before mavros 0.18 (2016) the ROS 1 plugins' base was
     # ``mavplugin::MavRosPlugin`` (mavros.cpp: ``plugin_loader("mavros", ...)``)
     Host("mavros", ("mavros_node",), 1, (
         Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginBase",
                               "mavplugin::MavRosPlugin"),
-             lists=("plugin_blacklist", "plugin_whitelist")),)),
+             lists=("plugin_blacklist", "plugin_whitelist"),
+             exporters=("mavros", "mavros_extras")),)),
     Host("mavros", ("mavros_node",), 2, (
         Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginFactory"), placement="node",
              lists=("plugin_denylist", "plugin_allowlist"),
+             exporters=("mavros", "mavros_extras"), beneath_host=True,
              node_name=r'\b(?:Plugin|MissionBase)\s*\(\s*uas_?\s*,\s*"([^"\\]+)"'),)),
 )
 
