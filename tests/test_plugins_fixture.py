@@ -214,3 +214,18 @@ def test_the_inputs_mavros_offers_through_its_own_plugins_are_no_missing_publish
              if f.rule == "subscriber-without-publisher"]
     assert not any(entity.startswith("node:") and entity[5:] in offered
                    for f in unfed for entity in f.entities), unfed
+
+
+def test_mavros_plugins_take_the_name_a_launch_file_gives_its_process():
+    """``name=`` is launch_ros' ``__node`` rule, which rcl applies to every node of the
+    process that takes the global arguments: mavros' plugin nodes (made with default
+    options) are all renamed, as a container's name renamed them in mavros issues 1919
+    and 2216, and their private topics move with them (``~/data``)."""
+    config = configuration("ros2_bringup/launch/uas_named.launch.xml")
+    placed = {n.node.name: n.name for n in config.nodes if n.origin == "plugin"}
+    assert placed["uas_plugins/imu"] == "/mavros/mavros"
+    assert placed["mavros/local_position"] == "/mavros/mavros"
+    imu = next(n for n in config.nodes if n.node is not None
+               and n.node.name == "uas_plugins/imu")
+    assert ("publish", "/mavros/mavros/data") in {
+        (link.kind, link.resource.name) for link in config.links if link.node is imu}

@@ -289,8 +289,12 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         _unhosted(reader, owned)
         out.append((reader, _not_hosts(node.calls, instance)))
     elif slot.placement == "node":
-        reader = _plugin_instance(instance, choice, node, config, slot.beneath_host and (
-            decl is None or not (decl.namespace_given or decl.namespace.strip("/"))))
+        renamed = decl.name.rstrip("/").rsplit("/", 1)[-1] if (
+            slot.global_rules and decl is not None and decl.name_given) else ""
+        reader = _plugin_instance(
+            instance, replace(choice, name=renamed) if renamed else choice, node, config,
+            slot.beneath_host and (decl is None or not (
+                decl.namespace_given or decl.namespace.strip("/"))))
         reader.offered = slot.names == EXPORTED and node.model is not None
         if slot.names in (EXPORTED, SPAWNER) and decl is not None:
             # a node the process makes: its files apply by name (a controller's section

@@ -120,6 +120,11 @@ class Slot:
     # ``/mavros/imu`` either way for mavros' UAS node ``mavros`` started in ``/mavros``
     # or in ``/``
     beneath_host: bool = False
+    # ``placement`` is "node": each plugin's node takes the process's global arguments
+    # (mavros' plugins make their nodes with default options), so a launch ``name=``
+    # (``__node``) renames every one of them to that name, as it does the process's own
+    # nodes (mavros issues 1919, 2216: in a container each plugin node took its name)
+    global_rules: bool = False
     # an element of ``names`` that is no mapping, or has no class, an empty one or one
     # starting with ``~``, loads nothing (MoveIt's octomap updaters,
     # occupancy_map_monitor.cpp:113-130)
@@ -452,7 +457,7 @@ HOSTS: tuple[Host, ...] = (
     Host("mavros", ("mavros_node",), 2, (
         Slot(EXPORTED, None, ("mavros", "mavros::plugin::PluginFactory"), placement="node",
              lists=("plugin_denylist", "plugin_allowlist"),
-             exporters=("mavros", "mavros_extras"), beneath_host=True,
+             exporters=("mavros", "mavros_extras"), beneath_host=True, global_rules=True,
              node_name=r'\b(?:Plugin|MissionBase)\s*\(\s*uas_?\s*,\s*"([^"\\]+)"'),)),
 )
 
