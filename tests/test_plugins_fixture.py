@@ -229,3 +229,27 @@ def test_mavros_plugins_take_the_name_a_launch_file_gives_its_process():
                and n.node.name == "uas_plugins/imu")
     assert ("publish", "/mavros/mavros/data") in {
         (link.kind, link.resource.name) for link in config.links if link.node is imu}
+
+
+def test_ros1_mavros_plugins_make_offered_calls_on_its_node():
+    """ROS 1 mavros' plugins make their calls on the mavros node (``~setpoint_raw/local``),
+    from its noetic model: whole, and what they offer is no finding of a missing
+    partner; the deny list still takes effect."""
+    from haros_arch.query import run_catalogue
+
+    project = Project("plugins", os.path.join(ROOT, "project.yaml"), workspace=[ROOT],
+                      configurations=[ConfigurationSpec(
+                          "c", ["bringup/launch/mavros.launch"], {})])
+    model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
+    (config,) = model.configurations
+    mavros = config.node("/drone1/mavros")
+    assert mavros is not None and mavros.completeness != "partial", mavros.completeness_reasons
+    made = {(link.kind, link.resource.name): link for link in config.links
+            if link.node is mavros}
+    offered = made[("subscribe", "/drone1/mavros/setpoint_raw/local")]
+    assert offered.call is not None and offered.call.offered
+    assert not any(name.startswith("/drone1/mavros/safety_area/") for _, name in made)
+    found = run_catalogue(model, project)
+    assert not any(f.rule in ("subscriber-without-publisher", "publisher-without-subscriber",
+                              "similar-disconnected-topics")
+                   and "/drone1/mavros/setpoint_raw/" in f.message for f in found)

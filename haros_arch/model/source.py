@@ -245,6 +245,10 @@ class PrimitiveCall:
     # ROS 2: ``process`` alone, a node a library makes with default options (tf2_ros'
     # ``TransformListener(buffer)``): the launch's namespace and remaps for the process
     handle_origin: str | None = field(default=None, metadata={"optional": True})
+    # made on its host by a plugin the host loads because it loads every class it finds
+    # (ROS 1 mavros' plugins, ``hosts.Slot`` EXPORTED), of an installed package's model:
+    # what it subscribes is input the host offers (``NodeInstance.offered``)
+    offered: bool = field(default=False, metadata={"optional": True})
     # parameter writes that delete the parameter (rospy.delete_param, ros::param::del,
     # NodeHandle::deleteParam)
     deletes: bool = False

@@ -334,6 +334,8 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
                      for call in calls]
+        if slot.names == EXPORTED and node.model is not None:
+            calls = [replace(call, offered=True) for call in calls]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
             node.plugin_class or "", instance.ros_version) or _base_sources(
                 node, instance.ros_version, workspace)

@@ -140,6 +140,14 @@ def _known_type(link: Any) -> str | None:
         found not in _ANY_TYPES) else None
 
 
+def _is_offered(link: Any) -> bool:
+    """Made by the model of a plugin its host loads because it loads every class it finds
+    (mavros'): its node's (ROS 2, ``NodeInstance.offered``) or its call's on the host
+    (ROS 1, ``PrimitiveCall.offered``)."""
+    return link.origin == "model" and (bool(link.node.offered) or (
+        link.call is not None and bool(link.call.offered)))
+
+
 def _modelled(instance: NodeInstance) -> bool:
     """What it runs is known from an interface model (its code is not in the workspace)."""
     return instance.node is not None and instance.node.model is not None
@@ -152,7 +160,8 @@ VIEWS: dict[type, dict[str, Callable[[Any], Any]]] = {
     # plugins a modelled gazebo instance loads, ``description``)
     Link: {"is_latched": _is_latched, "wire_type": _wire_type, "known_type": _known_type,
            "is_modelled": lambda link: link.origin == "model" or (
-               link.origin != "description" and _modelled(link.node))},
+               link.origin != "description" and _modelled(link.node)),
+           "is_offered": _is_offered},
     Parameter: {"reads": lambda p: p.readers, "writes": lambda p: p.writers},
     NodeInstance: {"is_modelled": _modelled},
     Node: {"advertise": _calls("publish"), "subscribe": _calls("subscribe"),
