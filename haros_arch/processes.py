@@ -230,12 +230,55 @@ _in_task = False
 
 def _worker_stopped(signum: int, frame: Any) -> None:
     """A worker's Ctrl-C or SIGTERM: within a task, the run's stop (``_stopped``), which
-    ends the task and then the worker; between tasks, the worker ends at once."""
+    ends the task and then the worker; between tasks, the worker ends at once, but not
+    while it writes a task's result to the run (``_sending``): then when that is done."""
     if _in_task:
         _stopped(signum, frame)
+        return
+    stop: BaseException = (KeyboardInterrupt() if signum == signal.SIGINT
+                           else SystemExit(128 + signum))
+    if _sending(frame):
+        held_signals.requested = stop
+        _end_when_sent()
+        return
+    _end_worker(stop)
+
+
+# the modules whose code writes a worker's result to the run, and their functions that
+# do (concurrent.futures' ``_sendback_result``, the queue's ``put``, the connection's
+# ``send_bytes``)
+_SENDERS = {"concurrent.futures.process": ("_sendback_result",),
+            "multiprocessing.queues": ("put",),
+            "multiprocessing.connection": ("send_bytes", "_send_bytes", "_send")}
+
+
+def _sending(frame: FrameType | None) -> bool:
+    """Whether the worker is writing a message to the run: a worker ended there leaves
+    half a message in the pipe, and the pool's thread in the run waits for its rest for
+    good (the run's exit, which joins that thread, too), or takes the pool for broken."""
+    while frame is not None:
+        names = _SENDERS.get(frame.f_globals.get("__name__", ""))
+        if names is not None and frame.f_code.co_name in names:
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _end_when_sent() -> None:
+    """End the worker once it is no longer writing a message (``_sending``): looked at
+    again every ``AGAIN_SECONDS`` (SIGALRM)."""
+    signal.signal(signal.SIGALRM, _sent)
+    signal.setitimer(signal.ITIMER_REAL, AGAIN_SECONDS)
+
+
+def _sent(_signum: int, frame: FrameType | None) -> None:
+    stop = held_signals.requested
+    if stop is None:
+        return
+    if _sending(frame):
+        _end_when_sent()
     else:
-        _end_worker(KeyboardInterrupt() if signum == signal.SIGINT
-                    else SystemExit(128 + signum))
+        _end_worker(stop)
 
 
 def _start_worker(initializer: Callable[..., Any] | None, *initargs: Any) -> None:

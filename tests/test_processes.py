@@ -367,3 +367,39 @@ def test_a_stop_in_a_finaliser_or_callback_ends_the_run_with_no_traceback(where,
     assert "result" not in run.stdout, run.stdout + run.stderr
     assert "Traceback" not in run.stderr and "Exception ignored" not in run.stderr, run.stderr
     assert run.returncode == 143, run.stdout + run.stderr
+
+
+# a pool worker stopped (SIGTERM) while it writes a large result back to the run: it
+# ended at once, half the message in the pipe, and the pool's thread took the pool for
+# broken or, when it had begun to read the message, waited for its rest for good, and so
+# did the run's exit (a cause of the rare hang of the stopped two-worker run in CI)
+STOPPED_IN_SEND = """
+import os, signal, sys, threading
+from haros_arch import processes
+
+def task(size):
+    made = b"x" * size
+    # SIGTERM to this worker soon after the task returns, while its result is written
+    threading.Timer(0.02, os.kill, (os.getpid(), signal.SIGTERM)).start()
+    return made
+
+with processes.stop_signals(), processes.worker_pool(1) as pool:
+    future = pool.submit(task, 200_000_000)
+    print("result", len(processes.result(future)), flush=True)
+"""
+
+
+def test_a_worker_stopped_while_it_sends_its_result_ends_after_the_message():
+    import subprocess
+    import sys
+
+    run = subprocess.Popen([sys.executable, "-c", STOPPED_IN_SEND], text=True,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           start_new_session=True)
+    try:
+        stdout, stderr = run.communicate(timeout=90)
+    except subprocess.TimeoutExpired:
+        os.killpg(run.pid, signal.SIGKILL)
+        stdout, stderr = run.communicate()
+        raise AssertionError(f"the run did not end: {stdout}{stderr}") from None
+    assert "result 200000000" in stdout, stdout + stderr
