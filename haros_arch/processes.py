@@ -128,27 +128,39 @@ _UNRAISABLE_BEFORE: list[Callable[[Any], None]] = []
 
 
 def _again_soon() -> None:
-    """Raise the stop asked for again in ``AGAIN_SECONDS`` (SIGALRM, whose handler is put
-    back once it came), out of the finaliser it came in by then, unless it was raised
-    again meanwhile (where the run holds it: the end of a visit, a wait's poll): twice,
-    the second would interrupt the unwinding of the first (a pool's workers left)."""
-    if signal.getsignal(signal.SIGALRM) is _again:
-        return  # on its way already
-    _AGAIN_PREVIOUS[:] = [signal.getsignal(signal.SIGALRM) or signal.SIG_DFL]
-    signal.signal(signal.SIGALRM, _again)
-    signal.setitimer(signal.ITIMER_REAL, AGAIN_SECONDS)
+    """Raise the stop asked for again in ``AGAIN_SECONDS``, out of the finaliser it came
+    in by then, unless it was raised again meanwhile (where the run holds it: the end of
+    a visit, a wait's poll): twice, the second would interrupt the unwinding of the
+    first (a pool's workers left)."""
+    _soon(_again)
 
 
-# the SIGALRM handler ``_again`` stands in for while it is set
-_AGAIN_PREVIOUS: list[Any] = []
-
-
-def _again(_signum: int, _frame: FrameType | None) -> None:
-    if _AGAIN_PREVIOUS:
-        signal.signal(signal.SIGALRM, _AGAIN_PREVIOUS.pop())
+def _again(frame: FrameType | None) -> None:
     stop = held_signals.requested
     if stop is not None and held_signals.dropped:  # not raised again since it was dropped
         _request(stop)
+
+
+def _soon(then: Callable[[FrameType | None], None]) -> None:
+    """Call ``then`` with the frame the interpreter is in ``AGAIN_SECONDS`` from now
+    (SIGALRM, whose handler is put back first); nothing more when it is on its way."""
+    if signal.getsignal(signal.SIGALRM) is _alarm:
+        _SOON[-1] = then
+        return
+    _SOON[:] = [signal.getsignal(signal.SIGALRM) or signal.SIG_DFL, then]
+    signal.signal(signal.SIGALRM, _alarm)
+    signal.setitimer(signal.ITIMER_REAL, AGAIN_SECONDS)
+
+
+# while ``_alarm`` is SIGALRM's handler: the handler it stands in for, then what it calls
+_SOON: list[Any] = []
+
+
+def _alarm(_signum: int, frame: FrameType | None) -> None:
+    before, then = _SOON
+    _SOON.clear()
+    signal.signal(signal.SIGALRM, before)
+    then(frame)
 
 
 @contextlib.contextmanager
@@ -266,12 +278,11 @@ def _sending(frame: FrameType | None) -> bool:
 
 def _end_when_sent() -> None:
     """End the worker once it is no longer writing a message (``_sending``): looked at
-    again every ``AGAIN_SECONDS`` (SIGALRM)."""
-    signal.signal(signal.SIGALRM, _sent)
-    signal.setitimer(signal.ITIMER_REAL, AGAIN_SECONDS)
+    again every ``AGAIN_SECONDS``."""
+    _soon(_sent)
 
 
-def _sent(_signum: int, frame: FrameType | None) -> None:
+def _sent(frame: FrameType | None) -> None:
     stop = held_signals.requested
     if stop is None:
         return
