@@ -32,8 +32,10 @@ class Diagnostic:
 
 # what is said once per configuration, at its first place, the others in ``also``: an
 # argument left without a value is one thing to give (``name:=value`` on the command
-# line), whatever number of uses shows it (osrf/subt's ``name``, a thousand of them)
-SAID_ONCE = frozenset({"LAUNCH_ARG_UNSET"})
+# line), whatever number of uses shows it (osrf/subt's ``name``, a thousand of them), and
+# so is an argument an included file requires and its include does not pass (the message
+# names that file: each use of the argument in it said it again)
+SAID_ONCE = frozenset({"LAUNCH_ARG_UNSET", "LAUNCH_ARG_REQUIRED"})
 
 
 def said_once(diagnostics: Iterable[Diagnostic], codes: frozenset[str] = SAID_ONCE
