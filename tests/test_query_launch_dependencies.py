@@ -570,3 +570,45 @@ def test_ros2_a_package_named_by_the_includers_configuration_is_undecided(write_
     assert findings(reloaded) == findings(model)
     assert [u.chosen_by for c in reloaded.configurations for u in c.package_uses
             if u.package == "sample_vehicle_description"] == ["vehicle_model"]
+
+
+TRIED_LAUNCH = """import os
+
+from ament_index_python.packages import PackageNotFoundError, get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    try:
+        extra = os.path.join(get_package_share_directory('extras'), 'lib')
+    except Exception:
+        extra = ''
+    try:
+        more = get_package_share_directory('more_extras')
+    except PackageNotFoundError:
+        more = ''
+    try:
+        needed = get_package_share_directory('needed')
+    except ValueError:
+        needed = ''
+    model = get_package_share_directory('desc')
+    return LaunchDescription([Node(package='rviz2', executable='rviz2', name='rviz2',
+                                   arguments=[extra, more, needed, model])])
+"""
+
+
+def test_ros2_a_package_asked_for_in_a_try_that_catches_its_absence_is_optional(write_tree):
+    """usv_workspace's domain_bridge.launch.py asks for common_interfaces' share folder
+    in a ``try`` whose ``except Exception`` goes on without it (an optional library
+    path): the launch file runs without the package, which is no undeclared dependency.
+    A handler of another error (ValueError) does not catch PackageNotFoundError."""
+    root = write_tree({
+        "src/sim/package.xml": manifest("sim", ("exec_depend", "rviz2"),
+                                        build_type="ament_cmake"),
+        "src/sim/CMakeLists.txt": "project(sim)\n",
+        "src/sim/launch/robot.launch.py": TRIED_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [sim/launch/robot.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert [package for _, _, package in findings(model)] == ["needed", "desc"]

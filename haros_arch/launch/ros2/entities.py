@@ -66,6 +66,9 @@ class Env(Subst):  # $(env NAME [default]) / EnvironmentVariable
 class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackageShare
     package: Text
     share: bool = True
+    # asked for by a Python launch file in a ``try`` whose handler catches the package's
+    # absence (``get_package_share_directory``): the file runs without it
+    tried: bool = False
 
 
 @dataclass(frozen=True)

@@ -148,6 +148,9 @@ class Interpreter(Expressions):
         # the enclosing ``try`` statements: the exception classes their handlers name
         # (None: one not known) and how many guards there were when each began
         self.catching: list[tuple[list[tuple[str, ...] | None], int]] = []
+        # per enclosing ``try``: whether a handler of it catches ament_index_python's
+        # PackageNotFoundError (``catches_missing_package``)
+        self.missing_caught: list[bool] = []
         # per function being run: the values it returned under a test not known
         self.returns: list[list[Any]] = []
         # per file read, the names its code binds anywhere (``names_bound``; None: any)
@@ -878,11 +881,13 @@ class Interpreter(Expressions):
         convert_value); a handler of a class not known (``json.JSONDecodeError``) is
         not taken, and the failure is said as before."""
         self.catching.append(([_handler_classes(h) for h in stmt.handlers], len(self.guards)))
+        self.missing_caught.append(any(catches_missing_package(h) for h in stmt.handlers))
         try:
             try:
                 self.block(stmt.body, env)
             finally:
                 self.catching.pop()
+                self.missing_caught.pop()
         except Raised as raised:
             handler = next((h for h in stmt.handlers
                             if _catches(_handler_classes(h), raised.name)), None)
@@ -1768,6 +1773,23 @@ def _either_goes_on(test: str, body: list[Guard], orelse: list[Guard]) -> str:
         return f"({test}) or ({conjunction(orelse)})"
     return (f"({conjunction([test, *body])}) or "
             f"({conjunction([f'not ({test})', *orelse])})")
+
+
+# what a handler that catches ament_index_python's PackageNotFoundError (a KeyError)
+# names: the class itself, or one of its builtin bases
+_MISSING_PACKAGE = frozenset({"PackageNotFoundError", "KeyError", "LookupError",
+                              "Exception", "BaseException"})
+
+
+def catches_missing_package(handler: ast.ExceptHandler) -> bool:
+    """Whether an ``except`` catches the error ``get_package_share_directory`` raises for
+    a package not installed (a bare ``except``, ``except Exception``,
+    ``except PackageNotFoundError``, ...)."""
+    if handler.type is None:
+        return True
+    items = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+    return any((item.id if isinstance(item, ast.Name) else item.attr if isinstance(
+        item, ast.Attribute) else None) in _MISSING_PACKAGE for item in items)
 
 
 def _handler_classes(handler: ast.ExceptHandler) -> tuple[str, ...] | None:

@@ -200,12 +200,15 @@ def package_directory(share: bool) -> Builder:
             written = (n.args[0] if isinstance(n, ast.Call) and n.args
                        else next((kw.value for kw in getattr(n, "keywords", ())
                                   if kw.arg == "package_name"), None))
-            i.uses.append(PackageUse(name, i.written(n, written),
-                                     guard=installed_check(i.guards)))
+            # in a ``try`` whose handler catches PackageNotFoundError, the file runs
+            # without it: a use where it is installed (usv_workspace's domain bridge
+            # asks for common_interfaces' folder so, for an optional library path)
+            i.uses.append(PackageUse(name, i.written(n, written), guard=installed_check(
+                i.guards) or (name if any(i.missing_caught) else None)))
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found
-        return Lazy((e.FindPackage(to_text(name), share),))
+        return Lazy((e.FindPackage(to_text(name), share, tried=any(i.missing_caught)),))
     return build
 
 

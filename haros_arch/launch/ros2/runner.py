@@ -329,13 +329,15 @@ class Runner:
                 frame.hidden = text
 
     def uses(self, package: str, location: Location,
-             conditions: tuple[Condition, ...] = (), chosen_by: str = "") -> None:
+             conditions: tuple[Condition, ...] = (), chosen_by: str = "",
+             tried: bool = False) -> None:
         """A substitution asked for the folder of ``package`` (``?`` for parts not known),
         under ``conditions`` (a Python test of whether a package is installed, maybe);
-        ``chosen_by``: the launch configurations of its name the file does not hold."""
+        ``chosen_by``: the launch configurations of its name the file does not hold;
+        ``tried``: asked for where the file goes on without it (``FindPackage.tried``)."""
         self.model.package_uses.append(PackageUse(package, location, guard=installed_check(
-            c.text for c in conditions if c.kind == "launch" and c.statement == "if"),
-            chosen_by=chosen_by))
+            c.text for c in conditions if c.kind == "launch" and c.statement == "if") or (
+            package if tried else None), chosen_by=chosen_by))
 
     def evaluator(self, scope: Scope, location: Location) -> Evaluator:
         return Evaluator(self, scope, location)

@@ -334,7 +334,7 @@ class Evaluator:
     def s_FindPackage(self, s: e.FindPackage) -> Value:
         name = self.known(s.package)
         self.runner.uses(self.value(s.package).text, self.location,
-                         self.scope.conditions, self.runner.chosen_by(s.package))
+                         self.scope.conditions, self.runner.chosen_by(s.package), s.tried)
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
