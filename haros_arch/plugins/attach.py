@@ -204,6 +204,11 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 elif slot.names == EXPORTED:
                     choices = list(_exported(instance, slot, params, nodes, models,
                                              workspace, decl.package))
+                    # an installed host of every class it finds offers its own
+                    # interface as it offers theirs (ROS 1 mavros' raw MAVLink bridge,
+                    # ``mavlink/to`` and ``mavlink/from``): its model's links
+                    instance.offered = instance.offered or (
+                        instance.node is not None and instance.node.model is not None)
                 elif slot.names == DESCRIBED:
                     choices = list((hardware or {}).get(id(instance), ()))
                 elif slot.names == KEYED:
