@@ -1077,6 +1077,7 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
     run_extras(it, command, args[0])
     it.found_packages.add(args[0].lower())
     _client_version(it, args[0])
+    _message_files(it, args[0])
     found = _tool_found(it, args[0], "REQUIRED" in args[1:])
     if found is None and _built_before(it, args[0]):
         found = "TRUE"
@@ -1099,11 +1100,39 @@ def _find_package(it: Interpreter, command: Invocation, args: list[str]) -> None
                 run_extras(it, command, arg)
                 it.found_packages.add(arg.lower())  # catkin finds each one
                 _client_version(it, arg)
+                _message_files(it, arg)
         it.set("catkin_LIBRARIES", ";".join(PACKAGE_MARK.format(c) for c in components))
         return
     for variable in (f"{args[0]}_LIBRARIES", f"{args[0]}_TARGETS"):
         if it.get(variable) is None:
             it.set(variable, PACKAGE_MARK.format(args[0]))
+
+
+def _message_files(it: Interpreter, name: str) -> None:
+    """What a ROS 1 message package's config (genmsg's ``<name>-msg-extras.cmake``) sets
+    for the packages that find it: ``<name>_MESSAGE_FILES`` and ``<name>_SERVICE_FILES``,
+    its definitions as ``msg/Name.msg`` / ``srv/Name.srv``, as installed. mavros 1.x
+    defines ``HAVE_SENSOR_MSGS_BATTERYSTATE_MSG`` where ``list(FIND
+    sensor_msgs_MESSAGE_FILES "msg/BatteryState.msg" ...)`` finds it, and publishes its
+    ``battery`` as sensor_msgs/BatteryState then (mavros_msgs/BatteryStatus else). The
+    definitions are those of the workspace's package, else of the shipped catalogue for
+    the distribution read; a package neither holds keeps the lists unset."""
+    if (it.environment.get("ROS_VERSION", "").strip() or it.package_ros_version) != "1":
+        return
+    from ..extract.cpp.interfaces import catalogue, definition_files
+    root = it.extras_of(name)[0] if it.extras_of is not None else ""
+    for kind, variable in (("msg", f"{name}_MESSAGE_FILES"),
+                           ("srv", f"{name}_SERVICE_FILES")):
+        if it.get(variable) is not None:
+            continue
+        if root:
+            names = [file[:-len(kind) - 1] for file in definition_files(root, kind)]
+        else:
+            lead = f"{name}/{kind}/"
+            names = [key[len(lead):] for key in catalogue(False, it.source_distro)
+                     if key.startswith(lead)]
+        if names:
+            it.set(variable, ";".join(f"{kind}/{n}.{kind}" for n in sorted(names)))
 
 
 def _client_version(it: Interpreter, name: str) -> None:

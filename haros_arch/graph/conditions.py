@@ -622,9 +622,14 @@ def _typed(value: Any, ctype: str | None, untyped: bool = False) -> object:
     return value
 
 
-def _read_value(link: Link, untyped: bool = False) -> object:
+def _read_value(link: Link, untyped: bool = False,
+                unseen: list[Parameter] | tuple[()] = ()) -> object:
     """The value a parameter read gets in this configuration (``untyped``: a read with
-    no type takes the value as it is, ``_typed``)."""
+    no type takes the value as it is, ``_typed``); not its default where ``unseen``,
+    the launch parameters of names not known statically, holds one that may be it (a
+    parameter file not read: ROS 1 mavros' ``<rosparam command="load"
+    file="$(find mavros)/launch/px4_config.yaml"/>`` where mavros is not installed here
+    may set ``landing_target/listen_lt``)."""
     call, param = link.call, link.resource
     if call is None or not isinstance(param, Parameter):
         return Unknown("not a parameter read")
@@ -637,6 +642,10 @@ def _read_value(link: Link, untyped: bool = False) -> object:
         return _typed(param.value, call.type, untyped)
     if param.setters:
         return Unknown(f"{param.name} is set by a node")
+    for other in unseen:
+        if other is not param and re.match(pattern_for(other.name), param.name):
+            return Unknown(f"{param.name} may be set by the launch parameter "
+                           f"{other.name}, not known statically")
     if call.has_default and call.default is not None:
         return _typed(call.default, call.type)
     return Unknown(f"{param.name} is not set and its default is not known")
@@ -795,6 +804,12 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
     # Python reads: a parameter read with no type takes any value (C++: the type of the
     # variable it writes, which the parse may not know)
     dynamic = instance.node is not None and instance.node.language == "python"
+    # the launch parameters of names not known statically (once per configuration)
+    unseen: list[Parameter] = [] if config is None else (
+        made["unseen"] if made is not None and "unseen" in made else [
+            p for p in config.parameters if p.is_unresolved and p.set_by_launch])
+    if made is not None and config is not None:
+        made["unseen"] = unseen
 
     def value(name: str, *, file: str | None,
               held: dict[str, str] | None = None, at: Location | None = None,
@@ -834,7 +849,7 @@ def _member_values(instance: NodeInstance, config: Configuration | None = None,
         found = [each for link in found for each in (
             declared.get(id(link.resource), [link]) if link.call is not None and (
                 link.call.kind == "read" and not link.call.has_default) else [link])]
-        values = [_read_value(link, dynamic) for link in found]
+        values = [_read_value(link, dynamic, unseen) for link in found]
         # constants the code also assigns the member: one that differs leaves it unknown
         values += [_typed(value, link.call.type) for link in found
                    if link.call is not None for value in link.call.also or ()]

@@ -204,6 +204,20 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 elif slot.names == EXPORTED:
                     choices = list(_exported(instance, slot, params, nodes, models,
                                              workspace, decl.package))
+                    # an installed host of every class it finds offers its own
+                    # interface as it offers theirs (ROS 1 mavros' raw MAVLink bridge,
+                    # ``mavlink/to`` and ``mavlink/from``): its model's links
+                    instance.offered = instance.offered or (
+                        instance.node is not None and instance.node.model is not None)
+                    # a deny or allow list not set as far as we see, which a parameter
+                    # file not known statically may set (mavros' own
+                    # px4_pluginlists.yaml where mavros is not installed here)
+                    for key in slot.lists or ():
+                        unseen = unseen or _may_be_set(
+                            instance.name.rstrip("/") + "/" + key, params,
+                            "chooses the plugins it loads")
+                    if unseen is not None:
+                        own_partial(instance, unseen, owned)
                 elif slot.names == DESCRIBED:
                     choices = list((hardware or {}).get(id(instance), ()))
                 elif slot.names == KEYED:
@@ -915,9 +929,11 @@ def _unseen_choice(instance: NodeInstance, slot: Slot, params: Params) -> str | 
     return _may_be_set(base + written, params)
 
 
-def _may_be_set(name: str, params: Params) -> str | None:
-    """Why the plugins the parameter ``name`` names are not known, when it is not set
-    as far as we see but a launch parameter not known statically may be it; else None."""
+def _may_be_set(name: str, params: Params,
+                role: str = "names the plugins it loads") -> str | None:
+    """Why the plugins the parameter ``name`` names (or, as ``role`` says, chooses) are
+    not known, when it is not set as far as we see but a launch parameter not known
+    statically may be it; else None."""
     if _parameter(params, name) is not None:
         return None
     for (kind, full), each in params.by_name.items():
@@ -925,7 +941,7 @@ def _may_be_set(name: str, params: Params) -> str | None:
             each.set_by_launch and re.match(pattern_for(full), name)
         ):
             where = each.launch_location
-            return (f"{name}, which names the plugins it loads, may be set by the launch "
+            return (f"{name}, which {role}, may be set by the launch "
                     f"parameter {full} not known statically ({where.file}:{where.line}): "
                     "they may be others than those seen (its defaults, or none)")
     return None

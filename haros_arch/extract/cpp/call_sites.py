@@ -807,9 +807,27 @@ def argument(call: Cursor, parm: Cursor, index: int) -> Cursor | None:
             if any(is_default_argument(a) for a in args[skip:]):
                 return None  # a placeholder (``_1``) or a default: not known here
             args = args[skip:]
+    if call.kind == CursorKind.CALL_EXPR and _object_first(call, parm, args):
+        args = args[1:]
     if index < len(args) and not is_default_argument(args[index]):
         return args[index]
     return default_argument(parm)
+
+
+def _object_first(call: Cursor, parm: Cursor, args: list[Cursor]) -> bool:
+    """Whether ``args`` begin with the object a call in operator syntax is made on: a
+    call of a lambda through its variable (``getP(ns, "takeoff_height", h)``, clang's
+    operator call of its ``operator()``) or of a functor's ``operator()`` lists that
+    object first (jetyak_uav_utils' behaviours read ``ns + name`` with the arguments
+    one place off: ``?~``)."""
+    method = parm.semantic_parent
+    if not args or method is None or method.kind != CursorKind.CXX_METHOD or (
+            not call.spelling.startswith("operator")):
+        return False
+    owner = method.semantic_parent
+    first = args[0].type.get_canonical().get_declaration()
+    return owner is not None and first is not None and first.kind != CursorKind.NO_DECL_FOUND \
+        and first == owner
 
 
 # what calls a function it is given, with the arguments given after it: std::bind and
