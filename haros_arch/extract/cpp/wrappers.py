@@ -966,6 +966,16 @@ class Wrappers:
             if has_default and default is not None:
                 own.setdefault("has_default", True)
                 own.setdefault("default", default)
+        elif spec.kind in ("read", "declare") and given is not None and (
+            fields["default_arg"] is None and scope is not None
+        ) and not given.type.get_canonical().spelling.endswith("ParameterType"):
+            # a default computed from the wrapper's own parameters
+            # (``declare_parameter<int>(name + ".can_id", defaults.can_id)``): every call
+            # gives one, its value the call site's (not a type it is handed:
+            # ``declare_parameter(name, type)`` declares without a value)
+            has_default, _ = self.finder._default(spec, args[shift:], scope)
+            if has_default:
+                own.setdefault("has_default", True)
         row = dataclasses.replace(
             spec, name_arg=name_arg, optional_handle=False, name_candidates=(),
             out_arg=None, **fields)  # type: ignore[arg-type]
