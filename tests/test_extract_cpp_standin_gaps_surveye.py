@@ -1,0 +1,54 @@
+"""Stand-in gaps seen on real ROS 2 code (bench/README, helper surveyE): each left a C++
+error in a function of a node, which made the node partial where that function calls the
+ROS API (EduArt's edu_robot, pf-robotics' kachaka-api)."""
+
+from __future__ import annotations
+
+import pytest
+from standin_gap_checks import assert_call_found
+
+HEAD = "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+
+CASES = {
+    # Eigen's complete orthogonal decomposition and its pseudo-inverse (edu_robot's
+    # universal bots invert their kinematic matrix so in initialize)
+    "complete_orthogonal_decomposition": (
+        "#include <Eigen/Dense>\n",
+        "  Eigen::MatrixXf kinematic(4, 3);\n"
+        "  Eigen::MatrixXf inverse = kinematic.completeOrthogonalDecomposition().pseudoInverse();\n"
+        "  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(Eigen::MatrixXd(3, 3));\n"
+        "  auto rank = cod.rank();\n"),
+    # a plane rotation times a vector (edu_robot's odometry estimator)
+    "rotation2d_times_vector": (
+        "#include <Eigen/Geometry>\n",
+        "  const Eigen::Vector2f velocity(1.0f, 0.0f);\n"
+        "  const Eigen::Vector2f direction = Eigen::Rotation2Df(0.5f) * velocity;\n"
+        "  Eigen::Rotation2Dd turn = Eigen::Rotation2Dd(0.1) * Eigen::Rotation2Dd(0.2).inverse();\n"),
+    # a map filled with the elements of another's range (edu_robot's diagnostics)
+    "map_range_insert": (
+        "#include <map>\n#include <string>\n",
+        "  std::map<std::string, int> entries, more;\n"
+        "  entries.insert(more.begin(), more.end());\n"),
+    # cv::Mat's MatSize member, a two-index ptr, and cv_bridge's compressed image copy
+    # (kachaka's hand recognition node reads a network's output and its image so)
+    "mat_size_and_compressed_copy": (
+        "#include <cv_bridge/cv_bridge.hpp>\n#include <sensor_msgs/msg/compressed_image.hpp>\n",
+        "  cv::Mat result;\n"
+        "  const int height = result.size[2];\n"
+        "  cv::Size whole = result.size();\n"
+        "  float* row = reinterpret_cast<float*>(result.ptr(0, height));\n"
+        "  sensor_msgs::msg::CompressedImage::ConstSharedPtr msg;\n"
+        "  cv::Mat image = cv_bridge::toCvCopy(msg, \"bgr8\")->image;\n"
+        "  cv::Mat other = cv_bridge::toCvCopy(*msg)->image;\n"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
+    include, body = CASES[case]
+    assert_call_found(tmp_path, (
+        HEAD + include + "int main(int argc, char** argv) {\n"
+        "  rclcpp::init(argc, argv);\n"
+        "  auto node = std::make_shared<rclcpp::Node>(\"node\");\n" + body +
+        "  auto pub = node->create_publisher<std_msgs::msg::String>(\"out\", 10);\n}\n"),
+        "ament_cmake", "jazzy")
