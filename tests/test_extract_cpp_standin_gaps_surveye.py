@@ -40,6 +40,35 @@ CASES = {
         "  sensor_msgs::msg::CompressedImage::ConstSharedPtr msg;\n"
         "  cv::Mat image = cv_bridge::toCvCopy(msg, \"bgr8\")->image;\n"
         "  cv::Mat other = cv_bridge::toCvCopy(*msg)->image;\n"),
+    # nlohmann/json, installed, not in the workspace (kachaka's diagnostics bridge reads
+    # its error table so before it makes its topic bridge): the header was missing, and
+    # ``element["code"].get<int>()`` of a name declared permissively an error
+    "nlohmann_json": (
+        "#include <map>\n#include <fstream>\n#include <nlohmann/json.hpp>\n"
+        "using json = nlohmann::json;\n"
+        "struct Pose { double x; NLOHMANN_DEFINE_TYPE_INTRUSIVE(Pose, x) };\n",
+        "  json table = json::parse(std::string(\"[]\"));\n"
+        "  std::map<std::string, json> by_code;\n"
+        "  for (auto& element : table) {\n"
+        "    auto code = std::to_string(element[\"code\"].get<int>());\n"
+        "    by_code[code] = element;\n"
+        "  }\n"
+        "  std::ifstream file(\"config.json\");\n"
+        "  json config;\n"
+        "  file >> config;\n"
+        "  std::string topic = config.value(\"topic\", \"out\");\n"
+        "  double rate = config.value(\"rate\", 10.0);\n"
+        "  std::string name = config[\"name\"];\n"
+        "  if (config.contains(\"frames\") && config[\"frames\"].is_array()) {\n"
+        "    for (const auto& item : config[\"frames\"].items()) {\n"
+        "      std::string key = item.key();\n"
+        "      int n = item.value().get<int>();\n"
+        "    }\n"
+        "  }\n"
+        "  json reply = {{\"ok\", true}, {\"rate\", rate}};\n"
+        "  reply[\"names\"].push_back(name);\n"
+        "  std::string text = reply.dump(2);\n"
+        "  try { json::parse(text); } catch (const json::parse_error& e) { e.what(); }\n"),
 }
 
 
