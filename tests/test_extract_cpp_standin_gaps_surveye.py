@@ -23,7 +23,8 @@ CASES = {
         "#include <Eigen/Geometry>\n",
         "  const Eigen::Vector2f velocity(1.0f, 0.0f);\n"
         "  const Eigen::Vector2f direction = Eigen::Rotation2Df(0.5f) * velocity;\n"
-        "  Eigen::Rotation2Dd turn = Eigen::Rotation2Dd(0.1) * Eigen::Rotation2Dd(0.2).inverse();\n"),
+        "  Eigen::Rotation2Dd turn =\n"
+        "      Eigen::Rotation2Dd(0.1) * Eigen::Rotation2Dd(0.2).inverse();\n"),
     # a map filled with the elements of another's range (edu_robot's diagnostics)
     "map_range_insert": (
         "#include <map>\n#include <string>\n",

@@ -90,7 +90,7 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
     return actions
 
 
-def _parse_python(text: str, path: str, runner: Runner) -> list[e.Action]:
+def _parse_python(text: str, path: str, runner: Runner) -> list[e.Action] | None:
     """The actions of a Python launch file's text."""
     from .python import parse_python
 
