@@ -70,6 +70,33 @@ CASES = {
         "  reply[\"names\"].push_back(name);\n"
         "  std::string text = reply.dump(2);\n"
         "  try { json::parse(text); } catch (const json::parse_error& e) { e.what(); }\n"),
+    # SocketCAN (``linux/can.h``, ``linux/can/raw.h``) and ``net/if.h``'s interface
+    # request: edu_robot's CAN gateway opens its bus so (26 errors, the headers missing)
+    "socketcan": (
+        "#include <cstring>\n#include <unistd.h>\n#include <sys/ioctl.h>\n"
+        "#include <sys/socket.h>\n#include <net/if.h>\n#include <linux/can.h>\n"
+        "#include <linux/can/raw.h>\n#include <linux/can/error.h>\n",
+        "  int fd = ::socket(PF_CAN, SOCK_RAW, CAN_RAW);\n"
+        "  int enable = 1;\n"
+        "  ::setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FD_FRAMES, &enable, sizeof(enable));\n"
+        "  ifreq ifr;\n"
+        "  std::strcpy(ifr.ifr_name, \"can0\");\n"
+        "  ::ioctl(fd, SIOCGIFINDEX, &ifr);\n"
+        "  sockaddr_can addr;\n"
+        "  addr.can_family = AF_CAN;\n"
+        "  addr.can_ifindex = ifr.ifr_ifindex;\n"
+        "  ::bind(fd, (sockaddr *)&addr, sizeof(addr));\n"
+        "  can_frame frame;\n"
+        "  frame.can_id = 0x123 | CAN_EFF_FLAG;\n"
+        "  frame.can_dlc = 8;\n"
+        "  std::memset(frame.data, 0, CAN_MAX_DLEN);\n"
+        "  ::write(fd, &frame, sizeof(can_frame));\n"
+        "  canfd_frame fd_frame;\n"
+        "  fd_frame.len = 64;\n"
+        "  ::send(fd, &fd_frame, sizeof(canfd_frame), 0);\n"
+        "  can_filter filter{0x100, CAN_SFF_MASK};\n"
+        "  ::setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER, &filter, sizeof(filter));\n"
+        "  unsigned int index = if_nametoindex(\"can0\");\n"),
 }
 
 
