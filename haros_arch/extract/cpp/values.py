@@ -1362,6 +1362,12 @@ class Scope:
         if kind == CursorKind.STRING_LITERAL:
             text = literal(cursor.spelling)
             return UNKNOWN if text is None else (text,)
+        if kind == CursorKind.CHARACTER_LITERAL:
+            # ``ns + '/' + topic``: std::string's operator+ appends the one character
+            # (libclang spells the literal's cursor empty: its one token)
+            tokens = [t.spelling for t in cursor.get_tokens()]
+            text = char_literal(tokens[0]) if len(tokens) == 1 else None
+            return UNKNOWN if text is None else (text,)
         if kind in (CursorKind.DECL_REF_EXPR, CursorKind.MEMBER_REF_EXPR):
             decl = cursor.referenced
             if decl is None:  # a name in a template that clang could not bind
@@ -2771,6 +2777,19 @@ def literal(spelling: str) -> str | None:
             out.append(char)
             i += 1
     return "".join(out)
+
+
+def char_literal(spelling: str) -> str | None:
+    """The character of a plain C character literal as clang spells it (``'.'``,
+    ``'\\n'``), or None (a wide, multi-character or numeric-escape literal)."""
+    if len(spelling) < 3 or not spelling.startswith("'") or not spelling.endswith("'"):
+        return None
+    body = spelling[1:-1]
+    if len(body) == 1 and body != "\\":
+        return body
+    if len(body) == 2 and body[0] == "\\" and body[1] in _ESCAPES:
+        return _ESCAPES[body[1]]
+    return None
 
 
 # the C functions that print into an array, with the index of their format argument

@@ -959,13 +959,25 @@ class Wrappers:
         ) and not any(node.kind == CursorKind.DECL_REF_EXPR and node.referenced is not None
                       and node.referenced.kind == CursorKind.PARM_DECL
                       for node in given.walk_preorder()):
-            # a literal default the wrapper writes itself (``nh.param(n, v, false)``):
-            # each call of it has that default (not one its callers pass, which each
-            # call site gives)
+            # a default the wrapper writes itself (``nh.param(n, v, false)``, a local's
+            # ``declare_parameter<bool>(name + ".inverted", parameter.inverted)``):
+            # each call of it has that default, its value where it is a literal (not
+            # one its callers pass, which each call site gives)
             has_default, default = self.finder._default(spec, args[shift:], scope)
-            if has_default and default is not None:
+            if has_default:
                 own.setdefault("has_default", True)
-                own.setdefault("default", default)
+                if default is not None:
+                    own.setdefault("default", default)
+        elif spec.kind in ("read", "declare") and given is not None and (
+            fields["default_arg"] is None and scope is not None
+        ) and not given.type.get_canonical().spelling.endswith("ParameterType"):
+            # a default computed from the wrapper's own parameters
+            # (``declare_parameter<int>(name + ".can_id", defaults.can_id)``): every call
+            # gives one, its value the call site's (not a type it is handed:
+            # ``declare_parameter(name, type)`` declares without a value)
+            has_default, _ = self.finder._default(spec, args[shift:], scope)
+            if has_default:
+                own.setdefault("has_default", True)
         row = dataclasses.replace(
             spec, name_arg=name_arg, optional_handle=False, name_candidates=(),
             out_arg=None, **fields)  # type: ignore[arg-type]

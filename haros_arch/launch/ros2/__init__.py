@@ -8,6 +8,7 @@ performs it. ``is_ros2(path)`` tells a ROS 2 launch file from a roslaunch one.
 
 from __future__ import annotations
 
+import ast
 import os
 from collections.abc import Mapping
 from typing import Any
@@ -42,23 +43,11 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
     here = workspace.location(path)
     lower = path.lower()
     if lower.endswith(".py"):
-        from .python import parse_python
-
         text, found = read_text(path, here)
         runner.model.diagnostics.extend(found)
         if text is None:
             return None
-        written: dict[str, str] = {}
-        unsure = set(runner.environment_unsure)
-        actions, problems = parse_python(text, path, workspace, runner.loaded_environment(),
-                                         uses=runner.model.package_uses,
-                                         command_line=runner.command_line,
-                                         written=written, unsure=unsure,
-                                         made=runner.model.environment_values,
-                                         argv=runner.argv)
-        runner.wrote(written, unsure)
-        runner.model.diagnostics.extend(problems)
-        return actions
+        return _parse_python(text, path, runner)
     front = Frontend(path, workspace)
     try:
         if lower.endswith((".yaml", ".yml")):
@@ -74,6 +63,12 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
                 return None
             root = xml_entities(data)
     except etree.XMLSyntaxError as err:
+        text = _python_launch_text(path)
+        if text is not None:
+            # launch loads a file of another extension with its front ends first, then
+            # as Python (``get_launch_description_from_any_launch_file``): a Python
+            # launch file named ``*.launch`` is one (CMU's autonomy stacks)
+            return _parse_python(text, path, runner)
         line, col = err.position if err.position else (0, 0)
         runner.report("LAUNCH_XML_SYNTAX", workspace.location(path, line, col),
                       detail=err.msg)
@@ -93,6 +88,37 @@ def parse_file(path: str, runner: Runner, where: Location) -> list[e.Action] | N
     actions = front.actions(root.children)
     runner.model.diagnostics.extend(front.diagnostics)
     return actions
+
+
+def _parse_python(text: str, path: str, runner: Runner) -> list[e.Action] | None:
+    """The actions of a Python launch file's text."""
+    from .python import parse_python
+
+    written: dict[str, str] = {}
+    unsure = set(runner.environment_unsure)
+    actions, problems = parse_python(text, path, runner.workspace, runner.loaded_environment(),
+                                     uses=runner.model.package_uses,
+                                     command_line=runner.command_line,
+                                     written=written, unsure=unsure,
+                                     made=runner.model.environment_values,
+                                     argv=runner.argv)
+    runner.wrote(written, unsure)
+    runner.model.diagnostics.extend(problems)
+    return actions
+
+
+def _python_launch_text(path: str) -> str | None:
+    """The text of a file that is no XML when it is a Python launch file: Python that
+    defines ``generate_launch_description``, which launch's Python loader then calls."""
+    try:
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+        tree = ast.parse(text, filename=path)
+    except (OSError, UnicodeDecodeError, SyntaxError, ValueError):
+        return None
+    return text if any(isinstance(node, ast.FunctionDef)
+                       and node.name == "generate_launch_description"
+                       for node in tree.body) else None
 
 
 def command_argv(workspace: Workspace, path: str, args: Mapping[str, str]

@@ -576,6 +576,20 @@ def parameters(i: Interpreter, value: Any, n: ast.AST) -> list[e.ParamEntry]:
                 item.where is not None):
             # said where it was made (a call not run, a file not read): not again here
             out.append(e.UnknownParams(item.origin, item.where))
+        elif isinstance(item, e.Action) and not isinstance(
+                item, (e.Unsupported, e.UnknownAction)):
+            # a launch action (edu_robot's ``OpaqueFunction(function=..., args=[...])``
+            # meant to pick a parameter file): launch_ros takes what is no mapping for a
+            # file's path and refuses an action (``ensure_argument_type``: TypeError)
+            # when the Node is made, so the launch file does not load
+            written_as = _source(display) if display is not None else "an action"
+            i.diagnostics.append(diag.make(
+                "LAUNCH_BAD_VALUE", i.where(display if display is not None else n),
+                detail=f"a node parameter entry is the launch action {written_as}, "
+                       "not a parameter file or dictionary: launch_ros refuses it "
+                       "(TypeError) and the launch file does not load"))
+            out.append(e.UnknownParams("a launch action given as a node parameter entry",
+                                       i.where(n)))
         else:
             i.unsupported(n, "a node parameter entry not known statically")
             out.append(e.UnknownParams("a node parameter entry not known statically",

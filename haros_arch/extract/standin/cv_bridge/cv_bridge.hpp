@@ -29,6 +29,9 @@ typedef std::shared_ptr<CvImage> CvImagePtr;
 typedef std::shared_ptr<CvImage const> CvImageConstPtr;
 CvImagePtr toCvCopy(const sensor_msgs::msg::Image::ConstSharedPtr& source, const std::string& encoding = std::string());
 CvImagePtr toCvCopy(const sensor_msgs::msg::Image& source, const std::string& encoding = std::string());
+// a compressed image decoded (kachaka's hand recognition)
+CvImagePtr toCvCopy(const sensor_msgs::msg::CompressedImage::ConstSharedPtr& source, const std::string& encoding = std::string());
+CvImagePtr toCvCopy(const sensor_msgs::msg::CompressedImage& source, const std::string& encoding = std::string());
 CvImageConstPtr toCvShare(const sensor_msgs::msg::Image::ConstSharedPtr& source, const std::string& encoding = std::string());
 int getCvType(const std::string& encoding);
 }  // namespace cv_bridge

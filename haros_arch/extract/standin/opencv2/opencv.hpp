@@ -249,13 +249,22 @@ public:
   int depth() const;
   int channels() const;
   size_t elemSize() const;
-  Size size() const;
+  // ``m.size()`` and, of a matrix of several dimensions, ``m.size[2]``: OpenCV's MatSize
+  // member (kachaka's hand recognition reads a network's output so)
+  struct MatSize {
+    Size operator()() const;
+    const int& operator[](int i) const;
+    int& operator[](int i);
+    int dims() const;
+  } size;
   template<class T> T& at(int row, int col);
   template<class T> const T& at(int row, int col) const;
   template<class T> T& at(int i);
   template<class T> T& at(Point pt);
   template<class T> T* ptr(int row = 0);
   uchar* ptr(int row = 0);
+  template<class T> T* ptr(int i0, int i1);
+  uchar* ptr(int i0, int i1);
   static Mat zeros(int rows, int cols, int type);
   static Mat zeros(Size size, int type);
   static Mat ones(int rows, int cols, int type);

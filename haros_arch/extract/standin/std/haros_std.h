@@ -912,6 +912,9 @@ public:
   const_iterator find(const K& k) const;
   pair<iterator, bool> insert(const value_type& v);
   iterator insert(const_iterator hint, const value_type& v);
+  // the elements of a range (``m.insert(other.begin(), other.end())``, edu_robot's
+  // diagnostics merging their entries)
+  template<class It> void insert(It first, It last);
   template<class... Args> pair<iterator, bool> emplace(Args&&... args);
   template<class M> pair<iterator, bool> insert_or_assign(const K& k, M&& value);
   template<class... Args> pair<iterator, bool> try_emplace(const K& k, Args&&... args);
