@@ -80,9 +80,14 @@ def raise_if_stopped() -> None:
         raise held_signals.requested
 
 
+def _stop_for(signum: int) -> BaseException:
+    """The exception a stop signal raises: Ctrl-C's KeyboardInterrupt, else the exit
+    status 128 + the signal's number."""
+    return KeyboardInterrupt() if signum == signal.SIGINT else SystemExit(128 + signum)
+
+
 def _stopped(signum: int, _frame: FrameType | None) -> None:
-    error: BaseException = (KeyboardInterrupt() if signum == signal.SIGINT
-                            else SystemExit(128 + signum))
+    error = _stop_for(signum)
     if signum == signal.SIGTERM:
         # once: a second SIGTERM (``timeout`` signals the whole process group, a worker
         # may pass one on) must not interrupt the unwinding the first one started
@@ -112,12 +117,12 @@ def _unraisable(unraisable: Any) -> None:
     """``sys.unraisablehook`` within ``stop_signals``: the stop asked for, raised in a
     finaliser (``__del__``, which the interpreter calls wherever an object's last
     reference goes: libclang's strings and translation units in a walk) or in a callback
-    of C code (libclang's ``get_includes``), is raised again soon (``_again_soon``), not
-    printed with its traceback as an ignored exception and dropped; anything else goes
-    to the hook before it."""
+    of C code (libclang's ``get_includes``), is raised again in ``AGAIN_SECONDS``
+    (``_again``), out of where it came by then, not printed with its traceback as an
+    ignored exception and dropped; anything else goes to the hook before it."""
     if unraisable.exc_value is not None and unraisable.exc_value is held_signals.requested:
         held_signals.dropped = True
-        _again_soon()
+        _soon(_again)
         return
     before = _UNRAISABLE_BEFORE[-1] if _UNRAISABLE_BEFORE else sys.__unraisablehook__
     before(unraisable)
@@ -127,15 +132,10 @@ def _unraisable(unraisable: Any) -> None:
 _UNRAISABLE_BEFORE: list[Callable[[Any], None]] = []
 
 
-def _again_soon() -> None:
-    """Raise the stop asked for again in ``AGAIN_SECONDS``, out of the finaliser it came
-    in by then, unless it was raised again meanwhile (where the run holds it: the end of
-    a visit, a wait's poll): twice, the second would interrupt the unwinding of the
-    first (a pool's workers left)."""
-    _soon(_again)
-
-
-def _again(frame: FrameType | None) -> None:
+def _again(_frame: FrameType | None) -> None:
+    """Raise the stop dropped (``_unraisable``) unless it was raised again meanwhile
+    (where the run holds it: the end of a visit, a wait's poll): twice, the second would
+    interrupt the unwinding of the first (a pool's workers left)."""
     stop = held_signals.requested
     if stop is not None and held_signals.dropped:  # not raised again since it was dropped
         _request(stop)
@@ -247,11 +247,10 @@ def _worker_stopped(signum: int, frame: Any) -> None:
     if _in_task:
         _stopped(signum, frame)
         return
-    stop: BaseException = (KeyboardInterrupt() if signum == signal.SIGINT
-                           else SystemExit(128 + signum))
+    stop = _stop_for(signum)
     if _sending(frame):
         held_signals.requested = stop
-        _end_when_sent()
+        _soon(_sent)
         return
     _end_worker(stop)
 
@@ -276,18 +275,14 @@ def _sending(frame: FrameType | None) -> bool:
     return False
 
 
-def _end_when_sent() -> None:
+def _sent(frame: FrameType | None) -> None:
     """End the worker once it is no longer writing a message (``_sending``): looked at
     again every ``AGAIN_SECONDS``."""
-    _soon(_sent)
-
-
-def _sent(frame: FrameType | None) -> None:
     stop = held_signals.requested
     if stop is None:
         return
     if _sending(frame):
-        _end_when_sent()
+        _soon(_sent)
     else:
         _end_worker(stop)
 
