@@ -216,8 +216,6 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                         unseen = unseen or _may_be_set(
                             instance.name.rstrip("/") + "/" + key, params,
                             "chooses the plugins it loads")
-                    if unseen is not None:
-                        own_partial(instance, unseen, owned)
                 elif slot.names == DESCRIBED:
                     choices = list((hardware or {}).get(id(instance), ()))
                 elif slot.names == KEYED:
@@ -225,8 +223,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 else:
                     choices = list(_chosen(instance, slot, params))
                     unseen = _unseen_choice(instance, slot, params)
-                    if unseen is not None:
-                        own_partial(instance, unseen, owned)
+                if unseen is not None:
+                    own_partial(instance, unseen, owned)
                 if slot.kept is not None:
                     # the plugin objects the host's code keeps (``Slot.kept``): all of
                     # them known unless a parameter not seen may choose others
@@ -280,6 +278,9 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     node = _lookup(choice, index, workspace, models)
     reader = instance
+    # a class of an installed package's model its host loads because it loads every one
+    # it finds: what it makes is the interface the host offers (``NodeInstance.offered``)
+    offered = slot.names == EXPORTED and node is not None and node.model is not None
     if node is None and slot.placement == "node" and _named_class(choice):
         # a controller of a class known by name that no package here or model exports
         # (ros2_controllers' JointStateBroadcaster without its source): still a node of
@@ -309,7 +310,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
             instance, replace(choice, name=renamed) if renamed else choice, node, config,
             slot.beneath_host and (decl is None or not (
                 decl.namespace_given or decl.namespace.strip("/"))))
-        reader.offered = slot.names == EXPORTED and node.model is not None
+        reader.offered = offered
         if slot.names in (EXPORTED, SPAWNER) and decl is not None:
             # a node the process makes: its files apply by name (a controller's section
             # of the file given to ros2_control_node, after its spawner's file, whose
@@ -348,7 +349,7 @@ def _load(choice: Choice, slot: Slot, instance: NodeInstance, index: Mapping[str
         if choice.moved_to:
             calls = [replace(call, name=_moved(call.name, choice.moved_to))
                      for call in calls]
-        if slot.names == EXPORTED and node.model is not None:
+        if offered:
             calls = [replace(call, offered=True) for call in calls]
         row = sources_of(choice.cls or "", instance.ros_version) or sources_of(
             node.plugin_class or "", instance.ros_version) or _base_sources(
