@@ -2030,11 +2030,7 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
         silent.setdefault(name, []).extend(ranges)  # no code of this build
     found: list[Diagnostic] = []
     for name in files:
-        text = source.text(name)
-        if text is None:
-            continue
-        sites = recall.call_sites(text, wrappers, bare, finder.ros2,
-                                  finder.wrappers.site_qualifiers)
+        sites = places.sites(name)
         if not sites:
             continue
         relative = workspace.relpath(name)
@@ -2484,14 +2480,20 @@ class _Places:
         if span is None:
             return False
         assert error.path is not None
-        text = self.source.text(error.path) or ""
-        wrappers = self.finder.wrappers
-        sites = recall.call_sites(text, sorted(n for n in wrappers.site_names if n),
-                                  wrappers.site_names_bare, self.finder.ros2,
-                                  wrappers.site_qualifiers)
         first = data.count(b"\n", 0, span[0]) + 1
         last = first + data.count(b"\n", span[0], span[1])
-        return not any(first <= site.line <= last for site in sites)
+        return not any(first <= site.line <= last for site in self.sites(error.path) or ())
+
+    def sites(self, name: str) -> list[recall.Site] | None:
+        """The ROS call sites of file ``name`` (``recall.call_sites``), of the API and of
+        the unit's wrappers; None when it cannot be read."""
+        text = self.source.text(name)
+        if text is None:
+            return None
+        wrappers = self.finder.wrappers
+        return recall.call_sites(text, sorted(n for n in wrappers.site_names if n),
+                                 wrappers.site_names_bare, self.finder.ros2,
+                                 wrappers.site_qualifiers)
 
     def words(self, error: _Error) -> frozenset[bytes] | None:
         """The words of the code where ``error`` can hide a statement: the text of the
