@@ -21,6 +21,17 @@ def ros1_main(include: str, body: str) -> str:
             "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n}\n")
 
 
+ROS2_HEAD = "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+
+
+def ros2_main(include: str, body: str) -> str:
+    """An rclcpp main whose ``body`` comes before its publisher of ``out``."""
+    return (ROS2_HEAD + include + "int main(int argc, char** argv) {\n"
+            "  rclcpp::init(argc, argv);\n"
+            "  auto node = std::make_shared<rclcpp::Node>(\"node\");\n" + body +
+            "  auto pub = node->create_publisher<std_msgs::msg::String>(\"out\", 10);\n}\n")
+
+
 def assert_call_found(tmp_path: Path, text: str, build: str | None = None,
                       distro: str = "noetic") -> None:
     """``text`` as the node's source parses without an error, and its publisher of

@@ -5,9 +5,7 @@ ROS API."""
 from __future__ import annotations
 
 import pytest
-from standin_gap_checks import assert_call_found
-
-HEAD = "#include <rclcpp/rclcpp.hpp>\n#include <std_msgs/msg/string.hpp>\n"
+from standin_gap_checks import assert_call_found, ros2_main
 
 CASES = {
     # rclcpp's logging macros pass their first argument through rclcpp::get_c_string:
@@ -109,9 +107,4 @@ CASES = {
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_a_call_after_the_library_s_use_is_found(tmp_path, case: str) -> None:
     include, body = CASES[case]
-    assert_call_found(tmp_path, (
-        HEAD + include + "int main(int argc, char** argv) {\n"
-        "  rclcpp::init(argc, argv);\n"
-        "  auto node = std::make_shared<rclcpp::Node>(\"node\");\n" + body +
-        "  auto pub = node->create_publisher<std_msgs::msg::String>(\"out\", 10);\n}\n"),
-        "ament_cmake", "jazzy")
+    assert_call_found(tmp_path, ros2_main(include, body), "ament_cmake", "jazzy")

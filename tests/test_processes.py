@@ -154,24 +154,32 @@ def _left(marker: str) -> list[str]:
     return found
 
 
-def _stopped_pool(kind: str, wait: float = 1.0) -> tuple[float, list[str]]:
-    """How long the run took to end after the stop, and its tasks begun."""
+def _run_script(script: str, *args: str, timeout: float) -> tuple[int, str, str]:
+    """Run ``script`` in a fresh interpreter, in a session of its own (its workers end
+    with it): its exit status, stdout and stderr; a run that does not end within
+    ``timeout`` is killed and fails the test."""
     import subprocess
     import sys
-    import uuid
 
-    marker = f"haros-arch-pool-test-{uuid.uuid4().hex}"
-    run = subprocess.Popen([sys.executable, "-c", STOPPED_POOL, kind, marker, str(wait)],
-                           text=True,
+    run = subprocess.Popen([sys.executable, "-c", script, *args], text=True,
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                            start_new_session=True)
     try:
-        stdout, stderr = run.communicate(timeout=240)
+        stdout, stderr = run.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
         os.killpg(run.pid, signal.SIGKILL)
         stdout, stderr = run.communicate()
-        raise AssertionError(f"the stopped pool did not end: {stdout}{stderr}") from None
-    assert run.returncode == 143, stdout + stderr
+        raise AssertionError(f"the run did not end: {stdout}{stderr}") from None
+    return run.returncode, stdout, stderr
+
+
+def _stopped_pool(kind: str, wait: float = 1.0) -> tuple[float, list[str]]:
+    """How long the run took to end after the stop, and its tasks begun."""
+    import uuid
+
+    marker = f"haros-arch-pool-test-{uuid.uuid4().hex}"
+    code, stdout, stderr = _run_script(STOPPED_POOL, kind, marker, str(wait), timeout=240)
+    assert code == 143, stdout + stderr
     assert _left(marker) == [], "a worker was left behind"
     times = {line.split()[0]: float(line.split()[1]) for line in stdout.splitlines()
              if line.startswith(("stop ", "end "))}
@@ -300,19 +308,8 @@ with processes.stop_signals(), processes.worker_pool(2) as pool:
 
 def test_a_stop_while_waiting_for_a_result_ends_the_run():
     """The run ends with the stop's status, not waiting for good at its exit."""
-    import subprocess
-    import sys
-
-    run = subprocess.Popen([sys.executable, "-c", STOPPED_IN_WAIT], text=True,
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           start_new_session=True)
-    try:
-        stdout, stderr = run.communicate(timeout=120)
-    except subprocess.TimeoutExpired:
-        os.killpg(run.pid, signal.SIGKILL)
-        stdout, stderr = run.communicate()
-        raise AssertionError(f"the stopped run did not end: {stdout}{stderr}") from None
-    assert run.returncode == 143, stdout + stderr
+    code, stdout, stderr = _run_script(STOPPED_IN_WAIT, timeout=120)
+    assert code == 143, stdout + stderr
     assert "Traceback" not in stderr, stderr
 
 
@@ -359,14 +356,10 @@ with processes.stop_signals():
 @pytest.mark.parametrize("where", ["run", "pool"])
 @pytest.mark.parametrize("inside", ["finaliser", "callback"])
 def test_a_stop_in_a_finaliser_or_callback_ends_the_run_with_no_traceback(where, inside):
-    import subprocess
-    import sys
-
-    run = subprocess.run([sys.executable, "-c", STOPPED_IN_FINALISER, where, inside], text=True,
-                         capture_output=True, timeout=120, start_new_session=True)
-    assert "result" not in run.stdout, run.stdout + run.stderr
-    assert "Traceback" not in run.stderr and "Exception ignored" not in run.stderr, run.stderr
-    assert run.returncode == 143, run.stdout + run.stderr
+    code, stdout, stderr = _run_script(STOPPED_IN_FINALISER, where, inside, timeout=120)
+    assert "result" not in stdout, stdout + stderr
+    assert "Traceback" not in stderr and "Exception ignored" not in stderr, stderr
+    assert code == 143, stdout + stderr
 
 
 # a pool worker stopped (SIGTERM) while it writes a large result back to the run: it
@@ -390,16 +383,5 @@ with processes.stop_signals(), processes.worker_pool(1) as pool:
 
 
 def test_a_worker_stopped_while_it_sends_its_result_ends_after_the_message():
-    import subprocess
-    import sys
-
-    run = subprocess.Popen([sys.executable, "-c", STOPPED_IN_SEND], text=True,
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           start_new_session=True)
-    try:
-        stdout, stderr = run.communicate(timeout=90)
-    except subprocess.TimeoutExpired:
-        os.killpg(run.pid, signal.SIGKILL)
-        stdout, stderr = run.communicate()
-        raise AssertionError(f"the run did not end: {stdout}{stderr}") from None
+    _code, stdout, stderr = _run_script(STOPPED_IN_SEND, timeout=90)
     assert "result 200000000" in stdout, stdout + stderr

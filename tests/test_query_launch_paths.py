@@ -180,24 +180,28 @@ def generate_launch_description():
 """
 
 
+def _hard_coded_bridges(write_tree, text: str) -> list[tuple[str, ...]]:  # type: ignore[no-untyped-def]
+    """The entities of each absolute-paths-in-launch finding of ``text`` as a package's
+    ``bridges.launch.py``."""
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/bridges.launch.py": text,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/bridges.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    return sorted(f.entities for f in run_rule(rule, model))
+
+
 def test_a_file_the_launch_file_writes_is_not_hard_coded(write_tree):
     """tb3_multi_robot's tb3_world.launch.py writes each robot's bridge configuration to
     ``/tmp/<robot>_bridge.yaml`` (``open(path, 'w')``, not run) and gives the bridge that
     path: a file made on the machine that runs the launch, not one of the author's
     (survey F). /tmp is a scratch folder anyway; here the file is written under /var. A
     path it only reads stays hard-coded."""
-    root = write_tree({
-        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
-        "src/nav/CMakeLists.txt": "project(nav)\n",
-        "src/nav/launch/bridges.launch.py": WRITING_LAUNCH,
-        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/bridges.launch.py]\n",
-    })
-    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
-    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
-    found = sorted(f.entities for f in run_rule(rule, model))
-    assert found == [("parameter:/tb1_bridge/calibration",),
-                     ("parameter:/tb3_bridge/calibration",)]
-
+    assert _hard_coded_bridges(write_tree, WRITING_LAUNCH) == [
+        ("parameter:/tb1_bridge/calibration",), ("parameter:/tb3_bridge/calibration",)]
 
 
 def test_a_file_an_opaque_function_writes_is_not_hard_coded(write_tree):
@@ -212,17 +216,9 @@ def test_a_file_an_opaque_function_writes_is_not_hard_coded(write_tree):
         "from launch import LaunchDescription",
         "from launch import LaunchDescription\nfrom launch.actions import OpaqueFunction")
     assert "OpaqueFunction(function=setup)" in opaque and "def setup(context):" in opaque
-    root = write_tree({
-        "src/nav/package.xml": package_xml("nav", "ament_cmake"),
-        "src/nav/CMakeLists.txt": "project(nav)\n",
-        "src/nav/launch/bridges.launch.py": opaque,
-        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/bridges.launch.py]\n",
-    })
-    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
-    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
-    found = sorted(f.entities for f in run_rule(rule, model))
-    assert found == [("parameter:/tb1_bridge/calibration",),
-                     ("parameter:/tb3_bridge/calibration",)]
+    assert _hard_coded_bridges(write_tree, opaque) == [
+        ("parameter:/tb1_bridge/calibration",), ("parameter:/tb3_bridge/calibration",)]
+
 
 TEXTFILE_LAUNCH = """<launch>
   <param name="robot_description" textfile="$(find nav)/urdf/robot.urdf" />
