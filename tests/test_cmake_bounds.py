@@ -6,6 +6,7 @@ from __future__ import annotations
 import time
 
 import pytest
+import regex
 
 from haros_arch.cmake import listops
 from haros_arch.cmake.interpreter import Interpreter
@@ -73,6 +74,29 @@ def test_regex_past_its_time_bound_leaves_the_value_unknown(monkeypatch) -> None
     it = run(PREFIX + text)
     assert it.get("out") is None
     assert [d.code for d in it.diagnostics] == ["CMAKE_LIMIT"]
+
+
+def test_a_busy_machine_does_not_stop_a_regex(monkeypatch) -> None:
+    # the engine's bound is of the clock; a machine busy with other work lets it pass
+    # while this run waits, having done almost nothing: the value must still be known
+    # (issue 24: no result may depend on the machine's load)
+    real = regex.compile("([a-z]+)_([0-9]+)")
+    waits: list[float] = []
+
+    class Busy:
+        groups = real.groups
+        pattern = real.pattern
+
+        def search(self, text: str, timeout: float):
+            waits.append(timeout)
+            if len(waits) < 3:
+                raise TimeoutError("regex timed out")  # the clock passed, not the work
+            return real.search(text, timeout=timeout)
+
+    bounded = listops.BoundedRegex(Busy())  # type: ignore[arg-type]
+    found = bounded.search("node_42")
+    assert found is not None and found.group(2) == "42"
+    assert waits[0] == listops.REGEX_SECONDS and waits[2] > waits[1] > waits[0]
 
 
 def test_regex_still_works() -> None:

@@ -10,12 +10,14 @@ from __future__ import annotations
 import ast
 import operator
 import re
+import time
 from collections.abc import Callable
-from typing import Protocol
+from typing import Protocol, TypeVar
 
 import regex
 
 _LIST_SEPARATOR = re.compile(r"(?<!\\);")
+T = TypeVar("T")
 
 
 class Scope(Protocol):
@@ -33,7 +35,9 @@ def split_list(value: str | None) -> list[str]:
     return [item for item in _LIST_SEPARATOR.split(value) if item]
 
 
-REGEX_SECONDS = 0.5  # one match, search or replace; a backtracking pattern stops there
+REGEX_SECONDS = 0.5  # of processor time: one match, search or replace; a backtracking
+# pattern stops there
+REGEX_WAIT_SECONDS = 32.0  # the longest the engine is let run by the clock
 
 
 class RegexLimit(Exception):
@@ -48,23 +52,30 @@ class BoundedRegex:
         self.compiled = compiled
         self.groups = compiled.groups
 
+    def _bounded(self, use: Callable[[float], T]) -> T:
+        """``use(timeout)`` within ``REGEX_SECONDS`` of this thread's processor time. The
+        engine's bound is of the clock: where it passes while the thread had the processor
+        for less than the bound (a machine busy with other work), the use is tried again
+        with a longer wait, so that whether a value is known does not depend on the
+        machine's load."""
+        wait = REGEX_SECONDS
+        while True:
+            began = time.thread_time()
+            try:
+                return use(wait)
+            except TimeoutError:
+                if time.thread_time() - began >= REGEX_SECONDS or wait >= REGEX_WAIT_SECONDS:
+                    raise RegexLimit(self.compiled.pattern) from None
+                wait *= 4
+
     def search(self, text: str) -> regex.Match[str] | None:
-        try:
-            return self.compiled.search(text, timeout=REGEX_SECONDS)
-        except TimeoutError:
-            raise RegexLimit(self.compiled.pattern) from None
+        return self._bounded(lambda wait: self.compiled.search(text, timeout=wait))
 
     def finditer(self, text: str) -> list[regex.Match[str]]:
-        try:
-            return list(self.compiled.finditer(text, timeout=REGEX_SECONDS))
-        except TimeoutError:
-            raise RegexLimit(self.compiled.pattern) from None
+        return self._bounded(lambda wait: list(self.compiled.finditer(text, timeout=wait)))
 
     def sub(self, replace: Callable[[regex.Match[str]], str], text: str) -> str:
-        try:
-            return self.compiled.sub(replace, text, timeout=REGEX_SECONDS)
-        except TimeoutError:
-            raise RegexLimit(self.compiled.pattern) from None
+        return self._bounded(lambda wait: self.compiled.sub(replace, text, timeout=wait))
 
 
 def cmake_regex(pattern: str) -> BoundedRegex | None:
