@@ -29,7 +29,8 @@ class Analysis:
 def analyse_path(path: str, options: Options | None = None) -> Analysis:
     """Analyse a project file, a workspace folder or a launch file (``open_choice``).
     A project file that cannot be read raises ProjectError."""
-    choice = open_choice(path)
+    options = options or Options()
+    choice = open_choice(path, options.cache_dir)
     project = choice.project
     missing = [w for w in project.workspace if not os.path.isdir(w)]
     if missing:

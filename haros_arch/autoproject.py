@@ -246,10 +246,32 @@ def root_launch_files(files: Sequence[str], workspace: Workspace,
     return roots, [real[k] for k in sorted(included)]
 
 
+def _kept_roots(files: list[str], workspace: Workspace, env: Mapping[str, str],
+                folder: str, cache_dir: str | None) -> tuple[list[str], list[str]]:
+    """``root_launch_files``, kept in the cache folder: it loads every launch file of the
+    workspace, most of a no-change re-run of a folder without a project file."""
+    if cache_dir is None:
+        return root_launch_files(files, workspace, env)
+    from . import runcache
+    from .extract import AUTO_CACHE
+    from .extract.cpp.cache import default_folder
+
+    where = default_folder(folder) if cache_dir == AUTO_CACHE else cache_dir
+    return runcache.kept(
+        where, "launch-roots", [folder], env, files,
+        lambda: root_launch_files(files, workspace, env),
+        lambda found: [found[0], found[1]],
+        lambda data: ([str(f) for f in data[0]], [str(f) for f in data[1]]))
+
+
 def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None = None,
-           environment: Mapping[str, str] | None = None) -> Choice:
+           environment: Mapping[str, str] | None = None, cache_dir: str | None = None
+           ) -> Choice:
     """The project for ``path`` (a workspace or package folder, or a launch file)
-    without a project file. Raises ``ProjectError`` when there is nothing to analyse."""
+    without a project file. Raises ``ProjectError`` when there is nothing to analyse.
+    ``cache_dir`` (``extract.AUTO_CACHE``: the default folder): where the launch files'
+    roots are kept while nothing they may read changes (``runcache.kept``); None: not
+    kept."""
     env = dict(os.environ if environment is None else environment)
     given = dict(args or {})
     if not os.path.exists(path):
@@ -306,7 +328,7 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
         if len(files) >= MAX_LAUNCH_FILES:
             choice.notes.append(f"more than {MAX_LAUNCH_FILES} launch files: only the "
                                 "first are considered (choose with --launch)")
-        roots, included = root_launch_files(files, workspace, env)
+        roots, included = _kept_roots(files, workspace, env, folder, cache_dir)
         choice.notes.append(f"{len(workspace.packages)} packages in {folder}; "
                             f"{len(files)} launch files, {len(included)} included by "
                             f"others, {len(roots)} configurations (one per launch file "
@@ -412,9 +434,10 @@ def select(launch: Iterable[str] = (), args: Mapping[str, str] | None = None) ->
     _selection = (tuple(launch), tuple(sorted((args or {}).items())))
 
 
-def open_choice(path: str) -> Choice:
+def open_choice(path: str, cache_dir: str | None = None) -> Choice:
     """The project for ``path``: a project file is loaded; a folder or a launch file is
-    chosen as ``choose`` does, once per process (commands ask more than once)."""
+    chosen as ``choose`` does (with ``cache_dir``), once per process (commands ask more
+    than once)."""
     from .project import load
 
     key: tuple[object, ...]
@@ -433,7 +456,7 @@ def open_choice(path: str) -> Choice:
     key = (os.path.abspath(path), *_selection)
     if key not in _chosen:
         launch, args = _selection
-        _chosen[key] = choose(path, launch, dict(args))
+        _chosen[key] = choose(path, launch, dict(args), cache_dir=cache_dir)
     return _chosen[key]
 
 

@@ -227,11 +227,7 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
             compile_commands: Iterable[str]) -> tuple[str, str] | None:
     """The key of a run of ``project``, and its outer key (C++ files by name only, not
     content); None when its files are too many to snapshot."""
-    snap = Snapshot(os.path.join(folder, "runs", "index-" + _digest(
-        repr([os.path.abspath(r) for r in project.workspace])) + ".json"))
-    snap.tree(TOOL, frozenset({"__pycache__"}))
-    for root in project.workspace:
-        snap.tree(os.path.abspath(root), SKIP_FOLDERS)
+    snap = _snapshot(folder, project.workspace)
     try:
         beside = sorted(os.scandir(project.folder), key=lambda e: e.name)
     except OSError:
@@ -253,11 +249,55 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
     snap.save()
     # locations are written relative to the current folder: it is an input too
     # (the distribution the workspace's files name: its git branch is no file snapshotted)
-    head = [FORMAT, __version__, os.getcwd(), repr(project),
-            sorted(kv for kv in env.items() if kv[0] not in SHELL_BOOKKEEPING), models,
+    head = [FORMAT, __version__, os.getcwd(), repr(project), _environment(env), models,
             guessed_distro(project, env)]
     return (_digest(json.dumps([*head, snap.digest()])),
             _digest(json.dumps([*head, snap.digest(outer=True)])))
+
+
+def _snapshot(folder: str, roots: Iterable[str]) -> Snapshot:
+    """A snapshot of this tool's files and of every file under ``roots`` (a project's
+    workspace folders), through the index the cache folder keeps for those roots."""
+    full = [os.path.abspath(r) for r in roots]
+    snap = Snapshot(os.path.join(folder, "runs", "index-" + _digest(repr(full)) + ".json"))
+    snap.tree(TOOL, frozenset({"__pycache__"}))
+    for root in full:
+        snap.tree(root, SKIP_FOLDERS)
+    return snap
+
+
+def _environment(env: Mapping[str, str]) -> list[tuple[str, str]]:
+    return sorted(kv for kv in env.items() if kv[0] not in SHELL_BOOKKEEPING)
+
+
+def kept(folder: str, kind: str, roots: Iterable[str], env: Mapping[str, str],
+         inputs: object, compute: Callable[[], T], save: Callable[[T], object],
+         read: Callable[[Any], T]) -> T:
+    """What ``compute`` gives from ``inputs`` (JSON data) and what it may read: the files
+    under ``roots`` (by content), the installed packages ``env`` names (their folders, as
+    a run's key has them) and ``env`` itself; kept in the cache folder as entry ``kind``
+    and read back while none of these changed. For work done before a run's own key
+    can be made: the choice of configurations for a folder without a project file,
+    which loads every launch file of the workspace (``autoproject.root_launch_files``),
+    is most of a no-change re-run of such a folder."""
+    roots = list(roots)
+    snap = _snapshot(folder, roots)
+    for root in installed_roots(env):
+        snap.folders(root)
+    if not snap.complete:
+        return compute()
+    snap.save()
+    key = _digest(json.dumps([FORMAT, __version__, kind, os.getcwd(), _environment(env),
+                              inputs, snap.digest()]))
+    entry = _entry(folder, f"{kind}-{key}")
+    try:
+        with open(entry, encoding="utf-8") as handle:
+            return read(json.load(handle)[kind])
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        pass
+    found = compute()
+    _write(entry, {kind: save(found)}, folder)
+    return found
 
 
 def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:

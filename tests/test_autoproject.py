@@ -433,3 +433,43 @@ def test_a_yaml_file_named_like_a_launch_file_that_is_none_is_no_configuration(
     configs = {c.name: c.launch for c in choice.project.configurations}
     assert "rover/camera" not in configs
     assert configs["rover/lidar"] == ["rover/launch/lidar.launch.yaml"]
+
+
+def test_the_chosen_roots_are_kept_while_no_file_they_read_changes(
+        ws: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # choosing loads every launch file of the workspace: a re-run with nothing changed
+    # takes the roots from the cache folder (issue 24), a changed file chooses again
+    from haros_arch import autoproject
+
+    cache = str(tmp_path / "cache")
+    loads: list[int] = []
+    real = autoproject.root_launch_files
+
+    def counted(*args, **kwargs):
+        loads.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(autoproject, "root_launch_files", counted)
+
+    def configs() -> dict[str, list[str]]:
+        choice = choose(str(ws), environment={}, cache_dir=cache)
+        return {c.name: c.launch for c in choice.project.configurations}
+
+    first = configs()
+    assert first == {"bringup/robot": ["bringup/launch/robot.launch"],
+                     "bringup/sim": ["bringup/launch/sim.launch"],
+                     "rover/rover": ["rover/launch/rover.launch.py"]}
+    assert configs() == first and len(loads) == 1  # read back, nothing loaded
+    # robot.launch now also includes sim.launch: sim is a root no more
+    robot = ws / "src" / "bringup" / "launch" / "robot.launch"
+    robot.write_text(robot.read_text().replace(
+        "</launch>", '<include file="$(find bringup)/launch/sim.launch"/></launch>'))
+    assert configs() == {"bringup/robot": ["bringup/launch/robot.launch"],
+                         "rover/rover": ["rover/launch/rover.launch.py"]}
+    assert len(loads) == 2
+    # the environment is an input too (a launch file may read it)
+    choose(str(ws), environment={"ROBOT": "b"}, cache_dir=cache)
+    assert len(loads) == 3
+    assert configs() == {"bringup/robot": ["bringup/launch/robot.launch"],
+                         "rover/rover": ["rover/launch/rover.launch.py"]}
+    assert len(loads) == 3
