@@ -66,16 +66,20 @@ def package_files(root: str) -> Iterator[str]:
             yield os.path.join(folder, name)
 
 
-def write_whole(path: str, text: str) -> None:
-    """Write ``text`` to ``path`` whole or not at all: a temporary file beside it, moved
-    into place (a reader in another process never sees it half written). Raises
-    ``OSError``; the temporary file is removed then."""
+def write_whole(path: str, text: str | bytes) -> None:
+    """Write ``text`` (UTF-8, or bytes as they are) to ``path`` whole or not at all: a
+    temporary file beside it, moved into place (a reader in another process never sees
+    it half written). Raises ``OSError``; the temporary file is removed then."""
     folder = os.path.dirname(path)
     os.makedirs(folder, exist_ok=True)
     fd, temporary = tempfile.mkstemp(dir=folder, prefix=".haros-", suffix=".tmp")
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(text)
+        if isinstance(text, bytes):
+            with os.fdopen(fd, "wb") as binary:
+                binary.write(text)
+        else:
+            with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+                handle.write(text)
         os.replace(temporary, path)
     except BaseException:
         with contextlib.suppress(OSError):

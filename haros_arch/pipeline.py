@@ -86,7 +86,7 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
         if keys is None:
             return _analyse(project, env, options, None)
         key, outer = keys
-        kept = runcache.load(folder, key)
+        kept = runcache.load(folder, key, project.name)
         earlier = runcache.load_outer(folder, outer) if kept is None else None
     if kept is not None:
         return kept
@@ -136,7 +136,7 @@ def _again(project: Project, env: Mapping[str, str], options: Options, folder: s
     if _json(_gave(batch)) != _json(extraction.get("gave")):
         return None
     with _stage(options, "cache"):
-        return runcache.load(folder, key)
+        return runcache.load(folder, key, project.name)
 
 
 def _units_tell(nodes: list[Node]) -> bool:

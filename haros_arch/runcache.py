@@ -43,10 +43,13 @@ from . import __version__
 from .collector import held_back
 from .distro_guess import guessed_distro
 from .files import MAX_FILE_BYTES, content_digest, write_whole
+from .model.diagnostic import Diagnostic
 from .model.finding import Finding
 from .model.load import from_data
 from .model.model import Model
+from .model.runtime import Configuration
 from .model.serialise import model_to_data, to_data
+from .model.source import Package
 from .project import Project
 from .workspace import SKIP_FOLDERS, Workspace, installed_roots
 
@@ -314,19 +317,107 @@ def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
 _KEPT: weakref.WeakKeyDictionary[Model, tuple[str, str]] = weakref.WeakKeyDictionary()
 
 
-def load(folder: str, key: str) -> Model | None:
-    try:
-        with open(_entry(folder, key), encoding="utf-8") as handle:
-            data = json.load(handle)
-        if isinstance(data.get("same_as"), str):  # an alias (``store_alias``): one hop
-            key = data["same_as"]
-            with open(_entry(folder, key), encoding="utf-8") as handle:
-                data = json.load(handle)
-        model: Model = from_data(data["model"])
-    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+# how a model's entry is written (``store``): the digest of the model's JSON text, then
+# the text; read back, the text is decoded only when the model is used (``KeptModel``)
+MODEL_HEAD = b'{"digest": "'
+MODEL_MIDDLE = b'", "model": '
+DIGEST_LENGTH = 64
+
+
+class KeptModel(Model):
+    """A kept run's model, decoded from its entry's text the first time a field is
+    asked for: a re-run with nothing changed that needs only what is kept with the run
+    (``check``'s findings and diagnostics, ``extract -q``'s document) never decodes it
+    (51 MB of JSON for navigation2's 33 configurations, half of such a re-run). The text
+    was checked against its digest when read (``load``)."""
+
+    def __init__(self, text: bytes, project: str) -> None:  # no dataclass fields set
+        self._text: bytes | None = text
+        self._whole: Model | None = None
+        self._name = project
+
+    def whole(self) -> Model:
+        if self._whole is None:
+            assert self._text is not None
+            self._whole = from_data(json.loads(self._text))
+            self._text = None
+        return self._whole
+
+    @property
+    def project(self) -> str:
+        return self._name if self._whole is None else self._whole.project
+
+    @project.setter
+    def project(self, value: str) -> None:
+        self.whole().project = value
+
+    @property
+    def packages(self) -> list[Package]:
+        return self.whole().packages
+
+    @packages.setter
+    def packages(self, value: list[Package]) -> None:
+        self.whole().packages = value
+
+    @property
+    def configurations(self) -> list[Configuration]:
+        return self.whole().configurations
+
+    @configurations.setter
+    def configurations(self, value: list[Configuration]) -> None:
+        self.whole().configurations = value
+
+    @property
+    def diagnostics(self) -> list[Diagnostic]:
+        return self.whole().diagnostics
+
+    @diagnostics.setter
+    def diagnostics(self, value: list[Diagnostic]) -> None:
+        self.whole().diagnostics = value
+
+
+def _model_text(content: bytes) -> bytes | None:
+    """The model's JSON text of an entry's content, when its digest says it is the text
+    ``store`` wrote; else None."""
+    head = len(MODEL_HEAD) + DIGEST_LENGTH + len(MODEL_MIDDLE)
+    if not (content.startswith(MODEL_HEAD) and content.endswith(b"}")
+            and content[head - len(MODEL_MIDDLE):head] == MODEL_MIDDLE):
         return None
+    text = content[head:-1]
+    digest = content[len(MODEL_HEAD):len(MODEL_HEAD) + DIGEST_LENGTH]
+    return text if hashlib.sha256(text).hexdigest().encode() == digest else None
+
+
+def load(folder: str, key: str, project: str = "") -> Model | None:
+    """The model kept under ``key`` (``project``: its name), decoded when first used
+    (``KeptModel``); None when there is none, or its entry is not as it was written."""
+    try:
+        with open(_entry(folder, key), "rb") as handle:
+            content = handle.read()
+        if not content.startswith(MODEL_HEAD):
+            data = json.loads(content)
+            if not isinstance(data, dict) or not isinstance(data.get("same_as"), str):
+                return None
+            key = data["same_as"]  # an alias (``store_alias``): one hop
+            with open(_entry(folder, key), "rb") as handle:
+                content = handle.read()
+    except (OSError, ValueError):
+        return None
+    text = _model_text(content)
+    if text is None:
+        return None
+    model = KeptModel(text, project)
     _KEPT[model] = (folder, key)
     return model
+
+
+def diagnostics(model: Model, compute: Callable[[], list[Diagnostic]]) -> list[Diagnostic]:
+    """``check``'s diagnostics (those no rule reports) of a kept model's run: read back
+    when that run gave them before, else computed and kept."""
+    from .model.load import diagnostic_from_data
+
+    return _with_run(model, "diagnostics", "", compute, to_data,
+                     lambda data: [diagnostic_from_data(d) for d in data])
 
 
 def store(folder: str, key: str, model: Model) -> None:
@@ -342,7 +433,9 @@ def store(folder: str, key: str, model: Model) -> None:
     if not same:
         return  # a model that does not read back whole is not kept (never a wrong one)
     _KEPT[model] = (folder, key)
-    _write_text(_entry(folder, key), '{"model": ' + text + "}")  # the text made above
+    body = text.encode("utf-8")  # the text made above
+    _write_bytes(_entry(folder, key), MODEL_HEAD + hashlib.sha256(body).hexdigest().encode()
+                 + MODEL_MIDDLE + body + b"}")
     _prune(folder)
 
 
@@ -465,6 +558,12 @@ def _digest(text: str) -> str:
 
 def _write_json(path: str, data: object) -> None:
     _write_text(path, json.dumps(data))
+
+
+def _write_bytes(path: str, data: bytes) -> None:
+    """Write a file whole or not at all (``files.write_whole``)."""
+    with contextlib.suppress(OSError):  # a cache not written is no cache, no error
+        write_whole(path, data)
 
 
 def _write_text(path: str, text: str) -> None:

@@ -113,6 +113,43 @@ def test_the_findings_of_a_kept_run_are_kept_with_it(tmp_path: Path, monkeypatch
     assert check(uncached, spec).findings == first and calls == [1, 1]
 
 
+def test_a_kept_run_checked_again_decodes_no_model(tmp_path: Path, monkeypatch) -> None:
+    # (issue 24) check's findings and diagnostics are kept with the run: a re-run with
+    # nothing changed reads them back and never decodes the kept model (half of such a
+    # re-run on navigation2); the model is decoded when something asks for it
+    from haros_arch.query.command import check
+
+    project = _copy(tmp_path)
+    options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    spec = load(str(project))
+    first = check(analyse(spec, {}, options), spec)
+    decoded: list[int] = []
+    real = runcache.from_data
+
+    def counted(data):
+        decoded.append(1)
+        return real(data)
+
+    monkeypatch.setattr(runcache, "from_data", counted)
+    again = analyse(spec, {}, options)
+    checked = check(again, spec)
+    assert (checked.findings, checked.diagnostics) == (first.findings, first.diagnostics)
+    assert decoded == [] and again.project == spec.name
+    assert [c.name for c in again.configurations] == [c.name for c in spec.configurations]
+    assert decoded == [1]
+
+
+def test_a_kept_model_changed_since_it_was_written_is_a_miss(tmp_path: Path) -> None:
+    project = _copy(tmp_path)
+    first, _ = _run(project, tmp_path / "cache")
+    for entry in (tmp_path / "cache" / "runs").glob("*.json"):
+        content = entry.read_bytes()
+        if content.startswith(runcache.MODEL_HEAD):  # the same length, another text
+            entry.write_bytes(content.replace(b'"several_nodes"', b'"several_nodez"'))
+    again, timings = _run(project, tmp_path / "cache")
+    assert again == first and "scan" in timings and "several_nodez" not in again
+
+
 PAPER = FIXTURE.parent.parent / "paper_minimal"
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from .. import runcache
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.finding import Finding
 from ..model.model import Model
@@ -45,8 +46,11 @@ def check(model: Model, project: Project) -> Checked:
     """Run the query catalogue and the project's rules over ``model``."""
     seconds: dict[str, float] = {}
     findings = run_catalogue(model, project, seconds=seconds)
-    said = absorbed(model)  # what catalogue rules report as findings
-    diagnostics = [d for d in model.all_diagnostics if d not in said]
+    def unsaid() -> list[Diagnostic]:
+        said = absorbed(model)  # what catalogue rules report as findings
+        return [d for d in model.all_diagnostics if d not in said]
+
+    diagnostics = runcache.diagnostics(model, unsaid)  # a kept run's, read back
     shipped = load_catalogue()
     return Checked(findings, diagnostics, [*shipped, *project_rules(project)],
                    len(shipped), seconds)
