@@ -3075,7 +3075,7 @@ class CallFinder:
 
     def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
-        named = constructed_name(inner, api.RCLCPP_PARAMETER)
+        named = constructed_name(inner, api.RCLCPP_PARAMETER) or _built_parameter(inner, scope)
         if named is not None:
             return (render(scope.string(named)), None)
         with program_arguments():
@@ -5218,6 +5218,22 @@ def _map_keys(expr: Cursor, scope: Scope) -> list[str] | None:
             return None
         keys.append(key)
     return keys or None
+
+
+
+def _built_parameter(inner: Cursor, scope: Scope) -> Cursor | None:
+    """The name argument of the ``rclcpp::Parameter`` construction that the local
+    variable ``inner`` reads holds there (``Scope.held_before``: the last write that
+    always runs before the read, no other use of the variable between them, a call it
+    is passed to by reference or a branch's write): vanttec_usv's obstacle publisher
+    writes ``m3.name`` by ``rclcpp::Parameter updated_param("m3.name", new_prefix);
+    this->set_parameter(updated_param);``, and rclcpp names the parameter written by the
+    object's own name. None for any other expression."""
+    decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+    if decl is None or decl.kind != CursorKind.VAR_DECL:
+        return None
+    _held, value = scope.held_before(decl, inner)
+    return None if value is None else constructed_name(value, api.RCLCPP_PARAMETER)
 
 
 def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
