@@ -55,3 +55,44 @@ def test_a_parameter_object_names_its_write(write_tree) -> None:
     # the last one: get_parameter filled the object with another parameter meanwhile
     assert writes == [(8, "m3.name"), (10, "rate"), (12, "gain"), (15, "second"),
                       (18, "?")]
+
+
+LISTS = r"""
+#include <rclcpp/rclcpp.hpp>
+#include <string>
+#include <vector>
+
+class Lister : public rclcpp::Node {
+ public:
+  Lister() : Node("lister") {
+    std::vector<rclcpp::Parameter> both{rclcpp::Parameter("a", 1), rclcpp::Parameter("b", 2)};
+    set_parameters(both);
+    std::vector<rclcpp::Parameter> assigned = {rclcpp::Parameter("c", 1)};
+    set_parameters_atomically(assigned);
+    std::vector<rclcpp::Parameter> grown{rclcpp::Parameter("d", 1)};
+    grown.push_back(rclcpp::Parameter("e", 2));
+    set_parameters(grown);
+    std::vector<std::string> names{"rate", "gain"};
+    auto values = get_parameters(names);
+  }
+};
+"""
+
+
+def test_a_local_list_of_parameters_names_each_write(write_tree) -> None:
+    """``set_parameters(params)`` of a local ``std::vector`` built from a braced list
+    writes each element's parameter, as ``set_parameters({...})`` does (and
+    ``get_parameters(names)`` reads each name); not when the list may have changed
+    between (``push_back``): then the write stays ``?``."""
+    root = write_tree({
+        "src/w/package.xml": package_xml("w", "ament_cmake").replace(
+            "</package>", "<depend>rclcpp</depend></package>"),
+        "src/w/CMakeLists.txt": "project(w)\nadd_library(lister SHARED src/lister.cpp)\n",
+        "src/w/src/lister.cpp": LISTS,
+    })
+    result = extract_cpp([str(root / "src/w/src/lister.cpp")], scan([str(root / "src")]),
+                         cache_dir=None)
+    calls = sorted((c.location.line, c.kind, c.name) for c in result.calls
+                   if c.kind in ("write", "read"))
+    assert calls == [(9, "write", "a"), (9, "write", "b"), (11, "write", "c"),
+                     (14, "write", "?"), (16, "read", "gain"), (16, "read", "rate")]

@@ -2977,7 +2977,7 @@ class CallFinder:
                     keys = declared
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
-            return [self._name(e, scope) for e in _elements(expr)]
+            return [self._name(e, scope) for e in _elements(expr, scope=scope)]
         named = self._name(expr, scope)
         if "?" not in named[0] or named[1] is not None:
             return [named]
@@ -5236,8 +5236,11 @@ def _built_parameter(inner: Cursor, scope: Scope) -> Cursor | None:
     return None if value is None else constructed_name(value, api.RCLCPP_PARAMETER)
 
 
-def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
-    """The elements of a braced list argument (``{a, b}``), else the argument itself."""
+def _elements(expr: Cursor, depth: int = 0, scope: Scope | None = None) -> list[Cursor]:
+    """The elements of a braced list argument (``{a, b}``), else the argument itself;
+    with the ``scope`` of the call, also those of the braced list a local variable it
+    reads holds there (``Scope.held_before``: ``std::vector<rclcpp::Parameter>
+    params{rclcpp::Parameter("a", 1)}; set_parameters(params);``)."""
     inner = strip(expr)
     if inner.kind == CursorKind.INIT_LIST_EXPR:
         return [c for c in inner.get_children() if c.kind.is_expression()]
@@ -5247,6 +5250,12 @@ def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
             found = _elements(children[0], depth + 1)
             if len(found) != 1 or found[0] != children[0]:
                 return found
+    decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+    if scope is not None and decl is not None and decl.kind == CursorKind.VAR_DECL:
+        _held, value = scope.held_before(decl, inner)
+        found = _elements(value, depth + 1) if value is not None else [expr]
+        if len(found) != 1 or found[0] != value:
+            return found
     return [expr]
 
 
