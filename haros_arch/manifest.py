@@ -282,12 +282,21 @@ _ROS1_DEPENDENCIES = frozenset({"roscpp", "rospy", "catkin", "nodelet", "message
 
 def ros_version(package: Package) -> int | None:
     """Whether a package is ROS 1 or ROS 2 code, from its package.xml: its build tool
-    (catkin, ament_*), else the build type (ament_cmake / ament_python), else the ROS
-    client libraries and build tools it depends on, else format 1 (ROS 1 only); None when
-    nothing says (a plain CMake package). A dependency whose condition does not hold is
+    (catkin, ament_*; both, unconditioned: the build type, which colcon builds it with),
+    else the build type (ament_cmake / ament_python), else the ROS client libraries and
+    build tools it depends on, else format 1 (ROS 1 only); None when nothing says (a
+    plain CMake package). A dependency whose condition does not hold is
     not read (foxglove_bridge: ``<buildtool_depend condition="$ROS_VERSION == 1">catkin``
     first, then ament_cmake for ROS 2)."""
     dependencies = [dep for dep in package.dependencies if dep.active]
+    tools = {"catkin" if dep.name == "catkin" else "ament" for dep in dependencies
+             if dep.kind in ("buildtool_depend", "buildtool_export_depend")
+             and not dep.condition and (dep.name == "catkin" or dep.name.startswith("ament_"))}
+    if len(tools) == 2:
+        # both named with no condition (a port's leftover: quadruped_ros2_control's
+        # magicdog_description, catkin and ament_cmake, ``<build_type>ament_cmake``):
+        # colcon builds it with its build type, REP 149's, catkin when none is given
+        return 2 if package.build_type in ("ament_cmake", "ament_python") else 1
     for dep in dependencies:  # the build tool says it first
         if dep.kind in ("buildtool_depend", "buildtool_export_depend"):
             if dep.name == "catkin":

@@ -565,11 +565,21 @@ def _qos_options(values: dict[str, str]) -> dict[str, Any] | None:
             for option, key in ROS2_QOS.items() if option in values} or None
 
 
+def _interface(written: str, kind: str) -> str:
+    """The type a ros2cli verb takes ``written`` for: ``pkg/Name`` is ``pkg/<kind>/Name``
+    (rosidl_runtime_py's ``get_message`` / ``get_service`` add the namespace of the
+    kind), the rest as written. warehouse_bot's ``ros2 topic pub /robot1/initialpose
+    geometry_msgs/PoseWithCovarianceStamped ...`` publishes
+    geometry_msgs/msg/PoseWithCovarianceStamped, the type amcl subscribes with."""
+    parts = written.split("/")
+    return f"{parts[0]}/{kind}/{parts[1]}" if len(parts) == 2 else written
+
+
 def _ros2_topic(decl: NodeDecl, words: list[str]) -> Node | None:
     positional, values, _flags = split_options(words[1:], ROS2_VALUE_OPTIONS)
     if not positional:
         return None
-    type_ = positional[1] if len(positional) > 1 else None
+    type_ = _interface(positional[1], "msg") if len(positional) > 1 else None
     call = PrimitiveCall("publish", positional[0], type_, qos=_qos_options(values),
                          location=decl.location,
                          origin="arguments")
@@ -603,7 +613,7 @@ def _ros2_topic_watch(decl: NodeDecl, verb: str, words: list[str]) -> Node | Non
     if not positional or (most is not None and len(positional) > most):
         return None
     if verb == "echo":
-        type_ = positional[1] if len(positional) > 1 else None
+        type_ = _interface(positional[1], "msg") if len(positional) > 1 else None
         calls = [PrimitiveCall("subscribe", positional[0], type_, qos=_qos_options(values),
                                location=decl.location, origin="arguments")]
     else:
@@ -625,9 +635,8 @@ def _ros2_service(decl: NodeDecl, words: list[str]) -> Node | None:
     positional, _values, _flags = split_options(words, {"-r", "--rate"})
     if len(positional) < 2:
         return None
-    parts = positional[1].split("/")
-    type_ = f"{parts[0]}/srv/{parts[1]}" if len(parts) == 2 else positional[1]
-    call = PrimitiveCall("client", positional[0], type_, location=decl.location,
+    call = PrimitiveCall("client", positional[0], _interface(positional[1], "srv"),
+                         location=decl.location,
                          origin="arguments")
     return _node(decl, decl.package or "ros2service", call, "python")
 

@@ -2977,7 +2977,7 @@ class CallFinder:
                     keys = declared
                 return [((prefix + "." if prefix else "") + key, None)
                         for key in (keys or ["?"])]
-            return [self._name(e, scope) for e in _elements(expr)]
+            return [self._name(e, scope) for e in _elements(expr, scope=scope)]
         named = self._name(expr, scope)
         if "?" not in named[0] or named[1] is not None:
             return [named]
@@ -3075,7 +3075,7 @@ class CallFinder:
 
     def _name(self, expr: Cursor, scope: Scope) -> tuple[str, NameSource | None]:
         inner = strip(expr)
-        named = constructed_name(inner, api.RCLCPP_PARAMETER)
+        named = constructed_name(inner, api.RCLCPP_PARAMETER) or _built_parameter(inner, scope)
         if named is not None:
             return (render(scope.string(named)), None)
         with program_arguments():
@@ -5220,8 +5220,27 @@ def _map_keys(expr: Cursor, scope: Scope) -> list[str] | None:
     return keys or None
 
 
-def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
-    """The elements of a braced list argument (``{a, b}``), else the argument itself."""
+
+def _built_parameter(inner: Cursor, scope: Scope) -> Cursor | None:
+    """The name argument of the ``rclcpp::Parameter`` construction that the local
+    variable ``inner`` reads holds there (``Scope.held_before``: the last write that
+    always runs before the read, no other use of the variable between them, a call it
+    is passed to by reference or a branch's write): vanttec_usv's obstacle publisher
+    writes ``m3.name`` by ``rclcpp::Parameter updated_param("m3.name", new_prefix);
+    this->set_parameter(updated_param);``, and rclcpp names the parameter written by the
+    object's own name. None for any other expression."""
+    decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+    if decl is None or decl.kind != CursorKind.VAR_DECL:
+        return None
+    _held, value = scope.held_before(decl, inner)
+    return None if value is None else constructed_name(value, api.RCLCPP_PARAMETER)
+
+
+def _elements(expr: Cursor, depth: int = 0, scope: Scope | None = None) -> list[Cursor]:
+    """The elements of a braced list argument (``{a, b}``), else the argument itself;
+    with the ``scope`` of the call, also those of the braced list a local variable it
+    reads holds there (``Scope.held_before``: ``std::vector<rclcpp::Parameter>
+    params{rclcpp::Parameter("a", 1)}; set_parameters(params);``)."""
     inner = strip(expr)
     if inner.kind == CursorKind.INIT_LIST_EXPR:
         return [c for c in inner.get_children() if c.kind.is_expression()]
@@ -5231,6 +5250,12 @@ def _elements(expr: Cursor, depth: int = 0) -> list[Cursor]:
             found = _elements(children[0], depth + 1)
             if len(found) != 1 or found[0] != children[0]:
                 return found
+    decl = inner.referenced if inner.kind == CursorKind.DECL_REF_EXPR else None
+    if scope is not None and decl is not None and decl.kind == CursorKind.VAR_DECL:
+        _held, value = scope.held_before(decl, inner)
+        found = _elements(value, depth + 1) if value is not None else [expr]
+        if len(found) != 1 or found[0] != value:
+            return found
     return [expr]
 
 

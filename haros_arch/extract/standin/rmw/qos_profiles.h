@@ -50,5 +50,9 @@ extern const rmw_qos_profile_t rmw_qos_profile_system_default;
 extern const rmw_qos_profile_t rmw_qos_profile_unknown;
 extern const rmw_qos_profile_t rmw_qos_profile_rosout_default;
 typedef struct rmw_request_id_t { long sequence_number; } rmw_request_id_t;
+// rmw/rmw.h (which rclcpp's subscription_base.hpp includes): the middleware's name and
+// its serialization format (zed_components' logs ``rmw_get_implementation_identifier()``)
+const char* rmw_get_implementation_identifier(void);
+const char* rmw_get_serialization_format(void);
 }
 #endif
