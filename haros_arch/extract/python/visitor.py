@@ -722,9 +722,35 @@ class Walker:
     def _While(self, statement: ast.While, frame: Frame, conds: Conditions) -> None:
         self._test(statement.test)
         self._expr(statement.test, frame, conds)
-        loop = condition("while", self._text(frame, statement.test), self._where(frame, statement))
-        self._block(statement.body, frame, (*conds, loop))
+        if self._entered(statement.test, frame):
+            # its first turn runs whenever the loop is reached (a retry loop, ``loaded =
+            # False`` then ``while not loaded:``): what it makes, under no condition of it
+            self._block(statement.body, frame, conds)
+        else:
+            loop = condition("while", self._text(frame, statement.test),
+                             self._where(frame, statement))
+            self._block(statement.body, frame, (*conds, loop))
         self._block(statement.orelse, frame, conds)
+
+    def _entered(self, test: ast.expr, frame: Frame) -> bool:
+        """Whether a ``while`` loop's test holds where the walk reaches the loop: a test
+        of the function's locals alone (and literals; ``not``, ``and`` / ``or``,
+        comparisons), each holding a literal the walk knows there (rosbridge_suite's
+        rosbridge_tcp: ``loaded = False`` then ``while not loaded:``, its node built in
+        the body). Not a test of a global, a member or a call, nor of a local not known
+        there (a branch's, a call's value): false then, the loop kept as a condition."""
+        names = {node.id for node in ast.walk(test) if isinstance(node, ast.Name)}
+        if not names or any(name not in frame.locals or not _literal(frame.locals[name])
+                            for name in names):
+            return False
+        for node in ast.walk(test):
+            if not isinstance(node, ast.Name | ast.Constant | ast.Compare | ast.BoolOp
+                              | ast.UnaryOp | ast.cmpop | ast.boolop | ast.unaryop
+                              | ast.expr_context):
+                return False
+        value = self.evaluator.eval(test, frame)
+        plain = value.literal if isinstance(value, Value) else value
+        return isinstance(plain, bool | int | float | str) and bool(plain)
 
     def _Try(self, statement: ast.Try, frame: Frame, conds: Conditions) -> None:
         attempt = condition("try", "", self._where(frame, statement))

@@ -439,7 +439,13 @@ class Evaluator:
         result = expression.evaluate(source.literal, None, {**expression.BUILTINS,
                                                             **expression.MATH})
         if isinstance(result, expression.Unknown):
-            if result.kind != "unknown":
+            if result.kind == "syntax":
+                # known whole and no expression: launch's eval raises SyntaxError when
+                # it performs it (odas_ros' ROS 1 `$(eval arg('rviz') or ...)` in XML)
+                self.report("LAUNCH_BAD_VALUE", detail=(
+                    f"$(eval) / PythonExpression of {source.literal!r}: SyntaxError "
+                    f"({result.reason}); the launch fails here"))
+            elif result.kind != "unknown":
                 self.report("LAUNCH_UNSUPPORTED",
                             detail=f"expression {source.literal!r}: {result.reason}")
             return Value.unknown(result.reason)
