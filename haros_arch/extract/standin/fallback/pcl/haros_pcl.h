@@ -883,6 +883,10 @@ class PCDReader {
 class PCDWriter {
  public:
   int write(const std::string& file_name, const PCLPointCloud2& cloud, bool binary = false);
+  // with the sensor's origin and orientation (pcl_ros' PCDWriter nodelet)
+  int write(const std::string& file_name, const PCLPointCloud2& cloud,
+            const Eigen::Vector4f& origin, const Eigen::Quaternionf& orientation,
+            bool binary = false);
   template<class PointT> int write(const std::string& file_name, const PointCloud<PointT>& cloud,
                                    bool binary = false);
   template<class PointT> int writeBinary(const std::string& file_name,
