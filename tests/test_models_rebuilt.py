@@ -79,3 +79,10 @@ def test_the_shipped_noetic_pcl_ros_nodelets_are_whole() -> None:
 
 def test_the_shipped_jazzy_tf2_monitor_is_whole() -> None:
     assert _node("tf2_ros", "jazzy", "tf2_monitor").completeness == "complete"
+
+
+def test_the_shipped_ros2_turtlesim_nodes_are_whole() -> None:
+    # ros_tutorials rebuilt after the Qt stand-in's fillRect(x, y, w, h, color): its
+    # paintEvent (turtle_frame.cpp), which reads the background parameters, parses
+    for distro in ("humble", "jazzy"):
+        assert _node("turtlesim", distro, "turtlesim_node").completeness == "complete"
