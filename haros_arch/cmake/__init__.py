@@ -96,7 +96,9 @@ def package_libraries(name: str, workspace: Workspace) -> list[str] | None:
     CMake package of the workspace. catkin's generated config of the package adds the
     libraries of its CATKIN_DEPENDS to its own, transitively: OpenMower's
     mower_comms_v1 links xesc_driver, whose XescDriver builds xesc_2040_driver's
-    Xesc2040Driver, a library xesc_driver's own target links nowhere."""
+    Xesc2040Driver, a library xesc_driver's own target links nowhere. Not those of the
+    client library and its parts (``MODELLED_PACKAGES``: roscpp, xmlrpcpp, ...), whose
+    API the stand-ins model."""
     return remembered("libraries", name, workspace,
                       lambda: _package_libraries(name, workspace))
 
@@ -110,8 +112,10 @@ def _package_libraries(name: str, workspace: Workspace) -> list[str] | None:
 
     def gather(depends: list[str]) -> None:  # depth first, as the configs append them
         for depend in depends:
-            if depend in seen:
-                continue  # a CATKIN_DEPENDS cycle ends there
+            if depend in seen or depend in MODELLED_PACKAGES:
+                continue  # a CATKIN_DEPENDS cycle ends there; the client library's
+                # (roscpp, xmlrpcpp, ...) API is the stand-ins', even when its source is
+                # here (ros_comm's tree: topic_tools exports roscpp)
             seen.add(depend)
             more = _own_libraries(depend, workspace)
             if more is not None:

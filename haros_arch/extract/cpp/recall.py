@@ -114,8 +114,9 @@ def site_pattern(extra: frozenset[str] = frozenset(), ros2: bool | None = None
     made = "|".join(sorted((re.escape(owner) for owner, name in rows
                             if "::" in owner and owner.rsplit("::", 1)[1] == name),
                            key=len, reverse=True))
+    # (a template's ``<``, not a shift or comparison: ``<< options.param << ":"``)
     return re.compile(rf"(?:(?:\.|->)\s*(?:template\s+)?(?P<member>{member})"
-                      rf"|(?<![\w.>:~])(?:\w+::)?(?P<bare>{free}))\s*[<(]"
+                      rf"|(?<![\w.>:~])(?:\w+::)?(?P<bare>{free}))\s*(?:\(|<(?![<=]))"
                       rf"|(?:make_shared|make_unique)\s*<\s*(?:::)?(?:{made})\s*[<>(]"
                       rf"|\bnew\s+(?:::)?(?:{made})\s*[<(]")
 

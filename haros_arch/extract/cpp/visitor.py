@@ -4172,6 +4172,12 @@ class CallFinder:
                          if strip(c).spelling != "operator->"), None)
             return self._parameter_source(held, scope, depth + 1, value) if (
                 held is not None) else None
+        if spec is not None and spec.resolved:
+            # a name roscpp resolves (``ros::names::resolve(topic)``): the parameter its
+            # argument holds, if any; the row is a read only for the remap it marks
+            arguments = written_arguments(expr)
+            return self._parameter_source(arguments[spec.name_arg], scope, depth + 1, value) \
+                if spec.name_arg < len(arguments) else None
         if spec is not None and spec.kind in _PARAM_KINDS:
             # (for a value, not ``bool found = nh.getParam("x", v)``: whether x is there)
             return self._parameter(spec, expr, scope, depth) if not value or (

@@ -182,7 +182,7 @@ public:
 };
 class QSize : public haros_qt_more { public: QSize(); QSize(int w, int h); int width() const; int height() const; };
 class QRect : public haros_qt_more { public: QRect(); QRect(int x, int y, int w, int h); int width() const; int height() const; };
-class QColor : public haros_qt_more { public: QColor(); QColor(Qt::GlobalColor color); QColor(int r, int g, int b, int a = 255); QColor(const char* name); };
+class QColor : public haros_qt_more { public: QColor(); QColor(Qt::GlobalColor color); QColor(QRgb rgb); QColor(int r, int g, int b, int a = 255); QColor(const char* name); };
 class QPaintDevice { public: virtual ~QPaintDevice(); };  // (QWidget has it through QObject)
 class QImage : public QPaintDevice, public haros_qt_more {
 public:
@@ -223,6 +223,7 @@ public:
   void drawText(int x, int y, const QString& text);
   void drawEllipse(const QPointF& center, double rx, double ry);
   void fillRect(const QRect& rect, const QColor& color);
+  void fillRect(int x, int y, int width, int height, const QColor& color);
   void translate(double dx, double dy);
   void rotate(double angle);
   void scale(double sx, double sy);

@@ -223,6 +223,11 @@ public:
   std::string allFramesAsYAML() const;
   void getFrameStrings(std::vector<std::string>& ids) const;
   bool _frameExists(const std::string& frame_id_str) const;
+  // the frames between two, at two times, through a fixed frame (tf2_monitor's
+  // ``_chainAsVector(b, t0, a, t0, b, chain)``)
+  template<class T> void _chainAsVector(const std::string& target_frame, const T& target_time,
+      const std::string& source_frame, const T& source_time, const std::string& fixed_frame,
+      std::vector<std::string>& output) const;
   // ROS 1 tf2: a callback run whenever transforms change, and its removal by the
   // boost::signals2::connection the first returns (MoveIt's CurrentStateMonitor)
   template<class F> haros_standin::any_message _addTransformsChangedListener(F callback);

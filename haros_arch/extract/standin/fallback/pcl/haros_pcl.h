@@ -223,6 +223,31 @@ struct RGB { PCL_ADD_RGB };
 struct FPFHSignature33 { float histogram[33]; };
 struct ReferenceFrame { float rf[9]; };
 struct Boundary { std::uint8_t boundary_point; };
+// the feature descriptors of pcl/point_types.h (a name in capitals such as SHOT352, not
+// declared, would be taken for a constant: pcl_ros' SHOTEstimation advertises a
+// PointCloud<SHOT352>)
+struct PFHSignature125 { float histogram[125]; };
+struct PFHRGBSignature250 { float histogram[250]; };
+struct PPFSignature { float f1; float f2; float f3; float f4; float alpha_m; };
+struct NormalBasedSignature12 { float values[12]; };
+struct ShapeContext1980 { float descriptor[1980]; float rf[9]; };
+struct UniqueShapeContext1960 { float descriptor[1960]; float rf[9]; };
+struct SHOT352 { float descriptor[352]; float rf[9]; };
+struct SHOT1344 { float descriptor[1344]; float rf[9]; };
+struct VFHSignature308 { float histogram[308]; };
+struct GRSDSignature21 { float histogram[21]; };
+struct GFPFHSignature16 { float histogram[16]; };
+struct ESFSignature640 { float histogram[640]; };
+struct BRISKSignature512 { float scale; float orientation; unsigned char descriptor[64]; };
+struct Narf36 { float x; float y; float z; float roll; float pitch; float yaw; float descriptor[36]; };
+struct MomentInvariants { float j1; float j2; float j3; };
+struct PrincipalRadiiRSD { float r_min; float r_max; };
+struct PrincipalCurvatures {
+  float principal_curvature_x; float principal_curvature_y; float principal_curvature_z;
+  float pc1; float pc2;
+};
+struct IntensityGradient { float gradient_x; float gradient_y; float gradient_z; };
+template <int N> struct Histogram { float histogram[N]; };
 
 namespace traits {
 template<class PointT> struct has_field { static const bool value = true; };
@@ -858,6 +883,10 @@ class PCDReader {
 class PCDWriter {
  public:
   int write(const std::string& file_name, const PCLPointCloud2& cloud, bool binary = false);
+  // with the sensor's origin and orientation (pcl_ros' PCDWriter nodelet)
+  int write(const std::string& file_name, const PCLPointCloud2& cloud,
+            const Eigen::Vector4f& origin, const Eigen::Quaternionf& orientation,
+            bool binary = false);
   template<class PointT> int write(const std::string& file_name, const PointCloud<PointT>& cloud,
                                    bool binary = false);
   template<class PointT> int writeBinary(const std::string& file_name,
