@@ -2426,8 +2426,18 @@ public:
   void reset();
 };
 enum class launch { async = 1, deferred = 2 };
-template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);
-template<class F, class... A> future<int> async(F&& f, A&&... args);
+// std::async's future holds what the function returns (``future<void>`` of a void member
+// function: robocup-pkg's path_finder, ``std::async(launch::async, &Graph::search, g, ...)``);
+// int when invoke cannot tell (a callable the parse does not know)
+template<class F, class... A> struct __haros_async_result {
+  template<class G> static auto test(int) -> decltype(invoke(declval<G>(), declval<A>()...));
+  template<class G> static int test(...);
+  typedef decltype(test<F>(0)) type;
+};
+template<class F, class... A>
+future<typename __haros_async_result<F, A...>::type> async(launch policy, F&& f, A&&... args);
+template<class F, class... A>
+future<typename __haros_async_result<F, A...>::type> async(F&& f, A&&... args);
 // <variant>, <random>
 template<class... T> class variant {
 public:
