@@ -1029,9 +1029,19 @@ public:
   hasher hash_function() const;
   key_equal key_eq() const;
 };
+// the container adaptors' member types and their protected container ``c`` (and
+// priority_queue's ``comp``), which a derived class reads: robocup-pkg's path_finder
+// derives an ``AStarQueue`` from priority_queue that walks ``this->c`` through
+// ``container_type::const_iterator``
 template<class T, class S = deque<T>> class queue {
 public:
+  typedef S container_type;
+  typedef typename S::value_type value_type;
+  typedef typename S::size_type size_type;
+  typedef typename S::reference reference;
+  typedef typename S::const_reference const_reference;
   queue();
+  explicit queue(const S& container);
   T& front();
   T& back();
   void push(const T& v);
@@ -1040,9 +1050,17 @@ public:
   size_t size() const;
   bool empty() const;
   void swap(queue& other);
+protected:
+  S c;
 };
 template<class T, class S = vector<T>, class C = less<T>> class priority_queue {
 public:
+  typedef S container_type;
+  typedef C value_compare;
+  typedef typename S::value_type value_type;
+  typedef typename S::size_type size_type;
+  typedef typename S::reference reference;
+  typedef typename S::const_reference const_reference;
   priority_queue();
   explicit priority_queue(const C& compare, const S& container = S());
   const T& top() const;
@@ -1052,15 +1070,26 @@ public:
   size_t size() const;
   bool empty() const;
   void swap(priority_queue& other);
+protected:
+  S c;
+  C comp;
 };
 template<class T, class S = deque<T>> class stack {
 public:
+  typedef S container_type;
+  typedef typename S::value_type value_type;
+  typedef typename S::size_type size_type;
+  typedef typename S::reference reference;
+  typedef typename S::const_reference const_reference;
   stack();
+  explicit stack(const S& container);
   T& top();
   void push(const T& v);
   void pop();
   size_t size() const;
   bool empty() const;
+protected:
+  S c;
 };
 
 // <algorithm>, <numeric>, <iterator>, <limits>
