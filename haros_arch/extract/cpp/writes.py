@@ -231,6 +231,26 @@ def _inserting(left: Cursor) -> bool:
     return spelling.rpartition("::")[2] in _STREAMS
 
 
+def appended_to(call: Cursor) -> tuple[Cursor, Cursor] | None:
+    """(the string, the text appended) when ``call`` is ``s.append(text)`` of a
+    ``std::string``, which changes ``s`` as ``s += text`` does; else None."""
+    if call.spelling != "append":
+        return None
+    given = written_arguments(call)
+    method = call.referenced
+    parent = method.semantic_parent if method is not None else None
+    if len(given) != 1 or parent is None or (
+            parent.spelling.split("<")[0] not in ("basic_string", "string")):
+        return None
+    children = list(call.get_children())
+    if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
+        return None
+    objects = [strip(c) for c in children[0].get_children()]
+    if len(objects) != 1 or objects[0].type.get_canonical().kind == TypeKind.POINTER:
+        return None
+    return objects[0], given[0]
+
+
 def emptied(call: Cursor) -> bool:
     """Whether ``call`` is ``s.clear()`` of a ``std::string``, which leaves it empty."""
     if call.spelling != "clear" or written_arguments(call):

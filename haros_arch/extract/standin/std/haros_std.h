@@ -566,9 +566,15 @@ public:
   basic_string& append(const basic_string& s);
   basic_string& append(const C* s);
   basic_string& append(size_t n, C c);
+  // a value the parse declared permissively (a protobuf message's ``name()``, its headers
+  // missing: robocup-pkg's robot_comm ``name.append(m.name())``), as ``+=`` takes one
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  basic_string& append(const U& unknown);
   basic_string& assign(const basic_string& s);
   basic_string& assign(const C* s);
   basic_string& assign(size_t n, C c);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  basic_string& assign(const U& unknown);
   template<class It> basic_string& assign(It first, It last);
   basic_string& insert(size_t pos, const basic_string& s);
   // one character before a position (``s.insert(s.begin(), '/')``): a template, as
