@@ -809,7 +809,8 @@ class Scope:
         if decl.kind == CursorKind.VAR_DECL:
             value = write.value if write.whole else None
             if not write.whole and write.at.kind == CursorKind.CALL_EXPR and (
-                    write.at.spelling == "operator+=" or appended_to(write.at) is not None):
+                    write.at.spelling == "operator+="
+                    or appended_to(write.at, self.source) is not None):
                 # ``key += "/port_name"``, ``key.append(...)``: what it held, then that
                 value = write.at
             self._placed.setdefault(key_of(decl), []).append(
@@ -1640,7 +1641,7 @@ class Scope:
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self._appended(args[1], depth)
-        appended = appended_to(call)
+        appended = appended_to(call, self.source)
         if appended is not None:  # ``a.append(b)``, as ``a += b``
             return self.string(appended[0], depth + 1) + self._appended(appended[1], depth)
         if call.spelling in ('operator""s', 'operator""sv') and args and (
