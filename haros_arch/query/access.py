@@ -122,7 +122,7 @@ def _is_latched(link: Link) -> bool:
 def _wire_type(link: Any) -> str | None:
     from ..extract.cpp.interfaces import wire_key  # the definitions we know, read lazily
 
-    return wire_key(link.type)
+    return wire_key(link.type, kind="srv" if link.kind in ("server", "client") else "msg")
 
 
 # roscpp's any-message (md5sum ``*``): a subscriber of it connects to a publisher of any

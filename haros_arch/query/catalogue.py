@@ -320,6 +320,10 @@ def run_rule(rule: Rule, model: Model) -> list[Finding]:
 
 def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
     """Findings, each with the places of what it involves (for suppressions)."""
+    from ..extract.cpp.interfaces import use_workspace
+
+    # the wire types a rule compares read the definitions of the model's own packages
+    use_workspace({package.name: package.root for package in model.packages})
     try:
         query = compile(rule.query)
     except QueryError as err:

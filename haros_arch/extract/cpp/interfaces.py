@@ -428,34 +428,72 @@ def qualified(kind: str, package: str) -> str | None:
     return kind if "/" in kind else f"{package}/{kind}"
 
 
+# the workspace's packages by name, with their folders (``use_workspace``): ``wire_key``
+# reads their own definitions before the catalogue's
+_WORKSPACE: dict[str, str] = {}
+
+
+def use_workspace(roots: dict[str, str]) -> None:
+    """Read the definitions of these packages (name: folder) from their folders in
+    ``wire_key`` (the queries' model's workspace; a package without a folder, a model
+    read back from JSON, is the catalogue's only)."""
+    wanted = {name: root for name, root in roots.items() if root}
+    if wanted != _WORKSPACE:
+        _WORKSPACE.clear()
+        _WORKSPACE.update(wanted)
+        _workspace_text.cache_clear()
+        wire_key.cache_clear()
+
+
+@functools.lru_cache(maxsize=1024)
+def _workspace_text(package: str, name: str, kind: str) -> str | None:
+    root = _WORKSPACE.get(package)
+    path = definition_files(root, kind).get(f"{name}.{kind}") if root else None
+    if path is None:
+        return None
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            return handle.read()
+    except OSError:
+        return None
+
+
 @functools.lru_cache(maxsize=4096)  # asked per link by the queries; the table is fixed
-def wire_key(type_name: str | None, depth: int = 0) -> str | None:
+def wire_key(type_name: str | None, depth: int = 0, kind: str = "msg") -> str | None:
     """What a ROS 1 connection compares for ``pkg/Name``: roscpp and rospy check the
     md5sum, made from the definition (nested types by their own sums), not the name, so
-    two names with one definition connect (``tf/tfMessage`` and ``tf2_msgs/TFMessage``).
-    The definition, nested types expanded, when every part is one of ours; else the name
-    (ROS 2 names, ``pkg/msg/Name``, match by name)."""
+    two names with one definition connect (``tf/tfMessage`` and ``tf2_msgs/TFMessage``;
+    a service too, ``kind`` srv: godel's ``godel_msgs/OffsetBoundary`` client of a
+    ``godel_polygon_offset/OffsetPolygon`` server, the same request and response). The
+    definition, nested types expanded, when every part is one we know (the workspace's,
+    ``use_workspace``, else the catalogue's); else the name (ROS 2 names, ``pkg/msg/Name``,
+    match by name)."""
     if not type_name or type_name.count("/") != 1 or depth > 8:
         return type_name
     package, name = type_name.split("/", 1)
-    text = known(package, name, kinds=("msg",))
-    if text is None or "---" in text:
+    text = _workspace_text(package, name, kind)
+    if text is None:
+        text = known(package, name, kinds=(kind,))
+    sections = parse_definition(package, type_name, text).sections if text is not None else []
+    if len(sections) != (2 if kind == "srv" else 1):
         return type_name
-    parts = []
-    for section in parse_definition(package, type_name, text).sections:
+    keys = []
+    for section in sections:
+        parts = []
         for fld in section:
             nested = qualified(fld.type, package)
             if nested is None:
-                kind = fld.type
+                field_kind = fld.type
             else:
-                kind = wire_key(nested, depth + 1) or nested
-                if kind == nested:  # a nested type we do not know: no claim
+                field_kind = wire_key(nested, depth + 1) or nested
+                if field_kind == nested:  # a nested type we do not know: no claim
                     return type_name
-                kind = "{" + kind + "}"
-            parts.append(f"{kind}[{fld.array}] {fld.name}" if fld.array is not None
-                         else f"{kind} {fld.name}={fld.constant}" if fld.constant is not None
-                         else f"{kind} {fld.name}")
-    return "ros1:" + ";".join(parts)
+                field_kind = "{" + field_kind + "}"
+            parts.append(f"{field_kind}[{fld.array}] {fld.name}" if fld.array is not None
+                         else f"{field_kind} {fld.name}={fld.constant}"
+                         if fld.constant is not None else f"{field_kind} {fld.name}")
+        keys.append(";".join(parts))
+    return "ros1:" + "|".join(keys)
 
 
 def render(interface: Interface) -> str:

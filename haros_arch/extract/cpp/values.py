@@ -43,6 +43,7 @@ from .reach import FUNCTIONS
 from .synthesis import ANY
 from .writes import (
     Write,
+    appended_to,
     by_operator,
     const_array,
     emptied,
@@ -808,8 +809,10 @@ class Scope:
         if decl.kind == CursorKind.VAR_DECL:
             value = write.value if write.whole else None
             if not write.whole and write.at.kind == CursorKind.CALL_EXPR and (
-                    write.at.spelling == "operator+="):
-                value = write.at  # ``key += "/port_name"``: what it held, then that
+                    write.at.spelling == "operator+="
+                    or appended_to(write.at, self.source) is not None):
+                # ``key += "/port_name"``, ``key.append(...)``: what it held, then that
+                value = write.at
             self._placed.setdefault(key_of(decl), []).append(
                 (write.at.extent.start.offset, write.at.extent.end.offset, value))
 
@@ -1638,6 +1641,9 @@ class Scope:
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)
             return self.string(args[0], depth + 1) + self._appended(args[1], depth)
+        appended = appended_to(call, self.source)
+        if appended is not None:  # ``a.append(b)``, as ``a += b``
+            return self.string(appended[0], depth + 1) + self._appended(appended[1], depth)
         if call.spelling in ('operator""s', 'operator""sv') and args and (
                 strip(args[0]).kind == CursorKind.STRING_LITERAL):
             # std's string literal, ``"/change_state"s`` (ouster's lifecycle client)

@@ -185,6 +185,11 @@ def _call(call: Cursor, source: dict[str, bytes]) -> list[Write]:
             found.append(Write(bare, None, call, False))
     children = list(call.get_children())
     method = call.referenced
+    unresolved = unresolved_string_method(call, source)
+    if unresolved is not None and unresolved[1] in _STRING_CHANGES:
+        # a method that changes the string, its overload left to the template's
+        # instantiation: the string is changed (``append``: ``values`` reads it as ``+=``)
+        found.append(Write(unresolved[0], None, call, False))
     if children and children[0].kind == CursorKind.MEMBER_REF_EXPR and (
         method is not None and not method.is_const_method()
     ):
@@ -229,6 +234,60 @@ def _inserting(left: Cursor) -> bool:
             break
     spelling = left.type.get_canonical().spelling.split("<")[0].rstrip(" &")
     return spelling.rpartition("::")[2] in _STREAMS
+
+
+# the methods of std::string that change it
+_STRING_CHANGES = frozenset({"append", "assign", "insert", "replace", "erase", "push_back",
+                             "pop_back", "clear", "resize", "swap"})
+
+
+def unresolved_string_method(call: Cursor, source: dict[str, bytes]
+                             ) -> tuple[Cursor, str] | None:
+    """(the string, the method's name, read from the text) of ``s.method(...)`` on a
+    ``std::string`` that a template leaves unresolved, an argument of a type that
+    depends on its parameters (robocup-pkg's robot_comm: ``name.append(m.name())`` in
+    ``UdpToTopicEntry<T, P>::execute``, ``m`` a ``T&``); else None."""
+    if call.referenced is not None:
+        return None
+    children = list(call.get_children())
+    if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
+        return None
+    # the object first (the parse may keep the overloads it could not choose after it)
+    objects = [strip(c) for c in children[0].get_children()]
+    if not objects or "basic_string<char" not in objects[0].type.get_canonical().spelling:
+        return None
+    start, end = children[0].extent.start, children[0].extent.end
+    text = source.get(start.file.name) if start.file is not None else None
+    if text is None or end.file is None or end.file.name != start.file.name:
+        return None
+    written = text[start.offset:end.offset].decode("utf-8", "replace")
+    name = written.replace("->", ".").rpartition(".")[2].strip()
+    return (objects[0], name) if name.isidentifier() else None
+
+
+def appended_to(call: Cursor, source: dict[str, bytes] | None = None
+                ) -> tuple[Cursor, Cursor] | None:
+    """(the string, the text appended) when ``call`` is ``s.append(text)`` of a
+    ``std::string``, which changes ``s`` as ``s += text`` does (also one a template
+    leaves unresolved, read with the ``source`` text); else None."""
+    given = written_arguments(call)
+    if call.spelling != "append":
+        unresolved = unresolved_string_method(call, source) if source is not None else None
+        if unresolved is None or unresolved[1] != "append" or len(given) != 1:
+            return None
+        return unresolved[0], given[0]
+    method = call.referenced
+    parent = method.semantic_parent if method is not None else None
+    if len(given) != 1 or parent is None or (
+            parent.spelling.split("<")[0] not in ("basic_string", "string")):
+        return None
+    children = list(call.get_children())
+    if not children or children[0].kind != CursorKind.MEMBER_REF_EXPR:
+        return None
+    objects = [strip(c) for c in children[0].get_children()]
+    if len(objects) != 1 or objects[0].type.get_canonical().kind == TypeKind.POINTER:
+        return None
+    return objects[0], given[0]
 
 
 def emptied(call: Cursor) -> bool:

@@ -73,11 +73,28 @@ class Instances(Calls):
         instance = self.new(cls)
         init = self.method(cls, "__init__")
         if init is not None and frame.depth < MAX_CALL_DEPTH:
-            inner = self.call_frame(BoundMethod(instance, init), expr, frame)
-            seen: dict[str, object] = {}
-            for statement in _straight(init.node.body):
-                self.assign(statement, inner, seen)
+            self._initialised(init, self.call_frame(BoundMethod(instance, init), expr, frame))
         return instance
+
+    def _initialised(self, init: FunctionInfo, frame: Frame) -> None:
+        """The assignments of ``init``'s body to the object of ``frame``, and, in their
+        place among them, those of a base class's ``__init__`` it calls on that object
+        (``super().__init__(...)``, ``Base.__init__(self, ...)``) with the call's
+        arguments: svea's ``SVEAPurePursuit.__init__`` hands its vehicle name to
+        ``SVEAManager.__init__``, which builds the interfaces named by it."""
+        seen: dict[str, object] = {}
+        for statement in _straight(init.node.body, base_inits=True):
+            if not isinstance(statement, ast.Expr):
+                self.assign(statement, frame, seen)
+                continue
+            call = statement.value
+            assert isinstance(call, ast.Call)
+            base = self.callee(call.func, frame) if frame.depth < MAX_CALL_DEPTH else None
+            if isinstance(base, FunctionInfo | BoundMethod):
+                inner = self.call_frame(base, call, frame)
+                info = base.function if isinstance(base, BoundMethod) else base
+                if inner.instance is frame.instance and info.node is not init.node:
+                    self._initialised(info, inner)
 
     def assign(self, statement: ast.stmt, frame: Frame,
                seen: dict[str, object] | None = None) -> None:
@@ -132,16 +149,25 @@ class Instances(Calls):
                 self.bind(element, item, frame, seen)
 
 
-def _straight(body: list[ast.stmt]) -> Iterator[ast.stmt]:
-    """Assignments of a body, into if/try/with blocks too, in source order."""
+def _straight(body: list[ast.stmt], base_inits: bool = False) -> Iterator[ast.stmt]:
+    """Assignments of a body, into if/try/with blocks too, in source order; with
+    ``base_inits`` also the statements that call an ``__init__`` (``super().__init__(...)``,
+    ``Base.__init__(self, ...)``)."""
     for statement in body:
-        if isinstance(statement, ast.Assign | ast.AnnAssign | ast.AugAssign):
+        if isinstance(statement, ast.Assign | ast.AnnAssign | ast.AugAssign) or (
+                base_inits and _calls_init(statement)):
             yield statement
         elif isinstance(statement, ast.If | ast.With | ast.Try):
             for block in ("body", "orelse", "finalbody"):
-                yield from _straight(getattr(statement, block, []))
+                yield from _straight(getattr(statement, block, []), base_inits)
             for handler in getattr(statement, "handlers", []):
-                yield from _straight(handler.body)
+                yield from _straight(handler.body, base_inits)
+
+def _calls_init(statement: ast.stmt) -> bool:
+    """A statement that calls an ``__init__``: ``super().__init__(...)``, ``B.__init__(...)``."""
+    return isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Call) and \
+        isinstance(statement.value.func, ast.Attribute) and statement.value.func.attr == "__init__"
+
 
 def _load(target: ast.Name | ast.Attribute) -> ast.expr:
     if isinstance(target, ast.Name):

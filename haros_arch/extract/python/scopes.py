@@ -42,6 +42,10 @@ class EvaluatorBase:
     def eval(self, expr: ast.expr, frame: Frame) -> object:
         raise NotImplementedError
 
+    def callee(self, func: ast.expr, frame: Frame) -> object:
+        """What a call's function expression names (``values.Evaluator.callee``)."""
+        raise NotImplementedError
+
 
 class Scopes(EvaluatorBase):
     def lookup(self, module: Module, name: str) -> object:

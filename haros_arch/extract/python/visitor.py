@@ -983,6 +983,8 @@ class Walker:
                         call, spec.owner), frame))
             elif target.qualname in _IMPORTERS:
                 self._dynamic_import(target.qualname, call, frame)
+            elif target.qualname in _RUNS_TARGET:
+                self._runs_target(_RUNS_TARGET[target.qualname], call, frame, conds)
             elif target.qualname in _SUBPROCESSES and self._runs_ros_tool(call, frame):
                 where = self._where(frame, call)
                 if where not in self._launches_said:
@@ -1109,6 +1111,41 @@ class Walker:
             self._active.discard(id(info.node))
             self._inlining.pop()
             self._fixed.pop(id(inner), None)
+
+    def _runs_target(self, where: tuple[Arg, Arg, Arg], call: ast.Call, frame: Frame,
+                     conds: Conditions) -> None:
+        """A thread (``threading.Thread(target=f, args=(a,), kwargs={...})``, a
+        ``threading.Timer``, a ``multiprocessing.Process``, ``_thread.start_new_thread``)
+        runs its function with the arguments it is given: the function is walked as that
+        call, here, as a call written in the code is. A method of ``self`` so run then
+        sees the attributes the object has (svea's interfaces start their node's
+        subscribers in ``Thread(target=self._init_and_spin_ros)``, named by the vehicle
+        name their constructor was given); walked only as an entry, it saw an object of
+        unknown attributes. A function not known (a lambda, a parameter) is not followed."""
+        given = argument(call, where[0])
+        if given is None:
+            return
+        func = self.evaluator.callee(given, frame)
+        if not isinstance(func, FunctionInfo | BoundMethod):
+            return
+        values, keywords = argument(call, where[1]), argument(call, where[2])
+        args: list[ast.expr] = []
+        if isinstance(values, ast.Tuple | ast.List):
+            args = list(values.elts)
+        elif values is not None and not (isinstance(values, ast.Constant)
+                                         and values.value is None):
+            args = [ast.Starred(value=values, ctx=ast.Load())]
+        named: list[ast.keyword] = []
+        if isinstance(keywords, ast.Dict) and all(
+                isinstance(k, ast.Constant) and isinstance(k.value, str) and k.value.isidentifier()
+                for k in keywords.keys):
+            named = [ast.keyword(arg=k.value, value=v)  # type: ignore[union-attr]
+                     for k, v in zip(keywords.keys, keywords.values, strict=True)]
+        elif keywords is not None and not (isinstance(keywords, ast.Constant)
+                                           and keywords.value is None):
+            named = [ast.keyword(arg=None, value=keywords)]
+        run = ast.copy_location(ast.Call(func=given, args=args, keywords=named), call)
+        self._inline(func, run, frame, conds)
 
     def _cut(self, info: FunctionInfo, call: ast.Call, frame: Frame) -> None:
         """A call ``MAX_CALL_DEPTH`` calls deep is not followed: its function is walked
@@ -1626,6 +1663,16 @@ def _of_module(expr: ast.expr) -> bool:
 
 
 # the functions that import a module by its name (the first argument)
+# what runs a function it is given with arguments it is given (``_runs_target``): where
+# the function, its positional arguments and its keyword arguments are given
+_RUNS_TARGET: dict[str, tuple[Arg, Arg, Arg]] = {
+    "threading.Thread": (Arg(1, "target"), Arg(3, "args"), Arg(4, "kwargs")),
+    "multiprocessing.Process": (Arg(1, "target"), Arg(3, "args"), Arg(4, "kwargs")),
+    "threading.Timer": (Arg(1, "function"), Arg(2, "args"), Arg(3, "kwargs")),
+    "_thread.start_new_thread": (Arg(0, None), Arg(1, None), Arg(2, None)),
+    "thread.start_new_thread": (Arg(0, None), Arg(1, None), Arg(2, None)),
+}
+
 _IMPORTERS = frozenset({"importlib.import_module", "importlib.__import__",
                         "runpy.run_module"})
 

@@ -566,9 +566,15 @@ public:
   basic_string& append(const basic_string& s);
   basic_string& append(const C* s);
   basic_string& append(size_t n, C c);
+  // a value the parse declared permissively (a protobuf message's ``name()``, its headers
+  // missing: robocup-pkg's robot_comm ``name.append(m.name())``), as ``+=`` takes one
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  basic_string& append(const U& unknown);
   basic_string& assign(const basic_string& s);
   basic_string& assign(const C* s);
   basic_string& assign(size_t n, C c);
+  template<class U, class = typename enable_if<__is_base_of(::haros_any, U)>::type>
+  basic_string& assign(const U& unknown);
   template<class It> basic_string& assign(It first, It last);
   basic_string& insert(size_t pos, const basic_string& s);
   // one character before a position (``s.insert(s.begin(), '/')``): a template, as
@@ -1029,9 +1035,19 @@ public:
   hasher hash_function() const;
   key_equal key_eq() const;
 };
+// the container adaptors' member types and their protected container ``c`` (and
+// priority_queue's ``comp``), which a derived class reads: robocup-pkg's path_finder
+// derives an ``AStarQueue`` from priority_queue that walks ``this->c`` through
+// ``container_type::const_iterator``
 template<class T, class S = deque<T>> class queue {
 public:
+  typedef S container_type;
+  typedef typename S::value_type value_type;
+  typedef typename S::size_type size_type;
+  typedef typename S::reference reference;
+  typedef typename S::const_reference const_reference;
   queue();
+  explicit queue(const S& container);
   T& front();
   T& back();
   void push(const T& v);
@@ -1040,9 +1056,17 @@ public:
   size_t size() const;
   bool empty() const;
   void swap(queue& other);
+protected:
+  S c;
 };
 template<class T, class S = vector<T>, class C = less<T>> class priority_queue {
 public:
+  typedef S container_type;
+  typedef C value_compare;
+  typedef typename S::value_type value_type;
+  typedef typename S::size_type size_type;
+  typedef typename S::reference reference;
+  typedef typename S::const_reference const_reference;
   priority_queue();
   explicit priority_queue(const C& compare, const S& container = S());
   const T& top() const;
@@ -1052,15 +1076,26 @@ public:
   size_t size() const;
   bool empty() const;
   void swap(priority_queue& other);
+protected:
+  S c;
+  C comp;
 };
 template<class T, class S = deque<T>> class stack {
 public:
+  typedef S container_type;
+  typedef typename S::value_type value_type;
+  typedef typename S::size_type size_type;
+  typedef typename S::reference reference;
+  typedef typename S::const_reference const_reference;
   stack();
+  explicit stack(const S& container);
   T& top();
   void push(const T& v);
   void pop();
   size_t size() const;
   bool empty() const;
+protected:
+  S c;
 };
 
 // <algorithm>, <numeric>, <iterator>, <limits>
@@ -2426,8 +2461,18 @@ public:
   void reset();
 };
 enum class launch { async = 1, deferred = 2 };
-template<class F, class... A> future<int> async(launch policy, F&& f, A&&... args);
-template<class F, class... A> future<int> async(F&& f, A&&... args);
+// std::async's future holds what the function returns (``future<void>`` of a void member
+// function: robocup-pkg's path_finder, ``std::async(launch::async, &Graph::search, g, ...)``);
+// int when invoke cannot tell (a callable the parse does not know)
+template<class F, class... A> struct __haros_async_result {
+  template<class G> static auto test(int) -> decltype(invoke(declval<G>(), declval<A>()...));
+  template<class G> static int test(...);
+  typedef decltype(test<F>(0)) type;
+};
+template<class F, class... A>
+future<typename __haros_async_result<F, A...>::type> async(launch policy, F&& f, A&&... args);
+template<class F, class... A>
+future<typename __haros_async_result<F, A...>::type> async(F&& f, A&&... args);
 // <variant>, <random>
 template<class... T> class variant {
 public:
