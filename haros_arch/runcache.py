@@ -47,9 +47,7 @@ from .model.diagnostic import Diagnostic
 from .model.finding import Finding
 from .model.load import from_data
 from .model.model import Model
-from .model.runtime import Configuration
 from .model.serialise import model_to_data, to_data
-from .model.source import Package
 from .project import Project
 from .workspace import SKIP_FOLDERS, Workspace, installed_roots
 
@@ -324,6 +322,19 @@ MODEL_MIDDLE = b'", "model": '
 DIGEST_LENGTH = 64
 
 
+class _Decoded:
+    """A field of a ``KeptModel``, read and written on its decoded model."""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.name = name
+
+    def __get__(self, model: KeptModel | None, owner: type | None = None) -> Any:
+        return self if model is None else getattr(model.whole(), self.name)
+
+    def __set__(self, model: KeptModel, value: Any) -> None:
+        setattr(model.whole(), self.name, value)
+
+
 class KeptModel(Model):
     """A kept run's model, decoded from its entry's text the first time a field is
     asked for: a re-run with nothing changed that needs only what is kept with the run
@@ -351,29 +362,10 @@ class KeptModel(Model):
     def project(self, value: str) -> None:
         self.whole().project = value
 
-    @property
-    def packages(self) -> list[Package]:
-        return self.whole().packages
-
-    @packages.setter
-    def packages(self, value: list[Package]) -> None:
-        self.whole().packages = value
-
-    @property
-    def configurations(self) -> list[Configuration]:
-        return self.whole().configurations
-
-    @configurations.setter
-    def configurations(self, value: list[Configuration]) -> None:
-        self.whole().configurations = value
-
-    @property
-    def diagnostics(self) -> list[Diagnostic]:
-        return self.whole().diagnostics
-
-    @diagnostics.setter
-    def diagnostics(self, value: list[Diagnostic]) -> None:
-        self.whole().diagnostics = value
+    # the other fields: the decoded model's
+    packages = _Decoded()
+    configurations = _Decoded()
+    diagnostics = _Decoded()
 
 
 def _model_text(content: bytes) -> bytes | None:
