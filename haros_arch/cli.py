@@ -534,7 +534,9 @@ def cmd_report(args: argparse.Namespace, out: Console, err: Console) -> int:
         err.print("haros-arch: report needs a PROJECT file or --model FILE", highlight=False)
         return EXIT_USAGE
     try:
-        project = open_choice(args.project).project if args.project else None
+        # the cache folder's kept choice, as the analysis below takes it
+        project = (open_choice(args.project, _options(args).cache_dir).project
+                   if args.project else None)
         findings: list = []
         if args.model:
             data = read_model(args.model)

@@ -473,3 +473,26 @@ def test_the_chosen_roots_are_kept_while_no_file_they_read_changes(
     assert configs() == {"bringup/robot": ["bringup/launch/robot.launch"],
                          "rover/rover": ["rover/launch/rover.launch.py"]}
     assert len(loads) == 3
+
+
+@pytest.mark.parametrize("command", ["check", "report"])
+def test_a_command_on_a_folder_again_takes_the_kept_choice(
+        ws: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, command: str) -> None:
+    # every command that analyses a folder chooses its configurations through the cache
+    # folder (report asked for the project first without it, loading every launch file)
+    from haros_arch import autoproject
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    loads: list[int] = []
+    real = autoproject.root_launch_files
+
+    def counted(*args, **kwargs):
+        loads.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(autoproject, "root_launch_files", counted)
+    extra = ["--fail-on", "never"] if command == "check" else ["-o", str(tmp_path / "r.html")]
+    for _ in range(2):
+        autoproject._chosen.clear()  # a new process
+        assert main([command, str(ws), *extra]) == 0
+    assert len(loads) == 1
