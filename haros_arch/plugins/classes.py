@@ -681,9 +681,13 @@ MAX_NAMED_HEADERS = 64  # per file: the headers of the workspace read for the na
 # ``Type name(`` starting in the first column, its line not ending with ``;``: a free
 # function defined (Autoware's behavior_path_planner builds its test_utils.cpp into the
 # node's library: its test publishers are no call of the node); not a line of a
-# constructor's member initialisers written from the first column (``: costmap_(c),``)
-_FUNCTION = re.compile(r"^(?![ \t#:,])[\w:<>,&* \t]*?(?<![:\w])([a-z_]\w*)\s*\(([^\n]*)$",
-                       re.MULTILINE)
+# constructor's member initialisers written from the first column (``: costmap_(c),``);
+# a name in capitals with a type before it too (Google's style: cartographer_ros'
+# offline_node.cc defines ``void RunOfflineNode(...)``, which builds the SLAM ``Node``),
+# but not a macro's (``TEST(...)``, ``PLUGINLIB_EXPORT_CLASS(...)``, all in capitals)
+_FUNCTION = re.compile(r"^(?![ \t#:,])(?:[\w:<>,&* \t]*?(?<![:\w])([a-z_]\w*)|"
+                       r"[\w:<>,&* \t]*?[\w>&*][ \t&*]+(?<![:\w])([A-Z][A-Z0-9_]*[a-z]\w*))"
+                       r"\s*\(([^\n]*)$", re.MULTILINE)
 _STATIC = re.compile(r"\bstatic\b")
 _NOT_FUNCTIONS = frozenset({"if", "for", "while", "switch", "return", "sizeof", "namespace",
                             "using", "typedef", "template", "class", "struct", "enum"})
@@ -766,12 +770,42 @@ def _free_functions(source: str, workspace: Files) -> set[str]:
     ``static ... create(nh, name, ...)``, which no node that links its library and
     writes ``create`` elsewhere can call)."""
     def compute() -> set[str]:
-        return {match.group(1) for match in _FUNCTION.finditer(_scoped(source, workspace))
-                if not match.group(2).rstrip().endswith(";")
-                and not _STATIC.search(match.group(0), 0, match.start(1) - match.start())
+        # (in code, not a comment's prose: a licence's ``Software License Agreement (BSD
+        # License)`` from the first column)
+        code = code_only(_scoped(source, workspace))
+        hidden = _anonymous_namespaces(code)
+        return {match.group(name) for match in _FUNCTION.finditer(code)
+                for name in [1 if match.group(1) else 2]
+                if not match.group(3).rstrip().endswith(";")
+                and not _STATIC.search(match.group(0), 0, match.start(name) - match.start())
+                and not any(start <= match.start() < end for start, end in hidden)
                 } - _NOT_FUNCTIONS
 
     return remembered("free functions", source, workspace, compute)
+
+
+_ANONYMOUS = re.compile(r"\bnamespace\s*\{")
+
+
+def _anonymous_namespaces(code: str) -> list[tuple[int, int]]:
+    """The spans of ``code``'s unnamed namespaces, whose functions have internal
+    linkage as ``static`` ones do (kachaka's static_tf_component.cpp and
+    dynamic_tf_bridge.cpp each define their own ``ConvertGrpcTfToRosTf`` in one)."""
+    spans: list[tuple[int, int]] = []
+    for match in _ANONYMOUS.finditer(code):
+        if spans and match.start() < spans[-1][1]:
+            continue  # (nested in the one before)
+        depth, end = 1, len(code)
+        for found in _BRACES.finditer(code, match.end()):
+            depth += 1 if found.group() == "{" else -1
+            if depth == 0:
+                end = found.end()
+                break
+        spans.append((match.start(), end))
+    return spans
+
+
+_BRACES = re.compile(r"[{}]")
 
 
 def _scoped(source: str, workspace: Files) -> str:

@@ -636,6 +636,17 @@ class CallSites:
                             for key in specialised_keys(callee):
                                 self._index.setdefault(key, []).append((made, function))
                         callee = None
+                    if node.kind == CursorKind.CXX_NEW_EXPR:
+                        # ``new C(args)`` in a template, an argument depending on its
+                        # parameters: clang keeps the argument list, no call
+                        # (rosserial_server's ``Session<Socket>`` makes ``new
+                        # Subscriber(nh_, info, boost::bind(&Session::write_message,
+                        # this, _1))``): the list is the call's argument list
+                        made = dependent_new(node)
+                        if made is not None:
+                            self._base_calls[key_of(made[0])] = made[1]
+                            for key in specialised_keys(made[1]):
+                                self._index.setdefault(key, []).append((made[0], function))
                     if node.kind == CursorKind.VAR_DECL:
                         # a variable whose default construction the parse dropped: a
                         # call of the default constructor that passes nothing
@@ -1653,6 +1664,24 @@ def list_constructions(node: Cursor) -> list[tuple[Cursor, Cursor]]:
             if callee is not None:
                 found.append((child, callee))
     return found
+
+
+def dependent_new(node: Cursor) -> tuple[Cursor, Cursor] | None:
+    """(argument list, the constructor it calls) for a new-expression of a class of the
+    project's code (not a template) that holds no call of a constructor, only the list
+    of its arguments, one of which depends on a template's parameters: the one
+    constructor C++ would call with them (``closest``); None when no single one would."""
+    made = node.type.get_canonical().get_pointee()
+    if made.kind != TypeKind.RECORD:
+        return None
+    children = [c for c in node.get_children() if c.kind.is_expression()]
+    if len(children) != 1 or children[0].kind != CursorKind.UNEXPOSED_EXPR or (
+            children[0].spelling) or any(
+            c.kind == CursorKind.CALL_EXPR and c.referenced is not None
+            and c.referenced.kind == CursorKind.CONSTRUCTOR for c in children):
+        return None
+    callee = _list_constructor(children[0], made)
+    return None if callee is None else (children[0], callee)
 
 
 def _list_constructor(node: Cursor, ctype: Type) -> Cursor | None:

@@ -51,6 +51,7 @@ from .call_sites import (
     callee_of,
     constructor_values,
     delegation,
+    dependent_new,
     parameter_places,
     value_text,
 )
@@ -1073,6 +1074,10 @@ class CallFinder:
                 self._to_unknown(node, function)
             elif node.kind == CursorKind.VAR_DECL:
                 self._default_construction(node, conditions)
+            elif node.kind == CursorKind.CXX_NEW_EXPR and (
+                    newly := dependent_new(node)) is not None:
+                # its argument list is a site of the constructor (``CallSites``)
+                self._class_made(newly[1].semantic_parent, conditions)
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
@@ -1617,7 +1622,14 @@ class CallFinder:
         """Record the construction of a class of the workspace by a variable declared
         without an initialiser whose construction the parse did not keep
         (``construction_dropped``), as ``_construction`` records one it kept."""
-        cls = construction_dropped(variable, self.owned)
+        self._class_made(construction_dropped(variable, self.owned), conditions)
+
+    def _class_made(self, cls: Cursor | None, conditions: tuple[Condition, ...]) -> None:
+        """Record the construction of ``cls``, a class of the workspace, where the parse
+        kept no call of its constructor, as ``_construction`` records one it kept."""
+        if cls is not None and ((where := cls.location.file) is None
+                                or not self.owned(where.name)):
+            return
         name = qualified_name(cls) if cls is not None else ""
         if not name or self._owner is None or name == self._owner:
             return
