@@ -86,3 +86,16 @@ def test_the_shipped_ros2_turtlesim_nodes_are_whole() -> None:
     # paintEvent (turtle_frame.cpp), which reads the background parameters, parses
     for distro in ("humble", "jazzy"):
         assert _node("turtlesim", distro, "turtlesim_node").completeness == "complete"
+
+
+def test_the_shipped_cartographer_model_builds_the_node_where_the_code_builds_it() -> None:
+    # rebuilt after tmplK's fix: cartographer_offline_node builds its Node in
+    # RunOfflineNode (offline_node.cc), a capitalised free function, so node.cc's
+    # publishers and servers are the program's; the tools that build no Node (the
+    # occupancy grid node, pbstream_to_ros_map) no longer take node.cc's /tf
+    offline = _node("cartographer_ros", "noetic", "cartographer_offline_node")
+    published = {c.name for c in offline.calls if c.kind == "publish"}
+    assert {"submap_list", "trajectory_node_list", "~bagfile_progress"} <= published
+    assert "start_trajectory" in {c.name for c in offline.calls if c.kind == "server"}
+    for tool in ("cartographer_occupancy_grid_node", "cartographer_pbstream_to_ros_map"):
+        assert "/tf" not in {c.name for c in _node("cartographer_ros", "noetic", tool).calls}
