@@ -254,9 +254,9 @@ def _kept_roots(files: list[str], workspace: Workspace, env: Mapping[str, str],
         return root_launch_files(files, workspace, env)
     from . import runcache
     from .extract import AUTO_CACHE
-    from .extract.cpp.cache import default_folder
+    from .files import cache_folder
 
-    where = default_folder(folder) if cache_dir == AUTO_CACHE else cache_dir
+    where = cache_folder(folder) if cache_dir == AUTO_CACHE else cache_dir
     return runcache.kept(
         where, "launch-roots", [folder], env, files,
         lambda: root_launch_files(files, workspace, env),

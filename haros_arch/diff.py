@@ -414,10 +414,10 @@ def _tree_folder(root: str) -> Iterator[str]:
     """One folder per repository, the same on every run (a parse cache entry names the
     workspace headers it read by path), in the cache folder, held under a lock while in
     use."""
-    from .extract.cpp.cache import default_folder
+    from .files import cache_folder
 
     digest = hashlib.sha256(os.path.realpath(root).encode()).hexdigest()[:12]
-    base = os.path.join(default_folder(root), "diff", digest)  # beside the parse cache
+    base = os.path.join(cache_folder(root), "diff", digest)  # beside the parse cache
     os.makedirs(base, mode=0o700, exist_ok=True)
     state = os.lstat(base)  # made by us, for us alone (not another user's or a link)
     if not stat.S_ISDIR(state.st_mode) or state.st_uid != os.getuid() \

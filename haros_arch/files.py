@@ -158,3 +158,14 @@ def read_bytes(
     except OSError as err:
         return None, [diag.make("FILE_UNREADABLE", location, path=location.file or path,
                                 detail=err.strerror or str(err))]
+
+
+def cache_folder(workspace_root: str) -> str:
+    """The cache folder: ``$XDG_CACHE_HOME/haros-arch`` (``~/.cache/haros-arch``);
+    ``.haros-arch-cache`` in the workspace when there is no home folder. Entries name
+    files by absolute path, so one folder serves every workspace. (Here, not with the C++
+    cache, so that a re-run the run cache answers imports no C++ extractor.)"""
+    xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    if xdg.startswith("~"):
+        return os.path.join(workspace_root, ".haros-arch-cache")
+    return os.path.join(xdg, "haros-arch")

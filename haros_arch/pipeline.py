@@ -17,7 +17,7 @@ from . import diagnostics as diag
 from . import runcache
 from .distro_guess import guessed_distro, sole_distro
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
-from .files import content_digest, recording
+from .files import cache_folder, content_digest, recording
 from .manifest import other_builds
 from .model.diagnostic import said_once
 from .model.location import Location
@@ -76,9 +76,7 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
     if options.cache_dir is None:
         return _analyse(project, env, options, None)
     with _stage(options, "cache"):  # a run with nothing changed: its model, kept
-        from .extract.cpp import cache as cpp_cache
-
-        folder = (cpp_cache.default_folder(os.path.abspath(
+        folder = (cache_folder(os.path.abspath(
             project.workspace[0] if project.workspace else project.folder))
                   if options.cache_dir == AUTO_CACHE else options.cache_dir)
         keys = runcache.run_key(project, env, options.models, folder,

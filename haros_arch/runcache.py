@@ -1,7 +1,7 @@
 """A re-run with nothing changed, answered whole from the cache folder.
 
 The model a run gives is kept in the cache folder the C++ units use
-(``extract.cpp.cache.default_folder``), in ``runs/``, found by a key over everything the
+(``files.cache_folder``), in ``runs/``, found by a key over everything the
 run reads: the project (as loaded, with the command line's arguments), the environment
 (but the shell's own bookkeeping: ``$_``, ``$OLDPWD``, ``$PWD``, ``$SHLVL``), the current
 folder, the options that change the model, this tool's own files, and a snapshot of the files
@@ -303,7 +303,7 @@ def kept(folder: str, kind: str, roots: Iterable[str], env: Mapping[str, str],
 
 def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
     """The compile_commands.json files the C++ stage would look for (found or not)."""
-    from .extract.cpp.compile_commands import find
+    from .compile_commands import find
 
     roots = [os.path.abspath(r) for r in project.workspace]
     workspace = Workspace(root=roots[0] if roots else os.getcwd(), roots=roots,

@@ -11,7 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from haros_arch.extract.cpp import compile_commands, extract_cpp
+from haros_arch import compile_commands
+from haros_arch.extract.cpp import extract_cpp
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
 from haros_arch.workspace import scan

@@ -661,3 +661,22 @@ def test_extracts_document_is_the_same_text_with_and_without_the_cache(
     # does after a `check` kept the run)
     texts = [document_json(document(analyse(spec, {}, cache), spec)) for _ in range(2)]
     assert texts == [cold, cold]
+
+
+def test_a_kept_run_imports_no_extractor(tmp_path: Path) -> None:
+    # (issue 24) a re-run the cache answers needs neither the C++ extractor (libclang,
+    # the stand-ins' tables) nor the launch readers: start-up is most of such a run
+    import subprocess
+    import sys
+
+    project = _copy_paper(tmp_path)
+    probe = ("import sys\nfrom haros_arch.cli import main\n"
+             f"code = main(['check', {str(project)!r}, '--fail-on', 'never', '--format', 'json'])\n"
+             "print(code, sorted(m for m in ('haros_arch.extract.cpp', "
+             "'haros_arch.launch.ros1', 'haros_arch.launch.ros2') if m in sys.modules))\n")
+    env = {**os.environ, "XDG_CACHE_HOME": str(tmp_path / "xdg")}
+    said = [subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                           cwd=tmp_path, env=env, check=True).stdout.splitlines()[-1]
+            for _ in range(2)]
+    assert said[0].startswith("0 ['haros_arch.extract.cpp'")  # the cold run reads C++
+    assert said[1] == "0 []"

@@ -199,8 +199,8 @@ def _build_macros(nodes: Sequence[Node], workspace: Workspace,
     """Per C++ node, the ROS calls its sources choose with a macro its package's CMake
     defines (``cpp.build_macros``); none where a compile_commands.json gives the build's
     macros."""
+    from .. import compile_commands as commands
     from .cpp import build_macros
-    from .cpp import compile_commands as commands
 
     given = compile_commands if compile_commands is not None else commands.find(workspace)
     if any(os.path.isfile(path) or os.path.isdir(path) for path in given):

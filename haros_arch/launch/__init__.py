@@ -9,7 +9,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..workspace import Workspace
-from . import ros1, ros2
 from .dialect import ros_version
 from .model import LaunchModel, NodeDecl, ParamDecl, without_tests
 
@@ -18,6 +17,12 @@ __all__ = ["LaunchModel", "NodeDecl", "ParamDecl", "load", "without_tests"]
 
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
          environment: Mapping[str, str] | None = None) -> LaunchModel:
+    # the readers imported here: what only asks a file's dialect (a re-run that the
+    # cache answers, ``autoproject``) imports neither
     if ros_version(path, workspace) == 2:  # by content, then package, then name
+        from . import ros2
+
         return ros2.load(path, workspace, args, environment)
+    from . import ros1
+
     return ros1.load(path, workspace, args, environment)

@@ -30,6 +30,7 @@ from clang.cindex import (
 )
 from clang.cindex import Diagnostic as ClangDiagnostic
 
+from ... import compile_commands as commands
 from ... import diagnostics as diag
 from ... import safe_yaml
 from ...collector import held_back
@@ -56,7 +57,6 @@ from . import (
     values,
     versions,
 )
-from . import compile_commands as commands
 from .conditions import fewest
 from .cursors import child_spellings, in_standin, namespace_blocks
 from .headers import FALLBACK, QT, STANDIN, IncludeSetup

@@ -27,11 +27,11 @@ import re
 from collections.abc import Callable, Container
 
 from ... import diagnostics as diag
+from ...compile_commands import valid_macro
 from ...diagnostics import Diagnostic
 from ...files import package_files, read_text
 from ...workspace import Workspace
 from . import recall
-from .compile_commands import valid_macro
 
 # the CMake commands that define macros for the compiler, and what they define
 _COMMAND = re.compile(r"\b(add_definitions|add_compile_definitions|target_compile_definitions"

@@ -21,7 +21,7 @@ from typing import Any
 
 from ... import __version__
 from ...diagnostics import CATALOGUE, Diagnostic
-from ...files import content_digest, write_whole
+from ...files import cache_folder, content_digest, write_whole
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
@@ -29,19 +29,10 @@ from . import interfaces
 from .headers import STANDIN
 from .synthesis import HEADER_NAME
 
-AUTO = "auto"  # cache_dir value: the default folder (see ``default_folder``)
+AUTO = "auto"  # cache_dir value: the default folder (``files.cache_folder``)
+default_folder = cache_folder
 FORMAT = 2  # 2: the headers and digest on a first line of their own
 GENERATED = "<generated>"
-
-
-def default_folder(workspace_root: str) -> str:
-    """``$XDG_CACHE_HOME/haros-arch`` (``~/.cache/haros-arch``); ``.haros-arch-cache`` in
-    the workspace when there is no home folder. Entries name files by absolute path, so
-    one folder serves every workspace."""
-    xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    if xdg.startswith("~"):
-        return os.path.join(workspace_root, ".haros-arch-cache")
-    return os.path.join(xdg, "haros-arch")
 
 
 PACKAGE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

@@ -59,6 +59,7 @@ from clang.cindex import TranslationUnitLoadError, TranslationUnitSaveError
 
 from ... import cmake, processes, share
 from ... import diagnostics as diag
+from ...compile_commands import UnitFlags
 from ...diagnostics import Diagnostic
 from ...files import read_text, write_whole
 from ...manifest import ros_version
@@ -76,7 +77,6 @@ from . import (
     toolchain,
     versions,
 )
-from .compile_commands import UnitFlags
 
 STANDIN = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "standin")
 STD_STANDIN = os.path.join(STANDIN, "std")  # the C and C++ standard library stand-in

@@ -22,9 +22,9 @@ import shlex
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
-from ... import diagnostics as diag
-from ...diagnostics import Diagnostic
-from ...workspace import Workspace
+from . import diagnostics as diag
+from .diagnostics import Diagnostic
+from .workspace import Workspace
 
 NAME = "compile_commands.json"
 MAX_BYTES = 64 * 1024 * 1024
