@@ -290,15 +290,7 @@ def kept(folder: str, kind: str, roots: Iterable[str], env: Mapping[str, str],
     snap.save()
     key = _digest(json.dumps([FORMAT, __version__, kind, os.getcwd(), _environment(env),
                               inputs, snap.digest()]))
-    entry = _entry(folder, f"{kind}-{key}")
-    try:
-        with open(entry, encoding="utf-8") as handle:
-            return read(json.load(handle)[kind])
-    except (OSError, ValueError, KeyError, TypeError, AttributeError):
-        pass
-    found = compute()
-    _write(entry, {kind: save(found)}, folder)
-    return found
+    return _entry_or(folder, _entry(folder, f"{kind}-{key}"), kind, compute, save, read)
 
 
 def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
@@ -510,7 +502,14 @@ def _with_run(model: Model, kind: str, inputs: str, compute: Callable[[], T],
     if kept is None:
         return compute()
     folder, key = kept
-    entry = _entry(folder, f"{key}-{kind}-{_digest(inputs)}")
+    return _entry_or(folder, _entry(folder, f"{key}-{kind}-{_digest(inputs)}"), kind,
+                     compute, save, read)
+
+
+def _entry_or(folder: str, entry: str, kind: str, compute: Callable[[], T],
+              save: Callable[[T], object], read: Callable[[Any], T]) -> T:
+    """What ``entry`` keeps as ``kind`` (``read`` from its data), else what ``compute``
+    gives, kept there (``save`` makes its data)."""
     try:
         with open(entry, encoding="utf-8") as handle:
             return read(json.load(handle)[kind])
