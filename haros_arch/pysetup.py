@@ -40,6 +40,7 @@ class EntryPoint:
     name: str
     module: str
     location: Location
+    function: str | None = None  # ``main`` of ``pkg.module:main``; None: the module
 
 
 def parse_package(package: Package, workspace: Workspace,
@@ -87,7 +88,8 @@ def _entry_nodes(package: Package, workspace: Workspace, entries: list[EntryPoin
                                    module=entry.module, name=entry.name))
         nodes.append(Node(package.name, entry.name, "script", "python",
                           [workspace.relpath(module)] if module else [],
-                          location=entry.location))
+                          location=entry.location,
+                          entry=entry.function if entry.function is not None else ""))
     return nodes
 
 
@@ -107,10 +109,10 @@ def module_file(root: str, module: str, package_dir: dict[str, str]) -> str | No
     return None
 
 
-def parse_entry(text: str) -> tuple[str, str] | None:
-    """``name = pkg.module:main [extra]`` → (name, module)."""
+def parse_entry(text: str) -> tuple[str, str, str | None] | None:
+    """``name = pkg.module:main [extra]`` → (name, module, function)."""
     match = _ENTRY.match(text)
-    return (match.group(1), match.group(2)) if match else None
+    return (match.group(1), match.group(2), match.group(3)) if match else None
 
 
 # -- setup.py ----------------------------------------------------------------------
@@ -321,7 +323,7 @@ def _console_scripts(node: ast.expr, module: Module, path: str,
             lines = _entry_lines(computed.get("console_scripts", []))
             if lines is None:
                 found.append(diag.make("PYSETUP_DYNAMIC", where, detail="a console script"))
-            return [EntryPoint(*parsed, where) for s in lines or []
+            return [EntryPoint(*parsed[:2], where, parsed[2]) for s in lines or []
                     if (parsed := parse_entry(s))]
         found.append(diag.make("PYSETUP_DYNAMIC", where, detail="entry_points"))
         return []
@@ -336,7 +338,8 @@ def _console_scripts(node: ast.expr, module: Module, path: str,
         results = [parse_entry(s) for s in lines] if lines is not None else [None]
         if None in results:
             found.append(diag.make("PYSETUP_DYNAMIC", item_where, detail="a console script"))
-        entries.extend(EntryPoint(r[0], r[1], item_where) for r in results if r is not None)
+        entries.extend(EntryPoint(r[0], r[1], item_where, r[2])
+                       for r in results if r is not None)
     return entries
 
 
@@ -382,7 +385,8 @@ def _from_setup_cfg(path: str, workspace: Workspace,
                 continue
             line = next((n for n, t in enumerate(lines, 1)
                          if t.strip().startswith(parsed[0]) and "=" in t), 0)
-            entries.append(EntryPoint(parsed[0], parsed[1], workspace.location(path, line, 1)))
+            entries.append(EntryPoint(parsed[0], parsed[1], workspace.location(path, line, 1),
+                                      parsed[2]))
     package_dir: dict[str, str] = {}
     if parser.has_option("options", "package_dir"):
         for raw in parser.get("options", "package_dir").splitlines():

@@ -67,4 +67,4 @@ def script_node(package: Package, name: str, workspace: Workspace) -> Node | Non
         return None
     source = os.path.realpath(path)
     return Node(package.name, name, "script", "python", [workspace.relpath(source)],
-                location=workspace.location(path, 1, 1))
+                location=workspace.location(path, 1, 1), entry="")

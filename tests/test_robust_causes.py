@@ -77,7 +77,9 @@ def test_check_reports_both_causes_on_a_launched_workspace(write_tree) -> None:
                                    "find_package(catkin REQUIRED)\ncatkin_package()\n"
                                    "catkin_install_python(PROGRAMS scripts/odometer.py\n"
                                    "  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
-        "src/base/scripts/odometer.py": PUBLISHERS,
+        # a script runs whole: its main called (a function nothing calls makes no call)
+        "src/base/scripts/odometer.py": PUBLISHERS + "\nif __name__ == '__main__':\n"
+                                                     "    main(rospy.get_param('~rate'), {})\n",
         "src/base/launch/robot.launch": LAUNCH,
         "project.yaml": "project: p\nworkspace: src\nconfigurations:\n"
                         "  robot:\n    launch: [base/launch/robot.launch]\n",

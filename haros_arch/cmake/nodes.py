@@ -695,7 +695,7 @@ def scripts(it: Interpreter, package: Package, workspace: Files,
                     else workspace.location(path, 1, 1))
         nodes[name] = Node(package.name, name, "script", "python",
                            [_script_source(path, workspace)], conditions=conditions,
-                           location=location)
+                           location=location, entry="")
 
     for program in it.programs:
         if not os.path.isfile(program.path) and it.custom_builds:

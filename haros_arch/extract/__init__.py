@@ -161,9 +161,9 @@ def extract_nodes(nodes: Sequence[Node], workspace: Workspace, *,
 
 def other_key(node: Node) -> str:
     """What names a node of another language than C++ from run to run: its package,
-    executable, kind, language and sources."""
+    executable, kind, language, sources and entry."""
     return json.dumps([node.package, node.executable, node.kind, node.language,
-                       node.sources])
+                       node.sources, node.entry])
 
 
 # the node fields extraction sets (``extract_node``, ``completeness``)
@@ -443,7 +443,8 @@ def extract_node(node: Node, workspace: Workspace) -> list[Diagnostic]:
         from .python import extract_python
 
         found = extract_python(sources, workspace, package=node.package,
-                               environment=_build_environment(node, workspace))
+                               environment=_build_environment(node, workspace),
+                               entry=node.entry)
         node.calls = found.calls
         clear_where_declared(node, workspace)
         node.rosname = found.rosname

@@ -235,7 +235,8 @@ def node_from_data(data: dict[str, Any], package: str) -> Node:
                 nodelets=[str(a) for a in data.get("nodelets", ()) or ()
                           if isinstance(a, str)],
                 handles_given=_handles_given(data.get("handles_given")),
-                local_rules=_handles_given(data.get("local_rules")))
+                local_rules=_handles_given(data.get("local_rules")),
+                entry=data.get("entry") if isinstance(data.get("entry"), str) else None)
 
 
 def _handles_given(value: Any) -> dict[str, list[str]]:

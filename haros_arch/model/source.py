@@ -543,6 +543,11 @@ class Node:
     # namespace or name they set holds whatever the launch file gives (``graph``)
     local_rules: dict[str, list[str]] = field(default_factory=dict,
                                               metadata={"optional": True})
+    # a Python program: where it starts, the function a console_scripts entry point
+    # names (``main`` of ``pkg.module:main``), "" for a script Python runs whole; None
+    # when not known. The calls of a module function no code it reaches calls or names
+    # are not the node's (``extract.python``)
+    entry: str | None = field(default=None, metadata={"optional": True})
 
     # the node's name (``pkg/exec``, ``pkg/Class``) first, as DESIGN's JSON contract says
     JSON_HEAD: ClassVar[dict[str, Any]] = {"name": lambda node: node.name}

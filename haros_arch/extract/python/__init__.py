@@ -48,9 +48,12 @@ class PythonResult:
 
 def extract_python(sources: list[str], workspace: Workspace, *,
                    package: str | None = None,
-                   environment: Mapping[str, str] | None = None) -> PythonResult:
+                   environment: Mapping[str, str] | None = None,
+                   entry: str | None = None) -> PythonResult:
     """The rospy / rclpy calls in the modules ``sources`` (absolute paths) of one node;
-    ``environment``: the one its process runs in, when not the workspace's."""
+    ``environment``: the one its process runs in, when not the workspace's; ``entry``:
+    where the program starts (``Node.entry``; None: not known, every function of the
+    modules may run)."""
     result = PythonResult()
     root = _package_root(sources, workspace, package)
     loader = Loader(workspace, root)
@@ -66,6 +69,7 @@ def extract_python(sources: list[str], workspace: Workspace, *,
         if loaded is not None:
             loaded.node_version = loader.node_version
     walker = Walker(loader)
+    walker.entry = entry
     walker.unseen_packages = _unseen_packages(workspace, package)
     walker.unseen_dependencies = _unseen_packages(workspace, package, declared=True)
     walker.run(modules)

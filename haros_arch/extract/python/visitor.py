@@ -172,6 +172,10 @@ class Walker:
         self._nested: list[FunctionInfo] = []
         self._used_classes: list[ClassInfo] = []
         self.main: set[str] = set()
+        # where the program starts: the function a console_scripts entry point names
+        # (``main`` of ``pkg.module:main``), "" for a script Python runs whole, None when
+        # not known (``_unreached``)
+        self.entry: str | None = None
         # the calls whose result is a condition (ids of their ast.Call nodes)
         self._tested: set[int] = set()
         # the ``try`` conditions whose handlers catch a parameter's failure (KeyError,
@@ -198,8 +202,10 @@ class Walker:
             self._said_cuts(cuts)
         done: set[int] = set()
         queue: list[FunctionInfo] = []
+        unreached = self._unreached(modules)
         for module in modules:
-            queue.extend(module.functions.values())
+            queue.extend(info for info in module.functions.values()
+                         if id(info.node) not in unreached)
             for cls in module.classes.values():
                 queue.extend(cls.methods.values())
         # the methods of the classes of other modules the walk builds, not yet named
@@ -229,6 +235,40 @@ class Walker:
                                                        or id(info.cls) not in unbuilt):
                 self.calls.extend(calls)
                 self._said_cuts(cuts)
+
+    def _unreached(self, modules: list[Module]) -> set[int]:
+        """The module functions of the executable's modules (ids) that no code its entry
+        (``entry``) reaches calls or names: not walked, so their calls are not the
+        node's (sailbot's ``trigger_error_transition(node)``, which nothing calls, makes
+        no ``change_state`` client). Reached: the module's own statements (a script's,
+        ``if __name__ == '__main__':`` with them), the entry function, every class's
+        code, each function decorated (a decorator may keep it), and, in turn, every
+        function whose name any of these uses, as a call or as a value (handed to a
+        thread, a timer, a dict of handlers, a string ``getattr`` may look up); every
+        module read that is not the executable's counts whole. None when the entry is
+        not known or when code looks names up in a way not read (``globals()``,
+        ``eval``, ``getattr`` of a computed name, ``sys.modules``): any may run."""
+        if self.entry is None or any(_looks_up_names(m.tree)
+                                     for m in self.loader.modules.values() if m is not None):
+            return set()
+        functions = {id(info.node): info for module in modules
+                     for info in module.functions.values()}
+        named = {self.entry.split(".")[0]} if self.entry else set()
+        for module in self.loader.modules.values():
+            if module is not None:
+                named |= _attribute_names(module.tree, set(functions)
+                                          if module in modules else set(), variables=True)
+        unreached = set(functions)
+        grown = True
+        while grown:
+            grown = False
+            for key in list(unreached):
+                info = functions[key]
+                if info.node.name in named or info.node.decorator_list:
+                    unreached.discard(key)
+                    named |= _attribute_names(info.node, set(), variables=True)
+                    grown = True
+        return unreached
 
     def _named(self, done: set[int]) -> set[str]:
         """The attribute names (and identifier strings, for ``getattr``) the code may use:
@@ -1686,17 +1726,48 @@ _IDENTIFIER = re.compile(r"[A-Za-z_]\w*")
 _PARAMETER_OBJECTS = frozenset({"declare_parameter", "get_parameter"})
 
 
-def _attribute_names(tree: ast.AST, skipped: set[int]) -> set[str]:
+# what looks a function up by a name the code computes: ``globals()[name]``, ``eval``
+_LOOKUPS = frozenset({"globals", "locals", "vars", "eval", "exec", "__import__", "__dict__",
+                      "importlib", "inspect", "modules"})
+
+
+def _looks_up_names(tree: ast.AST) -> bool:
+    """Whether ``tree`` may reach a function by a name it computes: a name of
+    ``_LOOKUPS`` (``sys.modules``, ``module.__dict__``), or ``getattr`` of a name not
+    written out on anything but ``self`` or ``cls``."""
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Name) and node.id in _LOOKUPS) or (
+                isinstance(node, ast.Attribute) and node.attr in _LOOKUPS) or (
+                isinstance(node, ast.alias) and node.name.split(".")[0] in _LOOKUPS):
+            return True
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and (
+                node.func.id == "getattr") and len(node.args) >= 2 and not (
+                isinstance(node.args[1], ast.Constant)) and not (
+                isinstance(node.args[0], ast.Name) and node.args[0].id in ("self", "cls")):
+            return True
+    return False
+
+
+def _attribute_names(tree: ast.AST, skipped: set[int], variables: bool = False) -> set[str]:
     """The attribute names ``tree`` uses and the identifiers its strings hold, outside
-    the function definitions whose ids are ``skipped``."""
+    the function definitions whose ids are ``skipped``; with ``variables``, the
+    variables it names and the names it imports too, and the decorators and default
+    values of the functions skipped (which run where the function is defined)."""
     found: set[str] = set()
     stack = [tree]
     while stack:
         node = stack.pop()
         if id(node) in skipped:
+            if variables and isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                stack.extend([*node.decorator_list, *node.args.defaults,
+                              *(d for d in node.args.kw_defaults if d is not None)])
             continue
         if isinstance(node, ast.Attribute):
             found.add(node.attr)
+        elif variables and isinstance(node, ast.Name):
+            found.add(node.id)
+        elif variables and isinstance(node, ast.alias):
+            found.update(part for part in (*node.name.split("."), node.asname) if part)
         elif isinstance(node, ast.Constant) and isinstance(node.value, str) and (
                 _IDENTIFIER.fullmatch(node.value)):
             found.add(node.value)
