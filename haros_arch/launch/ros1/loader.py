@@ -25,6 +25,7 @@ from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchIt
 from ...model.location import Location
 from ...model.rosname import is_legal_name
 from ...model.values import UNKNOWN_MARK, Unknown, Value, scalar_type
+from ...rosrun import find_executable
 from ...workspace import Workspace
 from ..model import (
     LaunchModel,
@@ -37,6 +38,7 @@ from ..model import (
 from ..paths import missing_argument_paths, written_absolute
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
+from .child_launch import dropped_words, launched_file
 from .scope import Scope, canonical, global_ns, same_unknowns, unknown_parts
 from .substitution import ArgUndefined, Context, SubstitutionError, substitute, unclosed
 
@@ -95,6 +97,9 @@ class Ros1Loader:
         # each ``$(anon x)`` unknown met in a node name, by identity, with its number
         self.anon_parts: dict[int, tuple[Unknown, int]] = {}
         self.includes = 0
+        # the programs that run roslaunch (``child_launch``): words dropped, None if not
+        self.launchers: dict[tuple[str, str], int | None] = {}
+        self.launcher: NodeDecl | None = None
         # $(optenv NAME default) of variables not set here, by the default they took
         # (``unset_hint``)
         self.optenv_defaults: dict[str, str] = {}
@@ -514,9 +519,12 @@ class Ros1Loader:
     def tag_node(self, element: Element, scope: Scope) -> None:
         guard = self.take_guard()
         nodes_before, params_before = len(self.model.nodes), len(self.model.params)
+        self.launcher = None
         self.node(element, scope)
         for item in node_items(self.model, nodes_before, params_before, guard):
             scope.item.add(item)
+        if self.launcher is not None:
+            self.child_roslaunch(self.launcher, element, scope, guard)
 
     def node(self, element: Element, scope: Scope) -> None:
         is_test = element.tag == "test"
@@ -634,12 +642,78 @@ class Ros1Loader:
         for given_param in self.model.params[params_before:]:
             if given_param.owner is None:
                 given_param.owner = len(self.model.nodes)
-        self.model.nodes.append(NodeDecl(
+        decl = NodeDecl(
             full, package, executable, inner.ns, args, list(remaps.remaps),
             scope.conditions, location, anonymous="$(anon" in element.get("name", ""),
             machine=machine, respawn=bool(respawn), required=bool(required),
             respawn_delay=respawn_delay, output=output, cwd=cwd, launch_prefix=prefix or None,
-            env=list(env.env), is_test=is_test, remap_places=dict(remaps.remap_places)))
+            env=list(env.env), is_test=is_test, remap_places=dict(remaps.remap_places))
+        if not is_test and self.dropped(package, executable) is not None:
+            self.launcher = decl  # a program that runs roslaunch: read as an include
+            return
+        self.model.nodes.append(decl)
+
+    def dropped(self, package: str, executable: str) -> int | None:
+        """``child_launch.dropped_words``, once per program."""
+        key = (package, executable)
+        if key not in self.launchers:
+            self.launchers[key] = dropped_words(package, executable, self.workspace)
+        return self.launchers[key]
+
+    def child_roslaunch(self, decl: NodeDecl, element: Element, scope: Scope,
+                        guard: LaunchCondition | None) -> None:
+        """The launch file a node's program runs through roslaunch (``child_launch``):
+        read as the top-level file of a roslaunch of its own, in the node's namespace,
+        with the ``name:=value`` words of its command line (its remaps and ``__name``
+        among them, as roslaunch passes them) as arguments, under the node's conditions.
+        A file not known (a word not known, a package not found) stays unknown, said."""
+        dropped = self.dropped(decl.package, decl.executable) or 0
+        words = shell_words(decl.args)[dropped:] + [
+            f"{a}:={b}" for a, b in decl.remaps] + (
+            [f"__name:={decl.name.rsplit('/', 1)[-1]}"] if decl.name else [])
+        where = decl.location
+        split = launched_file(words)
+        if split is None:
+            return
+        target, mappings = split
+        namespace = decl.namespace
+        for word in mappings:
+            if word.startswith("__ns:=") and UNKNOWN_MARK not in word:
+                namespace = global_ns(word[len("__ns:="):])
+        path = None
+        if not any(UNKNOWN_MARK in word for word in target):
+            if len(target) == 1:
+                path = target[0] if os.path.isabs(target[0]) else None
+            else:
+                root = self.workspace.find(target[0])
+                path = find_executable(root, target[1], executable=False) if root else None
+        if path is None:
+            self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
+                f"the launch file {' '.join(target)!r} that {decl.package}/"
+                f"{decl.executable} runs through roslaunch is not found; what it starts "
+                "is not read"))
+            scope.item.add(LaunchItem("include", " ".join(target), where,
+                                      namespace=namespace, condition=guard))
+            self.model.unread_includes.append(UnreadInclude(
+                " ".join(target), namespace, [], scope.conditions, where))
+            return
+        args: dict[str, Value] = {}
+        for word in mappings:
+            key, _, text = word.partition(":=")
+            if key.startswith("_") and not key.startswith("__"):
+                continue  # a parameter assignment: roslaunch's load_mappings skips it
+            args[key] = Value.unknown("roslaunch argument") if UNKNOWN_MARK in text \
+                else Value.of(text)
+        filename = os.path.abspath(path)
+        child = Scope.root(filename, args, namespace)
+        child.conditions = scope.conditions
+        child.env = list(decl.env)
+        child.stack = scope.stack
+        child.item = scope.item.add(LaunchItem(
+            "file", self.workspace.relpath(filename), where, namespace=child.ns,
+            condition=guard, args=[LaunchArg(k, v.text,
+                                             "command line") for k, v in args.items()]))
+        self.load_file(filename, child, element, scope)
 
     def check_machines(self) -> None:
         """Each node's machine, once every file is loaded, as roslaunch looks it up
