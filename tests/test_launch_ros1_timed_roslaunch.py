@@ -89,3 +89,9 @@ def test_a_file_not_known_stays_unknown_and_said(write_tree) -> None:
             and "through roslaunch" in d.message]
     assert [d.location.line for d in said] == [7]
     assert [u.namespace for u in model.unread_includes] == ["/robot/"]
+
+
+def test_the_script_and_launched_packages_are_used(write_tree) -> None:
+    model = _model(write_tree)
+    used = {(u.package, u.kind) for u in model.package_uses}
+    assert {("bringup", "node"), ("timed_roslaunch", "node"), ("other", "file")} <= used

@@ -668,6 +668,9 @@ class Ros1Loader:
         among them, as roslaunch passes them) as arguments, under the node's conditions.
         A file not known (a word not known, a package not found) stays unknown, said."""
         dropped = self.dropped(decl.package, decl.executable) or 0
+        # the script's package is one the file uses, as a node's (a ROS 1 launch's
+        # guard is never a package check)
+        self.model.package_uses.append(PackageUse(decl.package, decl.location, "node"))
         words = shell_words(decl.args)[dropped:] + [
             f"{a}:={b}" for a, b in decl.remaps] + (
             [f"__name:={decl.name.rsplit('/', 1)[-1]}"] if decl.name else [])
@@ -685,6 +688,7 @@ class Ros1Loader:
             if len(target) == 1:
                 path = target[0] if os.path.isabs(target[0]) else None
             else:
+                self.model.package_uses.append(PackageUse(target[0], where))
                 root = self.workspace.find(target[0])
                 path = find_executable(root, target[1], executable=False) if root else None
         if path is None:
