@@ -1391,6 +1391,22 @@ def constructed_elsewhere(field: Cursor, source: dict[str, bytes]) -> bool:
     return bool(constructors) and all(c.get_definition() is None for c in constructors)
 
 
+def constructed_here(field: Cursor) -> bool:
+    """Whether ``field`` is a member of a class a constructor of which this unit's own
+    source defines (``links.member_facts`` says what it gives the member)."""
+    owner = field.semantic_parent
+    if owner is None or field.kind != CursorKind.FIELD_DECL:
+        return False
+    main = field.translation_unit.spelling
+    for constructor in owner.get_children():
+        if constructor.kind in _CONSTRUCTORS and is_constructor(constructor):
+            definition = constructor.get_definition()
+            place = definition.location.file if definition is not None else None
+            if place is not None and place.name == main:
+                return True
+    return False
+
+
 def constructor_values(field: Cursor, source: dict[str, bytes]
                        ) -> list[tuple[Cursor | None, Cursor]]:
     """Per constructor of ``field``'s class defined in this file (its definition): the
