@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
 """
 
 
-def _calls(write_tree, owner: str = OWNER) -> list[tuple[str, str]]:
+def _calls(write_tree, owner: str = OWNER, implicit: bool = False) -> list[tuple[str, str]]:
     root = write_tree({
         "m/package.xml": package_xml("m", "catkin"),
         "m/CMakeLists.txt": (
@@ -73,8 +73,9 @@ def _calls(write_tree, owner: str = OWNER) -> list[tuple[str, str]]:
             "add_library(m src/helper.cpp src/owner.cpp)\n"
             "add_executable(mapper src/node.cpp)\n"
             "target_link_libraries(mapper m)\n"),
-        "m/include/m/map.h": HEADER,
-        "m/src/helper.cpp": HELPER,
+        "m/include/m/map.h": HEADER.replace("  Helper();\n", "") if implicit else HEADER,
+        "m/src/helper.cpp": HELPER.replace("Helper::Helper() {}\n", "") if implicit
+        else HELPER,
         "m/src/owner.cpp": owner,
         "m/src/node.cpp": NODE})
     sources = [str(root / "m" / "src" / name) for name in ("node.cpp", "helper.cpp",
@@ -94,6 +95,15 @@ def test_a_handle_member_assigned_through_an_object_elsewhere_is_that_handle(
 
 def test_a_handle_member_no_file_assigns_is_the_default_handle(write_tree) -> None:
     calls = _calls(write_tree, OWNER.replace("  helper_->node_ = nh;\n", ""))
+    assert ("read", "helper/fx") in calls and ("publish", "plain") in calls
+
+
+def test_a_class_that_declares_no_constructor_takes_the_assigned_handle(
+        write_tree) -> None:
+    calls = _calls(write_tree, implicit=True)
+    assert ("read", "~helper/fx") in calls and ("read", "helper/fx") not in calls
+    assert ("publish", "plain") in calls
+    calls = _calls(write_tree, OWNER.replace("  helper_->node_ = nh;\n", ""), implicit=True)
     assert ("read", "helper/fx") in calls and ("publish", "plain") in calls
 
 

@@ -44,7 +44,14 @@ from .call_conditions import (
     SITE_UNDER,
     qualified_call,
 )
-from .call_sites import BUILT_CLOSE, BUILT_OPEN, CallSites, argument, string_parameters
+from .call_sites import (
+    BUILT_CLOSE,
+    BUILT_OPEN,
+    CallSites,
+    argument,
+    declares_no_constructor,
+    string_parameters,
+)
 from .handles import Namespaces, holds_handle, is_handle, join_name, normalise
 from .owners import owner_of
 from .values import (
@@ -279,16 +286,24 @@ def member_facts(functions: Iterable[Cursor], main: str,
                  namespace: Callable[[Cursor], str | None]) -> list[Fact]:
     """A ``MEMBER`` fact for each handle member of the classes whose constructors the
     unit's own source ``main`` defines, with its namespace as ``namespace`` gives it
-    (None: not one to say)."""
+    (None: not one to say); also of each handle member of a class that declares no
+    constructor and a method of which ``main`` defines (``constructed_here``)."""
     facts: list[Fact] = []
     seen: set[str] = set()
-    for function in _own_constructors(functions, main):
-        owner = function.semantic_parent
+    functions = list(functions)
+    owners = [(function.semantic_parent, False)
+              for function in _own_constructors(functions, main)]
+    owners.extend((function.semantic_parent, True) for function in functions
+                  if function.kind == CursorKind.CXX_METHOD and function.is_definition()
+                  and function.location.file is not None
+                  and function.location.file.name == main
+                  and declares_no_constructor(function.semantic_parent))
+    for owner, implicit in owners:
         if owner is None:
             continue
         for field in owner.get_children():
             usr = field.get_usr() if field.kind == CursorKind.FIELD_DECL else ""
-            if not usr or usr in seen:
+            if not usr or usr in seen or (implicit and not holds_handle(field)):
                 continue
             seen.add(usr)
             value = namespace(field)
