@@ -363,8 +363,8 @@ class Namespaces:
                 self._origins.add(_ORIGIN_UNSEEN)  # set by a constructor of another file
                 marker = self.sites.member_placeholder(field)
                 return (marker,) if marker is not None else UNKNOWN
-            if held and not self._defaulting and self.sites is not None and (
-                    constructed_here(field)):
+            if held and found is None and not self._defaulting and self.sites is not None \
+                    and constructed_here(field):
                 # a handle the unit's constructors leave to its default may be given
                 # another by a file of the node that assigns it through an object of the
                 # class (FUEL's SDFMap: ``mr_->node_ = nh``, MapROS reading
