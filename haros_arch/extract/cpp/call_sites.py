@@ -1391,6 +1391,33 @@ def constructed_elsewhere(field: Cursor, source: dict[str, bytes]) -> bool:
     return bool(constructors) and all(c.get_definition() is None for c in constructors)
 
 
+def constructed_here(field: Cursor) -> bool:
+    """Whether ``field`` is a member of a class a constructor of which this unit's own
+    source defines, or that declares none and a method of which it defines
+    (``links.member_facts`` says what it gives the member)."""
+    owner = field.semantic_parent
+    if owner is None or field.kind != CursorKind.FIELD_DECL:
+        return False
+    main = field.translation_unit.spelling
+    implicit = declares_no_constructor(owner)
+    for member in owner.get_children():
+        if (member.kind in _CONSTRUCTORS and is_constructor(member)) or (
+                implicit and member.kind == CursorKind.CXX_METHOD):
+            definition = member.get_definition()
+            place = definition.location.file if definition is not None else None
+            if place is not None and place.name == main:
+                return True
+    return False
+
+
+def declares_no_constructor(owner: Cursor | None) -> bool:
+    """Whether the class ``owner`` declares no constructor of its own."""
+    return owner is not None and owner.kind in (
+        CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL) and not any(
+        member.kind in _CONSTRUCTORS and is_constructor(member)
+        for member in owner.get_children())
+
+
 def constructor_values(field: Cursor, source: dict[str, bytes]
                        ) -> list[tuple[Cursor | None, Cursor]]:
     """Per constructor of ``field``'s class defined in this file (its definition): the

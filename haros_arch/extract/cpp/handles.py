@@ -21,6 +21,7 @@ from . import api
 from .call_sites import (
     CallSites,
     constructed_elsewhere,
+    constructed_here,
     member_initialiser,
     uses_parameter,
     value_text,
@@ -166,6 +167,7 @@ class Namespaces:
         self.origin: str | None = None
         self._origins: set[str] = set()
         self._asked = 0  # ``value_namespace`` questions open
+        self._defaulting = False  # asked by ``member_origin``
         self.unit_root: Any = None  # the unit's root node (``cursors.root``), once known
         # whether a file is the workspace's, as the visitor asks (the same function: the
         # children it kept of a node are those ``children_in`` keeps for it)
@@ -361,6 +363,17 @@ class Namespaces:
                 self._origins.add(_ORIGIN_UNSEEN)  # set by a constructor of another file
                 marker = self.sites.member_placeholder(field)
                 return (marker,) if marker is not None else UNKNOWN
+            if held and found is None and not self._defaulting and self.sites is not None \
+                    and constructed_here(field):
+                # a handle the unit's constructors leave to its default may be given
+                # another by a file of the node that assigns it through an object of the
+                # class (FUEL's SDFMap: ``mr_->node_ = nh``, MapROS reading
+                # ``map_ros/fx`` on ``node_``): those values where there are
+                # (``links.ASSIGNED``), else this unit's, the default (``links.MEMBER``)
+                marker = self.sites.member_placeholder(field)
+                if marker is not None:
+                    self._origins.add(_ORIGIN_UNSEEN)
+                    return (marker,)
             if held:
                 self._origins.add(PROCESS)  # default-constructed: ``ros::NodeHandle nh_;``
             return ("",) if held else UNKNOWN
@@ -375,7 +388,11 @@ class Namespaces:
         class give it (``member``, read in no function), and where that handle was made
         (``origin``)."""
         self._origins = set()
-        found = self.member(field, None)
+        self._defaulting = True  # what the unit gives it, never the placeholder of itself
+        try:
+            found = self.member(field, None)
+        finally:
+            self._defaulting = False
         origin = next(iter(self._origins)) if len(self._origins) == 1 else None
         return found, None if origin == _ORIGIN_UNSEEN else origin
 

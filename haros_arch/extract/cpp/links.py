@@ -44,10 +44,28 @@ from .call_conditions import (
     SITE_UNDER,
     qualified_call,
 )
-from .call_sites import BUILT_CLOSE, BUILT_OPEN, CallSites, argument, string_parameters
-from .handles import Namespaces, is_handle, join_name, normalise
+from .call_sites import (
+    BUILT_CLOSE,
+    BUILT_OPEN,
+    CallSites,
+    argument,
+    declares_no_constructor,
+    string_parameters,
+)
+from .handles import Namespaces, holds_handle, is_handle, join_name, normalise
 from .owners import owner_of
-from .values import PLACEHOLDER, SEPARATOR, VARIABLES, Scope, choose, key_of, render
+from .values import (
+    PLACEHOLDER,
+    SEPARATOR,
+    VARIABLES,
+    Scope,
+    _walk,
+    choose,
+    key_of,
+    render,
+    strip,
+)
+from .writes import writes_of
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
 CALLED = -1  # the index of a fact that says only that the call site calls the function
@@ -122,6 +140,11 @@ WITHIN = -18
 # (the fact's USR) through its class, not naming it (``plugin->initialize(nh, nhp)``):
 # the call may run any override, a plugin's the host loads (``handles_given``)
 VIRTUAL_CALL = -22
+# the index of a fact that says the unit's own source assigns the handle member (the
+# fact's USR) the namespace (the value) through an object of its class, not ``this``
+# (FUEL's SDFMap hands its handle to its MapROS: ``mr_->node_ = nh``): where a file of
+# the node does, its values replace what the class's constructors leave (``MEMBER``)
+ASSIGNED = -23
 # the index, plus K, of a fact that says the construction (the fact's site) builds the
 # class template whose constructor is the fact's USR with the ROS type (the value) as its
 # K-th template argument: a call whose callback takes that type parameter is typed by it
@@ -130,7 +153,7 @@ TYPE_ARGUMENT = 1000
 # facts that say no call of their function
 NOT_CALLS = frozenset({OVERRIDES, HOST_NAMED, CALLED_VIRTUAL, STRING_OVERRIDES, LITERAL,
                        OPAQUE, DEFINED, MEMBER, WITHIN, QUALIFIED, EXPORTED_AT,
-                       VIRTUAL_CALL})
+                       VIRTUAL_CALL, ASSIGNED})
 _SPECIALISED = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CONSTRUCTOR,
                           CursorKind.CXX_METHOD})
 # realsense2_camera's setParam is called with ~30 names in its files, OrbbecSDK_ROS2's
@@ -263,22 +286,62 @@ def member_facts(functions: Iterable[Cursor], main: str,
                  namespace: Callable[[Cursor], str | None]) -> list[Fact]:
     """A ``MEMBER`` fact for each handle member of the classes whose constructors the
     unit's own source ``main`` defines, with its namespace as ``namespace`` gives it
-    (None: not one to say)."""
+    (None: not one to say); also of each handle member of a class that declares no
+    constructor and a method of which ``main`` defines (``constructed_here``)."""
     facts: list[Fact] = []
     seen: set[str] = set()
-    for function in _own_constructors(functions, main):
-        owner = function.semantic_parent
+    functions = list(functions)
+    owners = [(function.semantic_parent, False)
+              for function in _own_constructors(functions, main)]
+    owners.extend((function.semantic_parent, True) for function in functions
+                  if function.kind == CursorKind.CXX_METHOD and function.is_definition()
+                  and function.location.file is not None
+                  and function.location.file.name == main
+                  and declares_no_constructor(function.semantic_parent))
+    for owner, implicit in owners:
         if owner is None:
             continue
         for field in owner.get_children():
             usr = field.get_usr() if field.kind == CursorKind.FIELD_DECL else ""
-            if not usr or usr in seen:
+            if not usr or usr in seen or (implicit and not holds_handle(field)):
                 continue
             seen.add(usr)
             value = namespace(field)
             if value is not None and usr not in marked_usrs(value):
                 facts.append((usr, MEMBER, value, main))
     return facts
+
+
+def assigned_facts(functions: Iterable[Cursor], main: str, sites: CallSites,
+                   namespaces: Namespaces) -> list[Fact]:
+    """An ``ASSIGNED`` fact for each handle member that the functions the unit's own
+    source ``main`` defines assign through an object of its class (``obj.nh_ = nh``,
+    ``obj->nh_ = nh``), with the namespace it gives it (``?`` where the unit's writes
+    of it differ)."""
+    found: dict[str, str] = {}
+    for function in functions:
+        where = function.location.file
+        if where is None or where.name != main or not function.is_definition():
+            continue
+        for node in _walk(function):
+            if node.kind not in (CursorKind.CALL_EXPR, CursorKind.BINARY_OPERATOR):
+                continue
+            for write in writes_of(node, sites.source):
+                target, value = write.target, write.value
+                field = target.referenced if target.kind == CursorKind.MEMBER_REF_EXPR \
+                    else None
+                if not write.whole or value is None or field is None or (
+                        field.kind != CursorKind.FIELD_DECL) or not holds_handle(field):
+                    continue
+                base = [strip(child) for child in target.get_children()]
+                usr = field.get_usr()
+                if not base or base[0].kind == CursorKind.CXX_THIS_EXPR or not usr:
+                    continue
+                text = _value(value, sites.scope(function), namespaces, None)
+                if text is None or usr in marked_usrs(text):
+                    text = "?"
+                found[usr] = text if found.get(usr, text) == text else "?"
+    return [(usr, ASSIGNED, value, main) for usr, value in found.items()]
 
 
 def global_facts(found: Iterable[tuple[str, str]], main: str) -> list[Fact]:
@@ -1249,6 +1312,11 @@ def _passed(facts: Iterable[Fact]) -> dict[str, dict[str, dict[int, str]]]:
             passed.setdefault(usr, {}).setdefault(site, {})[index] = value
         elif index == MEMBER:  # a member's value where its constructors are
             passed.setdefault(usr, {}).setdefault(site, {})[0] = value
+    assigned: dict[str, dict[str, dict[int, str]]] = {}
+    for usr, index, value, site in facts:
+        if index == ASSIGNED:  # written through an object: not the constructors' value
+            assigned.setdefault(usr, {})[site] = {0: value}
+    passed.update(assigned)
     qualified = {(usr, site) for usr, index, _value, site in facts if index == QUALIFIED}
     for usr, index, base, parameter in facts:
         if index == OVERRIDES and base in passed and parameter.isdigit():

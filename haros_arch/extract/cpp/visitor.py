@@ -687,6 +687,9 @@ class CallFinder:
                                              self.opaque_words))
         self.facts.extend(links.member_facts(self.functions, self.tu.spelling,
                                              self._member_value))
+        if self.sites is not None and self.sites.external:
+            self.facts.extend(links.assigned_facts(self.functions, self.tu.spelling,
+                                                   self.sites, self.namespaces))
         if any(is_handle(variable) for variable in self.globals):
             # (a unit with no global handle has none to give: its functions are not
             # walked for global writes)
