@@ -253,14 +253,12 @@ def _kept_roots(files: list[str], workspace: Workspace, env: Mapping[str, str],
     if cache_dir is None:
         return root_launch_files(files, workspace, env)
     from . import runcache
-    from .extract import AUTO_CACHE
     from .files import cache_folder
 
-    where = cache_folder(folder) if cache_dir == AUTO_CACHE else cache_dir
     return runcache.kept(
-        where, "launch-roots", [folder], env, files,
+        cache_folder(folder, cache_dir), "launch-roots", [folder], env, files,
         lambda: root_launch_files(files, workspace, env),
-        lambda found: [found[0], found[1]],
+        list,
         lambda data: ([str(f) for f in data[0]], [str(f) for f in data[1]]))
 
 
@@ -269,7 +267,7 @@ def choose(path: str, launch: Iterable[str] = (), args: Mapping[str, str] | None
            ) -> Choice:
     """The project for ``path`` (a workspace or package folder, or a launch file)
     without a project file. Raises ``ProjectError`` when there is nothing to analyse.
-    ``cache_dir`` (``extract.AUTO_CACHE``: the default folder): where the launch files'
+    ``cache_dir`` (``files.AUTO_CACHE``: the default folder): where the launch files'
     roots are kept while nothing they may read changes (``runcache.kept``); None: not
     kept."""
     env = dict(os.environ if environment is None else environment)

@@ -160,11 +160,17 @@ def read_bytes(
                                 detail=err.strerror or str(err))]
 
 
-def cache_folder(workspace_root: str) -> str:
-    """The cache folder: ``$XDG_CACHE_HOME/haros-arch`` (``~/.cache/haros-arch``);
-    ``.haros-arch-cache`` in the workspace when there is no home folder. Entries name
-    files by absolute path, so one folder serves every workspace. (Here, not with the C++
-    cache, so that a re-run the run cache answers imports no C++ extractor.)"""
+AUTO_CACHE = "auto"  # a ``cache_dir`` option's value: the default folder (``cache_folder``)
+
+
+def cache_folder(workspace_root: str, cache_dir: str = AUTO_CACHE) -> str:
+    """The cache folder a ``cache_dir`` option names: itself, or for ``AUTO_CACHE``
+    ``$XDG_CACHE_HOME/haros-arch`` (``~/.cache/haros-arch``), ``.haros-arch-cache`` in
+    the workspace when there is no home folder. Entries name files by absolute path, so
+    one folder serves every workspace. (Here, not with the C++ cache, so that a re-run
+    the run cache answers imports no C++ extractor.)"""
+    if cache_dir != AUTO_CACHE:
+        return cache_dir
     xdg = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     if xdg.startswith("~"):
         return os.path.join(workspace_root, ".haros-arch-cache")

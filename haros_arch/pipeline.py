@@ -76,9 +76,8 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
     if options.cache_dir is None:
         return _analyse(project, env, options, None)
     with _stage(options, "cache"):  # a run with nothing changed: its model, kept
-        folder = (cache_folder(os.path.abspath(
-            project.workspace[0] if project.workspace else project.folder))
-                  if options.cache_dir == AUTO_CACHE else options.cache_dir)
+        folder = cache_folder(os.path.abspath(
+            project.workspace[0] if project.workspace else project.folder), options.cache_dir)
         keys = runcache.run_key(project, env, options.models, folder,
                                 runcache.compile_commands_of(project, env))
         if keys is None:

@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 from .. import diagnostics as diag
 from ..ctext import code_only
 from ..diagnostics import Diagnostic
-from ..files import read_text
+from ..files import AUTO_CACHE, read_text
 from ..manifest import version_environment
 from ..model.source import Node, class_load_base, is_class_load
 from ..model.values import UNKNOWN_MARK
@@ -34,7 +34,6 @@ from .overrides import clear_where_declared
 if TYPE_CHECKING:
     from .cpp import CppBatch, CppResult
 
-AUTO_CACHE = "auto"  # cache_dir: the default cache folder (``cpp.cache.default_folder``)
 _RUNS: list[dict[Any, Any]] = []  # the blocks of ``one_run``, innermost last
 
 

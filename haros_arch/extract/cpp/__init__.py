@@ -438,7 +438,7 @@ def _keep_node(store: cache.Cache, key: str, result: CppResult) -> None:
 def _folder(cache_dir: str | None, workspace: Workspace) -> str | None:
     """The cache folder of a run's ``cache_dir`` option (None: no cache)."""
     return None if cache_dir is None else (
-        cache.default_folder(workspace.root) if cache_dir == cache.AUTO else cache_dir)
+        cache.default_folder(workspace.root, cache_dir))
 
 
 def unit_digests(paths: Sequence[str], workspace: Workspace, *,

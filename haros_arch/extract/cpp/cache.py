@@ -21,7 +21,7 @@ from typing import Any
 
 from ... import __version__
 from ...diagnostics import CATALOGUE, Diagnostic
-from ...files import cache_folder, content_digest, write_whole
+from ...files import AUTO_CACHE, cache_folder, content_digest, write_whole
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.source import PrimitiveCall
@@ -29,7 +29,7 @@ from . import interfaces
 from .headers import STANDIN
 from .synthesis import HEADER_NAME
 
-AUTO = "auto"  # cache_dir value: the default folder (``files.cache_folder``)
+AUTO = AUTO_CACHE  # cache_dir value: the default folder (``files.cache_folder``)
 default_folder = cache_folder
 FORMAT = 2  # 2: the headers and digest on a first line of their own
 GENERATED = "<generated>"
