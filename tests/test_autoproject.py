@@ -435,21 +435,27 @@ def test_a_yaml_file_named_like_a_launch_file_that_is_none_is_no_configuration(
     assert configs["rover/lidar"] == ["rover/launch/lidar.launch.yaml"]
 
 
-def test_the_chosen_roots_are_kept_while_no_file_they_read_changes(
-        ws: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    # choosing loads every launch file of the workspace: a re-run with nothing changed
-    # takes the roots from the cache folder (issue 24), a changed file chooses again
+@pytest.fixture()
+def loads(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """One item per call of ``root_launch_files`` (which loads every launch file)."""
     from haros_arch import autoproject
 
-    cache = str(tmp_path / "cache")
-    loads: list[int] = []
+    counted: list[int] = []
     real = autoproject.root_launch_files
 
-    def counted(*args, **kwargs):
-        loads.append(1)
+    def counting(*args, **kwargs):
+        counted.append(1)
         return real(*args, **kwargs)
 
-    monkeypatch.setattr(autoproject, "root_launch_files", counted)
+    monkeypatch.setattr(autoproject, "root_launch_files", counting)
+    return counted
+
+
+def test_the_chosen_roots_are_kept_while_no_file_they_read_changes(
+        ws: Path, tmp_path: Path, loads: list[int]) -> None:
+    # choosing loads every launch file of the workspace: a re-run with nothing changed
+    # takes the roots from the cache folder (issue 24), a changed file chooses again
+    cache = str(tmp_path / "cache")
 
     def configs() -> dict[str, list[str]]:
         choice = choose(str(ws), environment={}, cache_dir=cache)
@@ -477,20 +483,13 @@ def test_the_chosen_roots_are_kept_while_no_file_they_read_changes(
 
 @pytest.mark.parametrize("command", ["check", "report"])
 def test_a_command_on_a_folder_again_takes_the_kept_choice(
-        ws: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, command: str) -> None:
+        ws: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, loads: list[int],
+        command: str) -> None:
     # every command that analyses a folder chooses its configurations through the cache
     # folder (report asked for the project first without it, loading every launch file)
     from haros_arch import autoproject
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
-    loads: list[int] = []
-    real = autoproject.root_launch_files
-
-    def counted(*args, **kwargs):
-        loads.append(1)
-        return real(*args, **kwargs)
-
-    monkeypatch.setattr(autoproject, "root_launch_files", counted)
     extra = ["--fail-on", "never"] if command == "check" else ["-o", str(tmp_path / "r.html")]
     for _ in range(2):
         autoproject._chosen.clear()  # a new process
