@@ -54,8 +54,9 @@ from .workspace import SKIP_FOLDERS, Workspace, installed_roots
 T = TypeVar("T")
 FORMAT = 1
 RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
-KEEP = 16  # entries kept (a run's model and its findings, per project, workspace
-#           state and environment)
+KEEP = 16  # entries kept per workspace (a run's model and its findings, per project,
+#           workspace state and environment: a few runs)
+WORKSPACES = 8  # workspaces whose entries are kept: those of the newest runs
 MAX_FILES = 200_000
 # variables a shell sets on its own as one moves and runs commands (the current folder is
 # in the key already): not inputs of a run
@@ -229,6 +230,7 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
     """The key of a run of ``project``, and its outer key (C++ files by name only, not
     content); None when its files are too many to snapshot."""
     snap = _snapshot(folder, project.workspace)
+    group = _group(project.workspace)
     try:
         beside = sorted(os.scandir(project.folder), key=lambda e: e.name)
     except OSError:
@@ -252,15 +254,25 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
     # (the distribution the workspace's files name: its git branch is no file snapshotted)
     head = [FORMAT, __version__, os.getcwd(), repr(project), _environment(env), models,
             guessed_distro(project, env)]
-    return (_digest(json.dumps([*head, snap.digest()])),
-            _digest(json.dumps([*head, snap.digest(outer=True)])))
+    return (f"{group}-{_digest(json.dumps([*head, snap.digest()]))}",
+            f"{group}-{_digest(json.dumps([*head, snap.digest(outer=True)]))}")
+
+
+def _group(roots: Iterable[str]) -> str:
+    """The name that begins the entries of runs over the workspace ``roots`` (a project's
+    workspace folders): the cache folder is pruned workspace by workspace (``_prune``)."""
+    return _digest(repr([os.path.abspath(r) for r in roots]))[:GROUP_LENGTH]
+
+
+GROUP_LENGTH = 16
+INDEX = "index.json"  # the end of a workspace's stat index's name: ``<group>-index.json``
 
 
 def _snapshot(folder: str, roots: Iterable[str]) -> Snapshot:
     """A snapshot of this tool's files and of every file under ``roots`` (a project's
     workspace folders), through the index the cache folder keeps for those roots."""
     full = [os.path.abspath(r) for r in roots]
-    snap = Snapshot(os.path.join(folder, "runs", "index-" + _digest(repr(full)) + ".json"))
+    snap = Snapshot(os.path.join(folder, "runs", f"{_group(full)}-{INDEX}"))
     snap.tree(TOOL, frozenset({"__pycache__"}))
     for root in full:
         snap.tree(root, SKIP_FOLDERS)
@@ -290,7 +302,8 @@ def kept(folder: str, kind: str, roots: Iterable[str], env: Mapping[str, str],
     snap.save()
     key = _digest(json.dumps([FORMAT, __version__, kind, os.getcwd(), _environment(env),
                               inputs, snap.digest()]))
-    return _entry_or(folder, _entry(folder, f"{kind}-{key}"), kind, compute, save, read)
+    return _entry_or(folder, _entry(folder, f"{_group(roots)}-{kind}-{key}"), kind, compute,
+                     save, read)
 
 
 def compile_commands_of(project: Project, env: Mapping[str, str]) -> list[str]:
@@ -521,22 +534,50 @@ def _entry_or(folder: str, entry: str, kind: str, compute: Callable[[], T],
 
 
 def _write(entry: str, data: object, folder: str) -> None:
-    """Write an entry, then remove all but the newest ``KEEP``."""
+    """Write an entry, then prune the cache folder (``_prune``)."""
     _write_json(entry, data)
     _prune(folder)
 
 
 def _prune(folder: str) -> None:
-    """Remove all entries but the newest ``KEEP``."""
+    """Keep the newest ``KEEP`` entries of each workspace's runs (their names begin with
+    its ``_group``), and the entries of the ``WORKSPACES`` workspaces run last: several
+    workspaces checked in turn keep their runs, and a workspace no longer analysed
+    leaves nothing behind, its stat index neither. Names of an earlier version of this
+    tool (no group) go as one workspace's."""
     runs = os.path.join(folder, "runs")
+    groups: dict[str, list[tuple[int, str]]] = {}
+    indexes: dict[str, list[tuple[int, str]]] = {}
     try:
-        entries = [e for e in os.scandir(runs) if e.name.endswith((".json", ".txt"))
-                   and not e.name.startswith("index-")]
-        entries.sort(key=lambda e: e.stat().st_mtime_ns, reverse=True)
-        for old in entries[KEEP:]:
-            os.remove(old.path)
+        for entry in os.scandir(runs):
+            if not entry.name.endswith((".json", ".txt")):
+                continue
+            group = _group_of(entry.name)
+            index = entry.name == f"{group}-{INDEX}" or (
+                not group and entry.name.startswith("index-"))
+            (indexes if index else groups).setdefault(group, []).append(
+                (entry.stat().st_mtime_ns, entry.path))
     except OSError:
-        pass
+        return
+    newest = sorted(groups.keys() | indexes.keys(), reverse=True,
+                    key=lambda g: max(groups.get(g, []) + indexes.get(g, [])))
+    for rank, group in enumerate(newest):
+        kept = KEEP if rank < WORKSPACES else 0
+        gone = sorted(groups.get(group, []), reverse=True)[kept:]
+        if rank >= WORKSPACES:
+            gone += indexes.get(group, [])
+        for _time, path in gone:
+            with contextlib.suppress(OSError):
+                os.remove(path)
+
+
+def _group_of(name: str) -> str:
+    """The workspace group an entry's file name begins with; "" for none."""
+    head = name[:GROUP_LENGTH]
+    if name[GROUP_LENGTH:GROUP_LENGTH + 1] == "-" and all(c in "0123456789abcdef"
+                                                          for c in head):
+        return head
+    return ""
 
 
 def _entry(folder: str, key: str) -> str:

@@ -41,7 +41,7 @@ def test_a_rerun_with_nothing_changed_is_the_kept_model(tmp_path: Path) -> None:
     again, timings = _run(project, tmp_path / "cache")
     assert again == first
     assert set(timings) == {"cache"}  # no stage ran
-    assert len(list((tmp_path / "cache" / "runs").glob("index-*.json"))) == 1
+    assert len(list((tmp_path / "cache" / "runs").glob("*-index.json"))) == 1
 
 
 def test_a_changed_source_runs_again(tmp_path: Path) -> None:
@@ -72,7 +72,7 @@ def test_an_entry_that_does_not_read_back_is_a_miss(tmp_path: Path) -> None:
     project = _copy(tmp_path)
     first, _ = _run(project, tmp_path / "cache")
     for entry in (tmp_path / "cache" / "runs").glob("*.json"):
-        if not entry.name.startswith("index-"):
+        if not entry.name.endswith("-index.json"):
             entry.write_text('{"model": {"configurations": 7}}')
     again, timings = _run(project, tmp_path / "cache")
     assert again == first and "scan" in timings
@@ -84,8 +84,29 @@ def test_only_the_newest_runs_are_kept(tmp_path: Path, monkeypatch) -> None:
     for robot in ("a", "b", "c", "d"):
         _run(project, tmp_path / "cache", {"ROBOT": robot})
     entries = [e for e in (tmp_path / "cache" / "runs").glob("*.json")
-               if not e.name.startswith("index-")]
+               if not e.name.endswith("-index.json")]
     assert len(entries) == 2
+
+
+def test_workspaces_checked_in_turn_keep_their_runs(tmp_path: Path, monkeypatch) -> None:
+    # entries are pruned per workspace: runs of other workspaces evict none of a
+    # workspace's, however many; past WORKSPACES workspaces the oldest one's go, its stat
+    # index too
+    monkeypatch.setattr(runcache, "KEEP", 3)
+    monkeypatch.setattr(runcache, "WORKSPACES", 3)
+    projects = [_copy(tmp_path / name) for name in ("a", "b", "c", "d")]
+    cache = tmp_path / "cache"
+    first = {p: _run(p, cache)[0] for p in projects[:3]}
+    for project in projects[:3]:  # each run again: answered from the cache
+        again, timings = _run(project, cache)
+        assert again == first[project] and set(timings) == {"cache"}, project
+    _run(projects[3], cache)  # a fourth workspace: the first's entries go
+    again, timings = _run(projects[0], cache)
+    assert "graph" in timings
+    indexes = list((cache / "runs").glob("*-index.json"))
+    assert len(indexes) == 3  # workspaces b, c, d had theirs; a's is new again, b's gone
+    again, timings = _run(projects[2], cache)
+    assert again == first[projects[2]] and set(timings) == {"cache"}
 
 
 def test_the_findings_of_a_kept_run_are_kept_with_it(tmp_path: Path, monkeypatch) -> None:
