@@ -33,7 +33,7 @@ def to_data(obj: Any) -> Any:
     if kind == "dataclass":
         return _dataclass_to_data(obj)
     if kind == "list":
-        return [to_data(v) for v in obj]
+        return [v if type(v) in _PLAIN else to_data(v) for v in obj]
     if kind == "value":
         return obj.text
     if kind == "rosname":
@@ -72,11 +72,14 @@ def _kind(obj: Any) -> str:
     return kind
 
 
-# per dataclass: its head views, its written fields as (name, key, the field when it is
-# optional, whether it is a reference), its optional views and its views
-_Plan = tuple[dict[str, Any], tuple[tuple[str, str, "dataclasses.Field[Any] | None", bool],
-                                    ...], tuple[str, ...], dict[str, Any]]
+# per dataclass: its head views, its written fields as (name, key, the default the field
+# is left out at or ``_ALWAYS``, whether it is a reference), its optional views and its
+# views
+_Plan = tuple[dict[str, Any], tuple[tuple[str, str, Any, bool], ...], tuple[str, ...],
+              dict[str, Any]]
 _PLANS: dict[type, _Plan] = {}
+_ALWAYS = object()  # a field written whatever its value (not ``optional``)
+_PLAIN = frozenset({str, int, float, bool, type(None)})  # written as they are
 
 
 def _plan(cls: type) -> _Plan:
@@ -87,8 +90,8 @@ def _plan(cls: type) -> _Plan:
         for f in dataclasses.fields(cls):
             key = f.metadata.get("json", f.name)
             if key is not False:
-                written.append((f.name, key, f if f.metadata.get("optional") else None,
-                                bool(f.metadata.get("ref"))))
+                written.append((f.name, key, _default(f) if f.metadata.get("optional")
+                                else _ALWAYS, bool(f.metadata.get("ref"))))
         plan = (getattr(cls, "JSON_HEAD", {}), tuple(written),
                 getattr(cls, "JSON_OPTIONAL_VIEWS", ()), getattr(cls, "JSON_VIEWS", {}))
         _PLANS[cls] = plan
@@ -100,12 +103,14 @@ def _dataclass_to_data(obj: Any) -> dict[str, Any]:
     data: dict[str, Any] = {}
     for key, view in head.items():
         data[key] = to_data(view(obj))
-    for name, key, optional, ref in written:
+    for name, key, default, ref in written:
         value = getattr(obj, name)
-        if optional is not None and value == _default(optional):
+        if default is not _ALWAYS and value == default:
             continue
         if ref:
             data[key] = None if value is None else value.name
+        elif type(value) in _PLAIN:  # the most common case, without a call
+            data[key] = value
         else:
             data[key] = to_data(value)
     for key, view in views.items():
@@ -116,6 +121,8 @@ def _dataclass_to_data(obj: Any) -> dict[str, Any]:
 
 
 def _default(f: dataclasses.Field[Any]) -> Any:
+    """A field's default: one made by its factory, kept in the plan only to compare with
+    (never handed out, so never changed)."""
     if f.default_factory is not dataclasses.MISSING:
         return f.default_factory()
     return None if f.default is dataclasses.MISSING else f.default
