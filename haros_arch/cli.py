@@ -270,7 +270,8 @@ def _write(text: str, output: str | None, result: bool = True) -> None:
 
 
 def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
-    from .report.text import print_diagnostics, print_summary
+    from . import runcache
+    from .report.text import summary_lines
 
     analysis = _analyse(args.project, err, _options(args))
     if analysis is None or analysis.model is None:
@@ -281,8 +282,9 @@ def cmd_extract(args: argparse.Namespace, out: Console, err: Console) -> int:
     _write(document_text(model, analysis.project), args.output)
     if not args.quiet:
         summary = out if args.output else err
-        print_summary(model, summary, verbose=args.verbose)
-        print_diagnostics(model.all_diagnostics, summary, verbose=args.verbose)
+        for line in runcache.summary(model, args.verbose,
+                                     lambda: summary_lines(model, args.verbose)):
+            summary.print(line, highlight=False)
         if args.output:
             summary.print(f"wrote {args.output}", highlight=False)
     return EXIT_OK

@@ -701,3 +701,30 @@ def test_a_kept_run_imports_no_extractor(tmp_path: Path) -> None:
             for _ in range(2)]
     assert said[0].startswith("0 ['haros_arch.extract.cpp'")  # the cold run reads C++
     assert said[1] == "0 []"
+
+
+def test_an_unchanged_runs_extract_summary_decodes_no_model(tmp_path: Path, monkeypatch,
+                                                           capsys) -> None:
+    """(issue 24) `extract` without `-q` prints a summary of the model and its
+    diagnostics: a re-run with nothing changed prints the kept summary, the same text,
+    without decoding the kept model; `-v`'s longer summary is its own."""
+    from haros_arch.cli import main
+
+    project = _copy(tmp_path)
+    assert main(["extract", str(project), "-o", str(tmp_path / "a.json")]) == 0
+    first = capsys.readouterr().out
+    assert "configuration" in first and "wrote" in first
+    decoded: list[int] = []
+    real = runcache.from_data
+
+    def counted(data):
+        decoded.append(1)
+        return real(data)
+
+    monkeypatch.setattr(runcache, "from_data", counted)
+    assert main(["extract", str(project), "-o", str(tmp_path / "b.json")]) == 0
+    again = capsys.readouterr().out
+    assert decoded == [] and again == first.replace("a.json", "b.json")
+    assert main(["extract", str(project), "-v", "-o", str(tmp_path / "c.json")]) == 0
+    verbose = capsys.readouterr().out
+    assert decoded == [1] and "  node  " in verbose and "  node  " not in first

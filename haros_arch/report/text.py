@@ -4,8 +4,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterable
-
-from rich.console import Console
+from typing import Protocol
 
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.location import Location
@@ -15,7 +14,32 @@ from ..query.absence import unread_launch
 from .escape import escape
 
 
-def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Console,
+class Printer(Protocol):
+    """Where the text output goes: a rich ``Console``, or ``Lines``."""
+
+    def print(self, text: str, /, *, highlight: bool | None = None) -> None: ...
+
+
+class Lines:
+    """A printer that keeps the lines printed to it (rich markup), to print later: the
+    summary a kept run prints again (``summary_lines``)."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+
+    def print(self, text: str, /, *, highlight: bool | None = None) -> None:
+        self.lines.append(text)
+
+
+def summary_lines(model: Model, verbose: bool = False) -> list[str]:
+    """What ``extract`` prints of a model: its summary, then its diagnostics."""
+    lines = Lines()
+    print_summary(model, lines, verbose=verbose)
+    print_diagnostics(model.all_diagnostics, lines, verbose=verbose)
+    return lines.lines
+
+
+def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Printer,
                       verbose: bool = True) -> None:
     """Diagnostics grouped by file, each with line:col, severity, message and code.
 
@@ -77,7 +101,7 @@ def _places(places: list[Location], exclude: Diagnostic, limit: int | None) -> s
     return text
 
 
-def _print_info_counts(infos: list[Diagnostic], console: Console) -> None:
+def _print_info_counts(infos: list[Diagnostic], console: Printer) -> None:
     if not infos:
         return
     by_code: dict[str, list[Diagnostic]] = defaultdict(list)
@@ -97,7 +121,7 @@ def _print_info_counts(infos: list[Diagnostic], console: Console) -> None:
 INCOMPLETE_LISTED = 10  # nodes of partial or unknown interface named without --verbose
 
 
-def print_summary(model: Model, console: Console, verbose: bool = False) -> None:
+def print_summary(model: Model, console: Printer, verbose: bool = False) -> None:
     """Per configuration: counts per kind and the node instances whose interface is
     partial or unknown (with why); ``verbose`` lists every node instance and resource
     with who uses it."""
@@ -122,7 +146,7 @@ def print_summary(model: Model, console: Console, verbose: bool = False) -> None
                       "[/dim]", highlight=False)
 
 
-def _print_incomplete(incomplete: list[NodeInstance], console: Console,
+def _print_incomplete(incomplete: list[NodeInstance], console: Printer,
                       verbose: bool, unread: int = 0) -> None:
     if unread:
         # what an include or action the launch stage could not read starts is not known
@@ -151,7 +175,7 @@ def _print_incomplete(incomplete: list[NodeInstance], console: Console,
                       highlight=False)
 
 
-def _print_everything(config: Configuration, console: Console) -> None:
+def _print_everything(config: Configuration, console: Printer) -> None:
     for instance in config.nodes:
         runs = instance.node.name if instance.node else "? (not in the workspace)"
         conditional = " [dim](conditional)[/dim]" if instance.conditions else ""
