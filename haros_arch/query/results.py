@@ -87,6 +87,11 @@ def entity_ids(items: list[Any]) -> tuple[str, ...]:
 def location_of(item: Any) -> Location:
     if isinstance(item, Parameter | PackageUse | IncludeArg | Diagnostic):
         return item.location
+    if isinstance(item, Link) and item.origin == "model" and item.node.location.file:
+        # a call of an interface model is in code not in the workspace (an installed
+        # package's, at the commit the model was made from): the place the user can act
+        # on is where the launch file starts the node
+        return item.node.location
     if isinstance(item, Link | NodeInstance | Node | PrimitiveCall):
         return item.location
     if isinstance(item, Resource) and item.links:
