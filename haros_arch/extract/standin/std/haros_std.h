@@ -21,7 +21,8 @@ using ::sqrt; using ::pow; using ::exp; using ::log; using ::log10; using ::sin;
 using ::cos; using ::tan; using ::asin; using ::acos; using ::atan; using ::atan2;
 using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using ::fmod;
 using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
-using ::isnan; using ::isinf; using ::isfinite; using ::signal;
+using ::isnan; using ::isinf; using ::isfinite; using ::signal; using ::float_t;
+using ::double_t;
 using ::memcmp; using ::memmove; using ::vsnprintf;
 // the rest of <cstring> (cartographer_ros' and yasmin's std::strrchr of a file's path)
 using ::strcat; using ::strncat; using ::strchr; using ::strrchr; using ::strstr;
