@@ -16,7 +16,7 @@ from haros_arch.workspace import scan
 TOPICS = """\
 # topics of the vehicle
 string DVL_TOPIC = 'core/dvl'
-string DEPTH_TOPIC="core/depth"
+string DEPTH_TOPIC="core/depth"  # Type: Float64
 string PLAIN_TOPIC = core/plain
 int32 RATE = 10
 """
@@ -64,6 +64,10 @@ def test_constant_values_per_ros_version() -> None:
     assert constant_value("string", "'core/dvl'", ros2=True) == "core/dvl"
     assert constant_value("string", '"a \\"b\\""', ros2=True) == 'a "b"'
     assert constant_value("string", "'core/dvl'", ros2=False) == "'core/dvl'"
+    # rosidl reads a '#' as a comment on a constant's line too (smarc2's
+    # ``string DR_ODOM_TOPIC = 'dr/odom'  # Type: Odometry``); genmsg keeps it
+    assert constant_value("string", "'dr/odom'  # Type: Odometry", ros2=True) == "dr/odom"
+    assert constant_value("string", "a # b", ros2=False) == "a # b"
     assert constant_value("string", "plain", ros2=True) == "plain"
     assert constant_value("int32", "10", ros2=True) == 10
     assert constant_value("float64", "0.5", ros2=False) == 0.5

@@ -561,12 +561,15 @@ def constant_value(kind: str, text: str, ros2: bool) -> str | int | float | bool
     """The value a message constant's text (``string NAME = 'core/dvl'``: ``'core/dvl'``)
     has in the generated code; None when it does not read. A ROS 2 string loses one pair
     of outer quotes, ``"`` or ``'``, and the escapes of that quote inside (rosidl_adapter's
-    ``parse_primitive_value_string``); ROS 1's genmsg keeps the text as written, quotes
+    ``parse_primitive_value_string``), and ends at a ``#``, which rosidl reads as a
+    comment on any line; ROS 1's genmsg keeps the text as written, quotes and ``#``
     included. Integers (``0x10`` too, as rosidl reads them), floats and booleans are
     themselves."""
     text = text.strip()
     if kind.split("<=")[0] in ("string", "wstring"):
         if ros2:
+            # rosidl cuts every line at its first '#', a string constant's too
+            text = text.split("#", 1)[0].rstrip()
             for quote in ('"', "'"):
                 if len(text) >= 2 and text.startswith(quote) and text.endswith(quote):
                     return text[1:-1].replace("\\" + quote, quote)
