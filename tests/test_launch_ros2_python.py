@@ -369,6 +369,37 @@ def generate_launch_description():
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
 
 
+def test_yaml_load_with_the_unsafe_loader_reads_plain_yaml(write_tree):
+    """autonomous_f1tenth's car.launch.py reads its algorithm with ``yaml.load(open(p),
+    Loader=yaml.Loader)``: PyYAML's Loader reads standard YAML as the safe loader does
+    (it adds the Python tags), so the value is known and the node it names is started;
+    a document with a Python tag stays not known (nothing is built or run here), and
+    ``BaseLoader``, whose scalars are all strings, is not interpreted."""
+    model, _ = run(write_tree, """
+import yaml
+
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    config = yaml.load(open(os.path.join(share, 'config/car.yaml')), Loader=yaml.Loader)
+    alg = config['car']['ros__parameters']['algorithm']
+    other = yaml.load(open(os.path.join(share, 'config/tagged.yaml')),
+                      Loader=yaml.UnsafeLoader)
+    base = yaml.load(open(os.path.join(share, 'config/car.yaml')), Loader=yaml.BaseLoader)
+    return LaunchDescription([
+        Node(package='controllers', executable=f'{alg}_policy', name=alg),
+        Node(package='p', executable='e', name='tagged', parameters=[{'x': other}]),
+        Node(package='p', executable='e', name='base', parameters=[{'y': base}]),
+    ])
+""", extra={"src/pkg/config/car.yaml": "car:\n  ros__parameters:\n    algorithm: ftg\n",
+            "src/pkg/config/tagged.yaml": "x: !!python/object/apply:os.getcwd []\n"})
+    node = model.nodes[0]
+    assert (node.name, node.package, node.executable) == ("/ftg", "controllers", "ftg_policy")
+    messages = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert any("YAML cannot be read" in m for m in messages)
+    assert any("yaml.BaseLoader" in m and "not run" in m for m in messages)
+    assert not any("yaml.Loader)" in m for m in messages)
+
+
 def test_path_substitution_grows_with_slash(write_tree):
     model, root = run(write_tree, """
 from launch.substitutions import PathSubstitution
