@@ -1,6 +1,7 @@
 """Stand-in gaps seen on real ROS 2 code (bench/README, helper surveyH): each left a C++
 error in a function of a node, which made the node partial where that function calls the
-ROS API (smarc2's pid_actuator_trim: ``declare_parameters<std::double_t>("", {...})``)."""
+ROS API (smarc2's pid_actuator_trim: ``declare_parameters<std::double_t>("", {...})``;
+rapidjson's ``std::wcslen`` in lunabot_ros' livox_ros_driver2)."""
 
 from __future__ import annotations
 
@@ -16,6 +17,11 @@ CASES = {
     "math_h_float_t": (
         "#include <math.h>\n",
         "  float_t x = 1.0f;\n  double_t y = x;\n"),
+    # <cwchar>'s wide string length (rapidjson's strfunc.h, in livox_ros_driver2)
+    "std_wcslen": (
+        "#include <cwchar>\n",
+        "  const wchar_t* text = L\"lidar\";\n  auto n = std::wcslen(text);\n"
+        "  int same = std::wcscmp(text, L\"x\") + wcsncmp(text, text, n);\n"),
 }
 
 
