@@ -369,6 +369,76 @@ def generate_launch_description():
     assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
 
 
+def test_yaml_load_with_the_unsafe_loader_reads_plain_yaml(write_tree):
+    """autonomous_f1tenth's car.launch.py reads its algorithm with ``yaml.load(open(p),
+    Loader=yaml.Loader)``: PyYAML's Loader reads standard YAML as the safe loader does
+    (it adds the Python tags), so the value is known and the node it names is started;
+    a document with a Python tag stays not known (nothing is built or run here), and
+    ``BaseLoader``, whose scalars are all strings, is not interpreted."""
+    model, _ = run(write_tree, """
+import yaml
+
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    config = yaml.load(open(os.path.join(share, 'config/car.yaml')), Loader=yaml.Loader)
+    alg = config['car']['ros__parameters']['algorithm']
+    other = yaml.load(open(os.path.join(share, 'config/tagged.yaml')),
+                      Loader=yaml.UnsafeLoader)
+    base = yaml.load(open(os.path.join(share, 'config/car.yaml')), Loader=yaml.BaseLoader)
+    return LaunchDescription([
+        Node(package='controllers', executable=f'{alg}_policy', name=alg),
+        Node(package='p', executable='e', name='tagged', parameters=[{'x': other}]),
+        Node(package='p', executable='e', name='base', parameters=[{'y': base}]),
+    ])
+""", extra={"src/pkg/config/car.yaml": "car:\n  ros__parameters:\n    algorithm: ftg\n",
+            "src/pkg/config/tagged.yaml": "x: !!python/object/apply:os.getcwd []\n"})
+    node = model.nodes[0]
+    assert (node.name, node.package, node.executable) == ("/ftg", "controllers", "ftg_policy")
+    messages = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert any("YAML cannot be read" in m for m in messages)
+    assert any("yaml.BaseLoader" in m and "not run" in m for m in messages)
+    assert not any("yaml.Loader)" in m for m in messages)
+
+
+def test_match_statement_of_value_patterns(write_tree):
+    """autonomous_f1tenth's sim.launch.py chooses with ``match alg: case 'rl' | 'ftg':``:
+    a match whose cases test values is the if / elif / else chain Python runs (a guard
+    joined with ``and``, ``case _`` or a captured name the else); a subject known picks
+    one case, one not known leaves each case under its test; a case of another pattern
+    (a class) is still not interpreted, said."""
+    model, _ = run(write_tree, """
+def pick(alg):
+    match alg.lower():
+        case 'rl' | 'ftg':
+            return 'learned'
+        case 'mpc' if alg != 'MPC':
+            return 'model'
+        case None:
+            return 'none'
+        case other:
+            return 'other_' + other
+
+def generate_launch_description():
+    kind = LaunchConfiguration('kind')
+    nodes = [Node(package='p', executable='e', name=pick(a)) for a in ('FTG', 'mpc', 'pp')]
+    match os.environ.get('ROBOT_KIND'):
+        case 'car':
+            nodes.append(Node(package='p', executable='e', name='car'))
+        case _:
+            nodes.append(Node(package='p', executable='e', name='any'))
+    match len(nodes):
+        case int():
+            nodes.append(Node(package='p', executable='e', name='typed'))
+    return LaunchDescription(nodes)
+""")
+    names = [n.name for n in model.nodes]
+    assert names[:3] == ["/learned", "/model", "/other_pp"]
+    assert sorted(names[3:5]) == ["/any", "/car"]
+    assert all(n.conditions for n in model.nodes[3:5])
+    messages = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert messages == ["Match statements are not interpreted"]
+
+
 def test_path_substitution_grows_with_slash(write_tree):
     model, root = run(write_tree, """
 from launch.substitutions import PathSubstitution

@@ -141,11 +141,14 @@ def generate_launch_description():
 
 
 def test_yaml_load_with_another_loader_is_not_run(write_tree):
+    """``BaseLoader`` keeps every scalar a string: not read as the safe loader. (The
+    unsafe ``Loader`` / ``UnsafeLoader`` read plain YAML as the safe one does, which
+    refuses the Python tags they add: tests/test_launch_ros2_python.py.)"""
     model, _ = run(write_tree, """
 import yaml
 
 def generate_launch_description():
-    value = yaml.load('a: 1', Loader=yaml.UnsafeLoader)
+    value = yaml.load('a: 1', Loader=yaml.BaseLoader)
     return LaunchDescription([Node(package='p', executable='e', name='n',
                                    parameters=[{'a': value['a']}])])
 """)

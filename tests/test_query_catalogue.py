@@ -651,6 +651,34 @@ def test_similar_disconnected_topics_a_name_not_known_may_be_the_subscribers_par
     assert run("subscribe") == ["similar-disconnected-topics"]
 
 
+def test_similar_disconnected_topics_pairs_a_topic_with_its_closest_partners():
+    """cybership_software_suite's drillship simulator publishes six thrusters'
+    ``/cybership/thruster/<name>/issued`` and its rviz file shows
+    ``/drillship/thruster/<name>/issued``: every publisher was paired with every
+    display (36 warnings), though each has one of its own name, which shares more of its
+    last segments (``thruster/bow_port/issued``) than the others (``issued``). A pair is
+    said only when neither topic has a partner closer by that measure; the same
+    name in another namespace is said, and a pair with no closer one stays."""
+    def run(published: list[str], subscribed: list[str]) -> list[str]:
+        links = [{"kind": "publish", "node": "/sim", "name": n, "given": n,
+                  "type": "geometry_msgs/msg/WrenchStamped"} for n in published]
+        links += [{"kind": "subscribe", "node": "/rviz", "name": n, "given": n,
+                   "type": "geometry_msgs/msg/WrenchStamped"} for n in subscribed]
+        found = run_rule(RULES["similar-disconnected-topics"], configuration({"links": links}))
+        return sorted(f.message.split(" and ")[0].split()[-1] + " "
+                      + f.message.split("subscribes to ")[1].split()[0] for f in found)
+
+    names = ["bow_port", "bow_center", "stern_port"]
+    assert run([f"/cybership/thruster/{n}/issued" for n in names],
+               [f"/drillship/thruster/{n}/issued" for n in names]) == sorted(
+        f"/cybership/thruster/{n}/issued /drillship/thruster/{n}/issued" for n in names)
+    # no closer partner on either side: the pair stays
+    assert run(["/a/cmd_vel"], ["/b/cmd_vel"]) == ["/a/cmd_vel /b/cmd_vel"]
+    # the subscriber's only partner has a closer one: that one is said
+    assert run(["/a/base/cmd_vel"], ["/b/base/cmd_vel", "/c/cmd_vel"]) == [
+        "/a/base/cmd_vel /b/base/cmd_vel"]
+
+
 def test_an_int_read_as_a_double_is_a_mismatch_only_in_ros_2():
     # ROS 1 takes an integer where a double is read; ROS 2's statically typed
     # parameters refuse it (leo_robot-ros2 8014e18c^ gave rosbridge_websocket

@@ -121,6 +121,20 @@ def topic_stem(charge: Charge, name: Any) -> str:
     return parts[-1] if parts else ""
 
 
+def common_tail(charge: Charge, a: Any, b: Any) -> int:
+    """How many last segments two ROS names share: ``/cybership/thruster/bow_port/issued``
+    and ``/drillship/thruster/bow_port/issued`` 3, and ``/drillship/thruster/stern/issued``
+    1 (which of several alike topics is a topic's closest partner)."""
+    if not isinstance(a, str) or not isinstance(b, str):
+        raise QueryTypeError("common_tail() takes two names")
+    charge(1)
+    left, right = [p for p in a.split("/") if p], [p for p in b.split("/") if p]
+    shared = 0
+    while shared < min(len(left), len(right)) and left[-1 - shared] == right[-1 - shared]:
+        shared += 1
+    return shared
+
+
 def name_similarity(charge: Charge, a: Any, b: Any) -> float:
     """1.0 for equal names, towards 0.0 as the edit distance grows (over the longer)."""
     longest = max(len(a), len(b)) if isinstance(a, str) and isinstance(b, str) else 0
@@ -247,6 +261,7 @@ FUNCTIONS: dict[str, Function] = {f.name: f for f in (
     Function("is_legal_name", is_legal_name, charged=True),
     Function("edit_distance", edit_distance, 2, 2, charged=True),
     Function("topic_stem", topic_stem, charged=True),
+    Function("common_tail", common_tail, 2, 2, charged=True),
     Function("name_similarity", name_similarity, 2, 2, charged=True),
     Function("reachable", reachable, 2, 2, charged=True),
     Function("qos_incompatible", qos_incompatible, 2, 2, charged=True),

@@ -553,6 +553,41 @@ def string_literal(value: str) -> str:
     return '"' + "".join(out) + '"'
 
 
+_INTEGER_TYPES = ("byte", "char", "int8", "uint8", "int16", "uint16", "int32", "uint32",
+                  "int64", "uint64")
+
+
+def constant_value(kind: str, text: str, ros2: bool) -> str | int | float | bool | None:
+    """The value a message constant's text (``string NAME = 'core/dvl'``: ``'core/dvl'``)
+    has in the generated code; None when it does not read. A ROS 2 string loses one pair
+    of outer quotes, ``"`` or ``'``, and the escapes of that quote inside (rosidl_adapter's
+    ``parse_primitive_value_string``), and ends at a ``#``, which rosidl reads as a
+    comment on any line; ROS 1's genmsg keeps the text as written, quotes and ``#``
+    included. Integers (``0x10`` too, as rosidl reads them), floats and booleans are
+    themselves."""
+    text = text.strip()
+    if kind.split("<=")[0] in ("string", "wstring"):
+        if ros2:
+            # rosidl cuts every line at its first '#', a string constant's too
+            text = text.split("#", 1)[0].rstrip()
+            for quote in ('"', "'"):
+                if len(text) >= 2 and text.startswith(quote) and text.endswith(quote):
+                    return text[1:-1].replace("\\" + quote, quote)
+        return text
+    try:
+        if kind in _INTEGER_TYPES:
+            return int(text, 0)
+        if kind in ("float32", "float64"):
+            return float(text)
+    except ValueError:
+        return None
+    if kind == "bool":
+        lowered = text.lower()
+        return True if lowered in ("true", "1") else False if lowered in ("false", "0") \
+            else None
+    return None
+
+
 def fields_macro(qualified: str) -> str:
     return "HAROS_FIELDS_" + qualified.replace("::", "__")
 

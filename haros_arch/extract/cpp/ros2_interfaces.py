@@ -8,7 +8,15 @@ from __future__ import annotations
 
 import re
 
-from .interfaces import Field, Interface, fields_hook, qualified, string_literal, template_name
+from .interfaces import (
+    Field,
+    Interface,
+    constant_value,
+    fields_hook,
+    qualified,
+    string_literal,
+    template_name,
+)
 
 KINDS = ("msg", "srv", "action")
 PRIMITIVES = {
@@ -235,9 +243,10 @@ def _struct(name: str, fields: list[Field], package: str, kind: str = "msg",
     for fld in fields:
         cpp = _cpp_type(fld.type, package)
         if fld.constant is not None:
-            if cpp == "std::string":
+            if cpp == "std::string":  # rosidl's value: without its outer quotes
+                value = constant_value(fld.type, fld.constant, ros2=True)
                 lines.append(f"  static inline const std::string {fld.name} = "
-                             f"{string_literal(fld.constant)};")
+                             f"{string_literal(str(value))};")
             else:
                 value = fld.constant if re.fullmatch(r"-?\d+(\.\d*)?([eE]-?\d+)?",
                                                      fld.constant) else "0"

@@ -62,3 +62,47 @@ def _stems(root: str, folder: str, suffix: str) -> set[str]:
 
     return {name[: -len(suffix)] for name in definition_files(root, folder)
             if name.endswith(suffix)}
+
+
+def constant(workspace: Workspace, qualname: str, attr: str,
+             version: int) -> str | int | float | bool | None:
+    """The value of the constant ``attr`` of the message class ``qualname``
+    (``sam_msgs.msg.Topics`` and ``DVL_TOPIC``: the class attribute rosidl / genpy make
+    of ``string DVL_TOPIC = 'core/dvl'``), from its definition in the workspace, else in
+    the shipped catalogue; None when the class names no message or has no such
+    constant (``interfaces.constant_value``: a ROS 2 string without its quotes)."""
+    parts = [p for p in qualname.split(".") if not p.startswith("_")]
+    if len(parts) < 3 or parts[-2] != "msg" or not attr.isupper():
+        return None
+    package, name = parts[-3], parts[-1]
+    from ...plugins.classes import remembered
+    from ..cpp import interfaces
+
+    root = workspace.find(package)
+    key = f"{root or package}\n{name}\n{version}"
+    fields = remembered("message constants", key, workspace,
+                        lambda: _constants(root, package, name, version == 2))
+    found = fields.get(attr)
+    return interfaces.constant_value(found[0], found[1], version == 2) if found else None
+
+
+def _constants(root: str | None, package: str, name: str,
+               ros2: bool) -> dict[str, tuple[str, str]]:
+    """The constants of message ``package/name`` (type and text, by name)."""
+    from ..cpp import interfaces
+
+    text = None
+    path = interfaces.definition_files(root, "msg").get(name + ".msg") if root else None
+    if path is not None:
+        try:
+            with open(path, encoding="utf-8", errors="replace") as handle:
+                text = handle.read()
+        except OSError:
+            text = None
+    if text is None:
+        text = interfaces.known(package, name, ros2=ros2, kinds=("msg",))
+    if text is None:
+        return {}
+    sections = interfaces.parse_definition(package, name, text).sections
+    return {fld.name: (fld.type, fld.constant) for fld in sections[0]
+            if fld.constant is not None}

@@ -25,7 +25,7 @@ from ...evaluate import operations as ops
 from ...evaluate.python import BUILTINS, Walker, evaluate_counted
 from ...model.conditions import Condition
 from ...model.values import UNKNOWN_MARK, Unknown, Value
-from . import rclpy, rospy
+from . import msg_types, rclpy, rospy
 from .api import Arg
 from .calls import MAX_CALL_DEPTH, argument, unknown_params
 from .conditions import condition, tested_text
@@ -318,6 +318,12 @@ class Evaluator(Instances, QoSProfiles, Walker):
 
     def attribute(self, base: object, attr: str, frame: Frame) -> object:
         if isinstance(base, Ref):
+            # a constant of a message class (``Topics.DVL_TOPIC``) is the value its
+            # definition gives; anything else imported stays a reference
+            value = msg_types.constant(self.loader.workspace, base.qualname, attr,
+                                       frame.module.version)
+            if value is not None:
+                return Value.of(value) if isinstance(value, str) else value
             return Ref(f"{base.qualname}.{attr}")
         if isinstance(base, ModuleRef):
             found = self.lookup(base.module, attr)

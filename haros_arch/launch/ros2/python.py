@@ -738,6 +738,8 @@ class Interpreter(Expressions):
             self.assertion(stmt, env)
         elif isinstance(stmt, ast.Raise):
             self.stop(stmt, _raised_name(stmt.exc))
+        elif isinstance(stmt, ast.Match) and (chain := _match_as_if(stmt)) is not None:
+            self.block(chain, env)
         else:
             self.unsupported(stmt, f"{type(stmt).__name__} statements are not interpreted")
 
@@ -1737,6 +1739,65 @@ def names_bound(tree: ast.Module) -> frozenset[str] | None:
         elif isinstance(node, ast.MatchMapping) and node.rest:
             bound.add(node.rest)
     return frozenset(bound)
+
+
+def _match_as_if(stmt: ast.Match) -> list[ast.stmt] | None:
+    """A ``match`` whose cases test values only, as the ``if`` / ``elif`` / ``else``
+    chain Python runs for it: ``case 'rl' | 'ftg':`` is ``subject == 'rl' or subject ==
+    'ftg'`` (``is`` for ``None``, ``True``, ``False``), a guard joins its test with
+    ``and``, ``case _:`` (or a bare name, bound to the subject) is the ``else``; the
+    subject is evaluated once (autonomous_f1tenth's sim.launch.py chooses its tracking
+    so). None for a case of another pattern (a class, sequence or mapping), not read."""
+    subject: ast.expr = stmt.subject
+    head: list[ast.stmt] = []
+    if any(isinstance(n, (ast.Call, ast.NamedExpr, ast.Await, ast.Yield))
+           for n in ast.walk(subject)):
+        held = ast.Name(id=f"__match_subject_{stmt.lineno}", ctx=ast.Load())
+        head.append(ast.copy_location(ast.Assign(
+            targets=[ast.Name(id=held.id, ctx=ast.Store())], value=subject), subject))
+        subject = held
+    chain: list[ast.stmt] = []
+    tail = chain
+    for case in stmt.cases:
+        test, binds = _pattern_test(case.pattern, subject)
+        if test is False:
+            return None
+        body = list(case.body)
+        if binds is not None:
+            body.insert(0, ast.copy_location(ast.Assign(
+                targets=[ast.Name(id=binds, ctx=ast.Store())], value=subject), case.pattern))
+        if test is True and case.guard is None:
+            tail.extend(body)  # irrefutable: the cases after it never run
+            break
+        parts = [t for t in (test, case.guard) if isinstance(t, ast.expr)]
+        condition = parts[0] if len(parts) == 1 else ast.BoolOp(op=ast.And(), values=parts)
+        branch = ast.copy_location(ast.If(test=condition, body=body, orelse=[]),
+                                   case.pattern)
+        tail.append(branch)
+        tail = branch.orelse
+    return [ast.fix_missing_locations(node) for node in head + chain]
+
+
+def _pattern_test(pattern: ast.pattern, subject: ast.expr
+                  ) -> tuple[ast.expr | bool, str | None]:
+    """The test of a value pattern on ``subject`` and the name it binds: True for a
+    wildcard or capture (which always matches), False for a pattern not read here."""
+    if isinstance(pattern, ast.MatchValue):
+        return ast.Compare(left=subject, ops=[ast.Eq()], comparators=[pattern.value]), None
+    if isinstance(pattern, ast.MatchSingleton):
+        return ast.Compare(left=subject, ops=[ast.Is()],
+                           comparators=[ast.Constant(value=pattern.value)]), None
+    if isinstance(pattern, ast.MatchAs) and pattern.pattern is None:
+        return True, pattern.name
+    if isinstance(pattern, ast.MatchOr):
+        tests = [_pattern_test(p, subject) for p in pattern.patterns]
+        if any(t is False or b is not None for t, b in tests):
+            return False, None
+        if any(t is True for t, _ in tests):
+            return True, None
+        return ast.BoolOp(op=ast.Or(), values=[t for t, _ in tests
+                                               if isinstance(t, ast.expr)]), None
+    return False, None
 
 
 # Python's builtin exception classes by name, to tell which handler catches which

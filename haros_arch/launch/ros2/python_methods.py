@@ -175,15 +175,22 @@ def json_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 
 # the loaders of ``yaml.load(stream, Loader=...)`` that read plain YAML as the safe one
-# does (the full loader's Python tags are refused by the safe reader: not known here)
+# does: the standard tags resolved and built alike; what they add are the Python tags
+# (``!!python/...``: objects, calls), which the safe reader refuses, so a document with
+# one is not known here and nothing is run. ``Loader`` / ``UnsafeLoader`` too
+# (autonomous_f1tenth's ``yaml.load(open(config_path), Loader=yaml.Loader)``), not
+# ``BaseLoader``, which keeps every scalar a string
 _PLAIN_LOADERS = frozenset(f"yaml.{name}" for name in (
-    "SafeLoader", "CSafeLoader", "FullLoader", "CFullLoader"))
+    "SafeLoader", "CSafeLoader", "FullLoader", "CFullLoader", "Loader", "CLoader",
+    "UnsafeLoader", "CUnsafeLoader"))
 
 
 def yaml_load(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``yaml.load(stream, Loader=yaml.FullLoader)`` (or ``SafeLoader``) and
-    ``yaml.full_load(stream)``: as ``yaml.safe_load`` (Autoware's traffic light launch
-    files read their ``camera_namespaces`` argument so); another loader is not run."""
+    """``yaml.load(stream, Loader=yaml.FullLoader)`` (or ``SafeLoader``, ``Loader``,
+    ``UnsafeLoader``, their C forms) and ``yaml.full_load(stream)``: as
+    ``yaml.safe_load`` (Autoware's traffic light launch files read their
+    ``camera_namespaces`` argument so), a document with a Python tag not known; another
+    loader (``BaseLoader``, one of the launch file's own) is not run."""
     loader = k.get("Loader", a[1] if len(a) > 1 else None)
     full = isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute) and (
         n.func.attr == "full_load")

@@ -122,6 +122,10 @@ typedef __builtin_va_list va_list;
 #define M_PI_4 0.78539816339744830962
 #define M_E 2.7182818284590452354
 #define HUGE_VAL (__builtin_huge_val())
+// <math.h>'s evaluation types (FLT_EVAL_METHOD 0: each its own type), std:: in <cmath>
+// (smarc2's declare_parameters<std::double_t>)
+typedef float float_t;
+typedef double double_t;
 #define INFINITY (__builtin_inff())
 #define NAN (__builtin_nanf(""))
 #define EXIT_SUCCESS 0

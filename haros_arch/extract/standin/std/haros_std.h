@@ -9,7 +9,15 @@
 // anything makes every assignment and constructor of a string a candidate, ambiguous
 // (``name = config.name`` of a dynamic_reconfigure Config whose header is missing)
 struct haros_any;
+// <wchar.h>'s wide strings (rapidjson's internal/strfunc.h measures them with
+// std::wcslen: livox_ros_driver2's JSON configuration)
+size_t wcslen(const wchar_t* s);
+int wcscmp(const wchar_t* a, const wchar_t* b);
+int wcsncmp(const wchar_t* a, const wchar_t* b, size_t n);
+wchar_t* wcscpy(wchar_t* d, const wchar_t* s);
+wchar_t* wcsncpy(wchar_t* d, const wchar_t* s, size_t n);
 namespace std {
+using ::wcslen; using ::wcscmp; using ::wcsncmp; using ::wcscpy; using ::wcsncpy;
 using ::size_t; using ::ptrdiff_t; using ::int8_t; using ::int16_t; using ::int32_t;
 using ::int64_t; using ::uint8_t; using ::uint16_t; using ::uint32_t; using ::uint64_t;
 using ::intptr_t; using ::uintptr_t; using ::intmax_t; using ::uintmax_t;
@@ -21,7 +29,8 @@ using ::sqrt; using ::pow; using ::exp; using ::log; using ::log10; using ::sin;
 using ::cos; using ::tan; using ::asin; using ::acos; using ::atan; using ::atan2;
 using ::fabs; using ::floor; using ::ceil; using ::round; using ::trunc; using ::fmod;
 using ::hypot; using ::copysign; using ::fmin; using ::fmax; using ::lround;
-using ::isnan; using ::isinf; using ::isfinite; using ::signal;
+using ::isnan; using ::isinf; using ::isfinite; using ::signal; using ::float_t;
+using ::double_t;
 using ::memcmp; using ::memmove; using ::vsnprintf;
 // the rest of <cstring> (cartographer_ros' and yasmin's std::strrchr of a file's path)
 using ::strcat; using ::strncat; using ::strchr; using ::strrchr; using ::strstr;
