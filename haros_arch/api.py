@@ -29,11 +29,14 @@ class Analysis:
 def analyse_path(path: str, options: Options | None = None) -> Analysis:
     """Analyse a project file, a workspace folder or a launch file (``open_choice``).
     A project file that cannot be read raises ProjectError."""
+    from .runcache import one_snapshot
+
     options = options or Options()
-    choice = open_choice(path, options.cache_dir)
-    project = choice.project
-    missing = [w for w in project.workspace if not os.path.isdir(w)]
-    if missing:
-        return Analysis(project, list(choice.notes),
-                        error=f"{path}: workspace folder {missing[0]} does not exist")
-    return Analysis(project, list(choice.notes), analyse(project, options=options))
+    with one_snapshot():  # the choice and the run's key read one snapshot of the files
+        choice = open_choice(path, options.cache_dir)
+        project = choice.project
+        missing = [w for w in project.workspace if not os.path.isdir(w)]
+        if missing:
+            return Analysis(project, list(choice.notes),
+                            error=f"{path}: workspace folder {missing[0]} does not exist")
+        return Analysis(project, list(choice.notes), analyse(project, options=options))

@@ -30,13 +30,14 @@ the analysed workspace); one that does not read back is a miss.
 from __future__ import annotations
 
 import contextlib
+import copy
 import hashlib
 import json
 import os
 import stat
 import time
 import weakref
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any, TypeVar
 
 from . import __version__
@@ -220,6 +221,14 @@ class Snapshot:
             found.update(f"{path}\0{digest}\n".encode("utf-8", "replace"))
         return found.hexdigest()
 
+    def copy(self) -> Snapshot:
+        """Another snapshot of the same files, to add more to."""
+        other = Snapshot.__new__(Snapshot)
+        other.__dict__.update(self.__dict__)
+        for name in ("seen", "digests", "inner", "outer"):
+            setattr(other, name, copy.copy(getattr(self, name)))
+        return other
+
     def save(self) -> None:
         if self.seen != self.index:
             _write_json(self.index_path, {"format": FORMAT, "files": self.seen})
@@ -270,13 +279,38 @@ INDEX = "index.json"  # the end of a workspace's stat index's name: ``<group>-in
 
 def _snapshot(folder: str, roots: Iterable[str]) -> Snapshot:
     """A snapshot of this tool's files and of every file under ``roots`` (a project's
-    workspace folders), through the index the cache folder keeps for those roots."""
+    workspace folders), through the index the cache folder keeps for those roots; within
+    ``one_snapshot``, made once for those roots."""
     full = [os.path.abspath(r) for r in roots]
+    key = (folder, tuple(full))
+    if _SHARED is not None and key in _SHARED:
+        return _SHARED[key].copy()
     snap = Snapshot(os.path.join(folder, "runs", f"{_group(full)}-{INDEX}"))
     snap.tree(TOOL, frozenset({"__pycache__"}))
     for root in full:
         snap.tree(root, SKIP_FOLDERS)
+    if _SHARED is not None:
+        _SHARED[key] = snap.copy()
     return snap
+
+
+# the snapshots of workspace trees ``one_snapshot`` shares, by cache folder and roots
+_SHARED: dict[tuple[str, tuple[str, ...]], Snapshot] | None = None
+
+
+@contextlib.contextmanager
+def one_snapshot() -> Iterator[None]:
+    """Within: each workspace's files are snapshotted once, for the key of the choice of
+    configurations (``kept``) and then the run's key (``run_key``), moments apart in one
+    command (a no-change re-run of navigation2's folder walked its 2,000 files twice)."""
+    global _SHARED
+    outer = _SHARED
+    if outer is None:
+        _SHARED = {}
+    try:
+        yield
+    finally:
+        _SHARED = outer
 
 
 def _environment(env: Mapping[str, str]) -> list[tuple[str, str]]:

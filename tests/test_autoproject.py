@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import textwrap
 from pathlib import Path
 
@@ -495,3 +496,33 @@ def test_a_command_on_a_folder_again_takes_the_kept_choice(
         autoproject._chosen.clear()  # a new process
         assert main([command, str(ws), *extra]) == 0
     assert len(loads) == 1
+
+
+def test_a_folder_analysed_walks_its_files_once(ws: Path, tmp_path: Path,
+                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    # (issue 24) the kept choice of configurations and the run's key are both keyed by a
+    # snapshot of the workspace's files: one command takes it once; a change between two
+    # commands is still seen (each takes its own)
+    from haros_arch import autoproject, runcache
+    from haros_arch.api import analyse_path
+    from haros_arch.pipeline import Options
+
+    walked: list[str] = []
+    real = runcache.Snapshot.tree
+
+    def counting(self, top, skip=frozenset()):
+        if os.path.abspath(top).startswith(str(ws)):
+            walked.append(top)
+        return real(self, top, skip)
+
+    monkeypatch.setattr(runcache.Snapshot, "tree", counting)
+    options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
+    first = analyse_path(str(ws), options)
+    assert first.model is not None and len(walked) == 1
+    autoproject._chosen.clear()  # a new process
+    robot = ws / "src" / "bringup" / "launch" / "robot.launch"
+    robot.write_text(robot.read_text().replace(
+        "</launch>", '<include file="$(find bringup)/launch/sim.launch"/></launch>'))
+    again = analyse_path(str(ws), options)
+    assert len(walked) == 2 and again.model is not None
+    assert [c.name for c in again.model.configurations] == ["bringup/robot", "rover/rover"]
