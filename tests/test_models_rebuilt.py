@@ -53,8 +53,8 @@ def test_the_shipped_noetic_rosbag_tools_are_whole_without_roscpps_own_code() ->
 def test_the_shipped_noetic_topic_tools_publish_what_they_relay() -> None:
     # ShapeShifter::advertise (relay.cpp:99, once the first message came): the output
     # topic, named from the command line (models.commands fills it where it is known);
-    # not again inside the library's definition of it (shape_shifter.cpp:70, dropped by
-    # overrides/noetic/topic_tools.yaml)
+    # not again inside the library's definition of it (shape_shifter.cpp:70, the API's
+    # implementation, which the extractor does not read)
     relay = _node("topic_tools", "noetic", "relay")
     published = [c for c in relay.calls if c.kind == "publish"]
     assert [(c.name, c.type) for c in published] == [("?/?", "topic_tools/ShapeShifter")]
@@ -99,3 +99,16 @@ def test_the_shipped_cartographer_model_builds_the_node_where_the_code_builds_it
     assert "start_trajectory" in {c.name for c in offline.calls if c.kind == "server"}
     for tool in ("cartographer_occupancy_grid_node", "cartographer_pbstream_to_ros_map"):
         assert "/tf" not in {c.name for c in _node("cartographer_ros", "noetic", tool).calls}
+
+
+def test_the_shipped_jazzy_image_transport_programs_make_no_library_publisher() -> None:
+    # image_common d04d2c83 rebuilt (2026-12-07): the library's create_camera_publisher
+    # (image_transport.cpp:85), the API's implementation, called by neither program, is
+    # not read: list_transports makes no topic, republish publishes ``out`` once, at its
+    # own create_publisher (republish.cpp:137), and has no camera_info
+    lister = _node("image_transport", "jazzy", "list_transports")
+    assert [c for c in lister.calls if c.kind in ("publish", "subscribe")] == []
+    republish = _node("image_transport", "jazzy", "republish")
+    published = [(c.name, c.location.line) for c in republish.calls if c.kind == "publish"]
+    assert published == [("out", 137)]
+    assert sorted({c.name for c in republish.calls if c.kind == "subscribe"}) == ["in"]

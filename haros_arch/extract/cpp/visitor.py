@@ -334,6 +334,16 @@ _ZEROED: dict[TypeKind, object] = {
 }
 # the classes the API rows model: their construction is a call we read
 _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
+
+
+def _implements_row(function: Cursor) -> bool:
+    """Whether ``function`` defines a function or constructor of a row of ``api.ALL``
+    (not one describing our stand-in only, ``standin_only``, whose workspace code is
+    read): a call of it anywhere is that row's call, not its body's."""
+    if function.kind not in FUNCTIONS or function.semantic_parent is None:
+        return False
+    row = api.ALL.get((qualified_name(function.semantic_parent), function.spelling))
+    return row is not None and not row.standin_only
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 
@@ -624,6 +634,11 @@ class CallFinder:
         if self.tu.spelling.endswith(".c"):
             self.functions = [f for f in self.functions
                               if not _c_without_calls(f, self.tu.spelling, self.source)]
+        # a function of the API the rows model, defined in the workspace: the package's
+        # own implementation of that API (image_transport's create_camera_publisher,
+        # topic_tools' ShapeShifter::advertise, when that package is modelled); each call
+        # of it is the row's call at its site, so its body is no code of the node's
+        self.functions = [f for f in self.functions if not _implements_row(f)]
         kept = {id(f) for f in self.functions}
         self.unreached = [f for f in every if id(f) not in kept]
         # an object of namespace scope built with arguments (OpenMower's
