@@ -112,3 +112,16 @@ def test_the_shipped_jazzy_image_transport_programs_make_no_library_publisher() 
     published = [(c.name, c.location.line) for c in republish.calls if c.kind == "publish"]
     assert published == [("out", 137)]
     assert sorted({c.name for c in republish.calls if c.kind == "subscribe"}) == ["in"]
+
+
+def test_the_shipped_noetic_rosserial_nodes_bridge_alike() -> None:
+    # rosserial c169ae21 rebuilt (2026-12-07): socket_node's sessions are built by
+    # TcpServer<>'s ``new Session(io_service_)`` (tcp_server.h:65), a parameter of the
+    # template with a default: its publisher (topic_handlers.h:66) and service client
+    # (line 148) as serial_node's, each named at run time by the client
+    expected = {("publish", "?", "topic_tools/ShapeShifter"),
+                ("subscribe", "?", "topic_tools/ShapeShifter"), ("client", "?", "?")}
+    for name in ("serial_node", "socket_node", "udp_socket_node"):
+        node = _node("rosserial_server", "noetic", name)
+        assert expected <= {(c.kind, c.name, c.type) for c in node.calls}, name
+        assert node.completeness == "complete", name

@@ -975,7 +975,8 @@ class CallFinder:
                 _dependent_made(node) is not None or _dependent_listener(node) is not None
             ):
                 return True
-            if kind == CursorKind.CXX_NEW_EXPR and _lost_new(node) is not None:
+            if kind == CursorKind.CXX_NEW_EXPR and (
+                    _lost_new(node) is not None or self._parameter_made(node) is not None):
                 return True
         # a walk of a function whose only such call is another template's gives what the
         # rest of ``_function``'s loop gives: a member initialiser clang lost, a
@@ -1096,6 +1097,9 @@ class CallFinder:
                     newly := dependent_new(node)) is not None:
                 # its argument list is a site of the constructor (``CallSites``)
                 self._class_made(newly[1].semantic_parent, conditions)
+            elif node.kind == CursorKind.CXX_NEW_EXPR and (
+                    given := self._parameter_made(node)) is not None:
+                self._class_made(given, conditions)
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
@@ -1634,6 +1638,33 @@ class CallFinder:
                     (where := template.location.file) is not None and self.owned(where.name)):
                 self.unseen.add(template.spelling.encode())
                 return
+
+    def _parameter_made(self, node: Cursor) -> Cursor | None:
+        """The class a ``new P(args)`` of a class template's type parameter ``P``
+        constructs: the one every specialisation of the template the unit names gives
+        for ``P`` (``CallTypes.bound``), else ``P``'s default argument (rosserial_server's
+        ``TcpServer<>``, ``template<typename Session = Session<tcp::socket>>``, whose
+        ``new Session(io_service_)`` builds each client's session); None for another
+        ``new``, or a parameter with neither."""
+        written = next((child for child in node.get_children()
+                        if child.kind == CursorKind.TYPE_REF), None)
+        decl = written.referenced if written is not None else None
+        if decl is None or decl.kind != CursorKind.TEMPLATE_TYPE_PARAMETER:
+            return None
+        bound = self.types.bound(decl)
+        if bound is not None:
+            made = bound.get_canonical().get_declaration()
+        else:  # the default argument: ``= Session<tcp::socket>`` or ``= Session``
+            made = next((child.referenced for child in decl.get_children()
+                         if child.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
+                         and child.referenced is not None), None)
+        if made is None or made.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        if made.kind not in CLASSES:
+            return None
+        template = conf.lib.clang_getSpecializedCursorTemplate(made)
+        return template if template is not None and template.kind == (
+            CursorKind.CLASS_TEMPLATE) else made
 
     def _default_construction(self, variable: Cursor,
                               conditions: tuple[Condition, ...]) -> None:
