@@ -125,3 +125,18 @@ def test_the_shipped_noetic_rosserial_nodes_bridge_alike() -> None:
         node = _node("rosserial_server", "noetic", name)
         assert expected <= {(c.kind, c.name, c.type) for c in node.calls}, name
         assert node.completeness == "complete", name
+
+
+def test_the_shipped_noetic_moveit_ros_planning_reads_the_searched_solver_keys() -> None:
+    # moveit 7c0343f0 rebuilt (2026-12-07): kinematics_plugin_loader.cpp reads the
+    # parameter searchParam found (``getParam(ksolver_timeout_param_name, ...)``, line
+    # 339), named by the key searched for, not by a parameter's value; the adapters that
+    # build geometric_shapes' bodies (collision_distance_field) are not partial for them
+    node = _node("moveit_ros_planning", "noetic", "moveit_display_random_state")
+    reads = {(c.name, c.name_param) for c in node.calls
+             if c.kind == "read" and c.location.line == 339}
+    assert reads == {("~?/kinematics_solver_timeout", None)}
+    model = Library().find("moveit_ros_planning", "noetic")
+    assert model is not None
+    assert not [r for n in model.nodes for r in n.completeness_reasons
+                if "geometric_shapes" in r]
