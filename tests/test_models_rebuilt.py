@@ -53,8 +53,8 @@ def test_the_shipped_noetic_rosbag_tools_are_whole_without_roscpps_own_code() ->
 def test_the_shipped_noetic_topic_tools_publish_what_they_relay() -> None:
     # ShapeShifter::advertise (relay.cpp:99, once the first message came): the output
     # topic, named from the command line (models.commands fills it where it is known);
-    # not again inside the library's definition of it (shape_shifter.cpp:70, the API's
-    # implementation, which the extractor does not read)
+    # not again inside the library's definition of it (shape_shifter.cpp:70, dropped by
+    # overrides/noetic/topic_tools.yaml)
     relay = _node("topic_tools", "noetic", "relay")
     published = [c for c in relay.calls if c.kind == "publish"]
     assert [(c.name, c.type) for c in published] == [("?/?", "topic_tools/ShapeShifter")]

@@ -82,6 +82,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
+from .headers import REPLACED
 from .links import (
     DEFAULT_MARK,
     MEMBER_MARK,
@@ -338,12 +339,17 @@ _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.H
 
 def _implements_row(function: Cursor) -> bool:
     """Whether ``function`` defines a function or constructor of a row of ``api.ALL``
-    (not one describing our stand-in only, ``standin_only``, whose workspace code is
-    read): a call of it anywhere is that row's call, not its body's."""
+    of a library whose headers our stand-ins give in place of its own (``REPLACED``:
+    image_transport's ``create_camera_publisher`` in its own image_transport.cpp): a call
+    of it anywhere is that row's call, not its body's. Not a row describing our stand-in
+    only (``standin_only``), nor one of a library whose own headers a workspace package
+    of it wins with (ros2_control's ``auto_declare``, topic_tools' ``ShapeShifter``: a
+    wrapper of the node's calls as written there)."""
     if function.kind not in FUNCTIONS or function.semantic_parent is None:
         return False
-    row = api.ALL.get((qualified_name(function.semantic_parent), function.spelling))
-    return row is not None and not row.standin_only
+    owner = qualified_name(function.semantic_parent)
+    row = api.ALL.get((owner, function.spelling))
+    return row is not None and not row.standin_only and owner.split("::")[0] in REPLACED
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 
