@@ -1115,3 +1115,15 @@ def test_moveit_s_robot_state_is_no_client_wherever_its_header_is_missing(
     node, _ = _teleop(write_tree, loader, "moveit_ros_planning_interface")
     assert node.completeness == "partial"
     assert [r for r in node.completeness_reasons if "RobotState" in r] == []
+
+
+def test_moveits_geometry_library_leaves_it_complete(write_tree: Any) -> None:
+    # MoveIt's collision_distance_field builds geometric_shapes' bodies::BoundingSphere
+    # and bodies::BoundingCylinder (ros-planning/geometric_shapes, a catkin library whose
+    # package.xml names no ROS client library): moveit_ros_planning's request adapters
+    # and programs that read it were partial for them
+    node = _smoother(write_tree, "bodies::BoundingSphere sphere;\n"
+                     "shapes::Box box(1.0, 2.0, 3.0);", "gtsam", "octomap",
+                     "geometric_shapes", header="geometric_shapes/bodies.h")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []

@@ -99,3 +99,44 @@ def test_the_shipped_cartographer_model_builds_the_node_where_the_code_builds_it
     assert "start_trajectory" in {c.name for c in offline.calls if c.kind == "server"}
     for tool in ("cartographer_occupancy_grid_node", "cartographer_pbstream_to_ros_map"):
         assert "/tf" not in {c.name for c in _node("cartographer_ros", "noetic", tool).calls}
+
+
+def test_the_shipped_jazzy_image_transport_programs_make_no_library_publisher() -> None:
+    # image_common d04d2c83 rebuilt (2026-12-07): the library's create_camera_publisher
+    # (image_transport.cpp:85), the API's implementation, called by neither program, is
+    # not read: list_transports makes no topic, republish publishes ``out`` once, at its
+    # own create_publisher (republish.cpp:137), and has no camera_info
+    lister = _node("image_transport", "jazzy", "list_transports")
+    assert [c for c in lister.calls if c.kind in ("publish", "subscribe")] == []
+    republish = _node("image_transport", "jazzy", "republish")
+    published = [(c.name, c.location.line) for c in republish.calls if c.kind == "publish"]
+    assert published == [("out", 137)]
+    assert sorted({c.name for c in republish.calls if c.kind == "subscribe"}) == ["in"]
+
+
+def test_the_shipped_noetic_rosserial_nodes_bridge_alike() -> None:
+    # rosserial c169ae21 rebuilt (2026-12-07): socket_node's sessions are built by
+    # TcpServer<>'s ``new Session(io_service_)`` (tcp_server.h:65), a parameter of the
+    # template with a default: its publisher (topic_handlers.h:66) and service client
+    # (line 148) as serial_node's, each named at run time by the client
+    expected = {("publish", "?", "topic_tools/ShapeShifter"),
+                ("subscribe", "?", "topic_tools/ShapeShifter"), ("client", "?", "?")}
+    for name in ("serial_node", "socket_node", "udp_socket_node"):
+        node = _node("rosserial_server", "noetic", name)
+        assert expected <= {(c.kind, c.name, c.type) for c in node.calls}, name
+        assert node.completeness == "complete", name
+
+
+def test_the_shipped_noetic_moveit_ros_planning_reads_the_searched_solver_keys() -> None:
+    # moveit 7c0343f0 rebuilt (2026-12-07): kinematics_plugin_loader.cpp reads the
+    # parameter searchParam found (``getParam(ksolver_timeout_param_name, ...)``, line
+    # 339), named by the key searched for, not by a parameter's value; the adapters that
+    # build geometric_shapes' bodies (collision_distance_field) are not partial for them
+    node = _node("moveit_ros_planning", "noetic", "moveit_display_random_state")
+    reads = {(c.name, c.name_param) for c in node.calls
+             if c.kind == "read" and c.location.line == 339}
+    assert reads == {("~?/kinematics_solver_timeout", None)}
+    model = Library().find("moveit_ros_planning", "noetic")
+    assert model is not None
+    assert not [r for n in model.nodes for r in n.completeness_reasons
+                if "geometric_shapes" in r]

@@ -198,6 +198,14 @@ _DEFINED_HEADER = re.compile(r"([A-Za-z_]\w*)/([A-Za-z]\w*)\.h")
 _NOT_FOUND = re.compile(r"^'([^']+)' file not found")
 
 
+# the top names (packages, namespaces) whose headers our stand-ins give in place of any
+# of the workspace (``SHADOWED``, a folder of ``standin/``; not ``standin/fallback``'s,
+# which a workspace package's own headers win over): a package of them being modelled
+# has its own code read against these, and its definitions of the API the rows model are
+# its implementation (``visitor._implements_row``)
+REPLACED = frozenset({p.rstrip("/") for p in SHADOWED} | {
+    f for f in os.listdir(STANDIN) if os.path.isdir(os.path.join(STANDIN, f))}) - {
+    "std", os.path.basename(FALLBACK)}
 # the packages whose headers the stand-ins provide (rclcpp_components, bondcpp, ...) and
 # whose own headers win when they are modelled; not those whose classes the API tables
 # name (tf2_ros, image_transport, ...): their stand-ins are the API the extractor knows,

@@ -1632,9 +1632,12 @@ class Scope:
         key = searched_key(call)
         if key is not None:  # the name it found (a write of its result: ``writes``)
             text = self.string(key, depth + 1)
-            if len(text) != 1 or type(text[0]) is not str or not text[0]:
+            if not any(type(part) is str and part for part in text):
                 return UNKNOWN
-            key_text = text[0]
+            # a key partly known (MoveIt's ``base_param_name +
+            # "/kinematics_solver_timeout"``) is found as written, its unknown runs
+            # ``?``: the result names the parameter searched for, never a value read
+            key_text = render(text)
             if searched_from_node(call) and not key_text.startswith(("/", "~")):
                 key_text = "~" + key_text  # from the node's private namespace up
             return (SearchedName(key_text),)

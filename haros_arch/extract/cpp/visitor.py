@@ -82,6 +82,7 @@ from .handles import (
     qualified_name,
     record_class,
 )
+from .headers import REPLACED
 from .links import (
     DEFAULT_MARK,
     MEMBER_MARK,
@@ -334,6 +335,21 @@ _ZEROED: dict[TypeKind, object] = {
 }
 # the classes the API rows model: their construction is a call we read
 _API_CLASSES = frozenset(owner for owner, _ in [*api.ALL, *api.OPTIONS]) | api.HANDLE_CLASSES
+
+
+def _implements_row(function: Cursor) -> bool:
+    """Whether ``function`` defines a function or constructor of a row of ``api.ALL``
+    of a library whose headers our stand-ins give in place of its own (``REPLACED``:
+    image_transport's ``create_camera_publisher`` in its own image_transport.cpp): a call
+    of it anywhere is that row's call, not its body's. Not a row describing our stand-in
+    only (``standin_only``), nor one of a library whose own headers a workspace package
+    of it wins with (ros2_control's ``auto_declare``, topic_tools' ``ShapeShifter``: a
+    wrapper of the node's calls as written there)."""
+    if function.kind not in FUNCTIONS or function.semantic_parent is None:
+        return False
+    owner = qualified_name(function.semantic_parent)
+    row = api.ALL.get((owner, function.spelling))
+    return row is not None and not row.standin_only and owner.split("::")[0] in REPLACED
 # what can build an object (``_unseen_class``)
 _MAKES = frozenset({CursorKind.CALL_EXPR, CursorKind.VAR_DECL, CursorKind.CXX_NEW_EXPR})
 
@@ -624,6 +640,11 @@ class CallFinder:
         if self.tu.spelling.endswith(".c"):
             self.functions = [f for f in self.functions
                               if not _c_without_calls(f, self.tu.spelling, self.source)]
+        # a function of the API the rows model, defined in the workspace: the package's
+        # own implementation of that API (image_transport's create_camera_publisher,
+        # topic_tools' ShapeShifter::advertise, when that package is modelled); each call
+        # of it is the row's call at its site, so its body is no code of the node's
+        self.functions = [f for f in self.functions if not _implements_row(f)]
         kept = {id(f) for f in self.functions}
         self.unreached = [f for f in every if id(f) not in kept]
         # an object of namespace scope built with arguments (OpenMower's
@@ -960,7 +981,8 @@ class CallFinder:
                 _dependent_made(node) is not None or _dependent_listener(node) is not None
             ):
                 return True
-            if kind == CursorKind.CXX_NEW_EXPR and _lost_new(node) is not None:
+            if kind == CursorKind.CXX_NEW_EXPR and (
+                    _lost_new(node) is not None or self._parameter_made(node) is not None):
                 return True
         # a walk of a function whose only such call is another template's gives what the
         # rest of ``_function``'s loop gives: a member initialiser clang lost, a
@@ -1081,6 +1103,9 @@ class CallFinder:
                     newly := dependent_new(node)) is not None:
                 # its argument list is a site of the constructor (``CallSites``)
                 self._class_made(newly[1].semantic_parent, conditions)
+            elif node.kind == CursorKind.CXX_NEW_EXPR and (
+                    given := self._parameter_made(node)) is not None:
+                self._class_made(given, conditions)
             if node.kind in _MAKES:
                 self._unseen_class(node)
             tested.visit(node)
@@ -1619,6 +1644,33 @@ class CallFinder:
                     (where := template.location.file) is not None and self.owned(where.name)):
                 self.unseen.add(template.spelling.encode())
                 return
+
+    def _parameter_made(self, node: Cursor) -> Cursor | None:
+        """The class a ``new P(args)`` of a class template's type parameter ``P``
+        constructs: the one every specialisation of the template the unit names gives
+        for ``P`` (``CallTypes.bound``), else ``P``'s default argument (rosserial_server's
+        ``TcpServer<>``, ``template<typename Session = Session<tcp::socket>>``, whose
+        ``new Session(io_service_)`` builds each client's session); None for another
+        ``new``, or a parameter with neither."""
+        written = next((child for child in node.get_children()
+                        if child.kind == CursorKind.TYPE_REF), None)
+        decl = written.referenced if written is not None else None
+        if decl is None or decl.kind != CursorKind.TEMPLATE_TYPE_PARAMETER:
+            return None
+        bound = self.types.bound(decl)
+        if bound is not None:
+            made = bound.get_canonical().get_declaration()
+        else:  # the default argument: ``= Session<tcp::socket>`` or ``= Session``
+            made = next((child.referenced for child in decl.get_children()
+                         if child.kind in (CursorKind.TEMPLATE_REF, CursorKind.TYPE_REF)
+                         and child.referenced is not None), None)
+        if made is None or made.kind == CursorKind.NO_DECL_FOUND:
+            return None
+        if made.kind not in CLASSES:
+            return None
+        template = conf.lib.clang_getSpecializedCursorTemplate(made)
+        return template if template is not None and template.kind == (
+            CursorKind.CLASS_TEMPLATE) else made
 
     def _default_construction(self, variable: Cursor,
                               conditions: tuple[Condition, ...]) -> None:
