@@ -1502,17 +1502,18 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         # an empty list, given unconditionally or the code's default: the loop over it
         # makes nothing (warthog's twist_mux ``<rosparam param="locks">[]</rosparam>``)
         return []
-    named = [(name, item) for name, item in (
-        (_element_name(item, call.name_each), item) for item in elements) if name is not None]
-    if not named:
-        return [call]
-    # the loop over the list that the extractor saw is what these calls stand for
-    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     # the element is the whole name, or its one unknown run (``polygon_name + ".type"``);
     # a global element is not resolved in the handle's namespace (PX4-Avoidance's global
     # planner subscribes each of ``~pointcloud_topics``, ``[/camera/depth/points]``, on
     # its private handle: ``/camera/depth/points``)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
+    named = [(name, item) for name, item in (
+        (_element_name(item, call.name_each, written != UNKNOWN_MARK), item)
+        for item in elements) if name is not None]
+    if not named:
+        return [call]
+    # the loop over the list that the extractor saw is what these calls stand for
+    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None,
                     loads_given=name if call.loads is not None else None,
@@ -1833,11 +1834,18 @@ def _dotted_groups(full: str, resources: Resources, separator: str = "."
     return groups or None
 
 
-def _element_name(item: Any, field: str) -> str | None:
-    if field in (".", WORDS):
-        return item if isinstance(item, str) else None
-    value = item.get(field) if isinstance(item, dict) else None
-    return value if isinstance(value, str) else None
+def _element_name(item: Any, field: str, part: bool) -> str | None:
+    """The text an element (or its ``field``) puts in a name: a string; an integer in
+    decimal when it is a part of the name (``part``), as Python's ``str`` / f-string /
+    ``%d`` and C++'s ``std::to_string`` write it (tauv's thruster manager publishes
+    ``f'vehicle/thrusters/{thruster_id}/target_thrust'`` for each of ``~thruster_ids``,
+    ``[0, 1, ...]``); None for anything else (a float or a bool is written differently
+    by each language; an integer alone is no legal name)."""
+    value = item if field in (".", WORDS) else item.get(field) if isinstance(
+        item, dict) else None
+    if isinstance(value, str):
+        return value
+    return str(value) if part and type(value) is int else None
 
 
 def _search(name: RosName, instance: NodeInstance, resources: Resources,
