@@ -49,6 +49,7 @@ from ..model.source import (
     Node,
     PrimitiveCall,
     counted_turns,
+    counts_length,
     name_runs,
 )
 from ..model.values import UNKNOWN_MARK, Unknown
@@ -1558,16 +1559,19 @@ def _kept_calls(call: PrimitiveCall, instance: NodeInstance) -> list[PrimitiveCa
 
 def _counted_calls(call: PrimitiveCall, instance: NodeInstance, param: Resource | None,
                    value: Any) -> list[PrimitiveCall]:
-    """A call made in each turn of a counting loop up to an integer parameter's value
-    (``COUNTED``): one per turn, its ``?`` the turn's number, when the launch files give
-    the parameter a value unconditionally (ego-planner's ``fsm/waypoint_num`` 4:
+    """A call made in each turn of a counting loop up to an integer parameter's value,
+    or a list parameter's length (``range(len(p))``) (``COUNTED``): one per turn, its
+    ``?`` the turn's number, when the launch files give the parameter a value
+    unconditionally (ego-planner's ``fsm/waypoint_num`` 4:
     ``~fsm/waypoint0_x`` to ``~fsm/waypoint3_x``) or, when nothing sets it, of the one
     integer default the node's code reads it with (mavros_controllers' trajectory_publisher
     ``nh_private_.param<int>("number_of_primitives", num_primitives_, 7)``: seven turns);
     none for a count that makes no turn; the call as it is otherwise (its name keeps its
     ``?``)."""
     if value is None and not (isinstance(param, Parameter) and param.is_set):
-        value = _code_default(call, instance, int)
+        # (a loop up to a list's length, ``range(len(p))``: the list default's length)
+        value = _code_default(call, instance, list if counts_length(call.name_each or "")
+                              else int)
         param = None  # a default: no launch conditions
     turns = counted_turns(call.name_each or "", value, _NUMBERED_LIMIT) if (
         (param is None or (isinstance(param, Parameter) and not param.launch_conditions))
@@ -1758,12 +1762,14 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
         why = "which the configuration sets to a value not known statically"
     if len(named) > 1 and unset:
         param = ", ".join(unset)
+    each = call.name_each or ""
+    counter = ("" if not each.startswith(COUNTED)
+               else f"counter of the loop over the elements of the list parameter {param}"
+               if counts_length(each) else f"counter of the loop up to the parameter {param}")
     what = {None: f"parameter{'s' if len(unset) > 1 else ''} {param}",
             NUMBERED: f"parameters {param}0, {param}1, ...",
             WORDS: f"words of the parameter {param}"
-            }.get(call.name_each, f"counter of the loop up to the parameter {param}"
-                  if (call.name_each or "").startswith(COUNTED)
-                  else f"elements of the list parameter {param}")
+            }.get(call.name_each, counter or f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
                      kind=call.kind, what=what, why=why)
 
