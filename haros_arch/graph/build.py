@@ -1237,7 +1237,7 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     if call.name_param is None or UNKNOWN_MARK not in call.name:
         return call.name
     value = _parameter_value(call.name_param, _name_default(call, instance), instance,
-                             resources)
+                             resources, integers=call.name != UNKNOWN_MARK)
     if value is not None and UNKNOWN_MARK in value and call.default_param is not None:
         # the default holds another parameter's value (topic_tools' relay: the input
         # topic and "_relay"); that one's value, or its own default: known only when it is
@@ -1396,11 +1396,13 @@ def _own_values(launch: LaunchModel, given: list[ParamDecl]) -> dict[int, dict[s
 
 
 def _parameter_value(written: str, default: str | None, instance: NodeInstance,
-                     resources: Resources) -> str | None:
+                     resources: Resources, integers: bool = False) -> str | None:
     """The text value of the instance's parameter ``written`` (as the code names it):
     the launch value, else the one the node sets from its arguments, else ``default``.
     None when a launch file sets it to a value not known (an argument nobody gave): the
-    node reads that value, not its default."""
+    node reads that value, not its default. With ``integers``, an integer value is its
+    decimal text, as the code writes it into a longer name (``_element_name``: tauv's
+    ``f'vehicle/servos/{self._torpedo_servo}/target_position'``)."""
     if written.startswith(ROS_ARGUMENT):  # ros::getROSArg's ``key:=value`` word
         return ros_argument(instance, written[len(ROS_ARGUMENT):])
     source = _node_scoped(written) if instance.ros_version == 2 else written
@@ -1409,9 +1411,13 @@ def _parameter_value(written: str, default: str | None, instance: NodeInstance,
     param = resources.by_name.get((Parameter, param_name)) if own is None else None
     if own is not None and (isinstance(own.value, str) or own.value is None):
         return own.value  # its own, not another node's of the same name
+    if own is not None and integers and type(own.value) is int:
+        return str(own.value)
     if isinstance(param, Parameter) and param.set_by_launch:
         if isinstance(param.value, str):
             return param.value
+        if integers and type(param.value) is int:
+            return str(param.value)
         if param.value is None:
             return None
     # the node sets it itself from its command-line arguments
@@ -1760,6 +1766,11 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
         unset = empty
     elif unset and all(_set_not_known(p, instance, resources) for p in unset):
         why = "which the configuration sets to a value not known statically"
+    elif unset and all(_set_not_text(p, instance, resources) for p in unset):
+        # (a float, a bool: each language writes them its own way; an integer that would
+        # be the whole name, no legal one)
+        why = ("which the configuration sets to a value that is not text, not written "
+               "into a name here")
     if len(named) > 1 and unset:
         param = ", ".join(unset)
     each = call.name_each or ""
@@ -1774,19 +1785,36 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
                      kind=call.kind, what=what, why=why)
 
 
-def _set_not_known(written: str, instance: NodeInstance, resources: Resources) -> bool:
-    """Whether a launch file sets the instance's parameter ``written`` to a value not
-    known statically (an argument nobody gave): set, though its value is not known."""
+def _set_value(written: str, instance: NodeInstance, resources: Resources
+               ) -> tuple[bool, Any]:
+    """Whether a launch file (or the node itself, from its arguments) sets the
+    instance's parameter ``written``, and to what (None or ``Unknown``: a value not
+    known statically, an argument nobody gave)."""
     if written.startswith(ROS_ARGUMENT):
-        return False
+        return False, None
     source = _node_scoped(written) if instance.ros_version == 2 else written
     param_name = RosName.make(source, instance.namespace, instance.name).full
     own = _OWN_VALUES.get(instance, {}).get(param_name)
     if own is not None:
-        return own.value is None or isinstance(own.value, Unknown)
+        return True, own.value
     param = resources.by_name.get((Parameter, param_name))
-    return isinstance(param, Parameter) and param.set_by_launch and (
-        param.value is None or isinstance(param.value, Unknown))
+    if isinstance(param, Parameter) and param.set_by_launch:
+        return True, param.value
+    return False, None
+
+
+def _set_not_known(written: str, instance: NodeInstance, resources: Resources) -> bool:
+    """Whether a launch file sets the instance's parameter ``written`` to a value not
+    known statically (an argument nobody gave): set, though its value is not known."""
+    found, value = _set_value(written, instance, resources)
+    return found and (value is None or isinstance(value, Unknown))
+
+
+def _set_not_text(written: str, instance: NodeInstance, resources: Resources) -> bool:
+    """Whether a launch file sets the instance's parameter ``written`` to a known value
+    that the graph does not write into a name (a float, a bool, a list of them)."""
+    found, value = _set_value(written, instance, resources)
+    return found and value is not None and not isinstance(value, str | Unknown)
 
 
 def _name_arg_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
