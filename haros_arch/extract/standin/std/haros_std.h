@@ -435,6 +435,9 @@ public:
   typedef T value_type;
   allocator();
   template<class U> allocator(const allocator<U>& other);
+  // (to C++17; a gencpp message's ``typename ContainerAllocator::template
+  // rebind<int32_t>::other`` of ``std::allocator<void>``)
+  template<class U> struct rebind { typedef allocator<U> other; };
 };
 // what an allocator type gives (metavision_driver's ``typename
 // std::allocator_traits<A>::template rebind_alloc<U>``)
