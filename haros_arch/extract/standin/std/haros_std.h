@@ -367,6 +367,11 @@ template<class T> struct hash { size_t operator()(const T& v) const; };
 template<class T> struct less { bool operator()(const T& a, const T& b) const; };
 template<class T> struct greater { bool operator()(const T& a, const T& b) const; };
 template<class T> struct equal_to { bool operator()(const T& a, const T& b) const; };
+// the other comparisons of <functional> (tauv's ``boost::heap::compare<
+// std::greater_equal<Ptr>>``)
+template<class T> struct not_equal_to { bool operator()(const T& a, const T& b) const; };
+template<class T> struct less_equal { bool operator()(const T& a, const T& b) const; };
+template<class T> struct greater_equal { bool operator()(const T& a, const T& b) const; };
 // the adaptable function bases (deprecated in C++11, still declared by libstdc++ in
 // every mode): ``struct matrix_hash : std::unary_function<T, size_t>``
 template<class A, class R> struct unary_function {
