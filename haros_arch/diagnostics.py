@@ -1067,7 +1067,10 @@ CATALOGUE: dict[str, Entry] = {
         "launch files nor their parameter files set it, and the code gives no default: "
         "the link's name stays '?'. Set the parameter where the node is launched. The "
         "message says so too where the launch sets the parameter to a value not known "
-        "statically (an argument nobody gives), and where it sets it to the empty string "
+        "statically (an argument nobody gives), where it sets it to a value that is not "
+        "text (a float or a bool, written into a name differently by each language; an "
+        "integer is written in decimal where the name has other text), and where it sets "
+        "it to the empty string "
         "and what the code makes of it is no name the graph resolves: an empty name, or "
         "one with an empty segment or a trailing '/', which rcl refuses and roscpp "
         "resolves to the handle's namespace or cleans; the graph keeps '?' there."),

@@ -49,6 +49,7 @@ from ..model.source import (
     Node,
     PrimitiveCall,
     counted_turns,
+    counts_length,
     name_runs,
 )
 from ..model.values import UNKNOWN_MARK, Unknown
@@ -1236,7 +1237,7 @@ def _given_name(call: PrimitiveCall, instance: NodeInstance, resources: Resource
     if call.name_param is None or UNKNOWN_MARK not in call.name:
         return call.name
     value = _parameter_value(call.name_param, _name_default(call, instance), instance,
-                             resources)
+                             resources, integers=call.name != UNKNOWN_MARK)
     if value is not None and UNKNOWN_MARK in value and call.default_param is not None:
         # the default holds another parameter's value (topic_tools' relay: the input
         # topic and "_relay"); that one's value, or its own default: known only when it is
@@ -1395,11 +1396,13 @@ def _own_values(launch: LaunchModel, given: list[ParamDecl]) -> dict[int, dict[s
 
 
 def _parameter_value(written: str, default: str | None, instance: NodeInstance,
-                     resources: Resources) -> str | None:
+                     resources: Resources, integers: bool = False) -> str | None:
     """The text value of the instance's parameter ``written`` (as the code names it):
     the launch value, else the one the node sets from its arguments, else ``default``.
     None when a launch file sets it to a value not known (an argument nobody gave): the
-    node reads that value, not its default."""
+    node reads that value, not its default. With ``integers``, an integer value is its
+    decimal text, as the code writes it into a longer name (``_element_name``: tauv's
+    ``f'vehicle/servos/{self._torpedo_servo}/target_position'``)."""
     if written.startswith(ROS_ARGUMENT):  # ros::getROSArg's ``key:=value`` word
         return ros_argument(instance, written[len(ROS_ARGUMENT):])
     source = _node_scoped(written) if instance.ros_version == 2 else written
@@ -1408,9 +1411,13 @@ def _parameter_value(written: str, default: str | None, instance: NodeInstance,
     param = resources.by_name.get((Parameter, param_name)) if own is None else None
     if own is not None and (isinstance(own.value, str) or own.value is None):
         return own.value  # its own, not another node's of the same name
+    if own is not None and integers and type(own.value) is int:
+        return str(own.value)
     if isinstance(param, Parameter) and param.set_by_launch:
         if isinstance(param.value, str):
             return param.value
+        if integers and type(param.value) is int:
+            return str(param.value)
         if param.value is None:
             return None
     # the node sets it itself from its command-line arguments
@@ -1502,17 +1509,18 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         # an empty list, given unconditionally or the code's default: the loop over it
         # makes nothing (warthog's twist_mux ``<rosparam param="locks">[]</rosparam>``)
         return []
-    named = [(name, item) for name, item in (
-        (_element_name(item, call.name_each), item) for item in elements) if name is not None]
-    if not named:
-        return [call]
-    # the loop over the list that the extractor saw is what these calls stand for
-    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     # the element is the whole name, or its one unknown run (``polygon_name + ".type"``);
     # a global element is not resolved in the handle's namespace (PX4-Avoidance's global
     # planner subscribes each of ``~pointcloud_topics``, ``[/camera/depth/points]``, on
     # its private handle: ``/camera/depth/points``)
     written = call.name if call.name.count(UNKNOWN_MARK) == 1 else UNKNOWN_MARK
+    named = [(name, item) for name, item in (
+        (_element_name(item, call.name_each, written != UNKNOWN_MARK), item)
+        for item in elements) if name is not None]
+    if not named:
+        return [call]
+    # the loop over the list that the extractor saw is what these calls stand for
+    kept = tuple(c for c in call.conditions if c.statement != EACH_STATEMENT)
     return [replace(call, name=_filled(written, name), name_param=None,
                     name_default=None, name_each=None,
                     loads_given=name if call.loads is not None else None,
@@ -1557,16 +1565,19 @@ def _kept_calls(call: PrimitiveCall, instance: NodeInstance) -> list[PrimitiveCa
 
 def _counted_calls(call: PrimitiveCall, instance: NodeInstance, param: Resource | None,
                    value: Any) -> list[PrimitiveCall]:
-    """A call made in each turn of a counting loop up to an integer parameter's value
-    (``COUNTED``): one per turn, its ``?`` the turn's number, when the launch files give
-    the parameter a value unconditionally (ego-planner's ``fsm/waypoint_num`` 4:
+    """A call made in each turn of a counting loop up to an integer parameter's value,
+    or a list parameter's length (``range(len(p))``) (``COUNTED``): one per turn, its
+    ``?`` the turn's number, when the launch files give the parameter a value
+    unconditionally (ego-planner's ``fsm/waypoint_num`` 4:
     ``~fsm/waypoint0_x`` to ``~fsm/waypoint3_x``) or, when nothing sets it, of the one
     integer default the node's code reads it with (mavros_controllers' trajectory_publisher
     ``nh_private_.param<int>("number_of_primitives", num_primitives_, 7)``: seven turns);
     none for a count that makes no turn; the call as it is otherwise (its name keeps its
     ``?``)."""
     if value is None and not (isinstance(param, Parameter) and param.is_set):
-        value = _code_default(call, instance, int)
+        # (a loop up to a list's length, ``range(len(p))``: the list default's length)
+        value = _code_default(call, instance, list if counts_length(call.name_each or "")
+                              else int)
         param = None  # a default: no launch conditions
     turns = counted_turns(call.name_each or "", value, _NUMBERED_LIMIT) if (
         (param is None or (isinstance(param, Parameter) and not param.launch_conditions))
@@ -1755,31 +1766,55 @@ def _name_param_unset(instance: NodeInstance, call: PrimitiveCall,
         unset = empty
     elif unset and all(_set_not_known(p, instance, resources) for p in unset):
         why = "which the configuration sets to a value not known statically"
+    elif unset and all(_set_not_text(p, instance, resources) for p in unset):
+        # (a float, a bool: each language writes them its own way; an integer that would
+        # be the whole name, no legal one)
+        why = ("which the configuration sets to a value that is not text, not written "
+               "into a name here")
     if len(named) > 1 and unset:
         param = ", ".join(unset)
+    each = call.name_each or ""
+    counter = ("" if not each.startswith(COUNTED)
+               else f"counter of the loop over the elements of the list parameter {param}"
+               if counts_length(each) else f"counter of the loop up to the parameter {param}")
     what = {None: f"parameter{'s' if len(unset) > 1 else ''} {param}",
             NUMBERED: f"parameters {param}0, {param}1, ...",
             WORDS: f"words of the parameter {param}"
-            }.get(call.name_each, f"counter of the loop up to the parameter {param}"
-                  if (call.name_each or "").startswith(COUNTED)
-                  else f"elements of the list parameter {param}")
+            }.get(call.name_each, counter or f"elements of the list parameter {param}")
     return diag.make("NAME_PARAM_UNSET", call.location, node=instance.name,
                      kind=call.kind, what=what, why=why)
+
+
+def _set_value(written: str, instance: NodeInstance, resources: Resources
+               ) -> tuple[bool, Any]:
+    """Whether a launch file (or the node itself, from its arguments) sets the
+    instance's parameter ``written``, and to what (None or ``Unknown``: a value not
+    known statically, an argument nobody gave)."""
+    if written.startswith(ROS_ARGUMENT):
+        return False, None
+    source = _node_scoped(written) if instance.ros_version == 2 else written
+    param_name = RosName.make(source, instance.namespace, instance.name).full
+    own = _OWN_VALUES.get(instance, {}).get(param_name)
+    if own is not None:
+        return True, own.value
+    param = resources.by_name.get((Parameter, param_name))
+    if isinstance(param, Parameter) and param.set_by_launch:
+        return True, param.value
+    return False, None
 
 
 def _set_not_known(written: str, instance: NodeInstance, resources: Resources) -> bool:
     """Whether a launch file sets the instance's parameter ``written`` to a value not
     known statically (an argument nobody gave): set, though its value is not known."""
-    if written.startswith(ROS_ARGUMENT):
-        return False
-    source = _node_scoped(written) if instance.ros_version == 2 else written
-    param_name = RosName.make(source, instance.namespace, instance.name).full
-    own = _OWN_VALUES.get(instance, {}).get(param_name)
-    if own is not None:
-        return own.value is None or isinstance(own.value, Unknown)
-    param = resources.by_name.get((Parameter, param_name))
-    return isinstance(param, Parameter) and param.set_by_launch and (
-        param.value is None or isinstance(param.value, Unknown))
+    found, value = _set_value(written, instance, resources)
+    return found and (value is None or isinstance(value, Unknown))
+
+
+def _set_not_text(written: str, instance: NodeInstance, resources: Resources) -> bool:
+    """Whether a launch file sets the instance's parameter ``written`` to a known value
+    that the graph does not write into a name (a float, a bool, a list of them)."""
+    found, value = _set_value(written, instance, resources)
+    return found and value is not None and not isinstance(value, str | Unknown)
 
 
 def _name_arg_unset(instance: NodeInstance, call: PrimitiveCall) -> Diagnostic:
@@ -1833,11 +1868,18 @@ def _dotted_groups(full: str, resources: Resources, separator: str = "."
     return groups or None
 
 
-def _element_name(item: Any, field: str) -> str | None:
-    if field in (".", WORDS):
-        return item if isinstance(item, str) else None
-    value = item.get(field) if isinstance(item, dict) else None
-    return value if isinstance(value, str) else None
+def _element_name(item: Any, field: str, part: bool) -> str | None:
+    """The text an element (or its ``field``) puts in a name: a string; an integer in
+    decimal when it is a part of the name (``part``), as Python's ``str`` / f-string /
+    ``%d`` and C++'s ``std::to_string`` write it (tauv's thruster manager publishes
+    ``f'vehicle/thrusters/{thruster_id}/target_thrust'`` for each of ``~thruster_ids``,
+    ``[0, 1, ...]``); None for anything else (a float or a bool is written differently
+    by each language; an integer alone is no legal name)."""
+    value = item if field in (".", WORDS) else item.get(field) if isinstance(
+        item, dict) else None
+    if isinstance(value, str):
+        return value
+    return str(value) if part and type(value) is int else None
 
 
 def _search(name: RosName, instance: NodeInstance, resources: Resources,

@@ -110,31 +110,38 @@ def loaded_mark(container: str, method: str, cast: str | None = None) -> str:
 COUNTED = "<"
 
 
-def counted_mark(start: int, inclusive: bool, shift: int = 0) -> str:
+def counted_mark(start: int, inclusive: bool, shift: int = 0, length: bool = False) -> str:
     """``PrimitiveCall.name_each`` of a counting loop from ``start`` (``COUNTED``), up to
     its bound, that value too when ``inclusive`` (``i <= n``); the name holds the
-    variable plus ``shift``."""
+    variable plus ``shift``. With ``length`` the bound is the number of elements of a
+    list parameter (``range(len(p))``), not an integer parameter's value (``#``)."""
     return (f"{COUNTED}{start}{'=' if inclusive else ''}"
-            + (f"{shift:+d}" if shift else ""))
+            + (f"{shift:+d}" if shift else "") + ("#" if length else ""))
 
 
 def counted_turns(each: str, bound: object, limit: int) -> range | None:
     """The values a name made of a counting loop's variable (``COUNTED``) holds, one per
     turn, for the bound ``bound`` (the variable's, shifted as the mark says); None when
     ``each`` is no such mark, the bound is no integer, or there are more than
-    ``limit``."""
-    if not each.startswith(COUNTED) or isinstance(bound, bool) or not isinstance(bound, int):
-        return None
-    match = _COUNTED_MARK.fullmatch(each[len(COUNTED):])
-    if match is None:
+    ``limit``; a mark of a list's length (``#``) counts the elements of the list
+    ``bound``."""
+    match = _COUNTED_MARK.fullmatch(each[len(COUNTED):]) if each.startswith(COUNTED) else None
+    if match is not None and match.group(4):
+        bound = len(bound) if isinstance(bound, list) else None
+    if match is None or isinstance(bound, bool) or not isinstance(bound, int):
         return None
     start, shift = int(match.group(1)), int(match.group(3) or 0)
     turns = range(start + shift, (bound + 1 if match.group(2) else bound) + shift)
     return turns if len(turns) <= limit else None
 
 
-# what follows ``COUNTED`` in a mark: the first value, "=", the shift (``counted_mark``)
-_COUNTED_MARK = re.compile(r"(\d+)(=?)([+-]\d+)?")
+def counts_length(each: str) -> bool:
+    """Whether ``each`` is the mark of a counting loop up to a list's length (``#``)."""
+    return each.startswith(COUNTED) and each.endswith("#")
+
+
+# what follows ``COUNTED`` in a mark: the first value, "=", the shift, "#" (``counted_mark``)
+_COUNTED_MARK = re.compile(r"(\d+)(=?)([+-]\d+)?(#?)")
 # the start of a ``PrimitiveCall.name_param`` that is no ROS parameter but a child element
 # of a Gazebo classic plugin's SDF (``sdf:topicName``), which robot.attach fills in from
 # the robot description

@@ -173,6 +173,7 @@ UMBRELLAS = {
     "boost/filesystem/": "boost/filesystem.hpp",
     "boost/ptr_container/": "boost/ptr_container/ptr_vector.hpp",
     "boost/circular_buffer/": "boost/circular_buffer.hpp",
+    "boost/heap/": "boost/heap/priority_queue.hpp",  # Boost.Heap, each heap alike
     "boost/optional/": "boost/optional.hpp",
     "boost/uuid/": "boost/uuid/uuid.hpp", "boost/type_index/": "boost/type_index.hpp",
     "boost/functional/hash/": "boost/functional/hash.hpp",

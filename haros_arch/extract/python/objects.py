@@ -113,6 +113,7 @@ class ParamTurn:
     name: str
     start: int = 0
     shift: int = 0
+    length: bool = False  # up to the number of elements of the list ``name`` (``len(p)``)
 
 
 @dataclass(frozen=True)
@@ -281,7 +282,8 @@ def text_of(value: object) -> Value:
         return Value.unknown(f"{ELEMENT_OF}{value.name}{field}")
     if isinstance(value, ParamTurn):
         return Value.unknown(f"{TURN_OF}{value.name}{TURN_FROM}{value.start}"
-                             + (f"{value.shift:+d}" if value.shift else ""))
+                             + (f"{value.shift:+d}" if value.shift else "")
+                             + ("#" if value.length else ""))
     return Value.unknown(getattr(value, "origin", "") or type(value).__name__)
 
 

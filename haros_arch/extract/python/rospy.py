@@ -103,6 +103,14 @@ ROWS: dict[tuple[str, str], PyFunction] = {
     # Status, both ways (bondpy.py; as bondcpp's)
     ("bondpy", "Bond"): PyFunction(
         "publish", name=Arg(0, "topic"), fixed_type="bond/Status", special="bond"),
+    # interactive_markers.InteractiveMarkerServer(topic_ns, server_id="", q_size=100)
+    # (noetic-devel interactive_marker_server.py): ``topic_ns + "/update_full"``
+    # (latched) and ``topic_ns + "/update"``, queues of 100, and a subscription to
+    # ``topic_ns + "/feedback"`` with the queue ``q_size``, as roscpp's server has them
+    ("interactive_markers", "InteractiveMarkerServer"): PyFunction(
+        "publish", name=Arg(0, "topic_ns"), queue=Arg(2, "q_size"),
+        fixed_type="visualization_msgs/InteractiveMarkerUpdate",
+        special="interactive-marker-server"),
     # diagnostic_updater.Updater() publishes its status on /diagnostics (as roscpp's)
     ("diagnostic_updater", "Updater"): PyFunction(
         "publish", name=None, fixed_name="/diagnostics",

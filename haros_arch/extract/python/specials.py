@@ -52,6 +52,17 @@ def special_calls(ev: Evaluator, spec: PyFunction, call: ast.Call, frame: Frame,
         return [named, replace(named, kind="subscribe")]
     if spec.special == "reconfigure-server":
         return _reconfigure_server(ev, call, frame, base)
+    if spec.special == "interactive-marker-server":
+        # the namespace joined to each topic by ``+``: as written, not as a namespace
+        prefix = own_name(text_of(evaluate(ev, argument(call, Arg(0, "topic_ns")),
+                                           frame))).text or "?"
+        queue = 100 if base.queue_size_missing else base.queue_size  # ``q_size``'s default
+        base = replace(base, queue_size_missing=False)
+        return [replace(base, kind="publish", name=prefix + "/update_full", queue_size=100,
+                        type="visualization_msgs/InteractiveMarkerInit", latch=True),
+                replace(base, kind="publish", name=prefix + "/update", queue_size=100),
+                replace(base, kind="subscribe", name=prefix + "/feedback", queue_size=queue,
+                        type="visualization_msgs/InteractiveMarkerFeedback")]
     if spec.special == "reconfigure-client":
         server = _under(ev, argument(call, Arg(0, "name")), frame)
         return [replace(base, name=server + RECONFIGURE_SERVICE[0]),

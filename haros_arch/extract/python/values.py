@@ -506,6 +506,15 @@ class Evaluator(Instances, QoSProfiles, Walker):
         if ref.qualname in ("os.path.join", "posixpath.join") and expr.args and not any(
                 isinstance(a, ast.Starred) for a in expr.args):
             return _path_join([text_of(self.eval(a, frame)) for a in expr.args])
+        if ref.qualname in _NUMPY_ARRAYS and len(expr.args) == 1 and not expr.keywords \
+                and not isinstance(expr.args[0], ast.Starred):
+            # an array of a parameter's value: a loop over it walks the parameter's
+            # elements, each written as the element is (tauv's thruster manager names a
+            # publisher per id of ``np.array(rospy.get_param('~thruster_ids'))``); not
+            # with a dtype, which changes them (``dtype=float``), nor of a list the walk
+            # knows, whose arithmetic numpy does per element, not as a list's
+            given = self.eval(expr.args[0], frame)
+            return given if isinstance(given, ParamValue) else Unknown(ref.qualname)
         return Unknown(ref.qualname)
 
     def _environ(self, key: object) -> object:
@@ -609,6 +618,11 @@ def _truth(value: object) -> bool | None:
     if isinstance(value, Value) and value.literal is not None:
         return bool(value.literal)
     return None
+
+
+# numpy's functions that make an array of a list as it is: its elements, one per turn of
+# a loop over the array (a list of lists is a list of rows: the loop walks rows too)
+_NUMPY_ARRAYS = frozenset({"numpy.array", "numpy.asarray", "numpy.asanyarray"})
 
 
 def _path_join(parts: list[Value]) -> Value:

@@ -741,7 +741,9 @@ class Walker:
 
     def _turn_loop(self, target: ast.expr, over: ast.expr, frame: Frame) -> ParamTurn | None:
         """``ParamTurn`` of a loop ``for i in range(n)`` (or ``range(k, n)``, ``k`` a
-        literal integer) where ``n`` holds a parameter's value; else None."""
+        literal integer) where ``n`` holds a parameter's value, or is ``len(p)`` of a list
+        parameter's value ``p`` (tauv's thrusters subscribe ``f'vehicle/thrusters/{i}/
+        target_thrust'`` for ``i in range(len(self._thruster_channels))``); else None."""
         if not (isinstance(target, ast.Name) and isinstance(over, ast.Call)
                 and isinstance(over.func, ast.Name) and over.func.id == "range"
                 and 1 <= len(over.args) <= 2 and not over.keywords
@@ -754,8 +756,15 @@ class Walker:
                     and first.value >= 0):
                 return None
             start = first.value
-        bound = self.evaluator.eval(over.args[-1], frame)
-        return ParamTurn(bound.name, start) if isinstance(bound, ParamValue) else None
+        last = over.args[-1]
+        counted = last.args[0] if (
+            isinstance(last, ast.Call) and isinstance(last.func, ast.Name)
+            and last.func.id == "len" and len(last.args) == 1 and not last.keywords
+            and not isinstance(last.args[0], ast.Starred)
+            and isinstance(self.evaluator.eval(last.func, frame), Unknown)) else None
+        bound = self.evaluator.eval(counted if counted is not None else last, frame)
+        return ParamTurn(bound.name, start, length=counted is not None) if isinstance(
+            bound, ParamValue) else None
 
     _AsyncFor = _For
 
@@ -1354,10 +1363,11 @@ class Walker:
                 # one call per turn of the value the configuration gives it
                 name, _, start = params[0].removeprefix(TURN_OF).partition(TURN_FROM)
                 call.name_param = param_name(Value.of(name)) if version == 2 else name
-                turn = re.fullmatch(r"(\d+)([+-]\d+)?", start)
+                turn = re.fullmatch(r"(\d+)([+-]\d+)?(#?)", start)
                 if turn is not None:
-                    first, shift = turn.groups("0")
-                    call.name_each = counted_mark(int(first), False, int(shift))
+                    first, shift, length = turn.groups("0")
+                    call.name_each = counted_mark(int(first), False, int(shift),
+                                                  length == "#")
             elif len(params) == 1 and params[0].startswith(PROGRAM_ARGUMENT):
                 # a command-line argument with text around it (``sys.argv[1] + "/out"``):
                 # the graph puts the instance's argument in the place of the ``?``

@@ -43,6 +43,10 @@ typedef unsigned char uchar;  // global in OpenCV (cvdef.h)
 typedef unsigned short ushort;
 namespace cv {
 using ::uchar;
+// OpenCV 2.x's ``using std::vector;`` (core/core.hpp): ``cv::vector<cv::Mat>`` of
+// kinetic-era nodes is std's, and beside ``using namespace cv; using namespace std;``
+// a bare ``vector`` is not ambiguous (IGVC2015's sb_vision); the same entity for 3 and 4
+using std::vector;
 template<class T> class Rect_;
 template<class T> class Point_ {
 public:

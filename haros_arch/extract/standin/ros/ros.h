@@ -2,6 +2,7 @@
 #ifndef HAROS_STANDIN_ROS_ROS_H
 #define HAROS_STANDIN_ROS_ROS_H
 #include <ros/forwards.h>
+#include <ros/message_traits.h>  // and serialization, message_operations
 #include <ros/common.h>
 #include <ros/time.h>
 #include <ros/console.h>

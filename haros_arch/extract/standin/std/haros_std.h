@@ -376,6 +376,11 @@ template<class T> struct hash { size_t operator()(const T& v) const; };
 template<class T> struct less { bool operator()(const T& a, const T& b) const; };
 template<class T> struct greater { bool operator()(const T& a, const T& b) const; };
 template<class T> struct equal_to { bool operator()(const T& a, const T& b) const; };
+// the other comparisons of <functional> (tauv's ``boost::heap::compare<
+// std::greater_equal<Ptr>>``)
+template<class T> struct not_equal_to { bool operator()(const T& a, const T& b) const; };
+template<class T> struct less_equal { bool operator()(const T& a, const T& b) const; };
+template<class T> struct greater_equal { bool operator()(const T& a, const T& b) const; };
 // the adaptable function bases (deprecated in C++11, still declared by libstdc++ in
 // every mode): ``struct matrix_hash : std::unary_function<T, size_t>``
 template<class A, class R> struct unary_function {
@@ -444,6 +449,9 @@ public:
   typedef T value_type;
   allocator();
   template<class U> allocator(const allocator<U>& other);
+  // (to C++17; a gencpp message's ``typename ContainerAllocator::template
+  // rebind<int32_t>::other`` of ``std::allocator<void>``)
+  template<class U> struct rebind { typedef allocator<U> other; };
 };
 // what an allocator type gives (metavision_driver's ``typename
 // std::allocator_traits<A>::template rebind_alloc<U>``)
