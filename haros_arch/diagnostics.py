@@ -408,8 +408,9 @@ CATALOGUE: dict[str, Entry] = {
         "says of a command line (mas_domestic_robotics' recognize_gesture_action.launch "
         "gave its detection server kwargs_file = $(find mdr_recognize_gesture_action)/"
         "object_detection_kwargs.yml, a file of the package's config/ folder). A path with "
-        "a part not known statically, in a git submodule not checked out, or under a name "
-        "of output (a log, save or record path) is not judged."),
+        "a part not known statically, in a git submodule not checked out, under a name of "
+        "output (a log, save or record path), or with no file extension (a folder the "
+        "node may make) is not judged."),
     "LAUNCH_PROCESS_ARG_PATH_MISSING": Entry(
         "warning", "process {command} is given the path {path} on its command line, which "
         "is not there",

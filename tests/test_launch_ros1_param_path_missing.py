@@ -4,7 +4,8 @@ mas_domestic_robotics 4fafabff's recognize_gesture_action.launch gave its detect
 server ``kwargs_file = $(find mdr_recognize_gesture_action)/object_detection_kwargs.yml``,
 a file of the package's ``config/`` folder, and nothing said so. A path that is there,
 one with a part not known, one outside the workspace, a parameter named for output (a
-log or save path) and a text that is no path are not said."""
+log or save path), a path with no file extension (a folder the node may make) and a
+text that is no path are not said."""
 
 from __future__ import annotations
 
@@ -24,6 +25,7 @@ LAUNCH = """<launch>
     <param name="save_path" value="$(find det)/maps/new_map"/>
     <param name="log_file" value="$(find det)/logs/run.log"/>
     <param name="frame" value="base_link"/>
+    <param name="data_dir" value="$(find det)/recordings"/>
   </node>
 </launch>
 """
