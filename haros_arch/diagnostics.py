@@ -400,6 +400,17 @@ CATALOGUE: dict[str, Entry] = {
         "test_worlds/gazebo_ros_range.W()orld; mycobot_ros2's detect_marker.launch.py "
         "gave rviz2 -d its package's config/mypal_260.rviz). A path with a part not "
         "known statically, or a file the build makes, is not judged."),
+    "LAUNCH_PARAM_PATH_MISSING": Entry(
+        "warning", "parameter {name} is given the path {path}, which is not there",
+        "A ROS 1 <param> sets a text value that is an absolute path into a package of the "
+        "workspace, $(find pkg)/..., the package's own folder, and nothing is there: the "
+        "node that reads it is handed a file it cannot open, as LAUNCH_NODE_ARG_PATH_MISSING "
+        "says of a command line (mas_domestic_robotics' recognize_gesture_action.launch "
+        "gave its detection server kwargs_file = $(find mdr_recognize_gesture_action)/"
+        "object_detection_kwargs.yml, a file of the package's config/ folder). A path with "
+        "a part not known statically, in a git submodule not checked out, under a name of "
+        "output (a log, save or record path), or with no file extension (a folder the "
+        "node may make) is not judged."),
     "LAUNCH_PROCESS_ARG_PATH_MISSING": Entry(
         "warning", "process {command} is given the path {path} on its command line, which "
         "is not there",

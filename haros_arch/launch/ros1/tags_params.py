@@ -22,6 +22,7 @@ from ...model.location import Location
 from ...model.values import Value
 from ..model import ParamDecl
 from ..partial_yaml import MARK, marked_text, unknown_parts
+from ..paths import missing_argument_paths
 from .params import (
     Binary,
     ParamError,
@@ -71,6 +72,15 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
         return
     where = loader.where(scope, element)
     set_twice(loader, element, scope, name)
+    if source == "value" and isinstance(value, str) and kind != "yaml":
+        # judged as a command line's ``name:=PATH`` word is (an output name skipped); a
+        # path to a file name (one with an extension) only: a folder the node may make
+        # (``$(dirname)/x``, a data or log folder) is not judged
+        key = name.rsplit("/", 1)[-1].lstrip("~")
+        for path in missing_argument_paths([f"{key}:={value.strip()}"], loader.workspace):
+            if os.path.splitext(os.path.basename(path))[1]:
+                loader.report("LAUNCH_PARAM_PATH_MISSING", scope, element, name=name,
+                              path=loader.workspace.relpath(path))
     # the command line the value comes from (textfile: the file's content, as cat gives it)
     command = raw.text if source == "command" else (
         f"cat {shlex.quote(raw.text)}" if source == "textfile" else None)

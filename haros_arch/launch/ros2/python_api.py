@@ -48,6 +48,7 @@ from .python_methods import (
     is_instance,
     json_load,
     module_of_file,
+    nested_entities,
     open_file,
     safe_load,
     text_or_none,
@@ -538,6 +539,10 @@ def set_configuration(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 def launch_description(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     initial = arg(a, k, 0, "initial_entities", default=[])
     if isinstance(initial, (list, tuple)):
+        given = n.args[0] if isinstance(n, ast.Call) and n.args else None
+        literal = given.elts if isinstance(given, (ast.List, ast.Tuple)) and not any(
+            isinstance(x, ast.Starred) for x in given.elts) else None
+        nested_entities(i, list(initial), n, literal)
         return LaunchDescription(list(initial))
     if initial is not None:  # its actions are not known: said, not taken as none
         i.unsupported(n, "launch description is not known statically")

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from ... import diagnostics as diag
 from ... import safe_yaml
 from ...evaluate import operations as ops
 from ...evaluate import partial
@@ -396,10 +397,33 @@ def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> An
     return (lowered in ("true", "1")) != owner.negate
 
 
+def nested_entities(i: Interpreter, items: list[Any], n: ast.AST,
+                    written: list[ast.expr] | None = None) -> None:
+    """Said of each list or tuple among a ``LaunchDescription``'s entities (``written``:
+    their expressions, when the call lists them). launch keeps the entities as given
+    (``list(initial_entities)``, ``add_entity`` appends) and walks each as an entity
+    when it collects the launch arguments and when it runs the description, so a list
+    or tuple there stops the launch with an AttributeError; a comma after an action
+    (``declare = DeclareLaunchArgument(...),``) makes such a tuple (cyberdog_nav2's
+    node.laser_mapping.launch.py). Its items are kept as the description's actions, so
+    the rest of the file is still read."""
+    for at, item in enumerate(items):
+        if isinstance(item, (list, tuple)):
+            kind = type(item).__name__
+            where = written[at] if written is not None and at < len(written) else n
+            i.diagnostics.append(diag.make(
+                "LAUNCH_BAD_VALUE", i.where(where),
+                detail=f"the launch description is given a {kind} as an entity (item "
+                       f"{at + 1}), not a launch action: launch stops when it walks the "
+                       f"description (AttributeError: '{kind}' object has no attribute "
+                       "'describe_sub_entities')"))
+
+
 def m_add_action(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``LaunchDescription.add_action`` and ``add_entity``, which launch makes one: the
     entity may be a whole ``LaunchDescription``, whose actions run in its place."""
     if isinstance(owner, LaunchDescription) and a:
+        nested_entities(i, a[:1], n, n.args[:1] if isinstance(n, ast.Call) else None)
         owner.actions.append(a[0])
         return None
     return i.unsupported(n, "add_action on a value not known statically")
