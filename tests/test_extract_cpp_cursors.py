@@ -155,3 +155,33 @@ def test_a_nodes_writes_are_asked_once_and_are_a_plain_cursors():
                 (w.whole, w.target.kind, w.at.kind) for w in theirs]
             seen += len(found)
     assert seen >= 6  # total = 0, += v, total = twice(...), total--, box, total = pick
+
+
+def _plain_preorder(plain: Cursor) -> list[bytes]:
+    """The binding's preorder walk of a plain cursor, one visit per node."""
+    found, stack = [], [plain]
+    while stack:
+        cursor = stack.pop()
+        found.append(bytes(cursor))
+        stack.extend(reversed(_plain_children(cursor)))
+    return found
+
+
+def test_a_kept_preorder_is_the_walk_whichever_node_is_walked_first():
+    """``Node.walk_preorder`` keeps each node's preorder and takes a descendant's kept
+    one whole: walked from the leaves up (each node's list made from its children's),
+    from the top down, or twice, every node's walk is the binding's walk of the plain
+    cursor."""
+    for order in ("leaves first", "top first"):
+        tu = _unit()
+        pairs = [pair for top, plain_top in _main_file_code(tu)
+                 for pair in _pairs(top, plain_top)]
+        if order == "leaves first":
+            pairs.reverse()  # (every node after its descendants)
+        for node, plain in pairs:
+            expected = _plain_preorder(plain)
+            assert [bytes(n) for n in node.walk_preorder()] == expected, (order, node.kind)
+            assert [bytes(n) for n in node.walk_preorder()] == expected  # kept
+        walk = next(n for n, _ in pairs if n.kind == CursorKind.FUNCTION_DECL
+                    and n.spelling == "walk")
+        assert len(list(walk.walk_preorder())) > 60

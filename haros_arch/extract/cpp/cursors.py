@@ -637,11 +637,24 @@ class Node(Cursor):
         return iter(self._children)
 
     def walk_preorder(self) -> Iterator[Node]:
-        stack = [self]
+        return iter(self._preorder)
+
+    @cached
+    def _preorder(self) -> list[Node]:
+        """The node and its descendants in preorder, what the binding's
+        ``walk_preorder`` yields, made once: the unit's analyses walk the same bodies
+        and statements again. A descendant walked before gives its own list whole."""
+        found: list[Node] = [self]
+        stack: list[Node] = list(reversed(self._children))
         while stack:
             node = stack.pop()
-            yield node
-            stack.extend(reversed(node._children))
+            below: list[Node] | None = node.__dict__.get("_preorder")
+            if below is not None:
+                found += below
+                continue
+            found.append(node)
+            stack += reversed(node._children)
+        return found
 
     @cached
     def kind(self) -> CursorKind:
