@@ -185,3 +185,35 @@ def test_a_kept_preorder_is_the_walk_whichever_node_is_walked_first():
         walk = next(n for n, _ in pairs if n.kind == CursorKind.FUNCTION_DECL
                     and n.spelling == "walk")
         assert len(list(walk.walk_preorder())) > 60
+
+
+def _plain_last_first(plain: Cursor) -> list[bytes]:
+    """A walk that pops a stack and pushes each cursor's children in order."""
+    found, stack = [], [plain]
+    while stack:
+        cursor = stack.pop()
+        found.append(bytes(cursor))
+        stack.extend(_plain_children(cursor))
+    return found
+
+
+def test_a_kept_last_first_walk_is_the_stack_walk_whichever_node_is_walked_first():
+    """``values._walk`` of a node is its kept ``walk_last_first``, made from a
+    descendant's kept list where there is one: from the leaves up, from the top down,
+    or twice, every node's walk is the stack walk of the plain cursor."""
+    from haros_arch.extract.cpp.values import _walk
+
+    for order in ("leaves first", "top first"):
+        tu = _unit()
+        pairs = [pair for top, plain_top in _main_file_code(tu)
+                 for pair in _pairs(top, plain_top)]
+        if order == "leaves first":
+            pairs.reverse()
+        for node, plain in pairs:
+            expected = _plain_last_first(plain)
+            assert [bytes(n) for n in _walk(node)] == expected, (order, node.kind)
+            assert [bytes(n) for n in _walk(node)] == expected
+            assert [bytes(n) for n in _walk(plain)] == expected  # a plain cursor's walk
+        walk = next(n for n, _ in pairs if n.kind == CursorKind.FUNCTION_DECL
+                    and n.spelling == "walk")
+        assert len(list(_walk(walk))) > 60

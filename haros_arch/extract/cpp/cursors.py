@@ -656,6 +656,26 @@ class Node(Cursor):
             stack += reversed(node._children)
         return found
 
+    def walk_last_first(self) -> Iterator[Node]:
+        """The node, then the walk of each child from the last to the first: the order
+        of a walk that pops a stack and pushes the children in order (``values._walk``),
+        made once per node as ``walk_preorder``'s."""
+        return iter(self._last_first)
+
+    @cached
+    def _last_first(self) -> list[Node]:
+        found: list[Node] = [self]
+        stack: list[Node] = list(self._children)
+        while stack:
+            node = stack.pop()
+            below: list[Node] | None = node.__dict__.get("_last_first")
+            if below is not None:
+                found += below
+                continue
+            found.append(node)
+            stack += node._children
+        return found
+
     @cached
     def kind(self) -> CursorKind:
         return _kind(self._kind_id)  # set when the node is made

@@ -26,7 +26,7 @@ from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind, conf
 from ...ctext import integer_literal
 from ...files import package_files
 from . import api, formats
-from .cursors import _Place
+from .cursors import Node, _Place
 from .expressions import (
     binary_operator,
     first_operand,
@@ -2762,6 +2762,14 @@ def _string_stream(cursor: Cursor) -> Cursor | None:
 
 
 def _walk(cursor: Cursor) -> Iterator[Cursor]:
+    """The cursor, then the walk of each of its children from the last to the first (a
+    unit's node keeps it: ``Node.walk_last_first``)."""
+    if type(cursor) is Node:
+        return cursor.walk_last_first()
+    return _stack_walk(cursor)
+
+
+def _stack_walk(cursor: Cursor) -> Iterator[Cursor]:
     stack = [cursor]
     while stack:
         node = stack.pop()
