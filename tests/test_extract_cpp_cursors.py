@@ -217,3 +217,33 @@ def test_a_kept_last_first_walk_is_the_stack_walk_whichever_node_is_walked_first
         walk = next(n for n, _ in pairs if n.kind == CursorKind.FUNCTION_DECL
                     and n.spelling == "walk")
         assert len(list(_walk(walk))) > 60
+
+
+def test_a_subtrees_writes_are_kept_and_are_a_plain_walks():
+    """``writes.writes_in`` keeps on a node the writes of its whole subtree in preorder:
+    for every node, what a plain cursor's walk gives with ``writes_of`` of each cursor,
+    whether the subtree's nodes were asked before or after."""
+    from haros_arch.extract.cpp.writes import writes_in, writes_of
+
+    source = {NAME: SOURCE.encode()}
+
+    def shape(writes):
+        return [(w.whole, bytes(w.target), bytes(w.at),
+                 None if w.value is None else bytes(w.value)) for w in writes]
+
+    for order in ("leaves first", "top first"):
+        tu = _unit()
+        pairs = [pair for top, plain_top in _main_file_code(tu)
+                 for pair in _pairs(top, plain_top)]
+        if order == "leaves first":
+            pairs.reverse()
+        seen = 0
+        for node, plain in pairs:
+            found = writes_in(node, source)
+            assert writes_in(node, source) is found  # kept, not read again
+            expected = [w for each in Cursor.walk_preorder(plain)
+                        for w in writes_of(each, source)]
+            assert shape(found) == shape(expected), (order, node.kind)
+            assert shape(writes_in(plain, source)) == shape(expected)
+            seen = max(seen, len(found))
+        assert seen >= 5  # walk's total = 0, += v, total = twice(...), total--, box, ...

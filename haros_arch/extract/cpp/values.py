@@ -49,6 +49,7 @@ from .writes import (
     emptied,
     searched_from_node,
     searched_key,
+    writes_in,
     writes_of,
 )
 
@@ -2623,13 +2624,12 @@ def _namespace_kept(decl: Cursor, write: Write, source: dict[str, bytes],
     if index >= len(params):
         return False
     parameter = key_of(params[index])
-    for node in body.walk_preorder():
-        for inner in writes_of(node, source):
-            variable = inner.variable
-            if variable is None or key_of(variable) != parameter:
-                continue
-            if inner.whole or not _namespace_kept(params[index], inner, source, depth + 1):
-                return False
+    for inner in writes_in(body, source):
+        variable = inner.variable
+        if variable is None or key_of(variable) != parameter:
+            continue
+        if inner.whole or not _namespace_kept(params[index], inner, source, depth + 1):
+            return False
     return True
 
 
