@@ -155,3 +155,95 @@ def test_a_nodes_writes_are_asked_once_and_are_a_plain_cursors():
                 (w.whole, w.target.kind, w.at.kind) for w in theirs]
             seen += len(found)
     assert seen >= 6  # total = 0, += v, total = twice(...), total--, box, total = pick
+
+
+def _plain_preorder(plain: Cursor) -> list[bytes]:
+    """The binding's preorder walk of a plain cursor, one visit per node."""
+    found, stack = [], [plain]
+    while stack:
+        cursor = stack.pop()
+        found.append(bytes(cursor))
+        stack.extend(reversed(_plain_children(cursor)))
+    return found
+
+
+def test_a_kept_preorder_is_the_walk_whichever_node_is_walked_first():
+    """``Node.walk_preorder`` keeps each node's preorder and takes a descendant's kept
+    one whole: walked from the leaves up (each node's list made from its children's),
+    from the top down, or twice, every node's walk is the binding's walk of the plain
+    cursor."""
+    for order in ("leaves first", "top first"):
+        tu = _unit()
+        pairs = [pair for top, plain_top in _main_file_code(tu)
+                 for pair in _pairs(top, plain_top)]
+        if order == "leaves first":
+            pairs.reverse()  # (every node after its descendants)
+        for node, plain in pairs:
+            expected = _plain_preorder(plain)
+            assert [bytes(n) for n in node.walk_preorder()] == expected, (order, node.kind)
+            assert [bytes(n) for n in node.walk_preorder()] == expected  # kept
+        walk = next(n for n, _ in pairs if n.kind == CursorKind.FUNCTION_DECL
+                    and n.spelling == "walk")
+        assert len(list(walk.walk_preorder())) > 60
+
+
+def _plain_last_first(plain: Cursor) -> list[bytes]:
+    """A walk that pops a stack and pushes each cursor's children in order."""
+    found, stack = [], [plain]
+    while stack:
+        cursor = stack.pop()
+        found.append(bytes(cursor))
+        stack.extend(_plain_children(cursor))
+    return found
+
+
+def test_a_kept_last_first_walk_is_the_stack_walk_whichever_node_is_walked_first():
+    """``values._walk`` of a node is its kept ``walk_last_first``, made from a
+    descendant's kept list where there is one: from the leaves up, from the top down,
+    or twice, every node's walk is the stack walk of the plain cursor."""
+    from haros_arch.extract.cpp.values import _walk
+
+    for order in ("leaves first", "top first"):
+        tu = _unit()
+        pairs = [pair for top, plain_top in _main_file_code(tu)
+                 for pair in _pairs(top, plain_top)]
+        if order == "leaves first":
+            pairs.reverse()
+        for node, plain in pairs:
+            expected = _plain_last_first(plain)
+            assert [bytes(n) for n in _walk(node)] == expected, (order, node.kind)
+            assert [bytes(n) for n in _walk(node)] == expected
+            assert [bytes(n) for n in _walk(plain)] == expected  # a plain cursor's walk
+        walk = next(n for n, _ in pairs if n.kind == CursorKind.FUNCTION_DECL
+                    and n.spelling == "walk")
+        assert len(list(_walk(walk))) > 60
+
+
+def test_a_subtrees_writes_are_kept_and_are_a_plain_walks():
+    """``writes.writes_in`` keeps on a node the writes of its whole subtree in preorder:
+    for every node, what a plain cursor's walk gives with ``writes_of`` of each cursor,
+    whether the subtree's nodes were asked before or after."""
+    from haros_arch.extract.cpp.writes import writes_in, writes_of
+
+    source = {NAME: SOURCE.encode()}
+
+    def shape(writes):
+        return [(w.whole, bytes(w.target), bytes(w.at),
+                 None if w.value is None else bytes(w.value)) for w in writes]
+
+    for order in ("leaves first", "top first"):
+        tu = _unit()
+        pairs = [pair for top, plain_top in _main_file_code(tu)
+                 for pair in _pairs(top, plain_top)]
+        if order == "leaves first":
+            pairs.reverse()
+        seen = 0
+        for node, plain in pairs:
+            found = writes_in(node, source)
+            assert writes_in(node, source) is found  # kept, not read again
+            expected = [w for each in Cursor.walk_preorder(plain)
+                        for w in writes_of(each, source)]
+            assert shape(found) == shape(expected), (order, node.kind)
+            assert shape(writes_in(plain, source)) == shape(expected)
+            seen = max(seen, len(found))
+        assert seen >= 5  # walk's total = 0, += v, total = twice(...), total--, box, ...

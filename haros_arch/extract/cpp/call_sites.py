@@ -34,7 +34,7 @@ from .values import (
     render,
     written_arguments,
 )
-from .writes import Write, default_constructed, out_argument, parameter_callback, writes_of
+from .writes import Write, default_constructed, out_argument, parameter_callback, writes_in
 
 _CALLABLE = frozenset({CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD, CursorKind.CONSTRUCTOR,
                        CursorKind.FUNCTION_TEMPLATE})
@@ -497,10 +497,9 @@ class CallSites:
             if function.kind in skipped or not _may_name(
                     function, spelling, self.source) or parameter_callback(function):
                 continue
-            for node in function.walk_preorder():
-                for write in writes_of(node, self.source):
-                    if write.variable is not None and key_of(write.variable) == found:
-                        yield write
+            for write in writes_in(function, self.source):
+                if write.variable is not None and key_of(write.variable) == found:
+                    yield write
 
     def whole_records(self) -> set[tuple[str, int]]:
         """The classes (their canonical declarations' places) of which a function of this
@@ -521,11 +520,10 @@ class CallSites:
                 if child.kind == CursorKind.MEMBER_REF and child.referenced is not None and (
                         not default_constructed(value)):
                     _note_record(child.referenced.type, found)
-            for node in function.walk_preorder():
-                for write in writes_of(node, self.source):
-                    if write.whole and write.value is not None and (
-                            write.target.kind != CursorKind.VAR_DECL):
-                        _note_record(write.target.type, found)
+            for write in writes_in(function, self.source):
+                if write.whole and write.value is not None and (
+                        write.target.kind != CursorKind.VAR_DECL):
+                    _note_record(write.target.type, found)
         self._whole = found
         return found
 
@@ -1605,13 +1603,12 @@ def _written(field: Cursor, definition: Cursor, constructor: bool,
                 return children[i + 1]
             null = children[i + 1]
             break
-    for node in definition.walk_preorder():
-        for write in writes_of(node, source):
-            target, value = write.target, write.value
-            if write.whole and value is not None and (
-                target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced == field
-            ) and (constructor or not uses_parameter(value)):
-                return value
+    for write in writes_in(definition, source):
+        target, value = write.target, write.value
+        if write.whole and value is not None and (
+            target.kind == CursorKind.MEMBER_REF_EXPR and target.referenced == field
+        ) and (constructor or not uses_parameter(value)):
+            return value
     return null
 
 
@@ -1639,7 +1636,7 @@ def _filled(field: Cursor, body: Cursor, source: dict[str, bytes]) -> bool:
         return False
     return any(write.variable is not None and write.variable == field
                and out_argument(write)
-               for node in body.walk_preorder() for write in writes_of(node, source))
+               for write in writes_in(body, source))
 
 
 # the ROS API's reads of a parameter into a variable given by reference (roscpp's handle

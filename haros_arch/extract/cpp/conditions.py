@@ -313,7 +313,7 @@ class ConditionReader:
         return true;`` before ``current_bt_file_or_id_ = file_or_id``). The first run
         goes past it, so what follows is made."""
         from .members import member_of
-        from .writes import writes_of
+        from .writes import writes_in
 
         members = {member_of(node) for node in tested.walk_preorder()
                    if node.kind == CursorKind.MEMBER_REF_EXPR}
@@ -323,8 +323,7 @@ class ConditionReader:
         if not members:
             return False
         return any(write.whole and member_of(write.target) in members
-                   for statement in rest for found in statement.walk_preorder()
-                   for write in writes_of(found, self.source))
+                   for statement in rest for write in writes_in(statement, self.source))
 
     def required(self, node: Cursor, children: list[Cursor], presence: bool = True
                  ) -> tuple[str, Cursor] | None:
@@ -375,7 +374,7 @@ class ConditionReader:
         member): its block runs the first time the function does (ROS 1 planners'
         ``initialize``, which their host calls once), so what it makes is made."""
         from .members import _negates, member_of
-        from .writes import writes_of
+        from .writes import writes_in
 
         test = strip(tested)
         if test.kind != CursorKind.UNARY_OPERATOR or not _negates(test, self.source):
@@ -384,11 +383,10 @@ class ConditionReader:
         flag = _flag(strip(operands[0])) if len(operands) == 1 else None
         if flag is None:
             return False
-        for node in then.walk_preorder():
-            for write in writes_of(node, self.source):
-                if write.whole and write.value is not None and _true(write.value) \
-                        and member_of(write.target) == flag:
-                    return True
+        for write in writes_in(then, self.source):
+            if write.whole and write.value is not None and _true(write.value) \
+                    and member_of(write.target) == flag:
+                return True
         return False
 
     def _switch_body(self, body: Cursor, switch: Condition) -> list[Branch]:

@@ -637,11 +637,44 @@ class Node(Cursor):
         return iter(self._children)
 
     def walk_preorder(self) -> Iterator[Node]:
-        stack = [self]
+        return iter(self._preorder)
+
+    @cached
+    def _preorder(self) -> list[Node]:
+        """The node and its descendants in preorder, what the binding's
+        ``walk_preorder`` yields, made once: the unit's analyses walk the same bodies
+        and statements again. A descendant walked before gives its own list whole."""
+        found: list[Node] = [self]
+        stack: list[Node] = list(reversed(self._children))
         while stack:
             node = stack.pop()
-            yield node
-            stack.extend(reversed(node._children))
+            below: list[Node] | None = node.__dict__.get("_preorder")
+            if below is not None:
+                found += below
+                continue
+            found.append(node)
+            stack += reversed(node._children)
+        return found
+
+    def walk_last_first(self) -> Iterator[Node]:
+        """The node, then the walk of each child from the last to the first: the order
+        of a walk that pops a stack and pushes the children in order (``values._walk``),
+        made once per node as ``walk_preorder``'s."""
+        return iter(self._last_first)
+
+    @cached
+    def _last_first(self) -> list[Node]:
+        found: list[Node] = [self]
+        stack: list[Node] = list(self._children)
+        while stack:
+            node = stack.pop()
+            below: list[Node] | None = node.__dict__.get("_last_first")
+            if below is not None:
+                found += below
+                continue
+            found.append(node)
+            stack += node._children
+        return found
 
     @cached
     def kind(self) -> CursorKind:

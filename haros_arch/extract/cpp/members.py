@@ -280,6 +280,8 @@ class MemberWrites:
             names = {name for _, name in pending.values()}
             if own is not None:
                 names.add(own[2])
+            elif not names:
+                continue  # no write pending, none made: nothing its reads could change
             reads = self._reads(own[1] if own is not None else statement, names)
             if reads is None:
                 pending.clear()

@@ -26,7 +26,7 @@ from clang.cindex import Cursor, CursorKind, SourceLocation, TypeKind, conf
 from ...ctext import integer_literal
 from ...files import package_files
 from . import api, formats
-from .cursors import _Place
+from .cursors import Node, _Place
 from .expressions import (
     binary_operator,
     first_operand,
@@ -49,6 +49,7 @@ from .writes import (
     emptied,
     searched_from_node,
     searched_key,
+    writes_in,
     writes_of,
 )
 
@@ -2626,13 +2627,12 @@ def _namespace_kept(decl: Cursor, write: Write, source: dict[str, bytes],
     if index >= len(params):
         return False
     parameter = key_of(params[index])
-    for node in body.walk_preorder():
-        for inner in writes_of(node, source):
-            variable = inner.variable
-            if variable is None or key_of(variable) != parameter:
-                continue
-            if inner.whole or not _namespace_kept(params[index], inner, source, depth + 1):
-                return False
+    for inner in writes_in(body, source):
+        variable = inner.variable
+        if variable is None or key_of(variable) != parameter:
+            continue
+        if inner.whole or not _namespace_kept(params[index], inner, source, depth + 1):
+            return False
     return True
 
 
@@ -2765,6 +2765,14 @@ def _string_stream(cursor: Cursor) -> Cursor | None:
 
 
 def _walk(cursor: Cursor) -> Iterator[Cursor]:
+    """The cursor, then the walk of each of its children from the last to the first (a
+    unit's node keeps it: ``Node.walk_last_first``)."""
+    if type(cursor) is Node:
+        return cursor.walk_last_first()
+    return _stack_walk(cursor)
+
+
+def _stack_walk(cursor: Cursor) -> Iterator[Cursor]:
     stack = [cursor]
     while stack:
         node = stack.pop()

@@ -309,13 +309,17 @@ class Wrappers:
                                      if c.spelling in wanted]
                  for f in functions}
         todo = functions
+        # the calls of each function read in this round: every one at first, then those
+        # that call a function whose summary changed (a call of another gives what it
+        # gave before: its rows are the same)
+        read = calls
         for _round in range(MAX_DEPTH):
             changed: set[Key] = set()
             for function in todo:
                 key = _key(function.canonical)
                 if key in self._recursive:
                     continue
-                for call in calls[key]:
+                for call in read[key]:
                     if self._summarise(function, key, call):
                         changed.add(key)
                 delegation = self._delegations.get(key)
@@ -330,13 +334,14 @@ class Wrappers:
             if not changed:
                 break
             # the functions that call one that changed are read again
-            todo = [f for f in functions if any(
-                self._calls_one_of(call, changed) for call in calls[_key(f.canonical)])
-                or (_key(f.canonical) in self._delegations and any(
-                    k in changed for k in self._delegated(f, self._delegations[
-                        _key(f.canonical)])))
-                or any(base in changed for _, base, _ in self._base_inits.get(
-                    _key(f.canonical), ()))]
+            read = {key: [call for call in each if self._calls_one_of(call, changed)]
+                    for key, each in calls.items()}
+            todo = [f for f in functions if read[_key(f.canonical)]
+                    or (_key(f.canonical) in self._delegations and any(
+                        k in changed for k in self._delegated(f, self._delegations[
+                            _key(f.canonical)])))
+                    or any(base in changed for _, base, _ in self._base_inits.get(
+                        _key(f.canonical), ()))]
         # a recursive function is no wrapper, nor is one made through it; a class
         # template's constructor is one only where the construction gives the type (its
         # other calls stay in it, named by what its callers pass: call_sites, links), or

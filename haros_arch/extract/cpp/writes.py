@@ -67,6 +67,21 @@ def writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
     return found
 
 
+def writes_in(node: Cursor, source: dict[str, bytes]) -> list[Write]:
+    """The writes of ``node``'s subtree, in the order of its ``walk_preorder`` (each
+    node's ``writes_of`` in turn); a unit's node keeps them (a constructor's body is
+    read again for each member, a function's for each field), a list not to be
+    changed."""
+    if type(node) is not Node:
+        return [write for each in node.walk_preorder() for write in writes_of(each, source)]
+    facts = node.__dict__
+    found: list[Write] | None = facts.get("_writes_in")
+    if found is None:
+        found = facts["_writes_in"] = [write for each in node.walk_preorder()
+                                       for write in writes_of(each, source)]
+    return found
+
+
 def _writes_of(node: Cursor, source: dict[str, bytes]) -> list[Write]:
     kind = node.kind
     if kind == CursorKind.VAR_DECL:
