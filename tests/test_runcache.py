@@ -134,6 +134,19 @@ def test_the_findings_of_a_kept_run_are_kept_with_it(tmp_path: Path, monkeypatch
     assert check(uncached, spec).findings == first and calls == [1, 1]
 
 
+def _count_decodes(monkeypatch) -> list[int]:
+    """One item per kept model decoded from here on."""
+    decoded: list[int] = []
+    real = runcache.from_data
+
+    def counted(data):
+        decoded.append(1)
+        return real(data)
+
+    monkeypatch.setattr(runcache, "from_data", counted)
+    return decoded
+
+
 def test_a_kept_run_checked_again_decodes_no_model(tmp_path: Path, monkeypatch) -> None:
     # (issue 24) check's findings and diagnostics are kept with the run: a re-run with
     # nothing changed reads them back and never decodes the kept model (half of such a
@@ -144,14 +157,7 @@ def test_a_kept_run_checked_again_decodes_no_model(tmp_path: Path, monkeypatch) 
     options = Options(cache_dir=str(tmp_path / "cache"), jobs=1)
     spec = load(str(project))
     first = check(analyse(spec, {}, options), spec)
-    decoded: list[int] = []
-    real = runcache.from_data
-
-    def counted(data):
-        decoded.append(1)
-        return real(data)
-
-    monkeypatch.setattr(runcache, "from_data", counted)
+    decoded = _count_decodes(monkeypatch)
     again = analyse(spec, {}, options)
     checked = check(again, spec)
     assert (checked.findings, checked.diagnostics) == (first.findings, first.diagnostics)
@@ -714,14 +720,7 @@ def test_an_unchanged_runs_extract_summary_decodes_no_model(tmp_path: Path, monk
     assert main(["extract", str(project), "-o", str(tmp_path / "a.json")]) == 0
     first = capsys.readouterr().out
     assert "configuration" in first and "wrote" in first
-    decoded: list[int] = []
-    real = runcache.from_data
-
-    def counted(data):
-        decoded.append(1)
-        return real(data)
-
-    monkeypatch.setattr(runcache, "from_data", counted)
+    decoded = _count_decodes(monkeypatch)
     assert main(["extract", str(project), "-o", str(tmp_path / "b.json")]) == 0
     again = capsys.readouterr().out
     assert decoded == [] and again == first.replace("a.json", "b.json")

@@ -643,18 +643,8 @@ class Node(Cursor):
     def _preorder(self) -> list[Node]:
         """The node and its descendants in preorder, what the binding's
         ``walk_preorder`` yields, made once: the unit's analyses walk the same bodies
-        and statements again. A descendant walked before gives its own list whole."""
-        found: list[Node] = [self]
-        stack: list[Node] = list(reversed(self._children))
-        while stack:
-            node = stack.pop()
-            below: list[Node] | None = node.__dict__.get("_preorder")
-            if below is not None:
-                found += below
-                continue
-            found.append(node)
-            stack += reversed(node._children)
-        return found
+        and statements again."""
+        return self._kept_walk("_preorder", first_to_last=True)
 
     def walk_last_first(self) -> Iterator[Node]:
         """The node, then the walk of each child from the last to the first: the order
@@ -664,16 +654,23 @@ class Node(Cursor):
 
     @cached
     def _last_first(self) -> list[Node]:
+        return self._kept_walk("_last_first", first_to_last=False)
+
+    def _kept_walk(self, kept: str, first_to_last: bool) -> list[Node]:
+        """The node, then each child's walk, the children taken first to last or last
+        to first; a descendant walked so before (its list kept as ``kept``) gives its
+        list whole."""
         found: list[Node] = [self]
-        stack: list[Node] = list(self._children)
+        stack: list[Node] = list(reversed(self._children) if first_to_last
+                                 else self._children)
         while stack:
             node = stack.pop()
-            below: list[Node] | None = node.__dict__.get("_last_first")
+            below: list[Node] | None = node.__dict__.get(kept)
             if below is not None:
                 found += below
                 continue
             found.append(node)
-            stack += node._children
+            stack += reversed(node._children) if first_to_last else node._children
         return found
 
     @cached
