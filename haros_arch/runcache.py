@@ -460,8 +460,8 @@ def summary(model: Model, verbose: bool, compute: Callable[[], list[str]]) -> li
 
 
 def store(folder: str, key: str, model: Model) -> None:
-    """Keep ``model`` under ``key`` when it reads back as it is, and only the newest
-    ``KEEP`` entries."""
+    """Keep ``model`` under ``key`` when it reads back as it is, then prune the cache
+    folder (``_prune``)."""
     with held_back():  # the model's data, and the model it reads back as, live on
         data = model_to_data(model)
         # in the model's own order: read back, its documents list every field and key

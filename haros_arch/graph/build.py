@@ -1405,23 +1405,20 @@ def _parameter_value(written: str, default: str | None, instance: NodeInstance,
     ``f'vehicle/servos/{self._torpedo_servo}/target_position'``)."""
     if written.startswith(ROS_ARGUMENT):  # ros::getROSArg's ``key:=value`` word
         return ros_argument(instance, written[len(ROS_ARGUMENT):])
-    source = _node_scoped(written) if instance.ros_version == 2 else written
-    param_name = RosName.make(source, instance.namespace, instance.name).full
-    own = _OWN_VALUES.get(instance, {}).get(param_name)
-    param = resources.by_name.get((Parameter, param_name)) if own is None else None
-    if own is not None and (isinstance(own.value, str) or own.value is None):
-        return own.value  # its own, not another node's of the same name
-    if own is not None and integers and type(own.value) is int:
-        return str(own.value)
-    if isinstance(param, Parameter) and param.set_by_launch:
-        if isinstance(param.value, str):
-            return param.value
-        if integers and type(param.value) is int:
-            return str(param.value)
-        if param.value is None:
-            return None
+    found, value = _set_value(written, instance, resources)
+    if found and (isinstance(value, str) or value is None):
+        return value
+    if found and integers and type(value) is int:
+        return str(value)
     # the node sets it itself from its command-line arguments
-    return _argument_values(instance).get(param_name, default)
+    return _argument_values(instance).get(_parameter_name(written, instance), default)
+
+
+def _parameter_name(written: str, instance: NodeInstance) -> str:
+    """The full name of the instance's parameter ``written`` (as the code names it: a
+    list parameter a loop goes over, too)."""
+    source = _node_scoped(written) if instance.ros_version == 2 else written
+    return RosName.make(source, instance.namespace, instance.name).full
 
 
 def _made_under(node: Node | None, own: str | None) -> tuple[Condition, ...]:
@@ -1493,7 +1490,7 @@ def element_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
         return _kept_calls(call, instance)
     if call.name_each is None or call.name_param is None:
         return _element_turns(call, instance, resources)
-    full = _list_name(call.name_param, instance)
+    full = _parameter_name(call.name_param, instance)
     if call.name_each == NUMBERED:
         return _numbered_calls(call, full, resources)
     param = resources.by_name.get((Parameter, full))
@@ -1602,7 +1599,7 @@ def _member_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
     head, mark, rest = call.name.partition("/" + UNKNOWN_MARK)
     if not mark or not head or head == "~" or (rest and not rest.startswith("/")):
         return None
-    full = _list_name(head, instance).rstrip("/")
+    full = _parameter_name(head, instance).rstrip("/")
     param = resources.by_name.get((Parameter, full))
     value = param.value if isinstance(param, Parameter) and param.set_by_launch else None
     if value is not None:
@@ -1622,12 +1619,6 @@ def _member_calls(call: PrimitiveCall, instance: NodeInstance, resources: Resour
             if key and "/" not in key and UNKNOWN_MARK not in key]
 
 
-def _list_name(param: str, instance: NodeInstance) -> str:
-    """The full name of the list parameter a call's code names ``param``."""
-    source = _node_scoped(param) if instance.ros_version == 2 else param
-    return RosName.make(source, instance.namespace, instance.name).full
-
-
 def _list_elements(call: PrimitiveCall, instance: NodeInstance, resources: Resources,
                    full: str) -> list[Any] | None:
     """The elements of the list parameter ``full`` in this configuration: the launch
@@ -1641,7 +1632,7 @@ def _list_elements(call: PrimitiveCall, instance: NodeInstance, resources: Resou
         return None
     if value is None:
         value = _dotted_groups(full, resources, "." if instance.ros_version == 2 else "/")
-    if value is None and call.name_param is not None and _list_name(
+    if value is None and call.name_param is not None and _parameter_name(
             call.name_param, instance) == full:
         value = _code_default(call, instance, list)
     elements = list(value.values()) if isinstance(value, dict) else value
@@ -1686,7 +1677,7 @@ def _element_turns(call: PrimitiveCall, instance: NodeInstance, resources: Resou
     if len(lists) != 1:
         return [call]
     listed = lists.pop()
-    full = _list_name(listed, instance)
+    full = _parameter_name(listed, instance)
     elements = _list_elements(call, instance, resources, full)
     if elements is None:
         return [call]
@@ -1792,10 +1783,9 @@ def _set_value(written: str, instance: NodeInstance, resources: Resources
     known statically, an argument nobody gave)."""
     if written.startswith(ROS_ARGUMENT):
         return False, None
-    source = _node_scoped(written) if instance.ros_version == 2 else written
-    param_name = RosName.make(source, instance.namespace, instance.name).full
+    param_name = _parameter_name(written, instance)
     own = _OWN_VALUES.get(instance, {}).get(param_name)
-    if own is not None:
+    if own is not None:  # its own, not another node's of the same name
         return True, own.value
     param = resources.by_name.get((Parameter, param_name))
     if isinstance(param, Parameter) and param.set_by_launch:
