@@ -712,6 +712,7 @@ def _models_metapackages(args: argparse.Namespace, out: Console, err: Console) -
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     from .autoproject import select
+    from .runcache import background
 
     if any(":=" not in a for a in getattr(args, "arg", [])) and args.command != "launch":
         print("haros-arch: --arg takes NAME:=VALUE", file=sys.stderr)
@@ -727,7 +728,9 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "launch": cmd_launch, "query": cmd_query, "init": cmd_init,
                 "models": cmd_models, "diff": cmd_diff}
     try:
-        with stop_signals():  # stopped, the run still removes its temporary folders
+        # stopped, the run still removes its temporary folders; a run's model is kept
+        # in the cache while the command goes on (``runcache.background``)
+        with stop_signals(), background():
             return handlers[args.command](args, out, err)
     except KeyboardInterrupt:
         return 130

@@ -34,7 +34,9 @@ import copy
 import hashlib
 import json
 import os
+import signal
 import stat
+import sys
 import time
 import weakref
 from collections.abc import Callable, Iterable, Iterator, Mapping
@@ -238,6 +240,7 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
             compile_commands: Iterable[str]) -> tuple[str, str] | None:
     """The key of a run of ``project``, and its outer key (C++ files by name only, not
     content); None when its files are too many to snapshot."""
+    settled()
     snap = _snapshot(folder, project.workspace)
     group = _group(project.workspace)
     try:
@@ -327,6 +330,7 @@ def kept(folder: str, kind: str, roots: Iterable[str], env: Mapping[str, str],
     can be made: the choice of configurations for a folder without a project file,
     which loads every launch file of the workspace (``autoproject.root_launch_files``),
     is most of a no-change re-run of such a folder."""
+    settled()
     roots = list(roots)
     snap = _snapshot(folder, roots)
     for root in installed_roots(env):
@@ -422,6 +426,7 @@ def _model_text(content: bytes) -> bytes | None:
 def load(folder: str, key: str, project: str = "") -> Model | None:
     """The model kept under ``key`` (``project``: its name), decoded when first used
     (``KeptModel``); None when there is none, or its entry is not as it was written."""
+    settled()
     try:
         with open(_entry(folder, key), "rb") as handle:
             content = handle.read()
@@ -459,9 +464,81 @@ def summary(model: Model, verbose: bool, compute: Callable[[], list[str]]) -> li
                      lambda data: [str(line) for line in data])
 
 
+# within ``background``: the stores still writing, forked processes (their ids)
+_BACKGROUND: list[list[int]] = []
+
+
+@contextlib.contextmanager
+def background() -> Iterator[None]:
+    """Within the block, a run's model is kept by a forked copy of this process (its
+    serialisation and read-back check, seconds on a large workspace) while the command
+    goes on with what it does with the model (queries, a report, a document) on the
+    other processor; every store has ended when the block is left, so the cache is as
+    a store in line leaves it. Where the process cannot fork (not Linux), a store is
+    made in line. A stop (Ctrl-C, SIGTERM) ends the stores under way: an entry is
+    written whole or not at all."""
+    pending: list[int] = []
+    _BACKGROUND.append(pending)
+    stopped = True
+    try:
+        yield
+        stopped = False
+    finally:
+        _BACKGROUND.remove(pending)
+        _settle(pending, stop=stopped)
+
+
+def _settle(pending: list[int], stop: bool = False) -> None:
+    """Wait for the stores ``pending`` (ended first with SIGTERM when ``stop``)."""
+    while pending:
+        pid = pending.pop()
+        if stop:
+            with contextlib.suppress(OSError):
+                os.kill(pid, signal.SIGTERM)
+        while True:
+            try:
+                os.waitpid(pid, 0)
+            except InterruptedError:
+                continue
+            except ChildProcessError:
+                pass
+            break
+
+
+def settled() -> None:
+    """Wait for the stores under way (before reading the cache folder: a run of the
+    same process after one whose store was forked reads what it wrote)."""
+    for pending in _BACKGROUND:
+        _settle(pending)
+
+
 def store(folder: str, key: str, model: Model) -> None:
     """Keep ``model`` under ``key`` when it reads back as it is, then prune the cache
-    folder (``_prune``)."""
+    folder (``_prune``); within ``background``, from a forked process (the model as it is
+    now, whatever this process does with it after)."""
+    if _BACKGROUND and hasattr(os, "fork") and sys.platform.startswith("linux"):
+        settled()
+        try:
+            pid = os.fork()
+        except OSError:
+            pid = -1  # no process to spare: in line
+        if pid == 0:  # the copy: keep the model and end, running no exit handler of the run
+            code = 1
+            try:
+                _store(folder, key, model)
+                code = 0
+            finally:
+                os._exit(code)
+        if pid > 0:
+            _BACKGROUND[-1].append(pid)
+            # the run's findings, document or page are kept with it (``_with_run``); if
+            # the model turns out not to read back, they are kept for a run that is not
+            _KEPT[model] = (folder, key)
+            return
+    _store(folder, key, model)
+
+
+def _store(folder: str, key: str, model: Model) -> None:
     with held_back():  # the model's data, and the model it reads back as, live on
         data = model_to_data(model)
         # in the model's own order: read back, its documents list every field and key
@@ -509,6 +586,7 @@ def findings(model: Model, inputs: str, compute: Callable[[], list[Finding]]
              ) -> list[Finding]:
     """The findings of a kept model's run under ``inputs`` (the rules and roots, as
     text): read back when that model's run gave them before, else computed and kept."""
+    settled()
     from .diff import finding_from_data
 
     return _with_run(model, "findings", inputs, compute, to_data,
