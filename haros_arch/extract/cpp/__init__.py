@@ -59,7 +59,7 @@ from . import (
 )
 from .conditions import fewest
 from .cursors import child_spellings, in_standin, namespace_blocks
-from .headers import FALLBACK, QT, STANDIN, IncludeSetup
+from .headers import FALLBACK, QT, STANDIN, IncludeSetup, without_pch
 from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names, owner_of
@@ -2821,9 +2821,19 @@ def _parse_once(path: str, args: list[str], unsaved: list[tuple[str, str]],
         return toolchain.index().parse(path, args=args, unsaved_files=unsaved,
                                        options=options)
     except TranslationUnitLoadError as err:
-        result.diagnostics.append(diag.make(
-            "CPP_PARSE_FAILED", workspace.location(path), detail=str(err) or "libclang"))
-        return None
+        failed = err
+    # a precompiled prelude libclang cannot read fails every parse that names it, the
+    # unit's own code aside: once more with the prelude's header
+    plain = without_pch(args)
+    if plain is not None:
+        try:
+            return toolchain.index().parse(path, args=plain, unsaved_files=unsaved,
+                                           options=options)
+        except TranslationUnitLoadError as err:
+            failed = err
+    result.diagnostics.append(diag.make(
+        "CPP_PARSE_FAILED", workspace.location(path), detail=str(failed) or "libclang"))
+    return None
 
 
 def _synthesise(path: str, tu: TranslationUnit, args: list[str],

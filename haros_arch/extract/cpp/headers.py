@@ -1383,7 +1383,11 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
     key = tuple(flags)
     with _PCH_LOCK:
         if key in _PCH:
-            return _PCH[key]
+            made = _PCH[key]
+            # a file gone since (a cleaner of the temporary folder, the run still going)
+            # is made again: libclang refuses every unit that names it
+            if made is None or os.path.isfile(made):
+                return made
         folder = tempfile.mkdtemp(prefix="haros-arch-pch-")
         # removed when this process ends, a pool's worker too (``atexit`` handlers do
         # not run there: ``models build --jobs`` left one folder per worker)
@@ -1405,6 +1409,20 @@ def precompiled_prelude(flags: Sequence[str]) -> str | None:
             path = None
         _PCH[key] = path
         return path
+
+
+def without_pch(args: list[str]) -> list[str] | None:
+    """``args`` with the precompiled prelude they name (``-include-pch``) read from its
+    header instead, the same declarations, for a parse libclang refused: a precompiled
+    file cut short (a full disk) or removed while the run goes on, which is forgotten so
+    that the next unit's is made again; None when they name none."""
+    if "-include-pch" not in args[:-1]:
+        return None
+    at = args.index("-include-pch")
+    with _PCH_LOCK:
+        for key in [k for k, made in _PCH.items() if made == args[at + 1]]:
+            del _PCH[key]
+    return [*args[:at], "-include", PRELUDE, *args[at + 2:]]
 
 
 def _fallback_file(header: str) -> str | None:
