@@ -48,7 +48,9 @@ from ..pipeline import distro_variables, read_build_files, without_deferred
 from ..plugins.behavior_trees import package_model_data
 from ..processes import worker_pool
 from ..workspace import scan
+from .attach import ros_of
 from .format import InterfaceModel, dumps
+from .launch_files import package_launch_data
 
 OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides")
 COMMIT = re.compile(r"^[0-9a-f]{40}$")
@@ -229,6 +231,11 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     # of another package without source runs them (nav2's bt_navigator and
     # nav2_behavior_tree's nodes)
     model.bt_libraries, model.bt_trees = package_model_data(task.package, workspace)
+    # a ROS 1 package's launch files and the parameter files they load from it: an
+    # include of one from a workspace reads them (``launch_files``)
+    if ros_of(task.entry.distro) == 1:
+        model.launch_files, model.param_files = package_launch_data(task.package,
+                                                                    package.root)
     outcome.text = _tree_relative(dumps(model), (task.tree, *task.context))
     outcome.nodes = [n.executable for n in package.nodes]
     outcome.calls = sum(len(n.calls) for n in package.nodes)
