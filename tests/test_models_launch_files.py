@@ -64,6 +64,7 @@ def _model(tmp_path) -> dict:
                     str(tmp_path / "no_overrides"), cache_dir=None)
     outcome = build_package(task)
     assert outcome.problem is None and outcome.text is not None
+    assert outcome.files == (2, 1)  # what the build's report says it kept
     return json.loads(outcome.text)
 
 
@@ -146,3 +147,37 @@ def test_a_model_without_launch_files_leaves_the_include_unread(tmp_path, write_
     assert "/sim/server" not in {n.name for n in config.nodes}
     assert any(d.code == "LAUNCH_UNKNOWN_VALUE" and "sim_pkg" in d.message
                for d in config.diagnostics)
+
+
+def test_the_shipped_noetic_launch_models_start_gazebo_and_mavros(write_tree):
+    """gazebo_ros' empty_world.launch and mavros' px4.launch -> node.launch, from the
+    shipped noetic models: the gazebo node with /use_sim_time, mavros' node with the
+    plugin lists and configuration of px4_pluginlists.yaml / px4_config.yaml."""
+    root = write_tree({
+        "src/app/package.xml": package_xml("app"),
+        "src/app/launch/sim.launch": (
+            "<launch>\n"
+            "  <include file=\"$(find gazebo_ros)/launch/empty_world.launch\">\n"
+            "    <arg name=\"gui\" value=\"false\"/>\n"
+            "  </include>\n"
+            "  <include file=\"$(find mavros)/launch/px4.launch\">\n"
+            "    <arg name=\"fcu_url\" value=\"udp://:14540@127.0.0.1:14557\"/>\n"
+            "  </include>\n"
+            "</launch>\n"),
+        "project.yaml": ("project: p\nworkspace: src\ndistro: noetic\n"
+                         "configurations:\n  c: [app/launch/sim.launch]\n"),
+    })
+    (config,) = analyse(load(str(root / "project.yaml")), {},
+                        Options(cache_dir=None, jobs=1)).configurations
+    nodes = {n.name: n for n in config.nodes}
+    assert nodes["/gazebo"].node is not None
+    assert nodes["/gazebo"].node.name == "gazebo_ros/gzserver"
+    assert nodes["/mavros"].node is not None
+    assert nodes["/mavros"].node.name == "mavros/mavros_node"
+    assert "/gazebo_gui" not in nodes
+    params = {p.name: p.value for p in config.parameters}
+    assert params["/use_sim_time"] is True
+    assert params["/mavros/fcu_url"] == "udp://:14540@127.0.0.1:14557"
+    assert "safety_area" in params["/mavros/plugin_blacklist"]
+    assert params["/mavros/conn/heartbeat_rate"] == 1.0
+    assert not [d for d in config.diagnostics if d.code == "LAUNCH_UNKNOWN_VALUE"]

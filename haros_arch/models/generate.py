@@ -121,6 +121,7 @@ class Outcome:
     partial: dict[str, list[str]] = field(default_factory=dict)
     problem: str | None = None
     override_problems: list[str] = field(default_factory=list)
+    files: tuple[int, int] | None = None  # ROS 1: launch files and parameter files kept
 
 
 def read_list(path: str) -> list[Entry]:
@@ -236,6 +237,7 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     if ros_of(task.entry.distro) == 1:
         model.launch_files, model.param_files = package_launch_data(task.package,
                                                                     package.root)
+        outcome.files = (len(model.launch_files), len(model.param_files))
     outcome.text = _tree_relative(dumps(model), (task.tree, *task.context))
     outcome.nodes = [n.executable for n in package.nodes]
     outcome.calls = sum(len(n.calls) for n in package.nodes)
@@ -497,8 +499,10 @@ def report(outcomes: Iterable[Outcome], say: Callable[[str], Any]) -> None:
             say(f"{name}: not modelled: {outcome.problem}")
             continue
         state = f"{len(outcome.partial)} partial" if outcome.partial else "complete"
+        files = (f", {outcome.files[0]} launch files, {outcome.files[1]} parameter files"
+                 if outcome.files is not None else "")
         say(f"{name}: {len(outcome.nodes)} nodes, {outcome.calls} calls, "
-            f"{outcome.unresolved} names unknown statically, {state}")
+            f"{outcome.unresolved} names unknown statically, {state}{files}")
         for problem in outcome.override_problems:
             say(f"    override not used: {problem}")
         for node, reasons in outcome.partial.items():
