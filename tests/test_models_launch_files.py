@@ -6,7 +6,6 @@ it loads from its package, placed at the model's upstream file and line."""
 from __future__ import annotations
 
 import json
-import os
 
 from conftest import package_xml
 
