@@ -37,6 +37,8 @@ INNER = """\
 <launch>
   <arg name="rate"/>
   <param name="/sim/rate" value="$(arg rate)"/>
+  <rosparam ns="sub" file="$(find sim_pkg)/config/subst.yaml" subst_value="true"/>
+  <param name="/sim/text" textfile="$(find sim_pkg)/config/server.yaml"/>
 </launch>
 """
 SERVER_YAML = "update_rate: 100\nphysics:\n  gravity: -9.8\n"
@@ -56,6 +58,8 @@ def _model(tmp_path) -> dict:
     (tree / "launch" / "notes.xml").write_text("<launch/>\n")  # not a launch file name
     (tree / "config" / "server.yaml").write_text(SERVER_YAML)
     (tree / "config" / "unused.yaml").write_text("x: 1\n")  # no launch file loads it
+    # a substitution: subst_value would change what it sets, so it is not kept
+    (tree / "config" / "subst.yaml").write_text("rate: $(arg rate)\n")
     listed = tmp_path / "list.yaml"
     listed.write_text(f"- repository: github:example/sim\n  commit: {COMMIT}\n"
                       "  distro: noetic\n  packages: [sim_pkg]\n")
@@ -128,7 +132,12 @@ def test_an_include_of_a_modelled_launch_file_starts_its_nodes(tmp_path, write_t
     assert (where.file, where.line) == (
         "github:example/sim@01234567/sim_pkg/config/server.yaml", 3)
     assert params["/sim/rate"].value == 5  # the modelled include's include
-    assert not [d for d in config.diagnostics if d.code == "LAUNCH_UNKNOWN_VALUE"]
+    # a parameter file the model does not keep, and one it keeps parsed, not as text:
+    # not known, said at the modelled line; the namespace loaded may hold anything
+    inner = "github:example/sim@01234567/sim_pkg/launch/inner.launch"
+    assert sorted((d.location.file, d.location.line) for d in config.diagnostics
+                  if d.code == "LAUNCH_UNKNOWN_VALUE") == [(inner, 4), (inner, 5)]
+    assert "/sub/?" in params and params["/sim/text"].value is None
 
 
 def test_a_file_the_model_does_not_hold_stays_unknown(tmp_path, write_tree):

@@ -226,10 +226,6 @@ class ModelledFiles:
         model, rel = found
         return Location(None, upstream(model, rel), line)
 
-    def label(self, path: str) -> str:
-        found = self.owner(path)
-        return found[0].label if found else ""
-
 
 def upstream(model: InterfaceModel, rel: str) -> str:
     """``github:owner/name@commit/path``: a file of the model's package upstream."""

@@ -156,12 +156,10 @@ class Ros1Loader:
     def unheld(self, path: str) -> str | None:
         """Why a file of a modelled package's folder (``$(find pkg)`` of a package not
         here) is not read: its model does not hold it; None for any other file."""
-        if self.models is None or self.models.owner(path) is None:
+        owner = self.models.owner(path) if self.models is not None else None
+        if owner is None or self.models is None or self.models.holds(path):
             return None
-        if self.models.holds(path):
-            return None
-        return (f"the interface model {self.models.label(path)} holds no file "
-                f"{self.models.owner(path)[1]}; it is not read")  # type: ignore[index]
+        return f"the interface model {owner[0].label} holds no file {owner[1]}; it is not read"
 
     def report(self, code: str, scope: Scope | str, element: Element | None,
                **params: object) -> None:
