@@ -30,6 +30,7 @@ from .workspace import Workspace, scan
 if TYPE_CHECKING:
     from .extract.cpp import CppBatch
     from .launch.model import LaunchModel
+    from .models.attach import Attacher
 
 # The stages past the cache (build files, launch files, graph, interface models) are
 # imported when a run gets to them: a re-run answered from the cache starts without them.
@@ -240,10 +241,13 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
         workspace.source_distro = source_distro(project, env)
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
 
+    project_file = Location(file=os.path.relpath(project.path))
+    models = Attacher(Library(project.models, DATA if options.models else None),
+                      project.distro, model.packages, guessed_distro(project, env))
     launches: dict[str, LaunchModel] = {}
     for spec in project.configurations:
         with _stage(options, "launch"):
-            launched = _load_launch(spec, project, workspace, env)
+            launched = _load_launch(spec, project, workspace, env, models)
         # roslaunch starts no <test> node; rostest does (a configuration says it is one)
         rostest = spec.rostest if spec.rostest is not None else any(
             entry.endswith(".test") for entry in spec.launch)
@@ -284,9 +288,6 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
         record.update(cpp=batch is not None, parts=batch.parts if batch is not None else [],
                       gave=_gave(batch), others=others)
 
-    project_file = Location(file=os.path.relpath(project.path))
-    models = Attacher(Library(project.models, DATA if options.models else None),
-                      project.distro, model.packages, guessed_distro(project, env))
     if project.nodes:
         model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
 
@@ -478,11 +479,18 @@ def launch_path(entry: str, project: Project, workspace: Workspace) -> str | Non
 
 
 def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,
-                 env: Mapping[str, str]) -> LaunchModel:
+                 env: Mapping[str, str], attacher: Attacher | None = None) -> LaunchModel:
+    """The configuration's launch files read and merged; ``attacher``: the interface
+    models, whose launch files (``models.launch_files``) stand for those of the ROS 1
+    packages found neither in the workspace nor installed here."""
     from . import launch
     from .launch.model import LaunchModel
+    from .models.launch_files import ModelledFiles
 
     merged = LaunchModel()
+    environment = {**env, **spec.environment}
+    finder = attacher.plugin_models(LaunchModel(), environment) if attacher else None
+    modelled = ModelledFiles(finder.package, finder.distro) if finder else None
     lines = spec.launch_lines or [spec.line] * len(spec.launch)
     for entry, line in zip(spec.launch, lines, strict=False):
         where = Location(file=os.path.relpath(project.path), line=line, column=1)
@@ -498,7 +506,7 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
         loaded = diag.per_file(  # one launch file (and its includes): a bug stays with it
             where, entry, merged.diagnostics,
             lambda: launch.load(path, workspace, spec.args,  # noqa: B023 (called at once)
-                                {**env, **spec.environment}), LaunchModel())
+                                environment, modelled), LaunchModel())
         merged.files.extend(loaded.files)
         merged.tree.extend(loaded.tree)
         offset = len(merged.nodes)

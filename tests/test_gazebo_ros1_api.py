@@ -107,7 +107,7 @@ def test_the_api_plugins_services_follow_enable_ros_network(
 
 
 UNREAD = """<launch>
-  <include file="$(find gazebo_ros)/launch/empty_world.launch"/>
+  <include file="$(find gazebo_ros)/launch/custom_world.launch"/>
   <param name="robot_description" textfile="$(find sim_user)/robot.urdf"/>
   <node name="spawn" pkg="gazebo_ros" type="spawn_model"
         args="-urdf -param robot_description -model r"/>
@@ -118,8 +118,9 @@ UNREAD = """<launch>
 
 def test_gazebo_from_an_unread_gazebo_ros_launch_file_is_its_gzserver(
         write_tree: Any) -> None:
-    # gazebo_ros installed, not in the workspace: its empty_world.launch is not read; the
-    # /gazebo that stands for its gazebo node runs gzserver, as that file starts it
+    # gazebo_ros installed, not in the workspace: a launch file of it that its model does
+    # not hold is not read; the /gazebo that stands for its gazebo node runs gzserver, as
+    # gazebo_ros' world files start it
     write_tree({"src/sim_user/robot.urdf": (
         "<robot name='r'><link name='base'/><gazebo>"
         "<plugin name='imu' filename='libgazebo_ros_imu.so'/></gazebo></robot>\n")})

@@ -628,8 +628,8 @@ def _read_value(link: Link, untyped: bool = False,
     no type takes the value as it is, ``_typed``); not its default where ``unseen``,
     the launch parameters of names not known statically, holds one that may be it (a
     parameter file not read: ROS 1 mavros' ``<rosparam command="load"
-    file="$(find mavros)/launch/px4_config.yaml"/>`` where mavros is not installed here
-    may set ``landing_target/listen_lt``)."""
+    file="$(find mavros)/launch/px4_config.yaml"/>`` where mavros is not installed here and
+    its model holds no launch files may set ``landing_target/listen_lt``)."""
     call, param = link.call, link.resource
     if call is None or not isinstance(param, Parameter):
         return Unknown("not a parameter read")

@@ -40,7 +40,8 @@ from a base its ROS 2 code resolved and remapped itself); for a ``?`` transport,
 ``transport_param``, ``transport_arg`` and ``transport_default`` say what gives it when
 that parameter does not (a parameter, a program argument, a text; ``?``: not known), and
 ``transport_fixed`` that the code passes the transport itself (no parameter of
-image_transport changes it).
+image_transport changes it). ``launch_files`` / ``param_files`` (optional): a ROS 1
+package's launch files and the parameter files they load, ``launch_files``.
 """
 
 from __future__ import annotations
@@ -85,6 +86,11 @@ class InterfaceModel:
     # ``plugins.behavior_trees.package_model_data`` writes them
     bt_libraries: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
     bt_trees: dict[str, dict[str, Any]] = field(default_factory=dict)
+    # ROS 1 launch models (``launch_files``): the package's launch files by their path
+    # below its folder (None: not recorded, an older model; {}: it has none) and the
+    # parameter files they load from it
+    launch_files: dict[str, dict[str, Any]] | None = None
+    param_files: dict[str, dict[str, Any]] = field(default_factory=dict)
 
     @property
     def label(self) -> str:
@@ -115,6 +121,9 @@ def to_document(model: InterfaceModel) -> dict[str, Any]:
         data["bt_libraries"] = model.bt_libraries
     if model.bt_trees:
         data["bt_trees"] = model.bt_trees
+    if model.launch_files is not None:
+        data["launch_files"] = model.launch_files
+        data["param_files"] = model.param_files
     return data
 
 
@@ -170,10 +179,15 @@ def from_document(data: Any, path: str = "") -> InterfaceModel:
     if not isinstance(trees, dict) or not all(
             isinstance(k, str) and isinstance(v, dict) for k, v in trees.items()):
         raise ModelFileError("'bt_trees' must map share paths to trees")
+    launch, params = data.get("launch_files"), data.get("param_files", {})
+    for key, value in (("launch_files", launch), ("param_files", params)):
+        if value is not None and not (isinstance(value, dict) and all(
+                isinstance(k, str) and isinstance(v, dict) for k, v in value.items())):
+            raise ModelFileError(f"'{key}' must map paths in the package to objects")
     return InterfaceModel(package, distro, built, str(data.get("version") or ""),
                           _strings(data.get("source")), _strings(data.get("generator")),
                           data.get("override") if isinstance(data.get("override"), str)
-                          else None, path, libraries, trees)
+                          else None, path, libraries, trees, launch, params or {})
 
 
 def _list(value: Any) -> Sequence[Any]:

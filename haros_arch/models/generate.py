@@ -48,7 +48,9 @@ from ..pipeline import distro_variables, read_build_files, without_deferred
 from ..plugins.behavior_trees import package_model_data
 from ..processes import worker_pool
 from ..workspace import scan
+from .attach import ros_of
 from .format import InterfaceModel, dumps
+from .launch_files import package_launch_data
 
 OVERRIDES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "overrides")
 COMMIT = re.compile(r"^[0-9a-f]{40}$")
@@ -119,6 +121,7 @@ class Outcome:
     partial: dict[str, list[str]] = field(default_factory=dict)
     problem: str | None = None
     override_problems: list[str] = field(default_factory=list)
+    files: tuple[int, int] | None = None  # ROS 1: launch files and parameter files kept
 
 
 def read_list(path: str) -> list[Entry]:
@@ -229,6 +232,12 @@ def _build(task: Task, outcome: Outcome) -> Outcome:
     # of another package without source runs them (nav2's bt_navigator and
     # nav2_behavior_tree's nodes)
     model.bt_libraries, model.bt_trees = package_model_data(task.package, workspace)
+    # a ROS 1 package's launch files and the parameter files they load from it: an
+    # include of one from a workspace reads them (``launch_files``)
+    if ros_of(task.entry.distro) == 1:
+        model.launch_files, model.param_files = package_launch_data(task.package,
+                                                                    package.root)
+        outcome.files = (len(model.launch_files), len(model.param_files))
     outcome.text = _tree_relative(dumps(model), (task.tree, *task.context))
     outcome.nodes = [n.executable for n in package.nodes]
     outcome.calls = sum(len(n.calls) for n in package.nodes)
@@ -490,8 +499,10 @@ def report(outcomes: Iterable[Outcome], say: Callable[[str], Any]) -> None:
             say(f"{name}: not modelled: {outcome.problem}")
             continue
         state = f"{len(outcome.partial)} partial" if outcome.partial else "complete"
+        files = (f", {outcome.files[0]} launch files, {outcome.files[1]} parameter files"
+                 if outcome.files is not None else "")
         say(f"{name}: {len(outcome.nodes)} nodes, {outcome.calls} calls, "
-            f"{outcome.unresolved} names unknown statically, {state}")
+            f"{outcome.unresolved} names unknown statically, {state}{files}")
         for problem in outcome.override_problems:
             say(f"    override not used: {problem}")
         for node, reasons in outcome.partial.items():

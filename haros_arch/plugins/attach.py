@@ -211,7 +211,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                         instance.node is not None and instance.node.model is not None)
                     # a deny or allow list not set as far as we see, which a parameter
                     # file not known statically may set (mavros' own
-                    # px4_pluginlists.yaml where mavros is not installed here)
+                    # px4_pluginlists.yaml where mavros is not installed here and its
+                    # model holds no launch files)
                     for key in slot.lists or ():
                         unseen = unseen or _may_be_set(
                             instance.name.rstrip("/") + "/" + key, params,

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from lxml import etree
 
@@ -41,6 +41,9 @@ from . import tags_params
 from .child_launch import dropped_words, launched_file
 from .scope import Scope, canonical, global_ns, same_unknowns, unknown_parts
 from .substitution import ArgUndefined, Context, SubstitutionError, substitute, unclosed
+
+if TYPE_CHECKING:
+    from ...models.launch_files import ModelledFiles
 
 Element = etree._Element
 MAX_INCLUDE_DEPTH = 32
@@ -77,8 +80,12 @@ REQUIRED: dict[str, tuple[str, ...]] = {
 
 
 class Ros1Loader:
-    def __init__(self, workspace: Workspace, environment: Mapping[str, str]) -> None:
+    def __init__(self, workspace: Workspace, environment: Mapping[str, str],
+                 models: ModelledFiles | None = None) -> None:
         self.workspace = workspace
+        # the launch and parameter files of packages not here that their interface
+        # models hold (``models.launch_files``): read as the real ones would be
+        self.models = models
         self.model = LaunchModel()
         self.environment: Mapping[str, str] = RecordedEnvironment(environment,
                                                         self.model.environment_values)
@@ -133,7 +140,26 @@ class Ros1Loader:
     def where(self, scope: Scope | str, element: Element | None = None) -> Location:
         line = element.sourceline if element is not None else None
         path = scope if isinstance(scope, str) else scope.path
-        return self.workspace.location(path, line if isinstance(line, int) else 0)
+        return self.place(path, line if isinstance(line, int) else 0)
+
+    def place(self, path: str, line: int = 0) -> Location:
+        """A file's line: in the workspace, or upstream for a modelled file."""
+        modelled = self.models.location(path, line) if self.models is not None else None
+        return modelled or self.workspace.location(path, line)
+
+    def relpath(self, path: str) -> str:
+        """How a file is named: relative to the workspace, or upstream for a modelled
+        file (``place``)."""
+        modelled = self.models.location(path) if self.models is not None else None
+        return modelled.file or path if modelled is not None else self.workspace.relpath(path)
+
+    def unheld(self, path: str) -> str | None:
+        """Why a file of a modelled package's folder (``$(find pkg)`` of a package not
+        here) is not read: its model does not hold it; None for any other file."""
+        owner = self.models.owner(path) if self.models is not None else None
+        if owner is None or self.models is None or self.models.holds(path):
+            return None
+        return f"the interface model {owner[0].label} holds no file {owner[1]}; it is not read"
 
     def report(self, code: str, scope: Scope | str, element: Element | None,
                **params: object) -> None:
@@ -163,7 +189,10 @@ class Ros1Loader:
         """Substitute ``raw`` in ``scope``; problems become diagnostics, never raise."""
         def find(name: str) -> str | None:
             self.model.package_uses.append(PackageUse(name, self.where(scope, element)))
-            return self.workspace.find(name)
+            found = self.workspace.find(name)
+            if found is None and self.models is not None:
+                found = self.models.root(name)  # installed on the robot, modelled here
+            return found
 
         def declared(name: str) -> bool:
             # roslaunch makes every ``name:=value`` of its command line an argument of
@@ -184,7 +213,7 @@ class Ros1Loader:
         except ArgUndefined as err:
             if err.name in scope.arg_names or scope.in_include:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
-                            path=self.workspace.relpath(scope.path), name=err.name)
+                            path=self.relpath(scope.path), name=err.name)
             else:
                 self.report("LAUNCH_ARG_UNDEFINED", scope, element, name=err.name)
             return Value.unknown(f"arg {err.name}")
@@ -197,7 +226,7 @@ class Ros1Loader:
         for name in dict.fromkeys(ctx.unset):
             if scope.in_include and not scope.command_line:
                 self.report("LAUNCH_ARG_REQUIRED", scope, element,
-                            path=self.workspace.relpath(scope.path), name=name)
+                            path=self.relpath(scope.path), name=name)
             else:
                 self.report("LAUNCH_ARG_UNSET", scope, element, name=name)
         for detail in dict.fromkeys(ctx.unknown):
@@ -305,6 +334,10 @@ class Ros1Loader:
 
     # -- traversal ------------------------------------------------------------
     def parse(self, path: str, location: Location) -> Element | None:
+        modelled = self.models.launch(path) if self.models is not None else None
+        if modelled is not None:  # a launch file of a package not here, as its model has it
+            self.model.files.append(self.relpath(path))
+            return modelled
         if not os.path.isfile(path):
             self.model.diagnostics.append(diag.make(
                 "LAUNCH_FILE_MISSING", location,
@@ -714,7 +747,7 @@ class Ros1Loader:
         child.env = list(decl.env)
         child.stack = scope.stack
         child.item = scope.item.add(LaunchItem(
-            "file", self.workspace.relpath(filename), where, namespace=child.ns,
+            "file", self.relpath(filename), where, namespace=child.ns,
             condition=guard, args=[LaunchArg(k, v.text,
                                              "command line") for k, v in args.items()]))
         self.load_file(filename, child, element, scope)
@@ -755,8 +788,11 @@ class Ros1Loader:
         where = self.where(scope, element)
         relative = None if path is None or path.literal is None or os.path.isabs(
             path.literal) else path.literal
-        if path is None or path.literal is None or relative is not None:
-            if relative is not None:
+        unheld = self.unheld(path.literal) if path is not None and path.literal else None
+        if path is None or path.literal is None or relative is not None or unheld:
+            if unheld:
+                self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=unheld)
+            elif relative is not None:
                 # roslaunch opens it from the folder it runs in, which no file says (not
                 # the folder this tool runs in): what it would start stays unknown
                 self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
@@ -783,7 +819,7 @@ class Ros1Loader:
         if inner is None:
             return
         inner.item = scope.item.add(LaunchItem(
-            "file", self.workspace.relpath(filename), where, namespace=inner.ns,
+            "file", self.relpath(filename), where, namespace=inner.ns,
             condition=guard))
         if pass_all:
             assert inner.include_args is not None
@@ -817,7 +853,7 @@ class Ros1Loader:
         unused = [name for name in passed if name not in inner.arg_names]
         if unused and not inner.pass_all_args:
             self.fail(scope, element, f"unused args ({', '.join(unused)}) for include of "
-                                      f"{self.workspace.relpath(filename)}")
+                                      f"{self.relpath(filename)}")
 
     def unread_include_values(self, element: Element, scope: Scope) -> None:
         """The values an include not read passes: roslaunch substitutes its ``<arg>``
@@ -885,11 +921,12 @@ class Ros1Loader:
                 or self.includes > MAX_INCLUDES:
             assert parent is not None and element is not None
             self.report("LAUNCH_INCLUDE_CYCLE", parent, element,
-                        path=self.workspace.relpath(path))
+                        path=self.relpath(path))
             return False
         self.includes += 1
-        if parent is not None and element is not None and not self.workspace.readable(
-                path, self.environment):
+        modelled = self.models is not None and self.models.holds(path)
+        if parent is not None and element is not None and not modelled and \
+                not self.workspace.readable(path, self.environment):
             # an included file is read only from the workspace and the installed packages
             # (as <rosparam file>): what it would start stays unknown, not missing
             self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=(
@@ -901,7 +938,8 @@ class Ros1Loader:
             self.unread_files.append(self.where(parent, element))
             return False
         location = self.where(parent, element) if parent else self.workspace.location(path)
-        if parent is not None and element is not None and not os.path.isfile(path) and (
+        if parent is not None and element is not None and not modelled and \
+                not os.path.isfile(path) and (
                 note := self.workspace.submodule_note(path)) is not None:
             # in a git submodule not checked out: what it would start stays unknown
             self.report("LAUNCH_UNKNOWN_VALUE", parent, element, detail=note)
@@ -952,10 +990,12 @@ def _argument_value(text: str) -> Any:
 
 
 def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
-         environment: Mapping[str, str] | None = None) -> LaunchModel:
-    """Interpret one ROS 1 launch file and what it includes."""
+         environment: Mapping[str, str] | None = None,
+         models: ModelledFiles | None = None) -> LaunchModel:
+    """Interpret one ROS 1 launch file and what it includes (``models``: the launch
+    files of packages not here that their interface models hold)."""
     env = workspace.environment if environment is None else environment
-    loader = Ros1Loader(workspace, env)
+    loader = Ros1Loader(workspace, env, models)
     given = {k: Value.of(v) for k, v in (args or {}).items()}
     scope = Scope.root(os.path.abspath(path), given, env.get("ROS_NAMESPACE", "/"))
     scope.item = LaunchItem("file", workspace.relpath(os.path.abspath(path)),

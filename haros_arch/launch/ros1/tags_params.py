@@ -132,6 +132,13 @@ def read_param_file(loader: Ros1Loader, path: str, scope: Scope, element: Elemen
             f"{path!r} is a relative path, opened from the folder roslaunch runs in; it is "
             "not read"))
         return None
+    unheld = loader.unheld(path)
+    if unheld is not None or (loader.models is not None and loader.models.holds(path)):
+        # a file of a package not here that its model has not (or only parsed, for
+        # ``<rosparam>``): what it holds is not known
+        loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=unheld or (
+            f"{loader.relpath(path)} is kept as parsed values, not as its text"))
+        return None
     path = os.path.realpath(path)
     if not loader.workspace.readable(path, loader.environment):
         loader.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=(
@@ -199,29 +206,31 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
             # else (a dictionary, as roslaunch requires) only what is under the namespace
             unseen(loader, full, scope, where)
             return
-        data = read_param_file(loader, file.literal, scope, element)
-        if data is None:
+        modelled = loader.models.params(file.literal) if loader.models is not None else None
+        data = None if modelled is not None else read_param_file(loader, file.literal,
+                                                                  scope, element)
+        if data is None and modelled is None:
             unseen(loader, full, scope, where)
             return
-        text = data.decode("utf-8", errors="replace")
-        lines = _key_lines(text)
+        text = data.decode("utf-8", errors="replace") if data is not None else ""
+        lines = _key_lines(text) if modelled is None else modelled[1]
         # (PyYAML replaces a mapping written twice whole: its first keys are gone too)
         for twice, first, later in safe_yaml.keys_twice(text, RosparamLoader, merging=False):
-            said = diag.make("LAUNCH_PARAM_FILE_KEY_TWICE", loader.workspace.location(
+            said = diag.make("LAUNCH_PARAM_FILE_KEY_TWICE", loader.place(
                 file.literal, later), key="/".join(twice), line=first,
                 reader="roslaunch (PyYAML)")
             if said not in loader.model.diagnostics:
                 loader.model.diagnostics.append(said)
     else:
         text = (element.text or "") + "".join(c.tail or "" for c in element)
-        lines = None
+        lines, modelled = None, None
     if subst is None:
         subst = True  # unknown: substitute, as values do not change otherwise
-    if subst:
+    if subst and modelled is None:  # (a modelled file holds no substitution)
         value = loader.resolve(text, scope, element)
         text = marked_text(value)
     try:
-        data_value = load_yaml(text)
+        data_value = load_yaml(text) if modelled is None else modelled[0]
     except ParamError as err:
         loader.report("LAUNCH_YAML", scope, element, detail=str(err))
         unseen(loader, full, scope, where)
@@ -252,7 +261,7 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
         line = keys.get(name)
         add_param(loader, name.replace(MARK, "?"), leaf,
                   type_name(leaf) if leaf is not None else None,
-                  scope.conditions, loader.workspace.location(file.literal, line) if (
+                  scope.conditions, loader.place(file.literal, line) if (
                       isinstance(line, int) and file is not None
                       and file.literal is not None) else where,
                   "rosparam", setting=setting)
