@@ -847,3 +847,27 @@ def generate_launch_description():
 """)
     assert [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"] == [
         "assignment to this target is not interpreted"]
+
+
+def test_a_pathlib_path_joined_with_text_known_at_launch_time(write_tree):
+    # robosub-ros2's fuse.launch.py: the parameter file is named by an environment
+    # variable, ``Path(share) / 'config' / f'{robot_name}.yaml'``; pathlib joins the str
+    # as launch runs, so the file is the share folder's config/<robot>.yaml: named with a
+    # '?' where the variable is not set, not an operation we cannot read
+    body = """
+from pathlib import Path
+
+def generate_launch_description():
+    robot = os.getenv('ROBOT_NAME')
+    share = Path(get_package_share_directory('pkg'))
+    return LaunchDescription([Node(package='p', executable='e', name='n',
+        parameters=[str(share / 'config' / f'{robot}.yaml')])])
+"""
+    extra = {"src/pkg/config/crush.yaml": "n:\n  ros__parameters:\n    rate: 3\n"}
+    model, root = run(write_tree, body, extra=extra)
+    assert codes(model) == ["LAUNCH_PARAM_FILE", "LAUNCH_UNKNOWN_VALUE"]
+    unknown = next(d for d in model.diagnostics if d.code == "LAUNCH_PARAM_FILE")
+    assert str(root / "src/pkg/config/?.yaml") in unknown.message
+    model, _ = run(write_tree, body, extra=extra, env={"ROBOT_NAME": "crush"})
+    assert [(p.name, p.value) for p in model.params] == [("/n/rate", 3)]
+    assert codes(model) == []

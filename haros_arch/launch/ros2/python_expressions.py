@@ -376,6 +376,12 @@ class Expressions(Walker):
                 right, PurePosixPath)) and isinstance(left, (str, PurePosixPath)) \
                 and isinstance(right, (str, PurePosixPath)):
             return PurePosixPath(left) / right  # pathlib, pure: no file is looked at
+        if isinstance(op, ast.Div) and isinstance(left, PurePosixPath) and isinstance(
+                right, Lazy):
+            # a known path and a str known when launch runs (an f-string of an
+            # environment variable, robosub-ros2's ``f'{robot_name}.yaml'``): the path
+            # pathlib's join makes (a substitution object is no str: Python refuses it)
+            return e.PathJoin((to_text(left), to_text(right)), e.PATHLIB)
         if isinstance(op, ast.Div) and isinstance(left, e.PathJoin):
             # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
             if isinstance(right, Unknown):
