@@ -871,3 +871,18 @@ def generate_launch_description():
     model, _ = run(write_tree, body, extra=extra, env={"ROBOT_NAME": "crush"})
     assert [(p.name, p.value) for p in model.params] == [("/n/rate", 3)]
     assert codes(model) == []
+
+
+def test_os_path_normpath_of_a_known_path(write_tree):
+    # kalman_robot's cloud_raster.launch.py: os.path.normpath(os.path.abspath(...)); a
+    # pure function of its text, as os.path computes it
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    config = os.path.normpath(os.path.join(share, 'launch', '..', 'config', '.', 'a.yaml'))
+    return LaunchDescription([Node(package='p', executable='e', name='n',
+        parameters=[config, {'relative': os.path.normpath('a//b/../c/')}])])
+""", extra={"src/pkg/config/a.yaml": "n:\n  ros__parameters:\n    rate: 3\n"})
+    assert sorted((p.name, p.value) for p in model.params) == [
+        ("/n/rate", 3), ("/n/relative", "a/c")]
+    assert codes(model) == []

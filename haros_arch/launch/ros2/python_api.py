@@ -1217,6 +1217,7 @@ API: dict[str, Builder] = {
     "basename": os_path(os.path.basename), "abspath": os_path_normalized,
     "realpath": os_path_normalized, "split": os_path(os.path.split),
     "splitext": os_path(os.path.splitext), "isabs": os_path(os.path.isabs),
+    "normpath": os_path(os.path.normpath),
     "exists": path_exists(os.path.exists), "isfile": path_exists(os.path.isfile),
     "isdir": path_exists(os.path.isdir),
     "getenv": getenv, "expanduser": os_path_expanduser,
