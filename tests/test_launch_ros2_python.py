@@ -886,3 +886,37 @@ def generate_launch_description():
     assert sorted((p.name, p.value) for p in model.params) == [
         ("/n/rate", 3), ("/n/relative", "a/c")]
     assert codes(model) == []
+
+
+def test_sum_adds_with_the_interpreters_plus(write_tree):
+    # kalman_robot's aruco / clouds / nav2 launch files: a list of actions made as
+    # ``sum((make(id) for id in ids), [])``; numbers too, and Python's TypeError for a
+    # text start
+    body = """
+def one(ns):
+    return [Node(package='p', executable='e', name='tracker', namespace=ns)]
+
+def setup(context):
+    ids = [x for x in LaunchConfiguration('ids').perform(context).split(' ') if x != '']
+    actions = []
+    actions += sum((one(i) for i in ids), [])
+    total = sum([1, 2, 3]) + sum((0.5, 0.5), start=10)
+    actions.append(Node(package='p', executable='e', name='n', parameters=[{'total': total}]))
+    return actions
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('ids', default_value='front back'),
+                              OpaqueFunction(function=setup)])
+"""
+    model, _ = run(write_tree, body)
+    assert [n.name for n in model.nodes] == ["/front/tracker", "/back/tracker", "/n"]
+    assert [(p.name, p.value) for p in model.params] == [("/n/total", 17.0)]
+    assert codes(model) == []
+    model, _ = run(write_tree, body, args={"ids": "left"})
+    assert [n.name for n in model.nodes] == ["/left/tracker", "/n"]
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    name = sum(['a', 'b'], '')
+    return LaunchDescription([Node(package='p', executable='e', name=name)])
+""")
+    assert any("can't sum strings" in d.message for d in model.diagnostics)

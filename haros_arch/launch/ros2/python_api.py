@@ -51,6 +51,7 @@ from .python_methods import (
     nested_entities,
     open_file,
     safe_load,
+    summed,
     text_or_none,
     type_of,
     xacro_parse,
@@ -1283,7 +1284,7 @@ API: dict[str, Builder] = {
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
     "print": ignored, "isinstance": is_instance, "type": type_of,
-    "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
+    "all": builtin(all, list, tuple), "any": builtin(any, list, tuple), "sum": summed,
     "open": open_file, "safe_load": safe_load, "yaml.load": yaml_load,
     "json.load": json_load, "json.loads": json_load,
     "yaml.full_load": yaml_load, "itertools.chain": chained,
@@ -1303,7 +1304,7 @@ METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS
                               "expanduser": path_expanduser}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open", "getattr", "type", "eval",
+                      "isinstance", "all", "any", "sum", "open", "getattr", "type", "eval",
                       "exit", "quit"))
 
 
