@@ -28,3 +28,39 @@ def test_ros2_control_visibility_macros(tmp_path, package: str) -> None:
                f"{prefix}_EXPORT int exported();\n{prefix}_IMPORT int imported();\n")
     body = "  Arm arm;\n  Hand hand;\n  int n = arm.joints() + exported() + imported();\n"
     assert_call_found(tmp_path, ros2_main(include, body), "ament_cmake", "jazzy")
+
+
+# std::optional's accessors ref-qualified as the standard's: the value of an rvalue
+# optional binds to an rvalue reference (kalman_robot's bt_panel_node,
+# ``MissionState{PanelLayout::read_yaml(path, logger).value()}`` of a constructor taking
+# ``PanelLayout&&``), an lvalue's to an lvalue reference, and not to an rvalue one
+OPTIONAL = """#include <optional>
+#include <string>
+struct Layout { std::string name; };
+struct Mission { explicit Mission(Layout&& layout); };
+std::optional<Layout> read_layout(const std::string& path);
+void keep(Layout& layout);
+"""
+
+OPTIONAL_BODY = """  Mission first{read_layout("a.yaml").value()};
+  Mission second{*read_layout("b.yaml")};
+  std::optional<Layout> held = read_layout("c.yaml");
+  keep(held.value());
+  keep(*held);
+  Mission third{std::move(held).value()};
+  const std::optional<Layout> fixed = read_layout("d.yaml");
+  const Layout& seen = fixed.value();
+  Layout copy = read_layout("e.yaml").value_or(Layout{});
+"""
+
+
+def test_an_rvalue_optional_gives_its_value_to_move_from(tmp_path) -> None:
+    assert_call_found(tmp_path, ros2_main(OPTIONAL, OPTIONAL_BODY), "ament_cmake", "jazzy")
+
+
+def test_an_lvalue_optional_does_not_bind_to_an_rvalue_reference(tmp_path) -> None:
+    # the standard's overloads, not one returning T&& always: C++ refuses this
+    with pytest.raises(AssertionError):
+        assert_call_found(tmp_path, ros2_main(
+            OPTIONAL, "  std::optional<Layout> held = read_layout(\"c.yaml\");\n"
+            "  Mission wrong{held.value()};\n"), "ament_cmake", "jazzy")

@@ -1670,11 +1670,19 @@ public:
   template<class U = T> optional& operator=(U&& v);
   T* operator->();
   const T* operator->() const;
-  T& operator*();
-  const T& operator*() const;
-  T& value();
-  const T& value() const;
-  template<class U> T value_or(U&& v) const;
+  // ref-qualified as the standard's: an rvalue optional gives its value to move from
+  // (kalman_robot's ``MissionState{PanelLayout::read_yaml(...).value()}``, a
+  // constructor taking ``PanelLayout&&``)
+  T& operator*() &;
+  const T& operator*() const&;
+  T&& operator*() &&;
+  const T&& operator*() const&&;
+  T& value() &;
+  const T& value() const&;
+  T&& value() &&;
+  const T&& value() const&&;
+  template<class U> T value_or(U&& v) const&;
+  template<class U> T value_or(U&& v) &&;
   bool has_value() const noexcept;
   explicit operator bool() const noexcept;
   void reset() noexcept;
