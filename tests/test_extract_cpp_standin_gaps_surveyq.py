@@ -64,3 +64,30 @@ def test_an_lvalue_optional_does_not_bind_to_an_rvalue_reference(tmp_path) -> No
         assert_call_found(tmp_path, ros2_main(
             OPTIONAL, "  std::optional<Layout> held = read_layout(\"c.yaml\");\n"
             "  Mission wrong{held.value()};\n"), "ament_cmake", "jazzy")
+
+
+# OpenCV's small vectors in place and by scalars (kalman_robot's dead_reckoning node,
+# ``mean_o2w_rvec += norm_rvec(...)``, ``/= static_cast<double>(n)``, ``*= kp``,
+# ``mean_g_o.cross(g_w)``): four C++ errors there made the node partial
+VEC = """#include <opencv2/core/mat.hpp>
+cv::Vec3d norm_rvec(const cv::Vec3d& rvec);
+"""
+
+VEC_BODY = """  cv::Vec3d mean(0, 0, 0);
+  const cv::Vec3d g(0, 0, -1);
+  mean += norm_rvec(g);
+  mean -= g;
+  mean /= static_cast<double>(3);
+  mean *= 0.5;
+  cv::Vec3d axis = mean.cross(g);
+  cv::Vec3d scaled = 2.0 * (mean + axis) / 4.0 - g * 3.0;
+  double along = mean.dot(g) + scaled.mul(g)[0];
+  cv::Matx33d rotation = cv::Matx33d::eye();
+  rotation += cv::Matx33d::eye();
+  rotation *= 0.5;
+  cv::Matx33d half = rotation / 2.0;
+"""
+
+
+def test_opencv_vectors_in_place_and_by_scalars(tmp_path) -> None:
+    assert_call_found(tmp_path, ros2_main(VEC, VEC_BODY), "ament_cmake", "jazzy")
