@@ -920,3 +920,24 @@ def generate_launch_description():
     return LaunchDescription([Node(package='p', executable='e', name=name)])
 """)
     assert any("can't sum strings" in d.message for d in model.diagnostics)
+
+
+def test_the_log_folder_of_launch_logging(write_tree):
+    # cabot-navigation's launch files keep each run's logs together:
+    # ``SetEnvironmentVariable('ROS_LOG_DIR', launch_config.log_dir)``, a folder launch
+    # chooses when it runs: a value not known here, not a construct not read
+    model, _ = run(write_tree, """
+from launch.actions import SetEnvironmentVariable
+from launch.logging import launch_config
+import launch.logging
+
+def generate_launch_description():
+    return LaunchDescription([
+        SetEnvironmentVariable('ROS_LOG_DIR', launch_config.log_dir),
+        Node(package='p', executable='e', name='n',
+             parameters=[{'logs': launch.logging.launch_config.log_dir}]),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/n"]
+    assert [d.code for d in model.diagnostics
+            if d.code in ("LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED")] == []

@@ -539,6 +539,12 @@ class Expressions(Walker):
                 return OS_VALUES[f"{owner.qualified}.{node.attr}"]
             if owner.qualified == "math" and math_constant(node.attr):
                 return ops.MATH[node.attr]  # math.pi
+            if owner.qualified == "launch.logging.launch_config" and node.attr == "log_dir":
+                # the folder launch's logging writes this run's logs to (``~/.ros/log/
+                # <date>-<host>-<pid>`` unless ROS_LOG_DIR says), chosen when it runs:
+                # cabot's ``SetEnvironmentVariable('ROS_LOG_DIR', launch_config.log_dir)``
+                return Lazy((e.Opaque("the log folder launch chooses when it runs",
+                                      report=False),))
             return Ref(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Module):  # a module of the workspace the file imported
             if node.attr in owner.names:
