@@ -91,3 +91,32 @@ VEC_BODY = """  cv::Vec3d mean(0, 0, 0);
 
 def test_opencv_vectors_in_place_and_by_scalars(tmp_path) -> None:
     assert_call_found(tmp_path, ros2_main(VEC, VEC_BODY), "ament_cmake", "jazzy")
+
+
+# std::weak_ptr converts from a pointer of another class only when that pointer converts,
+# as shared_ptr does (cabot-navigation's planner test hands its nav2_util lifecycle node to
+# a nav2_core planner's configure, overloaded on Humble's and on Kilted's node: both
+# overloads took it, "call to member function 'configure' is ambiguous")
+WEAK = """#include <memory>
+struct Base { virtual ~Base(); };
+struct Legacy : Base {};
+struct Kilted : Base {};
+struct Derived : Legacy {};
+struct Planner {
+  void configure(const std::weak_ptr<Legacy>& node, int name);
+  void configure(const std::weak_ptr<Kilted>& node, int name);
+};
+"""
+
+WEAK_BODY = """  auto derived = std::make_shared<Derived>();
+  Planner planner;
+  planner.configure(derived, 1);
+  std::weak_ptr<Derived> weak = derived;
+  planner.configure(weak, 2);
+  std::weak_ptr<Base> base = weak;
+  base = derived;
+"""
+
+
+def test_weak_ptr_converts_only_what_converts(tmp_path) -> None:
+    assert_call_found(tmp_path, ros2_main(WEAK, WEAK_BODY), "ament_cmake", "jazzy")
