@@ -308,6 +308,9 @@ class NodeAction(Action):
     composable: list[ComposableNode] = field(default_factory=list)  # containers only
     container: bool = False
     split: bool = False  # arguments are one text to split on spaces (XML/YAML args=)
+    # where the package's name was written, when not in the action's file (NodeDecl's
+    # ``package_location``)
+    package_written: Location | None = None
 
 
 @dataclass
@@ -320,6 +323,7 @@ class ComposableNode:
     remaps: list[tuple[Text, Text]] = field(default_factory=list)
     condition: Cond | None = None
     location: Location = NOWHERE
+    package_written: Location | None = None  # as NodeAction's
 
 
 @dataclass

@@ -22,6 +22,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import exit_event
 from ...model.launch_tree import PackageUse, installed_check
+from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import climbed, install_prefix
 from .. import expression
@@ -728,8 +729,23 @@ def node(container: bool) -> Builder:
             split=k.get("shell") is True)
         if container:
             action.composable = composables(i, k.get("composable_node_descriptions"), n)
-        return then_on_exit(i, finish(i, action, k, n), k, n)
+        finished = finish(i, action, k, n)
+        action.package_written = package_written(i, n, "package", "node_package")
+        return then_on_exit(i, finished, k, n)
     return build
+
+
+def package_written(i: Interpreter, n: ast.AST, *keywords: str) -> Location | None:
+    """Where the ``package`` keyword's value of the call ``n`` was written, when another
+    file wrote it: a parameter of a helper function another file's call gave (kalman_robot's
+    ``launch_node_or_load_component(package="aruco_opencv", ...)`` of kalman_utils, called
+    by kalman_aruco's launch file, which is the package that uses aruco_opencv)."""
+    written = next((kw.value for kw in getattr(n, "keywords", ()) if kw.arg in keywords),
+                   None)
+    if written is None:
+        return None
+    place = i.written(n, written)
+    return place if place.file != i.where(n).file else None
 
 
 def package_action(row: PackageAction) -> Builder:
@@ -820,7 +836,8 @@ def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         text_or_none(k.get("name", k.get("node_name"))),
         text_or_none(k.get("namespace", k.get("node_namespace"))),
         parameters(i, k.get("parameters"), n), remappings(i, k.get("remappings"), n),
-        cond(i, k.get("condition"), n), i.where(n))
+        cond(i, k.get("condition"), n), i.where(n),
+        package_written=package_written(i, n, "package"))
 
 
 def composables(i: Interpreter, value: Any, n: ast.AST) -> list[e.ComposableNode]:
