@@ -120,3 +120,49 @@ WEAK_BODY = """  auto derived = std::make_shared<Derived>();
 
 def test_weak_ptr_converts_only_what_converts(tmp_path) -> None:
     assert_call_found(tmp_path, ros2_main(WEAK, WEAK_BODY), "ament_cmake", "jazzy")
+
+
+# a costmap layer's node_ is each release's: rclcpp_lifecycle's before Kilted, whose
+# unqualified ``declare_parameter_if_not_declared(node, ...)`` finds nav2_util's alone
+# (cabot-navigation's NavCogPathLayer, Humble: the Kilted node made it ambiguous with
+# nav2's, five C++ errors in onInitialize), Kilted's nav2 node from Kilted on
+LAYER = """#include <nav2_costmap_2d/costmap_layer.hpp>
+#include <nav2_util/node_utils.hpp>
+using nav2_util::declare_parameter_if_not_declared;
+class PathLayer : public nav2_costmap_2d::CostmapLayer {
+public:
+  void onInitialize() override {
+    auto node = node_.lock();
+    declare_parameter_if_not_declared(node, name_ + ".width", rclcpp::ParameterValue(2.0));
+    double width = 0.0;
+    node->get_parameter(name_ + ".width", width);
+  }
+  void updateBounds(double, double, double, double*, double*, double*, double*) override {}
+  void updateCosts(nav2_costmap_2d::Costmap2D&, int, int, int, int) override {}
+  void reset() override {}
+  bool isClearable() override { return false; }
+};
+"""
+
+KILTED_LAYER = """#include <nav2_costmap_2d/costmap_layer.hpp>
+class PathLayer : public nav2_costmap_2d::CostmapLayer {
+public:
+  void onInitialize() override {
+    nav2::LifecycleNode::SharedPtr node = node_.lock();
+    double width = node->declare_or_get_parameter(name_ + ".width", 2.0);
+  }
+  void updateBounds(double, double, double, double*, double*, double*, double*) override {}
+  void updateCosts(nav2_costmap_2d::Costmap2D&, int, int, int, int) override {}
+  void reset() override {}
+  bool isClearable() override { return false; }
+};
+"""
+
+
+@pytest.mark.parametrize("distro", ["humble", "jazzy"])
+def test_a_layer_node_before_kilted_is_rclcpp_lifecycles(tmp_path, distro: str) -> None:
+    assert_call_found(tmp_path, ros2_main(LAYER, ""), "ament_cmake", distro)
+
+
+def test_a_layer_node_from_kilted_is_nav2s(tmp_path) -> None:
+    assert_call_found(tmp_path, ros2_main(KILTED_LAYER, ""), "ament_cmake", "kilted")
