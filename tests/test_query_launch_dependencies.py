@@ -619,11 +619,12 @@ from launch_ros.descriptions import ComposableNode
 from launch_ros.actions import LoadComposableNodes
 
 
-def node_or_component(package, executable, plugin=None, container=''):
+def node_or_component(package, executable, plugin=None, container='', parameters=()):
     if container:
         return [LoadComposableNodes(target_container=container, composable_node_descriptions=[
             ComposableNode(package=package, plugin=plugin, name=executable)])]
-    return [Node(package=package, executable=executable, name=executable)]
+    return [Node(package=package, executable=executable, name=executable,
+                 parameters=list(parameters))]
 
 
 def watchdog():
@@ -631,15 +632,18 @@ def watchdog():
 """
 
 NODE_HELPER_LAUNCH = """from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
 from launch_ros.actions import ComposableNodeContainer
+from launch_ros.substitutions import FindPackageShare
 from helpers4.launch import node_or_component, watchdog
 
 
 def generate_launch_description():
+    config = PathJoinSubstitution([FindPackageShare('config4'), 'tracker.yaml'])
     return LaunchDescription([
         ComposableNodeContainer(package='rclcpp_components', executable='component_container',
                                 name='box', namespace=''),
-        *node_or_component('tracker4', 'tracker'),
+        *node_or_component('tracker4', 'tracker', parameters=[{'config': config}]),
         *node_or_component(package='camera4', executable='camera', plugin='camera4::Camera',
                            container='/box'),
         *watchdog(),
@@ -651,7 +655,9 @@ def test_ros2_a_helper_of_another_package_starts_the_node_its_caller_names(write
     """kalman_robot: kalman_utils' ``launch_node_or_load_component(package, ...)`` builds
     the Node (or ComposableNode) of the package its caller names; the launch file that
     names it (kalman_aruco's, aruco_opencv) is the one that uses the package, not the
-    helper's package. A package the helper names itself is the helper's use."""
+    helper's package; so is a FindPackageShare the caller writes among the parameters it
+    hands the helper (kalman_arm2's panel layout file), which launch performs at the
+    helper's Node. A package the helper names itself is the helper's use."""
     root = write_tree({
         "src/app4/package.xml": manifest("app4", ("exec_depend", "tracker4"),
                                          ("exec_depend", "helpers4"),
@@ -667,5 +673,6 @@ def test_ros2_a_helper_of_another_package_starts_the_node_its_caller_names(write
         "project.yaml": "project: p\nconfigurations:\n  c: [app4/launch/app.launch.py]\n",
     })
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
-    assert findings(model) == [("app4/launch/app.launch.py", 11, "camera4"),
-                               ("helpers4/helpers4/launch.py", 14, "watchdog4")]
+    assert findings(model) == [("app4/launch/app.launch.py", 9, "config4"),
+                               ("app4/launch/app.launch.py", 14, "camera4"),
+                               ("helpers4/helpers4/launch.py", 15, "watchdog4")]

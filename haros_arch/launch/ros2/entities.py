@@ -69,6 +69,10 @@ class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackag
     # asked for by a Python launch file in a ``try`` whose handler catches the package's
     # absence (``get_package_share_directory``): the file runs without it
     tried: bool = False
+    # where a Python launch file wrote it (its package's name): the use of the package
+    # when launch performs it in another file's action (a node a helper of another
+    # package builds with the caller's FindPackageShare among its parameters)
+    written: Location | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)

@@ -192,7 +192,11 @@ def launch_context(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def find_package(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        return e.FindPackage(to_text(arg(a, k, 0, "package")), share)
+        given = (n.args[0] if isinstance(n, ast.Call) and n.args
+                 else next((kw.value for kw in getattr(n, "keywords", ())
+                            if kw.arg == "package"), None))
+        return e.FindPackage(to_text(arg(a, k, 0, "package")), share,
+                             written=i.written(n, given))
     return build
 
 
