@@ -117,7 +117,8 @@ PLUGINLIB_EXPORT_CLASS(demo::Gradient, nav2_costmap_2d::Layer)
 def test_costmap_layer_declares_under_its_name(tmp_path) -> None:
     """A layer's declareParameter(name, value) declares ``<layer name>.name`` on its node
     (Layer::getFullName); the layer's name is given at run time: ``?.``. Its node, the
-    Kilted lifecycle node, takes a Jazzy-style create_publisher(topic, qos, options)."""
+    lifecycle node of the release (rclcpp_lifecycle's for the default, Jazzy; Kilted's
+    nav2 node from Kilted on), takes create_publisher(topic, qos, options)."""
     result = _extract(tmp_path, LAYER)
     assert _rows(result) == [
         ("declare", "?.enabled", "bool", True, 10),

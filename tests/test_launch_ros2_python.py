@@ -847,3 +847,97 @@ def generate_launch_description():
 """)
     assert [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"] == [
         "assignment to this target is not interpreted"]
+
+
+def test_a_pathlib_path_joined_with_text_known_at_launch_time(write_tree):
+    # robosub-ros2's fuse.launch.py: the parameter file is named by an environment
+    # variable, ``Path(share) / 'config' / f'{robot_name}.yaml'``; pathlib joins the str
+    # as launch runs, so the file is the share folder's config/<robot>.yaml: named with a
+    # '?' where the variable is not set, not an operation we cannot read
+    body = """
+from pathlib import Path
+
+def generate_launch_description():
+    robot = os.getenv('ROBOT_NAME')
+    share = Path(get_package_share_directory('pkg'))
+    return LaunchDescription([Node(package='p', executable='e', name='n',
+        parameters=[str(share / 'config' / f'{robot}.yaml')])])
+"""
+    extra = {"src/pkg/config/crush.yaml": "n:\n  ros__parameters:\n    rate: 3\n"}
+    model, root = run(write_tree, body, extra=extra)
+    assert codes(model) == ["LAUNCH_PARAM_FILE", "LAUNCH_UNKNOWN_VALUE"]
+    unknown = next(d for d in model.diagnostics if d.code == "LAUNCH_PARAM_FILE")
+    assert str(root / "src/pkg/config/?.yaml") in unknown.message
+    model, _ = run(write_tree, body, extra=extra, env={"ROBOT_NAME": "crush"})
+    assert [(p.name, p.value) for p in model.params] == [("/n/rate", 3)]
+    assert codes(model) == []
+
+
+def test_os_path_normpath_of_a_known_path(write_tree):
+    # kalman_robot's cloud_raster.launch.py: os.path.normpath(os.path.abspath(...)); a
+    # pure function of its text, as os.path computes it
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    config = os.path.normpath(os.path.join(share, 'launch', '..', 'config', '.', 'a.yaml'))
+    return LaunchDescription([Node(package='p', executable='e', name='n',
+        parameters=[config, {'relative': os.path.normpath('a//b/../c/')}])])
+""", extra={"src/pkg/config/a.yaml": "n:\n  ros__parameters:\n    rate: 3\n"})
+    assert sorted((p.name, p.value) for p in model.params) == [
+        ("/n/rate", 3), ("/n/relative", "a/c")]
+    assert codes(model) == []
+
+
+def test_sum_adds_with_the_interpreters_plus(write_tree):
+    # kalman_robot's aruco / clouds / nav2 launch files: a list of actions made as
+    # ``sum((make(id) for id in ids), [])``; numbers too, and Python's TypeError for a
+    # text start
+    body = """
+def one(ns):
+    return [Node(package='p', executable='e', name='tracker', namespace=ns)]
+
+def setup(context):
+    ids = [x for x in LaunchConfiguration('ids').perform(context).split(' ') if x != '']
+    actions = []
+    actions += sum((one(i) for i in ids), [])
+    total = sum([1, 2, 3]) + sum((0.5, 0.5), start=10)
+    actions.append(Node(package='p', executable='e', name='n', parameters=[{'total': total}]))
+    return actions
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('ids', default_value='front back'),
+                              OpaqueFunction(function=setup)])
+"""
+    model, _ = run(write_tree, body)
+    assert [n.name for n in model.nodes] == ["/front/tracker", "/back/tracker", "/n"]
+    assert [(p.name, p.value) for p in model.params] == [("/n/total", 17.0)]
+    assert codes(model) == []
+    model, _ = run(write_tree, body, args={"ids": "left"})
+    assert [n.name for n in model.nodes] == ["/left/tracker", "/n"]
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    name = sum(['a', 'b'], '')
+    return LaunchDescription([Node(package='p', executable='e', name=name)])
+""")
+    assert any("can't sum strings" in d.message for d in model.diagnostics)
+
+
+def test_the_log_folder_of_launch_logging(write_tree):
+    # cabot-navigation's launch files keep each run's logs together:
+    # ``SetEnvironmentVariable('ROS_LOG_DIR', launch_config.log_dir)``, a folder launch
+    # chooses when it runs: a value not known here, not a construct not read
+    model, _ = run(write_tree, """
+from launch.actions import SetEnvironmentVariable
+from launch.logging import launch_config
+import launch.logging
+
+def generate_launch_description():
+    return LaunchDescription([
+        SetEnvironmentVariable('ROS_LOG_DIR', launch_config.log_dir),
+        Node(package='p', executable='e', name='n',
+             parameters=[{'logs': launch.logging.launch_config.log_dir}]),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/n"]
+    assert [d.code for d in model.diagnostics
+            if d.code in ("LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED")] == []

@@ -612,3 +612,67 @@ def test_ros2_a_package_asked_for_in_a_try_that_catches_its_absence_is_optional(
     })
     model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
     assert [package for _, _, package in findings(model)] == ["needed", "desc"]
+
+
+NODE_HELPER_MODULE = """from launch_ros.actions import Node
+from launch_ros.descriptions import ComposableNode
+from launch_ros.actions import LoadComposableNodes
+
+
+def node_or_component(package, executable, plugin=None, container='', parameters=()):
+    if container:
+        return [LoadComposableNodes(target_container=container, composable_node_descriptions=[
+            ComposableNode(package=package, plugin=plugin, name=executable)])]
+    return [Node(package=package, executable=executable, name=executable,
+                 parameters=list(parameters))]
+
+
+def watchdog():
+    return [Node(package='watchdog4', executable='watchdog', name='watchdog')]
+"""
+
+NODE_HELPER_LAUNCH = """from launch import LaunchDescription
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import ComposableNodeContainer
+from launch_ros.substitutions import FindPackageShare
+from helpers4.launch import node_or_component, watchdog
+
+
+def generate_launch_description():
+    config = PathJoinSubstitution([FindPackageShare('config4'), 'tracker.yaml'])
+    return LaunchDescription([
+        ComposableNodeContainer(package='rclcpp_components', executable='component_container',
+                                name='box', namespace=''),
+        *node_or_component('tracker4', 'tracker', parameters=[{'config': config}]),
+        *node_or_component(package='camera4', executable='camera', plugin='camera4::Camera',
+                           container='/box'),
+        *watchdog(),
+    ])
+"""
+
+
+def test_ros2_a_helper_of_another_package_starts_the_node_its_caller_names(write_tree):
+    """kalman_robot: kalman_utils' ``launch_node_or_load_component(package, ...)`` builds
+    the Node (or ComposableNode) of the package its caller names; the launch file that
+    names it (kalman_aruco's, aruco_opencv) is the one that uses the package, not the
+    helper's package; so is a FindPackageShare the caller writes among the parameters it
+    hands the helper (kalman_arm2's panel layout file), which launch performs at the
+    helper's Node. A package the helper names itself is the helper's use."""
+    root = write_tree({
+        "src/app4/package.xml": manifest("app4", ("exec_depend", "tracker4"),
+                                         ("exec_depend", "helpers4"),
+                                         ("exec_depend", "rclcpp_components"),
+                                         build_type="ament_cmake"),
+        "src/app4/CMakeLists.txt": "project(app4)\n",
+        "src/app4/launch/app.launch.py": NODE_HELPER_LAUNCH,
+        "src/helpers4/package.xml": manifest("helpers4", build_type="ament_python"),
+        "src/helpers4/setup.py": ("from setuptools import setup\n"
+                                  "setup(name='helpers4', packages=['helpers4'])\n"),
+        "src/helpers4/helpers4/__init__.py": "",
+        "src/helpers4/helpers4/launch.py": NODE_HELPER_MODULE,
+        "project.yaml": "project: p\nconfigurations:\n  c: [app4/launch/app.launch.py]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    assert findings(model) == [("app4/launch/app.launch.py", 9, "config4"),
+                               ("app4/launch/app.launch.py", 14, "camera4"),
+                               ("helpers4/helpers4/launch.py", 15, "watchdog4")]

@@ -10,12 +10,21 @@ text does not parse and holds such an f-string, each one is written triple-quote
 (``f'''...'''``: its fields may then span lines and hold strings in either quote, as
 3.6 to 3.11 allow) and the text parsed again; the columns of the tree are put back on
 the file's own lines. A field that holds a backslash or a comment (also new in 3.12) is
-not rewritten: the file's syntax error stands."""
+not rewritten: the file's syntax error stands.
+
+Python 3.12 also brings type parameter lists (PEP 695): ``class Task[T, U](Base):``,
+``def first[T](items: list[T]) -> T:`` and the ``type Name[T] = ...`` statement
+(duty's task_planning). Their parameters mean nothing to a ROS call: the list is
+blanked, each character a space (a line break in it ends a backslash continuation), so
+every other column stays where it is; ``type Name = value`` is read as the assignment
+``Name = value``, the name moved to where ``type`` was."""
 
 from __future__ import annotations
 
 import ast
+import io
 import sys
+import tokenize
 import warnings
 from typing import Any
 
@@ -32,6 +41,12 @@ def parse(text: str, filename: str = "<unknown>", mode: str = "exec") -> Any:
         except SyntaxError:
             if sys.version_info >= (3, 12):
                 raise
+            blanked = _type_parameters_blanked(text)
+            if blanked is not None:
+                try:
+                    return ast.parse(blanked, filename=filename, mode=mode)
+                except (SyntaxError, ValueError):
+                    text = blanked  # maybe a new f-string too, rewritten below
             rewritten = _nested_f_strings(text)
             if rewritten is None:
                 raise
@@ -43,6 +58,73 @@ def parse(text: str, filename: str = "<unknown>", mode: str = "exec") -> Any:
                 _shift_back(tree, rewritten[1])
                 return tree
             raise
+
+
+def _type_parameters_blanked(text: str) -> str | None:
+    """``text`` with the type parameter lists of its classes and functions blanked and
+    its ``type`` statements written as assignments (PEP 695), every other character in
+    its place; None when it has none, or its tokens cannot be read."""
+    starts = [0]  # the offset of each line (tokenize's rows split at "\n")
+    for index, char in enumerate(text):
+        if char == "\n":
+            starts.append(index + 1)
+    try:
+        tokens = [t for t in tokenize.generate_tokens(io.StringIO(text).readline)
+                  if t.type not in (tokenize.COMMENT, tokenize.NL)]
+    except (tokenize.TokenError, SyntaxError):
+        return None
+    chars = list(text)
+    changed = False
+    statement_start = True
+    for i, token in enumerate(tokens):
+        at_start, statement_start = statement_start, token.type in (
+            tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT) or token.string == ";"
+        if token.type != tokenize.NAME or i + 2 >= len(tokens):
+            continue
+        name, after = tokens[i + 1], tokens[i + 2]
+        if name.type != tokenize.NAME:
+            continue
+        if token.string in ("class", "def") and after.string == "[":
+            pass
+        elif token.string == "type" and at_start and after.string in ("[", "="):
+            # ``type Name = v`` read as ``Name = v``: the name where ``type`` was
+            first = starts[token.start[0] - 1] + token.start[1]
+            last = starts[name.end[0] - 1] + name.end[1]
+            if token.start[0] != name.end[0]:
+                continue
+            chars[first:last] = list(name.string.ljust(last - first))
+            changed = True
+            if after.string != "[":
+                continue
+        else:
+            continue
+        close = _closing(tokens, i + 2)
+        if close is None:
+            return None
+        first = starts[after.start[0] - 1] + after.start[1]
+        last = starts[tokens[close].end[0] - 1] + tokens[close].end[1]
+        for place in range(first, last):
+            if chars[place] not in "\r\n":
+                chars[place] = " "
+            elif chars[place] == "\n":  # the bracket's line break: a continuation now
+                before = place - 2 if place >= 2 and chars[place - 1] == "\r" else place - 1
+                chars[before] = "\\"
+        changed = True
+    return "".join(chars) if changed else None
+
+
+def _closing(tokens: list[tokenize.TokenInfo], opening: int) -> int | None:
+    """The index of the token that closes the bracket at ``opening``."""
+    depth = 0
+    for index in range(opening, len(tokens)):
+        string = tokens[index].string
+        if tokens[index].type == tokenize.OP and string in "([{":
+            depth += 1
+        elif tokens[index].type == tokenize.OP and string in ")]}":
+            depth -= 1
+            if depth == 0:
+                return index
+    return None
 
 
 class _Unreadable(Exception):

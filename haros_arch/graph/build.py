@@ -645,7 +645,8 @@ def package_uses(launch: LaunchModel, workspace: Workspace,
     (``$(find pkg)``); ``test`` when rostest or launch_testing runs the file (one under
     its package's test/ or tests/ folder, a ``.test`` file) or the node is a ``<test>``,
     where a package's test dependencies are installed too."""
-    uses = [PackageUse(d.package, d.location, "node", d.is_test, _guard(d))
+    uses = [PackageUse(d.package, d.package_location or d.location, "node", d.is_test,
+                       _guard(d))
             for d in launch.nodes]
     uses += [PackageUse(instance.node.package, decl.location, "node", decl.is_test,
                         _guard(decl))

@@ -63,6 +63,10 @@ class NodeDecl:
     # and which replaces one the code gives; without one, the code's holds
     namespace_given: bool = False
     container: str | None = None  # ROS 2: full name of the container it is loaded into
+    # ROS 2 Python: where the package's name was written, when another file than the
+    # action's wrote it (a helper of another package's module, handed the name by the
+    # launch file that calls it): that file's package is the one that uses the package
+    package_location: Location | None = None
     # ROS 2: the parameter files given to the process, as read (rewritten), with where:
     # they apply by node name to every node the process makes (a nav2 server's costmap)
     # and where each entry is written, by (section pattern, name) (none for a file

@@ -63,23 +63,30 @@ def from_plain(value: object) -> object:
     return Unknown(type(value).__name__)
 
 
-def string_method(base: Value, method: str, args: list[object]) -> object:
-    """``base.method(*args)``: by the one evaluator when everything is known; ``format``
-    and ``join`` keep their known parts when some are not."""
+def string_method(base: Value, method: str, args: list[object],
+                  kwargs: dict[str, object] | None = None, spread: bool = False) -> object:
+    """``base.method(*args, **kwargs)``: by the one evaluator when everything is known;
+    ``format`` and ``join`` keep their known parts when some are not. ``spread``: the
+    call also unpacks a mapping (``**values``), whose keys are not known here: a field
+    that no keyword written names is then not known (not an error)."""
+    kwargs = kwargs or {}
     try:
         known = [plain(a) for a in args]
+        known_kwargs = {key: plain(value) for key, value in kwargs.items()}
         text = plain(base)
+        if spread:
+            raise LookupError("**")
     except LookupError:
         pass
     else:
         try:
-            return from_plain(ops.call_method(text, method, known))
+            return from_plain(ops.call_method(text, method, known, known_kwargs))
         except ops.Refused as err:
             return Unknown(f"str.{method}: {err.reason}")
     try:
         if method == "format" and base.is_known:
-            return Value.of(*partial.format_parts(base.text, args, {}, text_of, _unknown))
-        if method == "join" and len(args) == 1 and isinstance(args[0], Seq):
+            return Value.of(*partial.format_parts(base.text, args, kwargs, text_of, _unknown))
+        if method == "join" and len(args) == 1 and isinstance(args[0], Seq) and not kwargs:
             return Value.of(*partial.join_parts(base, args[0].items, text_of))
     except ops.Refused as err:
         return Unknown(f"str.{method}: {err.reason}")

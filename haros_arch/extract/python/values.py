@@ -396,7 +396,10 @@ class Evaluator(Instances, QoSProfiles, Walker):
             return _entry_of(base, args[0], args[1] if len(args) > 1 else None)
         if isinstance(expr.func, ast.Attribute) and isinstance(func, Unknown) \
                 and isinstance(base, Value):
-            return string_method(base, expr.func.attr, [self.eval(a, frame) for a in expr.args])
+            return string_method(base, expr.func.attr, [self.eval(a, frame) for a in expr.args],
+                                 {k.arg: self.eval(k.value, frame) for k in expr.keywords
+                                  if k.arg is not None},
+                                 spread=any(k.arg is None for k in expr.keywords))
         if isinstance(expr.func, ast.Name) and expr.func.id in ("str", "int", "float") \
                 and len(expr.args) == 1:
             value = self.eval(expr.args[0], frame)

@@ -69,6 +69,10 @@ class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackag
     # asked for by a Python launch file in a ``try`` whose handler catches the package's
     # absence (``get_package_share_directory``): the file runs without it
     tried: bool = False
+    # where a Python launch file wrote it (its package's name): the use of the package
+    # when launch performs it in another file's action (a node a helper of another
+    # package builds with the caller's FindPackageShare among its parameters)
+    written: Location | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)
@@ -308,6 +312,9 @@ class NodeAction(Action):
     composable: list[ComposableNode] = field(default_factory=list)  # containers only
     container: bool = False
     split: bool = False  # arguments are one text to split on spaces (XML/YAML args=)
+    # where the package's name was written, when not in the action's file (NodeDecl's
+    # ``package_location``)
+    package_written: Location | None = None
 
 
 @dataclass
@@ -320,6 +327,7 @@ class ComposableNode:
     remaps: list[tuple[Text, Text]] = field(default_factory=list)
     condition: Cond | None = None
     location: Location = NOWHERE
+    package_written: Location | None = None  # as NodeAction's
 
 
 @dataclass

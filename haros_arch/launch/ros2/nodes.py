@@ -115,6 +115,7 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         namespace=naming.with_slash(namespace),
         args=" ".join(plain if action.split else map(_quoted, plain)), remaps=remaps,
         conditions=scope.conditions, location=where,
+        package_location=action.package_written,
         name_given=given is not None or parsed.node_name is not None,
         namespace_given=bool(parsed.namespace) or ns_given is not None
         or scope.namespace is not None))
@@ -154,6 +155,7 @@ def perform_composable(runner: Runner, component: e.ComposableNode, scope: Scope
         name=full, package=_text(ev, component.package), executable=_text(ev, component.plugin),
         namespace=naming.with_slash(namespace), remaps=remaps, conditions=inner.conditions,
         location=where, composable=True, container=container,
+        package_location=component.package_written,
         name_given=component.name is not None,
         namespace_given=ns_given is not None or inner.namespace is not None))
     node_params(runner, ev, full, list(component.parameters), inner, where)

@@ -22,6 +22,7 @@ from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
 from ...model.conditions import exit_event
 from ...model.launch_tree import PackageUse, installed_check
+from ...model.location import Location
 from ...model.values import Unknown, Value
 from ...share import climbed, install_prefix
 from .. import expression
@@ -51,6 +52,7 @@ from .python_methods import (
     nested_entities,
     open_file,
     safe_load,
+    summed,
     text_or_none,
     type_of,
     xacro_parse,
@@ -190,7 +192,11 @@ def launch_context(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 def find_package(share: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-        return e.FindPackage(to_text(arg(a, k, 0, "package")), share)
+        given = (n.args[0] if isinstance(n, ast.Call) and n.args
+                 else next((kw.value for kw in getattr(n, "keywords", ())
+                            if kw.arg == "package"), None))
+        return e.FindPackage(to_text(arg(a, k, 0, "package")), share,
+                             written=i.written(n, given))
     return build
 
 
@@ -727,8 +733,23 @@ def node(container: bool) -> Builder:
             split=k.get("shell") is True)
         if container:
             action.composable = composables(i, k.get("composable_node_descriptions"), n)
-        return then_on_exit(i, finish(i, action, k, n), k, n)
+        finished = finish(i, action, k, n)
+        action.package_written = package_written(i, n, "package", "node_package")
+        return then_on_exit(i, finished, k, n)
     return build
+
+
+def package_written(i: Interpreter, n: ast.AST, *keywords: str) -> Location | None:
+    """Where the ``package`` keyword's value of the call ``n`` was written, when another
+    file wrote it: a parameter of a helper function another file's call gave (kalman_robot's
+    ``launch_node_or_load_component(package="aruco_opencv", ...)`` of kalman_utils, called
+    by kalman_aruco's launch file, which is the package that uses aruco_opencv)."""
+    written = next((kw.value for kw in getattr(n, "keywords", ()) if kw.arg in keywords),
+                   None)
+    if written is None:
+        return None
+    place = i.written(n, written)
+    return place if place.file != i.where(n).file else None
 
 
 def package_action(row: PackageAction) -> Builder:
@@ -819,7 +840,8 @@ def composable_node(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         text_or_none(k.get("name", k.get("node_name"))),
         text_or_none(k.get("namespace", k.get("node_namespace"))),
         parameters(i, k.get("parameters"), n), remappings(i, k.get("remappings"), n),
-        cond(i, k.get("condition"), n), i.where(n))
+        cond(i, k.get("condition"), n), i.where(n),
+        package_written=package_written(i, n, "package"))
 
 
 def composables(i: Interpreter, value: Any, n: ast.AST) -> list[e.ComposableNode]:
@@ -1217,6 +1239,7 @@ API: dict[str, Builder] = {
     "basename": os_path(os.path.basename), "abspath": os_path_normalized,
     "realpath": os_path_normalized, "split": os_path(os.path.split),
     "splitext": os_path(os.path.splitext), "isabs": os_path(os.path.isabs),
+    "normpath": os_path(os.path.normpath),
     "exists": path_exists(os.path.exists), "isfile": path_exists(os.path.isfile),
     "isdir": path_exists(os.path.isdir),
     "getenv": getenv, "expanduser": os_path_expanduser,
@@ -1282,7 +1305,7 @@ API: dict[str, Builder] = {
     "enumerate": builtin(lambda x: list(enumerate(x)), list, tuple, str, dict),
     "zip": builtin(lambda *x: list(zip(*x, strict=False)), list, tuple), "range": bounded_range,
     "print": ignored, "isinstance": is_instance, "type": type_of,
-    "all": builtin(all, list, tuple), "any": builtin(any, list, tuple),
+    "all": builtin(all, list, tuple), "any": builtin(any, list, tuple), "sum": summed,
     "open": open_file, "safe_load": safe_load, "yaml.load": yaml_load,
     "json.load": json_load, "json.loads": json_load,
     "yaml.full_load": yaml_load, "itertools.chain": chained,
@@ -1302,7 +1325,7 @@ METHODS: dict[str, Method] = {**BASE_METHODS, **NAV2_METHODS, **ROBOTNIK_METHODS
                               "expanduser": path_expanduser}
 BUILTINS = frozenset(("len", "str", "repr", "int", "float", "bool", "list", "tuple", "dict",
                       "sorted", "min", "max", "abs", "enumerate", "zip", "range", "print",
-                      "isinstance", "all", "any", "open", "getattr", "type", "eval",
+                      "isinstance", "all", "any", "sum", "open", "getattr", "type", "eval",
                       "exit", "quit"))
 
 

@@ -376,6 +376,12 @@ class Expressions(Walker):
                 right, PurePosixPath)) and isinstance(left, (str, PurePosixPath)) \
                 and isinstance(right, (str, PurePosixPath)):
             return PurePosixPath(left) / right  # pathlib, pure: no file is looked at
+        if isinstance(op, ast.Div) and isinstance(left, PurePosixPath) and isinstance(
+                right, Lazy):
+            # a known path and a str known when launch runs (an f-string of an
+            # environment variable, robosub-ros2's ``f'{robot_name}.yaml'``): the path
+            # pathlib's join makes (a substitution object is no str: Python refuses it)
+            return e.PathJoin((to_text(left), to_text(right)), e.PATHLIB)
         if isinstance(op, ast.Div) and isinstance(left, e.PathJoin):
             # PathJoinSubstitution / part, as pathlib.Path does (launch >= 3.7)
             if isinstance(right, Unknown):
@@ -533,6 +539,12 @@ class Expressions(Walker):
                 return OS_VALUES[f"{owner.qualified}.{node.attr}"]
             if owner.qualified == "math" and math_constant(node.attr):
                 return ops.MATH[node.attr]  # math.pi
+            if owner.qualified == "launch.logging.launch_config" and node.attr == "log_dir":
+                # the folder launch's logging writes this run's logs to (``~/.ros/log/
+                # <date>-<host>-<pid>`` unless ROS_LOG_DIR says), chosen when it runs:
+                # cabot's ``SetEnvironmentVariable('ROS_LOG_DIR', launch_config.log_dir)``
+                return Lazy((e.Opaque("the log folder launch chooses when it runs",
+                                      report=False),))
             return Ref(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Module):  # a module of the workspace the file imported
             if node.attr in owner.names:

@@ -226,6 +226,29 @@ def chained(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     return items
 
 
+def summed(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
+    """``sum(iterable, start=0)``: ``start + item`` for each item in turn, with the
+    interpreter's own ``+`` (numbers added, lists joined: kalman_robot's
+    ``sum((launch_node_or_load_component(...) for rgbd_id in rgbd_ids), [])``, a list of
+    actions; an unknown item keeps its place as ``+`` keeps it). A text start is
+    Python's TypeError; an iterable not known here, not known."""
+    items = arg(a, k, 0, "iterable")
+    start = arg(a, k, 1, "start", default=0)
+    if len(a) > 2 or set(k) - {"start"}:
+        return i.failed(n, f"{_source(n)} fails: TypeError: sum() takes at most 2 "
+                        "arguments", "TypeError")
+    if isinstance(start, str):
+        return i.failed(n, f"{_source(n)} fails: TypeError: sum() can't sum strings "
+                        "[use ''.join(seq) instead]", "TypeError")
+    if not isinstance(items, (list, tuple)):
+        made = derived_unknown("sum()", [items], i.where(n))
+        return made or Unknown("sum() of values not known statically")
+    total = start
+    for item in items:
+        total = i.binop(ast.Add(), total, item, n)
+    return total
+
+
 def m_read_text(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``Path(p).read_text()`` of a path known here: the file's text, as
     ``open(p).read()``."""

@@ -333,7 +333,10 @@ class Evaluator:
 
     def s_FindPackage(self, s: e.FindPackage) -> Value:
         name = self.known(s.package)
-        self.runner.uses(self.value(s.package).text, self.location,
+        # used by the file that wrote it, when another file's action performs it
+        written = s.written if s.written is not None and s.written.file and (
+            s.written.file != self.location.file) else self.location
+        self.runner.uses(self.value(s.package).text, written,
                          self.scope.conditions, self.runner.chosen_by(s.package), s.tried)
         if name is None:
             return Value.unknown("package with an unknown name")

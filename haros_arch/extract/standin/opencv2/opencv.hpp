@@ -166,7 +166,23 @@ public:
   T& operator[](int i); const T& operator[](int i) const;
   T& operator()(int i); const T& operator()(int i) const;
   Vec operator-() const;
+  Vec cross(const Vec& v) const;  // of three elements (core/matx.inl.hpp)
+  Vec mul(const Vec& v) const;
 };
+// a vector's own arithmetic (core/matx.hpp): in place, by a scalar, of two vectors
+template<class T, int n> Vec<T, n>& operator+=(Vec<T, n>& a, const Vec<T, n>& b);
+template<class T, int n> Vec<T, n>& operator-=(Vec<T, n>& a, const Vec<T, n>& b);
+template<class T, int n> Vec<T, n>& operator*=(Vec<T, n>& a, double s);
+template<class T, int n> Vec<T, n>& operator/=(Vec<T, n>& a, double s);
+template<class T, int n> Vec<T, n> operator+(const Vec<T, n>& a, const Vec<T, n>& b);
+template<class T, int n> Vec<T, n> operator-(const Vec<T, n>& a, const Vec<T, n>& b);
+template<class T, int n> Vec<T, n> operator*(const Vec<T, n>& a, double s);
+template<class T, int n> Vec<T, n> operator*(double s, const Vec<T, n>& a);
+template<class T, int n> Vec<T, n> operator/(const Vec<T, n>& a, double s);
+template<class T, int m, int n> Matx<T, m, n>& operator+=(Matx<T, m, n>& a, const Matx<T, m, n>& b);
+template<class T, int m, int n> Matx<T, m, n>& operator-=(Matx<T, m, n>& a, const Matx<T, m, n>& b);
+template<class T, int m, int n> Matx<T, m, n>& operator*=(Matx<T, m, n>& a, double s);
+template<class T, int m, int n> Matx<T, m, n> operator/(const Matx<T, m, n>& a, double s);
 typedef Vec<uchar, 3> Vec3b;
 typedef Vec<uchar, 4> Vec4b;
 typedef Vec<int, 2> Vec2i;

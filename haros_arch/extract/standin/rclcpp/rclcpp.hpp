@@ -845,8 +845,10 @@ struct PreSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PreSetParam
 struct PostSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PostSetParametersCallbackHandle) };
 }
 using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHandle;
-// the node: its primitives are what the extractor's API table lists
-#define HAROS_RCLCPP_NODE_API(NodeT) \
+// the node: its primitives are what the extractor's API table lists; its publishers of
+// the class ``PublisherT`` (a lifecycle node's are LifecyclePublishers, managed entities)
+#define HAROS_RCLCPP_NODE_API(NodeT) HAROS_RCLCPP_NODE_API_OF(NodeT, rclcpp::Publisher)
+#define HAROS_RCLCPP_NODE_API_OF(NodeT, PublisherT) \
   const char* get_name() const; \
   const rclcpp::NodeOptions& get_node_options() const; \
   rcl_interfaces::msg::ListParametersResult list_parameters( \
@@ -860,7 +862,7 @@ using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHa
   rclcpp::Time now() const; \
   std::shared_ptr<NodeT> shared_from_this(); \
   rclcpp::CallbackGroup::SharedPtr create_callback_group(rclcpp::CallbackGroupType t, bool automatically_add = true); \
-  template<class M, class A = void> std::shared_ptr<rclcpp::Publisher<M>> create_publisher( \
+  template<class M, class A = void> std::shared_ptr<PublisherT<M>> create_publisher( \
       const std::string& topic, const rclcpp::QoS& qos, \
       const rclcpp::PublisherOptions& options = rclcpp::PublisherOptions()); \
   template<class M, class C> std::shared_ptr<rclcpp::Subscription<M>> create_subscription( \

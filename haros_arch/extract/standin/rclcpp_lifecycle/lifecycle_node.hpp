@@ -60,7 +60,7 @@ public:
                 const rclcpp::NodeOptions& options = rclcpp::NodeOptions(),
                 bool enable_communication_interface = true);
   virtual ~LifecycleNode();
-  HAROS_RCLCPP_NODE_API(LifecycleNode)
+  HAROS_RCLCPP_NODE_API_OF(LifecycleNode, rclcpp_lifecycle::LifecyclePublisher)
   using CallbackReturn = node_interfaces::LifecycleNodeInterface::CallbackReturn;
   virtual CallbackReturn on_configure(const State& state);
   virtual CallbackReturn on_activate(const State& state);

@@ -1478,11 +1478,18 @@ template<class T> class weak_ptr {
 public:
   constexpr weak_ptr() noexcept;
   weak_ptr(const weak_ptr& other) noexcept;
-  template<class Y> weak_ptr(const weak_ptr<Y>& other) noexcept;
-  template<class Y> weak_ptr(const shared_ptr<Y>& other) noexcept;
+  // from a pointer of another class: when it converts, as shared_ptr's (an overload on
+  // weak_ptr<A> beside one on weak_ptr<B> of an unrelated class is no ambiguity:
+  // nav2_core's configure of Humble's and of Kilted's node, cabot's planner test)
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  weak_ptr(const weak_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  weak_ptr(const shared_ptr<Y>& other) noexcept;
   weak_ptr& operator=(const weak_ptr& other) noexcept;
-  template<class Y> weak_ptr& operator=(const weak_ptr<Y>& other) noexcept;
-  template<class Y> weak_ptr& operator=(const shared_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  weak_ptr& operator=(const weak_ptr<Y>& other) noexcept;
+  template<class Y, class = typename enable_if<haros_sp_converts<Y, T>::value>::type>
+  weak_ptr& operator=(const shared_ptr<Y>& other) noexcept;
   long use_count() const noexcept;
   shared_ptr<T> lock() const noexcept;
   bool expired() const noexcept;
@@ -1670,11 +1677,19 @@ public:
   template<class U = T> optional& operator=(U&& v);
   T* operator->();
   const T* operator->() const;
-  T& operator*();
-  const T& operator*() const;
-  T& value();
-  const T& value() const;
-  template<class U> T value_or(U&& v) const;
+  // ref-qualified as the standard's: an rvalue optional gives its value to move from
+  // (kalman_robot's ``MissionState{PanelLayout::read_yaml(...).value()}``, a
+  // constructor taking ``PanelLayout&&``)
+  T& operator*() &;
+  const T& operator*() const&;
+  T&& operator*() &&;
+  const T&& operator*() const&&;
+  T& value() &;
+  const T& value() const&;
+  T&& value() &&;
+  const T&& value() const&&;
+  template<class U> T value_or(U&& v) const&;
+  template<class U> T value_or(U&& v) &&;
   bool has_value() const noexcept;
   explicit operator bool() const noexcept;
   void reset() noexcept;

@@ -202,7 +202,15 @@ protected:
   std::string name_;
   tf2_ros::Buffer* tf_;
   rclcpp::CallbackGroup::SharedPtr callback_group_;
+  // the node the costmap gives it: Kilted's nav2 lifecycle node from Kilted on (rclcpp
+  // 29), rclcpp_lifecycle's before, as each release's layer.hpp has it (an unqualified
+  // call on ``node_.lock()`` looks in the namespace of its class: cabot-navigation's
+  // Humble layer calls ``declare_parameter_if_not_declared(node, ...)`` of nav2_util)
+#if RCLCPP_VERSION_MAJOR >= 29
   nav2::LifecycleNode::WeakPtr node_;
+#else
+  rclcpp_lifecycle::LifecycleNode::WeakPtr node_;
+#endif
   rclcpp::Clock::SharedPtr clock_;
   rclcpp::Logger logger_;
   virtual void onInitialize();
