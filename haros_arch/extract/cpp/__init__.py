@@ -82,6 +82,7 @@ UNIT_CPU_SECONDS = 120.0
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
 _MEMBER_NAME = re.compile(r"^no member named '(\w+)'")
+_ROS2_INTERFACE_TYPE = re.compile(r"::(?:msg|srv|action)::\w")
 
 
 def _fieldless_packages(found: Sequence[Diagnostic]) -> set[str]:
@@ -233,16 +234,18 @@ def _message_field(error: _Error, packages: set[str], source: SourceCache) -> bo
     fields, no member functions, so ``psw.getParameter("language", v, "english")`` is
     of a class whose header, missing, was synthesised as a message's (a ``pkg/Name.h`` of
     a package not in the workspace: bender's ``uchile_util/ParameterServerWrapper.h``),
-    whose code may make ROS calls: an error like any other. (A ROS 2 message's
-    ``set__<field>`` setters are its fields'.)"""
+    whose code may make ROS calls: an error like any other. A ROS 2 interface
+    (``pkg::msg::Name``) is not so judged: its ``set__<field>`` setters and the builder
+    rosidl gives it (``build<T>().x(1.0)``, the message itself for one known by name)
+    call its fields."""
     if not _names_fieldless_type(error.spelling, packages):
         return False
     lines = source.lines(error.path) if error.path is not None else None
     if lines is None or not 0 < error.line <= len(lines):
         return True
     member = _MEMBER_NAME.match(error.spelling)
-    if member is None or member.group(1).startswith("set__"):
-        return True  # a ROS 2 message's setter of a field (``msg.set__data(x)``)
+    if member is None or _ROS2_INTERFACE_TYPE.search(error.spelling):
+        return True  # a ROS 2 interface's setters and builder (``build<T>().x(1.0)``)
     rest = lines[error.line - 1][error.column - 1:]
     return re.match(
         re.escape(member.group(1)) + r"\s*(?:<[^;()]*>\s*)?\(", rest) is None
