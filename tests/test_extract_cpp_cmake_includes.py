@@ -318,3 +318,57 @@ def test_each_unit_reads_its_own_package_header_of_a_name_two_packages_hold(
         assert [d.message for d in result.diagnostics if d.code == "CPP_PARSE_ERROR"] == []
         assert [(c.kind, c.name) for c in result.calls] == [("read", member),
                                                             ("publish", topic)]
+
+
+APPENDED_CMAKE = """\
+cmake_minimum_required(VERSION 3.0.2)
+project(legged)
+find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
+set(includePath)
+list(APPEND includePath "/usr/include/eigen3")
+if(USE_SDK)
+    list(APPEND includePath "${SDK_DIR}/include")
+endif()
+catkin_package(INCLUDE_DIRS include LIBRARIES ${PROJECT_NAME})
+list(APPEND includePath include/legged src)
+list( APPEND includePath "config/")
+set_target_properties(legged PROPERTIES LINKER_LANGUAGE CXX)
+add_executable(legged_node src/node.cpp)
+target_include_directories(legged_node PUBLIC ${includePath} ${catkin_INCLUDE_DIRS})
+"""
+
+
+def test_include_folders_a_variable_gathers_with_list_append(tmp_path) -> None:
+    """quadruped-robot's ``list(APPEND includePath include/quadruped src)`` (after a
+    ``set(includePath)`` and other appends), then ``target_include_directories(quadruped
+    PUBLIC ${includePath} ...)``: its sources include ``"controllers/x.hpp"`` from
+    ``include/quadruped``, which was missing (survey R: 25 places of each simulated
+    robot's node where a call may be missing). Every word appended is a folder given."""
+    root = tmp_path / "legged"
+    files = {
+        "package.xml": package_xml("legged", "catkin"),
+        "CMakeLists.txt": APPENDED_CMAKE,
+        "include/legged/controllers/command.hpp": (
+            "#pragma once\n#include <string>\n"
+            "namespace legged { const std::string kCommandTopic = \"joy\"; }\n"),
+        "config/.keep": "",
+        "src/node.cpp": (
+            "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+            "#include \"controllers/command.hpp\"\n"
+            "int main(int argc, char** argv) {\n"
+            "  ros::init(argc, argv, \"legged\");\n"
+            "  ros::NodeHandle nh;\n"
+            "  ros::Publisher pub = nh.advertise<std_msgs::String>(legged::kCommandTopic, 1);\n"
+            "}\n"),
+    }
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    ws = scan([str(tmp_path)])
+    assert cmake_include_dirs(str(root), ws) == [
+        str(root / "include" / "legged"), str(root / "src"), str(root / "config")]
+    result = extract_cpp([str(root / "src" / "node.cpp")], ws, cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "joy")]
+    assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NODE_PARTIAL"} & {
+        d.code for d in result.diagnostics}

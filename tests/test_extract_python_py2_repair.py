@@ -122,3 +122,39 @@ def test_a_node_whose_except_unpacks_its_exception_is_read(write_tree) -> None:
                             package="pkg")
     assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "diag")]
+
+
+# survey R: JUSTINA's ros_pyclips_node.py and mobile base scripts end their print
+# statements with a ``;`` (``print "Executing function:" + cmd.name;``); the call's ``)``
+# went after it, a syntax error, and six nodes stayed PY_NODE_PARTIAL with no call
+SEMICOLON = (
+    "#!/usr/bin/env python\n"
+    "import rospy\n"
+    "from std_msgs.msg import String\n"
+    "\n"
+    "def callback(data):\n"
+    "    print \"heard: \" + data.data;\n"
+    "    print 'a;b', data.data; rospy.loginfo('x')  # c; d\n"
+    "\n"
+    "rospy.init_node('semicolons')\n"
+    "rospy.Subscriber('in', String, callback)\n"
+)
+
+
+def test_a_print_statement_ended_by_a_semicolon_is_repaired(write_tree) -> None:
+    folder = write_tree({"pkg/package.xml": package_xml("pkg"),
+                         "pkg/node.py": SEMICOLON})
+    result = extract_python([str(folder / "pkg" / "node.py")],
+                            scan([str(folder)]), package="pkg")
+    assert [d.code for d in result.diagnostics] == ["PY_PYTHON2"]
+    assert result.rosname == "semicolons"
+    assert [(c.kind, c.name, c.location.line) for c in result.calls] == [
+        ("subscribe", "in", 10)]
+
+
+def test_the_call_closes_before_the_semicolon_outside_strings_and_brackets() -> None:
+    from haros_arch.extract.python.modules import _repair_python2
+    assert _repair_python2('    print "a;b" + x; y = 1  # c;d') == \
+        '    print("a;b" + x); y = 1  # c;d'
+    assert _repair_python2("print f(a, ';');") == "print(f(a, ';'));"
+    assert _repair_python2("print a, (b +\n  c);\nz = 1") == "print(a, (b +\n  c));\nz = 1"

@@ -81,6 +81,8 @@ MAX_ERRORS_PER_FILE = 50
 UNIT_CPU_SECONDS = 120.0
 _HEADER = re.compile(r"no definition found for (\S+);")
 _MEMBER = re.compile(r"^no member named '\w+' in '(?:struct |class )?(?:::)?(\w+)::")
+_MEMBER_NAME = re.compile(r"^no member named '(\w+)'")
+_ROS2_INTERFACE_TYPE = re.compile(r"::(?:msg|srv|action)::\w")
 
 
 def _fieldless_packages(found: Sequence[Diagnostic]) -> set[str]:
@@ -225,6 +227,28 @@ def _names_fieldless_type(spelling: str, packages: set[str]) -> bool:
     mistake in the code."""
     match = _MEMBER.match(spelling)
     return match is not None and match.group(1) in packages
+
+
+def _message_field(error: _Error, packages: set[str], source: SourceCache) -> bool:
+    """``_names_fieldless_type``, but not a member the code calls there: a message has
+    fields, no member functions, so ``psw.getParameter("language", v, "english")`` is
+    of a class whose header, missing, was synthesised as a message's (a ``pkg/Name.h`` of
+    a package not in the workspace: bender's ``uchile_util/ParameterServerWrapper.h``),
+    whose code may make ROS calls: an error like any other. A ROS 2 interface
+    (``pkg::msg::Name``) is not so judged: its ``set__<field>`` setters and the builder
+    rosidl gives it (``build<T>().x(1.0)``, the message itself for one known by name)
+    call its fields."""
+    if not _names_fieldless_type(error.spelling, packages):
+        return False
+    lines = source.lines(error.path) if error.path is not None else None
+    if lines is None or not 0 < error.line <= len(lines):
+        return True
+    member = _MEMBER_NAME.match(error.spelling)
+    if member is None or _ROS2_INTERFACE_TYPE.search(error.spelling):
+        return True  # a ROS 2 interface's setters and builder (``build<T>().x(1.0)``)
+    rest = lines[error.line - 1][error.column - 1:]
+    return re.match(
+        re.escape(member.group(1)) + r"\s*(?:<[^;()]*>\s*)?\(", rest) is None
 
 
 @dataclass
@@ -1820,7 +1844,7 @@ def _translation_unit(path: str, text: str, ros2: bool,
         fieldless = _header_facts(setup).fieldless(setup)
         for error in errors[:MAX_ERRORS_PER_FILE]:
             assert error.path is not None
-            code = ("CPP_MESSAGE_FIELD" if _names_fieldless_type(error.spelling, fieldless)
+            code = ("CPP_MESSAGE_FIELD" if _message_field(error, fieldless, source)
                     else "CPP_PARSE_ERROR")
             result.diagnostics.append(diag.make(
                 code, workspace.location(error.path, error.line, error.column),
@@ -1993,7 +2017,7 @@ def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str
     finder, source = places.finder, places.source
     near: dict[str, list[recall.Site]] = {}
     std = _declared_in(finder.tu)
-    errors = [e for e in errors if not (_names_fieldless_type(e.spelling, fieldless)
+    errors = [e for e in errors if not (_message_field(e, fieldless, source)
                                         or _std_by_adl(e, source, std)
                                         or _DECLARATION_ONLY.match(e.spelling))
               or _in_ros_call(e, source, near)]

@@ -180,6 +180,10 @@ class RosFunction:
     # object subscribes on a ``ros::NodeHandle()`` it makes, roscpp's of the process (a
     # nodelet's manager's: ``handle_origin`` ``process``); given one, on that handle
     own_node: bool = False
+    # the name when the call gives none (no argument at ``name_arg``): sound_play's
+    # ``SoundClient()`` advertises ``robotsound`` on a ``ros::NodeHandle()`` of its own
+    # (the node's namespace), ``SoundClient(nh, topic)`` the topic given on ``nh``
+    default_name: str | None = None
 
 
 NODE_HANDLE = "ros::NodeHandle"
@@ -842,6 +846,16 @@ CONTROL_TOOLBOX: dict[tuple[str, str], RosFunction] = {
         on_handle=False, handle_default="", standin_only=True,
         siblings=(*_RECONFIGURE_TOPICS, ("read", "p", "double"), *_PID_CONFIG)),
 }
+# ROS 1 sound_play's C++ client (audio_common sound_play.h): built with a handle and a
+# topic it advertises sound_play/SoundRequest there (queue 5), built with none on
+# ``robotsound`` of ``ros::NodeHandle()``; the stand-in, ``fallback/sound_play``, is read
+# where the workspace has not the package (JUSTINA's and bender's speech nodes)
+SOUND_PLAY: dict[tuple[str, str], RosFunction] = {
+    ("sound_play::SoundClient", "SoundClient"): RosFunction(
+        "publish", name_arg=0, optional_handle=True, on_handle=False,
+        fixed_type="sound_play/SoundRequest", default_name="robotsound",
+        standin_only=True),
+}
 # ROS 1 ros_control's joint_limits_rosparam.h (ros_control 136adb6): getJointLimits(joint,
 # nh, limits) reads, under ``joint_limits/<joint>`` of the handle given, each limit's
 # ``has_*`` flag and its value (getParam, so no default: the limits given stay as they
@@ -1026,7 +1040,8 @@ ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,
-                                            **JOINT_LIMITS_INTERFACE, **PLUGINLIB, **JSK,
+                                            **SOUND_PLAY, **JOINT_LIMITS_INTERFACE,
+                                            **PLUGINLIB, **JSK,
                                             **VIKIT, **PCL_ROS, **ROSPARAM_SHORTCUTS}
 
 # ``nh.subscribe(ops)`` / ``nh.advertise(ops)`` / ``nh.advertiseService(ops)``: the call is

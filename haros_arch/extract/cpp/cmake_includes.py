@@ -16,7 +16,7 @@ headers the parse synthesises as those of a missing package (see
 ``set`` to one value, or to the same value wherever they set it, is that value (in turn,
 a few levels): microstrain_mips' ``set(MIPLIBINC MIPSDK/C/Library/Include)`` then
 ``include_directories(include/${PROJECT_NAME} ${MIPLIBINC} ...)``, where the SDK's headers
-are.
+are; and the words ``list(APPEND var ...)`` adds to it.
 """
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ _SOURCE_DIR = "${CMAKE_CURRENT_SOURCE_DIR}"
 _LIST_DIR = "${CMAKE_CURRENT_LIST_DIR}"
 _ROOT_DIRS = ("${PROJECT_SOURCE_DIR}", "${CMAKE_SOURCE_DIR}")
 _PROJECT = re.compile(r"^[ \t]*project\s*\(", re.IGNORECASE | re.MULTILINE)
-_SET = re.compile(r"^[ \t]*set\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)([^)]*)\)",
+_SET = re.compile(r"^[ \t]*(set\s*\(|list\s*\(\s*APPEND\s)\s*([A-Za-z_][A-Za-z0-9_]*)([^)]*)\)",
                   re.IGNORECASE | re.MULTILINE)
 _VARIABLE = re.compile(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}")
 MAX_EXPANSIONS = 4  # variables within variables
@@ -133,12 +133,18 @@ def _exported(word: str, workspace: Workspace, root: str) -> tuple[str, str]:
 
 def _variables(texts: Iterable[str]) -> dict[str, list[str]]:
     """The variables the CMake ``texts`` set to one value (its words), or to the same
-    value each time; not those set to several values, nor a cache entry's default
-    (``set(X value CACHE ...)``: the command line may give another)."""
+    value each time, with the words ``list(APPEND name ...)`` adds after (quadruped-robot's
+    ``includePath``, built up so and given to ``target_include_directories``: every
+    word appended, under whatever ``if``); not those set to several values, nor a cache
+    entry's default (``set(X value CACHE ...)``: the command line may give another)."""
     values: dict[str, list[str] | None] = {}
     for text in texts:
         for match in _SET.finditer(text):
-            name, words = match.group(1), [w.strip("\"'") for w in match.group(2).split()]
+            name, words = match.group(2), [w.strip("\"'") for w in match.group(3).split()]
+            if match.group(1)[0] in "lL":  # ``list(APPEND name words...)``
+                held = values.get(name, [])
+                values[name] = None if held is None else [*held, *words]
+                continue
             if "CACHE" in words:
                 values[name] = None
                 continue

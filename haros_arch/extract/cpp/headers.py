@@ -805,6 +805,12 @@ class IncludeSetup:
             return own
         if not self.system_headers and (header.startswith(SHADOWED) or qt):
             standin = os.path.join(STANDIN, header)
+            if is_ros1_header(header) and not os.path.isfile(standin) and (
+                    real := self._resolve(header)) is not None and self.workspace.holds(real):
+                # a workspace header in a ``ros/`` folder of an include folder, which
+                # roscpp's installed ``ros/`` does not hold, as a compiler finds it
+                # (quadruped-robot's ``"ros/qr_cmd_vel_receiver.h"`` from include/quadruped)
+                return real
             if os.path.isfile(standin) and not header.startswith(_ROS_PREFIXES):
                 self._handled.add(header)
                 self._scan_standin(standin)  # what it includes (a message header) is ready

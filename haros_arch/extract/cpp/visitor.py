@@ -2559,12 +2559,13 @@ class CallFinder:
                 if index < len(args) and msg_types.param_type(args[index].type) == "str":
                     name_expr = args[index]
                     break
-            if name_expr is None and (spec.name_suffix is None or spec.name_required):
+            if name_expr is None and spec.default_name is None and (
+                    spec.name_suffix is None or spec.name_required):
                 return
             sites = self.sites
             if sites is not None:
                 sites.elsewhere.clear()
-            names = [("", None)] if name_expr is None else self._names(
+            names = [(spec.default_name or "", None)] if name_expr is None else self._names(
                 spec, call, name_expr, args, scope)
             elsewhere = list(sites.elsewhere) if sites is not None else []
             if spec.name_prefix is not None:
@@ -4455,7 +4456,8 @@ class CallFinder:
             return
         decl = row_class(decl)
         spec = api.ALL.get((qualified_name(decl), decl.spelling))
-        if spec is None or spec.fixed_name is None or not _default_constructible(decl):
+        if spec is None or (spec.fixed_name is None and spec.default_name is None) or not (
+                _default_constructible(decl)):
             # a class that takes arguments (camera_info_manager's, given a handle) is
             # made where a constructor initialises the member, whose call is that one
             return

@@ -576,7 +576,7 @@ def _expand_python2_tabs(text: str) -> tuple[str, dict[int, int]]:
                     width = (width // 8 + 1) * 8 if char == "\t" else width + 1
                 lines[i] = " " * width + body
                 shifts[i + 1] = width - len(indent)
-        opened, comment, quote = _scan(line, quote)
+        opened, comment, quote, _ = _scan(line, quote)
         depth = max(depth + opened, 0)
         joined = not quote and line[:comment].rstrip().endswith("\\")
     return "\n".join(lines), shifts
@@ -611,7 +611,10 @@ def _close_call(line: str, state: tuple[int, str]) -> tuple[str, tuple[int, str]
     backslash, an open bracket or a long string keeps its lines), and the state after
     it, None once the statement has ended."""
     depth, quote = state
-    opened, comment, quote = _scan(line, quote)
+    opened, comment, quote, end = _scan(line, quote, depth)
+    if end is not None:  # ``print x;`` or ``print x; y = 1``: the call ends at the ``;``
+        code = line[:end].rstrip()
+        return code.rstrip(",") + ")" + line[len(code):], None
     depth += opened
     code = line[:comment].rstrip()
     if depth > 0 or quote or code.endswith("\\"):
@@ -619,11 +622,14 @@ def _close_call(line: str, state: tuple[int, str]) -> tuple[str, tuple[int, str]
     return code.rstrip(",") + ")" + line[len(code):], None
 
 
-def _scan(code: str, quote: str = "") -> tuple[int, int, str]:
+def _scan(code: str, quote: str = "",
+          depth: int = 0) -> tuple[int, int, str, int | None]:
     """Brackets opened minus closed in ``code`` outside strings, where its comment starts
-    (its length when none) and the triple quote of a string open at its end; ``quote``:
-    the one open at its start."""
-    depth, i = 0, 0
+    (its length when none), the triple quote of a string open at its end and where a
+    ``;`` ends a statement (outside strings and brackets, ``depth`` those open at its
+    start: Python 2's ``print x;``, a C habit of kinetic-era nodes), None when none does;
+    ``quote``: the string open at its start."""
+    opened, i, end = 0, 0, None
     while i < len(code):
         char = code[i]
         if quote:
@@ -633,16 +639,18 @@ def _scan(code: str, quote: str = "") -> tuple[int, int, str]:
                 i += len(quote) - 1
                 quote = ""
         elif char == "#":
-            return depth, i, ""
+            return opened, i, "", end
         elif char in "\"'":
             quote = char * 3 if code.startswith(char * 3, i) else char
             i += len(quote) - 1
         elif char in "([{":
-            depth += 1
+            opened += 1
         elif char in ")]}":
-            depth -= 1
+            opened -= 1
+        elif char == ";" and end is None and depth + opened == 0:
+            end = i
         i += 1
-    return depth, len(code), quote if len(quote) == 3 else ""
+    return opened, len(code), quote if len(quote) == 3 else "", end
 
 
 @functools.lru_cache(maxsize=1)
