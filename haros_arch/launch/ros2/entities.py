@@ -69,6 +69,10 @@ class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackag
     # asked for by a Python launch file in a ``try`` whose handler catches the package's
     # absence (``get_package_share_directory``): the file runs without it
     tried: bool = False
+    # asked for by a Python launch file's ``get_package_share_directory`` (or
+    # ``.find()``), which looks it up when called: a most likely misspelt package was
+    # said there (``PACKAGE_NOT_FOUND``), not again where the value is performed
+    said: bool = False
 
 
 @dataclass(frozen=True)
