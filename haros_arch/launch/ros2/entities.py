@@ -418,19 +418,27 @@ class UnknownAction(Action):
     what: str
 
 
-def shell_run(words: list[Text]) -> list[Text]:
-    """The ``ros2`` command a terminal emulator or a shell that a process starts runs
-    (``gnome-terminal -- bash -c "ros2 run pkg teleop.py; exit"``, ``bash -c "source
-    setup.bash && ros2 launch ..."``: ``shell.commands``), the first of its commands
-    that is ``ros2 ...``; else the words as they are (a wrapper with a word not known
+def shell_commands(words: list[Text]) -> list[list[Text]]:
+    """The commands a process's command line runs: what a terminal emulator or a shell
+    it opens runs (``gnome-terminal -- bash -c "source setup.bash && ros2 run pkg
+    teleop.py; exit"``: ``source setup.bash``, ``ros2 run pkg teleop.py``, ``exit``;
+    ``shell.commands``), else the line itself (a wrapper with a word not known
     statically too)."""
     plain = [w[0] if len(w) == 1 and isinstance(w[0], str) else None for w in words]
     if not plain or plain[0] is None or None in plain or (
             plain[0].rsplit("/", 1)[-1] not in TERMINALS | SHELLS):
-        return words
-    for command in commands([w for w in plain if w is not None]):
-        if command and command[0].rsplit("/", 1)[-1] == "ros2":
-            return [(w,) for w in command]
+        return [words]
+    ran = commands([w for w in plain if w is not None])
+    return [[(w,) for w in command] for command in ran] or [words]
+
+
+def shell_run(words: list[Text]) -> list[Text]:
+    """The ``ros2`` command a process runs through a terminal emulator or a shell it
+    opens (``shell_commands``), the first of its commands that is ``ros2 ...``; else the
+    words as they are."""
+    for command in shell_commands(words):
+        if command and command[0] and command[0][0] == "ros2":
+            return command
     return words
 
 
