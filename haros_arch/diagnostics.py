@@ -89,7 +89,10 @@ CATALOGUE: dict[str, Entry] = {
         "$(find) or FindPackageShare of a package not found is an info "
         "(LAUNCH_UNKNOWN_VALUE: installed where the robot runs, perhaps), unless the name "
         "is a letter or two from a package that is here: then it is this error, with "
-        "the name it most likely misspells."),
+        "the name it most likely misspells. A ROS 2 Python launch file's "
+        "get_package_share_directory (or FindPackageShare(...).find()) of such a name is "
+        "this error at the call, which raises PackageNotFoundError when it runs, whatever "
+        "the conditions of the actions its value goes to."),
     # build files
     "CMAKE_SYNTAX": Entry(
         "error", "CMake syntax error: {detail}",

@@ -290,7 +290,11 @@ def test_components_loaded_into_a_container_started_elsewhere_leave_them_undecid
     "ExecuteProcess(cmd=['sleep', '5'])",
     "ExecuteProcess(cmd=['MicroXRCEAgent', 'udp4', '-p', '8888'])",
     "ExecuteProcess(cmd=[['micro-ros-agent udp4 --port 8888 -v ']], shell=True)",
-], ids=["ros2-bag-play", "no-ros-tool", "xrce-agent", "micro-ros-agent-shell"])
+    "ExecuteProcess(cmd=['xterm', '-e', 'ros2', 'bag', 'play'])",
+    "ExecuteProcess(cmd=['gnome-terminal -- bash -c \"MicroXRCEAgent udp4 -p 8888\"'], "
+    "shell=True)",
+], ids=["ros2-bag-play", "no-ros-tool", "xrce-agent", "micro-ros-agent-shell",
+        "bag-play-in-xterm", "xrce-agent-in-a-terminal-shell"])
 def test_a_ros2_command_not_interpreted_may_be_the_missing_side(
         write_tree: Any, command: str) -> None:
     """ouster's replay launch plays a bag, ``ros2 bag play $(var bag_file) --clock``: the
@@ -298,7 +302,8 @@ def test_a_ros2_command_not_interpreted_may_be_the_missing_side(
     subscriptions are undecided, not "nothing publishes". A command that is no ROS tool
     leaves them decided. PX4's ROS 2 launch files start the micro XRCE-DDS agent so,
     which publishes the flight controller's topics: what the agent bridges is not seen
-    either."""
+    either. So in a terminal or a shell the process opens (cabot-navigation's
+    ``ExecuteProcess(cmd=['xterm', '-e', 'ros2', 'bag', 'play'])``: ``shell_run``)."""
     found = _ros2_findings(write_tree, command)
     if "sleep" in command:
         assert len(found.get("subscriber-without-publisher", [])) == 1

@@ -16,9 +16,7 @@ from __future__ import annotations
 import ast
 import dataclasses
 import functools
-import itertools
 import re
-import shlex
 import sys
 from collections.abc import Callable
 
@@ -28,6 +26,7 @@ from ...model.conditions import EACH_STATEMENT, PARAMETER_VALUE, Condition
 from ...model.location import Location
 from ...model.source import JOINED, PrimitiveCall, counted_mark
 from ...model.values import Unknown, Value
+from ...shell import MAX_WORDS, commands, split_words
 from . import rclpy, rospy
 from .api import Arg, PyFunction
 from .conditions import condition, is_main_guard, name_test, source_text, tested_text
@@ -1479,7 +1478,7 @@ class Walker:
         nodes or plays a bag (``_starts_nodes``: Doosan's dmodel.py writes an rviz
         configuration and runs ``['rosrun', 'rviz', 'rviz', '-d', path]``;
         spencer_bagfile_tools' play.py runs ``rosbag play`` with the remaps it was
-        given), also when a terminal or a shell runs it (``_commands``: the PX4 offboard
+        given), also when a terminal or a shell runs it (``shell.commands``: the PX4 offboard
         example's processes.py opens ``gnome-terminal --tab -- bash -c
         'MicroXRCEAgent udp4 -p 8888; exec bash'``)."""
         given = call.args[0] if call.args else next(
@@ -1488,14 +1487,14 @@ class Walker:
             return False
         value = self.evaluator.eval(given, frame)
         if isinstance(value, Seq):
-            words = [text_of(item).text.strip() for item in value.items[:_MAX_WORDS]]
+            words = [text_of(item).text.strip() for item in value.items[:MAX_WORDS]]
             if len(words) == 1:
-                words = _split_words(words[0])
+                words = split_words(words[0])
         else:
-            words = _split_words(text_of(value).text if value is not None else "")
+            words = split_words(text_of(value).text if value is not None else "")
         return any(_starts_nodes([w.rsplit("/", 1)[-1] if i == 0 else w
                                   for i, w in enumerate(" ".join(command).split()[:3])])
-                   for command in _commands(words))
+                   for command in commands(words))
 
     def _dynamic_import(self, function: str, call: ast.Call, frame: Frame) -> None:
         """Say where the program imports a module whose name it computes at run time
@@ -1578,64 +1577,6 @@ _SUBPROCESSES = frozenset({"subprocess.call", "subprocess.check_call", "subproce
                            "subprocess.Popen", "subprocess.check_output", "os.system"})
 _ROS_TOOLS = frozenset({"rosrun", "roslaunch", "rqt_bag", "MicroXRCEAgent",
                         "micro-ros-agent", "micro_ros_agent"})
-# a command's words read at most; the terminal emulators that run the command after
-# ``--``, ``-e``, ``-x`` (or ``--command=`` / ``--execute``), and the shells that run
-# the text after ``-c``, with what may come before a command in a shell line
-_MAX_WORDS = 64
-_TERMINALS = frozenset({"gnome-terminal", "xterm", "konsole", "terminator", "tilix",
-                        "xfce4-terminal", "mate-terminal", "lxterminal", "kitty",
-                        "alacritty", "urxvt", "x-terminal-emulator"})
-_TERMINAL_RUNS = frozenset({"--", "-e", "-x", "--command", "--execute"})
-_SHELLS = frozenset({"bash", "sh", "zsh", "dash"})
-_PREFIX_WORDS = frozenset({"exec", "nohup", "sudo", "setsid"})
-_SEPARATORS = frozenset({";", "&&", "||", "|", "&"})
-
-
-def _split_words(text: str) -> list[str]:
-    """A command line's words, as a shell splits them (quotes kept together, ``;``,
-    ``&&``, ``|`` words of their own); split on spaces when its quoting is broken."""
-    try:
-        lexer = shlex.shlex(text, posix=True, punctuation_chars=";&|")
-        lexer.whitespace_split = True
-        return list(itertools.islice(lexer, _MAX_WORDS))
-    except ValueError:
-        return text.split()[:_MAX_WORDS]
-
-
-def _commands(words: list[str], depth: int = 0) -> list[list[str]]:
-    """The commands a command line runs: itself, or what the terminal emulator or the
-    shell it starts runs (``gnome-terminal --tab -- bash -c 'cd ~/PX4 && make; exec
-    bash'``: ``cd ~/PX4``, ``make``, ``exec bash``), each without a leading ``exec``,
-    ``nohup``, ``sudo`` or variable assignment."""
-    found: list[list[str]] = []
-    current: list[str] = []
-    for word in [*words, ";"]:
-        if word not in _SEPARATORS:
-            current.append(word)
-            continue
-        while current and (current[0] in _PREFIX_WORDS or re.fullmatch(r"\w+=\S*", current[0])):
-            current = current[1:]
-        first = current[0].rsplit("/", 1)[-1] if current else ""
-        inner: list[str] | None = None
-        if first in _TERMINALS:
-            at = next((i for i, w in enumerate(current) if w in _TERMINAL_RUNS
-                       or w.startswith("--command=")), None)
-            if at is not None:
-                given = current[at]
-                inner = ([given.split("=", 1)[1]] if given.startswith("--command=")
-                         else current[at + 1:])
-                if len(inner) == 1:
-                    inner = _split_words(inner[0])
-        elif first in _SHELLS and len(current) > 2 and current[1] == "-c":
-            inner = _split_words(current[2])
-        if inner is not None and depth < 3:
-            found += _commands(inner, depth + 1)
-        elif current:
-            found.append(current)
-        current = []
-    return found
-
-
 def _starts_nodes(words: list[str]) -> bool:
     """Whether a command line's first words start ROS nodes or publish: rosrun,
     roslaunch, rqt_bag, ``rosbag play`` (not ``rosbag info`` or ``record``, which

@@ -16,6 +16,7 @@ from typing import Any
 from ...model.diagnostic import Diagnostic
 from ...model.location import NOWHERE, Location
 from ...model.values import Value
+from ...shell import SHELLS, TERMINALS, commands
 
 
 # -- substitutions ---------------------------------------------------------------
@@ -73,6 +74,10 @@ class FindPackage(Subst):  # $(find-pkg-share) / $(find-pkg-prefix) / FindPackag
     # when launch performs it in another file's action (a node a helper of another
     # package builds with the caller's FindPackageShare among its parameters)
     written: Location | None = field(default=None, compare=False)
+    # asked for by a Python launch file's ``get_package_share_directory`` (or
+    # ``.find()``), which looks it up when called: a most likely misspelt package was
+    # said there (``PACKAGE_NOT_FOUND``), not again where the value is performed
+    said: bool = False
 
 
 @dataclass(frozen=True)
@@ -421,6 +426,30 @@ class UnknownAction(Action):
     what: str
 
 
+def shell_commands(words: list[Text]) -> list[list[Text]]:
+    """The commands a process's command line runs: what a terminal emulator or a shell
+    it opens runs (``gnome-terminal -- bash -c "source setup.bash && ros2 run pkg
+    teleop.py; exit"``: ``source setup.bash``, ``ros2 run pkg teleop.py``, ``exit``;
+    ``shell.commands``), else the line itself (a wrapper with a word not known
+    statically too)."""
+    plain = [w[0] if len(w) == 1 and isinstance(w[0], str) else None for w in words]
+    if not plain or plain[0] is None or None in plain or (
+            plain[0].rsplit("/", 1)[-1] not in TERMINALS | SHELLS):
+        return [words]
+    ran = commands([w for w in plain if w is not None])
+    return [[(w,) for w in command] for command in ran] or [words]
+
+
+def shell_run(words: list[Text]) -> list[Text]:
+    """The ``ros2`` command a process runs through a terminal emulator or a shell it
+    opens (``shell_commands``), the first of its commands that is ``ros2 ...``; else the
+    words as they are."""
+    for command in shell_commands(words):
+        if command and command[0] and command[0][0] == "ros2":
+            return command
+    return words
+
+
 def ros2_command_node(words: list[Text]) -> NodeAction | None:
     """The node a process's command line starts, when it is ``ros2 run PKG EXE ...``
     (that node, as ``Node(package=PKG, executable=EXE, arguments=[...])``), ``ros2
@@ -432,7 +461,11 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
     services) or ``ros2 control load_controller ...`` (its DirectNode, which loads a
     controller);
     None for any other process (a simulator, xacro), or when those words are not known.
+    A terminal emulator or a shell that runs such a command runs that node
+    (``shell_run``).
     """
+    words = shell_run(words)
+
     def plain(word: Text) -> str | None:
         return word[0] if len(word) == 1 and isinstance(word[0], str) else None
 
@@ -518,7 +551,9 @@ def installed_executable(program: str | None) -> tuple[str, str] | None:
 
 
 def ros2_launch_words(words: list[Text]) -> list[Text] | None:
-    """The words after ``ros2 launch`` when the command line starts so, else None."""
+    """The words after ``ros2 launch`` when the command line starts so (or a terminal
+    emulator or a shell it starts runs it: ``shell_run``), else None."""
+    words = shell_run(words)
     head = [w[0] if len(w) == 1 and isinstance(w[0], str) else None for w in words[:2]]
     if len(head) == 2 and head[0] is not None and head[0].rsplit("/", 1)[-1] == "ros2" \
             and head[1] == "launch":

@@ -31,7 +31,7 @@ from ...diagnostics import Diagnostic
 from ...evaluate import budget, syntax
 from ...evaluate import operations as ops
 from ...extract.python.modules import module_file, submodule, workspace_module
-from ...model.launch_tree import PackageUse
+from ...model.launch_tree import PackageUse, installed_check
 from ...model.location import Location
 from ...model.values import Unknown
 from ...share import share_source
@@ -241,6 +241,24 @@ class Interpreter(Expressions):
             found = package_installed(self, left, node, f"{left!r} in {right.origin}")
             return found if isinstance(found, Unknown) else isinstance(op, ast.In)
         return super().compare_values(op, left, right, node)
+
+    def misspelt_package(self, name: str, where: Location) -> bool:
+        """Whether ``name``, a package the file looks up when the call runs
+        (``get_package_share_directory``, ``FindPackageShare(...).find()``), is neither
+        here nor installed but a letter or two from a package that is
+        (``Workspace.misspelt``): then ament_index_python raises PackageNotFoundError at
+        that call, whatever the conditions of the actions its value goes to, and it is
+        said there, once (``PACKAGE_NOT_FOUND``, as a ``FindPackageShare`` of it is where
+        performed). Not in a ``try`` whose handler catches the absence, nor under an
+        ``if`` that checks a package is installed: the file runs without it."""
+        if any(self.missing_caught) or installed_check(self.guards) is not None or (
+                self.workspace.find(name) is not None) or not self.workspace.misspelt(name):
+            return False
+        found = diag.make("PACKAGE_NOT_FOUND", where, name=name,
+                          why=self.workspace.absence(name))
+        if found not in self.diagnostics:
+            self.diagnostics.append(found)
+        return True
 
     def unknown_value(self, node: ast.AST, detail: str) -> None:
         self.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", self.where(node),

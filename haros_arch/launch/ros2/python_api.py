@@ -215,8 +215,11 @@ def package_directory(share: bool) -> Builder:
             found = i.workspace.find(name) if share else install_prefix(i.workspace, name)
             if found is not None:
                 return found
+            return Lazy((e.FindPackage(to_text(name), share, tried=any(i.missing_caught),
+                                       said=i.misspelt_package(name, i.written(n, written))),))
         return Lazy((e.FindPackage(to_text(name), share, tried=any(i.missing_caught)),))
     return build
+
 
 
 def has_resource(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

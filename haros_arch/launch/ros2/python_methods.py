@@ -387,7 +387,8 @@ def m_find(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         found = i.workspace.find(a[0])
         if found is not None and owner.share:
             return found
-        return Lazy((e.FindPackage((a[0],), owner.share),))
+        return Lazy((e.FindPackage((a[0],), owner.share,
+                                   said=found is None and i.misspelt_package(a[0], i.where(n))),))
     return i.unsupported(n, ".find() on a value not known statically")
 
 

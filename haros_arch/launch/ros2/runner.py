@@ -899,10 +899,12 @@ class Runner:
         if action.words is not None:  # known to be no node when it was made
             head = e.command_head(action.words)
             self.report("LAUNCH_PROCESS", action.location, command=head)
-            line = ["".join(p for p in word if isinstance(p, str))
-                    if all(isinstance(p, str) for p in word) else None
-                    for word in action.words]
-            self._ros_command(head, scope, action.location, line)
+            # and what a terminal or a shell it opens runs (``xterm -e ros2 bag play``)
+            for inner in e.shell_commands(action.words):
+                line = ["".join(p for p in word if isinstance(p, str))
+                        if all(isinstance(p, str) for p in word) else None
+                        for word in inner]
+                self._ros_command(e.command_head(inner), scope, action.location, line)
             ev = self.evaluator(scope, action.location)
             self._missing_paths(head, [ev.value(word).text for word in action.words],
                                 action.location)
@@ -924,8 +926,12 @@ class Runner:
                         command=e.command_head([(w,) for w in words]))
             text = str(value.literal if value is not None and value.literal is not None
                        else value.text if value is not None else "")
-            self._ros_command(" ".join(text.split()[:3]), scope, action.location,
-                              list(words))
+            if not words:
+                self._ros_command(" ".join(text.split()[:3]), scope, action.location, [])
+            for inner in e.shell_commands([(w,) for w in words]) if words else []:
+                ran: list[str | None] = [str(w[0]) for w in inner]
+                self._ros_command(" ".join(str(w) for w in ran[:3]), scope,
+                                  action.location, ran)
             self._missing_paths(e.command_head([(w,) for w in words]), words,
                                 action.location)
             return

@@ -343,8 +343,9 @@ class Evaluator:
         found = self.runner.workspace.find(name)
         if found is None and self.runner.workspace.misspelt(name):
             # a letter or two from a package here: most likely a typo, the launch fails
-            self.report("PACKAGE_NOT_FOUND", name=name,
-                        why=self.runner.workspace.absence(name))
+            if not s.said:
+                self.report("PACKAGE_NOT_FOUND", name=name,
+                            why=self.runner.workspace.absence(name))
             return package_not_found(name)
         if found is None:  # installed on the robot, perhaps: unknown here, as in ROS 1
             self.report("LAUNCH_UNKNOWN_VALUE", detail=(
