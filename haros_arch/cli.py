@@ -382,7 +382,7 @@ def cmd_query(args: argparse.Namespace, out: Console, err: Console) -> int:
 
 def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
     from .diagnostics import CATALOGUE
-    from .query.catalogue import QUERY_LIMIT, UNDECIDED, load_catalogue
+    from .query.catalogue import QUERY_LIMIT, UNDECIDED, UPSTREAM, load_catalogue
 
     rules = {rule.id: rule for rule in load_catalogue()}
     if args.code == QUERY_LIMIT:
@@ -397,6 +397,15 @@ def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
                   "known statically, or serving dynamic_reconfigure) could contradict, "
                   "counted in one finding per configuration with the nodes in the way; "
                   "they are not reported as findings.", highlight=False)
+        args.code = base
+    if args.code and args.code.endswith(UPSTREAM) and args.code[:-len(UPSTREAM)] in rules:
+        base = args.code[:-len(UPSTREAM)]
+        out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of {escape(base)} "
+                  "whose every place is in installed packages' own files (launch and "
+                  "parameter files read from their models, the nodes those start), "
+                  "counted in one finding per configuration: true of any system that "
+                  "includes those files, and not the workspace's to change.",
+                  highlight=False)
         args.code = base
     if args.code and args.code not in CATALOGUE and args.code not in rules:
         err.print(f"haros-arch: {escape(args.code)} is neither a diagnostic code nor a "

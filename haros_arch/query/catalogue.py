@@ -27,6 +27,7 @@ from ..model.finding import Finding
 from ..model.location import NOWHERE, Location
 from ..model.model import Model
 from ..model.runtime import REPEAT, Configuration, Link
+from ..models.launch_files import is_upstream
 from . import compile, config_scope, model_scope
 from .errors import QueryError, QueryLimitError
 from .interpreter import DEFAULT_STEPS, Evaluator
@@ -54,6 +55,8 @@ QUERY_LIMIT = "query-limit"  # a rule stopped by the step budget: a warning, not
 SAFETY_SECONDS = 300.0
 STEPS = DEFAULT_STEPS
 UNDECIDED = "-undecided"  # suffix of the id of a rule's info on matches it cannot decide
+# suffix of the id of a rule's info on matches about installed packages' own files only
+UPSTREAM = "-upstream"
 # diagnostics whose codes a catalogue rule reports as findings (``check`` shows them once)
 ABSORBED_CODES = frozenset({"LAUNCH_FILE_MISSING", "PACKAGE_NOT_FOUND", "NODE_NOT_FOUND",
                             "NODE_NOT_EXECUTABLE", "NODE_EXECUTABLE_BLANK"})
@@ -341,6 +344,7 @@ def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
             continue
         matches = value if isinstance(value, list) else [value]
         undecided: list[tuple[Any, list[Any]]] = []
+        upstream: list[Finding] = []
         for match in matches:
             if match is None or match is False or match == ():
                 continue
@@ -350,10 +354,40 @@ def _run(rule: Rule, model: Model) -> list[tuple[Finding, list[Location]]]:
                 continue
             finding = _finding(rule, match, config, evaluator)
             places = [finding.location, *(location_of(e) for e in entities(match))]
+            if _upstream_only(places):
+                upstream.append(finding)
+                continue
             found.append((finding, places))
         if undecided:
             found.append((_undecided_finding(rule, undecided, config), []))
+        if upstream:
+            found.append((_upstream_finding(rule, upstream, config), []))
     return found
+
+
+def _upstream_only(places: list[Location]) -> bool:
+    """Whether every place a match involves is in an installed package's own file, as its
+    model keeps it (``models.launch_files.upstream``: a launch file of gazebo_ros the
+    workspace includes, a parameter file it loads, a node it starts), none in the
+    workspace."""
+    files = [place.file for place in places if place.file]
+    return bool(files) and all(is_upstream(file) for file in files)
+
+
+def _upstream_finding(rule: Rule, upstream: list[Finding], config: Configuration | None
+                      ) -> Finding:
+    """One info for the matches of a rule about installed packages' own files only
+    (mavros' apm_config.yaml setting a parameter of a plugin its own list turns off,
+    gazebo_ros' client waiting for physics services): true of any system that includes
+    those files, and not the workspace's to change; counted, the first one named."""
+    files = list(dict.fromkeys(f.location.file.split("@")[0] for f in upstream
+                               if f.location.file))
+    return Finding(rule.id + UPSTREAM, "info", f"{rule.title}: in installed packages",
+                   f"{len(upstream)} finding(s) about installed packages' own launch and "
+                   f"parameter files not reported (first: {upstream[0].message}): all they "
+                   f"involve is in files of {', '.join(files)} that the workspace includes "
+                   "but does not write", config.name if config else None,
+                   upstream[0].entities, upstream[0].location)
 
 
 def _unseen(rule: Rule, match: Any) -> list[Any]:
