@@ -39,28 +39,16 @@ import yaml
 from lxml import etree
 
 from ..files import read_bytes
+from ..launch.ros1.loader import ATTRIBUTES
 from ..manifest import as_expat_reads, start_lines, xml_parser
 from ..model.location import Location
 from .format import InterfaceModel
 
-# the tags roslaunch interprets and the attributes of each the loader reads (``doc`` is
-# a description); if / unless on all
+# the tags roslaunch interprets and the attributes of each the loader reads, but those
+# that only describe (``doc``, ``deprecated``); if / unless on all
 TAGS: dict[str, tuple[str, ...]] = {
-    "launch": (),
-    "node": ("pkg", "type", "machine", "name", "args", "output", "respawn",
-             "respawn_delay", "cwd", "ns", "clear_params", "launch-prefix", "required"),
-    "param": ("name", "value", "type", "textfile", "binfile", "command"),
-    "remap": ("from", "to"),
-    "arg": ("name", "value", "default"),
-    "group": ("ns", "clear_params"),
-    "include": ("file", "ns", "clear_params", "pass_all_args"),
-    "env": ("name", "value"),
-    "machine": ("name", "address", "env-loader", "default", "user", "password",
-                "timeout", "ssh-port"),
-    "rosparam": ("command", "file", "param", "ns", "subst_value"),
-    "master": ("auto",),
-}
-TAGS["test"] = (*TAGS["node"], "test-name", "time-limit", "retry")
+    tag: tuple(a for a in attributes if a not in ("doc", "deprecated"))
+    for tag, attributes in ATTRIBUTES.items()}
 CONDITIONS = ("if", "unless")
 LAUNCH_SUFFIXES = (".launch", ".launch.xml")
 PARAM_SUFFIXES = (".yaml", ".yml")
