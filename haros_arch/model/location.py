@@ -30,3 +30,14 @@ class Location:
 
 
 NOWHERE = Location()
+
+
+# how the path of a file of an installed package upstream begins, as its model names it
+# (``models.launch_files.upstream``: ``github:owner/name@commit/path``)
+UPSTREAM_SCHEMES = ("github:", "model:")
+
+
+def is_upstream(path: str) -> bool:
+    """Whether ``path`` names a file of an installed package upstream, as its model keeps
+    it (a launch or parameter file read from the model), not one of the workspace."""
+    return path.startswith(UPSTREAM_SCHEMES)

@@ -215,15 +215,6 @@ class ModelledFiles:
         return Location(None, upstream(model, rel), line)
 
 
-UPSTREAM_SCHEMES = ("github:", "model:")  # how ``upstream`` paths begin
-
-
-def is_upstream(path: str) -> bool:
-    """Whether ``path`` names a file of an installed package upstream (``upstream``), not
-    one of the workspace."""
-    return path.startswith(UPSTREAM_SCHEMES)
-
-
 def upstream(model: InterfaceModel, rel: str) -> str:
     """``github:owner/name@commit/path``: a file of the model's package upstream."""
     repository = model.source.get("repository") or f"model:{model.package}"

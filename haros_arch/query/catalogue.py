@@ -24,10 +24,9 @@ import yaml
 from ..model.conditions import Condition
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic, Severity
 from ..model.finding import Finding
-from ..model.location import NOWHERE, Location
+from ..model.location import NOWHERE, Location, is_upstream
 from ..model.model import Model
 from ..model.runtime import REPEAT, Configuration, Link
-from ..models.launch_files import is_upstream
 from . import compile, config_scope, model_scope
 from .errors import QueryError, QueryLimitError
 from .interpreter import DEFAULT_STEPS, Evaluator
