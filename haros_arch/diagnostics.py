@@ -112,6 +112,14 @@ CATALOGUE: dict[str, Entry] = {
         "--recursive leaves it (microstrain_inertial's driver compiles its "
         "microstrain_inertial_driver_common submodule). Not a missing file: the code is "
         "elsewhere. What it does stays unknown; check out the submodules to read it."),
+    "CMAKE_SOURCE_OUTSIDE": Entry(
+        "info", "sources of target {target} lie outside the workspace, in {folder}, and "
+        "are not here; their code is not read",
+        "A build target names source files by a path outside the workspace that does not "
+        "exist on this machine: a library's sources installed where the robot is built "
+        "(autonav's VectorNav SDK, /usr/local/vectornav/cpp/src). Not a missing file of "
+        "the package; said once per target. Its code is read as an installed library's "
+        "is: not at all, no ROS calls of its own."),
     "CMAKE_PROGRAM_NOT_IN_SOURCES": Entry(
         "info", "program {path} installed here is not in the sources; the package's "
         "{command} ({where}) may make it at build time",

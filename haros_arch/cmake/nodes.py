@@ -179,6 +179,19 @@ class SourceMap:
                     f"{said.location.file}:{said.location.line}: sources in the git "
                     f"submodule {sub[0]}, not checked out, are not read"))
                 continue
+            if not os.path.isfile(source) and self._outside(source):
+                # an SDK installed where the robot builds (autonav's
+                # /usr/local/vectornav/cpp/src/*.cpp): not a missing file, a file not
+                # here, said once per target; a library outside the workspace, read as
+                # an installed one is (no ROS calls of its own), the node stays whole
+                said = diag.make(
+                    "CMAKE_SOURCE_OUTSIDE",
+                    self.workspace.location(target.file, target.line, target.column),
+                    target=target.name, folder=os.path.dirname(source))
+                if not any(d.code == said.code and d.location == said.location
+                           for d in self.diagnostics):
+                    self.diagnostics.append(said)
+                continue
             if not os.path.isfile(source):
                 self.diagnostics.append(diag.make(
                     "CMAKE_SOURCE_MISSING",
@@ -188,6 +201,11 @@ class SourceMap:
             out.append(self.workspace.relpath(source))
         self._own[target.name] = out = list(dict.fromkeys(out))
         return out
+
+    def _outside(self, source: str) -> bool:
+        """Whether ``source`` lies outside every folder of the workspace (an absolute
+        path the build files write, to a library installed where the robot is built)."""
+        return not self.workspace.holds(os.path.abspath(source))
 
     def unread_reason(self, target: Target) -> str | None:
         """Why some code ``target`` runs is not here: sources of it or of a package
