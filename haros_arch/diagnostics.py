@@ -942,6 +942,15 @@ CATALOGUE: dict[str, Entry] = {
         "publishes is decided at run time, so the node is 'partial' and checks that "
         "claim something is absent (a remap that changes no name too) do not decide on "
         "it."),
+    "PY_DYNAMIC_CLASSES": Entry(
+        "info", "{call}() lists classes at run time, which the program may build; their "
+        "code is not followed",
+        "A Python program asks a class for its subclasses (``cls.__subclasses__()``) and "
+        "builds what it gets (kalman_robot's supervisor builds every Module and State "
+        "class so, each opening its own topics and reading its parameters): which "
+        "classes run is decided when the program runs, so what they communicate is not "
+        "read, the node is 'partial' and checks that claim something is absent do not "
+        "decide on it."),
     "PY_DYNAMIC_IMPORT": Entry(
         "info", "{call} imports a module whose name is computed at run time ({name}); "
         "its code is not read",

@@ -261,7 +261,8 @@ _PARTIAL_CAUSES = {
             "CPP_VERSION_UNKNOWN", "CPP_TARGET_UNKNOWN", "CPP_LIBRARY_LOADED"),
     "python": ("PY_PARSE_ERROR", "PY_TOO_COMPLEX", "FILE_UNREADABLE", "PY_CLASS_UNSEEN",
                "PY_NODE_UNSEEN",
-               "PY_LAUNCHES", "PY_DYNAMIC_IMPORT", "PY_RUNS_ROS_TOOL", "PY_CALL_DEPTH"),
+               "PY_LAUNCHES", "PY_DYNAMIC_IMPORT", "PY_RUNS_ROS_TOOL", "PY_CALL_DEPTH",
+               "PY_DYNAMIC_CLASSES"),
 }
 _PARTIAL_CODE = {"cpp": "CPP_NODE_PARTIAL", "python": "PY_NODE_PARTIAL"}
 # causes whose own warning (one per place) says all there is to say: a version branch

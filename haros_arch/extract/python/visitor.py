@@ -1544,6 +1544,24 @@ class Walker:
         for cls, (where, package) in self._classes_said.items():
             self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,
                                               package=package))
+        self._subclasses_said()
+
+    def _subclasses_said(self) -> None:
+        """``PY_DYNAMIC_CLASSES`` where code of the program asks a class for its
+        subclasses (``cls.__subclasses__()``), which it then builds by the list it gets
+        at run time (kalman_supervisor builds every ``Module`` and ``State`` so, and each
+        opens its topics): which classes run, and what they communicate, is not read."""
+        for module in self.loader.modules.values():
+            if module is None:
+                continue
+            for node in ast.walk(module.tree):
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                        and node.func.attr == "__subclasses__":
+                    self.diagnostics.append(diag.make(
+                        "PY_DYNAMIC_CLASSES", self.loader.location(
+                            module.path, node.lineno, node.col_offset + 1),
+                        call=ast.unparse(node.func)))
+                    break
 
     def _package_of_module(self, module: str) -> str | None:
         """The unread ROS package whose Python code the top-level module ``module`` is:

@@ -1,0 +1,85 @@
+"""A Python program that asks a class for its subclasses and builds what it gets
+(kalman_robot's supervisor: ``[cls() for cls in all_inherited_classes(Module)]``, each
+module opening its topics and reading its parameters in ``configure``) runs classes
+chosen when it runs: ``PY_DYNAMIC_CLASSES`` at the call, and the node is partial, so the
+parameters the launch file gives it are not "set but never read" for sure (the tool
+said the supervisor was complete: 44 remap-unused and 15 parameter-set-not-read
+warnings, false)."""
+
+from __future__ import annotations
+
+import os
+
+from conftest import package_xml
+
+from haros_arch.extract.python import extract_python
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query import run_catalogue
+from haros_arch.workspace import Workspace
+
+SUPERVISOR = """#!/usr/bin/env python3
+import rospy
+from std_msgs.msg import String
+
+
+class Module(object):
+    def configure(self):
+        pass
+
+
+class Arm(Module):
+    def configure(self):
+        self.rate = rospy.get_param('~' + self.__class__.__name__.lower() + '_rate')
+
+
+def all_inherited_classes(cls):
+    return cls.__subclasses__() + [
+        g for s in cls.__subclasses__() for g in all_inherited_classes(s)]
+
+
+if __name__ == '__main__':
+    rospy.init_node('supervisor')
+    modules = [module_class() for module_class in all_inherited_classes(Module)]
+    for module in modules:
+        module.configure()
+    rospy.spin()
+"""
+PLAIN = """#!/usr/bin/env python3
+import rospy
+rospy.init_node('plain')
+rospy.spin()
+"""
+
+
+def test_a_program_that_builds_its_subclasses_is_said(tmp_path) -> None:
+    source = tmp_path / "supervisor.py"
+    source.write_text(SUPERVISOR)
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    said = [(d.location.line, d.message) for d in result.diagnostics
+            if d.code == "PY_DYNAMIC_CLASSES"]
+    assert said == [(17, "cls.__subclasses__() lists classes at run time, which the "
+                         "program may build; their code is not followed")]
+    plain = tmp_path / "plain.py"
+    plain.write_text(PLAIN)
+    result = extract_python([str(plain)], Workspace(root=str(tmp_path)), package="p")
+    assert [d for d in result.diagnostics if d.code == "PY_DYNAMIC_CLASSES"] == []
+
+
+def test_the_node_is_partial_and_its_parameters_undecided(write_tree) -> None:
+    root = write_tree({
+        "src/sup/package.xml": package_xml("sup"),
+        "src/sup/CMakeLists.txt": "project(sup)\n",
+        "src/sup/scripts/supervisor.py": SUPERVISOR,
+        "src/sup/launch/sup.launch": (
+            '<launch>\n  <node name="supervisor" pkg="sup" type="supervisor.py">\n'
+            '    <param name="arm_rate" value="5"/>\n  </node>\n</launch>\n'),
+        "project.yaml": "project: p\nconfigurations:\n  c: [sup/launch/sup.launch]\n",
+    })
+    os.chmod(root / "src/sup/scripts/supervisor.py", 0o755)
+    model = analyse(load(str(root / "project.yaml")), {"PATH": os.environ.get("PATH", "")},
+                    Options(cache_dir=None))
+    (node,) = model.configuration("c").nodes
+    assert node.completeness == "partial"
+    rules = {f.rule for f in run_catalogue(model)}
+    assert "parameter-set-not-read" not in rules
