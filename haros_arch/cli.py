@@ -390,23 +390,21 @@ def cmd_explain(args: argparse.Namespace, out: Console, err: Console) -> int:
                   "budget in a configuration and was stopped; its findings there are not "
                   "known. It never fails --fail-on error by itself.", highlight=False)
         return EXIT_OK
-    if args.code and args.code.endswith(UNDECIDED) and args.code[:-len(UNDECIDED)] in rules:
-        base = args.code[:-len(UNDECIDED)]
-        out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of {escape(base)} "
-                  "that a node of partial or unknown interface (or one using a name not "
-                  "known statically, or serving dynamic_reconfigure) could contradict, "
-                  "counted in one finding per configuration with the nodes in the way; "
-                  "they are not reported as findings.", highlight=False)
-        args.code = base
-    if args.code and args.code.endswith(UPSTREAM) and args.code[:-len(UPSTREAM)] in rules:
-        base = args.code[:-len(UPSTREAM)]
-        out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of {escape(base)} "
-                  "whose every place is in installed packages' own files (launch and "
+    counted = {  # a rule's info that counts matches not reported one by one
+        UNDECIDED: "that a node of partial or unknown interface (or one using a name not "
+                   "known statically, or serving dynamic_reconfigure) could contradict, "
+                   "counted in one finding per configuration with the nodes in the way; "
+                   "they are not reported as findings.",
+        UPSTREAM: "whose every place is in installed packages' own files (launch and "
                   "parameter files read from their models, the nodes those start), "
                   "counted in one finding per configuration: true of any system that "
-                  "includes those files, and not the workspace's to change.",
-                  highlight=False)
-        args.code = base
+                  "includes those files, and not the workspace's to change."}
+    for suffix, what in counted.items():
+        if args.code and args.code.endswith(suffix) and args.code[:-len(suffix)] in rules:
+            base = args.code[:-len(suffix)]
+            out.print(f"[bold]{escape(args.code)}[/bold] (info): the matches of "
+                      f"{escape(base)} {what}", highlight=False)
+            args.code = base
     if args.code and args.code not in CATALOGUE and args.code not in rules:
         err.print(f"haros-arch: {escape(args.code)} is neither a diagnostic code nor a "
                   "rule id ('haros-arch explain' lists them)", highlight=False)
