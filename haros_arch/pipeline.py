@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import os
 import time
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field, fields, replace
 from typing import TYPE_CHECKING, Any
@@ -100,10 +100,25 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
         others = found if isinstance(found, dict) else None
         built = earlier[1].get("build")
     record: dict[str, Any] = {}
-    model = _analyse(project, env, options, record, others, built)
+    moved = None
+    if earlier is not None:  # the kept run's model, when the edit moved lines only
+        had = earlier[1].get("sources")
+        now = runcache.sources(key)
+        if isinstance(had, dict):
+            changed = [path for path in had.keys() | now.keys()
+                       if had.get(path) != now.get(path)]
+            earlier_key, counts = earlier[0], earlier[1].get("before_graph")
+
+            def moved(model: Model, workspace: Workspace) -> Model | None:
+                with _stage(options, "cache"):
+                    return runcache.relocated(folder, earlier_key, counts, key, model,
+                                              changed, workspace.root, project.name)
+    model = _analyse(project, env, options, record, others, built, moved)
     with _stage(options, "cache"):
-        runcache.store(folder, key, model)
+        if not runcache.kept_as(model, key):
+            runcache.store(folder, key, model)
         if record:
+            record["sources"] = runcache.sources(key)
             runcache.store_outer(folder, outer, key, record)
     return model
 
@@ -223,13 +238,16 @@ def _json(data: Any) -> str:
 
 def _analyse(project: Project, env: Mapping[str, str], options: Options,
              record: dict[str, Any] | None, kept: dict[str, Any] | None = None,
-             built: Any = None) -> Model:
+             built: Any = None,
+             moved: Callable[[Model, Workspace], Model | None] | None = None) -> Model:
     """The run; ``record`` (when given) gets the C++ translation units of its nodes and
     what they gave, for ``_again``, and what the nodes of other languages gave (left
     empty when a node of another language reads a file named as C++: ``_units_tell``),
     and what the build files gave (``_build_files``); ``kept``: what the nodes of other
     languages gave in an earlier run whose files but C++ ones were these
-    (``extract_nodes``), ``built`` what its build files gave."""
+    (``extract_nodes``), ``built`` what its build files gave; ``moved``, given the model
+    with its nodes (no configuration built yet), answers with an earlier run's model
+    when that run had the same nodes but for lines moved in C++ files (``relocate``)."""
     from . import graph, launch
     from .graph.build import nodelet_plugin
     from .model.runtime import Configuration
@@ -290,6 +308,13 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
 
     if project.nodes:
         model.diagnostics.extend(graph.apply_node_hints(nodes, project.nodes, project_file))
+    if record is not None:  # what the configurations may add to (``moved``)
+        record["before_graph"] = {"packages": len(model.packages),
+                                  "diagnostics": len(model.diagnostics)}
+    if moved is not None:
+        earlier = moved(model, workspace)
+        if earlier is not None:
+            return earlier
 
     for spec in project.configurations:
         config = Configuration(spec.name, list(spec.launch), dict(spec.args),

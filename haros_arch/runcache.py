@@ -266,8 +266,19 @@ def run_key(project: Project, env: Mapping[str, str], models: bool, folder: str,
     # (the distribution the workspace's files name: its git branch is no file snapshotted)
     head = [FORMAT, __version__, os.getcwd(), repr(project), _environment(env), models,
             guessed_distro(project, env)]
-    return (f"{group}-{_digest(json.dumps([*head, snap.digest()]))}",
-            f"{group}-{_digest(json.dumps([*head, snap.digest(outer=True)]))}")
+    key = f"{group}-{_digest(json.dumps([*head, snap.digest()]))}"
+    _SOURCES[key] = {path: digest for path, digest in snap.inner
+                     if path.endswith(CPP_FILES)}
+    return key, f"{group}-{_digest(json.dumps([*head, snap.digest(outer=True)]))}"
+
+
+# the C++ files of each run's snapshot (``run_key``), by path: their content digests
+_SOURCES: dict[str, dict[str, str]] = {}
+
+
+def sources(key: str) -> dict[str, str]:
+    """The content digest of each C++ file the run ``key`` snapshotted, by path."""
+    return dict(_SOURCES.get(key, {}))
 
 
 def _group(roots: Iterable[str]) -> str:
@@ -544,15 +555,166 @@ def _store(folder: str, key: str, model: Model) -> None:
         # in the model's own order: read back, its documents list every field and key
         # as a run without the cache does (a QoS profile's keys sorted read back in
         # another order than the extraction made them, and `extract -o` differed)
-        text = json.dumps(data)
+        text, parts = _json_parts(data)
         same = json.dumps(model_to_data(from_data(json.loads(text)))) == text
     if not same:
         return  # a model that does not read back whole is not kept (never a wrong one)
     _KEPT[model] = (folder, key)
-    body = text.encode("utf-8")  # the text made above
+    _write_json(_entry(folder, key + PARTS), parts)
+    _write_model(folder, key, text)
+
+
+def kept_as(model: Model, key: str) -> bool:
+    """Whether ``model`` is the one kept under ``key`` (``relocated`` wrote it)."""
+    kept = _KEPT.get(model)
+    return kept is not None and kept[1] == key
+
+
+def _write_model(folder: str, key: str, text: str) -> None:
+    body = text.encode("utf-8")
     _write_bytes(_entry(folder, key), MODEL_HEAD + hashlib.sha256(body).hexdigest().encode()
                  + MODEL_MIDDLE + body + b"}")
     _prune(folder)
+
+
+PARTS = "-parts"  # an entry beside a model's: where its text holds each top-level field
+# the fields of a model's text a run after an edit of C++ sources compares (``relocated``)
+BEFORE_GRAPH = ("packages", "diagnostics")
+
+
+def _json_parts(data: dict[str, Any]) -> tuple[str, dict[str, list[Any]]]:
+    """``json.dumps(data)``, and where each of its fields' values begins and ends (and,
+    for those of ``BEFORE_GRAPH``, where each of their items ends)."""
+    pieces = ["{"]
+    parts: dict[str, list[Any]] = {}
+    at = 1
+    for index, (name, value) in enumerate(data.items()):
+        head = (", " if index else "") + json.dumps(name) + ": "
+        ends: list[int] = []
+        if name in BEFORE_GRAPH and isinstance(value, list):
+            items = [json.dumps(item) for item in value]
+            body = "[" + ", ".join(items) + "]"
+            end = at + len(head) + 1  # after the bracket
+            for number, item in enumerate(items):
+                end += (2 if number else 0) + len(item)
+                ends.append(end)
+        else:
+            body = json.dumps(value)
+        pieces += [head, body]
+        at += len(head)
+        parts[name] = [at, at + len(body), ends]
+        at += len(body)
+    pieces.append("}")
+    return "".join(pieces), parts
+
+
+def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
+              changed: Iterable[str], root: str, project: str) -> Model | None:
+    """The model of the run ``earlier`` with the lines of the C++ files ``changed``
+    moved (``relocate``), kept under ``key`` with its findings and diagnostics, when
+    ``model`` (this run's, its nodes extracted, no configuration built yet) has what
+    that run's had then (the first of its packages and diagnostics: ``counts`` of each
+    before its configurations were built, which may add more) but for those lines;
+    else None."""
+    from .relocate import Files
+
+    settled()
+    try:
+        earlier = _resolved(folder, earlier)
+        with open(_entry(folder, earlier), "rb") as handle:
+            content = handle.read()
+        with open(_entry(folder, earlier + PARTS), encoding="utf-8") as handle:
+            parts = json.load(handle)
+        body = _model_text(content)
+        if body is None:
+            return None
+        text = body.decode("utf-8")
+        data = model_to_data(model)
+        before = []
+        for name in BEFORE_GRAPH:
+            count = counts[name]
+            if not isinstance(count, int) or count != len(data[name]):
+                return None
+            start = int(parts[name][0])
+            before.append(text[start:int(parts[name][2][count - 1])] + "]" if count
+                          else "[]")
+    except (OSError, ValueError, KeyError, TypeError, IndexError):
+        return None
+    files = Files(changed, root)
+    maps = files.line_maps("\0".join(before),
+                           "\0".join(json.dumps(data[name]) for name in BEFORE_GRAPH))
+    if maps is None:
+        return None
+    moved = _renumbered_parts(files, text, parts, maps)
+    if moved is None:
+        return None
+    kept: list[tuple[str, str]] = []  # the earlier run's findings and diagnostics
+    for kind in ("findings", "diagnostics"):
+        try:
+            names = [entry.name for entry in os.scandir(os.path.join(folder, "runs"))
+                     if entry.name.startswith(f"{earlier}-{kind}-")]
+        except OSError:
+            names = []
+        for name in names:
+            try:
+                with open(os.path.join(folder, "runs", name), encoding="utf-8") as handle:
+                    found = files.renumbered(handle.read(), maps)
+            except (OSError, ValueError):
+                continue
+            if found is None:
+                return None
+            kept.append((key + name[len(earlier):], found))
+    new_text, new_parts = moved
+    _write_json(_entry(folder, key + PARTS), new_parts)
+    for name, found in kept:
+        _write_text(os.path.join(folder, "runs", name), found)
+    _write_model(folder, key, new_text)
+    result = KeptModel(new_text.encode("utf-8"), project)
+    _KEPT[result] = (folder, key)
+    return result
+
+
+def _renumbered_parts(files: Any, text: str, parts: dict[str, Any],
+                      maps: Any) -> tuple[str, dict[str, list[Any]]] | None:
+    """A model's text renumbered (``relocate.Files.renumbered``) field by field, and
+    where each field now is."""
+    pieces: list[str] = []
+    new_parts: dict[str, list[Any]] = {}
+    at = 0
+    length = 0
+    for name, (start, end, ends) in sorted(parts.items(), key=lambda item: item[1][0]):
+        head = files.renumbered(text[at:start], maps)
+        if head is None:
+            return None
+        pieces.append(head)
+        length += len(head)
+        begin, new_ends = length, []
+        for stop in [*ends, end]:  # item by item: where each now ends
+            piece = files.renumbered(text[start:stop], maps)
+            if piece is None:
+                return None
+            pieces.append(piece)
+            length += len(piece)
+            new_ends.append(length)
+            start = stop
+        new_parts[name] = [begin, length, new_ends[:-1]]
+        at = end
+    tail = files.renumbered(text[at:], maps)
+    if tail is None:
+        return None
+    pieces.append(tail)
+    return "".join(pieces), new_parts
+
+
+def _resolved(folder: str, key: str) -> str:
+    """The key of the model entry ``key`` names (itself, or the one its alias names)."""
+    with open(_entry(folder, key), "rb") as handle:
+        head = handle.read(len(MODEL_HEAD))
+    if head == MODEL_HEAD:
+        return key
+    with open(_entry(folder, key), encoding="utf-8") as handle:
+        data = json.load(handle)
+    return str(data["same_as"])
 
 
 def store_alias(folder: str, key: str, same_as: str, outer: str | None = None) -> None:

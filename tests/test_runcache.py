@@ -268,7 +268,8 @@ def test_a_cpp_change_that_extracts_otherwise_takes_the_python_nodes_as_they_wer
     project = _copy_examples(tmp_path)
     first, _ = _run(project, tmp_path / "cache")
     source = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
-    source.write_text("// moved\n" + source.read_text())  # every call's line changes
+    # every call's line changes, and one call with it (lines moved alone: ``relocate``)
+    source.write_text("// moved\n" + source.read_text().replace('"odom", 50', '"odom", 5'))
 
     def fails(*args: object, **kwargs: object) -> None:
         raise AssertionError("a Python node extracted again")
@@ -280,7 +281,8 @@ def test_a_cpp_change_that_extracts_otherwise_takes_the_python_nodes_as_they_wer
     fresh = analyse(load(str(project)), {}, Options(cache_dir=None, jobs=1))
     assert changed == json.dumps(model_to_data(fresh), sort_keys=True)
     assert '"language": "python"' in changed
-    source.write_text("// moved again\n" + source.read_text())  # the same twice over
+    source.write_text("// moved again\n" + source.read_text().replace(  # twice over
+        '"odom", 5', '"odom", 50'))
     with monkeypatch.context() as patch:
         patch.setattr(python, "extract_python", fails)
         again, _ = _run(project, tmp_path / "cache")

@@ -1,0 +1,107 @@
+"""Places in C++ sources whose lines moved: a kept run's text renumbered.
+
+An edit of a C++ source that changes no call (a comment, a log line, a body's logic)
+moves the lines of every call below it: the nodes a run extracts again are those of the
+kept run but for the line numbers in that file, and so are the graph and the findings
+built from them. ``Files`` names the changed files; its ``line_maps`` tells whether two
+texts (the JSON of the nodes and diagnostics of two runs) are the same but for the lines
+of places in those files, and gives, per file, the map from each old line to its new
+one; ``renumbered`` writes another text of the old run (its model, its findings) with
+those lines.
+
+A place is a location (``"file": "<path>", "line": <n>``, as the model's JSON writes a
+``Location``) or a path and line within a string (``<path>:<n>``, as messages and
+conditions quote them), the path absolute or relative to the workspace root. A map is
+used only when it keeps the order of the places it moves: it is one to one and
+increasing, and a line quoted in a string keeps its number of digits (a list sorted by
+such strings keeps its order); every place of a changed file in a renumbered text must
+be one the map knows. Anything else, a place at a byte offset or written another way,
+differs between the two texts and no map is given: the run is made again.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import os
+import re
+from collections.abc import Iterable
+
+# what may come before a path: the path is not the end of a longer one
+_BOUNDARY = frozenset(' \t\n"(<[{,:\'')
+Place = tuple[str, int, bool]  # file (absolute), line, whether quoted in a string
+Maps = dict[str, dict[int, int]]  # per file (absolute): old line -> new line
+
+
+class Files:
+    """The changed files (absolute paths), as a model's JSON text writes them: absolute,
+    or relative to the workspace ``root`` when inside it (``Workspace.relpath``)."""
+
+    def __init__(self, paths: Iterable[str], root: str) -> None:
+        top = os.path.abspath(root).rstrip(os.sep) + os.sep
+        self.spelt: dict[str, str] = {}
+        for path in paths:
+            full = os.path.abspath(path)
+            spellings = [full] + ([full[len(top):]] if full.startswith(top) else [])
+            for spelling in spellings:
+                self.spelt[json.dumps(spelling)[1:-1]] = full
+        alternatives = "|".join(re.escape(s) for s in sorted(self.spelt, key=len,
+                                                               reverse=True))
+        self.pattern = re.compile(f'({alternatives})(?:(", "line": )|:)(\\d+)'
+                                  if alternatives else r"(?!)")
+
+    def places(self, text: str) -> tuple[list[str], list[Place]]:
+        """The places in the changed files, and the text between them (one piece more
+        than places)."""
+        pieces: list[str] = []
+        found: list[Place] = []
+        last = 0
+        for match in self.pattern.finditer(text):
+            start = match.start()
+            before = text[start - 1] if start else ""
+            if before not in _BOUNDARY or (match.group(2) is not None and before != '"'):
+                continue  # the end of a longer path, or not a location's file
+            pieces.append(text[last:match.start(3)])
+            found.append((self.spelt[match.group(1)], int(match.group(3)),
+                          match.group(2) is None))
+            last = match.end(3)
+        pieces.append(text[last:])
+        return pieces, found
+
+    def line_maps(self, old: str, new: str) -> Maps | None:
+        """Per changed file, its old lines to their new ones, when ``new`` is ``old`` but
+        for the lines of places in those files and the maps keep their order (above);
+        else None."""
+        old_pieces, old_places = self.places(old)
+        new_pieces, new_places = self.places(new)
+        if old_pieces != new_pieces:
+            return None
+        maps: Maps = {}
+        backwards: Maps = {}
+        for (path, line, quoted), (other, moved, _) in zip(old_places, new_places,
+                                                            strict=True):
+            if path != other or (quoted and len(str(line)) != len(str(moved))):
+                return None
+            if maps.setdefault(path, {}).setdefault(line, moved) != moved:
+                return None
+            if backwards.setdefault(path, {}).setdefault(moved, line) != line:
+                return None
+        for lines in maps.values():
+            ordered = [lines[line] for line in sorted(lines)]
+            if any(a >= b for a, b in itertools.pairwise(ordered)):
+                return None
+        return maps
+
+    def renumbered(self, text: str, maps: Maps) -> str | None:
+        """``text`` with the lines of its places in the changed files moved by ``maps``;
+        None when a place is one the maps do not know, or a quoted line would change its
+        number of digits."""
+        pieces, found = self.places(text)
+        out = [pieces[0]]
+        for (path, line, quoted), piece in zip(found, pieces[1:], strict=True):
+            moved = maps.get(path, {}).get(line)
+            if moved is None or (quoted and len(str(moved)) != len(str(line))):
+                return None
+            out.append(str(moved))
+            out.append(piece)
+        return "".join(out)

@@ -1,0 +1,119 @@
+"""An edit of a C++ source that moves lines and changes no call: the kept run's model and
+findings renumbered (``relocate``, ``runcache.relocated``), the same as a cold run's."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+from pathlib import Path
+
+from haros_arch.pipeline import Options, analyse
+from haros_arch.project import load
+from haros_arch.query.command import document
+from haros_arch.relocate import Files
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+
+
+def _examples(tmp_path: Path) -> Path:
+    shutil.copytree(EXAMPLES, tmp_path / "examples")
+    for folder, _dirs, files in os.walk(tmp_path / "examples"):  # old enough to trust
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return tmp_path / "examples" / "project.yaml"
+
+
+def _document(project: Path, cache: Path | None) -> tuple[str, dict[str, float]]:
+    """The model and findings of a run (``extract``'s document), and its stages."""
+    spec = load(str(project))
+    timings: dict[str, float] = {}
+    model = analyse(spec, {}, Options(cache_dir=None if cache is None else str(cache),
+                                      jobs=1, timings=timings))
+    return json.dumps(document(model, spec), sort_keys=True), timings
+
+
+def test_lines_moved_in_cpp_sources_give_a_cold_runs_model_and_findings(tmp_path: Path,
+                                                                        monkeypatch
+                                                                        ) -> None:
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    first, _ = _document(project, cache)
+    controller = project.parent / "src" / "demo_robot" / "src" / "controller.cpp"
+    driver = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    lines = controller.read_text().split("\n")
+    middle = len(lines) // 2
+    edits = [  # each on top of the last: a run renumbers a renumbered run's model
+        (controller, "\n".join(["// a comment", *lines])),
+        (controller, "\n".join(["// a comment", *lines[:middle], "", "  // more", "",
+                                *lines[middle:]])),
+        (driver, "// the driver\n\n" + driver.read_text()),
+        (controller, "\n".join(lines[:middle] + lines[middle:])),  # back, the driver not
+    ]
+    for number, (source, text) in enumerate(edits):
+        source.write_text(text)
+        again, timings = _document(project, cache)
+        cold, _ = _document(project, None)
+        assert again == cold, number
+        assert "graph" not in timings and "C++" in timings, number
+        if number < 3:
+            assert again != first  # lines did move
+    same, timings = _document(project, cache)  # then kept as any run
+    assert set(timings) == {"cache"} and same == again
+
+
+def test_an_edit_that_changes_a_call_builds_the_configurations_again(tmp_path: Path,
+                                                                    monkeypatch) -> None:
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    _document(project, cache)
+    source = project.parent / "src" / "demo_robot" / "src" / "monitor.cpp"
+    text = source.read_text()
+    assert text.count('"robot1"') == 1
+    source.write_text("// moved\n" + text.replace('"robot1"', '"robot9"'))
+    again, timings = _document(project, cache)
+    assert "graph" in timings and '"robot9"' in again
+    assert again == _document(project, None)[0]
+
+
+FILE = "src/a/node.cpp"
+
+
+def _location(line: int, path: str = FILE) -> str:
+    return f'{{"package": "a", "file": "{path}", "line": {line}, "column": 3}}'
+
+
+def test_a_shift_maps_each_old_line_to_its_new_one() -> None:
+    files = Files(["/ws/" + FILE], "/ws")
+    old = f'[{_location(12)}, {_location(30)}, "under if (x) ({FILE}:30)"]'
+    new = f'[{_location(14)}, {_location(33)}, "under if (x) (/ws/{FILE}:33)"]'
+    assert files.line_maps(old, new) is None  # the path written otherwise: not the same
+    new = f'[{_location(14)}, {_location(33)}, "under if (x) ({FILE}:33)"]'
+    maps = files.line_maps(old, new)
+    assert maps == {"/ws/" + FILE: {12: 14, 30: 33}}
+    assert files.renumbered(f'{{"at": {_location(30)}, "m": "{FILE}:12:4"}}', maps) == (
+        f'{{"at": {_location(33)}, "m": "{FILE}:14:4"}}')
+    assert files.renumbered(_location(13), maps) is None  # a line the maps do not know
+    other = _location(13, "src/b/node.cpp")  # another file: as it is
+    assert files.renumbered(other, maps) == other
+    longer = f'"/elsewhere/{FILE}:13"'  # another file whose path ends as this one's
+    assert files.renumbered(longer, maps) == longer
+
+
+def test_a_map_that_would_reorder_places_is_none() -> None:
+    files = Files(["/ws/" + FILE], "/ws")
+    # two calls that swapped places: lines not in the same order
+    assert files.line_maps(f"[{_location(5)}, {_location(9)}]",
+                           f"[{_location(9)}, {_location(5)}]") is None
+    # one old line to two new ones, two old lines to one new one
+    assert files.line_maps(f"[{_location(5)}, {_location(5)}]",
+                           f"[{_location(6)}, {_location(7)}]") is None
+    assert files.line_maps(f"[{_location(5)}, {_location(6)}]",
+                           f"[{_location(7)}, {_location(7)}]") is None
+    # a line quoted in a string gains a digit: a list sorted by such strings may reorder
+    assert files.line_maps(f'["{FILE}:99"]', f'["{FILE}:100"]') is None
+    assert files.line_maps(_location(99), _location(100)) is not None  # a number sorts
+    # anything else differs: no map
+    assert files.line_maps(f'[{_location(5)}, "x"]', f'[{_location(6)}, "y"]') is None
