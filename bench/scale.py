@@ -8,7 +8,8 @@ and a check that the first three runs give the same JSON model.
 
 Wall and CPU seconds of each whole process are printed (on a busy machine the wall time
 waits for a processor: compare CPU). Stages (seconds of wall time): cache (the run
-cache's snapshot and entry), scan (folders and package manifests), launch, build files
+cache's snapshot and entry; the entry is written by a forked copy of the process, as
+every command does, whose CPU is counted with the process's), scan (folders and package manifests), launch, build files
 (CMake / setup.py), C++ (libclang's parse apart from the rest, the walk of the syntax
 trees and the cache; the split is measured with ``--jobs 1`` only: workers parse out of
 sight), Python (the other nodes, read while the C++ workers parse: their seconds are
@@ -16,7 +17,8 @@ within C++'s), models, graph, queries (the catalogue) and report (the HTML file)
 changed file is ``--touch`` or the first C++ source of the model; a comment is appended
 to it (touched: what the unit gives is the same, the kept run answers) and, in a fourth
 run, a comment line is put before its first line instead (edited: every call of the
-file moves, so the run is made again, from the unit cache and the other nodes' kept
+file moves: the kept run's model and findings renumbered when no call changed otherwise,
+``relocate``; else the run is made again, from the unit cache and the other nodes' kept
 results); the file is restored afterwards (use a copy of a fetched tree: this writes
 into it).
 Each run uses its own cache folder (a temporary one, empty for the cold run), never the
@@ -47,7 +49,7 @@ STAGES = ("cache", "scan", "launch", "build files", "C++", "C++ parse", "Python"
 def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str, Any]:
     """One run in this process: seconds per stage, counts, and the model's digest."""
     start = time.perf_counter()
-    from haros_arch.pipeline import Options, analyse
+    from haros_arch import pipeline  # noqa: F401 (its import is timed; ``_child`` runs it)
     from haros_arch.project import load
     imported = time.perf_counter() - start
 
@@ -69,6 +71,14 @@ def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str,
 
     timings: dict[str, float] = {}
     project = load(project_path)
+    from haros_arch import runcache
+    with runcache.background():  # as every command: the model kept by a forked copy
+        return _child(project, cache, jobs, model_out, timings, parse, start, imported)
+
+
+def _child(project: Any, cache: str, jobs: int, model_out: str, timings: dict[str, float],
+           parse: list[Any], start: float, imported: float) -> dict[str, Any]:
+    from haros_arch.pipeline import Options, analyse
     model = analyse(project, options=Options(cache_dir=cache, jobs=jobs, timings=timings))
     if jobs == 1:
         timings["C++ parse"] = parse[0]
