@@ -107,10 +107,12 @@ class Reach:
         (``may_call_ros``); a base that is neither a class read nor a builtin one
         (``object``, ``Exception``, ``ABC``) may make any call. The modules are those
         the program imports, transitively (``program_imports``): a subclass is made
-        where its module is imported, whether or not the program names it. Errs
-        towards yes."""
-        read, unread, _, dynamic = program_imports(loader)
-        if unread or dynamic:
+        where its module is imported, whether or not the program names it (one a
+        module imports by a name known only at run time is the walk's
+        ``PY_DYNAMIC_IMPORT``, which makes the node partial on its own). Errs towards
+        yes."""
+        read, unread, _, _ = program_imports(loader)
+        if unread:
             return True  # a module not read may define a subclass
         listed: list[Module | None] = list(loader.modules.values())
         self._reindex(listed)
