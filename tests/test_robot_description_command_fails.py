@@ -76,3 +76,17 @@ def test_a_file_a_spawner_reads_is_no_command(write_tree):
     # gone_world.urdf is read by spawn_model itself: it fails, the launch goes on
     assert ("ROBOT_DESCRIPTION_FILE", "warning", "bot/launch/load.launch", 6) in said(
         write_tree, "top.urdf.xacro")
+
+
+def test_a_text_file_that_is_not_there_is_said_once(write_tree):
+    # roslaunch's own read of textfile= raises (FileNotFoundError): the launch's reader
+    # says it (LAUNCH_BAD_VALUE, an error), not the description's reader again
+    root = str(write_tree({"bot/package.xml": package_xml("bot"),
+                           "bot/launch/load.launch": (
+                               '<launch>\n  <param name="robot_description" '
+                               'textfile="$(find bot)/urdf/gone.urdf"/>\n</launch>\n')}))
+    project = Project("p", os.path.join(root, "project.yaml"), workspace=[root],
+                      configurations=[ConfigurationSpec("c", ["bot/launch/load.launch"], {})])
+    model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
+    assert sorted((d.code, d.location.line) for d in model.configurations[0].diagnostics
+                  if d.severity in ("warning", "error")) == [("LAUNCH_BAD_VALUE", 2)]

@@ -191,9 +191,12 @@ def _unmade(config: Configuration, launch: LaunchModel, workspace: Workspace) ->
     xacro on ``urdf/kr60_ha.xacro``, the package's file being ``kr60ha.xacro``).
     ROBOT_DESCRIPTION_COMMAND_FAILS at the parameter's line (ROBOT_DESCRIPTION_FILE,
     a warning, under a condition not known), once, unless a description made from it
-    said so already."""
+    said so already, or the launch's reader said roslaunch refuses the element there
+    (``textfile=`` of a file that is not there: LAUNCH_BAD_VALUE)."""
     said = {(d.location.file, d.location.line) for d in config.diagnostics
-            if d.code in _FILE_CODES}
+            if d.code in _FILE_CODES} | {(d.location.file, d.location.line)
+                                         for d in launch.diagnostics
+                                         if d.code == "LAUNCH_BAD_VALUE"}
     for param in launch.params:
         parsed = xacro_command(param.command) if param.command is not None else None
         if parsed is None or UNKNOWN_MARK in parsed.path or not os.path.isabs(parsed.path):
