@@ -1,11 +1,12 @@
 """A class of another workspace package that a ROS 1 node builds is judged by the code
 of its constructor (``_client``: a NodeHandle there makes it a client, whose calls the
 node does not read); that code was looked for among the first 400 C++ files of the
-package's folder, in name order, and quadruped-robot's quadruped keeps 450 files of
-vendored libraries in ``extern/`` before its ``src/``: ``qrStateDataFlow``, a struct of
-Eigen members its example nodes build in their robot (qr_robot.h:627), was not found and
-said unseen, each example node partial. The sources of the libraries the package's
-CMake builds are read first (``_library_sources``)."""
+package's folder, in name order, and quadruped-robot's quadruped keeps 396 files of
+vendored libraries in ``extern/`` and 74 headers before its ``src/``:
+``qrStateDataFlow``, a struct of Eigen members its example nodes build in their robot
+(qr_robot.h:627), was not found and said unseen, each example node partial. The
+sources of the libraries the package's CMake builds are read first
+(``_library_sources``)."""
 
 from __future__ import annotations
 
