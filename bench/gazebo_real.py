@@ -31,7 +31,8 @@ from haros_arch import pipeline  # noqa: E402
 from haros_arch.model.model import Model  # noqa: E402
 from haros_arch.project import ConfigurationSpec, Project  # noqa: E402
 
-CODES = ("ROBOT_DESCRIPTION_XACRO", "ROBOT_DESCRIPTION_FILE", "ROBOT_DESCRIPTION_LIMIT",
+CODES = ("ROBOT_DESCRIPTION_XACRO", "ROBOT_DESCRIPTION_FILE", "ROBOT_DESCRIPTION_COMMAND_FAILS",
+         "ROBOT_DESCRIPTION_LIMIT",
          "ROBOT_DESCRIPTION_UNKNOWN", "GAZEBO_PLUGIN_UNKNOWN", "GAZEBO_NOT_STARTED")
 
 

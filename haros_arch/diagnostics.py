@@ -253,6 +253,17 @@ CATALOGUE: dict[str, Entry] = {
         "partial. A file the package's CMake writes into its folder with configure_file "
         "is read as written, from its template; the message names the command when a "
         "value it writes is not known here."),
+    "ROBOT_DESCRIPTION_COMMAND_FAILS": Entry(
+        "error", "robot description file {path} cannot be read: {detail}; the launch "
+        "cannot load the parameter made of it and stops there",
+        "A robot description file that the launch reads to set a parameter (ROS 1 "
+        "``<param command=\"xacro FILE\">`` or ``textfile=\"FILE\"``, ROS 2 "
+        "``Command(['xacro ', FILE])``) does not exist, nor a file it includes, or is "
+        "not well-formed XML: xacro (``cat``, roslaunch's own read of a text file, for a "
+        "missing file) fails, so roslaunch stops loading the launch (\"Cannot load "
+        "command parameter\") and ros2 launch stops with a SubstitutionFailure, whether "
+        "or not a node reads the description. Under a condition not known statically it "
+        "is ROBOT_DESCRIPTION_FILE, a warning."),
     "ROBOT_DESCRIPTION_LIMIT": Entry(
         "warning", "robot description is too big to read: {detail}",
         "Reading a robot description stopped at a bound (files read, include and macro "

@@ -3,7 +3,9 @@
 stretch_gazebo/urdf/stretch_gazebo.urdf.xacro, a file the repository no longer has):
 ROBOT_DESCRIPTION_FILE was placed at line 0 of the missing file, a place nobody can
 open; it is now at the launch file's line that gives the command. A file missing deeper
-(an include of the description) keeps its own place, the including element's line."""
+(an include of the description) keeps its own place, the including element's line.
+(Either makes the command fail, and roslaunch stop: ROBOT_DESCRIPTION_COMMAND_FAILS,
+tests/test_robot_description_command_fails.py.)"""
 
 from __future__ import annotations
 
@@ -41,7 +43,8 @@ def places(write_tree, file: str) -> list[tuple[str | None, int, str]]:
                       configurations=[ConfigurationSpec("c", ["bot/launch/sim.launch"], {})])
     model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
     return [(d.location.file, d.location.line, d.message)
-            for d in model.configurations[0].diagnostics if d.code == "ROBOT_DESCRIPTION_FILE"]
+            for d in model.configurations[0].diagnostics
+            if d.code == "ROBOT_DESCRIPTION_COMMAND_FAILS"]
 
 
 def test_a_missing_description_file_is_said_where_the_launch_file_names_it(write_tree):
@@ -78,7 +81,8 @@ def test_a_missing_file_is_said_when_no_node_here_takes_the_description(write_tr
                                                             {})])
         model = pipeline.analyse(project, {}, pipeline.Options(cache_dir=None, jobs=1))
         return [(d.location.file, d.location.line, d.message) for d in
-                model.configurations[0].diagnostics if d.code == "ROBOT_DESCRIPTION_FILE"]
+                model.configurations[0].diagnostics
+                if d.code == "ROBOT_DESCRIPTION_COMMAND_FAILS"]
 
     ((file, line, message),) = said("kr60_ha.xacro")
     assert (file, line) == ("bot/launch/load.launch", 2)

@@ -231,9 +231,10 @@ def test_xacro_still_rejects_a_prefix_no_xmlns_declares(write_tree):
             "             arguments=['-entity', 'bot', '-topic', 'robot_description'])])\n"),
     })
     config = configuration(str(root), "bot/launch/rsp.launch.py")
-    assert [(d.code, d.location.file, d.location.line) for d in config.diagnostics
-            if d.code == "ROBOT_DESCRIPTION_FILE"] == [
-        ("ROBOT_DESCRIPTION_FILE", "bot/urdf/bot.urdf.xacro", 3)]
+    # (launch runs the Command: xacro fails, and the launch stops)
+    assert [(d.code, d.severity, d.location.file, d.location.line)
+            for d in config.diagnostics if d.code.startswith("ROBOT_DESCRIPTION")] == [
+        ("ROBOT_DESCRIPTION_COMMAND_FAILS", "error", "bot/urdf/bot.urdf.xacro", 3)]
 
 
 def test_robot_descriptions_survive_the_json_model():

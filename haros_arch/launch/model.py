@@ -251,6 +251,35 @@ def package_not_found(package: str) -> Value:
     return Value.unknown(_NOT_FOUND + package)
 
 
+def program_not_found(value: Value) -> tuple[str | None, set[str]]:
+    """Of a command line that is never run, what is not known only because its program
+    lies in the folder of a package neither in the workspace nor installed here
+    (``package_not_found``; roslaunch runs ``$(find xacro)/xacro`` from xacro's ``lib``
+    folder, and no run here needs it): the line with that program written as the launch
+    file finds it (``$(find xacro)/xacro '/ws/src/robot/urdf/r.urdf.xacro'``), None when
+    something else of it is not known too (an argument's folder: the file the command
+    reads); and those packages, not said (none when another word needs them too)."""
+    shown = ""
+    program: set[str] = set()
+    elsewhere: set[str] = set()
+    other = False  # a part not known for another reason, or outside the program
+    for part in value.parts:
+        if isinstance(part, str):
+            shown += part
+            continue
+        package = part.origin[len(_NOT_FOUND):] if part.origin.startswith(_NOT_FOUND) \
+            else None
+        if package is not None and not any(c.isspace() for c in shown.lstrip()):
+            program.add(package)
+            shown += f"$(find {package})"
+        else:
+            other = True
+            elsewhere.update([package] if package is not None else [])
+    program -= elsewhere
+    whole = bool(program) and not other
+    return (shown if whole else None), program
+
+
 # the origin of a ROS 1 ``$(env NAME)`` whose variable the configuration does not set
 _ENV_UNSET = "env "
 

@@ -46,7 +46,7 @@ from ..launch.ros2.naming import (
     pattern_matches,
     split_rule,
 )
-from ..model.conditions import Condition
+from ..model.conditions import Condition, undecided
 from ..model.location import NOWHERE, Location
 from ..model.robot import DescribedControl, DescribedPlugin, RobotDescription
 from ..model.rosname import as_namespace, clean, is_ros2_node_name, namespace_of, resolve
@@ -189,10 +189,14 @@ def _unmade(config: Configuration, launch: LaunchModel, workspace: Workspace) ->
     ``Command`` substitution as it gives the node its parameters) stops, whether or not a
     node read here takes the description (kuka_experimental's load_kr60_ha.launch runs
     xacro on ``urdf/kr60_ha.xacro``, the package's file being ``kr60ha.xacro``).
-    ROBOT_DESCRIPTION_FILE at the parameter's line, once, unless a description made
-    from it said so already."""
+    ROBOT_DESCRIPTION_COMMAND_FAILS at the parameter's line (ROBOT_DESCRIPTION_FILE,
+    a warning, under a condition not known), once, unless a description made from it
+    said so already, or the launch's reader said roslaunch refuses the element there
+    (``textfile=`` of a file that is not there: LAUNCH_BAD_VALUE)."""
     said = {(d.location.file, d.location.line) for d in config.diagnostics
-            if d.code == "ROBOT_DESCRIPTION_FILE"}
+            if d.code in _FILE_CODES} | {(d.location.file, d.location.line)
+                                         for d in launch.diagnostics
+                                         if d.code == "LAUNCH_BAD_VALUE"}
     for param in launch.params:
         parsed = xacro_command(param.command) if param.command is not None else None
         if parsed is None or UNKNOWN_MARK in parsed.path or not os.path.isabs(parsed.path):
@@ -203,9 +207,20 @@ def _unmade(config: Configuration, launch: LaunchModel, workspace: Workspace) ->
                 os.path.exists(share_source(workspace, path)):
             continue
         said.add(where)
-        config.diagnostics.append(diag.make("ROBOT_DESCRIPTION_FILE", param.location,
-                                            path=workspace.relpath(path),
-                                            detail="no such file"))
+        config.diagnostics.append(diag.make(
+            "ROBOT_DESCRIPTION_COMMAND_FAILS" if _runs(param.conditions)
+            else "ROBOT_DESCRIPTION_FILE", param.location, path=workspace.relpath(path),
+            detail="no such file"))
+
+
+# what says that a description file cannot be read
+_FILE_CODES = ("ROBOT_DESCRIPTION_FILE", "ROBOT_DESCRIPTION_COMMAND_FAILS")
+
+
+def _runs(conditions: tuple[Condition, ...]) -> bool:
+    """Whether what is under ``conditions`` is loaded wherever the launch runs (no
+    condition the configuration leaves undecided)."""
+    return not undecided(conditions)
 
 
 def _spawned(spawn: Spawn, started: Sequence[tuple[NodeDecl, NodeInstance]],
@@ -328,9 +343,11 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
                 "is not given by a xacro command"
             _note(config, decl.location, f"parameter {name} {what}")
             return None
-        return _from_command(param.command, name, param.location, workspace, config)
+        return _from_command(param.command, name, param.location, workspace, config,
+                             _runs(param.conditions))
     if spawn.command is not None:  # ros_gz_sim's -string: the output of a xacro command
-        return _from_command(spawn.command, spawn.command, decl.location, workspace, config)
+        return _from_command(spawn.command, spawn.command, decl.location, workspace, config,
+                             _runs(decl.conditions))
     if spawn.topic is not None:  # ROS 2: robot_state_publisher's latched description
         topic = resolve(spawn.topic, decl.namespace)
         for param in reversed(launch.params):
@@ -339,7 +356,7 @@ def _description(spawn: Spawn, launch: LaunchModel, workspace: Workspace,
                 if param.command is None:
                     break
                 return _from_command(param.command, topic, param.location, workspace,
-                                     config)
+                                     config, _runs(param.conditions))
         _note(config, decl.location, f"no node of the configuration is given the "
                                      f"description published on {topic} by a xacro command")
         return None
@@ -467,7 +484,7 @@ def _from_param(param: ParamDecl, workspace: Workspace, config: Configuration,
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
               for key, value in parsed.args.items()}
     return _expanded(parsed.path, values, param.name, param.location, workspace, config,
-                     by_xacro=parsed.by_xacro)
+                     by_xacro=parsed.by_xacro, command=_runs(param.conditions))
 
 
 def _last_param(params: Sequence[ParamDecl], name: str) -> ParamDecl | None:
@@ -514,8 +531,10 @@ def xacro_command(command: str) -> XacroCommand | None:
 
 
 def _from_command(command: str | None, name: str, where: Location, workspace: Workspace,
-                  config: Configuration,
+                  config: Configuration, runs: bool = False,
                   ) -> tuple[RobotDescription, xacro.Description] | None:
+    """The description the launch's ``command`` makes; ``runs``: the launch runs it
+    wherever it is loaded (``_runs``), so a file it cannot read stops the launch."""
     assert command is not None
     parsed = xacro_command(command)
     if parsed is None:
@@ -527,7 +546,7 @@ def _from_command(command: str | None, name: str, where: Location, workspace: Wo
     values = {key: xacro.partial_text(value, f"xacro argument {key} is not known")
               for key, value in parsed.args.items()}
     return _expanded(parsed.path, values, name, where, workspace, config,
-                     by_xacro=parsed.by_xacro)
+                     by_xacro=parsed.by_xacro, command=runs)
 
 
 def _file_description(path: str, name: str | None, where: Location, workspace: Workspace,
@@ -544,8 +563,10 @@ def _file_description(path: str, name: str | None, where: Location, workspace: W
 
 def _expanded(path: str, args: Mapping[str, str | Value], name: str, where: Location,
               workspace: Workspace, config: Configuration, by_xacro: bool = True,
+              command: bool = False,
               ) -> tuple[RobotDescription, xacro.Description]:
-    expanded = xacro.expand(path, args, workspace, named_at=where, by_xacro=by_xacro)
+    expanded = xacro.expand(path, args, workspace, named_at=where, by_xacro=by_xacro,
+                            command=command)
     config.diagnostics.extend(expanded.diagnostics)
     record = RobotDescription(
         name, workspace.relpath(path) if expanded.files else None, where,

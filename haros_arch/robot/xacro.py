@@ -201,7 +201,8 @@ def local_name(element: Element) -> str:
 
 def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
            environment: Mapping[str, str] | None = None,
-           named_at: Location | None = None, by_xacro: bool = True) -> Description:
+           named_at: Location | None = None, by_xacro: bool = True,
+           command: bool = False) -> Description:
     """The robot description in ``path`` expanded with ``args`` (``name:=value`` of the
     xacro command line). Never raises for bad input. ``named_at``: where the file is
     named (a launch file's xacro command), the place of what is said of the file itself
@@ -210,10 +211,14 @@ def expand(path: str, args: Mapping[str, str | Value], workspace: Workspace,
     ``xmlns`` declares; False: the tool that uses it reads it as it is (sdformat for
     ``gz sim``'s ``create -file``, urdfdom for a ``cat`` command's output, both
     tinyxml2), which keeps such a prefix as part of the name (gz-sim's custom sensors,
-    ``<sensor type="custom" gz:type="dvl">``)."""
+    ``<sensor type="custom" gz:type="dvl">``). ``command``: the launch runs the command
+    that reads the file wherever it is loaded (no condition not known): a file that is
+    not there, or (through xacro) not well-formed, makes it fail and the launch stop,
+    ``ROBOT_DESCRIPTION_COMMAND_FAILS`` instead of ``ROBOT_DESCRIPTION_FILE``."""
     expander = _Expander(path, dict(args), workspace,
                          workspace.environment if environment is None else environment,
                          named_at, by_xacro)
+    expander.command = command
     description = expander.description
     try:
         root = expander.read(path, None)
@@ -234,6 +239,7 @@ class _Expander:
                  by_xacro: bool = True) -> None:
         self.description = Description(path)
         self.by_xacro = by_xacro
+        self.command = False  # read by a command the launch runs (``expand``)
         self.named_at = named_at
         self.args = args
         self.workspace = workspace
@@ -289,8 +295,9 @@ class _Expander:
                     f"made by configure_file at {self.workspace.relpath(made.file)}:"
                     f"{made.line} from {self.workspace.relpath(made.input)}, but "
                     + made.unknown)
-                self.report(at, "ROBOT_DESCRIPTION_FILE", path=self.workspace.relpath(path),
-                            detail=detail)
+                self.report(at, "ROBOT_DESCRIPTION_COMMAND_FAILS" if self.command
+                            and made is None else "ROBOT_DESCRIPTION_FILE",
+                            path=self.workspace.relpath(path), detail=detail)
                 self.unknown(at, f"{self.workspace.relpath(path)} does not exist"
                              if made is None else f"{self.workspace.relpath(path)}, "
                              f"{detail}")
@@ -306,7 +313,8 @@ class _Expander:
         except etree.XMLSyntaxError as err:
             line = err.lineno or 0
             self.description.diagnostics.append(diag.make(
-                "ROBOT_DESCRIPTION_FILE", self.workspace.location(path, line),
+                "ROBOT_DESCRIPTION_COMMAND_FAILS" if self.command and self.by_xacro
+                else "ROBOT_DESCRIPTION_FILE", self.workspace.location(path, line),
                 path=self.workspace.relpath(path), detail=str(err.msg)))
             self.unknown(at, f"{self.workspace.relpath(path)} is not well-formed XML")
             return None

@@ -15,7 +15,7 @@ import json
 import os
 import re
 import weakref
-from collections.abc import Callable, Collection, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -2315,7 +2315,7 @@ def _client(name: str, cls: str, declared: set[str], workspace: Workspace,
             return False
         if other.root:
             read.append(manifest_of(other.root))
-        code = _defining_code(other.root, last, read)
+        code = _defining_code(other.root, last, read, _library_sources(other, workspace))
         return code is None or _ROS1_CLIENT_CODE.search(code) is not None
     if name not in declared:
         return False
@@ -2360,12 +2360,30 @@ def no_client_classes() -> dict[str, frozenset[str]]:
             for package, entry in data["classes"].items()}
 
 
-def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
+def _library_sources(package: Package, workspace: Workspace) -> list[str]:
+    """The C++ sources of the libraries ``package``'s CMake builds (absolute), where the
+    code of a class it exports is: read before the rest of its folder, whose first
+    ``MAX_CLIENT_FILES`` files may all be vendored code (quadruped-robot's quadruped
+    holds 396 C++ files of ``extern/`` libraries and 74 headers before its ``src/``)."""
+    from ...cmake import CMAKE_BUILD_TYPES, targets_of
+
+    if package.build_type not in CMAKE_BUILD_TYPES or not package.root:
+        return []
+    targets, _ = targets_of(package, workspace)
+    return list(dict.fromkeys(
+        source if os.path.isabs(source) else os.path.join(package.root, source)
+        for target in targets if target.kind == "library"
+        for source in target.sources if source.endswith(_SOURCE_SUFFIXES)))
+
+
+def _defining_code(root: str, cls: str, read: list[str], first: Sequence[str] = ()
+                   ) -> str | None:
     """The text of the files under ``root`` that define a constructor of ``cls`` out of
     its class (``cls::cls(``), joined; else of those that define the class itself
     (``class cls {``, its constructors inline); "" when ``cls`` is only an alias or an
     enumeration there (``using Covariance3d = ...``, ``enum class cls``: no code of its
-    own); None when no file says."""
+    own); None when no file says. The files ``first`` (the package's libraries'
+    sources, ``_library_sources``) are read before the folder's, beside its limit."""
     name = re.escape(cls)
     defines = re.compile(rf"\b{name}\s*::\s*{name}\s*\(")
     declares = re.compile(rf"\b(?:class|struct)\s+(?:\w+\s+)?{name}\b[^;{{]*{{")
@@ -2374,39 +2392,44 @@ def _defining_code(root: str, cls: str, read: list[str]) -> str | None:
     found: list[str] = []
     classes: list[tuple[str, str]] = []
     alias = False
-    seen = 0
-    for folder, dirs, files in os.walk(root):
-        dirs.sort()
-        for file in sorted(files):
-            if not file.endswith(_SOURCE_SUFFIXES):
+    for full in [*first, *_client_files(root, set(first))]:
+        try:
+            if os.path.getsize(full) > MAX_FILE_BYTES:
                 continue
-            seen += 1
-            if seen > MAX_CLIENT_FILES:
-                break
-            full = os.path.join(folder, file)
-            try:
-                if os.path.getsize(full) > MAX_FILE_BYTES:
-                    continue
-                with open(full, encoding="utf-8", errors="replace") as handle:
-                    text = handle.read()
-            except OSError:
-                continue
-            if defines.search(text):
-                found.append(text)
-                read.append(full)
-            elif declares.search(text):
-                classes.append((full, text))
-            elif plain.search(text):
-                alias = True
-                read.append(full)
-        if seen > MAX_CLIENT_FILES:
-            break
+            with open(full, encoding="utf-8", errors="replace") as handle:
+                text = handle.read()
+        except OSError:
+            continue
+        if defines.search(text):
+            found.append(text)
+            read.append(full)
+        elif declares.search(text):
+            classes.append((full, text))
+        elif plain.search(text):
+            alias = True
+            read.append(full)
     if found:
         return "\n".join(found)
     if classes:
         read.extend(full for full, _ in classes)
         return "\n".join(text for _, text in classes)
     return "" if alias else None
+
+
+def _client_files(root: str, skipped: set[str]) -> Iterator[str]:
+    """The first ``MAX_CLIENT_FILES`` C++ files under ``root`` (sorted), less
+    ``skipped``."""
+    seen = 0
+    for folder, dirs, files in os.walk(root):
+        dirs.sort()
+        for file in sorted(files):
+            full = os.path.join(folder, file)
+            if not file.endswith(_SOURCE_SUFFIXES) or full in skipped:
+                continue
+            seen += 1
+            if seen > MAX_CLIENT_FILES:
+                return
+            yield full
 
 
 def error_detail(spelling: str, generated: str) -> str:

@@ -98,6 +98,57 @@ class Reach:
                     found.extend(self._class_bodies(other, seen))
         return found
 
+    def subclasses_may_call_ros(self, name: str, loader: Loader) -> bool:
+        """Whether a program that lists the subclasses of the class ``name``
+        (``Thruster.__subclasses__()``) and builds them may make a ROS call through
+        them: unless ``name`` is one class of the modules read, every module it imports
+        of the workspace was read, and no method of a class derived from it (by name,
+        transitively, in any module read), nor of their bases, may reach a ROS call
+        (``may_call_ros``); a base that is neither a class read nor a builtin one
+        (``object``, ``Exception``, ``ABC``) may make any call. The modules are those
+        the program imports, transitively (``program_imports``): a subclass is made
+        where its module is imported, whether or not the program names it (one a
+        module imports by a name known only at run time is the walk's
+        ``PY_DYNAMIC_IMPORT``, which makes the node partial on its own). Errs towards
+        yes."""
+        read, unread, _, _ = program_imports(loader)
+        if unread:
+            return True  # a module not read may define a subclass
+        listed: list[Module | None] = list(loader.modules.values())
+        self._reindex(listed)
+        classes = [c for m in read for c in m.classes.values()]
+        if len([c for c in classes if c.name == name]) != 1:
+            return True  # not a class read (``cls``, a parameter), or two of that name
+        family = {name}
+        grown = True
+        while grown:
+            grown = False
+            for cls in classes:
+                if cls.name not in family and any(
+                        last_name(base) in family for base in cls.node.bases):
+                    family.add(cls.name)
+                    grown = True
+        seen: set[int] = set()
+        todo = [c for c in classes if c.name in family]
+        while todo:
+            cls = todo.pop()
+            if id(cls) in seen:
+                continue
+            seen.add(id(cls))
+            if any(self.may_call_ros(method, listed) for method in cls.methods.values()):
+                return True
+            for base in cls.node.bases:
+                based = last_name(base)
+                found = [c for c in self._index.get(based or "", ())
+                         if isinstance(c, ClassInfo)]
+                if not found and based not in _PLAIN_BASES:
+                    return True  # a base not read (an API class among them)
+                todo.extend(found)
+        return False
+
+
+# bases a class may have that make no call of their own
+_PLAIN_BASES = frozenset({"object", "Exception", "ABC", "Generic", "Protocol"})
 
 # builtins and modules that import a module named at run time
 _DYNAMIC_NAMES = frozenset({"__import__", "exec", "eval"})
@@ -115,16 +166,32 @@ def imports_ros(loader: Loader, unseen: frozenset[str]) -> bool:
     (``importlib``, ``__import__``, ``exec``). A module of none of these (the standard
     library, numpy) is one the walk reads no ROS call in either."""
     clients = api_modules() | unseen
+    _, _, outside, dynamic = program_imports(loader)
+    return dynamic or any(name.split(".")[0] in clients | _DYNAMIC_MODULES
+                          for name in outside)
+
+
+def program_imports(loader: Loader) -> tuple[list[Module], bool, list[str], bool]:
+    """What the modules read import, transitively: the package's and workspace's
+    modules (each read here, so the loader holds them too), whether one of those could
+    not be read, the other modules' names (not a message module's, ``std_msgs.msg``,
+    nor a name in a module of the package), and whether a module is imported by a name
+    known only at run time (``__import__``, ``exec``, ``eval``)."""
     todo = [m for m in loader.modules.values() if m is not None]
+    unread = any(m is None for m in loader.modules.values())
+    read: list[Module] = []
+    outside: list[str] = []
+    dynamic = False
     seen: set[str] = set()
     while todo:
         module = todo.pop()
         if module.path in seen:
             continue
         seen.add(module.path)
+        read.append(module)
         for node in ast.walk(module.tree):
             if isinstance(node, ast.Name) and node.id in _DYNAMIC_NAMES:
-                return True
+                dynamic = True
             if isinstance(node, ast.Import):
                 named = [(0, alias.name) for alias in node.names]
             elif isinstance(node, ast.ImportFrom):
@@ -140,10 +207,11 @@ def imports_ros(loader: Loader, unseen: frozenset[str]) -> bool:
                     found = loader.load(local)
                     if found is not None:
                         todo.append(found)
+                    else:
+                        unread = True
                     continue
                 parts = dotted.split(".")
                 if level or (len(parts) > 1 and parts[1] in _INTERFACES):
                     continue  # a name in a module of the package, or a message module
-                if parts[0] in clients or parts[0] in _DYNAMIC_MODULES:
-                    return True
-    return False
+                outside.append(dotted)
+    return read, unread, outside, dynamic

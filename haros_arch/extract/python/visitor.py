@@ -1550,13 +1550,18 @@ class Walker:
         """``PY_DYNAMIC_CLASSES`` where code of the program asks a class for its
         subclasses (``cls.__subclasses__()``), which it then builds by the list it gets
         at run time (kalman_supervisor builds every ``Module`` and ``State`` so, and each
-        opens its topics): which classes run, and what they communicate, is not read."""
-        for module in self.loader.modules.values():
+        opens its topics): which classes run, and what they communicate, is not read.
+        Not where the class is named and none of the classes so listed may make a ROS
+        call (``Reach.subclasses_may_call_ros``: uuv_simulator's path generators)."""
+        for module in list(self.loader.modules.values()):
             if module is None:
                 continue
             for node in ast.walk(module.tree):
                 if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
-                        and node.func.attr == "__subclasses__":
+                        and node.func.attr == "__subclasses__" and (
+                            not isinstance(node.func.value, (ast.Name, ast.Attribute))
+                            or self._reach.subclasses_may_call_ros(
+                                last_name(node.func.value) or "", self.loader)):
                     self.diagnostics.append(diag.make(
                         "PY_DYNAMIC_CLASSES", self.loader.location(
                             module.path, node.lineno, node.col_offset + 1),

@@ -33,6 +33,7 @@ from ..model import (
     RecordedEnvironment,
     UnreadInclude,
     found_nowhere,
+    program_not_found,
     shell_words,
 )
 from ..paths import missing_argument_paths, written_absolute
@@ -185,8 +186,12 @@ class Ros1Loader:
         """Something roslaunch refuses: an error, and the element is skipped."""
         self.report("LAUNCH_BAD_VALUE", scope, element, detail=detail)
 
-    def resolve(self, raw: str, scope: Scope, element: Element) -> Value:
-        """Substitute ``raw`` in ``scope``; problems become diagnostics, never raise."""
+    def resolve(self, raw: str, scope: Scope, element: Element, command: bool = False
+                ) -> Value:
+        """Substitute ``raw`` in ``scope``; problems become diagnostics, never raise.
+        ``command``: ``raw`` is a command line that is never run (``<param command=>``),
+        whose program's folder is not needed (``program_not_found``: the package of
+        ``$(find xacro)/xacro`` not here is not said)."""
         def find(name: str) -> str | None:
             self.model.package_uses.append(PackageUse(name, self.where(scope, element)))
             found = self.workspace.find(name)
@@ -229,6 +234,10 @@ class Ros1Loader:
                             path=self.relpath(scope.path), name=name)
             else:
                 self.report("LAUNCH_ARG_UNSET", scope, element, name=name)
+        if command:  # never run: its program's folder is not needed (said by tag_param)
+            _, program = program_not_found(result)
+            ctx.unknown = [d for d in ctx.unknown
+                           if not any(d.startswith(f"package {p} ") for p in program)]
         for detail in dict.fromkeys(ctx.unknown):
             self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=detail)
         for name, default in ctx.defaults_taken:
@@ -239,9 +248,10 @@ class Ros1Loader:
                         why=self.workspace.absence(name))
         return result
 
-    def value(self, element: Element, attribute: str, scope: Scope) -> Value | None:
+    def value(self, element: Element, attribute: str, scope: Scope, command: bool = False
+              ) -> Value | None:
         raw = element.get(attribute)
-        return None if raw is None else self.resolve(raw, scope, element)
+        return None if raw is None else self.resolve(raw, scope, element, command)
 
     def text(self, element: Element, attribute: str, scope: Scope) -> str | None:
         value = self.value(element, attribute, scope)

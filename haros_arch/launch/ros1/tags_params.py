@@ -20,7 +20,7 @@ from ...files import read_bytes
 from ...model.conditions import Condition
 from ...model.location import Location
 from ...model.values import Value
-from ..model import ParamDecl
+from ..model import ParamDecl, program_not_found
 from ..partial_yaml import MARK, marked_text, unknown_parts
 from ..paths import missing_argument_paths
 from .params import (
@@ -48,7 +48,7 @@ _TYPE_NAMES = {"string": "str", "boolean": "bool"}
 def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
               local: bool = False) -> None:
     kind = (element.get("type") or "auto").lower().strip()
-    sources = {key: loader.value(element, key, scope)
+    sources = {key: loader.value(element, key, scope, command=key == "command")
                for key in ("value", "textfile", "binfile", "command")}
     given = [key for key, found in sources.items() if found is not None]
     if len(given) != 1:
@@ -70,6 +70,11 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
                                             "bool", "boolean", "yaml"):
         loader.fail(scope, element, f"invalid <param> {name}: unknown type '{kind}'")
         return
+    elif source == "command" and (line := program_not_found(raw)[0]) is not None:
+        # ``$(find xacro)/xacro FILE`` with xacro not here: only its program's folder is
+        # not known, which a command never run does not need (the robot description is
+        # read from FILE, ``robot.attach``); its value is what is not known
+        param_value(loader, source, line, kind, scope, element)
     where = loader.where(scope, element)
     set_twice(loader, element, scope, name)
     if source == "value" and isinstance(value, str) and kind != "yaml":

@@ -16,7 +16,7 @@ from typing import Any
 from ...model.diagnostic import Diagnostic
 from ...model.location import NOWHERE, Location
 from ...model.values import Value
-from ...shell import SHELLS, TERMINALS, commands
+from ...shell import SHELLS, TERMINALS, Wait, run_order
 
 
 # -- substitutions ---------------------------------------------------------------
@@ -432,22 +432,52 @@ def shell_commands(words: list[Text]) -> list[list[Text]]:
     teleop.py; exit"``: ``source setup.bash``, ``ros2 run pkg teleop.py``, ``exit``;
     ``shell.commands``), else the line itself (a wrapper with a word not known
     statically too)."""
+    return [command for command, _ in _shell_order(words)]
+
+
+def _shell_order(words: list[Text]) -> list[tuple[list[Text], tuple[Wait, ...]]]:
+    """``shell_commands`` with what each waits for (``shell.run_order``)."""
     plain = [w[0] if len(w) == 1 and isinstance(w[0], str) else None for w in words]
     if not plain or plain[0] is None or None in plain or (
             plain[0].rsplit("/", 1)[-1] not in TERMINALS | SHELLS):
-        return [words]
-    ran = commands([w for w in plain if w is not None])
-    return [[(w,) for w in command] for command in ran] or [words]
+        return [(words, ())]
+    ran = run_order([w for w in plain if w is not None])
+    return [([(w,) for w in command], waits) for command, waits in ran] or [(words, ())]
 
 
-def shell_run(words: list[Text]) -> list[Text]:
-    """The ``ros2`` command a process runs through a terminal emulator or a shell it
-    opens (``shell_commands``), the first of its commands that is ``ros2 ...``; else the
-    words as they are."""
-    for command in shell_commands(words):
-        if command and command[0] and command[0][0] == "ros2":
-            return command
-    return words
+# what a command started after another in a shell line waits for, as its condition
+_WAITS = {";": "ends", "&&": "ends with success", "||": "fails"}
+
+
+def process_actions(words: list[Text], location: Location = NOWHERE) -> list[Action]:
+    """What a process's command line starts that the launch reads: each command it runs
+    (itself, or every command of the line a terminal emulator or a shell it opens runs,
+    ``shell_commands``: ``bash -c "ros2 run a x & ros2 run b y"`` is two nodes) that is
+    ``ros2 launch ...`` (a ``LaunchCommand``) or a node (``ros2_command_node``), a
+    command that waits for others to end, succeed or fail (``;``, ``&&``, ``||``, not
+    for set-up commands: ``shell.run_order``) under that event (``Delayed``), and,
+    beside them, any other ``ros2`` command as a process that starts no node we can
+    name (``ros2 bag play``). None of them: empty (the line is a process of its own)."""
+    made: list[tuple[Action, tuple[Wait, ...]]] = []
+    others: list[tuple[Action, tuple[Wait, ...]]] = []
+    for command, waits in _shell_order(words):
+        launched = ros2_launch_words(command)
+        action: Action | None = LaunchCommand(launched, location=location) \
+            if launched is not None else ros2_command_node(command)
+        if action is not None:
+            action.location = location
+            made.append((action, waits))
+        elif command and command[0] == ("ros2",):
+            others.append((Process((), command, location=location), waits))
+    if not made:
+        return []
+    out: list[Action] = []
+    for action, waits in made + others:
+        for operator, text in reversed(waits):
+            action = Delayed([action], f"on event: `{text}` {_WAITS[operator]}", "event",
+                             location=location)
+        out.append(action)
+    return out
 
 
 def ros2_command_node(words: list[Text]) -> NodeAction | None:
@@ -462,9 +492,8 @@ def ros2_command_node(words: list[Text]) -> NodeAction | None:
     controller);
     None for any other process (a simulator, xacro), or when those words are not known.
     A terminal emulator or a shell that runs such a command runs that node
-    (``shell_run``).
+    (``process_actions``).
     """
-    words = shell_run(words)
 
     def plain(word: Text) -> str | None:
         return word[0] if len(word) == 1 and isinstance(word[0], str) else None
@@ -551,9 +580,8 @@ def installed_executable(program: str | None) -> tuple[str, str] | None:
 
 
 def ros2_launch_words(words: list[Text]) -> list[Text] | None:
-    """The words after ``ros2 launch`` when the command line starts so (or a terminal
-    emulator or a shell it starts runs it: ``shell_run``), else None."""
-    words = shell_run(words)
+    """The words after ``ros2 launch`` when the command line starts so, else None (a
+    terminal emulator or a shell that runs it: ``process_actions``)."""
     head = [w[0] if len(w) == 1 and isinstance(w[0], str) else None for w in words[:2]]
     if len(head) == 2 and head[0] is not None and head[0].rsplit("/", 1)[-1] == "ros2" \
             and head[1] == "launch":

@@ -811,7 +811,8 @@ def not_actions(i: Interpreter, value: Any, n: ast.AST, label: str) -> None:
 def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     """``ExecuteProcess(cmd=[...])``: the node of ``ros2 run PKG EXE ...`` or ``ros2
     topic pub ...`` (``entities.ros2_command_node``), the launch file ``ros2 launch PKG
-    FILE ...`` runs (``entities.LaunchCommand``); any other process, no node."""
+    FILE ...`` runs (``entities.LaunchCommand``), each of these a shell line runs
+    (``entities.process_actions``); any other process, no node."""
     cmd = arg(a, k, 0, "cmd")
     if k.get("shell") is True and isinstance(cmd, (list, tuple)) and cmd and None not in cmd \
             and isinstance(cmd[0], str) and len(cmd[0].split()) > 1:
@@ -822,16 +823,15 @@ def execute_process(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         for index, word in enumerate(cmd):
             line += [(" ",), to_text(word)] if index else [to_text(word)]
         return then_on_exit(i, finish(i, e.Process(e.text(*line)), k, n), k, n)
-    if isinstance(cmd, (list, tuple)) and None not in cmd:
-        launched = e.ros2_launch_words([to_text(w) for w in cmd])
-        if launched is not None:  # ros2 launch PKG FILE ...: that launch file's nodes
-            return then_on_exit(i, finish(i, e.LaunchCommand(launched), k, n), k, n)
-    action = e.ros2_command_node([to_text(w) for w in cmd]) if isinstance(
-        cmd, (list, tuple)) else None
-    if action is None:  # said when performed: a ROS node it may start is not in the graph
+    made = e.process_actions([to_text(w) for w in cmd], i.where(n)) if isinstance(
+        cmd, (list, tuple)) and None not in cmd else []
+    if not made:  # said when performed: a ROS node it may start is not in the graph
         words = list(cmd) if isinstance(cmd, (list, tuple)) else [cmd]
         process = e.Process((), [to_text(w) for w in words if w is not None])
         return then_on_exit(i, finish(i, process, k, n), k, n)
+    # ros2 run / ros2 launch ...: that node, that launch file's nodes; a shell line's
+    # commands, each
+    action = made[0] if len(made) == 1 else e.Group(made, scoped=False)
     return then_on_exit(i, finish(i, action, k, n), k, n)
 
 

@@ -916,12 +916,8 @@ class Runner:
                 words = shlex.split(str(value.literal))
             except ValueError:
                 words = []
-        launched = e.ros2_launch_words([(w,) for w in words])
-        if launched is not None:
-            self.do_LaunchCommand(e.LaunchCommand(launched, location=action.location), scope)
-            return
-        node = e.ros2_command_node([(w,) for w in words])
-        if node is None:  # said: a ROS node it may start is not in the graph
+        made = e.process_actions([(w,) for w in words], action.location)
+        if not made:  # said: a ROS node it may start is not in the graph
             self.report("LAUNCH_PROCESS", action.location,
                         command=e.command_head([(w,) for w in words]))
             text = str(value.literal if value is not None and value.literal is not None
@@ -935,8 +931,7 @@ class Runner:
             self._missing_paths(e.command_head([(w,) for w in words]), words,
                                 action.location)
             return
-        node.location = action.location
-        self.do_NodeAction(node, scope)
+        self.run(made, scope)  # its nodes, launch files, a shell line's commands
 
     def _missing_paths(self, head: str, words: list[str], where: Location) -> None:
         """The paths into the workspace among the arguments of a process that is no node
