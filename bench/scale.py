@@ -9,18 +9,18 @@ and a check that the first three runs give the same JSON model.
 Wall and CPU seconds of each whole process are printed (on a busy machine the wall time
 waits for a processor: compare CPU). Stages (seconds of wall time): cache (the run
 cache's snapshot and entry; the entry is written by a forked copy of the process, as
-every command does, whose CPU is counted with the process's), scan (folders and package manifests), launch, build files
-(CMake / setup.py), C++ (libclang's parse apart from the rest, the walk of the syntax
-trees and the cache; the split is measured with ``--jobs 1`` only: workers parse out of
-sight), Python (the other nodes, read while the C++ workers parse: their seconds are
-within C++'s), models, graph, queries (the catalogue) and report (the HTML file). The
-changed file is ``--touch`` or the first C++ source of the model; a comment is appended
-to it (touched: what the unit gives is the same, the kept run answers) and, in a fourth
-run, a comment line is put before its first line instead (edited: every call of the
-file moves: the kept run's model and findings renumbered when no call changed otherwise,
-``relocate``; else the run is made again, from the unit cache and the other nodes' kept
-results); the file is restored afterwards (use a copy of a fetched tree: this writes
-into it).
+every command does, whose CPU is counted with the process's), scan (folders and package
+manifests), launch, build files (CMake / setup.py), C++ (libclang's parse apart from the
+rest, the walk of the syntax trees and the cache; the split is measured with ``--jobs
+1`` only: workers parse out of sight), Python (the other nodes, read while the C++
+workers parse: their seconds are within C++'s), models, graph, queries (the catalogue)
+and report (the HTML file). The changed file is ``--touch`` or the first C++ source of
+the model; a comment is appended to it (touched: what the unit gives is the same, the
+kept run answers) and, in a fourth run, a comment line is put before its first line
+instead (edited: every call of the file moves: the kept run's model and findings
+renumbered when no call changed otherwise, ``relocate``; else the run is made again,
+from the unit cache and the other nodes' kept results); the file is restored afterwards
+(use a copy of a fetched tree: this writes into it).
 Each run uses its own cache folder (a temporary one, empty for the cold run), never the
 user's.
 """
