@@ -205,3 +205,20 @@ def test_a_backport_bot_s_branches_are_not_what_the_tree_is_built_for(write_tree
     # the configuration alone names no release the tree is built for
     root = write_tree({"b/.github/mergify.yml": MERGIFY, "b/pkg/package.xml": "x"})
     assert guess([str(root / "b")]) is None
+
+
+def test_the_build_files_beside_the_src_folder_chosen_as_workspace(write_tree) -> None:
+    # control_quadrupeds_soft_contacts: `check REPO` takes REPO/src as the workspace,
+    # while the Dockerfile that names the release (`ARG BASE_TAG=iron-desktop`, then
+    # `FROM osrf/ros:${BASE_TAG}`) sits beside src/: read, the tree is Iron's, not the
+    # default Jazzy's (whose catalogue has no gazebo_msgs for its C++ to read)
+    root = write_tree({"repo/Dockerfile": "ARG BASE_TAG=iron-desktop\n"
+                                          "FROM osrf/ros:${BASE_TAG}\n",
+                       "repo/src/pkg/package.xml": "<package/>",
+                       "repo/src/pkg/README.md": "A package.\n"})
+    distro, why, sole = guess([str(root / "repo" / "src")])
+    assert (distro, sole) == ("iron", True) and "Dockerfile" in why
+    # only the folder above a root named src: another root's parent is not read
+    root = write_tree({"other/Dockerfile": "FROM ros:humble\n",
+                       "other/ws/pkg/package.xml": "<package/>"})
+    assert guess([str(root / "other" / "ws")]) is None
