@@ -222,3 +222,50 @@ def test_the_build_files_beside_the_src_folder_chosen_as_workspace(write_tree) -
     root = write_tree({"other/Dockerfile": "FROM ros:humble\n",
                        "other/ws/pkg/package.xml": "<package/>"})
     assert guess([str(root / "other" / "ws")]) is None
+
+
+DISTRO_LAUNCH = """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    exe = 'servo_node_main' if os.environ.get('ROS_DISTRO') == 'humble' else 'servo_node'
+    return LaunchDescription([Node(package='demo', executable=exe, name='servo')])
+"""
+
+
+def _distro_launch(write_tree, tree: str, ci: str, env: dict[str, str] | None = None):
+    # a folder per tree: the guess is kept per folder for the process
+    root = write_tree({
+        f"{tree}/src/demo/package.xml": package_xml("demo", "ament_cmake"),
+        f"{tree}/src/demo/launch/servo.launch.py": DISTRO_LAUNCH,
+        f"{tree}/src/demo/.github/workflows/ci.yml": ci,
+        f"{tree}/project.yaml": ("project: p\nworkspace: [src]\n"
+                                 "configurations:\n  c: [demo/launch/servo.launch.py]\n")})
+    project = load(str(root / tree / "project.yaml"))
+    run_env = {"PATH": os.environ.get("PATH", ""), **(env or {})}
+    (config,) = analyse(project, run_env, Options(cache_dir=None)).configurations
+    return config
+
+
+def _node_types(config) -> list[str]:
+    """The node types the launch file asked for (the package builds none of them)."""
+    return [d.message.split()[2] for d in config.diagnostics if d.code == "NODE_NOT_FOUND"]
+
+
+def test_a_ros2_launch_file_runs_under_the_one_release_the_files_name(write_tree) -> None:
+    # reseq_ros2's arm.launch.py picks moveit_servo's executable by ROS_DISTRO; its CI
+    # names Humble alone, the release its C++ is read for: its launch files run where
+    # Humble's setup script set ROS_DISTRO, so the node is servo_node_main, not `?`
+    config = _distro_launch(write_tree, "one", "env:\n  ROS_DISTRO: humble\n")
+    assert _node_types(config) == ["demo/servo_node_main"]
+    # several releases named: not known which
+    config = _distro_launch(write_tree, "several", "matrix:\n  distro: [humble, jazzy]\n")
+    assert _node_types(config) == []
+    assert "NODE_TYPE_UNKNOWN" in [d.code for d in config.diagnostics]
+    # the run's own ROS_DISTRO wins over the guess
+    config = _distro_launch(write_tree, "shell", "env:\n  ROS_DISTRO: humble\n",
+                            {"ROS_DISTRO": "jazzy"})
+    assert _node_types(config) == ["demo/servo_node"]
