@@ -183,18 +183,35 @@ def _branch(folder: str) -> str | None:
     return text[len("ref:"):].strip().removeprefix("refs/heads/")
 
 
+def _places(roots: list[str]) -> list[tuple[str, str | None]]:
+    """The folders whose files are read, each with the folder below it already read
+    (None): the roots, and the workspace above a root that is its ``src/`` folder,
+    whose Dockerfile and CI files the repository keeps beside ``src/``
+    (control_quadrupeds_soft_contacts' ``FROM osrf/ros:${BASE_TAG}`` of
+    ``ARG BASE_TAG=iron-desktop``, the workspace chosen being ``src/``)."""
+    places: list[tuple[str, str | None]] = [(os.path.abspath(r), None) for r in roots]
+    for root, _ in list(places):
+        parent = os.path.dirname(root)
+        if os.path.basename(root) == "src" and parent != root and all(
+                parent != place for place, _ in places):
+            places.append((parent, root))
+    return places
+
+
 def _files(roots: list[str]) -> list[tuple[str, Counter[str]]]:
     """The distributions the build and CI files, then the READMEs, under ``roots``
-    name, with the file each was first seen in."""
+    (and the workspace folder above a ``src/`` root: ``_places``) name, with the file
+    each was first seen in."""
     build: Counter[str] = Counter()
     readme: Counter[str] = Counter()
     first: dict[str, str] = {}
     entries = 0
-    for root in roots:
+    for root, done in _places(roots):
         for top, folders, files in os.walk(root):
             depth = os.path.relpath(top, root).count(os.sep)
             folders[:] = sorted(f for f in folders if f not in _SKIPPED and (
-                not f.startswith(".") or f in _HIDDEN_KEPT) and depth < MAX_DEPTH)
+                not f.startswith(".") or f in _HIDDEN_KEPT) and depth < MAX_DEPTH
+                and os.path.join(top, f) != done)
             entries += len(files) + len(folders)
             if entries > MAX_ENTRIES:
                 break

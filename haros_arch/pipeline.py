@@ -503,6 +503,25 @@ def launch_path(entry: str, project: Project, workspace: Workspace) -> str | Non
     return path if os.path.exists(path) else share_source(workspace, path)
 
 
+def _guessed_environment(environment: Mapping[str, str], workspace: Workspace,
+                         path: str) -> Mapping[str, str]:
+    """The environment a ROS 2 launch file runs in: ``environment``, with the
+    ROS_DISTRO (and ROS_VERSION, ROS_PYTHON_VERSION) the distribution's setup script
+    sets when nothing sets one and the workspace's files name one ROS 2 release alone
+    (``source_distro``: the release its C++ is read for too): reseq_ros2's
+    ``'servo_node_main' if os.environ.get('ROS_DISTRO') == 'humble' else 'servo_node'``
+    of a tree whose CI names Humble alone. A tree naming several keeps it unset (not
+    known), and so does a roslaunch file (a ROS 1 distribution's shell runs it)."""
+    from .launch.dialect import ros_version
+    from .models.attach import ros_of
+
+    distro = workspace.source_distro
+    if environment.get("ROS_DISTRO") or not distro or ros_of(distro) != 2 \
+            or ros_version(path, workspace) != 2:
+        return environment
+    return {"ROS_DISTRO": distro, **distro_variables(distro), **environment}
+
+
 def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace,
                  env: Mapping[str, str], attacher: Attacher | None = None) -> LaunchModel:
     """The configuration's launch files read and merged; ``attacher``: the interface
@@ -528,10 +547,11 @@ def _load_launch(spec: ConfigurationSpec, project: Project, workspace: Workspace
         if not os.path.isfile(path):
             merged.diagnostics.append(diag.make("LAUNCH_FILE_MISSING", where, path=entry))
             continue
+        running = _guessed_environment(environment, workspace, path)
         loaded = diag.per_file(  # one launch file (and its includes): a bug stays with it
             where, entry, merged.diagnostics,
             lambda: launch.load(path, workspace, spec.args,  # noqa: B023 (called at once)
-                                environment, modelled), LaunchModel())
+                                running, modelled), LaunchModel())  # noqa: B023
         merged.files.extend(loaded.files)
         merged.tree.extend(loaded.tree)
         offset = len(merged.nodes)

@@ -205,3 +205,67 @@ def test_a_backport_bot_s_branches_are_not_what_the_tree_is_built_for(write_tree
     # the configuration alone names no release the tree is built for
     root = write_tree({"b/.github/mergify.yml": MERGIFY, "b/pkg/package.xml": "x"})
     assert guess([str(root / "b")]) is None
+
+
+def test_the_build_files_beside_the_src_folder_chosen_as_workspace(write_tree) -> None:
+    # control_quadrupeds_soft_contacts: `check REPO` takes REPO/src as the workspace,
+    # while the Dockerfile that names the release (`ARG BASE_TAG=iron-desktop`, then
+    # `FROM osrf/ros:${BASE_TAG}`) sits beside src/: read, the tree is Iron's, not the
+    # default Jazzy's (whose catalogue has no gazebo_msgs for its C++ to read)
+    root = write_tree({"repo/Dockerfile": "ARG BASE_TAG=iron-desktop\n"
+                                          "FROM osrf/ros:${BASE_TAG}\n",
+                       "repo/src/pkg/package.xml": "<package/>",
+                       "repo/src/pkg/README.md": "A package.\n"})
+    distro, why, sole = guess([str(root / "repo" / "src")])
+    assert (distro, sole) == ("iron", True) and "Dockerfile" in why
+    # only the folder above a root named src: another root's parent is not read
+    root = write_tree({"other/Dockerfile": "FROM ros:humble\n",
+                       "other/ws/pkg/package.xml": "<package/>"})
+    assert guess([str(root / "other" / "ws")]) is None
+
+
+DISTRO_LAUNCH = """
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    exe = 'servo_node_main' if os.environ.get('ROS_DISTRO') == 'humble' else 'servo_node'
+    return LaunchDescription([Node(package='demo', executable=exe, name='servo')])
+"""
+
+
+def _distro_launch(write_tree, tree: str, ci: str, env: dict[str, str] | None = None):
+    # a folder per tree: the guess is kept per folder for the process
+    root = write_tree({
+        f"{tree}/src/demo/package.xml": package_xml("demo", "ament_cmake"),
+        f"{tree}/src/demo/launch/servo.launch.py": DISTRO_LAUNCH,
+        f"{tree}/src/demo/.github/workflows/ci.yml": ci,
+        f"{tree}/project.yaml": ("project: p\nworkspace: [src]\n"
+                                 "configurations:\n  c: [demo/launch/servo.launch.py]\n")})
+    project = load(str(root / tree / "project.yaml"))
+    run_env = {"PATH": os.environ.get("PATH", ""), **(env or {})}
+    (config,) = analyse(project, run_env, Options(cache_dir=None)).configurations
+    return config
+
+
+def _node_types(config) -> list[str]:
+    """The node types the launch file asked for (the package builds none of them)."""
+    return [d.message.split()[2] for d in config.diagnostics if d.code == "NODE_NOT_FOUND"]
+
+
+def test_a_ros2_launch_file_runs_under_the_one_release_the_files_name(write_tree) -> None:
+    # reseq_ros2's arm.launch.py picks moveit_servo's executable by ROS_DISTRO; its CI
+    # names Humble alone, the release its C++ is read for: its launch files run where
+    # Humble's setup script set ROS_DISTRO, so the node is servo_node_main, not `?`
+    config = _distro_launch(write_tree, "one", "env:\n  ROS_DISTRO: humble\n")
+    assert _node_types(config) == ["demo/servo_node_main"]
+    # several releases named: not known which
+    config = _distro_launch(write_tree, "several", "matrix:\n  distro: [humble, jazzy]\n")
+    assert _node_types(config) == []
+    assert "NODE_TYPE_UNKNOWN" in [d.code for d in config.diagnostics]
+    # the run's own ROS_DISTRO wins over the guess
+    config = _distro_launch(write_tree, "shell", "env:\n  ROS_DISTRO: humble\n",
+                            {"ROS_DISTRO": "jazzy"})
+    assert _node_types(config) == ["demo/servo_node"]

@@ -941,3 +941,28 @@ def generate_launch_description():
     assert [n.name for n in model.nodes] == ["/n"]
     assert [d.code for d in model.diagnostics
             if d.code in ("LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED")] == []
+
+
+def test_perform_and_evaluate_take_the_context_by_keyword(write_tree):
+    # reseq_ros2's arm.launch.py: ``LaunchConfiguration('use_sim_time').perform(
+    # context=context)`` inside an OpaqueFunction, Substitution.perform's parameter
+    # named: the argument's value, as given by position
+    model, _ = run(write_tree, """
+def setup(context):
+    mode = LaunchConfiguration('mode').perform(context=context)
+    nodes = [Node(package='p', executable='e', name='a', parameters=[{'mode': mode}])]
+    if IfCondition(LaunchConfiguration('arm')).evaluate(context=context):
+        nodes.append(Node(package='p', executable='e', name='arm'))
+    return nodes
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('mode', default_value='fast'),
+        DeclareLaunchArgument('arm', default_value='false'),
+        OpaqueFunction(function=setup),
+    ])
+""")
+    assert [n.name for n in model.nodes] == ["/a"]
+    assert [(p.name, p.value) for p in model.params] == [("/a/mode", "fast")]
+    assert [d.code for d in model.diagnostics
+            if d.code in ("LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED")] == []

@@ -141,3 +141,45 @@ def generate_launch_description():
 """)
     assert [n.executable for n in model.nodes] == ["spawn"]
     assert [c.text for c in model.nodes[0].conditions] == ["for i in range(count)"]
+
+
+def test_global_name_set_before_a_call_is_seen_by_the_function_called(write_tree):
+    """control_quadrupeds_soft_contacts' robot.launch.py: generate_launch_description
+    declares ``global terrain``, sets it, then calls helpers that read it before it
+    returns; Python writes a global at once, so the helpers see it (they said ``name
+    terrain is not defined here``), and a global the helper sets is the caller's after
+    the call."""
+    model, _ = run(write_tree, """
+def spawn(ld):
+    global count
+    ld.add_action(Node(package='p', executable='e', name=terrain))
+    count = count + 1
+
+def generate_launch_description():
+    global terrain, count
+    terrain = 'rigid'
+    count = 1
+    ld = LaunchDescription()
+    spawn(ld)
+    terrain = 'soft'
+    spawn(ld)
+    ld.add_action(Node(package='p', executable='e', name='n' + str(count)))
+    return ld
+""")
+    assert [n.name for n in model.nodes] == ["/rigid", "/soft", "/n3"]
+    assert "LAUNCH_PY_UNSUPPORTED" not in codes(model)
+
+
+def test_nonlocal_name_set_before_a_call_is_seen_by_the_nested_function(write_tree):
+    model, _ = run(write_tree, """
+def generate_launch_description():
+    name = 'a'
+    def setup():
+        nonlocal name
+        name = 'b'
+        return make()
+    def make():
+        return Node(package='p', executable='e', name=name)
+    return LaunchDescription([setup()])
+""")
+    assert [n.name for n in model.nodes] == ["/b"]

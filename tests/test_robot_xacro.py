@@ -420,3 +420,33 @@ def test_a_property_an_include_not_read_may_define_is_unknown_not_wrong(tmp_path
     assert any(u.startswith("property trunk_length is not defined here; it may be one of "
                             "$(find absent_robots)/urdf/const.xacro, which is not read")
                for u in description.unknown), description.unknown
+
+
+LOOP = ('<xacro:macro name="loop" params="i n">'
+        '<xacro:if value="${i &lt; n}"><link name="m${i}"/>'
+        '<xacro:loop i="${i + 1}" n="${n}"/></xacro:if>'
+        '<xacro:if value="${i == n}"><link name="last"/></xacro:if>'
+        '</xacro:macro>'
+        '<link name="base"/><xacro:loop i="1" n="${count}"/>')
+
+
+def test_a_macro_recursing_under_a_condition_not_known_is_unknown_not_the_bound(
+        tmp_path: Path):
+    """reseq_description's ``loop`` macro builds one module per call while ``${module <
+    n_modules}``, n_modules read from a YAML file not there: the recursion's depth is
+    not known, said once, and the rest of the description is read (it hit the nesting
+    bound, ROBOT_DESCRIPTION_LIMIT, and the whole description was lost)."""
+    description = tmp_expand(tmp_path, '<xacro:arg name="count" default=""/>'
+                             '<xacro:property name="count" value="${xacro.load_yaml(\'gone.yaml\')'
+                             '[\'n\']}"/>' + LOOP)
+    assert description.root is not None
+    assert "ROBOT_DESCRIPTION_LIMIT" not in [code for code, _ in codes(description)]
+    assert any("macro loop calls itself under a condition not known statically" in u
+               for u in description.unknown)
+    assert [link.get("name") for link in description.root.iter("link")][:2] == [
+        "base", "m1"]
+    # a known end: expanded to it, as xacro does
+    known = tmp_expand(tmp_path, '<xacro:property name="count" value="3"/>' + LOOP)
+    assert [link.get("name") for link in known.root.iter("link")] == [
+        "base", "m1", "m2", "last"]
+    assert known.unknown == [] and known.diagnostics == []

@@ -251,6 +251,10 @@ class _Expander:
         # the includes not read so far (their namespace, the file as written): a macro
         # called after one may be defined there (``_unread_source``)
         self.unread: list[tuple[str, str]] = []
+        # the macros being expanded, each with how many conditions not decided enclosed
+        # its call, and how many enclose the element at hand (``call``)
+        self.expanding: list[tuple[int, int]] = []
+        self.undecided = 0
 
     # -- diagnostics and unknowns ----------------------------------------------------------
     def where(self, element: Element | None) -> Any:
@@ -650,11 +654,22 @@ class _Expander:
                 inner.values[param] = _literal(self.evaluate(element, text, scope))
             else:
                 inner.values[param] = _unknown(f"{param} is not given")
+        if any(key == id(macro) and undecided < self.undecided
+               for key, undecided in self.expanding):
+            # a macro calling itself under a condition not decided since its outer call
+            # (reseq_description's ``loop`` while ``${module < n_modules}``, n_modules
+            # read from a YAML file not there): how deep it recurses is not known, so the
+            # recursion is that, not a description nested past the reader's bound
+            self.unknown(element, f"macro {name} calls itself under a condition not known "
+                                  "statically: how deep it recurses is not known")
+            return []
         body = copy.deepcopy(macro.body)
         self.files.append(macro.where[0])
+        self.expanding.append((id(macro), self.undecided))
         try:
             made = self.content(body, inner, depth + 1)
         finally:
+            self.expanding.pop()
             self.files.pop()
         return made
 
@@ -852,7 +867,11 @@ def _conditional(negate: bool) -> Callable[[_Expander, Element, _Scope, int], li
             self.unknown(element, reason)
         where = self.where(element)
         text = f"{'unless' if negate else 'if'} {truth.text} ({where.file}:{where.line})"
-        made = self.content(element, scope, depth)
+        self.undecided += 1
+        try:
+            made = self.content(element, scope, depth)
+        finally:
+            self.undecided -= 1
         for child in made:
             if isinstance(child.tag, str):
                 before = child.get(CONDITION)

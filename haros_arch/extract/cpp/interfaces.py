@@ -239,8 +239,36 @@ def catalogue_distro(ros2: bool, distro: str | None = None) -> str:
 
 def catalogue(ros2: bool, distro: str | None = None) -> dict[str, str]:
     """The shipped definitions for ``distro`` (``catalogue_distro``) by
-    ``package/kind/Name`` (empty when the file is missing or does not read)."""
-    return _catalogue_file(catalogue_distro(ros2, distro))
+    ``package/kind/Name`` (empty when the file is missing or does not read), with
+    those of a package its catalogue has none of from the nearest other release of
+    that ROS whose catalogue has it (``_with_others``)."""
+    return _with_others(catalogue_distro(ros2, distro))
+
+
+@functools.lru_cache(maxsize=4)
+def _with_others(name: str) -> dict[str, str]:
+    """The catalogue of release ``name``, and the packages it has none of from the
+    other shipped releases of that ROS, the nearest first (an older before a newer one
+    as near): a package the release does not ship (gazebo_msgs, which Jazzy dropped)
+    is still the one the tree builds against, whose definitions an installed release
+    has (control_quadrupeds_soft_contacts, read as Jazzy's with its files naming Iron
+    and Humble, reads ``gazebo_msgs::msg::ModelStates``' ``name`` and ``pose``); a
+    field-less stand-in made every use of them a parse error."""
+    table = dict(_catalogue_file(name))
+    library = versions.RCLCPP if name in versions.RCLCPP.table else versions.ROSCPP
+    order = list(library.table)
+    if name not in order:
+        return table
+    others = sorted((d for d in order if d != name and os.path.isfile(
+        os.path.join(CATALOGUE, d + ".json"))),
+        key=lambda d: (abs(order.index(d) - order.index(name)), order.index(d)))
+    packages = {key.split("/", 1)[0] for key in table}
+    for other in others:
+        added = {key: text for key, text in _catalogue_file(other).items()
+                 if key.split("/", 1)[0] not in packages}
+        table.update(added)
+        packages |= {key.split("/", 1)[0] for key in added}
+    return table
 
 
 @functools.lru_cache(maxsize=4)
@@ -264,7 +292,7 @@ def catalogue_names(ros2: bool, distro: str | None = None) -> dict[str, list[str
 @functools.lru_cache(maxsize=4)
 def _catalogue_names(name: str) -> dict[str, list[str]]:
     names: dict[str, list[str]] = {}
-    for key in _catalogue_file(name):
+    for key in _with_others(name):
         package, _kind, type_name = key.split("/", 2)
         names.setdefault(package, []).append(type_name)
     return names

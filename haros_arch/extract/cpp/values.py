@@ -1351,7 +1351,8 @@ class Scope:
         outer = self._captured(decl)
         if outer is not None:
             return outer.variable(decl)
-        if decl.type.is_const_qualified() or _string_constant(decl) or const_array(decl):
+        if decl.type.is_const_qualified() or _string_constant(decl) or const_array(decl) \
+                or _const_reference(decl):
             definition = decl.get_definition() or decl
             return initializer(definition) or _template_initializer(decl)
         if unwritten_global(decl):
@@ -2571,6 +2572,17 @@ def _template_initializer(decl: Cursor) -> Cursor | None:
     field = next((c for c in owner.get_children()
                   if c.kind == CursorKind.FIELD_DECL and c.spelling == decl.spelling), None)
     return initializer(field) if field is not None else None
+
+
+def _const_reference(decl: Cursor) -> bool:
+    """A variable that is a reference to const (``const std::string &TOPIC = "/scan";``:
+    f1tenth_ws' scan matching node): it is never rebound, and what it is bound to, a
+    temporary its initialiser made or another variable, is read through it as a
+    constant is."""
+    ctype = decl.type
+    return decl.kind == CursorKind.VAR_DECL and ctype.kind in (
+        TypeKind.LVALUEREFERENCE, TypeKind.RVALUEREFERENCE) and (
+        ctype.get_pointee().is_const_qualified())
 
 
 def _string_constant(decl: Cursor) -> bool:

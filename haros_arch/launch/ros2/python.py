@@ -54,6 +54,7 @@ from .python_values import (
     MAX_READ,
     MAX_SIZE,
     MAX_SOURCE,
+    OUTER,
     UNSET,
     ActionClass,
     Budget,
@@ -90,6 +91,7 @@ from .python_values import (
     launch_object,
     said_unknown,
     to_text,
+    write_outer,
 )
 
 T = TypeVar("T")
@@ -796,10 +798,13 @@ class Interpreter(Expressions):
         enclosing function's), not a local. The function works on its value as a local
         would (so an ``if`` whose test is not known joins it with the value before, as
         for any name: neo_simulation2's ``if int(N) > 5: N = '5'`` leaves N unknown),
-        and gives the scope its last value when it returns (``_write_outer``)."""
+        and gives the scope its value when it returns and before each function it
+        calls (``write_outer``), which may read it: control_quadrupeds_soft_contacts'
+        ``generate_launch_description`` sets ``global terrain`` and then calls the
+        helpers that read it."""
         if "__closure__" not in env:
             return  # at module level: the names are the module's already
-        outer: dict[str, dict[str, Any]] = env.setdefault(_OUTER, {})
+        outer: dict[str, dict[str, Any]] = env.setdefault(OUTER, {})
         for name in stmt.names:
             scope = _scope_of(name, env["__closure__"], isinstance(stmt, ast.Global))
             if scope is None:
@@ -1499,7 +1504,7 @@ class Interpreter(Expressions):
                 return self.either(maybe)
             return self.either([*maybe, result]) if maybe else result
         finally:
-            _write_outer(env)
+            write_outer(env)
             self.depth = max(self.depth - 1, 0)
             self.running.pop()
             self.call_sites.pop()
@@ -1608,7 +1613,6 @@ def _refill(held: dict[Any, Any], items: dict[Any, Any]) -> None:
 
 
 _MAX_HELD = 5000  # the values ``Interpreter.dicts_held`` looks through, at most
-_OUTER = "__outer__"  # a function's names declared ``global`` / ``nonlocal``: their scopes
 
 
 def _scope_of(name: str, closure: dict[str, Any] | None, module: bool
@@ -1642,14 +1646,6 @@ def _unexpected_keywords(params: ast.arguments, kwargs: dict[str, Any]) -> list[
         return []
     names = {a.arg for a in (*params.args, *params.kwonlyargs)}
     return [word for word in kwargs if word not in names]
-
-
-def _write_outer(env: dict[str, Any]) -> None:
-    """A function returns: the names it declared ``global`` / ``nonlocal`` take the
-    values it left them in their own scopes."""
-    for name, scope in env.get(_OUTER, {}).items():
-        if name in env:
-            scope[name] = env[name]
 
 
 def _argument_written(site: ast.AST, func: Func, name: str, given: int) -> ast.AST | None:

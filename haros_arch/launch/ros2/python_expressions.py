@@ -29,6 +29,7 @@ from ...model.values import Unknown
 from . import entities as e
 from .python_values import (
     LIMITS,
+    OUTER,
     Budget,
     Constructing,
     Context,
@@ -58,8 +59,10 @@ from .python_values import (
     object_text,
     open_keys,
     printable,
+    read_outer,
     said_unknown,
     to_text,
+    write_outer,
 )
 
 # what ``Expressions.bound`` gives for a name no scope defines
@@ -613,7 +616,15 @@ class Expressions(Walker):
         if isinstance(func, Ref) and func.qualified == "eval" and len(args) == 1 and (
                 not kwargs and isinstance(args[0], str)):
             return self.eval_source(args[0], node, env)
-        result = self.call(func, args, kwargs, node)
+        if OUTER in env and isinstance(func, (Func, Method)):
+            # names the caller declared ``global`` / ``nonlocal`` are the scope's, which
+            # the function called reads and may set (a helper reading the ``global
+            # terrain`` that generate_launch_description set before calling it)
+            write_outer(env)
+            result = self.call(func, args, kwargs, node)
+            read_outer(env)
+        else:
+            result = self.call(func, args, kwargs, node)
         if self.guards and isinstance(result, (e.Action, e.ComposableNode)):
             result = self.guarded(result, node)
         return result

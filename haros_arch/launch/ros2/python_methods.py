@@ -404,14 +404,16 @@ def m_read(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
 
 
 def m_evaluate(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    """``IfCondition(...).evaluate(context)`` inside an OpaqueFunction."""
-    if not (isinstance(owner, e.Cond) and a and isinstance(a[0], Context)):
+    """``IfCondition(...).evaluate(context)`` inside an OpaqueFunction (the context
+    given by keyword too: ``evaluate(context=context)``)."""
+    context = arg(a, k, 0, "context")
+    if not (isinstance(owner, e.Cond) and isinstance(context, Context)):
         return i.unsupported(n, ".evaluate() outside an OpaqueFunction")
-    value = a[0].perform(owner.expression)
+    value = context.perform(owner.expression)
     if not isinstance(value, str):
         return Unknown(f"condition {owner.source}")
     if owner.equals is not None:
-        expected = a[0].perform(owner.equals)
+        expected = context.perform(owner.equals)
         if not isinstance(expected, str):
             return Unknown(f"condition {owner.source}")
         return (value == expected) != owner.negate
@@ -502,8 +504,12 @@ def m_list(name: str) -> Method:
 def m_str(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if name == "perform":
-            if isinstance(owner, (e.Subst, Lazy)) and a and isinstance(a[0], Context):
-                return a[0].perform(to_text(owner))
+            # ``Substitution.perform(self, context)``, the context given by position or
+            # by keyword (reseq_ros2's ``LaunchConfiguration('arm').perform(
+            # context=context)``)
+            context = arg(a, k, 0, "context")
+            if isinstance(owner, (e.Subst, Lazy)) and isinstance(context, Context):
+                return context.perform(to_text(owner))
             # said here, naming it, rather than at each use of its text
             return i.unsupported(n, f"{_source(n)}: perform() outside an OpaqueFunction "
                                     "is not interpreted")

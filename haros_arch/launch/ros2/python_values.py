@@ -242,6 +242,26 @@ class Method:
     owner: Any
 
 
+OUTER = "__outer__"  # a function's names declared ``global`` / ``nonlocal``: their scopes
+
+
+def write_outer(env: dict[str, Any]) -> None:
+    """The names a function declared ``global`` / ``nonlocal`` take, in their own
+    scopes, the values the function gave them so far: when it returns, and before it
+    calls a function, which may read them there (Python writes them there at once)."""
+    for name, scope in env.get(OUTER, {}).items():
+        if name in env:
+            scope[name] = env[name]
+
+
+def read_outer(env: dict[str, Any]) -> None:
+    """After a call: the names the function declared ``global`` / ``nonlocal`` as the
+    callee may have left them in their scopes."""
+    for name, scope in env.get(OUTER, {}).items():
+        if name in scope:
+            env[name] = scope[name]
+
+
 UNSET = object()  # a dataclass field with no default
 
 
