@@ -341,8 +341,9 @@ class Evaluator:
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
-        if found is None and self.runner.workspace.misspelt(name):
-            # a letter or two from a package here: most likely a typo, the launch fails
+        if found is None and self.runner.workspace.surely_absent(name):
+            # a letter or two from a package here (most likely a typo), or no package's
+            # name at all: the launch fails
             if not s.said:
                 self.report("PACKAGE_NOT_FOUND", name=name,
                             why=self.runner.workspace.absence(name))
