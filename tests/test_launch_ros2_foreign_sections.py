@@ -175,3 +175,25 @@ def test_a_shared_file_s_section_under_the_name_the_launch_changed_is_said(write
     assert _shared(write_tree, "/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
                                "/imu_filter_node:\n  ros__parameters:\n    use_mag: true\n"
                                + MUX_SECTION) == []
+
+
+def test_a_shared_file_s_section_for_the_node_in_another_namespace_is_said(
+        write_tree) -> None:
+    """cabot-navigation's cabot2.launch.py started people_speed_control_node without the
+    ``namespace='/cabot'`` its neighbours have; the shared cabot2-common.yaml keeps its
+    settings under ``cabot: people_speed_control_node:``, so the node at
+    ``/people_speed_control_node`` ran on its defaults. Said for the node no section is
+    for, where a section no node has is the node's own name in another namespace; not
+    for a section of a wildcard namespace (``/*/robot_filter`` is for a namespace the
+    file does not name), nor when the node has its own section."""
+    filt = "/robot_filter"
+    found = _shared(write_tree, "/cabot/robot_filter:\n  ros__parameters:\n"
+                                "    use_mag: false\n" + MUX_SECTION)
+    assert found == [f"parameter file imu/config/shared.yaml is given to {filt}, but "
+                     "its sections are for /cabot/robot_filter: rcl gives their parameters "
+                     "to none of them"]
+    assert _shared(write_tree, "/*/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
+                               + MUX_SECTION) == []
+    assert _shared(write_tree, "/cabot/mux:\n  ros__parameters:\n    topics: cmd\n"
+                               "/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
+                               + MUX_SECTION) == []

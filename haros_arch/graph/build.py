@@ -345,17 +345,24 @@ def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagno
 
 
 def _names_the_node(pattern: str, instance: NodeInstance | None) -> bool:
-    """Whether a parameter file's section (``/teleop_node``, ``teleop_node``) is named
-    after the node's executable or the name its code gives it, not the name the launch
-    file gave it: a section written for the node before it was renamed."""
+    """Whether a parameter file's section (``/teleop_node``, ``teleop_node``), which
+    does not match the node, is named after it: after the node's executable or the name
+    its code gives it, not the name the launch file gave it (a section written for the
+    node before it was renamed), or, with no wildcard, after the name the launch file
+    gave it in another namespace (``/cabot/people_speed_control_node`` for the node
+    started as ``/people_speed_control_node``: written for the namespace the launch file
+    does not give it)."""
     node = instance.node if instance is not None else None
     if instance is None or node is None:
         return False
     last = pattern.rstrip("/").rsplit("/", 1)[-1]
+    if last in ("", "*", "**"):
+        return False
+    if last == instance.name.rsplit("/", 1)[-1]:
+        return "*" not in pattern
     own = {node.executable.rsplit("/", 1)[-1], (node.rosname or "").rsplit("/", 1)[-1],
            (instance.code_name or "").rsplit("/", 1)[-1]}
-    return last not in ("", "*", "**") and last in own and (
-        last != instance.name.rsplit("/", 1)[-1])
+    return last in own
 
 
 def loading_manager(decl: NodeDecl) -> str | None:
