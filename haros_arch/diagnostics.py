@@ -698,7 +698,9 @@ CATALOGUE: dict[str, Entry] = {
         "for teleop_twist_joy's teleop_node launched as go2_teleop_node): the section "
         "written before the launch file renamed the node, or, with no wildcard, after "
         "the node's launch name in another namespace (/cabot/people_speed_control_node "
-        "for the node started without namespace /cabot). Not said when a node it is "
+        "for the node started without namespace /cabot), or, for a component, after the "
+        "executable its package registers to run it alone (pointcloud_to_laserscan_node: "
+        "for the component loaded as pointcloud_to_laserscan). Not said when a node it is "
         "given to may make nodes unseen (code not known, plugins loaded by name). Fix: "
         "key the section by the node's name (or /**), or launch the node under the "
         "name and namespace the file uses."),
