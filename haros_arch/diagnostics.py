@@ -707,10 +707,14 @@ CATALOGUE: dict[str, Entry] = {
         "section is for, naming only the sections no node has that are named after that "
         "node's executable or the name its code gives it (go2_ros2_sdk's /teleop_node: "
         "for teleop_twist_joy's teleop_node launched as go2_teleop_node): the section "
-        "written before the launch file renamed the node. Not said when a node it is "
+        "written before the launch file renamed the node, or, with no wildcard, after "
+        "the node's launch name in another namespace (/cabot/people_speed_control_node "
+        "for the node started without namespace /cabot), or, for a component, after the "
+        "executable its package registers to run it alone (pointcloud_to_laserscan_node: "
+        "for the component loaded as pointcloud_to_laserscan). Not said when a node it is "
         "given to may make nodes unseen (code not known, plugins loaded by name). Fix: "
         "key the section by the node's name (or /**), or launch the node under the "
-        "name the file uses."),
+        "name and namespace the file uses."),
     # sources
     "CPP_PARSE_ERROR": Entry(
         "info", "C++ error: {detail}",

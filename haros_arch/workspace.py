@@ -229,6 +229,9 @@ class Workspace:
         look) is not just missing; a name a letter or two from a package's that is here
         says which (``misspelt``)."""
         ignored = self.ignored.get(name)
+        if ignored is None and not PACKAGE_NAME.match(name):
+            return (f"(written {name!r}) is no name a package can have: catkin_pkg refuses "
+                    "it, so no workspace or install holds it")
         if ignored is None:
             near = self.misspelt(name)
             hint = f" (did you mean {' or '.join(near)}?)" if near else ""
@@ -237,6 +240,13 @@ class Workspace:
         return (f"is in the workspace ({self.relpath(folder)}) but ignored: "
                 f"{self.relpath(marker)} keeps colcon and catkin out of that folder")
 
+
+    def surely_absent(self, name: str) -> bool:
+        """Whether ``name``, a package ``find`` does not find, cannot be installed on the
+        robot either: no name a package can have (``PACKAGE_NAME``: empty, blanks, a
+        `/`), or most likely a package's here misspelt (``misspelt``)."""
+        return self.find(name) is None and (
+            not PACKAGE_NAME.match(name) or bool(self.misspelt(name)))
 
     def misspelt(self, name: str) -> list[str]:
         """The names of the packages here (in the workspace, on ROS_PACKAGE_PATH, in an
@@ -261,6 +271,10 @@ class Workspace:
         best = min((score for score, _other in scored), default=limit + 1)
         return [other for score, other in scored if score == best <= limit][:MAX_NEAR]
 
+
+# a name a package can have: catkin_pkg refuses any other (upper case and dashes only warned
+# of), and colcon, catkin and ament build none
+PACKAGE_NAME = re.compile(r"[a-zA-Z0-9][a-zA-Z0-9_-]*\Z")
 
 # a submodule's ``path = <folder>`` line of a .gitmodules file (git's config syntax)
 _GITMODULE_PATH = re.compile(r"^\s*path\s*=\s*(\S(?:.*\S)?)\s*$")

@@ -175,3 +175,109 @@ def test_a_shared_file_s_section_under_the_name_the_launch_changed_is_said(write
     assert _shared(write_tree, "/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
                                "/imu_filter_node:\n  ros__parameters:\n    use_mag: true\n"
                                + MUX_SECTION) == []
+
+
+def test_a_shared_file_s_section_for_the_node_in_another_namespace_is_said(
+        write_tree) -> None:
+    """cabot-navigation's cabot2.launch.py started people_speed_control_node without the
+    ``namespace='/cabot'`` its neighbours have; the shared cabot2-common.yaml keeps its
+    settings under ``cabot: people_speed_control_node:``, so the node at
+    ``/people_speed_control_node`` ran on its defaults. Said for the node no section is
+    for, where a section no node has is the node's own name in another namespace; not
+    for a section of a wildcard namespace (``/*/robot_filter`` is for a namespace the
+    file does not name), nor when the node has its own section."""
+    filt = "/robot_filter"
+    found = _shared(write_tree, "/cabot/robot_filter:\n  ros__parameters:\n"
+                                "    use_mag: false\n" + MUX_SECTION)
+    assert found == [f"parameter file imu/config/shared.yaml is given to {filt}, but "
+                     "its sections are for /cabot/robot_filter: rcl gives their parameters "
+                     "to none of them"]
+    assert _shared(write_tree, "/*/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
+                               + MUX_SECTION) == []
+    assert _shared(write_tree, "/cabot/mux:\n  ros__parameters:\n    topics: cmd\n"
+                               "/robot_filter:\n  ros__parameters:\n    use_mag: false\n"
+                               + MUX_SECTION) == []
+
+
+COMPONENT_CMAKE = """
+    cmake_minimum_required(VERSION 3.5)
+    project(scan)
+    find_package(ament_cmake REQUIRED)
+    find_package(rclcpp REQUIRED)
+    find_package(rclcpp_components REQUIRED)
+    add_library(scan_component SHARED src/scan.cpp)
+    ament_target_dependencies(scan_component rclcpp rclcpp_components)
+    rclcpp_components_register_node(scan_component PLUGIN "scan::ScanNode"
+                                    EXECUTABLE scan_node)
+    install(TARGETS scan_component LIBRARY DESTINATION lib)
+    ament_package()
+    """
+COMPONENT_CPP = """
+    #include <rclcpp/rclcpp.hpp>
+    #include <rclcpp_components/register_node_macro.hpp>
+    namespace scan {
+    class ScanNode : public rclcpp::Node {
+    public:
+      explicit ScanNode(const rclcpp::NodeOptions & options) : rclcpp::Node("scan", options) {
+        declare_parameter("range_max", 1.0);
+      }
+    };
+    }  // namespace scan
+    RCLCPP_COMPONENTS_REGISTER_NODE(scan::ScanNode)
+    """
+COMPONENT_LAUNCH = """
+    import os
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch_ros.actions import ComposableNodeContainer
+    from launch_ros.descriptions import ComposableNode
+
+    def generate_launch_description():
+        config = os.path.join(get_package_share_directory("scan"), "config", "shared.yaml")
+        return LaunchDescription([ComposableNodeContainer(
+            name="box", namespace="", package="rclcpp_components",
+            executable="component_container",
+            composable_node_descriptions=[
+                ComposableNode(package="scan", plugin="scan::ScanNode", name="front_scan",
+                               parameters=[config]),
+                ComposableNode(package="scan", plugin="scan::ScanNode", name="rear",
+                               parameters=[config]),
+            ])])
+    """
+
+
+def _component(write_tree, sections: str) -> list[str]:
+    root = write_tree({
+        "src/scan/package.xml": package_xml("scan", "ament_cmake"),
+        "src/scan/CMakeLists.txt": COMPONENT_CMAKE,
+        "src/scan/src/scan.cpp": COMPONENT_CPP,
+        "src/scan/config/shared.yaml": sections,
+        "src/scan/launch/scan.launch.py": COMPONENT_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [scan/launch/scan.launch.py]\n",
+    })
+    out = root / "check.json"
+    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
+          "--fail-on", "never"])
+    report = json.loads(out.read_text())
+    return [d["message"] for d in report["diagnostics"] if d["code"] == "LAUNCH_PARAMS_NO_NODE"]
+
+
+REAR = "rear:\n  ros__parameters:\n    range_max: 2.0\n"
+
+
+def test_a_component_s_section_under_the_executable_that_runs_it_alone_is_said(
+        write_tree) -> None:
+    """cabot-navigation's cabot2.launch.py loaded pointcloud_to_laserscan's component as
+    ``pointcloud_to_laserscan``; the shared cabot2-common.yaml kept its settings under
+    ``pointcloud_to_laserscan_node:``, the executable the package registers for that
+    component (rclcpp_components_register_node(... EXECUTABLE ...)), so the component ran
+    on its defaults. Said for the component no section is for, where a section no node has
+    is named after an executable of the component's own sources; not for a section of
+    another name."""
+    found = _component(write_tree, "scan_node:\n  ros__parameters:\n    range_max: 4.0\n"
+                       + REAR)
+    assert found == ["parameter file scan/config/shared.yaml is given to /front_scan, but its "
+                     "sections are for /scan_node: rcl gives their parameters to none of "
+                     "them"]
+    assert _component(write_tree, "other_node:\n  ros__parameters:\n    range_max: 4.0\n"
+                      + REAR) == []

@@ -44,10 +44,26 @@ from . import syntax
 from .operations import BUILTINS, MATH, Limits, Refused
 
 __all__ = ["BUILTINS", "MATH", "KeyAttributes", "Limits", "Unknown", "Walker", "evaluate",
-           "evaluate_counted", "evaluate_node", "is_unknown", "names_from"]
+           "evaluate_counted", "evaluate_node", "is_unknown", "names_from", "undefined_name"]
 
 def is_unknown(value: object) -> bool:
     return isinstance(value, Unknown)
+
+
+_UNDEFINED = "name '{}' is not defined"
+
+
+def _undefined(name: str) -> Unknown:
+    return Unknown(_UNDEFINED.format(name), "undefined")
+
+
+def undefined_name(unknown: Unknown) -> str | None:
+    """The name an ``undefined`` result of this evaluator did not find, else None."""
+    head, tail = _UNDEFINED.split("{}")
+    reason = unknown.reason
+    if unknown.kind != "undefined" or not (reason.startswith(head) and reason.endswith(tail)):
+        return None
+    return reason[len(head):len(reason) - len(tail)]
 
 
 class KeyAttributes(dict):
@@ -311,11 +327,11 @@ class _Interpreter(Walker):
                 found = self.functions[key]
                 return _Function(key, found) if callable(found) else found
         if self.names is None:
-            raise _Stop(Unknown(f"name '{name}' is not defined", "undefined"))
+            raise _Stop(_undefined(name))
         try:
             return self.names(name)
         except KeyError:
-            raise _Stop(Unknown(f"name '{name}' is not defined", "undefined")) from None
+            raise _Stop(_undefined(name)) from None
 
     def eval_Attribute(self, node: ast.Attribute, env: Any = None) -> Any:
         """A dotted name of the caller's table (``math.pi``), or a key of a

@@ -259,7 +259,7 @@ def build(config: Configuration, launch: LaunchModel, workspace: Workspace,
         if not more:
             break
     _drop_base_copies(config, [*attached, *chained])
-    config.diagnostics.extend(_foreign_sections(launch, config))
+    config.diagnostics.extend(_foreign_sections(launch, config, nodes, plugin_models))
     for action, call, name in action_links(config):
         link(action.node, call, {}, resources, config, _wire_remapped(action.node, name))
     config.launch_tree = launch.tree  # what decide_links asks of includes not read
@@ -316,7 +316,9 @@ def _field_watchers(config: Configuration, resources: Resources) -> None:
         topic.links.append(made)
 
 
-def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagnostic]:
+def _foreign_sections(launch: LaunchModel, config: Configuration,
+                      nodes: Mapping[str, Node] | None = None,
+                      models: PluginModels | None = None) -> list[Diagnostic]:
     """``LAUNCH_PARAMS_NO_NODE`` for each ROS 2 parameter file whose sections are all for
     names none of the nodes it is given to has (``LaunchModel.foreign_sections``). rcl
     applies the file in the processes it is given to, so only a node one of them makes
@@ -333,7 +335,10 @@ def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagno
             continue
         patterns = item.patterns
         if item.lonely:  # the sections no node has, named after the node
-            patterns = [p for p in patterns if _names_the_node(p, given[0]) and not any(
+            alone = given[0]
+            runs = _component_executables(alone.node, nodes or {}, models) if (
+                alone is not None and alone.node is not None) else set()
+            patterns = [p for p in patterns if _names_the_node(p, alone, runs) and not any(
                 pattern_matches(p, name) for name in names)]
             if not patterns:
                 continue
@@ -344,18 +349,46 @@ def _foreign_sections(launch: LaunchModel, config: Configuration) -> list[Diagno
     return found
 
 
-def _names_the_node(pattern: str, instance: NodeInstance | None) -> bool:
-    """Whether a parameter file's section (``/teleop_node``, ``teleop_node``) is named
-    after the node's executable or the name its code gives it, not the name the launch
-    file gave it: a section written for the node before it was renamed."""
+def _component_executables(node: Node, nodes: Mapping[str, Node],
+                           models: PluginModels | None) -> set[str]:
+    """The executables ``node``'s package builds of a component's own sources, none for
+    another node: those ``rclcpp_components_register_node(... EXECUTABLE x)`` makes, which
+    run the component in a process of their own (pointcloud_to_laserscan_node for
+    ``pointcloud_to_laserscan::PointCloudToLaserScanNode``); of the workspace's nodes, or of
+    the package's interface model."""
+    if node.kind != "component" or not node.sources:
+        return set()
+    siblings = [n for key, n in nodes.items() if key.partition("/")[0] == node.package]
+    package = getattr(models, "package", None)
+    model = package(node.package) if callable(package) else None
+    if model is not None:
+        siblings += model.nodes
+    own = sorted(node.sources)
+    return {n.executable for n in siblings
+            if n.kind == "executable" and sorted(n.sources) == own}
+
+
+def _names_the_node(pattern: str, instance: NodeInstance | None,
+                    runs: set[str] | frozenset[str] = frozenset()) -> bool:
+    """Whether a parameter file's section (``/teleop_node``, ``teleop_node``), which
+    does not match the node, is named after it: after the node's executable or the name
+    its code gives it, not the name the launch file gave it (a section written for the
+    node before it was renamed), or, with no wildcard, after the name the launch file
+    gave it in another namespace (``/cabot/people_speed_control_node`` for the node
+    started as ``/people_speed_control_node``: written for the namespace the launch file
+    does not give it). ``runs``: for a component, the executables that run it alone
+    (``_component_executables``), whose names a section may be written under."""
     node = instance.node if instance is not None else None
     if instance is None or node is None:
         return False
     last = pattern.rstrip("/").rsplit("/", 1)[-1]
+    if last in ("", "*", "**"):
+        return False
+    if last == instance.name.rsplit("/", 1)[-1]:
+        return "*" not in pattern
     own = {node.executable.rsplit("/", 1)[-1], (node.rosname or "").rsplit("/", 1)[-1],
-           (instance.code_name or "").rsplit("/", 1)[-1]}
-    return last not in ("", "*", "**") and last in own and (
-        last != instance.name.rsplit("/", 1)[-1])
+           (instance.code_name or "").rsplit("/", 1)[-1], *runs}
+    return last in own
 
 
 def loading_manager(decl: NodeDecl) -> str | None:

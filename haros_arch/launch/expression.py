@@ -12,6 +12,8 @@ which robot descriptions (xacro ``${}``) use too, stays::
 
 from __future__ import annotations
 
+import builtins
+import math
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -22,12 +24,13 @@ from ..evaluate.python import (
     Unknown,
     is_unknown,
     names_from,
+    undefined_name,
     unknown_reasons,
 )
 from ..evaluate.python import evaluate as _evaluate
 
-__all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "evaluate", "is_unknown", "names_from",
-           "unknown_reasons"]
+__all__ = ["BUILTINS", "MATH", "Limits", "Unknown", "eval_knows", "evaluate", "is_unknown",
+           "names_from", "undefined_name", "unknown_reasons"]
 
 
 def evaluate(text: str, names: Callable[[str], object] | None = None,
@@ -36,3 +39,10 @@ def evaluate(text: str, names: Callable[[str], object] | None = None,
     """Evaluate the Python expression ``text`` of a launch file; an ``Unknown`` (with why)
     when it cannot be. Never raises for bad input and never runs code from ``text``."""
     return _evaluate(text, names, functions, limits, dunder=False)
+
+
+def eval_knows(name: str | None) -> bool:
+    """Whether ROS 2 launch's ``eval`` of a ``PythonExpression`` / ``$(eval)`` (no
+    ``python_modules``) has ``name``: Python's builtins, the module ``math`` and its names
+    (Humble's globals are math's; later ones add the module itself). None: not known."""
+    return name is None or name == "math" or hasattr(builtins, name) or hasattr(math, name)

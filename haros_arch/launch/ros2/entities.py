@@ -98,6 +98,9 @@ class GlobalParam(Subst):  # $(param name [default]) / launch_ros's Parameter
 @dataclass(frozen=True)
 class Eval(Subst):  # $(eval ...) / PythonExpression
     expression: Text
+    # python_modules given (``$(eval 'expr' 'numpy')``, ``PythonExpression(..,
+    # python_modules=[..])``): names of those modules may be in the expression
+    modules: bool = False
 
 
 @dataclass(frozen=True)

@@ -247,14 +247,15 @@ class Interpreter(Expressions):
     def misspelt_package(self, name: str, where: Location) -> bool:
         """Whether ``name``, a package the file looks up when the call runs
         (``get_package_share_directory``, ``FindPackageShare(...).find()``), is neither
-        here nor installed but a letter or two from a package that is
-        (``Workspace.misspelt``): then ament_index_python raises PackageNotFoundError at
-        that call, whatever the conditions of the actions its value goes to, and it is
-        said there, once (``PACKAGE_NOT_FOUND``, as a ``FindPackageShare`` of it is where
-        performed). Not in a ``try`` whose handler catches the absence, nor under an
-        ``if`` that checks a package is installed: the file runs without it."""
+        here nor installed but a letter or two from a package that is, or no name a
+        package can have (``Workspace.surely_absent``): then ament_index_python raises
+        PackageNotFoundError at that call, whatever the conditions of the actions its
+        value goes to, and it is said there, once (``PACKAGE_NOT_FOUND``, as a
+        ``FindPackageShare`` of it is where performed). Not in a ``try`` whose handler
+        catches the absence, nor under an ``if`` that checks a package is installed: the
+        file runs without it."""
         if any(self.missing_caught) or installed_check(self.guards) is not None or (
-                self.workspace.find(name) is not None) or not self.workspace.misspelt(name):
+                not self.workspace.surely_absent(name)):
             return False
         found = diag.make("PACKAGE_NOT_FOUND", where, name=name,
                           why=self.workspace.absence(name))

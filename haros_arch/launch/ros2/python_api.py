@@ -457,7 +457,8 @@ def executable_in_package(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any
 
 
 def python_expression(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
-    return e.Eval(to_text(arg(a, k, 0, "expression", default=[])))
+    return e.Eval(to_text(arg(a, k, 0, "expression", default=[])),
+                  modules=len(a) > 1 or "python_modules" in k)
 
 
 def eval_text(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:

@@ -193,7 +193,7 @@ def make(name: str, args: list[e.Text], raw: str) -> e.Subst:
     if name == "eval":
         arity(1, 64)
         if len(args) == 2:  # $(eval 'expression' 'module,...'): the modules it may use
-            return e.Eval(args[0])
+            return e.Eval(args[0], modules=True)
         joined: list[str | e.Subst] = []
         for index, arg in enumerate(args):
             joined.extend(((" ",) if index else ()) + arg)
@@ -341,8 +341,9 @@ class Evaluator:
         if name is None:
             return Value.unknown("package with an unknown name")
         found = self.runner.workspace.find(name)
-        if found is None and self.runner.workspace.misspelt(name):
-            # a letter or two from a package here: most likely a typo, the launch fails
+        if found is None and self.runner.workspace.surely_absent(name):
+            # a letter or two from a package here (most likely a typo), or no package's
+            # name at all: the launch fails
             if not s.said:
                 self.report("PACKAGE_NOT_FOUND", name=name,
                             why=self.runner.workspace.absence(name))
@@ -449,6 +450,14 @@ class Evaluator:
                 self.report("LAUNCH_BAD_VALUE", detail=(
                     f"$(eval) / PythonExpression of {source.literal!r}: SyntaxError "
                     f"({result.reason}); the launch fails here"))
+            elif (result.kind == "undefined" and not s.modules
+                  and not expression.eval_knows(expression.undefined_name(result))):
+                # launch's eval has Python's builtins and math's names, nothing else
+                # (a launch configuration is $(var x), not x): NameError when performed
+                self.report("LAUNCH_BAD_VALUE", detail=(
+                    f"$(eval) / PythonExpression of {source.literal!r}: NameError "
+                    f"({result.reason}: launch evaluates it with Python's builtins and "
+                    "math's names only); the launch fails here"))
             elif result.kind != "unknown":
                 self.report("LAUNCH_UNSUPPORTED",
                             detail=f"expression {source.literal!r}: {result.reason}")
