@@ -632,12 +632,14 @@ class Walker:
         self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
                    lambda loop: self._block(statement.body, frame, (*conds, *loop)),
                    whole=not _leaves_early(statement.body),
-                   builds=self._inlining[-1][1] and _builds(statement, self._inlining[-1][0]))
+                   builds=self._inlining[-1][1] and _builds(statement, self._inlining[-1][0]),
+                   uses_item=_names_target(statement.body, statement.target)
+                   or _stores(statement.body))
         self._block(statement.orelse, frame, conds)
 
     def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
               body: Callable[[tuple[Condition, ...]], None], whole: bool = True,
-              builds: bool = False) -> None:
+              builds: bool = False, uses_item: bool = True) -> None:
         """Walk a loop's body (``body(loop conditions)``) once per item of a known, short
         sequence (unrolled), else once with the variable unknown; over a list
         parameter's value, or a dict parameter's ``values()`` / ``items()``, once with
@@ -651,7 +653,16 @@ class Walker:
         names a helper appends to): a loop there names no call, and walking it once per
         item, in each call of the function, made a driver's device code (probing each
         baud rate of each port, reading each message) exhaust the walk before the
-        node's own code (ethzasl_xsens_driver's MTDevice: 4 of its 23 calls found)."""
+        node's own code (ethzasl_xsens_driver's MTDevice: 4 of its 23 calls found).
+
+        A loop whose body never names its variable and stores nothing itself (``for _
+        in range(200): self.run()``: no assignment, no container changed in place)
+        differs from turn to turn only by what the functions it calls leave to the next
+        turn: it is unrolled until a turn makes the very calls the turn before made, the
+        later turns being walks of the same (quadruped_ctrl's simulator calls its
+        ``run()`` 200 times in its reset, which exhausted the walk: the node was
+        partial); a counter a turn advances (``i += 1``), a list it fills, still gives
+        one walk per turn."""
         ev = self.evaluator
         if id(over) not in ev.fixed:
             walked = ev.eval(over, frame)
@@ -678,9 +689,16 @@ class Walker:
             self._loop_names.append((id(frame), frozenset(
                 n.id for n in ast.walk(target) if isinstance(n, ast.Name))))
         try:
+            previous: list[PrimitiveCall] | None = None
             for item in items if items else (Unknown("loop variable"),):
+                start = len(self.calls)
                 ev.bind(target, item, frame)
                 body(loop)
+                if not uses_item:
+                    turn = self.calls[start:]
+                    if turn == previous:
+                        break
+                    previous = turn
         finally:
             self._unrolled -= 1 if items else 0
             if items:
@@ -2128,6 +2146,36 @@ def _kept_names(function: ast.AST) -> frozenset[str]:
         kept.update(n.id for value in stored for n in ast.walk(value)
                     if isinstance(n, ast.Name))
     return frozenset(kept)
+
+
+def _names_target(body: list[ast.stmt], target: ast.expr) -> bool:
+    """Whether a loop's body names any variable its target binds (read, written or
+    deleted, in a function or comprehension it defines too)."""
+    names = {n.id for n in ast.walk(target) if isinstance(n, ast.Name)}
+    if not names or any(isinstance(n, ast.Attribute | ast.Subscript) for n in ast.walk(target)):
+        return True  # an attribute or an item as target: the turn stores the item
+    return any(isinstance(n, ast.Name) and n.id in names
+               for statement in body for n in ast.walk(statement))
+
+
+def _stores(body: list[ast.stmt]) -> bool:
+    """Whether a loop's body, as written (its callees aside, and nested loops'
+    variables, which it binds afresh each turn), stores a value a later turn may see:
+    an assignment, a deletion, a ``with ... as``, an import, a global or nonlocal
+    declaration, a container changed in place (``names.append(x)``)."""
+    for statement in body:
+        for node in ast.walk(statement):
+            if isinstance(node, ast.Assign | ast.AugAssign | ast.AnnAssign | ast.NamedExpr
+                          | ast.Delete | ast.Import | ast.ImportFrom | ast.Global
+                          | ast.Nonlocal | ast.FunctionDef | ast.AsyncFunctionDef
+                          | ast.ClassDef):
+                return True
+            if isinstance(node, ast.withitem) and node.optional_vars is not None:
+                return True
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                    and node.func.attr in _IN_PLACE:
+                return True
+    return False
 
 
 def _leaves_early(body: list[ast.stmt]) -> bool:
