@@ -18,7 +18,7 @@ import dataclasses
 import functools
 import re
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -1341,7 +1341,8 @@ class Walker:
                 base.default = plain_value(value)
             if spec.kind == "declare":
                 ev.declared[base.name.removeprefix("~")] = value
-        if spec.kind == "read" and id(call) in self._converted:
+        if spec.kind == "read" and (id(call) in self._converted
+                                    or id(call) in _converted_locals(frame.module.tree)):
             base.type = None
         base.searched = spec.search or base.searched
         if spec.search and base.name:  # rospy.search_param: from the node's own name up
@@ -2156,6 +2157,68 @@ def _names_target(body: list[ast.stmt], target: ast.expr) -> bool:
         return True  # an attribute or an item as target: the turn stores the item
     return any(isinstance(n, ast.Name) and n.id in names
                for statement in body for n in ast.walk(statement))
+
+
+@functools.lru_cache(maxsize=256)
+def _converted_locals(tree: ast.Module) -> frozenset[int]:
+    """The calls (ids) whose value a function (or the module's own code) keeps in a
+    local it assigns once and uses only where any type will do: converted (``int(x)``,
+    ``str(x)``, ``float(x)``, ``bool(x)``) or formatted (``'{}'.format(x)``, ``'%s' %
+    x``, ``f'{x}'``). A parameter read so has no type of its own, as one converted where
+    it is read (mbzirc2020's c3_starter reads ``~ground_id`` with the default ``'0'``
+    and uses ``int(ground_id)``: the launch file's integer 0 is as good)."""
+    found: set[int] = set()
+    scopes: list[ast.AST] = [tree, *(n for n in ast.walk(tree)
+                                     if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef))]
+    for scope in scopes:
+        nodes = list(_scope_nodes(scope))
+        stores: dict[str, list[ast.AST]] = {}
+        for node in nodes:
+            if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+                stores.setdefault(node.id, []).append(node)
+            elif isinstance(node, ast.arg):
+                stores.setdefault(node.arg, []).append(node)
+        agnostic = {id(child) for node in nodes for child in _typeless_uses(node)}
+        for node in nodes:
+            if not (isinstance(node, ast.Assign) and len(node.targets) == 1
+                    and isinstance(node.targets[0], ast.Name)
+                    and isinstance(node.value, ast.Call)):
+                continue
+            name = node.targets[0].id
+            loads = [n for n in ast.walk(scope) if isinstance(n, ast.Name)
+                     and n.id == name and isinstance(n.ctx, ast.Load)]
+            if len(stores.get(name, ())) == 1 and loads and all(
+                    id(n) in agnostic for n in loads):
+                found.add(id(node.value))
+    return frozenset(found)
+
+
+def _scope_nodes(scope: ast.AST) -> Iterator[ast.AST]:
+    """The nodes of a function's (or module's) own code, not of a function or class it
+    defines."""
+    stack = list(ast.iter_child_nodes(scope))
+    while stack:
+        node = stack.pop()
+        yield node
+        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef
+                          | ast.Lambda):
+            stack.extend(ast.iter_child_nodes(node))
+
+
+def _typeless_uses(node: ast.AST) -> Iterator[ast.AST]:
+    """The values ``node`` uses where any type will do (``_converted_locals``)."""
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
+            and node.func.id in _CONVERSIONS and len(node.args) == 1 and not node.keywords:
+        yield node.args[0]
+    elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr == "format" and isinstance(node.func.value, ast.Constant) \
+            and isinstance(node.func.value.value, str):
+        yield from (*node.args, *(k.value for k in node.keywords))
+    elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mod) \
+            and isinstance(node.left, ast.Constant) and isinstance(node.left.value, str):
+        yield from (node.right.elts if isinstance(node.right, ast.Tuple) else [node.right])
+    elif isinstance(node, ast.FormattedValue) and node.format_spec is None:
+        yield node.value
 
 
 def _stores(body: list[ast.stmt]) -> bool:
