@@ -669,6 +669,15 @@ def test_a_system_library_of_the_table_leaves_it_complete(write_tree: Any) -> No
     assert node.said == []
 
 
+def test_the_zbar_library_leaves_it_complete(write_tree: Any) -> None:
+    # zbar_ros' nodelet builds zbar::ImageScanner; zbar is the rosdep key of libzbar-dev,
+    # a bar code library (sara_commun's copy of zbar_ros was partial for it)
+    node = _smoother(write_tree, "zbar::ImageScanner scanner;", "gtsam", "octomap", "zbar",
+                     header="zbar.h")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+
+
 GUI = """
     #include <string>
     #include <ros/ros.h>
