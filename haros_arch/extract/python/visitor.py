@@ -871,7 +871,16 @@ class Walker:
     _AsyncFunctionDef = _FunctionDef
 
     def _ClassDef(self, statement: ast.ClassDef, frame: Frame, conds: Conditions) -> None:
-        return
+        """A class statement runs its body once, where it is (Python builds the class
+        then): its own statements, not the functions it defines, are walked
+        in a namespace of their own (mbzirc2020's parser_c2 reads ``~UGV_data`` in its
+        class body, ``ugv_file = rospy.get_param('~UGV_data')``: no read was seen, and
+        the launch file's parameter was a false parameter-set-not-read); a class it
+        defines runs its own body in turn."""
+        own = [s for s in statement.body if not isinstance(
+            s, ast.FunctionDef | ast.AsyncFunctionDef)]
+        if any(not _is_docstring(s) for s in own):
+            self._block(own, Frame(frame.module, depth=frame.depth), conds)
 
     def _Import(self, statement: ast.Import | ast.ImportFrom, frame: Frame,
                 conds: Conditions) -> None:
@@ -2219,6 +2228,10 @@ def _typeless_uses(node: ast.AST) -> Iterator[ast.AST]:
         yield from (node.right.elts if isinstance(node.right, ast.Tuple) else [node.right])
     elif isinstance(node, ast.FormattedValue) and node.format_spec is None:
         yield node.value
+
+
+def _is_docstring(statement: ast.stmt) -> bool:
+    return isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant)
 
 
 def _stores(body: list[ast.stmt]) -> bool:
