@@ -238,7 +238,7 @@ def _from_setup_call(module: Module, tree: ast.Module, path: str, workspace: Wor
                 and len(s.targets) == 1 and isinstance(s.targets[0], ast.Name)}
     entries: list[EntryPoint] = []
     package_dir: dict[str, str] = {}
-    for keyword in _keywords(call, module, assigned):
+    for keyword in _keywords(call, module, assigned, _items_set(tree)):
         if keyword.arg == "package_dir":
             value = module.value(keyword.value)
             if isinstance(value, dict):
@@ -259,20 +259,41 @@ def _from_setup_call(module: Module, tree: ast.Module, path: str, workspace: Wor
 CATKIN_SETUP = "catkin_pkg.python_setup.generate_distutils_setup"
 
 
-def _keywords(call: ast.Call, module: Module, assigned: dict[str, ast.expr]
-              ) -> list[ast.keyword]:
+def _keywords(call: ast.Call, module: Module, assigned: dict[str, ast.expr],
+              items: dict[str, dict[str, ast.expr]] | None = None) -> list[ast.keyword]:
     """The keyword arguments of a setup() call, with those of a ``**`` argument that is
-    catkin's ``generate_distutils_setup(...)`` (or a name assigned one) in its place."""
+    catkin's ``generate_distutils_setup(...)`` (or a name assigned one) in its place,
+    and the items the module's own code then sets on that name (``d['package_dir'] =
+    {'': 'python'}``, ``items``: object_recognition_ros' setup.py), which replace the
+    call's keywords of those names, as setup() gets the dict."""
     found: list[ast.keyword] = []
     for keyword in call.keywords:
         node = keyword.value
         if keyword.arg is not None:
             found.append(keyword)
             continue
-        if isinstance(node, ast.Name) and node.id in assigned:
-            node = assigned[node.id]
+        named = node.id if isinstance(node, ast.Name) else None
+        if named is not None and named in assigned:
+            node = assigned[named]
         if isinstance(node, ast.Call) and module.qualified(node.func) == CATKIN_SETUP:
-            found.extend(k for k in node.keywords if k.arg is not None)
+            later = (items or {}).get(named or "", {})
+            found.extend(k for k in node.keywords if k.arg is not None and k.arg not in later)
+            found.extend(ast.keyword(arg=key, value=value) for key, value in later.items())
+    return found
+
+
+def _items_set(tree: ast.Module) -> dict[str, dict[str, ast.expr]]:
+    """The items the module's top-level code sets on a name by a text key (``d['packages']
+    = [...]``), by name, the last value of each key."""
+    found: dict[str, dict[str, ast.expr]] = {}
+    for statement in tree.body:
+        if not (isinstance(statement, ast.Assign) and len(statement.targets) == 1):
+            continue
+        target = statement.targets[0]
+        if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name) \
+                and isinstance(target.slice, ast.Constant) \
+                and isinstance(target.slice.value, str):
+            found.setdefault(target.value.id, {})[target.slice.value] = statement.value
     return found
 
 

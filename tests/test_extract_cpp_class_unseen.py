@@ -669,6 +669,15 @@ def test_a_system_library_of_the_table_leaves_it_complete(write_tree: Any) -> No
     assert node.said == []
 
 
+def test_the_zbar_library_leaves_it_complete(write_tree: Any) -> None:
+    # zbar_ros' nodelet builds zbar::ImageScanner; zbar is the rosdep key of libzbar-dev,
+    # a bar code library (sara_commun's copy of zbar_ros was partial for it)
+    node = _smoother(write_tree, "zbar::ImageScanner scanner;", "gtsam", "octomap", "zbar",
+                     header="zbar.h")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []
+
+
 GUI = """
     #include <string>
     #include <ros/ros.h>
@@ -1127,3 +1136,48 @@ def test_moveits_geometry_library_leaves_it_complete(write_tree: Any) -> None:
                      "geometric_shapes", header="geometric_shapes/bodies.h")
     assert node.completeness == "complete", node.completeness_reasons
     assert node.said == []
+
+
+# mbzirc2020 (e474cee)'s UAV action server builds grvc-ual's UAL on a backend chosen by a
+# parameter; the classes are in namespace grvc::ual, which names no package, and their
+# headers are named after them: the backends read the server's ~pid/... parameters, so
+# with the node whole 98 of them were false parameter-set-not-read findings
+UAL = """
+    #include <string>
+    #include <ros/ros.h>
+    #include <uav_abstraction_layer/ual.h>
+    #include <ual_backend_mavros/ual_backend_mavros.h>
+    #include <ual_backend_gazebo_light/ual_backend_gazebo_light.h>
+
+    int main(int argc, char** argv) {
+      ros::init(argc, argv, "server");
+      std::string kind;
+      ros::param::param<std::string>("~ual_backend", kind, "mavros");
+      grvc::ual::Backend* backend = nullptr;
+      if (kind == "mavros") {
+        backend = new grvc::ual::BackendMavros();
+      } else {
+        backend = new grvc::ual::BackendGazeboLight();
+      }
+      grvc::ual::UAL* ual = new grvc::ual::UAL(backend);
+      ros::spin();
+    }
+    """
+
+
+def test_classes_of_a_namespace_no_package_names_found_by_their_headers(
+        write_tree: Any) -> None:
+    node, _ = _teleop(write_tree, UAL, "uav_abstraction_layer", "ual_backend_mavros",
+                      "ual_backend_gazebo_light")
+    assert node.completeness == "partial"
+    said = sorted(r.split(": ", 1)[1] for r in node.completeness_reasons)
+    assert said == [
+        "grvc::ual::BackendGazeboLight of ROS package ual_backend_gazebo_light is built "
+        "here and its code is not read",
+        "grvc::ual::BackendMavros of ROS package ual_backend_mavros is built here and its "
+        "code is not read",
+        "grvc::ual::UAL of ROS package uav_abstraction_layer is built here and its code "
+        "is not read"], node.completeness_reasons
+    # no dependency holds the headers' folders: a vendor's library, as before
+    node, _ = _teleop(write_tree, UAL)
+    assert node.completeness == "complete", node.completeness_reasons

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from haros_arch.extract.cpp import CppResult, extract_cpp
+from haros_arch.extract.cpp import CppResult, extract_cpp, recall
 from haros_arch.workspace import Workspace, scan
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "libraries"
@@ -234,3 +234,35 @@ def test_cxx17_library_and_message_setters_parse_clean(ws: Workspace) -> None:
         ("publish", "recorded_goal", "geometry_msgs/msg/PoseStamped", 5),
     ]
     assert [d.code for d in result.diagnostics] == []
+
+
+def test_a_ros1_unit_calls_no_api_of_ros2_only(tmp_path: Path) -> None:
+    """ORK's renderer (sara_commun's copy, ROS 1) calls its own renderer's
+    ``set_parameters(width, height, ...)`` in a function with a C++ error: the line was
+    taken for a call site of rclcpp's ``Node::set_parameters``, CPP_CALL_MISSED and an
+    error near a call, so view_generator was partial. The same line in ROS 2 code is
+    still a site."""
+    package = tmp_path / "src" / "render"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>render</name><version>1.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>BSD</license><depend>roscpp</depend></package>\n')
+    source = package / "src" / "render.cpp"
+    source.write_text(
+        "#include <ros/ros.h>\n#include <std_msgs/String.h>\n"
+        "class Renderer {\n public:\n  virtual void render() = 0;\n"
+        "  void set_parameters(int width, int height, double fx, double fy);\n};\n"
+        "void render(Renderer* renderer) {\n"
+        "  renderer->set_parameters(640, 480, 525.0, 525.0);\n"
+        "  Renderer copy = *renderer;\n}\n"
+        "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"render\");\n"
+        "  ros::NodeHandle nh;\n"
+        "  ros::Publisher pub = nh.advertise<std_msgs::String>(\"out\", 1);\n}\n")
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.kind, c.name) for c in result.calls] == [("publish", "out")]
+    assert [d.code for d in result.diagnostics] == ["CPP_PARSE_ERROR"]
+    line = "  renderer->set_parameters(640, 480, 525.0, 525.0);\n"
+    assert recall.call_sites(line, ros2=False) == []
+    assert [s.line for s in recall.call_sites(line, ros2=True)] == [1]
+    assert [s.line for s in recall.call_sites(line)] == [1]

@@ -1142,3 +1142,49 @@ def test_long_double_math(write_tree) -> None:
     assert _errors(result) == [] and not [
         d for d in result.diagnostics if d.code == "CPP_NAMES_DECLARED"]
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "~odom")]
+
+
+# A serial driver's port options (zeabus' IMU on a Lord Microstrain, through its own
+# SerialPort class): ``serial_port_base::flow_control::none`` and the overloads of
+# ``set_option_port`` on each option class need Boost.Asio's real nested classes and
+# enums; declared permissively, every such line was an error in ``main``, which
+# advertises, and ``namespace Asio = boost::asio;`` redefined a permissive ``Asio``
+SERIAL = """#include <string>
+#include <ros/ros.h>
+#include <std_msgs/String.h>
+#include <boost/asio.hpp>
+namespace Asio = boost::asio;
+class Port {
+ public:
+  explicit Port(const std::string& name) : port_(io_) { port_.open(name); }
+  void set_option_port(Asio::serial_port_base::baud_rate b) { port_.set_option(b); }
+  void set_option_port(Asio::serial_port_base::flow_control f) { port_.set_option(f); }
+  void set_option_port(Asio::serial_port_base::parity p) { port_.set_option(p); }
+  void set_option_port(Asio::serial_port_base::stop_bits s) { port_.set_option(s); }
+  void set_option_port(Asio::serial_port_base::character_size c) { port_.set_option(c); }
+ private:
+  boost::asio::io_service io_;
+  boost::asio::serial_port port_;
+};
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "imu");
+  ros::NodeHandle nh;
+  Port imu(nh.param<std::string>("~port", "/dev/ttyACM0"));
+  imu.set_option_port(Asio::serial_port_base::baud_rate(115200));
+  imu.set_option_port(Asio::serial_port_base::flow_control(
+      Asio::serial_port_base::flow_control::none));
+  imu.set_option_port(Asio::serial_port_base::parity(Asio::serial_port_base::parity::none));
+  imu.set_option_port(Asio::serial_port_base::stop_bits(
+      Asio::serial_port_base::stop_bits::one));
+  imu.set_option_port(Asio::serial_port_base::character_size((size_t) 8));
+  ros::Publisher pub = nh.advertise<std_msgs::String>("imu/data", 1);
+  ros::spin();
+}
+"""
+
+
+def test_asio_serial_port_options(write_tree) -> None:
+    result = _extract(write_tree, SERIAL, "catkin")
+    assert _errors(result) == []
+    assert [(c.kind, c.name) for c in result.calls] == [
+        ("read", "~port"), ("publish", "imu/data")]

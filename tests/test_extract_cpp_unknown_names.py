@@ -1679,3 +1679,50 @@ def test_a_calling_convention_macro_of_a_missing_header_is_defined_empty(write_t
     text = b"int count handle(1);\n"
     assert not names.learn([("expected ';' after top level declarator", text,
                              text.index(b" handle"))])
+
+
+def test_a_vendor_sdks_windows_integer_types_are_integers(write_tree) -> None:
+    """IDS uEye's SDK (``ueye.h``, missing) defines the Windows data types ``INT``,
+    ``UINT``, ... as integers; ueye_cam's driver takes ``INT&`` members of its
+    dynamic_reconfigure config, which are ``int``: as permissive classes they refused
+    the ``int``, an error at each such call in ``parseROSParams``, which reads the
+    nodelet's parameters and advertises (zeabus' cameras: the nodelet partial). A name
+    of that table that the code also casts to (``(INT) 2000``) is still the integer."""
+    root = write_tree({
+        "pkg/package.xml": package_xml("pkg", "catkin"),
+        "pkg/src/camera.cpp": """\
+            #include <string>
+            #include <ros/ros.h>
+            #include <std_msgs/String.h>
+            #include <ueye.h>
+            struct Config { int master_gain; int red_gain; bool auto_gain; };
+            class Camera {
+             public:
+              INT setGain(bool& automatic, INT& master, INT& red);
+              INT parse(ros::NodeHandle& nh) {
+                INT is_err = IS_SUCCESS;
+                UINT timeout = (INT) 2000;
+                nh.param<int>("master_gain", config_.master_gain, 0);
+                if ((is_err = setGain(config_.auto_gain, config_.master_gain,
+                                      config_.red_gain)) != IS_SUCCESS) return is_err;
+                pub_ = nh.advertise<std_msgs::String>("image_raw", 1);
+                return is_err;
+              }
+             private:
+              Config config_;
+              HIDS handle_;
+              ros::Publisher pub_;
+            };
+            int main(int argc, char** argv) {
+              ros::init(argc, argv, "camera");
+              ros::NodeHandle nh("~");
+              Camera camera;
+              camera.parse(nh);
+            }
+            """})
+    result = extract_cpp([str(root / "pkg" / "src" / "camera.cpp")], scan([str(root)]),
+                         cache_dir=None, jobs=1)
+    assert rows(result) == [("read", "~master_gain", "int", 12),
+                            ("publish", "~image_raw", "std_msgs/String", 15)]
+    assert [c for c in codes(result) if c in (
+        "CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL", "CPP_CALL_MISSED")] == []

@@ -132,3 +132,31 @@ def test_an_empty_text_default_of_a_value_walked_element_by_element_is_a_list(tm
     got = [(c.name, c.type) for c in result.calls]
     assert got == [("/joints", "list"), ("~names", "list"), ("~frame", "str"),
                    ("~prefix", "str")]
+
+
+def test_a_read_kept_in_a_local_the_code_only_converts_has_no_type_of_its_own(tmp_path):
+    """mbzirc2020's c3_starter.py: ``ground_id = rospy.get_param('~ground_id', '0')``,
+    then only ``int(ground_id)`` and ``'{}'.format(ground_id)``: the launch file's
+    integer 0 is as good as the string default, so parameter-type-mismatch said a false
+    "set as int but read as str". A local used as itself somewhere (``port`` opened as a
+    path), or assigned twice, keeps its default's type."""
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import rospy\n"
+        "def main():\n"
+        "    rospy.init_node('starter')\n"
+        "    ground_id = rospy.get_param('~ground_id', '0')\n"
+        "    facade_id = rospy.get_param('~facade_id', '0')\n"
+        "    srv = rospy.ServiceProxy('start_facade_' + str(facade_id), Empty)\n"
+        "    port = rospy.get_param('~port', '/dev/ttyUSB0')\n"
+        "    rate = rospy.get_param('~rate', '10')\n"
+        "    rate = int(rate)\n"
+        "    if int(ground_id) != 0:\n"
+        "        rospy.loginfo('Starting ground {}'.format(ground_id))\n"
+        "        rospy.loginfo('facade %s' % facade_id)\n"
+        "    open(port)\n"
+        "main()\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.name, c.type) for c in result.calls if c.kind == "read"]
+    assert got == [("~ground_id", None), ("~facade_id", None), ("~port", "str"),
+                   ("~rate", "str")]

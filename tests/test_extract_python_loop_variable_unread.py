@@ -75,3 +75,69 @@ def test_a_container_the_body_fills_is_unknown_after_one_walk(tmp_path) -> None:
                  "for name in names:\n"
                  "    rospy.Publisher(name, String, queue_size=10)\n")
     assert [c.name for c in result.calls] != ["imu0"]
+
+
+# quadruped_ctrl (6e1093c)'s walking_simulation.py resets its robot with ``for _ in
+# range(200): self.run()``, and ``run`` steps the simulation, publishing: a function
+# that reaches ROS calls, so the loop was unrolled 200 times, which exhausted the walk
+# (PY_TOO_COMPLEX) before the node's later subscription
+SIMULATOR = """import rospy
+from sensor_msgs.msg import JointState
+class Simulator(object):
+    def __init__(self):
+        rospy.init_node('simulator')
+        self.pub = rospy.Publisher('joint_states', JointState, queue_size=1)
+        self.reset()
+        self.sub = rospy.Subscriber('cmd', JointState, self.command)
+    def reset(self):
+        for _ in range(200):
+            self.run()
+    def run(self):
+        while not rospy.is_shutdown():
+            self.step()
+    def step(self):
+        msg = JointState()
+        for j in range(12):
+            msg.position.append(self.read(j))
+            msg.velocity.append(self.read(j + 12))
+        self.pub.publish(msg)
+    def read(self, j):
+        total = rospy.get_param('~gain', 1.0)
+        for k in range(8):
+            total += j * k * self.scale(k)
+        return total
+    def scale(self, k):
+        if rospy.has_param('~scale_%d' % k):
+            return rospy.get_param('~scale_%d' % k)
+        return 1.0
+    def command(self, msg):
+        pass
+Simulator()
+"""
+
+
+def test_a_loop_that_stores_nothing_stops_when_its_turns_repeat(tmp_path) -> None:
+    source = tmp_path / "simulator.py"
+    source.write_text(SIMULATOR)
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    assert [d.code for d in result.diagnostics] == []
+    calls = {(c.kind, c.name) for c in result.calls}
+    assert {("publish", "joint_states"), ("subscribe", "cmd"), ("read", "~gain"),
+            ("read", "~scale_0"), ("read", "~scale_7")} <= calls
+
+
+def test_a_counter_a_called_method_advances_still_names_each_turn(tmp_path) -> None:
+    """The loop stores nothing itself, but each turn's call names another topic: the
+    turns differ, so each is walked."""
+    result = run(tmp_path,
+                 "class Bank(object):\n"
+                 "    def __init__(self):\n"
+                 "        self.count = 0\n"
+                 "    def add(self):\n"
+                 "        self.count += 1\n"
+                 "        rospy.Publisher('imu%d' % self.count, String, queue_size=10)\n"
+                 "rospy.init_node('imu')\n"
+                 "bank = Bank()\n"
+                 "for _ in range(3):\n"
+                 "    bank.add()\n")
+    assert [c.name for c in result.calls if c.kind == "publish"] == ["imu1", "imu2", "imu3"]

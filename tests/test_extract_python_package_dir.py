@@ -100,3 +100,49 @@ def test_python_folders_of_setup_py(write_tree) -> None:
     assert python_folders(str(src / "named")) == (str(src / "named" / "lib"),)
     assert python_folders(str(src / "outside")) == ()
     assert python_folders(str(src / "nothing")) == ()
+
+
+def test_items_set_on_the_setup_dict_after_the_call(write_tree) -> None:
+    """object_recognition_ros' setup.py: ``d = generate_distutils_setup()``, then
+    ``d['packages'] = [...]`` and ``d['package_dir'] = {'': 'python'}``, then
+    ``setup(**d)``: setup() gets the dict as changed, so the module its ``server``
+    script imports its RecognitionServer from is in ``python/``; not read, the server
+    (an action server and a subscriber) was a complete node of no call. A key set again
+    replaces the call's keyword."""
+    root = write_tree({
+        "src/ork/package.xml": package_xml("ork"),
+        "src/ork/setup.py": (
+            "from distutils.core import setup\n"
+            "from catkin_pkg.python_setup import generate_distutils_setup\n"
+            "d = generate_distutils_setup(package_dir={'': 'lib'})\n"
+            "d['packages'] = ['ork_ros']\n"
+            "d['package_dir'] = {'': 'python'}\n"
+            "setup(**d)\n"),
+        "src/ork/python/ork_ros/__init__.py": "",
+        "src/ork/python/ork_ros/server.py": (
+            "import actionlib\n"
+            "import rospy\n"
+            "from std_msgs.msg import String\n"
+            "class RecognitionServer(object):\n"
+            "    def __init__(self):\n"
+            "        rospy.Subscriber('recognized_object_array', String, self.done)\n"
+            "        self.server = actionlib.SimpleActionServer('recognize_objects', Action,"
+            " self.execute, False)\n"
+            "    def done(self, msg):\n"
+            "        pass\n"
+            "    def execute(self, goal):\n"
+            "        pass\n"),
+        "src/ork/apps/server.py": (
+            "import rospy\n"
+            "from ork_ros.server import RecognitionServer\n"
+            "if __name__ == '__main__':\n"
+            "    rospy.init_node('recognize_objects_server')\n"
+            "    server = RecognitionServer()\n"
+            "    rospy.spin()\n"),
+    })
+    src = root / "src"
+    assert python_folders(str(src / "ork")) == (str(src / "ork" / "python"),)
+    ws = scan([str(src)], {})
+    result = extract_python([str(src / "ork" / "apps" / "server.py")], ws, package="ork")
+    assert sorted((c.kind, c.name) for c in result.calls) == [
+        ("action-server", "recognize_objects"), ("subscribe", "recognized_object_array")]

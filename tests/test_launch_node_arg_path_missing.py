@@ -61,3 +61,38 @@ def test_world_file_that_is_there_is_not_said(write_tree) -> None:
     ws = scan([str(root / "src")], {})
     model = load(str(root / "src/sim/launch/range.launch"), ws, {}, {})
     assert _said(model) == []
+
+
+# mbzirc2020 (e474cee)'s challenge launch files make their world with xacro and hand it
+# to Gazebo's launcher with a search path of model folders joined by ``:``
+XACRO_WORLD = """<launch>
+  <node name="xacro" pkg="xacro" type="xacro"
+        args="--inorder -o $(find sim)/worlds/arena.world $(find sim)/worlds/arena.world.xacro"/>
+  <node pkg="sim" type="launch_world" name="world"
+        args="-world=$(find sim)/worlds/arena.world
+              -add_model_path=$(find sim)/models:$(find sim)/urdf:$(find sim)/meshes"/>
+  <node pkg="sim" type="launch_world" name="other"
+        args="-world=$(find sim)/worlds/other.world
+              -add_model_path=$(find sim)/models:$(find sim)/gone"/>
+</launch>
+"""
+
+
+def test_a_file_another_node_writes_and_a_search_path_are_judged_by_their_parts(
+        write_tree) -> None:
+    """The world xacro's ``-o`` writes is there for the node given it; each folder of a
+    search path is judged on its own: only the world no node writes and the folder that
+    is not there are said."""
+    root = write_tree({"src/sim/package.xml": package_xml("sim", "catkin"),
+                       "src/sim/launch/arena.launch": XACRO_WORLD,
+                       "src/sim/worlds/arena.world.xacro": "<sdf/>\n",
+                       "src/sim/models/box/model.sdf": "<sdf/>\n",
+                       "src/sim/urdf/robot.urdf": "<robot/>\n",
+                       "src/sim/meshes/base.dae": "<dae/>\n"})
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/sim/launch/arena.launch"), ws, {}, {})
+    assert _said(model) == [
+        ("arena.launch", "node other is given the path sim/gone on its command line, "
+         "which is not there", 7),
+        ("arena.launch", "node other is given the path sim/worlds/other.world on its "
+         "command line, which is not there", 7)]

@@ -61,20 +61,8 @@ def missing_argument_paths(words: list[str], workspace: Workspace,
     given to an option of output (map_saver's ``-f $(find pkg)/maps/new``, rosbag's
     ``-O``, ``--log_file=...``, ``_save_path:=...``)."""
     missing: list[str] = []
-    for at, word in enumerate(words):
-        candidates = [word]
-        for sep in (":=", "="):
-            if sep in word:
-                key, value = word.split(sep, 1)
-                if _OUTPUT_KEY.search(key.lstrip("-_")):
-                    candidates = []
-                else:
-                    candidates.append(value)
-                break
-        if at and _OUTPUT_OPTION.match(words[at - 1]):
-            candidates = []
-        for candidate in candidates:
-            path = candidate.strip("'\"")
+    for candidate in _path_words(words, output=False):
+        for path in _path_list(candidate.strip("'\"")):
             if not path.startswith(os.sep) or UNKNOWN_MARK in path:
                 continue
             source: str | None = os.path.normpath(path)
@@ -86,3 +74,43 @@ def missing_argument_paths(words: list[str], workspace: Workspace,
                     and source not in missing:
                 missing.append(source)
     return missing
+
+
+def written_argument_paths(words: list[str]) -> list[str]:
+    """The absolute paths among a node's command-line words that name a file the program
+    writes (after an option of output, ``xacro -o PATH``, or as the value of an output
+    key, ``--out=PATH``): another node of the launch may be handed that file to read
+    (mbzirc2020's challenge launch files run xacro with ``-o $(find challenge_worlds)/
+    worlds/challenge2.world`` and give that world to Gazebo)."""
+    return [os.path.normpath(path) for word in _path_words(words, output=True)
+            for path in _path_list(word.strip("'\""))
+            if path.startswith(os.sep) and UNKNOWN_MARK not in path]
+
+
+def _path_words(words: list[str], output: bool) -> list[str]:
+    """The words (or values of ``key=value`` / ``key:=value`` words) that may be paths a
+    program reads (``output`` False) or writes (True)."""
+    found: list[str] = []
+    for at, word in enumerate(words):
+        reads, writes = [word], []
+        for sep in (":=", "="):
+            if sep in word:
+                key, value = word.split(sep, 1)
+                if _OUTPUT_KEY.search(key.lstrip("-_")):
+                    reads, writes = [], [value]
+                else:
+                    reads.append(value)
+                break
+        if at and _OUTPUT_OPTION.match(words[at - 1]):
+            reads, writes = [], [word]
+        found += writes if output else reads
+    return found
+
+
+def _path_list(text: str) -> list[str]:
+    """A list of absolute paths joined by ``:``, a search path (``GAZEBO_MODEL_PATH``'s
+    form, ``-add_model_path=$(find a)/models:$(find b)/urdf``): its paths; else the text."""
+    parts = text.split(":")
+    if len(parts) > 1 and all(part.startswith(os.sep) for part in parts):
+        return parts
+    return [text]

@@ -64,7 +64,15 @@ from .interfaces import interface_package
 from .interfaces import known as known_interface
 from .owners import node_names, owner_of
 from .values import PLACEHOLDER
-from .visitor import OTHER_WRITES, STATIC, WORDS, CallFinder, header_folder, known_name
+from .visitor import (
+    OTHER_WRITES,
+    STATIC,
+    WORDS,
+    CallFinder,
+    header_folder,
+    known_name,
+    named_header_folder,
+)
 
 __all__ = ["CppBatch", "CppResult", "extract_cpp", "extract_cpp_nodes"]
 
@@ -2250,8 +2258,10 @@ def ros_classes(path: str, workspace: Workspace, read: list[str],
         if named(first):
             return True
         top = header_folder(cls, missing_headers)
-        return top is not None and (top in workspace.packages
-                                    or bool(header_packages(top, visible)))
+        if top is not None and (top in workspace.packages or bool(header_packages(top, visible))):
+            return True
+        by_name = named_header_folder(cls, missing_headers)
+        return by_name is not None and (by_name in workspace.packages or by_name in visible)
     return ros
 
 
@@ -3041,7 +3051,9 @@ def _by_header(clients: Callable[..., str | None], headers: list[str]
         if found is not None or unread:
             return found
         top = header_folder(cls, headers)
-        return None if top is None else clients(top, cls, header=True)
+        found = None if top is None else clients(top, cls, header=True)
+        named = named_header_folder(cls, headers) if found is None else None
+        return found if named is None else clients(named, cls)
     return client
 
 

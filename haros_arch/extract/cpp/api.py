@@ -1037,6 +1037,13 @@ UNRESOLVED_ROS1: dict[str, RosFunction] = {
 # are no call site there (``recall.site_pattern``)
 ROS1_ONLY = frozenset({"ros", "tf", "actionlib", "nodelet", "nodelet_topic_tools",
                        "dynamic_reconfigure"})
+# and those whose API only ROS 2 has (rclcpp and its libraries, nav2's, Autoware's): ROS 1
+# code cannot call them, so a ROS 1 unit's ``renderer.set_parameters(w, h)`` (ORK's
+# renderer) is no call site of rclcpp's ``Node::set_parameters``
+ROS2_ONLY = frozenset({"rclcpp", "rclcpp_action", "rclcpp_components", "rclcpp_lifecycle",
+                       "nav2", "nav2_costmap_2d", "nav2_util", "autoware_utils",
+                       "autoware_utils_diagnostics", "autoware_utils_logging",
+                       "autoware_utils_rclcpp", "autoware_utils_tf"})
 ALL: dict[tuple[str, str], RosFunction] = {**ROSCPP, **LIBRARIES, **RCLCPP,
                                             **RCLCPP_LIBRARIES, **ROS2_CONTROL, **AUTOWARE,
                                             **NAV2, **FILTERS, **SDF, **CONTROL_TOOLBOX,

@@ -96,12 +96,15 @@ def site_pattern(extra: frozenset[str] = frozenset(), ros2: bool | None = None
     class) and with their namespace (``rclcpp_action::create_server<``); ``extra`` names
     (a unit's wrappers) as member or bare calls. ``ros2``: the unit's code is ROS 2, whose
     code cannot call an API of ROS 1 only (``api.ROS1_ONLY``): ublox's ROS 2 driver calls
-    asio's ``resolver.resolve(query)``, no ``tf::TransformListener::resolve``."""
+    asio's ``resolver.resolve(query)``, no ``tf::TransformListener::resolve``; nor ROS 1
+    code (``ros2`` False) an API of ROS 2 only (``api.ROS2_ONLY``): ORK's renderer calls
+    its own ``renderer.set_parameters(...)``, no ``rclcpp::Node::set_parameters``."""
     # a method of a class (``ros::NodeHandle``) is called on an object; a function of a
     # namespace (``ros::param::search``, ``ros::service::exists``) is not, and ``.search(``
     # on any other object is no call of it: it is found written with its namespace
     rows = {key: row for key, row in api.ALL.items()
-            if not (ros2 and key[0].split("::", 1)[0] in api.ROS1_ONLY)}
+            if not (ros2 and key[0].split("::", 1)[0] in api.ROS1_ONLY)
+            and not (ros2 is False and key[0].split("::", 1)[0] in api.ROS2_ONLY)}
     names = {name for (owner, name), row in rows.items() if name[:1].islower()
              and len(name) > 4 and _is_class(owner) and row.call_site}
     scoped = {f"{owner.rsplit('::', 1)[-1]}::{name}" for owner, name in rows

@@ -2059,6 +2059,22 @@ class _Values:
 
 # functions by the standard's names for making an owned object: what each returns
 _SMART_FACTORIES = {"make_unique": "unique_ptr", "make_shared": "shared_ptr"}
+# the Windows data types' integral names (Microsoft's "Windows Data Types"), which vendors'
+# C SDKs define on Linux too, as the same integers (IDS uEye's ueye.h: ``typedef int32_t
+# INT``; PEAK's PCANBasic.h: ``DWORD``, ``WORD``, ``BYTE``): a unit whose SDK header is
+# missing binds them to its own integers (ueye_cam's ``setGain(..., INT& master_gain)``
+# given a dynamic_reconfigure config's ``int`` member), which a permissive class refuses
+_WINDOWS_INTEGERS = {
+    "BOOL": "int", "BOOLEAN": "unsigned char", "BYTE": "unsigned char", "CHAR": "char",
+    "UCHAR": "unsigned char", "SHORT": "short", "USHORT": "unsigned short",
+    "WORD": "unsigned short", "INT": "int", "UINT": "unsigned int", "LONG": "int",
+    "ULONG": "unsigned int", "DWORD": "unsigned int", "LONGLONG": "long long",
+    "ULONGLONG": "unsigned long long", "DWORDLONG": "unsigned long long",
+    "INT8": "signed char", "UINT8": "unsigned char", "INT16": "short",
+    "UINT16": "unsigned short", "INT32": "int", "UINT32": "unsigned int",
+    "INT64": "long long", "UINT64": "unsigned long long", "DOUBLE": "double",
+    "FLOAT": "float",
+}
 
 
 def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
@@ -2082,6 +2098,10 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
                 f"{values.next('flag' in node.uses, 'size' in node.uses)} }};"]
     if node.uses <= _VALUE_USES:
         return [f"{indent}{'static ' if nested else 'extern '}haros_any {name};"]
+    if not nested and "type" in node.uses and not node.uses & {"scope", "template"} \
+            and not node.children and name in _WINDOWS_INTEGERS:
+        # (read as a value too where it is a cast's type, ``(INT) 2000``, or sizeof's)
+        return [f"{indent}typedef {_WINDOWS_INTEGERS[name]} {name};"]
     if name in _SMART_FACTORIES and "template" in node.uses and not node.children:
         # a library's back-port of std::make_unique / make_shared (Kimera-VIO's
         # ``VIO::make_unique<image_transport::ImageTransport>(nh_)``, its header missing):

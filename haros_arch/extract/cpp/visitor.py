@@ -115,6 +115,7 @@ from .owners import (
 )
 from .qos import qos as qos_of
 from .reach import CLASSES, FUNCTIONS, reachable
+from .ros2_interfaces import snake_case
 from .tested import Key, TestedCalls, unit_tested
 from .tested import key as key_of
 from .values import (
@@ -467,6 +468,31 @@ def header_folder(name: str, headers: Sequence[str]) -> str | None:
         if len(parts) >= 2 and first in {*parts[1:-1], os.path.splitext(parts[-1])[0]}:
             return parts[0]
     return None
+
+
+def named_header_folder(name: str, headers: Sequence[str]) -> str | None:
+    """The first folder of the missing header (as included) that names the class
+    ``name`` when its namespace's first part names none (``header_folder``): the file's
+    stem is the class's name in snake case or ends in it (grvc-ual's
+    ``grvc::ual::BackendMavros`` of ``<ual_backend_mavros/ual_backend_mavros.h>``,
+    ``grvc::ual::UAL`` of ``<uav_abstraction_layer/ual.h>``), else a later part of the
+    namespace is a folder below the first or the stem. The folder names the package
+    itself, not the beginning of several packages' names, as ``header_folder``'s may."""
+    names = name.lstrip(":").split("::")
+    if len(names) < 2:
+        return None
+    split = [(parts, os.path.splitext(parts[-1])[0])
+             for parts in (header.split("/") for header in headers) if len(parts) >= 2]
+    own = snake_case(names[-1])
+    for parts, stem in split:
+        if stem == own or stem.endswith("_" + own):
+            return parts[0]
+    for part in names[1:-1]:
+        for parts, stem in split:
+            if part in {*parts[1:-1], stem}:
+                return parts[0]
+    return None
+
 
 class CallFinder:
     """Collects the primitive calls and the node name of one translation unit."""
@@ -1819,6 +1845,9 @@ class CallFinder:
             top = header_folder(name, self.missing_headers)
             if top is not None:
                 found = self.clients(top, name, header=True)
+            named = named_header_folder(name, self.missing_headers) if not found else None
+            if named is not None:
+                found = self.clients(named, name)
         return (name, found) if found else None
 
     def _to_unknown(self, call: Cursor, function: Cursor | None = None) -> None:

@@ -18,7 +18,7 @@ import dataclasses
 import functools
 import re
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 from ... import diagnostics as diag
 from ...diagnostics import Diagnostic
@@ -632,12 +632,14 @@ class Walker:
         self._loop(statement.target, statement.iter, frame, self._where(frame, statement),
                    lambda loop: self._block(statement.body, frame, (*conds, *loop)),
                    whole=not _leaves_early(statement.body),
-                   builds=self._inlining[-1][1] and _builds(statement, self._inlining[-1][0]))
+                   builds=self._inlining[-1][1] and _builds(statement, self._inlining[-1][0]),
+                   uses_item=_names_target(statement.body, statement.target)
+                   or _stores(statement.body))
         self._block(statement.orelse, frame, conds)
 
     def _loop(self, target: ast.expr, over: ast.expr, frame: Frame, where: Location,
               body: Callable[[tuple[Condition, ...]], None], whole: bool = True,
-              builds: bool = False) -> None:
+              builds: bool = False, uses_item: bool = True) -> None:
         """Walk a loop's body (``body(loop conditions)``) once per item of a known, short
         sequence (unrolled), else once with the variable unknown; over a list
         parameter's value, or a dict parameter's ``values()`` / ``items()``, once with
@@ -651,7 +653,16 @@ class Walker:
         names a helper appends to): a loop there names no call, and walking it once per
         item, in each call of the function, made a driver's device code (probing each
         baud rate of each port, reading each message) exhaust the walk before the
-        node's own code (ethzasl_xsens_driver's MTDevice: 4 of its 23 calls found)."""
+        node's own code (ethzasl_xsens_driver's MTDevice: 4 of its 23 calls found).
+
+        A loop whose body never names its variable and stores nothing itself (``for _
+        in range(200): self.run()``: no assignment, no container changed in place)
+        differs from turn to turn only by what the functions it calls leave to the next
+        turn: it is unrolled until a turn makes the very calls the turn before made, the
+        later turns being walks of the same (quadruped_ctrl's simulator calls its
+        ``run()`` 200 times in its reset, which exhausted the walk: the node was
+        partial); a counter a turn advances (``i += 1``), a list it fills, still gives
+        one walk per turn."""
         ev = self.evaluator
         if id(over) not in ev.fixed:
             walked = ev.eval(over, frame)
@@ -678,9 +689,16 @@ class Walker:
             self._loop_names.append((id(frame), frozenset(
                 n.id for n in ast.walk(target) if isinstance(n, ast.Name))))
         try:
+            previous: list[PrimitiveCall] | None = None
             for item in items if items else (Unknown("loop variable"),):
+                start = len(self.calls)
                 ev.bind(target, item, frame)
                 body(loop)
+                if not uses_item:
+                    turn = self.calls[start:]
+                    if turn == previous:
+                        break
+                    previous = turn
         finally:
             self._unrolled -= 1 if items else 0
             if items:
@@ -853,7 +871,16 @@ class Walker:
     _AsyncFunctionDef = _FunctionDef
 
     def _ClassDef(self, statement: ast.ClassDef, frame: Frame, conds: Conditions) -> None:
-        return
+        """A class statement runs its body once, where it is (Python builds the class
+        then): its own statements, not the functions it defines, are walked
+        in a namespace of their own (mbzirc2020's parser_c2 reads ``~UGV_data`` in its
+        class body, ``ugv_file = rospy.get_param('~UGV_data')``: no read was seen, and
+        the launch file's parameter was a false parameter-set-not-read); a class it
+        defines runs its own body in turn."""
+        own = [s for s in statement.body if not isinstance(
+            s, ast.FunctionDef | ast.AsyncFunctionDef)]
+        if any(not _is_docstring(s) for s in own):
+            self._block(own, Frame(frame.module, depth=frame.depth), conds)
 
     def _Import(self, statement: ast.Import | ast.ImportFrom, frame: Frame,
                 conds: Conditions) -> None:
@@ -1323,7 +1350,8 @@ class Walker:
                 base.default = plain_value(value)
             if spec.kind == "declare":
                 ev.declared[base.name.removeprefix("~")] = value
-        if spec.kind == "read" and id(call) in self._converted:
+        if spec.kind == "read" and (id(call) in self._converted
+                                    or id(call) in _converted_locals(frame.module.tree)):
             base.type = None
         base.searched = spec.search or base.searched
         if spec.search and base.name:  # rospy.search_param: from the node's own name up
@@ -2133,6 +2161,102 @@ def _kept_names(function: ast.AST) -> frozenset[str]:
         kept.update(n.id for value in stored for n in ast.walk(value)
                     if isinstance(n, ast.Name))
     return frozenset(kept)
+
+
+def _names_target(body: list[ast.stmt], target: ast.expr) -> bool:
+    """Whether a loop's body names any variable its target binds (read, written or
+    deleted, in a function or comprehension it defines too)."""
+    names = {n.id for n in ast.walk(target) if isinstance(n, ast.Name)}
+    if not names or any(isinstance(n, ast.Attribute | ast.Subscript) for n in ast.walk(target)):
+        return True  # an attribute or an item as target: the turn stores the item
+    return any(isinstance(n, ast.Name) and n.id in names
+               for statement in body for n in ast.walk(statement))
+
+
+@functools.lru_cache(maxsize=256)
+def _converted_locals(tree: ast.Module) -> frozenset[int]:
+    """The calls (ids) whose value a function (or the module's own code) keeps in a
+    local it assigns once and uses only where any type will do: converted (``int(x)``,
+    ``str(x)``, ``float(x)``, ``bool(x)``) or formatted (``'{}'.format(x)``, ``'%s' %
+    x``, ``f'{x}'``). A parameter read so has no type of its own, as one converted where
+    it is read (mbzirc2020's c3_starter reads ``~ground_id`` with the default ``'0'``
+    and uses ``int(ground_id)``: the launch file's integer 0 is as good)."""
+    found: set[int] = set()
+    scopes: list[ast.AST] = [tree, *(n for n in ast.walk(tree)
+                                     if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef))]
+    for scope in scopes:
+        nodes = list(_scope_nodes(scope))
+        stores: dict[str, list[ast.AST]] = {}
+        for node in nodes:
+            if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+                stores.setdefault(node.id, []).append(node)
+            elif isinstance(node, ast.arg):
+                stores.setdefault(node.arg, []).append(node)
+        agnostic = {id(child) for node in nodes for child in _typeless_uses(node)}
+        for node in nodes:
+            if not (isinstance(node, ast.Assign) and len(node.targets) == 1
+                    and isinstance(node.targets[0], ast.Name)
+                    and isinstance(node.value, ast.Call)):
+                continue
+            name = node.targets[0].id
+            loads = [n for n in ast.walk(scope) if isinstance(n, ast.Name)
+                     and n.id == name and isinstance(n.ctx, ast.Load)]
+            if len(stores.get(name, ())) == 1 and loads and all(
+                    id(n) in agnostic for n in loads):
+                found.add(id(node.value))
+    return frozenset(found)
+
+
+def _scope_nodes(scope: ast.AST) -> Iterator[ast.AST]:
+    """The nodes of a function's (or module's) own code, not of a function or class it
+    defines."""
+    stack = list(ast.iter_child_nodes(scope))
+    while stack:
+        node = stack.pop()
+        yield node
+        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef
+                          | ast.Lambda):
+            stack.extend(ast.iter_child_nodes(node))
+
+
+def _typeless_uses(node: ast.AST) -> Iterator[ast.AST]:
+    """The values ``node`` uses where any type will do (``_converted_locals``)."""
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
+            and node.func.id in _CONVERSIONS and len(node.args) == 1 and not node.keywords:
+        yield node.args[0]
+    elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+            and node.func.attr == "format" and isinstance(node.func.value, ast.Constant) \
+            and isinstance(node.func.value.value, str):
+        yield from (*node.args, *(k.value for k in node.keywords))
+    elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mod) \
+            and isinstance(node.left, ast.Constant) and isinstance(node.left.value, str):
+        yield from (node.right.elts if isinstance(node.right, ast.Tuple) else [node.right])
+    elif isinstance(node, ast.FormattedValue) and node.format_spec is None:
+        yield node.value
+
+
+def _is_docstring(statement: ast.stmt) -> bool:
+    return isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant)
+
+
+def _stores(body: list[ast.stmt]) -> bool:
+    """Whether a loop's body, as written (its callees aside, and nested loops'
+    variables, which it binds afresh each turn), stores a value a later turn may see:
+    an assignment, a deletion, a ``with ... as``, an import, a global or nonlocal
+    declaration, a container changed in place (``names.append(x)``)."""
+    for statement in body:
+        for node in ast.walk(statement):
+            if isinstance(node, ast.Assign | ast.AugAssign | ast.AnnAssign | ast.NamedExpr
+                          | ast.Delete | ast.Import | ast.ImportFrom | ast.Global
+                          | ast.Nonlocal | ast.FunctionDef | ast.AsyncFunctionDef
+                          | ast.ClassDef):
+                return True
+            if isinstance(node, ast.withitem) and node.optional_vars is not None:
+                return True
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                    and node.func.attr in _IN_PLACE:
+                return True
+    return False
 
 
 def _leaves_early(body: list[ast.stmt]) -> bool:

@@ -36,7 +36,7 @@ from ..model import (
     program_not_found,
     shell_words,
 )
-from ..paths import missing_argument_paths, written_absolute
+from ..paths import missing_argument_paths, written_absolute, written_argument_paths
 from ..tree import MAX_SKIPPED, node_items, param_names, ros1_condition
 from . import tags_params
 from .child_launch import dropped_words, launched_file
@@ -115,6 +115,12 @@ class Ros1Loader:
         self.param_tags: dict[tuple[int, str, str, tuple[str, ...]], Element] = {}
         # the if/unless of the element being handled, for the launch tree
         self.guard: LaunchCondition | None = None
+        # paths of the workspace a node's command line names that are not there, each
+        # with its node and place, and the paths nodes write (``xacro -o PATH``): said
+        # once every file is loaded, but for a file another node writes
+        # (``check_argument_paths``)
+        self.missing_args: list[tuple[Location, str, str]] = []
+        self.written_args: set[str] = set()
         self.tags: dict[str, Callable[[Element, Scope], None]] = {
             "node": self.tag_node, "test": self.tag_node, "param": self.tag_param,
             "remap": self.tag_remap, "arg": self.tag_arg, "group": self.tag_group,
@@ -650,9 +656,9 @@ class Ros1Loader:
                                   param.location, param.source, param.command)
         full = inner.ns + name
         location = self.where(scope, element)
+        self.written_args.update(written_argument_paths(args.split()))
         for path in missing_argument_paths(args.split(), self.workspace):
-            self.report("LAUNCH_NODE_ARG_PATH_MISSING", scope, element,
-                        path=self.workspace.relpath(path), name=name or executable)
+            self.missing_args.append((location, path, name or executable))
         for key, value in argument_params(args):
             tags_params.add_param(self, private.ns + key, value, scalar_type(value),
                                   scope.conditions, location)
@@ -791,6 +797,16 @@ class Ros1Loader:
             self.model.diagnostics.append(diag.make("LAUNCH_UNKNOWN_VALUE", nodes[0], detail=(
                 f"machine '{machine}' of this node{others} is declared in no file read; "
                 f"{why} may declare it")))
+
+    def check_argument_paths(self) -> None:
+        """LAUNCH_NODE_ARG_PATH_MISSING for each path a node's command line names that is
+        not there and that no node of the launch writes: a file xacro's ``-o`` makes
+        while the launch starts is there for the node given it."""
+        for location, path, name in self.missing_args:
+            if path not in self.written_args:
+                self.model.diagnostics.append(diag.make(
+                    "LAUNCH_NODE_ARG_PATH_MISSING", location,
+                    path=self.workspace.relpath(path), name=name))
 
     def tag_include(self, element: Element, scope: Scope) -> None:
         guard = self.take_guard()
@@ -1015,6 +1031,7 @@ def load(path: str, workspace: Workspace, args: Mapping[str, str] | None = None,
     loader.model.tree.append(scope.item)
     loader.load_file(path, scope)
     loader.check_machines()
+    loader.check_argument_paths()
     loader.model.args = {k: (v.text if v is not None else None)
                          for k, v in scope.args.items()}
     for name in scope.arg_names:
