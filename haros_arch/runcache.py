@@ -57,7 +57,7 @@ from .workspace import SKIP_FOLDERS, Workspace, installed_roots
 T = TypeVar("T")
 FORMAT = 1
 RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
-KEEP = 16  # entries kept per workspace (a run's model and its findings, per project,
+KEEP = 20  # entries kept per workspace (a run's model and its findings, per project,
 #           workspace state and environment: a few runs)
 WORKSPACES = 8  # workspaces whose entries are kept: those of the newest runs
 MAX_FILES = 200_000
