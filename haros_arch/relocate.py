@@ -28,7 +28,7 @@ import re
 from collections.abc import Iterable
 
 # what may come before a path: the path is not the end of a longer one
-_BOUNDARY = frozenset(' \t\n"(<[{,:\'')
+_BOUNDARY = frozenset(' \t\n"(<[{,:;=`\'')
 Place = tuple[str, int, bool]  # file (absolute), line, whether quoted in a string
 Maps = dict[str, dict[int, int]]  # per file (absolute): old line -> new line
 
@@ -50,30 +50,33 @@ class Files:
         self.pattern = re.compile(f'({alternatives})(?:(", "line": )|:)(\\d+)'
                                   if alternatives else r"(?!)")
 
-    def places(self, text: str) -> tuple[list[str], list[Place]]:
-        """The places in the changed files, and the text between them (one piece more
-        than places)."""
+    def places(self, text: str) -> tuple[list[str], list[Place], bool]:
+        """The places in the changed files, the text between them (one piece more than
+        places), and whether a changed file's name and a number appear otherwise (the
+        end of a longer path, or a form not read here: left as they are)."""
         pieces: list[str] = []
         found: list[Place] = []
+        other = False
         last = 0
         for match in self.pattern.finditer(text):
             start = match.start()
             before = text[start - 1] if start else ""
             if before not in _BOUNDARY or (match.group(2) is not None and before != '"'):
-                continue  # the end of a longer path, or not a location's file
+                other = True
+                continue
             pieces.append(text[last:match.start(3)])
             found.append((self.spelt[match.group(1)], int(match.group(3)),
                           match.group(2) is None))
             last = match.end(3)
         pieces.append(text[last:])
-        return pieces, found
+        return pieces, found, other
 
     def line_maps(self, old: str, new: str) -> Maps | None:
         """Per changed file, its old lines to their new ones, when ``new`` is ``old`` but
         for the lines of places in those files and the maps keep their order (above);
         else None."""
-        old_pieces, old_places = self.places(old)
-        new_pieces, new_places = self.places(new)
+        old_pieces, old_places, _ = self.places(old)  # the others are in the pieces
+        new_pieces, new_places, _ = self.places(new)
         if old_pieces != new_pieces:
             return None
         maps: Maps = {}
@@ -94,9 +97,12 @@ class Files:
 
     def renumbered(self, text: str, maps: Maps) -> str | None:
         """``text`` with the lines of its places in the changed files moved by ``maps``;
-        None when a place is one the maps do not know, or a quoted line would change its
-        number of digits."""
-        pieces, found = self.places(text)
+        None when a place is one the maps do not know, a quoted line would change its
+        number of digits, or a changed file's name and a number appear in a form not read
+        as a place (it might be one, which would stay as it was)."""
+        pieces, found, other = self.places(text)
+        if other:
+            return None
         out = [pieces[0]]
         for (path, line, quoted), piece in zip(found, pieces[1:], strict=True):
             moved = maps.get(path, {}).get(line)

@@ -98,8 +98,11 @@ def test_a_shift_maps_each_old_line_to_its_new_one() -> None:
     assert files.renumbered(_location(13), maps) is None  # a line the maps do not know
     other = _location(13, "src/b/node.cpp")  # another file: as it is
     assert files.renumbered(other, maps) == other
-    longer = f'"/elsewhere/{FILE}:13"'  # another file whose path ends as this one's
-    assert files.renumbered(longer, maps) == longer
+    # another file whose path ends as this one's, or this one's written otherwise: not
+    # read as a place, so not renumbered, so the text is not given
+    assert files.renumbered(f'"/elsewhere/{FILE}:13"', maps) is None
+    assert files.renumbered(f'"at ~{FILE}:12"', maps) is None
+    assert files.renumbered(f'"at `{FILE}:12`"', maps) == f'"at `{FILE}:14`"'
 
 
 def test_a_map_that_would_reorder_places_is_none() -> None:
