@@ -13,7 +13,9 @@ it is reported in, a text of its message or entities).
 For each bug in scope, both trees are written into a temporary folder (``--keep DIR``
 keeps them, ``DIR/<system>-<id>/{buggy,fixed}``): the fix commit's parent (buggy) and the
 fix commit (fixed; its launch files are ``fixed_launch`` and its launch arguments
-``fixed_args`` when the fix renamed them), under ``src/<repository>``, with the
+``fixed_args`` when the fix renamed them), under ``src/<repository>`` (the workspace is
+``src``, or ``src/<repository>/<workspace>`` when the bug gives the repository's own
+workspace folder, e.g. ``workspace/src`` beside other packages' copies), with the
 repositories the launch files need from the same organisation (``deps``) at their last
 commit before the fix's date (or the commit given). A project file that launches the
 bug's launch files is written beside, and ``python -m haros_arch check project.yaml
@@ -146,6 +148,8 @@ def prepare(bug: dict[str, Any], mirrors: Path, root: Path, folders: bool = Fals
             args = bug.get("fixed_args", args)
         workspace: str | list[str] = "src" if not folders else [
             f"src/{bug['repo'].split('/')[1]}", *(f"src/{name}" for _, _, name in deps)]
+        if bug.get("workspace"):  # the repository's own workspace folder, alone
+            workspace = f"src/{bug['repo'].split('/')[1]}/{bug['workspace']}"
         project = {"project": f"{bug['id'].replace('/', '-')}-{side}", "workspace": workspace,
                    "configurations": {"bug": {"launch": launch, "args": args}}}
         if bug.get("environment"):

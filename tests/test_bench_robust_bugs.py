@@ -72,6 +72,35 @@ def test_the_fixed_tree_takes_the_launch_arguments_the_fix_renamed(tmp_path: Pat
         "cfg": "old"}
 
 
+def test_a_bug_may_name_the_repositorys_own_workspace_folder(tmp_path: Path) -> None:
+    # barc 34bc1c6: the repository holds workspace/src/barc and MATLAB/packages/barc, two
+    # packages named barc; its catkin workspace is workspace/src, so the project must
+    # read that folder alone, or the first barc found (MATLAB's) stands for the package
+    repo = tmp_path / "mirrors" / "o+r" / "repo"
+    (repo / "workspace" / "src" / "pkg" / "launch").mkdir(parents=True)
+    (repo / "workspace" / "src" / "pkg" / "launch" / "a.launch").write_text("<launch/>\n")
+    for args in (["init", "-q"], ["add", "-A"],
+                 ["-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "one"],
+                 ["-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "two",
+                  "--allow-empty"]):
+        subprocess.run(["git", "-C", str(repo), *args], check=True)
+    fix = subprocess.run(["git", "-C", str(repo), "rev-parse", "HEAD"], check=True,
+                         capture_output=True, text=True).stdout.strip()
+    bug = {"id": "r/x", "repo": "o/r", "fix": fix, "launch": ["pkg/launch/a.launch"],
+           "workspace": "workspace/src"}
+    trees = _script().prepare(bug, tmp_path / "mirrors", tmp_path / "out")
+    assert isinstance(trees, dict)
+    for side in ("buggy", "fixed"):
+        project = yaml.safe_load(trees[side].read_text())
+        assert project["workspace"] == "src/r/workspace/src"
+        assert (trees[side].parent / project["workspace"] / "pkg" / "launch"
+                / "a.launch").is_file()
+    del bug["workspace"]
+    trees = _script().prepare(bug, tmp_path / "mirrors", tmp_path / "out2")
+    assert isinstance(trees, dict)
+    assert yaml.safe_load(trees["buggy"].read_text())["workspace"] == "src"
+
+
 def test_configuration_not_seen_declared_is_the_undecided_form_of_arg_unset(
         monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     # turtlebot4_simulator decdf2b: x is used where an include not read (a launch file
