@@ -67,3 +67,22 @@ def generate_launch_description():
 """
     model, _ = run(write_tree, body)
     assert [n.name for n in model.nodes] == ["/second"]
+
+
+
+def test_del_of_a_key_a_known_dict_lacks_is_python_s_key_error(write_tree):
+    body = """
+def generate_launch_description():
+    names = {'a': 'first'}
+    try:
+        del names['b']
+        name = 'deleted'
+    except KeyError:
+        name = 'caught'
+    del names['c']
+    return LaunchDescription([Node(package='p', executable='e', name=name)])
+"""
+    model, _ = run(write_tree, body)
+    assert [n.name for n in model.nodes] == ["/caught"]
+    said = [d.message for d in model.diagnostics if d.code == "LAUNCH_PY_UNSUPPORTED"]
+    assert len(said) == 1 and "no such key" in said[0], said
