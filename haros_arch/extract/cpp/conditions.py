@@ -143,16 +143,20 @@ class ConditionReader:
         if kind == CursorKind.IF_STMT:
             return self._if(node, children)
         if kind in _LOOPS and children:
-            loop = self._condition(node, _LOOPS[kind], self._parens(node.extent.start))
+            loop = self._condition(node, _LOOPS[kind], self._tested(
+                node.extent.start, "for" if kind == CursorKind.CXX_FOR_RANGE_STMT
+                else _LOOPS[kind]))
             if kind == CursorKind.FOR_STMT:
                 self._counting(loop, children)
             return [(c, ()) for c in children[:-1]] + [(children[-1], (loop,))]
         if kind == CursorKind.DO_STMT and children:
-            text = self._parens(children[0].extent.end)
+            text = (self._parens(children[0].extent.end)
+                    if self._written(node.extent.start, "do")
+                    else self._tested(node.extent.start, "do", "while"))
             return [(children[0], (self._condition(node, "do", text),)),
                     *((c, ()) for c in children[1:])]
         if kind == CursorKind.SWITCH_STMT and children:
-            switch = self._condition(node, "switch", self._parens(node.extent.start),
+            switch = self._condition(node, "switch", self._tested(node.extent.start, "switch"),
                                      children[-2] if len(children) >= 2 else None)
             return [(c, ()) for c in children[:-1]] + self._switch_body(children[-1], switch)
         if kind == CursorKind.CXX_TRY_STMT and children:
@@ -245,7 +249,7 @@ class ConditionReader:
             return None
         has_else = len(children) >= 3 and self._between(children[-2], children[-1], _ELSE) == "else"
         then = len(children) - (2 if has_else else 1)
-        return then, has_else, self._parens(node.extent.start), children[then - 1]
+        return then, has_else, self._tested(node.extent.start, "if"), children[then - 1]
 
     def _after_if(self, node: Cursor, rest: list[Cursor]) -> tuple[Condition, ...]:
         """The condition the statements after the ``if`` ``node`` in its block run
@@ -503,26 +507,52 @@ class ConditionReader:
         if text is None:
             return "?"
         begin = text.find(b"(", offset)
-        if begin < 0:
+        inner = _balanced(text, begin) if begin >= 0 else None
+        return "?" if inner is None else _clean(inner)
+
+    def _written(self, start: object, keyword: str) -> bool:
+        """Whether the statement at ``start`` is written there, ``keyword`` first (not
+        made by a macro invoked there)."""
+        text = self._bytes(getattr(start, "file", None))
+        offset = getattr(start, "offset", 0)
+        return text is not None and re.match(
+            keyword.encode() + rb"\b", text[offset:offset + len(keyword) + 1]) is not None
+
+    def _tested(self, start: object, keyword: str, tests: str | None = None) -> str:
+        """What the statement ``keyword`` (``if``, ``while``, ``for``, ``switch``) starting
+        at ``start`` tests, as written. A statement a function-like macro's expansion
+        makes starts, for the parse, at the macro's name: its test is then read off the
+        macro's ``#define`` in the same file, each parameter the invocation's argument
+        (``#define INIT_IF_NEEDED(v, val) if (!v) v = val;`` called as
+        ``INIT_IF_NEEDED(listener, ...)`` tests ``!listener``, not the invocation's
+        arguments, riptide_autonomy's UwrtBtNode.cpp); ``?`` when that definition is not
+        in the file or makes more than one such statement. ``tests``: the word the test
+        follows when not ``keyword`` (``while`` of a ``do``)."""
+        text = self._bytes(getattr(start, "file", None))
+        offset = getattr(start, "offset", 0)
+        if text is None:
             return "?"
-        depth, i, quote = 0, begin, 0
-        while i < len(text):
-            char = text[i]
-            if quote:
-                if char == 0x5C:  # backslash
-                    i += 1
-                elif char == quote:
-                    quote = 0
-            elif char in (0x22, 0x27):  # " '
-                quote = char
-            elif char == 0x28:
-                depth += 1
-            elif char == 0x29:
-                depth -= 1
-                if depth == 0:
-                    return _clean(text[begin + 1:i])
-            i += 1
-        return "?"
+        if self._written(start, keyword):
+            return self._parens(start)
+        invocation = _INVOCATION.match(text, offset)
+        if invocation is None:
+            return "?"
+        arguments = _balanced(text, invocation.end() - 1)
+        definition = _definition(text, invocation.group(1))
+        if arguments is None or definition is None:
+            return "?"
+        parameters, body = definition
+        found = list(re.finditer(rb"\b" + (tests or keyword).encode() + rb"\s*\(", body))
+        inner = _balanced(body, found[0].end() - 1) if len(found) == 1 else None
+        given = _split_arguments(arguments)
+        if inner is None or (len(given) != len(parameters) and (
+                not parameters or parameters[-1] != b"...")):
+            return "?"
+        values = dict(zip(parameters, given, strict=False))
+        if parameters and parameters[-1] == b"...":
+            values[b"__VA_ARGS__"] = b", ".join(given[len(parameters) - 1:])
+        return _clean(re.sub(rb"\b[A-Za-z_]\w*\b",
+                             lambda m: values.get(m.group(0), m.group(0)).strip(), inner))
 
     def text(self, node: Cursor) -> str:
         """The source text of ``node``, whitespace collapsed (as conditions are); ``?``
@@ -600,6 +630,71 @@ def _true(value: Cursor) -> bool:
     value = strip(value)
     return value.kind == CursorKind.CXX_BOOL_LITERAL_EXPR and any(
         t.spelling == "true" for t in value.get_tokens())
+
+
+# a function-like macro's invocation: its name and opening parenthesis
+_INVOCATION = re.compile(rb"([A-Za-z_]\w*)\s*\(")
+
+
+def _balanced(text: bytes, begin: int) -> bytes | None:
+    """The text inside the balanced parentheses opening at ``begin`` (strings and
+    character literals skipped), or None when they do not close."""
+    depth, i, quote = 0, begin, 0
+    while i < len(text):
+        char = text[i]
+        if quote:
+            if char == 0x5C:  # backslash
+                i += 1
+            elif char == quote:
+                quote = 0
+        elif char in (0x22, 0x27):  # " '
+            quote = char
+        elif char == 0x28:
+            depth += 1
+        elif char == 0x29:
+            depth -= 1
+            if depth == 0:
+                return text[begin + 1:i]
+        i += 1
+    return None
+
+
+def _split_arguments(text: bytes) -> list[bytes]:
+    """A macro invocation's arguments: ``text`` split at its commas outside parentheses
+    and strings (brackets, braces and template angle brackets do not group them for the
+    preprocessor)."""
+    parts, depth, quote, last = [], 0, 0, 0
+    i = 0
+    while i < len(text):
+        char = text[i]
+        if quote:
+            if char == 0x5C:
+                i += 1
+            elif char == quote:
+                quote = 0
+        elif char in (0x22, 0x27):
+            quote = char
+        elif char == 0x28:
+            depth += 1
+        elif char == 0x29:
+            depth -= 1
+        elif char == 0x2C and depth == 0:
+            parts.append(text[last:i].strip())
+            last = i + 1
+        i += 1
+    parts.append(text[last:].strip())
+    return parts if parts != [b""] else []
+
+
+def _definition(text: bytes, name: bytes) -> tuple[list[bytes], bytes] | None:
+    """The parameters and body of the function-like macro ``name`` the file defines
+    (once; line continuations joined), else None."""
+    found = list(re.finditer(rb"^[ \t]*#[ \t]*define[ \t]+" + re.escape(name)
+                             + rb"\(([^)]*)\)((?:[^\n]*\\\r?\n)*[^\n]*)", text, re.M))
+    if len(found) != 1:
+        return None
+    parameters = [p.strip() for p in found[0].group(1).split(b",") if p.strip()]
+    return parameters, re.sub(rb"\\\r?\n", b" ", found[0].group(2))
 
 
 def _clean(raw: bytes) -> str:

@@ -89,6 +89,7 @@ from .python_values import (
     derived_unknown,
     env_unset,
     launch_object,
+    open_keys,
     said_unknown,
     to_text,
     write_outer,
@@ -125,6 +126,9 @@ class Interpreter(Expressions):
         self.workspace = workspace
         self.environment = environment
         self.environment_unsure: set[str] = set()
+        # variables the file removes (``del os.environ[key]``, ``os.environ.pop(key)``)
+        # under no test: read after, they are not set
+        self.environment_removed: set[str] = set()
         self.diagnostics: list[Diagnostic] = []
         # packages whose folders the file asks for now (get_package_share_directory)
         self.uses: list[PackageUse] = []
@@ -761,6 +765,9 @@ class Interpreter(Expressions):
             self.stop(stmt, _raised_name(stmt.exc))
         elif isinstance(stmt, ast.Match) and (chain := _match_as_if(stmt)) is not None:
             self.block(chain, env)
+        elif isinstance(stmt, ast.Delete):
+            for target in stmt.targets:
+                self.delete(target, env)
         else:
             self.unsupported(stmt, f"{type(stmt).__name__} statements are not interpreted")
 
@@ -877,6 +884,46 @@ class Interpreter(Expressions):
         else:
             self.unsupported(target, "assignment to this target is not interpreted")
 
+    def delete(self, target: ast.expr, env: dict[str, Any]) -> None:
+        """``del os.environ[key]`` removes the variable from the launch process's
+        environment (``unset_environment``); ``del d[key]`` the item of a dict whose keys
+        are known. Other targets are said not interpreted."""
+        if isinstance(target, ast.Subscript):
+            container = self.eval(target.value, env)
+            key = self.eval(target.slice, env)
+            if isinstance(container, _Environ):
+                self.unset_environment(target, key)
+                return
+            if isinstance(container, dict) and isinstance(key, (str, int, float, bool)):
+                if key in container:
+                    del container[key]
+                    return
+                if not open_keys(container):  # Python raises here: launch stops
+                    self.failed(target, f"del {_source(target)} fails: no such key",
+                                "KeyError")
+                    return
+        self.unsupported(target, f"del {_source(target)} is not interpreted")
+
+    def unset_environment(self, target: ast.AST, key: Any) -> None:
+        """``del os.environ[key]`` / ``os.environ.pop(key)``: the variable is not set in
+        the launch process's environment from here on (reads of it find it absent); under
+        a test not known statically, reads of it after are not known (as for
+        ``set_environment``). What launch substitutes later (``EnvironmentVariable``)
+        takes it as not known, not as the configuration's value. A name not known is said
+        and not applied."""
+        if not isinstance(key, str):
+            self.unsupported(target, f"{_source(target)}: removes an environment variable "
+                                     "whose name is not known statically")
+            return
+        if isinstance(self.environment, _Overlay):
+            self.environment.own.pop(key, None)
+        if self.guards:
+            self.environment_removed.discard(key)
+            self.environment_unsure.add(key)
+            return
+        self.environment_removed.add(key)
+        self.environment_unsure.discard(key)
+
     def set_environment(self, target: ast.expr, key: Any, value: Any) -> None:
         """``os.environ[key] = value``: the launch process's environment from here on, as
         ``os.environ.get`` / ``os.getenv`` read it after (rslidar_sdk's
@@ -890,6 +937,7 @@ class Interpreter(Expressions):
             self.unsupported(target, f"{_source(target)} = ...: an environment variable "
                                      "whose name or value is not known statically")
             return
+        self.environment_removed.discard(key)
         if self.guards or not isinstance(value, str):
             if isinstance(self.environment, _Overlay):
                 self.environment.own.pop(key, None)
@@ -1552,7 +1600,7 @@ def parse_python(text: str, path: str, workspace: Workspace,
         written.update(interp.environment.own)
     if unsure is not None:
         unsure.clear()
-        unsure |= interp.environment_unsure
+        unsure |= interp.environment_unsure | interp.environment_removed
     return actions, interp.diagnostics
 
 

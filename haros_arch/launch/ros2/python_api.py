@@ -403,6 +403,8 @@ def getenv(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
     if isinstance(name, str) and name in i.environment_unsure:
         i.unknown_value(n, unsure_variable(name))
         return Lazy((e.Opaque(f"environment variable {name}", report=False),))
+    if isinstance(name, str) and name in i.environment_removed:
+        return arg(a, k, 1, "default")  # os.getenv of a variable not set: the default
     if isinstance(name, str) and name in i.environment:
         return i.environment[name]
     default = arg(a, k, 1, "default")

@@ -138,6 +138,8 @@ class Expressions(Walker):
     # variables the file sets (``os.environ[key] = ...``) under a test not known
     # statically: read after, their value is not known
     environment_unsure: set[str]
+    # variables the file removes (``del os.environ[key]``) under no test: not set after
+    environment_removed: set[str]
     argv: list[Any] | None  # ``sys.argv``: the ros2 launch command line, if known
     guards: list[Guard]
     # the expressions whose value Python's handling of a launch object decided: ``not``
@@ -849,6 +851,8 @@ class _Environ:
         if isinstance(name, str) and name in interp.environment_unsure:
             interp.unknown_value(node, unsure_variable(name))
             return None
+        if isinstance(name, str) and name in interp.environment_removed:
+            return False
         if isinstance(name, str) and name in interp.environment:
             return True
         if isinstance(name, str):
@@ -861,6 +865,10 @@ class _Environ:
         if isinstance(name, str) and name in interp.environment_unsure:
             interp.unknown_value(node, unsure_variable(name))
             return Lazy((e.Opaque(f"environment variable {name}", report=False),))
+        if isinstance(name, str) and name in interp.environment_removed:
+            if len(args) > 1:
+                return args[1]
+            return Unknown(f"environment variable {name}, removed by the launch file")
         if isinstance(name, str) and name in interp.environment:
             return interp.environment[name]
         if len(args) > 1:

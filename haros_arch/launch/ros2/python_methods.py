@@ -25,6 +25,7 @@ from ...evaluate import partial
 from ...model.launch_tree import PackageUse, installed_check
 from ...model.values import Unknown
 from . import entities as e
+from .python_expressions import _Environ
 from .python_values import (
     LIMITS,
     Budget,
@@ -459,6 +460,12 @@ def m_list(name: str) -> Method:
     def call(i: Interpreter, owner: Any, a: Args, k: Kwargs, n: ast.AST) -> Any:
         if isinstance(owner, LaunchDescription) and name in ("append", "extend"):
             owner = owner.actions
+        if isinstance(owner, _Environ) and name == "pop" and 1 <= len(a) <= 2 and not k:
+            # ``os.environ.pop(key[, default])``: the value (or the default), and the
+            # variable is not set from here on
+            value = owner.get(i, list(a), n)
+            i.unset_environment(n, a[0])
+            return value
         if isinstance(owner, dict) and name == "pop" and 1 <= len(a) <= 2 and not k \
                 and isinstance(a[0], _PLAIN):
             if a[0] in owner:
