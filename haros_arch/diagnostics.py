@@ -926,7 +926,10 @@ CATALOGUE: dict[str, Entry] = {
         "info", "{cls} of ROS package {package} is built here and its code is not read",
         "A Python node builds an object of a class of a ROS package its package depends "
         "on, or one the tool has an interface model of (sound_play's SoundClient), that "
-        "the workspace does not hold (an installed package): such a class may be a "
+        "the workspace does not hold (an installed package), or of a module named "
+        "after a package of the workspace, the node's own too, that the reader does "
+        "not find in that package's sources (object_recognition_ros' setup.py puts its "
+        "modules where only its build looks): such a class may be a "
         "node of its own or communicate through the node it is given (nav2_simple_"
         "commander's BasicNavigator is a node with a dozen action clients; smach_ros' "
         "IntrospectionServer publishes). Its calls are not read, so the node is "

@@ -280,7 +280,9 @@ def _finding(rule: Rule, match: Any, config: Configuration | None,
              evaluator: Evaluator) -> Finding:
     involved = entities(match)
     if rule.message:
-        message = render(rule.message, match, evaluator)
+        # the template's layout (a YAML block over lines) is joined; the values filled
+        # in keep their blanks (a package looked up by '   ', quoted as written)
+        message = render(" ".join(rule.message.split()), match, evaluator)
     else:
         message = "; ".join(label(e) for e in involved) or str(plain(match))
     where = best_location(involved)
@@ -289,8 +291,14 @@ def _finding(rule: Rule, match: Any, config: Configuration | None,
     places = [p for p in _places(rule, match) if p.file]
     where = places[0] if places else where
     also = tuple(p for p in dict.fromkeys(places) if p != where)
-    return Finding(rule.id, rule.severity, rule.title, " ".join(message.split()),
+    return Finding(rule.id, rule.severity, rule.title, _one_line(message),
                    config.name if config else None, entity_ids(involved), where, also=also)
+
+
+def _one_line(message: str) -> str:
+    """A message on one line: each line break of a value filled in (and the blanks
+    around it) one blank; the blanks inside a line kept as they are."""
+    return " ".join(line.strip() for line in message.splitlines() if line.strip())
 
 
 def _places(rule: Rule, match: Any) -> list[Location]:

@@ -1493,8 +1493,8 @@ class Walker:
         parts = target.qualname.split(".")
         if len(parts) < 2 or not parts[-1][:1].isupper() \
                 or parts[0] in _MODELLED or target.qualname in self._classes_said \
-                or any(part in ("msg", "srv", "action") for part in parts[1:-1]):
-            return
+                or any(part in ("msg", "srv", "action", "cfg") for part in parts[1:-1]):
+            return  # (``cfg``: dynamic_reconfigure's configuration classes, built)
         package = self._package_of_module(parts[0])
         if package is not None:
             self._classes_said[target.qualname] = (self._where(frame, call), package)
@@ -1602,8 +1602,13 @@ class Walker:
         the module's begins with, then ``_`` (a package's setup.py installs modules of
         any name: mas_common_robotics' mcr_manipulation_pose_selector installs
         ``mcr_manipulation_pose_selector_ros``), the longest such name, when the
-        module may be ROS code (``_foreign``). None for any other module."""
+        module may be ROS code (``_foreign``). Also a package of the workspace (the
+        node's own too) that names a module the loader did not find in its sources
+        (object_recognition_ros' setup.py sets ``package_dir`` where the reader does
+        not look): that code is not read either. None for any other module."""
         if module in self.unseen_packages:
+            return module
+        if module in getattr(self.loader.workspace, "packages", {}) and _foreign(module):
             return module
         named = [name for name in self.unseen_dependencies if module.startswith(name + "_")]
         return max(named, key=len) if named and _foreign(module) else None

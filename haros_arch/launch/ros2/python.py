@@ -223,6 +223,14 @@ class Interpreter(Expressions):
                                               detail="interpretation nested too deeply"))
         return failed
 
+    def package_folder(self, path: PurePosixPath) -> tuple[str, str] | None:
+        if not path.is_absolute():
+            return None
+        package = self.workspace.package_of(str(path))
+        if package is None or not package.root or package.name not in self.workspace.packages:
+            return None
+        return package.name, os.path.normpath(package.root)
+
     def unsupported(self, node: ast.AST | None, detail: str,
                     code: str = "LAUNCH_PY_UNSUPPORTED") -> Unknown:
         """Said here, once: the value is unknown, of kind ``unsupported`` and made at

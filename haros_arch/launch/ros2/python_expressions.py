@@ -84,6 +84,28 @@ _NOT_KNOWN = {"not": "not of an unknown value", "unary": "unary operation", "sli
               "arithmetic": "arithmetic on an unknown value"}
 
 
+def _read(value: Any, node: ast.Attribute) -> Any:
+    """An attribute's value as an expression reads it: ``camera.namespace`` of a camera
+    not known is an unknown that says which."""
+    if isinstance(value, _Bound) and isinstance(value.owner, Unknown):
+        return Unknown(f"{_source(node)} (an attribute of a value not known statically)")
+    return value
+
+
+def _inside(path: PurePosixPath, folder: str) -> bool:
+    """Whether ``path`` is ``folder`` or below it."""
+    return str(path) == folder or str(path).startswith(folder.rstrip("/") + "/")
+
+
+def _above(node: ast.AST, package: str, verb: str = "is a folder") -> str:
+    """Why a folder above a workspace package's folder is not known (``path_up``)."""
+    return (f"{_source(node)} {verb} above package {package}'s, which stands for its "
+            f"install share folder: ros2 launch runs the file from <install>/{package}/"
+            f"share/{package} (above it an isolated install's <install>/{package}/share or "
+            "a merged one's <install>/share) or, resolve()d in a symlink install, from "
+            "the source; which one is not known")
+
+
 def _fails_for_sure(value: Any, key: Any) -> bool:
     """Whether Python's own error on ``value[key]`` is the program's: a container
     known, a key known, and (a dict) no key of it unknown that could be that one."""
@@ -171,6 +193,33 @@ class Expressions(Walker):
 
     def where(self, node: ast.AST | None) -> Location:
         raise NotImplementedError
+
+    def package_folder(self, path: PurePosixPath) -> tuple[str, str] | None:
+        """The name and folder of the workspace package whose folder holds the absolute
+        ``path`` (the source folder that stands for its install share folder), or None."""
+        return None
+
+    def path_up(self, owner: PurePosixPath, up: PurePosixPath, node: ast.AST) -> Any:
+        """``up``, a folder above ``owner`` (``owner.parent``, ``owner.parents[N]``): as
+        it is up to the folder of the workspace package that holds ``owner``, which
+        stands for its install share folder, where ``ros2 launch`` runs a launch file
+        from; a folder above that is not known, and said (``_above``)."""
+        found = self.package_folder(owner)
+        if found is None or _inside(up, found[1]):
+            return up
+        return self.unsupported(node, _above(node, found[0]))
+
+    def path_parents(self, owner: PurePosixPath, node: ast.AST) -> tuple[Any, ...]:
+        """``owner.parents``: each folder as ``path_up`` has it, those above the package's
+        folder one unknown value, said once."""
+        found = self.package_folder(owner)
+        if found is None:
+            return tuple(owner.parents)
+        inside = tuple(p for p in owner.parents if _inside(p, found[1]))
+        if len(inside) == len(owner.parents):
+            return inside
+        above = self.unsupported(node, _above(node, found[0], "holds folders"))
+        return inside + (above,) * (len(owner.parents) - len(inside))
 
     def placed(self, value: Unknown, node: ast.AST) -> Unknown:
         """``value``, with the place that made it: its own when known, else ``node``'s
@@ -472,7 +521,21 @@ class Expressions(Walker):
         return super().unary_value(node, value)
 
     def eval_Subscript(self, node: ast.Subscript, env: dict[str, Any]) -> Any:
-        value = self.eval(node.value, env)
+        if isinstance(node.value, ast.Attribute) and node.value.attr == "parents":
+            # ``path.parents[N]``: that one folder, said only when above the package's
+            owner = self.eval(node.value.value, env)
+            if isinstance(owner, PurePosixPath):
+                key = self.eval(node.slice, env)
+                if isinstance(key, int) and not isinstance(key, bool):
+                    try:
+                        up = owner.parents[key]
+                    except IndexError:
+                        return self.failed(node, f"{_source(node)} fails: IndexError: "
+                                           f"{key}", "IndexError")
+                    return self.path_up(owner, up, node)
+            value = _read(self.attribute_of(owner, node.value), node.value)
+        else:
+            value = self.eval(node.value, env)
         key = self.eval(node.slice, env)
         if isinstance(value, Ref) and _launch_class(value):
             # ``PathJoinSubstitution[share, 'x.launch.py']``: a class of launch or
@@ -526,15 +589,14 @@ class Expressions(Walker):
         return Unknown(f"{_source(node)} (a subscript of a value not known statically)")
 
     def eval_Attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
-        value = self.attribute(node, env)
-        if isinstance(value, _Bound) and isinstance(value.owner, Unknown):
-            # ``camera.namespace`` of a camera not known: an unknown that says which
-            return Unknown(f"{_source(node)} (an attribute of a value not known statically)")
-        return value
+        return _read(self.attribute(node, env), node)
 
     def attribute(self, node: ast.Attribute, env: dict[str, Any]) -> Any:
         """``owner.attr``; a method of a value waits for its call (``_Bound``)."""
-        owner = self.eval(node.value, env)
+        return self.attribute_of(self.eval(node.value, env), node)
+
+    def attribute_of(self, owner: Any, node: ast.Attribute) -> Any:
+        """``owner.attr`` of the value ``owner`` (``node.value`` evaluated)."""
         if isinstance(owner, Ref):
             if owner.qualified == "os" and node.attr == "environ":
                 return _Environ()
@@ -574,6 +636,10 @@ class Expressions(Walker):
             # the process's environment, as ``os.environ`` (depthai's camera.launch.py:
             # ``context.environment.get("DEPTHAI_DEBUG")``)
             return _Environ()
+        if isinstance(owner, PurePosixPath) and node.attr == "parent":
+            return self.path_up(owner, owner.parent, node)
+        if isinstance(owner, PurePosixPath) and node.attr == "parents":
+            return self.path_parents(owner, node)
         if isinstance(owner, PurePosixPath) and node.attr in _PATH_ATTRIBUTES:
             return getattr(owner, node.attr)
         if isinstance(owner, LaunchDescription) and node.attr == "entities":
