@@ -35,7 +35,8 @@ def print_seconds(seconds: dict[str, float], console: Console) -> None:
     """Each rule's time, slowest first (``check -v``); none when the findings were read
     back from the run cache."""
     if not seconds:
-        console.print("queries: not run (the findings of this unchanged run were kept)",
+        console.print("queries: not run (the findings of an earlier run were kept: "
+                      "nothing changed, or only lines of C++ sources moved)",
                       highlight=False)
         return
     console.print(f"queries: {sum(seconds.values()):.2f} s; "
