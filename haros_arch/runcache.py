@@ -438,6 +438,18 @@ def load(folder: str, key: str, project: str = "") -> Model | None:
     """The model kept under ``key`` (``project``: its name), decoded when first used
     (``KeptModel``); None when there is none, or its entry is not as it was written."""
     settled()
+    found = _model_entry(folder, key)
+    if found is None:
+        return None
+    model = KeptModel(found[1], project)
+    _KEPT[model] = (folder, found[0])
+    return model
+
+
+def _model_entry(folder: str, key: str) -> tuple[str, bytes] | None:
+    """The key of the model entry ``key`` names (itself, or the one its alias names,
+    ``store_alias``: one hop) and the model's JSON text there; None when there is none,
+    or its entry is not as it was written."""
     try:
         with open(_entry(folder, key), "rb") as handle:
             content = handle.read()
@@ -445,17 +457,13 @@ def load(folder: str, key: str, project: str = "") -> Model | None:
             data = json.loads(content)
             if not isinstance(data, dict) or not isinstance(data.get("same_as"), str):
                 return None
-            key = data["same_as"]  # an alias (``store_alias``): one hop
+            key = data["same_as"]
             with open(_entry(folder, key), "rb") as handle:
                 content = handle.read()
     except (OSError, ValueError):
         return None
     text = _model_text(content)
-    if text is None:
-        return None
-    model = KeptModel(text, project)
-    _KEPT[model] = (folder, key)
-    return model
+    return None if text is None else (key, text)
 
 
 def diagnostics(model: Model, compute: Callable[[], list[Diagnostic]]) -> list[Diagnostic]:
@@ -619,16 +627,13 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
     from .relocate import Files
 
     settled()
+    entry = _model_entry(folder, earlier)
+    if entry is None:
+        return None
+    earlier, text = entry[0], entry[1].decode("utf-8")
     try:
-        earlier = _resolved(folder, earlier)
-        with open(_entry(folder, earlier), "rb") as handle:
-            content = handle.read()
         with open(_entry(folder, earlier + PARTS), encoding="utf-8") as handle:
             parts = json.load(handle)
-        body = _model_text(content)
-        if body is None:
-            return None
-        text = body.decode("utf-8")
         data = model_to_data(model)
         before = []
         for name in BEFORE_GRAPH:
@@ -704,17 +709,6 @@ def _renumbered_parts(files: Any, text: str, parts: dict[str, Any],
         return None
     pieces.append(tail)
     return "".join(pieces), new_parts
-
-
-def _resolved(folder: str, key: str) -> str:
-    """The key of the model entry ``key`` names (itself, or the one its alias names)."""
-    with open(_entry(folder, key), "rb") as handle:
-        head = handle.read(len(MODEL_HEAD))
-    if head == MODEL_HEAD:
-        return key
-    with open(_entry(folder, key), encoding="utf-8") as handle:
-        data = json.load(handle)
-    return str(data["same_as"])
 
 
 def store_alias(folder: str, key: str, same_as: str, outer: str | None = None) -> None:
