@@ -40,7 +40,7 @@ import sys
 import time
 import weakref
 from collections.abc import Callable, Iterable, Iterator, Mapping
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from . import __version__
 from .collector import held_back
@@ -53,6 +53,9 @@ from .model.model import Model
 from .model.serialise import model_to_data, to_data
 from .project import Project
 from .workspace import SKIP_FOLDERS, Workspace, installed_roots
+
+if TYPE_CHECKING:
+    from .relocate import Files, Maps
 
 T = TypeVar("T")
 FORMAT = 1
@@ -679,8 +682,8 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
     return result
 
 
-def _renumbered_parts(files: Any, text: str, parts: dict[str, Any],
-                      maps: Any) -> tuple[str, dict[str, list[Any]]] | None:
+def _renumbered_parts(files: Files, text: str, parts: dict[str, Any],
+                      maps: Maps) -> tuple[str, dict[str, list[Any]]] | None:
     """A model's text renumbered (``relocate.Files.renumbered``) field by field, and
     where each field now is."""
     pieces: list[str] = []
