@@ -56,7 +56,9 @@ def test_lines_moved_in_cpp_sources_give_a_cold_runs_model_and_findings(tmp_path
         again, timings = _document(project, cache)
         cold, _ = _document(project, None)
         assert again == cold, number
-        assert "graph" not in timings and "C++" in timings, number
+        # neither the configurations built nor their launch files loaded
+        assert "graph" not in timings and "launch" not in timings, number
+        assert "C++" in timings, number
         if number < 3:
             assert again != first  # lines did move
     same, timings = _document(project, cache)  # then kept as any run
@@ -73,6 +75,46 @@ def test_an_edit_that_changes_a_call_builds_the_configurations_again(tmp_path: P
     text = source.read_text()
     assert text.count('"robot1"') == 1
     source.write_text("// moved\n" + text.replace('"robot1"', '"robot9"'))
+    again, timings = _document(project, cache)
+    assert "graph" in timings and "launch" in timings and '"robot9"' in again
+    assert again == _document(project, None)[0]
+
+
+def test_a_script_only_rosrun_finds_is_taken_again_without_the_launch_files(
+        tmp_path: Path, monkeypatch) -> None:
+    """A relocated run takes the packages and rosrun's scripts the launch files gave the
+    kept run (``pipeline._Launches``); the battery monitor, installed by no rule here,
+    is found by rosrun's search of the package only."""
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    build = project.parent / "src" / "demo_robot" / "CMakeLists.txt"
+    text = build.read_text()
+    start = text.index("catkin_install_python(")
+    build.write_text(text[:start] + text[text.index(")", start) + 1:])
+    cache = tmp_path / "cache"
+    first, _ = _document(project, cache)
+    assert '"battery_monitor.py"' in first
+    source = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    source.write_text("// moved\n" + source.read_text())
+    again, timings = _document(project, cache)
+    assert "graph" not in timings and "launch" not in timings
+    assert again == _document(project, None)[0] and '"battery_monitor.py"' in again
+
+
+def test_launch_files_that_give_other_packages_than_before_make_the_run_whole(
+        tmp_path: Path, monkeypatch) -> None:
+    """Not expected (the same files give the same), but if the launch files loaded late
+    gave other packages or scripts than the kept run's record says, the run is made
+    whole from the start."""
+    from haros_arch import pipeline
+
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    _document(project, cache)
+    monkeypatch.setattr(pipeline._Launches, "agrees", lambda *_args: False)
+    source = project.parent / "src" / "demo_robot" / "src" / "monitor.cpp"
+    source.write_text("// moved\n" + source.read_text().replace('"robot1"', '"robot9"'))
     again, timings = _document(project, cache)
     assert "graph" in timings and '"robot9"' in again
     assert again == _document(project, None)[0]
