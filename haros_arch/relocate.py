@@ -58,6 +58,8 @@ class Files:
         found: list[Place] = []
         other = False
         last = 0
+        if not any(spelling in text for spelling in self.spelt):
+            return [text], found, other  # a plain search first: the regex is slower
         for match in self.pattern.finditer(text):
             start = match.start()
             before = text[start - 1] if start else ""
