@@ -538,26 +538,34 @@ def store(folder: str, key: str, model: Model) -> None:
     """Keep ``model`` under ``key`` when it reads back as it is, then prune the cache
     folder (``_prune``); within ``background``, from a forked process (the model as it is
     now, whatever this process does with it after)."""
-    if _BACKGROUND and hasattr(os, "fork") and sys.platform.startswith("linux"):
-        settled()
-        try:
-            pid = os.fork()
-        except OSError:
-            pid = -1  # no process to spare: in line
-        if pid == 0:  # the copy: keep the model and end, running no exit handler of the run
-            code = 1
-            try:
-                _store(folder, key, model)
-                code = 0
-            finally:
-                os._exit(code)
-        if pid > 0:
-            _BACKGROUND[-1].append(pid)
-            # the run's findings, document or page are kept with it (``_with_run``); if
-            # the model turns out not to read back, they are kept for a run that is not
-            _KEPT[model] = (folder, key)
-            return
+    if _forked(lambda: _store(folder, key, model)):
+        # the run's findings, document or page are kept with it (``_with_run``); if
+        # the model turns out not to read back, they are kept for a run that is not
+        _KEPT[model] = (folder, key)
+        return
     _store(folder, key, model)
+
+
+def _forked(work: Callable[[], None]) -> bool:
+    """Within ``background``, ``work`` done by a forked copy of this process (which ends
+    after it, running no exit handler of the run); False when there is none to do it
+    (outside the block, not Linux, no process to spare): the caller does it in line."""
+    if not (_BACKGROUND and hasattr(os, "fork") and sys.platform.startswith("linux")):
+        return False
+    settled()
+    try:
+        pid = os.fork()
+    except OSError:
+        return False
+    if pid == 0:
+        code = 1
+        try:
+            work()
+            code = 0
+        finally:
+            os._exit(code)
+    _BACKGROUND[-1].append(pid)
+    return True
 
 
 def _store(folder: str, key: str, model: Model) -> None:
@@ -676,7 +684,8 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
     _write_json(_entry(folder, key + PARTS), new_parts)
     for name, found in kept:
         _write_text(os.path.join(folder, "runs", name), found)
-    _write_model(folder, key, new_text)
+    if not _forked(lambda: _write_model(folder, key, new_text)):  # for later runs
+        _write_model(folder, key, new_text)
     result = KeptModel(new_text.encode("utf-8"), project)
     _KEPT[result] = (folder, key)
     return result

@@ -162,3 +162,19 @@ def test_a_map_that_would_reorder_places_is_none() -> None:
     assert files.line_maps(_location(99), _location(100)) is not None  # a number sorts
     # anything else differs: no map
     assert files.line_maps(f'[{_location(5)}, "x"]', f'[{_location(6)}, "y"]') is None
+
+
+def test_places_of_spellings_that_overlap() -> None:
+    """A changed file spelt relative and absolute, another whose name begins with its
+    name, a name with no line after it, a path of another tree ending the same."""
+    files = Files(["/ws/src/a.cpp", "/ws/src/a.cpp.in", "/ws/x/b.hpp"], "/ws")
+    text = ('"/ws/src/a.cpp:3 src/a.cpp.in:4 (src/a.cpp", "line": 5 src/a.cpp: '
+            'x/b.h:6 x/b.hpp:7 /other/src/a.cpp:8"')
+    pieces, found, other = files.places(text)
+    assert found == [("/ws/src/a.cpp", 3, True), ("/ws/src/a.cpp.in", 4, True),
+                     ("/ws/x/b.hpp", 7, True)]
+    assert other  # `(src/a.cpp", "line"`: a location's form after no quote; /other/...
+    assert "".join(p + str(line) for p, (_f, line, _q)
+                   in zip(pieces[:-1], found, strict=True)) + pieces[-1] == text
+    assert Files(["/ws/src/a.cpp"], "/ws").places('{"file": "src/a.cpp", "line": 9}') == (
+        ['{"file": "src/a.cpp", "line": ', "}"], [("/ws/src/a.cpp", 9, False)], False)
