@@ -62,3 +62,38 @@ def integer_literal(text: str) -> int | None:
     except ValueError:  # ``09``
         return None
     return -value if match.group(1) == "-" else value
+
+
+# a function-like macro's ``#define``: the name (``{name}`` filled in), the parameters,
+# the body with its continued lines (a backslash ending a line, blanks after it allowed)
+_FUNCTION_MACRO = (r"^[ \t]*#[ \t]*define[ \t]+({name})\(([^)]*)\)"
+                   r"((?:[^\n]*\\[ \t]*\r?\n)*[^\n]*)")
+_CONTINUED = re.compile(r"\\[ \t]*(\r?\n)")
+_CONTINUED_BYTES = re.compile(_CONTINUED.pattern.encode())
+
+
+def function_macros(text: AnyStr, name: AnyStr) -> list[tuple[int, list[AnyStr], AnyStr]]:
+    """Each ``#define name(parameters) body`` of ``text`` (``str`` or ``bytes``), in
+    order: the offset of its name, its parameters, and its body with its continued
+    lines joined (each backslash that continues a line dropped, the line break kept, so
+    the body has the lines it has in the file). Callers choose which definition counts:
+    the first, the only one, or the one the parse says an invocation expands."""
+    if isinstance(text, bytes):
+        assert isinstance(name, bytes)
+        pattern = re.compile(_FUNCTION_MACRO.encode().replace(b"{name}", re.escape(name)),
+                             re.MULTILINE)
+        continued, comma = _CONTINUED_BYTES, b","
+    else:
+        assert isinstance(name, str)
+        pattern = re.compile(_FUNCTION_MACRO.replace("{name}", re.escape(name)),
+                             re.MULTILINE)
+        continued, comma = _CONTINUED, ","
+    found = []
+    for match in pattern.finditer(text):
+        parameters = [p.strip() for p in match.group(2).split(comma) if p.strip()]
+        found.append((match.start(1), parameters, continued.sub(_line_break, match.group(3))))
+    return found
+
+
+def _line_break(match: re.Match[AnyStr]) -> AnyStr:
+    return match.group(1)

@@ -937,6 +937,22 @@ CATALOGUE: dict[str, Entry] = {
         "Messages, services and actions, the classes the API tables model (rospy, rclpy, "
         "actionlib, tf, tf2_ros, message_filters) and packages known to make no ROS call "
         "(tf_transformations, cv_bridge, image_geometry, ...) do not count."),
+    "PY_FUNCTION_UNSEEN": Entry(
+        "info", "{function} of ROS package {package} is given the node ({given}) here and "
+        "its code is not read",
+        "A Python node calls a function of a module named after a package of the "
+        "workspace, the node's own too, that the reader does not find in that package's "
+        "sources, or of a ROS package its package depends on that the workspace does not "
+        "hold (an installed package), and passes it the node: an rclpy node (``self`` in "
+        "a Node subclass, ``rclpy.create_node``'s), or in ROS 1, whose node is the "
+        "process's, an object rospy made (a publisher, a subscriber, a service proxy). "
+        "With it the function can make publishers, subscriptions, clients and parameter "
+        "reads the model does not see (``setup_publishers(node)``), so the node is "
+        "'partial' and checks that claim something is absent do not decide on it. The "
+        "same modules count as for PY_CLASS_UNSEEN: not messages, services, actions, "
+        "nor the standard library, client libraries, packages known to make no ROS call "
+        "or pip libraries. A publisher an rclpy node made, passed alone, is not the "
+        "node: a function given it can only publish on it."),
     "PY_LAUNCHES": Entry(
         "info", "{call} starts the nodes of a launch file at run time (roslaunch's "
         "Python API); what it starts is not read",
@@ -999,7 +1015,8 @@ CATALOGUE: dict[str, Entry] = {
         "Python sources where calls may be missing or made by code not read (first: "
         "{first})",
         "A source of the node could not be read or parsed, or was too large to analyse, "
-        "or the node builds a class whose code is not read (PY_CLASS_UNSEEN), runs "
+        "or the node builds a class whose code is not read (PY_CLASS_UNSEEN) or hands "
+        "itself to a function whose code is not read (PY_FUNCTION_UNSEEN), runs "
         "roslaunch in its process (PY_LAUNCHES) or with a command (PY_RUNS_ROS_TOOL), "
         "or imports a module by a computed name (PY_DYNAMIC_IMPORT), or calls "
         "deeper than the walk follows (PY_CALL_DEPTH): calls may be "

@@ -4,7 +4,9 @@ puts such a statement at the macro's name, and its text was the invocation's arg
 riptide_autonomy's UwrtBtNode.cpp (``INIT_IF_NEEDED(tfListener,
 std::make_shared<tf2_ros::TransformListener>(*tfBuffer))``, whose ``#define`` tests
 ``!variable``) was said to subscribe /tf "only under if (tfListener,
-std::make_shared<...>(*tfBuffer))"."""
+std::make_shared<...>(*tfBuffer))". The ``#define`` read is the one the parse expanded
+there, in the source or in a header of the workspace (one of two definitions an
+``#ifdef`` chooses between)."""
 
 from __future__ import annotations
 
@@ -35,6 +37,7 @@ int main(int argc, char ** argv)
   INIT_IF_NEEDED(pub, n.advertise<std_msgs::String>("out", 1));
   EACH_TOPIC(argc, sub = n.subscribe("in", 1, cb));
   ELSEWHERE(n.subscribe("far", 1, cb));
+  GUARDED(argc > 2, n.subscribe("chosen", 1, cb));
   if (argc > 5) { n.subscribe("plain", 1, cb); }
   ros::spin();
 }
@@ -42,6 +45,13 @@ int main(int argc, char ** argv)
 
 OTHER_H = """
 #define ELSEWHERE(call) if (ros::ok()) { call; }
+#ifdef FAST_LOOP
+#define GUARDED(test, call) if (test) { call; }
+#else
+#define GUARDED(test, call) \\
+    while (ros::ok() && \\
+           (test)) { call; }
+#endif
 """
 
 
@@ -55,6 +65,8 @@ def test_a_macro_s_statement_tests_its_definition_s_text(write_tree) -> None:
     # the do-while(0) around it tests 0, as a do written so does
     assert found["out"] == ["do 0", "if !pub"], found
     assert found["in"] == ["for int i = 0; i < argc; ++i"], found
-    # defined in another file: not known, rather than the invocation's argument
-    assert found["far"] == ["if ?"], found
+    # defined in a header: read there
+    assert found["far"] == ["if ros::ok()"], found
+    # the definition the #ifdef keeps, continued lines joined
+    assert found["chosen"] == ["while ros::ok() && (argc > 2)"], found
     assert found["plain"] == ["if argc > 5"], found

@@ -23,8 +23,9 @@ import re
 from collections.abc import Callable
 from typing import TypeVar
 
-from clang.cindex import Cursor, CursorKind
+from clang.cindex import Cursor, CursorKind, SourceLocation
 
+from ...ctext import function_macros
 from ...model.conditions import Condition
 from ...model.location import Location
 from .expressions import ros_init, strip
@@ -144,7 +145,7 @@ class ConditionReader:
             return self._if(node, children)
         if kind in _LOOPS and children:
             loop = self._condition(node, _LOOPS[kind], self._tested(
-                node.extent.start, "for" if kind == CursorKind.CXX_FOR_RANGE_STMT
+                node, "for" if kind == CursorKind.CXX_FOR_RANGE_STMT
                 else _LOOPS[kind]))
             if kind == CursorKind.FOR_STMT:
                 self._counting(loop, children)
@@ -152,11 +153,11 @@ class ConditionReader:
         if kind == CursorKind.DO_STMT and children:
             text = (self._parens(children[0].extent.end)
                     if self._written(node.extent.start, "do")
-                    else self._tested(node.extent.start, "do", "while"))
+                    else self._tested(node, "do", "while"))
             return [(children[0], (self._condition(node, "do", text),)),
                     *((c, ()) for c in children[1:])]
         if kind == CursorKind.SWITCH_STMT and children:
-            switch = self._condition(node, "switch", self._tested(node.extent.start, "switch"),
+            switch = self._condition(node, "switch", self._tested(node, "switch"),
                                      children[-2] if len(children) >= 2 else None)
             return [(c, ()) for c in children[:-1]] + self._switch_body(children[-1], switch)
         if kind == CursorKind.CXX_TRY_STMT and children:
@@ -249,7 +250,7 @@ class ConditionReader:
             return None
         has_else = len(children) >= 3 and self._between(children[-2], children[-1], _ELSE) == "else"
         then = len(children) - (2 if has_else else 1)
-        return then, has_else, self._tested(node.extent.start, "if"), children[then - 1]
+        return then, has_else, self._tested(node, "if"), children[then - 1]
 
     def _after_if(self, node: Cursor, rest: list[Cursor]) -> tuple[Condition, ...]:
         """The condition the statements after the ``if`` ``node`` in its block run
@@ -518,16 +519,18 @@ class ConditionReader:
         return text is not None and re.match(
             keyword.encode() + rb"\b", text[offset:offset + len(keyword) + 1]) is not None
 
-    def _tested(self, start: object, keyword: str, tests: str | None = None) -> str:
-        """What the statement ``keyword`` (``if``, ``while``, ``for``, ``switch``) starting
-        at ``start`` tests, as written. A statement a function-like macro's expansion
+    def _tested(self, node: Cursor, keyword: str, tests: str | None = None) -> str:
+        """What the statement ``node``, ``keyword`` (``if``, ``while``, ``for``,
+        ``switch``), tests, as written. A statement a function-like macro's expansion
         makes starts, for the parse, at the macro's name: its test is then read off the
-        macro's ``#define`` in the same file, each parameter the invocation's argument
-        (``#define INIT_IF_NEEDED(v, val) if (!v) v = val;`` called as
-        ``INIT_IF_NEEDED(listener, ...)`` tests ``!listener``, not the invocation's
-        arguments, riptide_autonomy's UwrtBtNode.cpp); ``?`` when that definition is not
-        in the file or makes more than one such statement. ``tests``: the word the test
+        macro's ``#define`` the parse expanded there, in the file or a header of the
+        workspace, each parameter the invocation's argument (``#define
+        INIT_IF_NEEDED(v, val) if (!v) v = val;`` called as ``INIT_IF_NEEDED(listener,
+        ...)`` tests ``!listener``, not the invocation's arguments, riptide_autonomy's
+        UwrtBtNode.cpp); ``?`` when that definition is not read (a header outside the
+        workspace) or makes more than one such statement. ``tests``: the word the test
         follows when not ``keyword`` (``while`` of a ``do``)."""
+        start = node.extent.start
         text = self._bytes(getattr(start, "file", None))
         offset = getattr(start, "offset", 0)
         if text is None:
@@ -538,7 +541,7 @@ class ConditionReader:
         if invocation is None:
             return "?"
         arguments = _balanced(text, invocation.end() - 1)
-        definition = _definition(text, invocation.group(1))
+        definition = self._definition(node, text, invocation.group(1))
         if arguments is None or definition is None:
             return "?"
         parameters, body = definition
@@ -553,6 +556,22 @@ class ConditionReader:
             values[b"__VA_ARGS__"] = b", ".join(given[len(parameters) - 1:])
         return _clean(re.sub(rb"\b[A-Za-z_]\w*\b",
                              lambda m: values.get(m.group(0), m.group(0)).strip(), inner))
+
+    def _definition(self, node: Cursor, text: bytes, name: bytes
+                    ) -> tuple[list[bytes], bytes] | None:
+        """The parameters and body of the function-like macro ``name`` whose expansion
+        makes ``node`` (its invocation starts ``node``, in the file of ``text``): the
+        definition the parse expanded there (its macro definition, with the detailed
+        preprocessing record), in whichever file of the workspace holds it; without it,
+        the only one ``text`` holds."""
+        defined = _expanded_definition(node)
+        if defined is not None:
+            header = self._bytes(defined.file)
+            found = [(p, b) for at, p, b in function_macros(header, name)
+                     if at == defined.offset] if header is not None else []
+        else:
+            found = [(p, b) for _, p, b in function_macros(text, name)]
+        return found[0] if len(found) == 1 else None
 
     def text(self, node: Cursor) -> str:
         """The source text of ``node``, whitespace collapsed (as conditions are); ``?``
@@ -686,15 +705,19 @@ def _split_arguments(text: bytes) -> list[bytes]:
     return parts if parts != [b""] else []
 
 
-def _definition(text: bytes, name: bytes) -> tuple[list[bytes], bytes] | None:
-    """The parameters and body of the function-like macro ``name`` the file defines
-    (once; line continuations joined), else None."""
-    found = list(re.finditer(rb"^[ \t]*#[ \t]*define[ \t]+" + re.escape(name)
-                             + rb"\(([^)]*)\)((?:[^\n]*\\\r?\n)*[^\n]*)", text, re.M))
-    if len(found) != 1:
+def _expanded_definition(node: Cursor) -> SourceLocation | None:
+    """Where the macro whose invocation starts ``node`` is defined (its name), by the
+    parse; None when the parse says no macro is invoked there."""
+    try:
+        at = Cursor.from_location(node.translation_unit, node.extent.start)
+        if at is None or at.kind != CursorKind.MACRO_INSTANTIATION:
+            return None
+        defined = at.referenced
+    except (ValueError, TypeError, AttributeError):
         return None
-    parameters = [p.strip() for p in found[0].group(1).split(b",") if p.strip()]
-    return parameters, re.sub(rb"\\\r?\n", b" ", found[0].group(2))
+    if defined is None or defined.kind != CursorKind.MACRO_DEFINITION:
+        return None
+    return defined.location if defined.location.file is not None else None
 
 
 def _clean(raw: bytes) -> str:

@@ -42,6 +42,7 @@ from clang.cindex import (
     conf,
 )
 
+from ...ctext import function_macros
 from . import api
 from .cursors import by_file, line_of, visit_children
 
@@ -523,20 +524,11 @@ def assigns_to(lines: Sequence[str], line: int, name: str) -> bool:
 
 
 def _macro_body(lines: Sequence[str], name: str) -> str | None:
-    """The text a function-like macro ``name`` defined in the file of ``lines`` expands
-    to, its continued lines joined (sbus_bridge's ``#define GET_PARAM(name) if
+    """The text the first function-like macro ``name`` defined in the file of ``lines``
+    expands to, its continued lines joined (sbus_bridge's ``#define GET_PARAM(name) if
     (!quadrotor_common::getParam(#name, name##_, pnh_)) return false``), or None."""
-    start = re.compile(r"\s*#\s*define\s+" + re.escape(name) + r"\(")
-    for index, text in enumerate(lines):
-        if start.match(text) is None:
-            continue
-        body = [text[text.index(")") + 1:] if ")" in text else ""]
-        while body[-1].rstrip().endswith("\\") and index + 1 < len(lines):
-            body[-1] = body[-1].rstrip()[:-1]
-            index += 1
-            body.append(lines[index])
-        return "\n".join(body)
-    return None
+    found = function_macros("\n".join(lines), name)
+    return found[0][2] if found else None
 
 
 @functools.lru_cache(maxsize=256)

@@ -159,6 +159,7 @@ class Walker:
         self._gui_plugin = False  # rqt_gui runs a plugin alone (``_standalone_plugin``)
         self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
         self._imports_said: set[Location] = set()  # PY_DYNAMIC_IMPORT
+        self._functions_said: set[Location] = set()  # PY_FUNCTION_UNSEEN
         # the cuts of the walk under way (``_collect``) and those said (PY_CALL_DEPTH)
         self._cuts: list[Diagnostic] = []
         self._cuts_said: set[Location] = set()
@@ -1075,6 +1076,7 @@ class Walker:
                         "PY_LAUNCHES", where, call=target.qualname))
             else:
                 self._unseen_class(target, call, frame)
+                self._unseen_function(target, call, frame)
         elif isinstance(target, NodeMethod) and target.name in rclpy.NODE_METHODS:
             start = len(self.calls)
             self._record(rclpy.NODE_METHODS[target.name], call, frame, conds, 2)
@@ -1500,6 +1502,51 @@ class Walker:
             self._classes_said[target.qualname] = (self._where(frame, call), package)
         elif base and target.qualname not in self._classes_elsewhere and _foreign(parts[0]):
             self._classes_elsewhere[target.qualname] = self._where(frame, call)
+
+    def _unseen_function(self, target: Ref, call: ast.Call, frame: Frame) -> None:
+        """Say where the node hands itself to a function whose code is not read
+        (``PY_FUNCTION_UNSEEN``: ``setup_publishers(self)`` of a module named after a
+        package of the workspace that the loader does not find, or of an installed ROS
+        package, by the rule a class's is, ``_package_of_module``): with the node, the
+        function can make any publisher, subscription, client or parameter read, so
+        the node is partial. What counts as the node (``_node_given``): an rclpy node,
+        or in ROS 1, whose node is the process's, an object rospy (or an API the tables
+        model) made. Not a function of a message, service, action or ``cfg`` module,
+        the standard library, a client library or a library known to make no ROS call
+        (``_foreign``)."""
+        parts = target.qualname.split(".")
+        if len(parts) < 2 or parts[-1][:1].isupper() or parts[0] in _MODELLED or any(
+                part in ("msg", "srv", "action", "cfg") for part in parts[1:-1]):
+            return
+        package = self._package_of_module(parts[0])
+        given = self._node_given(call, frame) if package is not None else None
+        where = self._where(frame, call)
+        if given is None or package is None or where in self._functions_said:
+            return
+        self._functions_said.add(where)  # a function walked twice: once
+        self.diagnostics.append(diag.make("PY_FUNCTION_UNSEEN", where,
+                                          function=target.qualname, package=package,
+                                          given=given))
+
+    def _node_given(self, call: ast.Call, frame: Frame) -> str | None:
+        """The first argument of ``call`` that is the node, as written: an rclpy node
+        (an object of a ``Node`` subclass, ``self`` in one, or ``rclpy.create_node``'s),
+        or an object a row of the ROS 1 API tables makes (``rospy.Publisher``,
+        ``actionlib.SimpleActionClient``: rospy's node is the process's, and code given
+        its objects is ROS code); None when none is. A publisher an rclpy node made
+        is not the node: a function given it can only publish on it."""
+        ev = self.evaluator
+        for expr in [*call.args, *(k.value for k in call.keywords)]:
+            if isinstance(expr, ast.Starred):
+                continue
+            value = ev.eval(expr, frame)
+            if isinstance(value, NodeHandle) or (
+                    isinstance(value, Instance) and ev.is_node_class(value.cls)) or (
+                    isinstance(value, Unknown) and frame.module.version == 1
+                    and Ref(value.origin).key in rospy.ROWS
+                    and value.origin.rsplit(".", 1)[-1][:1].isupper()):
+                return self._text(frame, expr)
+        return None
 
     def _runs_ros_tool(self, call: ast.Call, frame: Frame) -> bool:
         """Whether a subprocess call's command (a list's words, or a string's) starts

@@ -242,10 +242,9 @@ class Ros1Loader:
                 self.report("LAUNCH_ARG_UNSET", scope, element, name=name)
         if command:  # never run: its program's folder is not needed (said by tag_param)
             _, program = program_not_found(result)
-            ctx.unknown = [d for d in ctx.unknown
-                           if not any(d.startswith(f"package {p} ") for p in program)]
-        for detail in dict.fromkeys(ctx.unknown):
-            self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=detail)
+            ctx.unknown = [r for r in ctx.unknown if r.package not in program]
+        for reason in dict.fromkeys(ctx.unknown):
+            self.report("LAUNCH_UNKNOWN_VALUE", scope, element, detail=reason.detail)
         for name, default in ctx.defaults_taken:
             if len(default.strip()) >= MIN_HINTED_DEFAULT:
                 self.optenv_defaults.setdefault(default.strip(), name)

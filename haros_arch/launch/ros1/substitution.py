@@ -44,6 +44,16 @@ class ArgUndefined(SubstitutionError):
         self.name = name
 
 
+@dataclass(frozen=True)
+class Reason:
+    """Why a part of a substituted value is not known: the detail said
+    (``LAUNCH_UNKNOWN_VALUE``), and the package a ``$(find)`` did not find when that is
+    why (a reader that does not need the package's folder drops it by the package)."""
+
+    detail: str
+    package: str | None = None
+
+
 @dataclass
 class Context:
     """What substitutions may read: arguments, environment, packages, the file."""
@@ -55,7 +65,7 @@ class Context:
     anon: dict[str, Unknown] = field(default_factory=dict)
     declared: Callable[[str], bool] = lambda name: False  # declared but without value
     unset: list[str] = field(default_factory=list)  # declared args without value that were used
-    unknown: list[str] = field(default_factory=list)  # other reasons for unknown parts
+    unknown: list[Reason] = field(default_factory=list)  # other reasons for unknown parts
     # why ``find`` found nothing, the rest of "package NAME ..." (Workspace.absence)
     absence: Callable[[str], str] = lambda name: "is not found"
     # the packages here whose names a package ``find`` did not find most likely misspells
@@ -175,7 +185,7 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
         _arity(raw, args, 1)
         if args[0] in ctx.environment:
             return Value.of(ctx.environment[args[0]])
-        ctx.unknown.append(f"environment variable {args[0]} is not set")
+        ctx.unknown.append(Reason(f"environment variable {args[0]} is not set"))
         return Value.unknown(f"env {args[0]}")
     if command == "optenv":
         if not args:
@@ -190,7 +200,8 @@ def _one(command: str, args: list[str], raw: str, ctx: Context) -> Value:
             if ctx.misspelt(args[0]):  # most likely a typo: the launch fails here
                 ctx.misspelt_packages.append(args[0])
             else:  # installed on the robot, perhaps
-                ctx.unknown.append(f"package {args[0]} {ctx.absence(args[0])}")
+                ctx.unknown.append(Reason(f"package {args[0]} {ctx.absence(args[0])}",
+                                          args[0]))
             return package_not_found(args[0])
         return Value.of(path)
     if command == "anon":
@@ -268,10 +279,10 @@ def evaluate(text: str, ctx: Context) -> Value:
     result = expression.evaluate(text, bare, functions)
     if isinstance(result, expression.Unknown):
         if result.kind == "unknown":
-            ctx.unknown.append(f"$(eval {text}) depends on unknown values")
+            ctx.unknown.append(Reason(f"$(eval {text}) depends on unknown values"))
             return Value.unknown(f"eval {text}")
         if result.kind in ("undefined", "error", "syntax"):
             raise SubstitutionError(f"$(eval {text}): {result.reason}")
-        ctx.unknown.append(f"$(eval {text}) is not evaluated: {result.reason}")
+        ctx.unknown.append(Reason(f"$(eval {text}) is not evaluated: {result.reason}"))
         return Value.unknown(f"eval {text}")
     return Value.of(str(result))

@@ -129,6 +129,8 @@ class Interpreter(Expressions):
         # variables the file removes (``del os.environ[key]``, ``os.environ.pop(key)``)
         # under no test: read after, they are not set
         self.environment_removed: set[str] = set()
+        # ``delete_name``'s, each scope kept with its names (so no other takes its id)
+        self.deleted: dict[int, tuple[dict[str, Any], set[str]]] = {}
         self.diagnostics: list[Diagnostic] = []
         # packages whose folders the file asks for now (get_package_share_directory)
         self.uses: list[PackageUse] = []
@@ -893,9 +895,35 @@ class Interpreter(Expressions):
             self.unsupported(target, "assignment to this target is not interpreted")
 
     def delete(self, target: ast.expr, env: dict[str, Any]) -> None:
-        """``del os.environ[key]`` removes the variable from the launch process's
-        environment (``unset_environment``); ``del d[key]`` the item of a dict whose keys
-        are known. Other targets are said not interpreted."""
+        """``del TARGET`` as Python runs it: a name is unbound in its scope (a
+        function's local, or the module's or enclosing function's one it declared
+        ``global`` / ``nonlocal``); an attribute set on an object or a class of the
+        file is removed; ``del os.environ[key]`` removes the variable from the launch
+        process's environment (``unset_environment``); ``del d[key]`` the item of a dict
+        whose keys are known, ``del items[i]`` (``items[i:j]``) the item (the slice) of
+        a list; a tuple or list of targets each in turn. Where Python raises (a name
+        bound nowhere in the file, a missing key, an index out of range), the error
+        goes to the ``try`` that catches it (``failed``). Anything else is said not
+        interpreted."""
+        if isinstance(target, (ast.Tuple, ast.List)):
+            for each in target.elts:
+                self.delete(each, env)
+            return
+        if isinstance(target, ast.Name):
+            self.delete_name(target, env)
+            return
+        if isinstance(target, ast.Attribute):
+            owner = self.eval(target.value, env)
+            place = owner.attributes if isinstance(
+                owner, (Instance, PlainClass, Constructing)) else None
+            if place is not None and target.attr in place:
+                del place[target.attr]
+                return
+            if isinstance(owner, PlainClass) and target.attr in owner.methods:
+                del owner.methods[target.attr]
+                return
+            self.unsupported(target, f"del {_source(target)} is not interpreted")
+            return
         if isinstance(target, ast.Subscript):
             container = self.eval(target.value, env)
             key = self.eval(target.slice, env)
@@ -910,7 +938,45 @@ class Interpreter(Expressions):
                     self.failed(target, f"del {_source(target)} fails: no such key",
                                 "KeyError")
                     return
+            if isinstance(container, list) and (isinstance(key, slice) or (
+                    isinstance(key, int) and not isinstance(key, bool))):
+                try:
+                    del container[key]
+                except (IndexError, ValueError) as err:  # Python's own, as here
+                    self.failed(target, f"del {_source(target)} fails: {err}",
+                                f"{type(err).__name__}: {err}")
+                return
         self.unsupported(target, f"del {_source(target)} is not interpreted")
+
+    def delete_name(self, target: ast.Name, env: dict[str, Any]) -> None:
+        """``del name``: unbound in the scope Python takes it from, the function's own
+        (a local: ``del`` makes it one for the whole function) or, declared ``global`` /
+        ``nonlocal``, the scope it names (``outer_names``); at module level the
+        module's; a read of it after, where no scope binds it again, is Python's
+        NameError (``unbound_by_del``). A name bound nowhere in the file (but by
+        ``del``), or unbound by a ``del`` before, is Python's NameError
+        (UnboundLocalError for a function's local); one bound elsewhere that this
+        reading has not bound here is said not known."""
+        name = target.id
+        scopes = [env]
+        outer = env.get(OUTER, {}).get(name) if "__closure__" in env else None
+        if outer is not None:
+            scopes.append(outer)
+        found = [scope for scope in scopes if name in scope]
+        if found:
+            for scope in found:
+                del scope[name]
+                self.deleted.setdefault(id(scope), (scope, set()))[1].add(name)
+            return
+        bindings = self.bindings.get(self.path)
+        if (bindings is not None and name not in bindings) or any(
+                name in self.deleted_in(scope) for scope in scopes):
+            local = "__closure__" in env and outer is None
+            error = "UnboundLocalError" if local else "NameError"
+            self.failed(target, f"del {name} fails: {name} is not bound here: Python "
+                                f"raises {error} here", error)
+            return
+        self.unsupported(target, f"del {name}: name {name} is not defined here")
 
     def unset_environment(self, target: ast.AST, key: Any) -> None:
         """``del os.environ[key]`` / ``os.environ.pop(key)``: the variable is not set in
@@ -1778,7 +1844,7 @@ _DYNAMIC = frozenset(("exec", "eval", "globals", "locals", "vars", "setattr", "_
 
 
 def names_bound(tree: ast.Module) -> frozenset[str] | None:
-    """Every name the file's code binds anywhere, in any scope (assignments, ``del``,
+    """Every name the file's code binds anywhere, in any scope (assignments,
     definitions, parameters, imports, handlers, ``with ... as``, ``global``, patterns),
     whether or not the interpreter runs that code; None when the file can bind names
     it does not write (``from m import *``, ``exec``, ``globals()``, ``setattr``, a
@@ -1786,7 +1852,7 @@ def names_bound(tree: ast.Module) -> frozenset[str] | None:
     bound: set[str] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
-            if not isinstance(node.ctx, ast.Load):
+            if isinstance(node.ctx, ast.Store):  # (``del x`` binds nothing to read)
                 bound.add(node.id)
             elif node.id in _DYNAMIC:
                 return None

@@ -162,6 +162,10 @@ class Expressions(Walker):
     environment_unsure: set[str]
     # variables the file removes (``del os.environ[key]``) under no test: not set after
     environment_removed: set[str]
+    # the names ``del`` unbound, per scope (by the scope's identity, the scope kept):
+    # read where no scope binds them again, they are Python's NameError
+    # (``Interpreter.delete_name``)
+    deleted: dict[int, tuple[dict[str, Any], set[str]]]
     argv: list[Any] | None  # ``sys.argv``: the ros2 launch command line, if known
     guards: list[Guard]
     # the expressions whose value Python's handling of a launch object decided: ``not``
@@ -260,6 +264,21 @@ class Expressions(Walker):
             scope = scope.get("__closure__")
         return self.globals.get(name, UNBOUND)
 
+    def unbound_by_del(self, name: str, env: dict[str, Any]) -> bool:
+        """Whether ``del`` unbound ``name`` in one of ``env``'s scopes or the module's,
+        none of which binds it now."""
+        scope: dict[str, Any] | None = env
+        while scope is not None:
+            if name in self.deleted_in(scope):
+                return True
+            scope = scope.get("__closure__")
+        return name in self.deleted_in(self.globals)
+
+    def deleted_in(self, scope: dict[str, Any]) -> set[str]:
+        """The names ``del`` unbound in ``scope``."""
+        found = self.deleted.get(id(scope))
+        return found[1] if found is not None else set()
+
     def lookup(self, name: str, env: dict[str, Any], node: ast.AST) -> Any:
         value = self.bound(name, env)
         if value is not UNBOUND:
@@ -276,6 +295,10 @@ class Expressions(Walker):
                                           + " not found")
         if hasattr(builtins, name):  # a builtin of Python the reader does not run
             return self.unsupported(node, f"builtin {name} is not interpreted (never run)")
+        if self.unbound_by_del(name, env):
+            return self.failed(node, f"name {name} is read after del unbound it: Python "
+                               "raises NameError here, and launch stops",
+                               f"NameError: name '{name}' is not defined")
         bindings = self.bindings.get(self.path)
         if bindings is not None and name not in bindings:
             # bound nowhere in the file, in code run or not: Python's NameError there
