@@ -589,7 +589,7 @@ CATALOGUE: dict[str, Entry] = {
         "once configured, whatever state the launch file drives it to. The actions an "
         "OnStateTransition handler runs are read, under that event. Said once per file."),
     "LAUNCH_PY_ALWAYS_TRUE": Entry(
-        "info", "the Python test '{test}' is always true: a launch object is not "
+        "warning", "the Python test '{test}' is always true: a launch object is not "
         "evaluated by Python",
         "A Python 'if' of a launch file tests a launch object itself (a condition such as "
         "LaunchConfigurationEquals(...), a substitution, an action). Python takes such an "
@@ -598,7 +598,8 @@ CATALOGUE: dict[str, Entry] = {
         "is the one that runs; the file probably meant condition=IfCondition(...) or "
         "the configuration's value performed in an OpaqueFunction. A launch object "
         "compared with '!=' or 'is not' is always unequal too (launch's classes define no "
-        "__eq__: Python compares them by identity)."),
+        "__eq__: Python compares them by identity). A warning, as LAUNCH_PY_BOOLEAN_OBJECT "
+        "is: the launch argument the test reads changes nothing of what starts."),
     "LAUNCH_PY_BOOLEAN_OBJECT": Entry(
         "warning", "Python's '{op}' takes the launch object '{test}' as true without "
         "evaluating it: the '{op}' {result}",
@@ -611,7 +612,7 @@ CATALOGUE: dict[str, Entry] = {
         "OrSubstitution, one PythonExpression, or the value performed in an "
         "OpaqueFunction."),
     "LAUNCH_PY_ALWAYS_FALSE": Entry(
-        "info", "the Python test '{test}' is always false: a launch object is not "
+        "warning", "the Python test '{test}' is always false: a launch object is not "
         "evaluated by Python",
         "A Python 'if' of a launch file compares a launch object itself with a value "
         "(LaunchConfiguration('sim') == 'true') or tests 'not' of one. Python "
@@ -619,7 +620,9 @@ CATALOGUE: dict[str, Entry] = {
         "arguments, so the test is always false: the 'else' branch is the one read, as "
         "it is the one that runs. The file probably meant a condition= "
         "(LaunchConfigurationEquals, IfCondition(PythonExpression(...))) or the "
-        "configuration's value performed in an OpaqueFunction."),
+        "configuration's value performed in an OpaqueFunction. A warning: the branch the "
+        "test guards never runs, whatever the launch arguments (sjtu_drone's "
+        "controller == 'joystick' never started the joystick teleop)."),
     "LAUNCH_PY_BUDGET": Entry(
         "warning", "interpretation stopped: {detail}",
         "A launch file exceeded a bound of the static interpreter (steps, call depth, "

@@ -722,7 +722,7 @@ def generate_launch_description():
     found = [(d.code, d.severity, d.location.line) for d in model.diagnostics
              if d.code in ("LAUNCH_PY_ALWAYS_TRUE", "LAUNCH_UNSUPPORTED", "LAUNCH_PY_UNSUPPORTED")
              and d.location.line < test_line + 5]
-    assert found == [("LAUNCH_PY_ALWAYS_TRUE", "info", test_line)]
+    assert found == [("LAUNCH_PY_ALWAYS_TRUE", "warning", test_line)]
     assert "LaunchConfigurationEquals('aligned', 'True')" in next(
         d.message for d in model.diagnostics if d.code == "LAUNCH_PY_ALWAYS_TRUE")
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from lxml import etree
@@ -22,7 +23,7 @@ from ...files import read_bytes
 from ...manifest import as_expat_reads, start_lines, xml_parser
 from ...model.conditions import Condition, exclusive, same_conditions
 from ...model.launch_tree import ArgOrigin, LaunchArg, LaunchCondition, LaunchItem, PackageUse
-from ...model.location import Location
+from ...model.location import Location, is_upstream
 from ...model.rosname import is_legal_name
 from ...model.values import UNKNOWN_MARK, Unknown, Value, scalar_type
 from ...rosrun import find_executable
@@ -170,7 +171,15 @@ class Ros1Loader:
 
     def report(self, code: str, scope: Scope | str, element: Element | None,
                **params: object) -> None:
-        self.model.diagnostics.append(diag.make(code, self.where(scope, element), **params))
+        """A diagnostic at ``element``; one in an installed package's own launch file
+        (upstream, read from its model) also names the workspace's include that reached
+        it (``Scope.reached_from``): mavros' node.launch fails on the ``config_yaml`` a
+        workspace file gave it, and only that file can be changed."""
+        said = diag.make(code, self.where(scope, element), **params)
+        reached = scope.reached_from if isinstance(scope, Scope) else None
+        if reached is not None and is_upstream(said.location.file or ""):
+            said = replace(said, also=(reached,))
+        self.model.diagnostics.append(said)
 
     def unset_hint(self, path: str) -> str:
         """Why a missing file's path may be as it is: it holds the default of an
@@ -846,6 +855,7 @@ class Ros1Loader:
         inner.item = scope.item.add(LaunchItem(
             "file", self.relpath(filename), where, namespace=inner.ns,
             condition=guard))
+        inner.reached_from = scope.reached_from if is_upstream(where.file or "") else where
         if pass_all:
             assert inner.include_args is not None
             for name, value in scope.args.items():

@@ -112,6 +112,10 @@ class Scope:
     # the unknown parts of ``ns``, in order (each ``?`` of it): which values they are
     # (``same_unknowns``)
     ns_unknowns: tuple[Unknown, ...] = ()
+    # the include, written in a workspace file, through which an installed package's own
+    # launch file (read from its model, upstream) is read: what the workspace can change
+    # about a problem said there (``Loader.report``); None in the workspace's files
+    reached_from: Location | None = None
 
     @classmethod
     def root(cls, path: str, args: dict[str, Value], namespace: str = "/") -> Scope:

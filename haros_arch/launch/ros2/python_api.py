@@ -726,6 +726,17 @@ def dashing_keywords(i: Interpreter, k: Kwargs, n: ast.AST, action: str) -> None
 def node(container: bool) -> Builder:
     def build(i: Interpreter, a: Args, k: Kwargs, n: ast.AST) -> Any:
         dashing_keywords(i, k, n, "ComposableNodeContainer" if container else "Node")
+        if "executable" not in k and "node_executable" not in k and not any(
+                kw.arg is None for kw in getattr(n, "keywords", ())):
+            # launch_ros' Node takes ``executable`` as a required keyword (Dashing's
+            # ``node_executable``), and LifecycleNode and ComposableNodeContainer hand
+            # theirs on to it: without it the call raises TypeError and the launch file
+            # does not load (sjtu_drone e33e86e set ``node.executable`` after the call);
+            # a ``**dict`` not known here may hold it
+            callee = getattr(getattr(n, "func", None), "attr", None) or getattr(
+                getattr(n, "func", None), "id", "Node")
+            reason = "TypeError: missing required keyword-only argument: 'executable'"
+            return i.failed(n, f"{callee}(...) fails: {reason}", reason)
         action = e.NodeAction(
             text_or_none(k.get("package", k.get("node_package"))),
             text_or_none(k.get("executable", k.get("node_executable"))),
