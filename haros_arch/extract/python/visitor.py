@@ -1083,7 +1083,11 @@ class Walker:
                 for made in self.calls[start:]:
                     made.name = _remote(target.remote, made.name)
         elif isinstance(target, FunctionInfo | BoundMethod):
+            self._classes_handed(call, frame)
             self._inline(target, call, frame, conds)
+        elif isinstance(target, Unknown) and not (
+                isinstance(call.func, ast.Name) and call.func.id in _TAKE_CLASSES):
+            self._classes_handed(call, frame)
         elif isinstance(target, ClassInfo):
             init = ev.method(target, "__init__")
             self._constructed.update(id(c) for c in ev.mro(target))
@@ -1094,13 +1098,36 @@ class Walker:
                 for base in ev.bases(used):
                     if isinstance(base, Ref):
                         self._unseen_class(base, call, frame, base=True)
-            # its methods and those it inherits (rosserial_arduino's SerialClient runs
-            # rosserial_python's, whose run() sets up the device's topics)
-            for used in ev.mro(target):
-                if used.module.path not in self.main and used not in self._used_classes:
-                    self._used_classes.append(used)
+            self._use_class(target)
             if init is not None:
                 self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
+
+    def _use_class(self, target: ClassInfo) -> None:
+        """The methods of a class the program builds, and those it inherits, walked
+        (rosserial_arduino's SerialClient runs rosserial_python's, whose run() sets up
+        the device's topics)."""
+        for used in self.evaluator.mro(target):
+            if used.module.path not in self.main and used not in self._used_classes:
+                self._used_classes.append(used)
+
+    def _classes_handed(self, call: ast.Call, frame: Frame) -> None:
+        """A class of the workspace given, as a value, to a function of the workspace
+        or to a callee the walk does not know may be built where the walk does not
+        follow it (nova's python_control2:
+        ``PythonControl(node).with_hardware("arm", QCMDHardware)`` keeps the class in a
+        ``DeferredConstructor``, which runs ``self.cls.__init__(instance, ...)`` once the
+        node spins; QCMDHardware declares ``hardware.<name>.can_id``): it counts as
+        built, its methods walked as those of a class the program builds, with what
+        its code does not know left ``?``."""
+        for given in (*call.args, *(k.value for k in call.keywords)):
+            if isinstance(given, ast.Starred):
+                given = given.value
+            if not isinstance(given, ast.Name | ast.Attribute):
+                continue
+            value = self.evaluator.eval(given, frame)
+            if isinstance(value, ClassInfo):
+                self._constructed.update(id(c) for c in self.evaluator.mro(value))
+                self._use_class(value)
 
     def _setattr(self, call: ast.Call, frame: Frame) -> ast.Assign | None:
         """The builtin ``setattr(obj, name, value)`` with a name known statically, as the
@@ -2379,6 +2406,12 @@ def _foreign(module: str) -> bool:
 
     return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
         module not in api_modules())
+
+
+# builtins given a class that they never build
+_TAKE_CLASSES = frozenset({"isinstance", "issubclass", "super", "type", "getattr", "hasattr",
+                           "setattr", "delattr", "vars", "dir", "id", "repr", "str", "print",
+                           "hash", "callable"})
 
 
 # the packages whose classes the API tables model (by their first module name)
