@@ -2210,12 +2210,17 @@ def _converted_locals(tree: ast.Module) -> frozenset[int]:
     """The calls (ids) whose value a function (or the module's own code) keeps in a
     local it assigns once and uses only where any type will do: converted (``int(x)``,
     ``str(x)``, ``float(x)``, ``bool(x)``) or formatted (``'{}'.format(x)``, ``'%s' %
-    x``, ``f'{x}'``). A parameter read so has no type of its own, as one converted where
-    it is read (mbzirc2020's c3_starter reads ``~ground_id`` with the default ``'0'``
-    and uses ``int(ground_id)``: the launch file's integer 0 is as good)."""
+    x``, ``f'{x}'``), or, in a function or a script's ``if __name__ == '__main__':``, not
+    at all. A parameter read so has no type of its own, as one converted where it is
+    read (mbzirc2020's c3_starter reads ``~ground_id`` with the
+    default ``'0'`` and uses ``int(ground_id)``: the launch file's integer 0 is as good;
+    mobiman's plot_ocs2_log.py never uses its ``mpc_flag``)."""
     found: set[int] = set()
     scopes: list[ast.AST] = [tree, *(n for n in ast.walk(tree)
                                      if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef))]
+    scripted = {id(n) for guard in tree.body if isinstance(guard, ast.If)
+                and is_main_guard(guard.test) for statement in guard.body
+                for n in ast.walk(statement)}
     for scope in scopes:
         nodes = list(_scope_nodes(scope))
         stores: dict[str, list[ast.AST]] = {}
@@ -2233,7 +2238,10 @@ def _converted_locals(tree: ast.Module) -> frozenset[int]:
             name = node.targets[0].id
             loads = [n for n in ast.walk(scope) if isinstance(n, ast.Name)
                      and n.id == name and isinstance(n.ctx, ast.Load)]
-            if len(stores.get(name, ())) == 1 and loads and all(
+            # (a module's own global may be used by a module that imports it, unless
+            # the script's ``if __name__ == '__main__':`` assigns it)
+            if len(stores.get(name, ())) == 1 and (
+                    loads or scope is not tree or id(node) in scripted) and all(
                     id(n) in agnostic for n in loads):
                 found.add(id(node.value))
     return frozenset(found)
