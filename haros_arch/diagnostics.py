@@ -1080,8 +1080,9 @@ CATALOGUE: dict[str, Entry] = {
         "error", "Python syntax error: {detail}",
         "The Python file could not be parsed (nor read as Python 2 after repairing its "
         "print/exec/except statements, nor with Python 3.12's f-strings, whose fields "
-        "may span lines or reuse the f-string's quotes, written triple-quoted); it gives "
-        "no calls."),
+        "may span lines or reuse the f-string's quotes, written triple-quoted, and whose "
+        "strings in fields may hold escapes, written as the characters they stand for); "
+        "it gives no calls."),
     "PY_PYTHON2": Entry(
         "info", "Python 2 syntax; read after a line-preserving repair",
         "The file uses Python 2 statements (print, exec, 'except E, e') or indents a "

@@ -160,3 +160,28 @@ def test_a_read_kept_in_a_local_the_code_only_converts_has_no_type_of_its_own(tm
     got = [(c.name, c.type) for c in result.calls if c.kind == "read"]
     assert got == [("~ground_id", None), ("~facade_id", None), ("~port", "str"),
                    ("~rate", "str")]
+
+
+def test_a_read_kept_in_a_local_never_used_has_no_type_of_its_own(tmp_path):
+    """mobiman's plot_ocs2_log.py: ``mpc_flag = rospy.get_param('mpc_flag', 2)`` under its
+    ``if __name__ == '__main__':``, and the name is never used; its YAML sets ``mpc_flag:
+    false``, and parameter-type-mismatch said "set as bool but read as int" of a value
+    nothing reads. A local used as itself keeps its default's type, and so does a
+    module's global outside the main guard, which another module may import."""
+    source = tmp_path / "node.py"
+    source.write_text(
+        "import rospy\n"
+        "def main():\n"
+        "    rospy.init_node('plotter')\n"
+        "    mpc_flag = rospy.get_param('mpc_flag', 2)\n"
+        "    digits = rospy.get_param('n_round_digit', 2)\n"
+        "    print(round(1.2345, digits))\n"
+        "main()\n"
+        "shared = rospy.get_param('shared', 2)\n"
+        "if __name__ == '__main__':\n"
+        "    option = rospy.get_param('option', 0)\n")
+    result = extract_python([str(source)], Workspace(root=str(tmp_path)), package="p")
+    got = [(c.name, c.type) for c in result.calls if c.kind == "read"]
+    # (a module's global another module may import keeps its type)
+    assert got == [("mpc_flag", None), ("n_round_digit", "int"), ("shared", "int"),
+                   ("option", None)]

@@ -96,3 +96,43 @@ def test_a_file_another_node_writes_and_a_search_path_are_judged_by_their_parts(
          "which is not there", 7),
         ("arena.launch", "node other is given the path sim/worlds/other.world on its "
          "command line, which is not there", 7)]
+
+
+XACRO_CMAKE = """cmake_minimum_required(VERSION 3.0.2)
+project(sim)
+find_package(catkin REQUIRED COMPONENTS xacro)
+catkin_package()
+xacro_add_files(
+  worlds/ocean.world.xacro
+  worlds/dock.world.xacro
+  INORDER INSTALL DESTINATION worlds)
+xacro_add_files(worlds/lake.world.xacro INORDER)
+xacro_add_xacro_file(worlds/river.world.xacro)
+xacro_install(river ${XACRO_OUTPUT_FILE} DESTINATION worlds)
+"""
+
+MADE = """<launch>
+  <node pkg="sim" type="gzserver" name="ocean" args="$(find sim)/worlds/ocean.world"/>
+  <node pkg="sim" type="gzserver" name="dock" args="$(find sim)/worlds/dock.world"/>
+  <node pkg="sim" type="gzserver" name="river" args="$(find sim)/worlds/river.world"/>
+  <node pkg="sim" type="gzserver" name="lake" args="$(find sim)/worlds/lake.world"/>
+  <node pkg="sim" type="gzserver" name="pond" args="$(find sim)/worlds/pond.world"/>
+</launch>
+"""
+
+
+def test_a_world_the_build_makes_with_xacro_into_the_share_folder(write_tree) -> None:
+    # vrx_gazebo (as SINGABOAT-VRX's copy has it): xacro_add_files(worlds/*.world.xacro
+    # INSTALL DESTINATION worlds) makes the worlds its launch files give gzserver as
+    # $(find vrx_gazebo)/worlds/x.world, which roslaunch finds in the devel or install
+    # share folder; one made but not installed (lake) stays in the build folder
+    files = {"src/sim/package.xml": package_xml("sim", "catkin"),
+             "src/sim/CMakeLists.txt": XACRO_CMAKE,
+             "src/sim/launch/sea.launch": MADE}
+    for name in ("ocean", "dock", "lake", "river", "pond"):
+        files[f"src/sim/worlds/{name}.world.xacro"] = "<sdf/>\n"
+    root = write_tree(files)
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/sim/launch/sea.launch"), ws, {}, {})
+    assert [(m.split(" is given")[0], line) for _, m, line in _said(model)] == [
+        ("node lake", 5), ("node pond", 6)]

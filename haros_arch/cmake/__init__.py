@@ -13,6 +13,7 @@ import dataclasses
 import functools
 import os
 import re
+import stat
 from collections.abc import Callable
 
 from .. import diagnostics as diag
@@ -289,7 +290,9 @@ def option_gated(package: Package, workspace: Workspace
 
 def installed_program(package: Package, workspace: Workspace, name: str) -> str | None:
     """The file the package's CMake files install as the program ``name``
-    (``install(PROGRAMS ...)``, ``catkin_install_python``) when it is there and no
+    (``install(PROGRAMS ...)``, ``catkin_install_python``, or an executable file of a
+    folder ``install(DIRECTORY ... DESTINATION lib/... USE_SOURCE_PERMISSIONS)`` copies:
+    ateam_bringup's ``scripts/scream_if_wifi_enabled.sh``) when it is there and no
     Python program (``scripts`` makes those nodes): a shell script or a prebuilt binary,
     which ros2 launch finds in the package's lib folder and runs, and which this tool does
     not read; None otherwise."""
@@ -300,6 +303,13 @@ def installed_program(package: Package, workspace: Workspace, name: str) -> str 
         if program.name == name and os.path.isfile(program.path) and not is_python(
                 program.path):
             return program.path
+    if os.sep in name or name in (".", ".."):
+        return None
+    for folder in interpreter.program_dirs:
+        path = os.path.join(folder.path, name)
+        if os.path.isfile(path) and os.stat(path).st_mode & stat.S_IXUSR and not is_python(
+                path):
+            return path
     return None
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import fnmatch
 import glob
 import os
+import posixpath
 import re
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
@@ -1471,6 +1472,95 @@ def _ament_auto_package(it: Interpreter, command: Invocation, args: list[str]) -
     it.installs.append(Install("DIRECTORY", [*folders, "DESTINATION", destination],
                                it.source_dir, it.current_conditions(), command.line,
                                command.column, command.file))
+
+
+# xacro's CMake functions: the options that take no value, and those that take one
+_XACRO_FLAGS = frozenset({"INORDER", "INSTALL", "OPTIONAL"})
+_XACRO_VALUED = frozenset({"OUTPUT", "TARGET", "DESTINATION"})
+
+
+def _xacro_args(args: list[str]) -> tuple[list[str], dict[str, str], set[str]]:
+    """The inputs of xacro's ``xacro_add_files`` / ``xacro_add_xacro_file`` (``REMAP``'s
+    words dropped), the options with a value, and the flags given."""
+    inputs: list[str] = []
+    valued: dict[str, str] = {}
+    flags: set[str] = set()
+    at, remap = 0, False
+    while at < len(args):
+        word = args[at]
+        if word in _XACRO_FLAGS:
+            flags.add(word)
+            remap = False
+        elif word in _XACRO_VALUED and at + 1 < len(args):
+            valued[word] = args[at + 1]
+            at += 1
+            remap = False
+        elif word in ("REMAP", "DEPENDS"):
+            remap = True
+        elif not remap:
+            inputs.append(word)
+        at += 1
+    return inputs, valued, flags
+
+
+def _xacro_output(it: Interpreter, given: str, output: str | None) -> str | None:
+    """Where xacro's CMake functions write the file made of ``given``: ``output`` (else
+    ``given`` without ``.xacro``), relative to the build folder."""
+    name = output or (given[:-len(".xacro")] if given.endswith(".xacro") else None)
+    if not name:
+        return None
+    return os.path.normpath(os.path.join(it.get("CMAKE_CURRENT_BINARY_DIR") or it.source_dir,
+                                         name))
+
+
+def _xacro_install(it: Interpreter, command: Invocation, outputs: list[str],
+                   destination: str) -> None:
+    """xacro_install's rule: each made file into ``share/<project>/<destination>``, in
+    the devel space as in the install space, where roslaunch's ``$(find pkg)/path``
+    looks before the package's own folder (vrx_gazebo's worlds)."""
+    share = f"share/{it.get('PROJECT_NAME') or ''}"
+    it.installs.append(Install(
+        "FILES", [*outputs, "DESTINATION", posixpath.join(share, destination) if destination
+                  else share], it.source_dir, it.current_conditions(), command.line,
+        command.column, command.file))
+
+
+@handles("xacro_add_files")
+def _xacro_add_files(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """xacro's ``xacro_add_files(file... [INSTALL [DESTINATION path]])``: each file run
+    through xacro into the build folder (``worlds/ocean.world.xacro`` makes
+    ``worlds/ocean.world`` there); with ``INSTALL``, put in the package's share folder
+    (``xacro_install``), so a launch file's ``$(find vrx_gazebo)/worlds/ocean.world``
+    is there when it runs though no checkout holds it."""
+    inputs, valued, flags = _xacro_args(args)
+    outputs = [made for made in (_xacro_output(it, given, valued.get("OUTPUT"))
+                                 for given in inputs) if made is not None]
+    if "INSTALL" in flags and outputs:
+        _xacro_install(it, command, outputs, valued.get("DESTINATION", ""))
+
+
+@handles("xacro_add_xacro_file")
+def _xacro_add_xacro_file(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``xacro_add_xacro_file(input [output] ... [OUTPUT variable])``: the path of the
+    file made, in the build folder, set in ``variable`` (``XACRO_OUTPUT_FILE``) for a
+    later ``xacro_install``."""
+    inputs, valued, _ = _xacro_args(args)
+    if not inputs:
+        return
+    made = _xacro_output(it, inputs[0], inputs[1] if len(inputs) > 1 else None)
+    if made is not None:
+        it.set(valued.get("OUTPUT", "XACRO_OUTPUT_FILE"), made)
+
+
+@handles("xacro_install")
+def _xacro_install_command(it: Interpreter, command: Invocation, args: list[str]) -> None:
+    """``xacro_install(target output... DESTINATION path)``."""
+    if "DESTINATION" not in args[:-1] or len(args) < 2:
+        return
+    at = args.index("DESTINATION")
+    outputs = [os.path.normpath(os.path.join(it.get("CMAKE_CURRENT_BINARY_DIR") or
+                                             it.source_dir, made)) for made in args[1:at]]
+    _xacro_install(it, command, outputs, args[at + 1])
 
 
 @handles("pluginlib_export_plugin_description_file")

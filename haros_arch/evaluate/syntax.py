@@ -9,8 +9,12 @@ string inside a field quoted as the f-string itself is (``f"{d["key"]}"``). When
 text does not parse and holds such an f-string, each one is written triple-quoted
 (``f'''...'''``: its fields may then span lines and hold strings in either quote, as
 3.6 to 3.11 allow) and the text parsed again; the columns of the tree are put back on
-the file's own lines. A field that holds a backslash or a comment (also new in 3.12) is
-not rewritten: the file's syntax error stands.
+the file's own lines. A string in a field whose escapes (also new in 3.12 there) stand
+for characters a quoted string may hold as they are (nova's ``f"{'\\033[1;32m'}..."``, a
+terminal colour) is written with those characters and padded with blanks to its own
+width, so its value and every column stay. Any other backslash in a field (an escape of
+a line break, a quote or a backslash: ``{'\\n'.join(...)}``), or a comment there, is not
+rewritten: the file's syntax error stands.
 
 Python 3.12 also brings type parameter lists (PEP 695): ``class Task[T, U](Base):``,
 ``def first[T](items: list[T]) -> T:`` and the ``type Name[T] = ...`` statement
@@ -136,6 +140,7 @@ def _nested_f_strings(text: str) -> tuple[str, dict[int, list[int]]] | None:
     triple-quoted, and, per line (1-based), the columns of the rewritten text where two
     quote characters were added; None when there is none, or one cannot be rewritten."""
     edits: list[tuple[int, int, str]] = []  # opening quote, closing quote, new quote
+    swaps: list[tuple[int, str]] = []  # a string in a field, written without escapes
     i, n = 0, len(text)
     try:
         while i < n:
@@ -144,20 +149,22 @@ def _nested_f_strings(text: str) -> tuple[str, dict[int, list[int]]] | None:
                 end = text.find("\n", i)
                 i = n if end == -1 else end
             elif char in _QUOTES:
-                i = _top_string(text, i, "", edits)
+                i = _top_string(text, i, "", edits, swaps)
             elif char.isalpha() or char == "_":
                 start = i
                 while i < n and (text[i].isalnum() or text[i] == "_"):
                     i += 1
                 word = text[start:i]
                 if i < n and text[i] in _QUOTES and word.lower() in _PREFIXES:
-                    i = _top_string(text, i, word.lower(), edits)
+                    i = _top_string(text, i, word.lower(), edits, swaps)
             else:
                 i += 1
     except _Unreadable:
         return None
-    if not edits:
+    if not edits and not swaps:
         return None
+    for start, written in swaps:  # each as wide as the string it replaces
+        text = text[:start] + written + text[start + len(written):]
     pieces: list[str] = []
     added: dict[int, list[int]] = {}
     last = 0
@@ -177,10 +184,12 @@ def _nested_f_strings(text: str) -> tuple[str, dict[int, list[int]]] | None:
     return rewritten, added
 
 
-def _top_string(text: str, at: int, prefix: str, edits: list[tuple[int, int, str]]) -> int:
+def _top_string(text: str, at: int, prefix: str, edits: list[tuple[int, int, str]],
+                swaps: list[tuple[int, str]]) -> int:
     """Scan the string whose quote is at ``at``; record it in ``edits`` when it is a
-    single-quoted f-string that needs rewriting. The index after it."""
-    end, needs = _string(text, at, prefix)
+    single-quoted f-string that needs rewriting, and in ``swaps`` each string of its
+    fields to be written without escapes. The index after it."""
+    end, needs = _string(text, at, prefix, swaps)
     if needs:
         body = text[at + 1:end - 1]
         quote = next((q for q in (text[at], *_QUOTES) if q * 3 not in body
@@ -191,9 +200,11 @@ def _top_string(text: str, at: int, prefix: str, edits: list[tuple[int, int, str
     return end
 
 
-def _string(text: str, at: int, prefix: str) -> tuple[int, bool]:
+def _string(text: str, at: int, prefix: str,
+            swaps: list[tuple[int, str]]) -> tuple[int, bool]:
     """The index after the string whose quote is at ``at`` (``prefix`` before it), and
-    whether it is a single-quoted f-string that only Python 3.12 reads."""
+    whether it is a single-quoted f-string that only Python 3.12 reads (``swaps``: as
+    ``_top_string``)."""
     quote = text[at]
     width = 3 if text.startswith(quote * 3, at) else 1
     fmt = "f" in prefix
@@ -212,17 +223,19 @@ def _string(text: str, at: int, prefix: str) -> tuple[int, bool]:
             if text.startswith("{{", i):
                 i += 2
                 continue
-            i, field = _field(text, i + 1, quote, width)
+            i, field = _field(text, i + 1, quote, width, swaps)
             needs = needs or (field and width == 1)
             continue
         i += 1
     raise _Unreadable
 
 
-def _field(text: str, at: int, quote: str, width: int) -> tuple[int, bool]:
+def _field(text: str, at: int, quote: str, width: int,
+           swaps: list[tuple[int, str]]) -> tuple[int, bool]:
     """The index after the replacement field that starts at ``at`` (after its ``{``) of
     an f-string quoted by ``quote`` ``width`` times, and whether the field needs Python
-    3.12 (a line break in it, or a string quoted as the f-string)."""
+    3.12 (a line break in it, or a string quoted as the f-string). A string in the field
+    with a backslash goes to ``swaps``, written without escapes (``_unescaped``)."""
     depth, needs = 0, False
     i, n = at, len(text)
     while i < n:
@@ -248,14 +261,36 @@ def _field(text: str, at: int, quote: str, width: int) -> tuple[int, bool]:
                 inner = text[i]
                 if inner == quote and (width == 3 or text.startswith(inner * 3, i)):
                     raise _Unreadable  # the f-string's own quotes, tripled
-                end, inner_needs = _string(text, i, word)
+                end, inner_needs = _string(text, i, word, swaps)
                 if inner_needs:
                     raise _Unreadable  # one level of rewriting only
+                if "\\" in text[i:end]:
+                    swaps.append((start, _unescaped(text[start:end], quote)))
                 needs = needs or inner == quote
                 i = end
             continue
         i += 1
     raise _Unreadable
+
+
+def _unescaped(literal: str, quote: str) -> str:
+    """The string ``literal`` (a plain or ``u`` string, on one line, in a field of an
+    f-string quoted by ``quote``) written without backslashes, the characters its
+    escapes stand for as they are and blanks after it to its width: an escape is two
+    characters or more for one. ``_Unreadable`` when a character it stands for cannot
+    be written so (a line break, a backslash, a NUL, a quote of both kinds)."""
+    if literal[:1].lower() not in _QUOTES + "u" or "\n" in literal:
+        raise _Unreadable  # raw, bytes or f-strings: their backslashes are themselves
+    try:
+        value = ast.literal_eval(literal)
+    except (SyntaxError, ValueError):
+        raise _Unreadable from None
+    if not isinstance(value, str) or any(c in value for c in "\\\n\r\0"):
+        raise _Unreadable
+    new = next((q for q in _QUOTES if q != quote and q not in value), None)
+    if new is None:
+        raise _Unreadable
+    return (new + value + new).ljust(len(literal))
 
 
 def _shift_back(tree: ast.AST, added: dict[int, list[int]]) -> None:

@@ -15,6 +15,7 @@ import re
 from collections.abc import Callable
 
 from ..model.values import UNKNOWN_MARK
+from ..share import generated_at
 from ..workspace import Workspace
 
 # the folders of one machine: a user's home (Linux, macOS), an administrator's, mounts.
@@ -52,14 +53,18 @@ def missing_argument_paths(words: list[str], workspace: Workspace,
     workspace folder and are not there: ROS 1's ``$(find pkg)/...`` gives the
     package's own folder, so such a file is missing where the node runs as well
     (gazebo_ros' range_world.launch handed gzserver ``$(find gazebo_plugins)/test/
-    test_worlds/gazebo_ros_range.W()orld``). ROS 2's share folder holds what the
-    package's build installs: ``installed`` gives the source file a path of it stands
-    for (``share.share_source``), or None for a file the build makes, which is not
-    judged (mycobot_ros2's detect_marker.launch.py gave rviz2 ``-d`` its package's
-    ``config/mypal_260.rviz``, not there). A word with an unknown part, or in a git
-    submodule not checked out here, is not judged; nor is one the program may write,
-    given to an option of output (map_saver's ``-f $(find pkg)/maps/new``, rosbag's
-    ``-O``, ``--log_file=...``, ``_save_path:=...``)."""
+    test_worlds/gazebo_ros_range.W()orld``), unless the package's build makes it
+    into its share folder: roslaunch's ``$(find pkg)/path`` looks for ``path`` in the
+    devel and install spaces' share folders before the package's own (vrx_gazebo's
+    ``xacro_add_files(worlds/ocean.world.xacro INSTALL DESTINATION worlds)`` makes
+    the ``worlds/ocean.world`` its launch files give gzserver). ROS 2's share folder
+    holds what the package's build installs: ``installed`` gives the source file a
+    path of it stands for (``share.share_source``), or None for a file the build
+    makes, which is not judged (mycobot_ros2's detect_marker.launch.py gave rviz2
+    ``-d`` its package's ``config/mypal_260.rviz``, not there). A word with an
+    unknown part, or in a git submodule not checked out here, is not judged; nor is
+    one the program may write, given to an option of output (map_saver's ``-f
+    $(find pkg)/maps/new``, rosbag's ``-O``, ``--log_file=...``, ``_save_path:=...``)."""
     missing: list[str] = []
     for candidate in _path_words(words, output=False):
         for path in _path_list(candidate.strip("'\"")):
@@ -68,6 +73,8 @@ def missing_argument_paths(words: list[str], workspace: Workspace,
             source: str | None = os.path.normpath(path)
             if installed is not None:
                 source = installed(source)  # type: ignore[arg-type]
+            elif generated_at(workspace, source) is not None:  # type: ignore[arg-type]
+                continue
             if source is None or not workspace.holds(source):
                 continue
             if not os.path.exists(source) and workspace.submodule_of(source) is None \

@@ -1085,7 +1085,11 @@ class Walker:
                 for made in self.calls[start:]:
                     made.name = _remote(target.remote, made.name)
         elif isinstance(target, FunctionInfo | BoundMethod):
+            self._classes_handed(call, frame)
             self._inline(target, call, frame, conds)
+        elif isinstance(target, Unknown) and not (
+                isinstance(call.func, ast.Name) and call.func.id in _TAKE_CLASSES):
+            self._classes_handed(call, frame)
         elif isinstance(target, ClassInfo):
             init = ev.method(target, "__init__")
             self._constructed.update(id(c) for c in ev.mro(target))
@@ -1096,13 +1100,36 @@ class Walker:
                 for base in ev.bases(used):
                     if isinstance(base, Ref):
                         self._unseen_class(base, call, frame, base=True)
-            # its methods and those it inherits (rosserial_arduino's SerialClient runs
-            # rosserial_python's, whose run() sets up the device's topics)
-            for used in ev.mro(target):
-                if used.module.path not in self.main and used not in self._used_classes:
-                    self._used_classes.append(used)
+            self._use_class(target)
             if init is not None:
                 self._inline(BoundMethod(ev.new(target), init), call, frame, conds)
+
+    def _use_class(self, target: ClassInfo) -> None:
+        """The methods of a class the program builds, and those it inherits, walked
+        (rosserial_arduino's SerialClient runs rosserial_python's, whose run() sets up
+        the device's topics)."""
+        for used in self.evaluator.mro(target):
+            if used.module.path not in self.main and used not in self._used_classes:
+                self._used_classes.append(used)
+
+    def _classes_handed(self, call: ast.Call, frame: Frame) -> None:
+        """A class of the workspace given, as a value, to a function of the workspace
+        or to a callee the walk does not know may be built where the walk does not
+        follow it (nova's python_control2:
+        ``PythonControl(node).with_hardware("arm", QCMDHardware)`` keeps the class in a
+        ``DeferredConstructor``, which runs ``self.cls.__init__(instance, ...)`` once the
+        node spins; QCMDHardware declares ``hardware.<name>.can_id``): it counts as
+        built, its methods walked as those of a class the program builds, with what
+        its code does not know left ``?``."""
+        for given in (*call.args, *(k.value for k in call.keywords)):
+            if isinstance(given, ast.Starred):
+                given = given.value
+            if not isinstance(given, ast.Name | ast.Attribute):
+                continue
+            value = self.evaluator.eval(given, frame)
+            if isinstance(value, ClassInfo):
+                self._constructed.update(id(c) for c in self.evaluator.mro(value))
+                self._use_class(value)
 
     def _setattr(self, call: ast.Call, frame: Frame) -> ast.Assign | None:
         """The builtin ``setattr(obj, name, value)`` with a name known statically, as the
@@ -2230,12 +2257,17 @@ def _converted_locals(tree: ast.Module) -> frozenset[int]:
     """The calls (ids) whose value a function (or the module's own code) keeps in a
     local it assigns once and uses only where any type will do: converted (``int(x)``,
     ``str(x)``, ``float(x)``, ``bool(x)``) or formatted (``'{}'.format(x)``, ``'%s' %
-    x``, ``f'{x}'``). A parameter read so has no type of its own, as one converted where
-    it is read (mbzirc2020's c3_starter reads ``~ground_id`` with the default ``'0'``
-    and uses ``int(ground_id)``: the launch file's integer 0 is as good)."""
+    x``, ``f'{x}'``), or, in a function or a script's ``if __name__ == '__main__':``, not
+    at all. A parameter read so has no type of its own, as one converted where it is
+    read (mbzirc2020's c3_starter reads ``~ground_id`` with the
+    default ``'0'`` and uses ``int(ground_id)``: the launch file's integer 0 is as good;
+    mobiman's plot_ocs2_log.py never uses its ``mpc_flag``)."""
     found: set[int] = set()
     scopes: list[ast.AST] = [tree, *(n for n in ast.walk(tree)
                                      if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef))]
+    scripted = {id(n) for guard in tree.body if isinstance(guard, ast.If)
+                and is_main_guard(guard.test) for statement in guard.body
+                for n in ast.walk(statement)}
     for scope in scopes:
         nodes = list(_scope_nodes(scope))
         stores: dict[str, list[ast.AST]] = {}
@@ -2253,7 +2285,10 @@ def _converted_locals(tree: ast.Module) -> frozenset[int]:
             name = node.targets[0].id
             loads = [n for n in ast.walk(scope) if isinstance(n, ast.Name)
                      and n.id == name and isinstance(n.ctx, ast.Load)]
-            if len(stores.get(name, ())) == 1 and loads and all(
+            # (a module's own global may be used by a module that imports it, unless
+            # the script's ``if __name__ == '__main__':`` assigns it)
+            if len(stores.get(name, ())) == 1 and (
+                    loads or scope is not tree or id(node) in scripted) and all(
                     id(n) in agnostic for n in loads):
                 found.add(id(node.value))
     return frozenset(found)
@@ -2426,6 +2461,12 @@ def _foreign(module: str) -> bool:
 
     return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
         module not in api_modules())
+
+
+# builtins given a class that they never build
+_TAKE_CLASSES = frozenset({"isinstance", "issubclass", "super", "type", "getattr", "hasattr",
+                           "setattr", "delattr", "vars", "dir", "id", "repr", "str", "print",
+                           "hash", "callable"})
 
 
 # the packages whose classes the API tables model (by their first module name)

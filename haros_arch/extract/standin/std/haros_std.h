@@ -1656,6 +1656,14 @@ template<class F> struct haros_bind_t {
   template<class... A> void operator()(A&&... args) const;
 };
 template<class F, class... A> haros_bind_t<F> bind(F&& f, A&&... args);
+#if __cplusplus > 201703L
+// C++20's bind_front, C++23's bind_back (ateam's nodes: rclcpp::on_shutdown(
+// std::bind_front(&JoystickControlNode::SendStop, this)))
+template<class F, class... A> haros_bind_t<F> bind_front(F&& f, A&&... args);
+#endif
+#if __cplusplus > 202002L
+template<class F, class... A> haros_bind_t<F> bind_back(F&& f, A&&... args);
+#endif
 template<class M> haros_bind_t<M> mem_fn(M member) noexcept;
 template<class T> struct reference_wrapper {
   reference_wrapper(T& t) noexcept;
