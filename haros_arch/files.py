@@ -41,6 +41,12 @@ def note_read(path: str) -> None:
         found.add(path)
 
 
+# C++ sources and headers: the files the run cache's outer key names without their
+# content (``runcache``), whose facts ``facts.KeptFacts`` compares by content
+CPP_FILES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".h", ".hh", ".hpp", ".hxx", ".h++",
+             ".ipp", ".inl", ".tcc")
+
+
 def kept_in(memo: MutableMapping[K, Any], key: K, compute: Callable[[], V]) -> V:
     """``compute()``, kept in ``memo`` under ``key`` with the files it read: asked again,
     it reads them again for ``recording`` (what a package's build files give depends on

@@ -17,6 +17,7 @@ from . import diagnostics as diag
 from . import runcache
 from .distro_guess import guessed_distro, sole_distro
 from .extract import AUTO_CACHE, cpp_sources, extract_nodes, one_run
+from .facts import KeptFacts
 from .files import cache_folder, content_digest, recording
 from .manifest import other_builds
 from .model.diagnostic import said_once
@@ -113,13 +114,16 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
                 with _stage(options, "cache"):
                     return runcache.relocated(folder, earlier_key, counts, key, model,
                                               changed, workspace.root, project.name)
+    # the facts the build-file stage read off files in that run (``facts``)
+    facts = KeptFacts(earlier[1].get("facts") if earlier is not None else None)
     model = _analyse(project, env, options, record, others, built, moved,
-                     earlier[1].get("launched") if earlier is not None else None)
+                     earlier[1].get("launched") if earlier is not None else None, facts)
     with _stage(options, "cache"):
         if not runcache.kept_as(model, key):
             runcache.store(folder, key, model)
         if record:
             record["sources"] = runcache.sources(key)
+            record["facts"] = facts.to_data()
             runcache.store_outer(folder, outer, key, record)
     return model
 
@@ -241,7 +245,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
              record: dict[str, Any] | None, kept: dict[str, Any] | None = None,
              built: Any = None,
              moved: Callable[[Model, Workspace], Model | None] | None = None,
-             launched_before: Any = None) -> Model:
+             launched_before: Any = None, facts: KeptFacts | None = None) -> Model:
     """The run; ``record`` (when given) gets the C++ translation units of its nodes and
     what they gave, for ``_again``, and what the nodes of other languages gave (left
     empty when a node of another language reads a file named as C++: ``_units_tell``),
@@ -253,7 +257,8 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     ``launched_before``, what the launch files gave the nodes' stage in that run (the
     packages they want, the scripts rosrun finds for them: ``record["launched"]``),
     which the same files give again: the launch files are loaded only when that run's
-    model is not the answer (``_Launches``)."""
+    model is not the answer (``_Launches``); ``facts``, what the build-file stage reads
+    off files, from that run where they are unchanged, and kept for the next."""
     from . import graph, launch
     from .model.runtime import Configuration
     from .models.attach import Attacher
@@ -262,6 +267,7 @@ def _analyse(project: Project, env: Mapping[str, str], options: Options,
     with _stage(options, "scan"):  # folders and package manifests
         workspace = scan(project.workspace, env)
         workspace.source_distro = source_distro(project, env)
+        workspace.kept_facts = facts
     model = Model(project.name, diagnostics=list(workspace.diagnostics))
 
     project_file = Location(file=os.path.relpath(project.path))

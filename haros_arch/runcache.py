@@ -45,7 +45,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from . import __version__
 from .collector import held_back
 from .distro_guess import guessed_distro
-from .files import MAX_FILE_BYTES, content_digest, write_whole
+from .files import CPP_FILES, MAX_FILE_BYTES, content_digest, write_whole
 from .model.diagnostic import Diagnostic
 from .model.finding import Finding
 from .model.load import from_data
@@ -63,12 +63,10 @@ RACY_SECONDS = 2.0  # a file modified this recently is hashed again next time
 KEEP = 20  # entries kept per workspace (a run's model and its findings, per project,
 #           workspace state and environment: a few runs)
 WORKSPACES = 8  # workspaces whose entries are kept: those of the newest runs
-MAX_FILES = 200_000
+MAX_FILES = 200_000  # files in one snapshot; past it the run is not cached
 # variables a shell sets on its own as one moves and runs commands (the current folder is
 # in the key already): not inputs of a run
 SHELL_BOOKKEEPING = frozenset({"_", "OLDPWD", "PWD", "SHLVL"})
-CPP_FILES = (".c", ".cc", ".cpp", ".cxx", ".c++", ".h", ".hh", ".hpp", ".hxx", ".h++",
-             ".ipp", ".inl", ".tcc")  # files in one snapshot; past it the run is not cached
 TOOL = os.path.dirname(os.path.abspath(__file__))
 
 

@@ -11,6 +11,7 @@ from lxml import etree
 
 from . import diagnostics as diag
 from .diagnostics import Diagnostic
+from .facts import KeptFacts
 from .files import read_bytes
 from .manifest import parse_manifest, xml_parser
 from .model.location import Location
@@ -63,6 +64,9 @@ class Workspace:
     # what the build-file stage reads off a file, by kind and path
     # (``plugins.classes.remembered``), once per run
     file_facts: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)
+    # those an earlier run read off files unchanged since, and this run's, for the next
+    # (``facts.KeptFacts``; None: none kept)
+    kept_facts: KeptFacts | None = field(default=None, repr=False)
     # (package name, folder) -> its CMake interpreter and diagnostics
     # (``cmake._interpret``): a package whose libraries others link is read once
     interpreted: dict[tuple[str, str], object] = field(default_factory=dict, repr=False)
@@ -116,6 +120,7 @@ class Workspace:
         state["named_words"] = {}
         state["interpreted"] = {}
         state["file_facts"] = {}
+        state["kept_facts"] = None
         return state
 
     def package_of(self, path: str) -> Package | None:

@@ -64,6 +64,7 @@ class PackageFiles:
         # the words of each source (``classes.named_words``), kept by the workspace
         self.named_words = workspace.named_words
         self.file_facts = workspace.file_facts  # ``classes.remembered``
+        self.kept_facts = workspace.kept_facts
         # the workspace's packages, whose headers a file includes as ``<pkg/...>``
         self.packages = workspace.packages
 

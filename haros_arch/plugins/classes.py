@@ -25,6 +25,7 @@ from lxml import etree
 from .. import diagnostics as diag
 from ..ctext import code_only
 from ..diagnostics import Diagnostic
+from ..facts import KeptFacts
 from ..files import kept_in, read_bytes, read_text
 from ..manifest import xml_parser
 from ..model.conditions import Condition
@@ -404,7 +405,18 @@ def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T
     memo: dict[tuple[str, str], Any] | None = getattr(workspace, "file_facts", None)
     if memo is None:
         return compute()
-    return kept_in(memo, (kind, source), compute)
+    key = (kind, source)
+    kept: KeptFacts | None = getattr(workspace, "kept_facts", None)
+    if kept is None or key in memo:
+        return kept_in(memo, key, compute)
+    # an earlier run's, where the C++ files it was read from are unchanged (``facts``)
+    restored = kept.restore(kind, source)
+    if restored is not None:
+        memo[key] = restored
+    value = kept_in(memo, key, compute)
+    if restored is None:
+        kept.note(kind, source, *memo[key])
+    return value
 
 
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
