@@ -17,10 +17,12 @@ nor one that holds file texts (reading the file again is as cheap).
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
-from typing import Any
+from collections.abc import Callable, Iterable
+from typing import Any, TypeVar
 
-from .files import CPP_FILES, content_digest
+from .files import CPP_FILES, content_digest, kept_in
+
+T = TypeVar("T")
 
 # kinds of facts not kept: file texts (``classes._text``, ``_with_headers``)
 UNKEPT = ("text", "with headers ")
@@ -97,6 +99,27 @@ class KeptFacts:
         if path not in self._digests:
             self._digests[path] = content_digest(path)
         return self._digests[path]
+
+
+def remember(workspace: Any, kind: str, source: str, compute: Callable[[], T]) -> T:
+    """``compute()``, a fact of kind ``kind`` about ``source``, asked once per run where
+    ``workspace`` keeps such facts (its ``file_facts``, ``files.kept_in``), and taken
+    from an earlier run's where it keeps those (its ``kept_facts``) and the C++ files
+    it was read from are unchanged; else made, and kept for the next run."""
+    memo: dict[tuple[str, str], Any] | None = getattr(workspace, "file_facts", None)
+    if memo is None:
+        return compute()
+    key = (kind, source)
+    kept: KeptFacts | None = getattr(workspace, "kept_facts", None)
+    if kept is None or key in memo:
+        return kept_in(memo, key, compute)
+    restored = kept.restore(kind, source)
+    if restored is not None:
+        memo[key] = restored
+    value = kept_in(memo, key, compute)
+    if restored is None:
+        kept.note(kind, source, *memo[key])
+    return value
 
 
 def _key(kind: str, source: str) -> str:

@@ -90,8 +90,10 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
     if kept is not None:
         return kept
     others = built = None
+    # the facts the build-file stage read off files in that run (``facts``)
+    facts = KeptFacts(earlier[1].get("facts") if earlier is not None else None)
     if earlier is not None:  # only C++ files changed: the same model if they give the same
-        model = _again(project, env, options, folder, *earlier)
+        model = _again(project, env, options, folder, *earlier, facts)
         if model is not None:
             with _stage(options, "cache"):
                 runcache.store_alias(folder, key, earlier[0], outer)
@@ -114,8 +116,6 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
                 with _stage(options, "cache"):
                     return runcache.relocated(folder, earlier_key, counts, key, model,
                                               changed, workspace.root, project.name)
-    # the facts the build-file stage read off files in that run (``facts``)
-    facts = KeptFacts(earlier[1].get("facts") if earlier is not None else None)
     model = _analyse(project, env, options, record, others, built, moved,
                      earlier[1].get("launched") if earlier is not None else None, facts)
     with _stage(options, "cache"):
@@ -129,16 +129,19 @@ def _run(project: Project, environment: Mapping[str, str] | None, options: Optio
 
 
 def _again(project: Project, env: Mapping[str, str], options: Options, folder: str,
-           key: str, extraction: dict[str, Any]) -> Model | None:
+           key: str, extraction: dict[str, Any], facts: KeptFacts | None = None
+           ) -> Model | None:
     """The model of the run ``key`` when the C++ translation units of its nodes (in
     ``extraction``, batch by batch) give what they gave, and each batch the diagnostics
     it gave: its C++ nodes are then what they were. None otherwise. The other nodes
-    read no C++ file (``_units_tell``): their results stand."""
+    read no C++ file (``_units_tell``): their results stand. ``facts``: those the
+    build files gave that run (the include folders the units are parsed with)."""
     from .extract.cpp import CppBatch, unit_digests
 
     with _stage(options, "scan"):
         workspace = scan(project.workspace, env)
         workspace.source_distro = source_distro(project, env)
+        workspace.kept_facts = facts
     parts = extraction.get("parts")
     if not isinstance(parts, list) or not all(
             isinstance(part, list) and all(isinstance(p, str) for p in part)

@@ -41,7 +41,8 @@ from .cmake import parse_package as cmake_nodes
 from .cmake.interpreter import BINARY_ROOT
 from .cmake.targets import Configured, Install
 from .evaluate import syntax
-from .files import kept_in, read_text
+from .facts import remember
+from .files import read_text
 from .manifest import other_builds
 from .model.source import Package
 from .workspace import Workspace
@@ -242,7 +243,7 @@ def include_map(package: Package, workspace: Workspace) -> dict[str, str]:
                 found[relative] = source  # a later rule overwrites, as ``cmake --install``
         return found
 
-    return kept_in(workspace.file_facts, ("include map", package.root), compute)
+    return remember(workspace, "include map", package.root, compute)
 
 
 def _include_sub(destination: str, _name: str) -> str | None:

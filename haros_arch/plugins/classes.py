@@ -25,7 +25,7 @@ from lxml import etree
 from .. import diagnostics as diag
 from ..ctext import code_only
 from ..diagnostics import Diagnostic
-from ..facts import KeptFacts
+from ..facts import remember
 from ..files import kept_in, read_bytes, read_text
 from ..manifest import xml_parser
 from ..model.conditions import Condition
@@ -401,22 +401,9 @@ def _read_description(path: str, workspace: Files,
 def remembered(kind: str, source: str, workspace: Files, compute: Callable[[], T]) -> T:
     """What ``compute`` says of a file, asked once per run where the workspace keeps
     such facts (``Workspace.file_facts``: every executable linking a library, and every
-    package linking another's, asks them again)."""
-    memo: dict[tuple[str, str], Any] | None = getattr(workspace, "file_facts", None)
-    if memo is None:
-        return compute()
-    key = (kind, source)
-    kept: KeptFacts | None = getattr(workspace, "kept_facts", None)
-    if kept is None or key in memo:
-        return kept_in(memo, key, compute)
-    # an earlier run's, where the C++ files it was read from are unchanged (``facts``)
-    restored = kept.restore(kind, source)
-    if restored is not None:
-        memo[key] = restored
-    value = kept_in(memo, key, compute)
-    if restored is None:
-        kept.note(kind, source, *memo[key])
-    return value
+    package linking another's, asks them again), and taken from an earlier run where the
+    files it was read from are unchanged (``facts.remember``)."""
+    return remember(workspace, kind, source, compute)
 
 
 def exported_classes(path: str, workspace: Files) -> list[tuple[str, int]]:
