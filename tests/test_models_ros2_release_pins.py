@@ -8,7 +8,12 @@ repository's ``upstream/`` tags now, and humble has its own. The others were of 
 after the release: jazzy ublox 2.3.0 publishes ``fix`` and ``navpvt`` on the node's
 namespace, not ``~/fix``; jazzy usb_cam 0.8.1 declares no ``skip_device_check``; jazzy
 ouster_ros 0.14.1 no sync pulse or NMEA settings; humble navigation2 1.1.20's goal checkers
-and MPPI's goal angle critic no ``symmetric_yaw_tolerance``."""
+and MPPI's goal angle critic no ``symmetric_yaw_tolerance``. And some were of commits before
+it, which lack what the release reads: humble slam_toolbox 2.6.10's ``min_laser_range``,
+humble robot_localization 3.5.4's ``stamped_control``, jazzy teleop_twist_keyboard 2.4.1's
+``stamped`` (a launch file setting it got parameter-set-not-read), teleop_twist_joy 2.6.5's
+``publish_stamped_twist``, interactive_marker_twist_server 2.1.1's ``use_stamped_msgs``;
+jazzy openni2_camera 2.2.2 publishes ``depth_raw/image``, not ``depth/image_raw``."""
 
 from __future__ import annotations
 
@@ -67,6 +72,17 @@ def _calls(package: str, distro: str, executable: str) -> set[tuple[str, str]]:
      [("declare", "sync_pulse_out_angle"), ("declare", "columns_per_packet")]),
     ("nav2_controller", "humble", "nav2_controller::SimpleGoalChecker",
      [("read", "?.xy_goal_tolerance")], [("read", "?.symmetric_yaw_tolerance")]),
+    # pins before the release, rebuilt from the release repository's upstream/ tag
+    ("slam_toolbox", "humble", "async_slam_toolbox_node",
+     [("declare", "min_laser_range"), ("declare", "occupancy_threshold")], []),
+    ("robot_localization", "humble", "ekf_node", [("declare", "stamped_control")], []),
+    ("teleop_twist_keyboard", "jazzy", "teleop_twist_keyboard",
+     [("declare", "stamped"), ("declare", "frame_id")], []),
+    ("teleop_twist_joy", "jazzy", "teleop_node", [("declare", "publish_stamped_twist")], []),
+    ("interactive_marker_twist_server", "jazzy", "marker_server",
+     [("read", "use_stamped_msgs")], []),
+    ("openni2_camera", "jazzy", "openni2_camera_driver", [("publish", "depth_raw/image")],
+     [("publish", "depth/image_raw")]),
 ])
 def test_the_ros2_release_models_offer_what_the_release_does(package, distro, executable,
                                                             present, absent):
