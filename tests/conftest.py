@@ -85,6 +85,16 @@ def package_xml(name: str, build_type: str | None = None) -> str:
             "</package>\n")
 
 
+def copied_old(source: Path, target: Path) -> Path:
+    """A copy of the tree ``source`` at ``target``, every file dated long ago: the run
+    cache's snapshot trusts a file's size and time only when it is not recent."""
+    shutil.copytree(source, target)
+    for folder, _dirs, files in os.walk(target):
+        for name in files:
+            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
+    return target
+
+
 def only_case() -> str | None:
     """HAROS_ARCH_CASE=name narrows parametrised fixture tests to one case."""
     return os.environ.get("HAROS_ARCH_CASE")

@@ -14,16 +14,13 @@ from haros_arch import runcache
 from haros_arch.model.serialise import model_to_data
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
+from tests.conftest import copied_old
 
 FIXTURE = Path(__file__).resolve().parent.parent / "fixtures" / "python" / "several_nodes"
 
 
 def _copy(tmp_path: Path) -> Path:
-    shutil.copytree(FIXTURE, tmp_path / "ws")
-    for folder, _dirs, files in os.walk(tmp_path / "ws"):  # old enough to trust the index
-        for name in files:
-            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
-    return tmp_path / "ws" / "project.yaml"
+    return copied_old(FIXTURE, tmp_path / "ws") / "project.yaml"
 
 
 def _run(project: Path, cache: Path, env: dict[str, str] | None = None
@@ -181,11 +178,7 @@ PAPER = FIXTURE.parent.parent / "paper_minimal"
 
 
 def _copy_paper(tmp_path: Path) -> Path:
-    shutil.copytree(PAPER, tmp_path / "paper")
-    for folder, _dirs, files in os.walk(tmp_path / "paper"):
-        for name in files:
-            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
-    return tmp_path / "paper" / "project.yaml"
+    return copied_old(PAPER, tmp_path / "paper") / "project.yaml"
 
 
 def test_a_cpp_change_that_extracts_the_same_reuses_the_rest(tmp_path: Path) -> None:

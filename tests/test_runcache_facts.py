@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 from pathlib import Path
 
 import pytest
@@ -15,6 +14,7 @@ from haros_arch.facts import KeptFacts, decode, encode, same
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
 from haros_arch.query.command import document
+from tests.conftest import copied_old
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -53,11 +53,7 @@ def test_a_fact_is_taken_again_only_while_its_cpp_files_are_unchanged(tmp_path: 
 
 
 def _examples(tmp_path: Path) -> Path:
-    shutil.copytree(EXAMPLES, tmp_path / "examples")
-    for folder, _dirs, files in os.walk(tmp_path / "examples"):  # old enough to trust
-        for name in files:
-            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
-    return tmp_path / "examples" / "project.yaml"
+    return copied_old(EXAMPLES, tmp_path / "examples") / "project.yaml"
 
 
 def _document(project: Path, cache: Path | None) -> str:

@@ -4,24 +4,19 @@ findings renumbered (``relocate``, ``runcache.relocated``), the same as a cold r
 from __future__ import annotations
 
 import json
-import os
-import shutil
 from pathlib import Path
 
 from haros_arch.pipeline import Options, analyse
 from haros_arch.project import load
 from haros_arch.query.command import document
 from haros_arch.relocate import Files
+from tests.conftest import copied_old
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
 
 def _examples(tmp_path: Path) -> Path:
-    shutil.copytree(EXAMPLES, tmp_path / "examples")
-    for folder, _dirs, files in os.walk(tmp_path / "examples"):  # old enough to trust
-        for name in files:
-            os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
-    return tmp_path / "examples" / "project.yaml"
+    return copied_old(EXAMPLES, tmp_path / "examples") / "project.yaml"
 
 
 def _document(project: Path, cache: Path | None) -> tuple[str, dict[str, float]]:
