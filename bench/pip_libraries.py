@@ -1,5 +1,6 @@
 """Write ``haros_arch/extract/python/pip_libraries.yaml``: the import names of the Python
-libraries that rosdep installs from PyPI, less the names of released ROS packages.
+libraries that rosdep installs from PyPI, and the names of its Python keys, less the
+names of released ROS packages.
 
     python bench/pip_libraries.py ROSDISTRO_GIT_DIR COMMIT \
         > haros_arch/extract/python/pip_libraries.yaml
@@ -11,7 +12,12 @@ the key being ``python-dt-apriltags-pip``). The import name is taken as the
 distribution's name normalised as pip and Python do (``-`` and ``.`` to ``_``, lower
 case, extras and version pins dropped). A name that some distribution of the same
 commit releases as a ROS package (``depthai``, ``canopen``) is left out: that name may
-be the ROS package's.
+be the ROS package's. A key ``python-X`` / ``python3-X`` (``-pip`` dropped) of the same
+file names a Python library, which the system's packages install (``python3-requests``,
+``python3-smbus``, ``python3-zmq``): its ``X``, normalised so, is taken as its import name
+too (a name that is not one, ``opencv``, matches no module and changes nothing). A ROS 1
+node's call into a module no list knows makes the node partial (PY_MODULE_UNSEEN), so
+these libraries must be known as such.
 """
 
 from __future__ import annotations
@@ -28,7 +34,7 @@ import yaml
 # rosbridge), jupyros (rospy publishers and subscribers behind notebook widgets), Isaac
 # Sim's ROS bridges, pyros_setup (sets up a ROS environment for a program)
 TALK_TO_ROS = frozenset({"roslibpy", "jupyros", "isaacsim_ros1", "isaacsim_ros2",
-                         "pyros_setup"})
+                         "isaacsim_ros", "pyros_setup"})
 # the distributions whose released packages are left out (ROS 1 and ROS 2, old and new)
 DISTROS = ("indigo", "kinetic", "lunar", "melodic", "noetic", "dashing", "eloquent",
            "foxy", "galactic", "humble", "iron", "jazzy", "kilted", "rolling")
@@ -56,6 +62,16 @@ def _pip_names(rules: Any) -> set[str]:
     return found
 
 
+def _key_names(rules: Any) -> set[str]:
+    """The library each Python key names: ``python3-X`` / ``python-X``, less ``-pip``."""
+    found: set[str] = set()
+    for key in rules if isinstance(rules, dict) else ():
+        matched = re.fullmatch(r"python3?-(.+?)(-pip)?", str(key))
+        if matched:
+            found.add(matched.group(1))
+    return found
+
+
 def _import_name(distribution: str) -> str:
     bare = re.split(r"[\[<>=!~; ]", distribution.strip(), maxsplit=1)[0]
     return re.sub(r"[-.]+", "_", bare).lower()
@@ -63,7 +79,7 @@ def _import_name(distribution: str) -> str:
 
 def main(git_dir: str, commit: str) -> None:
     rules = yaml.safe_load(_show(git_dir, commit, "rosdep/python.yaml"))
-    names = {_import_name(name) for name in _pip_names(rules)} - {""}
+    names = {_import_name(name) for name in _pip_names(rules) | _key_names(rules)} - {""}
     released: set[str] = set()
     for distro in DISTROS:
         data = yaml.safe_load(_show(git_dir, commit, f"{distro}/distribution.yaml") or "{}")
@@ -75,12 +91,14 @@ def main(git_dir: str, commit: str) -> None:
     print("# The import names of the Python libraries rosdep installs from PyPI (every pip")
     print("# rule of rosdep/python.yaml of github:ros/rosdistro at commit")
     print(f"# {commit}, each distribution's name normalised: '-' and '.' to")
-    print("# '_', lower case), less the names of the ROS packages the distributions of the")
+    print("# '_', lower case) and of its Python keys (python3-X, python-X: X so normalised),")
+    print("# less the names of the ROS packages the distributions of the")
     print("# same commit release (DISTROS), and of those that talk to ROS themselves")
     print("# (roslibpy, jupyros, ...: TALK_TO_ROS). Written by")
     print("# bench/pip_libraries.py; read by haros_arch/extract/python (NOT_CLIENTS): a")
     print("# package.xml dependency of one of these names, not in the workspace, is a Python")
-    print("# library, not a ROS package whose code is not read.")
+    print("# library, not a ROS package whose code is not read; a module of one of these")
+    print("# names is a library a ROS 1 node may call (no PY_MODULE_UNSEEN).")
     print(yaml.safe_dump({"libraries": kept}, default_flow_style=False, sort_keys=False),
           end="")
 

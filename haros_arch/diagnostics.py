@@ -923,8 +923,8 @@ CATALOGUE: dict[str, Entry] = {
         "whose module is naoqi_sensors; duckietown's DTROS). That class makes the node "
         "and may communicate and read parameters under any name: the node is 'partial' "
         "and checks that claim something is absent do not decide on it. Where the "
-        "program makes its node itself, such classes are taken for libraries that make "
-        "no ROS call."),
+        "program makes its node itself, such classes are said in ROS 1, whose node is "
+        "the process's (PY_MODULE_UNSEEN), and taken for libraries in ROS 2."),
     "PY_CLASS_UNSEEN": Entry(
         "info", "{cls} of ROS package {package} is built here and its code is not read",
         "A Python node builds an object of a class of a ROS package its package depends "
@@ -956,6 +956,22 @@ CATALOGUE: dict[str, Entry] = {
         "nor the standard library, client libraries, packages known to make no ROS call "
         "or pip libraries. A publisher an rclpy node made, passed alone, is not the "
         "node: a function given it can only publish on it."),
+    "PY_MODULE_UNSEEN": Entry(
+        "info", "{call} of {module}, a Python module the workspace does not hold and no "
+        "list knows as a library, is called here in a ROS 1 node's process; its code is "
+        "not read",
+        "A ROS 1 Python node calls a function or builds a class of a module that the "
+        "reader finds nowhere in the workspace and that is not the standard library, a "
+        "client library, a package known to make no ROS call, a pip library rosdep "
+        "installs, nor a ROS package the tool knows of (those are PY_CLASS_UNSEEN and "
+        "PY_FUNCTION_UNSEEN): mobiman's training node calls openai_ros' "
+        "StartOpenAI_ROS_Environment(name), a ROS package its package.xml does not "
+        "name, cloned beside the workspace, whose gym environment reads the parameters "
+        "the launch file sets. rospy's node is the process's, so such code can read "
+        "parameters, publish and subscribe without being given the node: the node is "
+        "'partial' and checks that claim something is absent do not decide on it. "
+        "Said once per module, at its first call. In ROS 2 a function must be given "
+        "the node (PY_FUNCTION_UNSEEN)."),
     "PY_LAUNCHES": Entry(
         "info", "{call} starts the nodes of a launch file at run time (roslaunch's "
         "Python API); what it starts is not read",

@@ -5,7 +5,8 @@ knows the package by a shipped interface model, its class is unseen code as a de
 dependency's is (``PY_CLASS_UNSEEN``), so the node is partial: before, it was complete
 with no publisher, and sound_play_node's ``robotsound`` subscription was a false
 subscriber-without-publisher warning. A name the tool does not know as a ROS package
-(a pip library's class) changes nothing."""
+(a pip library's class) is no PY_CLASS_UNSEEN (in a ROS 1 node it is PY_MODULE_UNSEEN,
+test_extract_python_unread_module_ros1.py)."""
 
 from __future__ import annotations
 

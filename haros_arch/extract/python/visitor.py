@@ -155,6 +155,9 @@ class Walker:
         # classes built of Python packages neither the workspace holds nor a dependency
         # names (``_unseen_class``): ROS code when the program makes no node itself
         self._classes_elsewhere: dict[str, Location] = {}
+        # the first call of each top-level module the reader finds nowhere and no list
+        # knows as a library, in a ROS 1 program (``_unread_module``): where, what
+        self._modules_elsewhere: dict[str, tuple[Location, str]] = {}
         self._ros_init = False  # rclpy.init() is called
         self._gui_plugin = False  # rqt_gui runs a plugin alone (``_standalone_plugin``)
         self._launches_said: set[Location] = set()  # where roslaunch runs (PY_LAUNCHES)
@@ -1529,6 +1532,8 @@ class Walker:
             self._classes_said[target.qualname] = (self._where(frame, call), package)
         elif base and target.qualname not in self._classes_elsewhere and _foreign(parts[0]):
             self._classes_elsewhere[target.qualname] = self._where(frame, call)
+        elif not base:
+            self._unread_module(target, call, frame)
 
     def _unseen_function(self, target: Ref, call: ast.Call, frame: Frame) -> None:
         """Say where the node hands itself to a function whose code is not read
@@ -1546,6 +1551,8 @@ class Walker:
                 part in ("msg", "srv", "action", "cfg") for part in parts[1:-1]):
             return
         package = self._package_of_module(parts[0])
+        if package is None:
+            self._unread_module(target, call, frame)
         given = self._node_given(call, frame) if package is not None else None
         where = self._where(frame, call)
         if given is None or package is None or where in self._functions_said:
@@ -1554,6 +1561,28 @@ class Walker:
         self.diagnostics.append(diag.make("PY_FUNCTION_UNSEEN", where,
                                           function=target.qualname, package=package,
                                           given=given))
+
+    def _unread_module(self, target: Ref, call: ast.Call, frame: Frame) -> None:
+        """Keep the first call of a ROS 1 program into a module whose code is not read
+        and that no list knows (``PY_MODULE_UNSEEN``): its top-level module is not the
+        standard library's, a client library, a package known to make no ROS call or a
+        pip library (``_foreign``), nor a ROS package the tool knows of
+        (``_package_of_module``, said as such), and the reader finds it nowhere in the
+        workspace. rospy's node is the process's, so that code can read parameters,
+        publish and subscribe without being given anything: mobiman's training node
+        calls openai_ros' ``StartOpenAI_ROS_Environment(name)``, an undeclared ROS
+        package cloned beside the workspace, whose environment reads 80 parameters the
+        launch file sets. An rclpy node is no one's but its holder's: in ROS 2 only a
+        function given the node counts (``PY_FUNCTION_UNSEEN``). Not roslaunch, whose
+        launching calls are said by their own rule (``PY_LAUNCHES``) and whose other
+        functions (``rlutil.get_or_generate_uuid``) make no ROS call of a node."""
+        module = target.qualname.split(".", 1)[0]
+        if frame.module.version != 1 or module in self._modules_elsewhere or (
+                module == "roslaunch") or (
+                not _foreign(module)) or self.loader.resolve_import(
+                    frame.module.path, 0, module) is not None:
+            return
+        self._modules_elsewhere[module] = (self._where(frame, call), target.qualname)
 
     def _node_given(self, call: ast.Call, frame: Frame) -> str | None:
         """The first argument of ``call`` that is the node, as written: an rclpy node
@@ -1646,6 +1675,10 @@ class Walker:
         for cls, (where, package) in self._classes_said.items():
             self.diagnostics.append(diag.make("PY_CLASS_UNSEEN", where, cls=cls,
                                               package=package))
+        if not no_node:
+            for module, (where, call) in self._modules_elsewhere.items():
+                self.diagnostics.append(diag.make("PY_MODULE_UNSEEN", where, call=call,
+                                                  module=module))
         self._subclasses_said()
 
     def _subclasses_said(self) -> None:
