@@ -1127,6 +1127,42 @@ class Names:
                 self._from_source(text, found.start(), "any", [])
         self._spread_calls()
         self._spread_values()
+        self._spread_arguments()
+
+    def _spread_arguments(self) -> None:
+        """An unknown name known so far only as a scope (``Feedback::Integrated``, a
+        namespace) that the files read give whole as a template's argument
+        (``MotorNode<vendor::Falcon, Config, Feedback, Mode>``): a type, a class whose
+        members the scope's uses name. clang reports the first unknown name of a
+        template's argument list and skips the rest of it, so the list alone never said
+        so: declared a namespace, the argument was an error ("unexpected namespace name")
+        that hid the next one, and the class derived from that template stayed invalid
+        (ros_phoenix's TalonFXNode, phoenix_nodes.hpp:9, and every call in its methods)."""
+        scopes: list[tuple[list[str], _Name]] = []
+        stack: list[tuple[list[str], _Name]] = [([], self.root)]
+        while stack:
+            path, node = stack.pop()
+            for name, child in node.children.items():
+                stack.append(([*path, name], child))
+                if not child.known and child.uses == {"scope"} and (
+                        path or name not in self._defined):
+                    scopes.append(([*path, name], child))
+        for path, node in scopes:
+            written = rb"\s*::\s*".join(re.escape(p.encode()) for p in path)
+            pattern = re.compile(rb"[<,]\s*(?:::\s*)?(" + written + rb")\s*[,>]")
+            for text in self._texts:
+                key = (id(text), "\0argument " + "::".join(path))
+                if key in self._spread_done:
+                    continue
+                self._spread_done.add(key)
+                for found in pattern.finditer(text):
+                    start = found.start(1)
+                    if _template_argument(text[max(0, start - _TEMPLATE_SPAN):start]):
+                        node.uses.add("type")
+                        self.count += 1
+                        break
+                if "type" in node.uses:
+                    break
 
     def _spread_values(self) -> None:
         """The value arguments of every use of the declared templates in the files read
