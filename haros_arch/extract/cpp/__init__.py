@@ -3012,7 +3012,8 @@ def _reads(tu: TranslationUnit, path: str) -> bool:
 
 def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
     """The names ``tu`` declares directly in a top-level namespace, by its name (every
-    block that opens it), each namespace read once per parse: the names are kept with
+    block that opens it), or at global scope (``""``: the unit's top-level declarations,
+    read only when asked), each namespace read once per parse: the names are kept with
     ``tu`` (the synthesis and ``_hidden`` ask the same parse when declaring names made
     it no better), not its cursors, which refer to it."""
     kept: dict[str, frozenset[str]] | None = getattr(tu, "_haros_declared", None)
@@ -3022,6 +3023,10 @@ def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
 
     def declared(scope: str) -> frozenset[str]:
         if scope in found:
+            return found[scope]
+        if scope == "":
+            found[scope] = frozenset(name for name in child_spellings(tu.cursor)
+                                     if name is not None)
             return found[scope]
         if not blocks:  # the unit's top-level namespaces, one visit
             blocks[""] = []
