@@ -864,7 +864,7 @@ def _statement_starts(text: bytes, start: int) -> bool:
     at = len(before.rstrip()) + max(0, start - 64) - 1
     if text[at:at + 1] != b")":
         return False
-    opening = _closing(text, at, backwards=True)  # back to the ``(`` it closes
+    opening = closing(text, at, backwards=True)  # back to the ``(`` it closes
     return opening is not None and _HEAD_KEYWORD.search(
         text[max(0, opening - 32):opening]) is not None
 
@@ -880,7 +880,7 @@ def _called_statement(text: bytes, start: int, end: int) -> bool:
         at += 1
     if text[at:at + 1] != b"(":
         return False
-    close = _closing(text, at)
+    close = closing(text, at)
     return close is not None and text[close + 1:close + 64].lstrip()[:1] == b";"
 
 
@@ -915,7 +915,7 @@ def _member_call_argument(text: bytes, offset: int) -> bool:
     return False
 
 
-def _closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
+def closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
     """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes);
     ``backwards``: of the ``(`` that the ``)`` at ``at`` closes."""
     opens, closes = (b")", b"(") if backwards else (b"(", b")")
@@ -987,7 +987,7 @@ def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> b
     last = (before or ahead)[-1:]
     if last not in (b":", b",") or (before or ahead).endswith(b"::"):
         return False
-    close = _closing(text, found.end() - 1, 2001)  # the call's ``(``
+    close = closing(text, found.end() - 1, 2001)  # the call's ``(``
     return close is not None and text[close + 1:close + 200].lstrip()[:1] in (b",", b"{")
 
 
