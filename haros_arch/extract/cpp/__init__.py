@@ -2925,7 +2925,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                                                clients):
         return tu  # no error where it could cost a call
     names.in_free = _in_free(first, functions, source)
-    if not names.learn(_located(first, source)):
+    if not names.learn(_located(first, source, tu)):
         return tu  # nothing to declare
     # Errors come in waves: a class made valid shows its other members. With more than
     # one round, the next waves are looked for without function bodies (the names that
@@ -2937,7 +2937,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         probe = _parse_once(path, args,
                             [*unsaved, (header, names.header())], workspace, result,
                             PARSE_OPTIONS | SKIP_FUNCTION_BODIES)
-        if probe is None or not names.learn(_located(mine(probe), source)):
+        if probe is None or not names.learn(_located(mine(probe), source, probe)):
             break
     names.read_members(source.values())  # the files with errors: members come next
     best = tu
@@ -2953,8 +2953,8 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         left = mine(again)
         hiding = _hiding(again, left, source, fieldless, functions, sites, clients)
         names.in_free = _in_free(left, functions, source)
-        learnt = bool(hiding) and names.learn(_located(hiding, source))
-        rest = names.learn(_located([e for e in left if e not in hiding], source))
+        learnt = bool(hiding) and names.learn(_located(hiding, source, again))
+        rest = names.learn(_located([e for e in left if e not in hiding], source, again))
         # or when this parse is not the best and the other errors name more (members
         # of declared classes read in code that makes no ROS call, which count against
         # it: stereo_image_proc's processor.h, whose unknown members kept its nodelet's
@@ -3012,7 +3012,8 @@ def _reads(tu: TranslationUnit, path: str) -> bool:
 
 def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
     """The names ``tu`` declares directly in a top-level namespace, by its name (every
-    block that opens it), each namespace read once per parse: the names are kept with
+    block that opens it), or at global scope (``""``: the unit's top-level declarations,
+    read only when asked), each namespace read once per parse: the names are kept with
     ``tu`` (the synthesis and ``_hidden`` ask the same parse when declaring names made
     it no better), not its cursors, which refer to it."""
     kept: dict[str, frozenset[str]] | None = getattr(tu, "_haros_declared", None)
@@ -3022,6 +3023,10 @@ def _declared_in(tu: TranslationUnit) -> Callable[[str], frozenset[str]]:
 
     def declared(scope: str) -> frozenset[str]:
         if scope in found:
+            return found[scope]
+        if scope == "":
+            found[scope] = frozenset(name for name in child_spellings(tu.cursor)
+                                     if name is not None)
             return found[scope]
         if not blocks:  # the unit's top-level namespaces, one visit
             blocks[""] = []
@@ -3200,11 +3205,67 @@ def _in_free(errors: list[_Error], functions: dict[str, list[recall.Function]],
     return found
 
 
-def _located(errors: list[_Error],
-             source: SourceCache) -> list[tuple[str, bytes | None, int]]:
-    """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset."""
-    return [(message, source.get(e.name), e.offset) for e in errors if e.name is not None
-            for message in (e.spelling, *e.notes)]
+def _located(errors: list[_Error], source: SourceCache,
+             tu: TranslationUnit | None = None) -> list[tuple[str, bytes | None, int]]:
+    """Errors as ``synthesis.Names.learn`` reads them: message, file bytes, offset. An
+    error about a name that a macro's definition writes, not its call (ateam_common's
+    ``SET_ROS_PROTOBUF_LOG_HANDLER(name)``, whose ``google::protobuf::SetLogHandler``
+    is unknown with protobuf's headers missing, is reported at the call), is placed
+    where the definition writes it, in the header of ``tu`` that defines the macro:
+    read at the call, the macro's own name was declared, and the error stayed."""
+    found: list[tuple[str, bytes | None, int]] = []
+    for e in errors:
+        if e.name is None:
+            continue
+        text = source.get(e.name)
+        for message in (e.spelling, *e.notes):
+            at = _in_macro_definition(message, text, e.offset, tu, source)
+            found.append(at if at is not None else (message, text, e.offset))
+    return found
+
+
+_MACRO_CALLED = re.compile(rb"([A-Za-z_]\w*)\s*\(")
+
+
+def _in_macro_definition(message: str, text: bytes | None, offset: int,
+                         tu: TranslationUnit | None, source: SourceCache
+                         ) -> tuple[str, bytes, int] | None:
+    """``(message, header bytes, offset)`` of the unknown name ``message`` is about,
+    where the definition of the macro called at ``offset`` writes it; None when the
+    name is written in the call (``_spelled_at`` finds it there) or the definition is
+    in no header of ``tu`` the workspace holds."""
+    unknown = recall.UNKNOWN_NAME.search(message)
+    called = _MACRO_CALLED.match(text, offset) if text is not None and tu is not None \
+        else None
+    if unknown is None or called is None or text is None or tu is None:
+        return None
+    name = (unknown.group("name") or unknown.group("scope") or "").split("::")[0]
+    macro = called.group(1).decode()
+    if not name or name == macro or not synthesis.is_macro_name(macro):
+        return None
+    close = synthesis.closing(text, called.end() - 1)
+    word = re.compile(rb"(?<![\w.:>])" + re.escape(name.encode()) + rb"\b")
+    if close is None or word.search(text, offset, close) is not None:
+        return None
+    defined = re.compile(rb"^[ \t]*#[ \t]*define[ \t]+" + re.escape(called.group(1))
+                         + rb"\b(?:[^\n]*\\\r?\n)*[^\n]*", re.M)
+    for header in _unit_headers(tu):
+        data = source.get(header)
+        definition = defined.search(data) if data is not None else None
+        if data is None or definition is None:
+            continue
+        written = word.search(data, definition.start(), definition.end())
+        return (message, data, written.start()) if written is not None else None
+    return None
+
+
+def _unit_headers(tu: TranslationUnit) -> list[str]:
+    """The files ``tu`` includes (absolute paths, in order), read once per parse."""
+    kept: list[str] | None = getattr(tu, "_haros_headers", None)
+    if kept is None:
+        kept = list(dict.fromkeys(os.path.abspath(i.include.name) for i in tu.get_includes()))
+        tu._haros_headers = kept
+    return kept
 
 
 class SourceCache(dict[str, bytes]):

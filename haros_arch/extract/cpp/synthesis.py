@@ -154,6 +154,8 @@ _RECORD = re.compile(r"[a-z]\w*(?:::\w+)+")  # a message's struct: ``pkg::msg::N
 # a name after ``.`` or ``->``; a number is matched whole first, with no name, so that
 # the ``.`` of a float literal gives none (``1.e5``, ``2.f``: no member ``e5``, ``f``)
 _AFTER_MEMBER = re.compile(rb"\b[0-9](?:[eEpP][-+]|[\w.])*|(?:\.|->)\s*([A-Za-z_]\w*)")
+# a template argument that is a type's bare name, ``Name`` (``Names._arguments_after``)
+_BARE_ARGUMENT = re.compile(rb"\s*([A-Z]\w*)\s*[,>]")
 _TEMPLATE_SPAN = 400  # bytes searched back for the ``<`` of a template argument list
 _VALUE_LITERAL = re.compile(rb"\s*(?:[-+(]?\s*[0-9]|(?:true|false|sizeof)\b)")
 _VALUE_WRITTEN = re.compile(
@@ -440,8 +442,14 @@ _TYPE_FIRST = re.compile(
 
 def _template_argument(window: bytes) -> bool:
     """Whether ``window`` (the text before a name, ending with ``<`` or ``,``) ends in
-    a template's argument list: back to an unmatched ``<`` after a name, through
-    balanced brackets, before any ``;``, ``{``, ``}`` or unmatched opening bracket."""
+    a template's argument list."""
+    return _argument_list_open(window) is not None
+
+
+def _argument_list_open(window: bytes) -> int | None:
+    """Where in ``window`` the template argument list it ends in opens (its ``<``):
+    back to an unmatched ``<`` after a name, through balanced brackets, before any
+    ``;``, ``{``, ``}`` or unmatched opening bracket; None when it ends in none."""
     depth, at = 0, len(window) - 1
     while at >= 0 and len(window) - at < _TEMPLATE_SPAN:
         char = window[at:at + 1]
@@ -449,16 +457,17 @@ def _template_argument(window: bytes) -> bool:
             depth += 1
         elif char in b"([":
             if depth == 0:
-                return False
+                return None
             depth -= 1
         elif char == b"<":
             if depth == 0:
-                return _SCOPE_NAME_BEFORE.search(window[max(0, at - 200):at]) is not None
+                return at if _SCOPE_NAME_BEFORE.search(
+                    window[max(0, at - 200):at]) is not None else None
             depth -= 1
         elif char in b";{}":
-            return False
+            return None
         at -= 1
-    return False
+    return None
 
 
 def _in_enum_body(text: bytes, offset: int) -> bool:
@@ -855,7 +864,7 @@ def _statement_starts(text: bytes, start: int) -> bool:
     at = len(before.rstrip()) + max(0, start - 64) - 1
     if text[at:at + 1] != b")":
         return False
-    opening = _closing(text, at, backwards=True)  # back to the ``(`` it closes
+    opening = closing(text, at, backwards=True)  # back to the ``(`` it closes
     return opening is not None and _HEAD_KEYWORD.search(
         text[max(0, opening - 32):opening]) is not None
 
@@ -871,7 +880,7 @@ def _called_statement(text: bytes, start: int, end: int) -> bool:
         at += 1
     if text[at:at + 1] != b"(":
         return False
-    close = _closing(text, at)
+    close = closing(text, at)
     return close is not None and text[close + 1:close + 64].lstrip()[:1] == b";"
 
 
@@ -906,7 +915,7 @@ def _member_call_argument(text: bytes, offset: int) -> bool:
     return False
 
 
-def _closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
+def closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
     """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes);
     ``backwards``: of the ``(`` that the ``)`` at ``at`` closes."""
     opens, closes = (b")", b"(") if backwards else (b"(", b")")
@@ -978,7 +987,7 @@ def _initialised_member(text: bytes, found: re.Match[bytes], before: bytes) -> b
     last = (before or ahead)[-1:]
     if last not in (b":", b",") or (before or ahead).endswith(b"::"):
         return False
-    close = _closing(text, found.end() - 1, 2001)  # the call's ``(``
+    close = closing(text, found.end() - 1, 2001)  # the call's ``(``
     return close is not None and text[close + 1:close + 200].lstrip()[:1] in (b",", b"{")
 
 
@@ -1127,6 +1136,86 @@ class Names:
                 self._from_source(text, found.start(), "any", [])
         self._spread_calls()
         self._spread_values()
+        self._spread_arguments()
+
+    def _spread_arguments(self) -> None:
+        """An unknown name known so far only as a scope (``Feedback::Integrated``, a
+        namespace) that the files read give whole as a template's argument
+        (``MotorNode<vendor::Falcon, Config, Feedback, Mode>``): a type, a class whose
+        members the scope's uses name. clang reports the first unknown name of a
+        template's argument list and skips the rest of it, so the list alone never said
+        so: declared a namespace, the argument was an error ("unexpected namespace name")
+        that hid the next one, and the class derived from that template stayed invalid
+        (ros_phoenix's TalonFXNode, phoenix_nodes.hpp:9, and every call in its methods)."""
+        scopes: list[tuple[list[str], _Name]] = []
+        stack: list[tuple[list[str], _Name]] = [([], self.root)]
+        while stack:
+            path, node = stack.pop()
+            for name, child in node.children.items():
+                stack.append(([*path, name], child))
+                if not child.known and child.uses == {"scope"} and (
+                        path or name not in self._defined):
+                    scopes.append(([*path, name], child))
+        unknown = [name for name, node in self.root.children.items() if not node.known
+                   and name not in self._defined]
+        if unknown:
+            words = b"|".join(re.escape(name.encode()) for name in sorted(unknown, key=len)[::-1])
+            first = re.compile(rb"[<,]\s*(?:::\s*)?(" + words + rb")\b(?!\s*<)")
+            for text in self._texts:
+                if (id(text), "\0arguments") not in self._spread_done:
+                    self._spread_done.add((id(text), "\0arguments"))
+                    for found in first.finditer(text):
+                        self._arguments_after(text, found.start(1))
+        for path, node in scopes:
+            written = rb"\s*::\s*".join(re.escape(p.encode()) for p in path)
+            pattern = re.compile(rb"[<,]\s*(?:::\s*)?(" + written + rb")\s*[,>]")
+            for text in self._texts:
+                key = (id(text), "\0argument " + "::".join(path))
+                if key in self._spread_done:
+                    continue
+                self._spread_done.add(key)
+                for found in pattern.finditer(text):
+                    start = found.start(1)
+                    if _template_argument(text[max(0, start - _TEMPLATE_SPAN):start]):
+                        node.uses.add("type")
+                        self.count += 1
+                        break
+                if "type" in node.uses:
+                    break
+
+    def _arguments_after(self, text: bytes, offset: int) -> None:
+        """The arguments after the unknown name at ``offset`` in the template argument
+        list it is in (``MotorNode<vendor::Falcon, FalconConfig, FalconMode>``): clang
+        skips the rest of a list at its first unknown name, so each of the others would
+        be the error of another parse, one more per argument (ros_phoenix's
+        ``TalonFXControlMode``, phoenix_nodes.hpp:9, was still an error after the two
+        parses). Each one written as a type's bare name (``Name``, not a constant's
+        ``NAME``) that no file read defines, aliases or brings, and that the parse does
+        not declare at global scope or in a namespace a ``using namespace`` names, is
+        declared a type; those before the unknown name were read by clang."""
+        opened = _argument_list_open(text[max(0, offset - _TEMPLATE_SPAN):offset])
+        if opened is None:
+            return
+        start = max(0, offset - _TEMPLATE_SPAN) + opened + 1
+        brought = {one.split("::")[-1] for one in self.brought}
+        for _index, at in _template_arguments(text, start):
+            if at <= offset:
+                continue
+            found = _BARE_ARGUMENT.match(text, at)
+            if found is None:
+                continue
+            name = found.group(1).decode()
+            if name in self.root.children or name in self._defined or name in _KEYWORDS \
+                    or name in self.aliases or name in brought or _CAPITALS.fullmatch(name) \
+                    or self.count >= MAX_NAMES:
+                continue
+            if self.declared is not None and any(
+                    name in self.declared(scope) for scope in ("", *sorted(
+                        u for u in self.using if "::" not in u))):
+                continue  # the parse has it (a header read without errors), at global
+                # scope or in a namespace a ``using namespace`` brings
+            self.root.children[name] = _Name(uses={"type"})
+            self.count += 1
 
     def _spread_values(self) -> None:
         """The value arguments of every use of the declared templates in the files read

@@ -843,6 +843,28 @@ struct OnSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(OnSetParamet
   using OnParametersSetCallbackType = OnSetParametersCallbackType; };
 struct PreSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PreSetParametersCallbackHandle) };
 struct PostSetParametersCallbackHandle { RCLCPP_SMART_PTR_DEFINITIONS(PostSetParametersCallbackHandle) };
+class NodeTimeSourceInterface { public: RCLCPP_SMART_PTR_DEFINITIONS(NodeTimeSourceInterface) };
+#if RCLCPP_VERSION_GTE(21, 0, 0)
+// rclcpp/node_interfaces/node_interfaces.hpp (Iron and later): the interfaces of a
+// node-like (a node, a lifecycle node, another NodeInterfaces) gathered in one value that
+// a node converts to implicitly; its getters name every standard interface (the real
+// class has those of its arguments only, which a unit that compiles never goes beyond)
+template<class... InterfaceTs> class NodeInterfaces { public:
+  template<class NodeT> NodeInterfaces(NodeT& node);  // NOLINT: implicit, as rclcpp's
+  template<class NodeT> NodeInterfaces(std::shared_ptr<NodeT> node);
+  explicit NodeInterfaces(std::shared_ptr<InterfaceTs>... interfaces);
+  template<class InterfaceT> std::shared_ptr<InterfaceT> get();
+  std::shared_ptr<NodeBaseInterface> get_node_base_interface();
+  std::shared_ptr<NodeClockInterface> get_node_clock_interface();
+  std::shared_ptr<NodeGraphInterface> get_node_graph_interface();
+  std::shared_ptr<NodeLoggingInterface> get_node_logging_interface();
+  std::shared_ptr<NodeParametersInterface> get_node_parameters_interface();
+  std::shared_ptr<NodeServicesInterface> get_node_services_interface();
+  std::shared_ptr<NodeTimeSourceInterface> get_node_time_source_interface();
+  std::shared_ptr<NodeTimersInterface> get_node_timers_interface();
+  std::shared_ptr<NodeTopicsInterface> get_node_topics_interface();
+  std::shared_ptr<NodeWaitablesInterface> get_node_waitables_interface(); };
+#endif
 }
 using OnSetParametersCallbackHandle = node_interfaces::OnSetParametersCallbackHandle;
 // the node: its primitives are what the extractor's API table lists; its publishers of
