@@ -182,6 +182,9 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
     # known statically): it then has a parameter "<node>/?" set by the launch, so that
     # a read of any of its parameters is not called unset (unknown is not empty)
     unseen: list[Location] = []
+    # what a dictionary of the node's own list gives it, as written, until a file later
+    # in the list sets the name again for this node (``_overridden``)
+    own: dict[str, Any] = {}
 
     def read_file(entry: e.ParamFile, location: Location) -> None:
         placed: list[tuple[str, Any]] = []
@@ -224,8 +227,11 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         if UNKNOWN_MARK not in node:
             every = _for_every_node(document, node) if shared else set()
             for name, leaf in naming.params_for_node(document, node):
-                put(name, leaf, keys.get(("", name), location),
-                    shared if name in every else None)
+                at = keys.get(("", name), location)
+                if name in own and not composable:
+                    _overridden(runner, node, name, own.pop(name), found[name][0], leaf,
+                                at, where)
+                put(name, leaf, at, shared if name in every else None)
             return
         if naming.names_a_node(document):
             kept = _as_given(runner, entry, scope, location)
@@ -275,9 +281,12 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                     "value (TypeError 'Allowed value types are ...'), so ros2 launch stops "
                     "here; ParameterValue(..., value_type=str) would give the text"))
                 continue
-            for name, leaf in flat(ev.value(written).text, convert(value, ev)):
+            text = ev.value(written).text
+            raw = dict(flat(text, value)) if isinstance(value, dict) else {}
+            for name, leaf in flat(text, convert(value, ev)):
                 put(name, leaf, where)
                 given[name] = leaf
+                own[name] = raw.get(name, value)
             command = command_line(value, ev)
             if command is not None:
                 commands[ev.value(written).text] = command
@@ -299,6 +308,41 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         runner.model.params.append(param)
     if unseen:
         _unseen(runner, node, scope, unseen[0])
+
+
+def _overridden(runner: Runner, node: str, name: str, written: Any, mine: Any,
+                theirs: Any, at: Location, where: Location) -> None:
+    """``LAUNCH_PARAM_OVERRIDDEN``: a dictionary among a ``Node``'s ``parameters``
+    gives ``name``, and a parameter file later in the list sets it again for this node.
+    launch_ros hands rcl the list in order (each dictionary written to a file of its
+    own) and rcl keeps the last value, so the dictionary's is never used: roverrobotics'
+    ``parameters=[{'use_sim_time': use_sim_time}, ekf_yaml]``, whose file says
+    ``use_sim_time: false``, so ``use_sim_time:=true`` changed nothing. Said when the
+    value comes from substitutions (a launch argument meant to choose it) or is written
+    out and differs from the file's; not for a component (its load request is one list
+    rclcpp reads otherwise), nor where either value is not known and written out."""
+    if _written_out(written) and (mine is None or theirs is None or mine == theirs):
+        return
+    file = at.file or "a parameter file"
+    runner.report("LAUNCH_PARAM_OVERRIDDEN", where, name=name, node=node,
+                  file=f"{file}:{at.line}" if at.file and at.line else file,
+                  given="a substitution (a launch argument's value)"
+                  if not _written_out(written) else f"{mine!r}",
+                  kept=f"{theirs!r}" if theirs is not None else "a value not known here")
+
+
+def _written_out(value: Any) -> bool:
+    """Whether a parameter value of a launch file's dictionary is written out in it (no
+    substitution: a launch argument cannot change it)."""
+    if isinstance(value, e.ParamValue):
+        return _written_out(value.value)
+    if isinstance(value, tuple):
+        return all(isinstance(part, str) for part in value)
+    if isinstance(value, list):
+        return all(_written_out(item) for item in value)
+    if isinstance(value, dict):
+        return all(_written_out(item) for item in value.values())
+    return isinstance(value, (str, bool, int, float))
 
 
 def _key_places(runner: Runner, placed: list[tuple[str, Any]], composable: bool,
