@@ -1181,3 +1181,13 @@ def test_classes_of_a_namespace_no_package_names_found_by_their_headers(
     # no dependency holds the headers' folders: a vendor's library, as before
     node, _ = _teleop(write_tree, UAL)
     assert node.completeness == "complete", node.completeness_reasons
+
+
+def test_the_hebi_actuator_library_leaves_it_complete(write_tree: Any) -> None:
+    # hebi_cpp_api_examples' nodes build hebi_cpp_api's hebi::Lookup and GroupCommand
+    # (HebiRobotics/hebi_cpp_api_ros, a catkin package whose package.xml names catkin,
+    # cmake_modules and eigen, released into noetic): 14 nodes were partial for them
+    node = _smoother(write_tree, "hebi::Lookup lookup; hebi::GroupCommand cmd(6);",
+                     "gtsam", "octomap", "hebi_cpp_api", header="hebi_cpp_api/lookup.hpp")
+    assert node.completeness == "complete", node.completeness_reasons
+    assert node.said == []

@@ -372,3 +372,40 @@ def test_include_folders_a_variable_gathers_with_list_append(tmp_path) -> None:
     assert [(c.kind, c.name) for c in result.calls] == [("publish", "joy")]
     assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NODE_PARTIAL"} & {
         d.code for d in result.diagnostics}
+
+
+def test_the_package_root_the_cmake_gives_as_an_include_folder(tmp_path) -> None:
+    """hebi_cpp_api_examples' ``include_directories(. ${catkin_INCLUDE_DIRS})``, its
+    nodes including ``"src/util/odom_publisher.hpp"`` from the package root: the class
+    that advertises the odometry was unknown and 14 nodes partial. The root given as
+    ``${PROJECT_SOURCE_DIR}`` is the same folder."""
+    from haros_arch.extract.cpp import extract_cpp_nodes
+    sources = []
+    for name, folder in (("base", "."), ("arm", "${PROJECT_SOURCE_DIR}")):
+        root = tmp_path / name
+        (root / "src" / "util").mkdir(parents=True)
+        (root / "package.xml").write_text(package_xml(name))
+        (root / "CMakeLists.txt").write_text(
+            f"project({name})\nfind_package(catkin REQUIRED COMPONENTS roscpp std_msgs)\n"
+            f"include_directories(\n  {folder}\n  ${{catkin_INCLUDE_DIRS}}\n)\n"
+            "add_executable(node src/node.cpp src/util/helper.cpp)\n")
+        (root / "src" / "util" / "helper.hpp").write_text(
+            "#pragma once\n#include <ros/ros.h>\nnamespace acme {\nclass Helper {\n"
+            "public:\n  explicit Helper(ros::NodeHandle& nh);\nprivate:\n"
+            "  ros::Publisher pub_;\n};\n}\n")
+        (root / "src" / "util" / "helper.cpp").write_text(
+            "#include \"src/util/helper.hpp\"\n#include <std_msgs/String.h>\n"
+            "namespace acme {\nHelper::Helper(ros::NodeHandle& nh) {\n"
+            f"  pub_ = nh.advertise<std_msgs::String>(\"{name}_odom\", 10);\n}}\n}}\n")
+        (root / "src" / "node.cpp").write_text(
+            "#include <ros/ros.h>\n#include \"src/util/helper.hpp\"\n"
+            "int main(int argc, char** argv) {\n  ros::init(argc, argv, \"node\");\n"
+            "  ros::NodeHandle nh;\n  acme::Helper helper(nh);\n  ros::spin();\n}\n")
+        sources.append([str(root / "src" / "node.cpp"),
+                        str(root / "src" / "util" / "helper.cpp")])
+    batch = extract_cpp_nodes(sources, scan([str(tmp_path)]), cache_dir=None,
+                              distro="noetic")
+    for result, name in zip(batch.results, ("base", "arm"), strict=True):
+        assert not {"CPP_INCLUDE_MISSING", "CPP_PARSE_ERROR", "CPP_NODE_TO_UNKNOWN"} & {
+            d.code for d in result.diagnostics}
+        assert [(c.kind, c.name) for c in result.calls] == [("publish", f"{name}_odom")]

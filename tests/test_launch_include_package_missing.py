@@ -97,3 +97,35 @@ def test_an_include_not_read_still_substitutes_the_values_it_passes(write_tree):
     assert len(unset) == 1 and "image_input" in unset[0]
     assert not any("never" in d.message for d in model.diagnostics)
     assert len(model.unread_includes) == 1
+
+
+EVAL_FIND = (
+    '<launch><arg name="arm_type" default="A-2085-06"/><arg name="gripper" default="none"/>'
+    '<arg name="moveit_arm_type" value="$(eval arm_type.lower() + '
+    "('-parallel-gripper' if gripper == 'parallel' else ''))\"/>"
+    "<include file=\"$(eval find('hebi_' + moveit_arm_type + '_moveit_config') + "
+    "'/launch/move_group.launch')\"/>"
+    '<arg name="world"/>'
+    "<include file=\"$(eval find('sim_' + world) + '/launch/world.launch')\"/>"
+    '</launch>')
+
+
+def test_an_eval_find_of_a_package_not_here_is_said_once(write_tree):
+    """hebi_cpp_api_examples' arm_moveit_node.launch includes ``$(eval find('hebi_' +
+    moveit_arm_type + '_moveit_config') + '/launch/move_group.launch')``, the MoveIt
+    config of another repository: said once, where the package is looked for, as a
+    ``$(find)`` outside an eval is, not also as an include the tool cannot read. An eval
+    over an argument with no value is still a warning."""
+    root = write_tree({"src/pkg/package.xml": package_xml("pkg"),
+                       "src/pkg/launch/arm.launch": EVAL_FIND})
+    ws = scan([str(root / "src")], {})
+    model = load(str(root / "src/pkg/launch/arm.launch"), ws, {}, {})
+    assert [(d.code, d.message) for d in model.diagnostics
+            if d.code in ("LAUNCH_UNKNOWN_VALUE", "LAUNCH_UNSUPPORTED")] == [
+        ("LAUNCH_UNKNOWN_VALUE", "package hebi_a-2085-06_moveit_config is not in the "
+         "workspace nor installed here; what depends on it keeps '?'"),
+        ("LAUNCH_UNKNOWN_VALUE", "$(eval find('sim_' + world) + '/launch/world.launch') "
+         "depends on unknown values; what depends on it keeps '?'"),
+        ("LAUNCH_UNSUPPORTED", "include file \"$(eval find('sim_' + world) + "
+         "'/launch/world.launch')\" is not known statically")]
+    assert len(model.unread_includes) == 2

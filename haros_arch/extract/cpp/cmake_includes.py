@@ -219,13 +219,16 @@ def _folder(word: str, here: str, root: str, listed: str | None = None) -> str |
 
 def own_folder(folder: str, workspace: Workspace) -> bool:
     """Whether ``folder`` is a folder (not a link) of a workspace package's own CMake
-    project (``_owned``)."""
+    project (``_owned``), the package's root among them: the build's include folders
+    may name it (hebi_cpp_api_examples' ``include_directories(. ${catkin_INCLUDE_DIRS})``
+    with ``#include "src/util/odom_publisher.hpp"``, the class that publishes a base's
+    odometry, in its nodes' sources)."""
     package = workspace.package_of(folder)
     if package is None or not package.root or os.path.islink(folder) \
             or not os.path.isdir(folder):
         return False
     root = os.path.abspath(package.root)
-    return folder != root and _owned(folder, root)
+    return folder == root or _owned(folder, root)
 
 
 def shared_folder(folder: str, workspace: Workspace) -> bool:

@@ -595,6 +595,8 @@ struct haros_address {
   haros_any &operator*() const;
 };
 struct haros_any {
+  // the mark the std stand-ins know a permissive value by (haros_std.h's smart pointers)
+  typedef void haros_permissive;
   template <class... A> haros_any(A &&...) {}
   // braces of braces (naoqi's ``boost::array<double, 9>{{556.8, 0, 309.4, ...}}``); not
   // an initializer_list, which list-initialisation would prefer for flat braces too

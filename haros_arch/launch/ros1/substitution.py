@@ -16,9 +16,9 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from ...model.values import Unknown, Value
+from ...model.values import Part, Unknown, Value
 from .. import expression
-from ..model import package_not_found
+from ..model import found_nowhere, package_not_found
 from .params import convert_value
 
 VALID = ("find", "env", "optenv", "dirname", "anon", "arg")
@@ -233,10 +233,17 @@ def _arity(raw: str, args: list[str], count: int) -> None:
 
 
 def evaluate(text: str, ctx: Context) -> Value:
-    """``$(eval text)``: our safe evaluator with roslaunch's names; str() of the result."""
+    """``$(eval text)``: our safe evaluator with roslaunch's names; str() of the result.
+    A result not known only because a ``find()`` in it names a package that is neither
+    in the workspace nor installed here is that package's folder not found, as a
+    ``$(find pkg)`` outside an eval is (said once, where the find is): hebi's
+    ``$(eval find('hebi_' + moveit_arm_type + '_moveit_config') + '/launch/...')``
+    include is then a file of a package not here, not one the tool cannot read."""
+    fed: list[Part] = []  # the unknown values handed to the expression
 
     def as_python(value: Value) -> object:
         if value.literal is None:
+            fed.extend(part for part in value.parts if isinstance(part, Unknown))
             return expression.Unknown(f"{value.origins}", "unknown")
         return convert_value(value.literal, "auto")
 
@@ -249,6 +256,7 @@ def evaluate(text: str, ctx: Context) -> Value:
         # ``1``; an ``int`` here made it false and left its nodes out)
         value = _one("env", [str(name)], f"env {name}", ctx)
         if value.literal is None:
+            fed.extend(part for part in value.parts if isinstance(part, Unknown))
             return expression.Unknown(f"{value.origins}", "unknown")
         return value.literal
 
@@ -266,6 +274,7 @@ def evaluate(text: str, ctx: Context) -> Value:
             return as_python(ctx.args[name])
         if ctx.declared(name):
             ctx.unset.append(name)
+            fed.append(Unknown(f"arg {name}"))
             return expression.Unknown(f"arg {name} has no value", "unknown")
         raise KeyError(name)
 
@@ -279,6 +288,9 @@ def evaluate(text: str, ctx: Context) -> Value:
     result = expression.evaluate(text, bare, functions)
     if isinstance(result, expression.Unknown):
         if result.kind == "unknown":
+            missing = Value.of(*dict.fromkeys(fed))
+            if found_nowhere(missing):
+                return missing
             ctx.unknown.append(Reason(f"$(eval {text}) depends on unknown values"))
             return Value.unknown(f"eval {text}")
         if result.kind in ("undefined", "error", "syntax"):

@@ -1543,6 +1543,10 @@ public:
   unique_ptr& operator=(unique_ptr&& other) noexcept;
   template<class U, class E> unique_ptr& operator=(unique_ptr<U, E>&& other) noexcept;
   unique_ptr& operator=(nullptr_t) noexcept;
+  // a permissive value (a vendor's ``Arm::create(config)``, its header missing), which
+  // converts to a unique_ptr and to nullptr_t alike: the factory's pointer, moved in
+  template<class A, class = typename remove_reference<A>::type::haros_permissive>
+  unique_ptr& operator=(A&& value) noexcept;
   T* operator->() const noexcept;
   T& operator*() const;
   T* get() const noexcept;
