@@ -526,6 +526,9 @@ _CAPS_MACRO = re.compile(r"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)*_")
 _DEFINED = re.compile(
     rb"\b(?:namespace|class|struct|enum)\s+(?:class\s+|struct\s+)?([A-Za-z_]\w*)(?!\s*=)")
 _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
+# ``namespace arm = hebi::experimental::arm;``: a namespace alias and what it names
+_NAMESPACE_ALIAS = re.compile(
+    rb"\bnamespace\s+([A-Za-z_]\w*)\s*=\s*(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)\s*;")
 # ``using vendor::conn::Connection;``: a using-declaration of one qualified name
 _USING_ONE = re.compile(
     rb"\busing\s+(?!namespace\b)(?:typename\s+)?(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)+)\s*;")
@@ -1059,6 +1062,8 @@ class Names:
         # the qualified names of using-declarations: ``using vendor::conn::Connection;``
         self.brought: set[str] = set()
         self.aliases: set[str] = set()  # names the code declares: ``using Mode = ...;``
+        # namespace aliases the code declares, by name: what each names, its parts
+        self.namespace_aliases: dict[str, list[str]] = {}
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
         self.withdrawn: set[str] = set()
@@ -1099,6 +1104,9 @@ class Names:
                                                     for m in _USING_ONE.findall(text))
                                     if one.split("::")[-2:-1] != one.split("::")[-1:])
                 self.aliases.update(m.decode() for m in _ALIAS_NAME.findall(text))
+                for alias, target in _NAMESPACE_ALIAS.findall(text):
+                    self.namespace_aliases.setdefault(alias.decode(), re.sub(
+                        rb"\s+", b"", target).decode().split("::"))
                 self.taken.update(_case_literals(text))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
@@ -1122,6 +1130,10 @@ class Names:
         # was unknown where clang met it first, and is real further on
         unknown = [name for name, node in self.root.children.items() if not node.known
                    and name not in self._defined]
+        # and a namespace alias of one (``stats::tag::min`` after ``namespace stats =
+        # vendor::accumulators;``), each use its target's (``_from_source``)
+        unknown += [alias for alias, target in self.namespace_aliases.items()
+                    if target[0] in unknown and alias not in self.root.children]
         for text in self._texts:
             todo = [name for name in unknown if (id(text), name) not in self._spread_done]
             if not todo:
@@ -1442,11 +1454,21 @@ class Names:
 
     def _from_source(self, text: bytes, offset: int, use: str, scope: list[str]) -> None:
         """The qualified name written at ``offset``: the unknown part and what follows."""
+        if _namespace_alias_at(text, offset) is not None:
+            # a namespace alias's target (clang's ``use of undeclared identifier
+            # 'vendor'`` first, or its spread): namespaces, not a value at the end
+            self._using_namespace(text, offset)
+            return
         found = _NAME_AT.match(text, offset)
         if found is None:
             return
         written = [p.strip().removeprefix(b"template").strip().decode()
                    for p in found.group(0).split(b"::")]
+        if not scope and len(written) > 1 and written[0] in self.namespace_aliases and (
+                self.namespace_aliases[written[0]][0] != "std"):
+            # ``arm::Arm`` where the code declares ``namespace arm = vendor::arm;``: the
+            # target's name (a top-level ``arm`` would clash with the alias)
+            written = [*self.namespace_aliases[written[0]], *written[1:]]
         if not scope:  # the known scope written before the name: ``known::``
             window = text[max(0, offset - 200):offset]
             before = _scope_before(window)
@@ -1607,9 +1629,13 @@ class Names:
         start = text.rfind(b"using", max(0, offset - 200), offset + 1)
         found = _USING.match(text, start) if start != -1 else None
         if found is None or not start <= offset <= found.end():
-            return
+            # or a namespace alias of one, ``namespace arm = hebi::experimental::arm;``
+            # (HEBI's kits, the vendor's headers missing): what it names, declared so
+            found = _namespace_alias_at(text, offset)
+            if found is None:
+                return
         node = self.root
-        for part in re.sub(rb"\s+", b"", found.group(1)).decode().split("::"):
+        for part in re.sub(rb"\s+", b"", found.group(found.lastindex or 1)).decode().split("::"):
             if not part or part in _KEYWORDS:
                 return
             child = node.children.get(part)
@@ -2218,6 +2244,14 @@ def _render(name: str, node: _Name, indent: str, nested: bool, values: _Values,
             f"{indent}  const {name} *operator&() const;",
             *([f"{indent}  virtual ~{name}();"] if node.polymorphic else []),
             *inner, f"{indent}}};"]
+
+
+def _namespace_alias_at(text: bytes, offset: int) -> re.Match[bytes] | None:
+    """The namespace alias (``namespace arm = hebi::experimental::arm;``) whose target
+    ``offset`` is in, if it is in one."""
+    start = text.rfind(b"namespace", max(0, offset - 200), offset + 1)
+    found = _NAMESPACE_ALIAS.match(text, start) if start != -1 else None
+    return found if found is not None and found.start(2) <= offset <= found.end() else None
 
 
 def _is_namespace(node: _Name) -> bool:
