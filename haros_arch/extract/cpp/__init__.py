@@ -2103,34 +2103,65 @@ def _of_quiet_overloads(error: _Error, places: _Places, wrappers: list[str],
     line that holds none either: riptide_imu's ``toMsg(cd.quaternion())``, where its
     two overloads take ``vn::math::vec4f`` and ``vec3f`` of a library not here, both
     built from anything by the parse; whichever runs, it only fills a message, so the
-    error, in the callback that publishes it, hides no ROS call."""
+    error, in the callback that publishes it, hides no ROS call. Or "call to constructor
+    of 'C' is ambiguous" of a class of the unit's own files whose constructors make no
+    ROS call, nor its members' initialisers, and that has no base (HEBI's
+    ``TeachRepeatNode teach_repeat_node(*arm)``, the vendor's arm a permissive value that
+    converts to the constructor's ``Arm&`` and to the class's own copy alike)."""
     if "is ambiguous" not in error.spelling or error.path is None:
         return False
-    called = _CALL_ERROR.search(error.spelling)
-    if called is None:
-        return False
-    name = called.group(1).rsplit("::", 1)[-1]
-    if name in _api_names() or name in wrappers:
-        return False
     finder, source = places.finder, places.source
-    overloads = [f for f in finder.functions if f.spelling == name
-                 and f.kind in (CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD,
-                                CursorKind.FUNCTION_TEMPLATE)]
-    if not overloads:
+    built = _CONSTRUCTOR_ERROR.search(error.spelling)
+    if built is not None:
+        overloads = [f for f in [*finder.functions, *finder.unreached]
+                     if f.kind == CursorKind.CONSTRUCTOR
+                     and f.semantic_parent is not None
+                     and f.semantic_parent.type.spelling == built.group(1)]
+        if not overloads:
+            return False
+        owner = overloads[0].semantic_parent
+        members = [c for c in owner.get_children() if c.kind == CursorKind.FIELD_DECL]
+        if any(c.kind == CursorKind.CXX_BASE_SPECIFIER for c in owner.get_children()) or (
+                _sites_in(members, source, wrappers, bare, finder.ros2)):
+            return False
+    else:
+        called = _CALL_ERROR.search(error.spelling)
+        if called is None:
+            return False
+        name = called.group(1).rsplit("::", 1)[-1]
+        if name in _api_names() or name in wrappers:
+            return False
+        overloads = [f for f in finder.functions if f.spelling == name
+                     and f.kind in (CursorKind.FUNCTION_DECL, CursorKind.CXX_METHOD,
+                                    CursorKind.FUNCTION_TEMPLATE)]
+        if not overloads:
+            return False
+    if any(not function.is_definition() for function in overloads) or _sites_in(
+            overloads, source, wrappers, bare, finder.ros2):
         return False
-    for function in overloads:
-        start, end = function.extent.start, function.extent.end
-        if start.file is None or not function.is_definition():
-            return False
-        text = source.text(os.path.abspath(start.file.name))
-        if text is None or any(start.line <= site.line <= end.line
-                               for site in recall.call_sites(text, wrappers, bare,
-                                                             finder.ros2)):
-            return False
     text = source.text(error.path)
     return text is not None and all(
         site.line != error.line
         for site in recall.call_sites(text, wrappers, bare, finder.ros2))
+
+
+# clang's "call to constructor of 'C' is ambiguous"
+_CONSTRUCTOR_ERROR = re.compile(r"^call to constructor of '([^']+)' is ambiguous")
+
+
+def _sites_in(cursors: Iterable[Cursor], source: Any, wrappers: list[str],
+              bare: Iterable[str], ros2: bool) -> bool:
+    """Whether a ROS call site lies in the lines of one of ``cursors`` (or one is not in
+    a file the unit's source reads, so that it cannot be told)."""
+    for cursor in cursors:
+        start, end = cursor.extent.start, cursor.extent.end
+        if start.file is None:
+            return True
+        text = source.text(os.path.abspath(start.file.name))
+        if text is None or any(start.line <= site.line <= end.line
+                               for site in recall.call_sites(text, wrappers, bare, ros2)):
+            return True
+    return False
 
 
 ROSCPP = "roscpp"
