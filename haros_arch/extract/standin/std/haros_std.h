@@ -2408,6 +2408,12 @@ template<class T> struct atomic {
   atomic() noexcept;
   constexpr atomic(T v) noexcept;
   T operator=(T v) noexcept;
+  // a permissive value (a vendor SDK's ``state.main_code``, its header missing), which
+  // converts to T and to atomic alike: stored as a T (unique_ptr's above the same)
+  template<class A, class = typename remove_reference<A>::type::haros_permissive>
+  atomic(A&& value) noexcept;
+  template<class A, class = typename remove_reference<A>::type::haros_permissive>
+  T operator=(A&& value) noexcept;
   operator T() const noexcept;
   T load(memory_order order = memory_order_seq_cst) const noexcept;
   void store(T v, memory_order order = memory_order_seq_cst) noexcept;
