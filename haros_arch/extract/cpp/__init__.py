@@ -2956,6 +2956,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
                                                clients):
         return tu  # no error where it could cost a call
     names.in_free = _in_free(first, functions, source)
+    names.in_read = _in_free(first, functions, source, recall.BASES_READ)
     if not names.learn(_located(first, source, tu)):
         return tu  # nothing to declare
     # Errors come in waves: a class made valid shows its other members. With more than
@@ -2984,6 +2985,7 @@ def _synthesise(path: str, tu: TranslationUnit, args: list[str],
         left = mine(again)
         hiding = _hiding(again, left, source, fieldless, functions, sites, clients)
         names.in_free = _in_free(left, functions, source)
+        names.in_read = _in_free(left, functions, source, recall.BASES_READ)
         learnt = bool(hiding) and names.learn(_located(hiding, source, again))
         rest = names.learn(_located([e for e in left if e not in hiding], source, again))
         # or when this parse is not the best and the other errors name more (members
@@ -3222,16 +3224,18 @@ def _sites(name: str, source: SourceCache, sites: dict[str, list[recall.Site]]
 
 
 def _in_free(errors: list[_Error], functions: dict[str, list[recall.Function]],
-             source: SourceCache) -> set[tuple[int, int]]:
+             source: SourceCache, kind: int = recall.FREE) -> set[tuple[int, int]]:
     """The errors in a free function (``main``, a helper: a function, no class's
     method; ``synthesis.Names.in_free``), by their file's bytes and offset;
-    ``functions``: the files' functions ``_hiding`` read."""
+    ``functions``: the files' functions ``_hiding`` read. With ``kind``
+    ``recall.BASES_READ``: those in a method of a class whose bases the parse reads
+    whole (``synthesis.Names.in_read``)."""
     found = set()
     for error in errors:
         if error.name is None or error.path is None:
             continue
         around = [f for f in functions.get(error.path, ()) if f[0] <= error.line <= f[1]]
-        if around and min(around, key=lambda f: f[1] - f[0])[3]:
+        if around and min(around, key=lambda f: f[1] - f[0])[3] == kind:
             found.add((id(source.get(error.name)), error.offset))
     return found
 

@@ -30,7 +30,7 @@ import ctypes
 import functools
 import os
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 
 from clang.cindex import (
@@ -43,7 +43,7 @@ from clang.cindex import (
 )
 
 from ...ctext import function_macros
-from . import api
+from . import api, synthesis
 from .cursors import by_file, line_of, visit_children
 
 __all__ = ["NEAR", "Function", "Site", "call_sites", "holding", "missed", "site_pattern"]
@@ -354,7 +354,10 @@ def missed(sites: Sequence[Site], lines: set[int], silent: Sequence[tuple[int, i
 # of a base class: a free function, or a method of a class (not a template) that, like
 # every class around it, derives from nothing (darknet_ros' YoloObjectDetector calls
 # ``XOpenDisplay(NULL)`` of the missing <X11/Xlib.h> in a method: no base can hold it)
-Function = tuple[int, int, str, bool]
+# a function's first and last lines, name, and what its class is: FREE (a function, or
+# a method of a class without bases), BASES_READ (``_bases_all_read``), else 0
+Function = tuple[int, int, str, int]
+FREE, BASES_READ = 1, 2
 _FREE = CursorKind.FUNCTION_DECL.value
 _PLAIN_CLASSES = frozenset({CursorKind.CLASS_DECL, CursorKind.STRUCT_DECL})
 
@@ -382,14 +385,70 @@ def _derives(cls: Cursor) -> bool:
 def _without_bases(function: Cursor) -> bool:
     """Whether ``function`` is a method of a class that is no template and, as every
     class it is nested in, has no base class."""
+    return _owners_all(function, lambda owner: not _derives(owner))
+
+
+def _bases_all_read(function: Cursor) -> bool:
+    """Whether ``function`` is a method of a class that is no template and, as every
+    class it is nested in, has only bases the parse reads whole (``_bases_read``): a
+    name it cannot find there is no member of a base it does not know."""
+    return _owners_all(function, lambda owner: _bases_read(owner, 0))
+
+
+def _owners_all(function: Cursor, judge: Callable[[Cursor], bool]) -> bool:
     owner = function.semantic_parent
     if owner is None or owner.kind not in _PLAIN_CLASSES:
         return False
     while owner is not None and owner.kind in _PLAIN_CLASSES:
-        if _derives(owner.get_definition() or owner):
+        if not judge(owner.get_definition() or owner):
             return False
         owner = owner.semantic_parent
     return owner is None or owner.kind in (CursorKind.NAMESPACE, CursorKind.TRANSLATION_UNIT)
+
+
+MAX_BASE_DEPTH = 8  # how deep a class's bases are followed (``_bases_read``)
+
+
+def _bases_read(cls: Cursor, depth: int) -> bool:
+    """Whether every base of class ``cls``, and of each of those in turn, is a class the
+    parse reads a definition of: one no template and not of the names declared
+    permissively (ros_phoenix's PhoenixManager, whose only base is rclcpp_components'
+    ComponentManager); not when its text names a base the parse dropped (a base of a
+    missing header, ``class Gradient : public vendor::Layer``, is no base specifier)."""
+    bases = [c for c in cls.get_children() if c.kind == CursorKind.CXX_BASE_SPECIFIER]
+    if not bases:
+        return not _derives(cls)
+    if depth >= MAX_BASE_DEPTH or len(bases) != _bases_written(cls):
+        return False
+    for base in bases:
+        declared = base.type.get_declaration()
+        found = declared.get_definition() if declared is not None else None
+        if found is None or found.kind not in _PLAIN_CLASSES or found.location.file is None \
+                or os.path.basename(found.location.file.name) == synthesis.HEADER_NAME \
+                or not _bases_read(found, depth + 1):
+            return False
+    return True
+
+
+def _bases_written(cls: Cursor) -> int:
+    """How many bases the head of class ``cls`` writes (the commas between ``:`` and its
+    body outside template argument lists and parentheses, plus one)."""
+    count, depth, after = 0, 0, False
+    for token in cls.get_tokens():
+        spelling = token.spelling
+        if spelling == "{" and depth == 0:
+            break
+        if spelling == ":" and depth == 0 and not after:
+            after, count = True, 1
+        elif spelling in ("<", "("):
+            depth += 1
+        elif spelling in (">", ")"):
+            depth -= 1
+        elif spelling == ">>":
+            depth -= 2
+        elif spelling == "," and depth == 0 and after:
+            count += 1
+    return count
 
 
 def holding(line: int, functions: Iterable[Function], sites: Sequence[Site]
@@ -569,7 +628,8 @@ def definitions(tu: TranslationUnit, files: set[str]) -> dict[str, list[Function
                 found.setdefault(name, []).append(
                     (line_of(lib.clang_getRangeStart(extent)),
                      line_of(lib.clang_getRangeEnd(extent)), cursor.spelling,
-                     kind == _FREE or _without_bases(_in(cursor, tu))))
+                     FREE if kind == _FREE or _without_bases(_in(cursor, tu)) else
+                     BASES_READ if _bases_all_read(_in(cursor, tu)) else 0))
             return 1
         return 2 if kind in containers else 1  # CXChildVisit_Recurse into a container
 

@@ -1049,6 +1049,12 @@ class Names:
         # parse being read that are in a free function
         self.free: set[str] = set()
         self.in_free: set[tuple[int, int]] = set()
+        # the errors in a method of a class whose bases the parse reads whole: a name
+        # called there is no member of an unread base, so, in a unit with a header
+        # missing (``libraries``), a function of it as in a free function (ros_phoenix's
+        # ``c_SetPhoenixDiagnosticsStartTime(1)`` of CTRE's missing C API, in a
+        # constructor of a ComponentManager); with none, the code's own error
+        self.in_read: set[tuple[int, int]] = set()
         # the members read where C++ needs a constant (``case Mode::FAST:``): enumerators
         self.constants: set[str] = set()
         self.flags: set[str] = set()  # those an operator combines (``_constant_at``)
@@ -1547,7 +1553,9 @@ class Names:
                 called and "_" in written[-1]
                 and written[-1].split("_")[0] in self.libraries
             ) and not (called and _CAPS_MACRO.fullmatch(written[-1])):
-                if called and (id(text), offset) in self.in_free and (
+                if called and ((id(text), offset) in self.in_free or (
+                        self.libraries - COMPILER_LIBRARIES
+                        and (id(text), offset) in self.in_read)) and (
                         written[-1] not in _api_methods()):
                     # (a name called again in a free function stays free: made a friend
                     # too it was declared neither way, ``free - friends``; subt's
