@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import atexit
+import json
 import os
 import shutil
 import tempfile
@@ -93,6 +94,20 @@ def copied_old(source: Path, target: Path) -> Path:
         for name in files:
             os.utime(os.path.join(folder, name), (1_000_000_000, 1_000_000_000))
     return target
+
+
+def unread_parameters(root: Path) -> list[str]:
+    """The parameters ``haros-arch check`` of ``root``'s project.yaml says are set and
+    never read (``parameter-set-not-read``), sorted."""
+    from haros_arch.cli import main
+
+    out = root / "check.json"
+    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
+          "--fail-on", "never"])
+    report = json.loads(out.read_text())
+    return sorted(entity.removeprefix("parameter:")
+                  for f in report["findings"] if f["rule"] == "parameter-set-not-read"
+                  for entity in f.get("entities", []) if entity.startswith("parameter:"))
 
 
 def only_case() -> str | None:

@@ -16,12 +16,9 @@ whole: slam_toolbox's and velodyne's leave such a finding undecided)."""
 
 from __future__ import annotations
 
-import json
-
 import pytest
-from conftest import package_xml
+from conftest import package_xml, unread_parameters
 
-from haros_arch.cli import main
 from haros_arch.models.library import Library
 
 LAUNCH = """\
@@ -47,13 +44,7 @@ def test_a_launch_setting_what_only_later_commits_read_is_said(write_tree):
         "project.yaml": "project: p\ndistro: noetic\nconfigurations:\n"
                         "  c: [bot/launch/bot.launch]\n",
     })
-    out = root / "check.json"
-    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
-          "--fail-on", "never"])
-    report = json.loads(out.read_text())
-    unread = sorted(entity.removeprefix("parameter:")
-                    for f in report["findings"] if f["rule"] == "parameter-set-not-read"
-                    for entity in f.get("entities", []) if entity.startswith("parameter:"))
+    unread = unread_parameters(root)
     # what the releases read (speed, map_update_interval) is not said
     assert unread == ["/karto/transform_tolerance", "/teleop/frame_id", "/teleop/stamped"]
 

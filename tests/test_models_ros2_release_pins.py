@@ -17,12 +17,9 @@ jazzy openni2_camera 2.2.2 publishes ``depth_raw/image``, not ``depth/image_raw`
 
 from __future__ import annotations
 
-import json
-
 import pytest
-from conftest import package_xml
+from conftest import package_xml, unread_parameters
 
-from haros_arch.cli import main
 from haros_arch.models.library import Library
 
 LAUNCH = """\
@@ -45,13 +42,7 @@ def test_rosbridge_of_the_release_reads_its_service_call_timeout(write_tree, dis
         "project.yaml": f"project: p\ndistro: {distro}\nconfigurations:\n"
                         "  c: [web/launch/web.launch.xml]\n",
     })
-    out = root / "check.json"
-    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
-          "--fail-on", "never"])
-    report = json.loads(out.read_text())
-    unread = sorted(entity.removeprefix("parameter:")
-                    for f in report["findings"] if f["rule"] == "parameter-set-not-read"
-                    for entity in f.get("entities", []) if entity.startswith("parameter:"))
+    unread = unread_parameters(root)
     assert unread == ["/rosbridge_websocket/not_a_rosbridge_parameter"]
 
 

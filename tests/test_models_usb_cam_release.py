@@ -7,11 +7,7 @@ image_processing.launch (MPC-Berkeley/barc, 2018) sets ~sharpness, ~saturation a
 
 from __future__ import annotations
 
-import json
-
-from conftest import package_xml
-
-from haros_arch.cli import main
+from conftest import package_xml, unread_parameters
 
 LAUNCH = """\
 <launch>
@@ -36,12 +32,6 @@ def test_the_release_reads_the_camera_controls_on_its_private_handle(write_tree)
         "project.yaml": "project: p\ndistro: noetic\nconfigurations:\n"
                         "  c: [cam/launch/cam.launch]\n",
     })
-    out = root / "check.json"
-    main(["check", str(root / "project.yaml"), "--format", "json", "-o", str(out),
-          "--fail-on", "never"])
-    report = json.loads(out.read_text())
-    unread = sorted(entity.removeprefix("parameter:")
-                    for f in report["findings"] if f["rule"] == "parameter-set-not-read"
-                    for entity in f.get("entities", []) if entity.startswith("parameter:"))
+    unread = unread_parameters(root)
     # the one name no release reads stays said: the model is whole, not silenced
     assert unread == ["/barc_cam/not_a_usb_cam_parameter"]
