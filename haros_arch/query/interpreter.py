@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Iterable
+from dataclasses import dataclass
 from typing import Any
 
 from ..evaluate.budget import text_length
@@ -19,8 +20,11 @@ from .access import PRIMITIVES, STRING_METHODS, Method, Pair, readers_of
 from .errors import QueryError, QueryLimitError, QueryNameError, QueryTypeError
 from .functions import Function
 from .planner import Plan, plan
+from .planner import conjuncts as plan_conjuncts
 
 MISSING = object()
+# a list a filter reads, the items its first conjuncts keep, and their index (``_Filter``)
+_Filtered = tuple[Any, list[Any], dict[str, list[Any]] | None]
 DEFAULT_STEPS = 20_000_000
 DEFAULT_SECONDS = 10.0
 MAX_STRING = 1_000_000
@@ -64,6 +68,11 @@ class Evaluator:
         self.handlers: dict[type, Callable[[Any], Any]] = {}
         self.hoisted: set[int] = set()  # sub-expressions evaluated once (syntax.invariants)
         self.memo: dict[int, Any] = {}
+        self.free: dict[int, frozenset[str]] = {}  # syntax.unbound_names, per sub-expression
+        self.bound: set[str] = set()  # every name the query binds (syntax.binders)
+        self.filters: dict[int, _Filter] = {}  # per filtered step: its conjuncts, split
+        # per filtered step and list it filters (a context name's)
+        self.filtered: dict[tuple[int, int], _Filtered] = {}
         self.made = 0
 
     # ---- limits
@@ -91,8 +100,13 @@ class Evaluator:
 
     # ---- entry
     def run(self, node: s.Expr) -> Any:
-        self.hoisted = s.invariants(node)
+        self.free = {}
+        s.unbound_names(node, self.free)
+        self.bound = s.binders(node)
+        self.hoisted = s.invariants(node, self.free, self.bound)
         self.memo = {}
+        self.filters = {}
+        self.filtered = {}
         try:
             return self.eval(node)
         except RecursionError:
@@ -308,7 +322,8 @@ class Evaluator:
         """As pyflwor: items without the step's field are skipped (``links/topic`` walks
         only topic links); a step that no item has is an error, to catch typos."""
         first = node.steps[0]
-        current = self._expand(self._eval_Name(s.Name(first.name, pos=first.pos)), first)
+        current = self._expand(self._eval_Name(s.Name(first.name, pos=first.pos)), first,
+                               first.name not in self.bound)
         for step in node.steps[1:]:
             following: list[Any] = []
             missing: Any = MISSING
@@ -324,7 +339,14 @@ class Evaluator:
             current = following
         return distinct(current)
 
-    def _expand(self, value: Any, step: s.Step) -> list[Any]:
+    def _expand(self, value: Any, step: s.Step, constant: bool = False) -> list[Any]:
+        """The items of ``value`` that ``step``'s filter keeps. ``constant``: ``value`` is
+        a context name's, the same list wherever the query reads it; the conjuncts the
+        filter begins with that read no bound name but ``self`` are then checked once
+        per list, not again on each evaluation (``direct_links[self.kind == 'subscribe'
+        and self.type == p.type ...]`` inside a ``for`` over ``p``), and an equality
+        after them between ``self``'s side and a side that does not read it looks its
+        items up by their strings (``_Filter``)."""
         if isinstance(value, list | tuple | set | frozenset):
             items = list(value)
         elif isinstance(value, dict):
@@ -333,17 +355,77 @@ class Evaluator:
             items = [value]
         if step.where is None:
             return items
+        rest = [step.where]
+        if constant and isinstance(value, list | tuple):
+            split = self._filter(step)
+            if split.alone:
+                items, rest = self._prefiltered(value, items, step, split)
         kept = []
         saved = self.env.get("self", MISSING)
         try:
             for item in items:
                 self.charge()
                 self.env["self"] = item
-                if self.truth(step.where):
+                if all(self.truth(c) for c in rest):
                     kept.append(item)
         finally:
             self._restore("self", saved)
         return kept
+
+    def _filter(self, step: s.Step) -> _Filter:
+        split = self.filters.get(id(step))
+        if split is None:
+            conjuncts = plan_conjuncts(step.where)
+            alone: list[s.Expr] = []
+            while conjuncts and not (self.free[id(conjuncts[0])] - {"self"}) & self.bound:
+                alone.append(conjuncts.pop(0))
+            own = other = None
+            if alone and conjuncts and isinstance(conjuncts[0], s.Compare) \
+                    and conjuncts[0].op == "==":
+                sides = (conjuncts[0].left, conjuncts[0].right)
+                for mine, theirs in (sides, sides[::-1]):
+                    if "self" in self.free[id(mine)] and "self" not in self.free[id(theirs)] \
+                            and not (self.free[id(mine)] - {"self"}) & self.bound:
+                        own, other = mine, theirs
+                        break
+            split = self.filters[id(step)] = _Filter(alone, own, other, conjuncts)
+        return split
+
+    def _prefiltered(self, value: Any, items: list[Any], step: s.Step, split: _Filter
+                     ) -> tuple[list[Any], list[s.Expr]]:
+        """The items of ``value`` that ``split.alone`` keeps, kept per list, and the
+        conjuncts left to check on them; through the index of ``split.own`` when it has
+        one and the other side is a string."""
+        entry = self.filtered.get((id(step), id(value)))
+        saved = self.env.get("self", MISSING)
+        try:
+            if entry is None or entry[0] is not value:
+                kept = []
+                for item in items:
+                    self.charge()
+                    self.env["self"] = item
+                    if all(self.truth(c) for c in split.alone):
+                        kept.append(item)
+                index: dict[str, list[Any]] | None = None
+                if split.own is not None:
+                    index = {}
+                    for item in kept:
+                        self.charge()
+                        self.env["self"] = item
+                        key = self.eval(split.own)
+                        if type(key) is not str:
+                            index = None  # compared as the query writes it, item by item
+                            break
+                        index.setdefault(key, []).append(item)
+                entry = self.filtered[(id(step), id(value))] = (value, kept, index)
+        finally:
+            self._restore("self", saved)
+        _value, kept, index = entry
+        if index is not None and split.other is not None:
+            probe = self.eval(split.other)  # reads no ``self``: the same for every item
+            if type(probe) is str:
+                return index.get(probe, []), split.rest[1:]
+        return kept, split.rest
 
     def _eval_SetOp(self, node: s.SetOp) -> list[Any]:
         left, right = self.collection(node.left), self.collection(node.right)
@@ -446,6 +528,21 @@ class Evaluator:
         if node.keys is not None:
             return dict(zip(node.keys, values, strict=True))
         return values[0] if len(values) == 1 else tuple(values)
+
+
+@dataclass
+class _Filter:
+    """A path step's filter as its conjuncts, in the written order: those it begins with
+    that read no bound name but ``self`` (``alone``), then the rest; when the first of
+    the rest is ``a == b`` with one side reading ``self`` and no other bound name
+    (``own``) and the other not reading ``self`` (``other``), the items ``alone`` keeps
+    are looked up by ``own``'s value, a string, instead of comparing each (the same
+    items, in their order: ``==`` on strings is the dictionary's)."""
+
+    alone: list[s.Expr]
+    own: s.Expr | None
+    other: s.Expr | None
+    rest: list[s.Expr]
 
 
 def _describe_type(value: Any) -> str:
