@@ -405,9 +405,20 @@ class KeptModel(Model):
     def whole(self) -> Model:
         if self._whole is None:
             assert self._text is not None
-            self._whole = from_data(json.loads(self._text))
+            with held_back():
+                data = json.loads(self._text)
+            self._whole = from_data(data)
             self._text = None
         return self._whole
+
+    def data(self) -> dict[str, Any] | None:
+        """``model_to_data`` of the model while it is not decoded: its text read as JSON
+        (the text is what ``model_to_data`` gave, read back the same, or that renumbered
+        by ``relocated``); None once decoded (it may have changed since)."""
+        if self._text is None:
+            return None
+        with held_back():  # a million dictionaries that live on
+            return dict(json.loads(self._text))
 
     @property
     def project(self) -> str:
@@ -421,6 +432,15 @@ class KeptModel(Model):
     packages = _Decoded()
     configurations = _Decoded()
     diagnostics = _Decoded()
+
+
+def model_data(model: Model) -> dict[str, Any]:
+    """``model_to_data(model)``; of a kept model not decoded yet, its text read as JSON,
+    without making the model's objects to write them again: a report or ``extract``'s
+    document after a run that renumbered the kept model (navigation2: 1.9 s of CPU
+    instead of 5.0)."""
+    found = model.data() if isinstance(model, KeptModel) else None
+    return model_to_data(model) if found is None else found
 
 
 def _model_text(content: bytes) -> bytes | None:

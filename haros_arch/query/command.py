@@ -12,7 +12,7 @@ from .. import runcache
 from ..model.diagnostic import SEVERITY_RANK, Diagnostic
 from ..model.finding import Finding
 from ..model.model import Model
-from ..model.serialise import model_to_data, to_data
+from ..model.serialise import to_data
 from ..project import Project
 from . import CONFIG_NAMES, Query, config_scope, model_scope
 from .catalogue import Rule, absorbed, load_catalogue, project_rules, run_catalogue
@@ -22,7 +22,9 @@ EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
 def document(model: Model, project: Project | None) -> dict[str, Any]:
     """The JSON model with a top-level ``findings`` list (what ``extract`` writes)."""
-    data = model_to_data(model)
+    from ..runcache import model_data
+
+    data = model_data(model)
     data["findings"] = to_data(run_catalogue(model, project))
     return data
 

@@ -8,7 +8,7 @@ from typing import Any
 
 from .. import SCHEMA
 from ..model.model import Model
-from ..model.serialise import model_to_data, to_data
+from ..model.serialise import to_data
 from ..project import Project
 from .html import ReportError
 
@@ -38,7 +38,9 @@ def project_findings(model: Model, project: Project) -> list[Any]:
 
 
 def model_data(model: Model) -> dict[str, Any]:
-    return model_to_data(model)
+    from ..runcache import model_data as data_of
+
+    return data_of(model)
 
 
 def workspace_root(project: Project | None, given: str | None) -> list[str]:
