@@ -12,6 +12,7 @@ parameter file made of an unset variable is (``os.getenv(...) + '.yaml'``)."""
 from __future__ import annotations
 
 from conftest import package_xml
+from test_launch_ros2_python import run
 
 from haros_arch.launch import load
 from haros_arch.workspace import scan
@@ -64,3 +65,25 @@ def test_branches_over_an_unset_variable_say_no_more_than_the_variable(write_tre
     assert said(known) == []
     assert sorted((p.name, p.value) for p in known.params) == [
         ("/other/side", "white"), ("/startup_node/side", "black")]
+
+
+UNSAID = """
+def nodes(serial):
+    if isinstance(serial, TextSubstitution):
+        name = 'text_driver'
+    else:
+        name = 'other_driver'
+    return [Node(package='p', executable='a', name=name)]
+
+def generate_launch_description():
+    return LaunchDescription(nodes(LaunchConfiguration('serial', default='x')))
+"""
+
+
+def test_branches_over_a_test_nothing_said_of_still_say_it(write_tree):
+    # guard: a test whose value says nothing of why (an isinstance of a launch object)
+    # leaves the name after it not known "set in both branches", a warning at its use
+    model, _ = run(write_tree, UNSAID)
+    assert [n.name for n in model.nodes] == ["/?_driver"]
+    assert [(d.code, d.message) for d in model.diagnostics] == [
+        ("LAUNCH_UNSUPPORTED", "name, set in both branches (a test not known statically)")]

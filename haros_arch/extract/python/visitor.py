@@ -246,8 +246,8 @@ class Walker:
         # the others give their names, in walk order
         for info, _calls, _cuts, given in entries:
             if id(info.node) not in self._inlined:
-                for named in given:
-                    self._give_name(*named)
+                for name_given in given:
+                    self._give_name(*name_given)
         self._unseen_said()
         unbuilt = self._unbuilt(modules)
         for info, calls, cuts, _given in entries:

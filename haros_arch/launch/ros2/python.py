@@ -1304,10 +1304,10 @@ class Interpreter(Expressions):
         if all(isinstance(v, list) and len(v) == len(first) for v in values):
             return [self.either([v[n] for v in values], f"{what}[{n}]", said)
                     for n in range(len(first))]
-        said = [said_unknown(what, [v]) for v in values]
-        if all(made is not None for made in said):
+        made_said = [said_unknown(what, [v]) for v in values]
+        if all(made is not None for made in made_said):
             # each not known for a cause said where it was made: said no more
-            return said[0]
+            return made_said[0]
         reason = f"{what} (a test not known statically)"
         if said:
             return _common_text(values, reason, report=False) or Unknown(reason,
