@@ -128,6 +128,14 @@ CATALOGUE: dict[str, Entry] = {
         "not known statically (webots_ros2_driver's make builds webots/webots-controller): "
         "the file may exist once built, so it is not reported missing; if it is a node, "
         "its interface is unknown."),
+    "CMAKE_PROGRAM_FROM_BUILD": Entry(
+        "info", "program {path} is installed from the build folder; the build makes it, "
+        "its code is not read",
+        "install(PROGRAMS) names a file in the build folder (``${CMAKE_BINARY_DIR}``, "
+        "``${CMAKE_CURRENT_BINARY_DIR}``), which a configure_file, a file(DOWNLOAD) or a "
+        "custom command writes when the package is built (tucan_ros2's "
+        "QGroundControl.AppImage): not a missing source; if it is a node, its interface "
+        "is unknown."),
     "CMAKE_GUESSED_EXECUTABLE": Entry(
         "info", "{command}() is defined outside the workspace; {target} is taken as an "
         "executable built from {sources}, one of which defines main()",

@@ -245,3 +245,93 @@ def test_a_controllers_setting_in_the_managers_file_is_placed_at_its_line(write_
     unread = [(f.location.file, f.location.line) for f in run_catalogue(model)
               if f.rule == "parameter-set-not-read"]
     assert unread == [("ros2_bringup/config/manager.yaml", 9)]
+
+
+SHARED_FILE = """/**:
+  ros__parameters:
+    gate: false
+    speed: 2.0
+    nobody: 1
+/robot/leader:
+  ros__parameters:
+    type: ros2_ctrl/Leader
+"""
+
+MOVER = """
+import rclpy
+from rclpy.node import Node
+
+
+class Mover(Node):
+    def __init__(self):
+        super().__init__('mover')
+        self.speed = self.declare_parameter('speed', 1.0).value
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Mover())
+"""
+
+MOVER_SETUP = """from setuptools import setup
+setup(name='mover_pkg', packages=['mover_pkg'],
+      entry_points={'console_scripts': ['mover = mover_pkg.mover:main']})
+"""
+
+FILE_TO_BOTH_LAUNCH = """
+import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    shared = os.path.join(get_package_share_directory('ros2_bringup'), 'config',
+                          'shared.yaml')
+    return LaunchDescription([
+        Node(package='mover_pkg', executable='mover', namespace='robot',
+             parameters=[shared]),
+        Node(package='controller_manager', executable='ros2_control_node',
+             namespace='robot', parameters=[{'robot_description': '<robot/>'}]),
+        Node(package='controller_manager', executable='spawner', namespace='robot',
+             arguments=['leader', '--param-file', shared]),
+    ])
+"""
+
+
+def test_a_file_given_to_a_node_and_by_a_spawner_is_one_setting(write_tree):
+    """elkapod_core's controllers.launch.py gives elkapod_motion_manager.yaml (its
+    entries under ``/**``) to the motion manager's node and, by the spawner's
+    ``--param-file``, to elkapod_gait_controller, which reads ``max_vel.tripod`` and
+    others the manager does not: each was "set but never read" for the manager, the
+    controller's copy a setting of its own. A ``/**`` entry of a file a spawner gives is
+    the same setting as that file's entry given to a node: unread when none reads it."""
+    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
+             for name in ("CMakeLists.txt", "package.xml")}
+    files["src/ros2_ctrl/ros2_ctrl.xml"] = PLUGINS_XML
+    files["src/ros2_ctrl/src/follower.cpp"] = LEADER
+    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
+                  for name in ("CMakeLists.txt", "package.xml")})
+    files["src/ros2_bringup/params/shared.yaml"] = SHARED_FILE
+    files["src/ros2_bringup/launch/c.launch.py"] = FILE_TO_BOTH_LAUNCH
+    files["src/mover_pkg/package.xml"] = (
+        '<package format="3"><name>mover_pkg</name><version>0.0.0</version>'
+        '<description>d</description><maintainer email="a@b.c">a</maintainer>'
+        '<license>MIT</license><exec_depend>rclpy</exec_depend>'
+        '<export><build_type>ament_python</build_type></export></package>')
+    files["src/mover_pkg/setup.py"] = MOVER_SETUP
+    files["src/mover_pkg/mover_pkg/__init__.py"] = ""
+    files["src/mover_pkg/mover_pkg/mover.py"] = MOVER
+    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
+                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    root = write_tree(files)
+    model = analyse(load(os.path.join(root, "project.yaml")), {},
+                    Options(cache_dir=None, jobs=1))
+    config = model.configuration("c")
+    gate = config.parameter("/robot/leader/gate")
+    assert gate is not None and [r.node.name for r in gate.readers] == ["/robot/leader"]
+    unread = sorted(f.message.split(" is set")[0] for f in run_catalogue(model)
+                    if f.rule == "parameter-set-not-read")
+    # gate: the controller reads its copy; speed: the mover reads its own; nobody: none
+    assert unread == ["/robot/mover/nobody"]

@@ -1438,8 +1438,10 @@ def _install(it: Interpreter, command: Invocation, args: list[str]) -> None:
                                                command.line, command.column, command.file))
 
 
-_PROGRAM_KEYWORDS = ("DESTINATION", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "RENAME",
-                     "OPTIONAL", "EXCLUDE_FROM_ALL")
+# install(PROGRAMS)'s options after its files: ``TYPE BIN`` (CMake 3.14) is a destination
+# too (tucan_ros2's qgroundcontrol/CMakeLists.txt:16-19), not two more programs
+_PROGRAM_KEYWORDS = ("DESTINATION", "TYPE", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT",
+                     "RENAME", "OPTIONAL", "EXCLUDE_FROM_ALL")
 
 
 def _programs(it: Interpreter, command: Invocation, args: list[str],

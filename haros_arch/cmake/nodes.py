@@ -726,6 +726,13 @@ def scripts(it: Interpreter, package: Package, workspace: Files,
                 workspace.location(program.file, program.line, program.column),
                 path=workspace.relpath(program.path), command=custom.name,
                 where=f"{workspace.relpath(custom.file)}:{custom.line}"))
+        elif program.path.startswith(BINARY_ROOT):
+            # installed from the build folder (tucan_ros2's QGroundControl.AppImage, which
+            # its file(DOWNLOAD) fetches there): made by the build, not missing
+            found.append(diag.make(
+                "CMAKE_PROGRAM_FROM_BUILD",
+                workspace.location(program.file, program.line, program.column),
+                path=program.path.replace(BINARY_ROOT, "${CMAKE_BINARY_DIR}", 1)))
         elif not os.path.isfile(program.path):
             found.append(diag.make(
                 "CMAKE_SOURCE_MISSING",

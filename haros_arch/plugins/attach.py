@@ -43,6 +43,7 @@ from ..launch.model import NodeDecl, shell_words
 from ..launch.ros1.params import flatten as ros1_flatten
 from ..launch.ros2.naming import (
     flatten,
+    for_every_node,
     node_patterns,
     params_for_node,
     parse_ros_args,
@@ -1404,7 +1405,10 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
         spawn = _spawn_of(decl)
         if spawn is None or not _serves(host, _manager_name(decl, spawn.manager), unnamed):
             continue
-        documents = [doc for path in spawn.param_files
+        # each with its path as the launch file gives it, as a node's parameter file's
+        # setting is named (``launch.ros2.nodes``: ``/**`` entries are a setting for
+        # every node the file is given to)
+        documents = [(*doc, path) for path in spawn.param_files
                      if (doc := _param_file(path, decl, workspace, config)) is not None]
         namespace = host.namespace.rstrip("/")
         manager = host.name if UNKNOWN_MARK not in host.name and not unnamed else \
@@ -1414,8 +1418,20 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
             own: dict[str, Any] = {}
             managed: dict[str, Any] = {}  # the spawner sets <name>.type on the manager
             placed: dict[str, Location] = {}
-            for document, at, keys in documents:
-                own.update(params_for_node(document, node_name))
+            # a ``/**`` entry of a file the spawner gives is a setting for every node the
+            # file is given to, as a launch file's (by the file: elkapod_core's
+            # controllers.launch.py gives elkapod_motion_manager.yaml to its manager's
+            # node and, by ``--param-file``, to elkapod_gait_controller)
+            shared: dict[str, str] = {}
+            for document, at, keys, source in documents:
+                given = params_for_node(document, node_name)
+                own.update(given)
+                every = for_every_node(document, node_name)
+                for key, _ in given:
+                    if key in every:
+                        shared[key] = source
+                    else:
+                        shared.pop(key, None)
                 managed.update((key, value) for key, value in params_for_node(
                     document, manager) if key == f"{controller}.type")
                 for owner in (node_name, manager):
@@ -1423,7 +1439,8 @@ def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]
                                   for key, line in params_for_node(keys, owner)
                                   if isinstance(line, int))
             where = documents[0][1] if documents else decl.location
-            _set_params(params, node_name, own, where, instance.conditions, placed)
+            _set_params(params, node_name, own, where, instance.conditions, placed,
+                        settings=shared)
             if manager == host.name:  # else no instance has the manager's real name
                 _set_params(params, manager, managed, where, instance.conditions, placed)
             # the controller's class is said where its type is written

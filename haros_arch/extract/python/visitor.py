@@ -146,6 +146,9 @@ class Walker:
         # the names each Node subclass was given (for methods walked without a caller)
         self.rclpy_names: list[str] = []
         self._class_names: dict[int, list[str]] = {}
+        # the names a walk gave, in order (``_give_name``'s arguments), while a walk whose
+        # calls may be dropped runs (``run``'s entries): given only if its calls are kept
+        self._naming: list[tuple[str, Location, int, str | None, bool]] | None = None
         # the ROS packages the node's package depends on whose code is not read, and
         # the classes of them said built (``_unseen_class``)
         self.unseen_packages: frozenset[str] = frozenset()
@@ -197,7 +200,8 @@ class Walker:
 
     def run(self, modules: list[Module]) -> None:
         self.main = {m.path for m in modules}
-        entries: list[tuple[FunctionInfo, list[PrimitiveCall], list[Diagnostic]]] = []
+        entries: list[tuple[FunctionInfo, list[PrimitiveCall], list[Diagnostic],
+                            list[tuple[str, Location, int, str | None, bool]]]] = []
         for module in modules:
             calls, cuts = self._collect(lambda m=module: self._block(
                 m.tree.body, Frame(m, top=True), ()))
@@ -230,10 +234,23 @@ class Walker:
             if id(info.node) in done:
                 continue
             done.add(id(info.node))
-            entries.append((info, *self._collect(lambda i=info: self._entry(i))))
+            saved, self._naming = self._naming, []
+            try:
+                walked = self._collect(lambda i=info: self._entry(i))
+                entries.append((info, *walked, self._naming))
+            finally:
+                self._naming = saved
+        # a function walked on its own whose calls are dropped (inlined at its callers:
+        # a node class's ``__init__`` built with a literal that picks its node's name,
+        # fruit_competition's ``SerialServer(type='sender')``) names no node either;
+        # the others give their names, in walk order
+        for info, _calls, _cuts, given in entries:
+            if id(info.node) not in self._inlined:
+                for name_given in given:
+                    self._give_name(*name_given)
         self._unseen_said()
         unbuilt = self._unbuilt(modules)
-        for info, calls, cuts in entries:
+        for info, calls, cuts, _given in entries:
             if id(info.node) not in self._inlined and (info.cls is None
                                                        or id(info.cls) not in unbuilt):
                 self.calls.extend(calls)
@@ -1299,20 +1316,26 @@ class Walker:
         if name_expr is None:
             return None
         name = text_of(ev.eval(name_expr, frame)).text
+        ns_expr = argument(call, getattr(spec, "namespace", None))
+        namespace = text_of(ev.eval(ns_expr, frame)).text if ns_expr is not None else None
+        anon_expr = argument(call, getattr(spec, "anonymous", None))
+        anonymous = anon_expr is not None and ev.eval(anon_expr, frame) is True
+        given = (name, self._where(frame, call), version, namespace, anonymous)
+        if self._naming is not None:
+            self._naming.append(given)
+        else:
+            self._give_name(*given)
+        return None if "?" in name else name
+
+    def _give_name(self, name: str, where: Location, version: int, namespace: str | None,
+                   anonymous: bool) -> None:
         if "?" not in name and name not in self.names:
             self.names.append(name)
-            self.names_at.append(self._where(frame, call))
+            self.names_at.append(where)
         if "?" not in name and version == 2 and name not in self.rclpy_names:
             self.rclpy_names.append(name)
         if self.rosname is None or ("?" in self.rosname and "?" not in name):
-            self.rosname, self.namespace, self.anonymous = name, None, False
-            ns_expr = argument(call, getattr(spec, "namespace", None))
-            if ns_expr is not None:
-                self.namespace = text_of(ev.eval(ns_expr, frame)).text
-            anon_expr = argument(call, getattr(spec, "anonymous", None))
-            if anon_expr is not None:
-                self.anonymous = ev.eval(anon_expr, frame) is True
-        return None if "?" in name else name
+            self.rosname, self.namespace, self.anonymous = name, namespace, anonymous
 
     def _record(self, spec: PyFunction, call: ast.Call, frame: Frame, conds: Conditions,
                 version: int) -> None:

@@ -385,6 +385,20 @@ def names_a_node(document: Any) -> bool:
     return any(pattern != "/**" for pattern, _ in node_patterns(document))
 
 
+def for_every_node(document: Any, node: str) -> set[str]:
+    """The names a parameter file's ``/**`` entries give ``node`` that no entry for
+    this node's own name sets too: a setting for every node the file is given to."""
+    every: set[str] = set()
+    own: set[str] = set()
+    for pattern, params in node_patterns(document):
+        names = {name for name, _ in flatten(params)}
+        if pattern == "/**":
+            every |= names
+        elif pattern_matches(pattern, node):
+            own |= names
+    return every - own
+
+
 def params_for_node(document: Any, node: str) -> list[tuple[str, Any]]:
     """The parameters a parameter file gives the node ``node``, in file order.
 

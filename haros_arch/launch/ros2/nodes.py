@@ -225,7 +225,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             runner.file_uses.setdefault(shared, []).append(
                 (document, node, location, scope.conditions))
         if UNKNOWN_MARK not in node:
-            every = _for_every_node(document, node) if shared else set()
+            every = naming.for_every_node(document, node) if shared else set()
             for name, leaf in naming.params_for_node(document, node):
                 at = keys.get(("", name), location)
                 if name in own and not composable:
@@ -397,20 +397,6 @@ def sections_for_no_node(runner: Runner) -> None:
                 where = next(location for _, name, location, _ in uses if name == node)
                 runner.model.foreign_sections.append(
                     ForeignSections(file, [node], foreign, where, lonely=True))
-
-
-def _for_every_node(document: Any, node: str) -> set[str]:
-    """The names a parameter file's ``/**`` entries give ``node`` that no entry for
-    this node's own name sets too."""
-    every: set[str] = set()
-    own: set[str] = set()
-    for pattern, params in naming.node_patterns(document):
-        names = {name for name, _ in naming.flatten(params)}
-        if pattern == "/**":
-            every |= names
-        elif naming.pattern_matches(pattern, node):
-            own |= names
-    return every - own
 
 
 def _unseen(runner: Runner, node: str, scope: Scope, location: Location) -> None:

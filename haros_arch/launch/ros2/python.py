@@ -1071,8 +1071,11 @@ class Interpreter(Expressions):
         self.decided.pop(id(stmt.test), None)  # said for this run of it only
         said = len(self.diagnostics)
         value, test = self.test_of(stmt.test, env)
-        if test is None and len(self.diagnostics) == said and (
-                derived_unknown("test", [value], None) is None):
+        # a test not known only through a value said not known where it was made (an
+        # environment variable not set, a call not run): what its branches set, where
+        # they differ, is unknown for that cause, said no more
+        said_test = test is None and derived_unknown("test", [value], None) is not None
+        if test is None and len(self.diagnostics) == said and not said_test:
             # a test not known whose value said nothing of why where it was made (an
             # environment variable not set, a call not run: said there) is said once,
             # at the test, if it guards an action (``guarding``); one unknown only
@@ -1109,7 +1112,8 @@ class Interpreter(Expressions):
             if taken is not None and left is not None:  # both end: so does the if
                 ends = [r for r in (taken, left) if isinstance(r, _Return)]
                 if len(ends) == 2:
-                    raise _Return(self.either([end.value for end in ends]))
+                    raise _Return(self.either([end.value for end in ends],
+                                              said=said_test))
                 raise ends[0] if ends else taken
             if left is not None:
                 env.clear()
@@ -1117,9 +1121,9 @@ class Interpreter(Expressions):
                 for (d, _), items in zip(held, body_items, strict=True):
                     _refill(d, items)
             elif taken is None:
-                self.join(env, after_body)
+                self.join(env, after_body, said_test)
                 for (d, _), items in zip(held, body_items, strict=True):
-                    self.join_items(d, items, text)
+                    self.join_items(d, items, text, said_test)
             returned = taken or left
             if returned is not None:
                 # one branch returns (or stops): that value is one the function may
@@ -1173,12 +1177,14 @@ class Interpreter(Expressions):
         return (unknown if isinstance(unknown, Unknown)
                 else Unknown(f"boolean {_source(node)}")), None
 
-    def join(self, env: dict[str, Any], other: dict[str, Any]) -> None:
+    def join(self, env: dict[str, Any], other: dict[str, Any], said: bool = False) -> None:
         """The names after an ``if`` whose test is not known, both branches having run
         on: ``env`` as the else branch left it, ``other`` as the body left it. A name one
         branch alone binds is that branch's (the other would fail on it); one both bind
         is ``either`` of the two values: the same value, the actions of both (each made
-        under its branch's test), else a value not known."""
+        under its branch's test), else a value not known (``said``: for a cause said
+        where the test's value was made, as Eurobot-2026-Main's ``if ros_domain_id ==
+        '11':`` over ``os.getenv('ROS_DOMAIN_ID')`` not set)."""
         for name, value in other.items():
             if name not in env:
                 env[name] = value
@@ -1188,7 +1194,8 @@ class Interpreter(Expressions):
                 env[name] = Unknown(f"{name}, defined in both branches of a test not known "
                                     "statically")
             else:
-                env[name] = self.either([value, env[name]], f"{name}, set in both branches")
+                env[name] = self.either([value, env[name]], f"{name}, set in both branches",
+                                        said)
 
     def dicts_held(self, env: dict[str, Any]) -> list[dict[Any, Any]]:
         """The dicts the names of ``env`` and of the module hold, and those inside them
@@ -1213,7 +1220,8 @@ class Interpreter(Expressions):
                 stack.append(value.attributes)  # ``obj.name = ...`` changes it in place
         return list(found.values())
 
-    def join_items(self, held: dict[Any, Any], body: dict[Any, Any], test: str) -> None:
+    def join_items(self, held: dict[Any, Any], body: dict[Any, Any], test: str,
+                   said: bool = False) -> None:
         """The items of a dict after ``if test:`` whose test is not known, both branches
         having run on: ``held`` as the else branch left it, ``body`` as the body left it.
         An item both hold is ``either`` of the two values (``join``); one that a branch
@@ -1226,7 +1234,7 @@ class Interpreter(Expressions):
             if key in body and key in held:
                 value = body[key] if body[key] is held[key] else self.either(
                     [body[key], held[key]], f"the item {key!r}, set in both branches of "
-                                            f"`if {test}`")
+                                            f"`if {test}`", said)
             else:
                 value = body[key] if key in body else held[key]
                 if not isinstance(value, (e.Action, e.ComposableNode)):
@@ -1252,13 +1260,16 @@ class Interpreter(Expressions):
             del self.guards[depth:]
         return None, goes_on
 
-    def either(self, values: list[Any], what: str = "one of several return values") -> Any:
+    def either(self, values: list[Any], what: str = "one of several return values",
+               said: bool = False) -> Any:
         """What a function gives that returns one of ``values``, or a name an ``if``
         set to one of them (a test not known statically decides): the actions (or
         composable nodes' descriptions) of all when they are such (each made under its
         branch's test), the value when they agree, a value not known when one is not,
         dicts of the same keys and lists of the same length item by item, texts known
-        where they agree (``_common_text``), else an unknown (``what``)."""
+        where they agree (``_common_text``), else an unknown (``what``); ``said``: the
+        test that chose is not known for a cause said where it was made, and so is the
+        value (kind ``unsupported``), said no more."""
         if all(v is None or isinstance(v, (e.Action, e.ComposableNode, list, tuple,
                                            LaunchDescription))
                for v in values) and any(v is not None for v in values):
@@ -1288,16 +1299,19 @@ class Interpreter(Expressions):
             return unknown  # not known either way: why one of them is not
         if all(isinstance(v, dict) and v.keys() == first.keys() for v in values):
             # the same keys (parameters): each value on its own, the rest stays known
-            return {key: self.either([v[key] for v in values], f"{what}[{key!r}]")
+            return {key: self.either([v[key] for v in values], f"{what}[{key!r}]", said)
                     for key in first}
         if all(isinstance(v, list) and len(v) == len(first) for v in values):
-            return [self.either([v[n] for v in values], f"{what}[{n}]")
+            return [self.either([v[n] for v in values], f"{what}[{n}]", said)
                     for n in range(len(first))]
-        said = [said_unknown(what, [v]) for v in values]
-        if all(made is not None for made in said):
+        made_said = [said_unknown(what, [v]) for v in values]
+        if all(made is not None for made in made_said):
             # each not known for a cause said where it was made: said no more
-            return said[0]
+            return made_said[0]
         reason = f"{what} (a test not known statically)"
+        if said:
+            return _common_text(values, reason, report=False) or Unknown(reason,
+                                                                         "unsupported")
         return _common_text(values, reason) or Unknown(reason)
 
     def with_(self, stmt: ast.With, env: dict[str, Any]) -> None:
@@ -2012,7 +2026,7 @@ def _catches(classes: tuple[str, ...] | None, name: str) -> bool:
     return any(issubclass(raised, _EXCEPTIONS[c]) for c in classes)
 
 
-def _common_text(values: list[Any], reason: str) -> Lazy | None:
+def _common_text(values: list[Any], reason: str, report: bool = True) -> Lazy | None:
     """Texts (strings, or strings with substitutions) that differ: the start and the
     end all of them share, known, and an unknown part (``reason``) between
     (``'real_driver'`` or ``'sim_driver'``: ``?_driver``); None when a value is no text
@@ -2037,7 +2051,8 @@ def _common_text(values: list[Any], reason: str) -> Lazy | None:
         return None
     first = tokens[0]
     parts: list[str | e.Subst] = []
-    for token in [*first[:head], e.Opaque(reason), *first[len(first) - tail:]]:
+    for token in [*first[:head], e.Opaque(reason, report=report),
+                  *first[len(first) - tail:]]:
         if isinstance(token, str) and parts and isinstance(parts[-1], str):
             parts[-1] += token
         else:

@@ -1197,7 +1197,12 @@ def copy_of(deep: bool) -> Builder:
 def text_of(as_repr: bool) -> Builder:
     """``str(value)`` / ``repr(value)``: Python's, bounded, of plain values (and of a path
     for ``str``); of an object of launch's API, its object text (``object_text``); the
-    ``str`` of a ``pathlib`` path known when launch runs is that path."""
+    ``str`` of a ``pathlib`` path known when launch runs is that path, and that of a text
+    known when launch runs that holds a path (``Lazy`` of a share folder
+    ``get_package_share_directory`` gives or a path ``os.path.join`` joins) is that
+    text, as ``str`` of a ``str`` is the same string (tractobots' nav2.launch.py:15
+    ``str(get_package_share_directory('nav2_bringup') + '/launch/...')``, nav2_bringup
+    not here)."""
     plain = builtin(repr if as_repr else str,
                     known=lambda v: printable(v, path=not as_repr))
 
@@ -1205,6 +1210,9 @@ def text_of(as_repr: bool) -> Builder:
         if len(a) == 1 and not k:
             if not as_repr and isinstance(a[0], e.PathJoin) and a[0].python == e.PATHLIB:
                 return Lazy((a[0],))
+            if not as_repr and isinstance(a[0], Lazy) and any(
+                    isinstance(part, e.FindPackage | e.PathJoin) for part in a[0].text):
+                return a[0]  # a path: a string (not ``int(unknown) + 1``'s text)
             text = object_text(a[0])
             if text is not None:
                 return text
