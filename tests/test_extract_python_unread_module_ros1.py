@@ -103,3 +103,32 @@ def test_a_ros2_node_calling_such_a_module_without_the_node_is_not(write_tree) -
             "rclpy.init()\nnode = rclpy.create_node('training')\n"
             "env = StartOpenAI_ROS_Environment('Mobiman-v0')\nrclpy.spin(node)\n")
     assert _said(_tree(write_tree, body)) == []
+
+
+PYTHON2_CONSOLE = """#!/usr/bin/env python
+import Queue
+import tkFont
+import Tkinter as tk
+import urllib2
+import rospy
+from crc8 import crc8
+
+rospy.init_node('console')
+font = tkFont.Font(size=24)
+root = tk.Tk()
+pending = Queue.Queue()
+urllib2.urlopen('http://localhost')
+rospy.spin()
+"""
+
+
+def test_python2_standard_library_modules_are_not(write_tree) -> None:
+    # cusub (848e8a0) console.py:36 builds ``tkFont.Font(size=24)`` in a Python 2 node:
+    # tkFont is Python 2's standard library (Python 3's tkinter.font), which makes no
+    # ROS call, and the node was partial for it; a module no list knows (crc8, of
+    # PyPI, ActuatorService.py:38) is still said
+    body = PYTHON2_CONSOLE + "crc8(b'x')\n"
+    assert _said(_tree(write_tree, body)) == [
+        (15, "crc8.crc8 of crc8, a Python module the workspace does not hold and no list "
+             "knows as a library, is called here in a ROS 1 node's process; its code is "
+             "not read")]

@@ -2488,12 +2488,13 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
 
 def _foreign(module: str) -> bool:
     """Whether the top-level module ``module``, which the workspace does not hold, may be
-    ROS code: not the standard library's, a client library or module the API tables
+    ROS code: not the standard library's (this interpreter's, or an older one's that ROS
+    code was written for: ``OLDER_STDLIB``), a client library or module the API tables
     read, nor a package known to make no ROS call (``NOT_CLIENTS``)."""
-    from . import NOT_CLIENTS  # (the package reads this module)
+    from . import NOT_CLIENTS, OLDER_STDLIB  # (the package reads this module)
 
-    return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
-        module not in api_modules())
+    return module not in sys.stdlib_module_names and module not in OLDER_STDLIB and (
+        module not in NOT_CLIENTS) and module not in api_modules()
 
 
 # builtins given a class that they never build
