@@ -132,3 +132,28 @@ def test_python2_standard_library_modules_are_not(write_tree) -> None:
         (15, "crc8.crc8 of crc8, a Python module the workspace does not hold and no list "
              "knows as a library, is called here in a ROS 1 node's process; its code is "
              "not read")]
+
+
+HISTOGRAM = """#!/usr/bin/env python
+import rospy
+import rostopic
+import rosnode
+import rosservice
+
+rospy.init_node('histogram')
+cls, real, _ = rostopic.get_topic_class('/depth', blocking=True)
+rospy.Subscriber(real, cls, lambda m: None)
+names = rosnode.get_node_names()
+rosservice.call_service('/drop_marker', [])
+rospy.spin()
+"""
+
+
+def test_master_queries_of_ros_comm_tools_are_not(write_tree) -> None:
+    # the Palouse RoboSub (40e79ed) scripts/histogram.py:20 asks rostopic for a topic's
+    # class and subscribes itself: no unseen module; rosservice's call_service calls a
+    # service of the node's process: still said
+    assert _said(_tree(write_tree, HISTOGRAM)) == [
+        (11, "rosservice.call_service of rosservice, a Python module the workspace does "
+             "not hold and no list knows as a library, is called here in a ROS 1 node's "
+             "process; its code is not read")]

@@ -187,6 +187,12 @@ NOT_CLIENTS = frozenset({
     "pykdl_utils", "angles", "smach", "rospy_message_converter", "ros2cli", "ros2topic",
     "rosunit", "rostest", "launch_testing", "launch_testing_ros", "ament_copyright",
     "ament_flake8", "ament_pep257", "pytest", "catkin_pkg",
+    # ros_comm's command-line tools' Python APIs, which a node calls to ask the master
+    # (``rostopic.get_topic_class(topic)``, ``get_topic_type``; ``rosnode.
+    # get_node_names()``, ``kill_nodes``): they make no publisher, subscriber or client
+    # of the node's (the Palouse RoboSub histogram.py subscribes itself with the class it
+    # gets); not rosservice, whose ``call_service`` is a client
+    "rostopic", "rosnode",
     # a map library released into ROS whose Python binding reads, projects and routes
     # maps (``lanelet2.io.Origin``, ``lanelet2.projection.UtmProjector``,
     # ``lanelet2.routing.RoutingGraph``: autoware_mini's planners and detectors)
