@@ -157,3 +157,32 @@ def test_master_queries_of_ros_comm_tools_are_not(write_tree) -> None:
         (11, "rosservice.call_service of rosservice, a Python module the workspace does "
              "not hold and no list knows as a library, is called here in a ROS 1 node's "
              "process; its code is not read")]
+
+
+POINTS = """#!/usr/bin/env python
+import rospy
+from sensor_msgs.msg import PointCloud2
+import sensor_msgs.point_cloud2 as pc2
+from velodyne_msgs import helpers
+from lab_filters import decoder
+
+def callback(msg):
+    for p in pc2.read_points(msg, skip_nans=True, field_names=("x", "y", "z")):
+        rospy.loginfo("%f", p[0])
+    helpers.stamp(msg)
+    decoder.decode(msg)
+
+rospy.init_node('pointcloud_data')
+rospy.Subscriber('/kinect2/sd/points', PointCloud2, callback)
+rospy.spin()
+"""
+
+
+def test_helpers_of_interface_packages_are_not(write_tree) -> None:
+    # wpb_home (0917443) wpb_home_python/scripts/pointcloud_data.py:11 reads a cloud with
+    # ROS 1 sensor_msgs' point_cloud2.read_points: an interface package's helper, no ROS
+    # call, and the node was partial; a module of another package is still said
+    assert _said(_tree(write_tree, POINTS)) == [
+        (12, "lab_filters.decoder.decode of lab_filters, a Python module the "
+             "workspace does not hold and no list knows as a library, is called here in a "
+             "ROS 1 node's process; its code is not read")]
