@@ -984,8 +984,9 @@ CATALOGUE: dict[str, Entry] = {
         "list knows as a library, is called here in a ROS 1 node's process; its code is "
         "not read",
         "A ROS 1 Python node calls a function or builds a class of a module that the "
-        "reader finds nowhere in the workspace and that is not the standard library, a "
-        "client library, a package known to make no ROS call, a pip library rosdep "
+        "reader finds nowhere in the workspace and that is not the standard library "
+        "(Python 2's too, tkFont, Queue, urllib2, and the modules later Python 3 releases "
+        "dropped), a client library, a package known to make no ROS call, a pip library rosdep "
         "installs, nor a ROS package the tool knows of (those are PY_CLASS_UNSEEN and "
         "PY_FUNCTION_UNSEEN): mobiman's training node calls openai_ros' "
         "StartOpenAI_ROS_Environment(name), a ROS package its package.xml does not "

@@ -103,3 +103,86 @@ def test_a_ros2_node_calling_such_a_module_without_the_node_is_not(write_tree) -
             "rclpy.init()\nnode = rclpy.create_node('training')\n"
             "env = StartOpenAI_ROS_Environment('Mobiman-v0')\nrclpy.spin(node)\n")
     assert _said(_tree(write_tree, body)) == []
+
+
+PYTHON2_CONSOLE = """#!/usr/bin/env python
+import Queue
+import tkFont
+import Tkinter as tk
+import urllib2
+import rospy
+from crc8 import crc8
+
+rospy.init_node('console')
+font = tkFont.Font(size=24)
+root = tk.Tk()
+pending = Queue.Queue()
+urllib2.urlopen('http://localhost')
+rospy.spin()
+"""
+
+
+def test_python2_standard_library_modules_are_not(write_tree) -> None:
+    # cusub (848e8a0) console.py:36 builds ``tkFont.Font(size=24)`` in a Python 2 node:
+    # tkFont is Python 2's standard library (Python 3's tkinter.font), which makes no
+    # ROS call, and the node was partial for it; a module no list knows (crc8, of
+    # PyPI, ActuatorService.py:38) is still said
+    body = PYTHON2_CONSOLE + "crc8(b'x')\n"
+    assert _said(_tree(write_tree, body)) == [
+        (15, "crc8.crc8 of crc8, a Python module the workspace does not hold and no list "
+             "knows as a library, is called here in a ROS 1 node's process; its code is "
+             "not read")]
+
+
+HISTOGRAM = """#!/usr/bin/env python
+import rospy
+import rostopic
+import rosnode
+import rosservice
+
+rospy.init_node('histogram')
+cls, real, _ = rostopic.get_topic_class('/depth', blocking=True)
+rospy.Subscriber(real, cls, lambda m: None)
+names = rosnode.get_node_names()
+rosservice.call_service('/drop_marker', [])
+rospy.spin()
+"""
+
+
+def test_master_queries_of_ros_comm_tools_are_not(write_tree) -> None:
+    # the Palouse RoboSub (40e79ed) scripts/histogram.py:20 asks rostopic for a topic's
+    # class and subscribes itself: no unseen module; rosservice's call_service calls a
+    # service of the node's process: still said
+    assert _said(_tree(write_tree, HISTOGRAM)) == [
+        (11, "rosservice.call_service of rosservice, a Python module the workspace does "
+             "not hold and no list knows as a library, is called here in a ROS 1 node's "
+             "process; its code is not read")]
+
+
+POINTS = """#!/usr/bin/env python
+import rospy
+from sensor_msgs.msg import PointCloud2
+import sensor_msgs.point_cloud2 as pc2
+from velodyne_msgs import helpers
+from lab_filters import decoder
+
+def callback(msg):
+    for p in pc2.read_points(msg, skip_nans=True, field_names=("x", "y", "z")):
+        rospy.loginfo("%f", p[0])
+    helpers.stamp(msg)
+    decoder.decode(msg)
+
+rospy.init_node('pointcloud_data')
+rospy.Subscriber('/kinect2/sd/points', PointCloud2, callback)
+rospy.spin()
+"""
+
+
+def test_helpers_of_interface_packages_are_not(write_tree) -> None:
+    # wpb_home (0917443) wpb_home_python/scripts/pointcloud_data.py:11 reads a cloud with
+    # ROS 1 sensor_msgs' point_cloud2.read_points: an interface package's helper, no ROS
+    # call, and the node was partial; a module of another package is still said
+    assert _said(_tree(write_tree, POINTS)) == [
+        (12, "lab_filters.decoder.decode of lab_filters, a Python module the "
+             "workspace does not hold and no list knows as a library, is called here in a "
+             "ROS 1 node's process; its code is not read")]

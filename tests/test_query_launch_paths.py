@@ -293,3 +293,27 @@ def test_scratch_device_and_kernel_folders_are_no_machine_s_paths(write_tree):
         assert sorted(f.entities for f in found) == [
             ("node:/driver",), ("parameter:/ekf/calibration",),
             ("parameter:/ekf/escape",), ("parameter:/ekf/tmp_like",)]
+
+
+DOUBLED_LAUNCH = """
+<launch>
+  <param name="camera_info_url" value="/$(find nav)/launch/camera.yaml" />
+  <param name="map_file" value="$(find nav)//maps/lab.yaml" />
+  <param name="calibration" value="/home/alice//calib/camera.yaml" />
+</launch>
+"""
+
+
+def test_a_find_path_written_with_a_doubled_slash_is_not_hard_coded(write_tree):
+    # cusub (848e8a0) cusub_common/drivers/occam/launch/occam_onecam.launch:3 writes
+    # "/$(find ros_indigosdk)/launch/camera.yaml": "//<the package>/..." is the package's
+    # folder (POSIX reads repeated slashes as one), no path of the author's machine
+    root = write_tree({
+        "src/nav/package.xml": package_xml("nav"),
+        "src/nav/CMakeLists.txt": "project(nav)\n",
+        "src/nav/launch/map.launch": DOUBLED_LAUNCH,
+        "project.yaml": "project: p\nconfigurations:\n  c: [nav/launch/map.launch]\n",
+    })
+    model = analyse(load(str(root / "project.yaml")), {"PATH": ""})
+    (rule,) = [r for r in load_catalogue() if r.id == "absolute-paths-in-launch"]
+    assert [f.entities for f in run_rule(rule, model)] == [("parameter:/calibration",)]

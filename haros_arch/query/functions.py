@@ -311,6 +311,7 @@ _FILE_SUFFIXES = (".yaml", ".yml", ".urdf", ".xacro", ".launch", ".xml", ".json"
 
 
 _XML_COMMENT = re.compile(r"<!--.*?(?:-->|$)", re.DOTALL)
+_SLASHES = re.compile(r"/{2,}")
 
 
 def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
@@ -326,7 +327,8 @@ def is_absolute_path(charge: Charge, value: Any, portable: Any = ()) -> bool:
     # with ``textfile`` (amr-ros-config's URDF says to install meshes "/opt/ros/... or
     # from source repository")
     for word in _XML_COMMENT.sub(" ", value).replace("=", " ").split():
-        word = word.strip("'\"")
+        # repeated slashes are one (POSIX): "/$(find pkg)/x" is "//<the package>/x"
+        word = _SLASHES.sub("/", word.strip("'\""))
         if any(word.startswith(folder) or word == folder[:-1] for folder in folders):
             continue
         if posixpath.normpath(word).startswith(_SYSTEM_FOLDERS):

@@ -1642,6 +1642,14 @@ class Scope:
             key_text = render(text)
             if searched_from_node(call) and not key_text.startswith(("/", "~")):
                 key_text = "~" + key_text  # from the node's private namespace up
+            given = written_arguments(call)
+            if len(given) == 3 and not key_text.startswith(("/", "~")):
+                # ``ros::param::search(ns, key, result)`` from a global namespace known
+                # in full: the key there (one a handle gives, ``n.getNamespace()``, is
+                # the handle's own, as its searchParam's)
+                space = self.string(given[0], depth + 1)
+                if all(type(part) is str for part in space) and render(space).startswith("/"):
+                    key_text = render(space).rstrip("/") + "/" + key_text
             return (SearchedName(key_text),)
         if call.spelling in ("operator+", "operator+=") and len(args) == 2:
             # (``a += b`` is read where a write of ``a`` names it: ``written_before``)

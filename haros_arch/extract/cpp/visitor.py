@@ -2476,6 +2476,11 @@ class CallFinder:
         shift, handle_arg = 0, spec.handle_arg
         if spec.optional_handle and args and is_handle(args[0]):
             shift, handle_arg = 1, 0
+        # roscpp's ``ros::param::search(ns, key, result)``: the key searched from ``ns``
+        # (kuka-lwr's controllers: ``search(n.getNamespace(), "robot_description", r)``)
+        search_from = args[0] if spec.search_from_node and len(args) == 3 else None
+        if search_from is not None:
+            shift = 1
 
         def arg(index: int | None) -> Cursor | None:
             if index is None or index + shift >= len(args):
@@ -2636,6 +2641,15 @@ class CallFinder:
                 unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
                 origin = self.namespaces.origin
                 unknown_parts = list(self.namespaces.unknown_parts)
+            elif search_from is not None:
+                handle = _namespace_holder(search_from)
+                if handle is not None:  # ``n.getNamespace()``: as ``n.searchParam(key)``
+                    namespace = render(self.namespaces.of(handle, scope))
+                    unknown_from, root = self.namespaces.unknown_from, self.namespaces.root
+                    origin = self.namespaces.origin
+                    unknown_parts = list(self.namespaces.unknown_parts)
+                else:
+                    namespace = render(scope.string(search_from))
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
@@ -5438,6 +5452,18 @@ def _renames_itself(arg: Cursor) -> bool:
 
 
 MAX_RULE_TOKENS = 4000  # of a function looked through for a ``__node:=`` rule
+
+
+def _namespace_holder(expr: Cursor) -> Cursor | None:
+    """The roscpp NodeHandle whose ``getNamespace()`` ``expr`` is (the namespace it
+    resolves names in), else None."""
+    call = strip(expr)
+    target = call.referenced if call.kind == CursorKind.CALL_EXPR else None
+    parent = target.semantic_parent if target is not None else None
+    if target is None or target.spelling != "getNamespace" or parent is None or (
+            qualified_name(parent) != "ros::NodeHandle") or written_arguments(call):
+        return None
+    return method_object(call)
 
 
 def _names_node_rule(cursor: Cursor, limit: int) -> bool:

@@ -315,32 +315,36 @@ def emptied(call: Cursor) -> bool:
 
 
 # roscpp's searches for a parameter up the namespaces: the key searched for, and the
-# result (the name found) written to the last argument
-_SEARCHES = {("ros::NodeHandle", "searchParam"): 2, ("ros::param", "search"): 2}
+# result (the name found) written to the last argument; ``ros::param::search(ns, key,
+# result)`` searches from the namespace it is given
+_SEARCHES = {("ros::NodeHandle", "searchParam"): (2,), ("ros::param", "search"): (2, 3)}
 
 
 def searched_from_node(call: Cursor) -> bool:
     """Whether a search ``searched_key`` names starts at the node's own name:
     ``ros::param::search(key, result)`` asks the master from this_node::getName() up,
-    the node's private namespace first (a NodeHandle's from the handle's namespace)."""
+    the node's private namespace first (a NodeHandle's from the handle's namespace, the
+    three-argument ``search(ns, key, result)``'s from ``ns``)."""
     method = call.referenced
     parent = method.semantic_parent if method is not None else None
     return call.spelling == "search" and parent is not None and (
-        qualified_name(parent) == "ros::param")
+        qualified_name(parent) == "ros::param") and len(written_arguments(call)) == 2
 
 
 def searched_key(call: Cursor) -> Cursor | None:
     """The key argument of roscpp's ``NodeHandle::searchParam(key, result)`` or
-    ``ros::param::search(key, result)``, whose result is the full name of the parameter
-    ``key`` names in the nearest namespace that has it; None for any other call."""
+    ``ros::param::search([ns, ]key, result)``, whose result is the full name of the
+    parameter ``key`` names in the nearest namespace that has it; None for any other
+    call."""
     if call.spelling not in ("searchParam", "search"):
         return None
     method = call.referenced
     parent = method.semantic_parent if method is not None else None
     args = written_arguments(call)
-    if parent is None or _SEARCHES.get((qualified_name(parent), call.spelling)) != len(args):
+    if parent is None or len(args) not in _SEARCHES.get(
+            (qualified_name(parent), call.spelling), ()):
         return None
-    return args[0]
+    return args[-2]
 
 
 def _smart_pointer(expr: Cursor) -> bool:

@@ -187,6 +187,12 @@ NOT_CLIENTS = frozenset({
     "pykdl_utils", "angles", "smach", "rospy_message_converter", "ros2cli", "ros2topic",
     "rosunit", "rostest", "launch_testing", "launch_testing_ros", "ament_copyright",
     "ament_flake8", "ament_pep257", "pytest", "catkin_pkg",
+    # ros_comm's command-line tools' Python APIs, which a node calls to ask the master
+    # (``rostopic.get_topic_class(topic)``, ``get_topic_type``; ``rosnode.
+    # get_node_names()``, ``kill_nodes``): they make no publisher, subscriber or client
+    # of the node's (the Palouse RoboSub histogram.py subscribes itself with the class it
+    # gets); not rosservice, whose ``call_service`` is a client
+    "rostopic", "rosnode",
     # a map library released into ROS whose Python binding reads, projects and routes
     # maps (``lanelet2.io.Origin``, ``lanelet2.projection.UtmProjector``,
     # ``lanelet2.routing.RoutingGraph``: autoware_mini's planners and detectors)
@@ -211,6 +217,34 @@ NOT_CLIENTS = frozenset({
     # NPU toolkit, and builds ``rknn.api.RKNN``): inference makes no ROS call
     "rknn", "rknnlite", "onnxruntime", "tensorflow", "tflite_runtime",
 }) | _pip_libraries()
+
+
+# the standard library of the interpreters ROS code was written for that this one's
+# ``sys.stdlib_module_names`` lacks: Python 2.7's modules that Python 3 renamed or
+# dropped (PEP 3108: a melodic node's ``import tkFont``, ``Queue``, ``urllib2``), and
+# those later Python 3 releases removed (PEP 594, 3.12's ``distutils`` and ``imp``),
+# which a noetic node run by Python 3.8 imports. They make no ROS call: a class built
+# from one hides nothing.
+OLDER_STDLIB = frozenset({
+    "__builtin__", "_winreg", "anydbm", "BaseHTTPServer", "Bastion", "bsddb",
+    "CGIHTTPServer", "commands", "compiler", "ConfigParser", "Cookie", "cookielib",
+    "copy_reg", "cPickle", "cStringIO", "dbhash", "dircache", "dl", "DocXMLRPCServer",
+    "dumbdbm", "dummy_thread", "exceptions", "fpformat", "future_builtins", "gdbm",
+    "htmlentitydefs", "htmllib", "HTMLParser", "httplib", "ihooks", "imageop", "imputil",
+    "md5", "mhlib", "mimetools", "MimeWriter", "mimify", "multifile", "mutex", "new",
+    "popen2", "posixfile", "Queue", "repr", "rexec", "rfc822", "robotparser",
+    "ScrolledText", "sets", "sgmllib", "sha", "SimpleDialog", "SimpleHTTPServer",
+    "SimpleXMLRPCServer", "SocketServer", "statvfs", "StringIO", "thread", "Tix",
+    "Tkinter", "tkColorChooser", "tkCommonDialog", "Tkconstants", "Tkdnd",
+    "tkFileDialog", "tkFont", "tkMessageBox", "tkSimpleDialog", "ttk", "urllib2",
+    "urlparse", "user", "UserDict", "UserList", "UserString", "whichdb", "xmllib",
+    "xmlrpclib", "FileDialog", "Dialog", "Canvas", "markupbase", "hotshot",
+    # removed from Python 3 after 3.8 (noetic's): 3.10-3.13
+    "formatter", "parser", "symbol", "binhex", "distutils", "imp", "asynchat",
+    "asyncore", "smtpd", "aifc", "audioop", "cgi", "cgitb", "chunk", "crypt", "imghdr",
+    "mailcap", "msilib", "nis", "nntplib", "ossaudiodev", "pipes", "sndhdr", "spwd",
+    "sunau", "telnetlib", "uu", "xdrlib", "lib2to3",
+})
 
 
 def _unseen_packages(workspace: Workspace, package: str | None,

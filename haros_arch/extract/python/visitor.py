@@ -2511,12 +2511,17 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
 
 def _foreign(module: str) -> bool:
     """Whether the top-level module ``module``, which the workspace does not hold, may be
-    ROS code: not the standard library's, a client library or module the API tables
-    read, nor a package known to make no ROS call (``NOT_CLIENTS``)."""
-    from . import NOT_CLIENTS  # (the package reads this module)
+    ROS code: not the standard library's (this interpreter's, or an older one's that ROS
+    code was written for: ``OLDER_STDLIB``), a client library or module the API tables
+    read, a package known to make no ROS call (``NOT_CLIENTS``), nor an interface
+    package, named by REP 144's suffix (``_msgs``; ``_srvs``, ``_interfaces``), whose
+    Python holds its generated types and helpers for them (ROS 1 sensor_msgs'
+    ``point_cloud2.read_points(cloud)``), no ROS call."""
+    from . import NOT_CLIENTS, OLDER_STDLIB  # (the package reads this module)
 
-    return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
-        module not in api_modules())
+    return module not in sys.stdlib_module_names and module not in OLDER_STDLIB and (
+        module not in NOT_CLIENTS) and module not in api_modules() and not (
+        module.endswith(("_msgs", "_srvs", "_interfaces")))
 
 
 # builtins given a class that they never build

@@ -26,6 +26,7 @@ bool getCached(const std::string& key, XmlRpc::XmlRpcValue& v);
 bool has(const std::string& key);
 bool del(const std::string& key);
 bool search(const std::string& key, std::string& result);
+bool search(const std::string& ns, const std::string& key, std::string& result);
 bool getParamNames(std::vector<std::string>& keys);
 template<typename T> bool param(const std::string& name, T& value, const T& default_val);
 template<typename T, typename D> bool param(const std::string& name, T& value, const D& default_val);
