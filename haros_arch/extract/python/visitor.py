@@ -2486,14 +2486,29 @@ def _joined(before: dict[str, object], taken: dict[str, object], other: dict[str
     return joined
 
 
+# the standard library's modules of the Pythons ROS distributions run (3.8, Noetic's
+# and Foxy's, on) that later releases removed, which ``sys.stdlib_module_names`` of the
+# Python running this tool (3.10 or later) may lack: 3.10 removed formatter, parser and
+# symbol, 3.11 binhex, 3.12 asynchat, asyncore, distutils, imp and smtpd (PEP 632, the
+# deprecations of 3.4-3.6), 3.13 PEP 594's dead batteries and lib2to3; 3.9 removed
+# dummy_threading and _dummy_thread. A Noetic node's ``from distutils.version import
+# LooseVersion`` is the standard library's, whatever Python reads it.
+REMOVED_STDLIB = frozenset({
+    "_dummy_thread", "dummy_threading", "formatter", "parser", "symbol", "binhex",
+    "asynchat", "asyncore", "distutils", "imp", "smtpd", "aifc", "audioop", "cgi", "cgitb",
+    "chunk", "crypt", "imghdr", "mailcap", "msilib", "nis", "nntplib", "ossaudiodev",
+    "pipes", "sndhdr", "spwd", "sunau", "telnetlib", "uu", "xdrlib", "lib2to3"})
+
+
 def _foreign(module: str) -> bool:
     """Whether the top-level module ``module``, which the workspace does not hold, may be
-    ROS code: not the standard library's, a client library or module the API tables
-    read, nor a package known to make no ROS call (``NOT_CLIENTS``)."""
+    ROS code: not the standard library's (of this Python, or one a ROS distribution
+    runs: ``REMOVED_STDLIB``), a client library or module the API tables read, nor a
+    package known to make no ROS call (``NOT_CLIENTS``)."""
     from . import NOT_CLIENTS  # (the package reads this module)
 
-    return module not in sys.stdlib_module_names and module not in NOT_CLIENTS and (
-        module not in api_modules())
+    return module not in sys.stdlib_module_names and module not in REMOVED_STDLIB and (
+        module not in NOT_CLIENTS) and module not in api_modules()
 
 
 # builtins given a class that they never build
