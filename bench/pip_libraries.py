@@ -15,7 +15,8 @@ commit releases as a ROS package (``depthai``, ``canopen``) is left out: that na
 be the ROS package's. A key ``python-X`` / ``python3-X`` (``-pip`` dropped) of the same
 file names a Python library, which the system's packages install (``python3-requests``,
 ``python3-smbus``, ``python3-zmq``): its ``X``, normalised so, is taken as its import name
-too (a name that is not one, ``opencv``, matches no module and changes nothing). A ROS 1
+too (a name that is not one, ``opencv``, matches no module and changes nothing), unless
+the key is the interpreter's own on some platform (``python3-dev``: ``_key_names``). A ROS 1
 node's call into a module no list knows makes the node partial (PY_MODULE_UNSEEN), so
 these libraries must be known as such.
 """
@@ -62,12 +63,36 @@ def _pip_names(rules: Any) -> set[str]:
     return found
 
 
-def _key_names(rules: Any) -> set[str]:
-    """The library each Python key names: ``python3-X`` / ``python-X``, less ``-pip``."""
+# a system package that is the Python interpreter itself (Arch's, Fedora's, NixOS's
+# ``python`` / ``python3``, Gentoo's ``dev-lang/python`` with any version or USE flag)
+_INTERPRETER = re.compile(r"python[23]?|=?dev-lang/python\b.*")
+
+
+def _system_packages(rules: Any) -> set[str]:
+    """The system package names of a key's rules, at any depth (not those of ``pip``)."""
     found: set[str] = set()
-    for key in rules if isinstance(rules, dict) else ():
+    if isinstance(rules, dict):
+        for key, value in rules.items():
+            if key != "pip":
+                found |= _system_packages(value)
+    elif isinstance(rules, list):
+        for value in rules:
+            found |= {value} if isinstance(value, str) else _system_packages(value)
+    return found
+
+
+def _key_names(rules: Any) -> set[str]:
+    """The library each Python key names: ``python3-X`` / ``python-X``, less ``-pip``;
+    not a key that some platform installs as the interpreter itself
+    (``_INTERPRETER``): what it gives is part of Python (its headers, ``venv``, the
+    standard library's modules and Tk binding), and its ``X`` is a Debian package's
+    name, no module (``python3-dev``, ``python3-interpreter``, ``python-support``,
+    ``python3-tk``: tkinter). Its ``pip`` rules still count (``importlib-metadata``)."""
+    found: set[str] = set()
+    for key, value in rules.items() if isinstance(rules, dict) else ():
         matched = re.fullmatch(r"python3?-(.+?)(-pip)?", str(key))
-        if matched:
+        if matched and not any(_INTERPRETER.fullmatch(name)
+                               for name in _system_packages(value)):
             found.add(matched.group(1))
     return found
 

@@ -97,3 +97,49 @@ def function_macros(text: AnyStr, name: AnyStr) -> list[tuple[int, list[AnyStr],
 
 def _line_break(match: re.Match[AnyStr]) -> AnyStr:
     return match.group(1)
+
+
+def closing(text: bytes, at: int, span: int = 2000, backwards: bool = False,
+            literals: bool = False) -> int | None:
+    """The offset of the ``)`` that closes the ``(`` at ``at``, looked for within ``span``
+    bytes; None when it does not close there. ``backwards``: of the ``(`` that the ``)``
+    at ``at`` closes. ``literals`` (forwards only): string and character literals and
+    comments are read over, so a ``)`` in ``ROS_INFO("a) b")`` or after ``//`` closes
+    nothing (a ``'`` after a digit is a digit separator, ``1'000``); an unclosed ``/*``
+    gives None."""
+    if backwards and literals:
+        raise ValueError("literals are read forwards only")
+    opens, closes = (0x29, 0x28) if backwards else (0x28, 0x29)
+    depth = 0
+    step = -1 if backwards else 1
+    end = max(-1, at - span) if backwards else min(len(text), at + span)
+    index = min(at, len(text) - 1) if backwards else at  # past the end: nothing there
+    while index > end if backwards else index < end:
+        char = text[index]
+        if literals and char in (0x22, 0x27):  # a string or a character literal
+            if char == 0x27 and index > 0 and text[index - 1:index].isdigit():
+                index += 1
+                continue
+            index += 1
+            while index < end and text[index] != char:
+                index += 2 if text[index] == 0x5C else 1  # a backslash escapes the next byte
+            index += 1
+            continue
+        if literals and text.startswith(b"//", index):
+            newline = text.find(b"\n", index, end)
+            index = end if newline < 0 else newline
+            continue
+        if literals and text.startswith(b"/*", index):
+            close = text.find(b"*/", index + 2, end)
+            if close < 0:
+                return None
+            index = close + 2
+            continue
+        if char == opens:
+            depth += 1
+        elif char == closes:
+            depth -= 1
+            if depth == 0:
+                return index
+        index += step
+    return None

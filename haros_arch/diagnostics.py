@@ -709,20 +709,27 @@ CATALOGUE: dict[str, Entry] = {
         "Fix: rename the one meant for another parameter, or "
         "delete the one that is not meant."),
     "LAUNCH_PARAM_OVERRIDDEN": Entry(
-        "warning", "parameter {name} given to {node} here as {given} is set again to "
-        "{kept} by {file}, later in its parameters: rcl keeps the later value, so this "
-        "one is never used",
-        "A dictionary among a ROS 2 Node's parameters gives a parameter that a parameter "
-        "file later in the same list sets again for that node. launch_ros hands the list "
-        "to rcl in order, each dictionary as a file of its own, and rcl keeps the last "
-        "value of a name without a word, so the dictionary's value is dead: where it is a "
-        "launch argument's, that argument changes nothing (roverrobotics_ros2's "
-        "robot_localizer_outdoor.launch.py gave its EKFs [{'use_sim_time': "
-        "use_sim_time}, localization_outdoor_ekf.yaml], whose sections say "
-        "use_sim_time: false, so use_sim_time:=true never reached them). Said when the "
-        "dictionary's value comes from substitutions or differs from the file's; not for "
-        "composable nodes. Fix: put the dictionary after the file, or delete the key "
-        "from one of them."),
+        "warning", "parameter {name} given to {node} {given} is set again to {kept} by "
+        "{file}, later in its parameters: the later value is the one kept, so this one is "
+        "never used",
+        "A dictionary among a ROS 2 Node's or ComposableNode's parameters gives a "
+        "parameter that a parameter file later in the same list sets again for that node. "
+        "launch_ros hands a node's list to rcl in order, each dictionary as a file of its "
+        "own (a component's as one list of overrides in order, which rclcpp reads the "
+        "same way), and the last value of a name wins without a word, so the "
+        "dictionary's value is dead: where it is a launch argument's, that argument "
+        "changes nothing (roverrobotics_ros2's robot_localizer_outdoor.launch.py gave its "
+        "EKFs [{'use_sim_time': use_sim_time}, localization_outdoor_ekf.yaml], whose "
+        "sections say use_sim_time: false, so use_sim_time:=true never reached them). "
+        "Said when the dictionary's value comes from substitutions or differs from the "
+        "file's. Also said, at the SetParameter, for a SetParameter in scope whose value "
+        "comes from substitutions and which the node's own parameter file sets again with "
+        "a value written in it: launch_ros gives the node the SetParameter values first, "
+        "so that its own win, and the launch argument reaches every node but this one (a "
+        "SetParameter of a written-out value is a default a node's file may mean to "
+        "change, and a rewritten file, nav2's RewrittenYaml of the same argument, is not "
+        "judged). Fix: put the dictionary after the file, or delete the key from one of "
+        "them."),
     "LAUNCH_PARAMS_NO_NODE": Entry(
         "warning", "parameter file {file} is given to {nodes}, but its sections are for "
         "{patterns}: rcl gives their parameters to none of them",

@@ -62,3 +62,21 @@ def test_settings_meant_to_replace_each_other_are_not_said(write_tree):
           <param name="shared" value="1"/>
         </launch>"""})
     assert twice(model) == []
+
+
+def test_a_node_param_before_its_rosparam_file_is_kept_and_not_said(write_tree):
+    # roslaunch's _node_tag puts a node's <param> tags in its context (force_local) and
+    # adds them after all its children, so they win over its <rosparam> files whatever
+    # the order: the file's value of the key is the one replaced, the usual pattern of
+    # defaults in a file, one value changed by a tag (no LAUNCH_PARAM_OVERRIDDEN in ROS 1)
+    model = load_launch(write_tree, """<launch>
+          <node pkg="amcl" type="amcl" name="amcl">
+            <param name="kld_err" value="0.05"/>
+            <rosparam file="$(find pkg)/config/amcl.yaml"/>
+          </node>
+        </launch>""", extra={"src/pkg/config/amcl.yaml": "kld_err: 0.01\nkld_z: 0.99\n"})
+    assert not [d for d in model.diagnostics if d.code in (
+        "LAUNCH_PARAM_SET_TWICE", "LAUNCH_PARAM_OVERRIDDEN")]
+    # both settings are kept, in roslaunch's order: the tag's last
+    assert [(p.name, p.value) for p in model.params if p.name.startswith("/amcl/kld")] == [
+        ("/amcl/kld_err", 0.01), ("/amcl/kld_z", 0.99), ("/amcl/kld_err", 0.05)]

@@ -3,13 +3,19 @@ in the same list sets again for that node is dead: launch_ros hands rcl the list
 order and rcl keeps the last value (LAUNCH_PARAM_OVERRIDDEN, a warning).
 roverrobotics_ros2 a97557f1: ``parameters=[{'use_sim_time': use_sim_time}, ekf_yaml]``
 with ``use_sim_time: false`` in the file's section for the node, so
-``use_sim_time:=true`` never reached the EKFs."""
+``use_sim_time:=true`` never reached the EKFs. A component's list is read in the same
+order (its case, once a guard that never ran: the file did not import
+``ComposableNodeContainer``, so launch stopped before it)."""
 
 from __future__ import annotations
 
 from test_launch_ros2_python import run
 
 BODY = """
+from launch_ros.actions import ComposableNodeContainer
+from launch_ros.descriptions import ComposableNode
+
+
 def generate_launch_description():
     use_sim_time = LaunchConfiguration('use_sim_time')
     ekf = os.path.join(get_package_share_directory('pkg'), 'config', 'ekf.yaml')
@@ -58,15 +64,20 @@ def test_a_dictionary_a_later_file_sets_again_is_said(write_tree):
     first = next(n + 1 for n, text in enumerate(lines) if "name='ekf_filter_node'" in text
                  and "Node(package='robot_localization'" in text)
     rates = next(n + 1 for n, text in enumerate(lines) if "name='ekf_rates'" in text)
+    component = next(n + 1 for n, text in enumerate(lines) if "ComposableNode(" in text)
     said = sorted((d.location.line, d.severity, d.message) for d in model.diagnostics
                   if d.code == "LAUNCH_PARAM_OVERRIDDEN")
     assert [(line, severity) for line, severity, _ in said] == [
-        (first, "warning"), (rates, "warning")]
+        (first, "warning"), (rates, "warning"), (component, "warning")]
     assert "use_sim_time" in said[0][2] and "ekf.yaml:3" in said[0][2]
     assert "launch argument" in said[0][2]
     # of ekf_rates' three keys only two_d_mode differs from the file's (frequency is the
     # file's own value, publish_tf a key the file has not)
     assert "two_d_mode" in said[1][2] and "ekf.yaml:11" in said[1][2]
+    # a component's list is one list of overrides in order (launch_ros'
+    # to_parameters_list, rclcpp_components' NodeOptions::parameter_overrides): the
+    # file's section for /comp/ekf_filter_node comes after the dictionary
+    assert "/comp/ekf_filter_node" in said[2][2] and "ekf.yaml:14" in said[2][2]
     # the file's value is the node's, as rcl keeps it
     params = {p.name: p.value for p in model.params}
     assert params["/ekf_filter_node/use_sim_time"] is False

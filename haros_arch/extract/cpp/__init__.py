@@ -34,7 +34,7 @@ from ... import compile_commands as commands
 from ... import diagnostics as diag
 from ... import safe_yaml
 from ...collector import held_back
-from ...ctext import code_only
+from ...ctext import closing, code_only
 from ...diagnostics import Diagnostic
 from ...files import MAX_FILE_BYTES, read_text
 from ...manifest import parse_manifest, ros_version
@@ -3278,7 +3278,7 @@ def _in_macro_definition(message: str, text: bytes | None, offset: int,
     macro = called.group(1).decode()
     if not name or name == macro or not synthesis.is_macro_name(macro):
         return None
-    close = synthesis.closing(text, called.end() - 1)
+    close = closing(text, called.end() - 1)
     word = re.compile(rb"(?<![\w.:>])" + re.escape(name.encode()) + rb"\b")
     if close is None or word.search(text, offset, close) is not None:
         return None

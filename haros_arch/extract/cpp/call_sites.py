@@ -321,7 +321,8 @@ class CallSites:
             self._scopes[key] = Scope(function, self.macros, self.source, self)
         return self._scopes[key]
 
-    def returns(self, method: Cursor) -> list[tuple[Cursor, Cursor]] | None:
+    def returns(self, method: Cursor, given: bool = False
+                ) -> list[tuple[Cursor, Cursor]] | None:
         """(expression, method) for each body a call of ``method`` (a method without
         parameters) may run, whose one statement returns the expression: its own
         definition unless it is pure, and for a virtual one each of this unit's
@@ -329,9 +330,14 @@ class CallSites:
         navigator defines as ``return std::string("navigate_to_pose");``); a function
         without parameters likewise, by its definition (``inline std::string
         imu_topic() { return "imu/data"; }``, a header's constant of a library). None when
-        one of them is not such a body, or none is known."""
-        if method.kind not in (CursorKind.CXX_METHOD, CursorKind.FUNCTION_DECL) or any(
-                c.kind == CursorKind.PARM_DECL for c in method.get_children()):
+        one of them is not such a body, or none is known. ``given``: a function or
+        method with parameters, not virtual (the call's own arguments are its
+        parameters' values: ``Scope.given_return``), by its definition only."""
+        if method.kind not in (CursorKind.CXX_METHOD, CursorKind.FUNCTION_DECL) or (
+                given == (not any(c.kind == CursorKind.PARM_DECL
+                                  for c in method.get_children()))):
+            return None
+        if given and method.kind == CursorKind.CXX_METHOD and method.is_virtual_method():
             return None
         bodies: list[Cursor] = []
         definition = method.get_definition()

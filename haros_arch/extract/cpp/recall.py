@@ -42,7 +42,7 @@ from clang.cindex import (
     conf,
 )
 
-from ...ctext import function_macros
+from ...ctext import closing, function_macros
 from . import api, synthesis
 from .cursors import by_file, line_of, visit_children
 
@@ -491,53 +491,15 @@ _LOG_MACRO = re.compile(
 LOG_STATEMENT_BYTES = 4096  # how far the end of one is looked for
 
 
-def _closing(data: bytes, start: int) -> int | None:
-    """The offset just past the parenthesis that closes the one at ``start``, strings,
-    character literals and comments read over; None when not found within
-    ``LOG_STATEMENT_BYTES``."""
-    depth = 0
-    at = start
-    end = min(len(data), start + LOG_STATEMENT_BYTES)
-    while at < end:
-        char = data[at]
-        if char in (0x22, 0x27):  # a string or a character literal
-            if char == 0x27 and at > 0 and data[at - 1:at].isdigit():
-                at += 1  # a digit separator (1'000)
-                continue
-            at += 1
-            while at < end and data[at] != char:
-                at += 2 if data[at] == 0x5C else 1  # a backslash escapes the next byte
-            at += 1
-            continue
-        if data.startswith(b"//", at):
-            newline = data.find(b"\n", at, end)
-            at = end if newline < 0 else newline
-            continue
-        if data.startswith(b"/*", at):
-            close = data.find(b"*/", at + 2, end)
-            if close < 0:
-                return None
-            at = close + 2
-            continue
-        if char == 0x28:
-            depth += 1
-        elif char == 0x29:
-            depth -= 1
-            if depth == 0:
-                return at + 1
-        at += 1
-    return None
-
-
 @functools.lru_cache(maxsize=64)
 def log_statements(data: bytes) -> tuple[tuple[int, int], ...]:
     """The logging macro invocations of a file's bytes (``_LOG_MACRO``), each as the
     offsets of its name and just past its closing parenthesis."""
     found = []
     for match in _LOG_MACRO.finditer(data):
-        end = _closing(data, match.end() - 1)
-        if end is not None:
-            found.append((match.start(), end))
+        close = closing(data, match.end() - 1, LOG_STATEMENT_BYTES, literals=True)
+        if close is not None:
+            found.append((match.start(), close + 1))
     return tuple(found)
 
 

@@ -30,7 +30,7 @@ import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
-from ...ctext import code_only, integer_literal
+from ...ctext import closing, code_only, integer_literal
 from . import interfaces, msg_types
 
 MAX_ROUNDS = 1  # rounds of declaring unknown names (0: none; more: probes for waves)
@@ -259,13 +259,13 @@ def _discarded_member_call(text: bytes, offset: int, name: str) -> bool:
         start = max(before.rfind(b";"), before.rfind(b"{"), before.rfind(b"}")) + 1
         if _CALLED_OBJECT.search(before) is None or _ASSIGNED.match(before, start) is None:
             return False
-    closing = {ord("<"): ord(">"), ord("("): ord(")")}
+    pairs = {ord("<"): ord(">"), ord("("): ord(")")}
     stack: list[int] = []
     called = False
     for at in range(offset + len(name), min(len(text), offset + 2000)):
         char = text[at]
-        if char in closing:
-            stack.append(closing[char])
+        if char in pairs:
+            stack.append(pairs[char])
         elif stack and char == stack[-1]:
             stack.pop()
             called = called or (not stack and char == ord(")"))
@@ -918,24 +918,6 @@ def _member_call_argument(text: bytes, offset: int) -> bool:
         elif char == b";" and depth == 0:
             return False
     return False
-
-
-def closing(text: bytes, at: int, span: int = 2000, backwards: bool = False) -> int | None:
-    """The offset of the ``)`` that closes the ``(`` at ``at`` (within ``span`` bytes);
-    ``backwards``: of the ``(`` that the ``)`` at ``at`` closes."""
-    opens, closes = (b")", b"(") if backwards else (b"(", b")")
-    depth = 0
-    indexes = range(at, max(-1, at - span), -1) if backwards else range(
-        at, min(len(text), at + span))
-    for index in indexes:
-        char = text[index:index + 1]
-        if char == opens:
-            depth += 1
-        elif char == closes:
-            depth -= 1
-            if depth == 0:
-                return index
-    return None
 
 
 def _template_arguments(text: bytes, start: int) -> list[tuple[int, int]]:

@@ -1377,11 +1377,11 @@ class Scope:
             decl = cursor.referenced
             if decl is None:  # a name in a template that clang could not bind
                 return UNKNOWN
+            if self.fixed and key_of(decl) in self.fixed:
+                return self.fixed[key_of(decl)]
             if self.is_parameter(decl):
                 return self.sites.agreed(  # type: ignore[union-attr]
                     decl, lambda arg, scope: scope.string(arg, depth + 1), UNKNOWN)
-            if self.fixed and key_of(decl) in self.fixed:
-                return self.fixed[key_of(decl)]
             if _ARGUMENTS[0] and decl.kind in (CursorKind.FIELD_DECL, CursorKind.VAR_DECL):
                 option = option_held(cursor, decl, self.source)
                 if option is not None:  # ``case 'r': name = optarg;`` of a getopt loop
@@ -1749,6 +1749,10 @@ class Scope:
             found = self._returned(target, lambda scope, value: scope.string(value, depth + 1))
             if found is not None:
                 return found
+        elif target is not None:
+            given = self.given_return(target, args, depth)
+            if given is not None:
+                return given
         return UNKNOWN
 
     def _stream_events(self, decl: Cursor, at: Cursor, depth: int
@@ -1897,6 +1901,37 @@ class Scope:
         values = {read(self.sites.scope(method), value)
                   for value, method in self.sites.returns(target) or ()}
         return values.pop() if len(values) == 1 else None
+
+    def given_return(self, target: Cursor, args: list[Cursor], depth: int) -> Parts | None:
+        """The text a call of a function or method with parameters gives, whose body is
+        one ``return`` (``std::string topic(const std::string& leaf) { return "arm/" +
+        leaf; }``): its expression read in that body with each string parameter taken
+        to hold the text of this call's argument for it (read here), as the call runs
+        it. None when not such a function (virtual, several statements, an argument
+        for each parameter not written: defaults, a pack), or the expression does not
+        read as text."""
+        found = self.sites.returns(target, given=True) if self.sites is not None else None
+        if found is None:
+            return None
+        ((value, body),) = found
+        params = [c for c in body.get_children() if c.kind == CursorKind.PARM_DECL]
+        if len(params) != len(args) or any(
+                c.kind == CursorKind.PACK_EXPANSION_EXPR for c in args):
+            return None
+        assert self.sites is not None
+        scope = self.sites.scope(body)
+        bound = {key_of(param): self.string(arg, depth + 1)
+                 for param, arg in zip(params, args, strict=True) if _textual(param)}
+        before = {key: scope.fixed[key] for key in bound if key in scope.fixed}
+        scope.fixed.update(bound)  # (a call of it inside: read with its own arguments)
+        try:
+            return scope.string(value, depth + 1)
+        finally:
+            for key in bound:
+                if key in before:
+                    scope.fixed[key] = before[key]
+                else:
+                    scope.fixed.pop(key, None)
 
     def _unremapped(self, args: list[Cursor]) -> bool:
         """Whether roscpp's ``resolve(name, remap)`` / ``resolveName(name, remap)`` is

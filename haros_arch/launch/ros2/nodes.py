@@ -185,8 +185,14 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
     # what a dictionary of the node's own list gives it, as written, until a file later
     # in the list sets the name again for this node (``_overridden``)
     own: dict[str, Any] = {}
+    # what a ``SetParameter`` in scope gives it, as written, with where: launch_ros hands
+    # the node those before its own list (``_overridden``)
+    scoped: dict[str, tuple[Any, Location]] = {}
+    # those the node's own file sets again, said once the list is read unless a
+    # dictionary of the list sets the name too (an override written beside the node)
+    overridden: dict[str, tuple[Any, Any, Any, Location, Location]] = {}
 
-    def read_file(entry: e.ParamFile, location: Location) -> None:
+    def read_file(entry: e.ParamFile, location: Location, mine: bool = True) -> None:
         placed: list[tuple[str, Any]] = []
         composable = runner.model.nodes[-1].composable
         document = runner.param_file(entry, scope, location, placed=placed,
@@ -228,9 +234,13 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             every = naming.for_every_node(document, node) if shared else set()
             for name, leaf in naming.params_for_node(document, node):
                 at = keys.get(("", name), location)
-                if name in own and not composable:
+                if name in own:
                     _overridden(runner, node, name, own.pop(name), found[name][0], leaf,
                                 at, where)
+                elif name in scoped and mine and _plain(entry):
+                    written, place = scoped[name]
+                    overridden[name] = (written, found[name][0], leaf, at, place)
+                scoped.pop(name, None)
                 put(name, leaf, at, shared if name in every else None)
             return
         if naming.names_a_node(document):
@@ -258,10 +268,12 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
         return
     for key, value, location in scope.params:  # SetParameter(s), SetParametersFromFile
         if key is None:
-            read_file(value, location)
+            read_file(value, location, mine=False)
             continue
+        raw = dict(flat(key, value)) if isinstance(value, dict) else {}
         for name, leaf in flat(key, convert(value, ev)):
             put(name, leaf, location, f"{location.file}:{location.line}:{location.column}")
+            scoped[name] = (raw.get(name, value), location)
     commands: dict[str, str] = {}
     given: dict[str, Any] = {}  # the node's dictionaries' parameters
     for entry in entries:
@@ -287,9 +299,13 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                 put(name, leaf, where)
                 given[name] = leaf
                 own[name] = raw.get(name, value)
+                scoped.pop(name, None)  # the node's own value, written beside it
+                overridden.pop(name, None)
             command = command_line(value, ev)
             if command is not None:
                 commands[ev.value(written).text] = command
+    for name, (written, mine, theirs, at, place) in overridden.items():
+        _overridden(runner, node, name, written, mine, theirs, at, place, scope_given=True)
     if given:
         # launch_ros writes a node's dictionaries to a file of its own under ``/**``: a
         # parameter file of the process, which reaches a node the process makes that
@@ -311,24 +327,48 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
 
 
 def _overridden(runner: Runner, node: str, name: str, written: Any, mine: Any,
-                theirs: Any, at: Location, where: Location) -> None:
-    """``LAUNCH_PARAM_OVERRIDDEN``: a dictionary among a ``Node``'s ``parameters``
-    gives ``name``, and a parameter file later in the list sets it again for this node.
-    launch_ros hands rcl the list in order (each dictionary written to a file of its
-    own) and rcl keeps the last value, so the dictionary's is never used: roverrobotics'
+                theirs: Any, at: Location, where: Location,
+                scope_given: bool = False) -> None:
+    """``LAUNCH_PARAM_OVERRIDDEN``: a value given to ``node`` for ``name`` that a parameter
+    file later in what launch_ros hands the node sets again for it, so the value is never
+    used. launch_ros hands a ``Node``'s ``parameters`` to rcl in order (each dictionary
+    written to a file of its own) and rcl keeps the last value: roverrobotics'
     ``parameters=[{'use_sim_time': use_sim_time}, ekf_yaml]``, whose file says
-    ``use_sim_time: false``, so ``use_sim_time:=true`` changed nothing. Said when the
-    value comes from substitutions (a launch argument meant to choose it) or is written
-    out and differs from the file's; not for a component (its load request is one list
-    rclcpp reads otherwise), nor where either value is not known and written out."""
+    ``use_sim_time: false``, so ``use_sim_time:=true`` changed nothing. A component's
+    list is the same: launch_ros' ``to_parameters_list`` makes one list of its entries in
+    order (a file's section for the node where a file is) and rclcpp_components gives it
+    to the node's options as overrides, of which rclcpp keeps the last of a name. Said
+    when the value comes from substitutions (a launch argument meant to choose it) or is
+    written out and differs from the file's; not where either value is not known and
+    written out.
+
+    ``scope_given``: the value is a ``SetParameter``'s in scope (``where``), which
+    launch_ros hands a node, or puts in a component's load request, before the node's own
+    list, so that the node's own values win: said only when its value comes from
+    substitutions and the file's is written out in it (the launch argument reaches every
+    node but this one); a literal there is a default the node's file may mean to change."""
+    if scope_given and (_written_out(written) or theirs is None):
+        return
     if _written_out(written) and (mine is None or theirs is None or mine == theirs):
         return
     file = at.file or "a parameter file"
+    given = "a substitution (a launch argument's value)" if not _written_out(written) else (
+        f"{mine!r}")
     runner.report("LAUNCH_PARAM_OVERRIDDEN", where, name=name, node=node,
                   file=f"{file}:{at.line}" if at.file and at.line else file,
-                  given="a substitution (a launch argument's value)"
-                  if not _written_out(written) else f"{mine!r}",
+                  given=f"by SetParameter here as {given}, before its own parameters,"
+                  if scope_given else f"here as {given}",
                   kept=f"{theirs!r}" if theirs is not None else "a value not known here")
+
+
+def _plain(entry: e.ParamFile) -> bool:
+    """Whether a parameter file's values are those written in it: no ``RewrittenYaml``
+    rewrites (nav2's bringup rewrites ``use_sim_time`` with the launch argument a
+    ``SetParameter`` beside it gives too), no substitutions in its text, no
+    ``ReplaceString``, not a rewritten file passed on by path."""
+    return not (entry.rewrites or entry.value_rewrites or entry.allow_substs
+                or entry.replacements or any(isinstance(part, e.FileRef)
+                                             for part in entry.path))
 
 
 def _written_out(value: Any) -> bool:
