@@ -240,7 +240,8 @@ OLDER_STDLIB = frozenset({
     "urlparse", "user", "UserDict", "UserList", "UserString", "whichdb", "xmllib",
     "xmlrpclib", "FileDialog", "Dialog", "Canvas", "markupbase", "hotshot",
     # removed from Python 3 after 3.8 (noetic's, foxy's): 3.9-3.13
-    "_dummy_thread", "dummy_threading", "formatter", "parser", "symbol", "binhex", "distutils", "imp", "asynchat",
+    "_dummy_thread", "dummy_threading", "formatter", "parser", "symbol", "binhex",
+    "distutils", "imp", "asynchat",
     "asyncore", "smtpd", "aifc", "audioop", "cgi", "cgitb", "chunk", "crypt", "imghdr",
     "mailcap", "msilib", "nis", "nntplib", "ossaudiodev", "pipes", "sndhdr", "spwd",
     "sunau", "telnetlib", "uu", "xdrlib", "lib2to3",
