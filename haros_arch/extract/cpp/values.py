@@ -1750,9 +1750,9 @@ class Scope:
             if found is not None:
                 return found
         elif target is not None:
-            given = self.given_return(target, args, depth)
-            if given is not None:
-                return given
+            bound = self.given_return(target, args, depth)
+            if bound is not None:
+                return bound
         return UNKNOWN
 
     def _stream_events(self, decl: Cursor, at: Cursor, depth: int
