@@ -691,7 +691,13 @@ def remaps_of(nodes: list[NodeInstance]) -> list[Remap]:
             if not source or source.startswith("__"):
                 continue
             name = resolve(source, instance.namespace, instance.name)
-            used = name in instance.remaps_applied or rules.get(name) in reached or (
+            # (a target not known statically is no name the instance is seen to use: the
+            # ``?`` of another remap's unknown target is no use of this one, aerostack2's
+            # ``('cloud', LaunchConfiguration('cloud_topic_in'))`` beside ``('scan', ...)``
+            # given to pointcloud_to_laserscan, which subscribes cloud_in)
+            to = rules.get(name)
+            used = name in instance.remaps_applied or (
+                to is not None and UNKNOWN_MARK not in to and to in reached) or (
                 source in read) or name in resolves
             if instance.origin != "launch":
                 # a node a host makes in its process (nav2's costmaps) takes the

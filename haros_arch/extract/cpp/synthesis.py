@@ -529,6 +529,15 @@ _USING = re.compile(rb"\busing\s+namespace\s+(?:::)?([A-Za-z_][\w:]*)\s*;")
 # ``namespace arm = hebi::experimental::arm;``: a namespace alias and what it names
 _NAMESPACE_ALIAS = re.compile(
     rb"\bnamespace\s+([A-Za-z_]\w*)\s*=\s*(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)\s*;")
+# a type alias of a class template's specialisation, ``typedef PointMatcher<float> PM;`` /
+# ``using PM = PointMatcher<float>;`` (libpointmatcher_ros' aliases.h): the alias and the
+# qualified name of the template it names (``Names._alias_target``)
+_TYPEDEF_TARGET = re.compile(
+    rb"\btypedef\s+(?:typename\s+)?(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)\s*"
+    rb"<[^;{}]*>\s*([A-Za-z_]\w*)\s*;")
+_USING_TARGET = re.compile(
+    rb"\busing\s+([A-Za-z_]\w*)\s*=\s*(?:typename\s+)?(?:::\s*)?"
+    rb"([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)*)\s*<[^;{}]*>\s*;")
 # ``using vendor::conn::Connection;``: a using-declaration of one qualified name
 _USING_ONE = re.compile(
     rb"\busing\s+(?!namespace\b)(?:typename\s+)?(?:::\s*)?([A-Za-z_]\w*(?:\s*::\s*[A-Za-z_]\w*)+)\s*;")
@@ -1052,6 +1061,8 @@ class Names:
         self.aliases: set[str] = set()  # names the code declares: ``using Mode = ...;``
         # namespace aliases the code declares, by name: what each names, its parts
         self.namespace_aliases: dict[str, list[str]] = {}
+        # aliases of a class template's specialisation, by name: the template's parts
+        self.template_aliases: dict[str, list[str]] = {}
         # unknown names that made a use ambiguous (the real declaration was invalid only
         # until other names were declared): no longer declared
         self.withdrawn: set[str] = set()
@@ -1095,6 +1106,12 @@ class Names:
                 for alias, target in _NAMESPACE_ALIAS.findall(text):
                     self.namespace_aliases.setdefault(alias.decode(), re.sub(
                         rb"\s+", b"", target).decode().split("::"))
+                for target, alias in _TYPEDEF_TARGET.findall(text):
+                    self.template_aliases.setdefault(alias.decode(), re.sub(
+                        rb"\s+", b"", target).decode().split("::"))
+                for alias, target in _USING_TARGET.findall(text):
+                    self.template_aliases.setdefault(alias.decode(), re.sub(
+                        rb"\s+", b"", target).decode().split("::"))
                 self.taken.update(_case_literals(text))
         for message, text, offset in errors:
             if self.count >= MAX_NAMES:
@@ -1122,6 +1139,13 @@ class Names:
         # vendor::accumulators;``), each use its target's (``_from_source``)
         unknown += [alias for alias, target in self.namespace_aliases.items()
                     if target[0] in unknown and alias not in self.root.children]
+        # and an alias of a specialisation of one (``PM::TransformationParameters::
+        # Identity(4, 4)`` after ``typedef PointMatcher<float> PM;``): the names nested in
+        # the template, the third wave of errors otherwise (the template, its nested
+        # class, the member of that), past the parses a unit gets
+        unknown += [alias for alias, target in self.template_aliases.items()
+                    if target[0] in unknown and alias not in self.root.children
+                    and alias not in unknown]
         for text in self._texts:
             todo = [name for name in unknown if (id(text), name) not in self._spread_done]
             if not todo:
@@ -1457,6 +1481,13 @@ class Names:
             # ``arm::Arm`` where the code declares ``namespace arm = vendor::arm;``: the
             # target's name (a top-level ``arm`` would clash with the alias)
             written = [*self.namespace_aliases[written[0]], *written[1:]]
+        if not scope and written[0] in self.template_aliases and (
+                self._unknown_root(self.template_aliases[written[0]][0])):
+            if len(written) < 3:
+                return  # ``PM::DataPoints``: the template's member, as its errors say
+            # ``PM::TransformationParameters::Identity``: the class nested in the template
+            # and its member, declared in the template the alias names
+            written = [*self.template_aliases[written[0]], *written[1:]]
         if not scope:  # the known scope written before the name: ``known::``
             window = text[max(0, offset - 200):offset]
             before = _scope_before(window)
@@ -1756,6 +1787,11 @@ class Names:
                     for base in bases)))
         derived = self._derived_heads[1]
         return bool(derived) if name is None else name in derived
+
+    def _unknown_root(self, name: str) -> bool:
+        """Whether ``name`` is a top-level name declared here (not the code's own)."""
+        node = self.root.children.get(name)
+        return node is not None and not node.known and name not in self._defined
 
     def _synthesised(self, qualified: str) -> bool:
         if qualified == "haros_any":

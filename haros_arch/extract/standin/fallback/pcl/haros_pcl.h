@@ -1,7 +1,9 @@
 // haros_arch stand-in: the parts of the Point Cloud Library (PCL) ROS nodes use
 // (declarations only). Read only when the workspace has no PCL header by that name: every
-// <pcl/...> header stands in as this file. Pointers are std::shared_ptr (PCL >= 1.11; a
-// ROS 1 callback deduces its message type from either).
+// <pcl/...> header stands in as this file. Pointers are std::shared_ptr in a ROS 2 unit
+// (PCL >= 1.11) and boost::shared_ptr in a ROS 1 unit (HAROS_UNIT_ROS 1: Noetic's PCL 1.10,
+// Melodic's 1.8), so a ROS 1 node's ``Filter<T>::Ptr f = boost::shared_ptr<VoxelGrid<T>>``
+// is an assignment as on the robot (a ROS 1 callback deduces its message type from either).
 #ifndef HAROS_STANDIN_PCL
 #define HAROS_STANDIN_PCL
 #include <cstdint>
@@ -55,13 +57,23 @@
 #define PCL_DEBUG(...) ((void)0)
 #define PCL_VERBOSE(...) ((void)0)
 // pcl_config.h: the version this stand-in's API is (std::shared_ptr pointers, PCL 1.12, the
-// version of Humble's Ubuntu), so a node's ``#if PCL_VERSION >= PCL_VERSION_CALC(1, 10, 0)``
+// version of Humble's Ubuntu; in a ROS 1 unit boost::shared_ptr pointers, PCL 1.10, the
+// version of Noetic's Ubuntu), so a node's ``#if PCL_VERSION >= PCL_VERSION_CALC(1, 10, 0)``
 // takes the branch that names ``pcl::shared_ptr``
+#if defined(HAROS_UNIT_ROS) && HAROS_UNIT_ROS == 1
+#define HAROS_PCL_BOOST_POINTERS 1
+#endif
 #define PCL_MAJOR_VERSION 1
+#ifdef HAROS_PCL_BOOST_POINTERS
+#define PCL_MINOR_VERSION 10
+#define PCL_REVISION_VERSION 0
+#define PCL_VERSION_PRETTY "1.10.0"
+#else
 #define PCL_MINOR_VERSION 12
 #define PCL_REVISION_VERSION 1
-#define PCL_DEV_VERSION 0
 #define PCL_VERSION_PRETTY "1.12.1"
+#endif
+#define PCL_DEV_VERSION 0
 #define PCL_VERSION_CALC(MAJ, MIN, PATCH) ((MAJ) * 100000 + (MIN) * 100 + (PATCH))
 #define PCL_VERSION \
   PCL_VERSION_CALC(PCL_MAJOR_VERSION, PCL_MINOR_VERSION, PCL_REVISION_VERSION)
@@ -70,8 +82,17 @@
 #define PCL_XYZ_POINT_TYPES (pcl::PointXYZ)(pcl::PointXYZI)(pcl::PointXYZRGB)(pcl::PointXYZRGBA)
 #define PCL_POINT_TYPES PCL_XYZ_POINT_TYPES
 
+#ifdef HAROS_PCL_BOOST_POINTERS
+#include <boost/shared_ptr.hpp>
+#include <boost/make_shared.hpp>
+#endif
+
 namespace pcl {
+#ifdef HAROS_PCL_BOOST_POINTERS
+template<class T> using shared_ptr = boost::shared_ptr<T>;  // PCL 1.10's pcl/memory.h
+#else
 template<class T> using shared_ptr = std::shared_ptr<T>;
+#endif
 template<class T, class... Args> shared_ptr<T> make_shared(Args&&... args);
 typedef int index_t;
 typedef std::uint32_t uindex_t;
