@@ -716,6 +716,28 @@ def _models_metapackages(args: argparse.Namespace, out: Console, err: Console) -
     return EXIT_OK
 
 
+# the commands whose ``--output`` is a file (``models``' is a folder it makes)
+_FILE_OUTPUTS = frozenset({"extract", "check", "capture", "report", "diff", "init"})
+
+
+def _output_refused(args: argparse.Namespace) -> str | None:
+    """Why the file ``--output`` names cannot be written, else None; its folder is made
+    when missing (``-o out/model.json`` in a fresh checkout, as CI writes it)."""
+    output = getattr(args, "output", None)
+    if args.command not in _FILE_OUTPUTS or not output:
+        return None
+    if os.path.isdir(output):
+        return "it is a folder"
+    folder = os.path.dirname(os.path.abspath(output))
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as error:
+        return f"cannot make its folder {folder}: {error.strerror or error}"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"its folder {folder} is not writable"
+    return None
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     from .autoproject import select
@@ -730,6 +752,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     _RECORDING[0] = not getattr(args, "no_cache", False)
     out = make_console()
     err = make_console(stderr=True)
+    refused = _output_refused(args)
+    if refused is not None:  # said before the run, not after minutes of it
+        err.print(f"haros-arch: cannot write {escape(args.output)}: {escape(refused)}",
+                  highlight=False)
+        return EXIT_USAGE
     handlers = {"extract": cmd_extract, "check": cmd_check, "explain": cmd_explain,
                 "capture": cmd_capture, "compare": cmd_compare, "report": cmd_report,
                 "launch": cmd_launch, "query": cmd_query, "init": cmd_init,

@@ -209,3 +209,23 @@ def test_the_summary_says_when_launch_includes_were_not_read(tmp_path, write_tre
     with console.capture() as captured:
         console.print("view_controller.cpp:100: C++ error")
     assert "view_controller.cpp:100: C++ error" in captured.get()
+
+
+def test_an_output_in_a_missing_folder_is_written_and_a_bad_one_refused_before_the_run(
+        tmp_path):
+    project = str(FIXTURES / "paper_minimal/project.yaml")
+    out = tmp_path / "out" / "models" / "model.json"
+    result = run("extract", project, "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    assert json.loads(out.read_text())["schema"] == "haros-arch/1"
+    # a folder, or a path below a file: refused at once, with no run and no traceback
+    blocker = tmp_path / "plain-file"
+    blocker.write_text("x")
+    for bad, why in ((tmp_path, "it is a folder"), (blocker / "model.json", "cannot make"),
+                     (blocker / "a" / "report.html", "cannot make")):
+        command = "report" if str(bad).endswith(".html") else "extract"
+        result = run(command, project, "-o", str(bad))
+        assert result.returncode == 2
+        assert f"cannot write {bad}: {why}" in result.stderr.replace("\n", "")
+        assert "Traceback" not in result.stderr and "internal error" not in result.stderr
+        assert "configuration" not in result.stdout + result.stderr  # nothing was run
