@@ -30,8 +30,10 @@ from collections.abc import Iterable, Iterator
 # what may come before a path: the path is not the end of a longer one
 _BOUNDARY = frozenset(' \t\n"(<[{,:;=`\'')
 Place = tuple[str, int, bool]  # file (absolute), line, whether quoted in a string
-_LOCATED = '", "line": '  # after a location's file, before its line
-_LINE = re.compile(r'(?:", "line": |:)(\d+)')
+# after a location's file, before its line: in a compact text (``json.dumps``), and in an
+# indented one (``extract``'s document: ``json.dumps(..., indent=2)``)
+_LINE = re.compile(r'(?:(", "line": )|:)(\d+)')
+_LINE_INDENTED = re.compile(r'(?:(",\n *"line": )|:)(\d+)')
 Maps = dict[str, dict[int, int]]  # per file (absolute): old line -> new line
 
 
@@ -39,14 +41,17 @@ class Files:
     """The changed files (absolute paths), as a model's JSON text writes them: absolute,
     or relative to the workspace ``root`` when inside it (``Workspace.relpath``)."""
 
-    def __init__(self, paths: Iterable[str], root: str) -> None:
+    def __init__(self, paths: Iterable[str], root: str, indented: bool = False) -> None:
+        """``indented``: the texts are ``json.dumps(..., indent=N, ensure_ascii=False)``'s
+        (``extract``'s document), not compact with escapes for characters beyond ASCII."""
         top = os.path.abspath(root).rstrip(os.sep) + os.sep
+        self.line = _LINE_INDENTED if indented else _LINE
         self.spelt: dict[str, str] = {}
         for path in paths:
             full = os.path.abspath(path)
             spellings = [full] + ([full[len(top):]] if full.startswith(top) else [])
             for spelling in spellings:
-                self.spelt[json.dumps(spelling)[1:-1]] = full
+                self.spelt[json.dumps(spelling, ensure_ascii=not indented)[1:-1]] = full
         # each spelling's shortest tail among them (a relative path is the end of the
         # absolute one): the text is searched for those, a plain search, far faster
         # than a regex of alternatives over a model's 50 MB
@@ -64,24 +69,24 @@ class Files:
         found: list[Place] = []
         other = False
         last = 0
-        for start, end, spelling, line in self._matches(text):
+        for start, end, spelling, located, line in self._matches(text):
             before = text[start - 1] if start else ""
-            located = text.startswith(_LOCATED, end)
             if before not in _BOUNDARY or (located and before != '"'):
                 other = True
                 continue
-            at = end + (len(_LOCATED) if located else 1)
+            at = end + (len(located) if located else 1)
             pieces.append(text[last:at])
             found.append((self.spelt[spelling], int(line), not located))
             last = at + len(line)
         pieces.append(text[last:])
         return pieces, found, other
 
-    def _matches(self, text: str) -> Iterator[tuple[int, int, str, str]]:
+    def _matches(self, text: str) -> Iterator[tuple[int, int, str, str, str]]:
         """Each spelling of a changed file followed by a line (``", "line": n`` or
         ``:n``), left to right, not overlapping (at one place the longest spelling):
-        where it begins and ends, the spelling, the line's digits."""
-        hits: list[tuple[int, int, str, str]] = []
+        where it begins and ends, the spelling, what is between it and the line in a
+        location ("" in a string), the line's digits."""
+        hits: list[tuple[int, int, str, str, str]] = []
         for tail in self.tails:
             at = text.find(tail)
             while at >= 0:
@@ -90,16 +95,17 @@ class Files:
                     begin = end - len(spelling)
                     if begin < 0 or not text.startswith(spelling, begin):
                         continue
-                    after = _LINE.match(text, end)
+                    after = self.line.match(text, end)
                     if after is not None:
-                        hits.append((begin, after.end(), spelling, after.group(1)))
+                        hits.append((begin, after.end(), spelling, after.group(1) or "",
+                                     after.group(2)))
                         break
                 at = text.find(tail, at + 1)
         hits.sort(key=lambda hit: (hit[0], -len(hit[2])))
         last = 0
-        for begin, stop, spelling, line in hits:
+        for begin, stop, spelling, located, line in hits:
             if begin >= last:
-                yield begin, begin + len(spelling), spelling, line
+                yield begin, begin + len(spelling), spelling, located, line
                 last = stop
 
     def line_maps(self, old: str, new: str) -> Maps | None:

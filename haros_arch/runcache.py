@@ -706,7 +706,54 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
         _write_model(folder, key, new_text)
     result = KeptModel(new_text.encode("utf-8"), project)
     _KEPT[result] = (folder, key)
+    _MOVED[result] = _Moved(earlier, files, maps, list(changed), root, new_text)
     return result
+
+
+class _Moved:
+    """How ``relocated`` made a model of an earlier run's: to renumber, when asked, what
+    else that run kept that is written only for some commands (``extract``'s document)."""
+
+    def __init__(self, earlier: str, files: Files, maps: Maps, changed: list[str],
+                 root: str, text: str) -> None:
+        self.earlier, self.files, self.maps = earlier, files, maps
+        self.changed, self.root, self.text = changed, root, text
+
+
+_MOVED: weakref.WeakKeyDictionary[Model, _Moved] = weakref.WeakKeyDictionary()
+
+
+def _moved_document(model: Model, folder: str, inputs: str) -> str | None:
+    """``extract``'s document of a model ``relocated`` made, under ``inputs`` (its
+    findings, as text): the earlier run's document under the same findings before the
+    move, renumbered; None when there is none, or when the places of the changed files
+    it holds are not, one for one, those of the model and the findings (a location
+    written in a form not read as one: the document is then made)."""
+    from .relocate import Files
+
+    moved = _MOVED.get(model)
+    if moved is None:
+        return None
+    backwards = {path: {new: old for old, new in lines.items()}
+                 for path, lines in moved.maps.items()}
+    before = moved.files.renumbered(inputs, backwards)
+    if before is None:
+        return None
+    try:
+        with open(os.path.join(folder, "runs",
+                               f"{moved.earlier}-document-{_digest(before)}.txt"),
+                  encoding="utf-8", newline="") as handle:
+            text = handle.read()
+    except (OSError, ValueError):
+        return None
+    indented = Files(moved.changed, moved.root, indented=True)
+    found = indented.renumbered(text, moved.maps)
+    if found is None:
+        return None
+    held = sorted(indented.places(found)[1])
+    if held != sorted(moved.files.places(moved.text)[1] + moved.files.places(inputs)[1]):
+        return None
+    return found
 
 
 def _renumbered_parts(files: Files, text: str, parts: dict[str, Any],
@@ -807,7 +854,8 @@ def _kept_text(model: Model, kind: str, inputs: str, compute: Callable[[], str])
             return handle.read()
     except (OSError, ValueError):
         pass
-    found = compute()
+    moved = _moved_document(model, folder, inputs) if kind == "document" else None
+    found = compute() if moved is None else moved
     _write_text(entry, found)
     _prune(folder)
     return found

@@ -173,3 +173,46 @@ def test_places_of_spellings_that_overlap() -> None:
                    in zip(pieces[:-1], found, strict=True)) + pieces[-1] == text
     assert Files(["/ws/src/a.cpp"], "/ws").places('{"file": "src/a.cpp", "line": 9}') == (
         ['{"file": "src/a.cpp", "line": ', "}"], [("/ws/src/a.cpp", 9, False)], False)
+
+
+def test_extracts_document_after_lines_moved_is_the_last_one_renumbered(
+        tmp_path: Path, monkeypatch) -> None:
+    """``extract``'s document (indented JSON, characters beyond ASCII as they are) of a
+    relocated run: the earlier run's renumbered, not made again, the same text as a cold
+    run's."""
+    from haros_arch.report import json as report_json
+
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    spec = load(str(project))
+
+    def text(cached: bool) -> str:
+        model = analyse(spec, {}, Options(cache_dir=str(cache) if cached else None, jobs=1))
+        return report_json.document_text(model, spec)
+
+    first = text(True)
+    controller = project.parent / "src" / "demo_robot" / "src" / "controller.cpp"
+    controller.write_text("// ünïcödé comment\n\n" + controller.read_text())
+    cold = text(False)
+    made = report_json.document_json
+    monkeypatch.setattr(report_json, "document_json", lambda data: (_ for _ in ()).throw(
+        AssertionError("the document was made again")))
+    again = text(True)
+    assert again == cold and again != first
+    monkeypatch.setattr(report_json, "document_json", made)
+
+
+def test_places_in_an_indented_document() -> None:
+    root = "/ws"
+    files = Files(["/ws/src/ñodo.cpp"], root, indented=True)
+    text = json.dumps({"a": {"file": "src/ñodo.cpp", "line": 9, "column": 2},
+                       "m": "at src/ñodo.cpp:12: x"}, indent=2, ensure_ascii=False)
+    _pieces, found, other = files.places(text)
+    assert not other
+    assert found == [("/ws/src/ñodo.cpp", 9, False), ("/ws/src/ñodo.cpp", 12, True)]
+    assert files.renumbered(text, {"/ws/src/ñodo.cpp": {9: 11, 12: 14}}) == json.dumps(
+        {"a": {"file": "src/ñodo.cpp", "line": 11, "column": 2},
+         "m": "at src/ñodo.cpp:14: x"}, indent=2, ensure_ascii=False)
+    # the compact reader does not take the indented form: not one of its places
+    assert Files(["/ws/src/ñodo.cpp"], root).places(text)[1] == []
