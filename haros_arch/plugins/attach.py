@@ -1975,7 +1975,7 @@ def _controller_instance(config: Configuration, full: str, node: Node | None, ma
     namespace = (manager if ros_version == 1 else namespace_of(manager)).rstrip("/") + "/"
     instance = NodeInstance(full, node, namespace=namespace, conditions=choice.conditions,
                             location=choice.location, origin="plugin",
-                            ros_version=ros_version)
+                            ros_version=ros_version, host_unseen=ros_version == 1)
     taken = sum(1 for n in config.nodes if n.name == full)
     instance.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)
