@@ -163,9 +163,10 @@ def climbed(workspace: Workspace, path: str) -> str:
     workspace, not two as ``src/<pkg>``), so the climb starts there: drone_autonomous_
     landing_on_ugv's ``os.path.join(get_package_share_directory(pkg), '..', '..', '..',
     '..', 'src', pkg, 'parameters', 'params.yaml')`` is the workspace's
-    ``src/<pkg>/parameters/params.yaml``. Only when a file is there (then the source file
-    installed there, when the climb stays in the install space); else ``path``
-    normalised as it is."""
+    ``src/<pkg>/parameters/params.yaml``; a folder analysed that is one repository stands
+    for ``src/<its name>`` there (``_checkout``). Only when a file is there (then the
+    source file installed there, when the climb stays in the install space); else
+    ``path`` normalised as it is."""
     plain = os.path.normpath(path)
     parts = path.split("/")
     if not os.path.isabs(path) or ".." not in parts:
@@ -179,7 +180,27 @@ def climbed(workspace: Workspace, path: str) -> str:
     share = os.path.join(install_base(workspace), package.name, "share", package.name)
     moved = _from_prefix(workspace, os.path.normpath(os.path.join(share, inside,
                                                                   *parts[first:])))
-    return moved if os.path.lexists(moved) else plain
+    if os.path.lexists(moved):
+        return moved
+    checkout = _checkout(workspace, moved)
+    return checkout if checkout is not None and os.path.lexists(checkout) else plain
+
+
+def _checkout(workspace: Workspace, path: str) -> str | None:
+    """``path`` under ``<workspace>/src/<name>/`` as a path of the folder analysed, when
+    that folder is one repository named ``<name>``, not a workspace or its ``src``: it
+    stands for its checkout in the workspace's ``src`` under its own name (vortex-asv's
+    blackbox.launch.py climbs four folders out of the share folder into
+    ``src/vortex-asv/asv_setup/config/robots/``); else None."""
+    root = os.path.normpath(workspace.root)
+    name = os.path.basename(root)
+    top = os.path.dirname(install_base(workspace))
+    if name == "src" or top != root:
+        return None
+    parts = os.path.relpath(path, top).split(os.sep)
+    if len(parts) < 3 or parts[0] != "src" or parts[1] != name:
+        return None
+    return os.path.join(root, *parts[2:])
 
 
 def share_source(workspace: Workspace, path: str) -> str:

@@ -60,3 +60,48 @@ def test_a_climb_out_of_the_share_folder_starts_in_the_install_space(write_tree)
     values = {p.name: p.value for p in model.params}
     assert values["/drone/QUEUE_SIZE"] == 10
     assert values["/target/RATE"] == 20.0
+
+
+CHECKOUT_LAUNCH = '''import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    robot = os.path.join(get_package_share_directory('blackbox'), '../../../../',
+                         'src/fleet-asv/asv_setup/config/robots/', 'boat.yaml')
+    other = os.path.join(get_package_share_directory('blackbox'), '../../../../',
+                         'src/another-repo/asv_setup/config/robots/', 'boat.yaml')
+    return LaunchDescription([
+        Node(package='blackbox', executable='blackbox_node', name='blackbox_node',
+             parameters=[robot]),
+        Node(package='blackbox', executable='recorder', name='recorder',
+             parameters=[other]),
+    ])
+'''
+
+BOAT = '''/**:
+  ros__parameters:
+    physical:
+      mass: 120.0
+'''
+
+
+def test_a_climb_into_the_repository_analysed_alone_is_its_checkout(write_tree):
+    # vortex-asv's mission/blackbox/launch/blackbox.launch.py:10-15 climbs four folders
+    # out of the share folder into ``src/vortex-asv/asv_setup/config/robots/freya.yaml``:
+    # the repository, analysed as the folder of that name, is that checkout in src/
+    root = write_tree({
+        "fleet-asv/mission/blackbox/package.xml": package_xml("blackbox", "ament_python"),
+        "fleet-asv/mission/blackbox/launch/blackbox.launch.py": CHECKOUT_LAUNCH,
+        "fleet-asv/asv_setup/config/robots/boat.yaml": BOAT})
+    ws = scan([str(root / "fleet-asv")], {})
+    model = load(str(root / "fleet-asv/mission/blackbox/launch/blackbox.launch.py"), ws,
+                 {}, {})
+    values = {p.name: p.value for p in model.params}
+    assert values["/blackbox_node/physical.mass"] == 120.0
+    # the guard: another repository's folder is not this one's
+    outside = [d.message for d in model.diagnostics if "outside the workspace" in d.message]
+    assert len(outside) == 1 and "another-repo" in outside[0], model.diagnostics
+    assert not any(name.startswith("/recorder/physical") for name in values)

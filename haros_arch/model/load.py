@@ -334,6 +334,7 @@ def _configuration(data: dict[str, Any], nodes: dict[str, Node],
             ros_version=int(item.get("ros_version", 1) or 1),
             test=bool(item.get("test", False)),
             hosted=bool(item.get("hosted", False)),
+            host_unseen=bool(item.get("host_unseen", False)),
             remaps_applied=[str(n) for n in item.get("remaps_applied") or ()
                             if isinstance(n, str)],
             code_name=code if isinstance(code := item.get("code_name"), str) else None,

@@ -64,6 +64,12 @@ class NodeInstance:
     # ``hosts.Slot`` EXPORTED), of an installed package's model: what it subscribes is
     # input the host offers, which a configuration need not feed
     offered: bool = field(default=False, metadata={"optional": True})
+    # ROS 1: a controller loaded by a manager no instance of the configuration is
+    # (``plugins.attach.ros1_controllers``): it stands for its part of a process not
+    # seen (Gazebo with a control plugin not known, a hardware node), whose other code
+    # may read and set the parameters under its name (cob's hwi_switch_gazebo_ros_control
+    # reads each controller's ``required_drive_mode``)
+    host_unseen: bool = field(default=False, metadata={"optional": True})
     # ROS 1: where each remap of ``remaps`` is written (its ``<remap>`` element), by its
     # text ``from:=to``: one element a group gives nodes of several namespaces is one
     # remap (``remaps_of``)

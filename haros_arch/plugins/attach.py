@@ -167,6 +167,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
     loaded: set[tuple[int, str]] = set()  # (instance, parameter) read to load a plugin
     out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
     hosted: set[tuple[object, ...]] = set()  # launch nodes whose process hosts already
+    served: set[int] = set()  # spawner declarations whose manager is a host here
     for decl, started_instance in started:
         top = host_of(decl.package, decl.executable, decl.ros_version) or _manager_host(
             started_instance)
@@ -201,7 +202,7 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                 unseen: str | None = None
                 if slot.names == SPAWNER:
                     choices = list(_spawned(instance, started, params, workspace, config,
-                                            unnamed=decl.name_guessed))
+                                            unnamed=decl.name_guessed, served=served))
                 elif slot.names == EXPORTED:
                     choices = list(_exported(instance, slot, params, nodes, models,
                                              workspace, decl.package))
@@ -239,6 +240,8 @@ def attach(config: Configuration, started: Sequence[tuple[NodeDecl, NodeInstance
                                      params, config, owned, made, loaded, decl,
                                      frozenset(s.site for s in host.slots if s.site)))
     out.extend(ros1_controllers(config, started, index, params, workspace, models, owned))
+    out.extend(unmanaged_controllers(config, started, served, index, params, workspace,
+                                     models, owned))
     out.extend(behavior_trees.attach(config, started, params, workspace,
                                      lambda instance, reason: own_partial(
                                          instance, reason, owned, first=True),
@@ -1399,62 +1402,132 @@ def _serves(instance: NodeInstance, manager: str, unnamed: bool = False) -> bool
 
 def _spawned(host: NodeInstance, started: Sequence[tuple[NodeDecl, NodeInstance]],
              params: Params, workspace: Workspace,
-             config: Configuration, unnamed: bool = False) -> Iterator[Choice]:
-    """The controllers the spawners of the configuration load into ``host``."""
+             config: Configuration, unnamed: bool = False,
+             served: set[int] | None = None) -> Iterator[Choice]:
+    """The controllers the spawners of the configuration load into ``host``; ``served``
+    gets the ``id`` of each spawner declaration that loads into it."""
     for decl, instance in started:
         spawn = _spawn_of(decl)
         if spawn is None or not _serves(host, _manager_name(decl, spawn.manager), unnamed):
             continue
-        # each with its path as the launch file gives it, as a node's parameter file's
-        # setting is named (``launch.ros2.nodes``: ``/**`` entries are a setting for
-        # every node the file is given to)
-        documents = [(*doc, path) for path in spawn.param_files
-                     if (doc := _param_file(path, decl, workspace, config)) is not None]
-        namespace = host.namespace.rstrip("/")
+        if served is not None:
+            served.add(id(decl))
         manager = host.name if UNKNOWN_MARK not in host.name and not unnamed else \
             _manager_name(decl, spawn.manager)
-        for controller in spawn.controllers[:MAX_PLUGINS]:
-            node_name = f"{namespace}/{controller}"
-            own: dict[str, Any] = {}
-            managed: dict[str, Any] = {}  # the spawner sets <name>.type on the manager
-            placed: dict[str, Location] = {}
-            # a ``/**`` entry of a file the spawner gives is a setting for every node the
-            # file is given to, as a launch file's (by the file: elkapod_core's
-            # controllers.launch.py gives elkapod_motion_manager.yaml to its manager's
-            # node and, by ``--param-file``, to elkapod_gait_controller)
-            shared: dict[str, str] = {}
-            for document, at, keys, source in documents:
-                given = params_for_node(document, node_name)
-                own.update(given)
-                every = for_every_node(document, node_name)
-                for key, _ in given:
-                    if key in every:
-                        shared[key] = source
-                    else:
-                        shared.pop(key, None)
-                managed.update((key, value) for key, value in params_for_node(
-                    document, manager) if key == f"{controller}.type")
-                for owner in (node_name, manager):
-                    placed.update((f"{owner}/{key}", replace(at, line=line))
-                                  for key, line in params_for_node(keys, owner)
-                                  if isinstance(line, int))
-            where = documents[0][1] if documents else decl.location
-            _set_params(params, node_name, own, where, instance.conditions, placed,
-                        settings=shared)
-            if manager == host.name:  # else no instance has the manager's real name
-                _set_params(params, manager, managed, where, instance.conditions, placed)
-            # the controller's class is said where its type is written
-            where = placed.get(f"{node_name}/type") or placed.get(
-                f"{manager}/{controller}.type") or where
-            typed = _parameter(params, f"{manager}/{controller}.type")
-            cls = spawn.controller_type or _text(own.get("type")) or _text(
-                managed.get(f"{controller}.type")) or (_text(typed.value) if typed else None)
-            reads = (f"{node_name}/type",) if "type" in own else (
-                (typed.name,) if typed else ())
-            if typed is not None and not _text(own.get("type")) and not managed:
-                where = typed.launch_location
-            remaps = parse_ros_args(spawn.ros_args, controller).remaps
-            yield Choice(controller, cls, where, instance.conditions, reads, tuple(remaps))
+        yield from _spawn_choices(decl, instance, spawn, host.namespace, manager,
+                                  manager == host.name, params, workspace, config)
+
+
+def _spawn_choices(decl: NodeDecl, instance: NodeInstance, spawn: Spawn, namespace: str,
+                   manager: str, manager_seen: bool, params: Params,
+                   workspace: Workspace, config: Configuration) -> Iterator[Choice]:
+    """The controllers one spawner loads into the manager ``manager``, whose namespace
+    is ``namespace``, with the parameters its files give each set as launch sets them
+    (and the manager's ``<name>.type`` on the manager when ``manager_seen``: an
+    instance has its name)."""
+    # each with its path as the launch file gives it, as a node's parameter file's
+    # setting is named (``launch.ros2.nodes``: ``/**`` entries are a setting for
+    # every node the file is given to)
+    documents = [(*doc, path) for path in spawn.param_files
+                 if (doc := _param_file(path, decl, workspace, config)) is not None]
+    namespace = namespace.rstrip("/")
+    for controller in spawn.controllers[:MAX_PLUGINS]:
+        node_name = f"{namespace}/{controller}"
+        own: dict[str, Any] = {}
+        managed: dict[str, Any] = {}  # the spawner sets <name>.type on the manager
+        placed: dict[str, Location] = {}
+        # a ``/**`` entry of a file the spawner gives is a setting for every node the
+        # file is given to, as a launch file's (by the file: elkapod_core's
+        # controllers.launch.py gives elkapod_motion_manager.yaml to its manager's
+        # node and, by ``--param-file``, to elkapod_gait_controller)
+        shared: dict[str, str] = {}
+        for document, at, keys, source in documents:
+            given = params_for_node(document, node_name)
+            own.update(given)
+            every = for_every_node(document, node_name)
+            for key, _ in given:
+                if key in every:
+                    shared[key] = source
+                else:
+                    shared.pop(key, None)
+            managed.update((key, value) for key, value in params_for_node(
+                document, manager) if key == f"{controller}.type")
+            for owner in (node_name, manager):
+                placed.update((f"{owner}/{key}", replace(at, line=line))
+                              for key, line in params_for_node(keys, owner)
+                              if isinstance(line, int))
+        where = documents[0][1] if documents else decl.location
+        _set_params(params, node_name, own, where, instance.conditions, placed,
+                    settings=shared)
+        if manager_seen:  # else no instance has the manager's real name
+            _set_params(params, manager, managed, where, instance.conditions, placed)
+        # the controller's class is said where its type is written
+        where = placed.get(f"{node_name}/type") or placed.get(
+            f"{manager}/{controller}.type") or where
+        typed = _parameter(params, f"{manager}/{controller}.type")
+        cls = spawn.controller_type or _text(own.get("type")) or _text(
+            managed.get(f"{controller}.type")) or (_text(typed.value) if typed else None)
+        reads = (f"{node_name}/type",) if "type" in own else (
+            (typed.name,) if typed else ())
+        if typed is not None and not _text(own.get("type")) and not managed:
+            where = typed.launch_location
+        remaps = parse_ros_args(spawn.ros_args, controller).remaps
+        yield Choice(controller, cls, where, instance.conditions, reads, tuple(remaps))
+
+
+def unmanaged_controllers(config: Configuration,
+                          started: Sequence[tuple[NodeDecl, NodeInstance]],
+                          served: set[int], index: Mapping[str, Node], params: Params,
+                          workspace: Workspace, models: PluginModels | None,
+                          owned: set[int]) -> list[tuple[NodeInstance, list[PrimitiveCall]]]:
+    """The ROS 2 controllers spawners load into a manager no host instance of the
+    configuration is (Gazebo's gz_ros2_control started by a launch file not read here,
+    as elkapod_core's simulation does; a ros2_control_node another launch file runs; a
+    manager of unknown interface): the controller runs all the same once that manager
+    is up, so it is a node instance of its own, ``<manager's namespace>/<name>``, as a
+    ROS 1 controller is (``ros1_controllers``), with the spawner's parameter files and
+    remaps, its class's calls (of unknown interface when its class is not found or not
+    known: the manager's own files, not seen, may name it), and a launch parameter
+    ``<name>/?``: those files may give it parameters not seen. Not so when a node of
+    the manager's name is in the configuration, its interface wholly known, and no
+    manager: the spawner finds no manager there."""
+    out: list[tuple[NodeInstance, list[PrimitiveCall]]] = []
+    host = host_of(*MANAGER_NODE, 2)
+    slot = next((s for s in host.slots if s.names == SPAWNER), None) if host else None
+    for decl, spawner in started:
+        spawn = _spawn_of(decl)
+        if spawn is None or decl.ros_version != 2 or id(decl) in served:
+            continue
+        manager = _manager_name(decl, spawn.manager)
+        if any(n.name == manager and n.is_complete for n in config.nodes):
+            # a node of that name whose interface is wholly known, and no manager: the
+            # spawner finds no ``load_controller`` there, and nothing is loaded
+            continue
+        for choice in list(_spawn_choices(decl, spawner, spawn, namespace_of(manager),
+                                          manager, False, params, workspace, config)):
+            full = f"{namespace_of(manager).rstrip('/')}/{choice.name}"
+            node = _lookup(choice, index, workspace, models)
+            if node is None and choice.cls and UNKNOWN_MARK not in choice.cls:
+                config.diagnostics.append(_not_found(choice, manager))
+            reader = _controller_instance(config, full, node, manager, choice,
+                                          ros_version=2)
+            reader.remaps = list(choice.remaps)
+            unseen = params.get(Parameter, f"{full}/{UNKNOWN_MARK}")
+            assert isinstance(unseen, Parameter)
+            if not unseen.set_by_launch:
+                unseen.set_by_launch = True
+                unseen.launch_location = decl.location
+                unseen.launch_conditions = choice.conditions
+            if node is not None:
+                _unhosted(reader, owned)
+                out.append((reader, list(_with_base(node, index, workspace, models))))
+            if slot is not None and slot.declares:
+                out.append((reader, [PrimitiveCall(
+                    "declare", name, location=choice.location,
+                    conditions=choice.conditions, has_default=True, origin="plugin")
+                    for name in slot.declares]))
+            out.extend(_loading_reads(choice, reader, reader))
+    return out
 
 
 def _param_file(path: str, decl: NodeDecl, workspace: Workspace,
@@ -1894,12 +1967,15 @@ def _ros1_spawn_files(words: list[str], decl: NodeDecl, spawner: NodeInstance,
 
 
 def _controller_instance(config: Configuration, full: str, node: Node | None, manager: str,
-                         choice: Choice) -> NodeInstance:
-    """The node instance ``full`` a ROS 1 controller loaded by a manager the configuration
-    does not start stands for (of unknown interface when its class is not found)."""
-    namespace = manager.rstrip("/") + "/"
+                         choice: Choice, ros_version: int = 1) -> NodeInstance:
+    """The node instance ``full`` a controller loaded by a manager the configuration
+    does not start stands for (of unknown interface when its class is not found): in
+    the manager's namespace (ROS 1: the manager's own name is the namespace of its
+    controllers' handles; ROS 2: ``manager`` is the manager node's full name)."""
+    namespace = (manager if ros_version == 1 else namespace_of(manager)).rstrip("/") + "/"
     instance = NodeInstance(full, node, namespace=namespace, conditions=choice.conditions,
-                            location=choice.location, origin="plugin", ros_version=1)
+                            location=choice.location, origin="plugin",
+                            ros_version=ros_version, host_unseen=ros_version == 1)
     taken = sum(1 for n in config.nodes if n.name == full)
     instance.id = f"node:{full}" + (f"#{taken + 1}" if taken else "")
     config.nodes.append(instance)

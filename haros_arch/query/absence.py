@@ -38,6 +38,12 @@ class Known:
         for node in config.nodes:
             self.by_name.setdefault(node.name, node)
         self.incomplete = config.incomplete_nodes
+        # ROS 1 controllers whose manager is not seen (``NodeInstance.host_unseen``), by
+        # name: a node launched under the same name (squirrel_robotino's door_controller
+        # .py beside the door_controller of Gazebo's manager) does not make the
+        # parameters under it that node's alone
+        self.host_unseen: set[str] = {node.name for node in config.nodes
+                                      if node.host_unseen}
         # includes the launch stage could not read (a file not known statically, a
         # package not found: tiago's ``$(find cartesian_impedance)/launch/...``): what
         # they start or set is not seen, so they may be the missing side of anything
@@ -254,7 +260,10 @@ def _unknown_users(charge: Charge, config: Any, resource: Any, side: str | None 
     and that may be it (``/ns/node/?`` of a parameter file not read): the launch may
     set it unseen. And the includes the launch stage could not read, which may start
     or set anything (for a parameter private to a node of known interface, only when
-    nothing is seen to set it).
+    nothing is seen to set it). A parameter under a ROS 1 controller whose manager
+    is not seen (``NodeInstance.host_unseen``) may also be used by the nodes of partial
+    or unknown interface and the includes not read: one of them may be (or start) the
+    process it runs in.
 
     A node of partial or unknown interface could publish, subscribe, serve or call any
     topic, service or action name, and read or set any shared parameter; a private
@@ -284,6 +293,12 @@ def _unknown_users(charge: Charge, config: Any, resource: Any, side: str | None 
         owner = owner_of(config, resource)
         if owner is not None:
             found = [] if owner.is_complete else [owner]
+            if owner.name in known.host_unseen:  # a ROS 1 controller whose manager is not seen: a
+                # node of partial or unknown interface may be its process (Gazebo with a
+                # control plugin not known), or an include not read start it, whose
+                # code may use its parameters
+                found.extend(node for node in known.incomplete if not node.host_unseen)
+                found.extend(known.unread)
             if not resource.is_set:  # an include not read may set it
                 found.extend(known.unread if owner.ros_version == 1 else [
                     item for item in known.unread if _sets_later(item, owner)])

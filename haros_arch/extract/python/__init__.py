@@ -216,6 +216,12 @@ NOT_CLIENTS = frozenset({
     # neural network runtimes (ros2-rover's tractor_bringup depends on ``rknn``, Rockchip's
     # NPU toolkit, and builds ``rknn.api.RKNN``): inference makes no ROS call
     "rknn", "rknnlite", "onnxruntime", "tensorflow", "tflite_runtime",
+    # GUI toolkits, by the module they import where their rosdep keys name them
+    # otherwise (``pip_libraries.yaml`` holds the keys' names): wxPython is ``wx``
+    # (``python-wxtools``, ``python3-wxgtk4.0``: squirrel_robotino's dialog.py builds
+    # ``wx.App`` and ``wx.MessageDialog``), Qt's bindings ``PyQt5`` / ``PyQt6`` /
+    # ``PySide2`` / ``PySide6`` (``python3-pyqt5``: pip's lower case)
+    "wx", "PyQt5", "PyQt6", "PySide2", "PySide6",
 }) | _pip_libraries()
 
 
