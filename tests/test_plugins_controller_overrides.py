@@ -17,6 +17,28 @@ from haros_arch.query.catalogue import run_catalogue
 
 PLUGINS = FIXTURES / "build" / "plugins"
 
+
+def _tree(controller: str, launch: str, plugins_xml: str | None = None,
+          bringup: tuple[str, ...] = (), extra: dict[str, str] | None = None
+          ) -> dict[str, str]:
+    """The two packages' files: ros2_ctrl with the controller's source and plugin
+    description (the fixture's, or ``plugins_xml``), ros2_bringup with the launch file
+    and the fixture's files named in ``bringup``; ``extra``: more files, by path; and
+    the project file."""
+    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
+             for name in ("CMakeLists.txt", "package.xml",
+                          *(("ros2_ctrl.xml",) if plugins_xml is None else ()))}
+    if plugins_xml is not None:
+        files["src/ros2_ctrl/ros2_ctrl.xml"] = plugins_xml
+    files["src/ros2_ctrl/src/follower.cpp"] = controller
+    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
+                  for name in ("CMakeLists.txt", "package.xml", *bringup)})
+    files["src/ros2_bringup/launch/c.launch.py"] = launch
+    files.update(extra or {})
+    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
+                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    return files
+
 CONTROLLER = r"""
 #include <memory>
 #include <string>
@@ -68,14 +90,7 @@ def generate_launch_description():
 
 
 def test_a_controller_gets_the_managers_dictionary_parameters(write_tree):
-    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
-             for name in ("CMakeLists.txt", "package.xml", "ros2_ctrl.xml")}
-    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
-                  for name in ("CMakeLists.txt", "package.xml", "params/controllers.yaml")})
-    files["src/ros2_ctrl/src/follower.cpp"] = CONTROLLER
-    files["src/ros2_bringup/launch/c.launch.py"] = LAUNCH
-    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
-                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    files = _tree(CONTROLLER, LAUNCH, bringup=("params/controllers.yaml",))
     root = write_tree(files)
     model = analyse(load(os.path.join(root, "project.yaml")), {},
                     Options(cache_dir=None, jobs=1))
@@ -162,16 +177,8 @@ def test_a_managers_dictionary_value_is_one_setting_for_its_controllers(write_tr
     controller of the process gets it, and only the io_and_status_controller reads it.
     It was "set but never read" once per other controller (15 warnings); a value for the
     whole process is unread only when none of its nodes reads it."""
-    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
-             for name in ("CMakeLists.txt", "package.xml")}
-    files["src/ros2_ctrl/ros2_ctrl.xml"] = PLUGINS_XML
-    files["src/ros2_ctrl/src/follower.cpp"] = LEADER
-    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
-                  for name in ("CMakeLists.txt", "package.xml")})
-    files["src/ros2_bringup/params/spawned.yaml"] = SPAWNED
-    files["src/ros2_bringup/launch/c.launch.py"] = SHARED_LAUNCH
-    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
-                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    files = _tree(LEADER, SHARED_LAUNCH, PLUGINS_XML,
+                  extra={"src/ros2_bringup/params/spawned.yaml": SPAWNED})
     root = write_tree(files)
     model = analyse(load(os.path.join(root, "project.yaml")), {},
                     Options(cache_dir=None, jobs=1))
@@ -225,15 +232,8 @@ def test_a_controllers_setting_in_the_managers_file_is_placed_at_its_line(write_
     # rosbot_ros 5b024d7 gives ros2_control_node one file with a section per controller
     # (``/**/imu_broadcaster:``); its settings the controller never reads were all said
     # at the launch file's line, not at theirs in the file
-    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
-             for name in ("CMakeLists.txt", "package.xml", "ros2_ctrl.xml")}
-    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
-                  for name in ("CMakeLists.txt", "package.xml")})
-    files["src/ros2_bringup/config/manager.yaml"] = MANAGER_FILE
-    files["src/ros2_ctrl/src/follower.cpp"] = CONTROLLER
-    files["src/ros2_bringup/launch/c.launch.py"] = MANAGER_FILE_LAUNCH
-    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
-                             "  c: [ros2_bringup/launch/c.launch.py]\n")
+    files = _tree(CONTROLLER, MANAGER_FILE_LAUNCH,
+                  extra={"src/ros2_bringup/config/manager.yaml": MANAGER_FILE})
     root = write_tree(files)
     model = analyse(load(os.path.join(root, "project.yaml")), {},
                     Options(cache_dir=None, jobs=1))
@@ -307,14 +307,8 @@ def test_a_file_given_to_a_node_and_by_a_spawner_is_one_setting(write_tree):
     others the manager does not: each was "set but never read" for the manager, the
     controller's copy a setting of its own. A ``/**`` entry of a file a spawner gives is
     the same setting as that file's entry given to a node: unread when none reads it."""
-    files = {f"src/ros2_ctrl/{name}": (PLUGINS / "ros2_ctrl" / name).read_text()
-             for name in ("CMakeLists.txt", "package.xml")}
-    files["src/ros2_ctrl/ros2_ctrl.xml"] = PLUGINS_XML
-    files["src/ros2_ctrl/src/follower.cpp"] = LEADER
-    files.update({f"src/ros2_bringup/{name}": (PLUGINS / "ros2_bringup" / name).read_text()
-                  for name in ("CMakeLists.txt", "package.xml")})
-    files["src/ros2_bringup/params/shared.yaml"] = SHARED_FILE
-    files["src/ros2_bringup/launch/c.launch.py"] = FILE_TO_BOTH_LAUNCH
+    files = _tree(LEADER, FILE_TO_BOTH_LAUNCH, PLUGINS_XML,
+                  extra={"src/ros2_bringup/params/shared.yaml": SHARED_FILE})
     files["src/mover_pkg/package.xml"] = (
         '<package format="3"><name>mover_pkg</name><version>0.0.0</version>'
         '<description>d</description><maintainer email="a@b.c">a</maintainer>'
@@ -323,8 +317,6 @@ def test_a_file_given_to_a_node_and_by_a_spawner_is_one_setting(write_tree):
     files["src/mover_pkg/setup.py"] = MOVER_SETUP
     files["src/mover_pkg/mover_pkg/__init__.py"] = ""
     files["src/mover_pkg/mover_pkg/mover.py"] = MOVER
-    files["project.yaml"] = ("project: p\ndistro: jazzy\nconfigurations:\n"
-                             "  c: [ros2_bringup/launch/c.launch.py]\n")
     root = write_tree(files)
     model = analyse(load(os.path.join(root, "project.yaml")), {},
                     Options(cache_dir=None, jobs=1))
