@@ -41,10 +41,17 @@ def test_roscpp_version_macros(tmp_path, header: str) -> None:
         "</package>", "<depend>roscpp</depend><depend>std_msgs</depend></package>"))
     source = tmp_path / "talker.cpp"
     source.write_text(SOURCE.replace("ros/ros.h", header))
-    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None,
+                         distro="noetic")
     assert [c.name for c in result.calls if c.kind == "publish"] == ["new", "one"]
     assert not [d for d in result.diagnostics
                 if d.code in ("CPP_PARSE_ERROR", "CPP_ERROR_NEAR_CALL")]
+    # with no distribution known, kinetic's parse reads the #else: each under its branch
+    result = extract_cpp([str(source)], scan([str(tmp_path)]), cache_dir=None)
+    assert [(c.name, [str(k) for k in c.conditions]) for c in result.calls
+            if c.kind == "publish"] == [
+        ("new", ["#if (ROS_VERSION_MINIMUM(1, 13, 1))"]),
+        ("old", ["#else (ROS_VERSION_MINIMUM(1, 13, 1))"]), ("one", [])]
 
 
 @pytest.mark.skipif(not os.path.isfile("/usr/include/ros/common.h"),

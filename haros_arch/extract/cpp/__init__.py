@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import hashlib
 import json
 import os
 import re
@@ -1895,8 +1896,10 @@ def _translation_unit(path: str, text: str, ros2: bool,
     result.diagnostics.extend(hidden)
     library = versions.RCLCPP if ros2 else versions.ROSCPP
     if library.version(setup.distro) is None and not setup.system_headers:
+        again = functools.partial(_other_version, path, text, setup, owned, ros2, wrappers,
+                                  clients, where, local)
         result.diagnostics.extend(_version_unknown(tu, source, owned, workspace, library,
-                                                   setup.distro))
+                                                   setup.distro, result, again))
     result.diagnostics.extend(_target_unknown(tu, source, owned, workspace))
     # what the parses added: the headers the unit includes that a parse stood in for,
     # this unit's or an earlier one's (``stood_in``), not only those it repaired itself
@@ -1998,21 +2001,224 @@ def _target_unknown(tu: TranslationUnit, source: SourceCache,
 
 def _version_unknown(tu: TranslationUnit, source: SourceCache,
                      owned: Callable[[str], bool], workspace: Workspace,
-                     library: versions.Library, distro: str | None) -> list[Diagnostic]:
-    """``CPP_VERSION_UNKNOWN`` at the first ROS call of each branch of a condition on
-    ``library``'s version that the parse left out, in the unit's workspace files: with
-    no distribution of it known, the stand-ins' default version chose (``versions``)."""
-    found: list[Diagnostic] = []
-    for name, skipped in sorted(recall.skipped_lines(tu).items()):
+                     library: versions.Library, distro: str | None,
+                     result: CppResult | None = None,
+                     again: Callable[[str, dict[str, list[versions.Branch]]], tuple[
+                         list[PrimitiveCall], dict[str, list[versions.Branch]]] | None]
+                     | None = None
+                     ) -> list[Diagnostic]:
+    """With no distribution of ``library`` known (the stand-ins' default version chose
+    the branches of a condition on it: ``versions``), the calls of ``result`` in a
+    branch of such a condition made under the branch's condition; the unit parsed
+    ``again`` with another distribution's version while a branch the parse left out
+    holds a ROS call (or is of a chain another branch of which makes one), and the
+    calls of those branches that parse read added under theirs; a call every branch of
+    a chain makes, once and under no condition of the version (``_made_by_each_branch``);
+    ``CPP_VERSION_UNKNOWN`` at the first ROS call of each branch left out that no parse
+    read, in the unit's workspace files."""
+    skipped = recall.skipped_lines(tu)
+    names = {os.path.abspath(path) for path in skipped}
+    if result is not None:  # the files of the calls, for a branch the parse read
+        names |= {os.path.abspath(os.path.join(workspace.root, c.location.file))
+                  for c in result.calls if c.location.file}
+    held: dict[str, list[versions.Branch]] = {}  # per file, its branches
+    left: dict[str, list[tuple[versions.Branch, recall.Site | None]]] = {}  # left out
+    first = list(result.calls) if result is not None else []
+    for name in sorted(names):
         text = source.text(name) if owned(name) else None
-        if not text:
+        if not text or not versions.blocks_naming(text, versions.name_pattern(library)):
             continue
-        for line, call, condition in versions.unknown_version_calls(text, skipped, library):
+        held[name] = versions.branches(text, library)
+        relative = workspace.relpath(name)
+        # the chains with a call in a branch the parse read: the others may make it too
+        making = {b.chain for b in held[name] if any(
+            c.location.file == relative and b.holds(c.location.line) for c in first)}
+        sites = None
+        for branch in held[name]:
+            if not versions.skipped_for(branch, skipped.get(name, [])):
+                continue
+            sites = recall.call_sites(text) if sites is None else sites
+            site = recall.first_site(sites, branch.first, branch.last)
+            if site is not None or branch.chain in making:
+                left.setdefault(name, []).append((branch, site))
+    read_all = {(name, b) for name, branches in held.items() for b in branches
+                if not versions.skipped_for(b, skipped.get(name, []))}
+    more: list[PrimitiveCall] = []  # the calls the other parses read
+    if result is not None and again is not None:
+        others = library.others()
+        for _parse_again in range(versions.MAX_OTHER_PARSES):
+            # the newest distribution that may take a branch left out
+            other = next((d for d in others if any(
+                b.taken(library, library.table[d]) is not False
+                for found in left.values() for b, _site in found)), None)
+            if other is None:
+                break
+            others.remove(other)
+            wanted = {name: [branch for branch, _site in found]
+                      for name, found in left.items()}
+            parsed = again(other, wanted)
+            if parsed is None:
+                continue
+            calls, read = parsed
+            more.extend(calls)
+            read_all |= {(name, b) for name, branches in read.items() for b in branches}
+            for name in list(left):
+                left[name] = [(b, s) for b, s in left[name] if b not in read.get(name, ())]
+                if not left[name]:
+                    del left[name]
+    if result is not None and held:
+        free, dropped = _made_by_each_branch(first, more, held, read_all, workspace)
+        result.calls = sorted(
+            (_under_branches(call, held, workspace, free.get(id(call), frozenset()))
+             for call in [*first, *(c for c in more if id(c) not in dropped)]),
+            key=lambda c: (c.location.file or "", c.location.line, c.location.column))
+    found: list[Diagnostic] = []
+    for name, branches in sorted(left.items()):
+        for branch, site in branches:
+            if site is None:  # (no ROS call of its own: only what the others make)
+                continue
             found.append(diag.make(
-                "CPP_VERSION_UNKNOWN", workspace.location(name, line), text=call.strip()[:80],
-                condition=condition, library=library.name,
+                "CPP_VERSION_UNKNOWN", workspace.location(name, site.line),
+                text=site.text.strip()[:80], condition=branch.text, library=library.name,
                 version=library.describe(distro)))
     return found
+
+
+def _same_call(call: PrimitiveCall) -> tuple[object, ...]:
+    """What makes two calls of two branches the same call of the node, wherever they
+    are written."""
+    return (call.kind, call.name, call.type, call.name_param, call.node_name)
+
+
+def _made_by_each_branch(first: list[PrimitiveCall], more: list[PrimitiveCall],
+                         held: dict[str, list[versions.Branch]],
+                         read: set[tuple[str, versions.Branch]], workspace: Workspace
+                         ) -> tuple[dict[int, frozenset[frozenset[int]]], set[int]]:
+    """The calls every branch of a version chain with an ``#else`` makes, each branch
+    read (navigation2's tf2_factories.hpp makes the TransformBroadcaster with ``*node``
+    from Rolling on, with ``node`` before): no condition of the version, one call. By
+    ``id``: the chains (their directive lines) each call of ``first`` (the parse's own)
+    is made in whatever the version, and the calls of ``more`` (the other parses') that
+    say the same again."""
+    free: dict[int, frozenset[frozenset[int]]] = {}
+    dropped: set[int] = set()
+    for name, branches in held.items():
+        relative = workspace.relpath(name)
+        chains: dict[frozenset[int], list[versions.Branch]] = {}
+        for branch in branches:
+            chains.setdefault(branch.chain, []).append(branch)
+        for chain, members in chains.items():
+            members.sort(key=lambda b: b.first)
+            if members[-1].statement != "#else" or not all(
+                    (name, b) in read for b in members):
+                continue
+            made = [[c for c in [*first, *more] if c.location.file == relative
+                     and b.holds(c.location.line)] for b in members]
+            common = set.intersection(*({_same_call(c) for c in calls} for calls in made))
+            owned = {id(c) for c in first}
+            for calls in made:
+                for call in calls:
+                    if _same_call(call) not in common:
+                        continue
+                    if id(call) in owned:
+                        free[id(call)] = free.get(id(call), frozenset()) | {chain}
+                    else:
+                        dropped.add(id(call))
+    return free, dropped
+
+
+def _under_branches(call: PrimitiveCall, held: dict[str, list[versions.Branch]],
+                    workspace: Workspace, free: frozenset[frozenset[int]] = frozenset()
+                    ) -> PrimitiveCall:
+    """``call`` made under the condition of each version branch of ``held`` (per file)
+    it is in, outermost first, but those of the chains ``free`` (``_made_by_each_branch``)."""
+    for name, branches in held.items():
+        if workspace.relpath(name) != call.location.file:
+            continue
+        around = [b for b in branches if b.holds(call.location.line) and b.chain not in free]
+        if around:
+            around.sort(key=lambda b: b.first)
+            made = tuple(b.condition(workspace.location(name, b.first)) for b in around)
+            return dataclasses.replace(call, conditions=(*made, *call.conditions))
+    return call
+
+
+# the calls a parse with another distribution's version read in a branch of a workspace
+# header, per (file, its text's digest, the branch's lines, the distribution, ROS 2),
+# None when that parse did not read it whole: the units that include the header read
+# it alike (navigation2's node_utils.hpp, in nearly every unit of its 40 nodes), so one
+# parse serves them all (``_other_version``)
+_OTHER_READ: dict[tuple[str, str, int, int, str, bool], tuple[PrimitiveCall, ...] | None] = {}
+MAX_OTHER_READ = 4096
+
+
+def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[str], bool],
+                   ros2: bool, wrappers: tuple[frozenset[str], frozenset[str]] | None,
+                   clients: Callable[..., str | None] | None,
+                   where: Callable[[Cursor], Location], local: Callable[[str], bool],
+                   distro: str, wanted: dict[str, list[versions.Branch]]
+                   ) -> tuple[list[PrimitiveCall], dict[str, list[versions.Branch]]] | None:
+    """The unit parsed again with ``distro``'s client library (``versions``): the calls
+    it extracts in the branches of ``wanted`` (per file) it reads, and those branches,
+    each read whole (not skipped, and no error of that parse in it); None when it
+    cannot be parsed. A branch of a header that an earlier unit's parse with ``distro``
+    read (or not) is taken from it (``_OTHER_READ``): no parse when that is all."""
+    workspace = setup.workspace
+    source = SourceCache(workspace.holds, {path: text.encode("utf-8")})
+    calls: list[PrimitiveCall] = []
+    read: dict[str, list[versions.Branch]] = {}
+    keys: dict[tuple[str, versions.Branch], tuple[str, str, int, int, str, bool]] = {}
+    todo: dict[str, list[versions.Branch]] = {}
+    for name, branches in wanted.items():
+        data = source.get(name) if name != path else None
+        digest = hashlib.sha256(data).hexdigest() if data is not None else None
+        for branch in branches:
+            if digest is None:
+                todo.setdefault(name, []).append(branch)
+                continue
+            key = keys[name, branch] = (name, digest, branch.first, branch.last, distro, ros2)
+            if key not in _OTHER_READ:
+                todo.setdefault(name, []).append(branch)
+            elif (kept := _OTHER_READ[key]) is not None:
+                calls.extend(kept)
+                read.setdefault(name, []).append(branch)
+    if not todo:
+        return calls, read
+    with setup.announcing(distro):
+        tu = _parse(path, text, setup, workspace, CppResult(), source, owned, ros2,
+                    wrappers, clients)
+        if tu is None:
+            return None
+        skipped = recall.skipped_lines(tu)
+        wrong: dict[str, list[int]] = {}
+        for error in _errors(tu):
+            if error.path is not None:
+                wrong.setdefault(os.path.abspath(error.path), []).append(error.line)
+        whole = {name: [b for b in branches
+                        if not versions.skipped_for(b, skipped.get(name, []))
+                        and not any(b.first < line < b.last for line in wrong.get(name, ()))]
+                 for name, branches in todo.items()}
+        found: list[PrimitiveCall] = []
+        if any(whole.values()):
+            finder = CallFinder(tu, source, owned, where, ros2=ros2, local=local,
+                                clients=clients)
+            finder.run()
+            found = finder.calls
+            finder.release()
+    if len(_OTHER_READ) > MAX_OTHER_READ:
+        _OTHER_READ.clear()
+    for name, branches in todo.items():
+        relative = workspace.relpath(name)
+        for branch in branches:
+            made = tuple(c for c in found if c.location.file == relative
+                         and branch.holds(c.location.line))
+            taken = branch in whole[name]
+            if taken:
+                calls.extend(made)
+                read.setdefault(name, []).append(branch)
+            if (name, branch) in keys:
+                _OTHER_READ[keys[name, branch]] = made if taken else None
+    return calls, read
 
 
 def _hidden(path: str, errors: list[_Error], places: _Places, fieldless: set[str],

@@ -581,6 +581,19 @@ class IncludeSetup:
         # the dynamic_reconfigure configs of each package read so far (``_reconfigure``)
         self._configs: dict[str, dict[str, reconfigure.Config]] = {}
 
+    @contextlib.contextmanager
+    def announcing(self, distro: str) -> Iterator[None]:
+        """The parses made inside take the client libraries to be ``distro``'s (a unit
+        parsed again for a branch on a version not known: ``versions``); the
+        diagnostics and missing headers they add are dropped after."""
+        kept = self._versions, self.unit_missing, len(self.diagnostics)
+        self._versions = versions.flags(distro)
+        try:
+            yield
+        finally:
+            self._versions, self.unit_missing = kept[0], kept[1]
+            del self.diagnostics[kept[2]:]
+
     def arguments(self, pch: bool = True, source: str | None = None) -> list[str]:
         """The parse flags (of translation unit ``source``: its compile command's include
         folders, macros and standard, after our stand-ins); without ``pch`` the

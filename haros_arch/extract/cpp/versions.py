@@ -12,9 +12,17 @@ parses again).
 The distribution is the project file's ``distro:``, else ``ROS_DISTRO`` in the
 environment (``pipeline``). When it is none of a library's table (none known, or one
 of the other ROS), no flag is given for that library: the stand-ins announce its
-``default``'s version, and in a unit of that ROS a ROS call in a block that a condition
-on the version leaves out is ``CPP_VERSION_UNKNOWN`` (``unknown_version_calls``), which
-makes the node partial: on another release the code makes that call.
+``default``'s version. In a unit of that ROS the version is then not known, and the
+code of every branch of a condition on it may run: a ROS call in a branch the parse
+read is made under that branch's condition (``Branch.condition``), and when a branch
+the parse left out holds a ROS call, the unit is parsed again with the version of
+another distribution of the table (``others``: the newest first, then the oldest) and
+the calls of the branches that parse reads are made under theirs (navigation2's
+``introspection_mode`` parameter, declared under ``#if RCLCPP_VERSION_GTE(29, 0, 0)``,
+is read under that condition, not certainly, nor never). A branch no parse read, or one
+that parse left an error in, is ``CPP_VERSION_UNKNOWN`` at its first ROS call
+(``unknown_version_calls``), which makes the node partial: on another release the code
+makes a call nobody read.
 """
 
 from __future__ import annotations
@@ -22,7 +30,12 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from ...evaluate.python import evaluate
+from ...model.conditions import Condition
+from ...model.location import Location
 from . import recall
+
+MAX_OTHER_PARSES = 2  # the parses of a unit with another distribution's version
 
 
 @dataclass(frozen=True)
@@ -61,6 +74,12 @@ class Library:
                f"no ROS {self.ros} distribution is known")
         return f"{self.default}'s ({self.name} {default}), as {why}"
 
+    def others(self) -> list[str]:
+        """The distributions of the table other than ``default``, newest first: the
+        order a unit is parsed again with their version (``Branch.taken`` chooses)."""
+        return sorted((d for d in self.table if d != self.default),
+                      key=lambda d: self.table[d], reverse=True)
+
 
 # rclcpp's version in each ROS 2 distribution: the newest release of its branch listed by
 # rclcpp's release repository (ros2-gbp/rclcpp-release, notes of 18 Nov 2025; iron and
@@ -83,6 +102,95 @@ ROSCPP = Library(
 LIBRARIES = (RCLCPP, ROSCPP)
 
 
+@dataclass(frozen=True)
+class Branch:
+    """A branch of an ``#if`` chain whose conditions name a version macro: its lines
+    (from its directive to the chain's next one, both included) in one file."""
+
+    first: int
+    last: int
+    statement: str  # its directive as written: ``#if``, ``#elif``, ``#else``
+    text: str  # its condition; for an ``#else``, the chain's first on the version
+    chain: frozenset[int]  # the chain's directive lines
+    before: tuple[str, ...] = ()  # the conditions of the chain's directives before it
+
+    def taken(self, library: Library, version: tuple[int, int, int]) -> bool | None:
+        """Whether the preprocessor takes the branch when ``library`` is ``version``;
+        None when a condition of the chain is more than the version (``holds``)."""
+        earlier = [holds(text, library, version) for text in self.before]
+        if any(e is True for e in earlier):
+            return False
+        own = True if self.statement == "#else" else holds(self.text, library, version)
+        if own is False:
+            return False
+        return None if own is None or None in earlier else True
+
+    def holds(self, line: int) -> bool:
+        """Whether ``line`` is inside the branch (between its directives)."""
+        return self.first < line < self.last
+
+    def condition(self, location: Location) -> Condition:
+        """The source condition a call made in the branch exists under: never decided
+        (``graph.conditions`` decides no ``#`` statement), as the version is not known."""
+        return Condition(self.text, "source", self.statement, location)
+
+
+def branches(text: str, library: Library) -> list[Branch]:
+    """The branches of each ``#if`` chain of ``text`` whose conditions name a version
+    macro of ``library`` (``blocks_naming``), each with its own directive."""
+    lines = text.splitlines()
+
+    def directive(line: int) -> tuple[str, str]:
+        match = recall.DIRECTIVE.match(lines[line - 1])
+        if match is None:
+            return "if", ""
+        kind, rest = match.group(1), match.group(2).split("//", 1)[0].strip()
+        if kind in ("ifdef", "ifndef"):  # as a condition: ``defined(X)``, ``!defined(X)``
+            rest = f"{'!' if kind == 'ifndef' else ''}defined({rest})"
+        return kind, rest
+
+    found = []
+    for first, last, condition, chain in blocks_naming(text, _names(library)):
+        kind, own = directive(first)
+        before = tuple(directive(line)[1] for line in sorted(chain) if line < first)
+        found.append(Branch(first, last, f"#{kind}",
+                            own if kind not in ("else", "endif") and own else condition,
+                            chain, before))
+    return found
+
+
+# a test of the version against one, ``RCLCPP_VERSION_GTE(29, 0, 0)``,
+# ``ROS_VERSION_MINIMUM(1, 13, 1)``
+_AT_LEAST = re.compile(r"\b(?:RCLCPP_VERSION_GTE|ROS_VERSION_MINIMUM)\s*\(\s*(\d+)\s*,"
+                       r"\s*(\d+)\s*,\s*(\d+)\s*\)")
+_WORD = re.compile(r"[A-Za-z_]\w*")
+_LOGIC = frozenset({"and", "or", "not", "True", "False"})
+
+
+def holds(text: str, library: Library, version: tuple[int, int, int]) -> bool | None:
+    """Whether the ``#if`` condition ``text`` holds when ``library`` is ``version``:
+    read when it tests only the version (``_AT_LEAST``, its MAJOR / MINOR / PATCH
+    macros, numbers, comparisons, ``&&``, ``||``, ``!``); None for anything more."""
+    read = _AT_LEAST.sub(
+        lambda m: " True " if version >= tuple(int(g) for g in m.groups()) else " False ",
+        text)
+    for part, number in zip(("MAJOR", "MINOR", "PATCH"), version, strict=True):
+        read = re.sub(rf"\b{library.prefix}_{part}\b", str(number), read)
+    read = re.sub(r"!(?!=)", " not ", read.replace("&&", " and ").replace("||", " or "))
+    if any(word not in _LOGIC for word in _WORD.findall(read)):
+        return None
+    value = evaluate(read)
+    return bool(value) if isinstance(value, (bool, int)) else None
+
+
+def skipped_for(branch: Branch, skipped: list[tuple[int, int]]) -> bool:
+    """Whether the parse skipped ``branch`` for its chain (``skipped``: the
+    preprocessor's skipped line ranges of the file), not inside code skipped for
+    another reason."""
+    return any(start in branch.chain and start <= branch.first and branch.last <= end
+               for start, end in skipped)
+
+
 def flags(distro: str | None) -> list[str]:
     """The ``-D`` flags that make the stand-ins announce the client library of
     ``distro`` (none for a distribution we do not know)."""
@@ -93,6 +201,11 @@ def flags(distro: str | None) -> list[str]:
     if major is not None:
         found.append(f'-DRCLCPP_VERSION_STR="{major}.{minor}.{patch}"')
     return found
+
+
+def name_pattern(library: Library) -> re.Pattern[str]:
+    """What finds a version macro of ``library`` in a condition."""
+    return _names(library)
 
 
 def _names(library: Library) -> re.Pattern[str]:
