@@ -1274,6 +1274,12 @@ def _reached(units: list[tuple[str, CppResult]], unseen: Collection[str] = (),
         words = anywhere | set(scoped)
         starts = {f for f in functions - reached
                   if "*" in words or _named(f, words, classes, scoped)}
+        # the free functions a class may run whose construction the parse cannot see
+        # (its name among the words: a ``make_shared<Server<T>>`` of a function
+        # template, navigation2's ``nav2::ServiceServer``, whose constructor calls
+        # ``nav2::setIntrospectionMode``); the class itself stays ``_unbuilt``'s to keep
+        starts |= {f for cls in classes - reached if _named_in(cls, words, scoped)
+                   for f in edges.get(cls, ()) if f.endswith("()") and f not in reached}
     scoped = {word: owners for word, owners in scoped.items() if word not in anywhere}
     return (reached, words, {made for targets in edges.values() for made in targets} | hosted,
             named, scoped, exported)
