@@ -604,10 +604,34 @@ def _call_key(call: PrimitiveCall) -> tuple[object, ...]:
     its calls on each of two nodes), and the image topic a camera_info call is beside
     (a camera publisher class built twice makes two). A name the code resolves, or a
     command-line word it reads, is no parameter read of that name at that place
-    (swri_roscpp's ``getParam`` wrapper resolves the name and then reads it)."""
+    (swri_roscpp's ``getParam`` wrapper resolves the name and then reads it). A topic,
+    service or action call of a class template is one per type its constructions give
+    it (MoveIt's ``ActionBasedControllerHandle<T>`` makes a FollowJointTrajectory, a
+    GripperCommand and a ParallelGripperCommand client at one place): its known type
+    is part of the key (``_typed_once`` drops the copies of no known type beside it)."""
     return (call.kind, call.name, call.location, call.name_param,
             links.per_construction(call.node_name)[1], call.camera_of, call.resolved,
-            call.argument)
+            call.argument, _interface_type(call))
+
+
+def _interface_type(call: PrimitiveCall) -> str | None:
+    """The known type of a topic, service or action call; None for a parameter's call
+    (a ``hasParam`` before a read is one read, typed by the read) or a type not known."""
+    if call.kind in _PARAMETER_KINDS or call.type in (None, "?"):
+        return None
+    return call.type
+
+
+_PARAMETER_KINDS = frozenset({"read", "write", "declare"})
+
+
+def _typed_once(calls: list[PrimitiveCall]) -> list[PrimitiveCall]:
+    """``calls`` without a topic, service or action call of no known type where one of
+    the same kind, name and place has one (a unit that does not see the construction
+    that types it: the typed copies say it)."""
+    typed = {(c.kind, c.name, c.location) for c in calls if _interface_type(c) is not None}
+    return [c for c in calls if c.kind in _PARAMETER_KINDS or c.type not in (None, "?")
+            or (c.kind, c.name, c.location) not in typed]
 
 
 # the diagnostics the visitor makes at a call it keeps, which say something of that call
@@ -744,7 +768,7 @@ def _node_result(paths_units: list[tuple[str, CppResult]], complete: bool = True
                     kept, type=call.type)
             if call.conditions not in (c.conditions for c in seen[key]):
                 seen[key].append(call)
-    result.calls = _made_under_fewest(result.calls, seen, whole)
+    result.calls = _typed_once(_made_under_fewest(result.calls, seen, whole))
     # a copy named by no parameter beside one that is (a header's function that another
     # unit reads without its caller: opennav_docking's parseDockParams) is that one
     named = {(c.kind, c.name, c.location) for c in result.calls if c.name_param is not None}

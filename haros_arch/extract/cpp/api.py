@@ -1029,6 +1029,12 @@ UNRESOLVED_ROS2: dict[str, RosFunction] = {
     "declare_or_get_parameter": _NAV2_DECLARE,
     **UNRESOLVED_FREE,
 }
+# rclcpp_action's free functions where the unresolved call names that namespace
+# (``rclcpp_action::create_client<T>(node, getActionName())`` in a class template,
+# MoveIt's ActionBasedControllerHandle): its row, not the node method of that name (a
+# service client named by the node argument)
+UNRESOLVED_ACTION: dict[str, RosFunction] = {
+    name: LIBRARIES[("rclcpp_action", name)] for name in ("create_server", "create_client")}
 UNRESOLVED_ROS1: dict[str, RosFunction] = {
     name: row for (owner, name), row in ROSCPP.items() if owner == NODE_HANDLE}
 

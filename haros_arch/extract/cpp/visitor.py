@@ -179,6 +179,10 @@ _API_NAMES = frozenset(
 MAX_DEPTH = 16
 # how many variables or members holding a name ``_held_source`` follows, one in another
 _MAX_HELD = 3
+# a class template's parameters, in order (the index of a construction's type argument)
+_TEMPLATE_PARAMETERS = (CursorKind.TEMPLATE_TYPE_PARAMETER,
+                        CursorKind.TEMPLATE_NON_TYPE_PARAMETER,
+                        CursorKind.TEMPLATE_TEMPLATE_PARAMETER)
 _MAX_CONSTANT_ELEMENTS = 64  # a constant list longer than this is read as unknown
 # a nodelet's lookup name as a launch file gives it (``pkg/Name``, a C++ type)
 _LOOKUP_NAME = re.compile(r"[A-Za-z_][\w/:]*")
@@ -1486,8 +1490,10 @@ class CallFinder:
         recovered = call.kind != CursorKind.CALL_EXPR or not call.spelling
         function = _recovered_name(call) if recovered else call.spelling
         spec = self._unresolved_rows().get(function)
-        if spec is None or (spec.kind == "action-server" and "rclcpp_action" not in
-                            _callee_text(call)):
+        if self.ros2 and function in api.UNRESOLVED_ACTION and (
+                "rclcpp_action" in _callee_text(call)):
+            spec = api.UNRESOLVED_ACTION[function]
+        elif spec is None or spec.kind == "action-server":
             return
         if function in api.UNRESOLVED_FREE and not any(
                 api.ALL.get((qualified_name(d.semantic_parent), d.spelling)) is spec
@@ -1544,12 +1550,30 @@ class CallFinder:
                 made.type == "?"
             ):
                 self.calls[index] = dataclasses.replace(
-                    made, type=msg_types.written_type(written, self.ros2, True) or "?")
+                    made, type=msg_types.written_type(written, self.ros2, True)
+                    or self._class_parameter_type(written, scope, [made.name]) or "?")
         self.diagnostics.append(diag.make(
             "CPP_CALL_UNRESOLVED", self.calls[before].location, function=function,
             type=_shown_type(self.calls[before].type)))
         if call.location.file is not None:
             self.kept_unresolved.add((call.location.file.name, call.location.line, function))
+
+    def _class_parameter_type(self, written: str, scope: Scope,
+                              names: list[str]) -> str | None:
+        """The type of an unresolved call whose template argument is written as a type
+        parameter of the class template whose method makes it
+        (``rclcpp_action::create_client<T>(node, getActionName())`` in MoveIt's
+        ``ActionBasedControllerHandle<T>``'s constructor): the type each construction
+        gives it (``_construction_type``); None for any other."""
+        function = scope.body
+        template = function.semantic_parent if function is not None else None
+        if template is None or template.kind != CursorKind.CLASS_TEMPLATE:
+            return None
+        parameters = [c.spelling for c in template.get_children()
+                      if c.kind in _TEMPLATE_PARAMETERS]
+        if written not in parameters:
+            return None
+        return self._construction_type(template, parameters.index(written), names)
 
     def _lost_initialiser(self, init: Cursor, spec: api.RosFunction, made: Cursor,
                           conditions: tuple[Condition, ...], scope: Scope) -> None:
@@ -1577,16 +1601,26 @@ class CallFinder:
         placeholders the name holds, else the template's one constructor; None when
         that is not one."""
         found = self.types.template_parameter(function)
-        if found is None:
-            return None
-        template, index = found
-        constructors = {c.canonical.get_usr() for c in template.get_children()
-                        if c.kind == CursorKind.CONSTRUCTOR} - {""}
-        marked = {usr for name in names for usr in links.marked_usrs(name)} & constructors
-        chosen = marked if marked else constructors
+        return None if found is None else self._construction_type(*found, names)
+
+    def _construction_type(self, template: Cursor, index: int,
+                           names: list[str]) -> str | None:
+        """The placeholder of the type argument ``index`` of the class template
+        ``template`` that each construction fills (``_per_construction_type``); the
+        constructor is marked, so that its constructions are read (``passing_sites``)
+        where no name holds its placeholder."""
+        constructors = {c.canonical.get_usr(): c for c in template.get_children()
+                        if c.kind == CursorKind.CONSTRUCTOR}
+        constructors.pop("", None)
+        marked = {usr for name in names for usr in links.marked_usrs(name)} & set(
+            constructors)
+        chosen = marked if marked else set(constructors)
         if len(chosen) != 1:
             return None
-        return f"{PLACEHOLDER}{chosen.pop()}{SEPARATOR}{links.TYPE_ARGUMENT + index}{PLACEHOLDER}"
+        usr = chosen.pop()
+        if self.sites is not None:
+            self.sites.marked.add(place_of(constructors[usr].canonical))
+        return f"{PLACEHOLDER}{usr}{SEPARATOR}{links.TYPE_ARGUMENT + index}{PLACEHOLDER}"
 
     def _unresolved_rows(self) -> dict[str, api.RosFunction]:
         return api.UNRESOLVED_ROS2 if self.ros2 else api.UNRESOLVED_ROS1
