@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import contextlib
 import copy
+import dataclasses
 import hashlib
 import json
 import os
@@ -706,18 +707,20 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
         _write_model(folder, key, new_text)
     result = KeptModel(new_text.encode("utf-8"), project)
     _KEPT[result] = (folder, key)
-    _MOVED[result] = _Moved(earlier, files, maps, list(changed), root, new_text)
+    _MOVED[result] = _Moved(earlier, files, maps, list(changed), root)
     return result
 
 
+@dataclasses.dataclass(frozen=True)
 class _Moved:
     """How ``relocated`` made a model of an earlier run's: to renumber, when asked, what
     else that run kept that is written only for some commands (``extract``'s document)."""
 
-    def __init__(self, earlier: str, files: Files, maps: Maps, changed: list[str],
-                 root: str, text: str) -> None:
-        self.earlier, self.files, self.maps = earlier, files, maps
-        self.changed, self.root, self.text = changed, root, text
+    earlier: str
+    files: Files
+    maps: Maps
+    changed: list[str]
+    root: str
 
 
 _MOVED: weakref.WeakKeyDictionary[Model, _Moved] = weakref.WeakKeyDictionary()
@@ -732,7 +735,10 @@ def _moved_document(model: Model, folder: str, inputs: str) -> str | None:
     from .relocate import Files
 
     moved = _MOVED.get(model)
-    if moved is None:
+    # the model's text, to compare the document's places with (not once it is decoded:
+    # the model may have changed since)
+    kept = model._text if isinstance(model, KeptModel) else None
+    if moved is None or kept is None:
         return None
     backwards = {path: {new: old for old, new in lines.items()}
                  for path, lines in moved.maps.items()}
@@ -743,15 +749,16 @@ def _moved_document(model: Model, folder: str, inputs: str) -> str | None:
         with open(os.path.join(folder, "runs",
                                f"{moved.earlier}-document-{_digest(before)}.txt"),
                   encoding="utf-8", newline="") as handle:
-            text = handle.read()
+            earlier = handle.read()
     except (OSError, ValueError):
         return None
     indented = Files(moved.changed, moved.root, indented=True)
-    found = indented.renumbered(text, moved.maps)
+    found = indented.renumbered(earlier, moved.maps)
     if found is None:
         return None
     held = sorted(indented.places(found)[1])
-    if held != sorted(moved.files.places(moved.text)[1] + moved.files.places(inputs)[1]):
+    places = moved.files.places(kept.decode("utf-8"))[1] + moved.files.places(inputs)[1]
+    if held != sorted(places):
         return None
     return found
 

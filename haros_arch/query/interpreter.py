@@ -377,7 +377,7 @@ class Evaluator:
         if split is None:
             conjuncts = plan_conjuncts(step.where)
             alone: list[s.Expr] = []
-            while conjuncts and not (self.free[id(conjuncts[0])] - {"self"}) & self.bound:
+            while conjuncts and self._self_only(conjuncts[0]):
                 alone.append(conjuncts.pop(0))
             own = other = None
             if alone and conjuncts and isinstance(conjuncts[0], s.Compare) \
@@ -385,11 +385,15 @@ class Evaluator:
                 sides = (conjuncts[0].left, conjuncts[0].right)
                 for mine, theirs in (sides, sides[::-1]):
                     if "self" in self.free[id(mine)] and "self" not in self.free[id(theirs)] \
-                            and not (self.free[id(mine)] - {"self"}) & self.bound:
+                            and self._self_only(mine):
                         own, other = mine, theirs
                         break
             split = self.filters[id(step)] = _Filter(alone, own, other, conjuncts)
         return split
+
+    def _self_only(self, expr: s.Expr) -> bool:
+        """Whether ``expr`` reads no name the query binds but ``self``."""
+        return not (self.free[id(expr)] - {"self"}) & self.bound
 
     def _prefiltered(self, value: Any, items: list[Any], step: s.Step, split: _Filter
                      ) -> tuple[list[Any], list[s.Expr]]:

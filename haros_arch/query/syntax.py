@@ -216,19 +216,13 @@ def binders(node: Expr) -> set[str]:
     return names
 
 
-def invariants(root: Expr, free: dict[int, frozenset[str]] | None = None,
-               bound: set[str] | None = None) -> set[int]:
+def invariants(root: Expr, free: dict[int, frozenset[str]], bound: set[str]) -> set[int]:
     """The ``id``s of the largest sub-expressions below ``root`` that read no bound
     variable: their value is the same on every iteration of an enclosing filter,
     quantifier or FLWR, so an evaluation computes each once (``parameters[...]`` inside a
     ``for`` is not filtered again for every outer binding). ``free`` and ``bound``:
-    ``unbound_names``'s answers for every sub-expression and ``binders(root)``, when the
-    caller has them."""
-    if free is None:
-        free = {}
-        unbound_names(root, free)
-    if bound is None:
-        bound = binders(root)
+    ``unbound_names``'s answers for every sub-expression of ``root`` and
+    ``binders(root)``."""
     hoisted: set[int] = set()
     stack = list(children(root))
     while stack:
