@@ -683,22 +683,25 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
     moved = _renumbered_parts(files, text, parts, maps)
     if moved is None:
         return None
-    kept: list[tuple[str, str]] = []  # the earlier run's findings and diagnostics
-    for kind in ("findings", "diagnostics"):
-        try:
-            names = [entry.name for entry in os.scandir(os.path.join(folder, "runs"))
-                     if entry.name.startswith(f"{earlier}-{kind}-")]
-        except OSError:
-            names = []
-        for name in names:
+    # the earlier run's findings and diagnostics, which must renumber, and ``extract``'s
+    # summary lines (their places are the model's and its diagnostics'): one that does
+    # not, or that lists places of a changed file by line alone, is made again when
+    # asked (it decodes the whole model)
+    kept: list[tuple[str, str]] = []
+    for kind, needed in (("findings", True), ("diagnostics", True), ("summary", False)):
+        for name in _run_entries(folder, earlier, kind):
             try:
                 with open(os.path.join(folder, "runs", name), encoding="utf-8") as handle:
-                    found = files.renumbered(handle.read(), maps)
+                    text = handle.read()
+                found = files.renumbered(text, maps)
+                if kind == "summary" and found is not None and _bare(text, changed, root):
+                    found = None
             except (OSError, ValueError):
                 continue
-            if found is None:
+            if found is not None:
+                kept.append((key + name[len(earlier):], found))
+            elif needed:
                 return None
-            kept.append((key + name[len(earlier):], found))
     new_text, new_parts = moved
     _write_json(_entry(folder, key + PARTS), new_parts)
     for name, found in kept:
@@ -709,6 +712,29 @@ def relocated(folder: str, earlier: str, counts: Any, key: str, model: Model,
     _KEPT[result] = (folder, key)
     _MOVED[result] = _Moved(earlier, files, maps, list(changed), root)
     return result
+
+
+def _bare(summary: str, changed: Iterable[str], root: str) -> bool:
+    """Whether a kept summary's lines list places of a ``changed`` file by line alone
+    (``report.text.bare_places``); True when they do not read as lines."""
+    from .report.text import bare_places
+
+    lines = json.loads(summary).get("summary")  # as ``_entry_or`` keeps it
+    if not isinstance(lines, list) or not all(isinstance(line, str) for line in lines):
+        return True
+    top = os.path.abspath(root)
+    names = [spelling for path in changed for spelling in (
+        os.path.abspath(path), os.path.relpath(os.path.abspath(path), top))]
+    return bare_places(lines, names)
+
+
+def _run_entries(folder: str, key: str, kind: str) -> list[str]:
+    """The names of the entries of kind ``kind`` the run ``key`` kept (one per inputs)."""
+    try:
+        return [entry.name for entry in os.scandir(os.path.join(folder, "runs"))
+                if entry.name.startswith(f"{key}-{kind}-")]
+    except OSError:
+        return []
 
 
 @dataclasses.dataclass(frozen=True)

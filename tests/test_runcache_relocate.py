@@ -216,3 +216,57 @@ def test_places_in_an_indented_document() -> None:
          "m": "at src/ñodo.cpp:14: x"}, indent=2, ensure_ascii=False)
     # the compact reader does not take the indented form: not one of its places
     assert Files(["/ws/src/ñodo.cpp"], root).places(text)[1] == []
+
+
+def test_extracts_summary_after_lines_moved_is_the_last_one_renumbered(
+        tmp_path: Path, monkeypatch) -> None:
+    """``extract``'s summary of a relocated run: the earlier run's lines renumbered (the
+    model is not decoded for them), the same as a cold run's, with and without -v."""
+    from haros_arch import runcache
+    from haros_arch.report.text import summary_lines
+
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    spec = load(str(project))
+
+    def summary(cached: bool, verbose: bool) -> tuple[list[str], bool]:
+        model = analyse(spec, {}, Options(cache_dir=str(cache) if cached else None, jobs=1))
+        made: list[bool] = []
+
+        def compute() -> list[str]:
+            made.append(True)
+            return summary_lines(model, verbose)
+
+        return runcache.summary(model, verbose, compute), bool(made)
+
+    first = {verbose: summary(True, verbose)[0] for verbose in (False, True)}
+    monitor = project.parent / "src" / "demo_robot" / "src" / "monitor.cpp"
+    monitor.write_text("// a comment\n\n\n" + monitor.read_text())
+    for verbose in (False, True):
+        cold, _ = summary(False, verbose)
+        again, made = summary(True, verbose)
+        assert again == cold and not made, verbose
+        # a diagnostic's place in that file (CPP_DYNAMIC_NAME), moved
+        assert "demo_robot/src/monitor.cpp:17:" in "\n".join(first[verbose])
+        assert "demo_robot/src/monitor.cpp:20:" in "\n".join(again)
+
+
+def test_a_summary_that_lists_places_by_line_alone_is_not_renumbered() -> None:
+    """``also at`` under a file's name lists its other places as ``line:col``: a text
+    whose ``path:line`` places are renumbered would keep those as they were."""
+    from haros_arch.model.diagnostic import Diagnostic
+    from haros_arch.model.location import Location
+    from haros_arch.report.text import Lines, bare_places, print_diagnostics
+
+    def said(file: str, *lines: int) -> list[Diagnostic]:
+        return [Diagnostic(code="CPP_X", severity="warning", message="the same",
+                           location=Location(file=file, line=line, column=1))
+                for line in lines]
+
+    printed = Lines()
+    print_diagnostics([*said("src/a.cpp", 3, 9), *said("src/b.cpp", 4)], printed,
+                      verbose=False)
+    assert any("also at: 9:1" in line for line in printed.lines)
+    assert bare_places(printed.lines, ["src/a.cpp"])
+    assert not bare_places(printed.lines, ["src/b.cpp", "src/c.cpp"])

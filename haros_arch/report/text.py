@@ -79,12 +79,28 @@ def print_diagnostics(diagnostics: Iterable[Diagnostic], console: Printer,
                 place for d in group for place in (d.location, *d.also)],
                 exclude=item, limit=None if verbose else ALSO_AT_LISTED)
             if others:
-                console.print(f"      [dim]also at: {escape(others)}[/dim]", highlight=False)
+                console.print(f"{_ALSO_AT}{escape(others)}[/dim]", highlight=False)
     if not verbose:
         _print_info_counts([d for d in items if d.severity == "info"], console)
 
 
 ALSO_AT_LISTED = 8  # places of a repeated diagnostic listed before "and N more"
+_ALSO_AT = "      [dim]also at: "
+
+
+def bare_places(lines: Iterable[str], files: Iterable[str]) -> bool:
+    """Whether ``print_diagnostics``, in ``lines``, lists other places of one of
+    ``files`` (as the model names them) by ``line:col`` alone, under the file's name
+    (``also at``): places a renumbering of ``path:line`` ones (``relocate``) does not
+    see."""
+    headers = {f"[bold]{escape(file)}[/bold]" for file in files}
+    under = False
+    for line in lines:
+        if line.startswith("[bold]") and line.endswith("[/bold]"):
+            under = line in headers
+        elif under and line.startswith(_ALSO_AT):
+            return True
+    return False
 
 
 def _places(places: list[Location], exclude: Diagnostic, limit: int | None) -> str:
