@@ -1,8 +1,10 @@
 """How the cost of a whole run grows with the workspace (issue #24): per project file, a
 cold run (empty cache), a no-change re-run, and two re-runs after one C++ source changed
 (a comment appended: the same model; a line added before its code: another), each in a
-fresh process, with the seconds of every stage, per translation unit and per package,
-and a check that the first three runs give the same JSON model.
+fresh process that does with one analysis what `check`, `report` and `extract -o` do
+(the process's seconds are the three commands' but for two start-ups), with the seconds
+of every stage, per translation unit and per package, and a check that the first three
+runs give the same document (`extract -o`'s: the model and its findings).
 
     .venv/bin/python bench/scale.py [--jobs N] [--touch FILE.cpp] PROJECT.yaml [...]
 
@@ -13,8 +15,9 @@ every command does, whose CPU is counted with the process's), scan (folders and 
 manifests), launch, build files (CMake / setup.py), C++ (libclang's parse apart from the
 rest, the walk of the syntax trees and the cache; the split is measured with ``--jobs
 1`` only: workers parse out of sight), Python (the other nodes, read while the C++
-workers parse: their seconds are within C++'s), models, graph, queries (the catalogue)
-and report (the HTML file). The changed file is ``--touch`` or the first C++ source of
+workers parse: their seconds are within C++'s), models, graph, queries (the catalogue),
+report (the HTML file) and document (`extract`'s JSON document, written, and its
+summary). The changed file is ``--touch`` or the first C++ source of
 the model; a comment is appended to it (touched: what the unit gives is the same, the
 kept run answers) and, in a fourth run, a comment line is put before its first line
 instead (edited: every call of the file moves: the kept run's model and findings
@@ -43,11 +46,12 @@ import checkout  # bench/checkout.py: says which haros_arch is measured
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STAGES = ("cache", "scan", "launch", "build files", "C++", "C++ parse", "Python", "models",
-          "graph", "queries", "report")
+          "graph", "queries", "report", "document")
 
 
 def child(project_path: str, cache: str, jobs: int, model_out: str) -> dict[str, Any]:
-    """One run in this process: seconds per stage, counts, and the model's digest."""
+    """One run in this process: seconds per stage, counts, and the digest of `extract`'s
+    document."""
     start = time.perf_counter()
     from haros_arch import pipeline  # noqa: F401 (its import is timed; ``_child`` runs it)
     from haros_arch.project import load
@@ -94,10 +98,15 @@ def _child(project: Any, cache: str, jobs: int, model_out: str, timings: dict[st
                                workspace_root(project, None), project),
                    os.path.join(folder, "report.html"))
     timings["report"] = time.perf_counter() - began
-    from haros_arch.model.serialise import model_to_data
-    text = json.dumps(model_to_data(model), sort_keys=True)
+    began = time.perf_counter()  # as `haros-arch extract -o FILE` does: its document
+    from haros_arch import runcache
+    from haros_arch.report.json import document_text
+    from haros_arch.report.text import summary_lines
+    text = document_text(model, project)
     with open(model_out, "w", encoding="utf-8") as handle:
         handle.write(text)
+    summary = runcache.summary(model, False, lambda: summary_lines(model, False))
+    timings["document"] = time.perf_counter() - began
     nodes = [n for p in model.packages for n in p.nodes]
     return {"timings": timings, "imports": imported, "parses": parse[1],
             "total": time.perf_counter() - start,
@@ -109,6 +118,7 @@ def _child(project: Any, cache: str, jobs: int, model_out: str, timings: dict[st
             "slowest_query": max(checked.seconds.items(), key=lambda kv: kv[1],
                                  default=("", 0.0)),
             "digest": hashlib.sha256(text.encode()).hexdigest()[:16],
+            "summary": len(summary),
             "first_cpp": next((s for n in nodes if n.language == "cpp" for s in n.sources),
                               None)}
 
@@ -135,7 +145,7 @@ def show(label: str, result: dict[str, Any], cold: dict[str, Any] | None) -> Non
              f"{result['cpu'] / cold['cpu']:.3f})" if cold else "")
     print(f"  {label:<10} process {result['wall']:7.2f} s wall, {result['cpu']:7.2f} s CPU "
           f"(with its workers){ratio}; imports "
-          f"{result['imports']:.2f} s; model {result['digest']}")
+          f"{result['imports']:.2f} s; document {result['digest']}")
     print("    " + ", ".join(f"{s} {t[s]:.2f}" for s in STAGES if s in t))
     if label == "cold":
         units, packages = max(1, result["cpp_units"]), max(1, result["packages"])
@@ -215,7 +225,7 @@ def main() -> None:
             show("edited", edited, cold)
             print(f"    touched / edited {path}")
             same = cold["digest"] == warm["digest"]
-            print(f"  same model cold / no change: {same}; cold / touched: "
+            print(f"  same document cold / no change: {same}; cold / touched: "
                   f"{cold['digest'] == touched['digest']} (a touched file's lines move "
                   "nothing: the comment is appended)")
 
