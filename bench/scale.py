@@ -107,18 +107,20 @@ def _child(project: Any, cache: str, jobs: int, model_out: str, timings: dict[st
         handle.write(text)
     summary = runcache.summary(model, False, lambda: summary_lines(model, False))
     timings["document"] = time.perf_counter() - began
+    total = time.perf_counter() - start
+    found = {"timings": timings, "imports": imported, "parses": parse[1], "total": total,
+             "findings": len(checked.findings),
+             "slowest_query": max(checked.seconds.items(), key=lambda kv: kv[1],
+                                  default=("", 0.0)),
+             "digest": hashlib.sha256(text.encode()).hexdigest()[:16],
+             "summary": len(summary)}
+    if isinstance(model, runcache.KeptModel):
+        return found  # the counts would decode a kept model, which no command above did
     nodes = [n for p in model.packages for n in p.nodes]
-    return {"timings": timings, "imports": imported, "parses": parse[1],
-            "total": time.perf_counter() - start,
-            "packages": len(model.packages), "nodes": len(nodes),
+    return {**found, "packages": len(model.packages), "nodes": len(nodes),
             "cpp_units": len({s for n in nodes if n.language == "cpp" for s in n.sources}),
             "instances": sum(len(c.nodes) for c in model.configurations),
             "links": sum(len(c.links) for c in model.configurations),
-            "findings": len(checked.findings),
-            "slowest_query": max(checked.seconds.items(), key=lambda kv: kv[1],
-                                 default=("", 0.0)),
-            "digest": hashlib.sha256(text.encode()).hexdigest()[:16],
-            "summary": len(summary),
             "first_cpp": next((s for n in nodes if n.language == "cpp" for s in n.sources),
                               None)}
 
