@@ -21,6 +21,7 @@ differs between the two texts and no map is given: the run is made again.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import json
 import os
@@ -34,6 +35,8 @@ Place = tuple[str, int, bool]  # file (absolute), line, whether quoted in a stri
 # indented one (``extract``'s document: ``json.dumps(..., indent=2)``)
 _LINE = re.compile(r'(?:(", "line": )|:)(\d+)')
 _LINE_INDENTED = re.compile(r'(?:(",\n *"line": )|:)(\d+)')
+# and in the report page's (``viz.html.json_for_script``: no blanks, escapes for HTML)
+_LINE_PAGE = re.compile(r'(?:(","line":)|:)(\d+)')
 Maps = dict[str, dict[int, int]]  # per file (absolute): old line -> new line
 
 
@@ -41,17 +44,21 @@ class Files:
     """The changed files (absolute paths), as a model's JSON text writes them: absolute,
     or relative to the workspace ``root`` when inside it (``Workspace.relpath``)."""
 
-    def __init__(self, paths: Iterable[str], root: str, indented: bool = False) -> None:
+    def __init__(self, paths: Iterable[str], root: str, indented: bool = False,
+                 page: bool = False) -> None:
         """``indented``: the texts are ``json.dumps(..., indent=N, ensure_ascii=False)``'s
-        (``extract``'s document), not compact with escapes for characters beyond ASCII."""
+        (``extract``'s document), not compact with escapes for characters beyond ASCII;
+        ``page``: the report page's data (``viz.html.json_for_script``)."""
         top = os.path.abspath(root).rstrip(os.sep) + os.sep
-        self.line = _LINE_INDENTED if indented else _LINE
+        self.line = _LINE_PAGE if page else _LINE_INDENTED if indented else _LINE
+        spell = _page_string if page else functools.partial(
+            json.dumps, ensure_ascii=not indented)
         self.spelt: dict[str, str] = {}
         for path in paths:
             full = os.path.abspath(path)
             spellings = [full] + ([full[len(top):]] if full.startswith(top) else [])
             for spelling in spellings:
-                self.spelt[json.dumps(spelling, ensure_ascii=not indented)[1:-1]] = full
+                self.spelt[spell(spelling)[1:-1]] = full
         # each spelling's shortest tail among them (a relative path is the end of the
         # absolute one): the text is searched for those, a plain search, far faster
         # than a regex of alternatives over a model's 50 MB
@@ -65,8 +72,20 @@ class Files:
         """The places in the changed files, the text between them (one piece more than
         places), and whether a changed file's name and a number appear otherwise (the
         end of a longer path, or a form not read here: left as they are)."""
+        pieces, found, other = self._places(text)
+        return pieces, [(self.spelt[spelling], line, quoted)
+                        for spelling, line, quoted in found], other
+
+    def locations(self, text: str) -> list[tuple[str, int]]:
+        """The file (as the text names it, a JSON string's content) and line of each
+        location (not a place quoted in a string) in the changed files."""
+        return [(spelling, line) for spelling, line, quoted in self._places(text)[1]
+                if not quoted]
+
+    def _places(self, text: str) -> tuple[list[str], list[tuple[str, int, bool]], bool]:
+        """``places``, each with the spelling of its file."""
         pieces: list[str] = []
-        found: list[Place] = []
+        found: list[tuple[str, int, bool]] = []
         other = False
         last = 0
         for start, end, spelling, located, line in self._matches(text):
@@ -76,7 +95,7 @@ class Files:
                 continue
             at = end + (len(located) if located else 1)
             pieces.append(text[last:at])
-            found.append((self.spelt[spelling], int(line), not located))
+            found.append((spelling, int(line), not located))
             last = at + len(line)
         pieces.append(text[last:])
         return pieces, found, other
@@ -148,3 +167,10 @@ class Files:
             out.append(str(moved))
             out.append(piece)
         return "".join(out)
+
+
+def _page_string(text: str) -> str:
+    """A string as the report page's data writes it."""
+    from .viz.html import json_for_script
+
+    return json_for_script(text)

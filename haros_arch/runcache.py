@@ -766,17 +766,8 @@ def _moved_document(model: Model, folder: str, inputs: str) -> str | None:
     kept = model._text if isinstance(model, KeptModel) else None
     if moved is None or kept is None:
         return None
-    backwards = {path: {new: old for old, new in lines.items()}
-                 for path, lines in moved.maps.items()}
-    before = moved.files.renumbered(inputs, backwards)
-    if before is None:
-        return None
-    try:
-        with open(os.path.join(folder, "runs",
-                               f"{moved.earlier}-document-{_digest(before)}.txt"),
-                  encoding="utf-8", newline="") as handle:
-            earlier = handle.read()
-    except (OSError, ValueError):
+    earlier = _earlier_text(folder, moved, "document", inputs)
+    if earlier is None:
         return None
     indented = Files(moved.changed, moved.root, indented=True)
     found = indented.renumbered(earlier, moved.maps)
@@ -787,6 +778,92 @@ def _moved_document(model: Model, folder: str, inputs: str) -> str | None:
     if held != sorted(places):
         return None
     return found
+
+
+def _earlier_text(folder: str, moved: _Moved, kind: str, inputs: str) -> str | None:
+    """The text the earlier run of a model ``relocated`` made kept as ``kind`` under
+    ``inputs`` before the move (``_kept_text``); None when it kept none."""
+    backwards = {path: {new: old for old, new in lines.items()}
+                 for path, lines in moved.maps.items()}
+    before = moved.files.renumbered(inputs, backwards)
+    if before is None:
+        return None
+    try:
+        with open(os.path.join(folder, "runs",
+                               f"{moved.earlier}-{kind}-{_digest(before)}.txt"),
+                  encoding="utf-8", newline="") as handle:
+            return handle.read()
+    except (OSError, ValueError):
+        return None
+
+
+PAGE_DATA = '<script type="application/json" id="haros-data">'
+_PAGE_SOURCES = ',"sources":'
+
+
+def _moved_page(model: Model, folder: str, inputs: str) -> str | None:
+    """The report page of a model ``relocated`` made, under ``inputs`` (its workspace
+    root and findings, as text): the earlier run's page under the same findings before
+    the move, its data renumbered and the lines it shows of the changed files read again
+    (``viz.sources``); None when there is none, when its data holds fewer places of the
+    changed files than the model and the findings (one written in a form not read as a
+    place), or when the lines shown come near the page's bound (which lines of which
+    files it keeps could change)."""
+    from .relocate import Files
+    from .viz.html import json_for_script
+    from .viz.sources import MAX_LINE_CHARS, MAX_TOTAL_CHARS, file_snippets, shown_cost
+
+    moved = _MOVED.get(model)
+    kept = model._text if isinstance(model, KeptModel) else None
+    if moved is None or kept is None:
+        return None
+    earlier = _earlier_text(folder, moved, "report", inputs)
+    if earlier is None:
+        return None
+    start = earlier.find(PAGE_DATA) + len(PAGE_DATA)
+    end = earlier.find("</script>", start)
+    data = earlier[start:end]
+    cut = data.rfind(_PAGE_SOURCES + "{")  # after the model and findings, before folders
+    try:
+        sources, after = json.JSONDecoder().raw_decode(data, cut + len(_PAGE_SOURCES))
+        root = json.loads(inputs)[0]
+    except (ValueError, IndexError, TypeError, KeyError):
+        return None
+    if start < len(PAGE_DATA) or end < 0 or cut < 0 or not isinstance(sources, dict):
+        return None
+    files = Files(moved.changed, moved.root, page=True)
+    head = files.renumbered(data[:cut], moved.maps)
+    if head is None or len(files.places(head)[1]) < (
+            len(moved.files.places(kept.decode("utf-8"))[1])
+            + len(moved.files.places(inputs)[1])):
+        return None
+
+    def cost(shown: Any) -> int:
+        return sum(shown_cost(line) for line in shown.values()) if isinstance(
+            shown, dict) else MAX_TOTAL_CHARS
+
+    # the earlier page showed every line it wanted (a line shown takes at most this)
+    if sum(cost(shown) for shown in sources.values()) > MAX_TOTAL_CHARS - (
+            4 * MAX_LINE_CHARS + 8):
+        return None
+    changed = {os.path.abspath(path) for path in moved.changed}
+    for name in [name for name in sources if os.path.abspath(
+            os.path.join(moved.root, name)) in changed]:
+        del sources[name]
+    wanted: dict[str, set[int]] = {}
+    for spelling, line in files.locations(head):
+        if line > 0:
+            wanted.setdefault(json.loads(f'"{spelling}"'), set()).add(line)
+    folders = [root] if isinstance(root, str) else list(root)
+    for name, lines in wanted.items():
+        shown, _left = file_snippets(folders, name, lines, MAX_TOTAL_CHARS)
+        if shown:
+            sources[name] = shown
+    if sum(cost(shown) for shown in sources.values()) > MAX_TOTAL_CHARS:
+        return None
+    return "".join((earlier[:start], head, _PAGE_SOURCES,
+                    json_for_script(dict(sorted(sources.items()))), data[after:],
+                    earlier[end:]))
 
 
 def _renumbered_parts(files: Files, text: str, parts: dict[str, Any],
@@ -887,7 +964,8 @@ def _kept_text(model: Model, kind: str, inputs: str, compute: Callable[[], str])
             return handle.read()
     except (OSError, ValueError):
         pass
-    moved = _moved_document(model, folder, inputs) if kind == "document" else None
+    moved = (_moved_document(model, folder, inputs) if kind == "document"
+             else _moved_page(model, folder, inputs) if kind == "report" else None)
     found = compute() if moved is None else moved
     _write_text(entry, found)
     _prune(folder)

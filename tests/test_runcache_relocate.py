@@ -270,3 +270,68 @@ def test_a_summary_that_lists_places_by_line_alone_is_not_renumbered() -> None:
     assert any("also at: 9:1" in line for line in printed.lines)
     assert bare_places(printed.lines, ["src/a.cpp"])
     assert not bare_places(printed.lines, ["src/b.cpp", "src/c.cpp"])
+
+
+def test_reports_page_after_lines_moved_is_the_last_one_renumbered(
+        tmp_path: Path, monkeypatch) -> None:
+    """The report page of a relocated run: the earlier run's page with its data
+    renumbered and the lines it shows of the changed file read again (one inserted among
+    them), not rendered again, the same text as a cold run's."""
+    from haros_arch.viz import command, html
+
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    spec = load(str(project))
+
+    def page(cached: bool) -> str:
+        model = analyse(spec, {}, Options(cache_dir=str(cache) if cached else None, jobs=1))
+        return command.report_page(model, command.project_findings(model, spec),
+                                   command.workspace_root(spec, None), spec)
+
+    first = page(True)
+    monitor = project.parent / "src" / "demo_robot" / "src" / "monitor.cpp"
+    lines = monitor.read_text().split("\n")
+    assert "subscribe" in lines[16]  # the call at line 17 (CPP_DYNAMIC_NAME)
+    monitor.write_text("\n".join(["// ünïcödé <&>", *lines[:16], "  // shown above it",
+                                  *lines[16:]]))
+    cold = page(False)
+    assert "// shown above it" in cold and "// shown above it" not in first
+    monkeypatch.setattr(html, "render_report", lambda *a, **k: (_ for _ in ()).throw(
+        AssertionError("the page was rendered again")))
+    again = page(True)
+    assert again == cold
+
+
+def test_a_page_whose_data_names_a_changed_file_otherwise_is_rendered(
+        tmp_path: Path, monkeypatch) -> None:
+    """A page is renumbered only when its data holds every place of the changed files
+    the model and findings hold: one it does not read as a place (here, the page's data
+    with the file's places taken out) makes the page rendered again."""
+    from haros_arch.viz import command, html
+
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    spec = load(str(project))
+
+    def page() -> str:
+        model = analyse(spec, {}, Options(cache_dir=str(cache), jobs=1))
+        return command.report_page(model, command.project_findings(model, spec),
+                                   command.workspace_root(spec, None), spec)
+
+    first = page()
+    assert '"file":"demo_robot/src/monitor.cpp","line":17' in first
+    pages = list(cache.glob("**/runs/*-report-*.txt"))
+    assert pages
+    for entry in pages:  # the places written otherwise
+        entry.write_text(entry.read_text().replace(
+            '"demo_robot/src/monitor.cpp","line":', '"demo_robot/src/monitor.cpp","at":'))
+    monitor = project.parent / "src" / "demo_robot" / "src" / "monitor.cpp"
+    monitor.write_text("// moved\n" + monitor.read_text())
+    rendered: list[bool] = []
+    made = html.render_report
+    monkeypatch.setattr(html, "render_report",
+                        lambda *a, **k: rendered.append(True) or made(*a, **k))
+    again = page()
+    assert rendered and '"file":"demo_robot/src/monitor.cpp","line":18' in again

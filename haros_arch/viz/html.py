@@ -57,7 +57,11 @@ def json_for_script(data: Any) -> str:
     text = json_text(data, ensure_ascii=False, separators=(",", ":"))
     # a lone surrogate (a name from a Python literal '\udc80') cannot be written as UTF-8;
     # in JSON text it only occurs inside strings, where \uXXXX gives it back to the page
-    text = _SURROGATE.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+    return script_escaped(_SURROGATE.sub(lambda m: f"\\u{ord(m.group()):04x}", text))
+
+
+def script_escaped(text: str) -> str:
+    """JSON text with the characters a ``<script>`` element must not hold as escapes."""
     for ch, escaped in _JSON_ESCAPES.items():  # one pass of C per character escaped
         text = text.replace(ch, escaped)  # (no escape holds another's character)
     return text

@@ -108,25 +108,39 @@ def collect_snippets(data: Any, workspace_root: str | Sequence[str]
     snippets: dict[str, dict[str, str]] = {}
     budget = MAX_TOTAL_CHARS
     for file in sorted(wanted):
-        path = in_folders(folders, file)
-        if path is None:
-            continue
-        text, _problems = read_text(path, Location(file=file), MAX_FILE_BYTES)
-        if text is None:
-            continue
-        lines = text.splitlines()
-        shown: dict[str, str] = {}
-        for number in sorted(_window(wanted[file], len(lines))):
-            text_line = lines[number - 1][:MAX_LINE_CHARS].expandtabs(4)
-            budget -= len(text_line) + 8
-            if budget < 0:
-                break
-            shown[str(number)] = text_line
+        shown, budget = file_snippets(folders, file, wanted[file], budget)
         if shown:
             snippets[file] = shown
         if budget < 0:
             break
     return snippets
+
+
+def file_snippets(folders: Sequence[str], file: str, lines: set[int], budget: int
+                  ) -> tuple[dict[str, str], int]:
+    """``{"line number": text}`` of ``file`` (as the model names it) around ``lines``, and
+    what is left of ``budget`` (characters): below 0 when it ran out, the lines after
+    then left out."""
+    path = in_folders(folders, file)
+    if path is None:
+        return {}, budget
+    text, _problems = read_text(path, Location(file=file), MAX_FILE_BYTES)
+    if text is None:
+        return {}, budget
+    numbered = text.splitlines()
+    shown: dict[str, str] = {}
+    for number in sorted(_window(lines, len(numbered))):
+        text_line = numbered[number - 1][:MAX_LINE_CHARS].expandtabs(4)
+        budget -= shown_cost(text_line)
+        if budget < 0:
+            break
+        shown[str(number)] = text_line
+    return shown, budget
+
+
+def shown_cost(text_line: str) -> int:
+    """What a line shown takes of the page's budget (``MAX_TOTAL_CHARS``)."""
+    return len(text_line) + 8
 
 
 def _window(lines: set[int], count: int) -> set[int]:
