@@ -2207,6 +2207,11 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
                 todo.setdefault(name, []).append(branch)
                 continue
             key = keys[name, branch] = (name, digest, branch.first, branch.last, distro, ros2)
+            if key not in _OTHER_READ and setup.other_folder is not None:
+                found_before = cache.load_other(setup.other_folder, cache.other_key(*key),
+                                                setup.generated)
+                if found_before is not None:  # an earlier run's parse read it
+                    _OTHER_READ[key] = found_before[0]
             if key not in _OTHER_READ:
                 todo.setdefault(name, []).append(branch)
             elif (kept := _OTHER_READ[key]) is not None:
@@ -2235,6 +2240,11 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
             finder.run()
             found = finder.calls
             finder.release()
+        # the headers that parse read, which an earlier run's branch must find unchanged
+        # (not the unit's own source: the branch is any unit's that includes the header)
+        headers = [header for header in _unit_headers(tu) if header != os.path.abspath(path)
+                   and (workspace.holds(header)
+                        or header.startswith(setup.generated + os.sep))]
     if len(_OTHER_READ) > MAX_OTHER_READ:
         _OTHER_READ.clear()
     for name, branches in todo.items():
@@ -2248,6 +2258,9 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
                 read.setdefault(name, []).append(branch)
             if (name, branch) in keys:
                 _OTHER_READ[keys[name, branch]] = made if taken else None
+                if setup.other_folder is not None:
+                    cache.store_other(setup.other_folder, cache.other_key(*keys[name, branch]),
+                                      headers, setup.generated, made if taken else None)
     return calls, read
 
 

@@ -268,12 +268,7 @@ def from_data(data: dict[str, Any]) -> tuple[
         list[tuple[str, str]], list[tuple[str, str]], list[str], list[tuple[str, str]],
         list[str], list[tuple[str, str]]]:
     """Raises ValueError / TypeError / KeyError for data that is not ours."""
-    calls = []
-    for item in data["calls"]:
-        item = dict(item)
-        item["location"] = Location(**item["location"])
-        item["conditions"] = _conditions(item["conditions"])
-        calls.append(PrimitiveCall(**item))
+    calls = calls_from_data(data["calls"])
     made_under = []
     for made, under in data.get("made_under", ()):
         if not isinstance(made, str):
@@ -304,6 +299,60 @@ def from_data(data: dict[str, Any]) -> tuple[
             _pairs(data, "constructions"), unseen, made_under, _pairs(data, "uses"), defines,
             handed, _pairs(data, "unseen_in"), _pairs(data, "passed"), hidden,
             _pairs(data, "registered"), loads_in, _pairs(data, "node_handed"))
+
+
+def calls_from_data(data: Iterable[Any]) -> list[PrimitiveCall]:
+    """Calls as ``to_data`` writes them (``plain``); ValueError / TypeError / KeyError for
+    data that is not ours."""
+    calls = []
+    for item in data:
+        item = dict(item)
+        item["location"] = Location(**item["location"])
+        item["conditions"] = _conditions(item["conditions"])
+        calls.append(PrimitiveCall(**item))
+    return calls
+
+
+def other_key(header: str, digest: str, first: int, last: int, distro: str,
+              ros2: bool) -> str:
+    """The key of what the parse with ``distro``'s version read in the branch of lines
+    ``first`` to ``last`` of ``header`` (content ``digest``), kept from run to run
+    (``extract.cpp._other_version``)."""
+    return hashlib.sha256(json.dumps([tool_version(), header, digest, first, last, distro,
+                                      ros2]).encode()).hexdigest()
+
+
+def load_other(folder: str, key: str, generated: str
+               ) -> tuple[tuple[PrimitiveCall, ...] | None] | None:
+    """What ``store_other`` kept under ``key`` (the branch's calls, or None when that
+    parse did not read it whole), in a 1-tuple; None when nothing is kept or a header
+    that parse read has changed since."""
+    try:
+        with open(os.path.join(folder, key + ".json"), encoding="utf-8") as handle:
+            data = json.load(handle)
+        for name, hashed in data["headers"]:
+            if content_digest(name.replace(GENERATED, generated, 1)) != hashed:
+                return None
+        calls = data["calls"]
+        return (None,) if calls is None else (tuple(calls_from_data(calls)),)
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return None
+
+
+def store_other(folder: str, key: str, headers: Iterable[str], generated: str,
+                calls: Sequence[PrimitiveCall] | None) -> None:
+    """Keep what a parse with another version read in a branch (``load_other``), with
+    the digests of the headers it read."""
+    listed = []
+    for name in sorted(set(headers)):
+        hashed = content_digest(name)
+        if hashed is None:
+            return
+        listed.append([name.replace(generated, GENERATED, 1), hashed])
+    text = json.dumps({"headers": listed, "calls": None if calls is None
+                       else [plain(c) for c in calls]})
+    with contextlib.suppress(OSError):  # a cache not written is no cache, no error
+        write_whole(os.path.join(folder, key + ".json"), text)
 
 
 def conditions_text(conditions: Iterable[Condition]) -> str:

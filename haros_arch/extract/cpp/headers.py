@@ -468,6 +468,9 @@ class IncludeSetup:
         self._released = False  # the kept folder let go of between two uses (``release``)
         kept = self._kept(workspace.root, kept_in) if kept_in else None
         self.generated = kept or tempfile.mkdtemp(prefix="haros-arch-cpp-")
+        # where what a parse with another release's version read in a header's branch is
+        # kept from run to run (``extract.cpp._other_version``), with the cache folder
+        self.other_folder = os.path.join(kept_in, "cpp-other") if kept and kept_in else None
         self.user_dirs = [os.path.abspath(d) for d in include_dirs]
         # first the folders the interpreted CMake files give the targets that compile
         # the sources: where a package keeps variants of the same headers (foxglove_bridge:
