@@ -781,7 +781,9 @@ CATALOGUE: dict[str, Entry] = {
         "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
         "the node complete, as does an unqualified call of a standard function clang "
         "could not find through its arguments' types (make_pair(x->name(), x) with x of "
-        "a header the parse lacks) outside the statement of a ROS call."),
+        "a header the parse lacks) outside the statement of a ROS call, or a reinterpret_cast "
+        "clang refuses there (a value of code the parse does not read cast to a pointer: "
+        "reinterpret_cast<QGLMap*>(centralWidget()) with Qt's header a stand-in)."),
     "CPP_PLUGINS_LOADED": Entry(
         "info", "{text}: loads plugin classes through {loader}",
         "The code creates instances of plugin classes by name (pluginlib's "
