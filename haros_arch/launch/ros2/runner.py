@@ -1464,10 +1464,7 @@ ROS2CLI_VERBS = {
 
 def make_param(node: str, key: str, value: Any, conditions: tuple[Condition, ...],
                location: Location) -> ParamDecl:
-    # a key written with a leading slash (``/detector/topic``, code ported from ROS 1)
-    # is the name rcl and rclpy keep; the node's own read of it is named under the node
-    # the same way (``graph.build._node_scoped``), so it is joined with one slash
-    return ParamDecl(f"{node}/{key.lstrip('/')}", value, naming.param_type(value), conditions,
+    return ParamDecl(f"{node}/{key}", value, naming.param_type(value), conditions,
                      location, node=node, key=key)
 
 
