@@ -60,7 +60,7 @@ LAUNCH = """
     """
 
 
-def _findings(write_tree) -> tuple[list[tuple[str, str]], set[tuple[str, str]]]:
+def _config(write_tree):
     root = write_tree({
         "src/det/package.xml": package_xml("det", build_type="ament_python"),
         "src/det/setup.py": SETUP,
@@ -72,7 +72,11 @@ def _findings(write_tree) -> tuple[list[tuple[str, str]], set[tuple[str, str]]]:
     })
     model = analyse(load(str(root / "project.yaml")),
                     {"PATH": os.environ.get("PATH", "")}, Options(cache_dir=None))
-    config = model.configuration("c")
+    return model.configuration("c")
+
+
+def _findings(write_tree) -> tuple[list[tuple[str, str]], set[tuple[str, str]]]:
+    config = _config(write_tree)
     params = sorted((p.rosname.full, "set") for p in config.parameters if p.set_by_launch)
     links = {(link.kind, link.rosname.full) for link in config.links}
     return params, links
@@ -84,6 +88,12 @@ def test_a_leading_slash_parameter_set_is_the_one_read(write_tree) -> None:
     assert ("read", "/cone_detector_node//detector/input_topic") in links
     # the value the launch file gives names the topic subscribed to
     assert ("subscribe", "/lidar/points") in links
+
+
+def test_a_leading_slash_parameter_is_no_global_name(write_tree) -> None:
+    # (guard) a ROS 2 parameter is its node's alone, whatever its first character
+    reads = [link.rosname for link in _config(write_tree).links if link.kind == "read"]
+    assert reads and not [name for name in reads if name.is_global]
 
 
 def test_a_parameter_no_node_reads_stays_unread(write_tree) -> None:

@@ -1188,8 +1188,8 @@ def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[s
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         remaps = {}
         exact = _slashed_parameter(call.name, instance)
-        if exact is not None:
-            return RosName(call.name, exact, namespace_of(exact))
+        if exact is not None:  # the node's own (``~/...`` as given), not a global name
+            return RosName(given, exact, namespace_of(exact))
     namespace = call.handle_namespace
     if namespace and UNKNOWN_MARK in namespace and call.name.startswith(namespace + "/") and (
         given != call.name and given.endswith(call.name[len(namespace):])
