@@ -429,9 +429,10 @@ CATALOGUE: dict[str, Entry] = {
         "range_world.launch gave gzserver the world $(find gazebo_plugins)/test/"
         "test_worlds/gazebo_ros_range.W()orld; mycobot_ros2's detect_marker.launch.py "
         "gave rviz2 -d its package's config/mypal_260.rviz). A path with a part not "
-        "known statically, a file the build makes, or (ROS 1) a file another node of the "
-        "launch writes (xacro -o) is not judged; a search path, paths joined by ':', is "
-        "judged path by path."),
+        "known statically, a file the build makes, (ROS 1) a file another node of the "
+        "launch writes (xacro -o), or (ROS 2) one the launch file writes as it runs "
+        "(open(path, 'w'), xacro.open_output) is not judged; a search path, paths joined "
+        "by ':', is judged path by path."),
     "LAUNCH_PARAM_PATH_MISSING": Entry(
         "warning", "parameter {name} is given the path {path}, which is not there",
         "A ROS 1 <param> sets a text value that is an absolute path into a package of the "
@@ -781,7 +782,9 @@ CATALOGUE: dict[str, Entry] = {
         "is 'partial'. Errors in code that calls no ROS API cannot hide a call and leave "
         "the node complete, as does an unqualified call of a standard function clang "
         "could not find through its arguments' types (make_pair(x->name(), x) with x of "
-        "a header the parse lacks) outside the statement of a ROS call."),
+        "a header the parse lacks) outside the statement of a ROS call, or a reinterpret_cast "
+        "clang refuses there (a value of code the parse does not read cast to a pointer: "
+        "reinterpret_cast<QGLMap*>(centralWidget()) with Qt's header a stand-in)."),
     "CPP_PLUGINS_LOADED": Entry(
         "info", "{text}: loads plugin classes through {loader}",
         "The code creates instances of plugin classes by name (pluginlib's "

@@ -1187,6 +1187,9 @@ def resolved_name(instance: NodeInstance, call: PrimitiveCall, remaps: Mapping[s
     given = _given_name(call, instance, resources)
     if instance.ros_version == 2 and RESOURCE_OF_KIND[call.kind] is Parameter:
         remaps = {}
+        exact = _slashed_parameter(call.name, instance)
+        if exact is not None:  # the node's own (``~/...`` as given), not a global name
+            return RosName(given, exact, namespace_of(exact))
     namespace = call.handle_namespace
     if namespace and UNKNOWN_MARK in namespace and call.name.startswith(namespace + "/") and (
         given != call.name and given.endswith(call.name[len(namespace):])
@@ -1448,9 +1451,24 @@ def _parameter_value(written: str, default: str | None, instance: NodeInstance,
     return _argument_values(instance).get(_parameter_name(written, instance), default)
 
 
+def _slashed_parameter(written: str, instance: NodeInstance) -> str | None:
+    """The full name of a ROS 2 node's parameter whose name the code writes with a
+    leading slash (``declare_parameter("/detector/topic")``, code ported from ROS 1), or
+    None for another name. rcl and rclpy keep the name as written: a parameter apart from
+    ``detector/topic``, which a launch file's ``{"/detector/topic": v}`` sets
+    (``launch.ros2.runner.make_param`` joins node and key with a slash: two), and
+    ``{"detector/topic": v}`` does not (moveit2_tutorials' ``/child_frame_id``)."""
+    if instance.ros_version != 2 or not written.startswith("/") or UNKNOWN_MARK in written:
+        return None
+    return f"{instance.name}/{written}"
+
+
 def _parameter_name(written: str, instance: NodeInstance) -> str:
     """The full name of the instance's parameter ``written`` (as the code names it: a
     list parameter a loop goes over, too)."""
+    exact = _slashed_parameter(written, instance)
+    if exact is not None:
+        return exact
     source = _node_scoped(written) if instance.ros_version == 2 else written
     return RosName.make(source, instance.namespace, instance.name).full
 
@@ -1499,7 +1517,8 @@ def _argument_values(instance: NodeInstance) -> dict[str, str]:
             assert write.program_arg is not None
             if UNKNOWN_MARK not in write.name:
                 name = _node_scoped(write.name) if instance.ros_version == 2 else write.name
-                full = RosName.make(name, instance.namespace, instance.name).full
+                full = _slashed_parameter(write.name, instance) or RosName.make(
+                    name, instance.namespace, instance.name).full
                 positions.setdefault(full, set()).add(write.program_arg)
         # one argument per parameter: writes from different ones depend on conditions
         # over the arguments not read here (throttle's "messages" against "bytes")

@@ -317,8 +317,16 @@ class Frontend:
                     "emulate_tty", "cwd", "sigterm_timeout", "sigkill_timeout", "shell",
                     "respawn_max_retries", "node-name", "on_exit"):
             ent.read.add(key)
+        executable = self.text(ent, "exec", True)
+        if executable is None:
+            # launch_ros' Node.parse asks for exec= and ros2 launch stops: the element
+            # is skipped (as LAUNCH_MISSING_ATTRIBUTE says), no node of an unknown type;
+            # the attributes launch refuses (ROS 1's type=) are still said
+            ent.read.update(("pkg", "name", "namespace", "args", "ros_args"))
+            self.leftovers(ent, action=True)
+            return None
         action = e.NodeAction(
-            self.text(ent, "pkg", True), self.text(ent, "exec", True),
+            self.text(ent, "pkg", True), executable,
             self.text(ent, "name", container), self.text(ent, "namespace"),
             self.params(ent.children), self.remaps(ent.children),
             words("args"), words("ros_args"), container=container, split=True)

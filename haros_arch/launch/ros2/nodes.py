@@ -121,8 +121,13 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         or scope.namespace is not None))
     runner.model.nodes[-1].rewritten_files = _rewritten(runner, ev, action.arguments,
                                                         scope, where)
-    for path in missing_argument_paths(plain, runner.workspace,
-                                       lambda p: installed_source(runner, p)):
+    # a file the launch file writes as it runs (``LaunchModel.environment_values``, the
+    # paths ``open(path, 'w')`` and the other writers are handed) is not judged
+    made = {os.path.normpath(v) for v in runner.model.environment_values
+            if v.startswith(os.sep)}
+    for path in missing_argument_paths(
+            plain, runner.workspace,
+            lambda p: None if p in made else installed_source(runner, p)):
         runner.report("LAUNCH_NODE_ARG_PATH_MISSING", where,
                       path=runner.workspace.relpath(path), name=full)
     if not action.split:  # one word per argument: a Command's output is one of them

@@ -1513,6 +1513,12 @@ class Interpreter(Expressions):
                 # ``os.path.expanduser`` of a path read from a file outside the workspace
                 return _said_through(handler(self, args, kwargs, node), f"{short}()",
                                      [*args, *kwargs.values()])
+            at = _WRITERS.get(name)
+            if at is not None and len(args) > at and isinstance(args[at], str) \
+                    and args[at].startswith("/"):
+                # a file the launch makes as it runs (``open(path, 'w')`` alike): the
+                # processed URDF QUTMS_Driverless's launch file hands a node
+                self.made_paths.append(args[at])
             return self.unsupported(node, f"call to {name} is not interpreted (never run)")
         if isinstance(func, _Bound):
             self.charge_arguments([func.owner, *args, *kwargs.values()])
@@ -1959,6 +1965,10 @@ _EXCEPTIONS: dict[str, type] = {
 
 # what ends the Python process: SystemExit (os._exit: none a handler may catch)
 _EXITS = frozenset(("exit", "quit", "sys.exit", "os._exit"))
+# the calls (not run) that write a file, by the position of its path among their
+# arguments: xacro's own opener for its output, an empty file, a copy's target
+_WRITERS = {"xacro.open_output": 0, "os.mknod": 0, "shutil.copy": 1, "shutil.copy2": 1,
+            "shutil.copyfile": 1}
 # the turns a ``while`` loop whose test stays true may run before it is left, said
 MAX_WHILE_TURNS = 10_000
 

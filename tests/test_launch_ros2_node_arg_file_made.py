@@ -1,0 +1,54 @@
+"""A file the launch file itself writes before it starts the node it hands the file to
+is no missing file: QUT-Motorsport's QUTMS_Driverless, vehicle_urdf/launch/
+robot_description.launch.py:26-49, writes the processed URDF into its share folder
+with ``xacro.open_output(urdf_path)`` (after ``os.mknod``) and gives joint_state_publisher
+``arguments=[urdf_path]``: LAUNCH_NODE_ARG_PATH_MISSING said it was not there. Those
+writers, like ``open(path, 'w')``, are not run here; the paths they are handed are files
+the launch makes as it runs, which the check leaves alone. A path no writer is handed is
+still judged."""
+
+from __future__ import annotations
+
+from test_launch_ros2 import run
+
+LAUNCH = """
+    import os
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch_ros.actions import Node
+    import xacro
+
+    def generate_launch_description():
+        made = os.path.join(get_package_share_directory('pkg'), 'urdf', 'processed.urdf')
+        doc = xacro.process_file(os.path.join(get_package_share_directory('pkg'),
+                                              'urdf', 'car.xacro'))
+        out = xacro.open_output(made)
+        out.write(doc.toprettyxml(indent='  '))
+        other = os.path.join(get_package_share_directory('pkg'), 'urdf', 'gone.urdf')
+        return LaunchDescription([
+            Node(package='joint_state_publisher', executable='joint_state_publisher',
+                 arguments=[made]),
+            Node(package='pkg', executable='viewer', name='viewer', arguments=[other]),
+        ])
+    """
+
+FILES = {"src/pkg/urdf/car.xacro": "<robot name='car'/>\n",
+         "src/pkg/CMakeLists.txt": "cmake_minimum_required(VERSION 3.8)\nproject(pkg)\n"
+         "find_package(ament_cmake REQUIRED)\n"
+         "install(DIRECTORY launch urdf DESTINATION share/${PROJECT_NAME})\n"
+         "ament_package()\n"}
+
+
+def _missing(write_tree) -> list[str]:
+    model, _ = run(write_tree, "car.launch.py", LAUNCH, extra=FILES)
+    return sorted(d.message for d in model.diagnostics
+                  if d.code == "LAUNCH_NODE_ARG_PATH_MISSING")
+
+
+def test_a_file_the_launch_file_writes_is_not_missing(write_tree) -> None:
+    assert not [m for m in _missing(write_tree) if "processed.urdf" in m]
+
+
+def test_a_file_nothing_writes_is_still_missing(write_tree) -> None:
+    # (guard) the other path, which no writer is handed
+    assert [m for m in _missing(write_tree) if "gone.urdf" in m]
