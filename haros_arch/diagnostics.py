@@ -406,7 +406,11 @@ CATALOGUE: dict[str, Entry] = {
         "was not seen (an include not read, a function not interpreted), when the name "
         "is written anywhere else in the launch files performed (an action the reader "
         "does not interpret may read it), nor for an argument a library's launch helper "
-        "declares (moveit_configs_utils'), which the file calling it does not write."),
+        "declares (moveit_configs_utils'), which the file calling it does not write. "
+        "A ROS 1 <arg> is its file's own: said when nothing else in that file names it "
+        "($(arg), $(eval), an include's value; comments aside, conditions or not), not "
+        "for a file with <include pass_all_args> or an arg() of a name made in $(eval), "
+        "nor for an installed package's file."),
     "LAUNCH_ARG_MISSPELT": Entry(
         "warning", "launch argument {name} is declared but nothing in the launch reads it, "
         "and a configuration of a near name is read where nothing has set it: {near}",
