@@ -1280,7 +1280,11 @@ CATALOGUE: dict[str, Entry] = {
         "a tf2_ros::TransformListener(buffer) or tf::TransformListener() given no "
         "handle: it subscribes /tf and /tf_static on a ros::NodeHandle() it makes (a "
         "remap of /tf on the nodelet does not reach it; given getNodeHandle(), the "
-        "listener is the nodelet's). The graph links those calls so (still as the "
+        "listener is the nodelet's). So do roscpp's functions that take no handle, "
+        "ros::param::get / has / param / set / del / search and ros::service::call / "
+        "createClient, "
+        "for a name not global: ros::param::has(\"~x\") asks the manager's ~x. "
+        "The graph links those calls so (still as the "
         "nodelet's). Usually a bug of the nodelet (laser_filters' "
         "scan_to_cloud_filter_chain, fixed upstream by passing getNodeHandle()): use "
         "the nodelet's handles."),
