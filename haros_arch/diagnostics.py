@@ -406,7 +406,11 @@ CATALOGUE: dict[str, Entry] = {
         "was not seen (an include not read, a function not interpreted), when the name "
         "is written anywhere else in the launch files performed (an action the reader "
         "does not interpret may read it), nor for an argument a library's launch helper "
-        "declares (moveit_configs_utils'), which the file calling it does not write."),
+        "declares (moveit_configs_utils'), which the file calling it does not write. "
+        "A ROS 1 <arg> is its file's own: said when nothing else in that file names it "
+        "($(arg), $(eval), an include's value; comments aside, conditions or not), not "
+        "for a file with <include pass_all_args> or an arg() of a name made in $(eval), "
+        "nor for an installed package's file."),
     "LAUNCH_ARG_MISSPELT": Entry(
         "warning", "launch argument {name} is declared but nothing in the launch reads it, "
         "and a configuration of a near name is read where nothing has set it: {near}",
@@ -1279,7 +1283,11 @@ CATALOGUE: dict[str, Entry] = {
         "a tf2_ros::TransformListener(buffer) or tf::TransformListener() given no "
         "handle: it subscribes /tf and /tf_static on a ros::NodeHandle() it makes (a "
         "remap of /tf on the nodelet does not reach it; given getNodeHandle(), the "
-        "listener is the nodelet's). The graph links those calls so (still as the "
+        "listener is the nodelet's). So do roscpp's functions that take no handle, "
+        "ros::param::get / has / param / set / del / search and ros::service::call / "
+        "createClient, "
+        "for a name not global: ros::param::has(\"~x\") asks the manager's ~x. "
+        "The graph links those calls so (still as the "
         "nodelet's). Usually a bug of the nodelet (laser_filters' "
         "scan_to_cloud_filter_chain, fixed upstream by passing getNodeHandle()): use "
         "the nodelet's handles."),

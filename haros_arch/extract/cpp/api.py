@@ -180,6 +180,12 @@ class RosFunction:
     # object subscribes on a ``ros::NodeHandle()`` it makes, roscpp's of the process (a
     # nodelet's manager's: ``handle_origin`` ``process``); given one, on that handle
     own_node: bool = False
+    # ROS 1: a roscpp free function that takes no handle (ros::param::get / has / ...,
+    # ros::service::call) resolves its name as ros::this_node does, the process's node:
+    # in a nodelet, its manager's (``PrimitiveCall.handle_origin`` ``process``), so a
+    # nodelet's ``ros::param::has("~database")`` asks the manager's private namespace
+    # (jsk_robot 6f921c679's LightweightLogger), not the nodelet's
+    process_names: bool = False
     # the name when the call gives none (no argument at ``name_arg``): sound_play's
     # ``SoundClient()`` advertises ``robotsound`` on a ``ros::NodeHandle()`` of its own
     # (the node's namespace), ``SoundClient(nh, topic)`` the topic given on ``nh``
@@ -206,9 +212,9 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
         "server", type_from=("service-callback", "template"), callback_arg=1),
     (NODE_HANDLE, "serviceClient"): RosFunction("client", type_from=("template",)),
     ("ros::service", "createClient"): RosFunction(
-        "client", type_from=("template",), on_handle=False),
+        "client", type_from=("template",), on_handle=False, process_names=True),
     ("ros::service", "call"): RosFunction(
-        "client", type_from=("arg",), type_arg=1, on_handle=False),
+        "client", type_from=("arg",), type_arg=1, on_handle=False, process_names=True),
     # getROSArg(argc, argv, "robot"): the value of the program's ``robot:=...`` word
     ("ros", "getROSArg"): RosFunction("read", name_arg=2, on_handle=False,
                                       fixed_type="str", name_required=True, argument=True),
@@ -229,17 +235,22 @@ ROSCPP: dict[tuple[str, str], RosFunction] = {
     (NODE_HANDLE, "deleteParam"): RosFunction("write", deletes=True),
     # parameters through ros::param
     ("ros::param", "get"): RosFunction(
-        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
+        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
+        process_names=True),
     ("ros::param", "getCached"): RosFunction(
-        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False),
+        "read", type_from=("value",), type_arg=1, out_arg=1, on_handle=False,
+        process_names=True),
     ("ros::param", "param"): RosFunction(
         "read", type_from=("template-value", "value"), type_arg=1, out_arg=1, default_arg=2,
-        on_handle=False),
-    ("ros::param", "has"): RosFunction("read", on_handle=False, presence=True),
+        on_handle=False, process_names=True),
+    ("ros::param", "has"): RosFunction("read", on_handle=False, presence=True,
+                                       process_names=True),
     ("ros::param", "search"): RosFunction("read", on_handle=False, searched=True,
-                                          search_from_node=True),
-    ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1, on_handle=False),
-    ("ros::param", "del"): RosFunction("write", on_handle=False, deletes=True),
+                                          search_from_node=True, process_names=True),
+    ("ros::param", "set"): RosFunction("write", type_from=("value",), type_arg=1,
+                                       on_handle=False, process_names=True),
+    ("ros::param", "del"): RosFunction("write", on_handle=False, deletes=True,
+                                       process_names=True),
 }
 
 _IMAGE = "sensor_msgs/Image"

@@ -2684,6 +2684,8 @@ class CallFinder:
                     unknown_parts = list(self.namespaces.unknown_parts)
                 else:
                     namespace = render(scope.string(search_from))
+            elif spec.process_names and not self.ros2 and not in_main(scope):
+                origin = PROCESS_HANDLE  # this_node's names: a nodelet's manager's
         function = callback(args, None if spec.callback_arg is None
                             else spec.callback_arg + shift)
         ctype = self.types.of_call(spec, call, args, function, cls, scope)
@@ -2842,7 +2844,8 @@ class CallFinder:
                 handle_namespace=handle_namespace,
                 root_handle=root and not self.ros2 and not _private(written).startswith(
                     ("/", "~")),
-                handle_origin=PROCESS_HANDLE if own_node else None if self.ros2 else origin,
+                handle_origin=PROCESS_HANDLE if own_node else None if self.ros2 else (
+                    None if spec.process_names and name.startswith("/") else origin),
                 deletes=spec.deletes, node_name=owner, transport=transport, **chosen,
                 made_in=made_in, program_arg=program_arg,
                 name_arg=written.program_arg if isinstance(written, ArgumentName) and (

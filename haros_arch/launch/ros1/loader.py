@@ -122,6 +122,9 @@ class Ros1Loader:
         # (``check_argument_paths``)
         self.missing_args: list[tuple[Location, str, str]] = []
         self.written_args: set[str] = set()
+        # the files whose declared arguments were looked at (``unused_arguments``): a
+        # file read twice is said once
+        self.args_looked_at: set[str] = set()
         self.tags: dict[str, Callable[[Element, Scope], None]] = {
             "node": self.tag_node, "test": self.tag_node, "param": self.tag_param,
             "remap": self.tag_remap, "arg": self.tag_arg, "group": self.tag_group,
@@ -993,7 +996,52 @@ class Ros1Loader:
         scope.path = path
         scope.stack = (*scope.stack, key)
         self.children(root, scope)
+        if not modelled:
+            self.unused_arguments(path, root)
         return True
+
+    def unused_arguments(self, path: str, root: Element) -> None:
+        """Each ``<arg>`` a workspace file declares whose name nothing else in the file
+        writes, said where it is declared: LAUNCH_ARG_UNUSED (an info). roslaunch's
+        arguments are the file's own (an include gets only those passed to it), so one
+        that no ``$(arg)``, ``$(eval)`` or include value of the file names changes
+        nothing: Autoware's baumer.launch declared ``brightness`` and never gave it to the
+        camera node, which read its own default. Read from the text as written, every
+        element's attributes and text but comments, whatever conditions hold, so an
+        argument used only where a condition skips is used; nothing is said for a file
+        with an ``<include pass_all_args>`` (its arguments go on to the included file)
+        or an ``arg()`` of a name made in ``$(eval)``."""
+        if path in self.args_looked_at or self.workspace.package_of(path) is None or \
+                is_upstream(self.workspace.location(path).file or ""):
+            return  # an installed package's file is not the user's to mend
+        self.args_looked_at.add(path)
+        declared: list[tuple[str, Element]] = []
+        written: list[str] = []
+        for element in root.iter():
+            if not isinstance(element.tag, str):
+                continue  # a comment or processing instruction
+            parent = element.getparent()
+            own = element.tag == "arg" and (parent is None or parent.tag != "include")
+            if element.tag == "include" and "pass_all_args" in element.attrib and \
+                    element.get("pass_all_args", "").strip().lower() != "false":
+                return
+            for attribute, value in element.attrib.items():
+                if own and attribute == "name":
+                    declared.append((str(value), element))
+                elif not (element.tag == "arg" and attribute == "name"):
+                    written.append(str(value))
+            if element.text:
+                written.append(element.text)
+        if any(re.search(r"\barg\(\s*[^\s'\"]", text) for text in written):
+            return  # $(eval arg(name)) of a name made at run time: any may be read
+        said: set[str] = set()
+        for name, element in declared:
+            if name in said or not name or "$(" in name:
+                continue
+            said.add(name)
+            used = re.compile(rf"(?<!\w){re.escape(name)}(?!\w)")
+            if not any(used.search(text) for text in written):
+                self.report("LAUNCH_ARG_UNUSED", path, element, name=name)
 
 
 def argument_params(args: str) -> list[tuple[str, Any]]:
