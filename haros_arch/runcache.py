@@ -797,7 +797,6 @@ def _earlier_text(folder: str, moved: _Moved, kind: str, inputs: str) -> str | N
         return None
 
 
-PAGE_DATA = '<script type="application/json" id="haros-data">'
 _PAGE_SOURCES = ',"sources":'
 
 
@@ -810,7 +809,7 @@ def _moved_page(model: Model, folder: str, inputs: str) -> str | None:
     place), or when the lines shown come near the page's bound (which lines of which
     files it keeps could change)."""
     from .relocate import Files
-    from .viz.html import json_for_script
+    from .viz.html import PAGE_DATA, json_for_script
     from .viz.sources import MAX_LINE_CHARS, MAX_TOTAL_CHARS, file_snippets, shown_cost
 
     moved = _MOVED.get(model)

@@ -272,34 +272,37 @@ def test_a_summary_that_lists_places_by_line_alone_is_not_renumbered() -> None:
     assert not bare_places(printed.lines, ["src/b.cpp", "src/c.cpp"])
 
 
+def _page(spec, cache: Path | None) -> str:
+    """The report page of a run (``haros-arch report``'s, read back where it is kept)."""
+    from haros_arch.viz import command
+
+    model = analyse(spec, {}, Options(cache_dir=None if cache is None else str(cache), jobs=1))
+    return command.report_page(model, command.project_findings(model, spec),
+                               command.workspace_root(spec, None), spec)
+
+
 def test_reports_page_after_lines_moved_is_the_last_one_renumbered(
         tmp_path: Path, monkeypatch) -> None:
     """The report page of a relocated run: the earlier run's page with its data
     renumbered and the lines it shows of the changed file read again (one inserted among
     them), not rendered again, the same text as a cold run's."""
-    from haros_arch.viz import command, html
+    from haros_arch.viz import html
 
     project = _examples(tmp_path)
     monkeypatch.chdir(tmp_path)
     cache = tmp_path / "cache"
     spec = load(str(project))
-
-    def page(cached: bool) -> str:
-        model = analyse(spec, {}, Options(cache_dir=str(cache) if cached else None, jobs=1))
-        return command.report_page(model, command.project_findings(model, spec),
-                                   command.workspace_root(spec, None), spec)
-
-    first = page(True)
+    first = _page(spec, cache)
     monitor = project.parent / "src" / "demo_robot" / "src" / "monitor.cpp"
     lines = monitor.read_text().split("\n")
     assert "subscribe" in lines[16]  # the call at line 17 (CPP_DYNAMIC_NAME)
     monitor.write_text("\n".join(["// ünïcödé <&>", *lines[:16], "  // shown above it",
                                   *lines[16:]]))
-    cold = page(False)
+    cold = _page(spec, None)
     assert "// shown above it" in cold and "// shown above it" not in first
     monkeypatch.setattr(html, "render_report", lambda *a, **k: (_ for _ in ()).throw(
         AssertionError("the page was rendered again")))
-    again = page(True)
+    again = _page(spec, cache)
     assert again == cold
 
 
@@ -308,19 +311,13 @@ def test_a_page_whose_data_names_a_changed_file_otherwise_is_rendered(
     """A page is renumbered only when its data holds every place of the changed files
     the model and findings hold: one it does not read as a place (here, the page's data
     with the file's places taken out) makes the page rendered again."""
-    from haros_arch.viz import command, html
+    from haros_arch.viz import html
 
     project = _examples(tmp_path)
     monkeypatch.chdir(tmp_path)
     cache = tmp_path / "cache"
     spec = load(str(project))
-
-    def page() -> str:
-        model = analyse(spec, {}, Options(cache_dir=str(cache), jobs=1))
-        return command.report_page(model, command.project_findings(model, spec),
-                                   command.workspace_root(spec, None), spec)
-
-    first = page()
+    first = _page(spec, cache)
     assert '"file":"demo_robot/src/monitor.cpp","line":17' in first
     pages = list(cache.glob("**/runs/*-report-*.txt"))
     assert pages
@@ -333,5 +330,5 @@ def test_a_page_whose_data_names_a_changed_file_otherwise_is_rendered(
     made = html.render_report
     monkeypatch.setattr(html, "render_report",
                         lambda *a, **k: rendered.append(True) or made(*a, **k))
-    again = page()
+    again = _page(spec, cache)
     assert rendered and '"file":"demo_robot/src/monitor.cpp","line":18' in again

@@ -50,6 +50,7 @@ def find_d3() -> Path:
 
 
 _SURROGATE = re.compile("[\ud800-\udfff]")
+PAGE_DATA = '<script type="application/json" id="haros-data">'  # the page's data follows
 
 
 def json_for_script(data: Any) -> str:
@@ -93,7 +94,7 @@ def render_report(model_data: dict[str, Any], findings: Iterable[Any],
         f'<meta http-equiv="Content-Security-Policy" content="{html.escape(csp, quote=False)}">\n',
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n',
         f"<title>{title}</title>\n<style>\n{style}\n</style>\n</head>\n<body>\n",
-        '<script type="application/json" id="haros-data">',
+        PAGE_DATA,
         json_for_script(payload),
         "</script>\n",
         *(f"<script>{s}</script>\n" for s in scripts),
