@@ -512,7 +512,8 @@ CATALOGUE: dict[str, Entry] = {
         "file are one name; those of two includes of it are two). A name with unknown "
         "parts collides only where they are the same arguments or environment variables "
         "not known here: /dvrk/$(arg master)/jsp and /dvrk/$(arg slave)/jsp are one name "
-        "only when both are given one value, which is not said."),
+        "only when both are given one value, which is not said. When both start at one "
+        "place (one file included twice), the message names the include of each."),
     "LAUNCH_ARG_UNDEFINED": Entry(
         "error", "argument {name} is not defined here",
         "$(arg) names an argument that is neither declared in this scope nor passed "
