@@ -116,6 +116,10 @@ class Ros1Loader:
         self.optenv_defaults: dict[str, str] = {}
         # the first <param> tag of each name per parent element (LAUNCH_PARAM_SET_TWICE)
         self.param_tags: dict[tuple[int, str, str, tuple[str, ...]], Element] = {}
+        # each <param> tag outside a node by parent element, full name and conditions,
+        # for a later <rosparam> of that element that loads the name again
+        # (LAUNCH_PARAM_LOADED_OVER)
+        self.shared_param_tags: dict[tuple[int, str, tuple[str, ...]], Element] = {}
         # the if/unless of the element being handled, for the launch tree
         self.guard: LaunchCondition | None = None
         # paths of the workspace a node's command line names that are not there, each
