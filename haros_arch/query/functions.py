@@ -26,6 +26,7 @@ from .absence import (
     meeting,
     reads_dropped,
     same_setting,
+    same_setting_elsewhere,
     similar_to,
     unknown_users,
 )
@@ -459,6 +460,8 @@ FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 3, char
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
 FUNCTIONS["meeting"] = Function("meeting", meeting, 2, 2, charged=True)
 FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged=True)
+FUNCTIONS["same_setting_elsewhere"] = Function("same_setting_elsewhere",
+                                              same_setting_elsewhere, 3, 3, charged=True)
 FUNCTIONS["reads_dropped"] = Function("reads_dropped", reads_dropped, 2, 2, charged=True)
 
 
