@@ -517,7 +517,8 @@ CATALOGUE: dict[str, Entry] = {
         "file are one name; those of two includes of it are two). A name with unknown "
         "parts collides only where they are the same arguments or environment variables "
         "not known here: /dvrk/$(arg master)/jsp and /dvrk/$(arg slave)/jsp are one name "
-        "only when both are given one value, which is not said."),
+        "only when both are given one value, which is not said. When both start at one "
+        "place (one file included twice), the message names the include of each."),
     "LAUNCH_ARG_UNDEFINED": Entry(
         "error", "argument {name} is not defined here",
         "$(arg) names an argument that is neither declared in this scope nor passed "
@@ -697,6 +698,17 @@ CATALOGUE: dict[str, Entry] = {
         "kld_err twice, kld_z never). Not said for tags with an if / unless of their "
         "own, nor across files (an including file overriding an included one's value). "
         "Fix: correct the name of one of them, or delete the one that is not meant."),
+    "LAUNCH_PARAM_LOADED_OVER": Entry(
+        "warning", "parameter {name} set here is loaded again by a later <rosparam> "
+        "({other}): roslaunch keeps the later value, this one is never used",
+        "A <param> outside a node sets a name that a later <rosparam> of the same element "
+        "(a group or launch file) loads again, under the same conditions: <param "
+        "name=\"arm/speed\"> then <rosparam ns=\"arm\" file=...> whose file has speed. "
+        "roslaunch adds both to its parameters in document order and keeps the later "
+        "value without a word, so the <param> is dead though it reads as the override "
+        "of the file. Not said for tags with an if / unless of their own, nor for a "
+        "<rosparam> before the <param> (the usual override, which wins). Fix: move the "
+        "<param> after the <rosparam>, or delete it."),
     "LAUNCH_PARAM_FILE_KEY_TWICE": Entry(
         "warning", "key {key} is written again here (first at line {line}) in the same "
         "mapping of this parameter file: {reader} keeps the later value, the first is "

@@ -217,6 +217,15 @@ def share_source(workspace: Workspace, path: str) -> str:
     return share_map(package, workspace).get(relative, path)
 
 
+def file_setting(workspace: Workspace, path: str) -> str:
+    """How a parameter file given to several nodes is named as their setting
+    (``Parameter.setting``): the source file read, however the launch file writes the
+    path to it (vortex-asv's blackbox.launch.py climbs out of its share folder to the
+    freya.yaml that asv_setup's launch files name by asv_setup's share folder); a
+    relative path, which no folder here resolves, as it is written."""
+    return share_source(workspace, path) if os.path.isabs(path) else path
+
+
 def _from_prefix(workspace: Workspace, path: str) -> str:
     """``<install>/<pkg>/share/<pkg>/rest`` -> ``<pkg source>/rest``; else ``path``."""
     base = install_base(workspace)

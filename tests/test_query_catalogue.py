@@ -589,10 +589,13 @@ def test_a_finding_about_a_topic_points_at_a_publisher():
 def test_two_instances_of_one_name_are_counted_in_a_message():
     """create3_sim includes one launch file twice: two /sensors_node publish
     /dock_status, and multiple-publishers said "/dock_status is published by
-    /sensors_node", one name, as if one node published it."""
+    /sensors_node", one name, as if one node published it. (A ROS 2 launch: two ROS 1
+    nodes of one name never run together, test_query_ros1_one_name_runs_once.)"""
     model = configuration({
-        "nodes": [{"name": "/sensors", "node": "k/sensors", "id": "node:/sensors"},
-                  {"name": "/sensors", "node": "k/sensors", "id": "node:/sensors#2"}],
+        "nodes": [{"name": "/sensors", "node": "k/sensors", "id": "node:/sensors",
+                   "ros_version": 2},
+                  {"name": "/sensors", "node": "k/sensors", "id": "node:/sensors#2",
+                   "ros_version": 2}],
         "links": [
             {"kind": "publish", "node": "/sensors", "node_id": "node:/sensors",
              "name": "/dock", "type": "std_msgs/msg/String",

@@ -64,7 +64,7 @@ from ..model.source import (
 )
 from ..model.values import UNKNOWN_MARK
 from ..models.commands import cli_load
-from ..share import share_source
+from ..share import file_setting, share_source
 from ..workspace import Workspace
 from . import behavior_trees
 from .classes import _untemplated, registered_class, with_headers
@@ -1434,10 +1434,10 @@ def _spawn_choices(decl: NodeDecl, instance: NodeInstance, spawn: Spawn, namespa
     is ``namespace``, with the parameters its files give each set as launch sets them
     (and the manager's ``<name>.type`` on the manager when ``manager_seen``: an
     instance has its name)."""
-    # each with its path as the launch file gives it, as a node's parameter file's
+    # each with the file read (``share.file_setting``), as a node's parameter file's
     # setting is named (``launch.ros2.nodes``: ``/**`` entries are a setting for
     # every node the file is given to)
-    documents = [(*doc, path) for path in spawn.param_files
+    documents = [(*doc, file_setting(workspace, path)) for path in spawn.param_files
                  if (doc := _param_file(path, decl, workspace, config)) is not None]
     namespace = namespace.rstrip("/")
     for controller in spawn.controllers[:MAX_PLUGINS]:

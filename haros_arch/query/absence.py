@@ -205,6 +205,33 @@ def same_setting(charge: Charge, config: Any, parameter: Any) -> list[Parameter]
     return list(found)
 
 
+def same_setting_elsewhere(charge: Charge, configs: Any, config: Any, parameter: Any
+                           ) -> list[Parameter]:
+    """The parameters that the same launch setting for several nodes (``same_setting``:
+    the ``/**`` entries of one parameter file, a ROS 1 file loaded into several nodes)
+    gives, under the same name within each node, in the other configurations of
+    ``configs``; none for a parameter set for its node alone. A robot-wide file handed to
+    the nodes of several launch files (vortex-asv's freya.yaml: five of them, each node
+    declaring its own few keys of it) is read where any of them reads a key."""
+    if not isinstance(config, Configuration) or not isinstance(parameter, Parameter) or (
+            not isinstance(configs, list)):
+        raise QueryTypeError("same_setting_elsewhere() takes the configurations, a "
+                             "configuration and a parameter")
+    charge(1)
+    if parameter.setting is None:
+        return []
+    key = _settings(config).key.get(id(parameter))
+    if key is None:
+        return []
+    found: list[Parameter] = []
+    for other in configs:
+        if other is config or not isinstance(other, Configuration):
+            continue
+        charge(1)
+        found.extend(_settings(other).groups.get(key, ()))
+    return found
+
+
 class _Settings:
     """The parameters of each launch setting for several nodes: by the setting and
     the parameter's name within its node."""

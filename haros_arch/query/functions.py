@@ -26,6 +26,7 @@ from .absence import (
     meeting,
     reads_dropped,
     same_setting,
+    same_setting_elsewhere,
     similar_to,
     unknown_users,
 )
@@ -459,6 +460,8 @@ FUNCTIONS["unknown_users"] = Function("unknown_users", unknown_users, 2, 3, char
 FUNCTIONS["similar_to"] = Function("similar_to", similar_to, 2, 2, charged=True)
 FUNCTIONS["meeting"] = Function("meeting", meeting, 2, 2, charged=True)
 FUNCTIONS["same_setting"] = Function("same_setting", same_setting, 2, 2, charged=True)
+FUNCTIONS["same_setting_elsewhere"] = Function("same_setting_elsewhere",
+                                              same_setting_elsewhere, 3, 3, charged=True)
 FUNCTIONS["reads_dropped"] = Function("reads_dropped", reads_dropped, 2, 2, charged=True)
 
 
@@ -517,6 +520,30 @@ def together(charge: Charge, values: Any) -> list[Any]:
         raise QueryTypeError("together() takes a list of node instances or links")
     return [one for one in values if any(
         other is not one and not never_together(charge, one, other) for other in values)]
+
+
+def _one_ros1_name(first: Any, second: Any) -> bool:
+    """Two ROS 1 node instances (or the links of two) of one name: they never run at one
+    time, as the master keeps one node of a name (roslaunch refuses to start a launch
+    that has two, LAUNCH_NODE_DUPLICATE; a node started later under the name shuts the
+    earlier down; a nodelet manager refuses a second nodelet of a name it has)."""
+    one = first.node if isinstance(first, Link) else first
+    other = second.node if isinstance(second, Link) else second
+    return (isinstance(one, NodeInstance) and isinstance(other, NodeInstance)
+            and one is not other and one.ros_version == 1 and other.ros_version == 1
+            and one.name == other.name)
+
+
+def running_together(charge: Charge, values: Any) -> list[Any]:
+    """``together``'s node instances (or links), each beside another of the list that
+    can run at the same time as it: not two ROS 1 instances of one name (a launch file's
+    one mistake, said by LAUNCH_NODE_DUPLICATE or duplicate-node-names, is not also
+    each topic and service of that node said again)."""
+    if not isinstance(values, list):
+        raise QueryTypeError("running_together() takes a list of node instances or links")
+    return [one for one in values if any(
+        other is not one and not _one_ros1_name(one, other)
+        and not never_together(charge, one, other) for other in values)]
 
 
 def all_apart(charge: Charge, values: Any) -> list[Any]:
@@ -634,6 +661,8 @@ FUNCTIONS["one_process"] = Function("one_process", one_process, 1, 2, charged=Tr
 FUNCTIONS["never_together"] = Function("never_together", never_together, 2, 2, charged=True)
 FUNCTIONS["apart"] = Function("apart", apart, 2, 2, charged=True)
 FUNCTIONS["together"] = Function("together", together, charged=True)
+FUNCTIONS["running_together"] = Function("running_together", running_together,
+                                        charged=True)
 FUNCTIONS["all_apart"] = Function("all_apart", all_apart, charged=True)
 FUNCTIONS["undecided"] = Function("undecided", undecided, 1, 2, charged=True)
 

@@ -101,8 +101,10 @@ class Ros1Loader:
         # the nodes started so far by name, and the anonymous parts of the name: two
         # ``$(anon x)`` of one file are one name, those of two includes are not; each
         # with its place, conditions and the unknown parts of its name
+        # and the include that reached its file (one file included twice starts its
+        # nodes at one place: the includes tell them apart)
         self.node_names: dict[tuple[str, tuple[int, ...]], list[tuple[
-            Location, tuple[Condition, ...], tuple[Unknown, ...]]]] = {}
+            Location, tuple[Condition, ...], tuple[Unknown, ...], Location | None]]] = {}
         # each ``$(anon x)`` unknown met in a node name, by identity, with its number
         self.anon_parts: dict[int, tuple[Unknown, int]] = {}
         self.includes = 0
@@ -114,6 +116,10 @@ class Ros1Loader:
         self.optenv_defaults: dict[str, str] = {}
         # the first <param> tag of each name per parent element (LAUNCH_PARAM_SET_TWICE)
         self.param_tags: dict[tuple[int, str, str, tuple[str, ...]], Element] = {}
+        # each <param> tag outside a node by parent element, full name and conditions,
+        # for a later <rosparam> of that element that loads the name again
+        # (LAUNCH_PARAM_LOADED_OVER)
+        self.shared_param_tags: dict[tuple[int, str, tuple[str, ...]], Element] = {}
         # the if/unless of the element being handled, for the launch tree
         self.guard: LaunchCondition | None = None
         # paths of the workspace a node's command line names that are not there, each
@@ -183,6 +189,20 @@ class Ros1Loader:
         if reached is not None and is_upstream(said.location.file or ""):
             said = replace(said, also=(reached,))
         self.model.diagnostics.append(said)
+
+    @staticmethod
+    def other_start(other: tuple[Location, Location | None], where: Location,
+                    reached: Location | None) -> str:
+        """Where the earlier of two nodes of one name starts; when both start at one
+        place (one file included twice: hexapod_ros' rviz.launch by all_local_debug.launch
+        and by a file it includes), with the include of each, which is what to change."""
+        place, its_include = other
+        text = f"{place.file}:{place.line}"
+        if (place.file, place.line) != (where.file, where.line) or (
+                its_include is None or reached is None):
+            return text
+        return (f"{text}, included at {its_include.file}:{its_include.line}; this one "
+                f"included at {reached.file}:{reached.line}")
 
     def unset_hint(self, path: str) -> str:
         """Why a missing file's path may be as it is: it holds the default of an
@@ -681,14 +701,14 @@ class Ros1Loader:
             # parts is one name only where they are the same unknowns (``same_unknowns``)
             unknowns = (*inner.ns_unknowns, *unknown_parts(given))
             earlier = self.node_names.setdefault((full, anonymous), [])
-            other = next((where for where, conditions, parts in earlier
+            other = next(((where, reached) for where, conditions, parts, reached in earlier
                           if same_conditions(conditions, scope.conditions)
                           and same_unknowns(parts, unknowns)), None)
             if other is not None:
                 self.report("LAUNCH_NODE_DUPLICATE", scope, element, name=full,
-                            other=f"{other.file}:{other.line}")
+                            other=self.other_start(other, location, scope.reached_from))
             else:
-                earlier.append((location, scope.conditions, unknowns))
+                earlier.append((location, scope.conditions, unknowns, scope.reached_from))
         if machine and "?" not in machine:
             self.machine_uses.append((machine, self.where(scope, element)))
         try:

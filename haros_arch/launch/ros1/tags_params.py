@@ -98,6 +98,30 @@ def tag_param(loader: Ros1Loader, element: Element, scope: Scope,
     else:
         add_param(loader, join(scope.ns, name), value, declared, scope.conditions, where,
                   source, command)
+        parent = element.getparent()
+        if parent is not None and not _own_condition(element):
+            loader.shared_param_tags[(id(parent), server_name(join(scope.ns, name)),
+                                      tuple(c.text for c in scope.conditions))] = element
+
+
+def _own_condition(element: Element) -> bool:
+    return element.get("if") is not None or element.get("unless") is not None
+
+
+def loaded_over(loader: Ros1Loader, element: Element, scope: Scope, name: str,
+                where: Location) -> None:
+    """``LAUNCH_PARAM_LOADED_OVER`` at an earlier ``<param>`` of the element that holds
+    this ``<rosparam>`` (outside a node, neither with an if / unless of its own, under
+    the same conditions) that set ``name``, which the rosparam loads again: roslaunch
+    adds both to its parameters in document order, and the later wins without a word."""
+    parent = element.getparent()
+    if parent is None or _own_condition(element):
+        return
+    earlier = loader.shared_param_tags.pop(
+        (id(parent), name, tuple(c.text for c in scope.conditions)), None)
+    if earlier is not None and earlier.getparent() is parent:
+        loader.report("LAUNCH_PARAM_LOADED_OVER", scope, earlier, name=name,
+                      other=f"{where.file}:{where.line}")
 
 def set_twice(loader: Ros1Loader, element: Element, scope: Scope, name: str) -> None:
     """``LAUNCH_PARAM_SET_TWICE`` when an earlier ``<param>`` child of the same element
@@ -264,12 +288,14 @@ def tag_rosparam(loader: Ros1Loader, element: Element, scope: Scope,
     for name, leaf in flatten(full, data_value):
         leaf = unknown_parts(leaf)
         line = keys.get(name)
+        place = loader.place(file.literal, line) if (
+            isinstance(line, int) and file is not None and file.literal is not None) \
+            else where
         add_param(loader, name.replace(MARK, "?"), leaf,
                   type_name(leaf) if leaf is not None else None,
-                  scope.conditions, loader.place(file.literal, line) if (
-                      isinstance(line, int) and file is not None
-                      and file.literal is not None) else where,
-                  "rosparam", setting=setting)
+                  scope.conditions, place, "rosparam", setting=setting)
+        if not in_node and MARK not in name:
+            loaded_over(loader, element, scope, server_name(name), place)
 
 
 def _key_lines(text: str) -> Any:

@@ -19,7 +19,7 @@ from ... import safe_yaml
 from ...files import read_text
 from ...model.location import Location
 from ...model.values import UNKNOWN_MARK, Value
-from ...share import configured, generated_at, share_source
+from ...share import configured, file_setting, generated_at, share_source
 from ..model import ForeignSections
 from ..paths import missing_argument_paths
 from . import entities as e
@@ -215,6 +215,9 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             len(entry.path) == 1 and isinstance(entry.path[0], e.FileRef)) else None
         shared = path.literal if path is not None else None
         said = shared or f"{location.file}:{location.line}:{location.column}"
+        # the setting its ``/**`` entries are: the file read (``file_setting``), so that
+        # its nodes in several launch files are the nodes of one setting
+        setting = file_setting(runner.workspace, shared) if shared else None
 
         def file_said(code: str, keys: list[str], listed: int) -> None:
             """What is wrong with the file, said once per file, its first keys named."""
@@ -246,7 +249,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
                     written, place = scoped[name]
                     overridden[name] = (written, found[name][0], leaf, at, place)
                 scoped.pop(name, None)
-                put(name, leaf, at, shared if name in every else None)
+                put(name, leaf, at, setting if name in every else None)
             return
         if naming.names_a_node(document):
             kept = _as_given(runner, entry, scope, location)
@@ -258,7 +261,7 @@ def node_params(runner: Runner, ev: Evaluator, node: str, entries: list[e.ParamE
             for name, leaf in naming.flatten(params):
                 at = keys.get((pattern, name), location)
                 if pattern == "/**":
-                    put(name, leaf, at, shared)
+                    put(name, leaf, at, setting)
                 else:
                     pending.append((pattern, name, leaf, at))
 
