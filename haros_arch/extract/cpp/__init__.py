@@ -2180,8 +2180,7 @@ def _under_branches(call: PrimitiveCall, held: dict[str, list[versions.Branch]],
 # None when that parse did not read it whole: the units that include the header read
 # it alike (navigation2's node_utils.hpp, in nearly every unit of its 40 nodes), so one
 # parse serves them all (``_other_version``)
-_OTHER_READ: dict[tuple[str, str, int, int, tuple[int, int, int], bool],
-                  tuple[PrimitiveCall, ...] | None] = {}
+_OTHER_READ: dict[tuple[str, str, int, int, str, bool], tuple[PrimitiveCall, ...] | None] = {}
 MAX_OTHER_READ = 4096
 
 
@@ -2201,8 +2200,8 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
     source = SourceCache(workspace.holds, {path: text.encode("utf-8")})
     calls: list[PrimitiveCall] = []
     read: dict[str, list[versions.Branch]] = {}
-    keys: dict[tuple[str, versions.Branch],
-               tuple[str, str, int, int, tuple[int, int, int], bool]] = {}
+    keys: dict[tuple[str, versions.Branch], tuple[str, str, int, int, str, bool]] = {}
+    release = ".".join(map(str, version))  # the version, in the keys
     todo: dict[str, list[versions.Branch]] = {}
     for name, branches in wanted.items():
         data = source.get(name) if name != path else None
@@ -2211,7 +2210,7 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
             if digest is None:
                 todo.setdefault(name, []).append(branch)
                 continue
-            key = keys[name, branch] = (name, digest, branch.first, branch.last, version,
+            key = keys[name, branch] = (name, digest, branch.first, branch.last, release,
                                          ros2)
             if key not in _OTHER_READ:
                 todo.setdefault(name, []).append(branch)
