@@ -41,13 +41,13 @@ def _run(tree, cache: str, monkeypatch) -> tuple[list[tuple[str, str, str]], int
     """The calls of a run in a new process (the run's own memory of branches empty), and
     how many parses it made with another version."""
     cpp._OTHER_READ.clear()
-    parses: list[str] = []
+    parses: list[tuple] = []
     announcing = IncludeSetup.announcing
 
     @contextlib.contextmanager
-    def counted(self, distro: str):
-        parses.append(distro)
-        with announcing(self, distro):
+    def counted(self, *version):
+        parses.append(version)
+        with announcing(self, *version):
             yield
 
     monkeypatch.setattr(IncludeSetup, "announcing", counted)

@@ -239,15 +239,59 @@ void f(rclcpp::Node & node) {
 
 
 def test_a_branch_no_parse_reads_whole_is_said(tmp_path) -> None:
-    # the other version's parse leaves an error in the branch (line 6), and no release
-    # of the table takes the other (line 9): what they do is not known, the node partial
+    # the other versions' parses leave an error in the branch (line 6): what it does is
+    # not known, the node partial; the branch on a version newer than every release of
+    # the table (line 9) is read by a parse with the version it names
     calls, unknown = _calls(tmp_path, UNREADABLE, None)
-    assert ("declare", "always") in calls and ("declare", "no_release_yet") not in calls
-    assert unknown == [6, 9]
+    assert {("declare", "always"), ("declare", "no_release_yet")} <= calls
+    assert unknown == [6]
     said = [d.message for d in extract_cpp([str(tmp_path / "n.cpp")], scan([str(tmp_path)]),
                                            cache_dir=None, distro="jazy").diagnostics
             if d.code == "CPP_VERSION_UNKNOWN"]
-    assert len(said) == 2 and "jazy is no ROS 2 distribution of ours" in said[0]
+    assert len(said) == 1 and "jazy is no ROS 2 distribution of ours" in said[0]
+
+
+# navigation2's obstacle_layer.cpp:288-307: one branch per API of message_filters and
+# point_cloud_transport, the second on a version between kilted's 29.5 and rolling's 30
+# (a rolling release of its time) that no distribution of the table has
+FOUR_BRANCHES = """
+#include <rclcpp/rclcpp.hpp>
+void f(rclcpp::Node & node) {
+#if RCLCPP_VERSION_GTE(30, 0, 0)
+  node.declare_parameter("rolling", 1);
+#elif RCLCPP_VERSION_GTE(29, 6, 0)
+  node.declare_parameter("between", 1);
+#elif RCLCPP_VERSION_MAJOR >= 29
+  node.declare_parameter("kilted", 1);
+#else
+  node.declare_parameter("older", 1);
+#endif
+}
+"""
+
+
+def test_a_branch_on_a_version_no_distribution_has_is_read_under_its_condition(
+        tmp_path) -> None:
+    calls, unknown = _calls(tmp_path, FOUR_BRANCHES, None)
+    assert calls == {("declare", n) for n in ("rolling", "between", "kilted", "older")}
+    assert unknown == []
+    assert _conditions(tmp_path, FOUR_BRANCHES, None)["between"] == [
+        "#elif (RCLCPP_VERSION_GTE(29, 6, 0))"]
+    # a known distribution keeps its branch alone: kilted's 29.5.5 is not 29.6
+    assert _conditions(tmp_path, FOUR_BRANCHES, "kilted") == {"kilted": []}
+
+
+@pytest.mark.parametrize(("text", "named"), [
+    ("RCLCPP_VERSION_GTE(29, 6, 0)", {(29, 6, 0)}),
+    ("RCLCPP_VERSION_MAJOR >= 31 && !RCLCPP_VERSION_GTE(31, 2, 0)",
+     {(31, 0, 0), (32, 0, 0), (31, 2, 0)}),
+    ("defined(FOO)", set())])
+def test_the_versions_a_condition_names(text: str, named) -> None:
+    assert versions.RCLCPP.named(text) == named
+    # jazzy's own version is never parsed again; the table's others come too, newest first
+    others = versions.RCLCPP.others([text, "RCLCPP_VERSION_GTE(28, 1, 14)"])
+    assert (28, 1, 14) not in others and others == sorted(others, reverse=True)
+    assert named | {(30, 1, 3), (29, 5, 5), (2, 4, 3)} <= set(others)
 
 
 @pytest.mark.parametrize(("text", "version", "taken"), [

@@ -2033,14 +2033,15 @@ def _version_unknown(tu: TranslationUnit, source: SourceCache,
                      owned: Callable[[str], bool], workspace: Workspace,
                      library: versions.Library, distro: str | None,
                      result: CppResult | None = None,
-                     again: Callable[[str, dict[str, list[versions.Branch]]], tuple[
-                         list[PrimitiveCall], dict[str, list[versions.Branch]]] | None]
+                     again: Callable[
+                         [tuple[int, int, int], dict[str, list[versions.Branch]]],
+                         tuple[list[PrimitiveCall], dict[str, list[versions.Branch]]] | None]
                      | None = None
                      ) -> list[Diagnostic]:
     """With no distribution of ``library`` known (the stand-ins' default version chose
     the branches of a condition on it: ``versions``), the calls of ``result`` in a
     branch of such a condition made under the branch's condition; the unit parsed
-    ``again`` with another distribution's version while a branch the parse left out
+    ``again`` with another version (``Library.others``) while a branch the parse left out
     holds a ROS call (or is of a chain another branch of which makes one), and the
     calls of those branches that parse read added under theirs; a call every branch of
     a chain makes, once and under no condition of the version (``_made_by_each_branch``);
@@ -2075,11 +2076,12 @@ def _version_unknown(tu: TranslationUnit, source: SourceCache,
                 if not versions.skipped_for(b, skipped.get(name, []))}
     more: list[PrimitiveCall] = []  # the calls the other parses read
     if result is not None and again is not None:
-        others = library.others()
+        others = library.others(text for found in left.values() for b, _site in found
+                                for text in (b.text, *b.before))
         for _parse_again in range(versions.MAX_OTHER_PARSES):
-            # the newest distribution that may take a branch left out
-            other = next((d for d in others if any(
-                b.taken(library, library.table[d]) is not False
+            # the newest version that may take a branch left out
+            other = next((v for v in others if any(
+                b.taken(library, v) is not False
                 for found in left.values() for b, _site in found)), None)
             if other is None:
                 break
@@ -2173,8 +2175,8 @@ def _under_branches(call: PrimitiveCall, held: dict[str, list[versions.Branch]],
     return call
 
 
-# the calls a parse with another distribution's version read in a branch of a workspace
-# header, per (file, its text's digest, the branch's lines, the distribution, ROS 2),
+# the calls a parse with another version of the client library read in a branch of a workspace
+# header, per (file, its text's digest, the branch's lines, the version, ROS 2),
 # None when that parse did not read it whole: the units that include the header read
 # it alike (navigation2's node_utils.hpp, in nearly every unit of its 40 nodes), so one
 # parse serves them all (``_other_version``)
@@ -2186,18 +2188,20 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
                    ros2: bool, wrappers: tuple[frozenset[str], frozenset[str]] | None,
                    clients: Callable[..., str | None] | None,
                    where: Callable[[Cursor], Location], local: Callable[[str], bool],
-                   distro: str, wanted: dict[str, list[versions.Branch]]
+                   version: tuple[int, int, int], wanted: dict[str, list[versions.Branch]]
                    ) -> tuple[list[PrimitiveCall], dict[str, list[versions.Branch]]] | None:
-    """The unit parsed again with ``distro``'s client library (``versions``): the calls
-    it extracts in the branches of ``wanted`` (per file) it reads, and those branches,
-    each read whole (not skipped, and no error of that parse in it); None when it
-    cannot be parsed. A branch of a header that an earlier unit's parse with ``distro``
-    read (or not) is taken from it (``_OTHER_READ``): no parse when that is all."""
+    """The unit parsed again with its client library announcing ``version``
+    (``versions``): the calls it extracts in the branches of ``wanted`` (per file) it
+    reads, and those branches, each read whole (not skipped, and no error of that parse
+    in it); None when it cannot be parsed. A branch of a header that an earlier unit's
+    parse with ``version`` read (or not) is taken from it (``_OTHER_READ``): no parse
+    when that is all."""
     workspace = setup.workspace
     source = SourceCache(workspace.holds, {path: text.encode("utf-8")})
     calls: list[PrimitiveCall] = []
     read: dict[str, list[versions.Branch]] = {}
     keys: dict[tuple[str, versions.Branch], tuple[str, str, int, int, str, bool]] = {}
+    release = ".".join(map(str, version))  # the version, in the keys
     todo: dict[str, list[versions.Branch]] = {}
     for name, branches in wanted.items():
         data = source.get(name) if name != path else None
@@ -2206,7 +2210,8 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
             if digest is None:
                 todo.setdefault(name, []).append(branch)
                 continue
-            key = keys[name, branch] = (name, digest, branch.first, branch.last, distro, ros2)
+            key = keys[name, branch] = (name, digest, branch.first, branch.last, release,
+                                         ros2)
             if key not in _OTHER_READ and setup.other_folder is not None:
                 found_before = cache.load_other(setup.other_folder, cache.other_key(*key),
                                                 setup.generated)
@@ -2219,7 +2224,7 @@ def _other_version(path: str, text: str, setup: IncludeSetup, owned: Callable[[s
                 read.setdefault(name, []).append(branch)
     if not todo:
         return calls, read
-    with setup.announcing(distro):
+    with setup.announcing(versions.RCLCPP if ros2 else versions.ROSCPP, version):
         tu = _parse(path, text, setup, workspace, CppResult(), source, owned, ros2,
                     wrappers, clients)
         if tu is None:

@@ -313,12 +313,12 @@ def calls_from_data(data: Iterable[Any]) -> list[PrimitiveCall]:
     return calls
 
 
-def other_key(header: str, digest: str, first: int, last: int, distro: str,
+def other_key(header: str, digest: str, first: int, last: int, release: str,
               ros2: bool) -> str:
-    """The key of what the parse with ``distro``'s version read in the branch of lines
-    ``first`` to ``last`` of ``header`` (content ``digest``), kept from run to run
-    (``extract.cpp._other_version``)."""
-    return hashlib.sha256(json.dumps([tool_version(), header, digest, first, last, distro,
+    """The key of what the parse announcing the client library's version ``release``
+    ("29.6.0") read in the branch of lines ``first`` to ``last`` of ``header`` (content
+    ``digest``), kept from run to run (``extract.cpp._other_version``)."""
+    return hashlib.sha256(json.dumps([tool_version(), header, digest, first, last, release,
                                       ros2]).encode()).hexdigest()
 
 

@@ -585,12 +585,13 @@ class IncludeSetup:
         self._configs: dict[str, dict[str, reconfigure.Config]] = {}
 
     @contextlib.contextmanager
-    def announcing(self, distro: str) -> Iterator[None]:
-        """The parses made inside take the client libraries to be ``distro``'s (a unit
-        parsed again for a branch on a version not known: ``versions``); the
-        diagnostics and missing headers they add are dropped after."""
+    def announcing(self, library: versions.Library, version: tuple[int, int, int]
+                   ) -> Iterator[None]:
+        """The parses made inside take ``library`` to be ``version`` (a unit parsed
+        again for a branch on a version not known: ``versions``); the diagnostics and
+        missing headers they add are dropped after."""
         kept = self._versions, self.unit_missing, len(self.diagnostics)
-        self._versions = versions.flags(distro)
+        self._versions = library.announce(version)
         try:
             yield
         finally:

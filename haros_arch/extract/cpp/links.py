@@ -765,7 +765,10 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
         if namespace:
             prefix = namespace if namespace == "~" or namespace.endswith("/") else (
                 namespace + "/")
-            written = call.name[len(prefix):] if call.name.startswith(prefix) else call.name
+            # a name that is the namespace itself (``n.subscribe(n.resolveName("command"))``:
+            # roscpp's resolved prefix, the visitor's ``names_prefix``) is nothing below it
+            written = "" if call.name == namespace else call.name[len(prefix):] if (
+                call.name.startswith(prefix)) else call.name
         text = f"{_JOINED.sub(_join_mark, namespace or '')}{_SPLIT}{written}"
         if raw_param is not None:
             text += _PARAM_SPLIT + _param_text(raw_param)
@@ -817,7 +820,7 @@ def resolve(calls: Iterable[PrimitiveCall], facts: Iterable[Fact] | NodeFacts,
             if built is not None and built.startswith("~/"):
                 built = "~" + built[2:]
             made = dataclasses.replace(
-                call, name=join_name(marked, name) if ns else name,
+                call, name=(join_name(marked, name) if name else marked) if ns else name,
                 name_built=None if built is None else join_name(marked, built) if ns
                 else built,
                 root_handle=call.root_handle or (root and not name.startswith(("/", "~"))),

@@ -16,8 +16,9 @@ of the other ROS), no flag is given for that library: the stand-ins announce its
 code of every branch of a condition on it may run: a ROS call in a branch the parse
 read is made under that branch's condition (``Branch.condition``), and when a branch
 the parse left out holds a ROS call, the unit is parsed again with the version of
-another distribution of the table (``others``: the newest first, then the oldest) and
-the calls of the branches that parse reads are made under theirs (navigation2's
+another release (``others``: a distribution's of the table, or one a condition names
+that the table does not list; the newest first) and the calls of the branches that
+parse reads are made under theirs (navigation2's
 ``introspection_mode`` parameter, declared under ``#if RCLCPP_VERSION_GTE(29, 0, 0)``,
 is read under that condition, not certainly, nor never). A branch no parse read, or one
 that parse left an error in, is ``CPP_VERSION_UNKNOWN`` at its first ROS call
@@ -28,6 +29,7 @@ makes a call nobody read.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from ...evaluate.python import evaluate
@@ -35,7 +37,9 @@ from ...model.conditions import Condition
 from ...model.location import Location
 from . import recall
 
-MAX_OTHER_PARSES = 2  # the parses of a unit with another distribution's version
+# the parses of a unit with another version: one per branch left out of navigation2's
+# four-branch chains (obstacle_layer.cpp:288-307: rolling's, 29.6's, kilted's, jazzy's)
+MAX_OTHER_PARSES = 3
 
 
 @dataclass(frozen=True)
@@ -49,6 +53,7 @@ class Library:
     table: dict[str, tuple[int, int, int]]  # its version in each distribution
     default: str  # the distribution whose API the stand-ins follow
     macros: tuple[str, ...]  # what a condition on its version names
+    string: str = ""  # the macro of its version as a string, if its header defines one
 
     def version(self, distro: str | None) -> tuple[int, int, int] | None:
         """Its version in ``distro``; None when that is no distribution of the table."""
@@ -58,11 +63,17 @@ class Library:
         """The ``-D`` flags that announce its version in ``distro`` (none when the
         table has no such distribution: the stand-in announces ``default``'s)."""
         found = self.version(distro)
-        if found is None:
-            return []
-        parts = [f"({n})" if self.parenthesised else str(n) for n in found]
-        return [f"-D{self.prefix}_{name}={part}"
-                for name, part in zip(("MAJOR", "MINOR", "PATCH"), parts, strict=True)]
+        return [] if found is None else self.announce(found)
+
+    def announce(self, version: tuple[int, int, int]) -> list[str]:
+        """The ``-D`` flags that announce ``version``: its MAJOR / MINOR / PATCH macros
+        (and its string's, ``string``)."""
+        parts = [f"({n})" if self.parenthesised else str(n) for n in version]
+        found = [f"-D{self.prefix}_{name}={part}"
+                 for name, part in zip(("MAJOR", "MINOR", "PATCH"), parts, strict=True)]
+        if self.string:
+            found.append(f'-D{self.string}="{".".join(map(str, version))}"')
+        return found
 
     def describe(self, distro: str | None) -> str:
         """What the parse took its version to be, for a diagnostic."""
@@ -74,11 +85,27 @@ class Library:
                f"no ROS {self.ros} distribution is known")
         return f"{self.default}'s ({self.name} {default}), as {why}"
 
-    def others(self) -> list[str]:
-        """The distributions of the table other than ``default``, newest first: the
-        order a unit is parsed again with their version (``Branch.taken`` chooses)."""
-        return sorted((d for d in self.table if d != self.default),
-                      key=lambda d: self.table[d], reverse=True)
+    def others(self, conditions: Iterable[str] = ()) -> list[tuple[int, int, int]]:
+        """The versions a unit is parsed again with, newest first (``Branch.taken``
+        chooses): those of the table's distributions other than ``default``, and each
+        version ``conditions`` name (``named``), a release the table does not list
+        (navigation2's obstacle_layer.cpp:292 ``#elif RCLCPP_VERSION_GTE(29, 6, 0)``, a
+        development version of rolling's between kilted's 29.5 and rolling's 30): the
+        code's author built that branch with it."""
+        own = self.table[self.default]
+        found = {v for d, v in self.table.items() if d != self.default}
+        for text in conditions:
+            found |= {v for v in self.named(text) if v != own}
+        return sorted(found, reverse=True)
+
+    def named(self, text: str) -> set[tuple[int, int, int]]:
+        """The versions condition ``text`` names: the least one of each test of the
+        version against one (``RCLCPP_VERSION_GTE(29, 6, 0)``: 29.6.0) and, for each
+        comparison of its MAJOR macro with a number N, N.0.0 and the next major's."""
+        found = {(int(a), int(b), int(c)) for a, b, c in _AT_LEAST.findall(text)}
+        for number in re.findall(rf"\b{self.prefix}_MAJOR\b\s*[<>=!]=?\s*\(?\s*(\d+)", text):
+            found |= {(int(number), 0, 0), (int(number) + 1, 0, 0)}
+        return found
 
 
 # rclcpp's version in each ROS 2 distribution: the newest release of its branch listed by
@@ -90,7 +117,7 @@ RCLCPP = Library(
      "jazzy": (28, 1, 14), "kilted": (29, 5, 5), "rolling": (30, 1, 3)},
     "jazzy",
     ("RCLCPP_VERSION_GTE", "RCLCPP_VERSION_MAJOR", "RCLCPP_VERSION_MINOR",
-     "RCLCPP_VERSION_PATCH", "RCLCPP_VERSION_STR"))
+     "RCLCPP_VERSION_PATCH", "RCLCPP_VERSION_STR"), "RCLCPP_VERSION_STR")
 # roscpp's (ros_comm's) version in each ROS 1 distribution: the package.xml of its
 # branches (noetic-devel, melodic-devel, kinetic-devel of ros/ros_comm)
 ROSCPP = Library(
@@ -197,9 +224,6 @@ def flags(distro: str | None) -> list[str]:
     found: list[str] = []
     for library in LIBRARIES:
         found += library.flags(distro)
-    major, minor, patch = RCLCPP.version(distro) or (None, None, None)
-    if major is not None:
-        found.append(f'-DRCLCPP_VERSION_STR="{major}.{minor}.{patch}"')
     return found
 
 
