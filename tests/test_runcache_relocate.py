@@ -332,3 +332,22 @@ def test_a_page_whose_data_names_a_changed_file_otherwise_is_rendered(
                         lambda *a, **k: rendered.append(True) or made(*a, **k))
     again = _page(spec, cache)
     assert rendered and '"file":"demo_robot/src/monitor.cpp","line":18' in again
+
+
+def test_an_edit_that_changes_a_lines_length_in_place_is_the_same_run(
+        tmp_path: Path, monkeypatch) -> None:
+    """A comment made longer above the code moves no line: the units give what they
+    gave (the facts name their call sites by line and column, not by byte offset), so
+    the kept run answers as for a comment appended (no build files, launch files or
+    configurations read again)."""
+    project = _examples(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    cache = tmp_path / "cache"
+    driver = project.parent / "src" / "demo_robot" / "src" / "driver.cpp"
+    text = driver.read_text()
+    driver.write_text("// one\n" + text)
+    first, _ = _document(project, cache)
+    driver.write_text("// a longer comment in its place\n" + text)
+    again, timings = _document(project, cache)
+    assert set(timings) == {"cache", "scan", "C++"}
+    assert again == first == _document(project, None)[0]

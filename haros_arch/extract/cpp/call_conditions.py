@@ -20,7 +20,7 @@ import os
 import re
 from collections.abc import Callable, Collection, Iterable
 
-from clang.cindex import Cursor, CursorKind, conf
+from clang.cindex import Cursor, CursorKind, SourceLocation, conf
 
 from ...model.conditions import EACH_STATEMENT, Condition
 from .cache import conditions_of_text, conditions_text
@@ -128,6 +128,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
     overloaded: set[str] = set()
     instantiated: set[str] = set()  # the function templates of the specialisations named
     by_caller: dict[tuple[str, int], tuple[Cursor, dict[tuple[str, int], str]]] = {}
+    site_names: dict[tuple[str, int], str] = {}  # each call's place as its facts name it
     def built(cursor: Cursor) -> bool:
         """Whether a callee is the constructor of a class of the workspace's files (not
         a class template's): its class is built there, and the calls its constructor
@@ -179,6 +180,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
                 calls[usr] = calls.get(usr, 0) + 1
                 instantiated.add(_template_usr(callee))
                 place = _place(node)
+                site_names[place] = site_of(node.location)
                 # a virtual method called unqualified may run an override instead
                 virtual = callee.kind == CursorKind.CXX_METHOD and (
                     callee.is_virtual_method()) and not qualified_call(node)
@@ -199,7 +201,7 @@ def site_facts(functions: list[Cursor], sites: CallSites, reader: ConditionReade
             for usr in usrs.split("\n"):
                 called, virtual = usr.removesuffix(VIRTUAL), usr.endswith(VIRTUAL)
                 facts.append((called, SITE_UNDER, text,
-                              f"{place[0]}:{place[1]}\n{caller}\n{'v' if virtual else ''}"))
+                              f"{site_names[place]}\n{caller}\n{'v' if virtual else ''}"))
     used: set[str] = set()  # named in a variable's initialiser outside functions
     classes: set[str] = set()  # named in a variable's type or initialiser there
     for variable in variables:
@@ -372,6 +374,13 @@ def qualified_call(call: Cursor) -> bool:
                                   CursorKind.TEMPLATE_REF) for c in child.get_children())
         break
     return False
+
+
+def site_of(location: SourceLocation) -> str:
+    """A call site as facts name it: its file, line and column (not its offset: an edit
+    that changes a line's length leaves the sites below it, and so the unit's result,
+    as they were)."""
+    return f"{location.file.name if location.file else ''}:{location.line}:{location.column}"
 
 
 def _place(cursor: Cursor) -> tuple[str, int]:

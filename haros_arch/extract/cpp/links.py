@@ -43,6 +43,7 @@ from .call_conditions import (
     RUNS_WHEN_CALLED,
     SITE_UNDER,
     qualified_call,
+    site_of,
 )
 from .call_sites import (
     BUILT_CLOSE,
@@ -68,6 +69,7 @@ from .values import (
 from .writes import writes_of
 
 Fact = tuple[str, int, str, str]  # callee USR, parameter index, value passed, call site
+
 CALLED = -1  # the index of a fact that says only that the call site calls the function
 # the index of a fact that says the function (a virtual method) overrides the one whose
 # USR is its value: the handle a call of that one passes (at the parameter whose index
@@ -194,7 +196,7 @@ def argument_facts(sites: CallSites, namespaces: Namespaces,
                 continue
             scope = sites.scope(caller)
             at = call.location
-            site = f"{at.file.name if at.file else ''}:{at.offset}"
+            site = site_of(at)
             params = [c for c in callee.get_children() if c.kind == CursorKind.PARM_DECL]
             given = len(facts)
             for index, parm in enumerate(params):
