@@ -458,7 +458,8 @@ CATALOGUE: dict[str, Entry] = {
         "the program is started with a file it cannot open, as LAUNCH_NODE_ARG_PATH_MISSING "
         "says of a node's arguments. A path with a part not known statically, a file the "
         "build makes, one in a folder the package does not hold (the launch file may make "
-        "it) or given to an option of output is not judged."),
+        "it), one the launch file writes as it runs (open(path, 'w'), xacro.open_output) "
+        "or given to an option of output is not judged."),
     "LAUNCH_INCLUDE_ABSOLUTE": Entry(
         "warning", "launch file {path} is included by an absolute path this file writes "
         "out; it is there only on the machine that wrote it",

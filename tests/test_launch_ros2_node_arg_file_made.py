@@ -52,3 +52,32 @@ def test_a_file_the_launch_file_writes_is_not_missing(write_tree) -> None:
 def test_a_file_nothing_writes_is_still_missing(write_tree) -> None:
     # (guard) the other path, which no writer is handed
     assert [m for m in _missing(write_tree) if "gone.urdf" in m]
+
+
+PROCESS = """
+    import os
+    from ament_index_python.packages import get_package_share_directory
+    from launch import LaunchDescription
+    from launch.actions import ExecuteProcess
+
+    def generate_launch_description():
+        share = get_package_share_directory('pkg')
+        made = os.path.join(share, 'urdf', 'processed.urdf')
+        with open(made, 'w') as out:
+            out.write('<robot name="car"/>')
+        other = os.path.join(share, 'urdf', 'gone.urdf')
+        return LaunchDescription([
+            ExecuteProcess(cmd=['check_urdf', made]),
+            ExecuteProcess(cmd=['check_urdf', other]),
+        ])
+    """
+
+
+def test_a_file_the_launch_file_writes_is_no_missing_process_argument(write_tree) -> None:
+    """The same for a process that is no node (its ExecuteProcess arguments,
+    LAUNCH_PROCESS_ARG_PATH_MISSING): the file it is handed is written first."""
+    model, _ = run(write_tree, "check.launch.py", PROCESS, extra=FILES)
+    missing = [d.message for d in model.diagnostics
+               if d.code == "LAUNCH_PROCESS_ARG_PATH_MISSING"]
+    assert not [m for m in missing if "processed.urdf" in m]
+    assert [m for m in missing if "gone.urdf" in m]  # (guard) nothing writes that one

@@ -86,6 +86,14 @@ def installed_source(runner: Runner, path: str) -> str | None:
     return None if configured(runner.workspace, source) is not None else source
 
 
+def written_by_launch(runner: Runner) -> set[str]:
+    """The files the launch file writes as it runs (``LaunchModel.environment_values``:
+    the paths ``open(path, 'w')`` and the other writers are handed), which no check of a
+    missing file on a command line judges."""
+    return {os.path.normpath(v) for v in runner.model.environment_values
+            if v.startswith(os.sep)}
+
+
 def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
     where = action.location
     ev = runner.evaluator(scope, where)
@@ -121,10 +129,7 @@ def perform_node(runner: Runner, action: e.NodeAction, scope: Scope) -> None:
         or scope.namespace is not None))
     runner.model.nodes[-1].rewritten_files = _rewritten(runner, ev, action.arguments,
                                                         scope, where)
-    # a file the launch file writes as it runs (``LaunchModel.environment_values``, the
-    # paths ``open(path, 'w')`` and the other writers are handed) is not judged
-    made = {os.path.normpath(v) for v in runner.model.environment_values
-            if v.startswith(os.sep)}
+    made = written_by_launch(runner)
     for path in missing_argument_paths(
             plain, runner.workspace,
             lambda p: None if p in made else installed_source(runner, p)):

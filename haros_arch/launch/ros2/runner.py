@@ -939,7 +939,7 @@ class Runner:
         there, judged as a node's arguments are (``paths.missing_argument_paths``): the
         program is started with a file it cannot open. The program's own word is not
         (a colcon install's ``lib/<pkg>/<exe>`` is no file of a checkout)."""
-        from .nodes import installed_source
+        from .nodes import installed_source, written_by_launch
 
         program = os.path.basename(words[0]) if words else ""
         if program in _FILE_MAKERS:
@@ -947,8 +947,10 @@ class Runner:
         # a shell's redirection names a file the process writes (``> /ws/log.txt``)
         judged = [UNKNOWN_MARK if (at and _REDIRECT.fullmatch(words[at - 1]))
                   or _REDIRECT.match(word) else word for at, word in enumerate(words)]
-        for path in missing_argument_paths(judged[1:], self.workspace,
-                                           lambda p: installed_source(self, p)):
+        made = written_by_launch(self)
+        for path in missing_argument_paths(
+                judged[1:], self.workspace,
+                lambda p: None if p in made else installed_source(self, p)):
             self.report("LAUNCH_PROCESS_ARG_PATH_MISSING", where,
                         command=program or head, path=self.workspace.relpath(path))
 
